@@ -1,0 +1,83 @@
+# wmr — executable edition of Leow, Low & Loh (2002).
+#
+#   make test      set up .venv + TeX, execute the notebooks (cached), run pytest
+#   make report    build/report.html (self-contained, offline math) + build/report.pdf
+#
+# Everything Python comes from environment.lock (pinned + sha256-hashed); the TeX
+# toolchain for the PDF comes from Debian packages (installed here when possible).
+
+SHELL        := /bin/bash
+.SHELLFLAGS  := -eu -o pipefail -c
+.DEFAULT_GOAL := help
+
+PYTHON ?= python3
+VENV   := .venv
+VPY    := $(VENV)/bin/python
+STAMP  := $(VENV)/.environment.lock.sha256
+BUILD  := tools/build.py
+
+# Debian packages for the PDF (xelatex + what nbconvert's LaTeX template \usepackage's),
+# pandoc (nbconvert's markdown -> LaTeX) and poppler-utils (pdftotext/pdfinfo in the tests).
+TEX_DEBS := texlive-xetex texlive-fonts-recommended texlive-plain-generic \
+            texlive-latex-extra lmodern pandoc poppler-utils
+TEX_CMDS := xelatex pandoc pdftotext pdfinfo
+
+.PHONY: help venv tex test report figures notebooks bench clean lock
+
+help: ## show this help
+	@echo "wmr — reproducible edition of Leow, Low & Loh (2002)"
+	@echo
+	@grep -E '^[a-z]+:.*## ' $(MAKEFILE_LIST) | sed -E 's/^([a-z]+):.*## (.*)/  make \1\t\2/' | expand -t 18
+
+venv: ## (internal) create/refresh .venv from environment.lock, editable install of wmr
+	@want="$$(sha256sum environment.lock pyproject.toml | sha256sum | cut -d' ' -f1)"; \
+	have="$$(cat $(STAMP) 2>/dev/null || true)"; \
+	if [ -x $(VPY) ] && [ "$$want" = "$$have" ]; then exit 0; fi; \
+	t0=$$(date +%s); \
+	if [ -d $(VENV) ]; then echo "[venv] environment.lock or pyproject.toml changed: recreating $(VENV)"; rm -rf $(VENV); \
+	else echo "[venv] creating $(VENV) from environment.lock"; fi; \
+	$(PYTHON) -m venv $(VENV); \
+	$(VPY) -m pip install --quiet --disable-pip-version-check --require-hashes -r environment.lock; \
+	$(VPY) -m pip install --quiet --disable-pip-version-check --no-deps --no-build-isolation -e .; \
+	echo "$$want" > $(STAMP); \
+	echo "[venv] ready in $$(( $$(date +%s) - t0 )) s"
+
+tex: ## (internal) make sure xelatex/pandoc/poppler are present (apt-get on Debian as root)
+	@missing=""; \
+	for c in $(TEX_CMDS); do command -v $$c >/dev/null 2>&1 || missing="$$missing $$c"; done; \
+	if [ -z "$$missing" ] && kpsewhich adjustbox.sty tcolorbox.sty titling.sty upquote.sty \
+	     eurosym.sty ucs.sty enumitem.sty mathrsfs.sty soul.sty lmodern.sty >/dev/null 2>&1; then exit 0; fi; \
+	if command -v apt-get >/dev/null 2>&1 && [ "$$(id -u)" = 0 ]; then \
+	  echo "[tex] installing:$(TEX_DEBS)"; t0=$$(date +%s); \
+	  apt-get update -qq >/dev/null && \
+	  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $(TEX_DEBS) >/dev/null; \
+	  echo "[tex] installed in $$(( $$(date +%s) - t0 )) s"; \
+	else \
+	  echo "TeX toolchain missing ($${missing:- LaTeX packages}); run: sudo apt-get update && sudo apt-get install -y --no-install-recommends $(TEX_DEBS)"; \
+	  exit 1; \
+	fi
+
+notebooks: venv ## execute notebooks/*.ipynb into build/notebooks (only changed ones), merge the ledger
+	@$(VPY) $(BUILD) execute
+
+figures: venv ## regenerate figures/ (python -m wmr.figures figures/)
+	@$(VPY) $(BUILD) figures --force
+
+report: venv tex ## build/report.html + build/report.pdf (cached: < 1 s when nothing changed)
+	@$(VPY) $(BUILD) report
+
+test: venv tex ## execute notebooks, then pytest (package tests + notebook/report tests)
+	@$(VPY) $(BUILD) execute
+	@rc=0; $(VPY) -m pytest || rc=$$?; \
+	if [ $$rc -eq 5 ]; then echo "pytest collected no tests: failing"; exit 1; fi; exit $$rc
+
+bench: venv ## run tests/bench.py
+	@$(VPY) tests/bench.py
+
+clean: ## remove build/ and caches (committed figures/ are kept)
+	rm -rf build .pytest_cache .hypothesis
+	find . -path ./.venv -prune -o -name __pycache__ -type d -print0 | xargs -0 rm -rf
+
+lock: ## regenerate environment.lock from requirements.in (uv, universal, hashed)
+	@[ -x $(VENV)/bin/uv ] || { [ -x $(VPY) ] || $(PYTHON) -m venv $(VENV); $(VPY) -m pip install --quiet uv; }
+	$(VENV)/bin/uv pip compile --universal --generate-hashes --python-version 3.11 requirements.in -o environment.lock
