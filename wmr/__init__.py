@@ -1,0 +1,39 @@
+r"""wmr: kinematics of wheeled mobile robots, after Leow, Low & Loh (2002).
+
+A robot is a platform carried by wheel units (offset, centred or dual wheels) mounted at
+points :math:`P_i`.  The package builds the paper's matrices once, for SymPy (exact derivations)
+and NumPy (batched numbers): :math:`\mathbf J_1`, :math:`\mathbf J_{L1}`, :math:`\mathbf J_2`,
+:math:`\mathbf F = [\mathbf J_1\ -\mathbf J_2]`, :math:`\mathbf J = \mathbf J_{L1}^T\mathbf J_2`, and
+analyses them: mobility (rank and nullity of F), condition numbers and isotropy, forward and
+inverse kinematics, the instantaneous centre and compatible steering angles, and time
+integration.  Conventions: see :mod:`wmr.conventions`.
+
+Examples
+--------
+>>> import numpy as np, wmr
+>>> bot = wmr.paper_robot("centred", L=0.3, r=0.05)
+>>> beta = wmr.steering_angles(bot, [1.0, 0.0, 0.0])     # spin about C
+>>> int(wmr.mobility(bot, beta))
+1
+"""
+from . import conventions
+from .backend import NUMERIC, SYMBOLIC
+from .isotropy import characteristic_length, condition_number, is_isotropic
+from .kinematics import forward, inverse
+from .mobility import admissible_twists, mobility, null_space, nullity, rank, rank_F
+from .platform import E, point_velocity, rotation
+from .robot import Robot
+from .robots import equilateral_mounts, paper_robot
+from .simulation import simulate
+from .steering import centre_to_wheels, instantaneous_centre, steering_angles
+from .tolerance import TOL
+from .wheels import CentredWheel, DualWheel, OffsetWheel
+
+__all__ = [
+    "Robot", "OffsetWheel", "CentredWheel", "DualWheel", "paper_robot", "equilateral_mounts",
+    "E", "rotation", "point_velocity", "rank", "nullity", "null_space", "rank_F", "mobility",
+    "admissible_twists", "condition_number", "is_isotropic", "characteristic_length",
+    "forward", "inverse", "instantaneous_centre", "steering_angles", "centre_to_wheels",
+    "simulate", "TOL", "NUMERIC", "SYMBOLIC", "conventions",
+]
+__version__ = "0.1.0"

@@ -1,0 +1,134 @@
+"""Two backends, one model: NumPy (batched numbers) and SymPy (exact symbols).
+
+Every matrix of the paper is built exactly once, by a builder that receives a backend
+object and uses only the handful of operations below.  Passing :data:`NUMERIC` gives
+batched NumPy arrays whose last two axes are the matrix axes; passing :data:`SYMBOLIC`
+gives a :class:`sympy.Matrix`.  Neither form is written by hand anywhere else, so the
+derivation notebooks and the numeric kernels cannot drift apart.
+"""
+from __future__ import annotations
+
+import numpy as np
+import sympy as sp
+
+
+class NumericBackend:
+    """NumPy backend: entries are floats or arrays with leading batch axes."""
+
+    name = "numpy"
+
+    @staticmethod
+    def cos(x):
+        return np.cos(x)
+
+    @staticmethod
+    def sin(x):
+        return np.sin(x)
+
+    @staticmethod
+    def matrix(rows):
+        """Build a ``(..., m, n)`` array from nested rows of broadcastable entries."""
+        flat = [np.asarray(e, dtype=float) for row in rows for e in row]
+        flat = np.broadcast_arrays(*flat)
+        m, n = len(rows), len(rows[0])
+        return np.stack(flat, axis=-1).reshape(flat[0].shape + (m, n))
+
+    @staticmethod
+    def zeros(m, n, batch=()):
+        return np.zeros(tuple(batch) + (m, n))
+
+    @staticmethod
+    def set_block(M, i, j, B):
+        B = np.asarray(B, dtype=float)
+        M[..., i:i + B.shape[-2], j:j + B.shape[-1]] = B
+        return M
+
+    @staticmethod
+    def hstack(*Ms):
+        Ms = np.broadcast_arrays(*[np.asarray(M, dtype=float) for M in Ms])
+        shapes = [M.shape for M in Ms]
+        del shapes
+        return np.concatenate(Ms, axis=-1)
+
+    @staticmethod
+    def broadcast_hstack(*Ms):
+        """Concatenate along columns after broadcasting the batch axes."""
+        Ms = [np.asarray(M, dtype=float) for M in Ms]
+        batch = np.broadcast_shapes(*[M.shape[:-2] for M in Ms])
+        Ms = [np.broadcast_to(M, batch + M.shape[-2:]) for M in Ms]
+        return np.concatenate(Ms, axis=-1)
+
+    @staticmethod
+    def transpose(M):
+        return np.swapaxes(M, -1, -2)
+
+    @staticmethod
+    def eye(n):
+        return np.eye(n)
+
+
+class SymbolicBackend:
+    """SymPy backend: entries are SymPy expressions, results are ``sympy.Matrix``."""
+
+    name = "sympy"
+
+    @staticmethod
+    def cos(x):
+        return sp.cos(x)
+
+    @staticmethod
+    def sin(x):
+        return sp.sin(x)
+
+    @staticmethod
+    def matrix(rows):
+        return sp.Matrix(rows)
+
+    @staticmethod
+    def zeros(m, n, batch=()):
+        return sp.zeros(m, n)
+
+    @staticmethod
+    def set_block(M, i, j, B):
+        B = sp.Matrix(B)
+        M[i:i + B.rows, j:j + B.cols] = B
+        return M
+
+    @staticmethod
+    def broadcast_hstack(*Ms):
+        return sp.Matrix.hstack(*[sp.Matrix(M) for M in Ms])
+
+    hstack = broadcast_hstack
+
+    @staticmethod
+    def transpose(M):
+        return M.T
+
+    @staticmethod
+    def eye(n):
+        return sp.eye(n)
+
+
+NUMERIC = NumericBackend()
+SYMBOLIC = SymbolicBackend()
+
+
+def is_symbolic(*values) -> bool:
+    """True when any value (or any element of a sequence/array of values) is SymPy."""
+    for v in values:
+        if isinstance(v, (sp.Basic, sp.MatrixBase)):
+            return True
+        if isinstance(v, (list, tuple)) and is_symbolic(*v):
+            return True
+        if isinstance(v, np.ndarray) and v.dtype == object and is_symbolic(*v.ravel()):
+            return True
+    return False
+
+
+def choose(*values, backend=None):
+    """Pick the backend: the one given, else SymPy if any value is symbolic, else NumPy."""
+    if backend is not None:
+        if backend not in (NUMERIC, SYMBOLIC):
+            raise ValueError(f"backend must be wmr.backend.NUMERIC or SYMBOLIC, got {backend!r}")
+        return backend
+    return SYMBOLIC if is_symbolic(*values) else NUMERIC

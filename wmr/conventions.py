@@ -1,0 +1,36 @@
+r"""Conventions used everywhere in :mod:`wmr` (stated once, here).
+
+The drawing is ``figures/conventions.svg`` (made by :func:`wmr.figures.conventions`).
+
+Frames
+    :math:`\mathcal F` is fixed, :math:`\mathcal B` is attached to the platform with origin at the
+    operation point C; :math:`\psi` is the angle from :math:`\mathbf i_{\mathcal F}` to :math:`\mathbf i`,
+    counter-clockwise positive seen from above (:math:`\mathbf k` points up).  All angles are in
+    radians and counter-clockwise positive.
+Twist
+    :math:`\mathbf t = [\dot\psi\ \dot x\ \dot y]^T` with :math:`\dot{\mathbf c} = [\dot x\ \dot y]^T`
+    in **body-frame** components (25); the fixed-frame velocity is :math:`[\dot X\ \dot Y]^T =
+    \mathbf R(\psi)\dot{\mathbf c}`.  :math:`\mathbf t_L = [L\dot\psi\ \dot{\mathbf c}^T]^T` (33).
+Mount points
+    :math:`\mathbf d_i = \overrightarrow{CP_i}` in the body frame; :math:`P_i` lies on the steering axis.
+Wheel frame
+    :math:`\beta_i` is the angle of the intermediate body relative to the platform,
+    :math:`\mathbf R_{bwi} = \mathbf R(\beta_i)` (11); :math:`\mathbf i_i = \mathbf R_{bwi}[1\ 0]^T` is
+    the axle (axis of rolling), :math:`\mathbf j_i = \mathbf R_{bwi}[0\ 1]^T` the rolling direction in
+    the wheel plane.  The absolute steering angle is :math:`\phi_i = \psi + \beta_i` (8).
+Rolling
+    :math:`\dot\theta_i` is the wheel's spin about :math:`\mathbf i_i` (right-hand rule); no slip
+    gives :math:`\dot{\mathbf h}_i = -r\dot\theta_i\mathbf j_i` (6).
+Offset
+    The wheel centre of an offset wheel is :math:`H_i = P_i - d\,\mathbf j_i` (:math:`d \ge 0`), which
+    gives (9) with the printed signs.
+Dual wheel
+    Wheel 1 at :math:`H_i + b\,\mathbf i_i`, wheel 2 at :math:`H_i - b\,\mathbf i_i`, :math:`H_i = P_i`.
+Numbering
+    Wheels are numbered in the order given to :class:`wmr.Robot`.  The paper's three-wheel robot
+    (:func:`wmr.paper_robot`) has :math:`\mathbf d_1 = L(-1,0)`, :math:`\mathbf d_2 = L(\tfrac12,
+    \tfrac{\sqrt3}2)`, :math:`\mathbf d_3 = L(\tfrac12,-\tfrac{\sqrt3}2)`: numbered clockwise from
+    the negative x-axis, the one placement under which the printed (59) holds.
+Tolerance
+    One numerical zero, :data:`wmr.tolerance.TOL`.
+"""

@@ -1,0 +1,70 @@
+r"""Kinetostatic isotropy: condition numbers (30)-(31) and isotropy tests (34)-(50).
+
+The condition number :math:`\kappa = \sigma_l / \sigma_s` (30) of an :math:`m\times n` matrix lies in
+:math:`[1, \infty]` (31); a matrix is isotropic when :math:`\kappa = 1`, i.e. when
+:math:`\mathbf A^T\mathbf A` (for :math:`m\ge n`) or :math:`\mathbf A\mathbf A^T` (for :math:`m<n`) is a
+multiple of the identity.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from . import _validate as V
+from .mobility import singular_values
+from .tolerance import TOL
+
+
+def condition_number(A):
+    r"""Condition number :math:`\kappa = \sigma_l/\sigma_s` (30) of a stack of matrices.
+
+    Rank-deficient matrices (smallest singular value at most ``TOL * max(1, sigma_l)``)
+    get ``inf``, as (31) prescribes.
+
+    Parameters
+    ----------
+    A : array (..., m, n)
+
+    Returns
+    -------
+    numpy.ndarray (...)
+
+    Examples
+    --------
+    >>> float(condition_number([[2.0, 0.0], [0.0, 1.0]]))
+    2.0
+    """
+    s = singular_values(A)
+    smax, smin = s[..., 0], s[..., -1]
+    singular = smin <= TOL * np.maximum(1.0, smax)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        k = np.where(singular, np.inf, smax / np.where(singular, 1.0, smin))
+    return k
+
+
+def is_isotropic(A):
+    """True where the condition number equals 1 within ``TOL`` (batched)."""
+    return np.abs(condition_number(A) - 1.0) <= TOL
+
+
+def characteristic_length(robot):
+    r"""The characteristic length :math:`L` that makes :math:`\mathbf J_{L1}` best conditioned when C is the centroid.
+
+    With :math:`\sum_i\mathbf d_i = \mathbf 0`, (34) is :math:`\mathrm{diag}(\sum_i\|\mathbf d_i\|^2/L^2,\ w,\ w)`,
+    which is isotropic exactly for :math:`L^2 = \tfrac1w\sum_i\|\mathbf d_i\|^2` (the mean, not
+    necessarily equal, squared distance).
+
+    Returns
+    -------
+    float
+    """
+    d = robot.mount_points
+    L = float(np.sqrt(np.mean(np.sum(d ** 2, axis=1))))
+    if L == 0:
+        raise ValueError("all mount points coincide with C: no characteristic length exists (got L = 0)")
+    return L
+
+
+def gram(A):
+    """The product ``A^T A`` (stack), used for the isotropy conditions (34), (40), (54)."""
+    A = V.finite_array("A", A)
+    return np.swapaxes(A, -1, -2) @ A

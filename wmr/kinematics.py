@@ -1,0 +1,137 @@
+r"""Forward and inverse kinematics of the assembled robot, batched over configurations.
+
+Both problems solve (21), :math:`\mathbf J_1\mathbf t = \mathbf J_2\dot{\boldsymbol\theta}`:
+
+* **forward** (joint rates :math:`\to` twist): :math:`\mathbf J_1` is :math:`2w\times3` and constant,
+  so :math:`\mathbf t = \mathbf J_1^{+}\mathbf J_2\dot{\boldsymbol\theta}` is the least-squares twist; the
+  residual :math:`\mathbf J_1\mathbf t - \mathbf J_2\dot{\boldsymbol\theta}` is the slip the wheels would
+  need, zero exactly when the joint rates are compatible.
+* **inverse** (twist :math:`\to` joint rates): :math:`\mathbf J_2` is block-diagonal with blocks
+  :math:`\mathbf R_{bwi}\mathbf L_i`, so each unit is solved alone,
+  :math:`\dot{\boldsymbol\theta}_i = \mathbf L_i^{+}\mathbf R_{bwi}^T[\mathbf E\mathbf d_i\ \mathbf 1]\mathbf t`:
+  exact where :math:`\mathbf L_i` is square and invertible (offset wheel, :math:`d>0`), least squares
+  otherwise (centred and dual wheels), with a residual that is zero exactly when the twist is
+  admissible at these steering angles.
+
+With isotropic Jacobians these reduce to the paper's (49)-(50) and (55)-(57).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from . import _validate as V
+from .backend import NUMERIC
+from .platform import rotation
+from .tolerance import TOL, near_zero
+
+
+@dataclass(frozen=True)
+class Solution:
+    """Result of a kinematics solve.
+
+    Attributes
+    ----------
+    value : numpy.ndarray (..., k)
+        The twist (forward) or the joint rates (inverse).
+    residual : numpy.ndarray (..., 2w)
+        :math:`\\mathbf J_1\\mathbf t - \\mathbf J_2\\dot{\\boldsymbol\\theta}` at the solution.
+    admissible : numpy.ndarray of bool (...)
+        Residual is zero within :data:`~wmr.tolerance.TOL` (relative to the size of the terms).
+    """
+
+    value: np.ndarray
+    residual: np.ndarray
+    admissible: np.ndarray
+
+
+def _unit_velocities(robot, twist):
+    # (5): [E d_i 1] t for every unit, shape (..., w, 2)
+    J1 = robot.J1()
+    v = twist @ J1.T                                  # (..., 2w)
+    return v.reshape(v.shape[:-1] + (robot.w, 2))
+
+
+def forward(robot, beta, rates):
+    r"""Platform twist from joint rates (least squares on (21)).
+
+    Parameters
+    ----------
+    robot : Robot
+    beta : array (..., w)
+        Steering angles.
+    rates : array (..., n_rates)
+        Joint rates :math:`\dot{\boldsymbol\theta}` in the order of :attr:`Robot.rate_names`.
+
+    Returns
+    -------
+    Solution
+        ``value`` is the twist :math:`[\dot\psi, \dot x, \dot y]` (..., 3), body frame.
+
+    Raises
+    ------
+    ValueError
+        If the mount points do not determine the twist (all coincide), or on bad input.
+    """
+    beta = V.finite_array("beta", beta, last=robot.w)
+    rates = V.finite_array("rates", rates, last=robot.n_rates)
+    J1 = robot.J1()
+    s = np.linalg.svd(J1, compute_uv=False)
+    if s[-1] <= TOL * max(1.0, s[0]):
+        raise ValueError(
+            f"J1 has rank < 3 (mount points {robot.mount_points.tolist()} coincide): the twist is not determined")
+    J2 = robot.J2(beta)                               # (..., 2w, n)
+    rhs = (J2 @ rates[..., None])[..., 0]             # (..., 2w)
+    t = rhs @ np.linalg.pinv(J1).T                    # (..., 3)
+    res = t @ J1.T - rhs
+    scale = np.max(np.abs(rhs), axis=-1)
+    return Solution(t, res, np.all(near_zero(res, scale[..., None]), axis=-1))
+
+
+def inverse(robot, beta, twist, beta_dot=None):
+    r"""Joint rates that realise a platform twist (unit by unit, exact or least squares).
+
+    Parameters
+    ----------
+    robot : Robot
+    beta : array (..., w)
+        Steering angles.
+    twist : array (..., 3)
+        :math:`[\dot\psi, \dot x, \dot y]`, body frame.
+    beta_dot : array (..., w), optional
+        Wanted steering rates of dual-wheel units (their wheel-rate difference steers them, the
+        corrected (15)); default 0, i.e. the unit keeps its angle on the platform.  Ignored
+        for other units (offset wheels' steering rate follows from the twist; centred wheels
+        steer independently).
+
+    Returns
+    -------
+    Solution
+        ``value`` is :math:`\dot{\boldsymbol\theta}` (..., n_rates).
+    """
+    beta = V.finite_array("beta", beta, last=robot.w)
+    twist = V.finite_array("twist", twist, last=3)
+    if beta_dot is not None:
+        beta_dot = V.finite_array("beta_dot", beta_dot, last=robot.w)
+    v = _unit_velocities(robot, twist)
+    batch = np.broadcast_shapes(beta.shape[:-1], v.shape[:-2])
+    v = np.broadcast_to(v, batch + v.shape[-2:])
+    beta = np.broadcast_to(beta, batch + beta.shape[-1:])
+    rates = np.zeros(batch + (robot.n_rates,))
+    res = np.zeros(batch + (robot.w, 2))
+    for i, (u, sl) in enumerate(zip(robot.wheels, robot.rate_slices)):
+        L = u._local_block(NUMERIC)
+        R = rotation(beta[..., i], NUMERIC)
+        local_v = (np.swapaxes(R, -1, -2) @ v[..., i, :, None])[..., 0]   # R^T [E d 1] t
+        th = local_v @ np.linalg.pinv(L).T                                 # L^+ R^T v
+        if u.kind == "dual":
+            # free differential rate fixed by the steering wanted: phi_dot = psi_dot + beta_dot
+            bd = 0.0 if beta_dot is None else beta_dot[..., i]
+            diff = -(2 * u.b / u.r) * (twist[..., 0] + bd)                  # theta_1 - theta_2
+            th = th + 0.5 * np.stack([diff, -diff], axis=-1)
+        rates[..., sl] = th
+        res[..., i, :] = (R @ (L @ th[..., None]))[..., 0] - v[..., i, :]
+    res = -res.reshape(batch + (2 * robot.w,))                             # J1 t - J2 theta_dot
+    scale = np.max(np.abs(v), axis=(-2, -1))
+    return Solution(rates, res, np.all(near_zero(res, scale[..., None]), axis=-1))

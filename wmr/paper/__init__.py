@@ -1,0 +1,75 @@
+r"""The paper's equations *as printed*, transcribed into SymPy once.
+
+Each printed form is registered with :func:`register` in the module of its section
+(:mod:`wmr.paper.platform_wheels` (2)-(19), :mod:`wmr.paper.offset` (20)-(29),
+:mod:`wmr.paper.isotropy` (30)-(50), :mod:`wmr.paper.centred` (51)-(59),
+:mod:`wmr.paper.steering` (60)-(65)).  These are the statements under test: the notebooks derive
+each result from the model in :mod:`wmr` and compare it with the printed form, never the other
+way round.  Where the extracted text is garbled, the entry records the most plausible printed
+form and says so in ``garbled``.
+"""
+from __future__ import annotations
+
+import importlib
+from dataclasses import dataclass, field
+
+
+@dataclass(frozen=True)
+class Printed:
+    """One numbered equation as printed.
+
+    Attributes
+    ----------
+    id : str
+        Equation number, e.g. ``"20"``.
+    section : str
+        Paper section, e.g. ``"4.1"``.
+    latex : str
+        The printed form in LaTeX (reconstructed where the extraction is garbled).
+    expr : object
+        SymPy form: an ``Eq``, a ``Matrix`` or an expression; ``None`` when the equation is a
+        definition or statement better checked through its consequences (said in ``note``).
+    garbled : str
+        What the extraction garbled and how it was read.
+    note : str
+    """
+
+    id: str
+    section: str
+    latex: str
+    expr: object = None
+    garbled: str = ""
+    note: str = ""
+    extra: dict = field(default_factory=dict)
+
+
+PRINTED: dict = {}
+
+_MODULES = ("platform_wheels", "offset", "isotropy", "centred", "steering")
+
+
+def register(id, section, latex, expr=None, garbled="", note="", **extra):
+    """Add a printed equation to :data:`PRINTED` (each id once)."""
+    id = str(id)
+    if id in PRINTED:
+        raise ValueError(f"equation ({id}) is registered twice")
+    PRINTED[id] = Printed(id, section, latex, expr, garbled, note, extra)
+    return PRINTED[id]
+
+
+def _load():
+    for m in _MODULES:
+        try:
+            importlib.import_module(f"{__name__}.{m}")
+        except ModuleNotFoundError as e:
+            if e.name != f"{__name__}.{m}":
+                raise
+
+
+def printed(id):
+    """The printed form of equation ``id`` (a :class:`Printed`)."""
+    _load()
+    id = str(id)
+    if id not in PRINTED:
+        raise ValueError(f"equation ({id}) is not transcribed in wmr.paper")
+    return PRINTED[id]

@@ -1,0 +1,88 @@
+r"""Platform kinematics: the rigid platform, its twist and the rows :math:`[\mathbf{E d}_i\ \mathbf{1}]`.
+
+The platform's twist is :math:`\mathbf t = [\dot\psi\ \ \dot{\mathbf c}^T]^T` (4), with
+:math:`\dot{\mathbf c} = [\dot x\ \dot y]^T` expressed in the body frame :math:`\mathcal B`.
+The velocity of a platform point :math:`P_i` with :math:`\mathbf d_i = \overrightarrow{CP_i}` is
+
+.. math::
+
+    \dot{\mathbf p}_i = \dot{\mathbf c} + \dot\psi\,\mathbf E\mathbf d_i
+    = [\mathbf E\mathbf d_i\ \ \mathbf 1]\,\mathbf t ,\qquad
+    \mathbf E = \begin{bmatrix} 0 & -1\\ 1 & 0\end{bmatrix}
+
+(equations (2), (3) and (5) of the paper).
+"""
+from __future__ import annotations
+
+from .backend import NUMERIC, choose
+
+
+def E(backend=NUMERIC):
+    r"""The 90-degree counter-clockwise rotation :math:`\mathbf E` of (3).
+
+    Returns
+    -------
+    numpy.ndarray (2, 2) or sympy.Matrix
+    """
+    return backend.matrix([[0, -1], [1, 0]])
+
+
+def rotation(angle, backend=NUMERIC):
+    r"""Rotation matrix through ``angle`` (11): :math:`\mathbf R_{bwi}` when ``angle`` is :math:`\beta_i`.
+
+    Parameters
+    ----------
+    angle : float, array (...) or sympy.Expr
+    backend : NUMERIC or SYMBOLIC
+
+    Returns
+    -------
+    numpy.ndarray (..., 2, 2) or sympy.Matrix (2, 2)
+    """
+    c, s = backend.cos(angle), backend.sin(angle)
+    return backend.matrix([[c, -s], [s, c]])
+
+
+def point_row(d, L=1, backend=None):
+    r"""The 2x3 block :math:`[\tfrac1L\mathbf E\mathbf d_i\ \ \mathbf 1]` of (5), (21) and (32).
+
+    Maps the twist :math:`\mathbf t_L=[L\dot\psi\ \dot{\mathbf c}^T]^T` (33) (or :math:`\mathbf t`
+    when ``L = 1``) to the velocity of the platform point at :math:`\mathbf d`.
+
+    Parameters
+    ----------
+    d : pair (dx, dy)
+        Vector from the operation point C to the point, body frame.
+    L : float or sympy.Expr, optional
+        Characteristic length (32); 1 gives the row of :math:`\mathbf J_1`.
+
+    Returns
+    -------
+    numpy.ndarray (2, 3) or sympy.Matrix (2, 3)
+    """
+    bk = choose(*d, L, backend=backend)
+    dx, dy = d
+    # (5): p_dot = [E d  1] t ;  E d = [-dy, dx]
+    return bk.matrix([[-dy / L, 1, 0], [dx / L, 0, 1]])
+
+
+def point_velocity(twist, d):
+    r"""Velocity :math:`\dot{\mathbf p} = \dot{\mathbf c} + \dot\psi\mathbf E\mathbf d` (2) of platform points.
+
+    Parameters
+    ----------
+    twist : array (..., 3)
+        :math:`[\dot\psi, \dot x, \dot y]`, body frame.
+    d : array (..., 2)
+        Points relative to C, body frame (broadcast against ``twist``).
+
+    Returns
+    -------
+    numpy.ndarray (..., 2)
+    """
+    import numpy as np
+
+    from ._validate import finite_array
+    t = finite_array("twist", twist, last=3)
+    d = finite_array("d", d, last=2)
+    return np.stack([t[..., 1] - t[..., 0] * d[..., 1], t[..., 2] + t[..., 0] * d[..., 0]], axis=-1)

@@ -1,0 +1,206 @@
+r"""The assembled robot: platform + wheel units, :math:`\mathbf J_1`, :math:`\mathbf J_2`, :math:`\mathbf F`.
+
+Stacking the no-slip equation of every unit gives (21),
+:math:`\mathbf J_1\mathbf t = \mathbf J_2\dot{\boldsymbol\theta}`, and its homogeneous form (22)-(23),
+:math:`\mathbf F\dot{\mathbf q} = \mathbf 0` with the functional matrix
+:math:`\mathbf F = [\mathbf J_1\ \ -\mathbf J_2]` (24) and the generalised rates
+:math:`\dot{\mathbf q} = [\mathbf t^T\ \dot{\boldsymbol\theta}^T]^T` (25).  The layout of
+:math:`\dot{\mathbf q}` is named (:attr:`Robot.qdot_names`) so that a reader can see which column
+of :math:`\mathbf F` is which rate.
+"""
+from __future__ import annotations
+
+import numpy as np
+import sympy as sp
+
+from . import _validate as V
+from .backend import NUMERIC, SYMBOLIC, choose, is_symbolic
+from .platform import point_row
+from .wheels import UNIT_TYPES
+
+TWIST_NAMES = ("psi_dot", "x_dot", "y_dot")
+
+
+class Robot:
+    r"""A planar WMR: a platform with operation point C carried by ``w`` wheel units.
+
+    Parameters
+    ----------
+    wheels : sequence of OffsetWheel, CentredWheel or DualWheel
+        The wheel units in their numbering order (wheel 1 first); any number >= 1, any mount
+        points, mixed types.
+    name : str, optional
+
+    Examples
+    --------
+    >>> from wmr import Robot, CentredWheel
+    >>> bot = Robot([CentredWheel((1, 0), r=0.1), CentredWheel((-1, 0), r=0.1)])
+    >>> bot.qdot_names
+    ('psi_dot', 'x_dot', 'y_dot', 'theta_dot_1', 'theta_dot_2')
+    >>> bot.F([0.0, 0.0]).shape
+    (4, 5)
+    """
+
+    def __init__(self, wheels, name=None):
+        try:
+            wheels = tuple(wheels)
+        except TypeError:
+            raise ValueError(f"wheels must be a sequence of wheel units, got {wheels!r}") from None
+        if len(wheels) == 0:
+            raise ValueError("wheels must contain at least one wheel unit, got 0")
+        for k, u in enumerate(wheels):
+            if not isinstance(u, UNIT_TYPES):
+                raise ValueError(f"wheels[{k}] must be an OffsetWheel, CentredWheel or DualWheel, got {u!r}")
+        self.wheels = wheels
+        self.name = name or "robot"
+        starts = np.cumsum([0] + [u.n_rates for u in wheels])
+        #: slice of each unit's rates inside the joint-rate vector theta_dot
+        self.rate_slices = tuple(slice(int(a), int(b)) for a, b in zip(starts[:-1], starts[1:]))
+
+    def __repr__(self):
+        kinds = ", ".join(f"{u.kind}@{tuple(u.position)}" for u in self.wheels)
+        return f"Robot({self.name!r}: {kinds})"
+
+    # --- sizes and names -----------------------------------------------------------------------
+    @property
+    def w(self):
+        """Number of wheel units."""
+        return len(self.wheels)
+
+    @property
+    def n_rates(self):
+        """Length of the joint-rate vector :math:`\\dot{\\boldsymbol\\theta}`."""
+        return self.rate_slices[-1].stop
+
+    @property
+    def rate_names(self):
+        """Names of the joint rates, in column order of :math:`\\mathbf J_2`."""
+        return tuple(n for i, u in enumerate(self.wheels, 1) for n in u.rate_names(i))
+
+    @property
+    def qdot_names(self):
+        """Names of the generalised rates (25): the columns of :math:`\\mathbf F`."""
+        return TWIST_NAMES + self.rate_names
+
+    @property
+    def twist_symbols(self):
+        r"""SymPy symbols :math:`(\dot\psi, \dot x, \dot y)`."""
+        return sp.symbols(r"\dot{\psi} \dot{x} \dot{y}", real=True)
+
+    @property
+    def rate_symbols(self):
+        """SymPy symbols of the joint rates, typeset as in the paper."""
+        return tuple(s for i, u in enumerate(self.wheels, 1) for s in u.rate_symbols(i))
+
+    @property
+    def qdot_symbols(self):
+        return tuple(self.twist_symbols) + self.rate_symbols
+
+    @property
+    def beta_symbols(self):
+        r"""SymPy symbols :math:`\beta_1, \dots, \beta_w` (real)."""
+        return sp.symbols(f"beta1:{self.w + 1}", real=True)
+
+    @property
+    def mount_points(self):
+        r"""Array (w, 2) of the :math:`\mathbf d_i` (numeric robots only)."""
+        return np.array([u.position for u in self.wheels], dtype=float)
+
+    @property
+    def is_symbolic(self):
+        return any(u.is_symbolic for u in self.wheels)
+
+    # --- matrices -------------------------------------------------------------------------------
+    def _beta(self, beta, bk):
+        if bk is SYMBOLIC:
+            if beta is None:
+                return list(self.beta_symbols)
+            return list(V.symbolic_vector("beta", beta, self.w))
+        return V.finite_array("beta", beta, last=self.w)
+
+    def J1(self, L=1, backend=None):
+        r"""Platform Jacobian :math:`\mathbf J_1` (21), or :math:`\mathbf J_{L1}` (32) for ``L != 1``.
+
+        .. math:: \mathbf J_{L1} = \begin{bmatrix}\tfrac1L\mathbf E\mathbf d_1 & \mathbf 1\\
+                  \vdots&\vdots\\ \tfrac1L\mathbf E\mathbf d_w&\mathbf 1\end{bmatrix}
+
+        Parameters
+        ----------
+        L : float or sympy.Expr, optional
+            Characteristic length, > 0.
+
+        Returns
+        -------
+        numpy.ndarray (2w, 3) or sympy.Matrix (2w, 3)
+        """
+        L = V.positive("L (characteristic length)", L)
+        bk = choose(L, backend=backend) if not self.is_symbolic else SYMBOLIC
+        M = bk.zeros(2 * self.w, 3)
+        for i, u in enumerate(self.wheels):
+            bk.set_block(M, 2 * i, 0, point_row(u.position, L, backend=bk))  # (32): [E d_i / L, 1]
+        return M
+
+    def J2(self, beta=None, backend=None):
+        r"""Wheel Jacobian :math:`\mathbf J_2(\boldsymbol\beta)` (21): block-diagonal in the units' blocks.
+
+        Parameters
+        ----------
+        beta : array (..., w), sequence of w SymPy expressions, or None
+            Steering angles :math:`\beta_i`; ``None`` means the symbols :math:`\beta_1..\beta_w`.
+
+        Returns
+        -------
+        numpy.ndarray (..., 2w, n_rates) or sympy.Matrix (2w, n_rates)
+        """
+        bk = SYMBOLIC if (beta is None or self.is_symbolic) else choose(beta, backend=backend)
+        b = self._beta(beta, bk)
+        batch = () if bk is SYMBOLIC else b.shape[:-1]
+        M = bk.zeros(2 * self.w, self.n_rates, batch)
+        for i, (u, sl) in enumerate(zip(self.wheels, self.rate_slices)):
+            bi = b[i] if bk is SYMBOLIC else b[..., i]
+            bk.set_block(M, 2 * i, sl.start, u.block(bi, backend=bk))
+        return M
+
+    def F(self, beta=None, backend=None):
+        r"""Functional matrix :math:`\mathbf F = [\mathbf J_1\ \ -\mathbf J_2]` (22)-(24).
+
+        Its columns follow :attr:`qdot_names`.
+
+        Returns
+        -------
+        numpy.ndarray (..., 2w, 3 + n_rates) or sympy.Matrix
+        """
+        J2 = self.J2(beta, backend)
+        sym = isinstance(J2, sp.MatrixBase)
+        J1 = self.J1(backend=SYMBOLIC if sym else NUMERIC)
+        bk = SYMBOLIC if sym else NUMERIC
+        return bk.broadcast_hstack(J1, -J2)
+
+    def J(self, beta=None, L=1, backend=None):
+        r"""The product :math:`\mathbf J = \mathbf J_{L1}^T\mathbf J_2` (56).
+
+        Returns
+        -------
+        numpy.ndarray (..., 3, n_rates) or sympy.Matrix (3, n_rates)
+        """
+        J2 = self.J2(beta, backend)
+        sym = isinstance(J2, sp.MatrixBase)
+        JL1 = self.J1(L, backend=SYMBOLIC if sym else NUMERIC)
+        return JL1.T * J2 if sym else np.swapaxes(JL1, -1, -2) @ J2
+
+    # --- frames ---------------------------------------------------------------------------------
+    def moved(self, origin=(0.0, 0.0), angle=0.0):
+        """The same robot described from another body frame.
+
+        The new frame has its origin (new operation point) at ``origin`` and is rotated by
+        ``angle`` relative to the current one; mount points are re-expressed, steering angles
+        shift by ``-angle``.  Used to check that results do not depend on the body frame.
+        """
+        import dataclasses
+        ox, oy = V.point("origin", origin)
+        c, s = np.cos(angle), np.sin(angle)
+        units = []
+        for u in self.wheels:
+            x, y = u.position[0] - ox, u.position[1] - oy
+            units.append(dataclasses.replace(u, position=(c * x + s * y, -s * x + c * y)))
+        return Robot(units, name=self.name)

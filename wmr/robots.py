@@ -1,0 +1,85 @@
+r"""Ready-made robots, including the three-wheel robots of the paper.
+
+The paper's numbering (the only one under which its printed :math:`\det\mathbf J` (59) holds
+exactly): the three mount points are the vertices of an equilateral triangle centred at C, wheel
+1 on the negative body x-axis and the others numbered clockwise,
+
+.. math:: \mathbf d_1 = L(-1, 0),\quad \mathbf d_2 = L(\tfrac12, \tfrac{\sqrt3}2),\quad
+          \mathbf d_3 = L(\tfrac12, -\tfrac{\sqrt3}2).
+"""
+from __future__ import annotations
+
+import numpy as np
+import sympy as sp
+
+from . import _validate as V
+from .robot import Robot
+from .wheels import CentredWheel, DualWheel, OffsetWheel
+
+#: Angles of the paper's mount points, wheel 1 first (clockwise from the negative x-axis).
+PAPER_MOUNT_ANGLES_DEG = (180.0, 60.0, -60.0)
+
+
+def equilateral_mounts(L=1.0, first_deg=180.0, clockwise=True, exact=False):
+    r"""Mount points at the vertices of an equilateral triangle with centroid C and circumradius L.
+
+    Parameters
+    ----------
+    L : float or sympy.Expr
+        Distance of each mount point from C, > 0.
+    first_deg : float
+        Polar angle of wheel 1 in degrees.
+    clockwise : bool
+        Number the other wheels clockwise (the paper's numbering) or counter-clockwise.
+    exact : bool
+        Return SymPy expressions (exact for multiples of 30 degrees).
+
+    Returns
+    -------
+    list of 3 pairs
+    """
+    L = V.positive("L", L)
+    step = -120 if clockwise else 120
+    out = []
+    for k in range(3):
+        a = first_deg + k * step
+        if exact or isinstance(L, sp.Basic):
+            ang = sp.pi * sp.Rational(a).limit_denominator(10**6) / 180
+            out.append((sp.nsimplify(L * sp.cos(ang)), sp.nsimplify(L * sp.sin(ang))))
+        else:
+            ang = sp.pi * sp.Rational(a).limit_denominator(10**6) / 180   # exact, then float:
+            out.append((float(L * sp.cos(ang)), float(L * sp.sin(ang))))  # no 1e-17 residue
+    return out
+
+
+def paper_robot(kind="centred", L=1.0, r=1.0, d=None, b=None, exact=False):
+    """The paper's three-wheel robot with its wheel numbering (see module docstring).
+
+    Parameters
+    ----------
+    kind : {"centred", "offset", "dual"}
+    L : float or sympy.Expr
+        Distance of the mount points from C.
+    r : float or sympy.Expr
+        Wheel radius.
+    d : float, optional
+        Offset of offset wheels (default ``r``, the isotropic choice (46)).
+    b : float, optional
+        Half separation of dual wheels (default ``r``).
+    exact : bool
+        Use exact (SymPy) mount coordinates.
+
+    Returns
+    -------
+    Robot
+    """
+    pts = equilateral_mounts(L, exact=exact)
+    if kind == "centred":
+        units = [CentredWheel(p, r=r) for p in pts]
+    elif kind == "offset":
+        units = [OffsetWheel(p, r=r, d=r if d is None else d) for p in pts]
+    elif kind == "dual":
+        units = [DualWheel(p, r=r, b=r if b is None else b) for p in pts]
+    else:
+        raise ValueError(f"kind must be 'centred', 'offset' or 'dual', got {kind!r}")
+    return Robot(units, name=f"paper-{kind}")

@@ -1,0 +1,123 @@
+r"""Time integration of the kinematics for given driving and steering inputs.
+
+The state is the platform pose :math:`(\psi, X, Y)` in the fixed frame :math:`\mathcal F` and the
+steering angles :math:`\boldsymbol\beta`.  At each instant the twist follows from the joint rates by
+the forward kinematics (least squares on (21)); :math:`\dot X, \dot Y` are :math:`\dot{\mathbf c}`
+rotated by :math:`\psi`; and each :math:`\dot\beta_i` follows its unit's law: (7) for offset wheels
+(:math:`\dot\beta_i = \dot\phi_i - \dot\psi`), the steering input for centred wheels, and the
+corrected (15) for dual wheels.  A fixed-step classical Runge-Kutta scheme keeps runs
+deterministic.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from . import _validate as V
+from .kinematics import forward
+
+
+@dataclass(frozen=True)
+class Trajectory:
+    """A simulated run.
+
+    Attributes
+    ----------
+    t : numpy.ndarray (N,)
+    pose : numpy.ndarray (N, 3)
+        :math:`(\\psi, X, Y)`, fixed frame.
+    beta : numpy.ndarray (N, w)
+    twist : numpy.ndarray (N, 3)
+        Body-frame twist at each sample.
+    slip : numpy.ndarray (N,)
+        Norm of the residual of (21): zero when the commanded rates were compatible.
+    """
+
+    robot: object
+    t: np.ndarray
+    pose: np.ndarray
+    beta: np.ndarray
+    twist: np.ndarray
+    slip: np.ndarray
+
+    def world(self, body_points):
+        """Map body-frame points (N, ..., 2) or (..., 2) to the fixed frame along the run."""
+        p = np.asarray(body_points, dtype=float)
+        psi, XY = self.pose[:, 0], self.pose[:, 1:]
+        c, s = np.cos(psi), np.sin(psi)
+        extra = p.ndim - 2 if p.shape[0] == len(self.t) else p.ndim - 1
+        shape = (len(self.t),) + (1,) * extra
+        c, s = c.reshape(shape), s.reshape(shape)
+        X = c * p[..., 0] - s * p[..., 1] + XY[:, 0].reshape(shape)
+        Y = s * p[..., 0] + c * p[..., 1] + XY[:, 1].reshape(shape)
+        return np.stack([X, Y], axis=-1)
+
+    def unit_points(self, i, key):
+        """World positions along the run of a unit's point ``key`` (see ``unit.points``)."""
+        pts = self.robot.wheels[i].points(self.beta[:, i])[key]
+        return self.world(pts)
+
+
+def _as_input(f, size, name):
+    if callable(f):
+        return f
+    arr = V.finite_array(name, f, last=size)
+    return lambda t, state: arr
+
+
+def simulate(robot, rates, beta0, t_end, dt, steer=None, pose0=(0.0, 0.0, 0.0)):
+    r"""Integrate the robot's motion under joint-rate (and steering) inputs.
+
+    Parameters
+    ----------
+    robot : Robot
+    rates : array (n_rates,) or callable ``(t, state) -> (n_rates,)``
+        Joint rates :math:`\dot{\boldsymbol\theta}`; ``state`` is ``(pose, beta)``.
+    beta0 : array (w,)
+        Initial steering angles.
+    t_end, dt : float
+        Duration and fixed step, > 0.
+    steer : array (w,) or callable, optional
+        Steering rates :math:`\dot\beta_i` of centred wheels (ignored for other units).
+    pose0 : triple
+        Initial :math:`(\psi, X, Y)`.
+
+    Returns
+    -------
+    Trajectory
+    """
+    t_end = V.positive("t_end", t_end)
+    dt = V.positive("dt", dt)
+    beta0 = V.finite_array("beta0", beta0, last=robot.w)
+    pose0 = V.finite_array("pose0", pose0, last=3)
+    rate_fn = _as_input(rates, robot.n_rates, "rates")
+    steer_fn = _as_input(np.zeros(robot.w) if steer is None else steer, robot.w, "steer")
+
+    def deriv(t, pose, beta):
+        th = V.finite_array("rates(t)", rate_fn(t, (pose, beta)), last=robot.n_rates)
+        st = V.finite_array("steer(t)", steer_fn(t, (pose, beta)), last=robot.w)
+        sol = forward(robot, beta, th)
+        tw = sol.value
+        c, s = np.cos(pose[0]), np.sin(pose[0])
+        dpose = np.array([tw[0], c * tw[1] - s * tw[2], s * tw[1] + c * tw[2]])
+        dbeta = np.array([u.beta_rate(tw[0], th[sl], st[i])
+                          for i, (u, sl) in enumerate(zip(robot.wheels, robot.rate_slices))])
+        return dpose, dbeta, tw, float(np.linalg.norm(sol.residual))
+
+    n = int(round(t_end / dt))
+    ts = np.arange(n + 1) * dt
+    pose = np.empty((n + 1, 3)); beta = np.empty((n + 1, robot.w))
+    twist = np.empty((n + 1, 3)); slip = np.empty(n + 1)
+    pose[0], beta[0] = pose0, beta0
+    for k in range(n):
+        t, p, b = ts[k], pose[k], beta[k]
+        k1p, k1b, tw, sl = deriv(t, p, b)
+        twist[k], slip[k] = tw, sl
+        k2p, k2b, *_ = deriv(t + dt / 2, p + dt / 2 * k1p, b + dt / 2 * k1b)
+        k3p, k3b, *_ = deriv(t + dt / 2, p + dt / 2 * k2p, b + dt / 2 * k2b)
+        k4p, k4b, *_ = deriv(t + dt, p + dt * k3p, b + dt * k3b)
+        pose[k + 1] = p + dt / 6 * (k1p + 2 * k2p + 2 * k3p + k4p)
+        beta[k + 1] = b + dt / 6 * (k1b + 2 * k2b + 2 * k3b + k4b)
+    _, _, twist[n], slip[n] = deriv(ts[n], pose[n], beta[n])
+    return Trajectory(robot, ts, pose, beta, twist, slip)

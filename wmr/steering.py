@@ -1,0 +1,134 @@
+r"""Steering: the instantaneous centre of rotation and compatible steering angles (60)-(65).
+
+At the instantaneous centre U the platform velocity vanishes (62):
+:math:`\dot{\mathbf u} = \dot{\mathbf c} + \dot\psi\mathbf E\mathbf u_c = \mathbf 0`, hence (63)
+:math:`\mathbf u_c = \tfrac1{\dot\psi}\mathbf E\dot{\mathbf c}` and (64)
+:math:`\mathbf u_i = \mathbf u_c - \mathbf d_i`.  A centred or dual wheel rolls without slip exactly
+when its rolling direction :math:`\mathbf j_i` is parallel to the velocity of :math:`P_i`, i.e. its
+axle :math:`\mathbf i_i` points at U (or, in translation, all wheel planes are parallel to
+:math:`\dot{\mathbf c}`).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from . import _validate as V
+from .platform import point_velocity
+from .tolerance import near_zero
+
+FINITE, AT_INFINITY, STILL = 0, 1, 2
+
+
+@dataclass(frozen=True)
+class InstantCentre:
+    """The instantaneous centre of a batch of twists.
+
+    Attributes
+    ----------
+    kind : numpy.ndarray of int (...)
+        :data:`FINITE` (rotation), :data:`AT_INFINITY` (translation) or :data:`STILL` (zero twist).
+    point : numpy.ndarray (..., 2)
+        :math:`\\mathbf u_c = \\overrightarrow{CU}` (63), body frame, where ``kind == FINITE``;
+        ``inf`` where the centre is at infinity and ``nan`` where the platform is still (both
+        flagged by ``kind``).
+    direction : numpy.ndarray (..., 2)
+        Unit vector :math:`\\mathbf E\\dot{\\mathbf c}/\\|\\dot{\\mathbf c}\\|` pointing from C towards the
+        centre (defined unless still).
+    """
+
+    kind: np.ndarray
+    point: np.ndarray
+    direction: np.ndarray
+
+
+def instantaneous_centre(twist):
+    r"""Instantaneous centre of rotation (63) of platform twists.
+
+    Parameters
+    ----------
+    twist : array (..., 3)
+        :math:`[\dot\psi, \dot x, \dot y]`, body frame.
+
+    Returns
+    -------
+    InstantCentre
+
+    Examples
+    --------
+    >>> ic = instantaneous_centre([1.0, 0.0, 2.0])   # moving along +y, turning left
+    >>> ic.point.tolist()
+    [-2.0, 0.0]
+    """
+    t = V.finite_array("twist", twist, last=3)
+    psi, c = t[..., 0], t[..., 1:]
+    speed = np.linalg.norm(c, axis=-1)
+    Ec = np.stack([-c[..., 1], c[..., 0]], axis=-1)                  # E c_dot
+    still = near_zero(psi) & near_zero(speed)
+    infinite = near_zero(psi, speed) & ~still
+    kind = np.where(still, STILL, np.where(infinite, AT_INFINITY, FINITE))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        point = Ec / np.where(kind == FINITE, psi, 1.0)[..., None]  # (63)
+        direction = Ec / np.where(still, 1.0, speed)[..., None]
+    point = np.where((kind == AT_INFINITY)[..., None], np.inf, point)
+    point = np.where((kind == STILL)[..., None], np.nan, point)
+    direction = np.where(still[..., None], np.nan, direction)
+    return InstantCentre(kind, point, direction)
+
+
+def steering_angles(robot, twist, current=None):
+    r"""Steering angles :math:`\beta_i` that make ``twist`` admissible for centred and dual wheels.
+
+    Each wheel plane is set parallel to the velocity :math:`\dot{\mathbf p}_i = \dot{\mathbf c} +
+    \dot\psi\mathbf E\mathbf d_i` of its mount point (2), choosing the angle that makes the
+    rolling rate positive: :math:`\mathbf j_i = -\dot{\mathbf p}_i/\|\dot{\mathbf p}_i\|`, i.e.
+    :math:`\beta_i = \operatorname{atan2}(\dot p_x, -\dot p_y)`.  Equivalently the axle
+    :math:`\mathbf i_i` points at the instantaneous centre.  Where the mount point is still (it
+    is the centre, or the twist is zero) every angle is admissible and ``current`` is kept;
+    offset wheels (full mobility) also keep ``current``.
+
+    Parameters
+    ----------
+    robot : Robot
+    twist : array (..., 3)
+    current : array (..., w), optional
+        Angles to keep where the choice is free (default 0).
+
+    Returns
+    -------
+    numpy.ndarray (..., w)
+        Angles in :math:`(-\pi, \pi]`.
+    """
+    t = V.finite_array("twist", twist, last=3)
+    d = robot.mount_points                                             # (w, 2)
+    pdot = point_velocity(t[..., None, :], d)                          # (..., w, 2)
+    if current is None:
+        current = np.zeros(pdot.shape[:-1])
+    current = V.finite_array("current", current, last=robot.w)
+    speed = np.linalg.norm(pdot, axis=-1)
+    scale = np.abs(t[..., 1:]).max(axis=-1) + np.abs(t[..., :1]).max(axis=-1) * np.abs(d).max()
+    free = near_zero(speed, scale[..., None])
+    beta = np.arctan2(pdot[..., 0], -pdot[..., 1])
+    steerable = np.array([u.kind in ("centred", "dual") for u in robot.wheels])
+    return np.where(free | ~steerable, np.broadcast_to(current, beta.shape), beta)
+
+
+def centre_to_wheels(twist, d):
+    r""":math:`\mathbf u_i = \tfrac1{\dot\psi}\mathbf E\dot{\mathbf c} - \mathbf d_i` (64): vectors from the mount points to U.
+
+    Parameters
+    ----------
+    twist : array (..., 3), with :math:`\dot\psi \ne 0`
+    d : array (w, 2)
+
+    Returns
+    -------
+    numpy.ndarray (..., w, 2)
+    """
+    ic = instantaneous_centre(twist)
+    if np.any(ic.kind != FINITE):
+        bad = np.asarray(twist)[ic.kind != FINITE][:1].tolist()
+        raise ValueError(f"u_i needs a finite instantaneous centre (psi_dot != 0); got twist {bad}")
+    d = V.finite_array("d", d, last=2)
+    return ic.point[..., None, :] - d

@@ -1,0 +1,231 @@
+r"""Wheel units: the intermediate body and its wheel(s), each a block of :math:`\mathbf J_2`.
+
+A wheel unit is mounted on the platform at :math:`P_i` (``position`` = :math:`\mathbf d_i`,
+body frame) through a vertical steering joint of angle :math:`\beta_i` (the angle of the
+intermediate body relative to the platform, :math:`\mathbf R_{bwi}` of (11)).  In the wheel frame
+:math:`\mathcal W_i`, :math:`\mathbf i_i = \mathbf R_{bwi}[1\ 0]^T` is the axle direction and
+:math:`\mathbf j_i = \mathbf R_{bwi}[0\ 1]^T` the rolling direction; the no-slip condition (6) is
+:math:`\dot{\mathbf h}_i = -r\dot\theta_i\mathbf j_i` (wheel spin :math:`\dot\theta_i` positive by the
+right-hand rule about :math:`\mathbf i_i`, :math:`\mathbf k` upward).
+
+Each unit contributes the block of the no-slip equation
+:math:`[\mathbf E\mathbf d_i\ \mathbf 1]\,\mathbf t = \mathbf B_i(\beta_i)\,\dot{\boldsymbol\theta}_i`
+(the i-th block row of (21)), where :math:`\dot{\boldsymbol\theta}_i` are its rate variables:
+
+================  ======================================  =====================================================
+unit              rates :math:`\dot{\boldsymbol\theta}_i`   block :math:`\mathbf B_i` (a block of :math:`\mathbf J_2`)
+================  ======================================  =====================================================
+:class:`OffsetWheel`   :math:`\dot\phi_i,\ \dot\theta_i`        :math:`\mathbf R_{bwi}\,\mathrm{diag}(-d,-r)` (20)
+:class:`CentredWheel`  :math:`\dot\theta_i`                     :math:`\mathbf R_{bwi}[0\ \ -r]^T` (51)
+:class:`DualWheel`     :math:`\dot\theta_{i1},\ \dot\theta_{i2}`  :math:`\mathbf R_{bwi}\begin{bmatrix}0&0\\-r/2&-r/2\end{bmatrix}` (17)
+================  ======================================  =====================================================
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import sympy as sp
+
+from . import _validate as V
+from .backend import NUMERIC, choose
+from .platform import rotation
+
+
+def _batched_angle(beta):
+    return np.asarray(beta, dtype=float)
+
+
+@dataclass(frozen=True)
+class _Unit:
+    position: tuple
+    r: float
+
+    kind = "unit"
+    n_rates = 0
+
+    def __post_init__(self):
+        object.__setattr__(self, "position", V.point("position", self.position))
+        object.__setattr__(self, "r", V.positive("r (wheel radius)", self.r))
+
+    # --- rate variables ----------------------------------------------------------------------
+    def rate_names(self, i):
+        """Plain names of this unit's rate variables when it is wheel ``i`` (1-based)."""
+        raise NotImplementedError
+
+    def rate_symbols(self, i):
+        """SymPy symbols of the rate variables, typeset as in the paper."""
+        raise NotImplementedError
+
+    @property
+    def is_symbolic(self):
+        from .backend import is_symbolic
+        return is_symbolic(*self.position, *[getattr(self, f) for f in ("r", "d", "b") if hasattr(self, f)])
+
+    def block(self, beta, backend=None):
+        r"""This unit's block :math:`\mathbf B_i(\beta_i)` of :math:`\mathbf J_2`.
+
+        Parameters
+        ----------
+        beta : float, array (...) or sympy.Expr
+            Steering angle :math:`\beta_i` of the intermediate body.
+
+        Returns
+        -------
+        numpy.ndarray (..., 2, n_rates) or sympy.Matrix (2, n_rates)
+        """
+        bk = choose(beta, self.r, *self.position, backend=backend)
+        return rotation(beta, bk) @ self._local_block(bk)
+
+    def _local_block(self, bk):
+        raise NotImplementedError
+
+    def points(self, beta):
+        r"""Points of the unit in the body frame, for drawing: a dict of arrays (..., 2).
+
+        Keys: ``"P"`` (steering axis), ``"H"`` (centre of the intermediate body's wheel or of
+        the pair), ``"wheels"`` (array (..., k, 2): wheel centres = ground contact points seen
+        from above), ``"i"`` and ``"j"`` (unit axle and rolling directions).
+        """
+        beta = _batched_angle(beta)
+        c, s = np.cos(beta), np.sin(beta)
+        i_dir = np.stack([c, s], axis=-1)
+        j_dir = np.stack([-s, c], axis=-1)
+        P = np.broadcast_to(np.asarray(self.position, dtype=float), i_dir.shape)
+        return self._points(P, i_dir, j_dir)
+
+    def _points(self, P, i_dir, j_dir):
+        return {"P": P, "H": P, "wheels": P[..., None, :], "i": i_dir, "j": j_dir}
+
+
+@dataclass(frozen=True)
+class OffsetWheel(_Unit):
+    r"""Offset (castor) wheel: centre :math:`H_i = P_i - d\,\mathbf j_i`, offset ``d`` from the steering axis.
+
+    With this placement the velocity of the steering-axis point is (9),
+    :math:`\dot{\mathbf p}_i = -r\dot\theta_i\mathbf j_i - d\dot\phi_i\mathbf i_i`, where
+    :math:`\dot\phi_i = \dot\psi + \dot\beta_i` (7) is the absolute steering rate.
+
+    Parameters
+    ----------
+    position : pair
+        :math:`\mathbf d_i = \overrightarrow{CP_i}`, body frame.
+    r : float
+        Wheel radius, > 0.
+    d : float
+        Offset, >= 0 (``d = 0`` is a centred wheel whose steering rate still counts as a rate).
+    """
+
+    d: float = 0.0
+    kind = "offset"
+    n_rates = 2
+
+    def __post_init__(self):
+        super().__post_init__()
+        object.__setattr__(self, "d", V.nonnegative("d (offset)", self.d))
+
+    def rate_names(self, i):
+        return (f"phi_dot_{i}", f"theta_dot_{i}")
+
+    def rate_symbols(self, i):
+        return sp.symbols(rf"\dot{{\phi}}_{{{i}}} \dot{{\theta}}_{{{i}}}", real=True)
+
+    def _local_block(self, bk):
+        # (20)/(21): p~ = diag(-d, -r)
+        return bk.matrix([[-self.d, 0], [0, -self.r]])
+
+    def beta_rate(self, psi_dot, rates, steer=None):
+        """(7): beta_dot = phi_dot - psi_dot.  ``rates[..., 0]`` is phi_dot."""
+        return rates[..., 0] - psi_dot
+
+    def _points(self, P, i_dir, j_dir):
+        H = P - self.d * j_dir
+        return {"P": P, "H": H, "wheels": H[..., None, :], "i": i_dir, "j": j_dir}
+
+
+@dataclass(frozen=True)
+class CentredWheel(_Unit):
+    r"""Centred steered wheel: the steering axis passes through the wheel centre (d = 0).
+
+    Its only rate in :math:`\mathbf J_2` is the rolling rate :math:`\dot\theta_i` (51); the
+    steering rate :math:`\dot\beta_i` is decoupled and enters only through the angle
+    :math:`\beta_i`.
+
+    Parameters
+    ----------
+    position : pair
+        :math:`\mathbf d_i`, body frame.
+    r : float
+        Wheel radius, > 0.
+    """
+
+    kind = "centred"
+    n_rates = 1
+
+    def rate_names(self, i):
+        return (f"theta_dot_{i}",)
+
+    def rate_symbols(self, i):
+        return (sp.Symbol(rf"\dot{{\theta}}_{{{i}}}", real=True),)
+
+    def _local_block(self, bk):
+        # (51): R_bwi [0, -r]^T
+        return bk.matrix([[0], [-self.r]])
+
+    def beta_rate(self, psi_dot, rates, steer=None):
+        """The steering rate is an independent input (decoupled from rolling)."""
+        if steer is None:
+            return np.zeros_like(np.asarray(psi_dot, dtype=float))
+        return steer
+
+
+@dataclass(frozen=True)
+class DualWheel(_Unit):
+    r"""Dual-wheel: two wheels of radius ``r`` at :math:`H_i \pm b\,\mathbf i_i` on one intermediate body.
+
+    Wheel 1 is at :math:`H_{i1} = P_i + b\,\mathbf i_i`, wheel 2 at :math:`H_{i2} = P_i - b\,\mathbf i_i`
+    (the intermediate body is centred, :math:`H_i = P_i`).  The average rolling rate
+    :math:`\dot\theta_i = (\dot\theta_{i1} + \dot\theta_{i2})/2` (18) drives :math:`P_i` as a centred
+    wheel does (17); the difference steers the unit: the *absolute* heading rate of the
+    intermediate body is :math:`\dot\phi_i = \dot\psi + \dot\beta_i = -\tfrac{r}{2b}(\dot\theta_{i1}-\dot\theta_{i2})`
+    (the paper's (15) writes :math:`\dot\beta_i` on the left, which holds only when :math:`\dot\psi = 0`).
+
+    Parameters
+    ----------
+    position : pair
+        :math:`\mathbf d_i`, body frame.
+    r : float
+        Wheel radius, > 0.
+    b : float
+        Half the wheel separation, > 0.
+    """
+
+    b: float = 1.0
+    kind = "dual"
+    n_rates = 2
+
+    def __post_init__(self):
+        super().__post_init__()
+        object.__setattr__(self, "b", V.positive("b (half wheel separation)", self.b))
+
+    def rate_names(self, i):
+        return (f"theta_dot_{i}1", f"theta_dot_{i}2")
+
+    def rate_symbols(self, i):
+        return sp.symbols(rf"\dot{{\theta}}_{{{i}1}} \dot{{\theta}}_{{{i}2}}", real=True)
+
+    def _local_block(self, bk):
+        # (17): h_dot_i = -(r/2)(theta_dot_i1 + theta_dot_i2) j_i
+        half = self.r / 2
+        return bk.matrix([[0, 0], [-half, -half]])
+
+    def beta_rate(self, psi_dot, rates, steer=None):
+        """Corrected (15): beta_dot = -(r/2b)(theta_dot_1 - theta_dot_2) - psi_dot."""
+        return -(self.r / (2 * self.b)) * (rates[..., 0] - rates[..., 1]) - psi_dot
+
+    def _points(self, P, i_dir, j_dir):
+        wheels = np.stack([P + self.b * i_dir, P - self.b * i_dir], axis=-2)
+        return {"P": P, "H": P, "wheels": wheels, "i": i_dir, "j": j_dir}
+
+
+UNIT_TYPES = (OffsetWheel, CentredWheel, DualWheel)
