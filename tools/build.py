@@ -43,7 +43,7 @@ CELL_TIMEOUT = 600  # seconds per notebook cell
 WORKERS = 2
 
 PAPER = ("Y. P. Leow, K. H. Low and W. K. Loh, \u201cKinematic modeling, mobility analysis "
-         "and design of wheeled mobile robots\u201d, Advanced Robotics, 2002.")
+         "and design of wheeled mobile robots\u201d, Advanced Robotics 16(2), 2002.")
 TITLE = "Kinematic modeling, mobility analysis and design of wheeled mobile robots"
 SUBTITLE = "An executable reproduction of Leow, Low & Loh (Advanced Robotics, 2002)"
 
@@ -193,17 +193,18 @@ def _execute_one(t: Tree, nb: Path, key: str) -> str | None:
     return None
 
 
-def execute(tree: Tree | None = None, workers: int = WORKERS, merge: bool = True) -> list[str]:
+def execute(tree: Tree | None = None, workers: int = WORKERS, merge: bool = True,
+            only: list[str] | None = None) -> list[str]:
     """Execute every stale notebook (parallel), then merge the ledger. Raises BuildError.
-    Returns the names of the notebooks that were executed."""
+    `only`: restrict to these notebook file names. Returns the names of the notebooks executed."""
     t = tree or Tree()
     t0 = time.perf_counter()
-    nbs = t.notebook_files()
+    nbs = [nb for nb in t.notebook_files() if only is None or nb.name in only]
     if not nbs:
         say("execute", f"no notebooks in {t.notebooks}")
     t.nb_out.mkdir(parents=True, exist_ok=True)
     wh = wmr_hash(t)
-    todo = stale_notebooks(t)
+    todo = [nb for nb in stale_notebooks(t) if nb in nbs]
     for nb in nbs:
         if nb not in todo:
             say("execute", f"{nb.name} up to date (cached)")
@@ -245,7 +246,8 @@ def merge_ledger(t: Tree, force: bool = False) -> None:
     if p.returncode != 0:
         raise BuildError(f"python -m wmr.ledger failed (exit {p.returncode}):\n{p.stdout}\n{p.stderr}")
     _write_atomic(stamp, key + "\n")
-    say("ledger", f"python -m wmr.ledger -> figures/ledger.csv ({len(frags)} fragments)", t0)
+    last = (p.stdout.strip().splitlines() or [""])[-1]
+    say("ledger", f"python -m wmr.ledger: {last or 'figures/ledger.csv'} ({len(frags)} fragments)", t0)
 
 
 def figures(tree: Tree | None = None, force: bool = False) -> bool:
@@ -530,7 +532,7 @@ def build_report_notebook(t: Tree, date: str, commit: str):
             body = r"\fbox{missing image figures/" + latex_text(key) + "}"
         fn_tex = r" {\footnotesize(\texttt{" + latex_text(fn) + "})}" if fn else ""
         latex = ("\\begin{figure}[H]\\centering\n" + body + "\n"
-                 "\\caption*{\\textbf{" + latex_text(label + " " + title) + ".} " + latex_text(cap) + fn_tex + "}\n"
+                 "\\captionsetup{format=plain,font=small,aboveskip=6pt}\n\\caption*{\\textbf{" + latex_text(label + " " + title) + ".} " + latex_text(cap) + fn_tex + "}\n"
                  "\\label{fig:" + key + "}\n\\end{figure}")
         cells.extend(_both(h, latex))
 
