@@ -363,6 +363,19 @@ def md_table(headers: list[str], rows: list[list], widths: list[int] | None = No
 NOT_OK = ("typo", "wrong")
 
 
+def fmt_residual(v) -> str:
+    try:
+        x = float(v)
+    except (TypeError, ValueError):
+        return "" if v is None else str(v)
+    return "0" if x == 0 else f"{x:.1e}"
+
+
+def chapter_no(nb) -> str:
+    m = re.match(r"(\d+)", str(nb or ""))
+    return m.group(1) if m else str(nb or "")
+
+
 def _truthy(v) -> bool | None:
     s = str(v).strip().lower()
     if s in {"1", "true", "yes", "y", "listed", "found", "reported"}:
@@ -485,14 +498,19 @@ def build_report_notebook(t: Tree, date: str, commit: str):
 
     # --- ledger table
     if ledger is not None:
-        rows = [[r.get("id"), r.get("section"), r.get("verdict") if r.get("verdict") == "ok" else f"**{r.get('verdict')}**",
-                 r.get("convention"), r.get("symbolic_check"), r.get("max_residual"), r.get("notebook"), r.get("note")]
+        rows = [[r.get("id"), r.get("section"),
+                 r.get("verdict") if r.get("verdict") == "ok" else f"**{r.get('verdict')}**",
+                 r.get("symbolic_check"), fmt_residual(r.get("max_residual")), chapter_no(r.get("notebook")),
+                 " ".join((r.get("note") or "").split())
+                 + (f" *Convention:* {' '.join(r['convention'].split())}" if (r.get("convention") or "").strip() else "")]
                 for r in ledger]
-        cells.append(_md("# Ledger\n\nEvery equation and claim checked, in the paper's order. "
-                         "Printed and corrected forms of the non-*ok* rows are in the errata; the full table, "
-                         "with the LaTeX of every row, is `figures/ledger.csv`.\n\n" +
-                         md_table(["ID", "§", "Verdict", "Convention", "Symbolic check", "Max residual", "Notebook", "Note"],
-                                  rows, [9, 4, 6, 8, 7, 7, 9, 22])))
+        cells.append(_md("# Ledger\n\nEvery equation and claim checked, in the paper's order "
+                         "(*Ch.* is the chapter that checks it; *Symbolic* the outcome of the exact comparison; "
+                         "*Residual* the largest numerical residual). Printed and corrected forms of the rows that "
+                         "are not *ok* are in the errata; the full table, with the LaTeX of every row, is "
+                         "`figures/ledger.csv`.\n\n" +
+                         md_table(["ID", "§", "Verdict", "Symbolic", "Residual", "Ch.", "Note"],
+                                  rows, [6, 5, 7, 7, 7, 3, 45])))
 
     # --- errata
     if ledger is not None:
