@@ -617,8 +617,63 @@ def export_html(nb, t: Tree, out: Path) -> None:
     _write_atomic(out, body)
 
 
+def html_tables_to_latex(nb) -> int:
+    """Give every HTML-only table output (pandas DataFrames) a text/latex twin, converted by
+    pandoc in ONE call, so the PDF shows a real (long)table instead of wrapped plain text.
+    The HTML report is unaffected (it prefers text/html). Returns the number converted."""
+    from nbconvert.utils.pandoc import pandoc
+    targets = []
+    for c in nb.cells:
+        if c.cell_type != "code":
+            continue
+        for o in c.get("outputs", []):
+            d = o.get("data", {})
+            h = d.get("text/html")
+            if h and "text/latex" not in d and "<table" in (h if isinstance(h, str) else "".join(h)):
+                targets.append(d)
+    if not targets:
+        return 0
+    sep = "WMRTABLESEPARATOR"
+    src = f"\n<p>{sep}</p>\n".join(
+        re.sub(r"<style.*?</style>", "", d["text/html"] if isinstance(d["text/html"], str) else "".join(d["text/html"]), flags=re.S)
+        for d in targets)
+    tex = pandoc(src, "html", "latex")
+    parts = [p.strip() for p in re.split(r"\n*" + sep + r"\n*", tex)]
+    if len(parts) != len(targets):
+        return 0  # could not split reliably: keep the plain-text fallback
+    for d, p in zip(targets, parts):
+        d["text/latex"] = p
+    return len(targets)
+
+
+MD_READER = "markdown+tex_math_double_backslash-fancy_lists"  # "(61) is ..." is not a list
+
+
+def markdown_to_latex_batch(nb) -> int:
+    """Convert every markdown cell to LaTeX in ONE pandoc call (nbconvert's template calls pandoc
+    twice per cell: hundreds of processes for the whole report). The result goes into the cell's
+    metadata, which the wmr_latex template uses. Falls back to per-cell conversion (by the
+    template) if the batch cannot be split back reliably. Returns the number of cells converted."""
+    from nbconvert.filters import citation2latex, strip_files_prefix
+    from nbconvert.utils.pandoc import pandoc
+    cells = [c for c in nb.cells if c.cell_type == "markdown" and c.source.strip()]
+    if not cells:
+        return 0
+    sep = "WMRCELLSEPARATOR"
+    src = f"\n\n{sep}\n\n".join(strip_files_prefix(citation2latex(c.source)) + "\n" for c in cells)
+    tex = pandoc(src, MD_READER, "latex")
+    parts = re.split(r"\n*^" + sep + r"$\n*", tex, flags=re.M)
+    if len(parts) != len(cells):
+        return 0
+    for c, part in zip(cells, parts):
+        c.metadata["wmr_latex"] = part.strip("\n")
+    return len(cells)
+
+
 def export_pdf(nb, t: Tree, out: Path) -> None:
     from nbconvert import PDFExporter
+    html_tables_to_latex(nb)
+    markdown_to_latex_batch(nb)
     # raw_mimetypes: PDFExporter would keep only 'application/pdf' raw cells (its output type)
     exp = PDFExporter(template_name="wmr_latex", extra_template_basedirs=[str(TEMPLATES)],
                       raw_mimetypes=["text/latex", "text/tex", ""],
