@@ -614,7 +614,17 @@ def export_html(nb, t: Tree, out: Path) -> None:
                        exclude_input_prompt=True, exclude_output_prompt=True, embed_images=True)
     body, _ = exp.from_notebook_node(nb, resources={"metadata": {"path": str(t.root), "name": "report"},
                                                     "wmr_mathjax_js": mathjax_js()})
-    _write_atomic(out, body)
+    _write_atomic(out, add_toc(body))
+
+
+def add_toc(page: str) -> str:
+    """Insert a table of contents (links to every top-level heading) after the title block."""
+    heads = re.findall(r'<h1 id="([^"]+)">(.*?)<a class="anchor-link"', page, flags=re.S)
+    if not heads or "</header>" not in page:
+        return page
+    items = "".join(f'<li><a href="#{hid}">{text}</a></li>' for hid, text in heads)
+    nav = f'<nav class="wmr-toc"><p class="wmr-toc-h">Contents</p><ul>{items}</ul></nav>'
+    return page.replace("</header>", "</header>" + nav, 1)
 
 
 def html_tables_to_latex(nb) -> int:
