@@ -81,11 +81,15 @@ class Tree:
 
     def env(self) -> dict:
         """Environment for notebook kernels and `python -m wmr.*`: the running (venv) Python
-        first on PATH, ROOT first on PYTHONPATH, non-interactive matplotlib."""
+        first on PATH, ROOT first on PYTHONPATH."""
         env = dict(os.environ)
         env["PATH"] = str(Path(sys.executable).parent) + os.pathsep + env.get("PATH", "")
         env["PYTHONPATH"] = str(self.root) + (os.pathsep + env["PYTHONPATH"] if env.get("PYTHONPATH") else "")
         env["PYDEVD_DISABLE_FILE_VALIDATION"] = "1"
+        # notebooks and the figure script run side by side on few cores: one BLAS thread each
+        # (no oversubscription; also makes floating-point reductions run in a fixed order)
+        for var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
+            env.setdefault(var, "1")
         env["PYTHONHASHSEED"] = "0"
         return env
 
