@@ -1,0 +1,120 @@
+r"""Section 5 as printed: WMR with centred wheels, (51)-(59), and the list of singular configurations.
+
+Conventions of the transcription are those of :mod:`wmr.paper.isotropy`: matrix identities are
+``Eq(lhs, rhs)`` with the model objects named by :class:`sympy.MatrixSymbol`; general mount points
+are the symbols :data:`D`; (51) is transcribed for one wheel with generic symbols.  The steering
+angles :math:`\beta_1..\beta_3` are :data:`wmr.symbols.beta` (the same symbols as
+:attr:`wmr.Robot.beta_symbols`).
+
+Nothing here is derived: these are the statements under test (see
+``notebooks/04_centred_wheels_and_singularities``).
+"""
+from __future__ import annotations
+
+import sympy as sp
+
+from .. import symbols as S
+from . import register
+from .isotropy import D
+
+SECTION_KIN, SECTION_MOB, SECTION_ISO = "5.1", "5.2", "5.3"
+
+#: generic wheel i of (51)
+d_i = sp.symbols(r"d_{ix} d_{iy}", real=True)
+beta_i = sp.Symbol(r"\beta_i", real=True)
+theta_dot_i = sp.Symbol(r"\dot{\theta}_i", real=True)
+
+#: model objects named as in the paper (three centred wheels: J2 is 6 x 3, J is 3 x 3)
+JL1 = sp.MatrixSymbol(r"\mathbf{J}_{L1}", 6, 3)
+J2 = sp.MatrixSymbol(r"\mathbf{J}_{2}", 6, 3)
+J = sp.MatrixSymbol(r"\mathbf{J}", 3, 3)
+tL = sp.MatrixSymbol(r"\mathbf{t}_{L}", 3, 1)
+theta_dot = sp.MatrixSymbol(r"\dot{\boldsymbol{\theta}}", 3, 1)
+F = sp.MatrixSymbol(r"\mathbf{F}", 6, 6)
+q_dot = sp.MatrixSymbol(r"\dot{\mathbf{q}}", 6, 1)
+det_J = sp.Symbol(r"\det(\mathbf{J})")
+
+_E = sp.Matrix([[0, -1], [1, 0]])
+_I2 = sp.eye(2)
+_r = S.r
+b1, b2, b3 = S.beta
+
+
+def _R(angle):
+    # (11) as printed
+    return sp.Matrix([[sp.cos(angle), -sp.sin(angle)], [sp.sin(angle), sp.cos(angle)]])
+
+
+register(
+    "51", SECTION_KIN,
+    r"[\mathbf{E}\mathbf{d}_i\quad \mathbf{1}]\begin{bmatrix}\dot\psi\\ \dot{\mathbf{c}}\end{bmatrix} = "
+    r"[\mathbf{R}_{bwi}]\begin{bmatrix}0\\ -r\dot\theta_i\end{bmatrix}",
+    sp.Eq(sp.Matrix.hstack(_E * sp.Matrix(d_i), _I2) * sp.Matrix([S.psi_dot, S.x_dot, S.y_dot]),
+          _R(beta_i) * sp.Matrix([0, -_r * theta_dot_i]), evaluate=False),
+    note="one wheel, generic symbols; followed (unnumbered) by J1 (as in (21)) and the block-diagonal J2 with "
+         "blocks R_bwi [0, -r]^T, stored in extra['J2'] for w = 3",
+    J2=sp.diag(*[_R(b) * sp.Matrix([0, -_r]) for b in S.beta]))
+
+register(
+    "52", SECTION_MOB,
+    r"\mathbf{F} \equiv \begin{bmatrix} \mathbf{E}\mathbf{d}_1 & \mathbf{1} & [\mathbf{R}_{bw1}]\begin{bmatrix}0\\ r\end{bmatrix} & \mathbf{0} & \mathbf{0}\\ "
+    r"\mathbf{E}\mathbf{d}_2 & \mathbf{1} & \mathbf{0} & [\mathbf{R}_{bw2}]\begin{bmatrix}0\\ r\end{bmatrix} & \mathbf{0}\\ "
+    r"\mathbf{E}\mathbf{d}_3 & \mathbf{1} & \mathbf{0} & \mathbf{0} & [\mathbf{R}_{bw3}]\begin{bmatrix}0\\ r\end{bmatrix}\end{bmatrix}",
+    sp.Eq(F, sp.Matrix.hstack(
+        sp.Matrix.vstack(*[sp.Matrix.hstack(_E * sp.Matrix(p), _I2) for p in D]),
+        sp.diag(*[_R(b) * sp.Matrix([0, _r]) for b in S.beta])), evaluate=False),
+    garbled="the third block row prints a plain 1 for the identity 1 (2 x 2)",
+    note="three centred wheels, general mount points D; note the sign +r")
+
+register(
+    "53", SECTION_MOB,
+    r"\dot{\mathbf{q}} \equiv \begin{bmatrix}\dot\psi & \dot x & \dot y & \dot\theta_1 & \dot\theta_2 & \dot\theta_3\end{bmatrix}^{\mathrm{T}}",
+    sp.Eq(q_dot, sp.Matrix([S.psi_dot, S.x_dot, S.y_dot, *S.theta_dot]), evaluate=False),
+    garbled="the text before it says 'q' for q-dot",
+    note="definition: the column order of F in (52)")
+
+register(
+    "54", SECTION_ISO, r"\mathbf{J}_2^{\mathrm{T}}\mathbf{J}_2 = r^2\begin{bmatrix}1&0&0\\0&1&0\\0&0&1\end{bmatrix}",
+    sp.Eq(J2.T * J2, _r**2 * sp.eye(3), evaluate=False))
+
+register(
+    "55", SECTION_ISO, r"\mathbf{t}_L = \frac{1}{3}\mathbf{J}\dot{\boldsymbol{\theta}}",
+    sp.Eq(tL, J * theta_dot / 3, evaluate=False),
+    note="forward kinematics with both Jacobians isotropic ('robustness of the kinematic control is ensured')")
+
+register(
+    "56", SECTION_ISO, r"\mathbf{J} \equiv \mathbf{J}_{L1}^{\mathrm{T}}\mathbf{J}_2",
+    sp.Eq(J, JL1.T * J2, evaluate=False), note="definition (3 x 3 for three centred wheels)")
+
+register(
+    "57", SECTION_ISO, r"\dot{\boldsymbol{\theta}} = \frac{1}{r^2}\mathbf{J}^{\mathrm{T}}\mathbf{t}_L",
+    sp.Eq(theta_dot, J.T * tL / _r**2, evaluate=False), note="inverse kinematics")
+
+register(
+    "58", SECTION_ISO, r"\det(\mathbf{J}) = 0",
+    sp.Eq(sp.Determinant(J), 0),
+    note="definition of the singular configurations: the angles beta_i that solve it")
+
+_s3 = sp.sqrt(3)
+register(
+    "59", SECTION_ISO,
+    r"\det(\mathbf{J}) = -\frac{\sqrt{3}}{2}\cos(\beta_1-\beta_2-\beta_3) + \frac{3}{4}\sin(\beta_1-\beta_2+\beta_3) "
+    r"- \frac{3}{4}\sin(\beta_1+\beta_2-\beta_3) + \frac{\sqrt{3}}{4}\cos(\beta_1+\beta_2-\beta_3) "
+    r"+ \frac{\sqrt{3}}{4}\cos(\beta_1-\beta_2+\beta_3)",
+    sp.Eq(det_J, -_s3 / 2 * sp.cos(b1 - b2 - b3) + sp.Rational(3, 4) * sp.sin(b1 - b2 + b3)
+          - sp.Rational(3, 4) * sp.sin(b1 + b2 - b3) + _s3 / 4 * sp.cos(b1 + b2 - b3)
+          + _s3 / 4 * sp.cos(b1 - b2 + b3)),
+    note="computed with Maple in the paper, for the three-wheel robot of Section 5 (placement and numbering not "
+         "stated). Followed by the list of zeros in extra['singular']; (v) is a geometric statement (None)",
+    singular={
+        "i": r"\beta_1 = \beta_2 = \beta_3",
+        "ii": r"\beta_1 = \beta_3 = 60^\circ \text{ or } -120^\circ",
+        "iii": r"\beta_1 = \beta_2 = -60^\circ \text{ or } 120^\circ",
+        "iv": r"\beta_2 = \beta_3 = 0^\circ \text{ or } 180^\circ",
+        "v": r"\text{planes of all three wheels intersect}",
+    },
+    singular_sets={                       # (pair of equal angles, the printed values in degrees)
+        "ii": ((1, 3), (60, -120)),
+        "iii": ((1, 2), (-60, 120)),
+        "iv": ((2, 3), (0, 180)),
+    })
