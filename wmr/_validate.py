@@ -7,8 +7,38 @@ import numpy as np
 import sympy as sp
 
 
+def _scalar(value):
+    """Unwrap 0-d NumPy arrays; keep everything else."""
+    if isinstance(value, np.ndarray) and value.ndim == 0:
+        return value.item()
+    return value
+
+
+def _number(value):
+    """A validated real number as ``int`` (exact, so SymPy products stay exact) or ``float``."""
+    return int(value) if isinstance(value, numbers.Integral) else float(value)
+
+
+def real(name, value):
+    """Return ``value`` if it is a finite real number (or a SymPy expression not known to be non-real)."""
+    value = _scalar(value)
+    if isinstance(value, sp.Basic):
+        if value.is_real is False or value.is_finite is False:
+            raise ValueError(f"{name} must be a finite real number, got {value!r}")
+        return value
+    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+        raise ValueError(f"{name} must be a real number, got {value!r}")
+    if not np.isfinite(value):
+        raise ValueError(f"{name} must be a finite real number, got {value!r}")
+    return _number(value)
+
+
 def positive(name, value):
-    """Return ``value`` if it is a positive finite number (or a SymPy expression not known to be <= 0)."""
+    """Return ``value`` if it is a positive finite number (or a SymPy expression not known to be <= 0).
+
+    Integers stay integers (so that SymPy expressions built from them stay exact).
+    """
+    value = _scalar(value)
     if isinstance(value, sp.Basic):
         if value.is_positive is False or value.is_finite is False:
             raise ValueError(f"{name} must be positive, got {value!r}")
@@ -17,11 +47,12 @@ def positive(name, value):
         raise ValueError(f"{name} must be a real number, got {value!r}")
     if not np.isfinite(value) or value <= 0:
         raise ValueError(f"{name} must be a positive finite number, got {value!r}")
-    return float(value)
+    return _number(value)
 
 
 def nonnegative(name, value):
     """Return ``value`` if it is a finite number >= 0 (or a SymPy expression not known to be < 0)."""
+    value = _scalar(value)
     if isinstance(value, sp.Basic):
         if value.is_nonnegative is False or value.is_finite is False:
             raise ValueError(f"{name} must be non-negative, got {value!r}")
@@ -30,7 +61,7 @@ def nonnegative(name, value):
         raise ValueError(f"{name} must be a real number, got {value!r}")
     if not np.isfinite(value) or value < 0:
         raise ValueError(f"{name} must be a finite number >= 0, got {value!r}")
-    return float(value)
+    return _number(value)
 
 
 def point(name, value):
@@ -52,6 +83,14 @@ def point(name, value):
     return tuple(out)
 
 
+def _short(arr):
+    """A short text form of an array for error messages."""
+    arr = np.asarray(arr)
+    if arr.size <= 6:
+        return np.array2string(arr, precision=4, separator=", ").replace("\n", "")
+    return "first values " + np.array2string(arr.ravel()[:6], precision=4, separator=", ")[:-1] + ", ...]"
+
+
 def finite_array(name, value, last=None):
     """Convert to a float array, require finiteness and (optionally) the size of the last axis."""
     try:
@@ -60,7 +99,7 @@ def finite_array(name, value, last=None):
         raise ValueError(f"{name} must be an array of real numbers, got {value!r}") from None
     if last is not None and (arr.ndim == 0 or arr.shape[-1] != last):
         raise ValueError(
-            f"{name} must have shape (..., {last}), got shape {arr.shape}")
+            f"{name} must have shape (..., {last}), got shape {arr.shape}: {_short(arr)}")
     if not np.all(np.isfinite(arr)):
         bad = arr[~np.isfinite(arr)].ravel()[:3]
         raise ValueError(f"{name} must be finite, got non-finite values {bad.tolist()}")

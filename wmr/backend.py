@@ -44,19 +44,14 @@ class NumericBackend:
         return M
 
     @staticmethod
-    def hstack(*Ms):
-        Ms = np.broadcast_arrays(*[np.asarray(M, dtype=float) for M in Ms])
-        shapes = [M.shape for M in Ms]
-        del shapes
-        return np.concatenate(Ms, axis=-1)
-
-    @staticmethod
     def broadcast_hstack(*Ms):
-        """Concatenate along columns after broadcasting the batch axes."""
+        """Concatenate along columns after broadcasting the batch axes (not the matrix axes)."""
         Ms = [np.asarray(M, dtype=float) for M in Ms]
         batch = np.broadcast_shapes(*[M.shape[:-2] for M in Ms])
         Ms = [np.broadcast_to(M, batch + M.shape[-2:]) for M in Ms]
         return np.concatenate(Ms, axis=-1)
+
+    hstack = broadcast_hstack
 
     @staticmethod
     def transpose(M):

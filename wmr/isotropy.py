@@ -10,7 +10,7 @@ from __future__ import annotations
 import numpy as np
 
 from . import _validate as V
-from .mobility import singular_values
+from .mobility import _as_stack, singular_values
 from .tolerance import TOL
 
 
@@ -65,6 +65,20 @@ def characteristic_length(robot):
 
 
 def gram(A):
-    """The product ``A^T A`` (stack), used for the isotropy conditions (34), (40), (54)."""
-    A = V.finite_array("A", A)
+    r"""The product :math:`\mathbf A^T\mathbf A` of each matrix of a stack, as in (34), (40) and (54).
+
+    Parameters
+    ----------
+    A : array_like (..., m, n)
+
+    Returns
+    -------
+    numpy.ndarray (..., n, n)
+
+    Examples
+    --------
+    >>> gram([[1.0, 2.0], [0.0, 1.0]]).tolist()
+    [[1.0, 2.0], [2.0, 5.0]]
+    """
+    A = _as_stack(A)
     return np.swapaxes(A, -1, -2) @ A

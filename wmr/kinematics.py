@@ -78,9 +78,10 @@ def forward(robot, beta, rates):
     rates = V.finite_array("rates", rates, last=robot.n_rates)
     J1 = robot.J1()
     s = np.linalg.svd(J1, compute_uv=False)
-    if s[-1] <= TOL * max(1.0, s[0]):
+    if len(s) < 3 or s[-1] <= TOL * max(1.0, s[0]):
         raise ValueError(
-            f"J1 has rank < 3 (mount points {robot.mount_points.tolist()} coincide): the twist is not determined")
+            f"J1 has rank < 3 (fewer than two distinct mount points: {robot.mount_points.tolist()}): "
+            "the twist is not determined")
     J2 = robot.J2(beta)                               # (..., 2w, n)
     rhs = (J2 @ rates[..., None])[..., 0]             # (..., 2w)
     t = rhs @ np.linalg.pinv(J1).T                    # (..., 3)

@@ -39,6 +39,9 @@ def rotation(angle, backend=NUMERIC):
     -------
     numpy.ndarray (..., 2, 2) or sympy.Matrix (2, 2)
     """
+    if backend is NUMERIC:
+        from ._validate import finite_array
+        angle = finite_array("angle", angle)
     c, s = backend.cos(angle), backend.sin(angle)
     return backend.matrix([[c, -s], [s, c]])
 

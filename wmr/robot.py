@@ -198,6 +198,7 @@ class Robot:
         """
         import dataclasses
         ox, oy = V.point("origin", origin)
+        angle = float(V.real("angle", angle))
         c, s = np.cos(angle), np.sin(angle)
         units = []
         for u in self.wheels:

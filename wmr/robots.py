@@ -39,6 +39,7 @@ def equilateral_mounts(L=1.0, first_deg=180.0, clockwise=True, exact=False):
     list of 3 pairs
     """
     L = V.positive("L", L)
+    first_deg = V.real("first_deg", first_deg)
     step = -120 if clockwise else 120
     out = []
     for k in range(3):

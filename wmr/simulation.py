@@ -77,7 +77,8 @@ def simulate(robot, rates, beta0, t_end, dt, steer=None, pose0=(0.0, 0.0, 0.0)):
     beta0 : array (w,)
         Initial steering angles.
     t_end, dt : float
-        Duration and fixed step, > 0.
+        Duration and largest step, > 0; the fixed step used is ``t_end / ceil(t_end / dt)`` so that
+        the last sample is at ``t_end``.
     steer : array (w,) or callable, optional
         Steering rates :math:`\dot\beta_i` of centred wheels (ignored for other units).
     pose0 : triple
@@ -105,7 +106,8 @@ def simulate(robot, rates, beta0, t_end, dt, steer=None, pose0=(0.0, 0.0, 0.0)):
                           for i, (u, sl) in enumerate(zip(robot.wheels, robot.rate_slices))])
         return dpose, dbeta, tw, float(np.linalg.norm(sol.residual))
 
-    n = int(round(t_end / dt))
+    n = max(1, int(np.ceil(t_end / dt - 1e-9)))    # steps of t_end / n <= dt: the run ends at t_end
+    dt = t_end / n
     ts = np.arange(n + 1) * dt
     pose = np.empty((n + 1, 3)); beta = np.empty((n + 1, robot.w))
     twist = np.empty((n + 1, 3)); slip = np.empty(n + 1)

@@ -34,8 +34,11 @@ class InstantCentre:
         ``inf`` where the centre is at infinity and ``nan`` where the platform is still (both
         flagged by ``kind``).
     direction : numpy.ndarray (..., 2)
-        Unit vector :math:`\\mathbf E\\dot{\\mathbf c}/\\|\\dot{\\mathbf c}\\|` pointing from C towards the
-        centre (defined unless still).
+        Unit vector pointing from C towards the centre,
+        :math:`\\operatorname{sign}(\\dot\\psi)\\,\\mathbf E\\dot{\\mathbf c}/\\|\\dot{\\mathbf c}\\|`; for a
+        translation :math:`\\mathbf E\\dot{\\mathbf c}/\\|\\dot{\\mathbf c}\\|` (the side of the motion on
+        which the centre has receded to infinity is a convention: the left).  Zero when U = C
+        (a spin about C), ``nan`` when still.
     """
 
     kind: np.ndarray
@@ -70,7 +73,8 @@ def instantaneous_centre(twist):
     kind = np.where(still, STILL, np.where(infinite, AT_INFINITY, FINITE))
     with np.errstate(divide="ignore", invalid="ignore"):
         point = Ec / np.where(kind == FINITE, psi, 1.0)[..., None]  # (63)
-        direction = Ec / np.where(still, 1.0, speed)[..., None]
+        sign = np.where(kind == FINITE, np.sign(psi), 1.0)
+        direction = (sign / np.where(speed == 0, 1.0, speed))[..., None] * Ec
     point = np.where((kind == AT_INFINITY)[..., None], np.inf, point)
     point = np.where((kind == STILL)[..., None], np.nan, point)
     direction = np.where(still[..., None], np.nan, direction)

@@ -1,0 +1,108 @@
+"""wmr.isotropy: condition numbers (30)-(31), isotropy of J_L1 (34)-(38) and of the offset robot's J."""
+import numpy as np
+import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+
+import wmr
+from wmr import isotropy as I
+from wmr.tolerance import TOL
+
+from conftest import robots, seeds
+
+
+@pytest.mark.parametrize("A, kappa", [
+    (np.diag([2.0, 1.0]), 2.0),
+    (np.diag([3.0, -3.0, 3.0]), 1.0),
+    ([[1.0, 0.0, 0.0], [0.0, 4.0, 0.0]], 4.0),                 # m < n
+    (np.ones((4, 1)), 1.0),
+    ([[1.0, 2.0], [2.0, 4.0]], np.inf),                          # singular
+    (np.zeros((3, 3)), np.inf),
+    (np.diag([1.0, 1e-11]), np.inf),                             # below TOL * sigma_max
+    (np.diag([1.0, 1e-8]), 1e8),
+])
+def test_condition_number_known_values(A, kappa):
+    assert np.isclose(float(I.condition_number(A)), kappa, rtol=1e-12) or (
+        np.isinf(kappa) and np.isinf(I.condition_number(A)))
+
+
+@pytest.mark.parametrize("shape", [(3, 3), (5, 3, 3), (2, 4, 6, 3), (7, 3, 6)])
+def test_condition_number_batched(shape):
+    A = np.random.default_rng(0).normal(size=shape)
+    k = I.condition_number(A)
+    s = np.linalg.svd(A, compute_uv=False)
+    assert k.shape == shape[:-2]
+    assert np.allclose(k, s[..., 0] / s[..., -1], rtol=1e-12)
+    assert np.all(k >= 1.0)                                      # (31)
+
+
+@given(seeds, st.floats(1e-3, 1e3))
+def test_condition_number_scale_invariant(seed, c):
+    A = np.random.default_rng(seed).normal(size=(10, 3, 3))
+    assert np.allclose(I.condition_number(c * A), I.condition_number(A), rtol=1e-9)
+
+
+@given(seeds)
+def test_orthogonal_is_isotropic(seed):
+    Q, _ = np.linalg.qr(np.random.default_rng(seed).normal(size=(4, 3, 3)))
+    assert np.all(I.is_isotropic(2.5 * Q))
+    assert not np.any(I.is_isotropic(Q @ np.diag([1.0, 1.0, 1.0 + 1e-6])))
+
+
+@given(robots(w_min=3, w_max=6, spread=True))
+def test_JL1_isotropic_with_centroid_at_C(bot):
+    """sum d_i = 0 and L^2 = mean |d_i|^2  =>  J_L1^T J_L1 = w I (34): isotropic for any polygon."""
+    centred = bot.moved(tuple(bot.mount_points.mean(axis=0)), 0.0)
+    L = I.characteristic_length(centred)
+    assert np.isclose(L**2, np.mean(np.sum(centred.mount_points**2, axis=1)))
+    JL1 = centred.J1(L)
+    assert np.allclose(I.gram(JL1), centred.w * np.eye(3), atol=1e-12)
+    assert bool(I.is_isotropic(JL1))
+    # a different length, or C away from the centroid, breaks isotropy
+    assert not bool(I.is_isotropic(centred.J1(1.5 * L)))
+    assert not bool(I.is_isotropic(centred.moved((0.3 * L, 0.0), 0.0).J1(L)))
+
+
+def test_non_equilateral_triangle_is_isotropic():
+    # (38) asks for |d_i| = L; a scalene triangle with its centroid at C is isotropic too
+    bot = wmr.Robot([wmr.CentredWheel(p, r=0.1) for p in [(2.0, 0.0), (-1.0, 1.0), (-1.0, -1.0)]])
+    L = I.characteristic_length(bot)
+    assert np.isclose(L**2, 8 / 3)
+    assert np.isclose(float(I.condition_number(bot.J1(L))), 1.0)
+
+
+@given(st.floats(0.05, 2.0), st.floats(0.2, 3.0), seeds)
+def test_offset_robot_with_d_equal_r_is_isotropic_for_all_beta(r, Lm, seed):
+    """Offset wheels with d = r on an equilateral triangle: J J^T = 3 r^2 I for every beta."""
+    bot = wmr.paper_robot("offset", L=Lm, r=r, d=r)
+    beta = np.random.default_rng(seed).uniform(-np.pi, np.pi, (20, 3))
+    J = bot.J(beta, L=I.characteristic_length(bot))
+    assert np.allclose(J @ np.swapaxes(J, -1, -2), 3 * r**2 * np.eye(3), atol=1e-12)
+    assert np.all(I.is_isotropic(J))
+
+
+def test_centred_robot_J_is_not_isotropic():
+    bot = wmr.paper_robot("centred", L=0.3, r=0.05)
+    beta = np.random.default_rng(3).uniform(-np.pi, np.pi, (200, 3))
+    k = I.condition_number(bot.J(beta, L=0.3))
+    assert not np.any(I.is_isotropic(bot.J(beta, L=0.3)))
+    assert np.ptp(k[np.isfinite(k)]) > 1.0                        # depends on beta
+
+
+def test_characteristic_length_rejects_degenerate():
+    bot = wmr.Robot([wmr.CentredWheel((0, 0), r=0.1)])
+    with pytest.raises(ValueError, match="L = 0"):
+        I.characteristic_length(bot)
+
+
+def test_is_isotropic_uses_TOL():
+    assert bool(I.is_isotropic(np.diag([1.0, 1.0 + TOL / 10])))
+    assert not bool(I.is_isotropic(np.diag([1.0, 1.0 + 100 * TOL])))
+
+
+@pytest.mark.parametrize("A, value", [([1.0, 2.0], "(2,)"), ([[np.nan, 1.0]], "nan"), ("x", "'x'")])
+def test_bad_input(A, value):
+    for f in (I.condition_number, I.is_isotropic, I.gram):
+        with pytest.raises(ValueError) as exc:
+            f(A)
+        assert "A" in str(exc.value) and value in str(exc.value), str(exc.value)
