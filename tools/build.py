@@ -337,6 +337,56 @@ def latex_text(s: str) -> str:
     return "".join(out)
 
 
+_CMD = re.compile(r"\\[A-Za-z]+")
+_MATHY = re.compile(r"\\[A-Za-z]+|[A-Za-z0-9)\]}]_|\^|\\[,;!]")
+_JOIN = {"=", "+", "-", "<", ">", "\\times", "\\cdot", "\\le", "\\ge", "\\ne", "\\approx", "\\to", "|"}
+
+
+def auto_math(s: str) -> str:
+    """Ledger text fields (note, convention) may carry bare LaTeX such as
+    '\\dot\\psi\\times\\mathbf d_i read as ...'. Wrap each run of TeX-looking words in $...$ so that
+    it is typeset (MathJax / LaTeX) instead of breaking the PDF or showing raw. Text that
+    already has $...$ is returned unchanged."""
+    s = " ".join((s or "").split())
+    if "$" in s or not _CMD.search(s):
+        return s
+    words = s.split(" ")
+    out: list[str] = []
+    run: list[str] = []
+
+    def flush():
+        if not run:
+            return
+        while run and run[-1] in _JOIN:      # a trailing operator belongs to the prose
+            tail = run.pop()
+            out_tail.append(tail)
+        if run:
+            last = run[-1]
+            m = re.match(r"^(.*?)([;,.:]*)$", last)
+            run[-1], punct = m.group(1), m.group(2)
+            body = " ".join(run)
+            while body.endswith(")") and body.count(")") > body.count("("):  # '(... of the P_i)'
+                body, punct = body[:-1], ")" + punct
+            out.append("$" + body + "$" + punct)
+        out.extend(out_tail)
+        run.clear()
+        out_tail.clear()
+    out_tail: list[str] = []
+    for w in words:
+        mathy = bool(_MATHY.search(w))
+        needs_arg = bool(run) and re.search(r"\\[A-Za-z]+$", run[-1]) is not None
+        if mathy or needs_arg or (run and w in _JOIN):
+            # a word that ends a sentence clause closes the run after itself
+            run.append(w)
+            if mathy and re.search(r"[;,:]$", w):
+                flush()
+        else:
+            flush()
+            out.append(w)
+    flush()
+    return " ".join(out)
+
+
 def md_cell_text(s) -> str:
     """A value for a markdown table cell: one line, pipes escaped."""
     s = "" if s is None else str(s)
@@ -481,7 +531,7 @@ def build_report_notebook(t: Tree, date: str, commit: str):
             s.append(f"Claims whose verdict is not *ok* ({len(bad)}):")
             s.append("")
             for r in bad:
-                note = " ".join((r.get("note") or "").split())
+                note = auto_math(r.get("note"))
                 s.append(f"- **{r.get('id')}** (§{r.get('section')}, *{r.get('verdict')}*)" + (f": {note}" if note else ""))
         else:
             s.append("Every claim in the ledger has verdict *ok*.")
@@ -505,8 +555,8 @@ def build_report_notebook(t: Tree, date: str, commit: str):
         rows = [[r.get("id"), r.get("section"),
                  r.get("verdict") if r.get("verdict") == "ok" else f"**{r.get('verdict')}**",
                  r.get("symbolic_check"), fmt_residual(r.get("max_residual")), chapter_no(r.get("notebook")),
-                 " ".join((r.get("note") or "").split())
-                 + (f" *Convention:* {' '.join(r['convention'].split())}" if (r.get("convention") or "").strip() else "")]
+                 auto_math(r.get("note"))
+                 + (f" *Convention:* {auto_math(r['convention'])}" if (r.get("convention") or "").strip() else "")]
                 for r in ledger]
         cells.append(_md("# Ledger\n\nEvery equation and claim checked, in the paper's order "
                          "(*Ch.* is the chapter that checks it; *Symbolic* the outcome of the exact comparison; "
@@ -527,9 +577,9 @@ def build_report_notebook(t: Tree, date: str, commit: str):
                   "Printed:", "", display_math(r.get("printed")), "",
                   "Corrected:", "", display_math(r.get("corrected")), ""]
             if (r.get("note") or "").strip():
-                e += [" ".join(r["note"].split()), ""]
+                e += [auto_math(r["note"]), ""]
             if (r.get("convention") or "").strip():
-                e += [f"*Convention:* {' '.join(r['convention'].split())}", ""]
+                e += [f"*Convention:* {auto_math(r['convention'])}", ""]
         cells.append(_md("\n".join(e)))
 
     # --- figures
@@ -612,10 +662,33 @@ def mathjax_js() -> str:
     return js.read_text(encoding="utf-8").replace("</script", "<\\/script")
 
 
-def export_html(nb, t: Tree, out: Path) -> None:
+def _html_exporter():
+    """nbconvert's HTMLExporter without its two costly passes over our own, trusted content:
+    bleach sanitising (clean_html) of every cell and a BeautifulSoup re-parse of the whole page
+    (which only adds alt text and tabindex attributes). Same output otherwise."""
     from nbconvert import HTMLExporter
-    exp = HTMLExporter(template_name="wmr_html", extra_template_basedirs=[str(TEMPLATES)],
-                       exclude_input_prompt=True, exclude_output_prompt=True, embed_images=True)
+    from nbconvert.exporters.templateexporter import TemplateExporter
+    from nbconvert.filters.highlight import Highlight2HTML
+    from nbconvert.filters.widgetsdatatypefilter import WidgetsDataTypeFilter
+
+    class ReportHTMLExporter(HTMLExporter):
+        def from_notebook_node(self, nb, resources=None, **kw):
+            langinfo = nb.metadata.get("language_info", {})
+            lexer = langinfo.get("pygments_lexer", langinfo.get("name", None))
+            self.register_filter("highlight_code", Highlight2HTML(pygments_lexer=lexer, parent=self))
+            resources = self._init_resources(resources)
+            self.register_filter("filter_data_type", WidgetsDataTypeFilter(
+                notebook_metadata=self._nb_metadata, parent=self, resources=resources))
+            return TemplateExporter.from_notebook_node(self, nb, resources, **kw)
+
+    exp = ReportHTMLExporter(template_name="wmr_html", extra_template_basedirs=[str(TEMPLATES)],
+                             exclude_input_prompt=True, exclude_output_prompt=True, embed_images=True)
+    exp.register_filter("clean_html", lambda html, *a, **k: html)
+    return exp
+
+
+def export_html(nb, t: Tree, out: Path) -> None:
+    exp = _html_exporter()
     body, _ = exp.from_notebook_node(nb, resources={"metadata": {"path": str(t.root), "name": "report"},
                                                     "wmr_mathjax_js": mathjax_js()})
     _write_atomic(out, add_toc(body))
@@ -660,28 +733,53 @@ def html_tables_to_latex(nb) -> int:
     return len(targets)
 
 
-MD_READER = "markdown+tex_math_double_backslash-fancy_lists"  # "(61) is ..." is not a list
+# Pandoc reader for the PDF, matched to what Jupyter/MathJax show: no fancy_lists ("(61) is ..."
+# is a paragraph), no raw_tex (a bare '\dot' in prose is text, as in the notebook, not a LaTeX
+# command that breaks the build); LaTeX environments outside $...$ (MathJax typesets them) are
+# wrapped in $$...$$ by wrap_environments() first.
+MD_READER = "markdown+tex_math_double_backslash+tex_math_single_backslash-fancy_lists-raw_tex"
+_ENV = re.compile(r"\\begin\{([A-Za-z]+\*?)\}.*?\\end\{\1\}", re.S)
+
+
+def wrap_environments(md: str) -> str:
+    parts = _MATH.split(md)
+    for i in range(0, len(parts), 2):
+        parts[i] = _ENV.sub(lambda m: "$$" + m.group(0) + "$$", parts[i])
+    return "".join(parts)
+
+
+def _text(v) -> str:
+    return v if isinstance(v, str) else "".join(v)
 
 
 def markdown_to_latex_batch(nb) -> int:
-    """Convert every markdown cell to LaTeX in ONE pandoc call (nbconvert's template calls pandoc
-    twice per cell: hundreds of processes for the whole report). The result goes into the cell's
-    metadata, which the wmr_latex template uses. Falls back to per-cell conversion (by the
-    template) if the batch cannot be split back reliably. Returns the number of cells converted."""
+    """Convert every markdown cell and every text/markdown output to LaTeX in ONE pandoc call
+    (nbconvert's template calls pandoc twice per cell: hundreds of processes for the report).
+    Cells get the result in their metadata (used by the wmr_latex template), outputs a
+    text/latex twin (which the PDF prefers; the HTML still shows the markdown). Falls back to
+    nbconvert's per-cell path if the batch cannot be split back reliably."""
     from nbconvert.filters import citation2latex, strip_files_prefix
     from nbconvert.utils.pandoc import pandoc
-    cells = [c for c in nb.cells if c.cell_type == "markdown" and c.source.strip()]
-    if not cells:
+    items = []  # (setter, source)
+    for c in nb.cells:
+        if c.cell_type == "markdown" and c.source.strip():
+            items.append((lambda tex, c=c: c.metadata.__setitem__("wmr_latex", tex), c.source))
+        elif c.cell_type == "code":
+            for o in c.get("outputs", []):
+                d = o.get("data", {})
+                if "text/markdown" in d and "text/latex" not in d:
+                    items.append((lambda tex, d=d: d.__setitem__("text/latex", tex), _text(d["text/markdown"])))
+    if not items:
         return 0
     sep = "WMRCELLSEPARATOR"
-    src = f"\n\n{sep}\n\n".join(strip_files_prefix(citation2latex(c.source)) + "\n" for c in cells)
+    src = f"\n\n{sep}\n\n".join(wrap_environments(strip_files_prefix(citation2latex(s))) + "\n" for _, s in items)
     tex = pandoc(src, MD_READER, "latex")
     parts = re.split(r"\n*^" + sep + r"$\n*", tex, flags=re.M)
-    if len(parts) != len(cells):
+    if len(parts) != len(items):
         return 0
-    for c, part in zip(cells, parts):
-        c.metadata["wmr_latex"] = part.strip("\n")
-    return len(cells)
+    for (setter, _), part in zip(items, parts):
+        setter(part.strip("\n"))
+    return len(items)
 
 
 def export_pdf(nb, t: Tree, out: Path) -> None:
