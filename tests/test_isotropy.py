@@ -36,6 +36,46 @@ def test_condition_number_batched(shape):
     assert np.all(k >= 1.0)                                      # (31)
 
 
+def _kappa_svd(A):
+    s = np.linalg.svd(A, compute_uv=False)
+    singular = s[..., -1] <= TOL * np.maximum(1.0, s[..., 0])
+    with np.errstate(divide="ignore"):
+        return np.where(singular, np.inf, s[..., 0] / s[..., -1])
+
+
+@pytest.mark.parametrize("scale", [1e-160, 1e-9, 1e-3, 1.0, 1e4, 1e160])
+@pytest.mark.parametrize("kind", ["random", "graded", "rank2", "rank1", "isotropic", "near-threshold"])
+def test_3x3_fast_path_matches_svd(scale, kind):
+    """The 3x3 kernel (Jacobi on the Gram matrix) gives the SVD's kappa to ~eps * kappa, same infs."""
+    rng = np.random.default_rng(sum(map(ord, kind)))
+    n = 500
+    U, _ = np.linalg.qr(rng.normal(size=(n, 3, 3)))
+    V, _ = np.linalg.qr(rng.normal(size=(n, 3, 3)))
+    s = {"random": rng.uniform(0.1, 1.0, (n, 3)),
+         "graded": np.stack([np.ones(n), 10 ** rng.uniform(-3, 0, n), 10 ** rng.uniform(-12, 0, n)], -1),
+         "rank2": np.stack([np.ones(n), rng.uniform(0, 1, n), np.zeros(n)], -1),
+         "rank1": np.stack([np.ones(n), np.zeros(n), np.zeros(n)], -1),
+         "isotropic": np.ones((n, 3)),
+         "near-threshold": np.stack([np.ones(n), np.ones(n), TOL * rng.uniform(0.5, 2.0, n)], -1)}[kind]
+    A = scale * (U * s[:, None, :]) @ V
+    got, want = I.condition_number(A), _kappa_svd(A)
+    assert np.array_equal(np.isinf(got), np.isinf(want))
+    fin = np.isfinite(want)
+    assert np.all(np.abs(got[fin] / want[fin] - 1) <= 20 * np.finfo(float).eps * want[fin])
+
+
+def test_3x3_fast_path_on_the_paper_robot():
+    bot = wmr.paper_robot("centred", L=0.3, r=0.05)
+    beta = np.random.default_rng(11).uniform(-np.pi, np.pi, (20000, 3))
+    J = bot.J(beta, L=0.3)
+    got, want = I.condition_number(J), _kappa_svd(J)
+    fin = np.isfinite(want)
+    assert np.array_equal(np.isinf(got), np.isinf(want))
+    assert np.all(np.abs(got[fin] / want[fin] - 1) <= 20 * np.finfo(float).eps * want[fin])
+    # the batch size does not change the result (chunking and threads)
+    assert np.array_equal(I.condition_number(J[:7]), got[:7])
+
+
 @given(seeds, st.floats(1e-3, 1e3))
 def test_condition_number_scale_invariant(seed, c):
     A = np.random.default_rng(seed).normal(size=(10, 3, 3))

@@ -126,7 +126,7 @@ BAD = [
     (lambda: wmr.CentredWheel((np.nan, 0), r=1.0), "position", "nan"),
     (lambda: wmr.CentredWheel(5.0, r=1.0), "position", "5.0"),
     (lambda: wmr.CentredWheel((0, 0), r=-sp.Symbol("r", positive=True)), "r", "-r"),
-    (lambda: wmr.CentredWheel((0, 0), r=1.0).block(np.nan), "angle", "nan"),
+    (lambda: wmr.CentredWheel((0, 0), r=1.0).block(np.nan), "beta", "nan"),
 ]
 
 

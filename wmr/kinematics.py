@@ -23,7 +23,7 @@ import numpy as np
 
 from . import _validate as V
 from .backend import NUMERIC
-from .platform import rotation
+from .platform import E
 from .tolerance import TOL, near_zero
 
 
@@ -82,8 +82,13 @@ def forward(robot, beta, rates):
         raise ValueError(
             f"J1 has rank < 3 (fewer than two distinct mount points: {robot.mount_points.tolist()}): "
             "the twist is not determined")
-    J2 = robot.J2(beta)                               # (..., 2w, n)
-    rhs = (J2 @ rates[..., None])[..., 0]             # (..., 2w)
+    batch = np.broadcast_shapes(beta.shape[:-1], rates.shape[:-1])
+    rhs = np.empty(batch + (robot.w, 2))              # J2 theta_dot, unit by unit (no J2 formed)
+    for i, (u, sl) in enumerate(zip(robot.wheels, robot.rate_slices)):
+        L, EL = u.block_terms(NUMERIC)                # B_i = cos(beta_i) L + sin(beta_i) E L
+        b = beta[..., i, None]
+        rhs[..., i, :] = np.cos(b) * (rates[..., sl] @ L.T) + np.sin(b) * (rates[..., sl] @ EL.T)
+    rhs = rhs.reshape(batch + (2 * robot.w,))         # (..., 2w)
     t = rhs @ np.linalg.pinv(J1).T                    # (..., 3)
     res = t @ J1.T - rhs
     scale = np.max(np.abs(rhs), axis=-1)
@@ -121,10 +126,12 @@ def inverse(robot, beta, twist, beta_dot=None):
     beta = np.broadcast_to(beta, batch + beta.shape[-1:])
     rates = np.zeros(batch + (robot.n_rates,))
     res = np.zeros(batch + (robot.w, 2))
+    Emat = E(NUMERIC)
     for i, (u, sl) in enumerate(zip(robot.wheels, robot.rate_slices)):
-        L = u._local_block(NUMERIC)
-        R = rotation(beta[..., i], NUMERIC)
-        local_v = (np.swapaxes(R, -1, -2) @ v[..., i, :, None])[..., 0]   # R^T [E d 1] t
+        L, EL = u.block_terms(NUMERIC)                 # B_i = R(beta_i) L = cos L + sin E L
+        c, s = np.cos(beta[..., i, None]), np.sin(beta[..., i, None])
+        vi = v[..., i, :]
+        local_v = c * vi + s * (vi @ Emat)                                 # R^T [E d 1] t  (R^T = cI + sE^T)
         th = local_v @ np.linalg.pinv(L).T                                 # L^+ R^T v
         if u.kind == "dual":
             # free differential rate fixed by the steering wanted: phi_dot = psi_dot + beta_dot
@@ -132,7 +139,7 @@ def inverse(robot, beta, twist, beta_dot=None):
             diff = -(2 * u.b / u.r) * (twist[..., 0] + bd)                  # theta_1 - theta_2
             th = th + 0.5 * np.stack([diff, -diff], axis=-1)
         rates[..., sl] = th
-        res[..., i, :] = (R @ (L @ th[..., None]))[..., 0] - v[..., i, :]
+        res[..., i, :] = c * (th @ L.T) + s * (th @ EL.T) - vi            # B_i theta_i - [E d_i 1] t
     res = -res.reshape(batch + (2 * robot.w,))                             # J1 t - J2 theta_dot
     scale = np.max(np.abs(v), axis=(-2, -1))
     return Solution(rates, res, np.all(near_zero(res, scale[..., None]), axis=-1))

@@ -25,7 +25,7 @@ import numpy as np
 from . import _validate as V
 from ._batch import map_matrices
 from .backend import NUMERIC
-from .platform import rotation
+from .platform import E
 from .tolerance import TOL
 
 
@@ -205,9 +205,9 @@ def twist_constraints(robot, beta):
     """
     beta = V.finite_array("beta", beta, last=robot.w)
     J1 = robot.J1()
-    # R(beta) = cos(beta) R(0) + sin(beta) R(pi/2) (11), so the rows N_i^T R^T [E d_i 1] are
+    # R(beta) = cos(beta) I + sin(beta) E (11), so the rows N_i^T R^T [E d_i 1] are
     # cos(beta_i) P_i + sin(beta_i) Q_i with constant P_i, Q_i: no batched 2x2 products needed.
-    R0, R90 = rotation(0.0), rotation(np.pi / 2)
+    Et = E(NUMERIC).T
     parts, base_rank = [], 0
     for i, u in enumerate(robot.wheels):
         N = _left_null(u._local_block(NUMERIC))  # (2, k_i), constant
@@ -215,7 +215,7 @@ def twist_constraints(robot, beta):
         if N.shape[1] == 0:
             continue
         Ji = J1[2 * i:2 * i + 2]
-        parts.append((i, N.T @ R0.T @ Ji, N.T @ R90.T @ Ji))
+        parts.append((i, N.T @ Ji, N.T @ Et @ Ji))
     k = sum(P.shape[0] for _, P, _ in parts)
     A = np.empty(beta.shape[:-1] + (k, 3))
     row = 0

@@ -127,11 +127,19 @@ class Robot:
         Parameters
         ----------
         L : float or sympy.Expr, optional
-            Characteristic length, > 0.
+            Characteristic length, > 0 (default 1: :math:`\mathbf J_1`).
+        backend : NUMERIC or SYMBOLIC, optional
+            Default: SymPy for a symbolic robot or symbolic ``L``, else NumPy.
 
         Returns
         -------
         numpy.ndarray (2w, 3) or sympy.Matrix (2w, 3)
+
+        Examples
+        --------
+        >>> from wmr import CentredWheel
+        >>> Robot([CentredWheel((2.0, 0.0), r=1.0)]).J1(L=2.0).tolist()
+        [[-0.0, 1.0, 0.0], [1.0, 0.0, 1.0]]
         """
         L = V.positive("L (characteristic length)", L)
         bk = choose(L, backend=backend) if not self.is_symbolic else SYMBOLIC
@@ -140,6 +148,9 @@ class Robot:
             bk.set_block(M, 2 * i, 0, point_row(u.position, L, backend=bk))  # (32): [E d_i / L, 1]
         return M
 
+    def _backend(self, beta, backend):
+        return SYMBOLIC if (beta is None or self.is_symbolic) else choose(beta, backend=backend)
+
     def J2(self, beta=None, backend=None):
         r"""Wheel Jacobian :math:`\mathbf J_2(\boldsymbol\beta)` (21): block-diagonal in the units' blocks.
 
@@ -147,12 +158,14 @@ class Robot:
         ----------
         beta : array (..., w), sequence of w SymPy expressions, or None
             Steering angles :math:`\beta_i`; ``None`` means the symbols :math:`\beta_1..\beta_w`.
+        backend : NUMERIC or SYMBOLIC, optional
+            Default: SymPy when ``beta`` is None or symbolic or the robot is symbolic, else NumPy.
 
         Returns
         -------
         numpy.ndarray (..., 2w, n_rates) or sympy.Matrix (2w, n_rates)
         """
-        bk = SYMBOLIC if (beta is None or self.is_symbolic) else choose(beta, backend=backend)
+        bk = self._backend(beta, backend)
         b = self._beta(beta, bk)
         batch = () if bk is SYMBOLIC else b.shape[:-1]
         M = bk.zeros(2 * self.w, self.n_rates, batch)
@@ -166,27 +179,63 @@ class Robot:
 
         Its columns follow :attr:`qdot_names`.
 
+        Parameters
+        ----------
+        beta : array (..., w), sequence of w SymPy expressions, or None
+            Steering angles; ``None`` means the symbols :math:`\beta_1..\beta_w`.
+        backend : NUMERIC or SYMBOLIC, optional
+            As for :meth:`J2`.
+
         Returns
         -------
-        numpy.ndarray (..., 2w, 3 + n_rates) or sympy.Matrix
+        numpy.ndarray (..., 2w, 3 + n_rates) or sympy.Matrix (2w, 3 + n_rates)
         """
-        J2 = self.J2(beta, backend)
-        sym = isinstance(J2, sp.MatrixBase)
-        J1 = self.J1(backend=SYMBOLIC if sym else NUMERIC)
-        bk = SYMBOLIC if sym else NUMERIC
-        return bk.broadcast_hstack(J1, -J2)
+        bk = self._backend(beta, backend)
+        if bk is SYMBOLIC:
+            return bk.broadcast_hstack(self.J1(backend=SYMBOLIC), -self.J2(beta, SYMBOLIC))
+        b = self._beta(beta, bk)
+        M = np.zeros(b.shape[:-1] + (2 * self.w, 3 + self.n_rates))   # filled in place: no copies
+        M[..., :, :3] = self.J1(backend=NUMERIC)
+        for i, (u, sl) in enumerate(zip(self.wheels, self.rate_slices)):
+            # (no in-place np.negative on this strided view: NumPy 2.4 gets (k, 1) column views wrong)
+            M[..., 2 * i:2 * i + 2, 3 + sl.start:3 + sl.stop] = -u.block(b[..., i], backend=NUMERIC)
+        return M
 
     def J(self, beta=None, L=1, backend=None):
         r"""The product :math:`\mathbf J = \mathbf J_{L1}^T\mathbf J_2` (56).
 
+        Parameters
+        ----------
+        beta : array (..., w), sequence of w SymPy expressions, or None
+            Steering angles; ``None`` means the symbols :math:`\beta_1..\beta_w`.
+        L : float or sympy.Expr, optional
+            Characteristic length of :math:`\mathbf J_{L1}` (default 1: :math:`\mathbf J_1^T\mathbf J_2`).
+        backend : NUMERIC or SYMBOLIC, optional
+            As for :meth:`J2`.
+
         Returns
         -------
         numpy.ndarray (..., 3, n_rates) or sympy.Matrix (3, n_rates)
+
+        Notes
+        -----
+        With NumPy, unit i contributes the columns
+        :math:`\mathbf J_{L1,i}^T\mathbf B_i(\beta_i) = \cos\beta_i\,\mathbf J_{L1,i}^T\mathbf L_i +
+        \sin\beta_i\,\mathbf J_{L1,i}^T\mathbf E\mathbf L_i` (see :meth:`OffsetWheel.block_terms`), so the
+        mostly-zero :math:`\mathbf J_2` is never formed.
         """
-        J2 = self.J2(beta, backend)
-        sym = isinstance(J2, sp.MatrixBase)
-        JL1 = self.J1(L, backend=SYMBOLIC if sym else NUMERIC)
-        return JL1.T * J2 if sym else np.swapaxes(JL1, -1, -2) @ J2
+        bk = self._backend(beta, backend)
+        if bk is SYMBOLIC:
+            return self.J1(L, backend=SYMBOLIC).T * self.J2(beta, SYMBOLIC)
+        b = self._beta(beta, bk)
+        JL1 = self.J1(L, backend=NUMERIC)
+        M = np.empty(b.shape[:-1] + (3, self.n_rates))
+        for i, (u, sl) in enumerate(zip(self.wheels, self.rate_slices)):
+            Li, ELi = u.block_terms(NUMERIC)
+            Ji = JL1[2 * i:2 * i + 2].T                      # (3, 2)
+            bi = b[..., i, None, None]
+            M[..., :, sl] = np.cos(bi) * (Ji @ Li) + np.sin(bi) * (Ji @ ELi)
+        return M
 
     # --- frames ---------------------------------------------------------------------------------
     def moved(self, origin=(0.0, 0.0), angle=0.0):
