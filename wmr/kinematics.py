@@ -46,10 +46,18 @@ class Solution:
     admissible: np.ndarray
 
 
+def _mul(X, M):
+    """``X @ M`` for a batch of row vectors ``X (..., k)`` and a small constant ``M (k, m)``.
+
+    (``einsum`` instead of ``@``: BLAS is slow for such thin products on long batches.)
+    """
+    return np.einsum("...k,km->...m", X, M)
+
+
 def _unit_velocities(robot, twist):
     # (5): [E d_i 1] t for every unit, shape (..., w, 2)
     J1 = robot.J1()
-    v = twist @ J1.T                                  # (..., 2w)
+    v = _mul(twist, J1.T)                             # (..., 2w)
     return v.reshape(v.shape[:-1] + (robot.w, 2))
 
 
@@ -87,10 +95,10 @@ def forward(robot, beta, rates):
     for i, (u, sl) in enumerate(zip(robot.wheels, robot.rate_slices)):
         L, EL = u.block_terms(NUMERIC)                # B_i = cos(beta_i) L + sin(beta_i) E L
         b = beta[..., i, None]
-        rhs[..., i, :] = np.cos(b) * (rates[..., sl] @ L.T) + np.sin(b) * (rates[..., sl] @ EL.T)
+        rhs[..., i, :] = np.cos(b) * _mul(rates[..., sl], L.T) + np.sin(b) * _mul(rates[..., sl], EL.T)
     rhs = rhs.reshape(batch + (2 * robot.w,))         # (..., 2w)
-    t = rhs @ np.linalg.pinv(J1).T                    # (..., 3)
-    res = t @ J1.T - rhs
+    t = _mul(rhs, np.linalg.pinv(J1).T)              # (..., 3)
+    res = _mul(t, J1.T) - rhs
     scale = np.max(np.abs(rhs), axis=-1)
     return Solution(t, res, np.all(near_zero(res, scale[..., None]), axis=-1))
 
@@ -131,15 +139,15 @@ def inverse(robot, beta, twist, beta_dot=None):
         L, EL = u.block_terms(NUMERIC)                 # B_i = R(beta_i) L = cos L + sin E L
         c, s = np.cos(beta[..., i, None]), np.sin(beta[..., i, None])
         vi = v[..., i, :]
-        local_v = c * vi + s * (vi @ Emat)                                 # R^T [E d 1] t  (R^T = cI + sE^T)
-        th = local_v @ np.linalg.pinv(L).T                                 # L^+ R^T v
+        local_v = c * vi + s * _mul(vi, Emat)                                 # R^T [E d 1] t  (R^T = cI + sE^T)
+        th = _mul(local_v, np.linalg.pinv(L).T)                                # L^+ R^T v
         if u.kind == "dual":
             # free differential rate fixed by the steering wanted: phi_dot = psi_dot + beta_dot
             bd = 0.0 if beta_dot is None else beta_dot[..., i]
             diff = -(2 * u.b / u.r) * (twist[..., 0] + bd)                  # theta_1 - theta_2
             th = th + 0.5 * np.stack([diff, -diff], axis=-1)
         rates[..., sl] = th
-        res[..., i, :] = c * (th @ L.T) + s * (th @ EL.T) - vi            # B_i theta_i - [E d_i 1] t
+        res[..., i, :] = c * _mul(th, L.T) + s * _mul(th, EL.T) - vi           # B_i theta_i - [E d_i 1] t
     res = -res.reshape(batch + (2 * robot.w,))                             # J1 t - J2 theta_dot
     scale = np.max(np.abs(v), axis=(-2, -1))
     return Solution(rates, res, np.all(near_zero(res, scale[..., None]), axis=-1))
