@@ -144,3 +144,10 @@ def test_cli_rejects_unknown_keys(tmp_path, capsys):
 def test_det_map_isotropic_configuration(figs):
     n = get(figs, "detmap").wmr_numbers
     assert abs(n["kappa_vortex"] - 1) <= 1e3 * TOL and abs(n["kappa_vortex_minus"] - 1) <= 1e3 * TOL
+
+
+def test_writing_a_subset_keeps_other_captions(tmp_path):
+    F.write_all(tmp_path, keys=["conventions"], csv=False, commit="c1")
+    F.write_all(tmp_path, keys=["fig10"], csv=False, commit="c1")
+    data = json.loads((tmp_path / "captions.json").read_text())
+    assert list(data) == ["fig10", "conventions"]

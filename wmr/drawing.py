@@ -11,6 +11,10 @@ where they meet.  The geometry comes from :meth:`wmr.wheels._Unit.points`, so th
 
 Style: the Okabe-Ito colour-blind-safe palette (:data:`PALETTE`), one set of line widths and
 font sizes (:data:`RC`), equal aspect, no axes ticks (a scale bar instead).
+
+Figures are plain :class:`matplotlib.figure.Figure` objects (not registered with pyplot, so
+nothing accumulates and a notebook's backend is left alone); saving renders PNG with Agg and
+SVG/PDF with matplotlib's vector backends, whatever backend is active.
 """
 from __future__ import annotations
 
@@ -18,14 +22,11 @@ from contextlib import contextmanager
 from dataclasses import dataclass
 
 import matplotlib
-
-matplotlib.use("Agg", force=False)
-
-import matplotlib.patheffects as pe  # noqa: E402
-import numpy as np  # noqa: E402
-from matplotlib.figure import Figure  # noqa: E402
-from matplotlib.patches import Arc, Circle, FancyArrowPatch, FancyBboxPatch, Polygon  # noqa: E402
-from matplotlib.transforms import Affine2D  # noqa: E402
+import matplotlib.patheffects as pe
+import numpy as np
+from matplotlib.figure import Figure
+from matplotlib.patches import Arc, Circle, FancyArrowPatch, FancyBboxPatch, Polygon
+from matplotlib.transforms import Affine2D
 
 #: Okabe & Ito (2008) colour-blind-safe palette, by role.
 PALETTE = {

@@ -902,6 +902,8 @@ def build(key):
 def write_all(outdir, keys=None, formats=("svg", "pdf", "png"), csv=True, commit=None, verbose=False):
     """Write the figures, ``captions.json`` and (``csv=True``) ``singularities.csv`` into ``outdir``.
 
+    With a subset of ``keys``, the other entries of an existing ``captions.json`` are kept.
+
     Returns
     -------
     dict
@@ -922,7 +924,11 @@ def write_all(outdir, keys=None, formats=("svg", "pdf", "png"), csv=True, commit
                      "function": function, "commit": commit}
         if verbose:
             print(f"  {key:12s} {time.perf_counter() - t0:5.2f} s", file=sys.stderr)
-    (outdir / "captions.json").write_text(json.dumps(caps, indent=2, ensure_ascii=False) + "\n", encoding="utf-8")
+    path = outdir / "captions.json"
+    if set(keys) != set(FIGURES) and path.exists():         # a subset: keep the other entries
+        old = json.loads(path.read_text(encoding="utf-8"))
+        caps = {k: caps.get(k, old.get(k)) for k in FIGURES if k in caps or k in old}
+    path.write_text(json.dumps(caps, indent=2, ensure_ascii=False) + "\n", encoding="utf-8")
     if csv:
         t0 = time.perf_counter()
         sg.write_csv(outdir / "singularities.csv")
@@ -933,6 +939,8 @@ def write_all(outdir, keys=None, formats=("svg", "pdf", "png"), csv=True, commit
 
 def main(argv=None):
     """``python -m wmr.figures OUTDIR [KEY ...]``."""
+    import matplotlib
+    matplotlib.use("Agg")                                   # headless; PNG is rendered by Agg in any case
     argv = sys.argv[1:] if argv is None else argv
     if not argv or argv[0] in ("-h", "--help"):
         print(main.__doc__ + "\nkeys: " + " ".join(FIGURES))
