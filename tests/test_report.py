@@ -28,18 +28,33 @@ REMOTE = re.compile(r"^\s*(https?:)?//", re.I)
 
 
 @pytest.fixture(scope="module")
-def report():
-    """Build the report once for this module (cached: near-instant when nothing changed)."""
+def built():
+    """Build the report once for this module (cached: near-instant when nothing changed).
+    A failing PDF does not hide the HTML checks: the HTML is written first and checked alone."""
+    t0 = time.time()
+    err = None
     try:
-        html_path, pdf_path = build.report(TREE, html_only=not HAVE_TEX)
+        build.report(TREE, html_only=not HAVE_TEX)
     except build.BuildError as e:
-        pytest.fail(str(e), pytrace=False)
+        err = str(e)
+    html_path, pdf_path = TREE.build / "report.html", TREE.build / "report.pdf"
+    return html_path, pdf_path, err, t0
+
+
+@pytest.fixture(scope="module")
+def report(built):
+    html_path, pdf_path, err, _ = built
+    if err:
+        pytest.fail(err, pytrace=False)
     return html_path, pdf_path
 
 
 @pytest.fixture(scope="module")
-def html_text(report):
-    return report[0].read_text(encoding="utf-8")
+def html_text(built):
+    html_path, _, err, t0 = built
+    if not html_path.exists() or (err and html_path.stat().st_mtime < t0):
+        pytest.fail(f"build/report.html was not built: {err}", pytrace=False)
+    return html_path.read_text(encoding="utf-8")
 
 
 def captions() -> dict:
@@ -171,7 +186,7 @@ CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser") or shuti
 
 @pytest.mark.skipif(not CHROMIUM, reason="chromium not installed (apt-get install chromium): "
                                          "offline typesetting not checked in a browser")
-def test_html_typesets_offline_in_browser(report):
+def test_html_typesets_offline_in_browser(html_text):
     """Open the page in headless Chromium with the network disabled; every $...$ must become
     a MathJax container and none may be a TeX error."""
     with tempfile.TemporaryDirectory() as prof:
@@ -179,7 +194,7 @@ def test_html_typesets_offline_in_browser(report):
             [CHROMIUM, "--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
              "--disable-background-networking", "--disable-component-update", "--disable-sync",
              f"--user-data-dir={prof}", "--proxy-server=http://127.0.0.1:9", "--proxy-bypass-list=<-loopback>",
-             "--virtual-time-budget=20000", "--dump-dom", report[0].as_uri()],
+             "--virtual-time-budget=20000", "--dump-dom", (TREE.build / "report.html").as_uri()],
             capture_output=True, text=True, timeout=180)
     dom = p.stdout
     assert "<body" in dom, p.stderr[-2000:]
