@@ -109,7 +109,22 @@ SYMBOLIC = SymbolicBackend()
 
 
 def is_symbolic(*values) -> bool:
-    """True when any value (or any element of a sequence/array of values) is SymPy."""
+    """True when any value (or any element of a sequence/array of values) is SymPy.
+
+    Parameters
+    ----------
+    *values : object
+        Numbers, SymPy objects, sequences or object arrays of them.
+
+    Returns
+    -------
+    bool
+
+    Examples
+    --------
+    >>> is_symbolic(1.0, [2.0, sp.Symbol("x")])
+    True
+    """
     for v in values:
         if isinstance(v, (sp.Basic, sp.MatrixBase)):
             return True
@@ -121,7 +136,24 @@ def is_symbolic(*values) -> bool:
 
 
 def choose(*values, backend=None):
-    """Pick the backend: the one given, else SymPy if any value is symbolic, else NumPy."""
+    """Pick the backend: the one given, else SymPy if any value is symbolic, else NumPy.
+
+    Parameters
+    ----------
+    *values : object
+        The inputs of a builder.
+    backend : NUMERIC or SYMBOLIC, optional
+        An explicit choice (wins).
+
+    Returns
+    -------
+    NumericBackend or SymbolicBackend
+
+    Examples
+    --------
+    >>> choose(1.0, 2.0) is NUMERIC, choose(1.0, sp.Symbol("x")) is SYMBOLIC
+    (True, True)
+    """
     if backend is not None:
         if backend not in (NUMERIC, SYMBOLIC):
             raise ValueError(f"backend must be wmr.backend.NUMERIC or SYMBOLIC, got {backend!r}")

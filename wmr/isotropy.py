@@ -115,7 +115,21 @@ def _kappa_3x3(A):
 
 
 def is_isotropic(A):
-    """True where the condition number equals 1 within ``TOL`` (batched)."""
+    """True where the condition number equals 1 within ``TOL`` (batched).
+
+    Parameters
+    ----------
+    A : array_like (..., m, n)
+
+    Returns
+    -------
+    numpy.ndarray of bool (...)
+
+    Examples
+    --------
+    >>> is_isotropic([[[2.0, 0.0], [0.0, 2.0]], [[2.0, 0.0], [0.0, 1.0]]]).tolist()
+    [True, False]
+    """
     return np.abs(condition_number(A) - 1.0) <= TOL
 
 
@@ -126,9 +140,26 @@ def characteristic_length(robot):
     which is isotropic exactly for :math:`L^2 = \tfrac1w\sum_i\|\mathbf d_i\|^2` (the mean, not
     necessarily equal, squared distance).
 
+    Parameters
+    ----------
+    robot : Robot
+        A numeric robot.
+
     Returns
     -------
     float
+
+    Raises
+    ------
+    ValueError
+        If every mount point is at C.
+
+    Examples
+    --------
+    >>> from wmr import Robot, CentredWheel
+    >>> bot = Robot([CentredWheel(p, r=0.1) for p in [(2.0, 0.0), (-1.0, 1.0), (-1.0, -1.0)]])
+    >>> round(characteristic_length(bot) ** 2, 12)        # 8/3: a scalene triangle is isotropic too
+    2.666666666667
     """
     d = robot.mount_points
     L = float(np.sqrt(np.mean(np.sum(d ** 2, axis=1))))

@@ -81,6 +81,14 @@ def forward(robot, beta, rates):
     ------
     ValueError
         If the mount points do not determine the twist (all coincide), or on bad input.
+
+    Examples
+    --------
+    >>> from wmr.robots import paper_robot
+    >>> bot = paper_robot("centred", L=1.0, r=0.5)
+    >>> sol = forward(bot, [0.0, 0.0, 0.0], [-2.0, -2.0, -2.0])   # all wheels along x: drive along +y
+    >>> (sol.value.round(12) + 0.0).tolist(), bool(sol.admissible)
+    ([0.0, 0.0, 1.0], True)
     """
     beta = V.finite_array("beta", beta, last=robot.w)
     rates = V.finite_array("rates", rates, last=robot.n_rates)
@@ -123,6 +131,16 @@ def inverse(robot, beta, twist, beta_dot=None):
     -------
     Solution
         ``value`` is :math:`\dot{\boldsymbol\theta}` (..., n_rates).
+
+    Examples
+    --------
+    >>> from wmr.robots import paper_robot
+    >>> bot = paper_robot("centred", L=1.0, r=0.5)
+    >>> sol = inverse(bot, [0.0, 0.0, 0.0], [0.0, 0.0, 1.0])
+    >>> (sol.value.round(12) + 0.0).tolist(), bool(sol.admissible)
+    ([-2.0, -2.0, -2.0], True)
+    >>> bool(inverse(bot, [0.0, 0.0, 0.0], [0.0, 1.0, 0.0]).admissible)   # sideways: the wheels slip
+    False
     """
     beta = V.finite_array("beta", beta, last=robot.w)
     twist = V.finite_array("twist", twist, last=3)

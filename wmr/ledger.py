@@ -20,7 +20,12 @@ EQUATIONS = tuple(str(n) for n in range(2, 66))
 
 
 def output_dir():
-    """Where figures and the ledger go: ``$WMR_FIGURES`` or ``<repository>/figures``."""
+    """Where figures and the ledger go: ``$WMR_FIGURES`` or ``<repository>/figures``.
+
+    Returns
+    -------
+    pathlib.Path
+    """
     env = os.environ.get("WMR_FIGURES")
     if env:
         return Path(env)
@@ -34,6 +39,13 @@ class Ledger:
     ----------
     notebook : str
         The notebook's stem, e.g. ``"01_platform_and_wheels"``.
+
+    Examples
+    --------
+    >>> led = Ledger("00_example")
+    >>> row = led.add("3", "2", "ok", r"\\mathbf E", symbolic_check=True, max_residual=0.0)
+    >>> row["symbolic_check"], row["max_residual"]
+    ('pass', '0.000e+00')
     """
 
     def __init__(self, notebook):
@@ -42,12 +54,41 @@ class Ledger:
 
     def add(self, id, section, verdict, printed, corrected="", convention="", symbolic_check=True,
             max_residual=0.0, note=""):
-        """Record one verdict; returns the row (a dict).
+        """Record one verdict.
 
-        ``symbolic_check`` is the outcome of the exact comparison (bool); ``max_residual`` the
-        largest numerical residual found (float).  ``typo`` and ``wrong`` need ``corrected``.
+        Parameters
+        ----------
+        id : str or int
+            Equation number (``"2"`` .. ``"65"``) or a claim's name.
+        section : str
+            Section of the paper.
+        verdict : {"ok", "typo", "wrong"}
+        printed : str
+            The equation as printed (LaTeX).
+        corrected : str, optional
+            The true statement (LaTeX); required for ``typo`` and ``wrong``.
+        convention : str, optional
+            The convention under which the verdict holds.
+        symbolic_check : bool, optional
+            Outcome of the checks backing the verdict (recorded as ``pass``/``fail``).
+        max_residual : float, optional
+            Largest numerical residual of the correct form (not NaN).
+        note : str, optional
+
+        Returns
+        -------
+        dict
+            The row, with the columns :data:`COLUMNS`.
+
+        Raises
+        ------
+        ValueError
+            On a bad verdict, a missing correction, a duplicated id, a NaN residual or a
+            ``symbolic_check`` that is a string.
         """
         id = str(id)
+        if isinstance(symbolic_check, str):
+            raise ValueError(f"symbolic_check must be a bool (the outcome of the check), got {symbolic_check!r}")
         if verdict not in VERDICTS:
             raise ValueError(f"verdict must be one of {VERDICTS}, got {verdict!r}")
         if verdict != "ok" and not str(corrected).strip():
@@ -64,12 +105,29 @@ class Ledger:
         return row
 
     def table(self):
-        """The rows as a pandas DataFrame (for display in the notebook)."""
+        """The rows as a pandas DataFrame (for display in the notebook).
+
+        Returns
+        -------
+        pandas.DataFrame
+            One row per verdict, columns :data:`COLUMNS`.
+        """
         import pandas as pd
         return pd.DataFrame(self.rows, columns=COLUMNS)
 
     def write(self, directory=None):
-        """Write ``<directory>/ledger/<notebook>.csv`` atomically; returns its path."""
+        """Write ``<directory>/ledger/<notebook>.csv`` atomically.
+
+        Parameters
+        ----------
+        directory : path-like, optional
+            Default :func:`output_dir`.
+
+        Returns
+        -------
+        pathlib.Path
+            The fragment written.
+        """
         d = Path(directory or output_dir()) / "ledger"
         d.mkdir(parents=True, exist_ok=True)
         path = d / f"{self.notebook}.csv"
@@ -98,13 +156,33 @@ def _sort_key(row):
 
 
 def read(path):
-    """Rows of a ledger CSV as a list of dicts."""
+    """Rows of a ledger CSV.
+
+    Parameters
+    ----------
+    path : path-like
+
+    Returns
+    -------
+    list of dict
+    """
     with open(path, newline="", encoding="utf-8") as f:
         return list(csv.DictReader(f))
 
 
 def problems(rows):
-    """What is wrong with a merged ledger: missing/duplicated equations, failing checks, missing corrections."""
+    """What is wrong with a merged ledger: missing/duplicated equations, failing checks, missing corrections.
+
+    Parameters
+    ----------
+    rows : list of dict
+        Ledger rows (as from :func:`read`).
+
+    Returns
+    -------
+    list of str
+        One message per problem; empty when the ledger is complete.
+    """
     out = []
     ids = [r["id"] for r in rows]
     missing = [e for e in EQUATIONS if e not in ids]
@@ -124,8 +202,23 @@ def problems(rows):
 
 
 def merge(directory=None):
-    """Merge the fragments into ``<directory>/ledger.csv``; returns (path, rows, problems)."""
+    """Merge the fragments ``<directory>/ledger/*.csv`` into ``<directory>/ledger.csv``.
+
+    Parameters
+    ----------
+    directory : path-like, optional
+        Default :func:`output_dir`.
+
+    Returns
+    -------
+    path : pathlib.Path
+    rows : list of dict
+        Equations in numeric order, then claims.
+    problems : list of str
+        See :func:`problems`.
+    """
     d = Path(directory or output_dir())
+    d.mkdir(parents=True, exist_ok=True)
     rows = []
     for frag in sorted((d / "ledger").glob("*.csv")):
         rows.extend(read(frag))
@@ -136,6 +229,18 @@ def merge(directory=None):
 
 
 def main(argv=None):
+    """Command line: ``python -m wmr.ledger [directory]``; merges and reports.
+
+    Parameters
+    ----------
+    argv : list of str, optional
+        ``[directory]``.
+
+    Returns
+    -------
+    int
+        Exit status: 1 when the merged ledger has problems.
+    """
     path, rows, probs = merge(argv[0] if argv else None)
     counts = {v: sum(r["verdict"] == v for r in rows) for v in VERDICTS}
     print(f"ledger: {len(rows)} rows -> {path} ({', '.join(f'{k} {n}' for k, n in counts.items())})")

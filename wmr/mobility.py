@@ -169,6 +169,11 @@ def null_space(A):
     Returns
     -------
     numpy.ndarray (n, nullity)
+
+    Examples
+    --------
+    >>> null_space([[1.0, 0.0, 0.0]]).shape
+    (3, 2)
     """
     A = V.finite_array("A", A)
     if A.ndim != 2:
@@ -202,6 +207,13 @@ def twist_constraints(robot, beta):
     A : numpy.ndarray (..., k, 3)
     base_rank : int
         :math:`\sum_i \operatorname{rank}\mathbf L_i`.
+
+    Examples
+    --------
+    >>> from wmr.robots import paper_robot
+    >>> A, base = twist_constraints(paper_robot("centred"), [0.0, 0.0, 0.0])
+    >>> A.shape, base
+    ((3, 3), 3)
     """
     beta = V.finite_array("beta", beta, last=robot.w)
     J1 = robot.J1()
@@ -237,6 +249,12 @@ def rank_F(robot, beta):
     Returns
     -------
     numpy.ndarray of int (...)
+
+    Examples
+    --------
+    >>> from wmr.robots import paper_robot
+    >>> rank_F(paper_robot("centred"), [[0.0, 0.0, 0.0], [0.1, 0.2, 0.3]]).tolist()
+    [5, 6]
     """
     A, base = twist_constraints(robot, beta)
     return base + rank(A)
@@ -244,6 +262,16 @@ def rank_F(robot, beta):
 
 def mobility(robot, beta):
     r"""Mobility :math:`\nu(\mathbf F) = (3 + n) - \operatorname{rank}\mathbf F` (27), batched.
+
+    Parameters
+    ----------
+    robot : Robot
+    beta : array (..., w)
+        Steering angles.
+
+    Returns
+    -------
+    numpy.ndarray of int (...)
 
     Examples
     --------
@@ -260,7 +288,24 @@ def admissible_twists(robot, beta):
     r"""Orthonormal basis (3, m) of the admissible platform twists at one configuration.
 
     The projection of :math:`\mathcal N(\mathbf F)` onto the twist coordinates: the twists that some
-    joint rates realise without slip.
+    joint rates realise without slip (the null space of :func:`twist_constraints`).
+
+    Parameters
+    ----------
+    robot : Robot
+    beta : array (w,)
+        Steering angles of one configuration.
+
+    Returns
+    -------
+    numpy.ndarray (3, m)
+
+    Examples
+    --------
+    >>> from wmr.robots import paper_robot
+    >>> basis = admissible_twists(paper_robot("centred"), [0.0, 0.0, 0.0])   # axles along x
+    >>> np.abs(basis.ravel()).round(12).tolist()                              # only y translation
+    [0.0, 0.0, 1.0]
     """
     beta = V.finite_array("beta", beta, last=robot.w)
     if beta.ndim != 1:

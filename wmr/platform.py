@@ -14,15 +14,26 @@ The velocity of a platform point :math:`P_i` with :math:`\mathbf d_i = \overrigh
 """
 from __future__ import annotations
 
+import numpy as np
+
 from .backend import NUMERIC, choose
 
 
 def E(backend=NUMERIC):
-    r"""The 90-degree counter-clockwise rotation :math:`\mathbf E` of (3).
+    r"""The 90-degree counter-clockwise rotation :math:`\mathbf E` of (3): :math:`\mathbf E\mathbf v = \mathbf k\times\mathbf v`.
+
+    Parameters
+    ----------
+    backend : NUMERIC or SYMBOLIC, optional
 
     Returns
     -------
-    numpy.ndarray (2, 2) or sympy.Matrix
+    numpy.ndarray (2, 2) or sympy.Matrix (2, 2)
+
+    Examples
+    --------
+    >>> E().tolist()
+    [[0.0, -1.0], [1.0, 0.0]]
     """
     return backend.matrix([[0, -1], [1, 0]])
 
@@ -33,11 +44,19 @@ def rotation(angle, backend=NUMERIC):
     Parameters
     ----------
     angle : float, array (...) or sympy.Expr
-    backend : NUMERIC or SYMBOLIC
+        Counter-clockwise angle, radians.
+    backend : NUMERIC or SYMBOLIC, optional
 
     Returns
     -------
     numpy.ndarray (..., 2, 2) or sympy.Matrix (2, 2)
+
+    Examples
+    --------
+    >>> (rotation(np.pi / 2).round(12) + 0.0).tolist()
+    [[0.0, -1.0], [1.0, 0.0]]
+    >>> rotation(np.zeros(5)).shape
+    (5, 2, 2)
     """
     if backend is NUMERIC:
         from ._validate import finite_array
@@ -58,10 +77,17 @@ def point_row(d, L=1, backend=None):
         Vector from the operation point C to the point, body frame.
     L : float or sympy.Expr, optional
         Characteristic length (32); 1 gives the row of :math:`\mathbf J_1`.
+    backend : NUMERIC or SYMBOLIC, optional
+        Default: SymPy if ``d`` or ``L`` is symbolic.
 
     Returns
     -------
     numpy.ndarray (2, 3) or sympy.Matrix (2, 3)
+
+    Examples
+    --------
+    >>> point_row((2.0, 0.0)).tolist()
+    [[-0.0, 1.0, 0.0], [2.0, 0.0, 1.0]]
     """
     bk = choose(*d, L, backend=backend)
     dx, dy = d
@@ -82,9 +108,12 @@ def point_velocity(twist, d):
     Returns
     -------
     numpy.ndarray (..., 2)
-    """
-    import numpy as np
 
+    Examples
+    --------
+    >>> point_velocity([1.0, 0.0, 0.0], [2.0, 0.0]).tolist()     # spin: (psi_dot k) x d
+    [0.0, 2.0]
+    """
     from ._validate import finite_array
     t = finite_array("twist", twist, last=3)
     d = finite_array("d", d, last=2)

@@ -94,6 +94,7 @@ class Robot:
 
     @property
     def qdot_symbols(self):
+        """SymPy symbols of the generalised rates (25), in the column order of :math:`\\mathbf F`."""
         return tuple(self.twist_symbols) + self.rate_symbols
 
     @property
@@ -108,6 +109,7 @@ class Robot:
 
     @property
     def is_symbolic(self):
+        """True when a mount point or a length of some unit is a SymPy expression."""
         return any(u.is_symbolic for u in self.wheels)
 
     # --- matrices -------------------------------------------------------------------------------
@@ -242,8 +244,30 @@ class Robot:
         """The same robot described from another body frame.
 
         The new frame has its origin (new operation point) at ``origin`` and is rotated by
-        ``angle`` relative to the current one; mount points are re-expressed, steering angles
-        shift by ``-angle``.  Used to check that results do not depend on the body frame.
+        ``angle`` relative to the current one; mount points are re-expressed,
+        :math:`\\mathbf d_i' = \\mathbf R(-\\text{angle})(\\mathbf d_i - \\text{origin})`, and steering
+        angles shift by ``-angle``.  A twist transforms as
+        :math:`\\dot\\psi' = \\dot\\psi`, :math:`\\dot{\\mathbf c}' = \\mathbf R(-\\text{angle})(\\dot{\\mathbf c} +
+        \\dot\\psi\\mathbf E\\,\\text{origin})`; joint rates do not change.  Used to check that
+        results do not depend on the body frame.
+
+        Parameters
+        ----------
+        origin : pair, optional
+            The new operation point, in the current body frame.
+        angle : float, optional
+            Rotation of the new body frame relative to the current one (radians, CCW).
+
+        Returns
+        -------
+        Robot
+
+        Examples
+        --------
+        >>> from wmr import CentredWheel
+        >>> bot = Robot([CentredWheel((1.0, 0.0), r=0.1), CentredWheel((-1.0, 0.0), r=0.1)])
+        >>> (bot.moved(origin=(1.0, 0.0), angle=np.pi / 2).mount_points.round(12) + 0.0).tolist()
+        [[0.0, 0.0], [0.0, 2.0]]
         """
         import dataclasses
         ox, oy = V.point("origin", origin)

@@ -37,6 +37,11 @@ def equilateral_mounts(L=1.0, first_deg=180.0, clockwise=True, exact=False):
     Returns
     -------
     list of 3 pairs
+
+    Examples
+    --------
+    >>> equilateral_mounts(2.0, exact=True)
+    [(-2, 0), (1, sqrt(3)), (1, -sqrt(3))]
     """
     L = V.positive("L", L)
     first_deg = V.real("first_deg", first_deg)
@@ -73,6 +78,11 @@ def paper_robot(kind="centred", L=1.0, r=1.0, d=None, b=None, exact=False):
     Returns
     -------
     Robot
+
+    Examples
+    --------
+    >>> paper_robot("offset", L=0.5, r=0.1)
+    Robot('paper-offset': offset@(-0.5, 0.0), offset@(0.25, 0.4330127018922193), offset@(0.25, -0.4330127018922193))
     """
     pts = equilateral_mounts(L, exact=exact)
     if kind == "centred":

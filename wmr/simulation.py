@@ -24,6 +24,8 @@ class Trajectory:
 
     Attributes
     ----------
+    robot : Robot
+        The simulated robot.
     t : numpy.ndarray (N,)
     pose : numpy.ndarray (N, 3)
         :math:`(\\psi, X, Y)`, fixed frame.
@@ -42,7 +44,19 @@ class Trajectory:
     slip: np.ndarray
 
     def world(self, body_points):
-        """Map body-frame points (N, ..., 2) or (..., 2) to the fixed frame along the run."""
+        """Map body-frame points to the fixed frame along the run.
+
+        Parameters
+        ----------
+        body_points : array (N, ..., 2) or (..., 2)
+            Points in the body frame: one set per sample (leading axis N = ``len(t)``) or one
+            set for the whole run.
+
+        Returns
+        -------
+        numpy.ndarray (N, ..., 2)
+            :math:`[X, Y] + \\mathbf R(\\psi)\\,\\mathbf p` at every sample.
+        """
         p = np.asarray(body_points, dtype=float)
         psi, XY = self.pose[:, 0], self.pose[:, 1:]
         c, s = np.cos(psi), np.sin(psi)
@@ -54,7 +68,19 @@ class Trajectory:
         return np.stack([X, Y], axis=-1)
 
     def unit_points(self, i, key):
-        """World positions along the run of a unit's point ``key`` (see ``unit.points``)."""
+        """World positions along the run of a point of unit ``i``.
+
+        Parameters
+        ----------
+        i : int
+            Index of the unit (0-based, as in ``robot.wheels``).
+        key : str
+            A key of :meth:`OffsetWheel.points`: ``"P"``, ``"H"``, ``"wheels"``, ``"i"`` or ``"j"``.
+
+        Returns
+        -------
+        numpy.ndarray (N, ..., 2)
+        """
         pts = self.robot.wheels[i].points(self.beta[:, i])[key]
         return self.world(pts)
 
@@ -87,6 +113,14 @@ def simulate(robot, rates, beta0, t_end, dt, steer=None, pose0=(0.0, 0.0, 0.0)):
     Returns
     -------
     Trajectory
+
+    Examples
+    --------
+    >>> from wmr.robots import paper_robot
+    >>> bot = paper_robot("centred", L=1.0, r=0.5)
+    >>> tr = simulate(bot, [-2.0, -2.0, -2.0], [0.0, 0.0, 0.0], t_end=1.0, dt=0.1)
+    >>> (tr.pose[-1].round(12) + 0.0).tolist(), bool(tr.slip.max() < 1e-12)   # 1 m along +y, no slip
+    ([0.0, 0.0, 1.0], True)
     """
     t_end = V.positive("t_end", t_end)
     dt = V.positive("dt", dt)

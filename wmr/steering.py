@@ -103,6 +103,13 @@ def steering_angles(robot, twist, current=None):
     -------
     numpy.ndarray (..., w)
         Angles in :math:`(-\pi, \pi]`.
+
+    Examples
+    --------
+    >>> from wmr.robots import paper_robot
+    >>> beta = steering_angles(paper_robot("centred"), [1.0, 0.0, 0.0])   # spin about C
+    >>> np.degrees(beta).round(9).tolist()                              # axles point at C
+    [0.0, -120.0, 120.0]
     """
     t = V.finite_array("twist", twist, last=3)
     d = robot.mount_points                                             # (w, 2)
@@ -129,6 +136,11 @@ def centre_to_wheels(twist, d):
     Returns
     -------
     numpy.ndarray (..., w, 2)
+
+    Examples
+    --------
+    >>> centre_to_wheels([1.0, 0.0, 2.0], [[1.0, 0.0]]).tolist()          # U = (-2, 0)
+    [[-3.0, 0.0]]
     """
     ic = instantaneous_centre(twist)
     if np.any(ic.kind != FINITE):

@@ -35,6 +35,17 @@ def _is_zero(e):
 def symbolic_equal(a, b=0):
     """True when ``a - b`` simplifies to zero (expressions or matrices of equal shape).
 
+    Parameters
+    ----------
+    a : SymPy expression, Matrix or Equality
+        An equality ``lhs = rhs`` is compared as ``lhs - rhs``.
+    b : SymPy expression or Matrix, optional
+        Default 0.
+
+    Returns
+    -------
+    bool
+
     Examples
     --------
     >>> x = sp.Symbol("x", real=True)

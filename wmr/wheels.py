@@ -32,10 +32,6 @@ from .backend import NUMERIC, choose
 from .platform import E, rotation
 
 
-def _batched_angle(beta):
-    return np.asarray(beta, dtype=float)
-
-
 @dataclass(frozen=True)
 class _Unit:
     position: tuple
@@ -50,15 +46,68 @@ class _Unit:
 
     # --- rate variables ----------------------------------------------------------------------
     def rate_names(self, i):
-        """Plain names of this unit's rate variables when it is wheel ``i`` (1-based)."""
+        """Plain names of this unit's rate variables when it is wheel ``i``.
+
+        Parameters
+        ----------
+        i : int
+            The unit's number in the robot (1-based, the paper's numbering).
+
+        Returns
+        -------
+        tuple of str
+            ``n_rates`` names, in the order of the unit's columns of :math:`\\mathbf J_2`.
+
+        Examples
+        --------
+        >>> OffsetWheel((0, 0), r=1, d=0.5).rate_names(2)
+        ('phi_dot_2', 'theta_dot_2')
+        >>> DualWheel((0, 0), r=1, b=0.5).rate_names(3)
+        ('theta_dot_31', 'theta_dot_32')
+        """
         raise NotImplementedError
 
     def rate_symbols(self, i):
-        """SymPy symbols of the rate variables, typeset as in the paper."""
+        """SymPy symbols of the rate variables of wheel ``i``, typeset as in the paper.
+
+        Parameters
+        ----------
+        i : int
+            The unit's number in the robot (1-based).
+
+        Returns
+        -------
+        tuple of sympy.Symbol
+            ``n_rates`` real symbols, in the order of :meth:`rate_names`.
+
+        Examples
+        --------
+        >>> CentredWheel((0, 0), r=1).rate_symbols(1)
+        (\\dot{\\theta}_{1},)
+        """
+        raise NotImplementedError
+
+    def beta_rate(self, psi_dot, rates, steer=None):
+        """Steering rate :math:`\\dot\\beta_i` of the unit on the platform (used by the simulation).
+
+        Parameters
+        ----------
+        psi_dot : float or array (...)
+            Platform turning rate.
+        rates : array (..., n_rates)
+            The unit's joint rates.
+        steer : float or array (...), optional
+            Steering-rate input (used by centred wheels only).
+
+        Returns
+        -------
+        float or numpy.ndarray (...)
+        """
         raise NotImplementedError
 
     @property
     def is_symbolic(self):
+        """True when the position or a length of the unit is a SymPy expression."""
         from .backend import is_symbolic
         return is_symbolic(*self.position, *[getattr(self, f) for f in ("r", "d", "b") if hasattr(self, f)])
 
@@ -115,13 +164,26 @@ class _Unit:
         raise NotImplementedError
 
     def points(self, beta):
-        r"""Points of the unit in the body frame, for drawing: a dict of arrays (..., 2).
+        r"""Points of the unit in the body frame (for drawing and for checks).
 
-        Keys: ``"P"`` (steering axis), ``"H"`` (centre of the intermediate body's wheel or of
-        the pair), ``"wheels"`` (array (..., k, 2): wheel centres = ground contact points seen
-        from above), ``"i"`` and ``"j"`` (unit axle and rolling directions).
+        Parameters
+        ----------
+        beta : float or array (...)
+            Steering angle(s) :math:`\beta_i`.
+
+        Returns
+        -------
+        dict of numpy.ndarray
+            ``"P"`` (steering axis, (..., 2)), ``"H"`` (centre of the wheel, or of the pair,
+            (..., 2)), ``"wheels"`` ((..., k, 2): wheel centres = ground contact points seen from
+            above), ``"i"`` and ``"j"`` (unit axle and rolling directions, (..., 2)).
+
+        Examples
+        --------
+        >>> OffsetWheel((1.0, 0.0), r=0.1, d=0.2).points(0.0)["H"].tolist()    # H = P - d j
+        [1.0, -0.2]
         """
-        beta = _batched_angle(beta)
+        beta = V.finite_array("beta", beta)
         c, s = np.cos(beta), np.sin(beta)
         i_dir = np.stack([c, s], axis=-1)
         j_dir = np.stack([-s, c], axis=-1)
@@ -169,7 +231,26 @@ class OffsetWheel(_Unit):
         return bk.matrix([[-self.d, 0], [0, -self.r]])
 
     def beta_rate(self, psi_dot, rates, steer=None):
-        """(7): beta_dot = phi_dot - psi_dot.  ``rates[..., 0]`` is phi_dot."""
+        r"""(7): :math:`\dot\beta_i = \dot\phi_i - \dot\psi`, with :math:`\dot\phi_i` = ``rates[..., 0]``.
+
+        Parameters
+        ----------
+        psi_dot : float or array (...)
+            Platform turning rate.
+        rates : array (..., 2)
+            :math:`(\dot\phi_i, \dot\theta_i)`.
+        steer : ignored
+            (The steering of an offset wheel follows from its rates.)
+
+        Returns
+        -------
+        float or numpy.ndarray (...)
+
+        Examples
+        --------
+        >>> float(OffsetWheel((0, 0), r=1, d=0.5).beta_rate(0.25, np.array([1.0, 3.0])))
+        0.75
+        """
         return rates[..., 0] - psi_dot
 
     def _points(self, P, i_dir, j_dir):
@@ -207,7 +288,21 @@ class CentredWheel(_Unit):
         return bk.matrix([[0], [-self.r]])
 
     def beta_rate(self, psi_dot, rates, steer=None):
-        """The steering rate is an independent input (decoupled from rolling)."""
+        """The steering rate is an independent input (decoupled from rolling): ``steer`` or 0.
+
+        Parameters
+        ----------
+        psi_dot : float or array (...)
+            Platform turning rate (sets the shape of the default zero).
+        rates : array (..., 1)
+            :math:`\\dot\\theta_i` (does not steer the wheel).
+        steer : float or array (...), optional
+            The steering-rate input :math:`\\dot\\beta_i`.
+
+        Returns
+        -------
+        float or numpy.ndarray (...)
+        """
         if steer is None:
             return np.zeros_like(np.asarray(psi_dot, dtype=float))
         return steer
@@ -254,7 +349,26 @@ class DualWheel(_Unit):
         return bk.matrix([[0, 0], [-half, -half]])
 
     def beta_rate(self, psi_dot, rates, steer=None):
-        """Corrected (15): beta_dot = -(r/2b)(theta_dot_1 - theta_dot_2) - psi_dot."""
+        r"""Corrected (15): :math:`\dot\beta_i = -\tfrac{r}{2b}(\dot\theta_{i1} - \dot\theta_{i2}) - \dot\psi`.
+
+        Parameters
+        ----------
+        psi_dot : float or array (...)
+            Platform turning rate.
+        rates : array (..., 2)
+            :math:`(\dot\theta_{i1}, \dot\theta_{i2})`.
+        steer : ignored
+            (A dual-wheel unit is steered by the difference of its wheel rates.)
+
+        Returns
+        -------
+        float or numpy.ndarray (...)
+
+        Examples
+        --------
+        >>> float(DualWheel((0, 0), r=0.2, b=0.1).beta_rate(0.0, np.array([1.0, 0.0])))
+        -1.0
+        """
         return -(self.r / (2 * self.b)) * (rates[..., 0] - rates[..., 1]) - psi_dot
 
     def _points(self, P, i_dir, j_dir):

@@ -1,0 +1,167 @@
+"""Input checks (wmr._validate), the numerical-zero policy (wmr.tolerance), the thread chunking
+(wmr._batch) and the comparison helpers (wmr.verify).
+
+Every bad input raises ``ValueError`` whose message names the argument and shows the value.
+"""
+import numpy as np
+import pytest
+import sympy as sp
+from hypothesis import given
+from hypothesis import strategies as st
+
+import wmr
+from wmr import _batch, _validate as V, verify
+from wmr.tolerance import TOL, near_zero
+
+x = sp.Symbol("x", real=True)
+p = sp.Symbol("p", positive=True)
+
+
+# --- scalars ------------------------------------------------------------------------------------
+@pytest.mark.parametrize("check, value, expected", [
+    (V.positive, 2, 2), (V.positive, 0.5, 0.5), (V.positive, np.float32(0.5), 0.5),
+    (V.positive, np.array(3.0), 3.0), (V.positive, p, p), (V.positive, x, x),
+    (V.nonnegative, 0, 0), (V.nonnegative, 0.0, 0.0), (V.nonnegative, p, p),
+    (V.real, -3, -3), (V.real, np.int64(4), 4), (V.real, sp.pi, sp.pi),
+])
+def test_scalar_accepted(check, value, expected):
+    out = check("v", value)
+    assert out == expected
+    if isinstance(value, (int, np.integer)) and not isinstance(value, bool):
+        assert type(out) is int                                    # exact, for SymPy products
+
+
+@pytest.mark.parametrize("check, value, shown", [
+    (V.positive, 0, "0"), (V.positive, -1.5, "-1.5"), (V.positive, np.nan, "nan"),
+    (V.positive, np.inf, "inf"), (V.positive, True, "True"), (V.positive, "1", "'1'"),
+    (V.positive, 1j, "1j"), (V.positive, [1.0], "[1.0]"), (V.positive, -p, "-p"),
+    (V.positive, sp.oo, "oo"),
+    (V.nonnegative, -1e-3, "-0.001"), (V.nonnegative, -np.inf, "inf"), (V.nonnegative, -p, "-p"),
+    (V.real, np.nan, "nan"), (V.real, None, "None"), (V.real, sp.I, "I"),
+])
+def test_scalar_rejected_with_name_and_value(check, value, shown):
+    with pytest.raises(ValueError) as exc:
+        check("the_arg", value)
+    msg = str(exc.value)
+    assert "the_arg" in msg and shown in msg, msg
+
+
+@pytest.mark.parametrize("value, shown", [
+    ((1.0,), "(1.0,)"), ((1, 2, 3), "(1, 2, 3)"), (1.0, "1.0"), ((np.nan, 0), "nan"),
+    (("a", 0), "'a'"), ((True, 0), "True"),
+])
+def test_point_rejected(value, shown):
+    with pytest.raises(ValueError) as exc:
+        V.point("position", value)
+    assert "position" in str(exc.value) and shown in str(exc.value)
+
+
+def test_point_accepted():
+    assert V.point("position", np.array([1, 2])) == (1.0, 2.0)
+    assert V.point("position", (x, 0.5)) == (x, 0.5)
+
+
+# --- arrays -------------------------------------------------------------------------------------
+@pytest.mark.parametrize("value, last, shown", [
+    ([1.0, 2.0], 3, "(2,)"),
+    ([[1.0, 2.0]], 3, "[[1., 2.]]"),
+    (np.zeros((1000, 2)), 3, "(1000, 2)"),
+    (5.0, 3, "()"),
+    ([1.0, np.nan, 2.0], None, "nan"),
+    ([np.inf, -np.inf], None, "inf"),
+    ([[1.0, 2.0], [3.0]], None, "[[1.0, 2.0], [3.0]]"),
+    ("abc", None, "'abc'"),
+    ([1j, 2.0], None, "1j"),
+    ([x, 1.0], None, "x"),
+])
+def test_finite_array_rejected(value, last, shown):
+    with pytest.raises(ValueError) as exc:
+        V.finite_array("beta", value, last=last)
+    assert "beta" in str(exc.value) and shown in str(exc.value), str(exc.value)
+
+
+def test_finite_array_messages_stay_short():
+    with pytest.raises(ValueError) as exc:
+        V.finite_array("beta", np.zeros((10**5, 2)), last=3)
+    assert len(str(exc.value)) < 200 and "\n" not in str(exc.value)
+
+
+def test_symbolic_vector():
+    assert V.symbolic_vector("beta", [x, 1, 2], 3).shape == (3, 1)
+    with pytest.raises(ValueError, match=r"beta must have 3 entries, got shape \(2, 1\)"):
+        V.symbolic_vector("beta", [x, 1], 3)
+
+
+# --- every public entry point with the classic bad inputs ----------------------------------------
+BOT = wmr.paper_robot("centred", L=0.5, r=0.1)
+ENTRY_POINTS = [
+    ("non-positive radius", lambda: wmr.CentredWheel((0, 0), r=-0.1), "r", "-0.1"),
+    ("zero radius, offset wheel", lambda: wmr.OffsetWheel((0, 0), r=0, d=0.1), "r", "0"),
+    ("negative offset", lambda: wmr.OffsetWheel((0, 0), r=0.1, d=-0.01), "d", "-0.01"),
+    ("NaN radius", lambda: wmr.DualWheel((0, 0), r=np.nan, b=0.1), "r", "nan"),
+    ("inf half separation", lambda: wmr.DualWheel((0, 0), r=0.1, b=np.inf), "b", "inf"),
+    ("zero wheels", lambda: wmr.Robot([]), "wheels", "0"),
+    ("beta with wrong w", lambda: wmr.mobility(BOT, [0.1, 0.2]), "beta", "[0.1, 0.2]"),
+    ("rates with wrong n", lambda: wmr.forward(BOT, [0.1, 0.2, 0.3], [1.0, 2.0, 3.0, 4.0]), "rates",
+     "[1., 2., 3., 4.]"),
+    ("NaN in beta", lambda: BOT.J([0.1, np.nan, 0.3]), "beta", "nan"),
+    ("inf in twist", lambda: wmr.inverse(BOT, [0.0] * 3, [np.inf, 0.0, 0.0]), "twist", "inf"),
+    ("twist of wrong shape", lambda: wmr.steering_angles(BOT, [[1.0, 2.0]]), "twist", "(1, 2)"),
+    ("wrong matrix shape", lambda: wmr.condition_number([1.0, 2.0, 3.0]), "A", "(3,)"),
+    ("NaN matrix", lambda: wmr.rank([[np.nan]]), "A", "nan"),
+    ("L <= 0", lambda: BOT.J1(L=-2.0), "L", "-2"),
+    ("dt <= 0", lambda: wmr.simulate(BOT, [1.0] * 3, [0.0] * 3, 1.0, 0.0), "dt", "0"),
+    ("point_velocity shape", lambda: wmr.point_velocity([1.0, 0.0, 0.0], [1.0]), "d", "(1,)"),
+]
+
+
+@pytest.mark.parametrize("case, call, name, value", ENTRY_POINTS, ids=[c[0] for c in ENTRY_POINTS])
+def test_entry_points_reject_bad_input(case, call, name, value):
+    with pytest.raises(ValueError) as exc:
+        call()
+    msg = str(exc.value)
+    assert name in msg and value in msg, msg
+
+
+# --- tolerance ----------------------------------------------------------------------------------
+@pytest.mark.parametrize("value, scale, expected", [
+    (1e-12, 1.0, True), (1e-8, 1.0, False), (1e-8, 1e2, True), (1e-10, 1e-6, True),
+    (2 * TOL, 1.0, False), (TOL, 1.0, True), (-TOL / 2, 0.0, True),
+])
+def test_near_zero(value, scale, expected):
+    assert bool(near_zero(value, scale)) is expected
+
+
+def test_near_zero_broadcasts():
+    out = near_zero(np.array([[1e-12, 1.0]]), np.array([[1.0], [1e12]]))
+    assert out.tolist() == [[True, False], [True, True]]
+
+
+# --- thread chunking ------------------------------------------------------------------------------
+@pytest.mark.parametrize("n, chunk", [(5, 2), (100, 7), (3, 64), (64, 64), (65, 64)])
+def test_map_matrices_keeps_order_and_shape(n, chunk):
+    A = np.arange(n * 6, dtype=float).reshape(n, 2, 3)
+    out = _batch.map_matrices(lambda X: X.sum(axis=(-2, -1)), A, chunk=chunk)
+    assert np.array_equal(out, A.sum(axis=(-2, -1)))
+    B = A.reshape((1, n, 2, 3))
+    out = _batch.map_matrices(lambda X: X[:, 0, :], B, chunk=chunk)
+    assert out.shape == (1, n, 3) and np.array_equal(out, B[..., 0, :])
+
+
+# --- comparison helpers -----------------------------------------------------------------------------
+def test_symbolic_equal():
+    assert verify.symbolic_equal(sp.sin(x) ** 2 + sp.cos(x) ** 2, 1)
+    assert verify.symbolic_equal(sp.Matrix([sp.sin(2 * x)]), sp.Matrix([2 * sp.sin(x) * sp.cos(x)]))
+    assert verify.symbolic_equal(sp.Eq(sp.cos(x) ** 2, 1 - sp.sin(x) ** 2))
+    assert not verify.symbolic_equal(sp.sin(x), sp.cos(x))
+    with pytest.raises(ValueError, match="shapes"):
+        verify.symbolic_equal(sp.Matrix([1, 2]), sp.Matrix([1, 2, 3]))
+
+
+@given(st.integers(1, 50))
+def test_max_residual(n):
+    assert verify.max_residual(sp.sin(x) ** 2 + sp.cos(x) ** 2 - 1, n=n) < 1e-14
+    assert verify.max_residual(sp.sin(x), sp.cos(x), n=n) > 0
+    r1 = verify.max_residual(sp.sin(x) - x / 2, n=n)
+    assert r1 == verify.max_residual(sp.sin(x) - x / 2, n=n)              # fixed seed: deterministic
+    assert verify.max_residual(p - 2, ranges={p: (2.0, 2.0)}, n=n) == 0.0
