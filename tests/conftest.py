@@ -14,7 +14,7 @@ import wmr
 
 # --- determinism: a fixed, bounded Hypothesis profile -------------------------------------------
 settings.register_profile(
-    "wmr", derandomize=True, max_examples=25, deadline=None, print_blob=True,
+    "wmr", derandomize=True, database=None, max_examples=25, deadline=None, print_blob=True,
     suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much,
                            HealthCheck.function_scoped_fixture])
 settings.load_profile("wmr")

@@ -84,6 +84,21 @@ def test_rank_F_equals_svd_rank_at_special_configurations(bot, seed):
     assert np.array_equal(M.rank_F(bot, betas), M.rank(bot.F(betas)))
 
 
+@pytest.mark.parametrize("units", [
+    [wmr.OffsetWheel((1, 0), r=0.1, d=0.0), wmr.OffsetWheel((-1, 0), r=0.1, d=0.0),
+     wmr.OffsetWheel((0, 1), r=0.1, d=0.0)],                                 # d = 0: rank L_i = 1
+    [wmr.OffsetWheel((1, 0), r=0.1, d=0.0), wmr.CentredWheel((-1, 0), r=0.1)],
+    [wmr.CentredWheel((0, 0), r=0.1)],                                       # one wheel
+    [wmr.DualWheel((0, 0), r=0.1, b=0.1), wmr.DualWheel((0, 0), r=0.1, b=0.2)],   # coincident mounts
+], ids=["offset-d0", "offset-d0+centred", "single", "coincident-duals"])
+def test_rank_F_equals_svd_rank_degenerate_units(units):
+    bot = wmr.Robot(units)
+    rng = np.random.default_rng(3)
+    betas = np.vstack([rng.uniform(-np.pi, np.pi, (50, bot.w)), np.zeros((1, bot.w)),
+                       steered_beta(bot, np.array([1.0, 0.2, -0.3]))])
+    assert np.array_equal(M.rank_F(bot, betas), M.rank(bot.F(betas)))
+
+
 # --- mobility per wheel type ---------------------------------------------------------------------
 @given(robots(kinds=("offset",)), seeds)
 def test_offset_wheels_full_mobility(bot, seed):
