@@ -623,15 +623,15 @@ def build_report_notebook(t: Tree, date: str, commit: str):
                                         if caps else "*No figures: `figures/captions.json` is missing.*")))
     for key, c in caps.items():
         num, title, cap = str(c.get("number", "")), c.get("title", ""), c.get("caption", "")
-        label = f"Figure {num}." if num.isdigit() else f"{title}."
+        label = f"Figure {num}." if num.isdigit() else ""
         svg, png, pdf = (t.figures / f"{key}.{ext}" for ext in ("svg", "png", "pdf"))
         img = svg if svg.exists() else png
         fn = c.get("function", "")
         src_note = f" <span class=\"wmr-src\">({html.escape(fn)})</span>" if fn else ""
         h = (f'<figure class="wmr-fig" id="{html.escape(key)}">'
-             + (f'<img src="{_img_data_uri(img)}" alt="{html.escape(label + " " + title)}">' if img.exists()
+             + (f'<img src="{_img_data_uri(img)}" alt="{html.escape((label + " " + title).strip())}">' if img.exists()
                 else f"<p><em>missing image figures/{html.escape(key)}.svg</em></p>")
-             + f"<figcaption><b>{html.escape(label)} {html.escape(title)}.</b> {html.escape(cap)}{src_note}</figcaption></figure>")
+             + f"<figcaption><b>{html.escape((label + ' ' + title).strip())}.</b> {html.escape(cap)}{src_note}</figcaption></figure>")
         gfx = pdf if pdf.exists() else png
         if gfx.exists():
             body = (r"\includegraphics[width=\linewidth,height=0.62\textheight,keepaspectratio]{"
@@ -646,9 +646,20 @@ def build_report_notebook(t: Tree, date: str, commit: str):
 
     # --- singularity list
     if sing is not None:
-        cols = list(sing[0].keys()) if sing else []
-        cells.append(_md("# Singularities\n\nFrom `figures/singularities.csv`.\n\n" +
-                         (md_table(cols, [[r.get(c) for c in cols] for r in sing]) if cols else "*(empty)*")))
+        allcols = list(sing[0].keys()) if sing else []
+        # the columns a reader needs (the others stay in the CSV); any other layout: all columns
+        prefer = {"family": 10, "configuration": 18, "geometric_meaning": 18, "det_J": 6, "rank_F": 8,
+                  "listed_in_paper": 5, "note": 30}
+        cols = [c for c in allcols if c in prefer]
+        if len(cols) < 3:
+            cols = allcols
+        widths = [prefer.get(c, 10) for c in cols]
+        heads = [c.replace("_", " ") for c in cols]
+        rows = [[auto_math(r.get(c)) for c in cols] for r in sing]
+        cells.append(_md("# Singularities\n\nThe singular configurations of the robot with three centred wheels, "
+                         "computed (`figures/singularities.csv`, which also has " +
+                         ", ".join(f"`{c}`" for c in allcols if c not in cols) + ").\n\n" +
+                         (md_table(heads, rows, widths) if cols else "*(empty)*")))
 
     # --- chapters
     for i, ch in enumerate(chapters):
