@@ -37,8 +37,10 @@ venv: ## (internal) create/refresh .venv from environment.lock, editable install
 	if [ -d $(VENV) ]; then echo "[venv] environment.lock or pyproject.toml changed: recreating $(VENV)"; rm -rf $(VENV); \
 	else echo "[venv] creating $(VENV) from environment.lock"; fi; \
 	$(PYTHON) -m venv $(VENV); \
-	$(VPY) -m pip install --quiet --disable-pip-version-check --require-hashes -r environment.lock; \
-	$(VPY) -m pip install --quiet --disable-pip-version-check --no-deps --no-build-isolation -e .; \
+	log=$(VENV)/pip-install.log; \
+	{ $(VPY) -m pip install --disable-pip-version-check --require-hashes -r environment.lock && \
+	  $(VPY) -m pip install --disable-pip-version-check --no-deps --no-build-isolation -e . ; } > $$log 2>&1 \
+	  || { cat $$log; echo "[venv] pip install failed (log: $$log)"; exit 1; }; \
 	echo "$$want" > $(STAMP); \
 	echo "[venv] ready in $$(( $$(date +%s) - t0 )) s"
 

@@ -152,7 +152,7 @@ def test_html_has_every_figure(html_text):
         m = re.search(r'<figure class="wmr-fig" id="%s">(.*?)</figure>' % re.escape(key), html_text, re.S)
         assert m, f"figure {key} missing from the HTML report"
         assert 'src="data:image/' in m.group(1), f"figure {key} is not embedded as a data URI"
-        assert build.html.escape(c["title"]) in m.group(1), f"caption title of {key} missing"
+        assert build.html_text(c["title"]) in m.group(1), f"caption title of {key} missing"
 
 
 def test_html_has_ledger_table(html_text):

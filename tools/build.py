@@ -325,16 +325,26 @@ _TEX_ESC = {"\\": r"\textbackslash{}", "&": r"\&", "%": r"\%", "#": r"\#", "_": 
             "{": r"\{", "}": r"\}", "~": r"\textasciitilde{}", "^": r"\textasciicircum{}"}
 
 
+def _tex_esc(part: str) -> str:
+    return "".join(_TEX_ESC.get(c, c) for c in part).replace("$", r"\$")
+
+
 def latex_text(s: str) -> str:
-    """Escape text for LaTeX, leaving $...$ math untouched."""
+    """Escape text for LaTeX, leaving $...$ math untouched; `code` becomes \\texttt."""
     parts = _MATH.split(s or "")
     out = []
     for i, part in enumerate(parts):
         if i % 2:
             out.append(part)
         else:
-            out.append("".join(_TEX_ESC.get(c, c) for c in part).replace("$", r"\$"))
+            segs = re.split(r"`([^`]+)`", part)
+            out.append("".join(r"\texttt{" + _tex_esc(x) + "}" if j % 2 else _tex_esc(x) for j, x in enumerate(segs)))
     return "".join(out)
+
+
+def html_text(s: str) -> str:
+    """Escape text for HTML (math stays for MathJax); `code` becomes <code>."""
+    return re.sub(r"`([^`]+)`", r"<code>\1</code>", html.escape(s or ""))
 
 
 _CMD = re.compile(r"\\[A-Za-z]+")
@@ -631,7 +641,7 @@ def build_report_notebook(t: Tree, date: str, commit: str):
         h = (f'<figure class="wmr-fig" id="{html.escape(key)}">'
              + (f'<img src="{_img_data_uri(img)}" alt="{html.escape((label + " " + title).strip())}">' if img.exists()
                 else f"<p><em>missing image figures/{html.escape(key)}.svg</em></p>")
-             + f"<figcaption><b>{html.escape((label + ' ' + title).strip())}.</b> {html.escape(cap)}{src_note}</figcaption></figure>")
+             + f"<figcaption><b>{html_text((label + ' ' + title).strip())}.</b> {html_text(cap)}{src_note}</figcaption></figure>")
         gfx = pdf if pdf.exists() else png
         if gfx.exists():
             body = (r"\includegraphics[width=\linewidth,height=0.62\textheight,keepaspectratio]{"
