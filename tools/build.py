@@ -793,8 +793,8 @@ def html_tables_to_latex(nb) -> int:
 # Pandoc reader for the PDF, matched to what Jupyter/MathJax show: no fancy_lists ("(61) is ..."
 # is a paragraph), no raw_tex (a bare '\dot' in prose is text, as in the notebook, not a LaTeX
 # command that breaks the build); LaTeX environments outside $...$ (MathJax typesets them) are
-# wrapped in $$...$$ by wrap_environments() first.
-MD_READER = "markdown+tex_math_double_backslash+tex_math_single_backslash-fancy_lists-raw_tex"
+# wrapped in $$...$$ by wrap_environments() first; no ^superscript^/~subscript~ (notes say d_i^T/...^2).
+MD_READER = "markdown+tex_math_double_backslash+tex_math_single_backslash-fancy_lists-raw_tex-superscript-subscript-citations"
 _ENV = re.compile(r"\\begin\{([A-Za-z]+\*?)\}.*?\\end\{\1\}", re.S)
 
 
