@@ -292,10 +292,17 @@ def report_key(t: Tree) -> str:
 
 
 def git_commit(t: Tree) -> str:
+    """HEAD, marked '-dirty' only when the sources (wmr/, notebooks/, tools/) differ from it:
+    figures/ is rewritten by the build itself and does not count."""
     try:
-        p = subprocess.run(["git", "describe", "--always", "--dirty", "--abbrev=12"], cwd=t.root,
-                           capture_output=True, text=True, timeout=10)
-        return p.stdout.strip() or "unknown"
+        head = subprocess.run(["git", "rev-parse", "--short=12", "HEAD"], cwd=t.root,
+                              capture_output=True, text=True, timeout=10).stdout.strip()
+        if not head:
+            return "unknown"
+        dirty = subprocess.run(["git", "status", "--porcelain", "--untracked-files=no", "--",
+                                "wmr", "notebooks", "tools", "pyproject.toml"],
+                               cwd=t.root, capture_output=True, text=True, timeout=10).stdout.strip()
+        return head + ("-dirty" if dirty else "")
     except (OSError, subprocess.SubprocessError):
         return "unknown"
 
