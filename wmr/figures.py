@@ -852,6 +852,39 @@ def conventions(psi=25 * DEG, beta=35 * DEG):
 
 # ------------------------------------------------------------------------------ writer
 #: key -> (function, paper figure number or "")
+def show(fig, dpi=110):
+    """Display a figure in a notebook as a PNG with its caption; returns its computed numbers.
+
+    Parameters
+    ----------
+    fig : matplotlib.figure.Figure or str
+        A figure made by this module, or its key in :data:`FIGURES` (e.g. ``"fig07"``).
+    dpi : int
+        Resolution of the PNG.
+
+    Returns
+    -------
+    dict
+        ``fig.wmr_numbers``: the numbers the figure asserts.
+    """
+    import io
+
+    from IPython.display import Image, Markdown, display
+
+    label = ""
+    if isinstance(fig, str):
+        if fig not in FIGURES:
+            raise ValueError(f"unknown figure {fig!r}; expected one of {sorted(FIGURES)}")
+        func, number = FIGURES[fig]
+        label = f"Figure {number} (regenerated): " if number else ""
+        fig = func()
+    buf = io.BytesIO()
+    fig.savefig(buf, format="png", dpi=dpi)
+    title = getattr(fig, "wmr_title", "")
+    display(Image(buf.getvalue()), Markdown(f"*{label}{title}.* {getattr(fig, 'wmr_caption', '')}"))
+    return getattr(fig, "wmr_numbers", {})
+
+
 FIGURES = {
     "fig07": (fig07, "7"), "fig08": (fig08, "8"), "fig09": (fig09, "9"), "fig10": (fig10, "10"),
     "fig11": (fig11, "11"), "fig12": (fig12, "12"), "fig13": (fig13, "13"),
@@ -860,11 +893,22 @@ FIGURES = {
 
 
 def git_commit(root=None):
-    """``git rev-parse HEAD`` of the tree holding this package, or "unknown"."""
+    """The source commit of the figures: the last commit that changed ``wmr/``, or "unknown".
+
+    Figures are functions of the package alone, so they name the commit of its code (with
+    ``+dirty`` when ``wmr/`` has uncommitted changes); regenerating them after commits that do
+    not touch the package gives identical files.
+    """
     root = root or Path(__file__).resolve().parent.parent
     try:
-        p = subprocess.run(["git", "rev-parse", "HEAD"], cwd=root, capture_output=True, text=True, timeout=10)
-        return p.stdout.strip() or "unknown" if p.returncode == 0 else "unknown"
+        p = subprocess.run(["git", "log", "-1", "--format=%H", "--", "wmr"], cwd=root,
+                           capture_output=True, text=True, timeout=10)
+        commit = p.stdout.strip() if p.returncode == 0 else ""
+        if not commit:
+            return "unknown"
+        q = subprocess.run(["git", "status", "--porcelain", "--", "wmr"], cwd=root,
+                           capture_output=True, text=True, timeout=10)
+        return commit + ("+dirty" if q.returncode == 0 and q.stdout.strip() else "")
     except (OSError, subprocess.SubprocessError):
         return "unknown"
 

@@ -32,6 +32,25 @@ def output_dir():
     return Path(__file__).resolve().parent.parent / "figures"
 
 
+class Row(dict):
+    """One ledger row: a dict of :data:`COLUMNS` that a notebook displays as a one-line verdict."""
+
+    def _label(self):
+        i = self["id"]
+        return f"({i})" if i.isdigit() else i
+
+    def __repr__(self):
+        return (f"ledger {self._label()}: {self['verdict']}, check {self['symbolic_check']}, "
+                f"max residual {self['max_residual']}")
+
+    def _repr_pretty_(self, p, cycle):
+        p.text(repr(self))
+
+    def _repr_markdown_(self):
+        return (f"**Ledger {self._label()}: `{self['verdict']}`** (check {self['symbolic_check']}, "
+                f"max residual {self['max_residual']})")
+
+
 class Ledger:
     """Rows of verdicts collected by one notebook.
 
@@ -77,8 +96,8 @@ class Ledger:
 
         Returns
         -------
-        dict
-            The row, with the columns :data:`COLUMNS`.
+        Row
+            The row (a dict with the columns :data:`COLUMNS`), shown in a notebook as one line.
 
         Raises
         ------
@@ -98,7 +117,7 @@ class Ledger:
         res = float(max_residual)
         if math.isnan(res):
             raise ValueError(f"max_residual of row {id!r} is NaN")
-        row = dict(id=id, section=section, verdict=verdict, printed=printed, corrected=corrected,
+        row = Row(id=id, section=section, verdict=verdict, printed=printed, corrected=corrected,
                    convention=convention, symbolic_check="pass" if symbolic_check else "fail",
                    max_residual=f"{res:.3e}", notebook=self.notebook, note=note)
         self.rows.append(row)
