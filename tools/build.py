@@ -91,6 +91,8 @@ class Tree:
         for var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
             env.setdefault(var, "1")
         env["PYTHONHASHSEED"] = "0"
+        # the venv's own "python3" kernelspec before any user-level one that may name another Python
+        env["JUPYTER_PREFER_ENV_PATH"] = "1"
         return env
 
 
@@ -118,11 +120,19 @@ def _read(p: Path) -> str | None:
         return None
 
 
+def _umask_mode() -> int:
+    """The mode an ordinary new file gets (0o666 less the umask): mkstemp's 0o600 is too private."""
+    mask = os.umask(0)
+    os.umask(mask)
+    return 0o666 & ~mask
+
+
 def _write_atomic(path: Path, data: bytes | str) -> None:
     path.parent.mkdir(parents=True, exist_ok=True)
     fd, tmp = tempfile.mkstemp(dir=path.parent, prefix="." + path.name, suffix=".tmp")
     with os.fdopen(fd, "wb") as f:
         f.write(data.encode() if isinstance(data, str) else data)
+    os.chmod(tmp, _umask_mode())
     os.replace(tmp, path)
 
 
@@ -153,6 +163,7 @@ def _run_one(nb_path: str, out_path: str, cwd: str) -> int:
     os.close(fd)
     try:
         nbformat.write(nb, tmp)
+        os.chmod(tmp, _umask_mode())
         os.replace(tmp, out)
     finally:
         if os.path.exists(tmp):
