@@ -218,7 +218,7 @@ def fig07(r=R_OFFSET, d=None, beta0=0.0, T=1.0, steps=240, later=3 / 8):
         ax.indicate_inset_zoom(axi, edgecolor="#999999", linewidth=0.6, alpha=1.0)
         dr.info_box(ax, [rf"fitted radius of the path of $C$: $R = {R:.9f}$",
                          rf"offset $d = {d:g}$:  $|R-d| = {_fmt(abs(R - d), 2)}$ $\leq d(\omega\Delta t)^4 = {_fmt(tol, 2)}$",
-                         rf"contact points $G_i$ moved $\leq {_fmt(drift, 2)}$;  $|\psi| \leq {_fmt(psi_max, 2)}$"],
+                         rf"contact points $G_i$ moved $\leq {_fmt(drift, 2)}$;  $\max|\psi| = {_fmt(psi_max, 2)}$"],
                     loc=(0.985, 0.015), ha="right", va="bottom")
         dr.scale_bar(ax, L_PAPER, "$L$", loc=(0.03, 0.04))
     numbers = {"radius": R, "d": d, "r": r, "radius_error": abs(R - d), "tolerance": tol,
