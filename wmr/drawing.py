@@ -28,6 +28,9 @@ from matplotlib.figure import Figure
 from matplotlib.patches import Arc, Circle, FancyArrowPatch, FancyBboxPatch, Polygon
 from matplotlib.transforms import Affine2D
 
+from .backend import NUMERIC
+from .platform import rotation
+
 #: Okabe & Ito (2008) colour-blind-safe palette, by role.
 PALETTE = {
     "black": "#000000", "orange": "#E69F00", "sky": "#56B4E9", "green": "#009E73",
@@ -134,9 +137,8 @@ def common_view(axes, point_sets, pad=0.05):
 
 # ----------------------------------------------------------------------------- geometry
 def rot(angle):
-    """2x2 rotation matrix."""
-    c, s = np.cos(angle), np.sin(angle)
-    return np.array([[c, -s], [s, c]])
+    """2x2 rotation matrix (the model's :func:`wmr.platform.rotation`)."""
+    return rotation(angle, NUMERIC)
 
 
 def to_world(pose, p):

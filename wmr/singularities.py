@@ -42,6 +42,7 @@ import numpy as np
 import sympy as sp
 
 from . import _validate as V
+from .backend import NUMERIC, SYMBOLIC
 from .mobility import rank_F
 from .tolerance import TOL, near_zero
 
@@ -174,19 +175,20 @@ def plane_line_matrix(robot, beta, L=1, backend=None):
     -------
     numpy.ndarray (..., 3, w) or sympy.Matrix (3, w)
     """
-    if beta is None or robot.is_symbolic or any(isinstance(b, sp.Basic) for b in np.ravel(np.asarray(beta, dtype=object))):
+    symbolic = beta is None or robot.is_symbolic or any(
+        isinstance(b, sp.Basic) for b in np.ravel(np.asarray(beta, dtype=object)))
+    bk = SYMBOLIC if symbolic else NUMERIC
+    if symbolic:
         b = list(robot.beta_symbols) if beta is None else list(beta)
-        cols = []
-        for u, bi in zip(robot.wheels, b):
-            c, s = sp.cos(bi), sp.sin(bi)
-            m = u.position[0] * c + u.position[1] * s          # d_i . i_i
-            cols.append([m / L, -s, c])                         # [m_i / L, j_i]
-        return sp.Matrix(cols).T
-    beta = V.finite_array("beta", beta, last=robot.w)
-    d = robot.mount_points                                      # (w, 2)
-    c, s = np.cos(beta), np.sin(beta)
-    m = d[:, 0] * c + d[:, 1] * s
-    return np.stack([m / L, -s, c], axis=-2)
+    else:
+        beta = V.finite_array("beta", beta, last=robot.w)
+        b = [beta[..., i] for i in range(robot.w)]
+    columns = []
+    for u, bi in zip(robot.wheels, b):
+        jx, jy = -bk.sin(bi), bk.cos(bi)                       # j_i = R_bwi [0 1]^T, (11)
+        px, py = u.position
+        columns.append([(px * jy - py * jx) / L, jx, jy])      # [m_i / L, j_i], m_i = d_i x j_i
+    return bk.matrix([list(row) for row in zip(*columns)])
 
 
 def characterisation(robot=None):
@@ -258,9 +260,8 @@ def wheel_plane_lines(robot, beta):
     directions : numpy.ndarray (..., w, 2)
         Unit vectors :math:`\mathbf j_i`.
     """
-    beta = V.finite_array("beta", beta, last=robot.w)
-    P = np.broadcast_to(robot.mount_points, beta.shape + (2,))
-    return P, np.stack([-np.sin(beta), np.cos(beta)], axis=-1)
+    pts = _unit_points(robot, beta)
+    return np.stack([p["P"] for p in pts], axis=-2), np.stack([p["j"] for p in pts], axis=-2)
 
 
 def axle_lines(robot, beta):
@@ -272,9 +273,14 @@ def axle_lines(robot, beta):
         Wheel centres :math:`H_i` (body frame).
     directions : numpy.ndarray (..., w, 2)
     """
+    pts = _unit_points(robot, beta)
+    return np.stack([p["H"] for p in pts], axis=-2), np.stack([p["i"] for p in pts], axis=-2)
+
+
+def _unit_points(robot, beta):
+    """Each unit's points and axes (``unit.points``) at the steering angles ``beta (..., w)``."""
     beta = V.finite_array("beta", beta, last=robot.w)
-    H = np.stack([u.points(beta[..., i])["H"] for i, u in enumerate(robot.wheels)], axis=-2)
-    return H, np.stack([np.cos(beta), np.sin(beta)], axis=-1)
+    return [u.points(beta[..., i]) for i, u in enumerate(robot.wheels)]
 
 
 def line_intersection(p1, u1, p2, u2):

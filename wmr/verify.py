@@ -59,7 +59,7 @@ def symbolic_equal(a, b=0):
     return all(_is_zero(e) for e in D)
 
 
-def max_residual(a, b=0, symbols=None, n=200, seed=SEED, positive=(), ranges=None):
+def max_residual(a, b=0, symbols=None, n=200, seed=SEED, ranges=None):
     r"""Largest absolute entry of ``a - b`` at ``n`` random values of the free symbols.
 
     Parameters
@@ -71,10 +71,9 @@ def max_residual(a, b=0, symbols=None, n=200, seed=SEED, positive=(), ranges=Non
         Number of random points.
     seed : int
         Seed (default :data:`SEED`).
-    positive : ignored
-        Symbols declared positive are sampled in [0.2, 2]; others in [-pi, pi].
     ranges : dict Symbol -> (lo, hi), optional
-        Explicit sampling ranges.
+        Explicit sampling ranges.  By default symbols declared positive are sampled in
+        [0.2, 2], others in [-pi, pi].
 
     Returns
     -------
@@ -91,7 +90,9 @@ def max_residual(a, b=0, symbols=None, n=200, seed=SEED, positive=(), ranges=Non
     for s in syms:
         lo, hi = ranges.get(s, (0.2, 2.0) if s.is_positive else (-np.pi, np.pi))
         vals.append(rng.uniform(lo, hi, n))
-    f = sp.lambdify(syms, D, modules="numpy")
-    out = np.array(f(*vals), dtype=complex)
-    out = np.broadcast_to(out, out.shape)  # constant entries broadcast below
-    return float(np.max(np.abs(out)))
+    # entry by entry, so that constant entries (lambdify returns a scalar) broadcast to (n,)
+    worst = 0.0
+    for e in D:
+        val = np.broadcast_to(np.asarray(sp.lambdify(syms, e, modules="numpy")(*vals), dtype=complex), (n,))
+        worst = max(worst, float(np.max(np.abs(val))))
+    return worst
