@@ -62,7 +62,7 @@ tex: ## (internal) make sure xelatex/pandoc/poppler are present (apt-get on Debi
 notebooks: venv ## execute notebooks/*.ipynb into build/notebooks (only changed ones), merge the ledger
 	@$(VPY) $(BUILD) execute
 
-figures: venv ## regenerate figures/ (python -m wmr.figures figures/)
+figures: venv ## regenerate figures/ (python -m wmr.paper.figures figures/)
 	@$(VPY) $(BUILD) figures --force
 
 report: venv tex ## build/report.html + build/report.pdf (cached: < 1 s when nothing changed)

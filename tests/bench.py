@@ -1,8 +1,8 @@
 """Benchmark of the batched kernels of wmr (a script, not a test): ``python tests/bench.py [N]``.
 
 For N = 10**6 random configurations (fixed seed) of the paper's three-centred-wheel robot it
-times building F, the rank of F (:func:`wmr.mobility.rank_F`), det J (``np.linalg.det`` of
-:meth:`wmr.Robot.J`) and the condition number of J (:func:`wmr.isotropy.condition_number`);
+times building F, the rank of F (:func:`wmr.analysis.mobility.rank_F`), det J (``np.linalg.det`` of
+:meth:`wmr.Robot.J`) and the condition number of J (:func:`wmr.analysis.isotropy.condition_number`);
 then the mobility of the three-offset-wheel robot and forward / inverse kinematics.  Each row
 is the best of 3 wall-clock runs.  The "check" column compares a slice of each result with a
 plain reference computation (dense SVD, matrix inverse, round trip), so a fast kernel that
@@ -18,9 +18,9 @@ import time
 import numpy as np
 
 import wmr
-from wmr.tolerance import TOL
+from wmr.model.tolerance import TOL
 
-mobility_module = importlib.import_module("wmr.mobility")   # (wmr.mobility is also the function)
+mobility_module = importlib.import_module("wmr.analysis.mobility")   # (wmr.analysis.mobility is also the function)
 SEED = 20020101
 TARGET = 2.0
 

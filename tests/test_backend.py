@@ -1,11 +1,11 @@
-"""wmr.backend: the two backends give the same matrices (SymPy exactly, NumPy batched)."""
+"""wmr.model.backend: the two backends give the same matrices (SymPy exactly, NumPy batched)."""
 import numpy as np
 import pytest
 import sympy as sp
 from hypothesis import given
 
-from wmr import backend as B
-from wmr.backend import NUMERIC, SYMBOLIC
+from wmr.model import backend as B
+from wmr.model.backend import NUMERIC, SYMBOLIC
 
 from conftest import seeds
 

@@ -13,10 +13,10 @@ import pytest
 
 import wmr
 
-CORE_MODULES = ["wmr", "wmr.backend", "wmr.conventions", "wmr.platform", "wmr.wheels", "wmr.robot",
-                "wmr.robots", "wmr.mobility", "wmr.isotropy", "wmr.kinematics", "wmr.steering",
-                "wmr.simulation", "wmr.tolerance", "wmr.ledger", "wmr.verify", "wmr.symbols",
-                "wmr._validate", "wmr._batch"]
+CORE_MODULES = ["wmr", "wmr.model.backend", "wmr.model.conventions", "wmr.model.platform", "wmr.model.wheels", "wmr.model.robot",
+                "wmr.model.robots", "wmr.analysis.linalg", "wmr.analysis.mobility", "wmr.analysis.isotropy", "wmr.analysis.kinematics", "wmr.analysis.steering",
+                "wmr.analysis.simulation", "wmr.model.tolerance", "wmr.paper.ledger", "wmr.paper.verify", "wmr.paper.symbols",
+                "wmr.analysis._batch"]
 
 
 def _public_callables():

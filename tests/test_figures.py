@@ -5,8 +5,8 @@ import numpy as np
 import pytest
 
 import wmr
-from wmr import figures as F
-from wmr.tolerance import TOL
+from wmr.paper import figures as F
+from wmr.model.tolerance import TOL
 
 
 @pytest.fixture(scope="module")
@@ -65,7 +65,7 @@ def test_fig10_translation_singularity(figs):
     n = get(figs, "fig10").wmr_numbers
     assert n["det_J_exact"] == "0" and abs(n["det_J"]) <= TOL
     assert n["rank_F"] == 5 and n["mobility"] == 1 and not np.isfinite(n["kappa_J"])
-    assert n["planes_meet"] == "infinity" and n["axles_meet"] == "infinity" and n["family"] == "i"
+    assert n["planes_meet"] == "at_infinity" and n["axles_meet"] == "at_infinity" and n["family"] == "i"
 
 
 def test_fig11_two_planes_coincident(figs):
@@ -128,13 +128,13 @@ def test_writer_is_reproducible_and_records_provenance(tmp_path):
             a = (tmp_path / "a" / f"{key}.{ext}").read_bytes()
             b = (tmp_path / "b" / f"{key}.{ext}").read_bytes()
             assert a == b, f"{key}.{ext} differs between runs"
-            assert f"wmr.figures.{F.FIGURES[key][0].__name__}".encode() in a
+            assert f"wmr.paper.figures.{F.FIGURES[key][0].__name__}".encode() in a
             assert b"abc123" in a
     assert (tmp_path / "a" / "captions.json").read_bytes() == (tmp_path / "b" / "captions.json").read_bytes()
     data = json.loads((tmp_path / "a" / "captions.json").read_text())
     assert data == caps
     assert data["fig10"]["number"] == "10" and data["conventions"]["number"] == ""
-    assert data["fig10"]["function"] == "wmr.figures.fig10" and data["fig10"]["commit"] == "abc123"
+    assert data["fig10"]["function"] == "wmr.paper.figures.fig10" and data["fig10"]["commit"] == "abc123"
 
 
 def test_cli_rejects_unknown_keys(tmp_path, capsys):

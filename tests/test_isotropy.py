@@ -1,12 +1,13 @@
-"""wmr.isotropy: condition numbers (30)-(31), isotropy of J_L1 (34)-(38) and of the offset robot's J."""
+"""wmr.analysis.isotropy: condition numbers (30)-(31), isotropy of J_L1 (34)-(38) and of the offset robot's J."""
 import numpy as np
 import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
 import wmr
-from wmr import isotropy as I
-from wmr.tolerance import TOL
+from wmr.analysis import isotropy as I
+from wmr.analysis import linalg as LA
+from wmr.model.tolerance import TOL
 
 from conftest import robots, seeds
 
@@ -22,14 +23,14 @@ from conftest import robots, seeds
     (np.diag([1.0, 1e-8]), 1e8),
 ])
 def test_condition_number_known_values(A, kappa):
-    assert np.isclose(float(I.condition_number(A)), kappa, rtol=1e-12) or (
-        np.isinf(kappa) and np.isinf(I.condition_number(A)))
+    assert np.isclose(float(LA.condition_number(A)), kappa, rtol=1e-12) or (
+        np.isinf(kappa) and np.isinf(LA.condition_number(A)))
 
 
 @pytest.mark.parametrize("shape", [(3, 3), (5, 3, 3), (2, 4, 6, 3), (7, 3, 6)])
 def test_condition_number_batched(shape):
     A = np.random.default_rng(0).normal(size=shape)
-    k = I.condition_number(A)
+    k = LA.condition_number(A)
     s = np.linalg.svd(A, compute_uv=False)
     assert k.shape == shape[:-2]
     assert np.allclose(k, s[..., 0] / s[..., -1], rtol=1e-12)
@@ -58,7 +59,7 @@ def test_3x3_fast_path_matches_svd(scale, kind):
          "isotropic": np.ones((n, 3)),
          "near-threshold": np.stack([np.ones(n), np.ones(n), TOL * rng.uniform(0.5, 2.0, n)], -1)}[kind]
     A = scale * (U * s[:, None, :]) @ V
-    got, want = I.condition_number(A), _kappa_svd(A)
+    got, want = LA.condition_number(A), _kappa_svd(A)
     assert np.array_equal(np.isinf(got), np.isinf(want))
     fin = np.isfinite(want)
     assert np.all(np.abs(got[fin] / want[fin] - 1) <= 20 * np.finfo(float).eps * want[fin])
@@ -68,18 +69,18 @@ def test_3x3_fast_path_on_the_paper_robot():
     bot = wmr.paper_robot("centred", L=0.3, r=0.05)
     beta = np.random.default_rng(11).uniform(-np.pi, np.pi, (20000, 3))
     J = bot.J(beta, L=0.3)
-    got, want = I.condition_number(J), _kappa_svd(J)
+    got, want = LA.condition_number(J), _kappa_svd(J)
     fin = np.isfinite(want)
     assert np.array_equal(np.isinf(got), np.isinf(want))
     assert np.all(np.abs(got[fin] / want[fin] - 1) <= 20 * np.finfo(float).eps * want[fin])
     # the batch size does not change the result (chunking and threads)
-    assert np.array_equal(I.condition_number(J[:7]), got[:7])
+    assert np.array_equal(LA.condition_number(J[:7]), got[:7])
 
 
 @given(seeds, st.floats(1e-3, 1e3))
 def test_condition_number_scale_invariant(seed, c):
     A = np.random.default_rng(seed).normal(size=(10, 3, 3))
-    assert np.allclose(I.condition_number(c * A), I.condition_number(A), rtol=1e-9)
+    assert np.allclose(LA.condition_number(c * A), LA.condition_number(A), rtol=1e-9)
 
 
 @given(seeds)
@@ -96,7 +97,7 @@ def test_JL1_isotropic_with_centroid_at_C(bot):
     L = I.characteristic_length(centred)
     assert np.isclose(L**2, np.mean(np.sum(centred.mount_points**2, axis=1)))
     JL1 = centred.J1(L)
-    assert np.allclose(I.gram(JL1), centred.w * np.eye(3), atol=1e-12)
+    assert np.allclose(LA.gram(JL1), centred.w * np.eye(3), atol=1e-12)
     assert bool(I.is_isotropic(JL1))
     # a different length, or C away from the centroid, breaks isotropy
     assert not bool(I.is_isotropic(centred.J1(1.5 * L)))
@@ -108,7 +109,7 @@ def test_non_equilateral_triangle_is_isotropic():
     bot = wmr.Robot([wmr.CentredWheel(p, r=0.1) for p in [(2.0, 0.0), (-1.0, 1.0), (-1.0, -1.0)]])
     L = I.characteristic_length(bot)
     assert np.isclose(L**2, 8 / 3)
-    assert np.isclose(float(I.condition_number(bot.J1(L))), 1.0)
+    assert np.isclose(float(LA.condition_number(bot.J1(L))), 1.0)
 
 
 @given(st.floats(0.05, 2.0), st.floats(0.2, 3.0), seeds)
@@ -124,7 +125,7 @@ def test_offset_robot_with_d_equal_r_is_isotropic_for_all_beta(r, Lm, seed):
 def test_centred_robot_J_is_not_isotropic():
     bot = wmr.paper_robot("centred", L=0.3, r=0.05)
     beta = np.random.default_rng(3).uniform(-np.pi, np.pi, (200, 3))
-    k = I.condition_number(bot.J(beta, L=0.3))
+    k = LA.condition_number(bot.J(beta, L=0.3))
     assert not np.any(I.is_isotropic(bot.J(beta, L=0.3)))
     assert np.ptp(k[np.isfinite(k)]) > 1.0                        # depends on beta
 
@@ -142,7 +143,7 @@ def test_is_isotropic_uses_TOL():
 
 @pytest.mark.parametrize("A, value", [([1.0, 2.0], "(2,)"), ([[np.nan, 1.0]], "nan"), ("x", "'x'")])
 def test_bad_input(A, value):
-    for f in (I.condition_number, I.is_isotropic, I.gram):
+    for f in (LA.condition_number, I.is_isotropic, LA.gram):
         with pytest.raises(ValueError) as exc:
             f(A)
         assert "A" in str(exc.value) and value in str(exc.value), str(exc.value)

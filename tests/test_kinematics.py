@@ -1,4 +1,4 @@
-"""wmr.kinematics: forward and inverse kinematics, round trips, first principles, body-frame independence."""
+"""wmr.analysis.kinematics: forward and inverse kinematics, round trips, first principles, body-frame independence."""
 import numpy as np
 import pytest
 from hypothesis import assume, given

@@ -1,9 +1,9 @@
-"""wmr.ledger: recording verdicts, writing fragments, merging and reporting problems."""
+"""wmr.paper.ledger: recording verdicts, writing fragments, merging and reporting problems."""
 import math
 
 import pytest
 
-from wmr import ledger as LG
+from wmr.paper import ledger as LG
 
 
 def full_ledger(notebook="nb", skip=()):

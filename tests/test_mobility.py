@@ -1,4 +1,4 @@
-"""wmr.mobility: rank, nullity and the mobility of F against independent reasoning per wheel type."""
+"""wmr.analysis.mobility: rank, nullity and the mobility of F against independent reasoning per wheel type."""
 import importlib
 
 import numpy as np
@@ -7,9 +7,10 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 import wmr
-from wmr.tolerance import TOL
+from wmr.model.tolerance import TOL
 
-M = importlib.import_module("wmr.mobility")   # the module (wmr.mobility is also the function)
+M = importlib.import_module("wmr.analysis.mobility")   # the module (wmr.mobility is the function)
+LA = importlib.import_module("wmr.analysis.linalg")
 
 from conftest import (random_twist, robots, same_subspace, seeds, steered_beta, transform_twist,
                       twist_map, with_kind)
@@ -27,8 +28,8 @@ from conftest import (random_twist, robots, same_subspace, seeds, steered_beta, 
     (np.ones((1, 5)), 1),
 ])
 def test_rank_known_values(A, rank):
-    assert int(M.rank(A)) == rank
-    assert int(M.nullity(A)) == np.shape(A)[1] - rank
+    assert int(LA.rank(A)) == rank
+    assert int(LA.nullity(A)) == np.shape(A)[1] - rank
 
 
 @pytest.mark.parametrize("shape", [(3, 3), (7, 3, 3), (2, 5, 4, 6), (6, 2, 3), (9, 3, 2), (4, 1, 1)])
@@ -40,9 +41,9 @@ def test_rank_batched_matches_numpy(shape):
     flat[::2, ..., -1] = flat[::2, ..., 0]
     s = np.linalg.svd(A, compute_uv=False)
     want = np.sum(s > TOL * np.maximum(1.0, s[..., :1]), axis=-1)
-    assert M.rank(A).shape == shape[:-2]
-    assert np.array_equal(M.rank(A), want)
-    assert np.allclose(M.singular_values(A), s)
+    assert LA.rank(A).shape == shape[:-2]
+    assert np.array_equal(LA.rank(A), want)
+    assert np.allclose(LA.singular_values(A), s)
 
 
 @given(seeds, st.floats(1e-8, 1e-4), st.floats(1e-3, 1e3))
@@ -55,14 +56,14 @@ def test_rank_fast_path_agrees_with_svd_near_threshold(seed, eps, scale):
     A = scale * (U * s[:, None, :]) @ V
     sv = np.linalg.svd(A, compute_uv=False)
     want = np.sum(sv > TOL * np.maximum(1.0, sv[..., :1]), axis=-1)
-    assert np.array_equal(M.rank(A), want)
+    assert np.array_equal(LA.rank(A), want)
 
 
 @given(seeds, st.integers(1, 4), st.integers(1, 6))
 def test_null_space(seed, r, n):
     rng = np.random.default_rng(seed)
     A = rng.normal(size=(5, r)) @ rng.normal(size=(r, n))
-    N = M.null_space(A)
+    N = LA.null_space(A)
     assert N.shape == (n, n - min(r, n))
     assert np.allclose(A @ N, 0.0, atol=1e-10)
     assert np.allclose(N.T @ N, np.eye(N.shape[1]))
@@ -72,7 +73,7 @@ def test_null_space(seed, r, n):
 @given(robots(), seeds)
 def test_rank_F_equals_svd_rank_random(bot, seed):
     beta = np.random.default_rng(seed).uniform(-np.pi, np.pi, (20, bot.w))
-    assert np.array_equal(M.rank_F(bot, beta), M.rank(bot.F(beta)))
+    assert np.array_equal(M.rank_F(bot, beta), LA.rank(bot.F(beta)))
 
 
 @given(robots(spread=True, w_min=3), seeds)
@@ -81,7 +82,7 @@ def test_rank_F_equals_svd_rank_at_special_configurations(bot, seed):
     twists = np.vstack([rng.normal(size=(3, 3)), [[0.0, 1.0, 0.5], [2.0, 0.0, 0.0], [0.0, 0.0, 0.0]]])
     betas = np.stack([steered_beta(bot, t, seed) for t in twists]
                      + [np.full(bot.w, 0.4), np.zeros(bot.w)])
-    assert np.array_equal(M.rank_F(bot, betas), M.rank(bot.F(betas)))
+    assert np.array_equal(M.rank_F(bot, betas), LA.rank(bot.F(betas)))
 
 
 @pytest.mark.parametrize("units", [
@@ -96,7 +97,7 @@ def test_rank_F_equals_svd_rank_degenerate_units(units):
     rng = np.random.default_rng(3)
     betas = np.vstack([rng.uniform(-np.pi, np.pi, (50, bot.w)), np.zeros((1, bot.w)),
                        steered_beta(bot, np.array([1.0, 0.2, -0.3]))])
-    assert np.array_equal(M.rank_F(bot, betas), M.rank(bot.F(betas)))
+    assert np.array_equal(M.rank_F(bot, betas), LA.rank(bot.F(betas)))
 
 
 # --- mobility per wheel type ---------------------------------------------------------------------
@@ -133,7 +134,7 @@ def test_dual_adds_one_per_unit_and_same_twists(bot, seed):
     betas = [rng.uniform(-np.pi, np.pi, bot.w), steered_beta(cen, rng.normal(size=3), seed),
              np.full(bot.w, -0.7)]
     for beta in betas:
-        assert int(M.nullity(dual.F(beta))) == int(M.nullity(cen.F(beta))) + bot.w
+        assert int(LA.nullity(dual.F(beta))) == int(LA.nullity(cen.F(beta))) + bot.w
         assert int(M.mobility(dual, beta)) == int(M.mobility(cen, beta)) + bot.w
         assert same_subspace(M.admissible_twists(dual, beta), M.admissible_twists(cen, beta))
 
@@ -148,7 +149,7 @@ def test_admissible_twists_are_realisable(bot, seed):
     for t in basis.T:
         assert bool(wmr.inverse(bot, beta, t).admissible)
     # mobility = dim of admissible twists + dim of joint-rate motions with the platform still
-    null = M.null_space(bot.F(beta))
+    null = LA.null_space(bot.F(beta))
     assert int(M.mobility(bot, beta)) == null.shape[1]
     assert np.linalg.matrix_rank(null[:3], tol=1e-8) == basis.shape[1]
     # a twist outside the admissible set leaves a residual
@@ -185,11 +186,11 @@ def test_batched_shapes(batch):
 
 
 BAD = [
-    (lambda: M.rank([1.0, 2.0]), "A", "(2,)"),
-    (lambda: M.rank([[1.0, np.nan]]), "A", "nan"),
-    (lambda: M.rank([[1.0, 2.0], [3.0]]), "A", "[[1.0, 2.0], [3.0]]"),
-    (lambda: M.nullity("abc"), "A", "'abc'"),
-    (lambda: M.null_space(np.zeros((2, 2, 2))), "A", "(2, 2, 2)"),
+    (lambda: LA.rank([1.0, 2.0]), "A", "(2,)"),
+    (lambda: LA.rank([[1.0, np.nan]]), "A", "nan"),
+    (lambda: LA.rank([[1.0, 2.0], [3.0]]), "A", "[[1.0, 2.0], [3.0]]"),
+    (lambda: LA.nullity("abc"), "A", "'abc'"),
+    (lambda: LA.null_space(np.zeros((2, 2, 2))), "A", "(2, 2, 2)"),
     (lambda: M.mobility(wmr.paper_robot(), [0.0, 0.0]), "beta", "(2,)"),
     (lambda: M.rank_F(wmr.paper_robot(), [0.0, 0.0, np.inf]), "beta", "inf"),
     (lambda: M.admissible_twists(wmr.paper_robot(), np.zeros((2, 3))), "beta", "(2, 3)"),

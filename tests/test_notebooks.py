@@ -43,14 +43,12 @@ def test_notebook_executes(nb):
 def test_ledger_merged():
     if not NOTEBOOKS:
         pytest.skip("no notebooks yet")
-    if not (TREE.wmr / "ledger.py").exists():
-        pytest.skip("wmr/ledger.py not written yet: python -m wmr.ledger unavailable")
     try:
         build.execute(TREE)  # all cached by now; runs the merge if its inputs changed
     except build.BuildError as e:
         pytest.fail(str(e), pytrace=False)
     ledger = TREE.figures / "ledger.csv"
-    assert ledger.exists(), "python -m wmr.ledger did not write figures/ledger.csv"
+    assert ledger.exists(), "python -m wmr.paper.ledger did not write figures/ledger.csv"
     with open(ledger, newline="", encoding="utf-8") as f:
         rows = list(csv.DictReader(f))
     assert rows, "figures/ledger.csv has no rows"

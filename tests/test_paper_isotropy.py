@@ -10,10 +10,10 @@ import pytest
 import sympy as sp
 
 import wmr
-from wmr.isotropy import condition_number
-from wmr.mobility import rank_F, twist_constraints
+from wmr.analysis.isotropy import condition_number
+from wmr.analysis.mobility import rank_F, twist_constraints
 from wmr.paper import printed
-from wmr.tolerance import TOL
+from wmr.model.tolerance import TOL
 
 SEED = 20020101
 SQ3 = np.sqrt(3.0)
@@ -49,7 +49,7 @@ def test_printed_forms_registered():
         p = printed(n)
         assert p.latex and p.section.startswith(("4.3", "5."))
     # the transcription of (59) agrees with the paper's text used in these tests
-    f = sp.lambdify(wmr.symbols.beta, printed(59).expr.rhs, "numpy")
+    f = sp.lambdify(wmr.paper.symbols.beta, printed(59).expr.rhs, "numpy")
     B = np.random.default_rng(SEED).uniform(-np.pi, np.pi, (50, 3))
     assert np.allclose(f(*B.T), _printed_det(B), atol=1e-14)
 

@@ -9,8 +9,8 @@ import numpy as np
 import pytest
 
 import wmr
-from wmr.platform import point_velocity
-from wmr.tolerance import TOL
+from wmr.model.platform import point_velocity
+from wmr.model.tolerance import TOL
 
 SEED = 20020101
 

@@ -9,13 +9,13 @@ import pytest
 import sympy as sp
 
 import wmr
-from wmr import symbols as S
-from wmr.mobility import admissible_twists, mobility, rank_F
+from wmr.paper import symbols as S
+from wmr.analysis.mobility import admissible_twists, mobility, rank_F
 from wmr.paper import printed
 from wmr.paper import steering as P
-from wmr.steering import AT_INFINITY, FINITE, STILL
-from wmr.tolerance import TOL
-from wmr.verify import SEED, symbolic_equal
+from wmr.analysis.steering import AT_INFINITY, FINITE, STILL
+from wmr.model.tolerance import TOL
+from wmr.paper.verify import SEED, symbolic_equal
 
 N = 500
 

@@ -1,12 +1,12 @@
-"""wmr.platform: E, rotations and platform point velocities, checked against 3D cross products."""
+"""wmr.model.platform: E, rotations and platform point velocities, checked against 3D cross products."""
 import numpy as np
 import pytest
 import sympy as sp
 from hypothesis import given
 from hypothesis import strategies as st
 
-from wmr import platform as P
-from wmr.backend import NUMERIC, SYMBOLIC
+from wmr.model import platform as P
+from wmr.model.backend import NUMERIC, SYMBOLIC
 
 from conftest import K, angles, coords, rigid_velocity, seeds, vec3
 

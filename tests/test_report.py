@@ -147,7 +147,7 @@ def test_html_math_is_inlined_mathjax(html_text):
 def test_html_has_every_figure(html_text):
     caps = captions()
     if not caps:
-        pytest.skip("figures/captions.json missing (python -m wmr.figures not run / not written yet)")
+        pytest.skip("figures/captions.json missing (python -m wmr.paper.figures not run / not written yet)")
     for key, c in caps.items():
         m = re.search(r'<figure class="wmr-fig" id="%s">(.*?)</figure>' % re.escape(key), html_text, re.S)
         assert m, f"figure {key} missing from the HTML report"
@@ -158,7 +158,7 @@ def test_html_has_every_figure(html_text):
 def test_html_has_ledger_table(html_text):
     rows = ledger_rows()
     if not rows:
-        pytest.skip("figures/ledger.csv missing (python -m wmr.ledger not run / not written yet)")
+        pytest.skip("figures/ledger.csv missing (python -m wmr.paper.ledger not run / not written yet)")
     body = html_text.split('id="Ledger"', 1)
     assert len(body) == 2, "no Ledger section in the HTML report"
     table = body[1].split("</table>", 1)[0]

@@ -1,4 +1,4 @@
-"""wmr.robot: J1, J2, F and J of assembled robots; symbolic = numeric; first principles; frames.
+"""wmr.model.robot: J1, J2, F and J of assembled robots; symbolic = numeric; first principles; frames.
 
 The last test shows that the suite can fail: it plants a wrong sign in a Jacobian and checks
 that the key properties then break.
@@ -10,7 +10,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 import wmr
-from wmr import symbols as S
+from wmr.paper import symbols as S
 
 from conftest import (check_J1_first_principles, check_J2_first_principles, check_offset_steer_only,
                       check_positive_rolling, check_round_trip, robots, seeds)
@@ -150,7 +150,7 @@ def _flip_dual(self, bk):
 
 
 def _flip_E(d, L=1, backend=None):                         # E -> -E in (5)
-    bk = wmr.backend.choose(*d, L, backend=backend)
+    bk = wmr.model.backend.choose(*d, L, backend=backend)
     return bk.matrix([[d[1] / L, 1, 0], [-d[0] / L, 0, 1]])
 
 
@@ -187,7 +187,7 @@ def test_key_properties_hold(check):
 @pytest.mark.parametrize("mutation", sorted(MUTATIONS))
 def test_suite_detects_wrong_sign(mutation, monkeypatch):
     (owner, attr, fake), must_fail = MUTATIONS[mutation]
-    target = wmr.robot if owner == "robot" else getattr(wmr.wheels, owner)
+    target = wmr.model.robot if owner == "robot" else getattr(wmr.model.wheels, owner)
     monkeypatch.setattr(target, attr, fake)
     failed = []
     for name, check in CHECKS.items():

@@ -1,4 +1,4 @@
-"""wmr.simulation: integrated motions that can be predicted without the package."""
+"""wmr.analysis.simulation: integrated motions that can be predicted without the package."""
 import numpy as np
 import pytest
 from hypothesis import given, settings

@@ -1,4 +1,4 @@
-"""Singular configurations of the three-centred-wheel robot (wmr.singularities).
+"""Singular configurations of the three-centred-wheel robot (wmr.analysis.singularities).
 
 The checks are tied to the model (Robot.J) and to the paper's statements; the mutant tests show
 that they fail when the model is wrong (a flipped rotation or a flipped sign in J2).
@@ -10,11 +10,13 @@ import pytest
 import sympy as sp
 
 import wmr
-from wmr import singularities as sg
-from wmr.platform import rotation
-from wmr.tolerance import TOL
-from wmr.verify import symbolic_equal
-from wmr.wheels import CentredWheel
+from wmr.analysis import lines as ln
+from wmr.analysis import singularities as sg
+from wmr.paper import families as catalogue
+from wmr.model.platform import rotation
+from wmr.model.tolerance import TOL
+from wmr.paper.verify import symbolic_equal
+from wmr.model.wheels import CentredWheel
 
 DEG = np.pi / 180
 
@@ -26,7 +28,7 @@ def bot():
 
 @pytest.fixture(scope="module")
 def fams():
-    return {f.key: f for f in sg.families()}
+    return {f.key: f for f in catalogue.families()}
 
 
 def printed_59():
@@ -49,13 +51,14 @@ def printed_59():
 
 # ----------------------------------------------------------------------------- exact statements
 def test_printed_list_holds_for_every_free_angle():
-    res = sg.check_paper_items()
+    res = catalogue.check_paper_items()
     assert res == {k: True for k in res}
     assert set(res) == {"(i)", "(ii) 60", "(ii) -120", "(iii) -60", "(iii) 120", "(iv) 0", "(iv) 180", "(v)"}
 
 
 def test_characterisation_is_exact():
-    ch = sg.characterisation()
+    S = wmr.paper.symbols
+    ch = sg.characterisation(wmr.paper_robot("centred", L=S.L, r=S.r, exact=True), L=S.L)
     assert ch["identity_general"]          # det J = -(r1 r2 r3 / L) det W for any three mount points
     assert ch["identity_robot"]
     assert ch["independent_of_L"]
@@ -63,7 +66,7 @@ def test_characterisation_is_exact():
 
 
 def test_det_J_is_r_cubed_times_printed_59():
-    S = wmr.symbols
+    S = wmr.paper.symbols
     det = sg.det_J_symbolic(wmr.paper_robot("centred", L=S.L, r=S.r, exact=True), L=S.L)
     assert symbolic_equal(det, S.r ** 3 * printed_59())
 
@@ -71,7 +74,7 @@ def test_det_J_is_r_cubed_times_printed_59():
 def test_det_J_numeric_matches_symbolic(bot):
     rng = np.random.default_rng(7)
     beta = rng.uniform(-np.pi, np.pi, (50, 3))
-    b = wmr.symbols.beta
+    b = wmr.paper.symbols.beta
     f = sp.lambdify(b, 0.25 ** 3 * printed_59(), "numpy")
     assert np.allclose(sg.det_J(bot, beta), f(*beta.T), atol=1e-14)
     assert sg.det_J(bot, beta.reshape(5, 10, 3)).shape == (5, 10)
@@ -82,39 +85,39 @@ def test_zero_set_is_concurrency_of_wheel_planes(bot, fams):
     rng = np.random.default_rng(11)
     for beta in rng.uniform(-np.pi, np.pi, (200, 3)):          # generic: regular, lines not concurrent
         assert not sg.is_singular(bot, beta)
-        assert sg.concurrency_point(bot, beta).kind == sg.NONE
+        assert ln.concurrency_point(bot, beta).kind == ln.NONE
     for f in fams.values():                                      # every family: concurrent, singular
         for beta in f.samples[:: max(1, len(f.samples) // 40)]:
             assert sg.is_singular(bot, beta)
-            assert sg.concurrency_point(bot, beta).kind != sg.NONE
+            assert ln.concurrency_point(bot, beta).kind != ln.NONE
 
 
 def test_concurrency_point_is_where_the_planes_meet(bot):
     for D in ([0.0, 0.0], [0.7, -1.9], [-2.0, 3.0]):
-        beta = sg.planes_through(bot, D)
-        c = sg.concurrency_point(bot, beta)
-        assert c.kind == sg.FINITE and np.allclose(c.point, D, atol=1e-9)
+        beta = ln.planes_through(bot, D)
+        c = ln.concurrency_point(bot, beta)
+        assert c.kind == ln.FINITE and np.allclose(c.point, D, atol=1e-9)
         assert sg.is_singular(bot, beta)
 
 
 def test_axles_through_a_point_give_mobility_one(bot):
     U = np.array([0.4, 2.3])
-    beta = sg.axles_through(bot, U)
+    beta = ln.axles_through(bot, U)
     assert int(wmr.rank_F(bot, beta)) == 5
-    assert np.allclose(sg.instantaneous_centre_of_axles(bot, beta).point, U, atol=1e-9)
+    assert np.allclose(ln.axles_concurrency(bot, beta).point, U, atol=1e-9)
 
 
 def test_line_intersection_kinds():
-    assert sg.line_intersection([0, 0], [1, 0], [0, 1], [1, 0])[0] == "parallel"
-    assert sg.line_intersection([0, 0], [1, 0], [2, 0], [-1, 0])[0] == "coincident"
-    k, p = sg.line_intersection([0, 0], [1, 1], [2, 0], [0, 1])
-    assert k == "finite" and np.allclose(p, [2, 2])
+    assert ln.line_intersection([0, 0], [1, 0], [0, 1], [1, 0])[0] == ln.PARALLEL
+    assert ln.line_intersection([0, 0], [1, 0], [2, 0], [-1, 0])[0] == ln.COINCIDENT
+    k, p = ln.line_intersection([0, 0], [1, 1], [2, 0], [0, 1])
+    assert k == ln.FINITE and np.allclose(p, [2, 2])
 
 
 # ----------------------------------------------------------------------------- classification
 def _cases(bot):
     P3 = bot.mount_points[2]
-    vP = sg.planes_through(bot, P3)
+    vP = ln.planes_through(bot, P3)
     vP[2] = 17 * DEG
     U = np.array([np.cos(40 * DEG), np.sin(40 * DEG)])        # on the circle through the P_i (radius L)
     return {
@@ -124,7 +127,7 @@ def _cases(bot):
         "pair-12": np.array([-60, -60, 17]) * DEG, "pair-12'": np.array([120, -60, 17]) * DEG,
         "pair-23": np.array([17, 0, 0]) * DEG, "pair-23'": np.array([17, 180, 0]) * DEG,
         "v-C": np.array([90, -30, 30]) * DEG, "v-P": vP,
-        "v-circle": sg.axles_through(bot, U), "v": sg.planes_through(bot, [0.7, -1.9]),
+        "v-circle": ln.axles_through(bot, U), "v": ln.planes_through(bot, [0.7, -1.9]),
         "regular": [0.1, 0.5, -0.7],
     }
 
@@ -171,11 +174,11 @@ def test_families_table(fams):
 
 def test_write_csv(tmp_path):
     import csv
-    rows = sg.write_csv(tmp_path / "s.csv", n=12, exact=False)
+    rows = catalogue.write_csv(tmp_path / "s.csv", n=12, exact=False)
     with open(tmp_path / "s.csv", newline="", encoding="utf-8") as f:
         back = list(csv.DictReader(f))
     assert [r["family"] for r in back] == [r["family"] for r in rows]
-    assert list(back[0]) == list(sg.COLUMNS)
+    assert list(back[0]) == list(catalogue.COLUMNS)
 
 
 # ----------------------------------------------------------------------------- mutants
@@ -184,7 +187,7 @@ class _MirroredWheel(CentredWheel):
     """A wrong model: the intermediate body turned by -beta instead of beta."""
 
     def block(self, beta, backend=None):
-        from wmr.backend import choose
+        from wmr.model.backend import choose
         bk = choose(beta, self.r, *self.position, backend=backend)
         return rotation(-beta, bk) @ self._local_block(bk)
 
@@ -202,7 +205,7 @@ def _mutant(cls):
 
 
 def test_checks_fail_for_a_mirrored_model():
-    res = sg.check_paper_items(_mutant(_MirroredWheel))
+    res = catalogue.check_paper_items(_mutant(_MirroredWheel))
     assert res["(i)"]                         # parallel planes stay singular under any model of this kind
     assert not all(res[k] for k in res if k.startswith(("(ii)", "(iii)", "(iv)")))
 

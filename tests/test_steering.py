@@ -1,11 +1,11 @@
-"""wmr.steering: the instantaneous centre (62)-(64) and compatible steering angles."""
+"""wmr.analysis.steering: the instantaneous centre (62)-(64) and compatible steering angles."""
 import numpy as np
 import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
 import wmr
-from wmr import steering as Sg
+from wmr.analysis import steering as Sg
 
 from conftest import (angle_close, axle, check_positive_rolling, rigid_velocity, robots, rolling_dir,
                       seeds, transform_twist)

@@ -1,5 +1,5 @@
-"""Input checks (wmr._validate), the numerical-zero policy (wmr.tolerance), the thread chunking
-(wmr._batch) and the comparison helpers (wmr.verify).
+"""Input checks (wmr.model.validation), the numerical-zero policy (wmr.model.tolerance), the thread chunking
+(wmr.analysis._batch) and the comparison helpers (wmr.paper.verify).
 
 Every bad input raises ``ValueError`` whose message names the argument and shows the value.
 """
@@ -10,8 +10,10 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 import wmr
-from wmr import _batch, _validate as V, verify
-from wmr.tolerance import TOL, near_zero
+from wmr.analysis import _batch
+from wmr.model import validation as V
+from wmr.paper import verify
+from wmr.model.tolerance import TOL, near_zero
 
 x = sp.Symbol("x", real=True)
 p = sp.Symbol("p", positive=True)

@@ -1,4 +1,4 @@
-"""wmr.wheels: each unit's block of J2 against the no-slip condition at the contact point (3D)."""
+"""wmr.model.wheels: each unit's block of J2 against the no-slip condition at the contact point (3D)."""
 import numpy as np
 import pytest
 import sympy as sp
@@ -6,7 +6,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 import wmr
-from wmr.backend import SYMBOLIC
+from wmr.model.backend import SYMBOLIC
 
 from conftest import (angles, axle, coords, lengths, make_unit, rolling_dir, seeds,
                       unit_mount_velocity, wheel_centre_velocity)

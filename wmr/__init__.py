@@ -16,18 +16,20 @@ Examples
 >>> int(wmr.mobility(bot, beta))
 1
 """
-from . import conventions
-from .backend import NUMERIC, SYMBOLIC
-from .isotropy import characteristic_length, condition_number, is_isotropic
-from .kinematics import forward, inverse
-from .mobility import admissible_twists, mobility, null_space, nullity, rank, rank_F
-from .platform import E, point_velocity, rotation
-from .robot import Robot
-from .robots import equilateral_mounts, paper_robot
-from .simulation import simulate
-from .steering import centre_to_wheels, instantaneous_centre, steering_angles
-from .tolerance import TOL
-from .wheels import CentredWheel, DualWheel, OffsetWheel
+from .model import conventions
+from .model.backend import NUMERIC, SYMBOLIC
+from .analysis.isotropy import characteristic_length, is_isotropic
+from .analysis.linalg import condition_number
+from .analysis.kinematics import forward, inverse
+from .analysis.linalg import null_space, nullity, rank
+from .analysis.mobility import admissible_twists, mobility, rank_F
+from .model.platform import E, point_velocity, rotation
+from .model.robot import Robot
+from .model.robots import equilateral_mounts, paper_robot
+from .analysis.simulation import simulate
+from .analysis.steering import centre_to_wheels, instantaneous_centre, steering_angles
+from .model.tolerance import TOL
+from .model.wheels import CentredWheel, DualWheel, OffsetWheel
 
 __all__ = [
     "Robot", "OffsetWheel", "CentredWheel", "DualWheel", "paper_robot", "equilateral_mounts",

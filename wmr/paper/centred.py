@@ -3,7 +3,7 @@ r"""Section 5 as printed: WMR with centred wheels, (51)-(59), and the list of si
 Conventions of the transcription are those of :mod:`wmr.paper.isotropy`: matrix identities are
 ``Eq(lhs, rhs)`` with the model objects named by :class:`sympy.MatrixSymbol`; general mount points
 are the symbols :data:`D`; (51) is transcribed for one wheel with generic symbols.  The steering
-angles :math:`\beta_1..\beta_3` are :data:`wmr.symbols.beta` (the same symbols as
+angles :math:`\beta_1..\beta_3` are :data:`wmr.paper.symbols.beta` (the same symbols as
 :attr:`wmr.Robot.beta_symbols`).
 
 Nothing here is derived: these are the statements under test (see
@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from .. import symbols as S
+from . import symbols as S
 from . import register
 from .isotropy import D
 

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from .. import symbols as S
+from . import symbols as S
 from . import register
 
 SECTION = "4.3"

@@ -9,8 +9,8 @@ Conventions of the transcription
   :mod:`wmr.paper.platform_wheels` (:data:`~wmr.paper.platform_wheels.beta_i`, ...).
 * The matrices of (21)-(25) are printed for a general number w of wheels; they are transcribed for
   w = 3 (the robot of Section 4.2) with general mount points :data:`D` = ((d_1x, d_1y), ..., (d_3x, d_3y)),
-  steering angles :data:`wmr.symbols.beta` and rates :data:`wmr.symbols.phi_dot`,
-  :data:`wmr.symbols.theta_dot`.  :func:`J1_printed` and friends build the printed pattern for any w.
+  steering angles :data:`wmr.paper.symbols.beta` and rates :data:`wmr.paper.symbols.phi_dot`,
+  :data:`wmr.paper.symbols.theta_dot`.  :func:`J1_printed` and friends build the printed pattern for any w.
 * (29) divides a vector by a vector, which is not an operation; it is stored term by term in ``extra``
   (``expr`` is ``None``).
 
@@ -21,7 +21,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from .. import symbols as S
+from . import symbols as S
 from . import register
 from .platform_wheels import E, ONE, R, beta_i, d_i, phi_dot_i, theta_dot_i
 

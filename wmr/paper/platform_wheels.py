@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from .. import symbols as S
+from . import symbols as S
 from . import register
 
 SECTION_PLATFORM = "3.1"

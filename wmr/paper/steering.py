@@ -1,6 +1,6 @@
 r"""Equations (60)-(65) as printed: steering of a WMR with three centred wheels (Section 5.4).
 
-Symbols not in :mod:`wmr.symbols` are defined here: the absolute steering angle
+Symbols not in :mod:`wmr.paper.symbols` are defined here: the absolute steering angle
 :math:`\phi_i` of a generic wheel, the position vectors :math:`\mathbf u` (of the instantaneous
 centre U) and :math:`\mathbf c` (of the operation point C), :math:`\mathbf u_c =
 \overrightarrow{CU}`, :math:`\mathbf u_i = \overrightarrow{P_iU}` and a generic mount vector
@@ -11,7 +11,7 @@ Equations (61)-(64) are vector identities; their ``expr`` is the printed right-h
 """
 import sympy as sp
 
-from .. import symbols as S
+from . import symbols as S
 from . import register
 
 #: Absolute steering angle of a generic wheel i (8): phi_i = psi + beta_i.

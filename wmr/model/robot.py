@@ -13,7 +13,7 @@ from __future__ import annotations
 import numpy as np
 import sympy as sp
 
-from . import _validate as V
+from . import validation as V
 from .backend import NUMERIC, SYMBOLIC, choose, is_symbolic
 from .platform import point_row
 from .wheels import UNIT_TYPES

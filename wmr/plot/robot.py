@@ -1,4 +1,4 @@
-r"""One way of drawing a wheeled mobile robot, used by every figure of :mod:`wmr.figures`.
+r"""One way of drawing a wheeled mobile robot, used by every figure of :mod:`wmr.paper.figures`.
 
 A robot is drawn seen from above: the platform as a disc, the operation point C with the body
 frame :math:`(\mathbf i, \mathbf j)`, and each wheel unit as its intermediate body (a pivot at
@@ -6,7 +6,7 @@ frame :math:`(\mathbf i, \mathbf j)`, and each wheel unit as its intermediate bo
 carrying wheel discs, which from above are rounded rectangles of length :math:`2r` along the
 rolling direction :math:`\mathbf j_i` (marked by an arrow).  Axles (dashed, along
 :math:`\mathbf i_i`) and wheel-plane lines (along :math:`\mathbf j_i`) can be drawn and extended to
-where they meet.  The geometry comes from :meth:`wmr.wheels._Unit.points`, so the pictures obey
+where they meet.  The geometry comes from :meth:`wmr.model.wheels._Unit.points`, so the pictures obey
 :mod:`wmr.conventions` by construction.
 
 Style: the Okabe-Ito colour-blind-safe palette (:data:`PALETTE`), one set of line widths and
@@ -28,8 +28,8 @@ from matplotlib.figure import Figure
 from matplotlib.patches import Arc, Circle, FancyArrowPatch, FancyBboxPatch, Polygon
 from matplotlib.transforms import Affine2D
 
-from .backend import NUMERIC
-from .platform import rotation
+from ..model.backend import NUMERIC
+from ..model.platform import rotation
 
 #: Okabe & Ito (2008) colour-blind-safe palette, by role.
 PALETTE = {
@@ -137,7 +137,7 @@ def common_view(axes, point_sets, pad=0.05):
 
 # ----------------------------------------------------------------------------- geometry
 def rot(angle):
-    """2x2 rotation matrix (the model's :func:`wmr.platform.rotation`)."""
+    """2x2 rotation matrix (the model's :func:`wmr.model.platform.rotation`)."""
     return rotation(angle, NUMERIC)
 
 

@@ -156,6 +156,6 @@ def choose(*values, backend=None):
     """
     if backend is not None:
         if backend not in (NUMERIC, SYMBOLIC):
-            raise ValueError(f"backend must be wmr.backend.NUMERIC or SYMBOLIC, got {backend!r}")
+            raise ValueError(f"backend must be wmr.model.backend.NUMERIC or SYMBOLIC, got {backend!r}")
         return backend
     return SYMBOLIC if is_symbolic(*values) else NUMERIC

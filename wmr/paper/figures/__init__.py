@@ -9,7 +9,7 @@ Every figure function returns a :class:`matplotlib.figure.Figure` with three att
 ``wmr_title``, ``wmr_caption``
     Title and caption (with the computed numbers; ``$...$`` is LaTeX).
 
-``python -m wmr.figures OUTDIR`` writes ``OUTDIR/<key>.svg|.pdf|.png`` for every key of
+``python -m wmr.paper.figures OUTDIR`` writes ``OUTDIR/<key>.svg|.pdf|.png`` for every key of
 :data:`FIGURES`, ``OUTDIR/captions.json`` and ``OUTDIR/singularities.csv``.  The files are
 byte-for-byte reproducible (Agg backend, fixed SVG hash salt, no dates) and record the function
 that made them and the git commit of the tree.
@@ -27,15 +27,18 @@ from pathlib import Path
 import numpy as np
 from matplotlib.figure import Figure
 
-from . import drawing as dr
-from .drawing import PALETTE, ROLE, style
-from .isotropy import condition_number
-from .kinematics import inverse
-from .mobility import admissible_twists, rank_F, twist_constraints
-from .robots import paper_robot
-from .simulation import simulate
-from .steering import steering_angles
-from . import singularities as sg
+from ...plot import robot as dr
+from ...plot.robot import PALETTE, ROLE, style
+from ...analysis.isotropy import condition_number
+from ...analysis.kinematics import inverse
+from ...analysis.mobility import admissible_twists, rank_F, twist_constraints
+from ...model.robots import paper_robot
+from ...analysis.simulation import simulate
+from ...analysis.steering import steering_angles
+from ...analysis import lines as ln
+from ...analysis import singularities as sg
+from ...model.platform import wrap_angle
+from .. import families as fams
 
 L_PAPER = 1.0      #: distance of the mount points from C in the figures
 R_CENTRED = 0.25   #: wheel radius of the centred-wheel robot in the figures
@@ -51,7 +54,7 @@ def centred_robot():
 
 @lru_cache(maxsize=None)
 def _exact_poly():
-    return sg._poly_det(sg.exact_robot(paper_robot("centred", L=L_PAPER, r=1.0)))
+    return sg.det_J_polynomial(sg.exact_robot(paper_robot("centred", L=L_PAPER, r=1.0)))
 
 
 def exact_det_J(beta_deg, r=R_CENTRED):
@@ -347,7 +350,7 @@ def fig09(uc_U=(-0.7, 1.8), turn=60 * DEG):
         fig, axes = dr.new_figure(1, 2, width=7.2, height=3.9)
         for ax, (name, uc), letter in zip(axes, (("C", (0.0, 0.0)), ("U", uc_U)), "ab"):
             twist, beta, rates, tr = _rotation_run(bot, uc, turn)
-            meet = sg.instantaneous_centre_of_axles(bot, beta)
+            meet = ln.axles_concurrency(bot, beta)
             rk = int(rank_F(bot, beta))
             Cpath = tr.pose[:, 1:]
             if name == "U":
@@ -355,7 +358,7 @@ def fig09(uc_U=(-0.7, 1.8), turn=60 * DEG):
             else:
                 rad = float(np.max(np.linalg.norm(Cpath, axis=1)))
             n = {"u_c": list(map(float, uc)), "beta_deg": np.degrees(beta).tolist(), "rank_F": rk,
-                 "mobility": 3 + bot.n_rates - rk, "axle_meet_kind": meet.kind,
+                 "mobility": 3 + bot.n_rates - rk, "axle_meet_kind": meet.kind.name.lower(),
                  "axle_meet": None if meet.point is None else meet.point.tolist(),
                  "axle_meet_error": float(np.linalg.norm(meet.point - uc)) if meet.point is not None else float("inf"),
                  "radius": rad, "radius_expected": float(np.linalg.norm(uc)), "psi_rate": float(np.mean(tr.twist[:, 0])),
@@ -405,36 +408,36 @@ def _draw_singular(ax, bot, beta, *, dp_label=None, dp_offset=(7, 3), exact_deg=
     """Robot + wheel-plane lines + axles; marks D_P and the pairwise axle crossings. Returns (g, numbers, extent)."""
     b = np.asarray(beta, dtype=float)
     g = dr.draw_robot(ax, bot, b, frame=frame, label_offsets=wheel_label_offsets)
-    P, u = sg.wheel_plane_lines(bot, b)
-    H, iv = sg.axle_lines(bot, b)
-    conc = sg.concurrency_point(bot, b)
-    ax_pairs = sg.pair_intersections(H, iv)
-    pl_pairs = sg.pair_intersections(P, u)
-    axle_pts = [v[1] for v in ax_pairs.values() if v[0] == "finite" and np.linalg.norm(v[1]) < reach]
-    inc_planes = [[conc.point] if conc.kind == "finite" else [] for _ in range(3)]
+    P, u = ln.wheel_plane_lines(bot, b)
+    H, iv = ln.axle_lines(bot, b)
+    conc = ln.concurrency_point(bot, b)
+    ax_pairs = ln.pair_intersections(H, iv)
+    pl_pairs = ln.pair_intersections(P, u)
+    axle_pts = [v[1] for v in ax_pairs.values() if v[0] == ln.FINITE and np.linalg.norm(v[1]) < reach]
+    inc_planes = [[conc.point] if conc.kind == ln.FINITE else [] for _ in range(3)]
     for (i, j), (kind, pt) in pl_pairs.items():
-        if kind == "coincident":
+        if kind == ln.COINCIDENT:
             inc_planes[i - 1].append(P[j - 1])
             inc_planes[j - 1].append(P[i - 1])
     inc_axles = [[] for _ in range(3)]
     for (i, j), (kind, pt) in ax_pairs.items():
-        if kind == "finite" and np.linalg.norm(pt) < reach:
+        if kind == ln.FINITE and np.linalg.norm(pt) < reach:
             inc_axles[i - 1].append(pt)
             inc_axles[j - 1].append(pt)
     dr.draw_planes(ax, g, include=inc_planes, margin=0.3, min_half=0.6)
     dr.draw_axles(ax, g, include=inc_axles, margin=0.3, min_half=0.6)
     for pt in axle_pts:
         dr.draw_point(ax, pt, None, marker="o", color=ROLE["axle"], size=4.5, face="white", zorder=8)
-    if conc.kind == "finite":
+    if conc.kind == ln.FINITE:
         dr.draw_point(ax, conc.point, dp_label, marker="D", color=ROLE["dp"], size=5.5, offset=dp_offset, zorder=8.6)
     ext = [dr.robot_extent(g, dr.platform_radius(bot))] + [np.atleast_2d(p) for p in axle_pts]
-    if conc.kind == "finite":
+    if conc.kind == ln.FINITE:
         ext.append(conc.point[None])
     n = _det_lines(bot, np.degrees(b) if exact_deg is None else exact_deg, exact=exact_deg is not None)
-    n.update({"planes_meet": conc.kind, "D_P": None if conc.point is None else conc.point.tolist(),
+    n.update({"planes_meet": conc.kind.name.lower(), "D_P": None if conc.point is None else conc.point.tolist(),
               "axle_crossings": [p.tolist() for p in axle_pts],
-              "coincident": [list(k) for k, v in pl_pairs.items() if v[0] == "coincident"],
-              "axles_meet": sg.instantaneous_centre_of_axles(bot, b).kind,
+              "coincident": [list(k) for k, v in pl_pairs.items() if v[0] == ln.COINCIDENT],
+              "axles_meet": ln.axles_concurrency(bot, b).kind.name.lower(),
               "family": sg.classify(bot, b).family})
     return g, n, np.vstack(ext)
 
@@ -502,12 +505,12 @@ def fig11(configs=None):
         fig, axes = dr.new_figure(1, 3, width=7.4, height=3.5)
         for ax, (letter, bdeg) in zip(axes, configs.items()):
             b = np.asarray(bdeg) * DEG
-            P, u = sg.wheel_plane_lines(bot, b)
-            co = [k for k, v in sg.pair_intersections(P, u).items() if v[0] == "coincident"]
+            P, u = ln.wheel_plane_lines(bot, b)
+            co = [k for k, v in ln.pair_intersections(P, u).items() if v[0] == ln.COINCIDENT]
             i, j = co[0]
             k3 = ({1, 2, 3} - {i, j}).pop()
             lab = rf"$D_{{{min(i, k3)}{max(i, k3)}}} = D_{{{min(j, k3)}{max(j, k3)}}}$"
-            conc = sg.concurrency_point(bot, b)
+            conc = ln.concurrency_point(bot, b)
             off = dr._outward_offset(conc.point - (P[i - 1] + P[j - 1]) / 2 + 1e-9, 1)
             off = (-9 if off[0] < 0 else 9, 0)
             g, n, ext = _draw_singular(ax, bot, b, dp_label=lab, exact_deg=bdeg, frame=False,
@@ -537,7 +540,7 @@ def fig11(configs=None):
 def fig12(D_arbitrary=(-0.5, 1.8)):
     r"""Fig. 12: all three wheel planes through one point, (a) the operation point C, (b) an arbitrary point D_P.
 
-    Angles from :func:`wmr.singularities.planes_through`.
+    Angles from :func:`wmr.analysis.lines.planes_through`.
 
     Returns
     -------
@@ -550,7 +553,7 @@ def fig12(D_arbitrary=(-0.5, 1.8)):
     with style():
         fig, axes = dr.new_figure(1, 2, width=7.2, height=4.1)
         for ax, (letter, D) in zip(axes, (("a", (0.0, 0.0)), ("b", tuple(D_arbitrary)))):
-            b = sg.planes_through(bot, D)
+            b = ln.planes_through(bot, D)
             bdeg = np.degrees(b)
             exact = [int(round(v)) for v in bdeg] if letter == "a" else None
             g, n, ext = _draw_singular(ax, bot, b, dp_label="$D_P = C$" if letter == "a" else "$D_P$",
@@ -599,19 +602,19 @@ def fig13(uc=(1.7, 1.1)):
         ``wmr_numbers``: twist, u_c, u_i, beta_deg, printed65_deg, axle_meet, axle_meet_error,
         rank_F, mobility, slip (residual of the inverse kinematics), admissible.
     """
-    from .steering import centre_to_wheels, instantaneous_centre
+    from ...analysis.steering import centre_to_wheels, instantaneous_centre
     bot = centred_robot()
     uc = np.asarray(uc, dtype=float)
     twist = np.array([1.0, uc[1], -uc[0]])                 # (63): c_dot = -psi_dot E u_c
     U = instantaneous_centre(twist).point
     ui = centre_to_wheels(twist, bot.mount_points)
     beta = steering_angles(bot, twist)
-    meet = sg.instantaneous_centre_of_axles(bot, beta)
+    meet = ln.axles_concurrency(bot, beta)
     p65 = np.degrees(np.arccos(ui @ U / (np.linalg.norm(ui, axis=1) * np.linalg.norm(U))))
     sol = inverse(bot, beta, twist)
     rk = int(rank_F(bot, beta))
     n = {"twist": twist.tolist(), "u_c": U.tolist(), "u_i": ui.tolist(), "beta_deg": np.degrees(beta).tolist(),
-         "printed65_deg": p65.tolist(), "axle_meet_kind": meet.kind,
+         "printed65_deg": p65.tolist(), "axle_meet_kind": meet.kind.name.lower(),
          "axle_meet": None if meet.point is None else meet.point.tolist(),
          "axle_meet_error": float(np.linalg.norm(meet.point - U)), "rank_F": rk, "mobility": 3 + bot.n_rates - rk,
          "slip": float(np.abs(sol.residual).max()), "admissible": bool(sol.admissible)}
@@ -669,8 +672,8 @@ def det_map(beta1s=(60.0, 20.0), n=400):
     For each :math:`\beta_1` in ``beta1s`` (a column of panels) an ``n`` x ``n`` grid is evaluated in
     one batch.  Solid black: the singular curves (zero contour of :math:`\det\mathbf J`); dashed:
     configurations with concurrent axles (zero contour of :math:`\det\mathbf A`, the twist-constraint
-    matrix of :func:`wmr.mobility.twist_constraints`: rank F = 5, the robot can move); markers:
-    where both hold (:func:`wmr.singularities.singular_motions`).
+    matrix of :func:`wmr.analysis.mobility.twist_constraints`: rank F = 5, the robot can move); markers:
+    where both hold (:func:`wmr.analysis.singularities.singular_motions`).
 
     Returns
     -------
@@ -743,10 +746,10 @@ def det_map(beta1s=(60.0, 20.0), n=400):
     vortex = {sgn: float(condition_number(bot.J(alpha + sgn * 45 * DEG, L=L_PAPER))) for sgn in (1, -1)}
     numbers["kappa_vortex"] = vortex[1]
     numbers["kappa_vortex_minus"] = vortex[-1]
-    numbers["vortex_beta_deg"] = [float(_deg(sg._wrap(a))) for a in alpha + 45 * DEG]
+    numbers["vortex_beta_deg"] = [float(_deg(wrap_angle(a))) for a in alpha + 45 * DEG]
     k0 = numbers[f"beta1={beta1s[0]:g}"]
-    a13 = _deg(sg.pair_line_angle(bot, 1, 3))
-    a23 = _deg(sg.pair_line_angle(bot, 2, 3))
+    a13 = _deg(ln.pair_line_angle(bot, 1, 3))
+    a23 = _deg(ln.pair_line_angle(bot, 2, 3))
     kmin = min(numbers[f"beta1={b:g}"]["kappa_min"] for b in beta1s)
     cap = (rf"$\det\mathbf{{J}}/r^3$ (top) and $\log_{{10}}\kappa(\mathbf{{J}})$ (bottom, clipped at 2) of the WMR with three "
            rf"centred wheels over $(\beta_2, \beta_3)$ for $\beta_1 = {beta1s[0]:g}^\circ$ (left) and "
@@ -783,7 +786,7 @@ def conventions(psi=25 * DEG, beta=35 * DEG):
         ``wmr_numbers``: psi_deg, beta_deg, H_minus_P (offset wheel, body frame), i, j,
         dual_wheels (body frame), mount_points (paper numbering).
     """
-    from .wheels import DualWheel, OffsetWheel
+    from ...model.wheels import DualWheel, OffsetWheel
     bot = paper_robot("centred", L=L_PAPER, r=R_CENTRED)
     pose = (psi, 1.55, 1.1)
     r_ = 0.3
@@ -899,7 +902,7 @@ def git_commit(root=None):
     ``+dirty`` when ``wmr/`` has uncommitted changes); regenerating them after commits that do
     not touch the package gives identical files.
     """
-    root = root or Path(__file__).resolve().parent.parent
+    root = root or Path(__file__).resolve().parents[3]   # TODO(issue 8): the build passes the root
     try:
         p = subprocess.run(["git", "log", "-1", "--format=%H", "--", "wmr"], cwd=root,
                            capture_output=True, text=True, timeout=10)
@@ -961,7 +964,7 @@ def write_all(outdir, keys=None, formats=("svg", "pdf", "png"), csv=True, commit
     for key in keys:
         t0 = time.perf_counter()
         fn, number = FIGURES[key]
-        function = f"wmr.figures.{fn.__name__}"
+        function = f"wmr.paper.figures.{fn.__name__}"
         fig = fn()
         save(fig, outdir, key, function, commit, formats)
         caps[key] = {"number": number, "title": fig.wmr_title, "caption": fig.wmr_caption,
@@ -975,14 +978,14 @@ def write_all(outdir, keys=None, formats=("svg", "pdf", "png"), csv=True, commit
     path.write_text(json.dumps(caps, indent=2, ensure_ascii=False) + "\n", encoding="utf-8")
     if csv:
         t0 = time.perf_counter()
-        sg.write_csv(outdir / "singularities.csv")
+        fams.write_csv(outdir / "singularities.csv")
         if verbose:
             print(f"  {'singularities':12s} {time.perf_counter() - t0:5.2f} s", file=sys.stderr)
     return caps
 
 
 def main(argv=None):
-    """``python -m wmr.figures OUTDIR [KEY ...]``."""
+    """``python -m wmr.paper.figures OUTDIR [KEY ...]``."""
     import matplotlib
     matplotlib.use("Agg")                                   # headless; PNG is rendered by Agg in any case
     argv = sys.argv[1:] if argv is None else argv

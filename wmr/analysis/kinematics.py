@@ -21,10 +21,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from . import _validate as V
-from .backend import NUMERIC
-from .platform import E
-from .tolerance import TOL, near_zero
+from ..model import validation as V
+from ..model.backend import NUMERIC
+from ..model.platform import E
+from ..model.tolerance import TOL, near_zero
 
 
 @dataclass(frozen=True)
@@ -38,7 +38,7 @@ class Solution:
     residual : numpy.ndarray (..., 2w)
         :math:`\\mathbf J_1\\mathbf t - \\mathbf J_2\\dot{\\boldsymbol\\theta}` at the solution.
     admissible : numpy.ndarray of bool (...)
-        Residual is zero within :data:`~wmr.tolerance.TOL` (relative to the size of the terms).
+        Residual is zero within :data:`~wmr.model.tolerance.TOL` (relative to the size of the terms).
     """
 
     value: np.ndarray
@@ -84,7 +84,7 @@ def forward(robot, beta, rates):
 
     Examples
     --------
-    >>> from wmr.robots import paper_robot
+    >>> from wmr.model.robots import paper_robot
     >>> bot = paper_robot("centred", L=1.0, r=0.5)
     >>> sol = forward(bot, [0.0, 0.0, 0.0], [-2.0, -2.0, -2.0])   # all wheels along x: drive along +y
     >>> (sol.value.round(12) + 0.0).tolist(), bool(sol.admissible)
@@ -134,7 +134,7 @@ def inverse(robot, beta, twist, beta_dot=None):
 
     Examples
     --------
-    >>> from wmr.robots import paper_robot
+    >>> from wmr.model.robots import paper_robot
     >>> bot = paper_robot("centred", L=1.0, r=0.5)
     >>> sol = inverse(bot, [0.0, 0.0, 0.0], [0.0, 0.0, 1.0])
     >>> (sol.value.round(12) + 0.0).tolist(), bool(sol.admissible)

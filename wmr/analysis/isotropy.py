@@ -9,39 +9,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from . import _validate as V
-from .mobility import _as_stack, singular_values
-from .tolerance import TOL
-
-
-def condition_number(A):
-    r"""Condition number :math:`\kappa = \sigma_l/\sigma_s` (30) of a stack of matrices.
-
-    Rank-deficient matrices (smallest singular value at most ``TOL * max(1, sigma_l)``)
-    get ``inf``, as (31) prescribes.
-
-    Parameters
-    ----------
-    A : array (..., m, n)
-
-    Returns
-    -------
-    numpy.ndarray (...)
-
-    Examples
-    --------
-    >>> float(condition_number([[2.0, 0.0], [0.0, 1.0]]))
-    2.0
-    """
-    A = _as_stack(A)
-    return _kappa_from_sv(singular_values(A))
-
-
-def _kappa_from_sv(s):
-    smax, smin = s[..., 0], s[..., -1]
-    singular = smin <= TOL * np.maximum(1.0, smax)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        return np.where(singular, np.inf, smax / np.where(singular, 1.0, smin))
+from ..model import validation as V
+from .linalg import condition_number
+from ..model.tolerance import TOL
 
 
 def is_isotropic(A):
@@ -96,23 +66,3 @@ def characteristic_length(robot):
     if L == 0:
         raise ValueError("all mount points coincide with C: no characteristic length exists (got L = 0)")
     return L
-
-
-def gram(A):
-    r"""The product :math:`\mathbf A^T\mathbf A` of each matrix of a stack, as in (34), (40) and (54).
-
-    Parameters
-    ----------
-    A : array_like (..., m, n)
-
-    Returns
-    -------
-    numpy.ndarray (..., n, n)
-
-    Examples
-    --------
-    >>> gram([[1.0, 2.0], [0.0, 1.0]]).tolist()
-    [[1.0, 2.0], [2.0, 5.0]]
-    """
-    A = _as_stack(A)
-    return np.swapaxes(A, -1, -2) @ A

@@ -1,7 +1,7 @@
 """The ledger of verdicts: one row per equation (2)-(65) and per claim of the paper.
 
 Each notebook collects its rows in a :class:`Ledger` and writes a fragment
-``figures/ledger/<notebook>.csv``; ``python -m wmr.ledger`` merges the fragments into
+``figures/ledger/<notebook>.csv``; ``python -m wmr.paper.ledger`` merges the fragments into
 ``figures/ledger.csv`` (equations in numeric order, then claims) and reports what is missing.
 """
 from __future__ import annotations
@@ -29,7 +29,7 @@ def output_dir():
     env = os.environ.get("WMR_FIGURES")
     if env:
         return Path(env)
-    return Path(__file__).resolve().parent.parent / "figures"
+    return Path(__file__).resolve().parents[2] / "figures"   # TODO(issue 10): no repository paths in the library
 
 
 class Row(dict):
@@ -248,7 +248,7 @@ def merge(directory=None):
 
 
 def main(argv=None):
-    """Command line: ``python -m wmr.ledger [directory]``; merges and reports.
+    """Command line: ``python -m wmr.paper.ledger [directory]``; merges and reports.
 
     Parameters
     ----------

@@ -14,11 +14,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from . import _validate as V
-from .platform import point_velocity
-from .tolerance import near_zero
+from ..model import validation as V
+from ..model.platform import point_velocity
+from ..model.tolerance import near_zero
+from .lines import AT_INFINITY, FINITE, STILL
 
-FINITE, AT_INFINITY, STILL = 0, 1, 2
+__all__ = ["InstantCentre", "instantaneous_centre", "steering_angles", "centre_to_wheels", "FINITE", "AT_INFINITY", "STILL"]
 
 
 @dataclass(frozen=True)
@@ -106,7 +107,7 @@ def steering_angles(robot, twist, current=None):
 
     Examples
     --------
-    >>> from wmr.robots import paper_robot
+    >>> from wmr.model.robots import paper_robot
     >>> beta = steering_angles(paper_robot("centred"), [1.0, 0.0, 0.0])   # spin about C
     >>> np.degrees(beta).round(9).tolist()                              # axles point at C
     [0.0, -120.0, 120.0]

@@ -12,7 +12,7 @@ from __future__ import annotations
 import numpy as np
 import sympy as sp
 
-from . import _validate as V
+from . import validation as V
 from .robot import Robot
 from .wheels import CentredWheel, DualWheel, OffsetWheel
 

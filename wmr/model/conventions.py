@@ -1,6 +1,6 @@
 r"""Conventions used everywhere in :mod:`wmr` (stated once, here).
 
-The drawing is ``figures/conventions.svg`` (made by :func:`wmr.figures.conventions`).
+The drawing is ``figures/conventions.svg`` (made by :func:`wmr.paper.figures.conventions`).
 
 Frames
     :math:`\mathcal F` is fixed, :math:`\mathcal B` is attached to the platform with origin at the
@@ -32,5 +32,5 @@ Numbering
     \tfrac{\sqrt3}2)`, :math:`\mathbf d_3 = L(\tfrac12,-\tfrac{\sqrt3}2)`: numbered clockwise from
     the negative x-axis, the one placement under which the printed (59) holds.
 Tolerance
-    One numerical zero, :data:`wmr.tolerance.TOL`.
+    One numerical zero, :data:`wmr.model.tolerance.TOL`.
 """

@@ -27,7 +27,7 @@ from dataclasses import dataclass
 import numpy as np
 import sympy as sp
 
-from . import _validate as V
+from . import validation as V
 from .backend import NUMERIC, choose
 from .platform import E, rotation
 

@@ -14,7 +14,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from . import _validate as V
+from ..model import validation as V
 from .kinematics import forward
 
 
@@ -116,7 +116,7 @@ def simulate(robot, rates, beta0, t_end, dt, steer=None, pose0=(0.0, 0.0, 0.0)):
 
     Examples
     --------
-    >>> from wmr.robots import paper_robot
+    >>> from wmr.model.robots import paper_robot
     >>> bot = paper_robot("centred", L=1.0, r=0.5)
     >>> tr = simulate(bot, [-2.0, -2.0, -2.0], [0.0, 0.0, 0.0], t_end=1.0, dt=0.1)
     >>> (tr.pose[-1].round(12) + 0.0).tolist(), bool(tr.slip.max() < 1e-12)   # 1 m along +y, no slip

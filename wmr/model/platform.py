@@ -59,10 +59,34 @@ def rotation(angle, backend=NUMERIC):
     (5, 2, 2)
     """
     if backend is NUMERIC:
-        from ._validate import finite_array
+        from .validation import finite_array
         angle = finite_array("angle", angle)
     c, s = backend.cos(angle), backend.sin(angle)
     return backend.matrix([[c, -s], [s, c]])
+
+
+def wrap_angle(angle):
+    r"""Angles mapped to :math:`(-\pi, \pi]` (element-wise).
+
+    Parameters
+    ----------
+    angle : float or array (...)
+        Radians.
+
+    Returns
+    -------
+    numpy.ndarray (...)
+
+    Examples
+    --------
+    >>> np.degrees(wrap_angle(np.radians([180.0, -180.0, 270.0]))).round(9).tolist()
+    [180.0, 180.0, -90.0]
+    """
+    from .tolerance import TOL
+    from .validation import finite_array
+    a = finite_array("angle", angle)
+    w = np.mod(a + np.pi, 2 * np.pi) - np.pi
+    return np.where(np.isclose(w, -np.pi, atol=TOL, rtol=0), np.pi, w)
 
 
 def point_row(d, L=1, backend=None):
@@ -114,7 +138,7 @@ def point_velocity(twist, d):
     >>> point_velocity([1.0, 0.0, 0.0], [2.0, 0.0]).tolist()     # spin: (psi_dot k) x d
     [0.0, 2.0]
     """
-    from ._validate import finite_array
+    from .validation import finite_array
     t = finite_array("twist", twist, last=3)
     d = finite_array("d", d, last=2)
     return np.stack([t[..., 1] - t[..., 0] * d[..., 1], t[..., 2] + t[..., 0] * d[..., 0]], axis=-1)

@@ -1,0 +1,15 @@
+r"""Analyses of any robot built with :mod:`wmr.model`.
+
+==========================  ==========================================================================
+:mod:`~wmr.analysis.linalg`         rank, nullity, null space, singular values, condition number
+:mod:`~wmr.analysis.mobility`       rank and nullity of :math:`\mathbf F`, admissible twists (23)-(27)
+:mod:`~wmr.analysis.isotropy`       isotropy tests and the characteristic length (30)-(50)
+:mod:`~wmr.analysis.kinematics`     forward and inverse kinematics with the slip residual (21)
+:mod:`~wmr.analysis.steering`       instantaneous centre and compatible steering angles (60)-(65)
+:mod:`~wmr.analysis.simulation`     time integration of the kinematics
+:mod:`~wmr.analysis.lines`          2-D line geometry: intersections, concurrency, circumcircle
+:mod:`~wmr.analysis.singularities`  :math:`\det\mathbf J` and the classification of singular configurations (58)-(59)
+==========================  ==========================================================================
+
+Every function takes a robot; none defaults to the paper's.
+"""

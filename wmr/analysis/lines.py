@@ -1,0 +1,395 @@
+r"""Lines in the floor plane: the axle and wheel-plane lines of a robot, where lines meet, the circumcircle.
+
+Two lines through each mount point :math:`P_i` organise the steering and singularity analyses:
+
+* the **axle line** through the wheel centre along :math:`\mathbf i_i`: all axle lines meet at the
+  instantaneous centre exactly when a rotation about it is admissible (mobility);
+* the **wheel-plane line** :math:`\ell_i` through :math:`P_i` along :math:`\mathbf j_i` (the trace of
+  the wheel plane on the floor): for three centred wheels :math:`\det\mathbf J = 0` exactly when
+  the three are concurrent (:mod:`wmr.analysis.singularities`).
+
+A line :math:`p + s\,u` has the Plücker coordinates :math:`[\,p\times u,\ u^T]^T`; a point
+:math:`D` lies on it iff :math:`[-1,\ -D_y,\ D_x]\,[p\times u,\ u^T]^T = 0`, so the common point of
+several lines is the left null vector of the matrix of their Plücker columns
+(:func:`lines_concurrency`).  Where lines (or an instantaneous centre) are is one of the
+:class:`Meet` values, used by every module of the package.
+"""
+from __future__ import annotations
+
+import enum
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..model import validation as V
+from ..model.tolerance import TOL, near_zero
+
+__all__ = ["Meet", "FINITE", "AT_INFINITY", "STILL", "NONE", "COINCIDENT", "PARALLEL", "Concurrency",
+           "line_intersection", "pair_intersections", "lines_concurrency", "circumcircle",
+           "wheel_plane_lines", "axle_lines", "concurrency_point", "axles_concurrency",
+           "planes_through", "axles_through", "pair_line_angle", "line_angle"]
+
+
+class Meet(enum.IntEnum):
+    """Where lines meet, or where an instantaneous centre is (an ``int``, so it fills NumPy arrays).
+
+    Examples
+    --------
+    >>> Meet.AT_INFINITY == 1, Meet(0).name
+    (True, 'FINITE')
+    """
+
+    FINITE = 0        #: at a finite point
+    AT_INFINITY = 1   #: all parallel: they meet at a point at infinity (a translation's centre)
+    STILL = 2         #: no motion, no centre (instantaneous centre of a zero twist)
+    NONE = 3          #: nowhere: the lines are not concurrent
+    COINCIDENT = 4    #: two lines that are the same line
+    PARALLEL = 5      #: two distinct parallel lines
+
+
+FINITE, AT_INFINITY, STILL, NONE, COINCIDENT, PARALLEL = (
+    Meet.FINITE, Meet.AT_INFINITY, Meet.STILL, Meet.NONE, Meet.COINCIDENT, Meet.PARALLEL)
+
+
+def line_intersection(p1, u1, p2, u2):
+    r"""Intersection of the lines :math:`p_1 + s u_1` and :math:`p_2 + t u_2` (one pair).
+
+    Parameters
+    ----------
+    p1, u1, p2, u2 : array (2,)
+        A point and a direction of each line.
+
+    Returns
+    -------
+    (Meet, numpy.ndarray (2,) or None)
+        ``FINITE`` with the point, ``PARALLEL`` or ``COINCIDENT`` with None.
+
+    Examples
+    --------
+    >>> kind, point = line_intersection([0, 0], [1, 0], [1, -1], [0, 1])
+    >>> kind.name, point.tolist()
+    ('FINITE', [1.0, 0.0])
+    """
+    p1, u1, p2, u2 = (V.finite_array(n, a, last=2) for n, a in (("p1", p1), ("u1", u1), ("p2", p2), ("u2", u2)))
+    cross = u1[0] * u2[1] - u1[1] * u2[0]
+    w = p2 - p1
+    scale = max(1.0, float(np.abs(w).max()))
+    if near_zero(cross):
+        off = u1[0] * w[1] - u1[1] * w[0]
+        return (COINCIDENT, None) if near_zero(off, scale) else (PARALLEL, None)
+    s = (w[0] * u2[1] - w[1] * u2[0]) / cross
+    return FINITE, p1 + s * u1
+
+
+def pair_intersections(points, directions):
+    r"""All pairwise intersections :math:`D_{ij}` of lines (one configuration).
+
+    Parameters
+    ----------
+    points, directions : array (w, 2)
+
+    Returns
+    -------
+    dict
+        ``(i, j) -> (Meet, point or None)`` for 1-based line numbers ``i < j``.
+    """
+    out = {}
+    n = len(points)
+    for i in range(n):
+        for j in range(i + 1, n):
+            out[(i + 1, j + 1)] = line_intersection(points[i], directions[i], points[j], directions[j])
+    return out
+
+
+@dataclass(frozen=True)
+class Concurrency:
+    """Where a set of lines meet (one configuration).
+
+    Attributes
+    ----------
+    kind : Meet
+        ``FINITE`` (all meet at ``point``), ``AT_INFINITY`` (all parallel to ``direction``) or ``NONE``.
+    point : numpy.ndarray (2,) or None
+    direction : numpy.ndarray (2,) or None
+    residual : float
+        Smallest singular value of the normalised Plücker matrix (0 when concurrent).
+    """
+
+    kind: Meet
+    point: object
+    direction: object
+    residual: float
+
+
+def lines_concurrency(points, directions):
+    r"""Common point of lines :math:`p_k + s\,u_k` (one configuration), via the Plücker matrix.
+
+    A point D lies on every line iff :math:`[-1, -D_y, D_x]\,[p_k\times u_k,\ u_k]^T = 0`; the
+    left null vector of the :math:`3\times n` Plücker matrix gives D in homogeneous coordinates.
+    The moments are divided by the largest coordinate, so the decision does not depend on the
+    unit of length.
+
+    Parameters
+    ----------
+    points, directions : array (n, 2), n >= 2
+
+    Returns
+    -------
+    Concurrency
+
+    Examples
+    --------
+    >>> c = lines_concurrency([[1, 0], [0, 1], [-1, -1]], [[-1, 0], [0, -1], [1, 1]])
+    >>> c.kind.name, (c.point.round(12) + 0.0).tolist()
+    ('FINITE', [0.0, 0.0])
+    """
+    p = V.finite_array("points", points, last=2)
+    u = V.finite_array("directions", directions, last=2)
+    if p.ndim != 2 or p.shape != u.shape or len(p) < 2:
+        raise ValueError(f"points and directions must both have shape (n, 2) with n >= 2, "
+                         f"got {p.shape} and {u.shape}")
+    norm = np.linalg.norm(u, axis=-1, keepdims=True)
+    if np.any(norm == 0):
+        raise ValueError(f"directions must be non-zero vectors, got {u.tolist()}")
+    u = u / norm
+    scale = max(1.0, float(np.abs(p).max()))
+    m = (p[:, 0] * u[:, 1] - p[:, 1] * u[:, 0]) / scale
+    W = np.stack([m, u[:, 0], u[:, 1]])                 # (3, n)
+    U, s, _ = np.linalg.svd(W)
+    res = float(s[-1]) if W.shape[1] >= 3 else 0.0
+    if W.shape[1] >= 3 and not near_zero(res):
+        return Concurrency(NONE, None, None, res)
+    n = U[:, -1]
+    if near_zero(n[0], np.abs(n[1:]).max()):
+        dirn = np.array([-n[2], n[1]])
+        return Concurrency(AT_INFINITY, None, dirn / np.linalg.norm(dirn), res)
+    return Concurrency(FINITE, np.array([-n[2] / n[0], n[1] / n[0]]) * scale, None, res)
+
+
+def circumcircle(points):
+    r"""Centre and radius of the circle through three points; exact for SymPy coordinates.
+
+    .. math:: \mathbf c = \frac{1}{2\Delta}\Big[\sum_{\rm cyc}|P_a|^2(y_b - y_c),\
+              \sum_{\rm cyc}|P_a|^2(x_c - x_b)\Big],\qquad
+              \Delta = \sum_{\rm cyc} x_a(y_b - y_c)
+
+    Parameters
+    ----------
+    points : sequence of 3 pairs
+        Floats (NumPy result) or SymPy expressions (exact result).
+
+    Returns
+    -------
+    centre : numpy.ndarray (2,) or tuple of 2 sympy.Expr
+    radius : float or sympy.Expr
+
+    Raises
+    ------
+    ValueError
+        If the points are collinear.
+
+    Examples
+    --------
+    >>> c, R = circumcircle([(1.0, 0.0), (0.0, 1.0), (-1.0, 0.0)])
+    >>> c.tolist(), R
+    ([0.0, 0.0], 1.0)
+    >>> import sympy as sp
+    >>> circumcircle([(-1, 0), (sp.Rational(1, 2), sp.sqrt(3) / 2), (sp.Rational(1, 2), -sp.sqrt(3) / 2)])
+    ((0, 0), 1)
+    """
+    pts = list(points)
+    if len(pts) != 3:
+        raise ValueError(f"points must be three points, got {len(pts)}")
+    import sympy as sp
+    exact = any(isinstance(v, sp.Basic) for q in pts for v in q)
+    if not exact:
+        pts = [tuple(q) for q in V.finite_array("points", pts, last=2)]
+    (ax, ay), (bx, by), (cx, cy) = pts
+    dd = 2 * (ax * (by - cy) + bx * (cy - ay) + cx * (ay - by))
+    size = max(abs(float(v)) for q in pts for v in q) if not exact else None
+    if (exact and sp.simplify(dd) == 0) or (not exact and near_zero(dd, max(1.0, size) ** 2)):
+        raise ValueError(f"points are collinear: no circumcircle, got {pts}")
+    a2, b2, c2 = ax**2 + ay**2, bx**2 + by**2, cx**2 + cy**2
+    ux = (a2 * (by - cy) + b2 * (cy - ay) + c2 * (ay - by)) / dd
+    uy = (a2 * (cx - bx) + b2 * (ax - cx) + c2 * (bx - ax)) / dd
+    if exact:
+        ux, uy = sp.radsimp(ux), sp.radsimp(uy)
+        return (ux, uy), sp.sqrt(sp.radsimp((ax - ux) ** 2 + (ay - uy) ** 2))
+    centre = np.array([ux, uy])
+    return centre, float(np.hypot(ax - ux, ay - uy))
+
+
+# ----------------------------------------------------------------------------- a robot's lines
+def _unit_points(robot, beta):
+    """Each unit's points and axes (``unit.points``) at the steering angles ``beta (..., w)``."""
+    beta = V.finite_array("beta", beta, last=robot.w)
+    return [u.points(beta[..., i]) for i, u in enumerate(robot.wheels)]
+
+
+def wheel_plane_lines(robot, beta):
+    r"""Wheel-plane lines :math:`\ell_i`: through :math:`P_i` along :math:`\mathbf j_i`.
+
+    (For an offset wheel the line also passes through :math:`H_i = P_i - d\mathbf j_i`; for a dual
+    wheel it is the unit's mid-plane.)
+
+    Parameters
+    ----------
+    robot : Robot
+    beta : array (..., w)
+
+    Returns
+    -------
+    points : numpy.ndarray (..., w, 2)
+    directions : numpy.ndarray (..., w, 2)
+        Unit vectors :math:`\mathbf j_i`.
+    """
+    pts = _unit_points(robot, beta)
+    return np.stack([p["P"] for p in pts], axis=-2), np.stack([p["j"] for p in pts], axis=-2)
+
+
+def axle_lines(robot, beta):
+    r"""Axle lines: through each wheel centre along :math:`\mathbf i_i` (centred: through :math:`P_i`).
+
+    Parameters
+    ----------
+    robot : Robot
+    beta : array (..., w)
+
+    Returns
+    -------
+    points : numpy.ndarray (..., w, 2)
+        Wheel centres :math:`H_i` (body frame).
+    directions : numpy.ndarray (..., w, 2)
+    """
+    pts = _unit_points(robot, beta)
+    return np.stack([p["H"] for p in pts], axis=-2), np.stack([p["i"] for p in pts], axis=-2)
+
+
+def _one(robot, beta, what):
+    beta = V.finite_array("beta", beta, last=robot.w)
+    if beta.ndim != 1:
+        raise ValueError(f"beta must be one configuration of shape ({robot.w},) for {what}, got shape {beta.shape}")
+    return beta
+
+
+def concurrency_point(robot, beta):
+    r"""The point :math:`D_P` where the wheel-plane lines meet (one configuration).
+
+    Parameters
+    ----------
+    robot : Robot
+    beta : array (w,)
+
+    Returns
+    -------
+    Concurrency
+        For three centred wheels ``kind == NONE`` exactly when :math:`\det\mathbf J \ne 0`.
+    """
+    return lines_concurrency(*wheel_plane_lines(robot, _one(robot, beta, "concurrency_point")))
+
+
+def axles_concurrency(robot, beta):
+    """Where the axle lines meet (one configuration): the instantaneous centre when the robot can move.
+
+    Parameters
+    ----------
+    robot : Robot
+    beta : array (w,)
+
+    Returns
+    -------
+    Concurrency
+    """
+    return lines_concurrency(*axle_lines(robot, _one(robot, beta, "axles_concurrency")))
+
+
+def line_angle(beta):
+    r"""The angle of a line through the origin, in :math:`(-\pi/2, \pi/2]`: ``beta`` and ``beta + pi`` give the same line.
+
+    Parameters
+    ----------
+    beta : float or array (...)
+        Radians.
+
+    Returns
+    -------
+    numpy.ndarray (...)
+
+    Examples
+    --------
+    >>> np.degrees(line_angle(np.radians([-90.0, 135.0, 180.0]))).round(9).tolist()
+    [90.0, -45.0, 0.0]
+    """
+    b = np.mod(V.finite_array("beta", beta) + np.pi / 2, np.pi) - np.pi / 2
+    return np.where(np.isclose(b, -np.pi / 2, atol=TOL, rtol=0), np.pi / 2, b)
+
+
+def planes_through(robot, D):
+    r"""Steering angles whose wheel-plane lines all pass through the point D (body frame).
+
+    :math:`\mathbf j_i \parallel D - P_i`, with :math:`\beta_i\in(-\pi/2, \pi/2]` (the other choice,
+    :math:`\beta_i + \pi`, gives the same line).  Where :math:`D = P_i` the angle is free and 0 is
+    returned.
+
+    Parameters
+    ----------
+    robot : Robot
+    D : array (..., 2)
+
+    Returns
+    -------
+    numpy.ndarray (..., w)
+    """
+    D = V.finite_array("D", D, last=2)
+    v = D[..., None, :] - robot.mount_points                        # (..., w, 2)
+    beta = np.arctan2(-v[..., 0], v[..., 1])                       # j = (-sin b, cos b) || v
+    beta = np.where(np.linalg.norm(v, axis=-1) <= TOL * _size(robot, D), 0.0, beta)
+    return line_angle(beta)
+
+
+def axles_through(robot, U):
+    r"""Steering angles whose axles all pass through U (body frame): rotation about U is admissible.
+
+    Parameters
+    ----------
+    robot : Robot
+    U : array (..., 2)
+
+    Returns
+    -------
+    numpy.ndarray (..., w), in :math:`(-\pi/2, \pi/2]`
+    """
+    U = V.finite_array("U", U, last=2)
+    v = U[..., None, :] - robot.mount_points
+    beta = np.arctan2(v[..., 1], v[..., 0])                        # i = (cos b, sin b) || v
+    beta = np.where(np.linalg.norm(v, axis=-1) <= TOL * _size(robot, U), 0.0, beta)
+    return line_angle(beta)
+
+
+def _size(robot, X):
+    """The length scale of a robot and points: the tolerance of "the point is a mount point"."""
+    return np.maximum(np.abs(robot.mount_points).max(), np.abs(X).max(axis=-1, keepdims=True))
+
+
+def pair_line_angle(robot, i, j):
+    r"""The steering angle (in :math:`(-\pi/2,\pi/2]`) that puts the plane of wheel i on the line :math:`P_iP_j` (1-based).
+
+    Parameters
+    ----------
+    robot : Robot
+    i, j : int
+        Wheel numbers, 1-based, distinct.
+
+    Returns
+    -------
+    float
+    """
+    for name, k in (("i", i), ("j", j)):
+        if isinstance(k, bool) or not isinstance(k, (int, np.integer)):
+            raise TypeError(f"{name} must be a wheel number (int), got {k!r}")
+        if not 1 <= k <= robot.w:
+            raise ValueError(f"{name} must be a wheel number in 1..{robot.w}, got {k!r}")
+    if i == j:
+        raise ValueError(f"i and j must be two different wheels, got i = j = {i}")
+    return float(planes_through(robot, robot.mount_points[j - 1])[i - 1])
+

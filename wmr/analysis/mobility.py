@@ -1,0 +1,154 @@
+r"""Mobility: rank, nullity and null space of the functional matrix (23)-(27).
+
+The mobility of a WMR is the nullity :math:`\nu(\mathbf F) = \dim\mathcal N(\mathbf F)` (27): the number
+of generalised rates :math:`\dot{\mathbf q}` (25) that can be assigned freely without violating the
+no-slip constraints.  All rank decisions use :data:`wmr.model.tolerance.TOL`.
+
+For batches of configurations, :func:`mobility` does not take an SVD of every
+:math:`2w\times(3+n)` matrix :math:`\mathbf F`.  It uses the structure
+:math:`\mathbf F = [\mathbf J_1\ \ -\mathrm{blockdiag}(\mathbf R_{bwi}\mathbf L_i)]`, where the
+:math:`\mathbf L_i` are the units' constant local blocks, to write exactly
+
+.. math:: \operatorname{rank}\mathbf F = \sum_i\operatorname{rank}\mathbf L_i
+          + \operatorname{rank}\mathbf A(\boldsymbol\beta),\qquad
+          \mathbf A = \begin{bmatrix}\vdots\\ \mathbf N_i^T\mathbf R_{bwi}^T[\mathbf E\mathbf d_i\ \ \mathbf 1]\\
+          \vdots\end{bmatrix},
+
+with :math:`\mathbf N_i` an orthonormal basis of the left null space of :math:`\mathbf L_i` (for a
+centred or dual wheel, the axle direction).  The rows of :math:`\mathbf A` are the constraints the
+platform twist must satisfy; :math:`\mathbf A` is :math:`k\times 3` with :math:`k` small.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from ..model import validation as V
+from ..model.backend import NUMERIC
+from ..model.platform import E
+from .linalg import _left_null, null_space, rank
+
+
+def twist_constraints(robot, beta):
+    r"""The constraint rows :math:`\mathbf A(\boldsymbol\beta)` on the platform twist (see module notes).
+
+    A twist :math:`\mathbf t` is admissible (some joint rates realise it without slip) exactly when
+    :math:`\mathbf A\mathbf t = \mathbf 0`.
+
+    Parameters
+    ----------
+    robot : Robot
+    beta : array (..., w)
+
+    Returns
+    -------
+    A : numpy.ndarray (..., k, 3)
+    base_rank : int
+        :math:`\sum_i \operatorname{rank}\mathbf L_i`.
+
+    Examples
+    --------
+    >>> from wmr.model.robots import paper_robot
+    >>> A, base = twist_constraints(paper_robot("centred"), [0.0, 0.0, 0.0])
+    >>> A.shape, base
+    ((3, 3), 3)
+    """
+    beta = V.finite_array("beta", beta, last=robot.w)
+    J1 = robot.J1()
+    # R(beta) = cos(beta) I + sin(beta) E (11), so the rows N_i^T R^T [E d_i 1] are
+    # cos(beta_i) P_i + sin(beta_i) Q_i with constant P_i, Q_i: no batched 2x2 products needed.
+    Et = E(NUMERIC).T
+    parts, base_rank = [], 0
+    for i, u in enumerate(robot.wheels):
+        N = _left_null(u._local_block(NUMERIC))  # (2, k_i), constant
+        base_rank += 2 - N.shape[1]             # rank L_i
+        if N.shape[1] == 0:
+            continue
+        Ji = J1[2 * i:2 * i + 2]
+        parts.append((i, N.T @ Ji, N.T @ Et @ Ji))
+    k = sum(P.shape[0] for _, P, _ in parts)
+    A = np.empty(beta.shape[:-1] + (k, 3))
+    row = 0
+    for i, P, Q in parts:
+        b = beta[..., i, None, None]
+        A[..., row:row + P.shape[0], :] = np.cos(b) * P + np.sin(b) * Q
+        row += P.shape[0]
+    return A, base_rank
+
+
+def rank_F(robot, beta):
+    r"""Rank of the functional matrix :math:`\mathbf F(\boldsymbol\beta)` for a batch of configurations.
+
+    Parameters
+    ----------
+    robot : Robot
+    beta : array (..., w)
+
+    Returns
+    -------
+    numpy.ndarray of int (...)
+
+    Examples
+    --------
+    >>> from wmr.model.robots import paper_robot
+    >>> rank_F(paper_robot("centred"), [[0.0, 0.0, 0.0], [0.1, 0.2, 0.3]]).tolist()
+    [5, 6]
+    """
+    A, base = twist_constraints(robot, beta)
+    return base + rank(A)
+
+
+def mobility(robot, beta):
+    r"""Mobility :math:`\nu(\mathbf F) = (3 + n) - \operatorname{rank}\mathbf F` (27), batched.
+
+    Parameters
+    ----------
+    robot : Robot
+    beta : array (..., w)
+        Steering angles.
+
+    Returns
+    -------
+    numpy.ndarray of int (...)
+
+    Examples
+    --------
+    >>> from wmr.model.robots import paper_robot
+    >>> int(mobility(paper_robot("offset", d=0.5), [0.1, 0.2, 0.3]))
+    3
+    >>> int(mobility(paper_robot("centred"), [0.0, 0.0, 0.0]))   # parallel wheels: translation
+    1
+    """
+    return 3 + robot.n_rates - rank_F(robot, beta)
+
+
+def admissible_twists(robot, beta):
+    r"""Orthonormal basis (3, m) of the admissible platform twists at one configuration.
+
+    The projection of :math:`\mathcal N(\mathbf F)` onto the twist coordinates: the twists that some
+    joint rates realise without slip (the null space of :func:`twist_constraints`).
+
+    Parameters
+    ----------
+    robot : Robot
+    beta : array (w,)
+        Steering angles of one configuration.
+
+    Returns
+    -------
+    numpy.ndarray (3, m)
+
+    Examples
+    --------
+    >>> from wmr.model.robots import paper_robot
+    >>> basis = admissible_twists(paper_robot("centred"), [0.0, 0.0, 0.0])   # axles along x
+    >>> np.abs(basis.ravel()).round(12).tolist()                              # only y translation
+    [0.0, 0.0, 1.0]
+    """
+    beta = V.finite_array("beta", beta, last=robot.w)
+    if beta.ndim != 1:
+        raise ValueError(f"beta must be one configuration of shape ({robot.w},) for admissible_twists, "
+                         f"got shape {beta.shape}")
+    A, _ = twist_constraints(robot, beta)
+    if A.shape[0] == 0:
+        return np.eye(3)
+    return null_space(A)

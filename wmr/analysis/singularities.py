@@ -1,0 +1,432 @@
+r"""Singular configurations of a WMR with three centred wheels: the zero set of :math:`\det\mathbf J` (58)-(59).
+
+For centred wheels the i-th column of :math:`\mathbf J = \mathbf J_{L1}^T\mathbf J_2` (56) is
+:math:`-r_i[\tfrac1L\mathbf d_i^T\mathbf E^T\mathbf j_i,\ \mathbf j_i^T]^T`, and
+:math:`(\mathbf E\mathbf d_i)^T\mathbf j_i = \mathbf d_i\times\mathbf j_i = \mathbf d_i^T\mathbf i_i`.  So the
+column is (up to the factor :math:`-r_i`) the Plücker vector
+:math:`\mathbf w_i = [\,m_i/L,\ \mathbf j_i^T]^T`, :math:`m_i = \mathbf d_i^T\mathbf i_i`, of the
+**wheel-plane line** :math:`\ell_i` (the trace of the wheel plane on the floor: through :math:`P_i`
+along :math:`\mathbf j_i`), and
+
+.. math::
+
+    \det\mathbf J = -\frac{r_1r_2r_3}{L}\Big[m_1\sin(\beta_3-\beta_2) + m_2\sin(\beta_1-\beta_3)
+                    + m_3\sin(\beta_2-\beta_1)\Big] = -\frac{r_1r_2r_3}{L}\det\mathbf W ,
+
+an identity checked exactly by :func:`characterisation` for symbolic mount points.  A point
+:math:`D` lies on :math:`\ell_i` iff :math:`[-1,\ -D_y,\ D_x]\,\mathbf W_{L=1}\mathbf e_i = 0`; hence
+:math:`\det\mathbf J = 0` **iff the three wheel-plane lines are concurrent at a point**
+:math:`D_P` **or all parallel** (concurrent at infinity), and :math:`D_P` is read off the left null
+vector of :math:`\mathbf W` (:func:`wmr.analysis.lines.concurrency_point`).  The zero set is one irreducible surface
+in the torus of :math:`(\beta_1,\beta_2,\beta_3)` (for the paper's robot :math:`\det\mathbf J` is an
+irreducible trilinear form in :math:`(\cos\beta_i,\sin\beta_i)`), swept by :math:`D_P` over the
+projective plane with the 8 choices :math:`\beta_i` or :math:`\beta_i+\pi`; the paper's items
+(i)-(v) are pieces of it.
+
+A different matrix decides mobility: :math:`\operatorname{rank}\mathbf F = 5` (mobility 1) iff
+the three **axle** lines (through :math:`P_i` along :math:`\mathbf i_i`) are concurrent, at the
+instantaneous centre U; otherwise 6.  Both happen at once iff every :math:`P_i` sees
+:math:`U` and :math:`D_P` at a right angle, i.e. (Thales) :math:`U` and :math:`D_P` are antipodal
+on the circle through :math:`P_1,P_2,P_3`, or both are at infinity: a rotation about any point
+of that circle passes through a singular :math:`\mathbf J` (:func:`classify` calls it
+``"v-circle"``; the catalogue of the paper's families is :mod:`wmr.paper.families`).
+
+Everything here is computed from :meth:`wmr.Robot.J` and :func:`wmr.analysis.mobility.rank_F`; nothing is
+copied from the paper.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+import sympy as sp
+
+from ..model import validation as V
+from ..model.backend import NUMERIC, SYMBOLIC
+from ..model.platform import wrap_angle
+from ..model.tolerance import TOL, near_zero
+from .lines import (AT_INFINITY, COINCIDENT, FINITE, NONE, Concurrency, axles_concurrency, axles_through,
+                    circumcircle, concurrency_point, pair_intersections, wheel_plane_lines)
+from .mobility import rank_F
+
+__all__ = ["det_J", "det_J_scale", "is_singular", "det_J_symbolic", "det_J_polynomial", "exact_zero",
+           "plane_line_matrix", "characterisation", "Classification", "classify", "singular_motions",
+           "exact_robot", "numeric_robot"]
+
+
+def _require_square(robot):
+    if robot.n_rates != 3 or robot.w != 3:
+        raise ValueError(
+            f"det J needs a square J (three centred wheels, n_rates = 3); got a robot with w = {robot.w}, "
+            f"n_rates = {robot.n_rates} (for dual wheels analyse the kinematically equivalent centred robot)")
+
+
+def _default_L(robot, L):
+    if L is not None:
+        return V.positive("L", L)
+    from .isotropy import characteristic_length
+    try:
+        return characteristic_length(robot)
+    except TypeError:
+        raise ValueError("give L explicitly for a robot with symbolic mount points") from None
+
+
+def exact_robot(robot):
+    """The same robot with exact (SymPy) mount coordinates and radii, for symbolic checks."""
+    import dataclasses
+    from ..model.robot import Robot
+    if robot.is_symbolic:
+        return robot
+    ns = [sp.sqrt(2), sp.sqrt(3)]
+    units = [dataclasses.replace(u, position=tuple(sp.nsimplify(v, ns) for v in u.position),
+                                 r=sp.nsimplify(u.r, ns)) for u in robot.wheels]
+    return Robot(units, name=robot.name)
+
+
+def numeric_robot(robot):
+    """The same robot with float coordinates (from an exact one)."""
+    import dataclasses
+    from ..model.robot import Robot
+    units = [dataclasses.replace(u, position=tuple(float(v) for v in u.position), r=float(u.r))
+             for u in robot.wheels]
+    return Robot(units, name=robot.name)
+
+
+# ------------------------------------------------------------------------------------- det J
+def det_J(robot, beta, L=None):
+    r""":math:`\det\mathbf J(\boldsymbol\beta)` (58) for a batch of configurations.
+
+    Parameters
+    ----------
+    robot : Robot
+        Three centred wheels (``n_rates == 3``).
+    beta : array (..., 3)
+    L : float, optional
+        Characteristic length of :math:`\mathbf J_{L1}` (default: :func:`wmr.characteristic_length`,
+        which is the paper's L for its robot).
+
+    Returns
+    -------
+    numpy.ndarray (...)
+
+    Examples
+    --------
+    >>> import wmr
+    >>> bot = wmr.paper_robot("centred")
+    >>> abs(float(det_J(bot, [0.3, 0.3, 0.3]))) < 1e-15      # item (i)
+    True
+    """
+    _require_square(robot)
+    return np.linalg.det(robot.J(beta, L=_default_L(robot, L)))
+
+
+def det_J_scale(robot, beta, L=None):
+    r"""Hadamard bound :math:`\prod_i\|\mathbf J\mathbf e_i\|`: the size against which :math:`\det\mathbf J` is zero.
+
+    Returns
+    -------
+    numpy.ndarray (...)
+    """
+    J = robot.J(beta, L=_default_L(robot, L))
+    return np.prod(np.linalg.norm(J, axis=-2), axis=-1)
+
+
+def is_singular(robot, beta, L=None):
+    r"""True where :math:`|\det\mathbf J| \le` ``TOL`` times the Hadamard bound (batched)."""
+    return near_zero(det_J(robot, beta, L), det_J_scale(robot, beta, L))
+
+
+def det_J_symbolic(robot, L=None):
+    r"""Exact :math:`\det\mathbf J` as a SymPy expression in the robot's :math:`\beta_i` symbols.
+
+    Derived from :meth:`wmr.Robot.J`, expanded into a polynomial in :math:`\cos\beta_i,\sin\beta_i`
+    (of degree one in each wheel's pair) and factored.
+
+    Parameters
+    ----------
+    robot : Robot
+        Numeric (use ``paper_robot(..., exact=True)`` for exact coefficients) or symbolic.
+    L : float or sympy.Expr, optional
+
+    Returns
+    -------
+    sympy.Expr
+    """
+    _require_square(robot)
+    robot = exact_robot(robot)
+    L = _default_L(robot, L)
+    if isinstance(L, float):
+        L = sp.nsimplify(L, [sp.sqrt(2), sp.sqrt(3)])
+    J = robot.J(None, L=L)
+    return sp.factor(sp.expand(sp.expand_trig(J.det())))
+
+
+def plane_line_matrix(robot, beta, L=1, backend=None):
+    r"""The matrix :math:`\mathbf W` whose columns are the Plücker vectors :math:`[m_i/L,\ \mathbf j_i^T]^T` of the wheel-plane lines.
+
+    :math:`m_i = \mathbf d_i^T\mathbf i_i = \mathbf d_i\times\mathbf j_i` is the moment of the line
+    about C.  For three centred wheels :math:`\mathbf J = -\mathbf W\,\mathrm{diag}(r_i)`.
+
+    Parameters
+    ----------
+    robot : Robot
+    beta : array (..., w) or sequence of SymPy expressions (None: the symbols)
+    L : float or sympy.Expr
+
+    Returns
+    -------
+    numpy.ndarray (..., 3, w) or sympy.Matrix (3, w)
+    """
+    symbolic = beta is None or robot.is_symbolic or any(
+        isinstance(b, sp.Basic) for b in np.ravel(np.asarray(beta, dtype=object)))
+    bk = SYMBOLIC if symbolic else NUMERIC
+    if symbolic:
+        b = list(robot.beta_symbols) if beta is None else list(beta)
+    else:
+        beta = V.finite_array("beta", beta, last=robot.w)
+        b = [beta[..., i] for i in range(robot.w)]
+    columns = []
+    for u, bi in zip(robot.wheels, b):
+        jx, jy = -bk.sin(bi), bk.cos(bi)                       # j_i = R_bwi [0 1]^T, (11)
+        px, py = u.position
+        columns.append([(px * jy - py * jx) / L, jx, jy])      # [m_i / L, j_i], m_i = d_i x j_i
+    return bk.matrix([list(row) for row in zip(*columns)])
+
+
+def characterisation(robot, L=None):
+    r"""Exact statements about the zero set of :math:`\det\mathbf J`, derived from the model.
+
+    Parameters
+    ----------
+    robot : Robot
+        Three centred wheels, numeric (made exact with :func:`exact_robot`) or symbolic.
+    L : float or sympy.Expr, optional
+        Characteristic length; default a positive symbol ``L`` for a symbolic robot, else
+        :func:`wmr.characteristic_length`.
+
+    Returns
+    -------
+    dict
+        ``"det_J"``: the factored :math:`\det\mathbf J` of ``robot``;
+        ``"lines_form"``: :math:`-(r_1r_2r_3/L)\sum_{\rm cyc} m_i\sin(\beta_k-\beta_j)`;
+        ``"identity_general"``: True when :math:`\det\mathbf J = -(r_1r_2r_3/L)\det\mathbf W`
+        holds exactly for three centred wheels at **symbolic** mount points;
+        ``"identity_robot"``: the same identity for ``robot``;
+        ``"independent_of_L"``: True when ``det_J`` does not contain the symbol L;
+        ``"irreducible"``: True when the trilinear form has no factor other than constants.
+    """
+    from ..model.robot import Robot
+    from ..model.wheels import CentredWheel
+    _require_square(robot)
+    Ls = sp.Symbol("L", positive=True)
+    if L is None:
+        L = Ls if robot.is_symbolic else _default_L(robot, None)
+
+    def lines_form(bot, L):
+        b = bot.beta_symbols
+        m = [u.position[0] * sp.cos(bi) + u.position[1] * sp.sin(bi) for u, bi in zip(bot.wheels, b)]
+        rr = sp.Mul(*[u.r for u in bot.wheels])
+        return -(rr / L) * (m[0] * sp.sin(b[2] - b[1]) + m[1] * sp.sin(b[0] - b[2]) + m[2] * sp.sin(b[1] - b[0]))
+
+    xs, ys = sp.symbols("x1:4", real=True), sp.symbols("y1:4", real=True)
+    rs = sp.symbols("r1:4", positive=True)
+    gen = Robot([CentredWheel((x, y), r=ri) for x, y, ri in zip(xs, ys, rs)])
+    gdet = gen.J(None, L=Ls).det()
+    ident_general = sp.expand(sp.expand_trig(gdet - lines_form(gen, Ls))) == 0
+    ident_w = sp.expand(sp.expand_trig(gdet + sp.Mul(*rs) * plane_line_matrix(gen, None, Ls).det())) == 0
+    det = det_J_symbolic(robot, L)
+    lf = lines_form(robot, L)
+    ident_robot = sp.expand(sp.expand_trig(det - lf)) == 0
+    # irreducibility: write det J as a polynomial in c_i, s_i and factor over Q(sqrt 3)
+    cs = sp.symbols("c1:4 s1:4", real=True)
+    b = robot.beta_symbols
+    poly = sp.expand(sp.expand_trig(det)).subs({**{sp.cos(bi): cs[i] for i, bi in enumerate(b)},
+                                                **{sp.sin(bi): cs[3 + i] for i, bi in enumerate(b)}})
+    fl = sp.factor_list(sp.expand(poly), extension=sp.sqrt(3))
+    nontrivial = [f for f, _ in fl[1] if f.free_symbols & set(cs)]
+    return {"det_J": det, "lines_form": lf, "identity_general": bool(ident_general and ident_w),
+            "identity_robot": bool(ident_robot), "independent_of_L": Ls not in det.free_symbols,
+            "irreducible": len(nontrivial) == 1, "polynomial": poly}
+
+
+def det_J_polynomial(robot, L=None):
+    r""":math:`\det\mathbf J` as a polynomial in :math:`c_i = \cos\beta_i`, :math:`s_i = \sin\beta_i` (degree 1 in each pair).
+
+    Parameters
+    ----------
+    robot : Robot
+        Three centred wheels (made exact with :func:`exact_robot`).
+    L : float or sympy.Expr, optional
+        As for :func:`det_J_symbolic`.
+
+    Returns
+    -------
+    poly : sympy.Expr
+    c, s : tuple of 3 sympy.Symbol
+        The symbols :math:`c_i`, :math:`s_i`.
+    """
+    det = sp.expand(sp.expand_trig(det_J_symbolic(robot, L)))
+    c = sp.symbols("c1:4", real=True)
+    s = sp.symbols("s1:4", real=True)
+    b = robot.beta_symbols
+    poly = det.subs({**{sp.cos(bi): c[i] for i, bi in enumerate(b)}, **{sp.sin(bi): s[i] for i, bi in enumerate(b)}})
+    return sp.expand(poly), c, s
+
+
+def exact_zero(poly, c, s, dirs):
+    r"""True when the polynomial form of :math:`\det\mathbf J` vanishes identically on a parameterised family.
+
+    :math:`\det\mathbf J` is homogeneous of degree one in each wheel's :math:`(\cos\beta_i,\sin\beta_i)`,
+    so substituting unnormalised axle directions multiplies it by a non-zero factor: the zero test
+    is exact without square roots.
+
+    Parameters
+    ----------
+    poly, c, s : sympy.Expr, tuples of sympy.Symbol
+        From :func:`det_J_polynomial`.
+    dirs : list of 3 pairs of sympy.Expr
+        Axle direction of each wheel (unnormalised), in the family's free symbols.
+
+    Returns
+    -------
+    bool
+    """
+    e = poly.subs({**{c[i]: dirs[i][0] for i in range(3)}, **{s[i]: dirs[i][1] for i in range(3)}},
+                  simultaneous=True)
+    e = sp.expand(sp.expand_trig(e))
+    if e == 0:
+        return True
+    num, _ = sp.fraction(sp.cancel(sp.together(e)))
+    return sp.expand(num) == 0 or sp.simplify(e) == 0
+
+
+# -------------------------------------------------------------------------------- classify
+@dataclass(frozen=True)
+class Classification:
+    r"""What a configuration is (see :func:`classify`).
+
+    Attributes
+    ----------
+    beta : numpy.ndarray (3,)
+    det_J : float
+    singular : bool
+    rank_F : int
+    mobility : int
+    planes : Concurrency
+        Where the wheel-plane lines meet (:math:`D_P`).
+    axles : Concurrency
+        Where the axles meet (the IC).
+    coincident : tuple of (i, j)
+        Pairs of wheels whose planes coincide.
+    family : str
+        The family (see :func:`classify`), ``"regular"`` where :math:`\det\mathbf J \ne 0`.
+    """
+
+    beta: np.ndarray
+    det_J: float
+    singular: bool
+    rank_F: int
+    mobility: int
+    planes: Concurrency
+    axles: Concurrency
+    coincident: tuple = field(default_factory=tuple)
+    family: str = "regular"
+
+
+def _same_angle(a, b, period=2 * np.pi):
+    """True when a = b modulo ``period`` (within TOL)."""
+    x = np.mod(a - b + period / 2, period) - period / 2
+    return bool(near_zero(x))
+
+
+def classify(robot, beta, L=None):
+    r"""Classify one configuration of a three-centred-wheel robot.
+
+    Families: ``"i"`` (all wheel planes parallel, equal angles),
+    ``"i'"`` (parallel, some wheel turned by :math:`\pi`), ``"pair-ij"`` / ``"pair-ij'"`` (planes of
+    wheels i, j on the line :math:`P_iP_j`, with equal / half-turn-apart angles), ``"v-C"``
+    (:math:`D_P = C`), ``"v-P"`` (:math:`D_P` at a mount point), ``"v-circle"`` (axles also
+    concurrent: rotation about a point of the circle through the :math:`P_i`), ``"v"`` (any other
+    finite :math:`D_P`).
+
+    Parameters
+    ----------
+    robot : Robot
+    beta : array (3,)
+    L : float, optional
+        Characteristic length of :math:`\mathbf J_{L1}` (default :func:`wmr.characteristic_length`).
+
+    Returns
+    -------
+    Classification
+    """
+    beta = V.finite_array("beta", beta, last=robot.w)
+    if beta.ndim != 1:
+        raise ValueError(f"beta must be one configuration of shape (3,) for classify, got shape {beta.shape}")
+    dj = float(det_J(robot, beta, L))
+    sing = bool(is_singular(robot, beta, L))
+    rk = int(rank_F(robot, beta))
+    mob = 3 + robot.n_rates - rk
+    planes = concurrency_point(robot, beta)
+    axles = axles_concurrency(robot, beta)
+    P, u = wheel_plane_lines(robot, beta)
+    pairs = tuple(k for k, (kind, _) in pair_intersections(P, u).items() if kind == COINCIDENT)
+    fam = "regular"
+    if sing:
+        scale = float(np.abs(robot.mount_points).max())
+        if planes.kind == AT_INFINITY:
+            equal = all(_same_angle(beta[k], beta[0]) for k in range(1, robot.w))
+            fam = "i" if equal else "i'"
+        elif pairs:
+            i, j = pairs[0]
+            fam = f"pair-{i}{j}" + ("" if _same_angle(beta[i - 1], beta[j - 1]) else "'")
+        elif axles.kind != NONE:
+            fam = "v-circle"
+        elif planes.kind == FINITE and near_zero(np.linalg.norm(planes.point), scale):
+            fam = "v-C"
+        elif planes.kind == FINITE and np.min(np.linalg.norm(robot.mount_points - planes.point, axis=1)) <= TOL * max(1.0, scale):
+            fam = "v-P"
+        else:
+            fam = "v"
+    return Classification(beta, dj, sing, rk, mob, planes, axles, pairs, fam)
+
+
+def singular_motions(robot, beta1):
+    r"""Configurations with :math:`\beta_1` fixed where :math:`\det\mathbf J = 0` **and** rank F = 5.
+
+    These are the points where a slice :math:`\beta_1 = {\rm const}` of the singular surface meets
+    the set of configurations that admit motion: all planes parallel (families (i), (i')) and
+    rotations about the second point :math:`U^*` where the axle of wheel 1 meets the circle through
+    the :math:`P_i` (family v-circle; none when the axle is tangent to the circle).
+
+    Parameters
+    ----------
+    robot : Robot
+        Three centred wheels.
+    beta1 : float
+        Radians.
+
+    Returns
+    -------
+    beta : numpy.ndarray (n, 3)
+        In :math:`(-\pi, \pi]`.
+    family : list of str
+        From :func:`classify`.
+    """
+    _require_square(robot)
+    rows = []
+    for a in (0.0, np.pi):
+        for b in (0.0, np.pi):
+            rows.append([beta1, beta1 + a, beta1 + b])
+    c, R = circumcircle(robot.mount_points)
+    p = robot.mount_points[0]
+    i1 = np.array([np.cos(beta1), np.sin(beta1)])
+    t = -2.0 * float(i1 @ (p - c))
+    if not near_zero(t, R):
+        U = p + t * i1
+        base = axles_through(robot, U)
+        for a in (0.0, np.pi):
+            for b in (0.0, np.pi):
+                rows.append([beta1, base[1] + a, base[2] + b])
+    beta = wrap_angle(np.array(rows))
+    return beta, [classify(robot, b_).family for b_ in beta]
