@@ -1,0 +1,49 @@
+"""The ``wmr`` command line: ``wmr COMMAND ...`` (also ``python -m wmr``).
+
+Each command lives in its own module of this package (one file per command) and provides
+
+* ``HELP``: one line for ``wmr --help``;
+* ``add_arguments(parser)``: its options (an :class:`argparse.ArgumentParser`);
+* ``run(args) -> int``: the exit status (0 ok, 2 bad input: a one-line message on stderr, no
+  traceback).
+
+:data:`COMMANDS` lists them in the order ``wmr --help`` shows.
+"""
+from __future__ import annotations
+
+import argparse
+import importlib
+import sys
+
+__all__ = ["COMMANDS", "main"]
+
+#: command name -> module of this package that implements it
+COMMANDS = {}
+
+
+def _parser():
+    p = argparse.ArgumentParser(prog="wmr", description="Kinematics of wheeled mobile robots: mobility, "
+                                "isotropy, singularities and kinematics of a robot described in a TOML file.")
+    sub = p.add_subparsers(dest="command", metavar="COMMAND", required=True)
+    for name, module in COMMANDS.items():
+        mod = importlib.import_module(f"{__name__}.{module}")
+        mod.add_arguments(sub.add_parser(name, help=mod.HELP, description=mod.HELP))
+    return p
+
+
+def main(argv=None):
+    """Run the command line.
+
+    Parameters
+    ----------
+    argv : list of str, optional
+        Arguments after the program name (default ``sys.argv[1:]``).
+
+    Returns
+    -------
+    int
+        Exit status.
+    """
+    args = _parser().parse_args(sys.argv[1:] if argv is None else argv)
+    mod = importlib.import_module(f"{__name__}.{COMMANDS[args.command]}")
+    return mod.run(args)
