@@ -303,3 +303,21 @@ def test_make_test_fails_when_the_build_modifies_tracked_files(tmp_path, determi
 def test_ci_runs_the_readme_test_command():
     assert re.search(r"^make test$", (ROOT / ".ci" / "run").read_text(), re.M)
     assert re.search(r"^test:.*\n\t@\$\(BUILD\) test$", (ROOT / "Makefile").read_text(), re.M)
+
+
+# ----------------------------------------------------------------------------- the tool itself
+BUILD_MODULES = sorted(p.stem for p in (ROOT / "tools" / "build").glob("*.py") if p.stem != "__main__")
+
+
+@pytest.mark.parametrize("name", BUILD_MODULES)
+def test_build_modules_are_small_documented_and_doctested(name):
+    import doctest
+    import importlib
+    mod = importlib.import_module(f"tools.build.{name}" if name != "__init__" else "tools.build")
+    path = Path(mod.__file__)
+    n = len(path.read_text().splitlines())
+    assert n <= 400, f"{path.name} has {n} lines: split it (one responsibility per module)"
+    assert (mod.__doc__ or "").strip(), f"{path.name} has no module docstring"
+    assert name == "__init__" or hasattr(mod, "__all__") or name in ("worker",), f"{path.name} has no __all__"
+    res = doctest.testmod(mod, optionflags=doctest.ELLIPSIS)
+    assert res.failed == 0
