@@ -5,7 +5,8 @@ model's definitions, :math:`\mathbf J_2 = \mathrm{blockdiag}(\mathbf R(\beta_i)\
 :math:`\mathbf R(\beta)` of (11) written out with ``np.cos`` and ``np.sin`` and multiplied by the
 unit's local block, :math:`\mathbf F = [\mathbf J_1\ -\mathbf J_2]` (24),
 :math:`\mathbf J = \mathbf J_{L1}^T\mathbf J_2` (56); every rank and condition number comes from a
-full SVD with the rule of :mod:`wmr.model.tolerance`; kinematics are pseudo-inverse solutions
+full SVD with the rule of :mod:`wmr.model.tolerance` (the same two lines of
+:mod:`wmr.analysis.linalg` that turn singular values into a rank or a condition number); kinematics are pseudo-inverse solutions
 of the whole system (21).  The tests and ``make bench`` compare the batched kernels
 (:meth:`wmr.Robot.J`, :func:`wmr.rank_F`, :func:`wmr.analysis.linalg.det`,
 :func:`wmr.condition_number`, :func:`wmr.forward`, :func:`wmr.inverse`) with these on random,
@@ -17,7 +18,8 @@ import numpy as np
 
 from ..model import validation as V
 from ..model.backend import NUMERIC
-from ..model.tolerance import TOL, near_zero
+from ..model.tolerance import near_zero
+from .linalg import _kappa_from_sv, _rank_from_sv
 
 __all__ = ["J2", "F", "J", "rank", "rank_F", "det", "condition_number", "forward", "inverse"]
 
@@ -81,7 +83,7 @@ def _sv(A):
 
 
 def rank(A):
-    """Rank by the SVD rule: singular values above ``TOL * max(1, s_max)``.
+    """Rank from a full SVD by the package's rule (singular values above ``TOL * max(1, s_max)``).
 
     Parameters
     ----------
@@ -91,8 +93,7 @@ def rank(A):
     -------
     numpy.ndarray of int (...)
     """
-    s = _sv(A)
-    return np.sum(s > TOL * np.maximum(1.0, s[..., :1]), axis=-1)
+    return _rank_from_sv(_sv(A))
 
 
 def rank_F(robot, beta):
@@ -125,7 +126,7 @@ def det(A):
 
 
 def condition_number(A):
-    r""":math:`\kappa = \sigma_l/\sigma_s` (30) from the SVD, ``inf`` below the rank rule.
+    r""":math:`\kappa = \sigma_l/\sigma_s` (30) from a full SVD, ``inf`` where the rank rule says singular.
 
     Parameters
     ----------
@@ -135,10 +136,7 @@ def condition_number(A):
     -------
     numpy.ndarray (...)
     """
-    s = _sv(A)
-    singular = s[..., -1] <= TOL * np.maximum(1.0, s[..., 0])
-    with np.errstate(divide="ignore", invalid="ignore"):
-        return np.where(singular, np.inf, s[..., 0] / np.where(singular, 1.0, s[..., -1]))
+    return _kappa_from_sv(_sv(A))
 
 
 def forward(robot, beta, rates):
