@@ -76,8 +76,8 @@ report: venv tex ## build/report.html + build/report.pdf (cached: < 1 s when not
 test: venv tex ## execute notebooks, pytest, then fail if the build modified tracked files
 	@$(BUILD) test
 
-bench: venv ## timings of the batched kernels (tools/bench.py)
-	@if [ -f tools/bench.py ]; then $(VPY) tools/bench.py; else $(VPY) tests/bench.py; fi
+bench: venv ## time the batched kernels against floors and peers (tools/bench.py)
+	@$(VPY) tools/bench.py
 
 clean: ## remove build/ and caches (committed figures/ are kept)
 	rm -rf build .pytest_cache .hypothesis

@@ -11,6 +11,7 @@ paper's catalogue is here.
 from __future__ import annotations
 
 import csv
+import io
 from dataclasses import dataclass
 
 import numpy as np
@@ -22,6 +23,7 @@ from ..analysis.singularities import (_require_square, classify, det_J, det_J_po
                                       exact_zero, numeric_robot)
 from ..model.platform import wrap_angle
 from ..model.robots import paper_robot
+from .files import atomic_write
 from .text import bound
 from .text import degrees as _deg
 
@@ -87,6 +89,7 @@ class Family:
     classified_as: str = ""
 
     def row(self):
+        """The family as a row of ``singularities.csv`` (columns :data:`COLUMNS`; numbers as text)."""
         return {
             "family": self.family, "configuration": self.configuration,
             "geometric_meaning": self.geometric_meaning,
@@ -152,11 +155,12 @@ def families(robot=None, n=72, exact=True):
         b[:, k] += np.pi
         rev.append(b)
     out.append(Family(
-        "i'", "(i') parallel, one wheel turned by 180 deg",
+        "i'", r"(i') parallel, one wheel turned by $180^\circ$",
         r"$\beta_j=\beta_k=\beta$, $\beta_i=\beta+180^\circ$ (3 choices of i), $\beta$ free",
         r"the same parallel planes as (i): $\beta$ and $\beta+\pi$ give the same wheel plane",
-        "no", "(i)", "The printed (i) requires equal angles; a wheel turned half a turn has the same plane "
-        "(its column of J only changes sign). Translation is still possible (rank F = 5).",
+        "no", "(i)", r"The printed (i) requires equal angles; a wheel turned half a turn has the same plane "
+        r"(its column of $\mathbf J$ only changes sign). Translation is still possible "
+        r"($\operatorname{rank}\mathbf F = 5$).",
         samples=np.concatenate(rev),
         exact=lambda: _exact_dirs_angles([tau + sp.pi, tau, tau])))
 
@@ -175,18 +179,19 @@ def families(robot=None, n=72, exact=True):
             a1, a2 = _deg(wrap_angle(a)), _deg(wrap_angle(a + np.pi))
             if not prime:
                 conf = rf"$\beta_{i}=\beta_{j}={a1}^\circ$ or $\beta_{i}=\beta_{j}={a2}^\circ$, $\beta_{k}$ free"
-                fam = f"{item} planes {i},{j} coincident"
-                listed, note = "yes", (f"Fig. 11; line $P_{i}P_{j}$ carries both planes; axles {i} and {j} parallel, so "
-                                       "rank F = 6 unless the third plane is parallel too (then it is (i) or (i')).")
+                fam = f"{item} planes {i}, {j} coincident"
+                listed, note = "yes", (rf"Fig. 11; line $P_{i}P_{j}$ carries both planes; axles {i} and {j} parallel, so "
+                                       r"$\operatorname{rank}\mathbf F = 6$ unless the third plane is parallel too "
+                                       "(then it is (i) or (i')).")
             else:
                 conf = rf"$\beta_{i}={a1}^\circ,\ \beta_{j}={a2}^\circ$ or $\beta_{i}={a2}^\circ,\ \beta_{j}={a1}^\circ$, $\beta_{k}$ free"
-                fam = f"{item}' planes {i},{j} coincident, half-turn apart"
+                fam = f"{item}' planes {i}, {j} coincident, half a turn apart"
                 listed = "no"
-                note = (f"The printed {item} gives equal angles; one wheel of the pair turned by 180 deg has the "
-                        "same plane, so these are singular too.")
+                note = (f"The printed {item} gives equal angles; one wheel of the pair turned by "
+                        r"$180^\circ$ has the same plane, so these are singular too.")
             out.append(Family(
                 f"pair-{i}{j}" + ("'" if prime else ""), fam, conf,
-                rf"planes of wheels {i} and {j} coincide with the line $P_{i}P_{j}$; $D_P$ = where plane {k} "
+                rf"planes of wheels {i} and {j} coincide with the line $P_{i}P_{j}$; $D_P$ is where plane {k} "
                 "crosses it", listed, item, note, samples=np.concatenate(rows),
                 exact=(lambda i=i, j=j, k=k, ai=ai, prime=prime: _exact_dirs_angles(
                     [ai if w == i else (ai + (sp.pi if prime else 0) if w == j else th) for w in (1, 2, 3)]))))
@@ -212,15 +217,15 @@ def families(robot=None, n=72, exact=True):
         "v", "(v) planes concurrent", r"$\ell_1,\ell_2,\ell_3$ concurrent at a finite $D_P$ (2 free parameters; "
         r"each $\beta_i$ or $\beta_i+180^\circ$)",
         r"the three wheel-plane lines meet at one point $D_P$; generically the axles meet pairwise at three points",
-        "yes", "(v)", "Fig. 12b. Contains (ii)-(iv) (two planes on a side line) and the rows v-a, v-b, v-c; "
-        "rank F = 5 only where $D_P$ is on the circle through the $P_i$ (row v-c).",
+        "yes", "(v)", "Fig. 12b. Contains (ii)-(iv) (two planes on a side line) and the rows (v-a), (v-b), (v-c); "
+        r"$\operatorname{rank}\mathbf F = 5$ only where $D_P$ is on the circle through the $P_i$ (row (v-c)).",
         samples=samples_v, exact=lambda: dirs_through(x, y, (0, 1, 0))))
     bC = planes_through(num, [0.0, 0.0])
     out.append(Family(
         "v-C", "(v-a) planes through C",
         rf"$\beta=({_deg(bC[0])}^\circ, {_deg(bC[1])}^\circ, {_deg(bC[2])}^\circ)$, each $+180^\circ$ optional",
         r"$D_P=C$: every wheel plane contains the operation point; no twist is admissible",
-        "yes", "(v)", "Fig. 12a (braking at rest). Isolated points (8 of them).",
+        "yes", "(v)", f"Fig. 12a (braking at rest). Isolated points ({len(flips)} of them).",
         samples=bC[None, :] + flips, exact=lambda: dirs_through(0, 0)))
     rows = []
     for kk in range(3):
@@ -238,7 +243,7 @@ def families(robot=None, n=72, exact=True):
     out.append(Family(
         "v-P", "(v-b) planes through a mount point",
         rf"e.g. $\beta_1\equiv{a13}^\circ,\ \beta_2\equiv{a23}^\circ \pmod{{180^\circ}}$, $\beta_3$ free ($D_P=P_3$); likewise at $P_1$, $P_2$",
-        r"$D_P=P_k$: the other two planes lie on the sides through $P_k$; wheel k may take any angle",
+        r"$D_P=P_k$: the other two planes lie on the sides through $P_k$; wheel $k$ may take any angle",
         "partly", "(v)", "Implied by (v) but, unlike (ii)-(iv), not identified as a family with a free angle.",
         samples=np.concatenate(rows),
         exact=lambda: [(sp.cos(th), sp.sin(th)) if w == 2 else dirs_through(*Pex[2])[w] for w in range(3)]))
@@ -255,11 +260,12 @@ def families(robot=None, n=72, exact=True):
         uy = ccy + Rex * 2 * th / (1 + th**2)
         return [(ux - px, uy - py) for px, py in Pex]            # i_i || U - P_i
     out.append(Family(
-        "v-circle", "(v-c) rotation about a point of the circle through P1, P2, P3",
-        r"axles through U on the circle through $P_1,P_2,P_3$ (radius L about C), U free",
+        "v-circle", r"(v-c) rotation about a point of the circle through $P_1, P_2, P_3$",
+        r"axles through $U$ on the circle through $P_1, P_2, P_3$ (radius $L$ about $C$), $U$ free",
         r"$U$ and $D_P$ antipodal on the circumcircle: each $P_i$ sees them at a right angle (Thales)",
-        "no", "(v)", "det J = 0 while rank F = 5: the robot CAN rotate about U, contradicting the statement "
-        "that in (v) it has lost all mobility; every rotation about a point at distance L from C is J-singular.",
+        "no", "(v)", r"$\det\mathbf J = 0$ while $\operatorname{rank}\mathbf F = 5$: the robot *can* rotate about "
+        r"$U$, contradicting the statement that in (v) it has lost all mobility; every rotation about a point at "
+        r"distance $L$ from $C$ passes through a singular $\mathbf J$.",
         samples=samples_c, exact=circle_dirs))
 
     poly, c, s = det_J_polynomial(exact_bot)
@@ -323,13 +329,11 @@ def table(robot=None, n=72, exact=True):
 
 
 def write_csv(path, robot=None, n=72, exact=True):
-    """Write ``singularities.csv`` (columns :data:`COLUMNS`); returns the rows."""
-    import csv
+    """Write ``singularities.csv`` (columns :data:`COLUMNS`) atomically; returns the rows."""
     rows = table(robot, n=n, exact=exact)
-    with open(path, "w", newline="", encoding="utf-8") as f:
-        w = csv.DictWriter(f, fieldnames=COLUMNS, lineterminator="\n")
-        w.writeheader()
-        w.writerows(rows)
+    buf = io.StringIO()
+    w = csv.DictWriter(buf, fieldnames=COLUMNS, lineterminator="\n")
+    w.writeheader()
+    w.writerows(rows)
+    atomic_write(path, buf.getvalue())
     return rows
-
-

@@ -1,5 +1,7 @@
 """Drawing robots with matplotlib (imported on demand: ``import wmr`` does not import matplotlib).
 
-:mod:`wmr.plot.style` holds the palette and the figure style; :mod:`wmr.plot.robot` the drawing
-primitives (platform, wheel units, axle and wheel-plane lines, frames, arrows, labels).
+- :mod:`wmr.plot.style`: palette, line and font sizes, matplotlib settings, figures and views;
+- :mod:`wmr.plot.annotate`: labels, points, arrows, frames, angles, construction lines, boxes, legends;
+- :mod:`wmr.plot.robot`: the robot seen from above (platform, wheel units, axle and wheel-plane lines).
 """
+__all__ = ["style", "annotate", "robot"]

@@ -1,0 +1,88 @@
+r"""Fig. 10: the singular configuration :math:`\beta_1=\beta_2=\beta_3` (item (i), IC at infinity).
+
+With the computed :math:`\det\mathbf J` (exact and float), rank F and the admissible twist.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ...analysis.mobility import admissible_twists
+from ..text import residual as residual_text
+from .common import (ABS_DET_J, DEG, L_PAPER, SingularConfig, beta_text, centred_robot, config_lines, drawing,
+                     singular_config, snap)
+
+__all__ = ["NUMBER", "TITLE", "PAPER_CAPTION", "Fig10Data", "data", "draw", "caption"]
+
+NUMBER = "10"
+TITLE = "Singular configuration with IC at infinity"
+PAPER_CAPTION = r"Singular configuration with IC at infinity ($\beta_1 = \beta_2 = \beta_3$)."
+
+
+@dataclass(frozen=True)
+class Fig10Data:
+    r"""The numbers of Fig. 10.
+
+    Attributes
+    ----------
+    beta : float
+        The common steering angle, degrees.
+    config : SingularConfig
+    admissible : tuple (3,)
+        Unit twist :math:`(\dot\psi, \dot{\mathbf c})` spanning the admissible twists
+        (:func:`wmr.admissible_twists`), signed so that its largest component is positive.
+    """
+
+    beta: float
+    config: SingularConfig
+    admissible: tuple
+    robot: object = drawing(default=None)
+
+
+def data(beta=30.0):
+    """The configuration :math:`\\beta_i = ` ``beta`` (degrees) for every wheel; returns :class:`Fig10Data`."""
+    bot = centred_robot()
+    bdeg = [beta] * 3
+    b = np.asarray(bdeg) * DEG
+    A = admissible_twists(bot, b)
+    if A.shape[1] != 1:
+        raise ValueError(f"expected one admissible direction at beta = {beta!r} deg, found {A.shape[1]}")
+    t = A[:, 0] / np.linalg.norm(A[:, 0])
+    t = t if t[np.argmax(np.abs(t))] > 0 else -t
+    return Fig10Data(beta=beta, config=singular_config(bot, b, exact_deg=bdeg), admissible=tuple(t.tolist()),
+                     robot=bot)
+
+
+def draw(data, fig=None):
+    """Draw Fig. 10 from its data; returns the Figure."""
+    from ...plot import annotate as an
+    from ...plot.style import PALETTE, fit_view, new_figure, style
+    from .sketch import LINES_LEGEND, draw_singular
+    cfg = data.config
+    with style():
+        fig, (ax,) = new_figure(1, 1, width=5.0, height=4.6, fig=fig)
+        g, ext = draw_singular(ax, data.robot, cfg)
+        v = snap(data.admissible[1:]) / np.linalg.norm(data.admissible[1:])
+        v = v if v[1] >= 0 else -v
+        for sgn in (1, -1):
+            an.draw_arrow(ax, g.C + sgn * 0.06 * v, sgn * 0.5 * v, color=PALETTE["green"], lw=2.0, head=11, zorder=9)
+        an.label(ax, g.C + 0.5 * v, r"$\dot{\mathbf{c}}$", offset=(-7, 0), ha="right", va="center",
+                 color=PALETTE["green"])
+        fit_view(ax, ext, pad=0.06)
+        an.info_box(ax, [beta_text(cfg.beta_deg) + ": wheel planes and axles parallel, IC at infinity"]
+                    + config_lines(cfg), below=True)
+        fig.legend(handles=an.legend_handles(LINES_LEGEND[:2] + [("admissible motion", f"path:{PALETTE['green']}")]),
+                   loc="outside upper center", ncols=3)
+        an.scale_bar(ax, L_PAPER, "$L$", loc=(0.03, 0.03))
+    return fig
+
+
+def caption(data):
+    """Our caption of Fig. 10 (Markdown with ``$...$``)."""
+    cfg = data.config
+    return (rf"Singular configuration with the IC at infinity, $\beta_1 = \beta_2 = \beta_3 = {data.beta:g}^\circ$ "
+            rf"(item (i)). Computed: $\det\mathbf{{J}} = {cfg.det_J_exact}$ exactly "
+            rf"(${residual_text(ABS_DET_J, abs(cfg.det_J))}$ in floating point), rank $\mathbf{{F}} = "
+            rf"{cfg.rank_F}$ (mobility {cfg.mobility}): the wheel planes (dash-dotted) and the axles (dashed) are "
+            r"parallel, and the only admissible motion is the translation along the wheel planes (green).")

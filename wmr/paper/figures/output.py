@@ -1,0 +1,78 @@
+"""Rendering a figure to bytes and writing its files: deterministic, atomic, with no per-build data.
+
+A figure is rendered once per format in memory (:func:`render`) and each file is then written
+atomically (:func:`wmr.paper.files.atomic_write`).  The files are the same on every machine and
+every run: matplotlib settings from :data:`wmr.plot.style.RC` (fixed SVG hash salt, text as
+paths), metadata without dates, no git commit or path inside (the report names the commit), and
+numbers in the JSON without round-off digits (:func:`wmr.paper.figures.common.numbers`).
+"""
+from __future__ import annotations
+
+import io
+import json
+
+from ..files import atomic_write
+from .common import numbers
+
+__all__ = ["FORMATS", "formats", "render", "record", "write"]
+
+#: Formats written for a figure unless its module says otherwise (``FORMATS`` in the module).
+FORMATS = ("svg", "pdf", "png")
+
+
+def formats(module):
+    """The formats written for a figure module (its ``FORMATS``, else :data:`FORMATS`)."""
+    return tuple(getattr(module, "FORMATS", FORMATS))
+
+
+def _metadata(fmt, title, creator):
+    if fmt == "svg":
+        return {"Title": title, "Creator": creator, "Date": None}
+    if fmt == "pdf":
+        return {"Title": title, "Creator": creator, "CreationDate": None, "ModDate": None}
+    return {"Title": title, "Software": creator}
+
+
+def render(fig, fmts, *, title="", creator="wmr"):
+    """Render ``fig`` to each format in ``fmts``; returns ``{fmt: bytes}``.
+
+    PNG is rendered first (at ``savefig.dpi``); the layout is then frozen, so every format shows
+    the same layout.
+
+    Parameters
+    ----------
+    fig : matplotlib.figure.Figure
+    fmts : sequence of str
+        ``"png"``, ``"svg"``, ``"pdf"``.
+    title, creator : str
+        Metadata (no dates, no commit).
+
+    Returns
+    -------
+    dict
+    """
+    from ...plot.style import style
+    out = {}
+    with style():
+        for k, fmt in enumerate(sorted(fmts, key=lambda f: f != "png")):
+            buf = io.BytesIO()
+            fig.savefig(buf, format=fmt, metadata=_metadata(fmt, title, creator))
+            out[fmt] = buf.getvalue()
+            if k == 0 and fig.get_layout_engine() is not None:
+                fig.set_layout_engine("none")
+    return out
+
+
+def record(key, module, data):
+    """The JSON record of a figure: key, number, title, the paper's caption, our caption, the numbers, the formats."""
+    return {"key": key, "number": module.NUMBER, "title": module.TITLE, "paper_caption": module.PAPER_CAPTION,
+            "caption": module.caption(data), "numbers": numbers(data), "formats": list(formats(module))}
+
+
+def write(outdir, key, files, rec):
+    """Write ``outdir/<key>.<fmt>`` for each rendered file and ``outdir/<key>.json``; returns the paths."""
+    from pathlib import Path
+    outdir = Path(outdir)
+    paths = [atomic_write(outdir / f"{key}.{fmt}", blob) for fmt, blob in files.items()]
+    paths.append(atomic_write(outdir / f"{key}.json", json.dumps(rec, indent=2, ensure_ascii=False) + "\n"))
+    return paths
