@@ -89,15 +89,25 @@ def kernel_running(marker):
 
 
 # ----------------------------------------------------------------------------- failing notebook
-def test_failing_notebook_leaves_no_report_that_looks_current(tmp_path):
+def test_failing_notebook_fails_loudly_and_leaves_no_report(tmp_path):
     tree = build.Tree(quick_tree(tmp_path))
-    build.report(tree, html_only=True)
+    nb = tmp_path / "notebooks" / "01_quick.ipynb"
+    build.report(tree, html_only=True)                                 # a good report first
     assert tree.report_html.exists() and tree.report_stamp.exists()
-    write_nb(tmp_path / "notebooks" / "01_quick.ipynb", ["raise RuntimeError('broken on purpose')"])
-    with pytest.raises(build.BuildError, match="broken on purpose"):
+    write_nb(nb, ["x = 41", "def f(y):\n    raise ValueError(f'deliberate failure {y}')\nf(x + 1)"])
+    with pytest.raises(build.BuildError) as ei:
         build.report(tree, html_only=True)
-    left = [p.name for p in (tree.report_html, tree.report_pdf, tree.report_stamp, tree.report_notebook) if p.exists()]
-    assert not left, f"a failed build left {left} in build/"
+    msg = str(ei.value)
+    assert "01_quick.ipynb" in msg                                     # which notebook
+    assert "raise ValueError(f'deliberate failure {y}')" in msg        # the failing cell's source
+    assert "ValueError: deliberate failure 42" in msg                  # the traceback
+    assert "\x1b[" not in msg                                          # readable, no ANSI colours
+    left = [p.name for p in (tree.report_html, tree.report_pdf, tree.report_stamp, tree.report_notebook,
+                             tree.executed_notebook(nb), tree.notebook_stamp(nb)) if p.exists()]
+    assert not left, f"a failed build left {left} behind"
+    assert not [p for p in tree.executed.iterdir() if p.name.endswith(".tmp")]
+    from tools.build.cli import main
+    assert main(["--root", str(tmp_path), "execute"]) == 1
 
 
 # ----------------------------------------------------------------------------- atomic writes
@@ -137,8 +147,11 @@ def test_atomic_path_keeps_old_file_on_error(tmp_path):
 
 
 # ----------------------------------------------------------------------------- stamps
-def test_truncated_report_and_garbage_stamp_are_rebuilt(tmp_path, capsys):
+def test_damaged_outputs_and_stamps_are_rebuilt(tmp_path, capsys):
+    """A truncated report, a garbage stamp, a truncated executed notebook: never "up to date"."""
+    import nbformat
     tree = build.Tree(quick_tree(tmp_path))
+    nb = tmp_path / "notebooks" / "01_quick.ipynb"
     build.report(tree, html_only=True)
     good = tree.report_html.read_bytes()
     capsys.readouterr()
@@ -148,22 +161,16 @@ def test_truncated_report_and_garbage_stamp_are_rebuilt(tmp_path, capsys):
     build.report(tree, html_only=True)
     assert "assembled" in capsys.readouterr().out
     assert tree.report_html.read_bytes() == good
-    tree.report_stamp.write_text("garbage{")                           # garbage stamp
+    tree.report_stamp.write_text("garbage{")                           # garbage report stamp
     build.report(tree, html_only=True)
     assert "assembled" in capsys.readouterr().out
-    nb = tmp_path / "notebooks" / "01_quick.ipynb"
+    out = tree.executed_notebook(nb)
+    out.write_bytes(out.read_bytes()[:200])                            # truncated: not JSON any more
+    build.report(tree, html_only=True)                                 # re-executed, no NotJSONError
+    assert "01_quick.ipynb (" in capsys.readouterr().out
+    assert nbformat.read(out, as_version=4).cells
     tree.notebook_stamp(nb).write_text("\x00\x01 not a stamp")         # garbage notebook stamp
     assert build.execute(tree, merge=False) == ["01_quick.ipynb"]
-
-
-def test_truncated_executed_notebook_heals_itself(tmp_path):
-    tree = build.Tree(quick_tree(tmp_path))
-    build.report(tree, html_only=True)
-    out = tree.executed_notebook(tmp_path / "notebooks" / "01_quick.ipynb")
-    out.write_bytes(out.read_bytes()[:200])                            # not JSON any more
-    build.report(tree, html_only=True)                                 # no NotJSONError: re-executed
-    import nbformat
-    assert nbformat.read(out, as_version=4).cells
 
 
 def test_stamp_rejects_changed_outputs(tmp_path):
@@ -253,7 +260,7 @@ def test_stop_during_pdf_export_removes_latex_dir(tmp_path):
 
 # ----------------------------------------------------------------------------- lock
 def test_two_builds_of_one_tree_run_one_after_the_other(tmp_path):
-    write_nb(tmp_path / "notebooks" / "01_a.ipynb", ["import time\ntime.sleep(3)"])
+    write_nb(tmp_path / "notebooks" / "01_a.ipynb", ["import time\ntime.sleep(2)"])
     cmd = [PY, "-m", "tools.build", "--root", str(tmp_path), "execute"]
     kw = dict(cwd=ROOT, env=dict(os.environ, PYTHONPATH=str(ROOT)), stdout=subprocess.PIPE,
               stderr=subprocess.STDOUT, text=True)

@@ -1,5 +1,5 @@
-"""Every notebook executes cleanly through the build (cached: `make test` has just run them), and
-a failing notebook fails the build loudly and leaves nothing behind that looks current."""
+"""Every notebook executes cleanly through the build (cached: `make test` has just run them); the
+cache re-executes exactly what changed (a failing notebook: ``test_build.py``)."""
 from __future__ import annotations
 
 import os
@@ -61,28 +61,6 @@ def write_nb(path: Path, sources: list[str], markdown: str | None = None) -> Pat
     return path
 
 
-def test_failing_notebook_fails_build_and_leaves_nothing(tmp_path):
-    tree = build.Tree(tmp_path)
-    nb = tmp_path / "notebooks" / "99_broken.ipynb"
-    write_nb(nb, ["x = 41", "x + 1"])                     # a good version first: output + stamp exist
-    assert build.execute(tree, merge=False) == ["99_broken.ipynb"]
-    out, stamp = tree.executed_notebook(nb), tree.notebook_stamp(nb)
-    assert out.exists() and stamp.exists()
-    write_nb(nb, ["x = 41", "def f(y):\n    raise ValueError(f'deliberate failure {y}')\nf(x + 1)"])
-    with pytest.raises(build.BuildError) as ei:
-        build.execute(tree, merge=False)
-    msg = str(ei.value)
-    assert "99_broken.ipynb" in msg                                # which notebook
-    assert "raise ValueError(f'deliberate failure {y}')" in msg    # the failing cell's source
-    assert "ValueError: deliberate failure 42" in msg              # the traceback
-    assert "\x1b[" not in msg                                      # readable, no ANSI colours
-    assert not out.exists(), "stale executed notebook left behind"
-    assert not stamp.exists(), "stale stamp left behind"
-    assert not [p for p in tree.executed.iterdir() if p.name.endswith(".tmp")]
-    from tools.build.cli import main
-    assert main(["--root", str(tmp_path), "execute"]) == 1
-
-
 def test_cache_reexecutes_only_changed_notebook(tmp_path):
     tree = build.Tree(tmp_path)
     a, b = tmp_path / "notebooks" / "01_a.ipynb", tmp_path / "notebooks" / "02_b.ipynb"
@@ -99,16 +77,8 @@ def test_cache_reexecutes_only_changed_notebook(tmp_path):
     os.utime(b)                                                    # a new mtime, same bytes
     assert build.execute(tree, merge=False) == []
     write_nb(b, ["2 + 2"])
+    assert [p.name for p in stale_notebooks(tree)] == ["02_b.ipynb"]
     assert build.execute(tree, merge=False) == ["02_b.ipynb"]
     (tmp_path / "wmr").mkdir()
     (tmp_path / "wmr" / "__init__.py").write_text("# package changed\n")
-    assert build.execute(tree, merge=False) == ["01_a.ipynb", "02_b.ipynb"]  # wmr change: all stale
-
-
-def test_stale_list_follows_execution(tmp_path):
-    tree = build.Tree(tmp_path)
-    for k in range(3):
-        write_nb(tmp_path / "notebooks" / f"0{k}_n.ipynb", [f"{k} * 2"])
-    assert [p.name for p in stale_notebooks(tree)] == ["00_n.ipynb", "01_n.ipynb", "02_n.ipynb"]
-    build.execute(tree, merge=False)
-    assert stale_notebooks(tree) == []
+    assert [p.name for p in stale_notebooks(tree)] == ["01_a.ipynb", "02_b.ipynb"]  # wmr change: all stale

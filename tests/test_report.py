@@ -175,8 +175,6 @@ def test_html_inlines_the_pinned_mathjax(html_text):
 
 def test_html_size(html_text):
     size = len(html_text.encode("utf-8"))
-    if DATA_PENDING and size > MAX_HTML_BYTES:
-        pytest.xfail(f"{size / 1e6:.2f} MB: the chapters still show the figures a second time (untagged cells)")
     assert size <= MAX_HTML_BYTES, f"build/report.html is {size / 1e6:.2f} MB (limit {MAX_HTML_BYTES / 1e6:.0f} MB)"
 
 
@@ -212,7 +210,6 @@ def test_each_figure_embedded_once(html_text):
                                 .decode("utf-8", "replace")), f"{f.key}: a raster image inside the SVG"
 
 
-@pending
 def test_paper_figures_only_in_the_figures_section(html_text):
     """A chapter's figure cell is replaced by a reference: no chapter output repeats a figure."""
     pngs = {base64.b64encode(f.images["png"].read_bytes()).decode()
