@@ -73,8 +73,8 @@ test: venv tex ## execute notebooks, then pytest (package tests + notebook/repor
 	@rc=0; $(VPY) -m pytest || rc=$$?; \
 	if [ $$rc -eq 5 ]; then echo "pytest collected no tests: failing"; exit 1; fi; exit $$rc
 
-bench: venv ## run tests/bench.py
-	@$(VPY) tests/bench.py
+bench: venv ## time the batched kernels against floors and peers (tools/bench.py)
+	@$(VPY) tools/bench.py
 
 clean: ## remove build/ and caches (committed figures/ are kept)
 	rm -rf build .pytest_cache .hypothesis

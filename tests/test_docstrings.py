@@ -16,7 +16,8 @@ import wmr
 CORE_MODULES = ["wmr", "wmr.model.backend", "wmr.model.conventions", "wmr.model.platform", "wmr.model.wheels", "wmr.model.robot",
                 "wmr.model.robots", "wmr.analysis.linalg", "wmr.analysis.mobility", "wmr.analysis.isotropy", "wmr.analysis.kinematics", "wmr.analysis.steering",
                 "wmr.analysis.simulation", "wmr.model.tolerance", "wmr.paper.ledger", "wmr.paper.verify", "wmr.paper.symbols",
-                "wmr.analysis._batch"]
+                "wmr.analysis._batch", "wmr.analysis.sweep", "wmr.analysis.reference", "wmr.analysis._closed",
+                "wmr.cli.sweep"]
 
 
 def _public_callables():

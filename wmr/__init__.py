@@ -28,6 +28,7 @@ from .model.robot import Robot
 from .model.robots import equilateral_mounts, paper_robot
 from .analysis.simulation import simulate
 from .analysis.steering import centre_to_wheels, instantaneous_centre, steering_angles
+from .analysis.sweep import sweep
 from .model.tolerance import TOL
 from .model.wheels import CentredWheel, DualWheel, OffsetWheel
 
@@ -36,6 +37,6 @@ __all__ = [
     "E", "rotation", "point_velocity", "rank", "nullity", "null_space", "rank_F", "mobility",
     "admissible_twists", "condition_number", "is_isotropic", "characteristic_length",
     "forward", "inverse", "instantaneous_centre", "steering_angles", "centre_to_wheels",
-    "simulate", "TOL", "NUMERIC", "SYMBOLIC", "conventions",
+    "simulate", "sweep", "TOL", "NUMERIC", "SYMBOLIC", "conventions",
 ]
 __version__ = "0.1.0"

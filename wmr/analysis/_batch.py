@@ -1,18 +1,116 @@
-"""Run a batched NumPy kernel over chunks of the leading axes on all cores.
+"""Run batched NumPy kernels over chunks of the batch axis, on several threads.
 
-NumPy's batched ``linalg`` routines release the GIL, so threads give real parallelism.
+NumPy's ufuncs and its batched ``linalg`` routines release the GIL, so threads give real
+parallelism.  Two helpers:
+
+* :func:`map_matrices` applies a batched routine (an SVD, say) to a stack of matrices chunk by chunk;
+* :func:`for_chunks` calls a fused kernel ``fn(start, stop)`` on consecutive chunks of a batch,
+  which reads its inputs and writes its outputs in place.  Chunks of :data:`CHUNK` items keep a
+  kernel's temporaries in the core's cache, which matters as much as the threads.
+
+The number of threads is ``os.cpu_count()`` unless the environment variable ``WMR_THREADS``
+says otherwise or :func:`limit_threads` lowers it (Dask workers run their chunks with one
+thread each).  A kernel called from inside a chunk runs serially: no nested pools.
 """
 from __future__ import annotations
 
+import contextlib
 import os
+import threading
 from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 
-_CHUNK = 65536
+__all__ = ["CHUNK", "map_matrices", "for_chunks", "limit_threads", "n_threads"]
+
+#: Items per chunk of a fused element-wise kernel (its temporaries stay in a 1 MB L2 cache).
+CHUNK = 8192
+_MATRIX_CHUNK = 65536
+_state = threading.local()
+_pool = None
+_pool_lock = threading.Lock()
 
 
-def map_matrices(fn, A, out_tail=None, chunk=_CHUNK):
+def _default_threads():
+    env = os.environ.get("WMR_THREADS", "")
+    if env.strip().isdigit() and int(env) >= 1:
+        return int(env)
+    return os.cpu_count() or 1
+
+
+def n_threads():
+    """Threads the batched kernels use in the calling thread (1 inside a chunk).
+
+    Returns
+    -------
+    int
+    """
+    if getattr(_state, "inside", False):
+        return 1
+    limit = getattr(_state, "limit", None)
+    return limit if limit is not None else _default_threads()
+
+
+@contextlib.contextmanager
+def limit_threads(n):
+    """Within the ``with`` block, the kernels called from this thread use at most ``n`` threads.
+
+    Parameters
+    ----------
+    n : int or None
+        At least 1; ``None`` changes nothing.
+    """
+    if n is None:
+        yield
+        return
+    old = getattr(_state, "limit", None)
+    _state.limit = max(1, int(n))
+    try:
+        yield
+    finally:
+        _state.limit = old
+
+
+def _get_pool():
+    global _pool
+    with _pool_lock:
+        if _pool is None:
+            _pool = ThreadPoolExecutor(max_workers=_default_threads(), thread_name_prefix="wmr")
+        return _pool
+
+
+def _inside(fn, *args):
+    """Run ``fn(*args)`` as one chunk: kernels it calls run serially."""
+    _state.inside = True
+    try:
+        return fn(*args)
+    finally:
+        _state.inside = False
+
+
+def for_chunks(fn, n, chunk=CHUNK):
+    """Call ``fn(start, stop)`` on consecutive chunks covering ``range(n)``, on several threads.
+
+    Parameters
+    ----------
+    fn : callable
+        ``fn(start, stop)`` processes items ``start .. stop-1`` (writing its results in place).
+    n : int
+        Number of items.
+    chunk : int, optional
+        Items per call.
+    """
+    bounds = [(a, min(a + chunk, n)) for a in range(0, n, chunk)]
+    k = min(n_threads(), len(bounds), _default_threads())
+    if k <= 1:
+        for a, b in bounds:
+            fn(a, b)
+        return
+    for _ in _get_pool().map(lambda ab: _inside(fn, *ab), bounds):
+        pass
+
+
+def map_matrices(fn, A, chunk=_MATRIX_CHUNK):
     """Apply ``fn`` to a stack of matrices ``A (..., m, n)`` in chunks; results keep the batch shape.
 
     Parameters
@@ -20,8 +118,6 @@ def map_matrices(fn, A, out_tail=None, chunk=_CHUNK):
     fn : callable
         Maps a stack ``(k, m, n)`` to an array whose first axis has length ``k``.
     A : numpy.ndarray (..., m, n)
-    out_tail : ignored
-        Kept for compatibility.
     chunk : int, optional
         Matrices per chunk (each chunk is one task for the thread pool).
 
@@ -32,10 +128,9 @@ def map_matrices(fn, A, out_tail=None, chunk=_CHUNK):
     """
     batch = A.shape[:-2]
     flat = A.reshape((-1,) + A.shape[-2:])
-    if flat.shape[0] <= chunk:
+    if flat.shape[0] <= chunk or n_threads() <= 1:
         res = fn(flat)
     else:
         parts = [flat[i:i + chunk] for i in range(0, flat.shape[0], chunk)]
-        with ThreadPoolExecutor(max_workers=os.cpu_count() or 1) as ex:
-            res = np.concatenate(list(ex.map(fn, parts)), axis=0)
+        res = np.concatenate(list(_get_pool().map(lambda X: _inside(fn, X), parts)), axis=0)
     return res.reshape(batch + res.shape[1:])

@@ -2,7 +2,10 @@ r"""Linear algebra on stacks of matrices ``(..., m, n)``: singular values, rank,
 
 Every decision "is this singular value zero?" uses the one tolerance :data:`wmr.model.tolerance.TOL`
 (relative to the largest singular value).  Functions accept any number of leading batch axes and
-run the batched LAPACK routines over chunks on all cores (:mod:`wmr.analysis._batch`).
+run over chunks on all cores (:mod:`wmr.analysis._batch`).  For matrices with at most three rows
+or columns, :func:`det`, :func:`rank` and :func:`condition_number` use closed forms
+(:mod:`wmr.analysis._closed`) for every member they can vouch for and the SVD for the others, so
+their decisions are the SVD's.
 """
 from __future__ import annotations
 
@@ -10,9 +13,10 @@ import numpy as np
 
 from ..model import validation as V
 from ..model.tolerance import TOL
+from . import _closed
 from ._batch import map_matrices
 
-__all__ = ["singular_values", "rank", "nullity", "null_space", "condition_number", "gram"]
+__all__ = ["singular_values", "rank", "nullity", "null_space", "condition_number", "gram", "det"]
 
 
 def _as_stack(A):
@@ -51,52 +55,12 @@ def _rank_from_sv(s):
     return np.sum(s > TOL * np.maximum(1.0, s[..., :1]), axis=-1)
 
 
-def _det_small(G):
-    """Determinant of a stack of p x p matrices, p <= 3, in closed form."""
-    p = G.shape[-1]
-    if p == 1:
-        return G[..., 0, 0]
-    if p == 2:
-        return G[..., 0, 0] * G[..., 1, 1] - G[..., 0, 1] * G[..., 1, 0]
-    return (G[..., 0, 0] * (G[..., 1, 1] * G[..., 2, 2] - G[..., 1, 2] * G[..., 2, 1])
-            - G[..., 0, 1] * (G[..., 1, 0] * G[..., 2, 2] - G[..., 1, 2] * G[..., 2, 0])
-            + G[..., 0, 2] * (G[..., 1, 0] * G[..., 2, 1] - G[..., 1, 1] * G[..., 2, 0]))
-
-
-def _certified_full_rank(A):
-    r"""Members of a stack ``(..., m, n)`` with ``p = min(m, n) <= 3`` whose rank is surely ``p``.
-
-    With :math:`f = \|\mathbf A\|_F^2 \ge \sigma_{max}^2` and :math:`D = \prod_k\sigma_k` (for a
-    square matrix :math:`|\det\mathbf A|`, otherwise :math:`\sqrt{\det\mathbf G}` with the
-    :math:`p\times p` Gram matrix :math:`\mathbf G`), the smallest singular value satisfies
-    :math:`\sigma_{min} \ge D / f^{(p-1)/2}`.  A member is certified when this lower bound, less a
-    generous bound on the rounding error of the determinant, exceeds
-    :math:`2\,\mathrm{TOL}\max(1, \sqrt f)`: then the SVD rule of :func:`rank` gives rank ``p``
-    as well (its own rounding is far below the factor 2), so the certificate changes no result.
-    Members that are not certified (nearly or truly rank-deficient) are left to the SVD.
-    """
-    m, n = A.shape[-2:]
-    p = min(m, n)
-    eps = np.finfo(float).eps
-    with np.errstate(over="ignore", invalid="ignore"):
-        f = np.einsum("...ij,...ij->...", A, A)
-        if m == n:
-            D = np.abs(_det_small(A))
-            err = (10 * p + 100) * eps * f ** (p / 2)                   # >> rounding of det A
-            ok = (D - err) > 2 * TOL * np.sqrt(np.maximum(1.0, f)) * f ** ((p - 1) / 2)
-        else:
-            G = np.einsum("...ki,...kj->...ij", A, A) if m > n else np.einsum("...ik,...jk->...ij", A, A)
-            err = (10 * (m + n) + 100) * eps * f ** p                 # >> rounding of G and det G
-            ok = (_det_small(G) - err) > (2 * TOL) ** 2 * np.maximum(1.0, f) * f ** (p - 1)
-    return ok & np.isfinite(f) & (f > 0)
-
-
 def rank(A):
     """Numerical rank of a stack of matrices (singular values above ``TOL * max(1, s_max)``).
 
     For matrices with at most 3 rows or columns, members of full rank are recognised in
-    closed form (a certified bound, see :func:`_certified_full_rank`) and only the others go
-    through the SVD; the result is the same as the SVD rule for every member.
+    closed form (a certified bound, see :func:`wmr.analysis._closed.certified_full_rank`) and
+    only the others go through the SVD; the result is the same as the SVD rule for every member.
 
     Parameters
     ----------
@@ -119,8 +83,8 @@ def rank(A):
         return _rank_from_sv(singular_values(A))
     flat = A.reshape((-1,) + A.shape[-2:])
     out = np.full(flat.shape[0], p, dtype=int)
-    todo = ~_certified_full_rank(flat)
-    if np.any(todo):
+    todo = np.flatnonzero(~_closed.certified_full_rank(flat))
+    if todo.size:
         out[todo] = _rank_from_sv(singular_values(flat[todo]))
     return out.reshape(A.shape[:-2])
 
@@ -181,7 +145,10 @@ def condition_number(A):
     r"""Condition number :math:`\kappa = \sigma_l/\sigma_s` (30) of a stack of matrices.
 
     Rank-deficient matrices (smallest singular value at most ``TOL * max(1, sigma_l)``)
-    get ``inf``, as (31) prescribes.
+    get ``inf``, as (31) prescribes.  Stacks of 3x3 matrices use the closed form of
+    :func:`wmr.analysis._closed.condition_number_3x3` (singular values from the eigenvalues of
+    :math:`\mathbf A^T\mathbf A` and :math:`\det\mathbf A`) wherever its computed error bound is
+    within ``16 eps kappa``, and the SVD for the other members; other sizes use the SVD.
 
     Parameters
     ----------
@@ -195,9 +162,18 @@ def condition_number(A):
     --------
     >>> float(condition_number([[2.0, 0.0], [0.0, 1.0]]))
     2.0
+    >>> condition_number([np.diag([3.0, 2.0, 1.0]), np.ones((3, 3))]).tolist()
+    [3.0, inf]
     """
     A = _as_stack(A)
-    return _kappa_from_sv(singular_values(A))
+    if A.shape[-2:] != (3, 3):
+        return _kappa_from_sv(singular_values(A))
+    flat = A.reshape(-1, 3, 3)
+    kappa, accepted = _closed.condition_number_3x3(flat)
+    todo = np.flatnonzero(~accepted)
+    if todo.size:
+        kappa[todo] = _kappa_from_sv(singular_values(flat[todo]))
+    return kappa.reshape(A.shape[:-2])
 
 
 def _kappa_from_sv(s):
@@ -225,3 +201,41 @@ def gram(A):
     """
     A = _as_stack(A)
     return np.swapaxes(A, -1, -2) @ A
+
+
+def det(A):
+    r"""Determinant of each matrix of a stack of square matrices.
+
+    Matrices up to 3x3 use the cofactor expansion, element-wise over the stack
+    (:func:`wmr.analysis._closed.det`: about 20 flops a matrix, no LAPACK call overhead);
+    larger ones use LU (``numpy.linalg.det``).
+
+    Parameters
+    ----------
+    A : array_like (..., n, n)
+
+    Returns
+    -------
+    numpy.ndarray (...)
+
+    Raises
+    ------
+    ValueError
+        If the matrices are not square or not finite.
+
+    Examples
+    --------
+    >>> float(det([[2.0, 1.0], [1.0, 3.0]]))
+    5.0
+    >>> det(np.stack([np.eye(3), 2 * np.eye(3)])).tolist()
+    [1.0, 8.0]
+    """
+    A = _as_stack(A)
+    n = A.shape[-1]
+    if A.shape[-2] != n:
+        raise ValueError(f"A must be a stack of square matrices (..., n, n), got shape {A.shape}")
+    if n == 0:
+        return np.ones(A.shape[:-2])
+    if n > 3:
+        return map_matrices(np.linalg.det, A)
+    return _closed.det(A.reshape(-1, n, n)).reshape(A.shape[:-2])

@@ -18,7 +18,9 @@ import sys
 __all__ = ["COMMANDS", "main"]
 
 #: command name -> module of this package that implements it
-COMMANDS = {}
+COMMANDS = {
+    "sweep": "sweep",
+}
 
 
 def _parser():

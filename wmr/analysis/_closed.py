@@ -1,0 +1,208 @@
+r"""Closed forms for stacks of small matrices (at most three rows or columns), chunked on all cores.
+
+The batched LAPACK routines spend about a microsecond per 3x3 matrix in call overhead; these
+kernels evaluate the closed forms element-wise over a chunk of :data:`~wmr.analysis._batch.CHUNK`
+matrices at a time (entry ``(i, j)`` of every matrix of the chunk is one strided vector).  Where a
+closed form cannot vouch for its result (a nearly rank-deficient member, a condition number
+whose computed error bound is too large) it says so, and :mod:`wmr.analysis.linalg` sends that
+member to the SVD: every decision stays the SVD's.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from ..model.tolerance import TOL
+from ._batch import for_chunks
+
+__all__ = ["det", "certified_full_rank", "condition_number_3x3", "KAPPA_ERROR"]
+
+_EPS = np.finfo(float).eps
+#: A 3x3 condition number from the closed form is kept when its computed error bound is at most
+#: ``KAPPA_ERROR * eps * kappa`` (about the SVD's own accuracy); others go to the SVD.
+KAPPA_ERROR = 16.0
+_SAFE = (1e-100, 1e100)       # range of ||A||_F^2 where no product below over- or underflows
+
+
+def _entries(A, a, b):
+    """Entries of matrices ``a .. b-1`` of a flat stack ``(N, m, n)``: ``e[i][j]`` has shape (b - a,).
+
+    The chunk is copied entry-major first, so that every later operation reads contiguous memory.
+    """
+    m, n = A.shape[1:]
+    X = np.ascontiguousarray(A[a:b].reshape(b - a, m * n).T)
+    return [[X[i * n + j] for j in range(n)] for i in range(m)]
+
+
+def _det_entries(e):
+    p = len(e)
+    if p == 1:
+        return e[0][0].copy()
+    if p == 2:
+        return e[0][0] * e[1][1] - e[0][1] * e[1][0]
+    (a0, a1, a2), (a3, a4, a5), (a6, a7, a8) = e
+    # cofactor expansion along the first row
+    return a0 * (a4 * a8 - a5 * a7) + a1 * (a5 * a6 - a3 * a8) + a2 * (a3 * a7 - a4 * a6)
+
+
+def det(A):
+    r"""Determinants of a flat stack ``A (N, p, p)``, ``1 <= p <= 3`` (cofactor expansion).
+
+    Parameters
+    ----------
+    A : numpy.ndarray (N, p, p)
+
+    Returns
+    -------
+    numpy.ndarray (N,)
+    """
+    out = np.empty(A.shape[0])
+
+    def chunk(a, b):
+        out[a:b] = _det_entries(_entries(A, a, b))
+
+    for_chunks(chunk, A.shape[0])
+    return out
+
+
+def _dot(xs, ys):
+    """sum_k xs[k] * ys[k] for lists of equal-length vectors."""
+    out = xs[0] * ys[0]
+    for x, y in zip(xs[1:], ys[1:]):
+        out += x * y
+    return out
+
+
+def _gram_entries(e, rows):
+    """Upper triangle of the Gram matrix of the rows (``rows=True``: A A^T) or of the columns."""
+    vecs = e if rows else [list(col) for col in zip(*e)]
+    p = len(vecs)
+    return [[None if j < i else _dot(vecs[i], vecs[j]) for j in range(p)] for i in range(p)]
+
+
+def certified_full_rank(A):
+    r"""Members of a flat stack ``A (N, m, n)``, ``p = min(m, n) <= 3``, whose rank is surely ``p``.
+
+    With :math:`f = \|\mathbf A\|_F^2 \ge \sigma_{max}^2` and :math:`D = \prod_k\sigma_k` (for a
+    square matrix :math:`|\det\mathbf A|`, otherwise :math:`\sqrt{\det\mathbf G}` with the
+    :math:`p\times p` Gram matrix :math:`\mathbf G`), the smallest singular value satisfies
+    :math:`\sigma_{min} \ge D / f^{(p-1)/2}`.  A member is certified when this lower bound, less a
+    generous bound on the rounding error of the determinant, exceeds
+    :math:`2\,\mathrm{TOL}\max(1, \sqrt f)`: then the SVD rule of :func:`wmr.analysis.linalg.rank`
+    gives rank ``p`` as well (its own rounding is far below the factor 2), so the certificate
+    changes no result.  Members that are not certified (nearly or truly rank-deficient) are
+    left to the SVD.
+
+    Parameters
+    ----------
+    A : numpy.ndarray (N, m, n)
+
+    Returns
+    -------
+    numpy.ndarray of bool (N,)
+    """
+    N, m, n = A.shape
+    p = min(m, n)
+    out = np.empty(N, dtype=bool)
+
+    def chunk(a, b):
+        e = _entries(A, a, b)
+        with np.errstate(over="ignore", invalid="ignore", under="ignore"):
+            f = _dot([x for row in e for x in row], [x for row in e for x in row])
+            if m == n:
+                D = np.abs(_det_entries(e))
+                err = (10 * p + 100) * _EPS * f ** (p / 2)                     # >> rounding of det A
+                ok = (D - err) > 2 * TOL * np.sqrt(np.maximum(1.0, f)) * f ** ((p - 1) / 2)
+            else:
+                g = _gram_entries(e, rows=m < n)
+                G = [[g[min(i, j)][max(i, j)] for j in range(p)] for i in range(p)]
+                err = (10 * (m + n) + 100) * _EPS * f ** p                     # >> rounding of G and det G
+                ok = (_det_entries(G) - err) > (2 * TOL) ** 2 * np.maximum(1.0, f) * f ** (p - 1)
+            out[a:b] = ok & np.isfinite(f) & (f > 0)
+
+    for_chunks(chunk, N)
+    return out
+
+
+def condition_number_3x3(A):
+    r"""Condition numbers of a flat stack of 3x3 matrices from the eigenvalues of :math:`\mathbf A^T\mathbf A`.
+
+    The eigenvalues :math:`\lambda_1\ge\lambda_2\ge\lambda_3` of :math:`\mathbf G = \mathbf A^T\mathbf A`
+    are the squared singular values, and they solve a cubic.  With :math:`q = \operatorname{tr}\mathbf G/3`,
+    :math:`\mathbf B = \mathbf G - q\mathbf I`, :math:`p = \sqrt{\operatorname{tr}\mathbf B^2/6}` and
+    :math:`r = \det\mathbf B/(2p^3)\in[-1, 1]`, the trigonometric solution is
+
+    .. math:: \lambda_k = q + 2p\cos\Big(\phi + \frac{2\pi j_k}{3}\Big),\qquad
+              \phi = \tfrac13\arccos r,\quad j_1 = 0,\ j_3 = 1,\ \lambda_2 = 3q - \lambda_1 - \lambda_3 .
+
+    :math:`\lambda_1` and :math:`\lambda_2` come from it; the smallest one, which the formula
+    gives only to an absolute accuracy :math:`\sim\epsilon q`, comes from the determinant instead,
+    :math:`\lambda_3 = (\det\mathbf A)^2/(\lambda_1\lambda_2)`, so that
+
+    .. math:: \kappa = \sqrt{\lambda_1/\lambda_3} = \frac{\lambda_1\sqrt{\lambda_2}}{|\det\mathbf A|}.
+
+    Its relative error is bounded, to first order, by
+    :math:`e = \tfrac12 E(1/\lambda_1 + 1/\lambda_2) + \epsilon\,\operatorname{per}|\mathbf A|/|\det\mathbf A|`
+    with :math:`E = \epsilon q + \min(2p,\ \epsilon q/\sqrt{1 - r^2})` (the rounding of
+    :math:`\mathbf G`, amplified where two eigenvalues nearly coincide) and the permanent of
+    :math:`|\mathbf A|` (the rounding of the determinant).  A member is **accepted** when
+    :math:`4e \le` :data:`KAPPA_ERROR` :math:`\epsilon\kappa` (the factor 4 covers the bound's
+    first-order neglect; measured errors stay below half of ``e``), when
+    :math:`\sigma_3 = \sqrt{\lambda_1}/\kappa > 2\,\mathrm{TOL}\max(1, \sigma_1)` (so the SVD rule
+    would not call it singular either) and when :math:`\|\mathbf A\|_F^2` lies where nothing
+    over- or underflows.  The others are flagged for the SVD.
+
+    Parameters
+    ----------
+    A : numpy.ndarray (N, 3, 3)
+
+    Returns
+    -------
+    kappa : numpy.ndarray (N,)
+        The condition number where accepted (anything elsewhere).
+    accepted : numpy.ndarray of bool (N,)
+    """
+    N = A.shape[0]
+    kappa = np.empty(N)
+    accepted = np.empty(N, dtype=bool)
+
+    def chunk(a, b):
+        e = _entries(A, a, b)
+        with np.errstate(all="ignore"):
+            kappa[a:b], accepted[a:b] = _kappa_entries(e)
+
+    for_chunks(chunk, N)
+    return kappa, accepted
+
+
+def _kappa_entries(e):
+    (a0, a1, a2), (a3, a4, a5), (a6, a7, a8) = e
+    g = _gram_entries(e, rows=False)                       # G = A^T A, upper triangle
+    g00, g01, g02, g11, g12, g22 = g[0][0], g[0][1], g[0][2], g[1][1], g[1][2], g[2][2]
+    f = g00 + g11 + g22                                    # ||A||_F^2 = tr G
+    q = f / 3
+    b00, b11, b22 = g00 - q, g11 - q, g22 - q              # B = G - q I
+    off = g01 * g01 + g02 * g02 + g12 * g12
+    p2 = (b00 * b00 + b11 * b11 + b22 * b22 + 2 * off) / 6
+    p = np.sqrt(p2)
+    det_B = b00 * (b11 * b22 - g12 * g12) - g01 * (g01 * b22 - g12 * g02) + g02 * (g01 * g12 - b11 * g02)
+    r = np.clip(det_B / np.where(p2 > 0, 2 * p * p2, 1.0), -1.0, 1.0)
+    # cos and sin of phi = arccos(r) / 3 in [0, pi/3], through t = tan(phi / 2)
+    t = np.tan(np.arccos(r) / 6)
+    h = 2 / (1 + t * t)
+    c, s = h - 1, t * h
+    lam1 = q + 2 * p * c
+    lam3 = q - p * (c + np.sqrt(3) * s)                    # q + 2p cos(phi + 2 pi / 3)
+    lam2 = 3 * q - lam1 - lam3
+    D = _det_entries(e)
+    absD = np.abs(D)
+    kappa = lam1 * np.sqrt(lam2) / absD
+    # first-order error bound (see the docstring) and the acceptance tests
+    m = [[np.abs(x) for x in row] for row in e]
+    per = (m[0][0] * (m[1][1] * m[2][2] + m[1][2] * m[2][1]) + m[0][1] * (m[1][2] * m[2][0] + m[1][0] * m[2][2])
+           + m[0][2] * (m[1][0] * m[2][1] + m[1][1] * m[2][0]))
+    E = _EPS * q + np.minimum(2 * p, _EPS * q / np.sqrt(np.maximum(1 - r * r, 1e-300)))
+    bound = 0.5 * E * (1 / lam1 + 1 / lam2) + _EPS * per / absD
+    sigma1 = np.sqrt(lam1)
+    ok = ((4 * bound <= KAPPA_ERROR * _EPS * kappa) & (sigma1 > 2 * TOL * np.maximum(1.0, sigma1) * kappa)
+          & (f > _SAFE[0]) & (f < _SAFE[1]) & (lam2 > 0) & np.isfinite(kappa))
+    return kappa, ok

@@ -1,0 +1,204 @@
+r"""Dense reference computations: the plain definitions every fast kernel is checked against.
+
+Nothing here is fast and nothing here is clever.  Every matrix is formed in full from the
+model's definitions, :math:`\mathbf J_2 = \mathrm{blockdiag}(\mathbf R(\beta_i)\mathbf L_i)` (21) with
+:math:`\mathbf R(\beta)` of (11) written out with ``np.cos`` and ``np.sin`` and multiplied by the
+unit's local block, :math:`\mathbf F = [\mathbf J_1\ -\mathbf J_2]` (24),
+:math:`\mathbf J = \mathbf J_{L1}^T\mathbf J_2` (56); every rank and condition number comes from a
+full SVD with the rule of :mod:`wmr.model.tolerance` (the same two lines of
+:mod:`wmr.analysis.linalg` that turn singular values into a rank or a condition number); kinematics are pseudo-inverse solutions
+of the whole system (21).  The tests and ``make bench`` compare the batched kernels
+(:meth:`wmr.Robot.J`, :func:`wmr.rank_F`, :func:`wmr.analysis.linalg.det`,
+:func:`wmr.condition_number`, :func:`wmr.forward`, :func:`wmr.inverse`) with these on random,
+singular and nearly singular configurations.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from ..model import validation as V
+from ..model.backend import NUMERIC
+from ..model.tolerance import near_zero
+from .linalg import _kappa_from_sv, _rank_from_sv
+
+__all__ = ["J2", "F", "J", "rank", "rank_F", "det", "condition_number", "forward", "inverse"]
+
+
+def J2(robot, beta):
+    r""":math:`\mathbf J_2(\boldsymbol\beta)`, block by block: :math:`\mathbf R(\beta_i)\mathbf L_i` (11), (21).
+
+    Parameters
+    ----------
+    robot : Robot
+    beta : array_like (..., w)
+
+    Returns
+    -------
+    numpy.ndarray (..., 2w, n_rates)
+    """
+    beta = V.finite_array("beta", beta, last=robot.w)
+    out = np.zeros(beta.shape[:-1] + (2 * robot.w, robot.n_rates))
+    for i, (u, sl) in enumerate(zip(robot.wheels, robot.rate_slices)):
+        c, s = np.cos(beta[..., i]), np.sin(beta[..., i])
+        R = np.stack([np.stack([c, -s], -1), np.stack([s, c], -1)], -2)        # (11)
+        out[..., 2 * i:2 * i + 2, sl] = R @ np.asarray(u._local_block(NUMERIC), dtype=float)
+    return out
+
+
+def F(robot, beta):
+    r""":math:`\mathbf F = [\mathbf J_1\ \ -\mathbf J_2]` (24), formed in full.
+
+    Parameters
+    ----------
+    robot : Robot
+    beta : array_like (..., w)
+
+    Returns
+    -------
+    numpy.ndarray (..., 2w, 3 + n_rates)
+    """
+    B = J2(robot, beta)
+    J1 = np.broadcast_to(robot.J1(), B.shape[:-2] + (2 * robot.w, 3))
+    return np.concatenate([J1, -B], axis=-1)
+
+
+def J(robot, beta, L=1.0):
+    r""":math:`\mathbf J = \mathbf J_{L1}^T\mathbf J_2` (56) as a matrix product.
+
+    Parameters
+    ----------
+    robot : Robot
+    beta : array_like (..., w)
+    L : float, optional
+
+    Returns
+    -------
+    numpy.ndarray (..., 3, n_rates)
+    """
+    return robot.J1(L).T @ J2(robot, beta)
+
+
+def _sv(A):
+    return np.linalg.svd(np.asarray(A, dtype=float), compute_uv=False)
+
+
+def rank(A):
+    """Rank from a full SVD by the package's rule (singular values above ``TOL * max(1, s_max)``).
+
+    Parameters
+    ----------
+    A : array_like (..., m, n)
+
+    Returns
+    -------
+    numpy.ndarray of int (...)
+    """
+    return _rank_from_sv(_sv(A))
+
+
+def rank_F(robot, beta):
+    """:math:`\\operatorname{rank}\\mathbf F` from an SVD of the full matrix.
+
+    Parameters
+    ----------
+    robot : Robot
+    beta : array_like (..., w)
+
+    Returns
+    -------
+    numpy.ndarray of int (...)
+    """
+    return rank(F(robot, beta))
+
+
+def det(A):
+    """Determinant by LU (``numpy.linalg.det``).
+
+    Parameters
+    ----------
+    A : array_like (..., n, n)
+
+    Returns
+    -------
+    numpy.ndarray (...)
+    """
+    return np.linalg.det(np.asarray(A, dtype=float))
+
+
+def condition_number(A):
+    r""":math:`\kappa = \sigma_l/\sigma_s` (30) from a full SVD, ``inf`` where the rank rule says singular.
+
+    Parameters
+    ----------
+    A : array_like (..., m, n)
+
+    Returns
+    -------
+    numpy.ndarray (...)
+    """
+    return _kappa_from_sv(_sv(A))
+
+
+def forward(robot, beta, rates):
+    r"""Least-squares twist :math:`\mathbf t = \mathbf J_1^+\mathbf J_2\dot{\boldsymbol\theta}` and the slip.
+
+    Parameters
+    ----------
+    robot : Robot
+    beta : array_like (..., w)
+    rates : array_like (..., n_rates)
+
+    Returns
+    -------
+    twist : numpy.ndarray (..., 3)
+    residual : numpy.ndarray (..., 2w)
+        :math:`\mathbf J_1\mathbf t - \mathbf J_2\dot{\boldsymbol\theta}`.
+    admissible : numpy.ndarray of bool (...)
+    """
+    rhs = (J2(robot, beta) @ np.asarray(rates, dtype=float)[..., None])[..., 0]
+    J1 = robot.J1()
+    t = (np.linalg.pinv(J1) @ rhs[..., None])[..., 0]
+    res = (J1 @ t[..., None])[..., 0] - rhs
+    scale = np.max(np.abs(rhs), axis=-1, keepdims=True)
+    return t, res, np.all(near_zero(res, scale), axis=-1)
+
+
+def inverse(robot, beta, twist, beta_dot=None):
+    r"""Joint rates from the pseudo-inverse of the whole system, dual-wheel steering rows appended.
+
+    Solves, in the least-squares sense, :math:`\mathbf J_2\dot{\boldsymbol\theta} = \mathbf J_1\mathbf t`
+    together with one row per dual-wheel unit, the corrected (15):
+    :math:`-\tfrac{r}{2b}(\dot\theta_{i1} - \dot\theta_{i2}) = \dot\psi + \dot\beta_i`.
+
+    Parameters
+    ----------
+    robot : Robot
+    beta : array_like (..., w)
+    twist : array_like (..., 3)
+    beta_dot : array_like (..., w), optional
+        Steering rates wanted of dual-wheel units (default 0).
+
+    Returns
+    -------
+    rates : numpy.ndarray (..., n_rates)
+    residual : numpy.ndarray (..., 2w)
+        :math:`\mathbf J_1\mathbf t - \mathbf J_2\dot{\boldsymbol\theta}`.
+    admissible : numpy.ndarray of bool (...)
+    """
+    B = J2(robot, beta)
+    twist = np.asarray(twist, dtype=float)
+    v = (robot.J1() @ twist[..., None])[..., 0]
+    batch = np.broadcast_shapes(B.shape[:-2], v.shape[:-1])
+    rows, rhs = [np.broadcast_to(B, batch + B.shape[-2:])], [np.broadcast_to(v, batch + v.shape[-1:])]
+    bd = np.zeros(robot.w) if beta_dot is None else np.asarray(beta_dot, dtype=float)
+    for i, (u, sl) in enumerate(zip(robot.wheels, robot.rate_slices)):
+        if u.kind == "dual":
+            row = np.zeros(robot.n_rates)
+            row[sl] = [-u.r / (2 * u.b), u.r / (2 * u.b)]
+            rows.append(np.broadcast_to(row, batch + (1, robot.n_rates)))
+            rhs.append(np.broadcast_to(twist[..., :1] + bd[..., i:i + 1], batch + (1,)))
+    A, y = np.concatenate(rows, axis=-2), np.concatenate(rhs, axis=-1)
+    rates = (np.linalg.pinv(A) @ y[..., None])[..., 0]
+    res = rhs[0] - (rows[0] @ rates[..., None])[..., 0]
+    scale = np.max(np.abs(rhs[0]), axis=-1, keepdims=True)
+    return rates, res, np.all(near_zero(res, scale), axis=-1)
