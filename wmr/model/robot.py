@@ -15,7 +15,7 @@ import sympy as sp
 
 from . import validation as V
 from .backend import NUMERIC, SYMBOLIC, choose, is_symbolic
-from .platform import point_row
+from .platform import point_row, rotated
 from .wheels import UNIT_TYPES
 
 TWIST_NAMES = ("psi_dot", "x_dot", "y_dot")
@@ -223,7 +223,7 @@ class Robot:
         -----
         With NumPy, unit i contributes the columns
         :math:`\mathbf J_{L1,i}^T\mathbf B_i(\beta_i) = \cos\beta_i\,\mathbf J_{L1,i}^T\mathbf L_i +
-        \sin\beta_i\,\mathbf J_{L1,i}^T\mathbf E\mathbf L_i` (see :meth:`OffsetWheel.block_terms`), so the
+        \sin\beta_i\,\mathbf J_{L1,i}^T\mathbf E\mathbf L_i` (:func:`wmr.model.platform.rotated`), so the
         mostly-zero :math:`\mathbf J_2` is never formed.
         """
         bk = self._backend(beta, backend)
@@ -235,8 +235,7 @@ class Robot:
         for i, (u, sl) in enumerate(zip(self.wheels, self.rate_slices)):
             Li, ELi = u.block_terms(NUMERIC)
             Ji = JL1[2 * i:2 * i + 2].T                      # (3, 2)
-            bi = b[..., i, None, None]
-            M[..., :, sl] = np.cos(bi) * (Ji @ Li) + np.sin(bi) * (Ji @ ELi)
+            M[..., :, sl] = rotated(b[..., i], Ji @ Li, Ji @ ELi)   # J_{L1,i}^T R(beta_i) L_i
         return M
 
     # --- frames ---------------------------------------------------------------------------------
