@@ -26,6 +26,8 @@ from ..model.backend import NUMERIC
 from ..model.platform import E, rotated
 from ..model.tolerance import TOL, near_zero
 
+__all__ = ["Solution", "forward", "inverse"]
+
 
 @dataclass(frozen=True)
 class Solution:
@@ -90,6 +92,7 @@ def forward(robot, beta, rates):
     >>> (sol.value.round(12) + 0.0).tolist(), bool(sol.admissible)
     ([0.0, 0.0, 1.0], True)
     """
+    robot = V.numeric_robot(robot)
     beta = V.finite_array("beta", beta, last=robot.w)
     rates = V.finite_array("rates", rates, last=robot.n_rates)
     J1 = robot.J1()
@@ -142,6 +145,7 @@ def inverse(robot, beta, twist, beta_dot=None):
     >>> bool(inverse(bot, [0.0, 0.0, 0.0], [0.0, 1.0, 0.0]).admissible)   # sideways: the wheels slip
     False
     """
+    robot = V.numeric_robot(robot)
     beta = V.finite_array("beta", beta, last=robot.w)
     twist = V.finite_array("twist", twist, last=3)
     if beta_dot is not None:

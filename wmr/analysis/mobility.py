@@ -27,6 +27,8 @@ from ..model.backend import NUMERIC
 from ..model.platform import E, rotated
 from .linalg import _left_null, null_space, rank
 
+__all__ = ["twist_constraints", "rank_F", "mobility", "admissible_twists"]
+
 
 def twist_constraints(robot, beta):
     r"""The constraint rows :math:`\mathbf A(\boldsymbol\beta)` on the platform twist (see module notes).
@@ -52,6 +54,7 @@ def twist_constraints(robot, beta):
     >>> A.shape, base
     ((3, 3), 3)
     """
+    robot = V.numeric_robot(robot)
     beta = V.finite_array("beta", beta, last=robot.w)
     J1 = robot.J1()
     # R(beta)^T = cos(beta) 1 + sin(beta) E^T (11), so the rows N_i^T R^T [E d_i 1] are
@@ -117,7 +120,8 @@ def mobility(robot, beta):
     >>> int(mobility(paper_robot("centred"), [0.0, 0.0, 0.0]))   # parallel wheels: translation
     1
     """
-    return 3 + robot.n_rates - rank_F(robot, beta)
+    rank = rank_F(robot, beta)
+    return 3 + robot.n_rates - rank
 
 
 def admissible_twists(robot, beta):
@@ -143,6 +147,7 @@ def admissible_twists(robot, beta):
     >>> np.abs(basis.ravel()).round(12).tolist()                              # only y translation
     [0.0, 0.0, 1.0]
     """
+    robot = V.numeric_robot(robot)
     beta = V.finite_array("beta", beta, last=robot.w)
     if beta.ndim != 1:
         raise ValueError(f"beta must be one configuration of shape ({robot.w},) for admissible_twists, "

@@ -55,6 +55,7 @@ __all__ = ["det_J", "det_J_scale", "is_singular", "det_J_symbolic", "det_J_polyn
 
 
 def _require_square(robot):
+    V.robot(robot)
     if robot.n_rates != 3 or robot.w != 3:
         raise ValueError(
             f"det J needs a square J (three centred wheels, n_rates = 3); got a robot with w = {robot.w}, "
@@ -65,17 +66,16 @@ def _default_L(robot, L):
     if L is not None:
         return V.positive("L", L)
     from .isotropy import characteristic_length
-    try:
-        return characteristic_length(robot)
-    except TypeError:
-        raise ValueError("give L explicitly for a robot with symbolic mount points") from None
+    if V.free_symbols(V.robot(robot)):
+        raise ValueError(f"L must be given explicitly for a robot with symbolic mount points, got L = None for {V.show(robot)}")
+    return characteristic_length(robot)
 
 
 def exact_robot(robot):
     """The same robot with exact (SymPy) mount coordinates and radii, for symbolic checks."""
     import dataclasses
     from ..model.robot import Robot
-    if robot.is_symbolic:
+    if V.robot(robot).is_symbolic:
         return robot
     ns = [sp.sqrt(2), sp.sqrt(3)]
     units = [dataclasses.replace(u, position=tuple(sp.nsimplify(v, ns) for v in u.position),
@@ -87,6 +87,7 @@ def numeric_robot(robot):
     """The same robot with float coordinates (from an exact one)."""
     import dataclasses
     from ..model.robot import Robot
+    V.robot(robot)
     units = [dataclasses.replace(u, position=tuple(float(v) for v in u.position), r=float(u.r))
              for u in robot.wheels]
     return Robot(units, name=robot.name)
@@ -116,7 +117,7 @@ def det_J(robot, beta, L=None):
     >>> abs(float(det_J(bot, [0.3, 0.3, 0.3]))) < 1e-15      # item (i)
     True
     """
-    _require_square(robot)
+    _require_square(V.numeric_robot(robot))
     return np.linalg.det(robot.J(beta, L=_default_L(robot, L)))
 
 
@@ -127,7 +128,7 @@ def det_J_scale(robot, beta, L=None):
     -------
     numpy.ndarray (...)
     """
-    J = robot.J(beta, L=_default_L(robot, L))
+    J = V.numeric_robot(robot).J(beta, L=_default_L(robot, L))
     return np.prod(np.linalg.norm(J, axis=-2), axis=-1)
 
 
@@ -177,7 +178,7 @@ def plane_line_matrix(robot, beta, L=1, backend=None):
     -------
     numpy.ndarray (..., 3, w) or sympy.Matrix (3, w)
     """
-    symbolic = beta is None or robot.is_symbolic or any(
+    symbolic = beta is None or V.robot(robot).is_symbolic or any(
         isinstance(b, sp.Basic) for b in np.ravel(np.asarray(beta, dtype=object)))
     bk = SYMBOLIC if symbolic else NUMERIC
     if symbolic:
@@ -360,6 +361,8 @@ def classify(robot, beta, L=None):
     -------
     Classification
     """
+    _require_square(robot)
+    robot = V.numeric_robot(robot)
     beta = V.finite_array("beta", beta, last=robot.w)
     if beta.ndim != 1:
         raise ValueError(f"beta must be one configuration of shape (3,) for classify, got shape {beta.shape}")

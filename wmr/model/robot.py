@@ -18,6 +18,8 @@ from .backend import NUMERIC, SYMBOLIC, choose, is_symbolic
 from .platform import point_row, rotated
 from .wheels import UNIT_TYPES
 
+__all__ = ["Robot", "TWIST_NAMES"]
+
 TWIST_NAMES = ("psi_dot", "x_dot", "y_dot")
 
 
@@ -42,17 +44,20 @@ class Robot:
     """
 
     def __init__(self, wheels, name=None):
+        if isinstance(wheels, (str, bytes)) or isinstance(wheels, UNIT_TYPES):
+            raise TypeError(f"wheels must be a sequence of wheel units, got {V.show(wheels)}")
         try:
             wheels = tuple(wheels)
         except TypeError:
-            raise ValueError(f"wheels must be a sequence of wheel units, got {wheels!r}") from None
+            raise TypeError(f"wheels must be a sequence of wheel units, got {V.show(wheels)}") from None
         if len(wheels) == 0:
             raise ValueError("wheels must contain at least one wheel unit, got 0")
         for k, u in enumerate(wheels):
             if not isinstance(u, UNIT_TYPES):
-                raise ValueError(f"wheels[{k}] must be an OffsetWheel, CentredWheel or DualWheel, got {u!r}")
+                raise TypeError(f"wheels[{k}] must be a wheel unit ({', '.join(t.__name__ for t in UNIT_TYPES)}), "
+                                f"got {V.show(u)}")
         self.wheels = wheels
-        self.name = name or "robot"
+        self.name = V.optional_text("name", name) or "robot"
         starts = np.cumsum([0] + [u.n_rates for u in wheels])
         #: slice of each unit's rates inside the joint-rate vector theta_dot
         self.rate_slices = tuple(slice(int(a), int(b)) for a, b in zip(starts[:-1], starts[1:]))

@@ -31,6 +31,8 @@ from . import validation as V
 from .backend import NUMERIC, choose
 from .platform import E, rotated
 
+__all__ = ["OffsetWheel", "CentredWheel", "DualWheel", "UNIT_TYPES"]
+
 
 @dataclass(frozen=True)
 class _Unit:
