@@ -42,7 +42,7 @@ import numpy as np
 import sympy as sp
 
 from ..model import validation as V
-from ..model.backend import NUMERIC, SYMBOLIC
+from ..model.backend import NUMERIC, SYMBOLIC, choose
 from ..model.platform import wrap_angle
 from ..model.tolerance import TOL, near_zero
 from .lines import (AT_INFINITY, COINCIDENT, FINITE, NONE, Concurrency, axles_concurrency, axles_through,
@@ -72,7 +72,17 @@ def _default_L(robot, L):
 
 
 def exact_robot(robot):
-    """The same robot with exact (SymPy) mount coordinates and radii, for symbolic checks."""
+    r"""The same robot with exact (SymPy) mount coordinates and radii, for symbolic checks.
+
+    Parameters
+    ----------
+    robot : Robot
+        Numeric (floats are made exact with ``nsimplify`` over :math:`\sqrt2, \sqrt3`) or symbolic (returned as is).
+
+    Returns
+    -------
+    Robot
+    """
     import dataclasses
     from ..model.robot import Robot
     if V.robot(robot).is_symbolic:
@@ -84,7 +94,17 @@ def exact_robot(robot):
 
 
 def numeric_robot(robot):
-    """The same robot with float coordinates (from an exact one)."""
+    """The same robot with float coordinates and radii (from an exact one).
+
+    Parameters
+    ----------
+    robot : Robot
+        Without free symbols.
+
+    Returns
+    -------
+    Robot
+    """
     import dataclasses
     from ..model.robot import Robot
     V.robot(robot)
@@ -124,6 +144,14 @@ def det_J(robot, beta, L=None):
 def det_J_scale(robot, beta, L=None):
     r"""Hadamard bound :math:`\prod_i\|\mathbf J\mathbf e_i\|`: the size against which :math:`\det\mathbf J` is zero.
 
+    Parameters
+    ----------
+    robot : Robot
+        Three centred wheels.
+    beta : array (..., 3)
+    L : float, optional
+        As for :func:`det_J`.
+
     Returns
     -------
     numpy.ndarray (...)
@@ -133,7 +161,20 @@ def det_J_scale(robot, beta, L=None):
 
 
 def is_singular(robot, beta, L=None):
-    r"""True where :math:`|\det\mathbf J| \le` ``TOL`` times the Hadamard bound (batched)."""
+    r"""True where :math:`|\det\mathbf J| \le` ``TOL`` times the Hadamard bound (batched).
+
+    Parameters
+    ----------
+    robot : Robot
+        Three centred wheels.
+    beta : array (..., 3)
+    L : float, optional
+        As for :func:`det_J`.
+
+    Returns
+    -------
+    numpy.ndarray of bool (...)
+    """
     return near_zero(det_J(robot, beta, L), det_J_scale(robot, beta, L))
 
 
@@ -173,6 +214,8 @@ def plane_line_matrix(robot, beta, L=1, backend=None):
     robot : Robot
     beta : array (..., w) or sequence of SymPy expressions (None: the symbols)
     L : float or sympy.Expr
+    backend : NUMERIC or SYMBOLIC, optional
+        Default: SymPy when ``beta`` is None or symbolic or the robot is symbolic, else NumPy.
 
     Returns
     -------
@@ -180,7 +223,11 @@ def plane_line_matrix(robot, beta, L=1, backend=None):
     """
     symbolic = beta is None or V.robot(robot).is_symbolic or any(
         isinstance(b, sp.Basic) for b in np.ravel(np.asarray(beta, dtype=object)))
-    bk = SYMBOLIC if symbolic else NUMERIC
+    bk = choose(backend=backend) if backend is not None else (SYMBOLIC if symbolic else NUMERIC)
+    if symbolic and bk is NUMERIC:
+        raise ValueError(f"backend NUMERIC needs numeric beta and a numeric robot, got beta = {V.show(beta)}, "
+                         f"robot = {V.show(robot)}")
+    symbolic = bk is SYMBOLIC
     if symbolic:
         b = list(robot.beta_symbols) if beta is None else list(beta)
     else:
