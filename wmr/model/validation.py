@@ -167,6 +167,19 @@ def real(name, value):
     return _number(name, value)
 
 
+def _signed(name, value, strict):
+    """``real`` and > 0 (``strict``) or >= 0; for SymPy, not known to be otherwise."""
+    value = real(name, value)
+    wanted = "positive" if strict else "non-negative (>= 0)"
+    if isinstance(value, sp.Basic):
+        bad = (value.is_positive if strict else value.is_nonnegative) is False
+    else:
+        bad = value <= 0 if strict else value < 0
+    if bad:
+        raise ValueError(f"{name} must be {wanted}, got {show(value)}")
+    return value
+
+
 def positive(name, value):
     """Return ``value`` if it is a positive finite number (or a SymPy expression not known to be <= 0).
 
@@ -186,13 +199,7 @@ def positive(name, value):
     >>> positive("L", 2)
     2
     """
-    value = real(name, value)
-    if isinstance(value, sp.Basic):
-        if value.is_positive is False:
-            raise ValueError(f"{name} must be positive, got {show(value)}")
-    elif value <= 0:
-        raise ValueError(f"{name} must be positive, got {show(value)}")
-    return value
+    return _signed(name, value, strict=True)
 
 
 def nonnegative(name, value):
@@ -212,13 +219,7 @@ def nonnegative(name, value):
     >>> nonnegative("d", 0)
     0
     """
-    value = real(name, value)
-    if isinstance(value, sp.Basic):
-        if value.is_nonnegative is False:
-            raise ValueError(f"{name} must be non-negative, got {show(value)}")
-    elif value < 0:
-        raise ValueError(f"{name} must be a finite number >= 0, got {show(value)}")
-    return value
+    return _signed(name, value, strict=False)
 
 
 def point(name, value):
