@@ -151,13 +151,23 @@ def _owner(name):
     return next((o for prefix, o in PENDING.items() if name == prefix or name.startswith(prefix + ".")), None)
 
 
-@pytest.mark.parametrize("name, obj", MODULE_LEVEL, ids=[n for n, _ in MODULE_LEVEL])
+OWN = [(n, o) for n, o in MODULE_LEVEL if not _owner(n)]
+
+
+@pytest.mark.parametrize("name, obj", OWN, ids=[n for n, _ in OWN])
 def test_module_level_docstrings(name, obj):
     """The rest of the public API of every public module: documented too (dataclass fields under Attributes)."""
     problems = numpydoc_problems(name, obj)
-    if problems and _owner(name):
-        pytest.xfail(f"pending ({_owner(name)} stream): {problems}")
     assert not problems, problems
+
+
+@pytest.mark.parametrize("owner", sorted(set(PENDING.values())))
+def test_pending_modules(owner):
+    """Modules of other streams: checked item by item; an expected failure that counts what is left."""
+    items = [(n, o) for n, o in MODULE_LEVEL if _owner(n) == owner]
+    problems = [p for n, o in items for p in numpydoc_problems(n, o)]
+    if problems:
+        pytest.xfail(f"{owner} stream: {len(problems)} numpydoc gaps in {len(items)} items, e.g. {problems[0]}")
 
 
 def test_pending_modules_still_pending():
