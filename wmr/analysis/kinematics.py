@@ -23,8 +23,10 @@ import numpy as np
 
 from ..model import validation as V
 from ..model.backend import NUMERIC
-from ..model.platform import E
+from ..model.platform import E, rotated
 from ..model.tolerance import TOL, near_zero
+
+__all__ = ["Solution", "forward", "inverse"]
 
 
 @dataclass(frozen=True)
@@ -90,6 +92,7 @@ def forward(robot, beta, rates):
     >>> (sol.value.round(12) + 0.0).tolist(), bool(sol.admissible)
     ([0.0, 0.0, 1.0], True)
     """
+    robot = V.numeric_robot(robot)
     beta = V.finite_array("beta", beta, last=robot.w)
     rates = V.finite_array("rates", rates, last=robot.n_rates)
     J1 = robot.J1()
@@ -101,9 +104,9 @@ def forward(robot, beta, rates):
     batch = np.broadcast_shapes(beta.shape[:-1], rates.shape[:-1])
     rhs = np.empty(batch + (robot.w, 2))              # J2 theta_dot, unit by unit (no J2 formed)
     for i, (u, sl) in enumerate(zip(robot.wheels, robot.rate_slices)):
-        L, EL = u.block_terms(NUMERIC)                # B_i = cos(beta_i) L + sin(beta_i) E L
-        b = beta[..., i, None]
-        rhs[..., i, :] = np.cos(b) * _mul(rates[..., sl], L.T) + np.sin(b) * _mul(rates[..., sl], EL.T)
+        L, EL = u.block_terms(NUMERIC)                # B_i theta_i = R(beta_i) L theta_i (11)
+        th = rates[..., sl]
+        rhs[..., i, :] = rotated(beta[..., i], _mul(th, L.T), _mul(th, EL.T), axes=1)
     rhs = rhs.reshape(batch + (2 * robot.w,))         # (..., 2w)
     t = _mul(rhs, np.linalg.pinv(J1).T)              # (..., 3)
     res = _mul(t, J1.T) - rhs
@@ -142,6 +145,7 @@ def inverse(robot, beta, twist, beta_dot=None):
     >>> bool(inverse(bot, [0.0, 0.0, 0.0], [0.0, 1.0, 0.0]).admissible)   # sideways: the wheels slip
     False
     """
+    robot = V.numeric_robot(robot)
     beta = V.finite_array("beta", beta, last=robot.w)
     twist = V.finite_array("twist", twist, last=3)
     if beta_dot is not None:
@@ -154,10 +158,10 @@ def inverse(robot, beta, twist, beta_dot=None):
     res = np.zeros(batch + (robot.w, 2))
     Emat = E(NUMERIC)
     for i, (u, sl) in enumerate(zip(robot.wheels, robot.rate_slices)):
-        L, EL = u.block_terms(NUMERIC)                 # B_i = R(beta_i) L = cos L + sin E L
-        c, s = np.cos(beta[..., i, None]), np.sin(beta[..., i, None])
+        L, EL = u.block_terms(NUMERIC)                 # B_i = R(beta_i) L (11)
+        c, s = np.cos(beta[..., i]), np.sin(beta[..., i])
         vi = v[..., i, :]
-        local_v = c * vi + s * _mul(vi, Emat)                                 # R^T [E d 1] t  (R^T = cI + sE^T)
+        local_v = rotated((c, -s), vi, _mul(vi, Emat.T), axes=1)              # R^T [E d 1] t = R(-beta) v
         th = _mul(local_v, np.linalg.pinv(L).T)                                # L^+ R^T v
         if u.kind == "dual":
             # free differential rate fixed by the steering wanted: phi_dot = psi_dot + beta_dot
@@ -165,7 +169,7 @@ def inverse(robot, beta, twist, beta_dot=None):
             diff = -(2 * u.b / u.r) * (twist[..., 0] + bd)                  # theta_1 - theta_2
             th = th + 0.5 * np.stack([diff, -diff], axis=-1)
         rates[..., sl] = th
-        res[..., i, :] = c * _mul(th, L.T) + s * _mul(th, EL.T) - vi           # B_i theta_i - [E d_i 1] t
+        res[..., i, :] = rotated((c, s), _mul(th, L.T), _mul(th, EL.T), axes=1) - vi   # B_i theta_i - [E d_i 1] t
     res = -res.reshape(batch + (2 * robot.w,))                             # J1 t - J2 theta_dot
     scale = np.max(np.abs(v), axis=(-2, -1))
     return Solution(rates, res, np.all(near_zero(res, scale[..., None]), axis=-1))

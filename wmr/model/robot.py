@@ -15,8 +15,10 @@ import sympy as sp
 
 from . import validation as V
 from .backend import NUMERIC, SYMBOLIC, choose, is_symbolic
-from .platform import point_row
+from .platform import point_row, rotated
 from .wheels import UNIT_TYPES
+
+__all__ = ["Robot", "TWIST_NAMES"]
 
 TWIST_NAMES = ("psi_dot", "x_dot", "y_dot")
 
@@ -42,17 +44,20 @@ class Robot:
     """
 
     def __init__(self, wheels, name=None):
+        if isinstance(wheels, (str, bytes)) or isinstance(wheels, UNIT_TYPES):
+            raise TypeError(f"wheels must be a sequence of wheel units, got {V.show(wheels)}")
         try:
             wheels = tuple(wheels)
         except TypeError:
-            raise ValueError(f"wheels must be a sequence of wheel units, got {wheels!r}") from None
+            raise TypeError(f"wheels must be a sequence of wheel units, got {V.show(wheels)}") from None
         if len(wheels) == 0:
             raise ValueError("wheels must contain at least one wheel unit, got 0")
         for k, u in enumerate(wheels):
             if not isinstance(u, UNIT_TYPES):
-                raise ValueError(f"wheels[{k}] must be an OffsetWheel, CentredWheel or DualWheel, got {u!r}")
+                raise TypeError(f"wheels[{k}] must be a wheel unit ({', '.join(t.__name__ for t in UNIT_TYPES)}), "
+                                f"got {V.show(u)}")
         self.wheels = wheels
-        self.name = name or "robot"
+        self.name = V.optional_text("name", name) or "robot"
         starts = np.cumsum([0] + [u.n_rates for u in wheels])
         #: slice of each unit's rates inside the joint-rate vector theta_dot
         self.rate_slices = tuple(slice(int(a), int(b)) for a, b in zip(starts[:-1], starts[1:]))
@@ -223,7 +228,7 @@ class Robot:
         -----
         With NumPy, unit i contributes the columns
         :math:`\mathbf J_{L1,i}^T\mathbf B_i(\beta_i) = \cos\beta_i\,\mathbf J_{L1,i}^T\mathbf L_i +
-        \sin\beta_i\,\mathbf J_{L1,i}^T\mathbf E\mathbf L_i` (see :meth:`OffsetWheel.block_terms`), so the
+        \sin\beta_i\,\mathbf J_{L1,i}^T\mathbf E\mathbf L_i` (:func:`wmr.model.platform.rotated`), so the
         mostly-zero :math:`\mathbf J_2` is never formed.
         """
         bk = self._backend(beta, backend)
@@ -235,8 +240,7 @@ class Robot:
         for i, (u, sl) in enumerate(zip(self.wheels, self.rate_slices)):
             Li, ELi = u.block_terms(NUMERIC)
             Ji = JL1[2 * i:2 * i + 2].T                      # (3, 2)
-            bi = b[..., i, None, None]
-            M[..., :, sl] = np.cos(bi) * (Ji @ Li) + np.sin(bi) * (Ji @ ELi)
+            M[..., :, sl] = rotated(b[..., i], Ji @ Li, Ji @ ELi)   # J_{L1,i}^T R(beta_i) L_i
         return M
 
     # --- frames ---------------------------------------------------------------------------------
