@@ -17,7 +17,7 @@ CORE_MODULES = ["wmr", "wmr.model.backend", "wmr.model.conventions", "wmr.model.
                 "wmr.model.robots", "wmr.analysis.linalg", "wmr.analysis.mobility", "wmr.analysis.isotropy", "wmr.analysis.kinematics", "wmr.analysis.steering",
                 "wmr.analysis.simulation", "wmr.model.tolerance", "wmr.paper.ledger", "wmr.paper.verify", "wmr.paper.symbols",
                 "wmr.analysis._batch", "wmr.analysis.sweep", "wmr.analysis.reference", "wmr.analysis._closed",
-                "wmr.cli.sweep"]
+                "wmr.cli.sweep", "wmr.model.trig"]
 
 
 def _public_callables():
