@@ -1,4 +1,4 @@
-r"""Cosine and sine of many steering angles at once, for the batched kernels.
+r"""Cosine and sine of many steering angles at once, and the matrices that are linear in them.
 
 Every batched kernel starts from :math:`\cos\beta_i` and :math:`\sin\beta_i` (the rotation
 :math:`\mathbf R(\beta) = \cos\beta\,\mathbf I + \sin\beta\,\mathbf E` of (11)).  NumPy evaluates
@@ -17,7 +17,10 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["cos_sin"]
+__all__ = ["cos_sin", "trig_combination"]
+
+#: Configurations per chunk of :func:`trig_combination` (its temporaries stay in cache).
+CHUNK = 8192
 
 
 def cos_sin(beta, out=None):
@@ -51,3 +54,58 @@ def cos_sin(beta, out=None):
     np.subtract(h, 1.0, out=c)
     np.multiply(t, h, out=s)
     return c, s
+
+
+def trig_combination(beta, P, Q, const=None):
+    r"""Matrices linear in the cosines and sines of the angles: :math:`\mathbf C + \sum_i(\cos\beta_i\,\mathbf P_i + \sin\beta_i\,\mathbf Q_i)`.
+
+    Every steering-dependent matrix of the model has this form, because each unit's block is
+    :math:`\mathbf B_i(\beta_i) = \cos\beta_i\,\mathbf L_i + \sin\beta_i\,\mathbf E\mathbf L_i` (11):
+    :math:`\mathbf J_2`, :math:`\mathbf F`, :math:`\mathbf J = \mathbf J_{L1}^T\mathbf J_2` and the
+    twist constraints of :mod:`wmr.analysis.mobility` only place (and multiply by constants)
+    the pairs :math:`(\mathbf L_i, \mathbf E\mathbf L_i)`.  This evaluates the sum for a batch,
+    entry by entry over chunks of :data:`CHUNK` configurations, skipping the coefficients that
+    are zero (most are: a unit touches only its own rows or columns), with no matrix product.
+
+    Parameters
+    ----------
+    beta : numpy.ndarray (..., w)
+        Finite angles.
+    P, Q : numpy.ndarray (w, *shape)
+        The coefficients of :math:`\cos\beta_i` and :math:`\sin\beta_i`.
+    const : numpy.ndarray (*shape), optional
+        The constant term (default 0).
+
+    Returns
+    -------
+    numpy.ndarray (..., *shape)
+
+    Examples
+    --------
+    >>> P = np.array([[[1.0, 0.0]], [[0.0, 0.0]]]); Q = np.array([[[0.0, 0.0]], [[0.0, 2.0]]])
+    >>> trig_combination(np.array([[0.0, np.pi / 2]]), P, Q, const=np.array([[0.5, 0.5]])).tolist()
+    [[[1.5, 2.5]]]
+    """
+    beta = np.asarray(beta, dtype=float)
+    w = beta.shape[-1]
+    shape = P.shape[1:]
+    m = int(np.prod(shape))
+    Pf, Qf = np.asarray(P, dtype=float).reshape(w, m), np.asarray(Q, dtype=float).reshape(w, m)
+    flat = beta.reshape(-1, w)
+    N = flat.shape[0]
+    out = np.empty((N, m))
+    out[...] = 0.0 if const is None else np.asarray(const, dtype=float).reshape(m)
+    # for each entry j, the angles that enter it and their two coefficients
+    terms = [[(i, Pf[i, j], Qf[i, j]) for i in range(w) if Pf[i, j] != 0.0 or Qf[i, j] != 0.0] for j in range(m)]
+    ct, st = np.empty((w, CHUNK)), np.empty((w, CHUNK))
+    for a in range(0, N, CHUNK):
+        z = min(a + CHUNK, N)
+        c, s = cos_sin(flat[a:z].T, out=(ct[:, :z - a], st[:, :z - a]))
+        for j, tj in enumerate(terms):
+            col = out[a:z, j]
+            for i, p, q in tj:
+                if p != 0.0:
+                    col += p * c[i]
+                if q != 0.0:
+                    col += q * s[i]
+    return out.reshape(beta.shape[:-1] + shape)
