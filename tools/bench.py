@@ -252,7 +252,7 @@ def main(argv=None):
             what, ratio, goal = "plain NumPy floor", sec / other, "<= 2"
             met = ratio <= 2
         else:
-            m = int(args.peer_n)
+            m = min(int(args.peer_n), n)
             peer_sec, _ = best_of(lambda: ref(twist[:m]), max(1, args.repeat // 2))
             per_wmr, per_peer = sec / n, peer_sec / m
             print(f"{name:34s} {per_wmr * 1e6:6.3f}us  {'WPILib, one call per twist':28s} "
