@@ -23,8 +23,8 @@ import numpy as np
 
 from ..model import validation as V
 from ..model.backend import NUMERIC
+from ..model.platform import cos_sin, rotated
 from ..model.tolerance import TOL
-from ..model.trig import cos_sin
 from ._batch import for_chunks
 
 __all__ = ["Solution", "forward", "inverse"]
@@ -88,19 +88,19 @@ def _lin(coefs, xs):
     return acc
 
 
-def _csum(a, x, b, y):
-    """``a * x + b * y`` for arrays, any of the pairs may be absent (``None``)."""
-    out = None if x is None else a * x
-    if y is not None:
-        out = b * y if out is None else np.add(out, b * y, out=out)
-    return out
+def _rot(c, s, x, y):
+    """``c x + s y`` for two rows of a chunk (either may be ``None``, a zero row), through
+    :func:`~wmr.model.platform.rotated`: with ``y`` the image under E of ``x``, this is (11)."""
+    if x is None or y is None:
+        return None if x is None and y is None else (c * x if y is None else s * y)
+    return rotated((c, s), x, y, axes=0)
 
 
 def _block_times(c, s, u, cols):
     r"""The wheel block applied to the unit's rates: :math:`\mathbf B_i\dot{\boldsymbol\theta}_i =
     \cos\beta_i\,\mathbf L_i\dot{\boldsymbol\theta}_i + \sin\beta_i\,\mathbf E\mathbf L_i\dot{\boldsymbol\theta}_i`,
     a pair of (k,) arrays (x and y rows; ``None`` for a zero row)."""
-    return [_csum(c, _lin(Lrow, cols), s, _lin(ELrow, cols)) for Lrow, ELrow in zip(u.L, u.EL)]
+    return [_rot(c, s, _lin(Lrow, cols), _lin(ELrow, cols)) for Lrow, ELrow in zip(u.L, u.EL)]
 
 
 def _max_abs(acc, xs):
@@ -164,6 +164,7 @@ def forward(robot, beta, rates):
     >>> (sol.value.round(12) + 0.0).tolist(), bool(sol.admissible)
     ([0.0, 0.0, 1.0], True)
     """
+    robot = V.numeric_robot(robot)
     beta = V.finite_array("beta", beta, last=robot.w)
     rates = V.finite_array("rates", rates, last=robot.n_rates)
     units, pinv, full_rank = _constants(robot)
@@ -237,6 +238,7 @@ def inverse(robot, beta, twist, beta_dot=None):
     >>> bool(inverse(bot, [0.0, 0.0, 0.0], [0.0, 1.0, 0.0]).admissible)   # sideways: the wheels slip
     False
     """
+    robot = V.numeric_robot(robot)
     beta = V.finite_array("beta", beta, last=robot.w)
     twist = V.finite_array("twist", twist, last=3)
     arrays = [beta, twist]
@@ -257,7 +259,8 @@ def inverse(robot, beta, twist, beta_dot=None):
         big = worst = None
         for i, u in enumerate(units):
             vx, vy = (_lin(row, t) for row in u.J1)         # (5): v_i = [E d_i 1] t
-            lx, ly = _csum(c[i], vx, s[i], vy), _csum(c[i], vy, -s[i], vx)   # R(beta_i)^T v_i
+            # R(beta_i)^T v_i = (c v_x + s v_y, c v_y - s v_x) = R(-beta_i) v_i (11)
+            lx, ly = _rot(c[i], s[i], vx, vy), _rot(c[i], s[i], vy, -vx)
             th = [_lin(row, (lx, ly)) for row in u.Lp]      # L_i^+ R^T v_i
             th = [np.zeros(z - a) if x is None else x for x in th]
             if u.dual is not None:

@@ -116,6 +116,7 @@ def steering_angles(robot, twist, current=None):
     >>> np.degrees(beta).round(9).tolist()                              # axles point at C
     [0.0, -120.0, 120.0]
     """
+    robot = V.numeric_robot(robot)
     t = V.finite_array("twist", twist, last=3)
     w = robot.w
     if current is not None:
