@@ -44,6 +44,13 @@ def trig_combination(beta, P, Q, const=None):
     -------
     numpy.ndarray (..., *shape)
 
+    Notes
+    -----
+    The result is laid out entry-major in memory (its batch axes are the fastest: entry ``j`` of
+    every matrix is one contiguous run), a view of an array ``(prod(shape), N)``.  Indexing and
+    arithmetic see an ordinary array; the closed-form kernels of :mod:`wmr.analysis.linalg` read
+    such stacks without copying them, and ``np.ascontiguousarray`` gives the usual layout.
+
     Examples
     --------
     >>> P = np.array([[[1.0, 0.0]], [[0.0, 0.0]]]); Q = np.array([[[0.0, 0.0]], [[0.0, 2.0]]])
@@ -57,7 +64,7 @@ def trig_combination(beta, P, Q, const=None):
     Pf, Qf = np.asarray(P, dtype=float).reshape(w, m), np.asarray(Q, dtype=float).reshape(w, m)
     flat = beta.reshape(-1, w)
     N = flat.shape[0]
-    out = np.empty((N, m))
+    out = np.empty((m, N))                              # entry-major: see Notes
     const = np.zeros(m) if const is None else np.asarray(const, dtype=float).reshape(m)
     # for each entry, the angles that enter it and their two coefficients (most pairs are zero:
     # a unit touches only its own rows or columns)
@@ -67,9 +74,9 @@ def trig_combination(beta, P, Q, const=None):
     for a in range(0, N, CHUNK):
         z = min(a + CHUNK, N)
         c, s = cos_sin(flat[a:z].T, out=(ct[:, :z - a], st[:, :z - a]))
-        out[a:z] = const                                # first touch of these rows: in cache
+        r = out[:, a:z]                                 # every update below is contiguous
+        r[...] = const[:, None]
         for j, tj in enumerate(terms):
-            col = out[a:z, j]
             for i, p, q in tj:                          # (11): R(beta_i) M_i = cos M_i + sin E M_i
-                col += rotated((c[i], s[i]), p, q, axes=0)
-    return out.reshape(beta.shape[:-1] + shape)
+                r[j] += rotated((c[i], s[i]), p, q, axes=0)
+    return out.T.reshape(beta.shape[:-1] + shape)
