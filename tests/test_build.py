@@ -88,28 +88,6 @@ def kernel_running(marker):
     return [p for p in marked_processes(marker) if "ipykernel" in p[1]]
 
 
-# ----------------------------------------------------------------------------- failing notebook
-def test_failing_notebook_fails_loudly_and_leaves_no_report(tmp_path):
-    tree = build.Tree(quick_tree(tmp_path))
-    nb = tmp_path / "notebooks" / "01_quick.ipynb"
-    build.report(tree, html_only=True)                                 # a good report first
-    assert tree.report_html.exists() and tree.report_stamp.exists()
-    write_nb(nb, ["x = 41", "def f(y):\n    raise ValueError(f'deliberate failure {y}')\nf(x + 1)"])
-    with pytest.raises(build.BuildError) as ei:
-        build.report(tree, html_only=True)
-    msg = str(ei.value)
-    assert "01_quick.ipynb" in msg                                     # which notebook
-    assert "raise ValueError(f'deliberate failure {y}')" in msg        # the failing cell's source
-    assert "ValueError: deliberate failure 42" in msg                  # the traceback
-    assert "\x1b[" not in msg                                          # readable, no ANSI colours
-    left = [p.name for p in (tree.report_html, tree.report_pdf, tree.report_stamp, tree.report_notebook,
-                             tree.executed_notebook(nb), tree.notebook_stamp(nb)) if p.exists()]
-    assert not left, f"a failed build left {left} behind"
-    assert not [p for p in tree.executed.iterdir() if p.name.endswith(".tmp")]
-    from tools.build.cli import main
-    assert main(["--root", str(tmp_path), "execute"]) == 1
-
-
 # ----------------------------------------------------------------------------- atomic writes
 def test_atomic_write_survives_sigkill(tmp_path):
     """A writer killed at random moments: the file is always complete, old or new."""
@@ -147,8 +125,9 @@ def test_atomic_path_keeps_old_file_on_error(tmp_path):
 
 
 # ----------------------------------------------------------------------------- stamps
-def test_damaged_outputs_and_stamps_are_rebuilt(tmp_path, capsys):
-    """A truncated report, a garbage stamp, a truncated executed notebook: never "up to date"."""
+def test_damaged_outputs_are_rebuilt_and_a_failure_leaves_no_report(tmp_path, capsys):
+    """A truncated report, a garbage stamp, a truncated executed notebook: never "up to date";
+    then a failing notebook: a loud error and no report left that looks current."""
     import nbformat
     tree = build.Tree(quick_tree(tmp_path))
     nb = tmp_path / "notebooks" / "01_quick.ipynb"
@@ -166,11 +145,24 @@ def test_damaged_outputs_and_stamps_are_rebuilt(tmp_path, capsys):
     assert "assembled" in capsys.readouterr().out
     out = tree.executed_notebook(nb)
     out.write_bytes(out.read_bytes()[:200])                            # truncated: not JSON any more
+    tree.notebook_stamp(nb).write_text("\x00\x01 not a stamp")         # and a garbage notebook stamp
     build.report(tree, html_only=True)                                 # re-executed, no NotJSONError
     assert "01_quick.ipynb (" in capsys.readouterr().out
     assert nbformat.read(out, as_version=4).cells
-    tree.notebook_stamp(nb).write_text("\x00\x01 not a stamp")         # garbage notebook stamp
-    assert build.execute(tree, merge=False) == ["01_quick.ipynb"]
+    assert tree.report_html.exists() and tree.report_stamp.exists()
+
+    write_nb(nb, ["x = 41", "def f(y):\n    raise ValueError(f'deliberate failure {y}')\nf(x + 1)"])
+    with pytest.raises(build.BuildError) as ei:
+        build.report(tree, html_only=True)
+    msg = str(ei.value)
+    assert "01_quick.ipynb" in msg                                     # which notebook
+    assert "raise ValueError(f'deliberate failure {y}')" in msg        # the failing cell's source
+    assert "ValueError: deliberate failure 42" in msg                  # the traceback
+    assert "\x1b[" not in msg                                          # readable, no ANSI colours
+    left = [p.name for p in (tree.report_html, tree.report_pdf, tree.report_stamp, tree.report_notebook,
+                             tree.executed_notebook(nb), tree.notebook_stamp(nb)) if p.exists()]
+    assert not left, f"a failed build left {left} behind"
+    assert not [p for p in tree.executed.iterdir() if p.name.endswith(".tmp")]
 
 
 def test_stamp_rejects_changed_outputs(tmp_path):
@@ -260,7 +252,7 @@ def test_stop_during_pdf_export_removes_latex_dir(tmp_path):
 
 # ----------------------------------------------------------------------------- lock
 def test_two_builds_of_one_tree_run_one_after_the_other(tmp_path):
-    write_nb(tmp_path / "notebooks" / "01_a.ipynb", ["import time\ntime.sleep(2)"])
+    write_nb(tmp_path / "notebooks" / "01_a.ipynb", ["import time\ntime.sleep(1.5)"])
     cmd = [PY, "-m", "tools.build", "--root", str(tmp_path), "execute"]
     kw = dict(cwd=ROOT, env=dict(os.environ, PYTHONPATH=str(ROOT)), stdout=subprocess.PIPE,
               stderr=subprocess.STDOUT, text=True)
@@ -280,12 +272,13 @@ def _git(tree: Path, *args):
     subprocess.run(["git", "-C", str(tree), *args], check=True, capture_output=True)
 
 
-@pytest.mark.parametrize("deterministic", [True, False], ids=["same-bytes", "new-bytes"])
-def test_make_test_fails_when_the_build_modifies_tracked_files(tmp_path, deterministic):
-    value = "'fixed'" if deterministic else "str(__import__('time').time_ns())"
-    write_nb(tmp_path / "notebooks" / "01_w.ipynb", [
-        "import os, pathlib\np = pathlib.Path(os.environ['WMR_PROJECT']) / 'figures' / 'data.txt'\n"
-        f"p.parent.mkdir(exist_ok=True)\np.write_text({value})"])
+def test_make_test_fails_when_the_build_modifies_tracked_files(tmp_path):
+    nb = tmp_path / "notebooks" / "01_w.ipynb"
+
+    def writes(value):
+        write_nb(nb, ["import os, pathlib\np = pathlib.Path(os.environ['WMR_PROJECT']) / 'figures' / 'data.txt'\n"
+                      f"p.parent.mkdir(exist_ok=True)\np.write_text({value})"])
+    writes("'fixed'")
     (tmp_path / "figures").mkdir()
     (tmp_path / "figures" / "data.txt").write_text("fixed")
     (tmp_path / "tests").mkdir()
@@ -296,15 +289,18 @@ def test_make_test_fails_when_the_build_modifies_tracked_files(tmp_path, determi
     _git(tmp_path, "add", "-A")
     _git(tmp_path, "-c", "user.name=t", "-c", "user.email=t@t", "commit", "-qm", "init")
     (tmp_path / "notes.txt").write_text("an uncommitted edit: not the build's doing\n")
-    p = subprocess.run([PY, "-m", "tools.build", "--root", str(tmp_path), "test", "--", "-q", "-p", "no:cacheprovider"],
-                       cwd=ROOT, env=dict(os.environ, PYTHONPATH=str(ROOT)), capture_output=True, text=True)
-    out = p.stdout + p.stderr
-    if deterministic:
-        assert p.returncode == 0, out
-        assert "left git status as it found it" in out
-    else:
-        assert p.returncode == 2, out
-        assert "figures/data.txt" in out and "notes.txt" not in out.split("FAILED", 1)[1]
+
+    def make_test():
+        p = subprocess.run([PY, "-m", "tools.build", "--root", str(tmp_path), "test", "--", "-q", "-p", "no:cacheprovider"],
+                           cwd=ROOT, env=dict(os.environ, PYTHONPATH=str(ROOT)), capture_output=True, text=True)
+        return p.returncode, p.stdout + p.stderr
+    rc, out = make_test()                         # the notebook rewrites the same bytes: clean
+    assert rc == 0 and "left git status as it found it" in out, out
+    writes("str(__import__('time').time_ns())")   # now it writes new bytes into a tracked file
+    _git(tmp_path, "-c", "user.name=t", "-c", "user.email=t@t", "commit", "-qam", "nondeterministic")
+    rc, out = make_test()
+    assert rc == 2, out
+    assert "figures/data.txt" in out and "notes.txt" not in out.split("FAILED", 1)[1]
 
 
 def test_ci_runs_the_readme_test_command():

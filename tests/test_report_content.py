@@ -50,7 +50,7 @@ LEDGER = [
          printed_holds="no", residual="0", notebook="01_first", anchor="eq-3", note="FIXTURE-NOTE"),
     dict(id="drift", kind="claim", section="4.2", verdict="wrong",
          printed="“the WMR drifts when $\\dot\\theta_i = 0$” (FIXTURE-CLAIM)",
-         corrected=r"\dot\theta_i = 0 \Rightarrow \mathbf t = \mathbf 0", why="$\\det\\mathbf M \\ne 0$ at 2000 configurations",
+         corrected=r"with locked drives ($\dot\theta_i = 0$) the platform stands still: $\mathbf t = \mathbf 0$", why="$\\det\\mathbf M \\ne 0$ at 2000 configurations",
          convention="", check="refuted by counterexample", printed_holds="no", residual="0",
          notebook="01_first", anchor="claim-drift", note=""),
 ]
