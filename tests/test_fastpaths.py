@@ -82,7 +82,10 @@ def test_certified_rank_equals_svd_rank(shape):
     rng = np.random.default_rng(sum(shape))
     A = rng.normal(size=(3000,) + shape)
     p = min(shape)
-    A[::4, ..., -1] = 0.0                                        # rank-deficient members
+    if shape[0] < shape[1]:
+        A[::4, -1, :] = 0.0                                      # rank-deficient members (a zero row)
+    else:
+        A[::4, ..., -1] = 0.0                                    # rank-deficient members (a zero column)
     A[1::4] *= 10.0 ** rng.uniform(-12, 12, (750, 1, 1))         # all scales, absolute part of the rule
     if p > 1:
         A[2::4, :, 0] = A[2::4, :, 1] * (1 + TOL * rng.uniform(0.5, 3, (750, 1)))   # nearly dependent

@@ -24,7 +24,8 @@ import numpy as np
 from ..model import validation as V
 from ..model.backend import NUMERIC
 from ..model.platform import E, rotated
-from ..model.tolerance import TOL, near_zero
+from ..model.tolerance import near_zero
+from .linalg import pinv_columns, rank
 
 __all__ = ["Solution", "forward", "inverse"]
 
@@ -63,6 +64,14 @@ def _unit_velocities(robot, twist):
     return v.reshape(v.shape[:-1] + (robot.w, 2))
 
 
+def _finite(name, given, *results):
+    """Overflow is detected, not propagated: finite input must give finite results."""
+    if not all(np.isfinite(r).all() for r in results):
+        raise ValueError(f"{name} is too large: the kinematics overflow double precision "
+                         f"(largest |{name}| = {np.abs(given).max():.3g})")
+
+
+@np.errstate(over="ignore", invalid="ignore")        # overflow is checked on the results (_finite)
 def forward(robot, beta, rates):
     r"""Platform twist from joint rates (least squares on (21)).
 
@@ -96,8 +105,7 @@ def forward(robot, beta, rates):
     beta = V.finite_array("beta", beta, last=robot.w)
     rates = V.finite_array("rates", rates, last=robot.n_rates)
     J1 = robot.J1()
-    s = np.linalg.svd(J1, compute_uv=False)
-    if len(s) < 3 or s[-1] <= TOL * max(1.0, s[0]):
+    if int(rank(J1)) < 3:                              # columns of different units: scaled (tolerance.py)
         raise ValueError(
             f"J1 has rank < 3 (fewer than two distinct mount points: {robot.mount_points.tolist()}): "
             "the twist is not determined")
@@ -108,12 +116,14 @@ def forward(robot, beta, rates):
         th = rates[..., sl]
         rhs[..., i, :] = rotated(beta[..., i], _mul(th, L.T), _mul(th, EL.T), axes=1)
     rhs = rhs.reshape(batch + (2 * robot.w,))         # (..., 2w)
-    t = _mul(rhs, np.linalg.pinv(J1).T)              # (..., 3)
+    t = _mul(rhs, pinv_columns(J1).T)                # (..., 3)
     res = _mul(t, J1.T) - rhs
+    _finite("rates", rates, t, res)
     scale = np.max(np.abs(rhs), axis=-1)
     return Solution(t, res, np.all(near_zero(res, scale[..., None]), axis=-1))
 
 
+@np.errstate(over="ignore", invalid="ignore")
 def inverse(robot, beta, twist, beta_dot=None):
     r"""Joint rates that realise a platform twist (unit by unit, exact or least squares).
 
@@ -162,7 +172,7 @@ def inverse(robot, beta, twist, beta_dot=None):
         c, s = np.cos(beta[..., i]), np.sin(beta[..., i])
         vi = v[..., i, :]
         local_v = rotated((c, -s), vi, _mul(vi, Emat.T), axes=1)              # R^T [E d 1] t = R(-beta) v
-        th = _mul(local_v, np.linalg.pinv(L).T)                                # L^+ R^T v
+        th = _mul(local_v, pinv_columns(L).T)                                  # L^+ R^T v
         if u.kind == "dual":
             # free differential rate fixed by the steering wanted: phi_dot = psi_dot + beta_dot
             bd = 0.0 if beta_dot is None else beta_dot[..., i]
@@ -171,5 +181,6 @@ def inverse(robot, beta, twist, beta_dot=None):
         rates[..., sl] = th
         res[..., i, :] = rotated((c, s), _mul(th, L.T), _mul(th, EL.T), axes=1) - vi   # B_i theta_i - [E d_i 1] t
     res = -res.reshape(batch + (2 * robot.w,))                             # J1 t - J2 theta_dot
+    _finite("twist", twist, rates, res)
     scale = np.max(np.abs(v), axis=(-2, -1))
     return Solution(rates, res, np.all(near_zero(res, scale[..., None]), axis=-1))

@@ -47,13 +47,22 @@ class InstantCentre:
     direction: np.ndarray
 
 
-def instantaneous_centre(twist):
+def instantaneous_centre(twist, length=None):
     r"""Instantaneous centre of rotation (63) of platform twists.
+
+    The centre is **at infinity** (a translation) when :math:`|\dot\psi|\,\ell \le \mathrm{TOL}\,
+    \|\dot{\mathbf c}\|`, i.e. when it is farther from C than :math:`\ell/\mathrm{TOL}` for a robot of
+    size :math:`\ell` (``length``); without a length, only :math:`\dot\psi = 0` is a translation.
+    The platform is **still** only for the zero twist.  Both decisions are the same in every unit of
+    length and time (:mod:`wmr.model.tolerance`).
 
     Parameters
     ----------
     twist : array (..., 3)
         :math:`[\dot\psi, \dot x, \dot y]`, body frame.
+    length : float, optional
+        The size of the robot (e.g. :func:`wmr.characteristic_length`), in the unit of
+        :math:`\dot x/\dot\psi`; default: no tolerance.
 
     Returns
     -------
@@ -66,11 +75,16 @@ def instantaneous_centre(twist):
     [-2.0, 0.0]
     """
     t = V.finite_array("twist", twist, last=3)
+    length = None if length is None else V.positive("length", length)
     psi, c = t[..., 0], t[..., 1:]
-    speed = np.linalg.norm(c, axis=-1)
+    speed = np.hypot(c[..., 0], c[..., 1])
     Ec = np.stack([-c[..., 1], c[..., 0]], axis=-1)                  # E c_dot
-    still = near_zero(psi) & near_zero(speed)
-    infinite = near_zero(psi, speed) & ~still
+    still = (psi == 0) & (speed == 0)
+    if length is None:
+        infinite = (psi == 0) & ~still
+    else:
+        with np.errstate(over="ignore"):
+            infinite = near_zero(psi * length, speed) & ~still
     kind = np.where(still, STILL, np.where(infinite, AT_INFINITY, FINITE))
     with np.errstate(divide="ignore", invalid="ignore"):
         point = Ec / np.where(kind == FINITE, psi, 1.0)[..., None]  # (63)
@@ -133,6 +147,7 @@ def centre_to_wheels(twist, d):
     Parameters
     ----------
     twist : array (..., 3), with :math:`\dot\psi \ne 0`
+        The centre must be finite for a robot of the size of ``d`` (:func:`instantaneous_centre`).
     d : array (w, 2)
 
     Returns
@@ -144,9 +159,9 @@ def centre_to_wheels(twist, d):
     >>> centre_to_wheels([1.0, 0.0, 2.0], [[1.0, 0.0]]).tolist()          # U = (-2, 0)
     [[-3.0, 0.0]]
     """
-    ic = instantaneous_centre(twist)
+    d = V.finite_array("d", d, last=2)
+    ic = instantaneous_centre(twist, length=float(np.abs(d).max()) or None)
     if np.any(ic.kind != FINITE):
         bad = np.asarray(twist)[ic.kind != FINITE][:1].tolist()
         raise ValueError(f"u_i needs a finite instantaneous centre (psi_dot != 0); got twist {bad}")
-    d = V.finite_array("d", d, last=2)
     return ic.point[..., None, :] - d
