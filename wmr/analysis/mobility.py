@@ -29,7 +29,8 @@ import numpy as np
 
 from ..model import validation as V
 from ..model.backend import NUMERIC
-from ..model.platform import E, rotated
+from ..model.platform import E
+from ..model.trig import trig_combination
 from .linalg import _left_null, null_space, rank
 
 __all__ = ["twist_constraints", "rank_F", "mobility", "admissible_twists"]
@@ -74,12 +75,12 @@ def twist_constraints(robot, beta):
         Ji = J1[2 * i:2 * i + 2]
         parts.append((i, N.T @ Ji, N.T @ Et @ Ji))
     k = sum(P.shape[0] for _, P, _ in parts)
-    A = np.empty(beta.shape[:-1] + (k, 3))
+    Ps, Qs = np.zeros((robot.w, k, 3)), np.zeros((robot.w, k, 3))
     row = 0
-    for i, P, Q in parts:
-        A[..., row:row + P.shape[0], :] = rotated(beta[..., i], P, Q)   # N_i^T R(beta_i)^T J_{1,i}
+    for i, P, Q in parts:                      # N_i^T R(beta_i)^T J_{1,i} at unit i's rows
+        Ps[i, row:row + P.shape[0]], Qs[i, row:row + P.shape[0]] = P, Q
         row += P.shape[0]
-    return A, base_rank
+    return trig_combination(beta, Ps, Qs), base_rank
 
 
 def rank_F(robot, beta):

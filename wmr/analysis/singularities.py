@@ -47,6 +47,7 @@ from ..model.platform import wrap_angle
 from ..model.tolerance import TOL, near_zero
 from .lines import (AT_INFINITY, COINCIDENT, FINITE, NONE, Concurrency, axles_concurrency, axles_through,
                     circumcircle, concurrency_point, pair_intersections, wheel_plane_lines)
+from .linalg import det
 from .mobility import rank_F
 
 __all__ = ["det_J", "det_J_scale", "is_singular", "det_J_symbolic", "det_J_polynomial", "exact_zero",
@@ -138,7 +139,7 @@ def det_J(robot, beta, L=None):
     True
     """
     _require_square(V.numeric_robot(robot))
-    return np.linalg.det(robot.J(beta, L=_default_L(robot, L)))
+    return det(robot.J(beta, L=_default_L(robot, L)))                 # closed form, batched
 
 
 def det_J_scale(robot, beta, L=None):

@@ -18,7 +18,7 @@ import numpy as np
 
 from .backend import NUMERIC, choose
 
-__all__ = ["E", "rotation", "rotated", "wrap_angle", "point_row", "point_velocity"]
+__all__ = ["E", "rotation", "cos_sin", "rotated", "wrap_angle", "point_row", "point_velocity"]
 
 
 def E(backend=NUMERIC):
@@ -67,6 +67,50 @@ def rotation(angle, backend=NUMERIC):
     return backend.matrix([[c, -s], [s, c]])
 
 
+def cos_sin(beta, out=None):
+    r""":math:`(\cos\beta, \sin\beta)` of an array of angles, from :math:`t = \tan(\beta/2)`.
+
+    .. math:: \cos\beta = \frac{2}{1 + t^2} - 1,\qquad \sin\beta = \frac{2t}{1 + t^2}.
+
+    NumPy evaluates ``np.cos`` and ``np.sin`` of float64 arrays one element at a time (about
+    12 ns each on the reference machine) but ``np.tan`` with SIMD (about 1.4 ns), so the batched
+    kernels take their cosines and sines from here.  Both are within one unit in the last place
+    of 1 of the exact values (an absolute error of :math:`2.2\times10^{-16}`, the size of the
+    rounding of :math:`\beta` itself); exact at :math:`\beta = 0`, and :math:`\beta = \pm\pi` gives
+    :math:`\cos = -1` and the float :math:`\sin\pi`.
+
+    Parameters
+    ----------
+    beta : numpy.ndarray (...)
+        Finite angles in radians.
+    out : tuple of two numpy.ndarray (...), optional
+        Arrays to write the cosines and sines into.
+
+    Returns
+    -------
+    c, s : numpy.ndarray (...)
+
+    Examples
+    --------
+    >>> c, s = cos_sin(np.array([0.0, np.pi / 3, -np.pi]))
+    >>> bool(np.allclose(c, [1.0, 0.5, -1.0], rtol=0, atol=3e-16))
+    True
+    >>> bool(np.allclose(s, np.sin([0.0, np.pi / 3, -np.pi]), rtol=0, atol=3e-16))
+    True
+    """
+    t = np.multiply(beta, 0.5, out=np.empty(np.shape(beta)))     # arrays even when 0-d
+    np.tan(t, out=t)
+    h = np.multiply(t, t, out=np.empty_like(t))
+    h += 1.0
+    np.divide(2.0, h, out=h)                       # h = 2 / (1 + t^2)
+    if out is None:
+        out = (np.empty_like(h), np.empty_like(h))
+    c, s = out
+    np.subtract(h, 1.0, out=c)
+    np.multiply(t, h, out=s)
+    return c, s
+
+
 def rotated(beta, M, EM, axes=2, backend=None):
     r""":math:`\mathbf R(\beta)\mathbf M = \cos\beta\,\mathbf M + \sin\beta\,\mathbf E\mathbf M`, batched over :math:`\beta`.
 
@@ -109,7 +153,7 @@ def rotated(beta, M, EM, axes=2, backend=None):
         c, s = beta
     else:
         bk = choose(beta, backend=backend)
-        c, s = bk.cos(beta), bk.sin(beta)
+        c, s = cos_sin(np.asarray(beta, dtype=float)) if bk is NUMERIC else (bk.cos(beta), bk.sin(beta))
     if isinstance(c, np.ndarray):
         index = (Ellipsis,) + (None,) * axes
         c, s = c[index], s[index]

@@ -15,7 +15,8 @@ import sympy as sp
 
 from . import validation as V
 from .backend import NUMERIC, SYMBOLIC, choose, is_symbolic
-from .platform import point_row, rotated
+from .platform import point_row
+from .trig import trig_combination
 from .wheels import UNIT_TYPES
 
 __all__ = ["Robot", "TWIST_NAMES"]
@@ -200,12 +201,23 @@ class Robot:
         """
         bk = self._backend(beta, backend)
         b = self._beta(beta, bk)
-        batch = () if bk is SYMBOLIC else b.shape[:-1]
-        M = bk.zeros(2 * self.w, self.n_rates, batch)
+        if bk is NUMERIC:
+            return trig_combination(b, *self._wheel_terms())
+        M = bk.zeros(2 * self.w, self.n_rates)
         for i, (u, sl) in enumerate(zip(self.wheels, self.rate_slices)):
-            bi = b[i] if bk is SYMBOLIC else b[..., i]
-            bk.set_block(M, 2 * i, sl.start, u.block(bi, backend=bk))
+            bk.set_block(M, 2 * i, sl.start, u.block(b[i], backend=bk))
         return M
+
+    def _wheel_terms(self):
+        r"""The pair :math:`(\mathbf P, \mathbf Q)`, each (w, 2w, n_rates), with
+        :math:`\mathbf J_2(\boldsymbol\beta) = \sum_i(\cos\beta_i\,\mathbf P_i + \sin\beta_i\,\mathbf Q_i)`:
+        unit i's :math:`\mathbf L_i` and :math:`\mathbf E\mathbf L_i` (:meth:`OffsetWheel.block_terms`) placed
+        at its block of :math:`\mathbf J_2` (numeric robots)."""
+        P = np.zeros((self.w, 2 * self.w, self.n_rates))
+        Q = np.zeros_like(P)
+        for i, (u, sl) in enumerate(zip(self.wheels, self.rate_slices)):
+            P[i, 2 * i:2 * i + 2, sl], Q[i, 2 * i:2 * i + 2, sl] = u.block_terms(NUMERIC)
+        return P, Q
 
     def F(self, beta=None, backend=None):
         r"""Functional matrix :math:`\mathbf F = [\mathbf J_1\ \ -\mathbf J_2]` (22)-(24).
@@ -227,12 +239,10 @@ class Robot:
         if bk is SYMBOLIC:
             return bk.broadcast_hstack(self.J1(backend=SYMBOLIC), -self.J2(beta, SYMBOLIC))
         b = self._beta(beta, bk)
-        M = np.zeros(b.shape[:-1] + (2 * self.w, 3 + self.n_rates))   # filled in place: no copies
-        M[..., :, :3] = self.J1(backend=NUMERIC)
-        for i, (u, sl) in enumerate(zip(self.wheels, self.rate_slices)):
-            # (no in-place np.negative on this strided view: NumPy 2.4 gets (k, 1) column views wrong)
-            M[..., 2 * i:2 * i + 2, 3 + sl.start:3 + sl.stop] = -u.block(b[..., i], backend=NUMERIC)
-        return M
+        P, Q = self._wheel_terms()                                    # J2 = sum cos P_i + sin Q_i
+        const = np.concatenate([self.J1(backend=NUMERIC), np.zeros(P.shape[1:])], axis=-1)
+        pad = np.zeros(P.shape[:2] + (3,))
+        return trig_combination(b, np.concatenate([pad, -P], -1), np.concatenate([pad, -Q], -1), const)
 
     def J(self, beta=None, L=1, backend=None):
         r"""The product :math:`\mathbf J = \mathbf J_{L1}^T\mathbf J_2` (56).
@@ -254,28 +264,23 @@ class Robot:
         -----
         With NumPy, unit i contributes the columns
         :math:`\mathbf J_{L1,i}^T\mathbf B_i(\beta_i) = \cos\beta_i\,\mathbf J_{L1,i}^T\mathbf L_i +
-        \sin\beta_i\,\mathbf J_{L1,i}^T\mathbf E\mathbf L_i` (:func:`wmr.model.platform.rotated`), so the
-        mostly-zero :math:`\mathbf J_2` is never formed.
+        \sin\beta_i\,\mathbf J_{L1,i}^T\mathbf E\mathbf L_i` (:func:`wmr.model.platform.rotated`), evaluated
+        entry by entry by :func:`wmr.model.trig.trig_combination`, so the mostly-zero
+        :math:`\mathbf J_2` is never formed.
         """
         bk = self._backend(beta, backend)
         if bk is SYMBOLIC:
             return self.J1(L, backend=SYMBOLIC).T * self.J2(beta, SYMBOLIC)
         b = self._beta(beta, bk)
-        JL1 = self.J1(L, backend=NUMERIC)
-        terms = []
+        JL1T = self.J1(L, backend=NUMERIC).T
+        P, Q = self._wheel_terms()                                    # J = J_L1^T J2, term by term
         with np.errstate(over="ignore", invalid="ignore"):
-            for i, u in enumerate(self.wheels):
-                Li, ELi = u.block_terms(NUMERIC)
-                Ji = JL1[2 * i:2 * i + 2].T                  # (3, 2)
-                terms.append((Ji @ Li, Ji @ ELi))
-            ok = all(np.isfinite(2 * np.abs(P) + 2 * np.abs(Q)).all() for P, Q in terms)   # |cos P + sin Q| <= |P| + |Q|
+            P, Q = JL1T @ P, JL1T @ Q
+            ok = np.isfinite(2 * np.abs(P).sum(0) + 2 * np.abs(Q).sum(0)).all()   # |entry| <= sum |P_i| + |Q_i|
         if not ok:
             raise ValueError(f"J overflows for this robot and L = {L!r}: the wheel radii times d_i / L exceed "
                              "the double-precision range")
-        M = np.empty(b.shape[:-1] + (3, self.n_rates))
-        for i, ((P, Q), sl) in enumerate(zip(terms, self.rate_slices)):
-            M[..., :, sl] = rotated(b[..., i], P, Q)         # J_{L1,i}^T R(beta_i) L_i (11)
-        return M
+        return trig_combination(b, P, Q)
 
     # --- frames ---------------------------------------------------------------------------------
     def moved(self, origin=(0.0, 0.0), angle=0.0):
