@@ -231,7 +231,10 @@ def test_steering_angles_point_the_wheels_along_the_velocity(kind):
     assert np.all(np.abs(cosang[moving & steer] - 1) < 1e-12)
     assert np.array_equal(beta[~moving | ~steer], current[~moving | ~steer])
     assert np.all(np.abs(beta[moving & steer]) <= np.pi)
-    # still within TOL of the terms' size, and not above it
+    # still within TOL of the terms' size (relative: a slow translation is a translation in any unit)
     t = np.array([[0.0, 1e-10, 0.0], [0.0, 2e-9, 0.0]])
-    assert wmr.steering_angles(wmr.paper_robot("centred"), t).tolist()[0] == [0.0, 0.0, 0.0]
-    assert np.allclose(np.abs(wmr.steering_angles(wmr.paper_robot("centred"), t)[1]), np.pi / 2)
+    assert np.allclose(np.abs(wmr.steering_angles(wmr.paper_robot("centred"), t)), np.pi / 2)
+    at_c = wmr.Robot([wmr.CentredWheel((0.0, 0.0), r=0.1), wmr.CentredWheel((1.0, 0.0), r=0.1)])
+    t = np.array([[1.0, 1e-12, 0.0], [1.0, 1e-8, 0.0]])                # wheel 1 at the spin centre, or near it
+    got = wmr.steering_angles(at_c, t, current=[[0.7, 0.7], [0.7, 0.7]])
+    assert got[0, 0] == 0.7 and abs(abs(got[1, 0]) - np.pi / 2) < 1e-12
