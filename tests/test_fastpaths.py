@@ -238,3 +238,21 @@ def test_steering_angles_point_the_wheels_along_the_velocity(kind):
     t = np.array([[1.0, 1e-12, 0.0], [1.0, 1e-8, 0.0]])                # wheel 1 at the spin centre, or near it
     got = wmr.steering_angles(at_c, t, current=[[0.7, 0.7], [0.7, 0.7]])
     assert got[0, 0] == 0.7 and abs(abs(got[1, 0]) - np.pi / 2) < 1e-12
+
+
+# ------------------------------------------------------------------------------ Robot.J2 / F / J
+@pytest.mark.parametrize("kind", sorted(ROBOTS))
+def test_robot_matrices_equal_the_dense_definitions(kind):
+    """J2, F and J (entry-major, from trig_combination) against blockdiag(R(beta_i) L_i) formed in full."""
+    bot = ROBOTS[kind]()
+    beta, _ = _configurations(bot, 20000, 8)
+    beta[0], beta[1], beta[2] = 0.0, np.pi, -np.pi / 2                   # exact special angles
+    beta = beta.reshape(40, 500, bot.w)                                  # two batch axes
+    for L in (1.0, 0.37):
+        assert np.allclose(bot.J(beta, L=L), R.J(bot, beta, L), rtol=0, atol=4e-16)
+    assert np.allclose(bot.J2(beta), R.J2(bot, beta), rtol=0, atol=4e-16)
+    F = bot.F(beta)
+    assert F.shape == (40, 500, 2 * bot.w, 3 + bot.n_rates)
+    assert np.allclose(F, R.F(bot, beta), rtol=0, atol=4e-16)
+    assert np.array_equal(F[7, 11], bot.F(beta[7, 11]))                 # one configuration = any batch
+    assert np.array_equal(np.ascontiguousarray(F), F)                    # the layout changes no value
