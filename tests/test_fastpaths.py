@@ -82,7 +82,10 @@ def test_certified_rank_equals_svd_rank(shape):
     rng = np.random.default_rng(sum(shape))
     A = rng.normal(size=(3000,) + shape)
     p = min(shape)
-    A[::4, ..., -1] = 0.0                                        # rank-deficient members
+    if shape[0] < shape[1]:
+        A[::4, -1, :] = 0.0                                      # rank-deficient members (a zero row)
+    else:
+        A[::4, ..., -1] = 0.0                                    # rank-deficient members (a zero column)
     A[1::4] *= 10.0 ** rng.uniform(-12, 12, (750, 1, 1))         # all scales, absolute part of the rule
     if p > 1:
         A[2::4, :, 0] = A[2::4, :, 1] * (1 + TOL * rng.uniform(0.5, 3, (750, 1)))   # nearly dependent
@@ -228,10 +231,13 @@ def test_steering_angles_point_the_wheels_along_the_velocity(kind):
     assert np.all(np.abs(cosang[moving & steer] - 1) < 1e-12)
     assert np.array_equal(beta[~moving | ~steer], current[~moving | ~steer])
     assert np.all(np.abs(beta[moving & steer]) <= np.pi)
-    # still within TOL of the terms' size, and not above it
+    # still within TOL of the terms' size (relative: a slow translation is a translation in any unit)
     t = np.array([[0.0, 1e-10, 0.0], [0.0, 2e-9, 0.0]])
-    assert wmr.steering_angles(wmr.paper_robot("centred"), t).tolist()[0] == [0.0, 0.0, 0.0]
-    assert np.allclose(np.abs(wmr.steering_angles(wmr.paper_robot("centred"), t)[1]), np.pi / 2)
+    assert np.allclose(np.abs(wmr.steering_angles(wmr.paper_robot("centred"), t)), np.pi / 2)
+    at_c = wmr.Robot([wmr.CentredWheel((0.0, 0.0), r=0.1), wmr.CentredWheel((1.0, 0.0), r=0.1)])
+    t = np.array([[1.0, 1e-12, 0.0], [1.0, 1e-8, 0.0]])                # wheel 1 at the spin centre, or near it
+    got = wmr.steering_angles(at_c, t, current=[[0.7, 0.7], [0.7, 0.7]])
+    assert got[0, 0] == 0.7 and abs(abs(got[1, 0]) - np.pi / 2) < 1e-12
 
 
 # ------------------------------------------------------------------------------ Robot.J2 / F / J
