@@ -158,7 +158,7 @@ def _run_xelatex(d: Path, epoch: int) -> str:
     for run in range(1, MAX_RUNS + 1):
         p = procs.run(["xelatex", "-interaction=nonstopmode", "-halt-on-error", "-file-line-error", "report.tex"],
                       cwd=d, env=env, timeout=900)
-        log = (d / "report.log").readtext_of(encoding="utf-8", errors="replace") if (d / "report.log").exists() else p.stdout
+        log = (d / "report.log").read_text(encoding="utf-8", errors="replace") if (d / "report.log").exists() else p.stdout
         if p.returncode != 0 or not (d / "report.pdf").exists():
             lines = log.splitlines()
             at = next((i for i, l in enumerate(lines) if l.startswith("!") or re.match(r"\./report\.tex:\d+:", l)), None)
@@ -180,7 +180,7 @@ def export_pdf(nb, t: Tree, out: Path, epoch: int) -> list[str]:
     tex, files = to_latex(nb)
     atomic_write(t.report_tex, tex)              # to read the log's line numbers against
     with temp_dir(t.tmp, "pdf-") as d:
-        (d / "report.tex").writetext_of(tex, encoding="utf-8")
+        (d / "report.tex").write_text(tex, encoding="utf-8")
         for name, data in files.items():
             (d / name).write_bytes(data)
         log = _run_xelatex(d, epoch)
