@@ -17,6 +17,7 @@ With isotropic Jacobians these reduce to the paper's (49)-(50) and (55)-(57).
 """
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 
 import numpy as np
@@ -72,11 +73,31 @@ def _constants(robot):
     units = []
     for i, (u, sl) in enumerate(zip(robot.wheels, robot.rate_slices)):
         L, EL = (np.asarray(m, dtype=float) for m in u.block_terms(NUMERIC))   # B = cos L + sin E L
-        units.append(_UnitConstants(J1[2 * i:2 * i + 2], L, EL, pinv_columns(L), sl,
+        units.append(_UnitConstants(J1[2 * i:2 * i + 2], L, EL, _pinv_rank(L)[0], sl,
                                     2 * u.b / u.r if u.kind == "dual" else None))
     # J1's psi_dot column is a length, the others pure numbers: rank and pseudo-inverse with the
     # columns scaled (wmr.model.tolerance), so a robot 1e300 or 1e-300 in size is still determined
-    return tuple(units), pinv_columns(J1), bool(rank(J1) == 3)
+    pinv_J1, rank_J1 = _pinv_rank(J1)
+    return tuple(units), pinv_J1, rank_J1 == 3
+
+
+def _pinv_rank(M):
+    """``(pinv_columns(M), rank(M))`` of a small constant matrix, remembered by its value.
+
+    The matrices come from the model at every call (so they are never stale); only what is
+    derived from them, two SVDs, is looked up, which keeps a call on one configuration cheap
+    (the simulation calls the kinematics once per step).
+    """
+    M = np.ascontiguousarray(M, dtype=float)
+    return _pinv_rank_of(M.tobytes(), M.shape)
+
+
+@functools.lru_cache(maxsize=256)
+def _pinv_rank_of(data, shape):
+    M = np.frombuffer(data).reshape(shape)
+    P = pinv_columns(M)
+    P.setflags(write=False)
+    return P, int(rank(M))
 
 
 def _lin(coefs, xs):
