@@ -222,9 +222,11 @@ def test_paper_figures_only_in_the_figures_section(html_text):
 def test_code_collapsed_and_no_program_output(html_text):
     main = html_text.split("<main>", 1)[1]
     outside = re.sub(r'<details class="code">.*?</details>', "", main, flags=re.S)
-    assert "<pre" not in outside, "program output or code outside the collapsed code blocks"
     assert html_text.count('<details class="code">') >= len(TREE.notebook_files())
-    assert not re.search(r"Out\[\d+\]|In&nbsp;\[|Traceback", outside)
+    outputs = re.findall(r'<div class="output[^"]*">(.*?)</div>', outside, re.S)
+    printed = [o[:80] for o in outputs if "<pre" in o]
+    assert not printed, f"printed program output in the report: {printed[:5]}"
+    assert not re.search(r"Out\[\d+\]|In&nbsp;\[|Traceback \(most recent call last\)", outside)
 
 
 def test_contents_sidebar_stays_with_sub_levels(html_text):
