@@ -78,7 +78,7 @@ figures: venv ## regenerate figures/ outside the notebooks (python -m wmr.paper.
 report: venv tex ## build/report.html + build/report.pdf (cached: < 1 s when nothing changed)
 	@$(BUILD) report
 
-test: venv tex ## execute notebooks, pytest, then fail if the build modified tracked files
+test: venv tex ## execute notebooks, pytest (two partitions at once), fail if the build modified tracked files
 	@$(BUILD) test
 
 bench: venv ## time the batched kernels against floors and peers (tools/bench.py)

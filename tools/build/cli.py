@@ -2,7 +2,8 @@
 
 Commands: ``execute`` (stale notebooks, then the ledger), ``report [--html-only]``, ``figures``
 (``python -m wmr.paper.figures figures/``, for ``make figures``), ``test [-- PYTEST ARGS]`` (what
-``make test`` runs: execute, pytest, then fail if the build modified tracked files), ``snapshot`` and
+``make test`` runs: execute, pytest in two partitions at once, then fail if the build modified
+tracked files), ``snapshot`` and
 ``check-clean`` (the two halves of that check). Exit status: 0 success, 1 a step failed, 2 the
 build left tracked files modified, 128+N stopped by signal N.
 """
@@ -18,6 +19,7 @@ from .files import remove_temp_dirs
 from .log import BuildError, Interrupted, say
 from .paths import Tree
 from .report import report
+from .testrun import run_tests
 from .worker import skip_slow_imports
 
 __all__ = ["main"]
@@ -46,7 +48,7 @@ def _check_clean(t: Tree) -> int:
 def _test(t: Tree, pytest_args: list[str]) -> int:
     guard.snapshot(t)
     execute(t)
-    rc = procs.call([sys.executable, "-m", "pytest", *pytest_args], cwd=t.root, env=t.env())
+    rc = run_tests(t, pytest_args)
     if rc == 5:
         say("test", "pytest collected no tests: failing")
         rc = 1

@@ -142,6 +142,11 @@ class Tree:
         return self.build / "tmp"
 
     @property
+    def test_runs(self) -> Path:
+        """Logs, JUnit reports and recorded durations of the test partitions (``make test``)."""
+        return self.build / "test-runs"
+
+    @property
     def git_snapshot(self) -> Path:
         """State of the work tree before ``make test`` (see :mod:`tools.build.guard`)."""
         return self.build / "git-before.json"

@@ -29,7 +29,7 @@ from pathlib import Path
 
 from .log import Interrupted, say
 
-__all__ = ["run", "call", "terminate_all", "handle_signals", "die_with_parent", "become_subreaper",
+__all__ = ["run", "call", "call_parallel", "terminate_all", "handle_signals", "die_with_parent", "become_subreaper",
            "descendants", "stopping", "BuildLock"]
 
 _children: set[subprocess.Popen] = set()
@@ -121,6 +121,36 @@ def call(cmd: list[str], *, cwd=None, env=None) -> int:
         if p.poll() is None:
             _kill_group(p, signal.SIGKILL)
             p.wait()
+
+
+def call_parallel(cmds: list[list[str]], *, cwd=None, env=None, logs: list[Path]) -> list[int]:
+    """Run ``cmds`` at once, each in its own process group: the first with the build's own
+    stdout/stderr, each other one writing to its file in ``logs``; return their exit statuses."""
+    if _stopping:
+        raise Interrupted(signal.SIGTERM)
+    started: list[subprocess.Popen] = []
+    files = []
+    try:
+        for k, cmd in enumerate(cmds):
+            out = None
+            if k:
+                out = open(logs[k], "w", encoding="utf-8")
+                files.append(out)
+            with _lock:
+                p = subprocess.Popen(list(cmd), cwd=cwd, env=env, start_new_session=True, stdout=out,
+                                     stderr=subprocess.STDOUT if out else None)
+                _children.add(p)
+            started.append(p)
+        return [p.wait() for p in started]
+    finally:
+        for p in started:
+            with _lock:
+                _children.discard(p)
+            if p.poll() is None:
+                _kill_group(p, signal.SIGKILL)
+                p.wait()
+        for f in files:
+            f.close()
 
 
 def _kill_group(p: subprocess.Popen, sig: int) -> None:
