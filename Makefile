@@ -22,7 +22,7 @@ TEX_DEBS := texlive-xetex texlive-fonts-recommended texlive-plain-generic \
             texlive-latex-extra lmodern pandoc poppler-utils
 TEX_CMDS := xelatex pandoc pdftotext pdfinfo
 
-.PHONY: help venv tex test report figures notebooks bench clean lock
+.PHONY: help venv tex test report figures notebooks student bench clean lock
 
 help: ## show this help
 	@echo "wmr — reproducible edition of Leow, Low & Loh (2002)"
@@ -72,6 +72,9 @@ test: venv tex ## execute notebooks, then pytest (package tests + notebook/repor
 	@$(VPY) $(BUILD) execute
 	@rc=0; $(VPY) -m pytest || rc=$$?; \
 	if [ $$rc -eq 5 ]; then echo "pytest collected no tests: failing"; exit 1; fi; exit $$rc
+
+student: venv ## build/student/*.ipynb: the chapters without worked solutions (RUN=1: also run them)
+	@$(VPY) tools/student.py $(if $(RUN),--run,)
 
 bench: venv ## time the batched kernels against floors and peers (tools/bench.py)
 	@$(VPY) tools/bench.py

@@ -16,8 +16,8 @@ import build  # noqa: E402
 
 TREE = build.Tree(os.environ.get("WMR_ROOT") or ROOT)  # WMR_ROOT: test another tree
 NOTEBOOKS = TREE.notebook_files()
-LEDGER_COLUMNS = ["id", "section", "verdict", "printed", "corrected", "convention",
-                  "symbolic_check", "max_residual", "notebook", "note"]
+LEDGER_COLUMNS = ["id", "kind", "section", "verdict", "printed", "corrected", "why", "convention", "check",
+                  "printed_holds", "residual", "notebook", "anchor", "note"]   # CONTRACTS.md
 
 
 @pytest.mark.parametrize(

@@ -14,7 +14,7 @@ from __future__ import annotations
 import sympy as sp
 
 from . import symbols as S
-from . import register
+from . import register, register_claim
 from .isotropy import D
 
 SECTION_KIN, SECTION_MOB, SECTION_ISO = "5.1", "5.2", "5.3"
@@ -63,14 +63,14 @@ register(
     sp.Eq(F, sp.Matrix.hstack(
         sp.Matrix.vstack(*[sp.Matrix.hstack(_E * sp.Matrix(p), _I2) for p in D]),
         sp.diag(*[_R(b) * sp.Matrix([0, _r]) for b in S.beta])), evaluate=False),
-    garbled="the third block row prints a plain 1 for the identity 1 (2 x 2)",
+    garbled=r"the third block row prints a plain $1$ for the $2\times2$ identity $\mathbf 1$",
     note="three centred wheels, general mount points D; note the sign +r")
 
 register(
     "53", SECTION_MOB,
     r"\dot{\mathbf{q}} \equiv \begin{bmatrix}\dot\psi & \dot x & \dot y & \dot\theta_1 & \dot\theta_2 & \dot\theta_3\end{bmatrix}^{\mathrm{T}}",
     sp.Eq(q_dot, sp.Matrix([S.psi_dot, S.x_dot, S.y_dot, *S.theta_dot]), evaluate=False),
-    garbled="the text before it says 'q' for q-dot",
+    garbled=r"the text before it says $\mathbf q$ for $\dot{\mathbf q}$",
     note="definition: the column order of F in (52)")
 
 register(
@@ -118,3 +118,22 @@ register(
         "iii": ((1, 2), (-60, 120)),
         "iv": ((2, 3), (0, 180)),
     })
+
+
+# --- claims of Sections 5.2-5.3 -----------------------------------------------------------------
+register_claim(
+    "mobility-centred", SECTION_MOB,
+    r"The rank of the functional matrix $\mathbf F$ is 5 when the WMR is in translation or in rotation. The "
+    r"resulting mobility of this WMR is unity [...] provided these angles satisfy the coordination condition "
+    r"[the wheel axes converge to a single point, possibly at infinity].")
+
+register_claim(
+    "singular-list-complete", SECTION_ISO,
+    r"$\det(\mathbf J)$ vanishes for the following configurations: (i) $\beta_1 = \beta_2 = \beta_3$; "
+    r"(ii) $\beta_1 = \beta_3 = 60^\circ$ or $-120^\circ$; (iii) $\beta_1 = \beta_2 = -60^\circ$ or $120^\circ$; "
+    r"(iv) $\beta_2 = \beta_3 = 0^\circ$ or $180^\circ$; and (v) planes of all three wheels intersect.")
+
+register_claim(
+    "singular-v-immobile", SECTION_ISO,
+    r"[In (v)] the planes of all three wheels intersect at a single point $D_P$ [...] The axles of the three wheels "
+    r"intersect at three different locations. Under this condition, the WMR has lost all its mobility.")
