@@ -1,7 +1,12 @@
 # wmr — executable edition of Leow, Low & Loh (2002).
 #
-#   make test      set up .venv + TeX, execute the notebooks (cached), run pytest
+#   make test      set up .venv + TeX, execute the notebooks (cached), run pytest, and fail if
+#                  the build modified files that git tracks
 #   make report    build/report.html (self-contained, offline math) + build/report.pdf
+#
+# The build tool is the package tools/build (python -m tools.build --help). It takes a lock
+# (build/.lock: a second build of this tree waits), writes every output atomically, records in
+# stamps the hashes of what each step produced, and stops every child process on SIGINT/SIGTERM.
 #
 # Everything Python comes from environment.lock (pinned + sha256-hashed); the TeX
 # toolchain for the PDF comes from Debian packages (installed here when possible).
@@ -14,12 +19,12 @@ PYTHON ?= python3
 VENV   := .venv
 VPY    := $(VENV)/bin/python
 STAMP  := $(VENV)/.environment.lock.sha256
-BUILD  := tools/build.py
+BUILD  := $(VPY) -m tools.build
 
 # Debian packages for the PDF (xelatex + what nbconvert's LaTeX template \usepackage's),
 # pandoc (nbconvert's markdown -> LaTeX) and poppler-utils (pdftotext/pdfinfo in the tests).
 TEX_DEBS := texlive-xetex texlive-fonts-recommended texlive-plain-generic \
-            texlive-latex-extra lmodern pandoc poppler-utils
+            texlive-latex-extra lmodern fonts-lmodern pandoc poppler-utils
 TEX_CMDS := xelatex pandoc pdftotext pdfinfo
 
 .PHONY: help venv tex test report figures notebooks student bench clean lock
@@ -47,8 +52,8 @@ venv: ## (internal) create/refresh .venv from environment.lock, editable install
 tex: ## (internal) make sure xelatex/pandoc/poppler are present (apt-get on Debian as root)
 	@missing=""; \
 	for c in $(TEX_CMDS); do command -v $$c >/dev/null 2>&1 || missing="$$missing $$c"; done; \
-	if [ -z "$$missing" ] && kpsewhich adjustbox.sty tcolorbox.sty titling.sty upquote.sty \
-	     eurosym.sty ucs.sty enumitem.sty mathrsfs.sty soul.sty lmodern.sty >/dev/null 2>&1; then exit 0; fi; \
+	if [ -z "$$missing" ] && kpsewhich fontspec.sty adjustbox.sty needspace.sty newunicodechar.sty \
+	     fancyhdr.sty bookmark.sty booktabs.sty bm.sty etoolbox.sty truncate.sty lmroman10-regular.otf >/dev/null 2>&1; then exit 0; fi; \
 	if command -v apt-get >/dev/null 2>&1 && [ "$$(id -u)" = 0 ]; then \
 	  echo "[tex] installing:$(TEX_DEBS)"; t0=$$(date +%s); \
 	  apt-get update -qq >/dev/null && \
@@ -60,18 +65,16 @@ tex: ## (internal) make sure xelatex/pandoc/poppler are present (apt-get on Debi
 	fi
 
 notebooks: venv ## execute notebooks/*.ipynb into build/notebooks (only changed ones), merge the ledger
-	@$(VPY) $(BUILD) execute
+	@$(BUILD) execute
 
-figures: venv ## regenerate figures/ (python -m wmr.paper.figures figures/)
-	@$(VPY) $(BUILD) figures --force
+figures: venv ## regenerate figures/ outside the notebooks (python -m wmr.paper.figures figures/)
+	@$(BUILD) figures
 
 report: venv tex ## build/report.html + build/report.pdf (cached: < 1 s when nothing changed)
-	@$(VPY) $(BUILD) report
+	@$(BUILD) report
 
-test: venv tex ## execute notebooks, then pytest (package tests + notebook/report tests)
-	@$(VPY) $(BUILD) execute
-	@rc=0; $(VPY) -m pytest || rc=$$?; \
-	if [ $$rc -eq 5 ]; then echo "pytest collected no tests: failing"; exit 1; fi; exit $$rc
+test: venv tex ## execute notebooks, pytest, then fail if the build modified tracked files
+	@$(BUILD) test
 
 student: venv ## build/student/*.ipynb: the chapters without worked solutions (RUN=1: also run them)
 	@$(VPY) tools/student.py $(if $(RUN),--run,)

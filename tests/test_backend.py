@@ -77,5 +77,5 @@ def test_choose():
     assert B.choose(1.0, 2.0) is NUMERIC
     assert B.choose(1.0, x) is SYMBOLIC
     assert B.choose(x, backend=NUMERIC) is NUMERIC
-    with pytest.raises(ValueError, match="backend.*'numpy'"):
+    with pytest.raises(TypeError, match="backend.*'numpy'"):
         B.choose(1.0, backend="numpy")

@@ -5,19 +5,27 @@ Modelled on python-control's ``docstrings_test.py``: the signature is the truth,
 """
 import dataclasses
 import doctest
+import enum
 import importlib
 import inspect
+import pkgutil
 import re
+
+from pathlib import Path
 
 import pytest
 
 import wmr
 
-CORE_MODULES = ["wmr", "wmr.model.backend", "wmr.model.conventions", "wmr.model.platform", "wmr.model.wheels", "wmr.model.robot",
-                "wmr.model.robots", "wmr.analysis.linalg", "wmr.analysis.mobility", "wmr.analysis.isotropy", "wmr.analysis.kinematics", "wmr.analysis.steering",
-                "wmr.analysis.simulation", "wmr.model.tolerance", "wmr.paper.ledger", "wmr.paper.verify", "wmr.paper.symbols",
-                "wmr.analysis._batch", "wmr.analysis.sweep", "wmr.analysis.reference", "wmr.analysis._closed",
-                "wmr.cli.sweep"]
+def _walk():
+    """Every module of the package (walked, not listed by hand), except the ``__main__`` scripts."""
+    names = ["wmr"] + [m.name for m in pkgutil.walk_packages(wmr.__path__, "wmr.")]
+    return sorted(n for n in names if not n.endswith(".__main__"))
+
+
+ALL_MODULES = _walk()
+#: modules whose names have no private part: their public functions and classes are checked as numpydoc
+PUBLIC_MODULES = [m for m in ALL_MODULES if not any(part.startswith("_") for part in m.split("."))]
 
 
 def _public_callables():
@@ -36,11 +44,9 @@ def _public_callables():
 
 
 def _module_callables():
-    """Public functions and classes (and their public methods) defined in the public core modules."""
+    """Public functions and classes (and their public methods) defined in the public modules."""
     out = []
-    for module in CORE_MODULES:
-        if module.split(".")[-1].startswith("_"):
-            continue
+    for module in PUBLIC_MODULES:
         mod = importlib.import_module(module)
         for name, obj in vars(mod).items():
             if name.startswith("_") or getattr(obj, "__module__", None) != module:
@@ -112,20 +118,69 @@ def test_numpydoc_docstring(name, obj):
         assert "Returns" in secs or "Yields" in secs, f"{name}: no 'Returns' section"
 
 
-@pytest.mark.parametrize("name, obj", MODULE_LEVEL, ids=[n for n, _ in MODULE_LEVEL])
-def test_module_level_docstrings(name, obj):
-    """The rest of the core's public API: documented too (dataclass fields under Attributes)."""
+#: Modules of other workstreams whose docstrings are not yet complete numpydoc (module prefix -> owner).
+#: Their items are still checked; an item that fails is reported as an expected failure naming the
+#: owner, and ``test_pending_modules_still_pending`` fails once a prefix has nothing left to fix.
+PENDING = {"wmr.paper.figures": "figs", "wmr.plot": "figs", "wmr.paper.families": "figs", "wmr.paper.text": "figs",
+           "wmr.paper.offset": "lessons", "wmr.paper.platform_wheels": "lessons", "wmr.paper.Printed": "lessons",
+           "wmr.paper.printed": "lessons", "wmr.paper.register": "lessons"}
+
+
+def numpydoc_problems(name, obj):
+    """What is missing from the docstring of a module-level function or class (a list of sentences)."""
     doc = inspect.getdoc(obj)
-    assert doc and doc.strip(), f"{name} has no docstring"
+    if not (doc and doc.strip()):
+        return [f"{name} has no docstring"]
+    if inspect.isclass(obj) and issubclass(obj, enum.Enum):
+        return []                                          # the signature is Enum's machinery
     params = signature_parameters(obj)
     documented = documented_parameters(doc)
     if dataclasses.is_dataclass(obj):
         documented += [line.split(" : ")[0].strip() for line in sections(doc).get("Attributes", [])
                        if line and not line.startswith(" ")]
+    out = []
     missing = [p for p in params if p not in documented]
-    assert not missing, f"{name}: parameters not documented: {missing}"
-    if inspect.isfunction(obj):
-        assert "Returns" in sections(doc), f"{name}: no 'Returns' section"
+    if missing:
+        out.append(f"{name}: parameters not documented: {missing}")
+    if inspect.isfunction(obj) and "Returns" not in sections(doc) and "Yields" not in sections(doc):
+        out.append(f"{name}: no 'Returns' section")
+    return out
+
+
+def _owner(name):
+    return next((o for prefix, o in PENDING.items() if name == prefix or name.startswith(prefix + ".")), None)
+
+
+OWN = [(n, o) for n, o in MODULE_LEVEL if not _owner(n)]
+
+
+@pytest.mark.parametrize("name, obj", OWN, ids=[n for n, _ in OWN])
+def test_module_level_docstrings(name, obj):
+    """The rest of the public API of every public module: documented too (dataclass fields under Attributes)."""
+    problems = numpydoc_problems(name, obj)
+    assert not problems, problems
+
+
+@pytest.mark.parametrize("owner", sorted(set(PENDING.values())))
+def test_pending_modules(owner):
+    """Modules of other streams: checked item by item; an expected failure that counts what is left."""
+    items = [(n, o) for n, o in MODULE_LEVEL if _owner(n) == owner]
+    problems = [p for n, o in items for p in numpydoc_problems(n, o)]
+    if problems:
+        pytest.xfail(f"{owner} stream: {len(problems)} numpydoc gaps in {len(items)} items, e.g. {problems[0]}")
+
+
+def test_pending_modules_still_pending():
+    """The PENDING list only shrinks: a prefix whose items all pass must be removed from it."""
+    done = [prefix for prefix in PENDING
+            if not any(numpydoc_problems(n, o) for n, o in MODULE_LEVEL if n == prefix or n.startswith(prefix + "."))]
+    assert not done, f"all documented now, remove from PENDING: {done}"
+
+
+def test_checker_catches_missing_sections():
+    def f(a):
+        """Summary only."""
+    assert numpydoc_problems("f", f) == ["f: parameters not documented: ['a']", "f: no 'Returns' section"]
 
 
 @pytest.mark.parametrize("name, prop", PROPERTIES, ids=[n for n, _ in PROPERTIES])
@@ -155,16 +210,36 @@ def test_parser_catches_an_undocumented_parameter():
     assert "b" not in documented_parameters(inspect.getdoc(f))
 
 
-@pytest.mark.parametrize("module", CORE_MODULES)
+def test_the_walk_finds_every_module():
+    """The module lists are walked from the package: a new module is checked without editing this file."""
+    files = {p.relative_to(Path(wmr.__file__).parent.parent).with_suffix("") for p in Path(wmr.__file__).parent.rglob("*.py")}
+    names = {".".join(f.parts[:-1] if f.name == "__init__" else f.parts) for f in files}
+    assert names - {n for n in names if n.endswith("__main__")} == set(ALL_MODULES)
+    assert "wmr.model.validation" in PUBLIC_MODULES and "wmr.analysis._closed" not in PUBLIC_MODULES
+
+
+@pytest.mark.parametrize("module", ALL_MODULES)
 def test_doctests(module):
     mod = importlib.import_module(module)
     result = doctest.testmod(mod, optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE, verbose=False)
     assert result.failed == 0, f"{result.failed} doctest(s) failed in {module}"
 
 
+@pytest.mark.parametrize("module", ALL_MODULES)
+def test_module_has_docstring_and_all(module):
+    """Every module says what it is; the library's modules state their public names in ``__all__``."""
+    mod = importlib.import_module(module)
+    assert (mod.__doc__ or "").strip(), f"{module} has no module docstring"
+    if module.startswith(("wmr.model", "wmr.analysis")):
+        names = getattr(mod, "__all__", None)
+        assert names is not None, f"{module} has no __all__"
+        missing = [n for n in names if not hasattr(mod, n)]
+        assert not missing, f"{module}.__all__ names what it does not define: {missing}"
+
+
 def test_core_modules_have_examples():
     """Worked examples (which double as doctests) exist across the core."""
     n = 0
-    for module in CORE_MODULES:
+    for module in ALL_MODULES:
         n += doctest.testmod(importlib.import_module(module), optionflags=doctest.ELLIPSIS).attempted
     assert n >= 30

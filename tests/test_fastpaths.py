@@ -131,3 +131,104 @@ def test_kappa_3x3_takes_the_closed_form_on_the_paper_robot():
     assert np.array_equal(np.isinf(got), ~fin)
     assert np.all(np.abs(got[fin] / want[fin] - 1) <= 32 * EPS * want[fin])
     assert np.array_equal(wmr.is_isotropic(J), np.abs(want - 1) <= TOL)
+
+
+# ------------------------------------------------------------------------------ kinematics
+def _mixed_robot():
+    return wmr.Robot([wmr.OffsetWheel((0.4, 0.1), r=0.05, d=0.02), wmr.CentredWheel((-0.3, 0.25), r=0.06),
+                      wmr.DualWheel((-0.1, -0.35), r=0.04, b=0.03), wmr.CentredWheel((0.2, -0.2), r=0.05)])
+
+
+ROBOTS = {"centred": lambda: wmr.paper_robot("centred", L=0.3, r=0.05),
+          "offset": lambda: wmr.paper_robot("offset", L=0.3, r=0.05, d=0.02),
+          "dual": lambda: wmr.paper_robot("dual", L=0.3, r=0.05, b=0.04),
+          "mixed": _mixed_robot}
+
+
+def _configurations(bot, n, seed):
+    """Random angles, plus singular ones: all wheels parallel, and axles through one point."""
+    rng = np.random.default_rng(seed)
+    beta = rng.uniform(-np.pi, np.pi, (n, bot.w))
+    beta[: n // 4] = rng.uniform(-np.pi, np.pi, (n // 4, 1))                  # parallel wheels
+    twist = rng.normal(size=(n, 3))
+    beta[n // 4: n // 2] = wmr.steering_angles(bot, twist[n // 4: n // 2])    # axles through the IC
+    beta[n // 2: n // 2 + 50] += 1e-9 * rng.normal(size=(50, bot.w))          # nearly so
+    return beta, twist
+
+
+@pytest.mark.parametrize("kind", sorted(ROBOTS))
+def test_forward_equals_pseudo_inverse(kind):
+    bot = ROBOTS[kind]()
+    beta, _ = _configurations(bot, 20000, 1)          # more than one chunk of the batched kernel
+    rates = np.random.default_rng(2).normal(size=(20000, bot.n_rates))
+    rates[:100] = 0.0
+    sol = wmr.forward(bot, beta, rates)
+    t, res, adm = R.forward(bot, beta, rates)
+    assert np.allclose(sol.value, t, rtol=1e-12, atol=1e-13)
+    assert np.allclose(sol.residual, res, rtol=1e-12, atol=1e-13)
+    assert np.array_equal(sol.admissible, adm) and adm[:100].all()
+
+
+@pytest.mark.parametrize("kind", sorted(ROBOTS))
+def test_inverse_equals_pseudo_inverse(kind):
+    bot = ROBOTS[kind]()
+    beta, twist = _configurations(bot, 20000, 3)
+    bdot = np.random.default_rng(4).normal(size=(20000, bot.w))
+    for bd in (None, bdot):
+        sol = wmr.inverse(bot, beta, twist, beta_dot=bd)
+        th, res, adm = R.inverse(bot, beta, twist, beta_dot=bd)
+        assert np.allclose(sol.value, th, rtol=1e-11, atol=1e-11)
+        assert np.allclose(sol.residual, res, rtol=1e-12, atol=1e-12)
+        assert np.array_equal(sol.admissible, adm)
+    # steered for the twist: admissible exactly where the reference says so (all, for steerable units)
+    assert sol.admissible[5000:10000].all() or kind == "mixed"
+
+
+@pytest.mark.parametrize("bshape, tshape", [((), ()), ((5,), ()), ((), (5,)), ((2, 1), (1, 3)), ((0,), ())])
+def test_kinematics_broadcasting(bshape, tshape):
+    bot = _mixed_robot()
+    rng = np.random.default_rng(5)
+    beta = rng.uniform(-3, 3, bshape + (bot.w,))
+    twist, rates = rng.normal(size=tshape + (3,)), rng.normal(size=tshape + (bot.n_rates,))
+    batch = np.broadcast_shapes(bshape, tshape)
+    inv, fwd = wmr.inverse(bot, beta, twist), wmr.forward(bot, beta, rates)
+    assert inv.value.shape == batch + (bot.n_rates,) and inv.residual.shape == batch + (2 * bot.w,)
+    assert fwd.value.shape == batch + (3,) and fwd.admissible.shape == batch
+    b = np.broadcast_to(beta, batch + (bot.w,))
+    assert np.allclose(inv.value, R.inverse(bot, b, np.broadcast_to(twist, batch + (3,)))[0], atol=1e-11)
+
+
+def test_threads_do_not_change_results(monkeypatch):
+    bot = _mixed_robot()
+    beta, twist = _configurations(bot, 30000, 6)
+    many = wmr.inverse(bot, beta, twist), wmr.condition_number(wmr.paper_robot("centred").J(beta[:, :3]))
+    monkeypatch.setenv("WMR_THREADS", "1")
+    one = wmr.inverse(bot, beta, twist), wmr.condition_number(wmr.paper_robot("centred").J(beta[:, :3]))
+    assert np.array_equal(many[0].value, one[0].value) and np.array_equal(many[0].residual, one[0].residual)
+    assert np.array_equal(many[1], one[1])
+
+
+# ------------------------------------------------------------------------------ steering
+@pytest.mark.parametrize("kind", sorted(ROBOTS))
+def test_steering_angles_point_the_wheels_along_the_velocity(kind):
+    bot = ROBOTS[kind]()
+    rng = np.random.default_rng(7)
+    twist = rng.normal(size=(5000, 3))
+    twist[:10] = 0.0                                                  # still: keep the current angles
+    twist[10:20, 1:] = 0.0                                            # spin about C
+    current = rng.uniform(-np.pi, np.pi, (5000, bot.w))
+    beta = wmr.steering_angles(bot, twist, current=current)
+    d = bot.mount_points
+    p = np.stack([twist[:, 1:2] - twist[:, :1] * d[:, 1], twist[:, 2:3] + twist[:, :1] * d[:, 0]], -1)
+    speed = np.linalg.norm(p, axis=-1)
+    steer = np.array([u.kind in ("centred", "dual") for u in bot.wheels])
+    moving = speed > 1e-6
+    j = np.stack([-np.sin(beta), np.cos(beta)], -1)                   # rolling direction R(beta) [0, 1]
+    cosang = -np.sum(j * p, -1) / np.where(moving, speed, 1.0)         # j = -p / |p|
+    assert np.all(np.abs(cosang[moving & steer] - 1) < 1e-12)
+    assert np.array_equal(beta[~moving | ~steer], current[~moving | ~steer])
+    assert np.all(np.abs(beta[moving & steer]) <= np.pi)
+    # still within TOL of the terms' size, and not above it
+    t = np.array([[0.0, 1e-10, 0.0], [0.0, 2e-9, 0.0]])
+    assert wmr.steering_angles(wmr.paper_robot("centred"), t).tolist()[0] == [0.0, 0.0, 0.0]
+    assert np.allclose(np.abs(wmr.steering_angles(wmr.paper_robot("centred"), t)[1]), np.pi / 2)

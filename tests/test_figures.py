@@ -318,3 +318,14 @@ def test_data_paths_do_not_import_matplotlib():
             "import wmr.paper.figures as F; [F.FIGURES[k].data() for k in ('fig10', 'fig13', 'conventions')]; "
             "sys.exit('matplotlib' in sys.modules)")
     assert subprocess.run([sys.executable, "-c", code]).returncode == 0
+
+
+# ----------------------------------------------------------------------------- doctests of this stream's modules
+@pytest.mark.parametrize("module", ["wmr.paper.text", "wmr.paper.files", "wmr.paper.families", "wmr.paper.figures",
+                                    "wmr.paper.figures.common", "wmr.paper.figures.output", "wmr.plot.style",
+                                    "wmr.plot.annotate", "wmr.plot.robot"])
+def test_doctests(module):
+    import doctest
+    import importlib
+    result = doctest.testmod(importlib.import_module(module), optionflags=doctest.ELLIPSIS)
+    assert result.failed == 0, f"{result.failed} doctest(s) failed in {module}"

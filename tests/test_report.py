@@ -1,11 +1,18 @@
-"""End-to-end: build/report.html is self-contained (nothing fetched from the network), typesets
-its math offline, and contains every figure and every ledger row; build/report.pdf has pages
-and the figure titles."""
+"""End-to-end: the report of this tree, as a reader gets it (issue 9).
+
+The HTML is built once for the module (cached: instant when `make report` is up to date); the
+PDF is built by one fixture, and rebuilt once in a copy of build/ to prove that two builds of one
+commit are byte-identical. Checks: nothing fetched from the network, math typeset offline in a
+browser, at most 4 MB, unique ids, working links, each figure once, code collapsed, a contents
+sidebar with sub-levels, one font family; an A4 PDF with nothing past the margins, no raw TeX or
+ASCII math in its text, no formula shrunk below a readable size, the build date from the commit.
+"""
 from __future__ import annotations
 
+import base64
 import csv
+import gzip
 import os
-import json
 import re
 import shutil
 import subprocess
@@ -19,67 +26,83 @@ from pathlib import Path
 import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT / "tools"))
-import build  # noqa: E402
+sys.path.insert(0, str(ROOT))
+from tools import build  # noqa: E402
+from tools.build import gitinfo, html as html_export, inputs  # noqa: E402
+from tools.build.pdf import scaled_formulas  # noqa: E402
 
 TREE = build.Tree(os.environ.get("WMR_ROOT") or ROOT)  # WMR_ROOT: test another tree
 HAVE_TEX = bool(shutil.which("xelatex") and shutil.which("pandoc"))
+HAVE_POPPLER = bool(shutil.which("pdftotext") and shutil.which("pdfinfo"))
 REMOTE = re.compile(r"^\s*(https?:)?//", re.I)
+CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser") or shutil.which("google-chrome")
+MAX_HTML_BYTES = 4_000_000
+MIN_FORMULA_SCALE = 0.6     # a formula may be shrunk to fit the line, never below this
 
 
-@pytest.fixture(scope="module")
-def built():
-    """Build the report once for this module (cached: near-instant when nothing changed).
-    A failing PDF does not hide the HTML checks: the HTML is written first and checked alone."""
-    t0 = time.time()
-    err = None
+def _ledger_header() -> list[str]:
     try:
-        build.report(TREE, html_only=not HAVE_TEX)
+        with open(TREE.ledger, newline="", encoding="utf-8") as f:
+            return next(csv.reader(f))
+    except (OSError, StopIteration):
+        return []
+
+
+#: the data of the lessons and figs streams (issue 10) is not merged yet: the ledger still has
+#: the old columns (ASCII pseudo-math in notes) and figure cells are not tagged. These checks are
+#: enforced as soon as the contract's ledger is on main.
+DATA_PENDING = "kind" not in _ledger_header()
+pending = pytest.mark.xfail(DATA_PENDING, reason="waits for the contract's ledger and cell tags (lessons stream)")
+
+
+@pytest.fixture(scope="module")
+def html_text():
+    try:
+        build.report(TREE, html_only=True)
     except build.BuildError as e:
-        err = str(e)
-    html_path, pdf_path = TREE.build / "report.html", TREE.build / "report.pdf"
-    return html_path, pdf_path, err, t0
+        pytest.fail(str(e), pytrace=False)
+    return TREE.report_html.read_text(encoding="utf-8")
 
 
 @pytest.fixture(scope="module")
-def report(built):
-    html_path, pdf_path, err, _ = built
-    if err:
-        pytest.fail(err, pytrace=False)
-    return html_path, pdf_path
+def pdf_path():
+    if not HAVE_TEX:
+        pytest.skip("xelatex/pandoc not installed: run `make report` (it installs them)")
+    try:
+        build.report(TREE)
+    except build.BuildError as e:
+        pytest.fail(str(e), pytrace=False)
+    return TREE.report_pdf
 
 
 @pytest.fixture(scope="module")
-def html_text(built):
-    html_path, _, err, t0 = built
-    if not html_path.exists() or (err and html_path.stat().st_mtime < t0):
-        pytest.fail(f"build/report.html was not built: {err}", pytrace=False)
-    return html_path.read_text(encoding="utf-8")
-
-
-def captions() -> dict:
-    return build.read_captions(TREE)
-
-
-def ledger_rows() -> list[dict]:
-    return build.read_csv(TREE.figures / "ledger.csv") or []
+def rebuilt(pdf_path, tmp_path_factory):
+    """A second build of the same commit, in a copy of build/ (notebooks cached, both exports redone)."""
+    copy = tmp_path_factory.mktemp("second-build") / "build"
+    shutil.copytree(TREE.build, copy, ignore=shutil.ignore_patterns("report.*", ".lock", "tmp"))
+    second = build.Tree(TREE.root, copy)
+    build.report(second)
+    return second
 
 
 # ----------------------------------------------------------------------------- offline HTML
 class _Refs(HTMLParser):
     def __init__(self):
         super().__init__(convert_charrefs=True)
-        self.refs: list[tuple[str, str]] = []   # (what, url)
+        self.refs: list[tuple[str, str]] = []
         self.styles: list[str] = []
-        self.inline_scripts: list[str] = []
-        self._in: str | None = None
+        self.scripts: list[tuple[dict, str]] = []
+        self.ids: list[str] = []
+        self._in: tuple[str, dict] | None = None
 
     def handle_starttag(self, tag, attrs):
         a = dict(attrs)
+        if a.get("id"):
+            self.ids.append(a["id"])
         if tag == "script":
             if a.get("src"):
                 self.refs.append(("script src", a["src"]))
-            self._in = "script"
+            self._in = ("script", a)
         elif tag == "link" and a.get("href"):
             self.refs.append((f"link rel={a.get('rel')}", a["href"]))
         elif tag in ("img", "iframe", "embed", "source", "audio", "video") and a.get("src"):
@@ -87,7 +110,7 @@ class _Refs(HTMLParser):
         elif tag == "object" and a.get("data"):
             self.refs.append(("object data", a["data"]))
         elif tag == "style":
-            self._in = "style"
+            self._in = ("style", a)
         if a.get("style"):
             self.styles.append(a["style"])
 
@@ -96,16 +119,21 @@ class _Refs(HTMLParser):
             self._in = None
 
     def handle_data(self, data):
-        if self._in == "style":
+        if self._in and self._in[0] == "style":
             self.styles.append(data)
-        elif self._in == "script":
-            self.inline_scripts.append(data)
+        elif self._in and self._in[0] == "script":
+            self.scripts.append((self._in[1], data))
 
 
-def remote_references(html_text: str) -> list[str]:
-    """Every reference a browser would fetch from the network on opening the page."""
+def parse(page: str) -> _Refs:
     p = _Refs()
-    p.feed(html_text)
+    p.feed(page)
+    return p
+
+
+def remote_references(page: str) -> list[str]:
+    """Every reference a browser would fetch from the network on opening the page."""
+    p = parse(page)
     bad = [f"{what}: {url[:120]}" for what, url in p.refs if REMOTE.match(url)]
     for css in p.styles:
         for m in re.finditer(r"@import\s+(?:url\()?\s*['\"]?([^'\")\s;]+)", css, re.I):
@@ -128,7 +156,7 @@ def test_remote_reference_detector_can_fail():
             ' body { background: url(http://x/bg.png) }</style></head><body>'
             '<img src="data:image/png;base64,AAAA"><script>var a = "https://not-a-fetch";</script></body></html>')
     bad = remote_references(page)
-    assert len(bad) == 6, bad  # script, link, @import (+ its url), background url, @font-face
+    assert len(bad) == 6, bad
     assert not any("not-a-fetch" in b or "data:" in b for b in bad)
 
 
@@ -136,120 +164,187 @@ def test_html_fetches_nothing(html_text):
     assert remote_references(html_text) == []
 
 
-def test_html_math_is_inlined_mathjax(html_text):
-    p = _Refs()
-    p.feed(html_text)
-    assert any("MathJax" in s and len(s) > 500_000 for s in p.inline_scripts), \
-        "the MathJax bundle is not inlined in build/report.html"
-    assert "enableMenu: false" in html_text  # no menu: nothing lazily loaded
+def test_html_inlines_the_pinned_mathjax(html_text):
+    p = parse(html_text)
+    packed = [d for a, d in p.scripts if a.get("id") == "wmr-mathjax-gz"]
+    assert len(packed) == 1, "the compressed MathJax bundle is not in the page"
+    js = gzip.decompress(base64.b64decode(packed[0].strip()))
+    assert b"MathJax" in js and len(js) > 1_000_000
+    assert "enableMenu: false" in html_text and "'autoload', 'require'" in html_text  # nothing loaded lazily
 
 
-def test_html_has_every_figure(html_text):
-    caps = captions()
-    if not caps:
-        pytest.skip("figures/captions.json missing (python -m wmr.paper.figures not run / not written yet)")
-    for key, c in caps.items():
-        m = re.search(r'<figure class="wmr-fig" id="%s">(.*?)</figure>' % re.escape(key), html_text, re.S)
-        assert m, f"figure {key} missing from the HTML report"
-        assert 'src="data:image/' in m.group(1), f"figure {key} is not embedded as a data URI"
-        assert build.html_text(c["title"]) in m.group(1), f"caption title of {key} missing"
+def test_html_size(html_text):
+    size = len(html_text.encode("utf-8"))
+    assert size <= MAX_HTML_BYTES, f"build/report.html is {size / 1e6:.2f} MB (limit {MAX_HTML_BYTES / 1e6:.0f} MB)"
 
 
-def test_html_has_ledger_table(html_text):
-    rows = ledger_rows()
-    if not rows:
-        pytest.skip("figures/ledger.csv missing (python -m wmr.paper.ledger not run / not written yet)")
-    body = html_text.split('id="Ledger"', 1)
-    assert len(body) == 2, "no Ledger section in the HTML report"
-    table = body[1].split("</table>", 1)[0]
-    missing = [r["id"] for r in rows if f"<td>{build.html.escape(r['id'])}</td>" not in table]
-    assert not missing, f"ledger ids missing from the HTML ledger table: {missing[:10]}"
+def test_html_ids_unique_and_links_resolve(html_text):
+    ids = parse(html_text).ids
+    dups = sorted({i for i in ids if ids.count(i) > 1})
+    assert not dups, f"ids defined more than once: {dups[:10]}"
+    assert html_export.broken_links(html_text) == []
+
+
+@pending
+def test_every_ledger_row_links_to_its_derivation(html_text):
+    rows = inputs.read_ledger(TREE.ledger) or []
+    ids = set(parse(html_text).ids)
+    missing = [r.id for r in rows if not r.anchor or r.anchor not in ids]
+    assert not missing, f"ledger rows without an anchor in the chapters: {missing[:10]}"
     for r in rows:
-        if r.get("verdict") in build.NOT_OK:
-            assert re.search(r"E\d+\. %s " % re.escape(build.html.escape(r["id"])), html_text), \
-                f"erratum for {r['id']} missing"
+        if r.verdict != "ok":
+            assert f'href="#{r.anchor}"' in html_text, f"the findings do not link {r.label} to its derivation"
 
 
-def test_html_code_is_collapsed(html_text):
-    n_code = 0
-    for nb in TREE.notebook_files():
-        import nbformat
-        n_code += sum(c.cell_type == "code" for c in nbformat.read(nb, as_version=4).cells)
-    if not n_code:
-        pytest.skip("no notebooks yet")
-    assert html_text.count('<details class="wmr-code">') >= 1
-    assert "jp-InputPrompt" not in html_text or "In&nbsp;[" not in html_text
+def test_each_figure_embedded_once(html_text):
+    figs = inputs.read_figures(TREE.figures)
+    assert figs, "no figures/<key>.json"
+    srcs = re.findall(r'<img src="(data:[^"]+)"', html_text)
+    dup = len(srcs) - len(set(srcs))
+    assert dup == 0, f"{dup} images embedded more than once"
+    for f in figs:
+        block = re.findall(r'<figure class="wmr-figure" id="figure-%s">(.*?)</figure>' % re.escape(f.key), html_text, re.S)
+        assert len(block) == 1, f"figure {f.key} shown {len(block)} times in the figures section"
+        assert "data:image/" in block[0]
+        assert "<image" not in (base64.b64decode(re.search(r"base64,([^\"]+)", block[0]).group(1))
+                                .decode("utf-8", "replace")), f"{f.key}: a raster image inside the SVG"
 
 
-CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser") or shutil.which("google-chrome")
+def test_paper_figures_only_in_the_figures_section(html_text):
+    """A chapter's figure cell is replaced by a reference: no chapter output repeats a figure."""
+    pngs = {base64.b64encode(f.images["png"].read_bytes()).decode()
+            for f in inputs.read_figures(TREE.figures) if "png" in f.images}
+    chapter_imgs = re.findall(r'<div class="output image"><img[^>]* src="data:image/png;base64,([^"]+)"', html_text)
+    assert not pngs & set(chapter_imgs)
+    assert len(chapter_imgs) < len(pngs), "the chapters still show the paper's figures"
 
 
-@pytest.mark.skipif(not CHROMIUM, reason="chromium not installed (apt-get install chromium): "
-                                         "offline typesetting not checked in a browser")
+def test_code_collapsed_and_no_program_output(html_text):
+    main = html_text.split("<main>", 1)[1]
+    outside = re.sub(r'<details class="code">.*?</details>', "", main, flags=re.S)
+    assert "<pre" not in outside, "program output or code outside the collapsed code blocks"
+    assert html_text.count('<details class="code">') >= len(TREE.notebook_files())
+    assert not re.search(r"Out\[\d+\]|In&nbsp;\[|Traceback", outside)
+
+
+def test_contents_sidebar_stays_with_sub_levels(html_text):
+    nav = re.search(r'<nav class="toc".*?</nav>', html_text, re.S)
+    assert nav, "no contents sidebar"
+    assert nav.group(0).count("<ul>") >= 1 + len(TREE.notebook_files()), "the contents have no sub-levels"
+    assert re.search(r"nav\.toc\s*{[^}]*position:\s*fixed", html_text), "the contents scroll away with the page"
+    for hid in re.findall(r'<h1[^>]* id="([^"]+)"', html_text):
+        assert f'href="#{hid}"' in nav.group(0), f"section {hid} missing from the contents"
+
+
+def test_one_font_family(html_text):
+    css = "\n".join(parse(html_text).styles)
+    families = {f.strip() for f in re.findall(r"font-family:\s*([^;}]+)", css)}
+    text = {f for f in families if "monospace" not in f and f != "inherit"}
+    assert len(text) == 1, f"more than one font family for text: {text}"
+    sizes = re.findall(r"mjx-container[^{]*{[^}]*font-size:\s*([^;}\s]+)", css)
+    assert set(sizes) <= {"100%"}, f"math scaled apart from the text: {sizes}"
+
+
+def test_build_date_is_the_commit_date(html_text):
+    epoch = gitinfo.source_date_epoch(TREE.root)
+    date = time.strftime("%Y-%m-%d", time.gmtime(epoch)) if epoch else "unknown"
+    assert f"committed {date}" in html_text
+
+
+def test_abstract_counts_come_from_the_ledger(html_text):
+    rows = inputs.read_ledger(TREE.ledger) or []
+    eqs = [r for r in rows if r.kind == "equation"]
+    ok = sum(r.verdict == "ok" for r in eqs)
+    abstract = html_text.split('id="abstract"', 1)[1].split("<h1", 1)[0]
+    assert f"Of the paper’s {len(eqs)} numbered equations" in abstract or \
+        f"Of the paper's {len(eqs)} numbered equations" in abstract
+    assert f"{ok} hold as printed" in abstract
+
+
+@pytest.mark.skipif(not CHROMIUM, reason="chromium not installed: offline typesetting not checked in a browser")
 def test_html_typesets_offline_in_browser(html_text):
-    """Open the page in headless Chromium with the network disabled; every $...$ must become
-    a MathJax container and none may be a TeX error."""
+    """Open the page in headless Chromium with the network disabled; math is typeset, none in error."""
     with tempfile.TemporaryDirectory() as prof:
         p = subprocess.run(
             [CHROMIUM, "--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
              "--disable-background-networking", "--disable-component-update", "--disable-sync",
              f"--user-data-dir={prof}", "--proxy-server=http://127.0.0.1:9", "--proxy-bypass-list=<-loopback>",
-             "--virtual-time-budget=20000", "--dump-dom", (TREE.build / "report.html").as_uri()],
-            capture_output=True, text=True, timeout=180)
+             "--virtual-time-budget=30000", "--dump-dom", TREE.report_html.as_uri()],
+            capture_output=True, text=True, timeout=240)
     dom = p.stdout
     assert "<body" in dom, p.stderr[-2000:]
-    dom = re.sub(r"<script.*?</script>|<style.*?</style>", "", dom, flags=re.S)  # the bundle names its own tags
+    dom = re.sub(r"<script.*?</script>|<style.*?</style>", "", dom, flags=re.S)
     n = dom.count("<mjx-container")
-    assert n > 0, "MathJax typeset nothing"
+    assert n > 100, f"MathJax typeset only {n} formulas"
     errors = re.findall(r'data-mjx-error="([^"]*)"', dom) + re.findall(r"<mjx-merror", dom)
     assert not errors, f"{len(errors)} TeX errors: {errors[:5]}"
-    body = re.sub(r"<mjx-container.*?</mjx-container>|<code.*?</code>|<pre.*?</pre>", "", dom, flags=re.S)
+    body = re.sub(r"<mjx-container.*?</mjx-container>|<code.*?</code>|<pre.*?</pre>|<details.*?</details>",
+                  "", dom, flags=re.S)
     text = re.sub(r"<[^>]+>", " ", body)
-    leftovers = re.findall(r"\$[^$\n]{0,40}\\[a-zA-Z]+[^$\n]{0,40}\$", text)
+    leftovers = re.findall(r"\\\(|\\\[|\\(?:mathbf|frac|dot|begin)\b", text)
+    if DATA_PENDING and leftovers:
+        pytest.xfail(f"{len(leftovers)} raw TeX commands in the old ledger's notes (bare LaTeX outside $...$)")
     assert not leftovers, f"untypeset TeX left in the page: {leftovers[:5]}"
 
 
 # ----------------------------------------------------------------------------- PDF
-def _pdf_text(pdf: Path) -> str:
-    if shutil.which("pdftotext"):
-        txt = subprocess.run(["pdftotext", "-layout", str(pdf), "-"], capture_output=True, text=True, check=True).stdout
-    else:
-        from pypdf import PdfReader
-        txt = "\n".join(pg.extract_text() or "" for pg in PdfReader(str(pdf)).pages)
-    return _norm(txt)
+def _pdftext(pdf: Path, *args) -> str:
+    return subprocess.run(["pdftotext", *args, str(pdf), "-"], capture_output=True, text=True, check=True).stdout
 
 
-def _norm(s: str) -> str:
-    s = unicodedata.normalize("NFKC", s)
-    s = re.sub(r"-\s*\n\s*", "", s)      # hyphenation at line ends
-    return " ".join(s.split()).lower()
+def test_pdf_is_a4_and_dated_from_the_commit(pdf_path):
+    if not HAVE_POPPLER:
+        pytest.skip("poppler-utils not installed")
+    info = subprocess.run(["pdfinfo", str(pdf_path)], capture_output=True, text=True, check=True).stdout
+    w, h = map(float, re.search(r"Page size:\s+([\d.]+) x ([\d.]+) pts", info).groups())
+    assert abs(w - 595.28) < 1 and abs(h - 841.89) < 1, f"not A4: {w} x {h} pt"
+    epoch = gitinfo.source_date_epoch(TREE.root)
+    assert time.strftime("%Y", time.gmtime(epoch)) in re.search(r"CreationDate:\s+(.*)", info).group(1)
 
 
-def _pages(pdf: Path) -> int:
-    from pypdf import PdfReader
-    return len(PdfReader(str(pdf)).pages)
+def test_pdf_words_inside_the_margins(pdf_path):
+    if not HAVE_POPPLER:
+        pytest.skip("poppler-utils not installed")
+    page_w, margin = 595.28, 2.4 / 2.54 * 72            # the template's A4 with 2.4 cm margins
+    bbox = _pdftext(pdf_path, "-bbox")
+    out = []
+    for page, body in enumerate(re.findall(r"<page[^>]*>(.*?)</page>", bbox, re.S), 1):
+        for x0, x1, word in re.findall(r'<word xMin="([\d.]+)" yMin="[\d.]+" xMax="([\d.]+)" yMax="[\d.]+">([^<]*)</word>', body):
+            if float(x1) > page_w - margin + 3 or float(x0) < margin - 3:
+                out.append(f"p. {page}: {word!r} at x = {float(x0):.0f}..{float(x1):.0f}")
+    if DATA_PENDING and out:
+        pytest.xfail(f"{len(out)} words past the margin (unbroken long formulas in the old ledger)")
+    assert not out, f"{len(out)} words past the margins: {out[:10]}"
 
 
-@pytest.mark.skipif(not HAVE_TEX, reason="xelatex/pandoc not installed (not a Debian machine?): "
-                                         "run `make report` or apt-get install texlive-xetex pandoc ...")
-def test_pdf_pages_and_captions(report):
-    pdf = report[1]
-    assert pdf.exists() and pdf.read_bytes()[:5] == b"%PDF-"
-    caps = captions()
-    n_chapters = len(TREE.notebook_files())
-    want = 3 + len(caps) // 2 + n_chapters  # title + contents + summary, figures, chapters
-    assert _pages(pdf) >= want, f"{pdf} has {_pages(pdf)} pages, expected at least {want}"
-    text = _pdf_text(pdf)
-    assert "summary of findings" in text and "contents" in text
-    for key, c in caps.items():
-        # compare the longest math-free run of words of the title
-        run = max((_norm(s) for s in re.split(r"\$[^$]*\$", c["title"])), key=len).strip(" .,;:")
-        assert run in text, f"title of {key} ({c['title']!r}) not found in the PDF text"
+def test_pdf_formulas_readable(pdf_path):
+    log = TREE.report_log.read_text(encoding="utf-8", errors="replace")
+    small = [(round(s, 2), p) for s, p in scaled_formulas(log) if s < MIN_FORMULA_SCALE]
+    if DATA_PENDING and small:
+        pytest.xfail(f"{len(small)} formulas shrunk below {MIN_FORMULA_SCALE} (long forms not yet broken by hand)")
+    assert not small, f"formulas shrunk below {MIN_FORMULA_SCALE:.0%} to fit the line (scale, page): {small}"
+    missing = sorted(set(re.findall(r"Missing character: There is no (\S+)", log)))
+    assert not missing, f"characters missing from the PDF's fonts: {missing}"
 
 
-def test_second_report_is_instant(report):
-    if not HAVE_TEX:
-        pytest.skip("no TeX: the report stamp is only written for a full (HTML + PDF) build")
+@pending
+def test_pdf_text_has_no_raw_tex_or_ascii_math(pdf_path):
+    if not HAVE_POPPLER:
+        pytest.skip("poppler-utils not installed")
+    text = unicodedata.normalize("NFKC", _pdftext(pdf_path, "-layout"))
+    raw = re.findall(r"\\(?:mathbf|dot|frac|begin|end|text|boldsymbol|tfrac|left|right)\b", text)
+    assert not raw, f"raw TeX in the PDF text: {raw[:10]}"
+    ascii_math = re.findall(r"\w+_dot\b|!=|<=>|\^T\b|\b\d\*\d\b|\bkappa\b", text)
+    assert not ascii_math, f"ASCII pseudo-math in the PDF text: {ascii_math[:10]}"
+
+
+def test_two_builds_are_byte_identical(pdf_path, rebuilt):
+    a, b = TREE.report_html.read_bytes(), rebuilt.report_html.read_bytes()
+    assert a == b, "two builds of one commit gave different HTML"
+    assert pdf_path.read_bytes() == rebuilt.report_pdf.read_bytes(), "two builds of one commit gave different PDFs"
+
+
+def test_second_report_is_instant(pdf_path):
     t0 = time.perf_counter()
     build.report(TREE)
-    assert time.perf_counter() - t0 < 1.0, "an up-to-date report took over a second"
+    assert time.perf_counter() - t0 < 2.0, "an up-to-date report took over two seconds"

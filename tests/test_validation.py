@@ -1,7 +1,8 @@
 """Input checks (wmr.model.validation), the numerical-zero policy (wmr.model.tolerance), the thread chunking
 (wmr.analysis._batch) and the comparison helpers (wmr.paper.verify).
 
-Every bad input raises ``ValueError`` whose message names the argument and shows the value.
+Every bad input raises ``TypeError`` (wrong kind) or ``ValueError`` (bad value) whose message names
+the argument and shows the value.
 """
 import numpy as np
 import pytest
@@ -33,27 +34,42 @@ def test_scalar_accepted(check, value, expected):
         assert type(out) is int                                    # exact, for SymPy products
 
 
-@pytest.mark.parametrize("check, value, shown", [
-    (V.positive, 0, "0"), (V.positive, -1.5, "-1.5"), (V.positive, np.nan, "nan"),
-    (V.positive, np.inf, "inf"), (V.positive, True, "True"), (V.positive, "1", "'1'"),
-    (V.positive, 1j, "1j"), (V.positive, [1.0], "[1.0]"), (V.positive, -p, "-p"),
-    (V.positive, sp.oo, "oo"),
-    (V.nonnegative, -1e-3, "-0.001"), (V.nonnegative, -np.inf, "inf"), (V.nonnegative, -p, "-p"),
-    (V.real, np.nan, "nan"), (V.real, None, "None"), (V.real, sp.I, "I"),
+@pytest.mark.parametrize("check, value, shown, kind", [
+    (V.positive, 0, "0", ValueError), (V.positive, -1.5, "-1.5", ValueError),
+    (V.positive, np.nan, "nan", ValueError), (V.positive, np.inf, "inf", ValueError),
+    (V.positive, True, "True", TypeError), (V.positive, "1", "'1'", TypeError),
+    (V.positive, 1j, "1j", TypeError), (V.positive, [1.0], "[1.0]", TypeError),
+    (V.positive, -p, "-p", ValueError), (V.positive, sp.oo, "oo", ValueError),
+    (V.positive, sp.zoo, "zoo", ValueError), (V.positive, sp.nan, "nan", ValueError),
+    (V.positive, 10**400, "1000", ValueError), (V.positive, np.longdouble("1e400"), "e+400", ValueError),
+    (V.positive, sp.Integer(10) ** 400, "1000", ValueError), (V.positive, None, "None", TypeError),
+    (V.positive, sp.Symbol("s") < 1, "s < 1", TypeError),
+    (V.nonnegative, -1e-3, "-0.001", ValueError), (V.nonnegative, -np.inf, "inf", ValueError),
+    (V.nonnegative, -p, "-p", ValueError),
+    (V.real, np.nan, "nan", ValueError), (V.real, None, "None", TypeError), (V.real, sp.I, "I", ValueError),
+    (V.real, x + sp.I, "x + I", ValueError), (V.real, np.complex128(1), "1", TypeError),
 ])
-def test_scalar_rejected_with_name_and_value(check, value, shown):
-    with pytest.raises(ValueError) as exc:
+def test_scalar_rejected_with_name_and_value(check, value, shown, kind):
+    with pytest.raises(Exception) as exc:
         check("the_arg", value)
+    assert exc.type is kind, (exc.type, str(exc.value))
     msg = str(exc.value)
     assert "the_arg" in msg and shown in msg, msg
 
 
-@pytest.mark.parametrize("value, shown", [
-    ((1.0,), "(1.0,)"), ((1, 2, 3), "(1, 2, 3)"), (1.0, "1.0"), ((np.nan, 0), "nan"),
-    (("a", 0), "'a'"), ((True, 0), "True"),
+def test_fractions_are_real_numbers():
+    from fractions import Fraction
+    assert V.positive("r", Fraction(1, 4)) == 0.25
+    assert V.finite_array("beta", [Fraction(1, 2), 1]).tolist() == [0.5, 1.0]
+
+
+@pytest.mark.parametrize("value, shown, kind", [
+    ((1.0,), "(1.0,)", ValueError), ((1, 2, 3), "(1, 2, 3)", ValueError), (1.0, "1.0", TypeError),
+    ((np.nan, 0), "nan", ValueError), (("a", 0), "'a'", TypeError), ((True, 0), "True", TypeError),
+    ("ab", "'ab'", TypeError), ((sp.oo, 0), "oo", ValueError), (None, "None", TypeError),
 ])
-def test_point_rejected(value, shown):
-    with pytest.raises(ValueError) as exc:
+def test_point_rejected(value, shown, kind):
+    with pytest.raises(kind) as exc:
         V.point("position", value)
     assert "position" in str(exc.value) and shown in str(exc.value)
 
@@ -64,20 +80,27 @@ def test_point_accepted():
 
 
 # --- arrays -------------------------------------------------------------------------------------
-@pytest.mark.parametrize("value, last, shown", [
-    ([1.0, 2.0], 3, "(2,)"),
-    ([[1.0, 2.0]], 3, "[[1., 2.]]"),
-    (np.zeros((1000, 2)), 3, "(1000, 2)"),
-    (5.0, 3, "()"),
-    ([1.0, np.nan, 2.0], None, "nan"),
-    ([np.inf, -np.inf], None, "inf"),
-    ([[1.0, 2.0], [3.0]], None, "[[1.0, 2.0], [3.0]]"),
-    ("abc", None, "'abc'"),
-    ([1j, 2.0], None, "1j"),
-    ([x, 1.0], None, "x"),
+@pytest.mark.parametrize("value, last, shown, kind", [
+    ([1.0, 2.0], 3, "(2,)", ValueError),
+    ([[1.0, 2.0]], 3, "[[1., 2.]]", ValueError),
+    (np.zeros((1000, 2)), 3, "(1000, 2)", ValueError),
+    (5.0, 3, "()", ValueError),
+    ([1.0, np.nan, 2.0], None, "nan", ValueError),
+    ([np.inf, -np.inf], None, "inf", ValueError),
+    ([[1.0, 2.0], [3.0]], None, "[[1.0, 2.0], [3.0]]", ValueError),
+    ([10**400, 1.0], None, "1000", ValueError),
+    (np.array([np.longdouble("1e400"), 1.0]), None,
+     "too large" if np.isfinite(np.longdouble("1e400")) else "inf", ValueError),   # 80-bit long double: finite
+    ("abc", None, "'abc'", TypeError),
+    (["0.7", "0.1"], None, "'0.7'", TypeError),
+    ([True, False], None, "True", TypeError),
+    ([1j, 2.0], None, "1j", TypeError),
+    ([x, 1.0], None, "x", TypeError),
+    (None, None, "None", TypeError),
+    ([None, 1.0], None, "None", TypeError),
 ])
-def test_finite_array_rejected(value, last, shown):
-    with pytest.raises(ValueError) as exc:
+def test_finite_array_rejected(value, last, shown, kind):
+    with pytest.raises(kind) as exc:
         V.finite_array("beta", value, last=last)
     assert "beta" in str(exc.value) and shown in str(exc.value), str(exc.value)
 
@@ -92,6 +115,10 @@ def test_symbolic_vector():
     assert V.symbolic_vector("beta", [x, 1, 2], 3).shape == (3, 1)
     with pytest.raises(ValueError, match=r"beta must have 3 entries, got shape \(2, 1\)"):
         V.symbolic_vector("beta", [x, 1], 3)
+    with pytest.raises(ValueError, match=r"beta\[1\] must be finite, got oo"):
+        V.symbolic_vector("beta", [x, sp.oo, 1], 3)
+    with pytest.raises(TypeError, match=r"beta must be a sequence of 3 entries, got 1.0"):
+        V.symbolic_vector("beta", 1.0, 3)
 
 
 # --- every public entry point with the classic bad inputs ----------------------------------------
@@ -103,6 +130,15 @@ ENTRY_POINTS = [
     ("NaN radius", lambda: wmr.DualWheel((0, 0), r=np.nan, b=0.1), "r", "nan"),
     ("inf half separation", lambda: wmr.DualWheel((0, 0), r=0.1, b=np.inf), "b", "inf"),
     ("zero wheels", lambda: wmr.Robot([]), "wheels", "0"),
+    ("None robot", lambda: wmr.mobility(None, [0.0] * 3), "robot", "None"),
+    ("the class Robot", lambda: wmr.rank_F(wmr.Robot, [0.0] * 3), "robot", "class Robot"),
+    ("name not a string", lambda: wmr.Robot(BOT.wheels, name=3), "name", "3"),
+    ("clockwise not a bool", lambda: wmr.equilateral_mounts(1.0, clockwise="yes"), "clockwise", "'yes'"),
+    ("exact not a bool", lambda: wmr.paper_robot("centred", exact=1), "exact", "1"),
+    ("kind not a string", lambda: wmr.paper_robot(3), "kind", "3"),
+    ("wheel not a unit", lambda: wmr.Robot([BOT.wheels[0], "x"]), "wheels[1]", "'x'"),
+    ("complex beta", lambda: wmr.mobility(BOT, np.array([0.1, 0.2, 0.3j])), "beta", "0.3j"),
+    ("strings as beta", lambda: wmr.rank_F(BOT, ["0.7"] * 3), "beta", "'0.7'"),
     ("beta with wrong w", lambda: wmr.mobility(BOT, [0.1, 0.2]), "beta", "[0.1, 0.2]"),
     ("rates with wrong n", lambda: wmr.forward(BOT, [0.1, 0.2, 0.3], [1.0, 2.0, 3.0, 4.0]), "rates",
      "[1., 2., 3., 4.]"),
@@ -117,10 +153,15 @@ ENTRY_POINTS = [
 ]
 
 
+TYPE_ERRORS = {"None robot", "the class Robot", "name not a string", "clockwise not a bool", "exact not a bool",
+               "kind not a string", "wheel not a unit", "complex beta", "strings as beta"}
+
+
 @pytest.mark.parametrize("case, call, name, value", ENTRY_POINTS, ids=[c[0] for c in ENTRY_POINTS])
 def test_entry_points_reject_bad_input(case, call, name, value):
-    with pytest.raises(ValueError) as exc:
+    with pytest.raises((TypeError, ValueError)) as exc:
         call()
+    assert exc.type is (TypeError if case in TYPE_ERRORS else ValueError), (exc.type, str(exc.value))
     msg = str(exc.value)
     assert name in msg and value in msg, msg
 

@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
 # Time the report build in a throw-away copy of the work tree (the real notebooks are never
-# edited): (1) from a clean build/ with .venv present, (2) a second run with nothing changed,
-# (3) after `touch` of one notebook (content hash: nothing to do), (4) after a real edit of one
-# notebook (re-executes only that one, then re-exports). Prints a markdown table.
-#   usage: tools/bench_report.sh            (run from the repository root, after `make venv tex`)
+# edited): (1) cold, from an empty build/ with .venv present, (2) a second run with nothing
+# changed, (3) after `touch` of one notebook (content hash: nothing to do), (4) after a real edit
+# of one notebook (re-executes only that one, then re-exports). Prints a markdown table, with
+# the machine's load average before each run (other users of the cores slow it down).
+#   usage: tools/bench_report.sh            (from the repository root, after `make venv tex`)
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
-PY=.venv/bin/python
+PY=$PWD/.venv/bin/python
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 mkdir -p "$tmp/root"
@@ -14,23 +15,29 @@ cp -r wmr notebooks tools "$tmp/root/"
 [ -d figures ] && cp -r figures "$tmp/root/" || mkdir "$tmp/root/figures"
 git -C "$tmp/root" init -q && git -C "$tmp/root" add -A >/dev/null && \
   git -C "$tmp/root" -c user.name=bench -c user.email=bench@localhost commit -qm bench
-B="$PY $tmp/root/tools/build.py --root $tmp/root"
-t() { local s e; s=$(date +%s.%N); "$@" > "$tmp/log" 2>&1 || { cat "$tmp/log"; exit 1; }; e=$(date +%s.%N); \
-      printf '%.2f' "$(echo "$e - $s" | bc)"; }
+B=("$PY" -m tools.build --root "$tmp/root")
+load() { cut -d' ' -f1 /proc/loadavg; }
+t() { local s e; s=$(date +%s.%N); (cd "$tmp/root" && "$@") > "$tmp/log" 2>&1 || { cat "$tmp/log"; exit 1; }; \
+      e=$(date +%s.%N); printf '%.1f' "$(echo "$e - $s" | bc)"; }
 nb=$(ls "$tmp/root"/notebooks/*.ipynb | head -1)
-t1=$(t $B report); grep -c '^\[execute\] .*ipynb (' "$tmp/log" > "$tmp/n1" || true
-t2=$(t $B report)
-touch "$nb"; t3=$(t $B report)
-$PY - "$nb" <<'PY'
+l1=$(load); t1=$(t "${B[@]}" report); n1=$(grep -c '^\[execute\] .*ipynb (' "$tmp/log" || true)
+steps=$(grep -E '^\[(execute|report|ledger)\] .*\([0-9.]+ s\)$' "$tmp/log" | grep -v 'ipynb (' || true)
+l2=$(load); t2=$(t "${B[@]}" report)
+touch "$nb"; l3=$(load); t3=$(t "${B[@]}" report)
+"$PY" - "$nb" <<'PY'
 import sys, nbformat
 nb = nbformat.read(sys.argv[1], as_version=4)
 nb.cells.append(nbformat.v4.new_markdown_cell("Benchmark edit."))
 nbformat.write(nb, sys.argv[1])
 PY
-t4=$(t $B report); n4=$(grep -c '^\[execute\] .*ipynb (' "$tmp/log" || true)
-echo "| scenario | wall time (s) |"
-echo "| --- | --- |"
-echo "| clean build/ (venv present): $(cat "$tmp/n1") notebooks executed, figures, ledger, HTML + PDF | $t1 |"
-echo "| second run, nothing changed | $t2 |"
-echo "| \`touch\` one notebook (content unchanged) | $t3 |"
-echo "| edit one notebook ($(basename "$nb")): $n4 re-executed, HTML + PDF re-exported | $t4 |"
+l4=$(load); t4=$(t "${B[@]}" report); n4=$(grep -c '^\[execute\] .*ipynb (' "$tmp/log" || true)
+echo "| scenario | wall time (s) | load before |"
+echo "| --- | --- | --- |"
+echo "| cold: empty build/, .venv present; $n1 notebooks executed, ledger, HTML + PDF | $t1 | $l1 |"
+echo "| second run, nothing changed | $t2 | $l2 |"
+echo "| \`touch\` one notebook (content unchanged) | $t3 | $l3 |"
+echo "| edit one notebook ($(basename "$nb")): $n4 re-executed, HTML + PDF re-exported | $t4 | $l4 |"
+echo
+echo "Steps of the cold run:"
+echo "$steps" | sed 's/^/    /'
+echo "Cores: $(nproc); load average now: $(cut -d' ' -f1-3 /proc/loadavg)"

@@ -13,3 +13,6 @@ r"""Analyses of any robot built with :mod:`wmr.model`.
 
 Every function takes a robot; none defaults to the paper's.
 """
+
+__all__ = ["linalg", "mobility", "isotropy", "kinematics", "steering", "simulation", "lines", "singularities",
+           "sweep", "reference"]

@@ -26,10 +26,13 @@ _SAFE = (1e-100, 1e100)       # range of ||A||_F^2 where no product below over- 
 def _entries(A, a, b):
     """Entries of matrices ``a .. b-1`` of a flat stack ``(N, m, n)``: ``e[i][j]`` has shape (b - a,).
 
-    The chunk is copied entry-major first, so that every later operation reads contiguous memory.
+    Every later operation reads contiguous memory: an entry-major stack (as :meth:`wmr.Robot.J`
+    returns) is used as it is, any other layout is copied entry-major first.
     """
     m, n = A.shape[1:]
-    X = np.ascontiguousarray(A[a:b].reshape(b - a, m * n).T)
+    X = A[a:b].reshape(b - a, m * n).T
+    if X.strides[1] != X.itemsize:                  # not entry-major (see wmr.model.trig): copy once
+        X = np.ascontiguousarray(X)
     return [[X[i * n + j] for j in range(n)] for i in range(m)]
 
 
@@ -181,8 +184,8 @@ def _kappa_entries(e):
     f = g00 + g11 + g22                                    # ||A||_F^2 = tr G
     q = f / 3
     b00, b11, b22 = g00 - q, g11 - q, g22 - q              # B = G - q I
-    off = g01 * g01 + g02 * g02 + g12 * g12
-    p2 = (b00 * b00 + b11 * b11 + b22 * b22 + 2 * off) / 6
+    p2 = _dot([b00, b11, b22, g01, g02, g12], [b00, b11, b22, 2 * g01, 2 * g02, 2 * g12])
+    p2 /= 6                                                # tr B^2 / 6
     p = np.sqrt(p2)
     det_B = b00 * (b11 * b22 - g12 * g12) - g01 * (g01 * b22 - g12 * g02) + g02 * (g01 * g12 - b11 * g02)
     r = np.clip(det_B / np.where(p2 > 0, 2 * p * p2, 1.0), -1.0, 1.0)
@@ -190,19 +193,18 @@ def _kappa_entries(e):
     t = np.tan(np.arccos(r) / 6)
     h = 2 / (1 + t * t)
     c, s = h - 1, t * h
-    lam1 = q + 2 * p * c
-    lam3 = q - p * (c + np.sqrt(3) * s)                    # q + 2p cos(phi + 2 pi / 3)
-    lam2 = 3 * q - lam1 - lam3
-    D = _det_entries(e)
-    absD = np.abs(D)
-    kappa = lam1 * np.sqrt(lam2) / absD
+    lam1 = q + 2 * p * c                                   # q + 2p cos(phi)
+    lam2 = q + p * (np.sqrt(3) * s - c)                    # q + 2p cos(phi - 2 pi / 3)
+    # det A by cofactors, and the permanent of |A| from the same products (its rounding bound)
+    x48, x57, x56, x38, x37, x46 = a4 * a8, a5 * a7, a5 * a6, a3 * a8, a3 * a7, a4 * a6
+    absD = np.abs(a0 * (x48 - x57) + a1 * (x56 - x38) + a2 * (x37 - x46))
+    per = (np.abs(a0) * (np.abs(x48) + np.abs(x57)) + np.abs(a1) * (np.abs(x56) + np.abs(x38))
+           + np.abs(a2) * (np.abs(x37) + np.abs(x46)))
+    kappa = lam1 * np.sqrt(lam2) / absD                    # sqrt(lam1 / lam3), lam3 = det^2 / (lam1 lam2)
     # first-order error bound (see the docstring) and the acceptance tests
-    m = [[np.abs(x) for x in row] for row in e]
-    per = (m[0][0] * (m[1][1] * m[2][2] + m[1][2] * m[2][1]) + m[0][1] * (m[1][2] * m[2][0] + m[1][0] * m[2][2])
-           + m[0][2] * (m[1][0] * m[2][1] + m[1][1] * m[2][0]))
     E = _EPS * q + np.minimum(2 * p, _EPS * q / np.sqrt(np.maximum(1 - r * r, 1e-300)))
     bound = 0.5 * E * (1 / lam1 + 1 / lam2) + _EPS * per / absD
-    sigma1 = np.sqrt(lam1)
-    ok = ((4 * bound <= KAPPA_ERROR * _EPS * kappa) & (sigma1 > 2 * TOL * np.maximum(1.0, sigma1) * kappa)
+    ok = ((4 * bound <= KAPPA_ERROR * _EPS * kappa)
+          & (lam1 > (2 * TOL) ** 2 * np.maximum(1.0, lam1) * kappa * kappa)   # sigma_3 > 2 TOL max(1, sigma_1)
           & (f > _SAFE[0]) & (f < _SAFE[1]) & (lam2 > 0) & np.isfinite(kappa))
     return kappa, ok

@@ -13,6 +13,8 @@ from ..model import validation as V
 from .linalg import condition_number
 from ..model.tolerance import TOL
 
+__all__ = ["is_isotropic", "characteristic_length"]
+
 
 def is_isotropic(A):
     """True where the condition number equals 1 within ``TOL`` (batched).
@@ -61,7 +63,7 @@ def characteristic_length(robot):
     >>> round(characteristic_length(bot) ** 2, 12)        # 8/3: a scalene triangle is isotropic too
     2.666666666667
     """
-    d = robot.mount_points
+    d = V.numeric_robot(robot).mount_points
     L = float(np.sqrt(np.mean(np.sum(d ** 2, axis=1))))
     if L == 0:
         raise ValueError("all mount points coincide with C: no characteristic length exists (got L = 0)")

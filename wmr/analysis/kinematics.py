@@ -23,8 +23,11 @@ import numpy as np
 
 from ..model import validation as V
 from ..model.backend import NUMERIC
-from ..model.platform import E
-from ..model.tolerance import TOL, near_zero
+from ..model.platform import cos_sin, rotated
+from ..model.tolerance import TOL
+from ._batch import for_chunks
+
+__all__ = ["Solution", "forward", "inverse"]
 
 
 @dataclass(frozen=True)
@@ -46,19 +49,84 @@ class Solution:
     admissible: np.ndarray
 
 
-def _mul(X, M):
-    """``X @ M`` for a batch of row vectors ``X (..., k)`` and a small constant ``M (k, m)``.
+@dataclass(frozen=True)
+class _UnitConstants:
+    """What the kernels need of one unit: its rows of J1, L_i, E L_i, L_i^+ (numbers), rate slice."""
 
-    (``einsum`` instead of ``@``: BLAS is slow for such thin products on long batches.)
+    J1: np.ndarray              # (2, 3): [E d_i 1] (5)
+    L: np.ndarray
+    EL: np.ndarray
+    Lp: np.ndarray
+    rates: slice
+    dual: float | None          # 2 b / r for a dual wheel
+
+
+def _constants(robot):
+    r"""The constants of forward and inverse kinematics, from the model (once per call, not per configuration).
+
+    Returns ``(units, pinv_J1, full_rank)``: a :class:`_UnitConstants` per unit,
+    :math:`\mathbf J_1^+` (3, 2w), and whether :math:`\mathbf J_1` has rank 3.
     """
-    return np.einsum("...k,km->...m", X, M)
+    J1 = robot.J1(backend=NUMERIC)
+    sv = np.linalg.svd(J1, compute_uv=False)
+    units = []
+    for i, (u, sl) in enumerate(zip(robot.wheels, robot.rate_slices)):
+        L, EL = (np.asarray(m, dtype=float) for m in u.block_terms(NUMERIC))   # B = cos L + sin E L
+        units.append(_UnitConstants(J1[2 * i:2 * i + 2], L, EL, np.linalg.pinv(L), sl,
+                                    2 * u.b / u.r if u.kind == "dual" else None))
+    return tuple(units), np.linalg.pinv(J1), bool(len(sv) == 3 and sv[-1] > TOL * max(1.0, sv[0]))
 
 
-def _unit_velocities(robot, twist):
-    # (5): [E d_i 1] t for every unit, shape (..., w, 2)
-    J1 = robot.J1()
-    v = _mul(twist, J1.T)                             # (..., 2w)
-    return v.reshape(v.shape[:-1] + (robot.w, 2))
+def _lin(coefs, xs):
+    """``sum_j coefs[j] * xs[j]`` over the non-zero coefficients (``None`` when all are zero)."""
+    acc = None
+    for a, x in zip(coefs, xs):
+        if a == 0.0 or x is None:
+            continue
+        term = x * a
+        acc = term if acc is None else np.add(acc, term, out=acc)
+    return acc
+
+
+def _rot(c, s, x, y):
+    """``c x + s y`` for two rows of a chunk (either may be ``None``, a zero row), through
+    :func:`~wmr.model.platform.rotated`: with ``y`` the image under E of ``x``, this is (11)."""
+    if x is None or y is None:
+        return None if x is None and y is None else (c * x if y is None else s * y)
+    return rotated((c, s), x, y, axes=0)
+
+
+def _block_times(c, s, u, cols):
+    r"""The wheel block applied to the unit's rates: :math:`\mathbf B_i\dot{\boldsymbol\theta}_i =
+    \cos\beta_i\,\mathbf L_i\dot{\boldsymbol\theta}_i + \sin\beta_i\,\mathbf E\mathbf L_i\dot{\boldsymbol\theta}_i`,
+    a pair of (k,) arrays (x and y rows; ``None`` for a zero row)."""
+    return [_rot(c, s, _lin(Lrow, cols), _lin(ELrow, cols)) for Lrow, ELrow in zip(u.L, u.EL)]
+
+
+def _max_abs(acc, xs):
+    """Running element-wise maximum of ``|x|`` over the arrays ``xs`` (``None`` entries skipped)."""
+    for x in xs:
+        if x is not None:
+            acc = np.abs(x) if acc is None else np.maximum(acc, np.abs(x), out=acc)
+    return acc
+
+
+def _admissible(res_max, term_max, k):
+    """``max|res| <= TOL * max(1, max|terms|)``, the rule of near_zero, per configuration."""
+    if res_max is None:
+        return np.ones(k, dtype=bool)
+    big = np.zeros(k) if term_max is None else term_max
+    return res_max <= TOL * np.maximum(big, 1.0)
+
+
+def _flat(batch, *arrays):
+    """Broadcast arrays ``(..., k_j)`` to a common batch and flatten it: (N, k_j) each."""
+    return [np.broadcast_to(a, batch + a.shape[-1:]).reshape(-1, a.shape[-1]) for a in arrays]
+
+
+def _columns(X, a, b):
+    """Rows ``a .. b-1`` of ``X (N, m)`` as m contiguous (b - a,) arrays."""
+    return list(np.ascontiguousarray(X[a:b].T))
 
 
 def forward(robot, beta, rates):
@@ -82,6 +150,12 @@ def forward(robot, beta, rates):
     ValueError
         If the mount points do not determine the twist (all coincide), or on bad input.
 
+    Notes
+    -----
+    :math:`\mathbf J_1^+` is computed once per robot; the batch is processed in chunks on all
+    cores, and :math:`\mathbf J_2` is never formed: unit :math:`i` contributes
+    :math:`\cos\beta_i\,\mathbf L_i\dot{\boldsymbol\theta}_i + \sin\beta_i\,\mathbf E\mathbf L_i\dot{\boldsymbol\theta}_i`.
+
     Examples
     --------
     >>> from wmr.model.robots import paper_robot
@@ -90,25 +164,40 @@ def forward(robot, beta, rates):
     >>> (sol.value.round(12) + 0.0).tolist(), bool(sol.admissible)
     ([0.0, 0.0, 1.0], True)
     """
+    robot = V.numeric_robot(robot)
     beta = V.finite_array("beta", beta, last=robot.w)
     rates = V.finite_array("rates", rates, last=robot.n_rates)
-    J1 = robot.J1()
-    s = np.linalg.svd(J1, compute_uv=False)
-    if len(s) < 3 or s[-1] <= TOL * max(1.0, s[0]):
+    units, pinv, full_rank = _constants(robot)
+    if not full_rank:
         raise ValueError(
             f"J1 has rank < 3 (fewer than two distinct mount points: {robot.mount_points.tolist()}): "
             "the twist is not determined")
     batch = np.broadcast_shapes(beta.shape[:-1], rates.shape[:-1])
-    rhs = np.empty(batch + (robot.w, 2))              # J2 theta_dot, unit by unit (no J2 formed)
-    for i, (u, sl) in enumerate(zip(robot.wheels, robot.rate_slices)):
-        L, EL = u.block_terms(NUMERIC)                # B_i = cos(beta_i) L + sin(beta_i) E L
-        b = beta[..., i, None]
-        rhs[..., i, :] = np.cos(b) * _mul(rates[..., sl], L.T) + np.sin(b) * _mul(rates[..., sl], EL.T)
-    rhs = rhs.reshape(batch + (2 * robot.w,))         # (..., 2w)
-    t = _mul(rhs, np.linalg.pinv(J1).T)              # (..., 3)
-    res = _mul(t, J1.T) - rhs
-    scale = np.max(np.abs(rhs), axis=-1)
-    return Solution(t, res, np.all(near_zero(res, scale[..., None]), axis=-1))
+    b, th = _flat(batch, beta, rates)
+    N, w = b.shape[0], robot.w
+    t, res, adm = np.empty((N, 3)), np.empty((N, 2 * w)), np.empty(N, dtype=bool)
+
+    def chunk(a, z):
+        c, s = cos_sin(np.ascontiguousarray(b[a:z].T))
+        cols = _columns(th, a, z)
+        rhs = []                                            # J2 theta_dot (21), unit by unit
+        for i, u in enumerate(units):
+            rhs += _block_times(c[i], s[i], u, cols[u.rates])
+        tw = [_lin(P_row, rhs) for P_row in pinv]           # t = J1^+ J2 theta_dot
+        tw = [np.zeros(z - a) if x is None else x for x in tw]
+        t[a:z] = np.stack(tw, axis=1)
+        big = worst = None
+        for i, u in enumerate(units):                       # J1 t - J2 theta_dot: [E d_i 1] t - B_i theta_i
+            vx, vy = (_lin(row, tw) for row in u.J1)
+            rx = vx if rhs[2 * i] is None else np.subtract(vx, rhs[2 * i], out=vx)
+            ry = vy if rhs[2 * i + 1] is None else np.subtract(vy, rhs[2 * i + 1], out=vy)
+            res[a:z, 2 * i], res[a:z, 2 * i + 1] = rx, ry
+            worst = _max_abs(worst, (rx, ry))
+            big = _max_abs(big, rhs[2 * i:2 * i + 2])
+        adm[a:z] = _admissible(worst, big, z - a)
+
+    for_chunks(chunk, N)
+    return Solution(t.reshape(batch + (3,)), res.reshape(batch + (2 * w,)), adm.reshape(batch))
 
 
 def inverse(robot, beta, twist, beta_dot=None):
@@ -132,6 +221,13 @@ def inverse(robot, beta, twist, beta_dot=None):
     Solution
         ``value`` is :math:`\dot{\boldsymbol\theta}` (..., n_rates).
 
+    Notes
+    -----
+    Per unit, :math:`\dot{\boldsymbol\theta}_i = \mathbf L_i^+\mathbf R(\beta_i)^T\mathbf v_i` with
+    :math:`\mathbf v_i = [\mathbf E\mathbf d_i\ \mathbf 1]\mathbf t` (5) and
+    :math:`\mathbf R^T\mathbf v = (\cos\beta\,v_x + \sin\beta\,v_y,\ \cos\beta\,v_y - \sin\beta\,v_x)`;
+    the :math:`\mathbf L_i^+` are computed once per robot and the batch is processed in chunks.
+
     Examples
     --------
     >>> from wmr.model.robots import paper_robot
@@ -142,30 +238,46 @@ def inverse(robot, beta, twist, beta_dot=None):
     >>> bool(inverse(bot, [0.0, 0.0, 0.0], [0.0, 1.0, 0.0]).admissible)   # sideways: the wheels slip
     False
     """
+    robot = V.numeric_robot(robot)
     beta = V.finite_array("beta", beta, last=robot.w)
     twist = V.finite_array("twist", twist, last=3)
+    arrays = [beta, twist]
     if beta_dot is not None:
-        beta_dot = V.finite_array("beta_dot", beta_dot, last=robot.w)
-    v = _unit_velocities(robot, twist)
-    batch = np.broadcast_shapes(beta.shape[:-1], v.shape[:-2])
-    v = np.broadcast_to(v, batch + v.shape[-2:])
-    beta = np.broadcast_to(beta, batch + beta.shape[-1:])
-    rates = np.zeros(batch + (robot.n_rates,))
-    res = np.zeros(batch + (robot.w, 2))
-    Emat = E(NUMERIC)
-    for i, (u, sl) in enumerate(zip(robot.wheels, robot.rate_slices)):
-        L, EL = u.block_terms(NUMERIC)                 # B_i = R(beta_i) L = cos L + sin E L
-        c, s = np.cos(beta[..., i, None]), np.sin(beta[..., i, None])
-        vi = v[..., i, :]
-        local_v = c * vi + s * _mul(vi, Emat)                                 # R^T [E d 1] t  (R^T = cI + sE^T)
-        th = _mul(local_v, np.linalg.pinv(L).T)                                # L^+ R^T v
-        if u.kind == "dual":
-            # free differential rate fixed by the steering wanted: phi_dot = psi_dot + beta_dot
-            bd = 0.0 if beta_dot is None else beta_dot[..., i]
-            diff = -(2 * u.b / u.r) * (twist[..., 0] + bd)                  # theta_1 - theta_2
-            th = th + 0.5 * np.stack([diff, -diff], axis=-1)
-        rates[..., sl] = th
-        res[..., i, :] = c * _mul(th, L.T) + s * _mul(th, EL.T) - vi           # B_i theta_i - [E d_i 1] t
-    res = -res.reshape(batch + (2 * robot.w,))                             # J1 t - J2 theta_dot
-    scale = np.max(np.abs(v), axis=(-2, -1))
-    return Solution(rates, res, np.all(near_zero(res, scale[..., None]), axis=-1))
+        arrays.append(V.finite_array("beta_dot", beta_dot, last=robot.w))
+    units, _, _ = _constants(robot)
+    w = robot.w
+    batch = np.broadcast_shapes(*[a.shape[:-1] for a in arrays])
+    flat = _flat(batch, *arrays)
+    b, tw, bd = flat[0], flat[1], (flat[2] if beta_dot is not None else None)
+    N = b.shape[0]
+    rates, res, adm = np.empty((N, robot.n_rates)), np.empty((N, 2 * w)), np.empty(N, dtype=bool)
+
+    def chunk(a, z):
+        c, s = cos_sin(np.ascontiguousarray(b[a:z].T))
+        t = _columns(tw, a, z)
+        psi = t[0]
+        big = worst = None
+        for i, u in enumerate(units):
+            vx, vy = (_lin(row, t) for row in u.J1)         # (5): v_i = [E d_i 1] t
+            # R(beta_i)^T v_i = (c v_x + s v_y, c v_y - s v_x) = R(-beta_i) v_i (11)
+            lx, ly = _rot(c[i], s[i], vx, vy), _rot(c[i], s[i], vy, -vx)
+            th = [_lin(row, (lx, ly)) for row in u.Lp]      # L_i^+ R^T v_i
+            th = [np.zeros(z - a) if x is None else x for x in th]
+            if u.dual is not None:
+                # free differential rate fixed by the steering wanted: phi_dot = psi_dot + beta_dot,
+                # theta_1 - theta_2 = -(2b/r) phi_dot
+                half = 0.5 * u.dual * (psi if bd is None else psi + bd[a:z, i])
+                th[0] -= half
+                th[1] += half
+            for j, x in enumerate(th):
+                rates[a:z, u.rates.start + j] = x
+            bx, by = _block_times(c[i], s[i], u, th)        # B_i theta_i
+            rx = vx - bx if bx is not None else vx.copy()   # J1 t - J2 theta_dot
+            ry = vy - by if by is not None else vy.copy()
+            res[a:z, 2 * i], res[a:z, 2 * i + 1] = rx, ry
+            worst = _max_abs(worst, (rx, ry))
+            big = _max_abs(big, (vx, vy))
+        adm[a:z] = _admissible(worst, big, z - a)
+
+    for_chunks(chunk, N)
+    return Solution(rates.reshape(batch + (robot.n_rates,)), res.reshape(batch + (2 * w,)), adm.reshape(batch))

@@ -222,6 +222,7 @@ def circumcircle(points):
 # ----------------------------------------------------------------------------- a robot's lines
 def _unit_points(robot, beta):
     """Each unit's points and axes (``unit.points``) at the steering angles ``beta (..., w)``."""
+    robot = V.numeric_robot(robot)
     beta = V.finite_array("beta", beta, last=robot.w)
     return [u.points(beta[..., i]) for i, u in enumerate(robot.wheels)]
 
@@ -266,6 +267,7 @@ def axle_lines(robot, beta):
 
 
 def _one(robot, beta, what):
+    robot = V.numeric_robot(robot)
     beta = V.finite_array("beta", beta, last=robot.w)
     if beta.ndim != 1:
         raise ValueError(f"beta must be one configuration of shape ({robot.w},) for {what}, got shape {beta.shape}")
@@ -340,6 +342,7 @@ def planes_through(robot, D):
     -------
     numpy.ndarray (..., w)
     """
+    robot = V.numeric_robot(robot)
     D = V.finite_array("D", D, last=2)
     v = D[..., None, :] - robot.mount_points                        # (..., w, 2)
     beta = np.arctan2(-v[..., 0], v[..., 1])                       # j = (-sin b, cos b) || v
@@ -359,6 +362,7 @@ def axles_through(robot, U):
     -------
     numpy.ndarray (..., w), in :math:`(-\pi/2, \pi/2]`
     """
+    robot = V.numeric_robot(robot)
     U = V.finite_array("U", U, last=2)
     v = U[..., None, :] - robot.mount_points
     beta = np.arctan2(v[..., 1], v[..., 0])                        # i = (cos b, sin b) || v
@@ -384,6 +388,7 @@ def pair_line_angle(robot, i, j):
     -------
     float
     """
+    robot = V.numeric_robot(robot)
     for name, k in (("i", i), ("j", j)):
         if isinstance(k, bool) or not isinstance(k, (int, np.integer)):
             raise TypeError(f"{name} must be a wheel number (int), got {k!r}")

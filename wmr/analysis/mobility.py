@@ -25,7 +25,10 @@ import numpy as np
 from ..model import validation as V
 from ..model.backend import NUMERIC
 from ..model.platform import E
+from ..model.trig import trig_combination
 from .linalg import _left_null, null_space, rank
+
+__all__ = ["twist_constraints", "rank_F", "mobility", "admissible_twists"]
 
 
 def twist_constraints(robot, beta):
@@ -52,10 +55,11 @@ def twist_constraints(robot, beta):
     >>> A.shape, base
     ((3, 3), 3)
     """
+    robot = V.numeric_robot(robot)
     beta = V.finite_array("beta", beta, last=robot.w)
     J1 = robot.J1()
-    # R(beta) = cos(beta) I + sin(beta) E (11), so the rows N_i^T R^T [E d_i 1] are
-    # cos(beta_i) P_i + sin(beta_i) Q_i with constant P_i, Q_i: no batched 2x2 products needed.
+    # R(beta)^T = cos(beta) 1 + sin(beta) E^T (11), so the rows N_i^T R^T [E d_i 1] are
+    # cos(beta_i) P_i + sin(beta_i) Q_i with constant P_i = N_i^T J1_i, Q_i = N_i^T E^T J1_i.
     Et = E(NUMERIC).T
     parts, base_rank = [], 0
     for i, u in enumerate(robot.wheels):
@@ -66,13 +70,12 @@ def twist_constraints(robot, beta):
         Ji = J1[2 * i:2 * i + 2]
         parts.append((i, N.T @ Ji, N.T @ Et @ Ji))
     k = sum(P.shape[0] for _, P, _ in parts)
-    A = np.empty(beta.shape[:-1] + (k, 3))
+    Ps, Qs = np.zeros((robot.w, k, 3)), np.zeros((robot.w, k, 3))
     row = 0
-    for i, P, Q in parts:
-        b = beta[..., i, None, None]
-        A[..., row:row + P.shape[0], :] = np.cos(b) * P + np.sin(b) * Q
+    for i, P, Q in parts:                      # N_i^T R(beta_i)^T J_{1,i} at unit i's rows
+        Ps[i, row:row + P.shape[0]], Qs[i, row:row + P.shape[0]] = P, Q
         row += P.shape[0]
-    return A, base_rank
+    return trig_combination(beta, Ps, Qs), base_rank
 
 
 def rank_F(robot, beta):
@@ -118,7 +121,8 @@ def mobility(robot, beta):
     >>> int(mobility(paper_robot("centred"), [0.0, 0.0, 0.0]))   # parallel wheels: translation
     1
     """
-    return 3 + robot.n_rates - rank_F(robot, beta)
+    rank = rank_F(robot, beta)
+    return 3 + robot.n_rates - rank
 
 
 def admissible_twists(robot, beta):
@@ -144,6 +148,7 @@ def admissible_twists(robot, beta):
     >>> np.abs(basis.ravel()).round(12).tolist()                              # only y translation
     [0.0, 0.0, 1.0]
     """
+    robot = V.numeric_robot(robot)
     beta = V.finite_array("beta", beta, last=robot.w)
     if beta.ndim != 1:
         raise ValueError(f"beta must be one configuration of shape ({robot.w},) for admissible_twists, "

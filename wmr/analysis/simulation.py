@@ -17,6 +17,8 @@ import numpy as np
 from ..model import validation as V
 from .kinematics import forward
 
+__all__ = ["Trajectory", "simulate"]
+
 
 @dataclass(frozen=True)
 class Trajectory:
@@ -122,6 +124,7 @@ def simulate(robot, rates, beta0, t_end, dt, steer=None, pose0=(0.0, 0.0, 0.0)):
     >>> (tr.pose[-1].round(12) + 0.0).tolist(), bool(tr.slip.max() < 1e-12)   # 1 m along +y, no slip
     ([0.0, 0.0, 1.0], True)
     """
+    robot = V.numeric_robot(robot)
     t_end = V.positive("t_end", t_end)
     dt = V.positive("dt", dt)
     beta0 = V.finite_array("beta0", beta0, last=robot.w)

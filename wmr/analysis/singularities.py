@@ -42,11 +42,12 @@ import numpy as np
 import sympy as sp
 
 from ..model import validation as V
-from ..model.backend import NUMERIC, SYMBOLIC
+from ..model.backend import NUMERIC, SYMBOLIC, choose
 from ..model.platform import wrap_angle
 from ..model.tolerance import TOL, near_zero
 from .lines import (AT_INFINITY, COINCIDENT, FINITE, NONE, Concurrency, axles_concurrency, axles_through,
                     circumcircle, concurrency_point, pair_intersections, wheel_plane_lines)
+from .linalg import det
 from .mobility import rank_F
 
 __all__ = ["det_J", "det_J_scale", "is_singular", "det_J_symbolic", "det_J_polynomial", "exact_zero",
@@ -55,6 +56,7 @@ __all__ = ["det_J", "det_J_scale", "is_singular", "det_J_symbolic", "det_J_polyn
 
 
 def _require_square(robot):
+    V.robot(robot)
     if robot.n_rates != 3 or robot.w != 3:
         raise ValueError(
             f"det J needs a square J (three centred wheels, n_rates = 3); got a robot with w = {robot.w}, "
@@ -65,17 +67,26 @@ def _default_L(robot, L):
     if L is not None:
         return V.positive("L", L)
     from .isotropy import characteristic_length
-    try:
-        return characteristic_length(robot)
-    except TypeError:
-        raise ValueError("give L explicitly for a robot with symbolic mount points") from None
+    if V.free_symbols(V.robot(robot)):
+        raise ValueError(f"L must be given explicitly for a robot with symbolic mount points, got L = None for {V.show(robot)}")
+    return characteristic_length(robot)
 
 
 def exact_robot(robot):
-    """The same robot with exact (SymPy) mount coordinates and radii, for symbolic checks."""
+    r"""The same robot with exact (SymPy) mount coordinates and radii, for symbolic checks.
+
+    Parameters
+    ----------
+    robot : Robot
+        Numeric (floats are made exact with ``nsimplify`` over :math:`\sqrt2, \sqrt3`) or symbolic (returned as is).
+
+    Returns
+    -------
+    Robot
+    """
     import dataclasses
     from ..model.robot import Robot
-    if robot.is_symbolic:
+    if V.robot(robot).is_symbolic:
         return robot
     ns = [sp.sqrt(2), sp.sqrt(3)]
     units = [dataclasses.replace(u, position=tuple(sp.nsimplify(v, ns) for v in u.position),
@@ -84,9 +95,20 @@ def exact_robot(robot):
 
 
 def numeric_robot(robot):
-    """The same robot with float coordinates (from an exact one)."""
+    """The same robot with float coordinates and radii (from an exact one).
+
+    Parameters
+    ----------
+    robot : Robot
+        Without free symbols.
+
+    Returns
+    -------
+    Robot
+    """
     import dataclasses
     from ..model.robot import Robot
+    V.robot(robot)
     units = [dataclasses.replace(u, position=tuple(float(v) for v in u.position), r=float(u.r))
              for u in robot.wheels]
     return Robot(units, name=robot.name)
@@ -116,23 +138,44 @@ def det_J(robot, beta, L=None):
     >>> abs(float(det_J(bot, [0.3, 0.3, 0.3]))) < 1e-15      # item (i)
     True
     """
-    _require_square(robot)
-    return np.linalg.det(robot.J(beta, L=_default_L(robot, L)))
+    _require_square(V.numeric_robot(robot))
+    return det(robot.J(beta, L=_default_L(robot, L)))                 # closed form, batched
 
 
 def det_J_scale(robot, beta, L=None):
     r"""Hadamard bound :math:`\prod_i\|\mathbf J\mathbf e_i\|`: the size against which :math:`\det\mathbf J` is zero.
 
+    Parameters
+    ----------
+    robot : Robot
+        Three centred wheels.
+    beta : array (..., 3)
+    L : float, optional
+        As for :func:`det_J`.
+
     Returns
     -------
     numpy.ndarray (...)
     """
-    J = robot.J(beta, L=_default_L(robot, L))
+    J = V.numeric_robot(robot).J(beta, L=_default_L(robot, L))
     return np.prod(np.linalg.norm(J, axis=-2), axis=-1)
 
 
 def is_singular(robot, beta, L=None):
-    r"""True where :math:`|\det\mathbf J| \le` ``TOL`` times the Hadamard bound (batched)."""
+    r"""True where :math:`|\det\mathbf J| \le` ``TOL`` times the Hadamard bound (batched).
+
+    Parameters
+    ----------
+    robot : Robot
+        Three centred wheels.
+    beta : array (..., 3)
+    L : float, optional
+        As for :func:`det_J`.
+
+    Returns
+    -------
+    numpy.ndarray of bool (...)
+    """
     return near_zero(det_J(robot, beta, L), det_J_scale(robot, beta, L))
 
 
@@ -172,14 +215,20 @@ def plane_line_matrix(robot, beta, L=1, backend=None):
     robot : Robot
     beta : array (..., w) or sequence of SymPy expressions (None: the symbols)
     L : float or sympy.Expr
+    backend : NUMERIC or SYMBOLIC, optional
+        Default: SymPy when ``beta`` is None or symbolic or the robot is symbolic, else NumPy.
 
     Returns
     -------
     numpy.ndarray (..., 3, w) or sympy.Matrix (3, w)
     """
-    symbolic = beta is None or robot.is_symbolic or any(
+    symbolic = beta is None or V.robot(robot).is_symbolic or any(
         isinstance(b, sp.Basic) for b in np.ravel(np.asarray(beta, dtype=object)))
-    bk = SYMBOLIC if symbolic else NUMERIC
+    bk = choose(backend=backend) if backend is not None else (SYMBOLIC if symbolic else NUMERIC)
+    if symbolic and bk is NUMERIC:
+        raise ValueError(f"backend NUMERIC needs numeric beta and a numeric robot, got beta = {V.show(beta)}, "
+                         f"robot = {V.show(robot)}")
+    symbolic = bk is SYMBOLIC
     if symbolic:
         b = list(robot.beta_symbols) if beta is None else list(beta)
     else:
@@ -360,6 +409,8 @@ def classify(robot, beta, L=None):
     -------
     Classification
     """
+    _require_square(robot)
+    robot = V.numeric_robot(robot)
     beta = V.finite_array("beta", beta, last=robot.w)
     if beta.ndim != 1:
         raise ValueError(f"beta must be one configuration of shape (3,) for classify, got shape {beta.shape}")

@@ -16,7 +16,8 @@ import numpy as np
 
 from ..model import validation as V
 from ..model.platform import point_velocity
-from ..model.tolerance import near_zero
+from ..model.tolerance import TOL, near_zero
+from ._batch import for_chunks
 from .lines import AT_INFINITY, FINITE, STILL
 
 __all__ = ["InstantCentre", "instantaneous_centre", "steering_angles", "centre_to_wheels", "FINITE", "AT_INFINITY", "STILL"]
@@ -91,7 +92,10 @@ def steering_angles(robot, twist, current=None):
     :math:`\beta_i = \operatorname{atan2}(\dot p_x, -\dot p_y)`.  Equivalently the axle
     :math:`\mathbf i_i` points at the instantaneous centre.  Where the mount point is still (it
     is the centre, or the twist is zero) every angle is admissible and ``current`` is kept;
-    offset wheels (full mobility) also keep ``current``.
+    offset wheels (full mobility) also keep ``current``.  "Still" means
+    :math:`\|\dot{\mathbf p}_i\| \le \mathrm{TOL}\max(1, s)` with
+    :math:`s = \max(|\dot x|, |\dot y|) + |\dot\psi|\max_{i,k}|d_{ik}|`, the size of the terms of
+    :math:`\dot{\mathbf p}_i` (the rule of :func:`wmr.model.tolerance.near_zero`).
 
     Parameters
     ----------
@@ -112,18 +116,39 @@ def steering_angles(robot, twist, current=None):
     >>> np.degrees(beta).round(9).tolist()                              # axles point at C
     [0.0, -120.0, 120.0]
     """
+    robot = V.numeric_robot(robot)
     t = V.finite_array("twist", twist, last=3)
+    w = robot.w
+    if current is not None:
+        current = V.finite_array("current", current, last=w)
+    batch = np.broadcast_shapes(t.shape[:-1], () if current is None else current.shape[:-1])
+    tw = np.broadcast_to(t, batch + (3,)).reshape(-1, 3)
+    cur = None if current is None else np.broadcast_to(current, batch + (w,)).reshape(-1, w)
     d = robot.mount_points                                             # (w, 2)
-    pdot = point_velocity(t[..., None, :], d)                          # (..., w, 2)
-    if current is None:
-        current = np.zeros(pdot.shape[:-1])
-    current = V.finite_array("current", current, last=robot.w)
-    speed = np.linalg.norm(pdot, axis=-1)
-    scale = np.abs(t[..., 1:]).max(axis=-1) + np.abs(t[..., :1]).max(axis=-1) * np.abs(d).max()
-    free = near_zero(speed, scale[..., None])
-    beta = np.arctan2(pdot[..., 0], -pdot[..., 1])
-    steerable = np.array([u.kind in ("centred", "dual") for u in robot.wheels])
-    return np.where(free | ~steerable, np.broadcast_to(current, beta.shape), beta)
+    dmax = float(np.abs(d).max())
+    keep = np.array([u.kind not in ("centred", "dual") for u in robot.wheels])
+    N = tw.shape[0]
+    beta = np.empty((N, w))
+
+    def chunk(a, b):
+        psi, cx, cy = tw[a:b, 0:1], tw[a:b, 1:2], tw[a:b, 2:3]
+        pdot = point_velocity(tw[a:b, None, :], d)                     # (2): c_dot + psi_dot E d_i
+        px, py = pdot[..., 0], np.negative(pdot[..., 1])               # j_i = -p_dot_i / |p_dot_i|
+        # the mount point is still when |p_dot| <= TOL max(1, scale): compared squared, no sqrt
+        scale = np.maximum(np.abs(cx), np.abs(cy))
+        scale += np.abs(psi) * dmax
+        np.maximum(scale, 1.0, out=scale)
+        scale *= TOL
+        scale *= scale
+        free = px * px
+        free += py * py
+        free = free <= scale
+        free |= keep
+        np.arctan2(px, py, out=beta[a:b])
+        np.copyto(beta[a:b], 0.0 if cur is None else cur[a:b], where=free)
+
+    for_chunks(chunk, N)
+    return beta.reshape(batch + (w,))
 
 
 def centre_to_wheels(twist, d):

@@ -347,6 +347,15 @@ class _Counts:
         nz = np.flatnonzero(self.counts)
         return [(int(self.offset + k), int(self.counts[k])) for k in nz]
 
+    def locate(self, rank, descending=False):
+        """The bin holding the member of 0-based ``rank`` in bin order: ``(bin, 0)``, or ``(None, rank - total)``."""
+        counts = self.counts[::-1] if descending else self.counts
+        cum = np.cumsum(counts)
+        if cum.size == 0 or rank >= cum[-1]:
+            return None, rank - (int(cum[-1]) if cum.size else 0)
+        i = int(np.searchsorted(cum, rank, side="right"))
+        return self.offset + (self.counts.size - 1 - i if descending else i), 0
+
 
 _GAMMA = (1 + SKETCH_ACCURACY) / (1 - SKETCH_ACCURACY)
 _LOG_GAMMA = math.log(_GAMMA)
@@ -444,22 +453,14 @@ class _Partial:
             return self.hi
         rank = math.floor(q * (self.count - 1))
         if integer:
-            for value, n in self.integers.items():
-                if rank < n:
-                    return float(value)
-                rank -= n
-        for k, n in reversed(self.negative.items()):          # most negative first
-            if rank < n:
-                return -_bucket_value(k)
-            rank -= n
+            return float(self.integers.locate(rank)[0])
+        k, rank = self.negative.locate(rank, descending=True)   # most negative first
+        if k is not None:
+            return -_bucket_value(k)
         if rank < self.zeros:
             return 0.0
-        rank -= self.zeros
-        for k, n in self.positive.items():
-            if rank < n:
-                return _bucket_value(k)
-            rank -= n
-        return math.inf
+        k, rank = self.positive.locate(rank - self.zeros)
+        return math.inf if k is None else _bucket_value(k)
 
 
 def _evaluate(robot, name, source, w, L, start, stop, keep, threads):

@@ -11,3 +11,5 @@ r"""The model: what a wheeled mobile robot *is* (no analysis here).
 :mod:`~wmr.model.conventions`  frames, signs and numbering, stated once
 ========================  ==========================================================================
 """
+
+__all__ = ["backend", "tolerance", "validation", "platform", "wheels", "robot", "robots", "conventions"]

@@ -11,6 +11,8 @@ from __future__ import annotations
 import numpy as np
 import sympy as sp
 
+__all__ = ["NumericBackend", "SymbolicBackend", "NUMERIC", "SYMBOLIC", "is_symbolic", "choose"]
+
 
 class NumericBackend:
     """NumPy backend: entries are floats or arrays with leading batch axes."""
@@ -156,6 +158,6 @@ def choose(*values, backend=None):
     """
     if backend is not None:
         if backend not in (NUMERIC, SYMBOLIC):
-            raise ValueError(f"backend must be wmr.model.backend.NUMERIC or SYMBOLIC, got {backend!r}")
+            raise TypeError(f"backend must be wmr.model.backend.NUMERIC or SYMBOLIC, got {backend!r}")
         return backend
     return SYMBOLIC if is_symbolic(*values) else NUMERIC

@@ -33,4 +33,29 @@ Numbering
     the negative x-axis, the one placement under which the printed (59) holds.
 Tolerance
     One numerical zero, :data:`wmr.model.tolerance.TOL`.
+Errors
+    ``TypeError`` for the wrong kind of argument, ``ValueError`` for a bad value; the message
+    names the argument and shows the value (:mod:`wmr.model.validation`).
+
+Where things live
+-----------------
+:mod:`wmr.model`
+    What a robot *is*: the backends (NumPy numbers, SymPy symbols), the tolerance, input checks,
+    the platform (:math:`\mathbf E`, :math:`\mathbf R(\beta)` and the wheel block
+    :math:`\mathbf R(\beta)\mathbf M = \cos\beta\,\mathbf M + \sin\beta\,\mathbf E\mathbf M` of (11),
+    :func:`wmr.model.platform.rotated`), the wheel units, the assembled :class:`wmr.Robot`
+    (:math:`\mathbf J_1, \mathbf J_2, \mathbf F, \mathbf J`), ready-made robots, and these conventions.
+:mod:`wmr.analysis`
+    What can be computed for *any* robot (every function takes one; none defaults to the
+    paper's): linear algebra, mobility, isotropy, kinematics, steering, simulation, line
+    geometry, singularities, sweeps, and the dense reference the fast kernels are checked against.
+:mod:`wmr.plot`
+    Drawing with matplotlib (imported only there: ``import wmr`` does not import matplotlib,
+    pandas or IPython).
+:mod:`wmr.paper`
+    The edition of the paper: its printed forms, symbols, ledger, singular families and figures.
+:mod:`wmr.cli`
+    The ``wmr`` command line.
 """
+
+__all__ = []

@@ -18,6 +18,8 @@ import numpy as np
 
 from .backend import NUMERIC, choose
 
+__all__ = ["E", "rotation", "cos_sin", "rotated", "wrap_angle", "point_row", "point_velocity"]
+
 
 def E(backend=NUMERIC):
     r"""The 90-degree counter-clockwise rotation :math:`\mathbf E` of (3): :math:`\mathbf E\mathbf v = \mathbf k\times\mathbf v`.
@@ -63,6 +65,99 @@ def rotation(angle, backend=NUMERIC):
         angle = finite_array("angle", angle)
     c, s = backend.cos(angle), backend.sin(angle)
     return backend.matrix([[c, -s], [s, c]])
+
+
+def cos_sin(beta, out=None):
+    r""":math:`(\cos\beta, \sin\beta)` of an array of angles, from :math:`t = \tan(\beta/2)`.
+
+    .. math:: \cos\beta = \frac{2}{1 + t^2} - 1,\qquad \sin\beta = \frac{2t}{1 + t^2}.
+
+    NumPy evaluates ``np.cos`` and ``np.sin`` of float64 arrays one element at a time (about
+    12 ns each on the reference machine) but ``np.tan`` with SIMD (about 1.4 ns), so the batched
+    kernels take their cosines and sines from here.  Both are within one unit in the last place
+    of 1 of the exact values (an absolute error of :math:`2.2\times10^{-16}`, the size of the
+    rounding of :math:`\beta` itself); exact at :math:`\beta = 0`, and :math:`\beta = \pm\pi` gives
+    :math:`\cos = -1` and the float :math:`\sin\pi`.
+
+    Parameters
+    ----------
+    beta : numpy.ndarray (...)
+        Finite angles in radians.
+    out : tuple of two numpy.ndarray (...), optional
+        Arrays to write the cosines and sines into.
+
+    Returns
+    -------
+    c, s : numpy.ndarray (...)
+
+    Examples
+    --------
+    >>> c, s = cos_sin(np.array([0.0, np.pi / 3, -np.pi]))
+    >>> bool(np.allclose(c, [1.0, 0.5, -1.0], rtol=0, atol=3e-16))
+    True
+    >>> bool(np.allclose(s, np.sin([0.0, np.pi / 3, -np.pi]), rtol=0, atol=3e-16))
+    True
+    """
+    t = np.multiply(beta, 0.5, out=np.empty(np.shape(beta)))     # arrays even when 0-d
+    np.tan(t, out=t)
+    h = np.multiply(t, t, out=np.empty_like(t))
+    h += 1.0
+    np.divide(2.0, h, out=h)                       # h = 2 / (1 + t^2)
+    if out is None:
+        out = (np.empty_like(h), np.empty_like(h))
+    c, s = out
+    np.subtract(h, 1.0, out=c)
+    np.multiply(t, h, out=s)
+    return c, s
+
+
+def rotated(beta, M, EM, axes=2, backend=None):
+    r""":math:`\mathbf R(\beta)\mathbf M = \cos\beta\,\mathbf M + \sin\beta\,\mathbf E\mathbf M`, batched over :math:`\beta`.
+
+    The rotation (11) is linear in :math:`(\cos\beta, \sin\beta)`:
+    :math:`\mathbf R(\beta) = \cos\beta\,\mathbf 1 + \sin\beta\,\mathbf E`.  So a block turned by
+    the steering angle is the combination of two constant blocks, :math:`\mathbf M` and
+    :math:`\mathbf E\mathbf M`, and so is any constant linear image of it
+    (:math:`\mathbf X\mathbf R(\beta)\mathbf M\mathbf y = \cos\beta\,\mathbf X\mathbf M\mathbf y +
+    \sin\beta\,\mathbf X\mathbf E\mathbf M\mathbf y`).  Every wheel block
+    :math:`\mathbf B_i = \mathbf R_{bwi}\mathbf L_i` of :math:`\mathbf J_2` (20), (21), (51), (17), the
+    columns of :math:`\mathbf J` (56), the twist constraints of the mobility analysis and the
+    kinematics are evaluated with this one function: no batched 2x2 product is formed.
+    :math:`\mathbf R(\beta)^T = \mathbf R(-\beta)` is ``rotated((cos, -sin), M, EM)``.
+
+    Parameters
+    ----------
+    beta : array (...), sympy.Expr, or pair (cos_beta, sin_beta) of arrays (...)
+        The angle, or its cosine and sine when the caller already has them.
+    M, EM : array (..., *block) or sympy.Matrix
+        The block and its image :math:`\mathbf E\mathbf M` (or the same linear image of both);
+        broadcast against ``beta``.
+    axes : int, optional
+        Number of trailing axes of ``M`` that form one block (2 for matrices, 1 for vectors).
+    backend : NUMERIC or SYMBOLIC, optional
+        Default: SymPy if ``beta`` is symbolic.
+
+    Returns
+    -------
+    numpy.ndarray (..., *block) or sympy.Matrix
+
+    Examples
+    --------
+    >>> L = np.array([[0.0], [-2.0]])                       # a centred wheel's local block (51)
+    >>> (rotated(np.pi / 2, L, E() @ L).round(12) + 0.0).tolist()   # R(pi/2) L
+    [[2.0], [0.0]]
+    >>> rotated(np.zeros(4), L, E() @ L).shape
+    (4, 2, 1)
+    """
+    if isinstance(beta, tuple):
+        c, s = beta
+    else:
+        bk = choose(beta, backend=backend)
+        c, s = cos_sin(np.asarray(beta, dtype=float)) if bk is NUMERIC else (bk.cos(beta), bk.sin(beta))
+    if isinstance(c, np.ndarray):
+        index = (Ellipsis,) + (None,) * axes
+        c, s = c[index], s[index]
+    return c * M + s * EM
 
 
 def wrap_angle(angle):

@@ -16,7 +16,10 @@ import sympy as sp
 from . import validation as V
 from .backend import NUMERIC, SYMBOLIC, choose, is_symbolic
 from .platform import point_row
+from .trig import trig_combination
 from .wheels import UNIT_TYPES
+
+__all__ = ["Robot", "TWIST_NAMES"]
 
 TWIST_NAMES = ("psi_dot", "x_dot", "y_dot")
 
@@ -42,17 +45,20 @@ class Robot:
     """
 
     def __init__(self, wheels, name=None):
+        if isinstance(wheels, (str, bytes)) or isinstance(wheels, UNIT_TYPES):
+            raise TypeError(f"wheels must be a sequence of wheel units, got {V.show(wheels)}")
         try:
             wheels = tuple(wheels)
         except TypeError:
-            raise ValueError(f"wheels must be a sequence of wheel units, got {wheels!r}") from None
+            raise TypeError(f"wheels must be a sequence of wheel units, got {V.show(wheels)}") from None
         if len(wheels) == 0:
             raise ValueError("wheels must contain at least one wheel unit, got 0")
         for k, u in enumerate(wheels):
             if not isinstance(u, UNIT_TYPES):
-                raise ValueError(f"wheels[{k}] must be an OffsetWheel, CentredWheel or DualWheel, got {u!r}")
+                raise TypeError(f"wheels[{k}] must be a wheel unit ({', '.join(t.__name__ for t in UNIT_TYPES)}), "
+                                f"got {V.show(u)}")
         self.wheels = wheels
-        self.name = name or "robot"
+        self.name = V.optional_text("name", name) or "robot"
         starts = np.cumsum([0] + [u.n_rates for u in wheels])
         #: slice of each unit's rates inside the joint-rate vector theta_dot
         self.rate_slices = tuple(slice(int(a), int(b)) for a, b in zip(starts[:-1], starts[1:]))
@@ -169,12 +175,23 @@ class Robot:
         """
         bk = self._backend(beta, backend)
         b = self._beta(beta, bk)
-        batch = () if bk is SYMBOLIC else b.shape[:-1]
-        M = bk.zeros(2 * self.w, self.n_rates, batch)
+        if bk is NUMERIC:
+            return trig_combination(b, *self._wheel_terms())
+        M = bk.zeros(2 * self.w, self.n_rates)
         for i, (u, sl) in enumerate(zip(self.wheels, self.rate_slices)):
-            bi = b[i] if bk is SYMBOLIC else b[..., i]
-            bk.set_block(M, 2 * i, sl.start, u.block(bi, backend=bk))
+            bk.set_block(M, 2 * i, sl.start, u.block(b[i], backend=bk))
         return M
+
+    def _wheel_terms(self):
+        r"""The pair :math:`(\mathbf P, \mathbf Q)`, each (w, 2w, n_rates), with
+        :math:`\mathbf J_2(\boldsymbol\beta) = \sum_i(\cos\beta_i\,\mathbf P_i + \sin\beta_i\,\mathbf Q_i)`:
+        unit i's :math:`\mathbf L_i` and :math:`\mathbf E\mathbf L_i` (:meth:`OffsetWheel.block_terms`) placed
+        at its block of :math:`\mathbf J_2` (numeric robots)."""
+        P = np.zeros((self.w, 2 * self.w, self.n_rates))
+        Q = np.zeros_like(P)
+        for i, (u, sl) in enumerate(zip(self.wheels, self.rate_slices)):
+            P[i, 2 * i:2 * i + 2, sl], Q[i, 2 * i:2 * i + 2, sl] = u.block_terms(NUMERIC)
+        return P, Q
 
     def F(self, beta=None, backend=None):
         r"""Functional matrix :math:`\mathbf F = [\mathbf J_1\ \ -\mathbf J_2]` (22)-(24).
@@ -196,12 +213,10 @@ class Robot:
         if bk is SYMBOLIC:
             return bk.broadcast_hstack(self.J1(backend=SYMBOLIC), -self.J2(beta, SYMBOLIC))
         b = self._beta(beta, bk)
-        M = np.zeros(b.shape[:-1] + (2 * self.w, 3 + self.n_rates))   # filled in place: no copies
-        M[..., :, :3] = self.J1(backend=NUMERIC)
-        for i, (u, sl) in enumerate(zip(self.wheels, self.rate_slices)):
-            # (no in-place np.negative on this strided view: NumPy 2.4 gets (k, 1) column views wrong)
-            M[..., 2 * i:2 * i + 2, 3 + sl.start:3 + sl.stop] = -u.block(b[..., i], backend=NUMERIC)
-        return M
+        P, Q = self._wheel_terms()                                    # J2 = sum cos P_i + sin Q_i
+        const = np.concatenate([self.J1(backend=NUMERIC), np.zeros(P.shape[1:])], axis=-1)
+        pad = np.zeros(P.shape[:2] + (3,))
+        return trig_combination(b, np.concatenate([pad, -P], -1), np.concatenate([pad, -Q], -1), const)
 
     def J(self, beta=None, L=1, backend=None):
         r"""The product :math:`\mathbf J = \mathbf J_{L1}^T\mathbf J_2` (56).
@@ -223,21 +238,17 @@ class Robot:
         -----
         With NumPy, unit i contributes the columns
         :math:`\mathbf J_{L1,i}^T\mathbf B_i(\beta_i) = \cos\beta_i\,\mathbf J_{L1,i}^T\mathbf L_i +
-        \sin\beta_i\,\mathbf J_{L1,i}^T\mathbf E\mathbf L_i` (see :meth:`OffsetWheel.block_terms`), so the
-        mostly-zero :math:`\mathbf J_2` is never formed.
+        \sin\beta_i\,\mathbf J_{L1,i}^T\mathbf E\mathbf L_i` (:func:`wmr.model.platform.rotated`), evaluated
+        entry by entry by :func:`wmr.model.trig.trig_combination`, so the mostly-zero
+        :math:`\mathbf J_2` is never formed.
         """
         bk = self._backend(beta, backend)
         if bk is SYMBOLIC:
             return self.J1(L, backend=SYMBOLIC).T * self.J2(beta, SYMBOLIC)
         b = self._beta(beta, bk)
-        JL1 = self.J1(L, backend=NUMERIC)
-        M = np.empty(b.shape[:-1] + (3, self.n_rates))
-        for i, (u, sl) in enumerate(zip(self.wheels, self.rate_slices)):
-            Li, ELi = u.block_terms(NUMERIC)
-            Ji = JL1[2 * i:2 * i + 2].T                      # (3, 2)
-            bi = b[..., i, None, None]
-            M[..., :, sl] = np.cos(bi) * (Ji @ Li) + np.sin(bi) * (Ji @ ELi)
-        return M
+        JL1T = self.J1(L, backend=NUMERIC).T
+        P, Q = self._wheel_terms()                                    # J = J_L1^T J2, term by term
+        return trig_combination(b, JL1T @ P, JL1T @ Q)
 
     # --- frames ---------------------------------------------------------------------------------
     def moved(self, origin=(0.0, 0.0), angle=0.0):

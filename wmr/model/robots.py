@@ -16,6 +16,8 @@ from . import validation as V
 from .robot import Robot
 from .wheels import CentredWheel, DualWheel, OffsetWheel
 
+__all__ = ["PAPER_MOUNT_ANGLES_DEG", "equilateral_mounts", "paper_robot"]
+
 #: Angles of the paper's mount points, wheel 1 first (clockwise from the negative x-axis).
 PAPER_MOUNT_ANGLES_DEG = (180.0, 60.0, -60.0)
 
@@ -45,15 +47,21 @@ def equilateral_mounts(L=1.0, first_deg=180.0, clockwise=True, exact=False):
     """
     L = V.positive("L", L)
     first_deg = V.real("first_deg", first_deg)
+    clockwise = V.flag("clockwise", clockwise)
+    exact = V.flag("exact", exact)
     step = -120 if clockwise else 120
+    # the angle exactly (a float is a rational), reduced modulo 360 before anything is added:
+    # first_deg = 1e300 must still give three distinct vertices
+    first = sp.nsimplify(first_deg) if isinstance(first_deg, sp.Basic) else sp.Rational(first_deg)
+    first = first % 360
+    if first.is_Rational:
+        first = first.limit_denominator(10**6) if first.q > 10**6 else first
     out = []
     for k in range(3):
-        a = first_deg + k * step
+        ang = sp.pi * (first + k * step) / 180
         if exact or isinstance(L, sp.Basic):
-            ang = sp.pi * sp.Rational(a).limit_denominator(10**6) / 180
             out.append((sp.nsimplify(L * sp.cos(ang)), sp.nsimplify(L * sp.sin(ang))))
-        else:
-            ang = sp.pi * sp.Rational(a).limit_denominator(10**6) / 180   # exact, then float:
+        else:                                                              # exact, then float:
             out.append((float(L * sp.cos(ang)), float(L * sp.sin(ang))))  # no 1e-17 residue
     return out
 
@@ -84,7 +92,9 @@ def paper_robot(kind="centred", L=1.0, r=1.0, d=None, b=None, exact=False):
     >>> paper_robot("offset", L=0.5, r=0.1)
     Robot('paper-offset': offset@(-0.5, 0.0), offset@(0.25, 0.4330127018922193), offset@(0.25, -0.4330127018922193))
     """
-    pts = equilateral_mounts(L, exact=exact)
+    if not isinstance(kind, str):
+        raise TypeError(f"kind must be 'centred', 'offset' or 'dual', got {V.show(kind)} ({type(kind).__name__})")
+    pts = equilateral_mounts(L, exact=V.flag("exact", exact))
     if kind == "centred":
         units = [CentredWheel(p, r=r) for p in pts]
     elif kind == "offset":

@@ -17,6 +17,8 @@ from __future__ import annotations
 
 import numpy as np
 
+__all__ = ["TOL", "near_zero"]
+
 #: The package-wide tolerance for numerical zero (see module docstring).
 TOL: float = 1e-9
 

@@ -1,114 +1,491 @@
-"""Input checks shared by the package: bad input raises ``ValueError`` naming it."""
+r"""Input checks shared by the package.
+
+Two kinds of bad input, two exception types, and every message names the argument and shows
+the value it got:
+
+* ``TypeError``: the wrong *kind* of thing (a string, a bool, a complex number, ``None``, a
+  SymPy symbol where numbers are needed, the class ``Robot`` instead of a robot);
+* ``ValueError``: the right kind with a bad *value* (negative radius, NaN, infinity, a wrong
+  shape, a number too large for double precision such as ``10**400`` or
+  ``np.longdouble('1e400')``).
+
+Numbers are checked in the unit of the caller: nothing here depends on the unit of length.
+
+Examples
+--------
+>>> positive("r", 0.1)
+0.1
+>>> positive("r", -1)
+Traceback (most recent call last):
+    ...
+ValueError: r must be positive, got -1
+>>> finite_array("beta", ["0.7", "0.1"])
+Traceback (most recent call last):
+    ...
+TypeError: beta must be an array of real numbers, got strings: ['0.7', '0.1']
+"""
 from __future__ import annotations
 
+import math
 import numbers
 
 import numpy as np
 import sympy as sp
 
+__all__ = ["real", "positive", "nonnegative", "point", "finite_array", "symbolic_vector", "robot",
+           "numeric_robot", "free_symbols", "flag", "optional_text", "integer", "show"]
+
+_NON_FINITE = (sp.nan, sp.zoo, sp.oo, -sp.oo)
+
+
+def show(value, limit=80):
+    """A short one-line text form of ``value`` for error messages.
+
+    Parameters
+    ----------
+    value : object
+    limit : int, optional
+        Longest text returned (longer forms are cut with "...").
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> show(np.zeros(100))
+    'array of shape (100,), first values [0.0, 0.0, 0.0, 0.0, 0.0, 0.0, ...]'
+    """
+    if isinstance(value, np.ndarray) and value.ndim > 0 and value.dtype.kind in "biufc":
+        if value.size <= 6:
+            text = np.array2string(value, precision=4, separator=", ").replace("\n", "")
+        else:
+            head = ", ".join(repr(x) for x in value.ravel()[:6].tolist())
+            text = f"array of shape {value.shape}, first values [{head}, ...]"
+    else:
+        try:
+            text = repr(value)
+        except Exception:                                   # a broken __repr__ must not hide the error
+            text = f"<{type(value).__name__} object>"
+    text = " ".join(text.split())
+    return text if len(text) <= limit else text[:limit - 3] + "..."
+
 
 def _scalar(value):
     """Unwrap 0-d NumPy arrays; keep everything else."""
     if isinstance(value, np.ndarray) and value.ndim == 0:
-        return value.item()
+        return value[()]
     return value
 
 
-def _number(value):
-    """A validated real number as ``int`` (exact, so SymPy products stay exact) or ``float``."""
-    return int(value) if isinstance(value, numbers.Integral) else float(value)
+def _kind_error(name, value, wanted):
+    kind = type(value).__name__
+    if isinstance(value, type):
+        kind = f"the class {value.__name__}"
+    return TypeError(f"{name} must be {wanted}, got {show(value)} ({kind})")
+
+
+def _to_float(name, value):
+    """``float(value)`` for a real number; ``ValueError`` if it is not finite in double precision."""
+    with np.errstate(over="ignore"):
+        try:
+            f = float(value)
+        except OverflowError:
+            f = math.inf
+    if not math.isfinite(f):
+        big = " (too large for double precision)" if not _is_nan(value) and _finite_exact(value) else ""
+        raise ValueError(f"{name} must be a finite real number, got {show(value)}{big}")
+    return f
+
+
+def _is_nan(value):
+    try:
+        return value != value
+    except Exception:
+        return False
+
+
+def _finite_exact(value):
+    """True for numbers that are finite as written but not as a float (10**400, longdouble 1e400)."""
+    if isinstance(value, numbers.Integral):
+        return True
+    if isinstance(value, np.floating):
+        return bool(np.isfinite(value))
+    return isinstance(value, numbers.Rational)
+
+
+def _number(name, value):
+    """A finite real number: ``int`` stays ``int`` (SymPy products stay exact), others become ``float``."""
+    value = _scalar(value)
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
+        raise _kind_error(name, value, "a real number")
+    f = _to_float(name, value)
+    return int(value) if isinstance(value, numbers.Integral) else f
+
+
+def _symbolic(name, value, wanted="a real number"):
+    """A SymPy expression that may stand for a finite real number (checked as far as SymPy knows)."""
+    if not isinstance(value, sp.Expr):
+        raise _kind_error(name, value, wanted)
+    if value.has(*_NON_FINITE) or value.is_finite is False:
+        raise ValueError(f"{name} must be finite, got {show(value)}")
+    if value.is_real is False or (value.is_real is None and value.has(sp.I)):
+        raise ValueError(f"{name} must be real, got {show(value)}")
+    if value.is_number:
+        _to_float(name, value)                              # exact numbers must fit a double too
+    return value
 
 
 def real(name, value):
-    """Return ``value`` if it is a finite real number (or a SymPy expression not known to be non-real)."""
+    """Return ``value`` if it is a finite real number (or a SymPy expression that may be one).
+
+    Parameters
+    ----------
+    name : str
+        The argument's name, for the message.
+    value : object
+
+    Returns
+    -------
+    int, float or sympy.Expr
+
+    Raises
+    ------
+    TypeError
+        Not a real number (bool, string, complex, None, ...).
+    ValueError
+        NaN, infinite, too large for double precision, or a SymPy expression known not to be real.
+
+    Examples
+    --------
+    >>> real("angle", np.float32(0.5)), real("angle", 3)
+    (0.5, 3)
+    """
     value = _scalar(value)
     if isinstance(value, sp.Basic):
-        if value.is_real is False or value.is_finite is False:
-            raise ValueError(f"{name} must be a finite real number, got {value!r}")
-        return value
-    if isinstance(value, bool) or not isinstance(value, numbers.Real):
-        raise ValueError(f"{name} must be a real number, got {value!r}")
-    if not np.isfinite(value):
-        raise ValueError(f"{name} must be a finite real number, got {value!r}")
-    return _number(value)
+        return _symbolic(name, value)
+    return _number(name, value)
+
+
+def _signed(name, value, strict):
+    """``real`` and > 0 (``strict``) or >= 0; for SymPy, not known to be otherwise."""
+    value = real(name, value)
+    wanted = "positive" if strict else "non-negative (>= 0)"
+    if isinstance(value, sp.Basic):
+        bad = (value.is_positive if strict else value.is_nonnegative) is False
+    else:
+        bad = value <= 0 if strict else value < 0
+    if bad:
+        raise ValueError(f"{name} must be {wanted}, got {show(value)}")
+    return value
 
 
 def positive(name, value):
     """Return ``value`` if it is a positive finite number (or a SymPy expression not known to be <= 0).
 
     Integers stay integers (so that SymPy expressions built from them stay exact).
+
+    Parameters
+    ----------
+    name : str
+    value : object
+
+    Returns
+    -------
+    int, float or sympy.Expr
+
+    Examples
+    --------
+    >>> positive("L", 2)
+    2
     """
-    value = _scalar(value)
-    if isinstance(value, sp.Basic):
-        if value.is_positive is False or value.is_finite is False:
-            raise ValueError(f"{name} must be positive, got {value!r}")
-        return value
-    if isinstance(value, bool) or not isinstance(value, numbers.Real):
-        raise ValueError(f"{name} must be a real number, got {value!r}")
-    if not np.isfinite(value) or value <= 0:
-        raise ValueError(f"{name} must be a positive finite number, got {value!r}")
-    return _number(value)
+    return _signed(name, value, strict=True)
 
 
 def nonnegative(name, value):
-    """Return ``value`` if it is a finite number >= 0 (or a SymPy expression not known to be < 0)."""
-    value = _scalar(value)
-    if isinstance(value, sp.Basic):
-        if value.is_nonnegative is False or value.is_finite is False:
-            raise ValueError(f"{name} must be non-negative, got {value!r}")
-        return value
-    if isinstance(value, bool) or not isinstance(value, numbers.Real):
-        raise ValueError(f"{name} must be a real number, got {value!r}")
-    if not np.isfinite(value) or value < 0:
-        raise ValueError(f"{name} must be a finite number >= 0, got {value!r}")
-    return _number(value)
+    """Return ``value`` if it is a finite number >= 0 (or a SymPy expression not known to be < 0).
+
+    Parameters
+    ----------
+    name : str
+    value : object
+
+    Returns
+    -------
+    int, float or sympy.Expr
+
+    Examples
+    --------
+    >>> nonnegative("d", 0)
+    0
+    """
+    return _signed(name, value, strict=False)
 
 
 def point(name, value):
-    """Return a 2-tuple of finite reals (or SymPy expressions)."""
+    """Return a pair ``(x, y)`` of finite reals (floats) or SymPy expressions.
+
+    Parameters
+    ----------
+    name : str
+    value : pair
+
+    Returns
+    -------
+    tuple of 2 float or sympy.Expr
+
+    Examples
+    --------
+    >>> point("position", np.array([1, 2]))
+    (1.0, 2.0)
+    """
+    if isinstance(value, (str, bytes, dict, set)) or isinstance(value, sp.Basic):
+        raise _kind_error(name, value, "a pair (x, y)")
     try:
         items = tuple(value)
     except TypeError:
-        raise ValueError(f"{name} must be a pair (x, y), got {value!r}") from None
+        raise _kind_error(name, value, "a pair (x, y)") from None
     if len(items) != 2:
-        raise ValueError(f"{name} must be a pair (x, y), got {value!r}")
+        raise ValueError(f"{name} must be a pair (x, y), got {show(value)} ({len(items)} entries)")
     out = []
-    for v in items:
-        if isinstance(v, sp.Basic):
-            out.append(v)
-        elif isinstance(v, numbers.Real) and not isinstance(v, bool) and np.isfinite(v):
-            out.append(float(v))
-        else:
-            raise ValueError(f"{name} must hold two finite real numbers, got {value!r}")
+    for k, v in enumerate(items):
+        v = real(f"{name}[{k}] (of {show(value, 40)})", v)
+        out.append(v if isinstance(v, sp.Basic) else float(v))
     return tuple(out)
 
 
-def _short(arr):
-    """A short text form of an array for error messages."""
-    arr = np.asarray(arr)
-    if arr.size <= 6:
-        return np.array2string(arr, precision=4, separator=", ").replace("\n", "")
-    return "first values " + np.array2string(arr.ravel()[:6], precision=4, separator=", ")[:-1] + ", ...]"
+def _object_array(name, raw, value):
+    """Floats from an object array whose entries are real numbers (Fraction, int, ...)."""
+    out = np.empty(raw.shape)
+    flat = out.reshape(-1)
+    for k, v in enumerate(raw.flat):
+        if isinstance(v, sp.Basic):
+            raise TypeError(f"{name} must be an array of numbers, got SymPy entries in {show(value)} "
+                            "(use the SymPy backend for symbolic work)")
+        if isinstance(v, (bool, np.bool_)) or not isinstance(v, numbers.Real):
+            raise _kind_error(name, value, "an array of real numbers") from None
+        flat[k] = _to_float(name, v)
+    return out
 
 
 def finite_array(name, value, last=None):
-    """Convert to a float array, require finiteness and (optionally) the size of the last axis."""
-    try:
-        arr = np.asarray(value, dtype=float)
-    except (TypeError, ValueError):
-        raise ValueError(f"{name} must be an array of real numbers, got {value!r}") from None
+    """Convert to a float array; require finite real entries and (optionally) the size of the last axis.
+
+    Parameters
+    ----------
+    name : str
+    value : array_like
+    last : int, optional
+        Required length of the last axis.
+
+    Returns
+    -------
+    numpy.ndarray of float64
+
+    Raises
+    ------
+    TypeError
+        Strings, bools, complex numbers, None, SymPy entries.
+    ValueError
+        Ragged nesting, a wrong last axis, NaN, infinity, entries too large for double precision.
+
+    Examples
+    --------
+    >>> finite_array("twist", [1, 2, 3], last=3)
+    array([1., 2., 3.])
+    """
+    if isinstance(value, np.ndarray) and value.dtype == np.float64:
+        arr = value
+    else:
+        if value is None or isinstance(value, (str, bytes)):
+            raise _kind_error(name, value, "an array of real numbers")
+        try:
+            raw = np.asarray(value)
+        except (ValueError, TypeError):
+            raise ValueError(f"{name} must be a regular (not ragged) array of real numbers, got {show(value)}") from None
+        kind = raw.dtype.kind
+        if kind in "iuf":
+            with np.errstate(over="ignore"):
+                arr = raw.astype(np.float64)
+            if kind == "f" and raw.dtype.itemsize > 8 and not np.all(np.isfinite(arr)) and np.all(np.isfinite(raw)):
+                raise ValueError(f"{name} has entries too large for double precision: {show(raw)}")
+        elif kind == "O":
+            arr = _object_array(name, raw, value)
+        else:
+            what = {"b": "booleans", "c": "complex numbers", "U": "strings", "S": "strings"}.get(kind, raw.dtype.name)
+            raise TypeError(f"{name} must be an array of real numbers, got {what}: {show(value)}")
     if last is not None and (arr.ndim == 0 or arr.shape[-1] != last):
-        raise ValueError(
-            f"{name} must have shape (..., {last}), got shape {arr.shape}: {_short(arr)}")
-    if not np.all(np.isfinite(arr)):
+        raise ValueError(f"{name} must have shape (..., {last}), got shape {arr.shape}: {show(arr)}")
+    if not np.isfinite(arr).all():
         bad = arr[~np.isfinite(arr)].ravel()[:3]
         raise ValueError(f"{name} must be finite, got non-finite values {bad.tolist()}")
     return arr
 
 
 def symbolic_vector(name, value, size):
-    """Convert to a SymPy column of the given length."""
-    M = sp.Matrix(list(value)) if not isinstance(value, sp.MatrixBase) else sp.Matrix(value)
-    if M.shape not in ((size, 1), (1, size)):
-        raise ValueError(f"{name} must have {size} entries, got shape {M.shape}")
-    return M.reshape(size, 1)
+    """Convert to a SymPy column of the given length (entries: real SymPy expressions or numbers).
+
+    Parameters
+    ----------
+    name : str
+    value : sequence or sympy.Matrix
+    size : int
+
+    Returns
+    -------
+    sympy.Matrix (size, 1)
+
+    Examples
+    --------
+    >>> symbolic_vector("beta", [sp.Symbol("x"), 0], 2).shape
+    (2, 1)
+    """
+    if isinstance(value, sp.MatrixBase):
+        entries = list(value)
+        shape = value.shape
+    else:
+        if isinstance(value, (str, bytes)) or isinstance(value, sp.Basic):
+            raise _kind_error(name, value, f"a sequence of {size} entries")
+        try:
+            entries = list(value)
+        except TypeError:
+            raise _kind_error(name, value, f"a sequence of {size} entries") from None
+        shape = (len(entries), 1)
+    if shape not in ((size, 1), (1, size)):
+        raise ValueError(f"{name} must have {size} entries, got shape {shape}")
+    return sp.Matrix([real(f"{name}[{k}]", v) for k, v in enumerate(entries)])
+
+
+def robot(value, name="robot"):
+    """Return ``value`` if it is a :class:`wmr.Robot` instance.
+
+    Parameters
+    ----------
+    value : object
+    name : str, optional
+
+    Returns
+    -------
+    Robot
+
+    Examples
+    --------
+    >>> from wmr.model.robot import Robot
+    >>> robot(Robot)
+    Traceback (most recent call last):
+        ...
+    TypeError: robot must be a wmr.Robot instance, got the class Robot itself (build one, e.g. wmr.Robot([...]) or wmr.paper_robot())
+    """
+    from .robot import Robot
+    if isinstance(value, Robot):
+        return value
+    if isinstance(value, type) and issubclass(value, Robot):
+        raise TypeError(f"{name} must be a wmr.Robot instance, got the class {value.__name__} itself "
+                        "(build one, e.g. wmr.Robot([...]) or wmr.paper_robot())")
+    raise _kind_error(name, value, "a wmr.Robot")
+
+
+def numeric_robot(value, name="robot"):
+    """Return ``value`` if it is a :class:`wmr.Robot` with numeric mount points and lengths.
+
+    Parameters
+    ----------
+    value : object
+    name : str, optional
+
+    Returns
+    -------
+    Robot
+    """
+    value = robot(value, name)
+    if free_symbols(value):
+        raise ValueError(f"{name} must have numeric mount points and lengths here, got a robot with the symbols "
+                         f"{sorted(map(str, free_symbols(value)))}: {show(value)}")
+    return value
+
+
+def free_symbols(robot):
+    """The SymPy symbols in a robot's mount points and lengths (empty for numeric and exact robots).
+
+    Parameters
+    ----------
+    robot : Robot
+
+    Returns
+    -------
+    set of sympy.Symbol
+    """
+    import dataclasses
+    out = set()
+    for u in robot.wheels:
+        for f in dataclasses.fields(u):
+            v = getattr(u, f.name)
+            for e in (v if isinstance(v, tuple) else (v,)):
+                if isinstance(e, sp.Basic):
+                    out |= e.free_symbols
+    return out
+
+
+def flag(name, value):
+    """Return ``value`` as ``bool`` if it is a bool (Python or NumPy).
+
+    Parameters
+    ----------
+    name : str
+    value : object
+
+    Returns
+    -------
+    bool
+
+    Examples
+    --------
+    >>> flag("exact", np.True_)
+    True
+    """
+    if isinstance(value, (bool, np.bool_)):
+        return bool(value)
+    raise _kind_error(name, value, "True or False")
+
+
+def optional_text(name, value):
+    """Return ``value`` if it is a string or None.
+
+    Parameters
+    ----------
+    name : str
+    value : object
+
+    Returns
+    -------
+    str or None
+    """
+    if value is None or isinstance(value, str):
+        return value
+    raise _kind_error(name, value, "a string or None")
+
+
+def integer(name, value, minimum=None):
+    """Return ``value`` as ``int`` if it is an integer (not a bool), at least ``minimum``.
+
+    Parameters
+    ----------
+    name : str
+    value : object
+    minimum : int, optional
+
+    Returns
+    -------
+    int
+
+    Examples
+    --------
+    >>> integer("n", np.int64(3), minimum=1)
+    3
+    """
+    value = _scalar(value)
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Integral):
+        raise _kind_error(name, value, "an integer")
+    if minimum is not None and value < minimum:
+        raise ValueError(f"{name} must be at least {minimum}, got {show(value)}")
+    return int(value)

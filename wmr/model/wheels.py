@@ -29,7 +29,9 @@ import sympy as sp
 
 from . import validation as V
 from .backend import NUMERIC, choose
-from .platform import E, rotation
+from .platform import E, rotated
+
+__all__ = ["OffsetWheel", "CentredWheel", "DualWheel", "UNIT_TYPES"]
 
 
 @dataclass(frozen=True)
@@ -114,9 +116,9 @@ class _Unit:
     def block(self, beta, backend=None):
         r"""This unit's block :math:`\mathbf B_i(\beta_i) = \mathbf R_{bwi}\mathbf L_i` of :math:`\mathbf J_2`.
 
-        With NumPy it is evaluated as :math:`\cos\beta_i\,\mathbf L_i + \sin\beta_i\,\mathbf E\mathbf L_i`
-        (the same matrix, since :math:`\mathbf R(\beta) = \cos\beta\,\mathbf I + \sin\beta\,\mathbf E`
-        (11)), which avoids a batched 2x2 product; see :meth:`block_terms`.
+        Evaluated as :math:`\cos\beta_i\,\mathbf L_i + \sin\beta_i\,\mathbf E\mathbf L_i` by
+        :func:`wmr.model.platform.rotated` (the same matrix, since :math:`\mathbf R(\beta) =
+        \cos\beta\,\mathbf 1 + \sin\beta\,\mathbf E` (11)); see :meth:`block_terms`.
 
         Parameters
         ----------
@@ -136,10 +138,8 @@ class _Unit:
         """
         bk = choose(beta, self.r, *self.position, backend=backend)
         if bk is NUMERIC:
-            beta = V.finite_array("beta", beta)[..., None, None]
-            L, EL = self.block_terms(NUMERIC)
-            return np.cos(beta) * L + np.sin(beta) * EL
-        return rotation(beta, bk) @ self._local_block(bk)
+            beta = V.finite_array("beta", beta)
+        return rotated(beta, *self.block_terms(bk), backend=bk)      # (11): R(beta) L = cos L + sin E L
 
     def block_terms(self, backend=NUMERIC):
         r"""The constant pair :math:`(\mathbf L_i, \mathbf E\mathbf L_i)` with

@@ -5,6 +5,9 @@ The steering angles are the same symbols as :attr:`wmr.Robot.beta_symbols`.
 """
 import sympy as sp
 
+from ..model.backend import SYMBOLIC
+from ..model.platform import E as _E
+
 psi = sp.Symbol(r"\psi", real=True)                          #: platform orientation
 psi_dot, x_dot, y_dot = sp.symbols(r"\dot{\psi} \dot{x} \dot{y}", real=True)   #: twist (4), body frame
 X_dot, Y_dot = sp.symbols(r"\dot{X} \dot{Y}", real=True)      #: velocity of C, fixed frame
@@ -15,4 +18,4 @@ phi = sp.symbols(r"\phi_1:4", real=True)
 phi_dot = sp.symbols(r"\dot{\phi}_{1} \dot{\phi}_{2} \dot{\phi}_{3}", real=True)
 theta_dot = sp.symbols(r"\dot{\theta}_{1} \dot{\theta}_{2} \dot{\theta}_{3}", real=True)
 dx, dy = sp.symbols("d_x d_y", real=True)                     #: components of a mount vector d_i
-E = sp.Matrix([[0, -1], [1, 0]])                              #: (3)
+E = _E(SYMBOLIC)                                              #: (3), the model's E

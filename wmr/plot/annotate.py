@@ -143,8 +143,8 @@ def legend_handles(items):
     Parameters
     ----------
     items : list of (text, kind)
-        ``kind``: ``"axle"``, ``"plane"``, ``"path:<colour>"``, ``"point:<colour>"`` or
-        ``"marker:<marker>:<colour>"``.
+        ``kind``: ``"axle"``, ``"plane"``, ``"path:<colour>"``, ``"point:<colour>"``,
+        ``"marker:<marker>:<colour>"`` (filled) or ``"open:<marker>:<colour>"`` (white face).
 
     Returns
     -------
@@ -159,9 +159,10 @@ def legend_handles(items):
             hs.append(Line2D([], [], color=kind[5:], linewidth=1.3, label=text))
         elif kind.startswith("point:"):
             hs.append(Line2D([], [], color=kind[6:], marker="o", markersize=4, linestyle="none", label=text))
-        elif kind.startswith("marker:"):
-            _, m, c = kind.split(":")
-            hs.append(Line2D([], [], color=c, marker=m, markersize=5, linestyle="none", label=text))
+        elif kind.startswith(("marker:", "open:")):
+            how, m, c = kind.split(":")
+            hs.append(Line2D([], [], color=c, marker=m, markersize=5, linestyle="none", label=text,
+                             markerfacecolor="white" if how == "open" else c))
         else:
-            raise ValueError(f"legend item kind must be axle, plane, thin, path:, point: or marker:, got {kind!r}")
+            raise ValueError(f"legend item kind must be axle, plane, thin, path:, point:, marker: or open:, got {kind!r}")
     return hs

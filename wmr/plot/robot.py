@@ -178,8 +178,8 @@ def draw_robot(ax, robot, beta, pose=(0.0, 0.0, 0.0), *, ghost=False, labels=Tru
     radius : float, optional
         Platform radius (default :func:`platform_radius`).
     label_offsets : dict, optional
-        Offsets in points for the labels ``"C"`` and ``1..w`` (default for :math:`P_i`: 16 points
-        outwards on the diagonal between the axle and the wheel plane, clear of both lines).
+        Offsets in points for the labels ``"C"`` and ``1..w`` (default for :math:`P_i`: 17 points
+        along the axle and 10 along the wheel plane, away from C: beside the wheel, clear of both lines).
 
     Returns
     -------
@@ -202,9 +202,9 @@ def draw_robot(ax, robot, beta, pose=(0.0, 0.0, 0.0), *, ghost=False, labels=Tru
         label(ax, g.C, f"$C{suffix}$", offset=offs.get("C", (-5, -5)), ha="right", va="top")
         if wheel_labels:
             for k in range(robot.w):
-                out = g.P[k] - g.C              # diagonal between axle and wheel plane, away from C
-                e = (g.i[k] * (1 if g.i[k] @ out >= 0 else -1) + g.j[k] * (1 if g.j[k] @ out >= 0 else -1)) / np.sqrt(2)
-                dflt = (float(16 * e[0]), float(16 * e[1]))
+                out = g.P[k] - g.C              # beside the wheel, off the axle line, away from C
+                e = 17 * g.i[k] * (1 if g.i[k] @ out >= 0 else -1) + 10 * g.j[k] * (1 if g.j[k] @ out >= 0 else -1)
+                dflt = (float(e[0]), float(e[1]))
                 label(ax, g.P[k], f"$P_{{{k + 1}}}{suffix}$", offset=offs.get(k + 1, dflt), ha="center",
                       va="center")
     return g

@@ -15,8 +15,8 @@ import numpy as np
 
 from ...analysis.simulation import simulate
 from ...model.robots import paper_robot
-from ..text import bound, degrees, number
-from .common import DEG, L_PAPER, R_OFFSET, drawing, fit_circle, residual, small, snap
+from ..text import degrees, number, residual as residual_text
+from .common import DEG, L_PAPER, MAX_PSI, R_OFFSET, drawing, fit_circle, residual, small, snap
 
 __all__ = ["NUMBER", "TITLE", "PAPER_CAPTION", "Fig07Data", "data", "draw", "caption"]
 
@@ -176,12 +176,14 @@ def draw(data, fig=None):
             sp_.set_color("#999999")
             sp_.set_linewidth(0.6)
         axi.set_title("pivot of wheel 1, enlarged", fontsize=FONT_SMALL, pad=2)
-        ax.indicate_inset_zoom(axi, edgecolor="#999999", linewidth=0.6, alpha=1.0)
+        zoom = ax.indicate_inset_zoom(axi, edgecolor="#999999", linewidth=0.6, alpha=1.0)
+        for line in zoom.connectors:                    # they would cross the drawing; the box and title say it
+            line.set_visible(False)
         an.info_box(ax, [rf"fitted radius of the path of $C$: $R = {data.radius:.9f}$",
                          rf"offset $d = {data.d:g}$:  $|R-d| = {number(data.radius_error, 2)}$ "
                          rf"$\leq d(\omega\Delta t)^4 = {number(data.tolerance, 2)}$",
                          rf"contact points $G_i$ moved $\leq {number(data.contact_drift, 2)}$;  "
-                         rf"$\max|\psi| = {bound(data.psi_max, latex=True)}$"],
+                         rf"${residual_text(MAX_PSI, data.psi_max)}$"],
                     loc=(0.985, 0.015), ha="right", va="bottom")
         an.scale_bar(ax, L_PAPER, "$L$", loc=(0.03, 0.04))
     return fig
@@ -196,6 +198,6 @@ def caption(data):
             rf"$R = {data.radius:.9f}$: the offset $d = {data.d:g}$ to within ${number(data.radius_error, 2)}$ "
             rf"(integration error bound ${number(data.tolerance, 2)}$). The $G_i$ do not move (at most "
             rf"${number(data.contact_drift, 2)}$) and the platform does not turn "
-            rf"($\max|\psi| = {bound(data.psi_max, latex=True)}$). Solid: start; dashed: after {data.later:g} of the "
+            rf"(${residual_text(MAX_PSI, data.psi_max)}$). Solid: start; dashed: after {data.later:g} of the "
             r"turn ($C'$, $P'$). Blue: paths of the pivots $P_i$, circles of radius $d$ about the $G_i$. Inset: the "
             r"pivot $P$ of wheel 1 circles its fixed contact point $G$ at distance $d$.")

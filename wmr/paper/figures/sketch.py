@@ -11,7 +11,7 @@ from .common import snap
 __all__ = ["draw_singular", "LINES_LEGEND"]
 
 #: Legend entries of the construction lines and points of :func:`draw_singular`.
-LINES_LEGEND = [("wheel plane", "plane"), ("axle", "axle"), ("axles cross", f"marker:o:{ROLE['axle']}")]
+LINES_LEGEND = [("wheel plane", "plane"), ("axle", "axle"), ("axles cross", f"open:o:{ROLE['axle']}")]
 
 
 def draw_singular(ax, robot, cfg, *, dp_label=None, dp_offset=(7, 3), frame=True, label_offsets=None):

@@ -1,0 +1,169 @@
+"""The report's content on a small fixture project in the contract's format (``CONTRACTS.md``):
+a ledger whose fields are Markdown with ``$...$``, tagged notebook cells, figure metadata and a
+singularity list. HTML only (fast); the LaTeX source is checked without typesetting it.
+
+What is checked: the report drops exercise, solution and ledger cells and program output, shows
+each figure once (a chapter's figure cell becomes a link), links every erratum to its derivation,
+states counts computed from the data, puts the paper's caption beside ours, lists only the
+singular configurations the paper misses, and gives the PDF no escaped raw TeX.
+"""
+from __future__ import annotations
+
+import base64
+import csv
+import json
+import re
+import struct
+import sys
+import zlib
+from pathlib import Path
+
+import nbformat
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT))
+from tools import build  # noqa: E402
+from tools.build import inputs  # noqa: E402
+from tools.build.assemble import report_notebook  # noqa: E402
+from tools.build.pdf import to_latex  # noqa: E402
+
+
+def png(rgb=(200, 30, 30)) -> bytes:
+    """A valid 2x2 PNG."""
+    def chunk(kind, data):
+        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data) & 0xFFFFFFFF)
+    raw = b"".join(b"\0" + bytes(rgb) * 2 for _ in range(2))
+    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", 2, 2, 8, 2, 0, 0, 0))
+            + chunk(b"IDAT", zlib.compress(raw)) + chunk(b"IEND", b""))
+
+
+FIG_PNG = png()
+LEDGER = [
+    dict(id="2", kind="equation", section="3.1", verdict="ok", printed=r"\dot{\mathbf p}_i = \dot{\mathbf c} + \dot\psi\,\mathbf E\mathbf d_i",
+         corrected="", why="", convention=r"$\dot\psi\times\mathbf d_i$ read as $(\dot\psi\mathbf k)\times\mathbf d_i$",
+         check="printed form proven equal to the derivation (SymPy)", printed_holds="yes", residual="< 1e-12",
+         notebook="01_first", anchor="eq-2", note=""),
+    dict(id="3", kind="equation", section="3.2", verdict="typo", printed=r"\det\mathbf J = -\tfrac{\sqrt3}{2}\cos\beta",
+         corrected=r"\det\mathbf J = -r^3\tfrac{\sqrt3}{2}\cos\beta", why="the factor $r^3$ is missing",
+         convention="", check="printed form refuted ($r = 2$); corrected form proven equal to the derivation (SymPy)",
+         printed_holds="no", residual="0", notebook="01_first", anchor="eq-3", note="FIXTURE-NOTE"),
+    dict(id="drift", kind="claim", section="4.2", verdict="wrong",
+         printed="“the WMR drifts when $\\dot\\theta_i = 0$” (FIXTURE-CLAIM)",
+         corrected=r"with locked drives ($\dot\theta_i = 0$) the platform stands still: $\mathbf t = \mathbf 0$", why="$\\det\\mathbf M \\ne 0$ at 2000 configurations",
+         convention="", check="refuted by counterexample", printed_holds="no", residual="0",
+         notebook="01_first", anchor="claim-drift", note=""),
+]
+SINGULAR = [
+    dict(family="(i)", configuration="$\\beta_1=\\beta_2=\\beta_3$", geometric_meaning="parallel planes",
+         listed_in_paper="yes", note="LISTED-FAMILY"),
+    dict(family="(i')", configuration="$\\beta_i=\\beta+180^\\circ$", geometric_meaning="same planes",
+         listed_in_paper="no", note="MISSED-FAMILY"),
+]
+
+
+def _cell(kind, src, tags=()):
+    c = nbformat.v4.new_markdown_cell(src) if kind == "md" else nbformat.v4.new_code_cell(src)
+    if tags:
+        c.metadata["tags"] = list(tags)
+    return c
+
+
+@pytest.fixture(scope="module")
+def project(tmp_path_factory):
+    root = tmp_path_factory.mktemp("project")
+    nb = nbformat.v4.new_notebook()
+    nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3", "language": "python"}
+    nb.cells = [
+        _cell("md", "# 1. First chapter\n\nProse with $x^2$.\n\n<a id=\"eq-2\"></a>\n\n## 1.1 Equation (2)\n\n$$\\dot{\\mathbf p}_i \\tag{2}$$"),
+        _cell("code", "from IPython.display import Image, Markdown, Math, display\nimport base64"),
+        _cell("code", f"key = 'fig07'\nImage(data=base64.b64decode({base64.b64encode(FIG_PNG).decode()!r}))", ["figure"]),
+        _cell("md", "<a id=\"eq-3\"></a>\n\n## 1.2 Equation (3)\n\nDerivation of (3)."),
+        _cell("code", "print('PRINTED-OUTPUT')\ndisplay(Markdown('Shown: $\\\\kappa = 1$ (MARKDOWN-OUTPUT)'))"),
+        _cell("code", "Math(r'\\mathbf J = \\mathbf 1 \\quad (LATEX-OUTPUT)')"),
+        _cell("code", "class T:\n    def _repr_html_(self):\n        return '<table><tr><td>HTML-TABLE-OUTPUT</td></tr></table>'\nT()"),
+        _cell("md", "**Exercise.** EXERCISE-TEXT", ["exercise"]),
+        _cell("code", "'SOLUTION-TEXT'", ["solution"]),
+        _cell("code", "display(Markdown('LEDGER-CELL-OUTPUT'))", ["ledger"]),
+        _cell("code", "display(Markdown('WIDGET-STATIC-STATE'))", ["widget"]),
+        _cell("md", "<a id=\"claim-drift\"></a>\n\n## 1.3 The drift claim"),
+    ]
+    (root / "notebooks").mkdir()
+    nbformat.write(nb, root / "notebooks" / "01_first.ipynb")
+    fig = root / "figures"
+    fig.mkdir()
+    with open(fig / "ledger.csv", "w", newline="", encoding="utf-8") as f:
+        w = csv.DictWriter(f, fieldnames=inputs.LEDGER_COLUMNS, lineterminator="\n")
+        w.writeheader()
+        w.writerows(LEDGER)
+    with open(fig / "singularities.csv", "w", newline="", encoding="utf-8") as f:
+        w = csv.DictWriter(f, fieldnames=list(SINGULAR[0]), lineterminator="\n")
+        w.writeheader()
+        w.writerows(SINGULAR)
+    svg = '<svg xmlns="http://www.w3.org/2000/svg" width="10" height="10"><rect width="10" height="10"/></svg>'
+    for key, number, paper_cap in (("fig07", "7", "PAPER-CAPTION-7"), ("conventions", "", "")):
+        (fig / f"{key}.svg").write_text(svg.replace("10\"/>", f"10\" id=\"{key}\"/>"))
+        (fig / f"{key}.png").write_bytes(png((10, 10, 10)))
+        (fig / f"{key}.json").write_text(json.dumps({"key": key, "number": number, "title": f"Title of {key}",
+                                                     "paper_caption": paper_cap, "caption": f"OUR-CAPTION-{key} with $L = 1$",
+                                                     "numbers": {}}))
+    tree = build.Tree(root)
+    build.report(tree, html_only=True)
+    return tree
+
+
+@pytest.fixture(scope="module")
+def page(project):
+    return project.report_html.read_text(encoding="utf-8")
+
+
+def test_tagged_cells_and_program_output_are_dropped(page):
+    for gone in ("EXERCISE-TEXT", "SOLUTION-TEXT", "LEDGER-CELL-OUTPUT"):     # not even their code
+        assert gone not in page
+    no_code = re.sub(r'<details class="code">.*?</details>', "", page, flags=re.S)
+    for gone in ("PRINTED-OUTPUT", "HTML-TABLE-OUTPUT"):                      # the code stays, collapsed
+        assert gone not in no_code
+    for kept in ("MARKDOWN-OUTPUT", "LATEX-OUTPUT", "WIDGET-STATIC-STATE", "Prose with"):
+        assert kept in page
+
+
+def test_figure_cell_becomes_a_link_and_the_figure_is_shown_once(page):
+    assert base64.b64encode(FIG_PNG).decode() not in page, "the chapter still embeds its figure"
+    assert 'href="#figure-fig07"' in page
+    block = re.findall(r'<figure class="wmr-figure" id="figure-fig07">(.*?)</figure>', page, re.S)
+    assert len(block) == 1
+    assert "PAPER-CAPTION-7" in block[0] and "OUR-CAPTION-fig07" in block[0], "the paper's caption beside ours"
+    assert page.count('id="figure-conventions"') == 1       # the conventions drawing, in the front matter
+    assert page.index('id="figure-conventions"') < page.index('id="errata"')
+
+
+def test_errata_and_claims_link_to_their_derivations(page):
+    errata = page.split('id="errata"', 1)[1].split('id="claims-that-fail"', 1)[0]
+    assert 'href="#eq-3"' in errata and "the factor" in errata and "r^3" in errata
+    assert 'href="#eq-2"' not in errata, "an ok equation listed among the errata"
+    claims = page.split('id="claims-that-fail"', 1)[1].split("</table>", 1)[0]
+    assert 'href="#claim-drift"' in claims and "FIXTURE-CLAIM" in claims
+    for anchor in ("eq-2", "eq-3", "claim-drift"):
+        assert page.count(f'id="{anchor}"') == 1
+
+
+def test_counts_come_from_the_data(page):
+    abstract = page.split('id="abstract"', 1)[1].split("<h1", 1)[0]
+    assert "Of the paper’s 2 numbered equations, (2)–(3), 1 holds as printed, one carries a typo and no are wrong" \
+        in abstract.replace("'", "’") or "1 holds as printed, one carries a typo" in abstract
+    assert "one claim" in abstract and "no claims" not in abstract
+    assert "2 families" in abstract or "two families" in abstract
+
+
+def test_only_missed_singular_configurations_are_listed(page):
+    sect = page.split('id="singular-configurations-the-paper-misses"', 1)[1].split("<h1", 1)[0]
+    assert "MISSED-FAMILY" in sect and "LISTED-FAMILY" not in sect
+
+
+def test_latex_has_no_escaped_raw_tex_and_links(project):
+    nb = report_notebook(inputs.read_inputs(project), "abc", 0)
+    tex, _ = to_latex(nb)
+    assert r"\textbackslash" not in tex, "raw TeX in the text would be printed as text in the PDF"
+    assert r"\hypertarget{eq-3}{}" in tex and r"\hyperlink{eq-3}" in tex
+    assert r"\wmrdisplay{\dot{\mathbf p}_i}{2}" in tex, "the paper's equation number becomes a tag"
+    assert "PRINTED-OUTPUT" not in tex and "print(" not in tex, "code or program output in the PDF"

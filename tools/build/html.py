@@ -1,0 +1,184 @@
+"""The HTML report: one self-contained file, nothing fetched from the network.
+
+Markdown (cells, outputs, table cells, captions) is converted by one pandoc call
+(:class:`~tools.build.markup.Batch`); nbconvert renders the page with the ``wmr_html`` template
+(code highlighted and collapsed); then the contents sidebar is built from the headings, ids are
+made unique and every internal link is checked. MathJax is the pinned ``django-static-mathjax``
+bundle, inlined gzip-compressed (the page stays under 4 MB).
+"""
+from __future__ import annotations
+
+import base64
+import functools
+import gzip
+import html
+import re
+from pathlib import Path
+
+from . import typeset as ts
+from .files import atomic_write
+from .log import BuildError, say
+from .markup import Batch, math_body
+from .paths import TEMPLATES
+
+__all__ = ["export_html", "mathjax_gz", "navigation", "unique_ids", "broken_links"]
+
+
+@functools.lru_cache(maxsize=1)
+def mathjax_gz() -> str:
+    """MathJax 3 ``tex-svg-full.js`` (every TeX extension, SVG glyphs: no font files), gzip
+    (fixed mtime, so the bytes never change) and base64."""
+    import importlib.util
+    spec = importlib.util.find_spec("mathjax")        # the PyPI package django-static-mathjax
+    if spec is None or not spec.submodule_search_locations:
+        raise BuildError("MathJax bundle not found: `make venv` installs django-static-mathjax from environment.lock")
+    js = Path(list(spec.submodule_search_locations)[0]) / "static" / "mathjax" / "es5" / "tex-svg-full.js"
+    if not js.exists():
+        raise BuildError(f"MathJax bundle not found at {js}")
+    return base64.b64encode(gzip.compress(js.read_bytes(), compresslevel=9, mtime=0)).decode()
+
+
+def _css() -> str:
+    return (TEMPLATES / "wmr_html" / "report.css").read_text(encoding="utf-8")
+
+
+def _prepare(nb, batch: Batch):
+    """A copy of the report notebook in which every cell is ready for the template: Markdown and
+    special cells become raw HTML (with placeholders that the pandoc batch fills), outputs become
+    HTML or images."""
+    import nbformat
+    out = nbformat.v4.new_notebook(metadata=nb.metadata)
+    for c in nb.cells:
+        s = ts.spec(c)
+        if s is not None:
+            out.cells.append(nbformat.v4.new_raw_cell(ts.render_html(s, batch.add)))
+        elif c.cell_type == "markdown":
+            out.cells.append(nbformat.v4.new_raw_cell(batch.add(c.source)))
+        elif c.cell_type == "code":
+            n = nbformat.v4.new_code_cell(c.source, metadata=c.metadata)
+            for o in c.outputs:
+                data = o.get("data", {})
+                if "text/markdown" in data:
+                    h = batch.add(_text(data["text/markdown"]))
+                elif "text/latex" in data:
+                    tex = _text(data["text/latex"])
+                    body = math_body(tex)
+                    h = (f'<div class="math display">\\[{html.escape(body, quote=False)}\\]</div>' if body is not None
+                         else batch.add(tex))
+                else:
+                    n.outputs.append(o)
+                    continue
+                n.outputs.append(nbformat.v4.new_output("display_data", data={"text/html": h}))
+            out.cells.append(n)
+    return out
+
+
+def _text(v) -> str:
+    return v if isinstance(v, str) else "".join(v)
+
+
+def _fill(nb, batch: Batch) -> None:
+    for c in nb.cells:
+        if c.cell_type == "raw":
+            c.source = batch.fill(c.source)
+        elif c.cell_type == "code":
+            for o in c.outputs:
+                if "text/html" in o.get("data", {}):
+                    o["data"]["text/html"] = batch.fill(o["data"]["text/html"])
+
+
+_HEADING = re.compile(r'<h([12])((?:\s+[a-z-]+="[^"]*")*)>(.*?)</h\1>', re.S)
+
+
+def unique_ids(page: str) -> tuple[str, list[str]]:
+    """Make every ``id="..."`` unique (the second ``x`` becomes ``x-2``); return the page and the
+    ids that were duplicated (a notebook that names one anchor twice)."""
+    seen: dict[str, int] = {}
+    dups: list[str] = []
+
+    def one(m):
+        i = m.group(1)
+        if i in seen:
+            seen[i] += 1
+            dups.append(i)
+            return f'id="{i}-{seen[i]}"'
+        seen[i] = 1
+        return m.group(0)
+    return re.sub(r'(?<![\w-])id="([^"]+)"', one, page), dups
+
+
+def broken_links(page: str) -> list[str]:
+    """Internal links (``href="#x"``) whose target id does not exist."""
+    ids = set(re.findall(r'(?<![\w-])id="([^"]+)"', page))
+    return sorted({h for h in re.findall(r'href="#([^"]+)"', page) if h not in ids})
+
+
+def navigation(page: str) -> str:
+    """The contents sidebar: the parts, every top-level heading, and under each the second-level
+    headings (the sections of a chapter)."""
+    top: list[dict] = []
+    part = h1 = None
+    for m in _HEADING.finditer(page):
+        attrs, inner = m.group(2), m.group(3).strip()
+        hid = re.search(r'\bid="([^"]+)"', attrs)
+        if not hid:
+            continue
+        node = {"link": f'<a href="#{hid.group(1)}">{inner}</a>', "kids": [], "part": 'class="part"' in attrs}
+        if node["part"]:
+            top.append(node)
+            part, h1 = node, None
+        elif m.group(1) == "1":
+            (part["kids"] if part else top).append(node)
+            h1 = node
+        elif h1 is not None:
+            h1["kids"].append(node)
+
+    def ul(nodes):
+        if not nodes:
+            return ""
+        li = []
+        for n in nodes:
+            if n["part"]:
+                li.append(f'<li class="part"><span>{n["link"]}</span>{ul(n["kids"])}</li>')
+            else:
+                li.append(f'<li>{n["link"]}{ul(n["kids"])}</li>')
+        return "<ul>" + "".join(li) + "</ul>"
+    return f'<nav class="toc" aria-label="Contents"><p class="toc-title">Contents</p>{ul(top)}</nav>'
+
+
+def _exporter():
+    """nbconvert's HTMLExporter without its passes over the finished page (bleach sanitising and a
+    BeautifulSoup re-parse that only adds alt text): the page is our own, already complete."""
+    from nbconvert import HTMLExporter
+    from nbconvert.exporters.templateexporter import TemplateExporter
+    from nbconvert.filters.widgetsdatatypefilter import WidgetsDataTypeFilter
+
+    class ReportExporter(HTMLExporter):
+        def from_notebook_node(self, nb, resources=None, **kw):
+            resources = self._init_resources(resources)
+            self.register_filter("filter_data_type", WidgetsDataTypeFilter(
+                notebook_metadata=self._nb_metadata, parent=self, resources=resources))
+            return TemplateExporter.from_notebook_node(self, nb, resources, **kw)
+
+    return ReportExporter(template_name="wmr_html", extra_template_basedirs=[str(TEMPLATES)],
+                          exclude_input_prompt=True, exclude_output_prompt=True)
+
+
+def export_html(nb, out: Path) -> None:
+    """Render the report notebook ``nb`` into ``out`` (atomically)."""
+    batch = Batch("html")
+    prepared = _prepare(nb, batch)
+    ref = batch.add(nb.metadata["wmr"]["paper"], inline=True)   # the title block's reference
+    batch.convert()
+    _fill(prepared, batch)
+    exp = _exporter()
+    body, _ = exp.from_notebook_node(prepared, resources={
+        "wmr_css": _css(), "wmr_mathjax_gz": mathjax_gz(), "wmr_paper_html": batch.fill(ref)})
+    body, dups = unique_ids(body)
+    if dups:
+        say("html", f"WARNING: ids defined more than once, renamed: {', '.join(sorted(set(dups)))}")
+    body = body.replace("<!--WMR-NAV-->", navigation(body), 1)
+    bad = broken_links(body)
+    if bad:
+        say("html", f"WARNING: links to missing anchors: {', '.join(bad)}")
+    atomic_write(out, body)
