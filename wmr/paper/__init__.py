@@ -99,7 +99,19 @@ class Claim:
 
 
 def register_claim(slug, section, text):
-    """Add a claim to :data:`CLAIMS` (each slug once)."""
+    """Add a claim to :data:`CLAIMS` (each slug once).
+
+    Parameters
+    ----------
+    slug : str
+    section : str
+    text : str
+        Markdown with ``$...$`` math.
+
+    Returns
+    -------
+    Claim
+    """
     if slug in CLAIMS:
         raise ValueError(f"claim {slug!r} is registered twice")
     CLAIMS[slug] = Claim(slug, section, text)
@@ -107,7 +119,16 @@ def register_claim(slug, section, text):
 
 
 def claim(slug):
-    """The claim ``slug`` as quoted (a :class:`Claim`)."""
+    """The claim ``slug`` as quoted.
+
+    Parameters
+    ----------
+    slug : str
+
+    Returns
+    -------
+    Claim
+    """
     _load()
     if slug not in CLAIMS:
         raise ValueError(f"claim {slug!r} is not transcribed in wmr.paper; known: {sorted(CLAIMS)}")

@@ -96,14 +96,33 @@ register(
     note="definition of the singular configurations: the angles beta_i that solve it")
 
 _s3 = sp.sqrt(3)
+#: the printed (59) as terms (coefficient, function, signs of beta_1, beta_2, beta_3): the SymPy form and its
+#: LaTeX are both built from this one list (:func:`det_J_59`, :func:`det_J_59_latex`)
+TERMS_59 = ((-_s3 / 2, sp.cos, (1, -1, -1)), (sp.Rational(3, 4), sp.sin, (1, -1, 1)),
+            (-sp.Rational(3, 4), sp.sin, (1, 1, -1)), (_s3 / 4, sp.cos, (1, 1, -1)), (_s3 / 4, sp.cos, (1, -1, 1)))
+
+
+def det_J_59(terms=TERMS_59):
+    """The right side of (59) as printed, from its terms (a SymPy expression in :data:`wmr.paper.symbols.beta`)."""
+    return sum(c * f(sum(sg * b for sg, b in zip(signs, S.beta))) for c, f, signs in terms)
+
+
+def det_J_59_latex(lhs=r"\det(\mathbf{J})", factor="", per_line=3, terms=TERMS_59):
+    r"""LaTeX of (59) from its terms, broken into lines of ``per_line`` terms (``aligned``), optionally times ``factor``."""
+    parts = []
+    for k, (c, f, signs) in enumerate(terms):
+        arg = "".join(("" if j == 0 and sg > 0 else ("+" if sg > 0 else "-")) + rf"\beta_{j + 1}" for j, sg in enumerate(signs))
+        sign = "-" if c < 0 else ("+" if k else "")
+        parts.append(rf"{sign} {sp.latex(abs(c))}\{f.__name__}({arg})".strip())
+    lines = [" ".join(parts[i:i + per_line]) for i in range(0, len(parts), per_line)]
+    open_, close = (rf"{factor}\Big(", r"\Big)") if factor else ("", "")
+    return (r"\begin{aligned}" + lhs + " = " + open_ + "&" + r"\\ &".join(lines) + close + r"\end{aligned}")
+
+
 register(
     "59", SECTION_ISO,
-    r"\det(\mathbf{J}) = -\frac{\sqrt{3}}{2}\cos(\beta_1-\beta_2-\beta_3) + \frac{3}{4}\sin(\beta_1-\beta_2+\beta_3) "
-    r"- \frac{3}{4}\sin(\beta_1+\beta_2-\beta_3) + \frac{\sqrt{3}}{4}\cos(\beta_1+\beta_2-\beta_3) "
-    r"+ \frac{\sqrt{3}}{4}\cos(\beta_1-\beta_2+\beta_3)",
-    sp.Eq(det_J, -_s3 / 2 * sp.cos(b1 - b2 - b3) + sp.Rational(3, 4) * sp.sin(b1 - b2 + b3)
-          - sp.Rational(3, 4) * sp.sin(b1 + b2 - b3) + _s3 / 4 * sp.cos(b1 + b2 - b3)
-          + _s3 / 4 * sp.cos(b1 - b2 + b3)),
+    det_J_59_latex(),
+    sp.Eq(det_J, det_J_59()),
     note="computed with Maple in the paper, for the three-wheel robot of Section 5 (placement and numbering not "
          "stated). Followed by the list of zeros in extra['singular']; (v) is a geometric statement (None)",
     singular={

@@ -185,14 +185,18 @@ def say(text):
     _display(_markdown(text))
 
 
-def _cell(v):
+def _cell(v, in_array=False):
+    from .text import RESOLUTION, number
     if isinstance(v, (bool, np.bool_)):
         return "yes" if v else "no"
     if isinstance(v, (float, np.floating)):
-        from .text import number
-        return f"${number(float(v))}$"
+        x = float(v)
+        if 0 < abs(x) < RESOLUTION:                       # round-off: no digits that differ between machines
+            return "$0$" if in_array else f"$< 10^{{{int(np.log10(RESOLUTION))}}}$"
+        return f"${number(x)}$"
     if isinstance(v, (list, tuple, set, frozenset, np.ndarray)):
-        return ", ".join(_cell(x) for x in (sorted(v) if isinstance(v, (set, frozenset)) else list(v)))
+        items = sorted(v) if isinstance(v, (set, frozenset)) else list(np.ravel(v) if isinstance(v, np.ndarray) else v)
+        return ", ".join(_cell(x, in_array=True) for x in items)
     if isinstance(v, (int, np.integer)):
         return str(int(v))
     return str(v).replace("|", r"\|").replace("\n", " ")
@@ -205,7 +209,8 @@ def table(rows, columns=None):
     ----------
     rows : list of dict or list of sequence
         One entry per row.  Booleans print as yes/no, floats with 3 significant digits in
-        math, lists as comma-separated values.
+        math (round-off below :data:`wmr.paper.text.RESOLUTION` as a bound, or 0 inside a
+        vector), lists as comma-separated values.
     columns : sequence of str, optional
         Headers; for dict rows also the keys, in order (default: the first row's keys).
 

@@ -321,7 +321,8 @@ def locked_steering(robots=200, per=10, seed=SEED):
     Returns
     -------
     Derivation
-        ``det_M``, ``det_concurrent`` (lines 1, 2 through U, line 3 displaced by :math:`n_3`),
+        ``det_M``, ``plucker`` (the rows :math:`(\mathbf d_i\times\mathbf j_i, \mathbf j_i^{\mathrm T})`),
+        ``det_concurrent`` (lines 1, 2 through U, line 3 displaced by :math:`n_3`),
         ``det_parallel``, ``ranks`` (set), ``n`` (configurations), ``proven`` (bool).
     """
     bot = general_robot()
@@ -342,8 +343,8 @@ def locked_steering(robots=200, per=10, seed=SEED):
     for _ in range(robots):
         b = Robot([OffsetWheel(tuple(p), r=0.1, d=0.05) for p in rng.uniform(-1, 1, (3, 2))])
         ranks |= set(rank(locked_system(b, rng.uniform(-np.pi, np.pi, (per, 3)))).tolist())
-    return Derivation(det_M=det_M, det_concurrent=det_conc, det_parallel=det_par, ranks=ranks, n=robots * per,
-                      proven=plucker and geometry)
+    return Derivation(det_M=det_M, plucker=A.applyfunc(sp.factor), det_concurrent=det_conc, det_parallel=det_par,
+                      ranks=ranks, n=robots * per, proven=plucker and geometry)
 
 
 def drift_motions(u=(0.1, 0.05), beta_parallel=0.4, t_end=0.2, dt=0.002):

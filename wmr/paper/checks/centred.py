@@ -177,7 +177,7 @@ def mobility_centred(n=20000, n_coord=300, grid=36, seed=SEED):
         rf"{len(tw)} random twists, 5 or 6 on a ${grid}^3$ grid, 4 only for collinear mount points", res,
         convention="three centred wheels at non-collinear mount points",
         note=r"the residual compares $\mathbf A(\boldsymbol\beta)$ derived here with "
-             r"`wmr.analysis.mobility.twist_constraints` (rows up to sign)")])
+             r"`twist_constraints` (rows up to sign)")])
 
 
 def isotropic_kinematics(n=25, seed=SEED):
@@ -329,12 +329,11 @@ def printed_determinant(n=200, seed=SEED):
     holds = symbolic_equal(det_paper, p59.expr.rhs)
     r3 = (symbolic_equal(det_paper, S.r**3 * p59.expr.rhs) and S.L not in det_paper.free_symbols
           and symbolic_equal(det_paper.subs(S.r, 1), p59.expr.rhs))
-    body = p59.latex.split("=", 1)[1].strip()
     return Derivation(placements=rows, matches=matches, det_J=det_paper, findings=[equation(
         59, holds, r"for the paper's placement, $\det\mathbf J$ with symbolic $L$ and $r$ is $r^3$ times the printed form "
                    r"and does not depend on $L$ (SymPy)", max_residual(det_paper, S.r**3 * p59.expr.rhs),
         refuted=r"the printed form is $\det\mathbf J$ at $r = 1$ only",
-        corrected=r"\det(\mathbf J) = r^3\Big(" + body + r"\Big)", corrected_holds=r3 and len(matches) == 1,
+        corrected=C.det_J_59_latex(r"\det(\mathbf J)", factor="r^3", per_line=2), corrected_holds=r3 and len(matches) == 1,
         severity="typo", why=r"the factor $r^3$ is missing: the printed form is the determinant for $r = 1$",
         convention=rf"wheel 1 at $L(-1, 0)$, numbered clockwise: $\mathbf d_2 = L(\tfrac12, \tfrac{{\sqrt3}}{{2}})$, "
                    rf"$\mathbf d_3 = L(\tfrac12, -\tfrac{{\sqrt3}}{{2}})$, the only one of the {len(rows)} placements tried "
