@@ -38,6 +38,11 @@ venv: ## (internal) create/refresh .venv from environment.lock, editable install
 	@want="$$(sha256sum environment.lock pyproject.toml | sha256sum | cut -d' ' -f1)"; \
 	have="$$(cat $(STAMP) 2>/dev/null || true)"; \
 	if [ -x $(VPY) ] && [ "$$want" = "$$have" ]; then exit 0; fi; \
+	if command -v flock >/dev/null 2>&1; then exec 9>.venv.lock; \
+	  flock -n 9 || { echo "[venv] another make is setting up $(VENV): waiting for it"; flock 9; }; \
+	  have="$$(cat $(STAMP) 2>/dev/null || true)"; \
+	  if [ -x $(VPY) ] && [ "$$want" = "$$have" ]; then exit 0; fi; \
+	fi; \
 	t0=$$(date +%s); \
 	if [ -d $(VENV) ]; then echo "[venv] environment.lock or pyproject.toml changed: recreating $(VENV)"; rm -rf $(VENV); \
 	else echo "[venv] creating $(VENV) from environment.lock"; fi; \

@@ -82,7 +82,10 @@ def test_certified_rank_equals_svd_rank(shape):
     rng = np.random.default_rng(sum(shape))
     A = rng.normal(size=(3000,) + shape)
     p = min(shape)
-    A[::4, ..., -1] = 0.0                                        # rank-deficient members
+    if shape[0] < shape[1]:
+        A[::4, -1, :] = 0.0                                      # rank-deficient members (a zero row)
+    else:
+        A[::4, ..., -1] = 0.0                                    # rank-deficient members (a zero column)
     A[1::4] *= 10.0 ** rng.uniform(-12, 12, (750, 1, 1))         # all scales, absolute part of the rule
     if p > 1:
         A[2::4, :, 0] = A[2::4, :, 1] * (1 + TOL * rng.uniform(0.5, 3, (750, 1)))   # nearly dependent
@@ -228,7 +231,28 @@ def test_steering_angles_point_the_wheels_along_the_velocity(kind):
     assert np.all(np.abs(cosang[moving & steer] - 1) < 1e-12)
     assert np.array_equal(beta[~moving | ~steer], current[~moving | ~steer])
     assert np.all(np.abs(beta[moving & steer]) <= np.pi)
-    # still within TOL of the terms' size, and not above it
+    # still within TOL of the terms' size (relative: a slow translation is a translation in any unit)
     t = np.array([[0.0, 1e-10, 0.0], [0.0, 2e-9, 0.0]])
-    assert wmr.steering_angles(wmr.paper_robot("centred"), t).tolist()[0] == [0.0, 0.0, 0.0]
-    assert np.allclose(np.abs(wmr.steering_angles(wmr.paper_robot("centred"), t)[1]), np.pi / 2)
+    assert np.allclose(np.abs(wmr.steering_angles(wmr.paper_robot("centred"), t)), np.pi / 2)
+    at_c = wmr.Robot([wmr.CentredWheel((0.0, 0.0), r=0.1), wmr.CentredWheel((1.0, 0.0), r=0.1)])
+    t = np.array([[1.0, 1e-12, 0.0], [1.0, 1e-8, 0.0]])                # wheel 1 at the spin centre, or near it
+    got = wmr.steering_angles(at_c, t, current=[[0.7, 0.7], [0.7, 0.7]])
+    assert got[0, 0] == 0.7 and abs(abs(got[1, 0]) - np.pi / 2) < 1e-12
+
+
+# ------------------------------------------------------------------------------ Robot.J2 / F / J
+@pytest.mark.parametrize("kind", sorted(ROBOTS))
+def test_robot_matrices_equal_the_dense_definitions(kind):
+    """J2, F and J (entry-major, from trig_combination) against blockdiag(R(beta_i) L_i) formed in full."""
+    bot = ROBOTS[kind]()
+    beta, _ = _configurations(bot, 20000, 8)
+    beta[0], beta[1], beta[2] = 0.0, np.pi, -np.pi / 2                   # exact special angles
+    beta = beta.reshape(40, 500, bot.w)                                  # two batch axes
+    for L in (1.0, 0.37):
+        assert np.allclose(bot.J(beta, L=L), R.J(bot, beta, L), rtol=0, atol=4e-16)
+    assert np.allclose(bot.J2(beta), R.J2(bot, beta), rtol=0, atol=4e-16)
+    F = bot.F(beta)
+    assert F.shape == (40, 500, 2 * bot.w, 3 + bot.n_rates)
+    assert np.allclose(F, R.F(bot, beta), rtol=0, atol=4e-16)
+    assert np.array_equal(F[7, 11], bot.F(beta[7, 11]))                 # one configuration = any batch
+    assert np.array_equal(np.ascontiguousarray(F), F)                    # the layout changes no value

@@ -21,15 +21,32 @@ from conftest import (random_twist, robots, same_subspace, seeds, steered_beta, 
     ([[1.0, 2.0], [2.0, 4.0]], 1),
     (np.eye(3), 3),
     (np.zeros((2, 3)), 0),
-    (np.diag([1.0, 1e-12, 1.0]), 2),                       # below TOL * s_max: zero
+    (np.diag([1.0, 1e-12, 1.0]), 3),                       # a small column is not zero next to itself
+    ([[1.0, 1.0], [1.0, 1.0 + 1e-12]], 1),                  # nearly parallel columns: below TOL * s_max
+    ([[1.0, 1.0], [1.0, 1.0 + 1e-6]], 2),
     (np.diag([1.0, 1e-6, 1.0]), 3),
-    (1e-12 * np.eye(2), 0),                                 # absolute for tiny matrices
+    (1e-12 * np.eye(2), 2),                                 # relative: the same in every unit
     (np.ones((4, 1)), 1),
     (np.ones((1, 5)), 1),
 ])
 def test_rank_known_values(A, rank):
     assert int(LA.rank(A)) == rank
     assert int(LA.nullity(A)) == np.shape(A)[1] - rank
+
+
+def test_rank_with_given_column_sizes():
+    """``scale`` says what a column is small next to: with equal sizes, the plain relative SVD rule."""
+    A = np.diag([1.0, 1e-12, 1.0])
+    assert int(LA.rank(A, scale=[1.0, 1.0, 1.0])) == 2 and int(LA.rank(A, scale=[1.0, 1e-12, 1.0])) == 3
+    with pytest.raises(ValueError, match="scale"):
+        LA.rank(A, scale=[1.0, 0.0, 1.0])
+
+
+def _svd_rank(A):
+    """The rule written out: columns to unit length, singular values above TOL * s_max."""
+    n = np.linalg.norm(A, axis=-2, keepdims=True)
+    s = np.linalg.svd(A / np.where(n > 0, n, 1.0), compute_uv=False)
+    return np.sum(s > TOL * s[..., :1], axis=-1)
 
 
 @pytest.mark.parametrize("shape", [(3, 3), (7, 3, 3), (2, 5, 4, 6), (6, 2, 3), (9, 3, 2), (4, 1, 1)])
@@ -40,7 +57,7 @@ def test_rank_batched_matches_numpy(shape):
     flat = A.reshape((-1,) + shape[-2:])
     flat[::2, ..., -1] = flat[::2, ..., 0]
     s = np.linalg.svd(A, compute_uv=False)
-    want = np.sum(s > TOL * np.maximum(1.0, s[..., :1]), axis=-1)
+    want = _svd_rank(A)
     assert LA.rank(A).shape == shape[:-2]
     assert np.array_equal(LA.rank(A), want)
     assert np.allclose(LA.singular_values(A), s)
@@ -54,9 +71,7 @@ def test_rank_fast_path_agrees_with_svd_near_threshold(seed, eps, scale):
     V, _ = np.linalg.qr(rng.normal(size=(400, 3, 3)))
     s = np.stack([np.ones(400), rng.uniform(0, 1, 400), eps * 10 ** rng.uniform(-3, 3, 400)], -1)
     A = scale * (U * s[:, None, :]) @ V
-    sv = np.linalg.svd(A, compute_uv=False)
-    want = np.sum(sv > TOL * np.maximum(1.0, sv[..., :1]), axis=-1)
-    assert np.array_equal(LA.rank(A), want)
+    assert np.array_equal(LA.rank(A), _svd_rank(A))
 
 
 @given(seeds, st.integers(1, 4), st.integers(1, 6))

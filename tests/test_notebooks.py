@@ -65,7 +65,7 @@ def test_cache_reexecutes_only_changed_notebook(tmp_path):
     tree = build.Tree(tmp_path)
     a, b = tmp_path / "notebooks" / "01_a.ipynb", tmp_path / "notebooks" / "02_b.ipynb"
     write_nb(a, ["import os\nos.getcwd()", "import sys\nsys.executable", "os.environ['WMR_PROJECT']"])
-    write_nb(b, ["1 + 1"])
+    write_nb(b, [], markdown="Markdown only: executed without a kernel.")
     assert build.execute(tree, merge=False) == ["01_a.ipynb", "02_b.ipynb"]
     out = nbformat.read(tree.executed_notebook(a), as_version=4)
     # the contract: the notebook's own directory is the working directory, WMR_PROJECT the root
@@ -76,7 +76,7 @@ def test_cache_reexecutes_only_changed_notebook(tmp_path):
     assert build.execute(tree, merge=False) == []                  # nothing changed: nothing runs
     os.utime(b)                                                    # a new mtime, same bytes
     assert build.execute(tree, merge=False) == []
-    write_nb(b, ["2 + 2"])
+    write_nb(b, [], markdown="Edited.")
     assert [p.name for p in stale_notebooks(tree)] == ["02_b.ipynb"]
     assert build.execute(tree, merge=False) == ["02_b.ipynb"]
     (tmp_path / "wmr").mkdir()

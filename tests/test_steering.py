@@ -23,15 +23,18 @@ def test_centre_has_zero_velocity(seed):
     assert np.all(np.sum(ic.direction * ic.point, -1) > 0)
 
 
-@pytest.mark.parametrize("twist, kind", [
-    ([0.0, 1.0, 2.0], Sg.AT_INFINITY),
-    ([1e-12, 1.0, 0.0], Sg.AT_INFINITY),
-    ([0.0, 0.0, 0.0], Sg.STILL),
-    ([1.0, 0.0, 0.0], Sg.FINITE),
-    ([-2.0, 3.0, 0.0], Sg.FINITE),
+@pytest.mark.parametrize("twist, length, kind", [
+    ([0.0, 1.0, 2.0], None, Sg.AT_INFINITY),
+    ([1e-12, 1.0, 0.0], 1.0, Sg.AT_INFINITY),              # the centre 1e12 robot sizes away
+    ([1e-12, 1.0, 0.0], 1e6, Sg.FINITE),                   # ... but only 1e6 sizes of a bigger robot
+    ([1e-12, 1.0, 0.0], None, Sg.FINITE),                  # no size given: no tolerance
+    ([0.0, 0.0, 0.0], None, Sg.STILL),
+    ([1e-300, 0.0, 0.0], 1.0, Sg.FINITE),                  # a (slow) spin is not rest
+    ([1.0, 0.0, 0.0], 1.0, Sg.FINITE),
+    ([-2.0, 3.0, 0.0], None, Sg.FINITE),
 ])
-def test_centre_kinds(twist, kind):
-    ic = wmr.instantaneous_centre(twist)
+def test_centre_kinds(twist, length, kind):
+    ic = wmr.instantaneous_centre(twist, length=length)
     assert int(ic.kind) == kind
     if kind == Sg.AT_INFINITY:
         assert np.all(np.isinf(ic.point))

@@ -168,8 +168,8 @@ def test_entry_points_reject_bad_input(case, call, name, value):
 
 # --- tolerance ----------------------------------------------------------------------------------
 @pytest.mark.parametrize("value, scale, expected", [
-    (1e-12, 1.0, True), (1e-8, 1.0, False), (1e-8, 1e2, True), (1e-10, 1e-6, True),
-    (2 * TOL, 1.0, False), (TOL, 1.0, True), (-TOL / 2, 0.0, True),
+    (1e-12, 1.0, True), (1e-8, 1.0, False), (1e-8, 1e2, True), (1e-10, 1e-6, False),   # relative
+    (1e-16, 1e-6, True), (2 * TOL, 1.0, False), (TOL, 1.0, True), (-TOL / 2, 0.0, False), (0.0, 0.0, True),
 ])
 def test_near_zero(value, scale, expected):
     assert bool(near_zero(value, scale)) is expected

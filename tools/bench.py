@@ -200,8 +200,8 @@ def kernel_rows(n, repeat, k):
     ], twist
 
 
-def sweep_child(analysis, n, chunk):
-    """Run one in-process sweep in a fresh interpreter; return (seconds, peak RSS in MB, summary)."""
+def sweep_child(analysis, n, chunk, threads=None):
+    """Run one in-process sweep in a fresh interpreter; return (seconds, peak RSS in MB, count)."""
     # VmHWM, not ru_maxrss: Linux carries the parent's peak over fork + exec into ru_maxrss
     code = (
         "import sys, time, wmr\n"
@@ -211,7 +211,9 @@ def sweep_child(analysis, n, chunk):
         "dt = time.perf_counter() - t0\n"
         "hwm = [l for l in open('/proc/self/status') if l.startswith('VmHWM')][0].split()[1]\n"
         "print(dt, int(hwm) / 1024, res.count, res.max)\n")
-    out = subprocess.run([sys.executable, "-c", code], check=True, capture_output=True, text=True).stdout.split()
+    env = dict(os.environ, **({} if threads is None else {"WMR_THREADS": str(threads)}))
+    out = subprocess.run([sys.executable, "-c", code], check=True, capture_output=True, text=True,
+                         env=env).stdout.split()
     return float(out[0]), float(out[1]), int(out[2])
 
 
@@ -219,8 +221,10 @@ def sweep_rows(n, dask):
     from wmr.analysis.sweep import CHUNK, Sample
     rows = []
     for analysis in ("rank_F", "kappa_J"):
-        sec, rss, count = sweep_child(analysis, n, CHUNK)
-        rows.append((f"sweep {analysis}, in process", sec, count, rss))
+        for threads in (None, 1):
+            sec, rss, count = sweep_child(analysis, n, CHUNK, threads)
+            where = "in process" if threads is None else "in process, 1 thread"
+            rows.append((f"sweep {analysis}, {where}", sec, count, rss))
         if dask:
             from dask.distributed import Client, LocalCluster
             bot = wmr.paper_robot("centred")

@@ -33,12 +33,21 @@ def _output(o) -> dict | None:
     return None
 
 
+#: figures the report shows outside its figures section: key -> where (the conventions drawing)
+FRONT_MATTER_FIGURES = {"conventions": "How to read this edition"}
+
+
 def _figure_reference(source: str, figures: list[FigureMeta]) -> str:
-    keys = [f for f in figures if re.search(r"[\"']%s[\"']" % re.escape(f.key), source)]
-    if not keys:
-        return "*The figure computed here is shown once, with its captions, in [Figures](#figures).*"
-    names = ", ".join(f"[{f.label or f.title}](#figure-{f.key})" for f in keys)
-    return f"*{names}: shown once, with the paper's caption and ours, in [Figures](#figures).*"
+    """The line that replaces a figure cell: a link to where the report shows the figure."""
+    found = [f for f in figures if re.search(r"[\"']%s[\"']" % re.escape(f.key), source)]
+    if not found:
+        return "*The figure computed here is shown once, in the [figures](#figures) of Part I.*"
+    out = []
+    for f in found:
+        where = FRONT_MATTER_FIGURES.get(f.key, "the figures of Part I")
+        both = ", with the paper's caption beside the computed one" if f.paper_caption else ""
+        out.append(f"[{f.label or f.title}](#figure-{f.key}): shown once, in {where}{both}.")
+    return "*" + " ".join(out) + "*"
 
 
 def _figure_images(figures: list[FigureMeta]) -> dict[str, FigureMeta]:

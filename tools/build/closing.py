@@ -4,7 +4,7 @@ from __future__ import annotations
 import re
 
 from . import typeset as ts
-from .findings import formula, link
+from .findings import claim_name, formula, link
 from .frontmatter import PAPER, listing, plural, verb, words
 from .inputs import Inputs
 
@@ -46,10 +46,6 @@ PAPER_CITATIONS = (
 )
 
 
-def _claim_name(e) -> str:
-    return e.id.replace("-", " ")
-
-
 def conclusions(inp: Inputs) -> list:
     """What holds, what does not, what it means for a designer: counts and lists from the ledger."""
     if inp.ledger is None:
@@ -68,7 +64,7 @@ def conclusions(inp: Inputs) -> list:
          "and of the functional matrix $\\mathbf F$) can be used as printed, under the conventions stated "
          "in *How to read this edition*."
          + (f" Of the claims of its text, {words(len(held))} {verb(len(held), 'holds', 'hold')}"
-            f" ({listing([link(e, _claim_name(e)) for e in held])})." if held else ""),
+            f" ({listing([link(e, claim_name(e)) for e in held])})." if held else ""),
          ""]
     if wrong_eq or failed:
         s.append("**What does not hold.** "
@@ -76,12 +72,12 @@ def conclusions(inp: Inputs) -> list:
                     f"({listing([link(e) for e in wrong_eq])}); the [errata](#errata) give the corrected forms and why. "
                     if wrong_eq else "")
                  + (f"{plural(len(failed), 'claim').capitalize()} of the text {verb(len(failed), 'fails', 'fail')}: "
-                    + listing([link(e, _claim_name(e)) for e in failed]) + "." if failed else ""))
+                    + listing([link(e, claim_name(e)) for e in failed]) + "." if failed else ""))
         s.append("")
     if failed:
         s += ["**For a designer.** In place of each claim that fails, what is true, as proven in Part II:", ""]
         for e in failed:
-            s.append(f"- **{link(e, _claim_name(e))}** (paper §{e.section}). " + formula(e, "corrected"))
+            s.append(f"- **{link(e, claim_name(e))}** (paper §{e.section}). " + formula(e, "corrected"))
         s.append("")
     s += ["Every verdict can be checked again: `make report` re-executes the derivations, and the package "
           "`wmr` analyses any other wheel layout the same way (mobility, isotropy, singular configurations, "

@@ -13,13 +13,18 @@ from . import typeset as ts
 from .frontmatter import listing, plural, verb, words
 from .inputs import Entry, Inputs
 
-__all__ = ["link", "formula", "errata", "failed_claims", "by_section", "singularities", "figures"]
+__all__ = ["link", "formula", "claim_name", "errata", "failed_claims", "by_section", "singularities", "figures"]
 
 
 def link(e: Entry, text: str | None = None) -> str:
     """``[(59)](#eq-59)``: a mention of a ledger row that links to its derivation."""
     text = text or e.label
     return f"[{text}](#{e.anchor})" if e.anchor else text
+
+
+def claim_name(e: Entry) -> str:
+    """A claim's slug as words: ``isotropy placement``."""
+    return e.id.replace("-", " ")
 
 
 def _section(e: Entry) -> str:
@@ -70,7 +75,8 @@ def failed_claims(inp: Inputs) -> list:
     if rows:
         body = []
         for e in rows:
-            body.append({"cells": [f"**{link(e)}**", _section(e), f"*{e.verdict}*", e.why or e.note], "end": False})
+            body.append({"cells": [f"**{link(e, claim_name(e))}**", _section(e), f"*{e.verdict}*", e.why or e.note],
+                         "end": False})
             body.append({"cells": ["*the paper*", formula(e, "printed")], "span": True, "end": False})
             body.append({"cells": ["*what is true*", formula(e, "corrected")], "span": True, "end": True})
         cells.append(ts.table([("Claim", 0.2), ("Paper", 0.1), ("Verdict", 0.1), ("Why", 0.6)], body, cls="claims"))

@@ -107,7 +107,7 @@ def how_to_read(inp: Inputs) -> list:
         "largest numerical residual of the form accepted, over random configurations, printed as a "
         "bound where it is round-off (for example $< 10^{-12}$); and *convention*, the reading of the "
         "paper's notation under which the verdict holds, where the paper leaves it open.")]
-    conv = inp.figure("conventions")
+    conv = inp.figure("conventions")           # chapters.FRONT_MATTER_FIGURES: shown here
     if conv is not None:
         cells.append(ts.markdown(
             "**Conventions.** Frames, angle signs and wheel numbering are stated once, in the package "

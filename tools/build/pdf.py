@@ -25,7 +25,7 @@ from .log import BuildError, say
 from .markup import Batch, math_body
 from .paths import TEMPLATES, Tree
 
-__all__ = ["export_pdf", "to_latex", "display_math", "scaled_formulas", "fix_id", "UNICODE"]
+__all__ = ["export_pdf", "to_latex", "display_math", "wrap_tables", "breakable_code", "scaled_formulas", "fix_id", "UNICODE"]
 
 MAX_RUNS = 4
 #: characters of the text that Latin Modern lacks, set from the math fonts instead
@@ -61,6 +61,28 @@ def display_math(body: str) -> str:
 def _displays(tex: str) -> str:
     """Every ``\\[...\\]`` that pandoc wrote becomes :func:`display_math`."""
     return _DISPLAY.sub(lambda m: display_math(m.group(1)), tex)
+
+
+_NATURAL_TABLE = re.compile(r"\\begin\{longtable\}\[\]\{@\{\}([lcr]+)@\{\}\}")
+_TEXTTT = re.compile(r"\\texttt\{([^{}]*)\}")
+
+
+def wrap_tables(tex: str) -> str:
+    """Markdown tables of the chapters (pandoc gives them natural-width ``l`` columns, which run
+    past the margin when a cell is long) get wrapping columns of equal width."""
+    def one(m):
+        n = len(m.group(1))
+        col = rf">{{\raggedright\arraybackslash}}p{{\dimexpr(\linewidth-{2 * (n - 1)}\tabcolsep)/{n}\relax}}"
+        return r"\begin{longtable}[]{@{}" + col * n + "@{}}"
+    return _NATURAL_TABLE.sub(one, tex)
+
+
+def breakable_code(tex: str) -> str:
+    """Code and identifiers in the text (``wmr.analysis.mobility.twist_constraints``,
+    ``listed_in_paper``) may break after a dot or an underscore, as a URL would, instead of
+    running past the margin."""
+    tex = _TEXTTT.sub(lambda m: r"\texttt{" + m.group(1).replace(".", r".\allowbreak{}") + "}", tex)
+    return tex.replace(r"\_", r"\_\allowbreak{}")
 
 
 def _text(v) -> str:
@@ -103,7 +125,7 @@ def to_latex(nb) -> tuple[str, dict]:
     paper = batch.add(nb.metadata["wmr"]["paper"], inline=True)
     batch.convert()
     for c in prepared.cells:
-        c.source = _displays(batch.fill(c.source))
+        c.source = breakable_code(wrap_tables(_displays(batch.fill(c.source))))
     unicode = "\n".join(rf"\newunicodechar{{{k}}}{{{v}}}" for k, v in UNICODE.items())
     exp = LatexExporter(template_name="wmr_latex", extra_template_basedirs=[str(TEMPLATES)])
     body, _ = exp.from_notebook_node(prepared, resources={"wmr_paper_latex": batch.fill(paper),

@@ -40,6 +40,11 @@ def main(argv: list[str]) -> int:
     from nbclient import NotebookClient
     from nbclient.exceptions import CellExecutionError
 
+    nb = nbformat.read(nb_path, as_version=4)
+    if not any(c.cell_type == "code" and c.source.strip() for c in nb.cells):
+        with atomic_path(Path(out_path)) as tmp:          # nothing to run: no kernel to start
+            nbformat.write(nb, str(tmp))
+        return 0
     km = AsyncKernelManager(kernel_name="python3")
 
     def kill_kernel() -> None:
@@ -57,7 +62,6 @@ def main(argv: list[str]) -> int:
     for sig in (signal.SIGTERM, signal.SIGINT, signal.SIGHUP):
         signal.signal(sig, on_signal)
 
-    nb = nbformat.read(nb_path, as_version=4)
     client = NotebookClient(nb, km=km, timeout=CELL_TIMEOUT, kernel_name="python3", record_timing=False,
                             resources={"metadata": {"path": cwd}})
     try:

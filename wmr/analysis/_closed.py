@@ -23,15 +23,18 @@ KAPPA_ERROR = 16.0
 _SAFE = (1e-100, 1e100)       # range of ||A||_F^2 where no product below over- or underflows
 
 
-def _entries(A, a, b):
+def _entries(A, a, b, scale=None):
     """Entries of matrices ``a .. b-1`` of a flat stack ``(N, m, n)``: ``e[i][j]`` has shape (b - a,).
 
     Every later operation reads contiguous memory: an entry-major stack (as :meth:`wmr.Robot.J`
-    returns) is used as it is, any other layout is copied entry-major first.
+    returns) is used as it is, any other layout is copied entry-major first.  With ``scale`` (n,),
+    column j is divided by ``scale[j]`` on the way (no pass over the whole stack).
     """
     m, n = A.shape[1:]
     X = A[a:b].reshape(b - a, m * n).T
-    if X.strides[1] != X.itemsize:                  # not entry-major (see wmr.model.trig): copy once
+    if scale is not None:                           # a new array (X may be a view of A)
+        X = (X.reshape(m, n, b - a) / np.asarray(scale, dtype=float)[None, :, None]).reshape(m * n, b - a)
+    elif X.strides[1] != X.itemsize:                # not entry-major (see wmr.model.trig): copy once
         X = np.ascontiguousarray(X)
     return [[X[i * n + j] for j in range(n)] for i in range(m)]
 
@@ -82,15 +85,18 @@ def _gram_entries(e, rows):
     return [[None if j < i else _dot(vecs[i], vecs[j]) for j in range(p)] for i in range(p)]
 
 
-def certified_full_rank(A):
+def certified_full_rank(A, scale=None):
     r"""Members of a flat stack ``A (N, m, n)``, ``p = min(m, n) <= 3``, whose rank is surely ``p``.
+
+    With ``scale`` (n,), the test is made on the matrices with column j divided by ``scale[j]``
+    (the column sizes of :func:`wmr.analysis.linalg.rank`).
 
     With :math:`f = \|\mathbf A\|_F^2 \ge \sigma_{max}^2` and :math:`D = \prod_k\sigma_k` (for a
     square matrix :math:`|\det\mathbf A|`, otherwise :math:`\sqrt{\det\mathbf G}` with the
     :math:`p\times p` Gram matrix :math:`\mathbf G`), the smallest singular value satisfies
     :math:`\sigma_{min} \ge D / f^{(p-1)/2}`.  A member is certified when this lower bound, less a
     generous bound on the rounding error of the determinant, exceeds
-    :math:`2\,\mathrm{TOL}\max(1, \sqrt f)`: then the SVD rule of :func:`wmr.analysis.linalg.rank`
+    :math:`2\,\mathrm{TOL}\sqrt f`: then the SVD rule of :func:`wmr.analysis.linalg.rank`
     gives rank ``p`` as well (its own rounding is far below the factor 2), so the certificate
     changes no result.  Members that are not certified (nearly or truly rank-deficient) are
     left to the SVD.
@@ -98,6 +104,8 @@ def certified_full_rank(A):
     Parameters
     ----------
     A : numpy.ndarray (N, m, n)
+    scale : numpy.ndarray (n,), optional
+        Positive column sizes.
 
     Returns
     -------
@@ -108,18 +116,18 @@ def certified_full_rank(A):
     out = np.empty(N, dtype=bool)
 
     def chunk(a, b):
-        e = _entries(A, a, b)
+        e = _entries(A, a, b, scale)
         with np.errstate(over="ignore", invalid="ignore", under="ignore"):
             f = _dot([x for row in e for x in row], [x for row in e for x in row])
             if m == n:
                 D = np.abs(_det_entries(e))
                 err = (10 * p + 100) * _EPS * f ** (p / 2)                     # >> rounding of det A
-                ok = (D - err) > 2 * TOL * np.sqrt(np.maximum(1.0, f)) * f ** ((p - 1) / 2)
+                ok = (D - err) > 2 * TOL * np.sqrt(f) * f ** ((p - 1) / 2)
             else:
                 g = _gram_entries(e, rows=m < n)
                 G = [[g[min(i, j)][max(i, j)] for j in range(p)] for i in range(p)]
                 err = (10 * (m + n) + 100) * _EPS * f ** p                     # >> rounding of G and det G
-                ok = (_det_entries(G) - err) > (2 * TOL) ** 2 * np.maximum(1.0, f) * f ** (p - 1)
+                ok = (_det_entries(G) - err) > (2 * TOL) ** 2 * f * f ** (p - 1)
             out[a:b] = ok & np.isfinite(f) & (f > 0)
 
     for_chunks(chunk, N)
@@ -150,7 +158,7 @@ def condition_number_3x3(A):
     :math:`|\mathbf A|` (the rounding of the determinant).  A member is **accepted** when
     :math:`4e \le` :data:`KAPPA_ERROR` :math:`\epsilon\kappa` (the factor 4 covers the bound's
     first-order neglect; measured errors stay below half of ``e``), when
-    :math:`\sigma_3 = \sqrt{\lambda_1}/\kappa > 2\,\mathrm{TOL}\max(1, \sigma_1)` (so the SVD rule
+    :math:`\sigma_3 = \sigma_1/\kappa > 2\,\mathrm{TOL}\,\sigma_1` (so the SVD rule
     would not call it singular either) and when :math:`\|\mathbf A\|_F^2` lies where nothing
     over- or underflows.  The others are flagged for the SVD.
 
@@ -204,7 +212,6 @@ def _kappa_entries(e):
     # first-order error bound (see the docstring) and the acceptance tests
     E = _EPS * q + np.minimum(2 * p, _EPS * q / np.sqrt(np.maximum(1 - r * r, 1e-300)))
     bound = 0.5 * E * (1 / lam1 + 1 / lam2) + _EPS * per / absD
-    ok = ((4 * bound <= KAPPA_ERROR * _EPS * kappa)
-          & (lam1 > (2 * TOL) ** 2 * np.maximum(1.0, lam1) * kappa * kappa)   # sigma_3 > 2 TOL max(1, sigma_1)
+    ok = ((4 * bound <= KAPPA_ERROR * _EPS * kappa) & (2 * TOL * kappa < 1.0)      # sigma_3 > 2 TOL sigma_1
           & (f > _SAFE[0]) & (f < _SAFE[1]) & (lam2 > 0) & np.isfinite(kappa))
     return kappa, ok

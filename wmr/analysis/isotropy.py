@@ -64,7 +64,8 @@ def characteristic_length(robot):
     2.666666666667
     """
     d = V.numeric_robot(robot).mount_points
-    L = float(np.sqrt(np.mean(np.sum(d ** 2, axis=1))))
+    big = float(np.abs(d).max())                      # scaled first: no overflow at 1e300, no underflow at 1e-300
+    L = big * float(np.sqrt(np.mean(np.sum((d / big) ** 2, axis=1)))) if big > 0 else 0.0
     if L == 0:
         raise ValueError("all mount points coincide with C: no characteristic length exists (got L = 0)")
     return L

@@ -26,6 +26,7 @@ from ..model.backend import NUMERIC
 from ..model.platform import cos_sin, rotated
 from ..model.tolerance import TOL
 from ._batch import for_chunks
+from .linalg import pinv_columns, rank
 
 __all__ = ["Solution", "forward", "inverse"]
 
@@ -68,13 +69,14 @@ def _constants(robot):
     :math:`\mathbf J_1^+` (3, 2w), and whether :math:`\mathbf J_1` has rank 3.
     """
     J1 = robot.J1(backend=NUMERIC)
-    sv = np.linalg.svd(J1, compute_uv=False)
     units = []
     for i, (u, sl) in enumerate(zip(robot.wheels, robot.rate_slices)):
         L, EL = (np.asarray(m, dtype=float) for m in u.block_terms(NUMERIC))   # B = cos L + sin E L
-        units.append(_UnitConstants(J1[2 * i:2 * i + 2], L, EL, np.linalg.pinv(L), sl,
+        units.append(_UnitConstants(J1[2 * i:2 * i + 2], L, EL, pinv_columns(L), sl,
                                     2 * u.b / u.r if u.kind == "dual" else None))
-    return tuple(units), np.linalg.pinv(J1), bool(len(sv) == 3 and sv[-1] > TOL * max(1.0, sv[0]))
+    # J1's psi_dot column is a length, the others pure numbers: rank and pseudo-inverse with the
+    # columns scaled (wmr.model.tolerance), so a robot 1e300 or 1e-300 in size is still determined
+    return tuple(units), pinv_columns(J1), bool(rank(J1) == 3)
 
 
 def _lin(coefs, xs):
@@ -112,11 +114,18 @@ def _max_abs(acc, xs):
 
 
 def _admissible(res_max, term_max, k):
-    """``max|res| <= TOL * max(1, max|terms|)``, the rule of near_zero, per configuration."""
+    """``max|res| <= TOL * max|terms|``, the (relative) rule of near_zero, per configuration."""
     if res_max is None:
         return np.ones(k, dtype=bool)
     big = np.zeros(k) if term_max is None else term_max
-    return res_max <= TOL * np.maximum(big, 1.0)
+    return res_max <= TOL * big
+
+
+def _finite(name, given, *results):
+    """Overflow is detected, not propagated: finite input must give finite results."""
+    if not all(np.isfinite(r).all() for r in results):
+        raise ValueError(f"{name} is too large: the kinematics overflow double precision "
+                         f"(largest |{name}| = {np.abs(given).max():.3g})")
 
 
 def _flat(batch, *arrays):
@@ -129,6 +138,7 @@ def _columns(X, a, b):
     return list(np.ascontiguousarray(X[a:b].T))
 
 
+@np.errstate(over="ignore", invalid="ignore")        # overflow is checked on the results (_finite)
 def forward(robot, beta, rates):
     r"""Platform twist from joint rates (least squares on (21)).
 
@@ -177,6 +187,7 @@ def forward(robot, beta, rates):
     N, w = b.shape[0], robot.w
     t, res, adm = np.empty((N, 3)), np.empty((N, 2 * w)), np.empty(N, dtype=bool)
 
+    @np.errstate(over="ignore", invalid="ignore")      # (per thread: the chunks run on the pool)
     def chunk(a, z):
         c, s = cos_sin(np.ascontiguousarray(b[a:z].T))
         cols = _columns(th, a, z)
@@ -197,9 +208,11 @@ def forward(robot, beta, rates):
         adm[a:z] = _admissible(worst, big, z - a)
 
     for_chunks(chunk, N)
+    _finite("rates", rates, t, res)
     return Solution(t.reshape(batch + (3,)), res.reshape(batch + (2 * w,)), adm.reshape(batch))
 
 
+@np.errstate(over="ignore", invalid="ignore")
 def inverse(robot, beta, twist, beta_dot=None):
     r"""Joint rates that realise a platform twist (unit by unit, exact or least squares).
 
@@ -252,6 +265,7 @@ def inverse(robot, beta, twist, beta_dot=None):
     N = b.shape[0]
     rates, res, adm = np.empty((N, robot.n_rates)), np.empty((N, 2 * w)), np.empty(N, dtype=bool)
 
+    @np.errstate(over="ignore", invalid="ignore")      # (per thread: the chunks run on the pool)
     def chunk(a, z):
         c, s = cos_sin(np.ascontiguousarray(b[a:z].T))
         t = _columns(tw, a, z)
@@ -280,4 +294,5 @@ def inverse(robot, beta, twist, beta_dot=None):
         adm[a:z] = _admissible(worst, big, z - a)
 
     for_chunks(chunk, N)
+    _finite("twist", twist, rates, res)
     return Solution(rates.reshape(batch + (robot.n_rates,)), res.reshape(batch + (2 * w,)), adm.reshape(batch))

@@ -1,7 +1,9 @@
 r"""Linear algebra on stacks of matrices ``(..., m, n)``: singular values, rank, nullity, null space, condition number.
 
-Every decision "is this singular value zero?" uses the one tolerance :data:`wmr.model.tolerance.TOL`
-(relative to the largest singular value).  Functions accept any number of leading batch axes and
+Every decision "is this singular value zero?" uses the one tolerance :data:`wmr.model.tolerance.TOL`,
+relative to the largest singular value; ranks are taken after each column is divided by its
+length (:func:`column_norms`), so that they do not depend on the units of the unknowns
+(see :mod:`wmr.model.tolerance`).  Functions accept any number of leading batch axes and
 run over chunks on all cores (:mod:`wmr.analysis._batch`).  For matrices with at most three rows
 or columns, :func:`det`, :func:`rank` and :func:`condition_number` use closed forms
 (:mod:`wmr.analysis._closed`) for every member they can vouch for and the SVD for the others, so
@@ -16,7 +18,8 @@ from ..model.tolerance import TOL
 from . import _closed
 from ._batch import map_matrices
 
-__all__ = ["singular_values", "rank", "nullity", "null_space", "condition_number", "gram", "det"]
+__all__ = ["singular_values", "column_norms", "rank", "nullity", "null_space", "pinv_columns", "condition_number", "gram",
+           "det"]
 
 
 def _as_stack(A):
@@ -49,14 +52,61 @@ def singular_values(A):
     return map_matrices(lambda X: np.linalg.svd(X, compute_uv=False), A)
 
 
+def column_norms(A):
+    r"""Euclidean length of every column, :math:`\|\mathbf A\mathbf e_j\|`, without overflow or underflow.
+
+    Zero columns get 1 (dividing by it leaves them zero).
+
+    Parameters
+    ----------
+    A : array_like (..., m, n)
+
+    Returns
+    -------
+    numpy.ndarray (..., n)
+
+    Examples
+    --------
+    >>> column_norms([[3e300, 0.0], [4e300, 0.0]]).tolist()
+    [5e+300, 1.0]
+    """
+    A = _as_stack(A)
+    big = np.max(np.abs(A), axis=-2) if A.shape[-2] else np.zeros(A.shape[:-2] + A.shape[-1:])
+    safe = np.where(big > 0, big, 1.0)
+    return np.where(big > 0, safe * np.sqrt(np.sum((A / safe[..., None, :]) ** 2, axis=-2)), 1.0)
+
+
+def _check_scale(scale, n):
+    scale = V.finite_array("scale", scale, last=n)
+    if np.any(scale <= 0):
+        raise ValueError(f"scale must hold positive column sizes, got {V.show(scale)}")
+    return scale
+
+
+def _scaled(A, scale):
+    """``A`` with column j divided by ``scale[..., j]`` (default: the column lengths)."""
+    scale = column_norms(A) if scale is None else _check_scale(scale, A.shape[-1])
+    with np.errstate(over="ignore", under="ignore"):
+        out = A / scale[..., None, :]
+    if not np.isfinite(out).all():
+        raise ValueError(f"scale is too small for A: A / scale overflows (scale = {V.show(scale)})")
+    return out
+
+
 def _rank_from_sv(s):
+    """The rule: singular values above ``TOL`` times the largest one (a zero matrix has rank 0)."""
     if s.shape[-1] == 0:
         return np.zeros(s.shape[:-1], dtype=int)
-    return np.sum(s > TOL * np.maximum(1.0, s[..., :1]), axis=-1)
+    return np.sum(s > TOL * s[..., :1], axis=-1)
 
 
-def rank(A):
-    """Numerical rank of a stack of matrices (singular values above ``TOL * max(1, s_max)``).
+def rank(A, scale=None):
+    """Numerical rank of a stack of matrices, independent of the units of the unknowns.
+
+    Each column is divided by its size (default: its length, :func:`column_norms`), then the
+    singular values above ``TOL`` times the largest one are counted (:mod:`wmr.model.tolerance`).
+    So ``rank(A) == rank(A @ D)`` for every positive diagonal ``D``; a column that is small only
+    next to the others is not neglected (give ``scale`` to say what "small" means instead).
 
     For matrices with at most 3 rows or columns, members of full rank are recognised in
     closed form (a certified bound, see :func:`wmr.analysis._closed.certified_full_rank`) and
@@ -65,6 +115,8 @@ def rank(A):
     Parameters
     ----------
     A : array_like (..., m, n)
+    scale : array_like (n,) or (..., n), optional
+        Positive size of each column (in the unit of its entries).  Default: the column lengths.
 
     Returns
     -------
@@ -76,25 +128,36 @@ def rank(A):
     1
     >>> rank(np.stack([np.eye(3), np.ones((3, 3))])).tolist()
     [3, 1]
+    >>> int(rank(np.diag([1.0, 1e-12]))), int(rank(np.diag([1.0, 1e-12]), scale=[1.0, 1.0]))
+    (2, 1)
     """
     A = _as_stack(A)
     p = min(A.shape[-2:])
+    constant = scale is not None and np.ndim(scale) == 1
+    if p == 0 or p > 3 or not constant:
+        A = _scaled(A, scale)                        # column sizes per matrix: one pass over the stack
+        scale = None
+    else:
+        scale = _check_scale(scale, A.shape[-1])     # one size per column: applied chunk by chunk
     if p == 0 or p > 3:
         return _rank_from_sv(singular_values(A))
     flat = A.reshape((-1,) + A.shape[-2:])
     out = np.full(flat.shape[0], p, dtype=int)
-    todo = np.flatnonzero(~_closed.certified_full_rank(flat))
+    todo = np.flatnonzero(~_closed.certified_full_rank(flat, scale))
     if todo.size:
-        out[todo] = _rank_from_sv(singular_values(flat[todo]))
+        rest = flat[todo] if scale is None else _scaled(flat[todo], scale)
+        out[todo] = _rank_from_sv(singular_values(rest))
     return out.reshape(A.shape[:-2])
 
 
-def nullity(A):
-    """Nullity ``n - rank(A)`` (27) of a stack of matrices.
+def nullity(A, scale=None):
+    """Nullity ``n - rank(A)`` (27) of a stack of matrices (rank as in :func:`rank`).
 
     Parameters
     ----------
     A : array_like (..., m, n)
+    scale : array_like (n,) or (..., n), optional
+        As for :func:`rank`.
 
     Returns
     -------
@@ -106,15 +169,20 @@ def nullity(A):
     2
     """
     A = _as_stack(A)
-    return A.shape[-1] - rank(A)
+    return A.shape[-1] - rank(A, scale)
 
 
-def null_space(A):
-    """Orthonormal basis of the null space of one matrix.
+def null_space(A, scale=None):
+    """Orthonormal basis of the null space of one matrix (rank as in :func:`rank`).
+
+    The dimension is ``nullity(A, scale)``; the basis is the last right singular vectors of
+    ``A`` itself (orthonormal in the coordinates of ``A``, and as accurate as its own SVD).
 
     Parameters
     ----------
     A : array (m, n)
+    scale : array_like (n,), optional
+        As for :func:`rank`.
 
     Returns
     -------
@@ -124,18 +192,50 @@ def null_space(A):
     --------
     >>> null_space([[1.0, 0.0, 0.0]]).shape
     (3, 2)
+    >>> (null_space([[1e6, 1.0]]).round(9) + 0.0).tolist()          # x = -1e-6 y
+    [[-1e-06], [1.0]]
     """
     A = V.finite_array("A", A)
     if A.ndim != 2:
         raise ValueError(f"A must be one matrix (m, n) for null_space, got shape {A.shape} (loop over a batch)")
-    _, s, Vt = np.linalg.svd(A)
-    r = int(_rank_from_sv(s[None, :])[0]) if s.size else 0
+    r = int(rank(A, scale))
+    if A.shape[0] == 0:
+        return np.eye(A.shape[1])                        # no equations: every vector
+    _, _, Vt = np.linalg.svd(A)
     return Vt[r:].T.copy()
 
 
+def pinv_columns(A):
+    r"""Pseudo-inverse of one matrix, with its columns scaled as in :func:`rank`: :math:`\mathbf D^{-1}(\mathbf A\mathbf D^{-1})^+`.
+
+    Singular values of :math:`\mathbf A\mathbf D^{-1}` at most ``TOL`` times the largest are
+    dropped (the rank rule).  For full column rank this is :math:`\mathbf A^+` whatever the units
+    of the columns (``numpy.linalg.pinv`` would drop a column that is small only next to the
+    others).
+
+    Parameters
+    ----------
+    A : array (m, n)
+
+    Returns
+    -------
+    numpy.ndarray (n, m)
+
+    Examples
+    --------
+    >>> (pinv_columns([[1e12, 0.0], [0.0, 1.0], [0.0, 0.0]]) * [1e12, 1, 1]).round(12).tolist()
+    [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0]]
+    """
+    A = V.finite_array("A", A)
+    if A.ndim != 2:
+        raise ValueError(f"A must be one matrix (m, n), got shape {A.shape}")
+    scale = column_norms(A)
+    return np.linalg.pinv(A / scale, rcond=TOL) / scale[:, None]
+
+
 def _left_null(L):
-    """Orthonormal basis (2, k) of the left null space of a constant 2 x n block."""
-    L = np.asarray(L, dtype=float)
+    """Orthonormal basis (2, k) of the left null space of a constant 2 x n block (columns scaled as in :func:`rank`)."""
+    L = _scaled(np.asarray(L, dtype=float), None)
     U, s, _ = np.linalg.svd(L)
     r = int(_rank_from_sv(s[None, :])[0]) if s.size else 0
     return U[:, r:]
@@ -144,8 +244,9 @@ def _left_null(L):
 def condition_number(A):
     r"""Condition number :math:`\kappa = \sigma_l/\sigma_s` (30) of a stack of matrices.
 
-    Rank-deficient matrices (smallest singular value at most ``TOL * max(1, sigma_l)``)
-    get ``inf``, as (31) prescribes.  Stacks of 3x3 matrices use the closed form of
+    Rank-deficient matrices (smallest singular value at most ``TOL * sigma_l``, i.e.
+    :math:`\kappa \ge 1/\mathrm{TOL}`) get ``inf``, as (31) prescribes; the matrix is taken as
+    given (no column scaling: :math:`\kappa` is the paper's measure, made homogeneous by L).  Stacks of 3x3 matrices use the closed form of
     :func:`wmr.analysis._closed.condition_number_3x3` (singular values from the eigenvalues of
     :math:`\mathbf A^T\mathbf A` and :math:`\det\mathbf A`) wherever its computed error bound is
     within ``16 eps kappa``, and the SVD for the other members; other sizes use the SVD.
@@ -166,6 +267,8 @@ def condition_number(A):
     [3.0, inf]
     """
     A = _as_stack(A)
+    if min(A.shape[-2:]) == 0:
+        raise ValueError(f"A must have at least one row and one column for a condition number, got shape {A.shape}")
     if A.shape[-2:] != (3, 3):
         return _kappa_from_sv(singular_values(A))
     flat = A.reshape(-1, 3, 3)
@@ -178,7 +281,7 @@ def condition_number(A):
 
 def _kappa_from_sv(s):
     smax, smin = s[..., 0], s[..., -1]
-    singular = smin <= TOL * np.maximum(1.0, smax)
+    singular = smin <= TOL * smax
     with np.errstate(divide="ignore", invalid="ignore"):
         return np.where(singular, np.inf, smax / np.where(singular, 1.0, smin))
 

@@ -71,14 +71,18 @@ def line_intersection(p1, u1, p2, u2):
     ('FINITE', [1.0, 0.0])
     """
     p1, u1, p2, u2 = (V.finite_array(n, a, last=2) for n, a in (("p1", p1), ("u1", u1), ("p2", p2), ("u2", u2)))
-    cross = u1[0] * u2[1] - u1[1] * u2[0]
+    for name, u in (("u1", u1), ("u2", u2)):
+        if u.ndim != 1 or not np.any(u):
+            raise ValueError(f"{name} must be one non-zero direction (2,), got {V.show(u)}")
+    n1, n2 = u1 / np.hypot(*u1), u2 / np.hypot(*u2)
+    cross = n1[0] * n2[1] - n1[1] * n2[0]                     # sine of the angle between the lines
     w = p2 - p1
-    scale = max(1.0, float(np.abs(w).max()))
     if near_zero(cross):
-        off = u1[0] * w[1] - u1[1] * w[0]
-        return (COINCIDENT, None) if near_zero(off, scale) else (PARALLEL, None)
-    s = (w[0] * u2[1] - w[1] * u2[0]) / cross
-    return FINITE, p1 + s * u1
+        off = n1[0] * w[1] - n1[1] * w[0]                     # distance of p2 from line 1
+        size = float(max(np.abs(p1).max(), np.abs(p2).max()))  # relative to where the lines are
+        return (COINCIDENT, None) if near_zero(off, size) else (PARALLEL, None)
+    s = (w[0] * n2[1] - w[1] * n2[0]) / cross
+    return FINITE, p1 + s * n1
 
 
 def pair_intersections(points, directions):
@@ -152,7 +156,7 @@ def lines_concurrency(points, directions):
     if np.any(norm == 0):
         raise ValueError(f"directions must be non-zero vectors, got {u.tolist()}")
     u = u / norm
-    scale = max(1.0, float(np.abs(p).max()))
+    scale = float(np.abs(p).max()) or 1.0              # the size of the figure, in its own unit
     m = (p[:, 0] * u[:, 1] - p[:, 1] * u[:, 0]) / scale
     W = np.stack([m, u[:, 0], u[:, 1]])                 # (3, n)
     U, s, _ = np.linalg.svd(W)
@@ -207,7 +211,7 @@ def circumcircle(points):
     (ax, ay), (bx, by), (cx, cy) = pts
     dd = 2 * (ax * (by - cy) + bx * (cy - ay) + cx * (ay - by))
     size = max(abs(float(v)) for q in pts for v in q) if not exact else None
-    if (exact and sp.simplify(dd) == 0) or (not exact and near_zero(dd, max(1.0, size) ** 2)):
+    if (exact and sp.simplify(dd) == 0) or (not exact and near_zero(dd, size ** 2)):
         raise ValueError(f"points are collinear: no circumcircle, got {pts}")
     a2, b2, c2 = ax**2 + ay**2, bx**2 + by**2, cx**2 + cy**2
     ux = (a2 * (by - cy) + b2 * (cy - ay) + c2 * (ay - by)) / dd

@@ -2,7 +2,9 @@ r"""Mobility: rank, nullity and null space of the functional matrix (23)-(27).
 
 The mobility of a WMR is the nullity :math:`\nu(\mathbf F) = \dim\mathcal N(\mathbf F)` (27): the number
 of generalised rates :math:`\dot{\mathbf q}` (25) that can be assigned freely without violating the
-no-slip constraints.  All rank decisions use :data:`wmr.model.tolerance.TOL`.
+no-slip constraints.  All rank decisions use :data:`wmr.model.tolerance.TOL` on the dimensionless
+:math:`\hat{\mathbf F}` (each column divided by its length, :attr:`wmr.Robot.F_column_norms`), so
+that mobility does not depend on the unit of length.
 
 For batches of configurations, :func:`mobility` does not take an SVD of every
 :math:`2w\times(3+n)` matrix :math:`\mathbf F`.  It uses the structure
@@ -15,7 +17,10 @@ For batches of configurations, :func:`mobility` does not take an SVD of every
           \vdots\end{bmatrix},
 
 with :math:`\mathbf N_i` an orthonormal basis of the left null space of :math:`\mathbf L_i` (for a
-centred or dual wheel, the axle direction).  The rows of :math:`\mathbf A` are the constraints the
+centred or dual wheel, the axle direction).  The same identity holds for :math:`\hat{\mathbf F}`,
+whose twist columns are those of :math:`\mathbf F` divided by their lengths: :func:`rank_F` ranks
+:math:`\mathbf A` with those column sizes, :func:`wmr.rank` of ``robot.F(beta)`` ranks
+:math:`\hat{\mathbf F}` directly, and the two agree.  The rows of :math:`\mathbf A` are the constraints the
 platform twist must satisfy; :math:`\mathbf A` is :math:`k\times 3` with :math:`k` small.
 """
 from __future__ import annotations
@@ -97,7 +102,7 @@ def rank_F(robot, beta):
     [5, 6]
     """
     A, base = twist_constraints(robot, beta)
-    return base + rank(A)
+    return base + rank(A, scale=robot.F_column_norms[:3])     # the twist columns of F, scaled as in rank(F)
 
 
 def mobility(robot, beta):
@@ -156,4 +161,4 @@ def admissible_twists(robot, beta):
     A, _ = twist_constraints(robot, beta)
     if A.shape[0] == 0:
         return np.eye(3)
-    return null_space(A)
+    return null_space(A, scale=robot.F_column_norms[:3])

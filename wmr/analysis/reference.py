@@ -5,7 +5,7 @@ model's definitions, :math:`\mathbf J_2 = \mathrm{blockdiag}(\mathbf R(\beta_i)\
 :math:`\mathbf R(\beta)` of (11) written out with ``np.cos`` and ``np.sin`` and multiplied by the
 unit's local block, :math:`\mathbf F = [\mathbf J_1\ -\mathbf J_2]` (24),
 :math:`\mathbf J = \mathbf J_{L1}^T\mathbf J_2` (56); every rank and condition number comes from a
-full SVD with the rule of :mod:`wmr.model.tolerance` (the same two lines of
+full SVD with the rule of :mod:`wmr.model.tolerance` (ranks of the matrix with unit-length columns) (the same two lines of
 :mod:`wmr.analysis.linalg` that turn singular values into a rank or a condition number); kinematics are pseudo-inverse solutions
 of the whole system (21).  The tests and ``make bench`` compare the batched kernels
 (:meth:`wmr.Robot.J`, :func:`wmr.rank_F`, :func:`wmr.analysis.linalg.det`,
@@ -19,7 +19,7 @@ import numpy as np
 from ..model import validation as V
 from ..model.backend import NUMERIC
 from ..model.tolerance import near_zero
-from .linalg import _kappa_from_sv, _rank_from_sv
+from .linalg import _kappa_from_sv, _rank_from_sv, column_norms
 
 __all__ = ["J2", "F", "J", "rank", "rank_F", "det", "condition_number", "forward", "inverse"]
 
@@ -83,7 +83,7 @@ def _sv(A):
 
 
 def rank(A):
-    """Rank from a full SVD by the package's rule (singular values above ``TOL * max(1, s_max)``).
+    """Rank from a full SVD by the package's rule (columns divided by their lengths, then singular values above ``TOL * s_max``).
 
     Parameters
     ----------
@@ -93,7 +93,8 @@ def rank(A):
     -------
     numpy.ndarray of int (...)
     """
-    return _rank_from_sv(_sv(A))
+    A = np.asarray(A, dtype=float)
+    return _rank_from_sv(_sv(A / column_norms(A)[..., None, :]))
 
 
 def rank_F(robot, beta):

@@ -435,7 +435,7 @@ def classify(robot, beta, L=None):
             fam = "v-circle"
         elif planes.kind == FINITE and near_zero(np.linalg.norm(planes.point), scale):
             fam = "v-C"
-        elif planes.kind == FINITE and np.min(np.linalg.norm(robot.mount_points - planes.point, axis=1)) <= TOL * max(1.0, scale):
+        elif planes.kind == FINITE and np.min(np.linalg.norm(robot.mount_points - planes.point, axis=1)) <= TOL * scale:
             fam = "v-P"
         else:
             fam = "v"

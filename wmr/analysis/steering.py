@@ -48,13 +48,22 @@ class InstantCentre:
     direction: np.ndarray
 
 
-def instantaneous_centre(twist):
+def instantaneous_centre(twist, length=None):
     r"""Instantaneous centre of rotation (63) of platform twists.
+
+    The centre is **at infinity** (a translation) when :math:`|\dot\psi|\,\ell \le \mathrm{TOL}\,
+    \|\dot{\mathbf c}\|`, i.e. when it is farther from C than :math:`\ell/\mathrm{TOL}` for a robot of
+    size :math:`\ell` (``length``); without a length, only :math:`\dot\psi = 0` is a translation.
+    The platform is **still** only for the zero twist.  Both decisions are the same in every unit of
+    length and time (:mod:`wmr.model.tolerance`).
 
     Parameters
     ----------
     twist : array (..., 3)
         :math:`[\dot\psi, \dot x, \dot y]`, body frame.
+    length : float, optional
+        The size of the robot (e.g. :func:`wmr.characteristic_length`), in the unit of
+        :math:`\dot x/\dot\psi`; default: no tolerance.
 
     Returns
     -------
@@ -67,11 +76,16 @@ def instantaneous_centre(twist):
     [-2.0, 0.0]
     """
     t = V.finite_array("twist", twist, last=3)
+    length = None if length is None else V.positive("length", length)
     psi, c = t[..., 0], t[..., 1:]
-    speed = np.linalg.norm(c, axis=-1)
+    speed = np.hypot(c[..., 0], c[..., 1])
     Ec = np.stack([-c[..., 1], c[..., 0]], axis=-1)                  # E c_dot
-    still = near_zero(psi) & near_zero(speed)
-    infinite = near_zero(psi, speed) & ~still
+    still = (psi == 0) & (speed == 0)
+    if length is None:
+        infinite = (psi == 0) & ~still
+    else:
+        with np.errstate(over="ignore"):
+            infinite = near_zero(psi * length, speed) & ~still
     kind = np.where(still, STILL, np.where(infinite, AT_INFINITY, FINITE))
     with np.errstate(divide="ignore", invalid="ignore"):
         point = Ec / np.where(kind == FINITE, psi, 1.0)[..., None]  # (63)
@@ -93,7 +107,7 @@ def steering_angles(robot, twist, current=None):
     :math:`\mathbf i_i` points at the instantaneous centre.  Where the mount point is still (it
     is the centre, or the twist is zero) every angle is admissible and ``current`` is kept;
     offset wheels (full mobility) also keep ``current``.  "Still" means
-    :math:`\|\dot{\mathbf p}_i\| \le \mathrm{TOL}\max(1, s)` with
+    :math:`\|\dot{\mathbf p}_i\| \le \mathrm{TOL}\,s` with
     :math:`s = \max(|\dot x|, |\dot y|) + |\dot\psi|\max_{i,k}|d_{ik}|`, the size of the terms of
     :math:`\dot{\mathbf p}_i` (the rule of :func:`wmr.model.tolerance.near_zero`).
 
@@ -134,10 +148,9 @@ def steering_angles(robot, twist, current=None):
         psi, cx, cy = tw[a:b, 0:1], tw[a:b, 1:2], tw[a:b, 2:3]
         pdot = point_velocity(tw[a:b, None, :], d)                     # (2): c_dot + psi_dot E d_i
         px, py = pdot[..., 0], np.negative(pdot[..., 1])               # j_i = -p_dot_i / |p_dot_i|
-        # the mount point is still when |p_dot| <= TOL max(1, scale): compared squared, no sqrt
+        # the mount point is still when |p_dot| <= TOL scale (relative): compared squared, no sqrt
         scale = np.maximum(np.abs(cx), np.abs(cy))
         scale += np.abs(psi) * dmax
-        np.maximum(scale, 1.0, out=scale)
         scale *= TOL
         scale *= scale
         free = px * px
@@ -157,6 +170,7 @@ def centre_to_wheels(twist, d):
     Parameters
     ----------
     twist : array (..., 3), with :math:`\dot\psi \ne 0`
+        The centre must be finite for a robot of the size of ``d`` (:func:`instantaneous_centre`).
     d : array (w, 2)
 
     Returns
@@ -168,9 +182,9 @@ def centre_to_wheels(twist, d):
     >>> centre_to_wheels([1.0, 0.0, 2.0], [[1.0, 0.0]]).tolist()          # U = (-2, 0)
     [[-3.0, 0.0]]
     """
-    ic = instantaneous_centre(twist)
+    d = V.finite_array("d", d, last=2)
+    ic = instantaneous_centre(twist, length=float(np.abs(d).max()) or None)
     if np.any(ic.kind != FINITE):
         bad = np.asarray(twist)[ic.kind != FINITE][:1].tolist()
         raise ValueError(f"u_i needs a finite instantaneous centre (psi_dot != 0); got twist {bad}")
-    d = V.finite_array("d", d, last=2)
     return ic.point[..., None, :] - d

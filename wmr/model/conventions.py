@@ -32,7 +32,8 @@ Numbering
     \tfrac{\sqrt3}2)`, :math:`\mathbf d_3 = L(\tfrac12,-\tfrac{\sqrt3}2)`: numbered clockwise from
     the negative x-axis, the one placement under which the printed (59) holds.
 Tolerance
-    One numerical zero, :data:`wmr.model.tolerance.TOL`.
+    One numerical zero, :data:`wmr.model.tolerance.TOL`, always relative: every decision is the same
+    in every unit of length and time (how: :mod:`wmr.model.tolerance`).
 Errors
     ``TypeError`` for the wrong kind of argument, ``ValueError`` for a bad value; the message
     names the argument and shows the value (:mod:`wmr.model.validation`).

@@ -59,6 +59,13 @@ class Robot:
                                 f"got {V.show(u)}")
         self.wheels = wheels
         self.name = V.optional_text("name", name) or "robot"
+        if not self.is_symbolic:
+            with np.errstate(over="ignore", invalid="ignore"):
+                for k, u in enumerate(wheels):
+                    L, EL = (np.asarray(m, dtype=float) for m in u.block_terms(NUMERIC))
+                    if not np.isfinite(2 * np.abs(L) + 2 * np.abs(EL)).all() or not np.isfinite(4 * np.abs(u.position)).all():
+                        raise ValueError(f"wheels[{k}] has lengths too large for double-precision kinematics "
+                                         f"(R(beta) L_i would overflow): {V.show(u)}")
         starts = np.cumsum([0] + [u.n_rates for u in wheels])
         #: slice of each unit's rates inside the joint-rate vector theta_dot
         self.rate_slices = tuple(slice(int(a), int(b)) for a, b in zip(starts[:-1], starts[1:]))
@@ -118,6 +125,21 @@ class Robot:
         """True when a mount point or a length of some unit is a SymPy expression."""
         return any(u.is_symbolic for u in self.wheels)
 
+    @property
+    def F_column_norms(self):
+        r"""Lengths of the columns of :math:`\mathbf F` (22)-(24), the same at every :math:`\boldsymbol\beta`: array (3 + n_rates,).
+
+        :math:`\sqrt{\sum_i\|\mathbf d_i\|^2}` (the :math:`\dot\psi` column, a length), :math:`\sqrt w`,
+        :math:`\sqrt w` (:math:`\dot x, \dot y`), then the lengths of the units' local blocks'
+        columns (:math:`r_i`, :math:`d_i`, :math:`r_i/2`): rotations do not change them.  Dividing
+        :math:`\mathbf F` by them gives the dimensionless matrix whose rank decides mobility
+        (:mod:`wmr.model.tolerance`).  Zero columns get 1.  Numeric robots only.
+        """
+        from ..analysis.linalg import column_norms
+        blocks = [np.asarray(u.block_terms(NUMERIC)[0], dtype=float) for u in self.wheels]
+        rates = np.concatenate([column_norms(b) for b in blocks])
+        return np.concatenate([column_norms(self.J1(backend=NUMERIC)), rates])
+
     # --- matrices -------------------------------------------------------------------------------
     def _beta(self, beta, bk):
         if bk is SYMBOLIC:
@@ -152,8 +174,12 @@ class Robot:
         L = V.positive("L (characteristic length)", L)
         bk = choose(L, backend=backend) if not self.is_symbolic else SYMBOLIC
         M = bk.zeros(2 * self.w, 3)
-        for i, u in enumerate(self.wheels):
-            bk.set_block(M, 2 * i, 0, point_row(u.position, L, backend=bk))  # (32): [E d_i / L, 1]
+        with np.errstate(over="ignore"):
+            for i, u in enumerate(self.wheels):
+                bk.set_block(M, 2 * i, 0, point_row(u.position, L, backend=bk))  # (32): [E d_i / L, 1]
+        if bk is NUMERIC and not np.isfinite(M).all():
+            raise ValueError(f"L (characteristic length) = {L!r} is too small for mount points of size "
+                             f"{np.abs(self.mount_points).max():.3g}: d_i / L overflows")
         return M
 
     def _backend(self, beta, backend):
@@ -248,7 +274,13 @@ class Robot:
         b = self._beta(beta, bk)
         JL1T = self.J1(L, backend=NUMERIC).T
         P, Q = self._wheel_terms()                                    # J = J_L1^T J2, term by term
-        return trig_combination(b, JL1T @ P, JL1T @ Q)
+        with np.errstate(over="ignore", invalid="ignore"):
+            P, Q = JL1T @ P, JL1T @ Q
+            ok = np.isfinite(2 * np.abs(P).sum(0) + 2 * np.abs(Q).sum(0)).all()   # |entry| <= sum |P_i| + |Q_i|
+        if not ok:
+            raise ValueError(f"J overflows for this robot and L = {L!r}: the wheel radii times d_i / L exceed "
+                             "the double-precision range")
+        return trig_combination(b, P, Q)
 
     # --- frames ---------------------------------------------------------------------------------
     def moved(self, origin=(0.0, 0.0), angle=0.0):

@@ -1,37 +1,94 @@
-"""The one numerical tolerance of the package.
+r"""The one numerical tolerance of the package, and why its decisions do not depend on units.
 
-Every "is this zero?" decision in :mod:`wmr` (rank, nullity, isotropy, admissibility of a
-motion, whether a twist is a pure translation) goes through :data:`TOL`, so that the
-package has a single documented notion of numerical zero.
+Every "is this zero?" decision in :mod:`wmr` (rank, nullity, mobility, admissibility of a motion,
+isotropy, singularity, where an instantaneous centre is) goes through :data:`TOL`, and every one
+of them compares **dimensionless** numbers: a quantity is measured against the size of the terms
+it comes from, never against 1 in some unit.  Scaling every length of a robot (mount points,
+radii, offsets, the characteristic length, translational rates) by any factor changes no
+decision, and neither does the unit of time.
 
-* A singular value ``s`` of a matrix ``A`` counts as zero when
-  ``s <= TOL * max(1, s_max)``: relative to the largest singular value for matrices of
-  ordinary size, absolute for tiny ones (so that the zero matrix has rank 0).
-* A residual (slip) of a kinematic equation counts as zero when it is at most
-  ``TOL * max(1, scale)``, where ``scale`` is the size of the terms that produced it.
+Rules
+-----
+Relative zero
+    ``near_zero(x, scale)`` is :math:`|x| \le \mathrm{TOL}\,|\mathrm{scale}|`, where ``scale`` is
+    the size of the quantities whose difference ``x`` is (for a slip residual, the wheel
+    velocities; for a determinant, the Hadamard bound :math:`\prod_j\|\mathbf A\mathbf e_j\|`).
+    Angles are already dimensionless: their scale is 1.
+Rank (:func:`wmr.analysis.linalg.rank`)
+    The columns of a matrix are first divided by their lengths (its unknowns may have any
+    units: :math:`\dot\psi` in 1/s, :math:`\dot x` in m/s); a singular value :math:`\sigma` of
+    the scaled matrix :math:`\hat{\mathbf A}` counts as zero when
+    :math:`\sigma \le \mathrm{TOL}\,\sigma_{max}(\hat{\mathbf A})`.  The rank is therefore the
+    same for :math:`\mathbf A` and :math:`\mathbf A\mathbf D` with any positive diagonal
+    :math:`\mathbf D` (a change of unit of each unknown), and for :math:`c\mathbf A`.
+The functional matrix (:func:`wmr.rank_F`, :func:`wmr.mobility`)
+    :math:`\mathbf F = [\mathbf J_1\ -\mathbf J_2]` (24) mixes units: its :math:`\dot\psi` column is
+    :math:`[\mathbf E\mathbf d_i]` (a length), the :math:`\dot x, \dot y` columns are pure numbers,
+    a rolling-rate column is :math:`r_i\mathbf j_i` (a length), an offset wheel's steering column
+    :math:`d_i\mathbf i_i` (a length).  Its column lengths do not depend on :math:`\boldsymbol\beta`
+    (:attr:`wmr.Robot.F_column_norms`: :math:`\sqrt{\sum_i\|\mathbf d_i\|^2}`, :math:`\sqrt w`,
+    :math:`\sqrt w`, :math:`r_i`, :math:`d_i`, :math:`r_i/2`), so
+    :math:`\hat{\mathbf F} = \mathbf F\,\mathrm{diag}(\|\mathbf F\mathbf e_j\|)^{-1}` is a
+    dimensionless matrix of the same rank whose entries are cosines and sines of the steering
+    angles and ratios of the robot's lengths.  ``wmr.rank(bot.F(beta))`` ranks
+    :math:`\hat{\mathbf F}` by its SVD; :func:`wmr.rank_F` ranks it through the twist constraints
+    (:mod:`wmr.analysis.mobility`), with the twist columns scaled the same way.
+Condition number (:func:`wmr.condition_number`)
+    :math:`\kappa = \sigma_{max}/\sigma_{min}` (30) of the matrix as given (it is the paper's
+    measure, made homogeneous by the characteristic length L); :math:`\kappa = \infty` when
+    :math:`\sigma_{min} \le \mathrm{TOL}\,\sigma_{max}`, i.e. :math:`\kappa \ge 1/\mathrm{TOL} = 10^9`.
+    Isotropy is :math:`|\kappa - 1| \le \mathrm{TOL}`.
 
-``TOL = 1e-9`` sits well above the round-off of the 6x9 matrices built here (about
-``1e-15`` relative) and far below any physically meaningful quantity.
+Near-singular configurations: the angular tolerance
+---------------------------------------------------
+In :math:`\hat{\mathbf F}`, turning one wheel by :math:`\delta` radians away from a configuration
+where the rank drops (all axles through one point, all wheels parallel) moves the smallest
+singular value from 0 to about :math:`g\,\delta`, where :math:`g` is a geometric factor of order
+one (it is smaller for robots whose wheels are far closer to C than to each other).  The rank
+therefore counts a configuration as singular when it lies within about
+:math:`\mathrm{TOL}/g` rad of a singular one, in every unit.  Measured by bisection on the paper's
+centred and dual-wheel robots (L = 0.3 .. 1, r = 0.05 .. 1, the same for every L and r): one wheel
+turned off the spin about C flips the mobility at :math:`2.1\times10^{-9}` rad, off all-parallel at
+:math:`2.1\times10^{-9}` (wheel 1) or :math:`4.2\times10^{-9}` rad (wheels 2, 3), i.e.
+:math:`g = 0.24\ \text{to}\ 0.47`; :data:`ANGULAR_TOLERANCE` rounds this up to :math:`5\times10^{-9}` rad:
+over a 1 m robot that is a few nanometres of wheel travel, far below any real steering error
+and far above the round-off of the angles (:math:`\sim 10^{-16}` rad).
+
+``TOL = 1e-9`` sits well above the round-off of the small matrices built here (about ``1e-15``
+relative) and far below any physically meaningful quantity.
+
+Examples
+--------
+>>> bool(near_zero(1e-12)), bool(near_zero(1e-3))
+(True, False)
+>>> bool(near_zero(1e-12, scale=1e-6))          # relative: 1e-12 is not small next to 1e-6
+False
 """
 from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["TOL", "near_zero"]
+__all__ = ["TOL", "ANGULAR_TOLERANCE", "near_zero"]
 
-#: The package-wide tolerance for numerical zero (see module docstring).
+#: The package-wide tolerance for numerical zero, relative (see module docstring).
 TOL: float = 1e-9
+
+#: Steering-angle distance (radians) within which a configuration counts as the singular one
+#: next to it (about ``TOL`` over the geometric factor of the paper's robots; see module docstring).
+ANGULAR_TOLERANCE: float = 5e-9
 
 
 def near_zero(x, scale=1.0):
-    """True where ``|x| <= TOL * max(1, |scale|)`` (element-wise).
+    """True where ``|x| <= TOL * |scale|`` (element-wise): ``x`` is zero next to ``scale``.
 
     Parameters
     ----------
     x : array_like
         Values to test.
     scale : array_like, optional
-        Size of the quantities whose difference ``x`` is; broadcast against ``x``.
+        Size of the quantities whose difference ``x`` is, in the unit of ``x``; broadcast against
+        ``x``.  The default 1 is for dimensionless ``x`` (angles, cosines).  A zero scale makes
+        only an exact zero count.
 
     Returns
     -------
@@ -40,10 +97,8 @@ def near_zero(x, scale=1.0):
 
     Examples
     --------
-    >>> bool(near_zero(1e-12))
-    True
-    >>> bool(near_zero(1e-3))
-    False
+    >>> near_zero([1e-12, 1e-3], scale=[1.0, 1e7]).tolist()
+    [True, True]
     """
     x = np.abs(np.asarray(x, dtype=float))
-    return x <= TOL * np.maximum(1.0, np.abs(np.asarray(scale, dtype=float)))
+    return x <= TOL * np.abs(np.asarray(scale, dtype=float))
