@@ -103,12 +103,40 @@ TERMS_59 = ((-_s3 / 2, sp.cos, (1, -1, -1)), (sp.Rational(3, 4), sp.sin, (1, -1,
 
 
 def det_J_59(terms=TERMS_59):
-    """The right side of (59) as printed, from its terms (a SymPy expression in :data:`wmr.paper.symbols.beta`)."""
+    """The right side of (59) as printed, from its terms.
+
+    Parameters
+    ----------
+    terms : sequence of (coefficient, function, signs)
+        Default :data:`TERMS_59`.
+
+    Returns
+    -------
+    sympy.Expr
+        In :data:`wmr.paper.symbols.beta`.
+    """
     return sum(c * f(sum(sg * b for sg, b in zip(signs, S.beta))) for c, f, signs in terms)
 
 
 def det_J_59_latex(lhs=r"\det(\mathbf{J})", factor="", per_line=3, terms=TERMS_59):
-    r"""LaTeX of (59) from its terms, broken into lines of ``per_line`` terms (``aligned``), optionally times ``factor``."""
+    r"""LaTeX of (59) from its terms, broken by hand into lines of ``per_line`` terms (``aligned``).
+
+    Parameters
+    ----------
+    lhs : str
+        LaTeX of the left side.
+    factor : str, optional
+        A factor of the whole right side, e.g. ``"r^3"`` (then the terms are in ``\Big( \Big)``).
+    per_line : int
+        Terms per line.
+    terms : sequence of (coefficient, function, signs)
+        Default :data:`TERMS_59`.
+
+    Returns
+    -------
+    str
+        A LaTeX body (no ``$``).
+    """
     parts = []
     for k, (c, f, signs) in enumerate(terms):
         arg = "".join(("" if j == 0 and sg > 0 else ("+" if sg > 0 else "-")) + rf"\beta_{j + 1}" for j, sg in enumerate(signs))
