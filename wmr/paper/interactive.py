@@ -196,7 +196,8 @@ def draw_steering(state, fig=None):
     """
     from ..plot.annotate import draw_line, draw_point, label
     from ..plot.robot import draw_robot, platform_radius, robot_geometry
-    from ..plot.style import PALETTE, ROLE, fit_view, new_figure, style
+    from matplotlib.lines import Line2D
+    from ..plot.style import DASHES, ROLE, fit_view, new_figure, style
     with style():
         fig, (ax,) = new_figure(1, 1, width=5.6, height=5.0, fig=fig)
         g = robot_geometry(state.robot, state.beta)
@@ -222,6 +223,11 @@ def draw_steering(state, fig=None):
             ax.annotate("", xy=tuple(0.9 * R * v), xytext=(0, 0),
                         arrowprops=dict(arrowstyle="-|>", color=ROLE["ic"], lw=1.6), zorder=9)
         fit_view(ax, np.array([[-view, -view], [view, view]]) * 0.62, pad=0.02)
+        handles = [Line2D([], [], color=DASHES["axle"][0], ls=DASHES["axle"][1], lw=1.2, label="axle lines"),
+                   Line2D([], [], color=DASHES["plane"][0], ls=DASHES["plane"][1], lw=1.2, label="wheel-plane lines"),
+                   Line2D([], [], color=ROLE["ic"], marker="o", ls="none", label="$U$: centre of rotation"),
+                   Line2D([], [], color=ROLE["dp"], marker="s", ls="none", label="$D_P$: planes meet")]
+        ax.legend(handles=handles, loc="lower left", fontsize=7.5, frameon=True, framealpha=0.9)
         verdict = ("can move" if state.mobility > 0 else "cannot move")
         ax.set_title(rf"$\beta = ({', '.join(_deg(b) for b in state.beta)})$: the robot {verdict}", fontsize=9)
     return fig
@@ -239,6 +245,7 @@ def draw_mounts(state, fig=None):
     -------
     matplotlib.figure.Figure
     """
+    from matplotlib.lines import Line2D
     from matplotlib.patches import Circle, Polygon
     from ..plot.annotate import draw_point, label
     from ..plot.style import PALETTE, fit_view, new_figure, style
@@ -249,12 +256,17 @@ def draw_mounts(state, fig=None):
         ax.add_patch(Circle((0, 0), state.L, facecolor="none", edgecolor=PALETTE["blue"], lw=0.9, ls=(0, (5, 3))))
         ax.add_patch(Circle((0, 0), state.L_rms, facecolor="none", edgecolor=PALETTE["green"], lw=0.8, ls=(0, (1, 2))))
         draw_point(ax, (0, 0), None, size=5)
-        label(ax, (0, 0), "$C$", offset=(-5, -5), ha="right", va="top")
-        draw_point(ax, state.centroid, None, marker="x", color=PALETTE["vermillion"], size=6)
+        label(ax, (0, 0), "$C$", offset=(-6, 6), ha="right", va="bottom")
+        draw_point(ax, state.centroid, None, marker="x", color=PALETTE["vermillion"], size=7, zorder=8)
+        label(ax, state.centroid, r"$\bar P$", offset=(6, -6), ha="left", va="top", color=PALETTE["vermillion"])
+        handles = [Line2D([], [], color=PALETTE["blue"], ls=(0, (5, 3)), label=f"radius $L = {state.L:.3g}$"),
+                   Line2D([], [], color=PALETTE["green"], ls=(0, (1, 2)), label=f"RMS distance ${state.L_rms:.3g}$"),
+                   Line2D([], [], color=PALETTE["vermillion"], marker="x", ls="none", label=r"centroid $\bar P$")]
+        ax.legend(handles=handles, loc="lower left", fontsize=7.5, frameon=True, framealpha=0.9)
         for k, q in enumerate(p, 1):
             draw_point(ax, q, None, size=5, color=PALETTE["dark"])
             label(ax, q, f"$P_{k}$", offset=(6, 6))
-        m = max(float(np.abs(p).max()), state.L, state.L_rms) * 1.15
+        m = max(float(np.abs(p).max()), state.L, state.L_rms) * 1.25
         fit_view(ax, np.array([[-m, -m], [m, m]]), pad=0.02)
         ax.set_title(rf"$\kappa(\mathbf{{J}}_{{L1}}) = {number(state.kappa, 4)}$ at $L = {state.L:.3g}$", fontsize=9)
     return fig
@@ -300,8 +312,8 @@ def describe_steering(state):
              "", f"The axle lines {axles}; the wheel-plane lines {planes}."]
     if state.mobility:
         m = state.motion
-        what = ("a translation" if abs(m[0]) < 1e-9 else
-                f"a rotation about $U = ({state.axles.point[0]:.2f}, {state.axles.point[1]:.2f})$")
+        u = np.round(state.axles.point, 2) + 0.0 if state.axles.kind == FINITE else None
+        what = "a translation" if abs(m[0]) < 1e-9 or u is None else f"a rotation about $U = ({u[0]:.2f}, {u[1]:.2f})$"
         lines.append(f"The robot can move: {what}, the only admissible motion.")
     else:
         lines.append("The robot cannot move: the steering angles jam it (the axles must meet in one point).")
@@ -347,13 +359,15 @@ class SteeringExplorer:
         Initial steering angles (degrees).
     twist : sequence of 3 floats
         Initial commanded twist (for the twist mode).
+    mode : {"steering angles", "commanded twist"}
+        Initial mode.
     """
 
-    def __init__(self, robot=None, beta_deg=(30.0, -50.0, 75.0), twist=(0.5, 0.2, 0.1)):
+    def __init__(self, robot=None, beta_deg=(30.0, -50.0, 75.0), twist=(0.5, 0.2, 0.1), mode="steering angles"):
         import ipywidgets as W
         self.robot = robot or paper_robot("centred", L=1.0, r=0.2)
         lay = W.Layout(width="340px")
-        self.mode = W.ToggleButtons(options=["steering angles", "commanded twist"], value="steering angles")
+        self.mode = W.ToggleButtons(options=["steering angles", "commanded twist"], value=mode)
         self.betas = [W.FloatSlider(value=b, min=-180, max=180, step=1, description=f"β{k} (deg)", layout=lay,
                                     continuous_update=False) for k, b in enumerate(beta_deg, 1)]
         names = ("ψ̇ (rad/s)", "ẋ (m/s)", "ẏ (m/s)")
@@ -363,6 +377,7 @@ class SteeringExplorer:
             w.observe(self._changed, names="value")
         self.controls = W.VBox([self.mode, W.HBox([W.VBox(self.betas), W.VBox(self.twist)])])
         self._image = self._text = None
+        self._changed()                                     # the angle sliders show the angles of the twist mode
 
     def state(self):
         """The :class:`SteeringState` the controls describe.
