@@ -40,21 +40,6 @@ MAX_HTML_BYTES = 4_000_000
 MIN_FORMULA_SCALE = 0.6     # a formula may be shrunk to fit the line, never below this
 
 
-def _ledger_header() -> list[str]:
-    try:
-        with open(TREE.ledger, newline="", encoding="utf-8") as f:
-            return next(csv.reader(f))
-    except (OSError, StopIteration):
-        return []
-
-
-#: the data of the lessons and figs streams (issue 10) is not merged yet: the ledger still has
-#: the old columns (ASCII pseudo-math in notes) and figure cells are not tagged. These checks are
-#: enforced as soon as the contract's ledger is on main.
-DATA_PENDING = "kind" not in _ledger_header()
-pending = pytest.mark.xfail(DATA_PENDING, reason="waits for the contract's ledger and cell tags (lessons stream)")
-
-
 @pytest.fixture(scope="module")
 def html_text():
     try:
@@ -185,7 +170,6 @@ def test_html_ids_unique_and_links_resolve(html_text):
     assert html_export.broken_links(html_text) == []
 
 
-@pending
 def test_every_ledger_row_links_to_its_derivation(html_text):
     rows = inputs.read_ledger(TREE.ledger) or []
     ids = set(parse(html_text).ids)
@@ -284,8 +268,6 @@ def test_html_typesets_offline_in_browser(html_text):
                   "", dom, flags=re.S)
     text = re.sub(r"<[^>]+>", " ", body)
     leftovers = re.findall(r"\\\(|\\\[|\\(?:mathbf|frac|dot|begin)\b", text)
-    if DATA_PENDING and leftovers:
-        pytest.xfail(f"{len(leftovers)} raw TeX commands in the old ledger's notes (bare LaTeX outside $...$)")
     assert not leftovers, f"untypeset TeX left in the page: {leftovers[:5]}"
 
 
@@ -314,22 +296,17 @@ def test_pdf_words_inside_the_margins(pdf_path):
         for x0, x1, word in re.findall(r'<word xMin="([\d.]+)" yMin="[\d.]+" xMax="([\d.]+)" yMax="[\d.]+">([^<]*)</word>', body):
             if float(x1) > page_w - margin + 3 or float(x0) < margin - 3:
                 out.append(f"p. {page}: {word!r} at x = {float(x0):.0f}..{float(x1):.0f}")
-    if DATA_PENDING and out:
-        pytest.xfail(f"{len(out)} words past the margin (unbroken long formulas in the old ledger)")
     assert not out, f"{len(out)} words past the margins: {out[:10]}"
 
 
 def test_pdf_formulas_readable(pdf_path):
     log = TREE.report_log.read_text(encoding="utf-8", errors="replace")
     small = [(round(s, 2), p) for s, p in scaled_formulas(log) if s < MIN_FORMULA_SCALE]
-    if DATA_PENDING and small:
-        pytest.xfail(f"{len(small)} formulas shrunk below {MIN_FORMULA_SCALE} (long forms not yet broken by hand)")
     assert not small, f"formulas shrunk below {MIN_FORMULA_SCALE:.0%} to fit the line (scale, page): {small}"
     missing = sorted(set(re.findall(r"Missing character: There is no (\S+)", log)))
     assert not missing, f"characters missing from the PDF's fonts: {missing}"
 
 
-@pending
 def test_pdf_text_has_no_raw_tex_or_ascii_math(pdf_path):
     if not HAVE_POPPLER:
         pytest.skip("poppler-utils not installed")

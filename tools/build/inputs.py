@@ -21,10 +21,6 @@ __all__ = ["LEDGER_COLUMNS", "VERDICTS", "Entry", "FigureMeta", "Inputs", "read_
 LEDGER_COLUMNS = ("id", "kind", "section", "verdict", "printed", "corrected", "why", "convention", "check",
                   "printed_holds", "residual", "notebook", "anchor", "note")
 VERDICTS = ("ok", "typo", "wrong")
-#: columns of the ledger before the contract (merged on main until the lessons stream lands theirs)
-_OLD_COLUMNS = ("id", "section", "verdict", "printed", "corrected", "convention", "symbolic_check",
-                "max_residual", "notebook", "note")
-
 
 @dataclass(frozen=True)
 class Entry:
@@ -61,14 +57,6 @@ class Entry:
 
 
 def _entry(row: dict) -> Entry:
-    if "kind" not in row and set(_OLD_COLUMNS) <= set(row):
-        # TODO(lessons stream): remove when the contract's ledger is merged on main
-        row = {"id": row["id"], "kind": "equation" if row["id"].isdigit() else "claim",
-               "section": row["section"], "verdict": row["verdict"], "printed": row["printed"],
-               "corrected": row["corrected"], "why": row["note"] if row["verdict"] != "ok" else "",
-               "convention": row["convention"], "check": row["symbolic_check"], "printed_holds": "",
-               "residual": row["max_residual"], "notebook": row["notebook"], "anchor": "",
-               "note": row["note"]}
     missing = [c for c in LEDGER_COLUMNS if c not in row]
     if missing:
         raise ValueError(f"ledger row {row.get('id')!r} lacks the columns {missing}")
@@ -148,8 +136,7 @@ def read_ledger(path: Path) -> list[Entry] | None:
 def read_figures(figdir: Path) -> list[FigureMeta]:
     """Every ``figures/<key>.json`` (figures 7-13 in the paper's order, then ours)."""
     out = []
-    metas = {p.stem: json.loads(p.read_text(encoding="utf-8")) for p in sorted(figdir.glob("*.json"))
-             if p.name != "captions.json"}
+    metas = {p.stem: json.loads(p.read_text(encoding="utf-8")) for p in sorted(figdir.glob("*.json"))}
     for key, m in metas.items():
         if not isinstance(m, dict) or "title" not in m:
             continue
