@@ -58,7 +58,7 @@ tex: ## (internal) make sure xelatex/pandoc/poppler are present (apt-get on Debi
 	@missing=""; \
 	for c in $(TEX_CMDS); do command -v $$c >/dev/null 2>&1 || missing="$$missing $$c"; done; \
 	if [ -z "$$missing" ] && kpsewhich fontspec.sty adjustbox.sty needspace.sty newunicodechar.sty \
-	     fancyhdr.sty bookmark.sty booktabs.sty bm.sty etoolbox.sty truncate.sty lmroman10-regular.otf >/dev/null 2>&1; then exit 0; fi; \
+	     fancyhdr.sty bookmark.sty booktabs.sty bm.sty etoolbox.sty truncate.sty titlesec.sty lmroman10-regular.otf >/dev/null 2>&1; then exit 0; fi; \
 	if command -v apt-get >/dev/null 2>&1 && [ "$$(id -u)" = 0 ]; then \
 	  echo "[tex] installing:$(TEX_DEBS)"; t0=$$(date +%s); \
 	  apt-get update -qq >/dev/null && \

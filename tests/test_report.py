@@ -213,6 +213,14 @@ def test_code_collapsed_and_no_program_output(html_text):
     assert not re.search(r"Out\[\d+\]|In&nbsp;\[|Traceback \(most recent call last\)", outside)
 
 
+def test_markdown_tables_are_tables(html_text):
+    """A Markdown table that the reader could not parse would show as rows of pipes."""
+    main = re.sub(r'<details class="code">.*?</details>', "", html_text.split("<main>", 1)[1], flags=re.S)
+    text = re.sub(r"<[^>]+>", " ", main)
+    leaked = re.findall(r"\|\s*-{3,}\s*\|", text)
+    assert not leaked, f"{len(leaked)} Markdown tables shown as text"
+
+
 def test_contents_sidebar_stays_with_sub_levels(html_text):
     nav = re.search(r'<nav class="toc".*?</nav>', html_text, re.S)
     assert nav, "no contents sidebar"

@@ -15,7 +15,7 @@ import shutil
 from . import procs
 from .log import BuildError
 
-__all__ = ["READER", "Batch", "math_body", "text_of", "tex_anchor_tokens", "tex_anchor_targets"]
+__all__ = ["READER", "Batch", "math_body", "text_of", "table_math_pipes", "tex_anchor_tokens", "tex_anchor_targets"]
 
 READER = "gfm+tex_math_dollars"
 _SEP = "WMRFRAGMENT{:05d}"
@@ -23,6 +23,28 @@ _SEP_RE = {"html": re.compile(r"\n*<p>WMRFRAGMENT(\d{5})</p>\n*"),
            "latex": re.compile(r"\n*^WMRFRAGMENT(\d{5})$\n*", re.M)}
 _ANCHOR = re.compile(r'<a\s+(?:id|name)="([^"]+)"\s*>\s*</a>')
 _TOKEN = re.compile(r"WMRANCHOR([0-9a-f]+)Z")
+
+
+_TABLE_ROW = re.compile(r"^\s*\|.*\|\s*$", re.M)
+_INLINE_MATH = re.compile(r"(?<!\\)\$(?!\$)(.+?)(?<!\\)\$")
+
+
+def table_math_pipes(md: str) -> str:
+    r"""On a row of a Markdown table, a ``|`` inside ``$...$`` belongs to the formula (an absolute
+    value, a norm); GitHub-flavoured Markdown would split the cell there, so it is written
+    ``\vert`` (``\Vert`` for ``\|``).
+
+    Examples
+    --------
+    >>> print(table_math_pipes(r"| a | $\min|CC_f|$ |"))
+    | a | $\min\vert CC_f\vert $ |
+    >>> table_math_pipes("not a table: $|x|$")
+    'not a table: $|x|$'
+    """
+    def row(m):
+        return _INLINE_MATH.sub(lambda k: "$" + k.group(1).replace("\\|", "\\Vert ").replace("|", "\\vert ") + "$",
+                                m.group(0))
+    return _TABLE_ROW.sub(row, md)
 
 
 def tex_anchor_tokens(md: str) -> str:
@@ -56,6 +78,7 @@ class Batch:
     def add(self, md: str, inline: bool = False) -> str:
         """Queue ``md``; return the placeholder that :meth:`fill` replaces. ``inline``: drop the
         paragraph around a one-paragraph result (for table cells and captions)."""
+        md = table_math_pipes(md)
         if self.to == "latex":
             md = tex_anchor_tokens(md)
         self._src.append(md)
