@@ -1,4 +1,4 @@
-"""Command line of the build: ``python -m tools.build [--root DIR] [--build DIR] COMMAND``.
+"""Command line of the build: ``python -m tools.build [--root DIR] [--build DIR] [--notebooks DIR] COMMAND``.
 
 Commands: ``execute`` (stale notebooks, then the ledger), ``report [--html-only]``, ``figures``
 (``python -m wmr.paper.figures figures/``, for ``make figures``), ``test [-- PYTEST ARGS]`` (what
@@ -61,6 +61,7 @@ def main(argv: list[str] | None = None) -> int:
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--root", help="project tree (default: $WMR_ROOT or this repository)")
     ap.add_argument("--build", help="build directory (default: ROOT/build)")
+    ap.add_argument("--notebooks", help="notebooks to execute (default: ROOT/notebooks)")
     sub = ap.add_subparsers(dest="cmd", required=True)
     sub.add_parser("execute", help="execute stale notebooks, merge the ledger")
     r = sub.add_parser("report", help="build/report.html and build/report.pdf")
@@ -71,7 +72,7 @@ def main(argv: list[str] | None = None) -> int:
     sub.add_parser("snapshot", help="record git status before a build")
     sub.add_parser("check-clean", help="fail if git status changed since the snapshot")
     a = ap.parse_args(argv)
-    t = Tree(a.root, a.build)
+    t = Tree(a.root, a.build, a.notebooks)
 
     skip_slow_imports()
     procs.die_with_parent(signal.SIGTERM)

@@ -30,21 +30,23 @@ class Tree:
         Project root; default ``$WMR_ROOT`` or the repository of this tool.
     build : path-like, optional
         Build directory; default ``$WMR_BUILD`` or ``<root>/build``.
+    notebooks : path-like, optional
+        The notebooks to execute; default ``<root>/notebooks``. Another set (the student
+        edition) with its own build directory gets the same cached execution.
     """
 
     root: Path
     build: Path
+    notebooks: Path
 
-    def __init__(self, root=None, build=None):
+    def __init__(self, root=None, build=None, notebooks=None):
         r = Path(root or os.environ.get("WMR_ROOT") or TOOL_ROOT).resolve()
         b = Path(build or os.environ.get("WMR_BUILD") or r / "build").resolve()
         object.__setattr__(self, "root", r)
         object.__setattr__(self, "build", b)
+        object.__setattr__(self, "notebooks", Path(notebooks or r / "notebooks").resolve())
 
     # --- sources
-    @property
-    def notebooks(self) -> Path:
-        return self.root / "notebooks"
 
     @property
     def wmr(self) -> Path:
