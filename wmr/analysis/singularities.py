@@ -63,9 +63,10 @@ def _require_square(robot):
             f"n_rates = {robot.n_rates} (for dual wheels analyse the kinematically equivalent centred robot)")
 
 
-def _default_L(robot, L):
+def _default_L(robot, L, numeric=True):
     if L is not None:
-        return V.positive("L", L)
+        L = V.positive("L", L)
+        return V.number("L", L) if numeric else L
     from .isotropy import characteristic_length
     if V.free_symbols(V.robot(robot)):
         raise ValueError(f"L must be given explicitly for a robot with symbolic mount points, got L = None for {V.show(robot)}")
@@ -106,12 +107,7 @@ def numeric_robot(robot):
     -------
     Robot
     """
-    import dataclasses
-    from ..model.robot import Robot
-    V.robot(robot)
-    units = [dataclasses.replace(u, position=tuple(float(v) for v in u.position), r=float(u.r))
-             for u in robot.wheels]
-    return Robot(units, name=robot.name)
+    return V.robot(robot).numeric()
 
 
 # ------------------------------------------------------------------------------------- det J
@@ -138,7 +134,8 @@ def det_J(robot, beta, L=None):
     >>> abs(float(det_J(bot, [0.3, 0.3, 0.3]))) < 1e-15      # item (i)
     True
     """
-    _require_square(V.numeric_robot(robot))
+    robot = V.numeric_robot(robot)
+    _require_square(robot)
     return det(robot.J(beta, L=_default_L(robot, L)))                 # closed form, batched
 
 
@@ -157,7 +154,9 @@ def det_J_scale(robot, beta, L=None):
     -------
     numpy.ndarray (...)
     """
-    J = V.numeric_robot(robot).J(beta, L=_default_L(robot, L))
+    robot = V.numeric_robot(robot)
+    _require_square(robot)
+    J = robot.J(beta, L=_default_L(robot, L))
     return np.prod(np.linalg.norm(J, axis=-2), axis=-1)
 
 
@@ -197,7 +196,7 @@ def det_J_symbolic(robot, L=None):
     """
     _require_square(robot)
     robot = exact_robot(robot)
-    L = _default_L(robot, L)
+    L = _default_L(robot, L, numeric=False)
     if isinstance(L, float):
         L = sp.nsimplify(L, [sp.sqrt(2), sp.sqrt(3)])
     J = robot.J(None, L=L)
@@ -230,16 +229,21 @@ def plane_line_matrix(robot, beta, L=1, backend=None):
                          f"robot = {V.show(robot)}")
     symbolic = bk is SYMBOLIC
     if symbolic:
-        b = list(robot.beta_symbols) if beta is None else list(beta)
+        b = list(robot.beta_symbols) if beta is None else list(V.symbolic_vector("beta", beta, robot.w))
     else:
         beta = V.finite_array("beta", beta, last=robot.w)
         b = [beta[..., i] for i in range(robot.w)]
+    L = V.positive("L", L) if symbolic else V.number("L", V.positive("L", L))
     columns = []
-    for u, bi in zip(robot.wheels, b):
-        jx, jy = -bk.sin(bi), bk.cos(bi)                       # j_i = R_bwi [0 1]^T, (11)
-        px, py = u.position
-        columns.append([(px * jy - py * jx) / L, jx, jy])      # [m_i / L, j_i], m_i = d_i x j_i
-    return bk.matrix([list(row) for row in zip(*columns)])
+    with np.errstate(over="ignore", invalid="ignore"):
+        for u, bi in zip(robot.wheels, b):
+            jx, jy = -bk.sin(bi), bk.cos(bi)                       # j_i = R_bwi [0 1]^T, (11)
+            px, py = u.position
+            columns.append([(px * jy - py * jx) / L, jx, jy])      # [m_i / L, j_i], m_i = d_i x j_i
+        W = bk.matrix([list(row) for row in zip(*columns)])
+    if bk is NUMERIC and not np.isfinite(W).all():
+        raise ValueError(f"L = {L!r} is too small for the mount points: the moments m_i / L overflow")
+    return W
 
 
 def characterisation(robot, L=None):
@@ -465,6 +469,8 @@ def singular_motions(robot, beta1):
         From :func:`classify`.
     """
     _require_square(robot)
+    robot = V.numeric_robot(robot)
+    beta1 = V.number("beta1", beta1)
     rows = []
     for a in (0.0, np.pi):
         for b in (0.0, np.pi):

@@ -32,8 +32,8 @@ import numbers
 import numpy as np
 import sympy as sp
 
-__all__ = ["real", "positive", "nonnegative", "point", "finite_array", "symbolic_vector", "robot",
-           "numeric_robot", "free_symbols", "flag", "optional_text", "integer", "show"]
+__all__ = ["real", "number", "positive", "nonnegative", "point", "finite_array", "symbolic_vector", "symbolic_matrix", "robot",
+           "numeric_robot", "free_symbols", "batch_shape", "flag", "optional_text", "integer", "show"]
 
 _NON_FINITE = (sp.nan, sp.zoo, sp.oo, -sp.oo)
 
@@ -180,6 +180,31 @@ def _signed(name, value, strict):
     return value
 
 
+def number(name, value):
+    """Return ``value`` as a ``float`` if it is a finite real number (SymPy numbers too, not symbols).
+
+    Parameters
+    ----------
+    name : str
+    value : object
+
+    Returns
+    -------
+    float
+
+    Examples
+    --------
+    >>> number("angle", sp.pi / 2)
+    1.5707963267948966
+    """
+    value = real(name, value)
+    if isinstance(value, sp.Basic):
+        if value.free_symbols:
+            raise TypeError(f"{name} must be a number here, got the expression {show(value)}")
+        value = _to_float(name, value)
+    return float(value)
+
+
 def positive(name, value):
     """Return ``value`` if it is a positive finite number (or a SymPy expression not known to be <= 0).
 
@@ -322,6 +347,39 @@ def finite_array(name, value, last=None):
     return arr
 
 
+def batch_shape(arrays, core=1):
+    """The common batch shape of named arrays (each with ``core`` trailing axes), or a ``ValueError`` naming them.
+
+    Parameters
+    ----------
+    arrays : dict of str to numpy.ndarray or None
+        Arguments by name (``None`` entries are skipped).
+    core : int, optional
+        Trailing axes of each array that are not batch axes.
+
+    Returns
+    -------
+    tuple of int
+
+    Examples
+    --------
+    >>> batch_shape({"beta": np.zeros((5, 3)), "rates": np.zeros(3)})
+    (5,)
+    >>> batch_shape({"beta": np.zeros((2, 3)), "rates": np.zeros((4, 3))})
+    Traceback (most recent call last):
+        ...
+    ValueError: beta and rates must have broadcastable batch shapes, got beta (2,) and rates (4,)
+    """
+    given = {k: v for k, v in arrays.items() if v is not None}
+    try:
+        return np.broadcast_shapes(*[np.shape(v)[:np.ndim(v) - core] for v in given.values()])
+    except ValueError:
+        names = list(given)
+        shapes = " and ".join(f"{k} {np.shape(v)[:np.ndim(v) - core]}" for k, v in given.items())
+        raise ValueError(f"{', '.join(names[:-1])} and {names[-1]} must have broadcastable batch shapes, "
+                         f"got {shapes}") from None
+
+
 def symbolic_vector(name, value, size):
     """Convert to a SymPy column of the given length (entries: real SymPy expressions or numbers).
 
@@ -356,6 +414,34 @@ def symbolic_vector(name, value, size):
     return sp.Matrix([real(f"{name}[{k}]", v) for k, v in enumerate(entries)])
 
 
+def symbolic_matrix(name, value):
+    """Return ``value`` as a ``sympy.Matrix`` (2-D, entries real SymPy expressions or numbers).
+
+    Parameters
+    ----------
+    name : str
+    value : sympy.Matrix or array_like (m, n)
+
+    Returns
+    -------
+    sympy.Matrix
+
+    Examples
+    --------
+    >>> symbolic_matrix("M", [[1, sp.Symbol("x")]]).shape
+    (1, 2)
+    """
+    if isinstance(value, (str, bytes)) or value is None:
+        raise _kind_error(name, value, "a matrix")
+    try:
+        M = sp.Matrix(value)
+    except (TypeError, ValueError, sp.SympifyError):
+        raise _kind_error(name, value, "a matrix (m, n)") from None
+    for k, e in enumerate(M):
+        real(f"{name} entry {k}", e)
+    return M
+
+
 def robot(value, name="robot"):
     """Return ``value`` if it is a :class:`wmr.Robot` instance.
 
@@ -386,7 +472,7 @@ def robot(value, name="robot"):
 
 
 def numeric_robot(value, name="robot"):
-    """Return ``value`` if it is a :class:`wmr.Robot` with numeric mount points and lengths.
+    """Return ``value`` if it is a :class:`wmr.Robot` without free symbols, as floats (:meth:`wmr.Robot.numeric`).
 
     Parameters
     ----------
@@ -396,12 +482,13 @@ def numeric_robot(value, name="robot"):
     Returns
     -------
     Robot
+        ``value`` itself, or its float counterpart for an exact robot.
     """
     value = robot(value, name)
     if free_symbols(value):
         raise ValueError(f"{name} must have numeric mount points and lengths here, got a robot with the symbols "
                          f"{sorted(map(str, free_symbols(value)))}: {show(value)}")
-    return value
+    return value.numeric() if value.is_symbolic else value
 
 
 def free_symbols(robot):
