@@ -22,6 +22,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..model import validation as V
+from ..model.platform import line_angle
 from ..model.tolerance import TOL, near_zero
 
 __all__ = ["Meet", "FINITE", "AT_INFINITY", "STILL", "NONE", "COINCIDENT", "PARALLEL", "Concurrency",
@@ -222,34 +223,29 @@ def circumcircle(points):
     pts = [V.point(f"points[{k}]", q) for k, q in enumerate(points)]
     if len(pts) != 3:
         raise ValueError(f"points must be three points, got {len(pts)}")
-    exact = any(isinstance(v, sp.Basic) for q in pts for v in q)
-    if not exact:                                      # scaled to the figure's size: no overflow, any unit
-        size = float(np.abs(pts).max()) or 1.0
-        (c, R) = _circumcircle_unit([(x / size, y / size) for x, y in pts], pts)
-        centre, radius = c * size, R * size
+    if not any(isinstance(v, sp.Basic) for q in pts for v in q):
+        size = float(np.abs(pts).max()) or 1.0         # scaled to the figure's size: no overflow, any unit
+        (ux, uy), R2 = _circle([(x / size, y / size) for x, y in pts], near_zero, pts)
+        centre, radius = np.array([ux, uy]) * size, float(np.sqrt(R2)) * size
         if not (np.isfinite(centre).all() and np.isfinite(radius)):
             raise ValueError(f"points are too large: their circumcircle overflows, got {pts}")
         return centre, radius
-    (ax, ay), (bx, by), (cx, cy) = [tuple(sp.sympify(v) for v in q) for q in points]   # ints stay exact
-    dd = 2 * (ax * (by - cy) + bx * (cy - ay) + cx * (ay - by))
-    if sp.simplify(dd) == 0:
-        raise ValueError(f"points are collinear: no circumcircle, got {pts}")
-    a2, b2, c2 = ax**2 + ay**2, bx**2 + by**2, cx**2 + cy**2
-    ux = sp.radsimp((a2 * (by - cy) + b2 * (cy - ay) + c2 * (ay - by)) / dd)
-    uy = sp.radsimp((a2 * (cx - bx) + b2 * (ax - cx) + c2 * (bx - ax)) / dd)
-    return (ux, uy), sp.sqrt(sp.radsimp((ax - ux) ** 2 + (ay - uy) ** 2))
+    exact = [tuple(sp.sympify(v) for v in q) for q in points]                 # ints stay exact
+    (ux, uy), R2 = _circle(exact, lambda dd: sp.simplify(dd) == 0, pts)
+    ux, uy = sp.radsimp(ux), sp.radsimp(uy)
+    return (ux, uy), sp.sqrt(sp.radsimp((exact[0][0] - ux) ** 2 + (exact[0][1] - uy) ** 2))
 
 
-def _circumcircle_unit(pts, shown):
-    """The numeric circumcircle of points of size at most 1 (``shown``: the points as given, for messages)."""
+def _circle(pts, is_zero, shown):
+    """Centre and squared radius of the circle through three points (floats or SymPy), by the formula above."""
     (ax, ay), (bx, by), (cx, cy) = pts
     dd = 2 * (ax * (by - cy) + bx * (cy - ay) + cx * (ay - by))
-    if near_zero(dd):
+    if is_zero(dd):
         raise ValueError(f"points are collinear: no circumcircle, got {shown}")
     a2, b2, c2 = ax**2 + ay**2, bx**2 + by**2, cx**2 + cy**2
     ux = (a2 * (by - cy) + b2 * (cy - ay) + c2 * (ay - by)) / dd
     uy = (a2 * (cx - bx) + b2 * (ax - cx) + c2 * (bx - ax)) / dd
-    return np.array([ux, uy]), float(np.hypot(ax - ux, ay - uy))
+    return (ux, uy), (ax - ux) ** 2 + (ay - uy) ** 2
 
 
 # ----------------------------------------------------------------------------- a robot's lines
@@ -338,27 +334,6 @@ def axles_concurrency(robot, beta):
     Concurrency
     """
     return lines_concurrency(*axle_lines(robot, _one(robot, beta, "axles_concurrency")))
-
-
-def line_angle(beta):
-    r"""The angle of a line through the origin, in :math:`(-\pi/2, \pi/2]`: ``beta`` and ``beta + pi`` give the same line.
-
-    Parameters
-    ----------
-    beta : float or array (...)
-        Radians.
-
-    Returns
-    -------
-    numpy.ndarray (...)
-
-    Examples
-    --------
-    >>> np.degrees(line_angle(np.radians([-90.0, 135.0, 180.0]))).round(9).tolist()
-    [90.0, -45.0, 0.0]
-    """
-    b = np.mod(V.finite_array("beta", beta) + np.pi / 2, np.pi) - np.pi / 2
-    return np.where(np.isclose(b, -np.pi / 2, atol=TOL, rtol=0), np.pi / 2, b)
 
 
 def planes_through(robot, D):

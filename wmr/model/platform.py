@@ -18,7 +18,7 @@ import numpy as np
 
 from .backend import NUMERIC, choose
 
-__all__ = ["E", "rotation", "cos_sin", "rotated", "wrap_angle", "point_row", "point_velocity"]
+__all__ = ["E", "rotation", "cos_sin", "rotated", "wrap_angle", "line_angle", "point_row", "point_velocity"]
 
 
 def E(backend=NUMERIC):
@@ -208,11 +208,35 @@ def wrap_angle(angle):
     >>> np.degrees(wrap_angle(np.radians([180.0, -180.0, 270.0]))).round(9).tolist()
     [180.0, 180.0, -90.0]
     """
+    return _wrap("angle", angle, 2 * np.pi)
+
+
+def line_angle(beta):
+    r"""The angle of a line through the origin, in :math:`(-\pi/2, \pi/2]`: ``beta`` and ``beta + pi`` give the same line.
+
+    Parameters
+    ----------
+    beta : float or array (...)
+        Radians.
+
+    Returns
+    -------
+    numpy.ndarray (...)
+
+    Examples
+    --------
+    >>> np.degrees(line_angle(np.radians([-90.0, 135.0, 180.0]))).round(9).tolist()
+    [90.0, -45.0, 0.0]
+    """
+    return _wrap("beta", beta, np.pi)
+
+
+def _wrap(name, angle, period):
+    """Angles mapped to (-period/2, period/2] (within TOL of -period/2 counts as +period/2)."""
     from .tolerance import TOL
     from .validation import finite_array
-    a = finite_array("angle", angle)
-    w = np.mod(a + np.pi, 2 * np.pi) - np.pi
-    return np.where(np.isclose(w, -np.pi, atol=TOL, rtol=0), np.pi, w)
+    w = np.mod(finite_array(name, angle) + period / 2, period) - period / 2
+    return np.where(np.isclose(w, -period / 2, atol=TOL, rtol=0), period / 2, w)
 
 
 def point_row(d, L=1, backend=None):
