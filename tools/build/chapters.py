@@ -13,6 +13,7 @@ import re
 from pathlib import Path
 
 from .inputs import FigureMeta
+from .markup import text_of
 
 __all__ = ["DROP_TAGS", "KEEP_MIMES", "chapter_cells"]
 
@@ -77,7 +78,7 @@ def chapter_cells(nb, figures: list[FigureMeta]) -> list:
         elif c.cell_type == "code":
             n = nbformat.v4.new_code_cell(c.source)
             for o in map(_output, c.get("outputs", [])):
-                png = o and "".join(o["data"].get("image/png", "")).replace("\n", "")
+                png = o and text_of(o["data"].get("image/png", "")).replace("\n", "")
                 if png and png in shown:
                     f = shown[png]
                     o = {"output_type": "display_data", "metadata": {},

@@ -71,7 +71,7 @@ def _execute_one(t: Tree, nb: Path, key: str) -> str | None:
         say("execute", f"FAILED {nb.name}", t0)
         err = "\n".join(l for l in p.stderr.splitlines() if not l.startswith("[IPKernelApp] WARNING"))
         return strip_ansi(err.strip() or p.stdout.strip() or f"exit code {p.returncode}")
-    stamp.write(key, [out])
+    stamp.write(key, [out], info={"seconds": round(time.perf_counter() - t0, 1)})
     say("execute", nb.name, t0)
     return None
 
@@ -121,6 +121,10 @@ def execute(t: Tree | None = None, workers: int = WORKERS, merge: bool = True,
         wh = wmr_hash(t)
         failures: dict[str, str] = {}
         if todo:
+            # longest first (as long as the last run took; unknown first): the last to finish
+            # is then a short one, and the two workers end together
+            last = {nb: Stamp(t.notebook_stamp(nb)).info().get("seconds", float("inf")) for nb in todo}
+            todo = sorted(todo, key=lambda nb: -last[nb])
             with ThreadPoolExecutor(max_workers=max(1, workers)) as pool:
                 futs = {nb.name: pool.submit(_execute_one, t, nb, notebook_key(t, nb, wh)) for nb in todo}
                 for name, f in futs.items():
@@ -135,7 +139,7 @@ def execute(t: Tree | None = None, workers: int = WORKERS, merge: bool = True,
         say("execute", f"{len(todo)} executed, {len(nbs) - len(todo)} cached", t0)
         if merge:
             merge_ledger(t, force=bool(todo))
-        return [nb.name for nb in todo]
+        return sorted(nb.name for nb in todo)
 
 
 def _module_present(t: Tree, mod: str) -> bool:

@@ -43,6 +43,19 @@ def formula(e: Entry, field: str) -> str:
     return ts.display(body) if e.is_equation else body
 
 
+def _verdict_table(entries: list[Entry], first: tuple[str, float], printed: str, corrected: str, cls: str):
+    """One table for errata and failed claims: a row (name, section, verdict, why) and under it
+    the printed and the true statement, each beside its label."""
+    body = []
+    for e in entries:
+        name = link(e) if e.is_equation else link(e, claim_name(e))
+        body.append({"cells": [f"**{name}**", _section(e), f"*{e.verdict}*", e.why or e.note], "end": False})
+        body.append({"cells": [f"*{printed}*", formula(e, "printed")], "span": True, "end": False})
+        body.append({"cells": [f"*{corrected}*", formula(e, "corrected")], "span": True, "end": True})
+    rest = 1.0 - first[1] - 0.2
+    return ts.table([first, ("Paper", 0.1), ("Verdict", 0.1), ("Why", rest)], body, cls=cls)
+
+
 def errata(inp: Inputs) -> list:
     rows = inp.errata()
     head = ("# Errata\n\n"
@@ -53,14 +66,7 @@ def errata(inp: Inputs) -> list:
                "derivation in Part II." if rows else "Every numbered equation of the paper holds as printed."))
     cells = [ts.markdown(head)]
     if rows:
-        body = []
-        for e in rows:
-            why = e.why or e.note
-            body.append({"cells": [f"**{link(e)}**", _section(e), f"*{e.verdict}*", why], "end": False})
-            body.append({"cells": ["*printed*", formula(e, "printed")], "span": True, "end": False})
-            body.append({"cells": ["*corrected*", formula(e, "corrected")], "span": True, "end": True})
-        cells.append(ts.table([("Equation", 0.13), ("Paper", 0.1), ("Verdict", 0.1), ("Why", 0.67)], body,
-                              cls="errata"))
+        cells.append(_verdict_table(rows, ("Equation", 0.13), "printed", "corrected", "errata"))
     return cells
 
 
@@ -68,18 +74,12 @@ def failed_claims(inp: Inputs) -> list:
     rows = inp.failed_claims()
     head = ("# Claims that fail\n\n"
             + (f"Besides its equations, the paper states results in words. Of the {len(inp.claims())} such claims "
-               f"this edition checks by computation, {words(len(rows))} do not hold. For each: what the paper "
-               "says, what is true, and the computation that shows it." if rows else
+               f"this edition checks by computation, {words(len(rows))} {verb(len(rows), 'does', 'do')} not hold. "
+               "For each: what the paper says, what is true, and the computation that shows it." if rows else
                "Every claim of the text that this edition checks holds."))
     cells = [ts.markdown(head)]
     if rows:
-        body = []
-        for e in rows:
-            body.append({"cells": [f"**{link(e, claim_name(e))}**", _section(e), f"*{e.verdict}*", e.why or e.note],
-                         "end": False})
-            body.append({"cells": ["*the paper*", formula(e, "printed")], "span": True, "end": False})
-            body.append({"cells": ["*what is true*", formula(e, "corrected")], "span": True, "end": True})
-        cells.append(ts.table([("Claim", 0.2), ("Paper", 0.1), ("Verdict", 0.1), ("Why", 0.6)], body, cls="claims"))
+        cells.append(_verdict_table(rows, ("Claim", 0.2), "the paper", "what is true", "claims"))
     return cells
 
 

@@ -2,7 +2,7 @@
 
 Markdown (cells, outputs, table cells, captions) is converted by one pandoc call
 (:class:`~tools.build.markup.Batch`); nbconvert renders the page with the ``wmr_html`` template
-(code highlighted and collapsed); then the contents sidebar is built from the headings, ids are
+(code collapsed); then the contents sidebar is built from the headings, ids are
 made unique and every internal link is checked. MathJax is the pinned ``django-static-mathjax``
 bundle, inlined gzip-compressed (the page stays under 4 MB).
 """
@@ -18,7 +18,7 @@ from pathlib import Path
 from . import typeset as ts
 from .files import atomic_write
 from .log import BuildError, say
-from .markup import Batch, math_body
+from .markup import Batch, math_body, text_of
 from .paths import TEMPLATES
 
 __all__ = ["export_html", "mathjax_gz", "navigation", "unique_ids", "broken_links"]
@@ -59,9 +59,9 @@ def _prepare(nb, batch: Batch):
             for o in c.outputs:
                 data = o.get("data", {})
                 if "text/markdown" in data:
-                    h = batch.add(_text(data["text/markdown"]))
+                    h = batch.add(text_of(data["text/markdown"]))
                 elif "text/latex" in data:
-                    tex = _text(data["text/latex"])
+                    tex = text_of(data["text/latex"])
                     body = math_body(tex)
                     h = (f'<div class="math display">\\[{html.escape(body, quote=False)}\\]</div>' if body is not None
                          else batch.add(tex))
@@ -71,10 +71,6 @@ def _prepare(nb, batch: Batch):
                 n.outputs.append(nbformat.v4.new_output("display_data", data={"text/html": h}))
             out.cells.append(n)
     return out
-
-
-def _text(v) -> str:
-    return v if isinstance(v, str) else "".join(v)
 
 
 def _fill(nb, batch: Batch) -> None:

@@ -15,7 +15,7 @@ import shutil
 from . import procs
 from .log import BuildError
 
-__all__ = ["READER", "Batch", "math_body", "tex_anchor_tokens", "tex_anchor_targets"]
+__all__ = ["READER", "Batch", "math_body", "text_of", "tex_anchor_tokens", "tex_anchor_targets"]
 
 READER = "gfm+tex_math_dollars"
 _SEP = "WMRFRAGMENT{:05d}"
@@ -102,6 +102,11 @@ def _unwrap(s: str, to: str) -> str:
         m = re.fullmatch(r"<p>(.*)</p>", s.strip(), re.S)
         return m.group(1) if m and "<p>" not in m.group(1) else s
     return s.strip()
+
+
+def text_of(value) -> str:
+    """A notebook's multi-line string field (a str, or a list of lines) as one string."""
+    return value if isinstance(value, str) else "".join(value)
 
 
 _MATH_ONLY = re.compile(r"^\s*(\$\$|\$|\\\[)(.*?)(\$\$|\$|\\\])\s*$", re.S)

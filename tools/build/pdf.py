@@ -22,7 +22,7 @@ from . import procs
 from . import typeset as ts
 from .files import atomic_write, temp_dir
 from .log import BuildError, say
-from .markup import Batch, math_body
+from .markup import Batch, math_body, text_of
 from .paths import TEMPLATES, Tree
 
 __all__ = ["export_pdf", "to_latex", "display_math", "wrap_tables", "breakable_code", "scaled_formulas", "fix_id", "UNICODE"]
@@ -85,10 +85,6 @@ def breakable_code(tex: str) -> str:
     return tex.replace(r"\_", r"\_\allowbreak{}")
 
 
-def _text(v) -> str:
-    return v if isinstance(v, str) else "".join(v)
-
-
 def to_latex(nb) -> tuple[str, dict]:
     """The report notebook as a LaTeX document, and the image files it includes (name -> bytes)."""
     import nbformat
@@ -107,14 +103,14 @@ def to_latex(nb) -> tuple[str, dict]:
             for o in c.outputs:
                 data = o.get("data", {})
                 if "text/markdown" in data:
-                    parts.append(batch.add(_text(data["text/markdown"])))
+                    parts.append(batch.add(text_of(data["text/markdown"])))
                 elif "text/latex" in data:
-                    tex = _text(data["text/latex"])
+                    tex = text_of(data["text/latex"])
                     body = math_body(tex)
                     parts.append(display_math(body) if body is not None else batch.add(tex))
                 elif "image/png" in data:
                     name = f"output-{len(files):04d}.png"
-                    files[name] = base64.b64decode(_text(data["image/png"]))
+                    files[name] = base64.b64decode(text_of(data["image/png"]))
                     parts.append(rf"\wmrimage{{{name}}}")
                 elif "image/svg+xml" in data:
                     parts.append(r"\emph{(an SVG image of the HTML report, not converted for the PDF)}")

@@ -61,15 +61,22 @@ class Stamp:
         data = self.read()
         return dict(data["outputs"]) if data else {}
 
-    def write(self, key: str, outputs) -> None:
-        """Record ``key`` and the current hash of each of ``outputs`` (which must exist)."""
+    def info(self) -> dict:
+        """Extra facts the step recorded (e.g. how long it took), even when the stamp is stale."""
+        data = self.read()
+        return dict(data.get("info") or {}) if data else {}
+
+    def write(self, key: str, outputs, info: dict | None = None) -> None:
+        """Record ``key`` and the current hash of each of ``outputs`` (which must exist), and
+        ``info`` (facts about the run that do not decide whether it is up to date)."""
         rec = {}
         for p in outputs:
             h = sha256_file(Path(p))
             if h is None:
                 raise FileNotFoundError(f"cannot stamp missing output {p}")
             rec[self._name(Path(p))] = h
-        atomic_write(self.path, json.dumps({"key": key, "outputs": rec}, indent=1, sort_keys=True) + "\n")
+        data = {"key": key, "outputs": rec, **({"info": info} if info else {})}
+        atomic_write(self.path, json.dumps(data, indent=1, sort_keys=True) + "\n")
 
     def clear(self) -> None:
         self.path.unlink(missing_ok=True)

@@ -17,6 +17,7 @@ With isotropic Jacobians these reduce to the paper's (49)-(50) and (55)-(57).
 """
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 
 import numpy as np
@@ -51,74 +52,76 @@ class Solution:
 
 
 @dataclass(frozen=True)
-class _UnitConstants:
-    """What the kernels need of one unit: its rows of J1, L_i, E L_i, L_i^+ (numbers), rate slice."""
+class _Constants:
+    r"""What the kernels need of a robot, as matrices over all units (numbers).
 
-    J1: np.ndarray              # (2, 3): [E d_i 1] (5)
+    ``J1`` (2w, 3); ``pinv_J1`` (3, 2w), column-scaled (:func:`~wmr.analysis.linalg.pinv_columns`);
+    ``L``, ``EL`` (2w, n_rates): the block diagonals of the units' :math:`\mathbf L_i` and
+    :math:`\mathbf E\mathbf L_i`, so that :math:`\mathbf J_2(\boldsymbol\beta)\dot{\boldsymbol\theta}` is
+    ``rotated((cos, sin), L @ theta, EL @ theta)`` with each unit's cosine and sine repeated over
+    its two rows; ``Lp`` (n_rates, 2w), the block diagonal of the :math:`\mathbf L_i^+`; ``dual``,
+    (unit, first rate, :math:`2b/r`) of each dual wheel; ``chunk``, configurations per chunk.
+    """
+
+    J1: np.ndarray
+    pinv_J1: np.ndarray
+    full_rank: bool
     L: np.ndarray
     EL: np.ndarray
     Lp: np.ndarray
-    rates: slice
-    dual: float | None          # 2 b / r for a dual wheel
+    dual: tuple
+    chunk: int
 
 
 def _constants(robot):
-    r"""The constants of forward and inverse kinematics, from the model (once per call, not per configuration).
+    r"""The constants of forward and inverse kinematics, from the model at every call.
 
-    Returns ``(units, pinv_J1, full_rank)``: a :class:`_UnitConstants` per unit,
-    :math:`\mathbf J_1^+` (3, 2w), and whether :math:`\mathbf J_1` has rank 3.
+    Their pseudo-inverses are remembered by value (:func:`_pinv_rank`), so a call on one
+    configuration stays cheap (the simulation makes one per integration stage).
     """
     J1 = robot.J1(backend=NUMERIC)
-    units = []
+    w, n = robot.w, robot.n_rates
+    L, EL, Lp = np.zeros((2 * w, n)), np.zeros((2 * w, n)), np.zeros((n, 2 * w))
+    dual = []
     for i, (u, sl) in enumerate(zip(robot.wheels, robot.rate_slices)):
-        L, EL = (np.asarray(m, dtype=float) for m in u.block_terms(NUMERIC))   # B = cos L + sin E L
-        units.append(_UnitConstants(J1[2 * i:2 * i + 2], L, EL, pinv_columns(L), sl,
-                                    2 * u.b / u.r if u.kind == "dual" else None))
+        L[2 * i:2 * i + 2, sl], EL[2 * i:2 * i + 2, sl] = u.block_terms(NUMERIC)   # B = cos L + sin E L
+        Lp[sl, 2 * i:2 * i + 2] = _pinv_rank(L[2 * i:2 * i + 2, sl])[0]
+        if u.kind == "dual":
+            dual.append((i, sl.start, 2 * u.b / u.r))
     # J1's psi_dot column is a length, the others pure numbers: rank and pseudo-inverse with the
     # columns scaled (wmr.model.tolerance), so a robot 1e300 or 1e-300 in size is still determined
-    return tuple(units), pinv_columns(J1), bool(rank(J1) == 3)
+    pinv_J1, rank_J1 = _pinv_rank(J1)
+    # chunks small enough that the (2w x n) @ (n x chunk) products stay single-threaded in BLAS
+    chunk = int(max(256, min(8192, 2 ** 18 // max(1, 2 * w * max(n, 3)))))
+    return _Constants(J1, pinv_J1, rank_J1 == 3, L, EL, Lp, tuple(dual), chunk)
 
 
-def _lin(coefs, xs):
-    """``sum_j coefs[j] * xs[j]`` over the non-zero coefficients (``None`` when all are zero)."""
-    acc = None
-    for a, x in zip(coefs, xs):
-        if a == 0.0 or x is None:
-            continue
-        term = x * a
-        acc = term if acc is None else np.add(acc, term, out=acc)
-    return acc
+def _pinv_rank(M):
+    """``(pinv_columns(M), rank(M))`` of a small constant matrix, remembered by its value.
+
+    The matrices come from the model at every call (so they are never stale); only what is
+    derived from them, two SVDs, is looked up.
+    """
+    M = np.ascontiguousarray(M, dtype=float)
+    return _pinv_rank_of(M.tobytes(), M.shape)
 
 
-def _rot(c, s, x, y):
-    """``c x + s y`` for two rows of a chunk (either may be ``None``, a zero row), through
-    :func:`~wmr.model.platform.rotated`: with ``y`` the image under E of ``x``, this is (11)."""
-    if x is None or y is None:
-        return None if x is None and y is None else (c * x if y is None else s * y)
-    return rotated((c, s), x, y, axes=0)
+@functools.lru_cache(maxsize=256)
+def _pinv_rank_of(data, shape):
+    M = np.frombuffer(data).reshape(shape)
+    P = pinv_columns(M)
+    P.setflags(write=False)
+    return P, int(rank(M))
 
 
-def _block_times(c, s, u, cols):
-    r"""The wheel block applied to the unit's rates: :math:`\mathbf B_i\dot{\boldsymbol\theta}_i =
-    \cos\beta_i\,\mathbf L_i\dot{\boldsymbol\theta}_i + \sin\beta_i\,\mathbf E\mathbf L_i\dot{\boldsymbol\theta}_i`,
-    a pair of (k,) arrays (x and y rows; ``None`` for a zero row)."""
-    return [_rot(c, s, _lin(Lrow, cols), _lin(ELrow, cols)) for Lrow, ELrow in zip(u.L, u.EL)]
+def _wheel_rows(c, s):
+    """Each unit's cosine and sine repeated over its two rows: (w, k) -> (2w, k) each."""
+    return np.repeat(c, 2, axis=0), np.repeat(s, 2, axis=0)
 
 
-def _max_abs(acc, xs):
-    """Running element-wise maximum of ``|x|`` over the arrays ``xs`` (``None`` entries skipped)."""
-    for x in xs:
-        if x is not None:
-            acc = np.abs(x) if acc is None else np.maximum(acc, np.abs(x), out=acc)
-    return acc
-
-
-def _admissible(res_max, term_max, k):
-    """``max|res| <= TOL * max|terms|``, the (relative) rule of near_zero, per configuration."""
-    if res_max is None:
-        return np.ones(k, dtype=bool)
-    big = np.zeros(k) if term_max is None else term_max
-    return res_max <= TOL * big
+def _admissible(res, terms):
+    """``max|res| <= TOL * max|terms|`` per configuration (columns of (2w, k) arrays): near_zero's rule."""
+    return np.abs(res).max(axis=0) <= TOL * np.abs(terms).max(axis=0)
 
 
 def _finite(name, given, *results):
@@ -131,11 +134,6 @@ def _finite(name, given, *results):
 def _flat(batch, *arrays):
     """Broadcast arrays ``(..., k_j)`` to a common batch and flatten it: (N, k_j) each."""
     return [np.broadcast_to(a, batch + a.shape[-1:]).reshape(-1, a.shape[-1]) for a in arrays]
-
-
-def _columns(X, a, b):
-    """Rows ``a .. b-1`` of ``X (N, m)`` as m contiguous (b - a,) arrays."""
-    return list(np.ascontiguousarray(X[a:b].T))
 
 
 @np.errstate(over="ignore", invalid="ignore")        # overflow is checked on the results (_finite)
@@ -177,8 +175,8 @@ def forward(robot, beta, rates):
     robot = V.numeric_robot(robot)
     beta = V.finite_array("beta", beta, last=robot.w)
     rates = V.finite_array("rates", rates, last=robot.n_rates)
-    units, pinv, full_rank = _constants(robot)
-    if not full_rank:
+    K = _constants(robot)
+    if not K.full_rank:
         raise ValueError(
             f"robot has J1 of rank < 3 (fewer than two distinct mount points: {robot.mount_points.tolist()}): "
             "the twist is not determined")
@@ -187,27 +185,17 @@ def forward(robot, beta, rates):
     N, w = b.shape[0], robot.w
     t, res, adm = np.empty((N, 3)), np.empty((N, 2 * w)), np.empty(N, dtype=bool)
 
-    @np.errstate(over="ignore", invalid="ignore")      # (per thread: the chunks run on the pool)
     def chunk(a, z):
-        c, s = cos_sin(np.ascontiguousarray(b[a:z].T))
-        cols = _columns(th, a, z)
-        rhs = []                                            # J2 theta_dot (21), unit by unit
-        for i, u in enumerate(units):
-            rhs += _block_times(c[i], s[i], u, cols[u.rates])
-        tw = [_lin(P_row, rhs) for P_row in pinv]           # t = J1^+ J2 theta_dot
-        tw = [np.zeros(z - a) if x is None else x for x in tw]
-        t[a:z] = np.stack(tw, axis=1)
-        big = worst = None
-        for i, u in enumerate(units):                       # J1 t - J2 theta_dot: [E d_i 1] t - B_i theta_i
-            vx, vy = (_lin(row, tw) for row in u.J1)
-            rx = vx if rhs[2 * i] is None else np.subtract(vx, rhs[2 * i], out=vx)
-            ry = vy if rhs[2 * i + 1] is None else np.subtract(vy, rhs[2 * i + 1], out=vy)
-            res[a:z, 2 * i], res[a:z, 2 * i + 1] = rx, ry
-            worst = _max_abs(worst, (rx, ry))
-            big = _max_abs(big, rhs[2 * i:2 * i + 2])
-        adm[a:z] = _admissible(worst, big, z - a)
+        # configurations are columns here: (rows, k) arrays
+        c, s = _wheel_rows(*cos_sin(b[a:z].T))
+        th_k = th[a:z].T
+        rhs = rotated((c, s), K.L @ th_k, K.EL @ th_k, axes=0)   # J2 theta_dot = sum_i R(beta_i) L_i theta_i (21)
+        t_k = K.pinv_J1 @ rhs                               # t = J1^+ J2 theta_dot
+        r_k = K.J1 @ t_k
+        r_k -= rhs                                          # J1 t - J2 theta_dot
+        t[a:z], res[a:z], adm[a:z] = t_k.T, r_k.T, _admissible(r_k, rhs)
 
-    for_chunks(chunk, N)
+    for_chunks(chunk, N, K.chunk)
     _finite("rates", rates, t, res)
     return Solution(t.reshape(batch + (3,)), res.reshape(batch + (2 * w,)), adm.reshape(batch))
 
@@ -257,7 +245,7 @@ def inverse(robot, beta, twist, beta_dot=None):
     arrays = [beta, twist]
     if beta_dot is not None:
         arrays.append(V.finite_array("beta_dot", beta_dot, last=robot.w))
-    units, _, _ = _constants(robot)
+    K = _constants(robot)
     w = robot.w
     batch = V.batch_shape(dict(zip(("beta", "twist", "beta_dot"), arrays)))
     flat = _flat(batch, *arrays)
@@ -265,34 +253,23 @@ def inverse(robot, beta, twist, beta_dot=None):
     N = b.shape[0]
     rates, res, adm = np.empty((N, robot.n_rates)), np.empty((N, 2 * w)), np.empty(N, dtype=bool)
 
-    @np.errstate(over="ignore", invalid="ignore")      # (per thread: the chunks run on the pool)
     def chunk(a, z):
-        c, s = cos_sin(np.ascontiguousarray(b[a:z].T))
-        t = _columns(tw, a, z)
-        psi = t[0]
-        big = worst = None
-        for i, u in enumerate(units):
-            vx, vy = (_lin(row, t) for row in u.J1)         # (5): v_i = [E d_i 1] t
-            # R(beta_i)^T v_i = (c v_x + s v_y, c v_y - s v_x) = R(-beta_i) v_i (11)
-            lx, ly = _rot(c[i], s[i], vx, vy), _rot(c[i], s[i], vy, -vx)
-            th = [_lin(row, (lx, ly)) for row in u.Lp]      # L_i^+ R^T v_i
-            th = [np.zeros(z - a) if x is None else x for x in th]
-            if u.dual is not None:
-                # free differential rate fixed by the steering wanted: phi_dot = psi_dot + beta_dot,
-                # theta_1 - theta_2 = -(2b/r) phi_dot
-                half = 0.5 * u.dual * (psi if bd is None else psi + bd[a:z, i])
-                th[0] -= half
-                th[1] += half
-            for j, x in enumerate(th):
-                rates[a:z, u.rates.start + j] = x
-            bx, by = _block_times(c[i], s[i], u, th)        # B_i theta_i
-            rx = vx - bx if bx is not None else vx.copy()   # J1 t - J2 theta_dot
-            ry = vy - by if by is not None else vy.copy()
-            res[a:z, 2 * i], res[a:z, 2 * i + 1] = rx, ry
-            worst = _max_abs(worst, (rx, ry))
-            big = _max_abs(big, (vx, vy))
-        adm[a:z] = _admissible(worst, big, z - a)
+        # configurations are columns here: (rows, k) arrays
+        c, s = _wheel_rows(*cos_sin(b[a:z].T))
+        v = K.J1 @ tw[a:z].T                                # (5): v_i = [E d_i 1] t, (2w, k)
+        Ev = np.empty_like(v)                               # E v_i, unit by unit
+        Ev[0::2], Ev[1::2] = -v[1::2], v[0::2]
+        local = rotated((c, -s), v, Ev, axes=0)             # R(beta_i)^T v_i = R(-beta_i) v_i (11)
+        th = K.Lp @ local                                   # theta_i = L_i^+ R^T v_i
+        for i, j, ratio in K.dual:
+            # free differential rate fixed by the steering wanted: phi_dot = psi_dot + beta_dot,
+            # theta_1 - theta_2 = -(2b/r) phi_dot
+            half = 0.5 * ratio * (tw[a:z, 0] if bd is None else tw[a:z, 0] + bd[a:z, i])
+            th[j] -= half
+            th[j + 1] += half
+        r_k = v - rotated((c, s), K.L @ th, K.EL @ th, axes=0)   # J1 t - J2 theta_dot
+        rates[a:z], res[a:z], adm[a:z] = th.T, r_k.T, _admissible(r_k, v)
 
-    for_chunks(chunk, N)
+    for_chunks(chunk, N, K.chunk)
     _finite("twist", twist, rates, res)
     return Solution(rates.reshape(batch + (robot.n_rates,)), res.reshape(batch + (2 * w,)), adm.reshape(batch))
