@@ -27,7 +27,7 @@ TEX_DEBS := texlive-xetex texlive-fonts-recommended texlive-plain-generic \
             texlive-latex-extra lmodern fonts-lmodern pandoc poppler-utils
 TEX_CMDS := xelatex pandoc pdftotext pdfinfo
 
-.PHONY: help venv tex test report figures notebooks bench clean lock
+.PHONY: help venv tex test report figures notebooks student bench clean lock
 
 help: ## show this help
 	@echo "wmr — reproducible edition of Leow, Low & Loh (2002)"
@@ -80,6 +80,9 @@ report: venv tex ## build/report.html + build/report.pdf (cached: < 1 s when not
 
 test: venv tex ## execute notebooks, pytest, then fail if the build modified tracked files
 	@$(BUILD) test
+
+student: venv ## build/student/*.ipynb: the chapters without worked solutions (RUN=1: also run them)
+	@$(VPY) tools/student.py $(if $(RUN),--run,)
 
 bench: venv ## time the batched kernels against floors and peers (tools/bench.py)
 	@$(VPY) tools/bench.py

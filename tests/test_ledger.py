@@ -1,107 +1,182 @@
-"""wmr.paper.ledger: recording verdicts, writing fragments, merging and reporting problems."""
+"""wmr.paper.ledger: verdicts computed from findings, fragments, merging, problems, Markdown fields."""
+import csv
 import math
 
 import pytest
 
 from wmr.paper import ledger as LG
+from wmr.paper.ledger import Finding
 
 
-def full_ledger(notebook="nb", skip=()):
+def ok(id, **kw):
+    return Finding(str(id), True, "the printed form is proven (SymPy)", 0.0, **kw)
+
+
+def refuted(id, **kw):
+    args = dict(corrected=r"\dot\phi_i = x", corrected_holds=True, severity="wrong", why="it is off by $\\dot\\psi$")
+    args.update(kw)
+    return Finding(str(id), False, "printed refuted; corrected proven", 1e-15, **args)
+
+
+def full_ledger(notebook="nb"):
     led = LG.Ledger(notebook)
     for e in LG.EQUATIONS:
-        if e not in skip:
-            led.add(e, "s", "ok", f"eq {e}")
+        led.add(ok(e))
     return led
 
 
-def test_add_records_a_row():
-    led = LG.Ledger("01_x")
-    row = led.add(59, "4", "typo", r"\det J = ...", corrected=r"r^3 \det J", convention="paper numbering",
-                  symbolic_check=True, max_residual=1.5e-16, note="r = 1 in print")
-    assert row["id"] == "59" and row["symbolic_check"] == "pass" and row["max_residual"] == "1.500e-16"
-    assert row["notebook"] == "01_x" and set(row) == set(LG.COLUMNS)
-    assert led.add("claim-x", "5", "wrong", "p", corrected="c", symbolic_check=False)["symbolic_check"] == "fail"
-    table = led.table()
-    assert list(table.columns) == list(LG.COLUMNS) and len(table) == 2
+def test_verdict_is_computed_from_the_finding():
+    assert LG.grade(ok(2)) == "ok"
+    assert LG.grade(refuted(15)) == "wrong"
+    assert LG.grade(refuted(42, severity="typo")) == "typo"
+    # a changed transcription that now holds re-grades the row, whatever severity the check names
+    assert LG.grade(Finding("42", True, "proven", 0.0, corrected="d^2", corrected_holds=True, severity="typo")) == "ok"
 
 
-@pytest.mark.parametrize("kwargs, words", [
-    (dict(verdict="maybe"), ["verdict", "'maybe'"]),
-    (dict(verdict="typo"), ["'5'", "corrected"]),
-    (dict(verdict="wrong", corrected="   "), ["'5'", "corrected"]),
-    (dict(max_residual=math.nan), ["max_residual", "NaN"]),
-    (dict(symbolic_check="fail"), ["symbolic_check", "'fail'"]),
+@pytest.mark.parametrize("kw, words", [
+    (dict(corrected=""), ["(15)", "refuted", "no corrected form"]),
+    (dict(corrected_holds=False), ["(15)", "no corrected form was proven"]),
+    (dict(severity="maybe"), ["(15)", "severity", "'maybe'"]),
+    (dict(why=""), ["(15)", "why"]),
 ])
-def test_add_rejects_bad_rows(kwargs, words):
-    args = dict(id="5", section="2", verdict="ok", printed="x")
-    args.update(kwargs)
+def test_refuted_without_proof_fails_loudly(kw, words):
     with pytest.raises(ValueError) as exc:
-        LG.Ledger("nb").add(**args)
+        LG.grade(refuted(15, **kw))
     assert all(w in str(exc.value) for w in words), str(exc.value)
+
+
+def test_printed_holds_must_be_a_bool():
+    with pytest.raises(TypeError, match="printed_holds"):
+        LG.grade(Finding("2", "yes", "x", 0.0))
+    with pytest.raises(TypeError, match="Finding"):
+        LG.grade({"id": "2"})
+
+
+def test_row_has_the_contract_columns_and_the_transcribed_text():
+    from wmr.paper import claim, printed
+    led = LG.Ledger("01_x")
+    row = led.add(refuted(15, severity="wrong"))
+    assert tuple(row) == LG.COLUMNS
+    assert row["kind"] == "equation" and row["section"] == printed(15).section and row["printed"] == printed(15).latex
+    assert row["verdict"] == "wrong" and row["printed_holds"] == "no" and row["anchor"] == "eq-15"
+    assert row["residual"] == "< 1e-12" and row["notebook"] == "01_x"
+    c = led.add(Finding("drift", True, "proven", 2.5e-7))
+    assert c["kind"] == "claim" and c["printed"] == claim("drift").text and c["anchor"] == "claim-drift"
+    assert c["residual"] == "2.5e-07" and c["corrected"] == "" and c["why"] == ""
+
+
+def test_ok_rows_drop_a_stale_correction():
+    row = LG.Ledger("nb").add(Finding("42", True, "proven", 0.0, corrected="d^2", corrected_holds=True,
+                                      severity="typo", why="sign"))
+    assert row["verdict"] == "ok" and row["corrected"] == "" and row["why"] == ""
+
+
+@pytest.mark.parametrize("finding, words", [
+    (Finding("2", True, "holds for psi_dot != 0", 0.0), ["check", "psi_dot", "!="]),
+    (Finding("2", True, "J^T J = 3*1", 0.0), ["check", "^T", "*"]),
+    (Finding("2", True, "ok", 0.0, convention="kappa <= 2"), ["convention", "Greek", "<="]),
+    (refuted(15, corrected=r"$x$"), ["corrected", "'$'"]),
+    (Finding("2", True, "ok", math.nan), ["residual", "nan"]),
+    (Finding("2", True, "ok", -1.0), ["residual", "-1.0"]),
+    (Finding("99", True, "ok", 0.0), ["(99)", "not transcribed"]),
+    (Finding("no-such-claim", True, "ok", 0.0), ["no-such-claim", "not transcribed"]),
+])
+def test_bad_rows_are_rejected_with_the_reason(finding, words):
+    with pytest.raises(ValueError) as exc:
+        LG.Ledger("nb").add(finding)
+    assert all(w in str(exc.value) for w in words), str(exc.value)
+
+
+def test_math_in_dollars_is_not_ascii_math():
+    assert LG.ascii_math(r"holds for $\dot\psi \neq 0$ and $\mathbf J^{\mathrm T}$ with `psi_dot` in code") == []
+    assert LG.ascii_math("the numeric check and a nucleus") == []            # words that start like Greek names
+    assert LG.ascii_math("beta_1 and kappa") and LG.ascii_math("a <=> b")
 
 
 def test_duplicate_id_rejected():
     led = LG.Ledger("nb")
-    led.add("7", "2", "ok", "x")
+    led.add(ok(7))
     with pytest.raises(ValueError, match="'7'.*already"):
-        led.add(7, "2", "ok", "y")
+        led.add(ok(7))
+
+
+def test_sentence_is_generated_from_the_row():
+    led = LG.Ledger("nb")
+    s = led.add(refuted(15, convention=r"$\beta_i$ relative")).sentence()
+    assert s.startswith("**Verdict (15): wrong.** It is off by $\\dot\\psi$.")
+    assert r"\tag*{(15) corrected}" in s and r"\dot\phi_i = x" in s and "*Convention:* $\\beta_i$ relative." in s
+    assert led.add(ok(2)).sentence().startswith("**Verdict (2): ok.** The printed form is proven (SymPy).")
 
 
 def test_write_read_round_trip(tmp_path):
     led = LG.Ledger("02_y")
-    led.add("20", "3", "ok", "a, with comma", note='quote " inside')
-    led.add("29", "3", "wrong", "b", corrected="c\nsecond line")
+    led.add(ok(20, note='a "quoted", comma'))
+    led.add(refuted(29))
     path = led.write(tmp_path)
     assert path == tmp_path / "ledger" / "02_y.csv"
-    assert not list((tmp_path / "ledger").glob("*.tmp"))
-    assert LG.read(path) == led.rows
-
-
-def test_output_dir_env(monkeypatch, tmp_path):
-    monkeypatch.setenv("WMR_FIGURES", str(tmp_path))
-    assert LG.output_dir() == tmp_path
-    path = full_ledger("only").write()
-    assert path.parent == tmp_path / "ledger"
-    monkeypatch.delenv("WMR_FIGURES")
-    assert LG.output_dir().name == "figures"
+    assert not list((tmp_path / "ledger").glob("*.tmp")) and not list((tmp_path / "ledger").glob(".*"))
+    assert LG.read(path) == [dict(r) for r in led.rows]
+    with pytest.raises(TypeError, match="directory"):
+        led.write(None)
 
 
 def test_merge_orders_and_reports(tmp_path):
     a, b = LG.Ledger("a"), LG.Ledger("b")
-    for e in ("10", "2", "claim-z"):
-        a.add(e, "s", "ok", "p")
-    b.add("3", "s", "ok", "p", symbolic_check=False)
-    b.add("claim-a", "s", "ok", "p")
-    b.add("10", "s", "ok", "again")
+    for e in ("10", "2"):
+        a.add(ok(e))
+    a.add(Finding("drift", True, "ok", 0.0))
+    b.add(ok(3))
+    b.add(Finding("omnidirectional", True, "ok", 0.0))
+    b.add(ok(10))
     a.write(tmp_path)
     b.write(tmp_path)
     path, rows, probs = LG.merge(tmp_path)
     assert path == tmp_path / "ledger.csv" and LG.read(path) == rows
-    assert [r["id"] for r in rows] == ["2", "3", "10", "10", "claim-a", "claim-z"]
+    assert [r["id"] for r in rows] == ["2", "3", "10", "10", "drift", "omnidirectional"]
     text = "\n".join(probs)
-    assert "missing equations: 4 5" in text and "duplicated rows: 10" in text and "row 3: failing check" in text
+    assert "missing equations: 4 5" in text and "duplicated rows: 10" in text
 
 
 def test_problems_on_hand_edited_rows():
-    rows = [dict(r, verdict="typo", corrected="") if r["id"] == "8" else r for r in full_ledger().rows]
+    rows = [dict(r) for r in full_ledger().rows]
     rows[0]["verdict"] = "fine"
-    probs = LG.problems(rows)
-    assert any("row 8: judged typo without a corrected form" in p for p in probs)
-    assert any("row 2: bad verdict 'fine'" in p for p in probs)
+    rows[1]["verdict"] = "typo"
+    rows[2]["anchor"] = "eq-x"
+    del rows[3]["kind"]
+    probs = "\n".join(LG.problems(rows))
+    assert "row 2: bad verdict 'fine'" in probs
+    assert "row 3: verdict 'typo' but printed_holds 'yes'" in probs and "row 3: judged typo without" in probs
+    assert "row 4: anchor 'eq-x'" in probs and "row 5: lacks the columns ['kind']" in probs
 
 
 def test_main_exit_status(tmp_path, capsys):
     full_ledger().write(tmp_path)
     assert LG.main([str(tmp_path)]) == 0
     assert "ledger: 64 rows" in capsys.readouterr().out
-    LG.Ledger("extra").write(tmp_path)
     bad = LG.Ledger("bad")
-    bad.add("claim", "s", "ok", "p", symbolic_check=False)
+    bad.add(ok(2))
     bad.write(tmp_path)
     assert LG.main([str(tmp_path)]) == 1
-    assert "failing check" in capsys.readouterr().err
+    assert "duplicated rows: 2" in capsys.readouterr().err
 
 
-def test_merge_creates_missing_directory(tmp_path):
-    path, rows, probs = LG.merge(tmp_path / "new")
-    assert path.exists() and rows == [] and probs == ["missing equations: " + " ".join(LG.EQUATIONS)]
+def test_main_defaults_to_the_project_of_the_environment(tmp_path, monkeypatch, capsys):
+    full_ledger().write(tmp_path / "figures")
+    monkeypatch.setenv("WMR_PROJECT", str(tmp_path))
+    assert LG.main([]) == 0
+    assert (tmp_path / "figures" / "ledger.csv").exists()
+
+
+def test_committed_ledger_is_complete_and_clean():
+    """figures/ledger.csv (regenerated by the notebooks) has every equation, the contract's columns, computed verdicts."""
+    from pathlib import Path
+    path = Path(__file__).resolve().parents[1] / "figures" / "ledger.csv"
+    with open(path, newline="", encoding="utf-8") as f:
+        rows = list(csv.DictReader(f))
+    assert list(rows[0]) == list(LG.COLUMNS)
+    assert LG.problems(rows) == []
+    for r in rows:
+        fields = ("why", "convention", "check", "note") + (("printed", "corrected") if r["kind"] == "claim" else ())
+        assert not [LG.ascii_math(r[f]) for f in fields if LG.ascii_math(r[f])], r["id"]
+        if r["kind"] == "claim":
+            assert "$" in r["printed"] and (r["verdict"] == "ok" or "$" in r["corrected"]), r["id"]

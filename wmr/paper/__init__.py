@@ -7,6 +7,9 @@ Each printed form is registered with :func:`register` in the module of its secti
 each result from the model in :mod:`wmr` and compare it with the printed form, never the other
 way round.  Where the extracted text is garbled, the entry records the most plausible printed
 form and says so in ``garbled``.
+
+The claims of the text that the edition checks (sentences, not numbered equations) are
+registered the same way with :func:`register_claim` and read with :func:`claim`.
 """
 from __future__ import annotations
 
@@ -44,8 +47,9 @@ class Printed:
 
 
 PRINTED: dict = {}
+CLAIMS: dict = {}
 
-_MODULES = ("platform_wheels", "offset", "isotropy", "centred", "steering")
+_MODULES = ("platform_wheels", "offset", "isotropy", "centred", "steering", "conclusions")
 
 
 def register(id, section, latex, expr=None, garbled="", note="", **extra):
@@ -73,3 +77,59 @@ def printed(id):
     if id not in PRINTED:
         raise ValueError(f"equation ({id}) is not transcribed in wmr.paper")
     return PRINTED[id]
+
+
+@dataclass(frozen=True)
+class Claim:
+    """A claim of the paper's text, quoted (not a numbered equation).
+
+    Attributes
+    ----------
+    slug : str
+        Short id, e.g. ``"drift"``.
+    section : str
+        Section(s) of the paper, e.g. ``"4.2"`` or ``"5.2, 5.4.3"``.
+    text : str
+        The claim, quoted or closely paraphrased, Markdown with ``$...$`` math.
+    """
+
+    slug: str
+    section: str
+    text: str
+
+
+def register_claim(slug, section, text):
+    """Add a claim to :data:`CLAIMS` (each slug once).
+
+    Parameters
+    ----------
+    slug : str
+    section : str
+    text : str
+        Markdown with ``$...$`` math.
+
+    Returns
+    -------
+    Claim
+    """
+    if slug in CLAIMS:
+        raise ValueError(f"claim {slug!r} is registered twice")
+    CLAIMS[slug] = Claim(slug, section, text)
+    return CLAIMS[slug]
+
+
+def claim(slug):
+    """The claim ``slug`` as quoted.
+
+    Parameters
+    ----------
+    slug : str
+
+    Returns
+    -------
+    Claim
+    """
+    _load()
+    if slug not in CLAIMS:
+        raise ValueError(f"claim {slug!r} is not transcribed in wmr.paper; known: {sorted(CLAIMS)}")
+    return CLAIMS[slug]

@@ -14,7 +14,7 @@ from __future__ import annotations
 import sympy as sp
 
 from . import symbols as S
-from . import register
+from . import register, register_claim
 from .isotropy import D
 
 SECTION_KIN, SECTION_MOB, SECTION_ISO = "5.1", "5.2", "5.3"
@@ -63,14 +63,14 @@ register(
     sp.Eq(F, sp.Matrix.hstack(
         sp.Matrix.vstack(*[sp.Matrix.hstack(_E * sp.Matrix(p), _I2) for p in D]),
         sp.diag(*[_R(b) * sp.Matrix([0, _r]) for b in S.beta])), evaluate=False),
-    garbled="the third block row prints a plain 1 for the identity 1 (2 x 2)",
+    garbled=r"the third block row prints a plain $1$ for the $2\times2$ identity $\mathbf 1$",
     note="three centred wheels, general mount points D; note the sign +r")
 
 register(
     "53", SECTION_MOB,
     r"\dot{\mathbf{q}} \equiv \begin{bmatrix}\dot\psi & \dot x & \dot y & \dot\theta_1 & \dot\theta_2 & \dot\theta_3\end{bmatrix}^{\mathrm{T}}",
     sp.Eq(q_dot, sp.Matrix([S.psi_dot, S.x_dot, S.y_dot, *S.theta_dot]), evaluate=False),
-    garbled="the text before it says 'q' for q-dot",
+    garbled=r"the text before it says $\mathbf q$ for $\dot{\mathbf q}$",
     note="definition: the column order of F in (52)")
 
 register(
@@ -96,14 +96,61 @@ register(
     note="definition of the singular configurations: the angles beta_i that solve it")
 
 _s3 = sp.sqrt(3)
+#: the printed (59) as terms (coefficient, function, signs of beta_1, beta_2, beta_3): the SymPy form and its
+#: LaTeX are both built from this one list (:func:`det_J_59`, :func:`det_J_59_latex`)
+TERMS_59 = ((-_s3 / 2, sp.cos, (1, -1, -1)), (sp.Rational(3, 4), sp.sin, (1, -1, 1)),
+            (-sp.Rational(3, 4), sp.sin, (1, 1, -1)), (_s3 / 4, sp.cos, (1, 1, -1)), (_s3 / 4, sp.cos, (1, -1, 1)))
+
+
+def det_J_59(terms=TERMS_59):
+    """The right side of (59) as printed, from its terms.
+
+    Parameters
+    ----------
+    terms : sequence of (coefficient, function, signs)
+        Default :data:`TERMS_59`.
+
+    Returns
+    -------
+    sympy.Expr
+        In :data:`wmr.paper.symbols.beta`.
+    """
+    return sum(c * f(sum(sg * b for sg, b in zip(signs, S.beta))) for c, f, signs in terms)
+
+
+def det_J_59_latex(lhs=r"\det(\mathbf{J})", factor="", per_line=3, terms=TERMS_59):
+    r"""LaTeX of (59) from its terms, broken by hand into lines of ``per_line`` terms (``aligned``).
+
+    Parameters
+    ----------
+    lhs : str
+        LaTeX of the left side.
+    factor : str, optional
+        A factor of the whole right side, e.g. ``"r^3"`` (then the terms are in ``\Big( \Big)``).
+    per_line : int
+        Terms per line.
+    terms : sequence of (coefficient, function, signs)
+        Default :data:`TERMS_59`.
+
+    Returns
+    -------
+    str
+        A LaTeX body (no ``$``).
+    """
+    parts = []
+    for k, (c, f, signs) in enumerate(terms):
+        arg = "".join(("" if j == 0 and sg > 0 else ("+" if sg > 0 else "-")) + rf"\beta_{j + 1}" for j, sg in enumerate(signs))
+        sign = "-" if c < 0 else ("+" if k else "")
+        parts.append(rf"{sign} {sp.latex(abs(c))}\{f.__name__}({arg})".strip())
+    lines = [" ".join(parts[i:i + per_line]) for i in range(0, len(parts), per_line)]
+    open_, close = (rf"{factor}\Big(", r"\Big)") if factor else ("", "")
+    return (r"\begin{aligned}" + lhs + " = " + open_ + "&" + r"\\ &".join(lines) + close + r"\end{aligned}")
+
+
 register(
     "59", SECTION_ISO,
-    r"\det(\mathbf{J}) = -\frac{\sqrt{3}}{2}\cos(\beta_1-\beta_2-\beta_3) + \frac{3}{4}\sin(\beta_1-\beta_2+\beta_3) "
-    r"- \frac{3}{4}\sin(\beta_1+\beta_2-\beta_3) + \frac{\sqrt{3}}{4}\cos(\beta_1+\beta_2-\beta_3) "
-    r"+ \frac{\sqrt{3}}{4}\cos(\beta_1-\beta_2+\beta_3)",
-    sp.Eq(det_J, -_s3 / 2 * sp.cos(b1 - b2 - b3) + sp.Rational(3, 4) * sp.sin(b1 - b2 + b3)
-          - sp.Rational(3, 4) * sp.sin(b1 + b2 - b3) + _s3 / 4 * sp.cos(b1 + b2 - b3)
-          + _s3 / 4 * sp.cos(b1 - b2 + b3)),
+    det_J_59_latex(),
+    sp.Eq(det_J, det_J_59()),
     note="computed with Maple in the paper, for the three-wheel robot of Section 5 (placement and numbering not "
          "stated). Followed by the list of zeros in extra['singular']; (v) is a geometric statement (None)",
     singular={
@@ -118,3 +165,22 @@ register(
         "iii": ((1, 2), (-60, 120)),
         "iv": ((2, 3), (0, 180)),
     })
+
+
+# --- claims of Sections 5.2-5.3 -----------------------------------------------------------------
+register_claim(
+    "mobility-centred", SECTION_MOB,
+    r"The rank of the functional matrix $\mathbf F$ is 5 when the WMR is in translation or in rotation. The "
+    r"resulting mobility of this WMR is unity [...] provided these angles satisfy the coordination condition "
+    r"[the wheel axes converge to a single point, possibly at infinity].")
+
+register_claim(
+    "singular-list-complete", SECTION_ISO,
+    r"$\det(\mathbf J)$ vanishes for the following configurations: (i) $\beta_1 = \beta_2 = \beta_3$; "
+    r"(ii) $\beta_1 = \beta_3 = 60^\circ$ or $-120^\circ$; (iii) $\beta_1 = \beta_2 = -60^\circ$ or $120^\circ$; "
+    r"(iv) $\beta_2 = \beta_3 = 0^\circ$ or $180^\circ$; and (v) planes of all three wheels intersect.")
+
+register_claim(
+    "singular-v-immobile", SECTION_ISO,
+    r"[In (v)] the planes of all three wheels intersect at a single point $D_P$ [...] The axles of the three wheels "
+    r"intersect at three different locations. Under this condition, the WMR has lost all its mobility.")

@@ -16,7 +16,7 @@ from __future__ import annotations
 import sympy as sp
 
 from . import symbols as S
-from . import register
+from . import register, register_claim
 
 SECTION = "4.3"
 
@@ -51,7 +51,7 @@ def _R(angle):
 register(
     "30", SECTION, r"\kappa \equiv \frac{\sigma_l}{\sigma_s}",
     sp.Eq(kappa, sigma_l / sigma_s),
-    garbled=r"extraction prints \sigma_1; the text and the nomenclature call it the largest singular value \sigma_l",
+    garbled=r"the extraction prints $\sigma_1$; the text and the nomenclature call it the largest singular value $\sigma_l$",
     note="definition of the condition number of an m x n matrix")
 
 register(
@@ -171,3 +171,31 @@ register(
     "50", SECTION, r"\dot{\boldsymbol{\theta}} = \frac{1}{r^2}\mathbf{J}_2^{\mathrm{T}}\mathbf{J}_{L1}\mathbf{t}_L",
     sp.Eq(theta_dot, J2.T * JL1 * tL / _r**2, evaluate=False),
     note="inverse kinematics under (39) and (48)")
+
+
+# --- claims of Section 4.3 ----------------------------------------------------------------------
+register_claim(
+    "isotropy-placement", SECTION,
+    r"For (35) and (36) to be true, the three offset wheels must be mounted at the vertices of an equilateral "
+    r"triangle, such that $\sum_i\mathbf d_i = \mathbf 0$ and the magnitudes of the vectors $\mathbf d_i$ are identical.")
+
+register_claim(
+    "isotropy-L", SECTION,
+    r"The value of $L$ is naturally selected to be the identical magnitude of vectors $\mathbf d_i$, to render "
+    r"$\mathbf J_{L1}$ isotropic.")
+
+register_claim(
+    "isotropy-d-equals-r", SECTION,
+    r"For $\mathbf J_2$ to be isotropic, we then have $d = r$ [...] the products $\mathbf J_2\mathbf J_2^{\mathrm T}$ "
+    r"and $\mathbf J_2^{\mathrm T}\mathbf J_2$ are identical if $d = r$.")
+
+register_claim(
+    "isotropy-d-zero", "4.3.3",
+    r"Isotropy [$d = r$] leads to a maximum drift and a maximum dead zone [...] isotropy is achieved at the expense "
+    r"of a large drift, if offset wheels are used.")
+
+register_claim(
+    "robust-control", "4.3.3, 5.3.2",
+    r"Robustness in the kinematic control can then be achieved if the wheel offset $d$ is equal to the radius $r$ "
+    r"of the wheel (Section 4.3.3). With both Jacobian matrices [$\mathbf J_{L1}$, $\mathbf J_2$] isotropic, "
+    r"robustness of the kinematic control is ensured (Section 5.3.2, centred wheels).")

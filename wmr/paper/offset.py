@@ -22,7 +22,7 @@ from __future__ import annotations
 import sympy as sp
 
 from . import symbols as S
-from . import register
+from . import register, register_claim
 from .platform_wheels import E, ONE, R, beta_i, d_i, phi_dot_i, theta_dot_i
 
 SECTION_KIN = "4.1"
@@ -99,10 +99,10 @@ register(
     r"\mathbf{0} & \mathbf{0} & \dots & \mathbf{R}_{bww}\tilde{\mathbf{p}}\end{bmatrix},\quad "
     r"\tilde{\mathbf{p}} = \begin{bmatrix}-d & 0\\ 0 & -r\end{bmatrix}",
     sp.Eq(_J1_3 * T_EXPLICIT, _J2_3 * _th_3, evaluate=False),
-    garbled=r"the rate vector is extracted as '[\dot\phi_1 \dot\phi_2 \dot\phi_2 \dots \dot\phi_w \dot\theta_w]^T'; "
-            r"reconstructed as [\dot\phi_1 \dot\theta_1 \dot\phi_2 \dot\theta_2 \dots \dot\phi_w \dot\theta_w]^T, "
-            r"the layout of (25) and the only one that matches the blocks R_bwi p~ acting on "
-            r"[\dot\phi_i, \dot\theta_i] in (20); the vertical dots of J1 are extracted as 'drawnowsigned'",
+    garbled=r"the rate vector is extracted as $[\dot\phi_1\ \dot\phi_2\ \dot\phi_2 \dots \dot\phi_w\ \dot\theta_w]^{\mathrm T}$; "
+            r"reconstructed as $[\dot\phi_1\ \dot\theta_1\ \dot\phi_2\ \dot\theta_2 \dots \dot\phi_w\ \dot\theta_w]^{\mathrm T}$, "
+            r"the layout of (25) and the only one that matches the blocks $\mathbf R_{bwi}\tilde{\mathbf p}$ acting on "
+            r"$[\dot\phi_i\ \dot\theta_i]^{\mathrm T}$ in (20); the vertical dots of $\mathbf J_1$ are extracted as 'drawnowsigned'",
     note="transcribed for w = 3 with general mount points D; the text adds: J1 is 2w x 3, J2 is 2w x 2w, "
          "t and theta_dot are 3D and 2w-D",
     J1=_J1_3, J2=_J2_3, t=T_EXPLICIT, theta_dot=_th_3,
@@ -171,3 +171,22 @@ register(
          "divides the 2-vector R_bwi [-phi_dot_i, 0]^T by the 2-vector d_i, which is not defined; stored term by "
          "term: psi_dot = (d/3) sum_i numerators[i] / divisors[i]",
     numerators=tuple(_drift_terms), divisors=tuple(sp.Matrix(p) for p in D))
+
+
+# --- claims of Section 4.2 ----------------------------------------------------------------------
+register_claim(
+    "mobility-offset", SECTION_MOB,
+    r"For a WMR with three active offset wheels, vector $\dot{\mathbf q}$ is 9D and the rank of matrix "
+    r"$\mathbf F$ is 6; thus $\nu(\mathbf F) = 3$ [...] the WMR at hand has full mobility and the WMR is "
+    r"omni-directional.")
+
+register_claim(
+    "drift", SECTION_MOB,
+    r"Equations (28) and (29) reveal a drift whenever the WMR is steered without driving "
+    r"[$\dot\theta_i = 0$, $i = 1, 2, 3$].")
+
+register_claim(
+    "dead-zone", SECTION_MOB,
+    r"When all the wheels are steered one full turn without driving, point $C$ will trace a circle whose radius "
+    r"equals the distance between point $C$ and point $C_f$, the centroid of the triangle whose vertices are the "
+    r"points of contact [...] $C_f$ remains fixed during steering. This distance $d$ is the offset of the wheel.")

@@ -67,9 +67,10 @@ register(
     r"\dot{\mathbf{p}}_i = \dot{\mathbf{c}} + \dot\psi\,\mathbf{E}\mathbf{d}_i \quad\text{as}\quad "
     r"\dot{\boldsymbol\psi}\times\mathbf{d}_i = \dot\psi\,\mathbf{E}\mathbf{d}_i, \quad i = 1 \text{ to } w",
     sp.Eq(p_dot_i, c_dot + S.psi_dot * E * d_vec, evaluate=False),
-    garbled=r"the extraction reads '\dot{p}_i = \dot{c}_w = \dot{c} + \dot\psi E d_i as \dot\psi \times d_i = ...'. "
-            r"'\dot{c}_w' is defined nowhere in the paper and is dropped (a mangled middle term); "
-            r"'\dot\psi \times d_i' is read as the angular velocity vector \dot\psi k crossed with d_i",
+    garbled=r"the extraction reads $\dot{\mathbf p}_i = \dot{\mathbf c}_w = \dot{\mathbf c} + \dot\psi\mathbf E\mathbf d_i$ as "
+            r"$\dot\psi\times\mathbf d_i = \dots$; $\dot{\mathbf c}_w$ is defined nowhere in the paper and is dropped (a "
+            r"mangled middle term); $\dot\psi\times\mathbf d_i$ is read as the angular velocity vector $\dot\psi\mathbf k$ "
+            r"crossed with $\mathbf d_i$",
     note="vector identity; transcribed in body-frame components, c_dot = [x_dot, y_dot] by (1)")
 
 register(
@@ -137,8 +138,8 @@ register(
 register(
     "13", SECTION_WHEEL, r"\dot{\mathbf{h}}_{i1} = -r\dot\theta_{i1}\,\mathbf{j}_i",
     sp.Eq(h_dot_i1, -S.r * theta_dot_i1 * j_i, evaluate=False),
-    garbled=r"the extraction prints a dotted \dot{\mathbf{j}}_i; read as the unit vector \mathbf{j}_i, as in "
-            r"(14) and (17) (a derivative of j_i has no place in a no-slip condition)",
+    garbled=r"the extraction prints a dotted $\dot{\mathbf j}_i$; read as the unit vector $\mathbf j_i$, as in "
+            r"(14) and (17) (a derivative of $\mathbf j_i$ has no place in a no-slip condition)",
     note="dual wheel, wheel 1")
 
 register(
@@ -149,8 +150,8 @@ register(
 register(
     "15", SECTION_WHEEL, r"\dot\beta_i = -\frac{r}{2b}\left(\dot\theta_{i1} - \dot\theta_{i2}\right)",
     sp.Eq(beta_dot_i, -S.r / (2 * S.b) * (theta_dot_i1 - theta_dot_i2)),
-    garbled="the extraction prints '2h' in the denominator; read as 2b (b = one-half the wheel separation, "
-            "the nomenclature and (16))",
+    garbled=r"the extraction prints $2h$ in the denominator; read as $2b$ ($b$ = one-half the wheel separation, "
+            r"the nomenclature and (16))",
     note="third no-slip constraint of the dual wheel; wheels 'mounted symmetrically about the center of the "
          "intermediate body at a distance b'")
 

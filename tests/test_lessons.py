@@ -1,0 +1,263 @@
+"""The chapters as lessons: committed without outputs, thin, anchored, with exercises whose checks can say no,
+a student edition without solutions that still runs, and output paths that follow the notebook, not the package."""
+from __future__ import annotations
+
+import csv
+import importlib.util
+import re
+from pathlib import Path
+
+import nbformat
+import numpy as np
+import pytest
+import sympy as sp
+
+import wmr
+from wmr.paper import exercises as X
+from wmr.paper import notebook as NB
+from wmr.paper import symbols as S
+
+ROOT = Path(__file__).resolve().parents[1]
+CHAPTERS = sorted((ROOT / "notebooks").glob("0[1-7]_*.ipynb"))
+PAPER_CHAPTERS = [p for p in CHAPTERS if p.name[:2] in {"01", "02", "03", "04", "05", "06"}]
+MAX_CELL_LINES = 12
+
+
+def cells(path, kind=None):
+    nb = nbformat.read(path, as_version=4)
+    return [c for c in nb.cells if kind is None or c.cell_type == kind]
+
+
+def tags(cell):
+    return set(cell.get("metadata", {}).get("tags", []))
+
+
+@pytest.mark.parametrize("path", CHAPTERS, ids=lambda p: p.name)
+def test_committed_notebook_has_no_outputs(path):
+    for i, c in enumerate(cells(path, "code")):
+        assert not c.outputs and c.execution_count is None, f"{path.name}: cell {i} carries outputs (commit it cleared)"
+
+
+@pytest.mark.parametrize("path", CHAPTERS, ids=lambda p: p.name)
+def test_chapter_is_thin_and_prints_nothing(path):
+    for c in cells(path, "code"):
+        n = len(c.source.splitlines())
+        assert n <= MAX_CELL_LINES, f"{path.name}: a code cell of {n} lines:\n{c.source}"
+        assert not re.search(r"\bprint\(|\bdisplay\(|DataFrame|\.to_frame\(", c.source), f"{path.name}: raw output in\n{c.source}"
+        assert "def " not in c.source or "widget" in tags(c), f"{path.name}: a helper defined in the chapter:\n{c.source}"
+
+
+def test_every_ledger_row_is_anchored_in_its_notebook():
+    with open(ROOT / "figures" / "ledger.csv", newline="", encoding="utf-8") as f:
+        rows = list(csv.DictReader(f))
+    anchors = {}
+    for path in PAPER_CHAPTERS:
+        for c in cells(path, "markdown"):
+            for a in re.findall(r'<a id="([^"]+)"></a>', c.source):
+                assert a not in anchors, f"anchor {a} twice ({anchors[a]}, {path.stem})"
+                anchors[a] = path.stem
+    for r in rows:
+        assert anchors.get(r["anchor"]) == r["notebook"], f"row {r['id']}: anchor {r['anchor']} not in {r['notebook']}"
+
+
+@pytest.mark.parametrize("path", PAPER_CHAPTERS, ids=lambda p: p.name)
+def test_equations_are_quoted_and_verdicts_are_generated(path):
+    md = "\n".join(c.source for c in cells(path, "markdown"))
+    assert not re.search(r"\*\*Verdict\b[^*\n]*\b(ok|typo|wrong)\b", md), f"{path.name}: a typed verdict in the prose"
+    code = "\n".join(c.source for c in cells(path, "code"))
+    assert "ch.record(" in code and "ch.close()" in code
+    ledger_cells = [c for c in cells(path, "code") if "ledger" in tags(c)]
+    assert len(ledger_cells) == 1 and "ch.close()" in ledger_cells[0].source
+
+
+@pytest.mark.parametrize("path", PAPER_CHAPTERS, ids=lambda p: p.name)
+def test_chapter_has_exercises_with_checks_and_worked_solutions(path):
+    ex = [c for c in cells(path, "code") if "exercise" in tags(c)]
+    sol = [c for c in cells(path, "code") if "solution" in tags(c)]
+    checks = {m for c in ex for m in re.findall(r"exercises\.(\w+)\(", c.source)} - {"describe_robot"}
+    assert len(checks) >= 2, f"{path.name}: exercises {checks}"
+    assert {m for c in sol for m in re.findall(r"exercises\.(\w+)\(", c.source)} == checks
+    assert any("describe_robot" in c.source or "my_robot" in c.source for c in ex), f"{path.name}: no 'your own robot' cell"
+    for c in ex:
+        if re.search(r"exercises\.\w+\(", c.source) and "my_robot" not in c.source:
+            assert "= None" in c.source, f"{path.name}: an exercise template without a placeholder:\n{c.source}"
+
+
+@pytest.mark.parametrize("path", CHAPTERS, ids=lambda p: p.name)
+def test_figures_are_shown_once_in_tagged_cells(path):
+    for c in cells(path, "code"):
+        shows = re.findall(r"ch\.figure\(\"(\w+)\"\)", c.source)
+        if shows:
+            assert "figure" in tags(c) and len(shows) == 1, f"{path.name}: {c.source}"
+
+
+def test_each_figure_is_computed_in_its_chapter():
+    where = {}
+    for path in CHAPTERS:
+        for c in cells(path, "code"):
+            for key in re.findall(r"ch\.figure\(\"(\w+)\"\)", c.source):
+                assert key not in where, f"{key} computed twice"
+                where[key] = path.name[:2]
+    assert where == {"conventions": "01", "fig07": "02", "fig08": "04", "fig09": "04", "fig10": "04", "fig11": "04",
+                     "fig12": "04", "detmap": "04", "fig13": "05"}
+
+
+# ----------------------------------------------------------------------------------------------- student edition
+def _student_tool():
+    spec = importlib.util.spec_from_file_location("student", ROOT / "tools" / "student.py")
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod
+
+
+def test_student_edition_has_no_solutions_and_still_runs():
+    tool = _student_tool()
+    out = ROOT / "build" / "student"
+    paths = tool.build(out=out)
+    assert [p.name for p in paths] == [p.name for p in CHAPTERS]
+    for p, src in zip(paths, CHAPTERS):
+        nb = nbformat.read(p, as_version=4)
+        assert not [c for c in nb.cells if "solution" in tags(c)]
+        assert not [c for c in nb.cells if c.cell_type == "code" and (c.outputs or c.execution_count)]
+        n_ex = sum("exercise" in tags(c) for c in cells(src))
+        assert sum("exercise" in tags(c) for c in nb.cells) == n_ex
+    failed = {k: v for k, v in tool.run(paths, out=out).items() if v}
+    assert not failed, "student notebooks fail:\n" + "\n".join(f"{k}: {v[-2000:]}" for k, v in failed.items())
+    done = nbformat.read(out / ".run" / paths[0].name, as_version=4)
+    text = "\n".join(o.get("data", {}).get("text/markdown", "") for c in done.cells if c.cell_type == "code" for o in c.outputs)
+    assert "No answer yet" in text and "**Right.**" not in text
+
+
+# ----------------------------------------------------------------------------------------------- where files go
+def test_project_from_environment(monkeypatch, tmp_path):
+    monkeypatch.setenv("WMR_PROJECT", str(tmp_path))
+    p = NB.project("/somewhere/else/notebooks")
+    assert p.root == tmp_path.resolve() and p.figures == p.root / "figures" and p.source == "WMR_PROJECT"
+
+
+def test_project_from_the_notebook_location(monkeypatch, tmp_path):
+    monkeypatch.delenv("WMR_PROJECT", raising=False)
+    (tmp_path / "course" / "notebooks").mkdir(parents=True)
+    assert NB.project(tmp_path / "course" / "notebooks").root == (tmp_path / "course").resolve()
+    assert NB.project(tmp_path / "course").root == (tmp_path / "course").resolve()
+    copy = NB.project(tmp_path / "copy")                       # a copy elsewhere writes beside itself ...
+    assert copy.figures == (tmp_path / "copy" / "figures").resolve()
+    text = copy.where()                                        # ... and says so, and which wmr it imports
+    assert str(copy.figures) in text and "not this project" in text and str(Path(wmr.__file__).parent) in text
+    monkeypatch.chdir(tmp_path / "course" / "notebooks")
+    assert NB.project().root == (tmp_path / "course").resolve()
+
+
+def test_project_of_this_repository_does_not_warn(monkeypatch):
+    monkeypatch.delenv("WMR_PROJECT", raising=False)
+    p = NB.project(ROOT / "notebooks")
+    assert p.root == ROOT and "not this project" not in p.where()
+
+
+def test_the_library_resolves_no_repository_path():
+    src = "\n".join(p.read_text() for p in (ROOT / "wmr").rglob("*.py"))
+    assert "parents[2]" not in src and "WMR_FIGURES" not in src
+
+
+# ----------------------------------------------------------------------------------------------- helpers
+def test_table_is_markdown_without_index(monkeypatch):
+    shown = []
+    monkeypatch.setattr(NB, "_display", lambda *o: shown.extend(o))
+    NB.table([{"w": 1, "rank": {5, 6}, "ok": True, "x": 0.123456}])
+    md = shown[0].data
+    assert md.splitlines()[0] == "| w | rank | ok | x |" and "| 1 | 5, 6 | yes | $0.123$ |" in md
+
+
+def test_mod_pi_and_latex():
+    assert np.allclose(NB.mod_pi([np.pi + 0.25, -np.pi / 2, np.pi / 2]), [0.25, -np.pi / 2, -np.pi / 2])
+    assert NB.latex(sp.Matrix([[1, 2]])) == r"\begin{bmatrix}1 & 2\end{bmatrix}"
+
+
+# ----------------------------------------------------------------------------------------------- exercise checks
+CHECKS = [X.offset_other_side, X.dual_counterexample, X.dual_spin_in_place, X.locked_steering, X.drift_of_c_general,
+          X.isotropic_placement, X.printed_42_signs, X.offset_for_kappa, X.unlisted_singularity, X.mobile_and_singular,
+          X.translation_angles, X.rotation_angles, X.printed_65_region, X.curved_translation, X.reversal]
+
+
+@pytest.mark.parametrize("check", CHECKS, ids=lambda f: f.__name__)
+def test_a_missing_answer_is_not_an_error(check):
+    import inspect
+    n = len([p for p in inspect.signature(check).parameters.values() if p.default is inspect.Parameter.empty])
+    fb = check(*([None] * n))
+    assert not fb and fb.message.startswith("No answer yet") and fb._repr_markdown_().startswith("**Not yet.**")
+
+
+def test_offset_other_side_tells_the_sides_apart():
+    from wmr.paper import platform_wheels as PW
+    from wmr.paper.checks.wheels import disk_velocity, k, planar
+    disk = disk_velocity(PW.theta_dot_i)
+    right = planar(disk.h_dot + (PW.phi_dot_i * k).cross(-S.d * disk.j3))
+    printed_side = planar(disk.h_dot + (PW.phi_dot_i * k).cross(S.d * disk.j3))
+    assert X.offset_other_side(right)
+    assert "That is (9) itself" in X.offset_other_side(printed_side).message
+    assert "rolling term" in X.offset_other_side(right + sp.Matrix([S.r * PW.theta_dot_i, 0])).message
+    assert "shape" in X.offset_other_side(sp.Matrix([1, 2, 3])).message
+
+
+def test_dual_exercises():
+    bot = wmr.paper_robot("dual", L=0.5, r=0.1, b=0.08)
+    tw = np.array([0.5, 0.2, -0.1])
+    assert X.dual_counterexample(wmr.steering_angles(bot, tw), tw)
+    assert "with $\\dot\\psi \\neq 0$" in X.dual_counterexample(wmr.steering_angles(bot, [0, 1.0, 0]), [0, 1.0, 0]).message
+    assert "slip" in X.dual_counterexample([0, 0, 0], tw).message
+    assert X.dual_spin_in_place((-0.5, 0.5)) and "moves" in X.dual_spin_in_place((0.5, 0.5)).message
+    assert "turns at" in X.dual_spin_in_place((-1.0, 1.0)).message
+
+
+def test_chapter_2_exercises():
+    from wmr.paper import printed
+    from wmr.paper.checks.assembly import concurrent_angles, drift_of_c
+    bot = wmr.paper_robot("offset", L=0.3, r=0.1, d=0.05)
+    assert X.locked_steering(concurrent_angles(bot, (0.2, -0.1)))
+    assert "parallel" in X.locked_steering([0.3, 0.3, 0.3]).message
+    assert "jams" in X.locked_steering([0.1, 0.7, -1.2]).message
+    assert X.drift_of_c_general(drift_of_c(n=1).c_dot)
+    assert "printed (28)" in X.drift_of_c_general(printed(28).expr.rhs).message
+
+
+def test_chapter_3_exercises():
+    from wmr.paper import printed
+    p = np.array([[-0.4, 0.0], [0.1, 0.5], [0.3, -0.5]])
+    L = float(np.sqrt(np.mean(np.sum(p**2, axis=1))))
+    assert X.isotropic_placement(p, L)
+    assert "centroid" in X.isotropic_placement(p + [[0, 0], [0, 0], [0, 0.1]], L).message
+    assert "mean squared distance" in X.isotropic_placement(p, 0.4).message
+    assert "stay at" in X.isotropic_placement(p[[1, 0, 2]], L).message
+    assert X.printed_42_signs(sp.diag(S.d**2, S.r**2))
+    assert "printed (42)" in X.printed_42_signs(printed(42).expr.rhs).message
+    assert X.offset_for_kappa([0.05, 0.2]) and "one more" in X.offset_for_kappa([0.2]).message
+    assert not X.offset_for_kappa([0.05, 0.3])
+
+
+def test_chapter_4_exercises():
+    assert X.unlisted_singularity([20, 200, 20]) and X.unlisted_singularity([60, 0, -120])
+    assert "item (i)" in X.unlisted_singularity([20, 20, 20]).message
+    assert "not singular" in X.unlisted_singularity([20, 30, 40]).message
+    assert X.mobile_and_singular([20, 20, 20])
+    assert "cannot move" in X.mobile_and_singular([60, 37, 60]).message
+
+
+def test_chapter_5_and_6_exercises():
+    bot = wmr.paper_robot("centred", L=0.4, r=0.1)
+    phi = np.arctan2(0.4, 0.3) + np.pi / 2
+    assert X.translation_angles(np.full(3, phi - np.radians(30)))
+    assert "printed (60)" in X.translation_angles(np.full(3, np.arctan2(0.4, 0.3) - np.radians(30))).message
+    ui = np.array([0.5, 0.3]) - bot.mount_points
+    assert X.rotation_angles(np.arctan2(ui[:, 1], ui[:, 0])) and not X.rotation_angles([0, 0, 0])
+    assert X.printed_65_region((0.7, 0.0)) and not X.printed_65_region((0.0, 0.7))
+    assert "undefined" in X.printed_65_region((0, 0)).message
+    assert X.curved_translation([0.5, 0.5, 0.5]) and "misses" in X.curved_translation([0.5, 0.5, 0.4]).message
+    assert X.reversal([0, -0.4, -0.2]) and "same heading" in X.reversal([0, 0.4, 0.2]).message
+    assert "slip" in X.reversal([1, 0, 0]).message
+
+
+def test_describe_robot():
+    text = X.describe_robot(wmr.paper_robot("offset", L=0.3, r=0.1, d=0.05), twist=[1, 0, 0])
+    assert "rank 6" in text and "3-dimensional" in text and "executable" in text
+    with pytest.raises(TypeError, match="robot"):
+        X.describe_robot("robot")

@@ -1,0 +1,140 @@
+"""wmr.paper.checks: verdicts follow the transcription -- a corrected transcription re-grades its row to ok,
+a broken one of a true equation stops the chapter -- and the claims record their own evidence."""
+from __future__ import annotations
+
+import dataclasses
+
+import numpy as np
+import pytest
+import sympy as sp
+
+import wmr.paper as paper
+from wmr.paper import isotropy as PI
+from wmr.paper import platform_wheels as PW
+from wmr.paper import symbols as S
+from wmr.paper.checks import assembly, centred, dual, isotropy, steering, wheels
+from wmr.paper.ledger import Ledger, grade
+
+
+@pytest.fixture
+def transcribe(monkeypatch):
+    """Replace the SymPy form of a printed equation for one test."""
+    paper._load()
+
+    def set_(id, expr=None, **extra):
+        old = paper.PRINTED[str(id)]
+        new = dataclasses.replace(old, expr=old.expr if expr is None else expr, extra={**old.extra, **extra})
+        monkeypatch.setitem(paper.PRINTED, str(id), new)
+        return new
+    return set_
+
+
+def verdicts(derivation):
+    return {f.id: grade(f) for f in derivation.findings}
+
+
+# ----------------------------------------------------------------------------------------------- re-grading
+def test_a_corrected_transcription_regrades_typo_42_to_ok(transcribe):
+    assert verdicts(isotropy.J2_product())["42"] == "typo"
+    transcribe(42, sp.Eq(PI.ptilde2, sp.diag(S.d**2, S.r**2), evaluate=False))
+    assert verdicts(isotropy.J2_product())["42"] == "ok"
+
+
+def test_a_corrected_transcription_regrades_wrong_15_to_ok(transcribe):
+    transcribe(15, sp.Eq(PW.beta_dot_i, -S.r / (2 * S.b) * (PW.theta_dot_i1 - PW.theta_dot_i2) - S.psi_dot))
+    assert verdicts(wheels.dual_steering(n=20))["15"] == "ok"
+
+
+def test_a_corrected_transcription_regrades_59_to_ok(transcribe):
+    p = paper.printed(59)
+    transcribe(59, sp.Eq(p.expr.lhs, S.r**3 * p.expr.rhs))
+    assert verdicts(centred.printed_determinant(n=20))["59"] == "ok"
+
+
+def test_a_corrected_transcription_regrades_60_to_ok(transcribe):
+    p = paper.printed(60)
+    transcribe(60, sp.Eq(p.expr.lhs, sp.atan2(S.Y_dot, S.X_dot) + sp.pi / 2))
+    with pytest.raises(AssertionError):          # the evidence that the printed angles slip no longer holds
+        steering.translation(n=50)
+
+
+@pytest.mark.parametrize("id, expr, check", [
+    (63, lambda p: -p.expr, lambda: steering.instant_centre(n=20)),
+    (6, lambda p: sp.Eq(p.expr.lhs, -p.expr.rhs, evaluate=False), wheels.rolling_disk),
+    (38, None, None),
+])
+def test_a_broken_transcription_of_a_true_equation_fails_loudly(transcribe, id, expr, check):
+    if id == 38:          # (38) is judged wrong: transcribing the corrected condition re-grades it
+        mean = sum((sp.Matrix(p).T * sp.Matrix(p))[0] for p in PI.D) / 3
+        assert verdicts(isotropy.placement(n=10))["38"] == "wrong"
+        transcribe(38, (sp.Eq(mean, S.L**2),))
+        assert verdicts(isotropy.placement(n=10))["38"] == "ok"
+        return
+    transcribe(id, expr(paper.printed(id)))
+    derivation = check()
+    row = next(f for f in derivation.findings if f.id == str(id))
+    assert row.printed_holds is False
+    with pytest.raises(ValueError, match=rf"\({id}\): the printed form is refuted"):
+        Ledger("nb").add(row)
+
+
+def test_every_row_names_what_it_proved():
+    for d in (wheels.platform_point(n=10), assembly.functional_matrix(), isotropy.J2_product()):
+        for f in d.findings:
+            assert f.check.startswith("printed form proven" if f.printed_holds else "printed form refuted")
+
+
+# ----------------------------------------------------------------------------------------------- claims
+def test_drift_is_a_conditional_that_holds_and_records_rows_28_29():
+    c, p = assembly.drift_of_c(n=5), assembly.drift_of_psi(n=5)
+    f = assembly.drift(c["28"], p["29"], assembly.locked_steering(robots=5, per=2))["drift"]
+    assert grade(f) == "ok" and f.residual == max(c["28"].residual, p["29"].residual)
+    assert r"\det\mathbf J_2 = d^3r^3" in f.check and "free steering" in f.note
+
+
+def test_robust_control_bound_sqrt2_where_the_robot_moves():
+    d = isotropy.robust_control(n=2000, grid=20)
+    assert d.identity and d.kappa_about_C == sp.sqrt(2)
+    assert np.sqrt(2) - 1e-9 <= d.kappa_mobile_min < 1.6 and d.translations_infinite
+    assert d.example["rank_F"] == 6 and abs(d.example["kappa"] - 1) < 1e-9
+    f = d["robust-control"]
+    assert grade(f) == "wrong" and r"\sqrt2" in f.corrected and "rank" in f.note
+
+
+def test_isotropy_d_zero_records_its_own_simulation():
+    d = isotropy.dead_zone_of_isotropy(pairs=3, n=50)
+    f = d["isotropy-d-zero"]
+    assert grade(f) == "ok" and "simulated full steering turn" in f.check
+    assert abs(d.radius_min - 0.1) < 1e-6 and abs(d.radius_max - 0.1) < 1e-6
+
+
+def test_omnidirectional_records_corner_and_curved_translation():
+    curve = dual.curved_translation(t_end=1.0)
+    assert curve["miss"] < 1e-9 and curve["psi"] < 1e-12 and abs(curve["turned"] - 0.5) < 0.05
+    f = dual.omnidirectional(n=50)["omnidirectional"]
+    assert grade(f) == "wrong" and "must stop only" in f.corrected and "curvilinear translation" in f.check
+
+
+def test_discontinuous_heading_records_its_own_jumps():
+    d = dual.discontinuous_heading(n=100)
+    assert [r["executable"] for r in d.rows] == [0.0, 1.0, 1.0]
+    assert grade(d["discontinuous-heading"]) == "ok" and "random jumps" in d["discontinuous-heading"].check
+
+
+def test_singular_list_finds_the_half_turned_family():
+    d = centred.singular_list(n=100, n_family=40, n_item=10)
+    assert d.classes[centred.LINE_CLASSES[1]] > 0 and d.classes[centred.LINE_CLASSES[4]] == 0
+    assert d.control[centred.LINE_CLASSES[4]] == 100 and np.isinf(d.missed["kappa"])
+    assert grade(d["singular-list-complete"]) == "typo"
+
+
+def test_classify_lines_by_plain_geometry():
+    pts = wmr_paper_points()
+    assert centred.classify_lines(np.radians([20, 20, 20]), pts) == centred.LINE_CLASSES[0]
+    assert centred.classify_lines(np.radians([20, 200, 20]), pts) == centred.LINE_CLASSES[1]
+    assert centred.classify_lines(np.radians([20, 30, 40]), pts) == centred.LINE_CLASSES[4]
+
+
+def wmr_paper_points():
+    import wmr
+    return wmr.paper_robot("centred", L=1.0, r=1.0).mount_points

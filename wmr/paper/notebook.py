@@ -1,0 +1,387 @@
+r"""What the chapters (``notebooks/01..07``) share: where they write, how they show results, how they record verdicts.
+
+Written once here so that every chapter reads the same and none pastes its own helpers.
+
+* :func:`project` -- where a notebook writes its figures and ledger rows: ``$WMR_PROJECT`` (set by
+  the build), else the project the notebook file belongs to, found from the notebook's own
+  location (never from where :mod:`wmr` happens to be imported).
+* :class:`Chapter` -- one per notebook: its ledger, its random generator (fixed seed), its
+  figures (:meth:`Chapter.figure`) and its verdicts (:meth:`Chapter.record`, sentences generated
+  from the ledger rows).
+* :func:`quote`, :func:`show`, :func:`say`, :func:`table` -- everything a reader sees goes out as
+  Markdown with ``$$...$$`` math (one path, one size of type); no ``print``, no raw data frames.
+* :func:`explicit`, :func:`numeric`, :func:`mod_pi` -- small algebra helpers of the derivations.
+
+IPython is imported only when something is displayed, so the path logic works anywhere.
+"""
+from __future__ import annotations
+
+import os
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+import sympy as sp
+
+from .ledger import Finding, Ledger
+from .verify import SEED
+
+__all__ = ["Project", "project", "Chapter", "quote", "show", "say", "table", "explicit", "numeric", "mod_pi",
+           "latex"]
+
+
+def _display(*objs):
+    from IPython.display import display
+    display(*objs)
+
+
+def _markdown(text):
+    from IPython.display import Markdown
+    return Markdown(text)
+
+
+# --------------------------------------------------------------------------------------- where files go
+@dataclass(frozen=True)
+class Project:
+    """Where a notebook writes.
+
+    Attributes
+    ----------
+    root : pathlib.Path
+        The project directory (the one holding ``notebooks/`` and ``figures/``).
+    figures : pathlib.Path
+        ``root/figures``: figure files, ``singularities.csv``, ``ledger.csv``.
+    ledger : pathlib.Path
+        ``root/figures/ledger``: the per-notebook ledger fragments.
+    source : str
+        ``"WMR_PROJECT"`` when set by the environment, else ``"notebook location"``.
+    """
+
+    root: Path
+    figures: Path
+    ledger: Path
+    source: str
+
+    def where(self):
+        """A sentence saying where this notebook writes (and which ``wmr`` it imports, if from elsewhere).
+
+        Returns
+        -------
+        str
+            Markdown.
+        """
+        import wmr
+        pkg = Path(wmr.__file__).resolve().parent
+        text = (f"*This notebook writes its figures and ledger rows to* `{self.figures}` "
+                f"*(found from {'`$WMR_PROJECT`' if self.source == 'WMR_PROJECT' else 'the notebook’s location'}).*")
+        if pkg.parent != self.root:
+            text += f" *The `wmr` package it imports is* `{pkg}`*, not this project’s.*"
+        return text
+
+    def _repr_markdown_(self):
+        return self.where()
+
+
+def _notebook_dir():
+    """The running notebook's directory: ``$JPY_SESSION_NAME`` (Jupyter) if it names a notebook, else the cwd."""
+    session = os.environ.get("JPY_SESSION_NAME", "")
+    if session.endswith(".ipynb") and Path(session).is_file():
+        return Path(session).resolve().parent
+    return Path.cwd()
+
+
+def project(where=None):
+    """The directories a notebook writes to.
+
+    From ``$WMR_PROJECT`` if set (the build sets it); otherwise from the notebook's own location
+    ``where`` (default: the running notebook's directory, i.e. Jupyter's working directory): a
+    notebook in ``<root>/notebooks/`` belongs to ``<root>``; a notebook anywhere else (a copy)
+    writes beside itself, into ``<its directory>/figures``.
+
+    Parameters
+    ----------
+    where : path-like, optional
+        The notebook's directory.
+
+    Returns
+    -------
+    Project
+
+    Examples
+    --------
+    >>> import os
+    >>> p = project("/tmp/course/notebooks") if "WMR_PROJECT" not in os.environ else None
+    >>> p is None or (str(p.root), str(p.figures)) == ("/tmp/course", "/tmp/course/figures")
+    True
+    """
+    env = os.environ.get("WMR_PROJECT", "").strip()
+    if env:
+        root, source = Path(env), "WMR_PROJECT"
+    else:
+        here = Path(where) if where is not None else _notebook_dir()
+        here = here.resolve()
+        root = here.parent if here.name == "notebooks" else (here if (here / "notebooks").is_dir() else here)
+        source = "notebook location"
+    root = root.resolve()
+    return Project(root=root, figures=root / "figures", ledger=root / "figures" / "ledger", source=source)
+
+
+# --------------------------------------------------------------------------------------- showing
+def latex(obj):
+    r"""LaTeX of a SymPy object (matrices with square brackets), or a string unchanged.
+
+    Parameters
+    ----------
+    obj : SymPy object or str
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> latex(sp.Matrix([[1, 0]])), latex(r"\alpha")
+    ('\\begin{bmatrix}1 & 0\\end{bmatrix}', '\\alpha')
+    """
+    if isinstance(obj, str):
+        return obj
+    return sp.latex(obj, mat_str="bmatrix", mat_delim="")
+
+
+def show(lhs, expr=None, tag=None):
+    r"""Typeset ``lhs = expr`` as display math (Markdown ``$$...$$``).
+
+    Parameters
+    ----------
+    lhs : str
+        LaTeX of the left side, or of the whole formula when ``expr`` is None.
+    expr : SymPy object or str, optional
+        The right side.
+    tag : str, optional
+        An equation tag, e.g. ``"59"`` for ``\tag{59}``.
+
+    Returns
+    -------
+    None
+    """
+    body = lhs if expr is None else f"{lhs} = {latex(expr)}"
+    if tag is not None:
+        body += rf" \tag{{{tag}}}"
+    _display(_markdown(f"$$\n{body}\n$$"))
+
+
+def say(text):
+    """Display a Markdown paragraph (for results: no ``print``).
+
+    Parameters
+    ----------
+    text : str
+        Markdown with ``$...$`` math.
+
+    Returns
+    -------
+    None
+    """
+    _display(_markdown(text))
+
+
+def _cell(v, in_array=False):
+    from .text import RESOLUTION, number
+    if isinstance(v, (bool, np.bool_)):
+        return "yes" if v else "no"
+    if isinstance(v, (float, np.floating)):
+        x = float(v)
+        if 0 < abs(x) < RESOLUTION:                       # round-off: no digits that differ between machines
+            return "$0$" if in_array else f"$< 10^{{{int(np.log10(RESOLUTION))}}}$"
+        return f"${number(x)}$"
+    if isinstance(v, (list, tuple, set, frozenset, np.ndarray)):
+        items = sorted(v) if isinstance(v, (set, frozenset)) else list(np.ravel(v) if isinstance(v, np.ndarray) else v)
+        return ", ".join(_cell(x, in_array=True) for x in items)
+    if isinstance(v, (int, np.integer)):
+        return str(int(v))
+    return str(v).replace("|", r"\|").replace("\n", " ")
+
+
+def table(rows, columns=None):
+    r"""A Markdown table (no index column): the one way a chapter shows tabular results.
+
+    Parameters
+    ----------
+    rows : list of dict or list of sequence
+        One entry per row.  Booleans print as yes/no, floats with 3 significant digits in
+        math (round-off below :data:`wmr.paper.text.RESOLUTION` as a bound, or 0 inside a
+        vector), lists as comma-separated values.
+    columns : sequence of str, optional
+        Headers; for dict rows also the keys, in order (default: the first row's keys).
+
+    Returns
+    -------
+    None
+
+    """
+    rows = list(rows)
+    if rows and isinstance(rows[0], dict):
+        columns = list(columns or rows[0].keys())
+        body = [[r.get(c, "") for c in columns] for r in rows]
+    else:
+        if columns is None:
+            raise ValueError("columns must be given for rows that are not dicts")
+        body = [list(r) for r in rows]
+    head = "| " + " | ".join(columns) + " |\n|" + "---|" * len(columns) + "\n"
+    text = head + "".join("| " + " | ".join(_cell(v) for v in r) + " |\n" for r in body)
+    _display(_markdown(text))
+
+
+def quote(id):
+    r"""Display what the paper says: equation ``id`` as printed (with ``\tag``), or the claim ``id``.
+
+    Parameters
+    ----------
+    id : int or str
+        An equation number, or a claim's slug.
+
+    Returns
+    -------
+    None
+        (Read the transcription itself with :func:`wmr.paper.printed` or :func:`wmr.paper.claim`.)
+    """
+    from . import claim, printed
+    if str(id).isdigit():
+        p = printed(id)
+        text = f"*As printed (Section {p.section}):*\n\n$$\n{p.latex} \\tag{{{p.id}}}\n$$"
+        if p.garbled:
+            text += f"\n\n*Transcription:* {p.garbled}"
+        _display(_markdown(text))
+        return None
+    c = claim(id)
+    _display(_markdown(f"> {c.text} (Section {c.section})"))
+    return None
+
+
+# --------------------------------------------------------------------------------------- algebra helpers
+def explicit(expr, mapping):
+    """Substitute explicit matrices for the named objects (MatrixSymbols) of a printed form.
+
+    Parameters
+    ----------
+    expr : SymPy expression or Matrix
+    mapping : dict
+        Named object -> SymPy matrix or expression.
+
+    Returns
+    -------
+    sympy.Matrix
+    """
+    return sp.Matrix(sp.sympify(expr).subs(mapping).doit())
+
+
+def numeric(expr, mapping):
+    """:func:`explicit` with NumPy matrices; returns a float array.
+
+    Parameters
+    ----------
+    expr : SymPy expression or Matrix
+    mapping : dict
+        Named object -> array.
+
+    Returns
+    -------
+    numpy.ndarray
+    """
+    return np.array(explicit(expr, {k: sp.Matrix(v) for k, v in mapping.items()}), dtype=float)
+
+
+def mod_pi(angle):
+    r"""An angle modulo :math:`\pi`, in :math:`[-\pi/2, \pi/2)`: a wheel rolls either way, so axle angles count mod :math:`\pi`.
+
+    Parameters
+    ----------
+    angle : array_like
+        Radians.
+
+    Returns
+    -------
+    numpy.ndarray
+
+    Examples
+    --------
+    >>> float(mod_pi(np.pi + 0.25))
+    0.25
+    """
+    return (np.asarray(angle, dtype=float) + np.pi / 2) % np.pi - np.pi / 2
+
+
+# --------------------------------------------------------------------------------------- a chapter
+class Chapter:
+    r"""One notebook: its ledger, its random generator and where it writes.
+
+    Parameters
+    ----------
+    notebook : str
+        The notebook's stem, e.g. ``"04_centred_wheels_and_singularities"``.
+    where : path-like, optional
+        The notebook's directory (default: found by :func:`project`).
+
+    Attributes
+    ----------
+    project : Project
+    ledger : wmr.paper.ledger.Ledger
+    rng : numpy.random.Generator
+        Seeded with :data:`wmr.paper.verify.SEED`.
+    """
+
+    def __init__(self, notebook, where=None):
+        self.notebook = notebook
+        self.project = project(where)
+        self.ledger = Ledger(notebook)
+        self.rng = np.random.default_rng(SEED)
+        if self.project.source != "WMR_PROJECT":
+            say(self.project.where())
+
+    def record(self, *results):
+        """Grade and record findings; display each verdict sentence (generated from its ledger row).
+
+        Parameters
+        ----------
+        *results : Finding or object with a ``findings`` attribute
+
+        Returns
+        -------
+        None
+            (The rows are in :attr:`ledger`.)
+        """
+        rows = []
+        for res in results:
+            for f in ([res] if isinstance(res, Finding) else list(res.findings)):
+                rows.append(self.ledger.add(f))
+        say("\n\n".join(r.sentence() for r in rows))
+
+    def figure(self, key, data=None):
+        """Compute (unless given), show and save one of the paper's figures into the project's ``figures/``.
+
+        Parameters
+        ----------
+        key : str
+            A key of :data:`wmr.paper.figures.FIGURES`.
+        data : data class, optional
+
+        Returns
+        -------
+        data class
+            The figure's numbers.
+        """
+        from .figures import show as show_figure
+        return show_figure(key, data, outdir=self.project.figures)
+
+    def close(self):
+        """Write this chapter's ledger fragment and show its tally.
+
+        Returns
+        -------
+        None
+            (The fragment is ``<figures>/ledger/<notebook>.csv``.)
+        """
+        self.ledger.write(self.project.figures)
+        c = self.ledger.counts()
+        say(f"*Ledger of this chapter:* {len(self.ledger.rows)} rows "
+            f"({c['ok']} ok, {c['typo']} typo, {c['wrong']} wrong).")
