@@ -208,3 +208,57 @@ def test_max_residual(n):
     r1 = verify.max_residual(sp.sin(x) - x / 2, n=n)
     assert r1 == verify.max_residual(sp.sin(x) - x / 2, n=n)              # fixed seed: deterministic
     assert verify.max_residual(p - 2, ranges={p: (2.0, 2.0)}, n=n) == 0.0
+
+
+# --- the failures quoted in issue 11, part 2 -----------------------------------------------------------
+import sympy as _sp  # noqa: E402  (kept local to this section)
+from fractions import Fraction  # noqa: E402
+
+_BOT = wmr.paper_robot("centred", L=0.5, r=0.1)
+QUOTED = [   # (case, call, exception type, words the message must hold)
+    ("complex beta", lambda: wmr.mobility(_BOT, np.array([0.1, 0.2, 0.3]) + 1e-3j), TypeError, ["beta", "complex"]),
+    ("strings", lambda: wmr.mobility(_BOT, ["0.7"] * 3), TypeError, ["beta", "'0.7'"]),
+    ("bools", lambda: wmr.mobility(_BOT, [True, False, True]), TypeError, ["beta", "booleans"]),
+    ("SymPy oo position", lambda: wmr.CentredWheel((_sp.oo, 0), r=0.1), ValueError, ["position", "oo"]),
+    ("SymPy nan length", lambda: wmr.CentredWheel((0, 0), r=_sp.nan), ValueError, ["r", "nan"]),
+    ("SymPy zoo length", lambda: wmr.DualWheel((0, 0), r=0.1, b=_sp.zoo), ValueError, ["b", "zoo"]),
+    ("SymPy I position", lambda: wmr.CentredWheel((_sp.I, 0), r=0.1), ValueError, ["position", "I"]),
+    ("long double 1e400", lambda: wmr.CentredWheel((0, 0), r=np.longdouble("1e400")), ValueError, ["r", "e+400"]),
+    ("None robot", lambda: wmr.mobility(None, [0.0] * 3), TypeError, ["robot", "None"]),
+    ("the class Robot", lambda: wmr.rank_F(wmr.Robot, [0.0] * 3), TypeError, ["robot", "class Robot"]),
+    ("empty matrix", lambda: wmr.condition_number(np.empty((3, 0))), ValueError, ["A", "(3, 0)"]),
+    ("10**400 entry", lambda: wmr.rank([[10**400, 1], [0, 1]]), ValueError, ["A", "1000000"]),
+    ("current of the wrong shape", lambda: wmr.steering_angles(_BOT, [1.0, 0.0, 0.0], current=[[0.0]]), ValueError,
+     ["current", "(1, 1)"]),
+    ("tiny dt", lambda: wmr.simulate(_BOT, [1.0] * 3, [0.0] * 3, t_end=0.5, dt=1e-9), ValueError,
+     ["dt", "max_steps", "5e+08"]),
+    ("L = 1e-320", lambda: _BOT.J([0.1, 0.2, 0.3], L=1e-320), ValueError, ["L", "1e-320", "overflow"]),
+    ("huge twist", lambda: wmr.inverse(_BOT, [0.0] * 3, [1.7e308] * 3), ValueError, ["twist", "overflow"]),
+    ("name not a string", lambda: wmr.Robot(_BOT.wheels, name=["n"]), TypeError, ["name", "['n']"]),
+    ("exact not a bool", lambda: wmr.equilateral_mounts(1.0, exact="yes"), TypeError, ["exact", "'yes'"]),
+    ("clockwise not a bool", lambda: wmr.equilateral_mounts(1.0, clockwise=None), TypeError, ["clockwise", "None"]),
+    ("unused offset of a centred robot", lambda: wmr.paper_robot("centred", d=-1.0), ValueError, ["d", "-1.0"]),
+    ("unused steer of an offset wheel", lambda: wmr.OffsetWheel((0, 0), r=1.0, d=0.5).beta_rate(0.0, [1.0, 1.0], "x"),
+     TypeError, ["steer", "'x'"]),
+]
+
+
+@pytest.mark.parametrize("case, call, kind, words", QUOTED, ids=[q[0] for q in QUOTED])
+def test_quoted_bad_input_is_rejected(case, call, kind, words):
+    with pytest.raises(Exception) as exc:
+        call()
+    assert exc.type is kind, (exc.type, str(exc.value))
+    assert all(w in str(exc.value) for w in words), str(exc.value)
+
+
+def test_quoted_inputs_that_are_valid_give_right_finite_answers():
+    pts = wmr.equilateral_mounts(1.0, first_deg=1e300)                  # three distinct vertices
+    assert len({tuple(np.round(p, 12)) for p in pts}) == 3
+    assert np.allclose([np.hypot(*p) for p in pts], 1.0)
+    assert wmr.CentredWheel((0, 0), r=Fraction(1, 4)).r == 0.25         # Fractions are real numbers
+    assert np.isfinite(wmr.characteristic_length(wmr.paper_robot("centred", L=1e300, r=1e299)))
+    sol = wmr.forward(wmr.paper_robot("centred", L=1e300, r=1e299), [0.1, 0.2, 0.3], [1.0, 2.0, 3.0])
+    assert np.all(np.isfinite(sol.value))                                # (was: "fewer than two mount points")
+    with pytest.raises(ValueError, match="max_steps"):
+        wmr.simulate(_BOT, [1.0] * 3, [0.0] * 3, t_end=1.0, dt=0.1, max_steps=5)
+    assert len(wmr.simulate(_BOT, [1.0] * 3, [0.0] * 3, t_end=1.0, dt=0.1, max_steps=10).t) == 11

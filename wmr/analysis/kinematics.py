@@ -178,9 +178,9 @@ def forward(robot, beta, rates):
     K = _constants(robot)
     if not K.full_rank:
         raise ValueError(
-            f"J1 has rank < 3 (fewer than two distinct mount points: {robot.mount_points.tolist()}): "
+            f"robot has J1 of rank < 3 (fewer than two distinct mount points: {robot.mount_points.tolist()}): "
             "the twist is not determined")
-    batch = np.broadcast_shapes(beta.shape[:-1], rates.shape[:-1])
+    batch = V.batch_shape({"beta": beta, "rates": rates})
     b, th = _flat(batch, beta, rates)
     N, w = b.shape[0], robot.w
     t, res, adm = np.empty((N, 3)), np.empty((N, 2 * w)), np.empty(N, dtype=bool)
@@ -247,7 +247,7 @@ def inverse(robot, beta, twist, beta_dot=None):
         arrays.append(V.finite_array("beta_dot", beta_dot, last=robot.w))
     K = _constants(robot)
     w = robot.w
-    batch = np.broadcast_shapes(*[a.shape[:-1] for a in arrays])
+    batch = V.batch_shape(dict(zip(("beta", "twist", "beta_dot"), arrays)))
     flat = _flat(batch, *arrays)
     b, tw, bd = flat[0], flat[1], (flat[2] if beta_dot is not None else None)
     N = b.shape[0]

@@ -49,7 +49,19 @@ def singular_values(A):
     A = _as_stack(A)
     if min(A.shape[-2:]) == 0:
         return np.zeros(A.shape[:-2] + (0,))
+    big = np.max(np.abs(A), axis=(-2, -1))
+    if np.any(big > 1e150) or np.any((big < 1e-150) & (big > 0)):   # far from 1: scaled, so LAPACK sees no overflow
+        m = np.where(big > 0, big, 1.0)[..., None]
+        return _finite("A", singular_values(A / m[..., None]) * m, "its singular values")
     return map_matrices(lambda X: np.linalg.svd(X, compute_uv=False), A)
+
+
+@np.errstate(over="ignore", invalid="ignore")
+def _finite(name, result, what):
+    """Overflow is detected, not propagated: a result from finite input is finite or the call raises."""
+    if not np.isfinite(result).all():
+        raise ValueError(f"{name} is too large: {what} overflow double precision")
+    return result
 
 
 def column_norms(A):
@@ -73,7 +85,9 @@ def column_norms(A):
     A = _as_stack(A)
     big = np.max(np.abs(A), axis=-2) if A.shape[-2] else np.zeros(A.shape[:-2] + A.shape[-1:])
     safe = np.where(big > 0, big, 1.0)
-    return np.where(big > 0, safe * np.sqrt(np.sum((A / safe[..., None, :]) ** 2, axis=-2)), 1.0)
+    with np.errstate(over="ignore"):
+        norms = np.where(big > 0, safe * np.sqrt(np.sum((A / safe[..., None, :]) ** 2, axis=-2)), 1.0)
+    return _finite("A", norms, "its column lengths")
 
 
 def _check_scale(scale, n):
@@ -201,7 +215,8 @@ def null_space(A, scale=None):
     r = int(rank(A, scale))
     if A.shape[0] == 0:
         return np.eye(A.shape[1])                        # no equations: every vector
-    _, _, Vt = np.linalg.svd(A)
+    big = np.abs(A).max() if A.size else 0.0
+    _, _, Vt = np.linalg.svd(A / big if big > 0 else A)  # (scaled: the same vectors, no overflow)
     return Vt[r:].T.copy()
 
 
@@ -230,7 +245,8 @@ def pinv_columns(A):
     if A.ndim != 2:
         raise ValueError(f"A must be one matrix (m, n), got shape {A.shape}")
     scale = column_norms(A)
-    return np.linalg.pinv(A / scale, rcond=TOL) / scale[:, None]
+    with np.errstate(over="ignore", invalid="ignore"):
+        return _finite("A", np.linalg.pinv(A / scale, rcond=TOL) / scale[:, None], "the entries of its pseudo-inverse")
 
 
 def _left_null(L):
@@ -303,7 +319,8 @@ def gram(A):
     [[1.0, 2.0], [2.0, 5.0]]
     """
     A = _as_stack(A)
-    return np.swapaxes(A, -1, -2) @ A
+    with np.errstate(over="ignore", invalid="ignore"):
+        return _finite("A", np.swapaxes(A, -1, -2) @ A, "the entries of A^T A")
 
 
 def det(A):
@@ -339,6 +356,6 @@ def det(A):
         raise ValueError(f"A must be a stack of square matrices (..., n, n), got shape {A.shape}")
     if n == 0:
         return np.ones(A.shape[:-2])
-    if n > 3:
-        return map_matrices(np.linalg.det, A)
-    return _closed.det(A.reshape(-1, n, n)).reshape(A.shape[:-2])
+    with np.errstate(over="ignore", invalid="ignore"):
+        out = map_matrices(np.linalg.det, A) if n > 3 else _closed.det(A.reshape(-1, n, n)).reshape(A.shape[:-2])
+    return _finite("A", out, "its determinants")

@@ -22,6 +22,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..model import validation as V
+from ..model.platform import line_angle
 from ..model.tolerance import TOL, near_zero
 
 __all__ = ["Meet", "FINITE", "AT_INFINITY", "STILL", "NONE", "COINCIDENT", "PARALLEL", "Concurrency",
@@ -71,9 +72,12 @@ def line_intersection(p1, u1, p2, u2):
     ('FINITE', [1.0, 0.0])
     """
     p1, u1, p2, u2 = (V.finite_array(n, a, last=2) for n, a in (("p1", p1), ("u1", u1), ("p2", p2), ("u2", u2)))
+    for name, v in (("p1", p1), ("p2", p2), ("u1", u1), ("u2", u2)):
+        if v.ndim != 1:
+            raise ValueError(f"{name} must be one point or direction of shape (2,), got shape {v.shape}")
     for name, u in (("u1", u1), ("u2", u2)):
-        if u.ndim != 1 or not np.any(u):
-            raise ValueError(f"{name} must be one non-zero direction (2,), got {V.show(u)}")
+        if not np.any(u):
+            raise ValueError(f"{name} must be a non-zero direction, got {V.show(u)}")
     n1, n2 = u1 / np.hypot(*u1), u2 / np.hypot(*u2)
     cross = n1[0] * n2[1] - n1[1] * n2[0]                     # sine of the angle between the lines
     w = p2 - p1
@@ -81,8 +85,13 @@ def line_intersection(p1, u1, p2, u2):
         off = n1[0] * w[1] - n1[1] * w[0]                     # distance of p2 from line 1
         size = float(max(np.abs(p1).max(), np.abs(p2).max()))  # relative to where the lines are
         return (COINCIDENT, None) if near_zero(off, size) else (PARALLEL, None)
-    s = (w[0] * n2[1] - w[1] * n2[0]) / cross
-    return FINITE, p1 + s * n1
+    with np.errstate(over="ignore", invalid="ignore"):
+        s = (w[0] * n2[1] - w[1] * n2[0]) / cross
+        point = p1 + s * n1
+    if not np.isfinite(point).all():
+        raise ValueError(f"p1, u1, p2, u2: the intersection is beyond double precision (p1 = {V.show(p1)}, "
+                         f"p2 = {V.show(p2)})")
+    return FINITE, point
 
 
 def pair_intersections(points, directions):
@@ -97,6 +106,12 @@ def pair_intersections(points, directions):
     dict
         ``(i, j) -> (Meet, point or None)`` for 1-based line numbers ``i < j``.
     """
+    points = V.finite_array("points", points, last=2)
+    directions = V.finite_array("directions", directions, last=2)
+    if points.ndim != 2 or points.shape != directions.shape:
+        raise ValueError(f"points and directions must both have shape (w, 2), got {points.shape} and {directions.shape}")
+    if not np.all(np.any(directions != 0, axis=-1)):
+        raise ValueError(f"directions must be non-zero vectors, got {V.show(directions)}")
     out = {}
     n = len(points)
     for i in range(n):
@@ -152,10 +167,11 @@ def lines_concurrency(points, directions):
     if p.ndim != 2 or p.shape != u.shape or len(p) < 2:
         raise ValueError(f"points and directions must both have shape (n, 2) with n >= 2, "
                          f"got {p.shape} and {u.shape}")
-    norm = np.linalg.norm(u, axis=-1, keepdims=True)
-    if np.any(norm == 0):
+    big = np.abs(u).max(axis=-1, keepdims=True)
+    if np.any(big == 0):
         raise ValueError(f"directions must be non-zero vectors, got {u.tolist()}")
-    u = u / norm
+    u = u / big                                         # (scaled first: no overflow for huge directions)
+    u = u / np.linalg.norm(u, axis=-1, keepdims=True)
     scale = float(np.abs(p).max()) or 1.0              # the size of the figure, in its own unit
     m = (p[:, 0] * u[:, 1] - p[:, 1] * u[:, 0]) / scale
     W = np.stack([m, u[:, 0], u[:, 1]])                 # (3, n)
@@ -201,26 +217,35 @@ def circumcircle(points):
     >>> circumcircle([(-1, 0), (sp.Rational(1, 2), sp.sqrt(3) / 2), (sp.Rational(1, 2), -sp.sqrt(3) / 2)])
     ((0, 0), 1)
     """
-    pts = list(points)
+    import sympy as sp
+    if isinstance(points, (str, bytes)) or not hasattr(points, "__len__") or isinstance(points, sp.Basic):
+        raise TypeError(f"points must be three points (pairs), got {V.show(points)}")
+    pts = [V.point(f"points[{k}]", q) for k, q in enumerate(points)]
     if len(pts) != 3:
         raise ValueError(f"points must be three points, got {len(pts)}")
-    import sympy as sp
-    exact = any(isinstance(v, sp.Basic) for q in pts for v in q)
-    if not exact:
-        pts = [tuple(q) for q in V.finite_array("points", pts, last=2)]
+    if not any(isinstance(v, sp.Basic) for q in pts for v in q):
+        size = float(np.abs(pts).max()) or 1.0         # scaled to the figure's size: no overflow, any unit
+        (ux, uy), R2 = _circle([(x / size, y / size) for x, y in pts], near_zero, pts)
+        centre, radius = np.array([ux, uy]) * size, float(np.sqrt(R2)) * size
+        if not (np.isfinite(centre).all() and np.isfinite(radius)):
+            raise ValueError(f"points are too large: their circumcircle overflows, got {pts}")
+        return centre, radius
+    exact = [tuple(sp.sympify(v) for v in q) for q in points]                 # ints stay exact
+    (ux, uy), R2 = _circle(exact, lambda dd: sp.simplify(dd) == 0, pts)
+    ux, uy = sp.radsimp(ux), sp.radsimp(uy)
+    return (ux, uy), sp.sqrt(sp.radsimp((exact[0][0] - ux) ** 2 + (exact[0][1] - uy) ** 2))
+
+
+def _circle(pts, is_zero, shown):
+    """Centre and squared radius of the circle through three points (floats or SymPy), by the formula above."""
     (ax, ay), (bx, by), (cx, cy) = pts
     dd = 2 * (ax * (by - cy) + bx * (cy - ay) + cx * (ay - by))
-    size = max(abs(float(v)) for q in pts for v in q) if not exact else None
-    if (exact and sp.simplify(dd) == 0) or (not exact and near_zero(dd, size ** 2)):
-        raise ValueError(f"points are collinear: no circumcircle, got {pts}")
+    if is_zero(dd):
+        raise ValueError(f"points are collinear: no circumcircle, got {shown}")
     a2, b2, c2 = ax**2 + ay**2, bx**2 + by**2, cx**2 + cy**2
     ux = (a2 * (by - cy) + b2 * (cy - ay) + c2 * (ay - by)) / dd
     uy = (a2 * (cx - bx) + b2 * (ax - cx) + c2 * (bx - ax)) / dd
-    if exact:
-        ux, uy = sp.radsimp(ux), sp.radsimp(uy)
-        return (ux, uy), sp.sqrt(sp.radsimp((ax - ux) ** 2 + (ay - uy) ** 2))
-    centre = np.array([ux, uy])
-    return centre, float(np.hypot(ax - ux, ay - uy))
+    return (ux, uy), (ax - ux) ** 2 + (ay - uy) ** 2
 
 
 # ----------------------------------------------------------------------------- a robot's lines
@@ -272,6 +297,8 @@ def axle_lines(robot, beta):
 
 def _one(robot, beta, what):
     robot = V.numeric_robot(robot)
+    if robot.w < 2:
+        raise ValueError(f"robot must have at least two wheel units for {what} (lines to meet), got {V.show(robot)}")
     beta = V.finite_array("beta", beta, last=robot.w)
     if beta.ndim != 1:
         raise ValueError(f"beta must be one configuration of shape ({robot.w},) for {what}, got shape {beta.shape}")
@@ -309,27 +336,6 @@ def axles_concurrency(robot, beta):
     return lines_concurrency(*axle_lines(robot, _one(robot, beta, "axles_concurrency")))
 
 
-def line_angle(beta):
-    r"""The angle of a line through the origin, in :math:`(-\pi/2, \pi/2]`: ``beta`` and ``beta + pi`` give the same line.
-
-    Parameters
-    ----------
-    beta : float or array (...)
-        Radians.
-
-    Returns
-    -------
-    numpy.ndarray (...)
-
-    Examples
-    --------
-    >>> np.degrees(line_angle(np.radians([-90.0, 135.0, 180.0]))).round(9).tolist()
-    [90.0, -45.0, 0.0]
-    """
-    b = np.mod(V.finite_array("beta", beta) + np.pi / 2, np.pi) - np.pi / 2
-    return np.where(np.isclose(b, -np.pi / 2, atol=TOL, rtol=0), np.pi / 2, b)
-
-
 def planes_through(robot, D):
     r"""Steering angles whose wheel-plane lines all pass through the point D (body frame).
 
@@ -350,7 +356,7 @@ def planes_through(robot, D):
     D = V.finite_array("D", D, last=2)
     v = D[..., None, :] - robot.mount_points                        # (..., w, 2)
     beta = np.arctan2(-v[..., 0], v[..., 1])                       # j = (-sin b, cos b) || v
-    beta = np.where(np.linalg.norm(v, axis=-1) <= TOL * _size(robot, D), 0.0, beta)
+    beta = np.where(_at(v, robot, D), 0.0, beta)
     return line_angle(beta)
 
 
@@ -370,13 +376,14 @@ def axles_through(robot, U):
     U = V.finite_array("U", U, last=2)
     v = U[..., None, :] - robot.mount_points
     beta = np.arctan2(v[..., 1], v[..., 0])                        # i = (cos b, sin b) || v
-    beta = np.where(np.linalg.norm(v, axis=-1) <= TOL * _size(robot, U), 0.0, beta)
+    beta = np.where(_at(v, robot, U), 0.0, beta)
     return line_angle(beta)
 
 
-def _size(robot, X):
-    """The length scale of a robot and points: the tolerance of "the point is a mount point"."""
-    return np.maximum(np.abs(robot.mount_points).max(), np.abs(X).max(axis=-1, keepdims=True))
+def _at(v, robot, X):
+    """Where the point X is a mount point: ``max|X - P_i| <= TOL`` times the size of the robot and of X."""
+    size = np.maximum(np.abs(robot.mount_points).max(), np.abs(X).max(axis=-1, keepdims=True))
+    return np.abs(v).max(axis=-1) <= TOL * size
 
 
 def pair_line_angle(robot, i, j):

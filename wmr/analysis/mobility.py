@@ -101,6 +101,7 @@ def rank_F(robot, beta):
     >>> rank_F(paper_robot("centred"), [[0.0, 0.0, 0.0], [0.1, 0.2, 0.3]]).tolist()
     [5, 6]
     """
+    robot = V.numeric_robot(robot)
     A, base = twist_constraints(robot, beta)
     return base + rank(A, scale=robot.F_column_norms[:3])     # the twist columns of F, scaled as in rank(F)
 

@@ -36,6 +36,7 @@ def J2(robot, beta):
     -------
     numpy.ndarray (..., 2w, n_rates)
     """
+    robot = V.numeric_robot(robot)
     beta = V.finite_array("beta", beta, last=robot.w)
     out = np.zeros(beta.shape[:-1] + (2 * robot.w, robot.n_rates))
     for i, (u, sl) in enumerate(zip(robot.wheels, robot.rate_slices)):
@@ -57,6 +58,7 @@ def F(robot, beta):
     -------
     numpy.ndarray (..., 2w, 3 + n_rates)
     """
+    robot = V.numeric_robot(robot)
     B = J2(robot, beta)
     J1 = np.broadcast_to(robot.J1(), B.shape[:-2] + (2 * robot.w, 3))
     return np.concatenate([J1, -B], axis=-1)
@@ -75,11 +77,30 @@ def J(robot, beta, L=1.0):
     -------
     numpy.ndarray (..., 3, n_rates)
     """
-    return robot.J1(L).T @ J2(robot, beta)
+    robot = V.numeric_robot(robot)
+    with np.errstate(over="ignore", invalid="ignore"):
+        return _finite("robot", robot.J1(L).T @ J2(robot, beta))
+
+
+def _matrices(A, square=False):
+    A = V.finite_array("A", A)
+    if A.ndim < 2 or min(A.shape[-2:]) == 0 or (square and A.shape[-1] != A.shape[-2]):
+        raise ValueError(f"A must have shape (..., m, n) with m, n >= 1{' and m = n' if square else ''}, got {A.shape}")
+    return A
+
+
+@np.errstate(over="ignore", invalid="ignore")
+def _finite(name, *results):
+    if not all(np.isfinite(r).all() for r in results):
+        raise ValueError(f"{name} is too large: the result overflows double precision")
+    return results[0] if len(results) == 1 else results
 
 
 def _sv(A):
-    return np.linalg.svd(np.asarray(A, dtype=float), compute_uv=False)
+    """Singular values of each matrix divided by its largest entry (the rank and kappa rules are scale-free)."""
+    A = _matrices(A)
+    m = np.max(np.abs(A), axis=(-2, -1), keepdims=True)
+    return np.linalg.svd(A / np.where(m > 0, m, 1.0), compute_uv=False)
 
 
 def rank(A):
@@ -93,7 +114,7 @@ def rank(A):
     -------
     numpy.ndarray of int (...)
     """
-    A = np.asarray(A, dtype=float)
+    A = _matrices(A)
     return _rank_from_sv(_sv(A / column_norms(A)[..., None, :]))
 
 
@@ -123,7 +144,8 @@ def det(A):
     -------
     numpy.ndarray (...)
     """
-    return np.linalg.det(np.asarray(A, dtype=float))
+    with np.errstate(over="ignore", invalid="ignore"):
+        return _finite("A", np.linalg.det(_matrices(A, square=True)))
 
 
 def condition_number(A):
@@ -140,6 +162,7 @@ def condition_number(A):
     return _kappa_from_sv(_sv(A))
 
 
+@np.errstate(over="ignore", invalid="ignore")       # overflow is checked on the results
 def forward(robot, beta, rates):
     r"""Least-squares twist :math:`\mathbf t = \mathbf J_1^+\mathbf J_2\dot{\boldsymbol\theta}` and the slip.
 
@@ -156,14 +179,19 @@ def forward(robot, beta, rates):
         :math:`\mathbf J_1\mathbf t - \mathbf J_2\dot{\boldsymbol\theta}`.
     admissible : numpy.ndarray of bool (...)
     """
-    rhs = (J2(robot, beta) @ np.asarray(rates, dtype=float)[..., None])[..., 0]
+    robot = V.numeric_robot(robot)
+    rates = V.finite_array("rates", rates, last=robot.n_rates)
+    V.batch_shape({"beta": V.finite_array("beta", beta, last=robot.w), "rates": rates})
+    rhs = (J2(robot, beta) @ rates[..., None])[..., 0]
     J1 = robot.J1()
     t = (np.linalg.pinv(J1) @ rhs[..., None])[..., 0]
     res = (J1 @ t[..., None])[..., 0] - rhs
     scale = np.max(np.abs(rhs), axis=-1, keepdims=True)
+    t, res = _finite("rates", t, res)
     return t, res, np.all(near_zero(res, scale), axis=-1)
 
 
+@np.errstate(over="ignore", invalid="ignore")
 def inverse(robot, beta, twist, beta_dot=None):
     r"""Joint rates from the pseudo-inverse of the whole system, dual-wheel steering rows appended.
 
@@ -186,12 +214,15 @@ def inverse(robot, beta, twist, beta_dot=None):
         :math:`\mathbf J_1\mathbf t - \mathbf J_2\dot{\boldsymbol\theta}`.
     admissible : numpy.ndarray of bool (...)
     """
+    robot = V.numeric_robot(robot)
+    twist = V.finite_array("twist", twist, last=3)
+    beta_dot = None if beta_dot is None else V.finite_array("beta_dot", beta_dot, last=robot.w)
+    V.batch_shape({"beta": V.finite_array("beta", beta, last=robot.w), "twist": twist, "beta_dot": beta_dot})
     B = J2(robot, beta)
-    twist = np.asarray(twist, dtype=float)
     v = (robot.J1() @ twist[..., None])[..., 0]
     batch = np.broadcast_shapes(B.shape[:-2], v.shape[:-1])
     rows, rhs = [np.broadcast_to(B, batch + B.shape[-2:])], [np.broadcast_to(v, batch + v.shape[-1:])]
-    bd = np.zeros(robot.w) if beta_dot is None else np.asarray(beta_dot, dtype=float)
+    bd = np.zeros(robot.w) if beta_dot is None else beta_dot
     for i, (u, sl) in enumerate(zip(robot.wheels, robot.rate_slices)):
         if u.kind == "dual":
             row = np.zeros(robot.n_rates)
@@ -202,4 +233,5 @@ def inverse(robot, beta, twist, beta_dot=None):
     rates = (np.linalg.pinv(A) @ y[..., None])[..., 0]
     res = rhs[0] - (rows[0] @ rates[..., None])[..., 0]
     scale = np.max(np.abs(rhs[0]), axis=-1, keepdims=True)
+    rates, res = _finite("twist", rates, res)
     return rates, res, np.all(near_zero(res, scale), axis=-1)

@@ -17,7 +17,7 @@ import numpy as np
 from ..model import validation as V
 from .kinematics import forward
 
-__all__ = ["Trajectory", "simulate"]
+__all__ = ["Trajectory", "simulate", "MAX_STEPS"]
 
 
 @dataclass(frozen=True)
@@ -59,14 +59,19 @@ class Trajectory:
         numpy.ndarray (N, ..., 2)
             :math:`[X, Y] + \\mathbf R(\\psi)\\,\\mathbf p` at every sample.
         """
-        p = np.asarray(body_points, dtype=float)
+        p = V.finite_array("body_points", body_points, last=2)
         psi, XY = self.pose[:, 0], self.pose[:, 1:]
         c, s = np.cos(psi), np.sin(psi)
-        extra = p.ndim - 2 if p.shape[0] == len(self.t) else p.ndim - 1
+        per_sample = p.ndim >= 2 and p.shape[0] == len(self.t)
+        extra = p.ndim - 2 if per_sample else p.ndim - 1
         shape = (len(self.t),) + (1,) * extra
         c, s = c.reshape(shape), s.reshape(shape)
-        X = c * p[..., 0] - s * p[..., 1] + XY[:, 0].reshape(shape)
-        Y = s * p[..., 0] + c * p[..., 1] + XY[:, 1].reshape(shape)
+        with np.errstate(over="ignore", invalid="ignore"):
+            X = c * p[..., 0] - s * p[..., 1] + XY[:, 0].reshape(shape)
+            Y = s * p[..., 0] + c * p[..., 1] + XY[:, 1].reshape(shape)
+        if not (np.isfinite(X).all() and np.isfinite(Y).all()):
+            raise ValueError(f"body_points are too large: their fixed-frame positions overflow "
+                             f"(largest |body_points| = {np.abs(p).max():.3g})")
         return np.stack([X, Y], axis=-1)
 
     def unit_points(self, i, key):
@@ -83,18 +88,40 @@ class Trajectory:
         -------
         numpy.ndarray (N, ..., 2)
         """
-        pts = self.robot.wheels[i].points(self.beta[:, i])[key]
-        return self.world(pts)
+        i = V.integer("i", i)
+        if not -self.robot.w <= i < self.robot.w:
+            raise ValueError(f"i must be a unit index in 0..{self.robot.w - 1}, got {i}")
+        pts = self.robot.wheels[i].points(self.beta[:, i])
+        if not isinstance(key, str) or key not in pts:
+            raise (TypeError if not isinstance(key, str) else ValueError)(
+                f"key must be one of {sorted(pts)}, got {V.show(key)}")
+        return self.world(pts[key])
+
+
+def _one(name, value, size):
+    arr = V.finite_array(name, value, last=size)
+    if arr.ndim != 1:
+        raise ValueError(f"{name} must be one vector of shape ({size},), got shape {arr.shape}")
+    return arr
 
 
 def _as_input(f, size, name):
     if callable(f):
-        return f
-    arr = V.finite_array(name, f, last=size)
+        def call(t, state):
+            try:
+                return f(t, state)
+            except (TypeError, ValueError) as e:        # the caller's function: say which one failed
+                raise type(e)(f"{name}(t, state) raised {type(e).__name__}: {e}") from e
+        return call
+    arr = _one(name, f, size)
     return lambda t, state: arr
 
 
-def simulate(robot, rates, beta0, t_end, dt, steer=None, pose0=(0.0, 0.0, 0.0)):
+#: The most steps :func:`simulate` takes unless told otherwise (a run of 10^6 steps takes minutes).
+MAX_STEPS = 1_000_000
+
+
+def simulate(robot, rates, beta0, t_end, dt, steer=None, pose0=(0.0, 0.0, 0.0), max_steps=MAX_STEPS):
     r"""Integrate the robot's motion under joint-rate (and steering) inputs.
 
     Parameters
@@ -111,6 +138,9 @@ def simulate(robot, rates, beta0, t_end, dt, steer=None, pose0=(0.0, 0.0, 0.0)):
         Steering rates :math:`\dot\beta_i` of centred wheels (ignored for other units).
     pose0 : triple
         Initial :math:`(\psi, X, Y)`.
+    max_steps : int, optional
+        The most steps allowed (default :data:`MAX_STEPS`): a ``dt`` that would need more raises
+        ``ValueError`` instead of running for hours or exhausting memory.
 
     Returns
     -------
@@ -125,16 +155,25 @@ def simulate(robot, rates, beta0, t_end, dt, steer=None, pose0=(0.0, 0.0, 0.0)):
     ([0.0, 0.0, 1.0], True)
     """
     robot = V.numeric_robot(robot)
-    t_end = V.positive("t_end", t_end)
-    dt = V.positive("dt", dt)
-    beta0 = V.finite_array("beta0", beta0, last=robot.w)
-    pose0 = V.finite_array("pose0", pose0, last=3)
+    t_end = V.number("t_end", V.positive("t_end", t_end))
+    dt = V.number("dt", V.positive("dt", dt))
+    max_steps = V.integer("max_steps", max_steps, minimum=1)
+    beta0 = _one("beta0", beta0, robot.w)
+    pose0 = _one("pose0", pose0, 3)
+    with np.errstate(over="ignore"):
+        steps = np.ceil(t_end / dt - 1e-9)
+    if not steps <= max_steps:
+        raise ValueError(f"dt = {dt!r} needs {steps:.3g} steps to reach t_end = {t_end!r}, more than "
+                         f"max_steps = {max_steps}: take a larger dt (or raise max_steps)")
     rate_fn = _as_input(rates, robot.n_rates, "rates")
     steer_fn = _as_input(np.zeros(robot.w) if steer is None else steer, robot.w, "steer")
 
     def deriv(t, pose, beta):
-        th = V.finite_array("rates(t)", rate_fn(t, (pose, beta)), last=robot.n_rates)
-        st = V.finite_array("steer(t)", steer_fn(t, (pose, beta)), last=robot.w)
+        if not (np.isfinite(pose).all() and np.isfinite(beta).all()):
+            raise ValueError(f"rates or steer are too large for this run: the pose or the steering angles overflow "
+                             f"at t = {t:.6g}")
+        th = _one("rates(t)", rate_fn(t, (pose, beta)), robot.n_rates)
+        st = _one("steer(t)", steer_fn(t, (pose, beta)), robot.w)
         sol = forward(robot, beta, th)
         tw = sol.value
         c, s = np.cos(pose[0]), np.sin(pose[0])
@@ -143,7 +182,7 @@ def simulate(robot, rates, beta0, t_end, dt, steer=None, pose0=(0.0, 0.0, 0.0)):
                           for i, (u, sl) in enumerate(zip(robot.wheels, robot.rate_slices))])
         return dpose, dbeta, tw, float(np.linalg.norm(sol.residual))
 
-    n = max(1, int(np.ceil(t_end / dt - 1e-9)))    # steps of t_end / n <= dt: the run ends at t_end
+    n = max(1, int(steps))                          # steps of t_end / n <= dt: the run ends at t_end
     dt = t_end / n
     ts = np.arange(n + 1) * dt
     pose = np.empty((n + 1, 3)); beta = np.empty((n + 1, robot.w))
@@ -159,4 +198,6 @@ def simulate(robot, rates, beta0, t_end, dt, steer=None, pose0=(0.0, 0.0, 0.0)):
         pose[k + 1] = p + dt / 6 * (k1p + 2 * k2p + 2 * k3p + k4p)
         beta[k + 1] = b + dt / 6 * (k1b + 2 * k2b + 2 * k3b + k4b)
     _, _, twist[n], slip[n] = deriv(ts[n], pose[n], beta[n])
+    if not (np.isfinite(pose).all() and np.isfinite(beta).all() and np.isfinite(slip).all()):
+        raise ValueError(f"rates are too large for t_end = {t_end!r}: the pose overflows double precision")
     return Trajectory(robot, ts, pose, beta, twist, slip)

@@ -13,7 +13,7 @@ along :math:`\mathbf j_i`), and
     \det\mathbf J = -\frac{r_1r_2r_3}{L}\Big[m_1\sin(\beta_3-\beta_2) + m_2\sin(\beta_1-\beta_3)
                     + m_3\sin(\beta_2-\beta_1)\Big] = -\frac{r_1r_2r_3}{L}\det\mathbf W ,
 
-an identity checked exactly by :func:`characterisation` for symbolic mount points.  A point
+an identity checked exactly by :func:`wmr.analysis.det_exact.characterisation` for symbolic mount points.  A point
 :math:`D` lies on :math:`\ell_i` iff :math:`[-1,\ -D_y,\ D_x]\,\mathbf W_{L=1}\mathbf e_i = 0`; hence
 :math:`\det\mathbf J = 0` **iff the three wheel-plane lines are concurrent at a point**
 :math:`D_P` **or all parallel** (concurrent at infinity), and :math:`D_P` is read off the left null
@@ -42,7 +42,6 @@ import numpy as np
 import sympy as sp
 
 from ..model import validation as V
-from ..model.backend import NUMERIC, SYMBOLIC, choose
 from ..model.platform import wrap_angle
 from ..model.tolerance import TOL, near_zero
 from .lines import (AT_INFINITY, COINCIDENT, FINITE, NONE, Concurrency, axles_concurrency, axles_through,
@@ -50,9 +49,18 @@ from .lines import (AT_INFINITY, COINCIDENT, FINITE, NONE, Concurrency, axles_co
 from .linalg import det
 from .mobility import rank_F
 
-__all__ = ["det_J", "det_J_scale", "is_singular", "det_J_symbolic", "det_J_polynomial", "exact_zero",
-           "plane_line_matrix", "characterisation", "Classification", "classify", "singular_motions",
+__all__ = ["det_J", "det_J_scale", "is_singular", "Classification", "classify", "singular_motions",
            "exact_robot", "numeric_robot"]
+
+#: the exact (SymPy) side of det J lives in wmr.analysis.det_exact; these names are reached from here too
+_EXACT = ("det_J_symbolic", "det_J_polynomial", "exact_zero", "plane_line_matrix", "characterisation")
+
+
+def __getattr__(name):
+    if name in _EXACT:
+        from . import det_exact
+        return getattr(det_exact, name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
 def _require_square(robot):
@@ -63,9 +71,10 @@ def _require_square(robot):
             f"n_rates = {robot.n_rates} (for dual wheels analyse the kinematically equivalent centred robot)")
 
 
-def _default_L(robot, L):
+def _default_L(robot, L, numeric=True):
     if L is not None:
-        return V.positive("L", L)
+        L = V.positive("L", L)
+        return V.number("L", L) if numeric else L
     from .isotropy import characteristic_length
     if V.free_symbols(V.robot(robot)):
         raise ValueError(f"L must be given explicitly for a robot with symbolic mount points, got L = None for {V.show(robot)}")
@@ -106,12 +115,7 @@ def numeric_robot(robot):
     -------
     Robot
     """
-    import dataclasses
-    from ..model.robot import Robot
-    V.robot(robot)
-    units = [dataclasses.replace(u, position=tuple(float(v) for v in u.position), r=float(u.r))
-             for u in robot.wheels]
-    return Robot(units, name=robot.name)
+    return V.robot(robot).numeric()
 
 
 # ------------------------------------------------------------------------------------- det J
@@ -138,7 +142,8 @@ def det_J(robot, beta, L=None):
     >>> abs(float(det_J(bot, [0.3, 0.3, 0.3]))) < 1e-15      # item (i)
     True
     """
-    _require_square(V.numeric_robot(robot))
+    robot = V.numeric_robot(robot)
+    _require_square(robot)
     return det(robot.J(beta, L=_default_L(robot, L)))                 # closed form, batched
 
 
@@ -157,7 +162,9 @@ def det_J_scale(robot, beta, L=None):
     -------
     numpy.ndarray (...)
     """
-    J = V.numeric_robot(robot).J(beta, L=_default_L(robot, L))
+    robot = V.numeric_robot(robot)
+    _require_square(robot)
+    J = robot.J(beta, L=_default_L(robot, L))
     return np.prod(np.linalg.norm(J, axis=-2), axis=-1)
 
 
@@ -177,176 +184,6 @@ def is_singular(robot, beta, L=None):
     numpy.ndarray of bool (...)
     """
     return near_zero(det_J(robot, beta, L), det_J_scale(robot, beta, L))
-
-
-def det_J_symbolic(robot, L=None):
-    r"""Exact :math:`\det\mathbf J` as a SymPy expression in the robot's :math:`\beta_i` symbols.
-
-    Derived from :meth:`wmr.Robot.J`, expanded into a polynomial in :math:`\cos\beta_i,\sin\beta_i`
-    (of degree one in each wheel's pair) and factored.
-
-    Parameters
-    ----------
-    robot : Robot
-        Numeric (use ``paper_robot(..., exact=True)`` for exact coefficients) or symbolic.
-    L : float or sympy.Expr, optional
-
-    Returns
-    -------
-    sympy.Expr
-    """
-    _require_square(robot)
-    robot = exact_robot(robot)
-    L = _default_L(robot, L)
-    if isinstance(L, float):
-        L = sp.nsimplify(L, [sp.sqrt(2), sp.sqrt(3)])
-    J = robot.J(None, L=L)
-    return sp.factor(sp.expand(sp.expand_trig(J.det())))
-
-
-def plane_line_matrix(robot, beta, L=1, backend=None):
-    r"""The matrix :math:`\mathbf W` whose columns are the Plücker vectors :math:`[m_i/L,\ \mathbf j_i^T]^T` of the wheel-plane lines.
-
-    :math:`m_i = \mathbf d_i^T\mathbf i_i = \mathbf d_i\times\mathbf j_i` is the moment of the line
-    about C.  For three centred wheels :math:`\mathbf J = -\mathbf W\,\mathrm{diag}(r_i)`.
-
-    Parameters
-    ----------
-    robot : Robot
-    beta : array (..., w) or sequence of SymPy expressions (None: the symbols)
-    L : float or sympy.Expr
-    backend : NUMERIC or SYMBOLIC, optional
-        Default: SymPy when ``beta`` is None or symbolic or the robot is symbolic, else NumPy.
-
-    Returns
-    -------
-    numpy.ndarray (..., 3, w) or sympy.Matrix (3, w)
-    """
-    symbolic = beta is None or V.robot(robot).is_symbolic or any(
-        isinstance(b, sp.Basic) for b in np.ravel(np.asarray(beta, dtype=object)))
-    bk = choose(backend=backend) if backend is not None else (SYMBOLIC if symbolic else NUMERIC)
-    if symbolic and bk is NUMERIC:
-        raise ValueError(f"backend NUMERIC needs numeric beta and a numeric robot, got beta = {V.show(beta)}, "
-                         f"robot = {V.show(robot)}")
-    symbolic = bk is SYMBOLIC
-    if symbolic:
-        b = list(robot.beta_symbols) if beta is None else list(beta)
-    else:
-        beta = V.finite_array("beta", beta, last=robot.w)
-        b = [beta[..., i] for i in range(robot.w)]
-    columns = []
-    for u, bi in zip(robot.wheels, b):
-        jx, jy = -bk.sin(bi), bk.cos(bi)                       # j_i = R_bwi [0 1]^T, (11)
-        px, py = u.position
-        columns.append([(px * jy - py * jx) / L, jx, jy])      # [m_i / L, j_i], m_i = d_i x j_i
-    return bk.matrix([list(row) for row in zip(*columns)])
-
-
-def characterisation(robot, L=None):
-    r"""Exact statements about the zero set of :math:`\det\mathbf J`, derived from the model.
-
-    Parameters
-    ----------
-    robot : Robot
-        Three centred wheels, numeric (made exact with :func:`exact_robot`) or symbolic.
-    L : float or sympy.Expr, optional
-        Characteristic length; default a positive symbol ``L`` for a symbolic robot, else
-        :func:`wmr.characteristic_length`.
-
-    Returns
-    -------
-    dict
-        ``"det_J"``: the factored :math:`\det\mathbf J` of ``robot``;
-        ``"lines_form"``: :math:`-(r_1r_2r_3/L)\sum_{\rm cyc} m_i\sin(\beta_k-\beta_j)`;
-        ``"identity_general"``: True when :math:`\det\mathbf J = -(r_1r_2r_3/L)\det\mathbf W`
-        holds exactly for three centred wheels at **symbolic** mount points;
-        ``"identity_robot"``: the same identity for ``robot``;
-        ``"independent_of_L"``: True when ``det_J`` does not contain the symbol L;
-        ``"irreducible"``: True when the trilinear form has no factor other than constants.
-    """
-    from ..model.robot import Robot
-    from ..model.wheels import CentredWheel
-    _require_square(robot)
-    Ls = sp.Symbol("L", positive=True)
-    if L is None:
-        L = Ls if robot.is_symbolic else _default_L(robot, None)
-
-    def lines_form(bot, L):
-        b = bot.beta_symbols
-        m = [u.position[0] * sp.cos(bi) + u.position[1] * sp.sin(bi) for u, bi in zip(bot.wheels, b)]
-        rr = sp.Mul(*[u.r for u in bot.wheels])
-        return -(rr / L) * (m[0] * sp.sin(b[2] - b[1]) + m[1] * sp.sin(b[0] - b[2]) + m[2] * sp.sin(b[1] - b[0]))
-
-    xs, ys = sp.symbols("x1:4", real=True), sp.symbols("y1:4", real=True)
-    rs = sp.symbols("r1:4", positive=True)
-    gen = Robot([CentredWheel((x, y), r=ri) for x, y, ri in zip(xs, ys, rs)])
-    gdet = gen.J(None, L=Ls).det()
-    ident_general = sp.expand(sp.expand_trig(gdet - lines_form(gen, Ls))) == 0
-    ident_w = sp.expand(sp.expand_trig(gdet + sp.Mul(*rs) * plane_line_matrix(gen, None, Ls).det())) == 0
-    det = det_J_symbolic(robot, L)
-    lf = lines_form(robot, L)
-    ident_robot = sp.expand(sp.expand_trig(det - lf)) == 0
-    # irreducibility: write det J as a polynomial in c_i, s_i and factor over Q(sqrt 3)
-    cs = sp.symbols("c1:4 s1:4", real=True)
-    b = robot.beta_symbols
-    poly = sp.expand(sp.expand_trig(det)).subs({**{sp.cos(bi): cs[i] for i, bi in enumerate(b)},
-                                                **{sp.sin(bi): cs[3 + i] for i, bi in enumerate(b)}})
-    fl = sp.factor_list(sp.expand(poly), extension=sp.sqrt(3))
-    nontrivial = [f for f, _ in fl[1] if f.free_symbols & set(cs)]
-    return {"det_J": det, "lines_form": lf, "identity_general": bool(ident_general and ident_w),
-            "identity_robot": bool(ident_robot), "independent_of_L": Ls not in det.free_symbols,
-            "irreducible": len(nontrivial) == 1, "polynomial": poly}
-
-
-def det_J_polynomial(robot, L=None):
-    r""":math:`\det\mathbf J` as a polynomial in :math:`c_i = \cos\beta_i`, :math:`s_i = \sin\beta_i` (degree 1 in each pair).
-
-    Parameters
-    ----------
-    robot : Robot
-        Three centred wheels (made exact with :func:`exact_robot`).
-    L : float or sympy.Expr, optional
-        As for :func:`det_J_symbolic`.
-
-    Returns
-    -------
-    poly : sympy.Expr
-    c, s : tuple of 3 sympy.Symbol
-        The symbols :math:`c_i`, :math:`s_i`.
-    """
-    det = sp.expand(sp.expand_trig(det_J_symbolic(robot, L)))
-    c = sp.symbols("c1:4", real=True)
-    s = sp.symbols("s1:4", real=True)
-    b = robot.beta_symbols
-    poly = det.subs({**{sp.cos(bi): c[i] for i, bi in enumerate(b)}, **{sp.sin(bi): s[i] for i, bi in enumerate(b)}})
-    return sp.expand(poly), c, s
-
-
-def exact_zero(poly, c, s, dirs):
-    r"""True when the polynomial form of :math:`\det\mathbf J` vanishes identically on a parameterised family.
-
-    :math:`\det\mathbf J` is homogeneous of degree one in each wheel's :math:`(\cos\beta_i,\sin\beta_i)`,
-    so substituting unnormalised axle directions multiplies it by a non-zero factor: the zero test
-    is exact without square roots.
-
-    Parameters
-    ----------
-    poly, c, s : sympy.Expr, tuples of sympy.Symbol
-        From :func:`det_J_polynomial`.
-    dirs : list of 3 pairs of sympy.Expr
-        Axle direction of each wheel (unnormalised), in the family's free symbols.
-
-    Returns
-    -------
-    bool
-    """
-    e = poly.subs({**{c[i]: dirs[i][0] for i in range(3)}, **{s[i]: dirs[i][1] for i in range(3)}},
-                  simultaneous=True)
-    e = sp.expand(sp.expand_trig(e))
-    if e == 0:
-        return True
-    num, _ = sp.fraction(sp.cancel(sp.together(e)))
-    return sp.expand(num) == 0 or sp.simplify(e) == 0
 
 
 # -------------------------------------------------------------------------------- classify
@@ -465,6 +302,8 @@ def singular_motions(robot, beta1):
         From :func:`classify`.
     """
     _require_square(robot)
+    robot = V.numeric_robot(robot)
+    beta1 = V.number("beta1", beta1)
     rows = []
     for a in (0.0, np.pi):
         for b in (0.0, np.pi):

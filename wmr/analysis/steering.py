@@ -16,7 +16,7 @@ import numpy as np
 
 from ..model import validation as V
 from ..model.platform import point_velocity
-from ..model.tolerance import TOL, near_zero
+from ..model.tolerance import TOL
 from ._batch import for_chunks
 from .lines import AT_INFINITY, FINITE, STILL
 
@@ -76,21 +76,26 @@ def instantaneous_centre(twist, length=None):
     [-2.0, 0.0]
     """
     t = V.finite_array("twist", twist, last=3)
-    length = None if length is None else V.positive("length", length)
+    length = None if length is None else V.number("length", V.positive("length", length))
     psi, c = t[..., 0], t[..., 1:]
-    speed = np.hypot(c[..., 0], c[..., 1])
+    big = np.max(np.abs(c), axis=-1)                                 # speeds up to 2.4e308: scaled first
+    m = np.where(big > 0, big, 1.0)
+    speed = np.hypot(c[..., 0] / m, c[..., 1] / m)                   # |c_dot| / m
     Ec = np.stack([-c[..., 1], c[..., 0]], axis=-1)                  # E c_dot
-    still = (psi == 0) & (speed == 0)
+    still = (psi == 0) & (big == 0)
     if length is None:
         infinite = (psi == 0) & ~still
     else:
-        with np.errstate(over="ignore"):
-            infinite = near_zero(psi * length, speed) & ~still
+        with np.errstate(over="ignore", under="ignore"):             # the rule of near_zero: |psi| l <= TOL |c_dot|
+            infinite = (np.abs(psi) * (length / m) <= TOL * speed) & ~still
     kind = np.where(still, STILL, np.where(infinite, AT_INFINITY, FINITE))
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         point = Ec / np.where(kind == FINITE, psi, 1.0)[..., None]  # (63)
         sign = np.where(kind == FINITE, np.sign(psi), 1.0)
-        direction = (sign / np.where(speed == 0, 1.0, speed))[..., None] * Ec
+        direction = (sign / np.where(speed == 0, 1.0, speed))[..., None] * (Ec / m[..., None])
+    if not np.isfinite(point[kind == FINITE]).all():
+        raise ValueError("twist has a centre |c_dot| / |psi_dot| beyond double precision: give length (the robot's "
+                         "size) to call it at infinity")
     point = np.where((kind == AT_INFINITY)[..., None], np.inf, point)
     point = np.where((kind == STILL)[..., None], np.nan, point)
     direction = np.where(still[..., None], np.nan, direction)
@@ -135,7 +140,7 @@ def steering_angles(robot, twist, current=None):
     w = robot.w
     if current is not None:
         current = V.finite_array("current", current, last=w)
-    batch = np.broadcast_shapes(t.shape[:-1], () if current is None else current.shape[:-1])
+    batch = V.batch_shape({"twist": t, "current": current})
     tw = np.broadcast_to(t, batch + (3,)).reshape(-1, 3)
     cur = None if current is None else np.broadcast_to(current, batch + (w,)).reshape(-1, w)
     d = robot.mount_points                                             # (w, 2)

@@ -53,7 +53,7 @@ _BLOCK = 1 << 16                     # random samples are drawn in blocks of thi
 # ------------------------------------------------------------------------------------ analyses
 def _J_length(robot, L):
     from .isotropy import characteristic_length
-    return characteristic_length(robot) if L is None else V.positive("L", L)
+    return characteristic_length(robot) if L is None else V.number("L", V.positive("L", L))
 
 
 def _rank_F(robot, beta, L):

@@ -4,6 +4,7 @@ r"""The model: what a wheeled mobile robot *is* (no analysis here).
 :mod:`~wmr.model.backend`      the two backends (NumPy numbers, SymPy symbols) every matrix is built with
 :mod:`~wmr.model.tolerance`    the one numerical tolerance
 :mod:`~wmr.model.validation`   input checks: ``TypeError`` for the wrong kind, ``ValueError`` for a bad value
+:mod:`~wmr.model.arrays`       the same for arrays (finite batches, SymPy vectors and matrices)
 :mod:`~wmr.model.platform`     the rigid platform: :math:`\mathbf E`, rotations, :math:`[\mathbf E\mathbf d_i\ \mathbf 1]` (2)-(5)
 :mod:`~wmr.model.wheels`       wheel units, each a block of :math:`\mathbf J_2`
 :mod:`~wmr.model.robot`        the assembled robot: :math:`\mathbf J_1`, :math:`\mathbf J_2`, :math:`\mathbf F`, :math:`\mathbf J`
@@ -12,4 +13,4 @@ r"""The model: what a wheeled mobile robot *is* (no analysis here).
 ========================  ==========================================================================
 """
 
-__all__ = ["backend", "tolerance", "validation", "platform", "wheels", "robot", "robots", "conventions"]
+__all__ = ["backend", "tolerance", "validation", "arrays", "platform", "wheels", "robot", "robots", "conventions"]

@@ -18,7 +18,7 @@ import numpy as np
 
 from .backend import NUMERIC, choose
 
-__all__ = ["E", "rotation", "cos_sin", "rotated", "wrap_angle", "point_row", "point_velocity"]
+__all__ = ["E", "rotation", "cos_sin", "rotated", "wrap_angle", "line_angle", "point_row", "point_velocity"]
 
 
 def E(backend=NUMERIC):
@@ -37,7 +37,7 @@ def E(backend=NUMERIC):
     >>> E().tolist()
     [[0.0, -1.0], [1.0, 0.0]]
     """
-    return backend.matrix([[0, -1], [1, 0]])
+    return choose(backend=backend).matrix([[0, -1], [1, 0]])
 
 
 def rotation(angle, backend=NUMERIC):
@@ -60,9 +60,9 @@ def rotation(angle, backend=NUMERIC):
     >>> rotation(np.zeros(5)).shape
     (5, 2, 2)
     """
-    if backend is NUMERIC:
-        from .validation import finite_array
-        angle = finite_array("angle", angle)
+    from . import validation as V
+    backend = choose(backend=backend)
+    angle = V.finite_array("angle", angle) if backend is NUMERIC else V.real("angle", angle)
     c, s = backend.cos(angle), backend.sin(angle)
     return backend.matrix([[c, -s], [s, c]])
 
@@ -98,6 +98,11 @@ def cos_sin(beta, out=None):
     >>> bool(np.allclose(s, np.sin([0.0, np.pi / 3, -np.pi]), rtol=0, atol=3e-16))
     True
     """
+    from .validation import finite_array
+    beta = finite_array("beta", beta)
+    if out is not None and not (isinstance(out, tuple) and len(out) == 2 and all(
+            isinstance(o, np.ndarray) and o.dtype == np.float64 and o.shape == beta.shape for o in out)):
+        raise TypeError(f"out must be a pair of float arrays of shape {beta.shape}, got {type(out).__name__}")
     t = np.multiply(beta, 0.5, out=np.empty(np.shape(beta)))     # arrays even when 0-d
     np.tan(t, out=t)
     h = np.multiply(t, t, out=np.empty_like(t))
@@ -149,15 +154,41 @@ def rotated(beta, M, EM, axes=2, backend=None):
     >>> rotated(np.zeros(4), L, E() @ L).shape
     (4, 2, 1)
     """
-    if isinstance(beta, tuple):
+    checked = False
+    if isinstance(beta, tuple):                    # (cos, sin) from the caller: the kernels' inner loops
         c, s = beta
     else:
+        from . import validation as V
         bk = choose(beta, backend=backend)
-        c, s = cos_sin(np.asarray(beta, dtype=float)) if bk is NUMERIC else (bk.cos(beta), bk.sin(beta))
+        if bk is NUMERIC:
+            beta, M, EM = (V.finite_array(n, a) for n, a in (("beta", beta), ("M", M), ("EM", EM)))
+            if np.shape(M) != np.shape(EM) or np.ndim(M) < V.integer("axes", axes, minimum=0):
+                raise ValueError(f"M and EM must be blocks of one shape with at least axes = {axes} axes, "
+                                 f"got shapes {np.shape(M)} and {np.shape(EM)}")
+            c, s = cos_sin(beta)
+            checked = True
+        else:
+            beta = V.real("beta", beta)
+            M, EM = (V.symbolic_matrix(n, a) for n, a in (("M", M), ("EM", EM)))
+            c, s = bk.cos(beta), bk.sin(beta)
     if isinstance(c, np.ndarray):
         index = (Ellipsis,) + (None,) * axes
         c, s = c[index], s[index]
-    return c * M + s * EM
+    if not checked:
+        return _combination(c, s, M, EM)
+    with np.errstate(over="ignore", invalid="ignore"):
+        try:
+            out = _combination(c, s, M, EM)
+        except ValueError:
+            raise ValueError(f"beta {np.shape(beta)} and the blocks M, EM {np.shape(M)} must broadcast "
+                             f"(beta's axes, then {axes} block axes)") from None
+    if not np.isfinite(out).all():
+        raise ValueError(f"M and EM are too large: R(beta) M overflows (largest |M| = {np.abs(M).max():.3g})")
+    return out
+
+
+def _combination(c, s, M, EM):
+    return c * M + s * EM                          # (11): R(beta) M = cos(beta) M + sin(beta) E M
 
 
 def wrap_angle(angle):
@@ -177,11 +208,35 @@ def wrap_angle(angle):
     >>> np.degrees(wrap_angle(np.radians([180.0, -180.0, 270.0]))).round(9).tolist()
     [180.0, 180.0, -90.0]
     """
+    return _wrap("angle", angle, 2 * np.pi)
+
+
+def line_angle(beta):
+    r"""The angle of a line through the origin, in :math:`(-\pi/2, \pi/2]`: ``beta`` and ``beta + pi`` give the same line.
+
+    Parameters
+    ----------
+    beta : float or array (...)
+        Radians.
+
+    Returns
+    -------
+    numpy.ndarray (...)
+
+    Examples
+    --------
+    >>> np.degrees(line_angle(np.radians([-90.0, 135.0, 180.0]))).round(9).tolist()
+    [90.0, -45.0, 0.0]
+    """
+    return _wrap("beta", beta, np.pi)
+
+
+def _wrap(name, angle, period):
+    """Angles mapped to (-period/2, period/2] (within TOL of -period/2 counts as +period/2)."""
     from .tolerance import TOL
     from .validation import finite_array
-    a = finite_array("angle", angle)
-    w = np.mod(a + np.pi, 2 * np.pi) - np.pi
-    return np.where(np.isclose(w, -np.pi, atol=TOL, rtol=0), np.pi, w)
+    w = np.mod(finite_array(name, angle) + period / 2, period) - period / 2
+    return np.where(np.isclose(w, -period / 2, atol=TOL, rtol=0), period / 2, w)
 
 
 def point_row(d, L=1, backend=None):
@@ -208,10 +263,17 @@ def point_row(d, L=1, backend=None):
     >>> point_row((2.0, 0.0)).tolist()
     [[-0.0, 1.0, 0.0], [2.0, 0.0, 1.0]]
     """
+    from . import validation as V
+    d = V.point("d", d)
+    L = V.positive("L", L)
     bk = choose(*d, L, backend=backend)
     dx, dy = d
     # (5): p_dot = [E d  1] t ;  E d = [-dy, dx]
-    return bk.matrix([[-dy / L, 1, 0], [dx / L, 0, 1]])
+    with np.errstate(over="ignore", invalid="ignore"):
+        M = bk.matrix([[-dy / L, 1, 0], [dx / L, 0, 1]])
+    if bk is NUMERIC and not np.isfinite(M).all():
+        raise ValueError(f"L = {L!r} is too small for d = {V.show(d)}: d / L overflows")
+    return M
 
 
 def point_velocity(twist, d):
@@ -233,7 +295,13 @@ def point_velocity(twist, d):
     >>> point_velocity([1.0, 0.0, 0.0], [2.0, 0.0]).tolist()     # spin: (psi_dot k) x d
     [0.0, 2.0]
     """
-    from .validation import finite_array
-    t = finite_array("twist", twist, last=3)
-    d = finite_array("d", d, last=2)
-    return np.stack([t[..., 1] - t[..., 0] * d[..., 1], t[..., 2] + t[..., 0] * d[..., 0]], axis=-1)
+    from . import validation as V
+    t = V.finite_array("twist", twist, last=3)
+    d = V.finite_array("d", d, last=2)
+    V.batch_shape({"twist": t, "d": d})
+    with np.errstate(over="ignore", invalid="ignore"):
+        v = np.stack([t[..., 1] - t[..., 0] * d[..., 1], t[..., 2] + t[..., 0] * d[..., 0]], axis=-1)
+    if not np.isfinite(v).all():
+        raise ValueError(f"twist and d are too large: the velocity overflows (largest |twist| = {np.abs(t).max():.3g}, "
+                         f"|d| = {np.abs(d).max():.3g})")
+    return v

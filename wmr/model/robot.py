@@ -10,6 +10,8 @@ of :math:`\mathbf F` is which rate.
 """
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 import sympy as sp
 
@@ -136,9 +138,10 @@ class Robot:
         (:mod:`wmr.model.tolerance`).  Zero columns get 1.  Numeric robots only.
         """
         from ..analysis.linalg import column_norms
-        blocks = [np.asarray(u.block_terms(NUMERIC)[0], dtype=float) for u in self.wheels]
+        bot = self.numeric()
+        blocks = [np.asarray(u.block_terms(NUMERIC)[0], dtype=float) for u in bot.wheels]
         rates = np.concatenate([column_norms(b) for b in blocks])
-        return np.concatenate([column_norms(self.J1(backend=NUMERIC)), rates])
+        return np.concatenate([column_norms(bot.J1(backend=NUMERIC)), rates])
 
     # --- matrices -------------------------------------------------------------------------------
     def _beta(self, beta, bk):
@@ -173,6 +176,8 @@ class Robot:
         """
         L = V.positive("L (characteristic length)", L)
         bk = choose(L, backend=backend) if not self.is_symbolic else SYMBOLIC
+        if bk is NUMERIC:
+            L = V.number("L (characteristic length)", L)
         M = bk.zeros(2 * self.w, 3)
         with np.errstate(over="ignore"):
             for i, u in enumerate(self.wheels):
@@ -282,6 +287,40 @@ class Robot:
                              "the double-precision range")
         return trig_combination(b, P, Q)
 
+    def numeric(self):
+        r"""The same robot with float mount points and lengths (itself when it has no SymPy values).
+
+        Exact robots (``paper_robot(..., exact=True)``, SymPy numbers such as :math:`\sqrt3/2`) become
+        their float counterparts, for the batched numeric analyses.
+
+        Returns
+        -------
+        Robot
+
+        Raises
+        ------
+        ValueError
+            If a mount point or a length contains a free symbol.
+
+        Examples
+        --------
+        >>> from wmr import paper_robot
+        >>> paper_robot(L=2, exact=True).numeric().mount_points[1].round(12).tolist()
+        [1.0, 1.732050807569]
+        """
+        if not self.is_symbolic:
+            return self
+        if V.free_symbols(self):
+            raise ValueError(f"robot has free symbols {sorted(map(str, V.free_symbols(self)))}: it has no numeric "
+                             f"counterpart ({V.show(self)})")
+
+        def num(v):
+            return tuple(num(e) for e in v) if isinstance(v, tuple) else (float(v) if isinstance(v, sp.Basic) else v)
+
+        units = [dataclasses.replace(u, **{f.name: num(getattr(u, f.name)) for f in dataclasses.fields(u)})
+                 for u in self.wheels]
+        return Robot(units, name=self.name)
+
     # --- frames ---------------------------------------------------------------------------------
     def moved(self, origin=(0.0, 0.0), angle=0.0):
         """The same robot described from another body frame.
@@ -312,12 +351,17 @@ class Robot:
         >>> (bot.moved(origin=(1.0, 0.0), angle=np.pi / 2).mount_points.round(12) + 0.0).tolist()
         [[0.0, 0.0], [0.0, 2.0]]
         """
-        import dataclasses
         ox, oy = V.point("origin", origin)
-        angle = float(V.real("angle", angle))
+        angle = V.number("angle", angle)
         c, s = np.cos(angle), np.sin(angle)
-        units = []
-        for u in self.wheels:
-            x, y = u.position[0] - ox, u.position[1] - oy
-            units.append(dataclasses.replace(u, position=(c * x + s * y, -s * x + c * y)))
-        return Robot(units, name=self.name)
+        moved = []
+        with np.errstate(over="ignore", invalid="ignore"):
+            for u in self.wheels:
+                x, y = u.position[0] - ox, u.position[1] - oy
+                moved.append((c * x + s * y, -s * x + c * y))
+        try:
+            if not all(np.isfinite(float(v)) for p in moved for v in p if not isinstance(v, sp.Basic)):
+                raise ValueError("their coordinates overflow")
+            return Robot([dataclasses.replace(u, position=p) for u, p in zip(self.wheels, moved)], name=self.name)
+        except ValueError as e:
+            raise ValueError(f"origin = {V.show(origin)} is too far from the mount points ({e})") from None

@@ -59,7 +59,7 @@ def equilateral_mounts(L=1.0, first_deg=180.0, clockwise=True, exact=False):
     out = []
     for k in range(3):
         ang = sp.pi * (first + k * step) / 180
-        if exact or isinstance(L, sp.Basic):
+        if exact or isinstance(L, sp.Basic) or isinstance(first_deg, sp.Basic):
             out.append((sp.nsimplify(L * sp.cos(ang)), sp.nsimplify(L * sp.sin(ang))))
         else:                                                              # exact, then float:
             out.append((float(L * sp.cos(ang)), float(L * sp.sin(ang))))  # no 1e-17 residue
@@ -94,6 +94,8 @@ def paper_robot(kind="centred", L=1.0, r=1.0, d=None, b=None, exact=False):
     """
     if not isinstance(kind, str):
         raise TypeError(f"kind must be 'centred', 'offset' or 'dual', got {V.show(kind)} ({type(kind).__name__})")
+    d = None if d is None else V.nonnegative("d (offset)", d)        # checked even where unused
+    b = None if b is None else V.positive("b (half wheel separation)", b)
     pts = equilateral_mounts(L, exact=V.flag("exact", exact))
     if kind == "centred":
         units = [CentredWheel(p, r=r) for p in pts]

@@ -100,5 +100,12 @@ def near_zero(x, scale=1.0):
     >>> near_zero([1e-12, 1e-3], scale=[1.0, 1e7]).tolist()
     [True, True]
     """
-    x = np.abs(np.asarray(x, dtype=float))
-    return x <= TOL * np.abs(np.asarray(scale, dtype=float))
+    from .validation import finite_array
+    x = np.abs(finite_array("x", x))
+    scale = finite_array("scale", scale)
+    if np.any(scale < 0):
+        raise ValueError(f"scale must be a size (>= 0), got negative values {scale[scale < 0].ravel()[:3].tolist()}")
+    try:
+        return x <= TOL * scale
+    except ValueError:
+        raise ValueError(f"x and scale must broadcast, got shapes {x.shape} and {scale.shape}") from None

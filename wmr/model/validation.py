@@ -19,10 +19,13 @@ Examples
 Traceback (most recent call last):
     ...
 ValueError: r must be positive, got -1
->>> finite_array("beta", ["0.7", "0.1"])
+>>> real("angle", "0.7")
 Traceback (most recent call last):
     ...
-TypeError: beta must be an array of real numbers, got strings: ['0.7', '0.1']
+TypeError: angle must be a real number, got '0.7' (str)
+
+The array checks (``finite_array``, ``batch_shape``, ``symbolic_vector``, ``symbolic_matrix``) are in
+:mod:`wmr.model.arrays`, and reachable from here.
 """
 from __future__ import annotations
 
@@ -32,7 +35,7 @@ import numbers
 import numpy as np
 import sympy as sp
 
-__all__ = ["real", "positive", "nonnegative", "point", "finite_array", "symbolic_vector", "robot",
+__all__ = ["real", "number", "positive", "nonnegative", "point", "robot",
            "numeric_robot", "free_symbols", "flag", "optional_text", "integer", "show"]
 
 _NON_FINITE = (sp.nan, sp.zoo, sp.oo, -sp.oo)
@@ -93,25 +96,11 @@ def _to_float(name, value):
         except OverflowError:
             f = math.inf
     if not math.isfinite(f):
-        big = " (too large for double precision)" if not _is_nan(value) and _finite_exact(value) else ""
-        raise ValueError(f"{name} must be a finite real number, got {show(value)}{big}")
+        big = (isinstance(value, numbers.Rational) or (isinstance(value, np.floating) and bool(np.isfinite(value)))
+               or (isinstance(value, sp.Basic) and value.is_finite))          # finite as written: 10**400, 1e400L
+        raise ValueError(f"{name} must be a finite real number, got {show(value)}"
+                         + (" (too large for double precision)" if big else ""))
     return f
-
-
-def _is_nan(value):
-    try:
-        return value != value
-    except Exception:
-        return False
-
-
-def _finite_exact(value):
-    """True for numbers that are finite as written but not as a float (10**400, longdouble 1e400)."""
-    if isinstance(value, numbers.Integral):
-        return True
-    if isinstance(value, np.floating):
-        return bool(np.isfinite(value))
-    return isinstance(value, numbers.Rational)
 
 
 def _number(name, value):
@@ -178,6 +167,31 @@ def _signed(name, value, strict):
     if bad:
         raise ValueError(f"{name} must be {wanted}, got {show(value)}")
     return value
+
+
+def number(name, value):
+    """Return ``value`` as a ``float`` if it is a finite real number (SymPy numbers too, not symbols).
+
+    Parameters
+    ----------
+    name : str
+    value : object
+
+    Returns
+    -------
+    float
+
+    Examples
+    --------
+    >>> number("angle", sp.pi / 2)
+    1.5707963267948966
+    """
+    value = real(name, value)
+    if isinstance(value, sp.Basic):
+        if value.free_symbols:
+            raise TypeError(f"{name} must be a number here, got the expression {show(value)}")
+        value = _to_float(name, value)
+    return float(value)
 
 
 def positive(name, value):
@@ -254,108 +268,6 @@ def point(name, value):
     return tuple(out)
 
 
-def _object_array(name, raw, value):
-    """Floats from an object array whose entries are real numbers (Fraction, int, ...)."""
-    out = np.empty(raw.shape)
-    flat = out.reshape(-1)
-    for k, v in enumerate(raw.flat):
-        if isinstance(v, sp.Basic):
-            raise TypeError(f"{name} must be an array of numbers, got SymPy entries in {show(value)} "
-                            "(use the SymPy backend for symbolic work)")
-        if isinstance(v, (bool, np.bool_)) or not isinstance(v, numbers.Real):
-            raise _kind_error(name, value, "an array of real numbers") from None
-        flat[k] = _to_float(name, v)
-    return out
-
-
-def finite_array(name, value, last=None):
-    """Convert to a float array; require finite real entries and (optionally) the size of the last axis.
-
-    Parameters
-    ----------
-    name : str
-    value : array_like
-    last : int, optional
-        Required length of the last axis.
-
-    Returns
-    -------
-    numpy.ndarray of float64
-
-    Raises
-    ------
-    TypeError
-        Strings, bools, complex numbers, None, SymPy entries.
-    ValueError
-        Ragged nesting, a wrong last axis, NaN, infinity, entries too large for double precision.
-
-    Examples
-    --------
-    >>> finite_array("twist", [1, 2, 3], last=3)
-    array([1., 2., 3.])
-    """
-    if isinstance(value, np.ndarray) and value.dtype == np.float64:
-        arr = value
-    else:
-        if value is None or isinstance(value, (str, bytes)):
-            raise _kind_error(name, value, "an array of real numbers")
-        try:
-            raw = np.asarray(value)
-        except (ValueError, TypeError):
-            raise ValueError(f"{name} must be a regular (not ragged) array of real numbers, got {show(value)}") from None
-        kind = raw.dtype.kind
-        if kind in "iuf":
-            with np.errstate(over="ignore"):
-                arr = raw.astype(np.float64)
-            if kind == "f" and raw.dtype.itemsize > 8 and not np.all(np.isfinite(arr)) and np.all(np.isfinite(raw)):
-                raise ValueError(f"{name} has entries too large for double precision: {show(raw)}")
-        elif kind == "O":
-            arr = _object_array(name, raw, value)
-        else:
-            what = {"b": "booleans", "c": "complex numbers", "U": "strings", "S": "strings"}.get(kind, raw.dtype.name)
-            raise TypeError(f"{name} must be an array of real numbers, got {what}: {show(value)}")
-    if last is not None and (arr.ndim == 0 or arr.shape[-1] != last):
-        raise ValueError(f"{name} must have shape (..., {last}), got shape {arr.shape}: {show(arr)}")
-    if not np.isfinite(arr).all():
-        bad = arr[~np.isfinite(arr)].ravel()[:3]
-        raise ValueError(f"{name} must be finite, got non-finite values {bad.tolist()}")
-    return arr
-
-
-def symbolic_vector(name, value, size):
-    """Convert to a SymPy column of the given length (entries: real SymPy expressions or numbers).
-
-    Parameters
-    ----------
-    name : str
-    value : sequence or sympy.Matrix
-    size : int
-
-    Returns
-    -------
-    sympy.Matrix (size, 1)
-
-    Examples
-    --------
-    >>> symbolic_vector("beta", [sp.Symbol("x"), 0], 2).shape
-    (2, 1)
-    """
-    if isinstance(value, sp.MatrixBase):
-        entries = list(value)
-        shape = value.shape
-    else:
-        if isinstance(value, (str, bytes)) or isinstance(value, sp.Basic):
-            raise _kind_error(name, value, f"a sequence of {size} entries")
-        try:
-            entries = list(value)
-        except TypeError:
-            raise _kind_error(name, value, f"a sequence of {size} entries") from None
-        shape = (len(entries), 1)
-    if shape not in ((size, 1), (1, size)):
-        raise ValueError(f"{name} must have {size} entries, got shape {shape}")
-    return sp.Matrix([real(f"{name}[{k}]", v) for k, v in enumerate(entries)])
-
-
 def robot(value, name="robot"):
     """Return ``value`` if it is a :class:`wmr.Robot` instance.
 
@@ -386,7 +298,7 @@ def robot(value, name="robot"):
 
 
 def numeric_robot(value, name="robot"):
-    """Return ``value`` if it is a :class:`wmr.Robot` with numeric mount points and lengths.
+    """Return ``value`` if it is a :class:`wmr.Robot` without free symbols, as floats (:meth:`wmr.Robot.numeric`).
 
     Parameters
     ----------
@@ -396,12 +308,13 @@ def numeric_robot(value, name="robot"):
     Returns
     -------
     Robot
+        ``value`` itself, or its float counterpart for an exact robot.
     """
     value = robot(value, name)
     if free_symbols(value):
         raise ValueError(f"{name} must have numeric mount points and lengths here, got a robot with the symbols "
                          f"{sorted(map(str, free_symbols(value)))}: {show(value)}")
-    return value
+    return value.numeric() if value.is_symbolic else value
 
 
 def free_symbols(robot):
@@ -489,3 +402,14 @@ def integer(name, value, minimum=None):
     if minimum is not None and value < minimum:
         raise ValueError(f"{name} must be at least {minimum}, got {show(value)}")
     return int(value)
+
+
+_ARRAY_CHECKS = ("finite_array", "batch_shape", "symbolic_vector", "symbolic_matrix")
+
+
+def __getattr__(name):
+    """The array checks live in :mod:`wmr.model.arrays`; ``validation.finite_array`` etc. reach them."""
+    if name in _ARRAY_CHECKS:
+        from . import arrays
+        return getattr(arrays, name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

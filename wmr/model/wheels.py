@@ -107,6 +107,26 @@ class _Unit:
         """
         raise NotImplementedError
 
+    @staticmethod
+    def _number(i):
+        """The unit's number in the robot, checked (1-based)."""
+        return V.integer("i", i, minimum=1)
+
+    def _rates_in(self, psi_dot, rates, steer):
+        """``psi_dot`` (...), ``rates`` (..., n_rates) and ``steer`` (... or None), checked."""
+        psi_dot = V.finite_array("psi_dot", psi_dot)
+        rates = V.finite_array("rates", rates, last=self.n_rates)
+        steer = None if steer is None else V.finite_array("steer", steer)
+        V.batch_shape({"psi_dot": psi_dot, "rates": rates[..., 0], "steer": steer}, core=0)
+        return psi_dot, rates, steer
+
+    @staticmethod
+    def _finite_rate(out, rates):
+        if not np.isfinite(out).all():
+            raise ValueError(f"rates or psi_dot are too large: the steering rate overflows "
+                             f"(largest |rates| = {np.abs(rates).max():.3g})")
+        return out
+
     @property
     def is_symbolic(self):
         """True when the position or a length of the unit is a SymPy expression."""
@@ -221,15 +241,18 @@ class OffsetWheel(_Unit):
         object.__setattr__(self, "d", V.nonnegative("d (offset)", self.d))
 
     def rate_names(self, i):
+        i = self._number(i)
         return (f"phi_dot_{i}", f"theta_dot_{i}")
 
     def rate_symbols(self, i):
+        i = self._number(i)
         return sp.symbols(rf"\dot{{\phi}}_{{{i}}} \dot{{\theta}}_{{{i}}}", real=True)
 
     def _local_block(self, bk):
         # (20)/(21): p~ = diag(-d, -r)
         return bk.matrix([[-self.d, 0], [0, -self.r]])
 
+    @np.errstate(over="ignore", invalid="ignore")       # overflow is checked on the result
     def beta_rate(self, psi_dot, rates, steer=None):
         r"""(7): :math:`\dot\beta_i = \dot\phi_i - \dot\psi`, with :math:`\dot\phi_i` = ``rates[..., 0]``.
 
@@ -251,7 +274,8 @@ class OffsetWheel(_Unit):
         >>> float(OffsetWheel((0, 0), r=1, d=0.5).beta_rate(0.25, np.array([1.0, 3.0])))
         0.75
         """
-        return rates[..., 0] - psi_dot
+        psi_dot, rates, _ = self._rates_in(psi_dot, rates, steer)
+        return self._finite_rate(rates[..., 0] - psi_dot, rates)
 
     def _points(self, P, i_dir, j_dir):
         H = P - self.d * j_dir
@@ -278,10 +302,10 @@ class CentredWheel(_Unit):
     n_rates = 1
 
     def rate_names(self, i):
-        return (f"theta_dot_{i}",)
+        return (f"theta_dot_{self._number(i)}",)
 
     def rate_symbols(self, i):
-        return (sp.Symbol(rf"\dot{{\theta}}_{{{i}}}", real=True),)
+        return (sp.Symbol(rf"\dot{{\theta}}_{{{self._number(i)}}}", real=True),)
 
     def _local_block(self, bk):
         # (51): R_bwi [0, -r]^T
@@ -303,9 +327,9 @@ class CentredWheel(_Unit):
         -------
         float or numpy.ndarray (...)
         """
-        if steer is None:
-            return np.zeros_like(np.asarray(psi_dot, dtype=float))
-        return steer
+        psi_dot, rates, steer = self._rates_in(psi_dot, rates, steer)
+        shape = V.batch_shape({"psi_dot": psi_dot, "rates": rates[..., 0], "steer": steer}, core=0)
+        return np.zeros(shape) if steer is None else np.broadcast_to(steer, shape).copy()
 
 
 @dataclass(frozen=True)
@@ -338,9 +362,11 @@ class DualWheel(_Unit):
         object.__setattr__(self, "b", V.positive("b (half wheel separation)", self.b))
 
     def rate_names(self, i):
+        i = self._number(i)
         return (f"theta_dot_{i}1", f"theta_dot_{i}2")
 
     def rate_symbols(self, i):
+        i = self._number(i)
         return sp.symbols(rf"\dot{{\theta}}_{{{i}1}} \dot{{\theta}}_{{{i}2}}", real=True)
 
     def _local_block(self, bk):
@@ -348,6 +374,7 @@ class DualWheel(_Unit):
         half = self.r / 2
         return bk.matrix([[0, 0], [-half, -half]])
 
+    @np.errstate(over="ignore", invalid="ignore")       # overflow is checked on the result
     def beta_rate(self, psi_dot, rates, steer=None):
         r"""Corrected (15): :math:`\dot\beta_i = -\tfrac{r}{2b}(\dot\theta_{i1} - \dot\theta_{i2}) - \dot\psi`.
 
@@ -369,7 +396,8 @@ class DualWheel(_Unit):
         >>> float(DualWheel((0, 0), r=0.2, b=0.1).beta_rate(0.0, np.array([1.0, 0.0])))
         -1.0
         """
-        return -(self.r / (2 * self.b)) * (rates[..., 0] - rates[..., 1]) - psi_dot
+        psi_dot, rates, _ = self._rates_in(psi_dot, rates, steer)
+        return self._finite_rate(-(self.r / (2 * self.b)) * (rates[..., 0] - rates[..., 1]) - psi_dot, rates)
 
     def _points(self, P, i_dir, j_dir):
         wheels = np.stack([P + self.b * i_dir, P - self.b * i_dir], axis=-2)

@@ -1,0 +1,461 @@
+"""The public API as a fuzzer sees it: every function, its arguments' roles, and bad values for each role.
+
+Used by ``tests/test_fuzz.py`` (Hypothesis) and, as a script, to count outcomes over many seeded
+calls (``python tests/fuzz_api.py [N]``; run it with ``PYTHONPATH=<tree>`` to measure another tree).
+
+Each argument has a *role*; a role gives three kinds of values for a robot:
+
+* ``good``: ordinary valid values;
+* ``odd``: valid but awkward values (extreme magnitudes, Fractions, NumPy scalars, empty batches):
+  the call must return finite results or raise ``TypeError``/``ValueError`` (overflow detected);
+* ``bad``: values the function cannot handle (wrong kind, wrong shape, NaN, infinity, SymPy
+  ``oo``/``nan``/``zoo``/``I``, ``10**400``, ``np.longdouble('1e400')``, the class ``Robot``...):
+  the call must raise ``TypeError`` or ``ValueError``.
+
+A rejection's message must name the argument (as a word).  Outcomes: ``returned``, ``rejected``,
+and the faults ``wrong-exception``, ``unnamed``, ``accepted-bad``, ``non-finite``, ``hang``.
+"""
+from __future__ import annotations
+
+import dataclasses
+import re
+import signal
+import sys
+from fractions import Fraction
+
+import numpy as np
+import sympy as sp
+
+import wmr
+from wmr.analysis import linalg, lines, mobility, reference, singularities, steering
+from wmr.model import backend, platform, tolerance
+from wmr.model.backend import NUMERIC, SYMBOLIC
+
+x_sym = sp.Symbol("x", positive=True)
+RNG = np.random.default_rng(2002)
+BIG, TINY = 1.7e308, 1e-320
+
+
+def _robots():
+    mixed = wmr.Robot([wmr.OffsetWheel((1.0, 0.2), r=0.2, d=0.1), wmr.CentredWheel((-0.5, 0.9), r=0.3),
+                       wmr.DualWheel((-0.4, -1.0), r=0.25, b=0.15), wmr.CentredWheel((0.6, -0.7), r=0.1)])
+    return [wmr.paper_robot("centred", L=0.5, r=0.1), wmr.paper_robot("offset", L=2.0, r=0.3),
+            wmr.paper_robot("dual", L=1.0, r=0.2), mixed, wmr.Robot([wmr.CentredWheel((0.0, 0.0), r=1.0)])]
+
+
+ROBOTS = _robots()
+CENTRED3 = [ROBOTS[0], wmr.paper_robot("centred", L=1.0, r=1.0, exact=True)]
+SYMBOLIC_ROBOT = wmr.Robot([wmr.CentredWheel((x_sym, 0), r=1), wmr.CentredWheel((0, x_sym), r=1),
+                            wmr.CentredWheel((-x_sym, -x_sym), r=1)])
+
+#: wrong for every numeric role
+BAD_ANY = [None, "0.7", b"1", True, 1j, np.nan, np.inf, -np.inf, sp.oo, sp.nan, sp.zoo, sp.I, 10**400,
+           np.longdouble("1e400"), wmr.Robot, object(), {}, x_sym, [[1.0, 2.0], [3.0]]]
+
+
+def _arrays(last, n=4):
+    """Good and odd arrays whose last axis is ``last``."""
+    good = [np.zeros(last), RNG.uniform(-3, 3, last), RNG.uniform(-3, 3, (n, last)), list(RNG.uniform(-1, 1, last)),
+            RNG.uniform(-1, 1, (2, 3, last))]
+    odd = [np.full(last, BIG), np.full(last, -BIG), np.full(last, TINY), np.zeros((0, last)),
+           [Fraction(1, 3)] * last, np.ones(last, dtype=np.float32), np.arange(last), np.full((2, last), 1e300)]
+    bad = [np.zeros(last + 1), np.zeros(max(last - 1, 0)), np.zeros((1, last + 1)), np.full(last, 1 + 1j), ["0.7"] * last,
+           [True] * last, np.full(last, np.nan), [sp.oo] + [0] * (last - 1), [10**400] * last,
+           np.array([np.longdouble("1e400")] * last), np.zeros((last, 0)), 0.5]
+    return good, odd, bad + BAD_ANY
+
+
+def _scalar(kind):
+    if kind == "positive":
+        return ([0.5, 2, Fraction(1, 3), np.float32(0.1), np.array(1.5)], [BIG, TINY, 1e300, 5e-324],
+                [0, 0.0, -1.0, -TINY, [1.0], np.array([1.0, 2.0])] + BAD_ANY)
+    if kind == "angle":
+        return ([0.3, -2, np.float64(1.0), Fraction(1, 2)], [BIG, 1e300, TINY, -0.0], [[1.0], (0, 1)] + BAD_ANY)
+    raise KeyError(kind)
+
+
+def _is_zero(v):
+    return isinstance(v, (int, float)) and not isinstance(v, bool) and v == 0
+
+
+def _role(name, bot):
+    """(good, odd, bad) values of a role for a robot."""
+    w, n = bot.w, bot.n_rates
+    if name == "robot":
+        return ROBOTS, [], [None, wmr.Robot, "robot", 3, [bot], SYMBOLIC_ROBOT]
+    if name == "self":                      # the robot whose method is called: always a robot
+        return [bot], [], []
+    if name == "robot3":
+        return CENTRED3, [], [None, wmr.Robot, ROBOTS[2], ROBOTS[3], "robot"]
+    if name == "any_robot":
+        return ROBOTS + [SYMBOLIC_ROBOT], [], [None, wmr.Robot, "robot", 3]
+    if name == "beta":
+        return _arrays(w)
+    if name == "beta1":
+        good, odd, bad = _arrays(w)
+        return good[:2] + good[3:4], odd[:3] + odd[4:], bad + [RNG.uniform(size=(2, w))]
+    if name == "twist":
+        return _arrays(3)
+    if name == "twist1":
+        good, odd, bad = _arrays(3)
+        return good[:2], odd[:3], bad + [np.zeros((2, 3))]
+    if name == "rates":
+        return _arrays(n)
+    if name == "pair":
+        return _arrays(2)
+    if name == "pairs":
+        return ([RNG.uniform(-1, 1, (3, 2)), [[0, 0], [1, 0], [0, 1]]], [np.full((3, 2), 1e300), np.full((3, 2), TINY)],
+                [np.zeros((3, 3)), [[1, 2], [3]], np.full((3, 2), np.nan), np.full((3, 2), 1j)] + BAD_ANY)
+    if name == "matrix":
+        return ([RNG.normal(size=(3, 3)), RNG.normal(size=(4, 6, 6)), RNG.normal(size=(2, 5)), np.eye(3), [[1.0, 2.0]]],
+                [np.full((3, 3), BIG), np.full((2, 2), TINY), np.zeros((3, 3)), np.empty((3, 0)), np.empty((0, 3)),
+                 np.diag([1e300, 1e-300, 1.0]), [[Fraction(1, 3), 1], [2, 3]]],
+                [np.zeros(3), 2.0, np.full((2, 2), 1j), [["1", "2"]], np.full((2, 2), np.nan), [[True, False]]] + BAD_ANY)
+    if name == "matrix1":
+        good, odd, bad = _role("matrix", bot)
+        return good[:1] + good[2:], odd, bad + [good[1]]
+    if name in ("positive", "angle"):
+        return _scalar(name)
+    if name == "length_sym":
+        good, odd, bad = _scalar("positive")
+        return good + [x_sym, sp.Rational(1, 2)], odd, [b for b in bad if b is not x_sym]
+    if name == "nonneg_sym":
+        good, odd, bad = _role("length_sym", bot)
+        return good + [0, 0.0], odd, [b for b in bad if not _is_zero(b)]
+    if name == "opt_length_sym":
+        good, odd, bad = _role("opt_length", bot)
+        return good + [x_sym], odd, [b for b in bad if b is not x_sym]
+    if name == "opt_nonneg":                # an offset: SymPy lengths allowed
+        good, odd, bad = _role("opt_length", bot)
+        return good + [0, 0.0, x_sym], odd, [b for b in bad if not _is_zero(b) and b is not x_sym]
+    if name == "rate_opt":
+        good, odd, bad = _scalar("angle")
+        return [None, -0.5] + good, odd, [b for b in bad if b is not None and not isinstance(b, (list, tuple))]
+    if name == "anything":
+        return [0.3, x_sym, [1.0, x_sym], np.zeros(3), None, "text", 10**400, np.nan], [], []
+    if name == "L_opt":
+        good, odd, bad = _scalar("positive")
+        return good + [None], odd, [b for b in bad if b is not None]
+    if name == "point":
+        return ([(0.5, -0.2), np.array([1, 2]), [0, 0]], [(BIG, -BIG), (TINY, 0)],
+                [(1.0,), (1, 2, 3), "ab", (np.nan, 0), (sp.oo, 0), (1j, 0), (True, 0), 1.0] + BAD_ANY)
+    if name == "point_sym":
+        good, odd, bad = _role("point", bot)
+        return good + [(x_sym, 0), (sp.Rational(1, 2), sp.sqrt(3) / 2)], odd, [b for b in bad if b is not x_sym]
+    if name == "flag":
+        return [True, False, np.True_], [], [1, 0, "yes", None, np.array([True, False]), 1.0]
+    if name == "text":
+        return [None, "bot"], [], [3, b"x", ["a"], True]
+    if name == "kind":
+        return ["centred", "offset", "dual"], [], ["tricycle", 3, None, b"centred"]
+    if name == "wheel":
+        return [1, 2, np.int64(w)], [], [0, w + 1, 1.5, True, "1", None, -1]
+    if name == "angles_sym":                # the SymPy backend takes a symbol
+        good, odd, bad = _role("angles", bot)
+        return good + [x_sym], odd, [b for b in bad if b is not x_sym]
+    if name == "nonneg_any":
+        return [0, 1.0, [1.0], np.ones(3), np.zeros((2, 1))], [BIG, TINY], [-1.0, [-0.5]] + BAD_ANY
+    if name == "sbeta":                     # a robot method's beta: None means the symbols
+        good, odd, bad = _arrays(w)
+        return good + [None], odd, [b for b in bad if b is not None]
+    if name == "count":
+        return [1, 2, np.int64(7)], [10**6], [0, -1, 1.5, True, "1", None]
+    if name == "angles":                    # any shape
+        return ([0.3, np.zeros(4), RNG.uniform(-3, 3, (2, 3)), [0.1, 0.2]], [BIG, np.full(3, 1e300), TINY, np.zeros(0)],
+                [np.full(3, 1j), ["0.7"], [True], np.full(2, np.nan), [sp.oo, 0]] + BAD_ANY)
+    if name == "nonneg":
+        good, odd, bad = _scalar("positive")
+        return good + [0, 0.0], odd, [b for b in bad if not _is_zero(b)]
+    if name == "backend":
+        return [None, NUMERIC], [], ["numpy", 3, NUMERIC.__class__]
+    if name == "backend_any":
+        return [None, NUMERIC, SYMBOLIC], [], ["numpy", 3]
+    if name == "dt":
+        return [0.1, 0.25], [1e-9, TINY, BIG], [0, -0.1] + BAD_ANY
+    if name == "opt_beta":
+        good, odd, bad = _arrays(w)
+        return [None] + good, odd, [b for b in bad if b is not None]
+    if name == "opt_length":
+        good, odd, bad = _scalar("positive")
+        return [None] + good, odd, [b for b in bad if b is not None]
+    if name == "analysis":
+        return ["rank_F", "mobility", "kappa_JL1"], [], ["rank", 3, None, ["rank_F"]]
+    if name == "angles":
+        from wmr.analysis.sweep import Sample
+        return [Sample(50, seed=1), RNG.uniform(-3, 3, (20, w))], [], [None, "grid", np.zeros((5, w + 1)), 3]
+    if name == "key":
+        return ["P", "H", "wheels", "i", "j"], [], ["Q", 3, None]
+    if name == "index":
+        return [0, w - 1], [], [w, -w - 1, 1.5, "0", None, True]
+    raise KeyError(name)
+
+
+@dataclasses.dataclass(frozen=True)
+class Case:
+    """One public function: how to call it, the roles of its arguments."""
+
+    name: str
+    call: object                 # call(**arguments)
+    roles: tuple                 # ((argument name, role), ...)
+    allow: str = ""              # documented non-finite results: "inf" (condition numbers) or "inf nan" (centres)
+    robots: tuple = ()           # which robots the roles are drawn for (default: all)
+
+
+def _traj():
+    return wmr.simulate(ROBOTS[0], [-1.0, -1.0, -1.0], [0.0, 0.0, 0.0], t_end=0.2, dt=0.1)
+
+
+TRAJ = _traj()
+R, B, T = ("robot", "robot"), ("beta", "beta"), ("twist", "twist")
+S = ("robot", "self")
+
+CASES = [
+    # --- construction
+    Case("OffsetWheel", lambda position, r, d: wmr.OffsetWheel(position, r=r, d=d),
+         (("position", "point_sym"), ("r", "length_sym"), ("d", "nonneg_sym"))),
+    Case("CentredWheel", lambda position, r: wmr.CentredWheel(position, r=r), (("position", "point_sym"), ("r", "length_sym"))),
+    Case("DualWheel", lambda position, r, b: wmr.DualWheel(position, r=r, b=b),
+         (("position", "point_sym"), ("r", "length_sym"), ("b", "length_sym"))),
+    Case("Robot", lambda wheels, name: wmr.Robot(wheels, name=name), (("wheels", "wheels"), ("name", "text"))),
+    Case("paper_robot", lambda kind, L, r, d, b, exact: wmr.paper_robot(kind, L=L, r=r, d=d, b=b, exact=exact),
+         (("kind", "kind"), ("L", "length_sym"), ("r", "length_sym"), ("d", "opt_nonneg"), ("b", "opt_length_sym"),
+          ("exact", "flag"))),
+    Case("equilateral_mounts", lambda L, first_deg, clockwise, exact: wmr.equilateral_mounts(L, first_deg, clockwise, exact),
+         (("L", "length_sym"), ("first_deg", "angle"), ("clockwise", "flag"), ("exact", "flag"))),
+    # --- the robot's matrices (self is a valid robot)
+    Case("Robot.J1", lambda robot, L, backend: robot.J1(L=L, backend=backend), (S, ("L", "positive"), ("backend", "backend"))),
+    Case("Robot.J2", lambda robot, beta: robot.J2(beta), (S, ("beta", "sbeta"))),
+    Case("Robot.F", lambda robot, beta: robot.F(beta), (S, ("beta", "sbeta"))),
+    Case("Robot.J", lambda robot, beta, L: robot.J(beta, L=L), (S, ("beta", "sbeta"), ("L", "positive"))),
+    Case("Robot.moved", lambda robot, origin, angle: robot.moved(origin, angle), (S, ("origin", "point"), ("angle", "angle"))),
+    Case("unit.block", lambda robot, beta: robot.wheels[0].block(beta), (S, ("beta", "angles"))),
+    Case("unit.points", lambda robot, beta: robot.wheels[0].points(beta), (S, ("beta", "angles"))),
+    Case("unit.rate_names", lambda robot, i: robot.wheels[0].rate_names(i), (S, ("i", "count"))),
+    Case("unit.beta_rate", lambda robot, psi_dot, rates, steer: robot.wheels[0].beta_rate(psi_dot, rates, steer),
+         (S, ("psi_dot", "angles"), ("rates", "pair"), ("steer", "rate_opt"))),
+    # --- platform and backends
+    Case("E", lambda backend: wmr.E(backend), (("backend", "backend_any"),)),
+    Case("rotation", lambda angle: wmr.rotation(angle), (("angle", "angles"),)),
+    Case("rotated", lambda beta, M: platform.rotated(beta, M, M), (("beta", "angles_sym"), ("M", "matrix"))),
+    Case("cos_sin", lambda beta: platform.cos_sin(beta), (("beta", "angles"),)),
+    Case("wrap_angle", lambda angle: platform.wrap_angle(angle), (("angle", "angles"),)),
+    Case("point_row", lambda d, L: platform.point_row(d, L), (("d", "point"), ("L", "positive"))),
+    Case("point_velocity", lambda twist, d: wmr.point_velocity(twist, d), (T, ("d", "pair"))),
+    Case("choose", lambda value, backend: backend_choose(value, backend), (("value", "anything"), ("backend", "backend_any"))),
+    Case("near_zero", lambda x, scale: tolerance.near_zero(x, scale), (("x", "angles"), ("scale", "nonneg_any"))),
+    # --- linear algebra
+    *[Case(f"linalg.{f}", (lambda f: lambda A: getattr(linalg, f)(A))(f), (("A", "matrix"),),
+           allow="inf" if f == "condition_number" else "") for f in ("singular_values", "column_norms", "rank", "nullity",
+                                                            "condition_number", "gram")],
+    Case("linalg.det", lambda A: linalg.det(A), (("A", "square"),)),
+    Case("linalg.null_space", lambda A: linalg.null_space(A), (("A", "matrix1"),)),
+    Case("linalg.pinv_columns", lambda A: linalg.pinv_columns(A), (("A", "matrix1"),)),
+    Case("is_isotropic", lambda A: wmr.is_isotropic(A), (("A", "matrix"),)),
+    # --- analyses
+    Case("mobility", lambda robot, beta: wmr.mobility(robot, beta), (R, B)),
+    Case("rank_F", lambda robot, beta: wmr.rank_F(robot, beta), (R, B)),
+    Case("twist_constraints", lambda robot, beta: mobility.twist_constraints(robot, beta), (R, B)),
+    Case("admissible_twists", lambda robot, beta: wmr.admissible_twists(robot, beta), (R, ("beta", "beta1"))),
+    Case("characteristic_length", lambda robot: wmr.characteristic_length(robot), (R,)),
+    Case("forward", lambda robot, beta, rates: wmr.forward(robot, beta, rates), (R, B, ("rates", "rates"))),
+    Case("inverse", lambda robot, beta, twist, beta_dot: wmr.inverse(robot, beta, twist, beta_dot),
+         (R, B, T, ("beta_dot", "opt_beta"))),
+    Case("instantaneous_centre", lambda twist, length: wmr.instantaneous_centre(twist, length),
+         (T, ("length", "opt_length")), allow="inf nan"),
+    Case("steering_angles", lambda robot, twist, current: wmr.steering_angles(robot, twist, current),
+         (R, T, ("current", "opt_beta"))),
+    Case("centre_to_wheels", lambda twist, d: wmr.centre_to_wheels(twist, d), (T, ("d", "pairs"))),
+    Case("simulate", lambda robot, rates, beta0, t_end, dt: wmr.simulate(robot, rates, beta0, t_end, dt),
+         (R, ("rates", "rates1"), ("beta0", "beta1"), ("t_end", "dt"), ("dt", "dt"))),
+    Case("simulate(steer, pose0)", lambda robot, steer, pose0: wmr.simulate(robot, np.zeros(robot.n_rates),
+                                                                             np.zeros(robot.w), 0.2, 0.1, steer, pose0),
+         (S, ("steer", "opt_beta1"), ("pose0", "twist1"))),
+    Case("Trajectory.world", lambda body_points: TRAJ.world(body_points), (("body_points", "pair"),)),
+    Case("Trajectory.unit_points", lambda i, key: TRAJ.unit_points(i, key), (("i", "index"), ("key", "key")),
+         robots=(0,)),
+    Case("sweep", lambda robot, analysis, angles: wmr.sweep(robot, analysis, angles), (R, ("analysis", "analysis"),
+                                                                                       ("angles", "angles"))),
+    # --- lines and singularities
+    Case("line_intersection", lambda p1, u1, p2, u2: lines.line_intersection(p1, u1, p2, u2),
+         (("p1", "pair1"), ("u1", "pair1"), ("p2", "pair1"), ("u2", "pair1"))),
+    Case("pair_intersections", lambda points, directions: lines.pair_intersections(points, directions),
+         (("points", "pairs"), ("directions", "pairs"))),
+    Case("lines_concurrency", lambda points, directions: lines.lines_concurrency(points, directions),
+         (("points", "pairs"), ("directions", "pairs"))),
+    Case("circumcircle", lambda points: lines.circumcircle(points), (("points", "pairs"),)),
+    *[Case(f"lines.{f}", (lambda f: lambda robot, beta: getattr(lines, f)(robot, beta))(f), (R, B))
+      for f in ("wheel_plane_lines", "axle_lines")],
+    *[Case(f"lines.{f}", (lambda f: lambda robot, beta: getattr(lines, f)(robot, beta))(f), (R, ("beta", "beta1")))
+      for f in ("concurrency_point", "axles_concurrency")],
+    Case("planes_through", lambda robot, D: lines.planes_through(robot, D), (R, ("D", "pair"))),
+    Case("axles_through", lambda robot, U: lines.axles_through(robot, U), (R, ("U", "pair"))),
+    Case("pair_line_angle", lambda robot, i, j: lines.pair_line_angle(robot, i, j), (R, ("i", "wheel"), ("j", "wheel"))),
+    Case("line_angle", lambda beta: lines.line_angle(beta), (("beta", "angles"),)),
+    *[Case(f"singularities.{f}", (lambda f: lambda robot, beta, L: getattr(singularities, f)(robot, beta, L))(f),
+           (("robot", "robot3"), ("beta", "beta"), ("L", "L_opt")), robots=(0,))
+      for f in ("det_J", "det_J_scale", "is_singular")],
+    Case("classify", lambda robot, beta, L: singularities.classify(robot, beta, L),
+         (("robot", "robot3"), ("beta", "beta1"), ("L", "L_opt")), robots=(0,)),
+    Case("singular_motions", lambda robot, beta1: singularities.singular_motions(robot, beta1),
+         (("robot", "robot3"), ("beta1", "angle")), robots=(0,)),
+    Case("plane_line_matrix", lambda robot, beta, L, backend: singularities.plane_line_matrix(robot, beta, L, backend),
+         (R, B, ("L", "positive"), ("backend", "backend"))),
+    Case("exact_robot", lambda robot: singularities.exact_robot(robot), (("robot", "any_robot"),)),
+    Case("numeric_robot", lambda robot: singularities.numeric_robot(robot), (R,)),
+    # --- the dense reference
+    *[Case(f"reference.{f}", (lambda f: lambda robot, beta: getattr(reference, f)(robot, beta))(f), (R, B))
+      for f in ("J2", "F", "rank_F")],
+    Case("reference.forward", lambda robot, beta, rates: reference.forward(robot, beta, rates), (R, B, ("rates", "rates"))),
+    Case("reference.inverse", lambda robot, beta, twist: reference.inverse(robot, beta, twist), (R, B, T)),
+    Case("reference.det", lambda A: reference.det(A), (("A", "square"),)),
+    *[Case(f"reference.{f}", (lambda f: lambda A: getattr(reference, f)(A))(f), (("A", "matrix"),),
+           allow="inf" if f == "condition_number" else "") for f in ("rank", "condition_number")],
+]
+
+#: public functions deliberately not fuzzed here, and why
+NOT_FUZZED = {
+    "det_J_symbolic": "SymPy factorisation (seconds per call); its robot and L checks are those of det_J",
+    "det_J_polynomial": "as det_J_symbolic", "characterisation": "as det_J_symbolic",
+    "exact_zero": "SymPy helper of the paper's families; argument checks tested in test_validation",
+    "trig_combination": "kernel of Robot.J2/F/J and twist_constraints, fuzzed through them",
+    "is_symbolic": "a predicate: any value is a valid question",
+}
+
+
+def backend_choose(value, b):
+    return backend.choose(value, backend=b)
+
+
+def _more_roles(name, bot):
+    if name == "wheels":
+        return ([list(bot.wheels), tuple(bot.wheels), (u for u in bot.wheels)], [],
+                [[], None, "wheels", bot.wheels[0], [bot.wheels[0], 3], 3])
+    if name == "square":
+        good, odd, bad = _role("matrix", bot)
+        return [g for g in good if np.shape(g)[-1] == np.shape(g)[-2]], [np.full((3, 3), BIG), np.zeros((0, 0))], \
+            bad + [good[2]]
+    if name in ("pair1", "rates1", "opt_beta1"):
+        base = {"pair1": "pair", "rates1": "rates", "opt_beta1": "opt_beta"}[name]
+        good, odd, bad = _role(base, bot)
+        keep = [g for g in good if g is None or np.ndim(g) == 1]
+        return keep, [o for o in odd if np.ndim(o) == 1], bad + [np.zeros((2, np.shape(keep[-1])[-1]))]
+    raise KeyError(name)
+
+
+def role_values(name, bot):
+    """(good, odd, bad) for role ``name`` and robot ``bot``."""
+    try:
+        return _role(name, bot)
+    except KeyError:
+        return _more_roles(name, bot)
+
+
+# ---------------------------------------------------------------------------------------- outcomes
+FAULTS = ("wrong-exception", "unnamed", "accepted-bad", "non-finite", "hang")
+
+
+def _finite(value, allow="", seen=0):
+    """True when every float in a result (arrays, dataclasses, tuples, dicts) is finite (or allowed: inf, nan)."""
+    if seen > 6:
+        return True
+    if isinstance(value, (float, np.floating, np.ndarray)):
+        a = np.asarray(value)
+        if a.dtype.kind not in "fc":
+            return True
+        ok = np.isfinite(a) | (np.isinf(a) if "inf" in allow else False) | (np.isnan(a) if "nan" in allow else False)
+        return bool(np.all(ok))
+    if dataclasses.is_dataclass(value) and not isinstance(value, type):
+        return all(_finite(getattr(value, f.name), allow, seen + 1) for f in dataclasses.fields(value)
+                   if f.name not in ("robot",))
+    if isinstance(value, (tuple, list)):
+        return all(_finite(v, allow, seen + 1) for v in value)
+    if isinstance(value, dict):
+        return all(_finite(v, allow, seen + 1) for v in value.values())
+    return True
+
+
+class _Timeout(Exception):
+    pass
+
+
+def _alarm(signum, frame):
+    raise _Timeout()
+
+
+def outcome(case, args, bad, seconds=5):
+    """Call ``case`` with ``args`` (``bad``: an argument is a value it must reject); return (outcome, detail)."""
+    old = signal.signal(signal.SIGALRM, _alarm)
+    signal.alarm(seconds)
+    try:
+        result = case.call(**args)
+    except _Timeout:
+        return "hang", ""
+    except (TypeError, ValueError) as e:
+        msg = str(e)
+        if not any(re.search(rf"(?<![A-Za-z_]){re.escape(a)}(?![A-Za-z_])", msg) for a in args):
+            return "unnamed", f"{type(e).__name__}: {msg[:160]}"
+        return "rejected", ""
+    except Exception as e:                                  # noqa: BLE001 - this is what we count
+        if isinstance(e, AttributeError) and str(e).startswith("module 'wmr"):
+            return "missing", str(e)                        # (measuring an older tree)
+        return "wrong-exception", f"{type(e).__name__}: {str(e)[:160]}"
+    finally:
+        signal.alarm(0)
+        signal.signal(signal.SIGALRM, old)
+    if bad:
+        return "accepted-bad", f"(bad: {', '.join(bad)})"
+    if not _finite(result, case.allow):
+        return "non-finite", ""
+    return "returned", ""
+
+
+def draw(case, rng):
+    """Random arguments for ``case``: each argument good (60 %), odd (20 %) or bad (20 %)."""
+    pool = [ROBOTS[i] for i in case.robots] if case.robots else ROBOTS
+    bot = pool[rng.integers(len(pool))]
+    args, bad = {}, []
+    for name, role in case.roles:
+        good, odd, wrong = role_values(role, bot)
+        if name == "robot" and role == "robot":
+            good = [bot]
+        u = rng.uniform()
+        kind = "good" if u < 0.6 or not (odd or wrong) else ("odd" if (u < 0.8 and odd) or not wrong else "bad")
+        vals = {"good": good, "odd": odd, "bad": wrong}[kind]
+        args[name] = vals[rng.integers(len(vals))]
+        if kind == "bad":
+            bad.append(name)
+    return args, bad
+
+
+def _show(v):
+    text = " ".join(repr(v).split())
+    return text if len(text) <= 40 else text[:37] + "..."
+
+
+def tally(n=12000, seed=0):
+    """Outcome counts of ``n`` random calls spread over all cases (and a few examples of each fault)."""
+    rng = np.random.default_rng(seed)
+    counts, examples = {}, {}
+    for k in range(n):
+        case = CASES[k % len(CASES)]
+        args, bad = draw(case, rng)
+        what, detail = outcome(case, args, bad)
+        counts[what] = counts.get(what, 0) + 1
+        if what in FAULTS and len(examples.setdefault(what, [])) < 6:
+            shown = ", ".join(f"{a}={_show(v)}" for a, v in args.items())
+            examples[what].append(f"{case.name}({shown}) {detail}")
+    return counts, examples
+
+
+if __name__ == "__main__":
+    import warnings
+    warnings.simplefilter("ignore")
+    n = int(sys.argv[1]) if len(sys.argv) > 1 else 12000
+    counts, examples = tally(n)
+    total = sum(counts.values())
+    print(f"{total} calls over {len(CASES)} public functions:",
+          ", ".join(f"{k} {v} ({100 * v / total:.1f} %)" for k, v in sorted(counts.items())))
+    for k, ex in examples.items():
+        print(f"  {k}:")
+        for e in ex:
+            print("    " + e)

@@ -1,0 +1,188 @@
+r"""Input checks for arrays: numeric batches (finite reals of a given last axis) and SymPy vectors and matrices.
+
+The scalar, point and object checks, and the rule of the two exception types, are in
+:mod:`wmr.model.validation` (which also gives access to these: ``validation.finite_array``).
+
+Examples
+--------
+>>> finite_array("beta", ["0.7", "0.1"])
+Traceback (most recent call last):
+    ...
+TypeError: beta must be an array of real numbers, got strings: ['0.7', '0.1']
+"""
+from __future__ import annotations
+
+import numbers
+
+import numpy as np
+import sympy as sp
+
+from .validation import _kind_error, _to_float, real, show
+
+__all__ = ["finite_array", "batch_shape", "symbolic_vector", "symbolic_matrix"]
+
+
+def _object_array(name, raw, value):
+    """Floats from an object array whose entries are real numbers (Fraction, int, ...)."""
+    out = np.empty(raw.shape)
+    flat = out.reshape(-1)
+    for k, v in enumerate(raw.flat):
+        if isinstance(v, sp.Basic):
+            raise TypeError(f"{name} must be an array of numbers, got SymPy entries in {show(value)} "
+                            "(use the SymPy backend for symbolic work)")
+        if isinstance(v, (bool, np.bool_)) or not isinstance(v, numbers.Real):
+            raise _kind_error(name, value, "an array of real numbers") from None
+        flat[k] = _to_float(name, v)
+    return out
+
+
+def finite_array(name, value, last=None):
+    """Convert to a float array; require finite real entries and (optionally) the size of the last axis.
+
+    Parameters
+    ----------
+    name : str
+    value : array_like
+    last : int, optional
+        Required length of the last axis.
+
+    Returns
+    -------
+    numpy.ndarray of float64
+
+    Raises
+    ------
+    TypeError
+        Strings, bools, complex numbers, None, SymPy entries.
+    ValueError
+        Ragged nesting, a wrong last axis, NaN, infinity, entries too large for double precision.
+
+    Examples
+    --------
+    >>> finite_array("twist", [1, 2, 3], last=3)
+    array([1., 2., 3.])
+    """
+    if isinstance(value, np.ndarray) and value.dtype == np.float64:
+        arr = value
+    else:
+        if value is None or isinstance(value, (str, bytes)):
+            raise _kind_error(name, value, "an array of real numbers")
+        try:
+            raw = np.asarray(value)
+        except (ValueError, TypeError):
+            raise ValueError(f"{name} must be a regular (not ragged) array of real numbers, got {show(value)}") from None
+        kind = raw.dtype.kind
+        if kind in "iuf":
+            with np.errstate(over="ignore"):
+                arr = raw.astype(np.float64)
+            if kind == "f" and raw.dtype.itemsize > 8 and not np.all(np.isfinite(arr)) and np.all(np.isfinite(raw)):
+                raise ValueError(f"{name} has entries too large for double precision: {show(raw)}")
+        elif kind == "O":
+            arr = _object_array(name, raw, value)
+        else:
+            what = {"b": "booleans", "c": "complex numbers", "U": "strings", "S": "strings"}.get(kind, raw.dtype.name)
+            raise TypeError(f"{name} must be an array of real numbers, got {what}: {show(value)}")
+    if last is not None and (arr.ndim == 0 or arr.shape[-1] != last):
+        raise ValueError(f"{name} must have shape (..., {last}), got shape {arr.shape}: {show(arr)}")
+    if not np.isfinite(arr).all():
+        bad = arr[~np.isfinite(arr)].ravel()[:3]
+        raise ValueError(f"{name} must be finite, got non-finite values {bad.tolist()}")
+    return arr
+
+
+def batch_shape(arrays, core=1):
+    """The common batch shape of named arrays (each with ``core`` trailing axes), or a ``ValueError`` naming them.
+
+    Parameters
+    ----------
+    arrays : dict of str to numpy.ndarray or None
+        Arguments by name (``None`` entries are skipped).
+    core : int, optional
+        Trailing axes of each array that are not batch axes.
+
+    Returns
+    -------
+    tuple of int
+
+    Examples
+    --------
+    >>> batch_shape({"beta": np.zeros((5, 3)), "rates": np.zeros(3)})
+    (5,)
+    >>> batch_shape({"beta": np.zeros((2, 3)), "rates": np.zeros((4, 3))})
+    Traceback (most recent call last):
+        ...
+    ValueError: beta and rates must have broadcastable batch shapes, got beta (2,) and rates (4,)
+    """
+    given = {k: v for k, v in arrays.items() if v is not None}
+    try:
+        return np.broadcast_shapes(*[np.shape(v)[:np.ndim(v) - core] for v in given.values()])
+    except ValueError:
+        names = list(given)
+        shapes = " and ".join(f"{k} {np.shape(v)[:np.ndim(v) - core]}" for k, v in given.items())
+        raise ValueError(f"{', '.join(names[:-1])} and {names[-1]} must have broadcastable batch shapes, "
+                         f"got {shapes}") from None
+
+
+def symbolic_vector(name, value, size):
+    """Convert to a SymPy column of the given length (entries: real SymPy expressions or numbers).
+
+    Parameters
+    ----------
+    name : str
+    value : sequence or sympy.Matrix
+    size : int
+
+    Returns
+    -------
+    sympy.Matrix (size, 1)
+
+    Examples
+    --------
+    >>> symbolic_vector("beta", [sp.Symbol("x"), 0], 2).shape
+    (2, 1)
+    """
+    if isinstance(value, sp.MatrixBase):
+        entries = list(value)
+        shape = value.shape
+    else:
+        if isinstance(value, (str, bytes)) or isinstance(value, sp.Basic):
+            raise _kind_error(name, value, f"a sequence of {size} entries")
+        try:
+            entries = list(value)
+        except TypeError:
+            raise _kind_error(name, value, f"a sequence of {size} entries") from None
+        shape = (len(entries), 1)
+    if shape not in ((size, 1), (1, size)):
+        raise ValueError(f"{name} must have {size} entries, got shape {shape}")
+    return sp.Matrix([real(f"{name}[{k}]", v) for k, v in enumerate(entries)])
+
+
+def symbolic_matrix(name, value):
+    """Return ``value`` as a ``sympy.Matrix`` (2-D, entries real SymPy expressions or numbers).
+
+    Parameters
+    ----------
+    name : str
+    value : sympy.Matrix or array_like (m, n)
+
+    Returns
+    -------
+    sympy.Matrix
+
+    Examples
+    --------
+    >>> symbolic_matrix("M", [[1, sp.Symbol("x")]]).shape
+    (1, 2)
+    """
+    if isinstance(value, (str, bytes)) or value is None:
+        raise _kind_error(name, value, "a matrix")
+    try:
+        if not isinstance(value, sp.MatrixBase) and any(
+                isinstance(e, (str, bytes)) for e in np.asarray(value, dtype=object).ravel()):
+            raise _kind_error(name, value, "a matrix of numbers or SymPy expressions")
+        M = sp.Matrix(value)
+    except (TypeError, ValueError, NotImplementedError, sp.SympifyError):
+        raise _kind_error(name, value, "a matrix (m, n)") from None
+    for k, e in enumerate(M):
+        real(f"{name} entry {k}", e)
+    return M
