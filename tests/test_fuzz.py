@@ -23,7 +23,7 @@ from hypothesis import strategies as st
 import fuzz_api as F
 import wmr
 
-EXAMPLES = 12
+EXAMPLES = 8
 
 
 def _draw(data, case):
