@@ -27,7 +27,7 @@ import numpy as np
 import sympy as sp
 
 import wmr
-from wmr.analysis import linalg, lines, mobility, reference, singularities, steering
+from wmr.analysis import linalg, lines, mobility, overview, reference, singularities, steering
 from wmr.model import backend, platform, tolerance
 from wmr.model.backend import NUMERIC, SYMBOLIC
 
@@ -275,6 +275,13 @@ CASES = [
          robots=(0,)),
     Case("sweep", lambda robot, analysis, angles: wmr.sweep(robot, analysis, angles), (R, ("analysis", "analysis"),
                                                                                        ("angles", "angles"))),
+    # --- robot overview (wmr analyze) and robot files
+    Case("configurations", lambda robot, seed: overview.configurations(robot, grid=40, twists=4, seed=seed),
+         (R, ("seed", "seed"))),
+    Case("dead_zone_radius", lambda robot: overview.dead_zone_radius(robot), (R,)),
+    Case("singular_families", lambda robot, L: overview.singular_families(robot, L), (R, ("L", "L_opt"))),
+    Case("overview", lambda robot: overview.overview(robot, grid=40, twists=4), (R,), allow="inf"),
+    Case("dump", lambda robot, path: wmr.dump(robot, path), (R, ("path", "no_path"))),
     # --- lines and singularities
     Case("line_intersection", lambda p1, u1, p2, u2: lines.line_intersection(p1, u1, p2, u2),
          (("p1", "pair1"), ("u1", "pair1"), ("p2", "pair1"), ("u2", "pair1"))),
@@ -319,6 +326,8 @@ NOT_FUZZED = {
     "exact_zero": "SymPy helper of the paper's families; argument checks tested in test_validation",
     "trig_combination": "kernel of Robot.J2/F/J and twist_constraints, fuzzed through them",
     "is_symbolic": "a predicate: any value is a valid question",
+    "load": "reads a file: every malformed case (one-line RobotFileError FILE:LINE: key) is tested in test_io.py",
+    "Overview": "the result type of overview, fuzzed through it",
 }
 
 
@@ -334,6 +343,10 @@ def _more_roles(name, bot):
         good, odd, bad = _role("matrix", bot)
         return [g for g in good if np.shape(g)[-1] == np.shape(g)[-2]], [np.full((3, 3), BIG), np.zeros((0, 0))], \
             bad + [good[2]]
+    if name == "seed":
+        return [0, 7, np.int64(3)], [2**40], [-1, 0.5, "1", None, True, np.nan]
+    if name == "no_path":                                     # dump writes nothing when path is None
+        return [None], [], [3, 1.5, b"x", object()]
     if name in ("pair1", "rates1", "opt_beta1"):
         base = {"pair1": "pair", "rates1": "rates", "opt_beta1": "opt_beta"}[name]
         good, odd, bad = _role(base, bot)

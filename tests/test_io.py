@@ -135,7 +135,7 @@ MALFORMED = {
     "zero half separation": (BASE.replace('"offset"', '"dual"').replace("offset = 0.02", "half_separation = 0"),
                              11, "wheel[2].half_separation", ["positive"]),
     "angle on an offset wheel": (BASE.replace("offset = 0.02", "offset = 0.02\nangle_deg = 3"), 12, "wheel[2].angle_deg",
-                                 ["not a key of a offset wheel"]),
+                                 ["not a key of an offset wheel"]),
 }
 
 

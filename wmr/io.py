@@ -156,6 +156,10 @@ def _toml(v):
     return V.show(v, 40)
 
 
+def _a(kind):
+    return ("an " if kind[0] in "aeiou" else "a ") + kind
+
+
 def _suggest(word, choices):
     close = difflib.get_close_matches(word, choices, n=1)
     return f" (did you mean {close[0]!r}?)" if close else ""
@@ -202,7 +206,7 @@ def _wheel(k, table, lines, fail):
             fail(lines.of(k, key), f"{name}.{key}", "unknown key" + _suggest(key, _ALL_KEYS))
         if key not in KEYS[kind]:
             fail(lines.of(k, key), f"{name}.{key}",
-                 f"not a key of a {kind} wheel (a {kind} wheel takes {', '.join(KEYS[kind])})")
+                 f"not a key of {_a(kind)} wheel ({_a(kind)} wheel takes {', '.join(KEYS[kind])})")
     values = {}
     for key in KEYS[kind][1:]:
         if key not in table:
@@ -264,7 +268,7 @@ def loads(text, source="<string>"):
     if msg is not None:                                   # outside the except: no chained traceback
         m = re.search(r"\(at line (\d+), column (\d+)\)", msg)
         line = int(m.group(1)) if m else lines.end
-        head = re.sub(r"\s*\(at .*\)$", "", msg)
+        head = re.sub(r"\s*\(at .*\)$", "", msg) + (" (a key given twice?)" if "overwrite" in msg else "")
         where = f" at column {m.group(2)}" if m else " at the end of the file"
         key = _KEY.match(text.splitlines()[line - 1]) if text.splitlines() else None
         fail(line, key.group(1).strip("\"'") if key else "syntax", f"TOML syntax error: {head.lower()}{where}")
