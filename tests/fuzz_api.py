@@ -27,6 +27,7 @@ import numpy as np
 import sympy as sp
 
 import wmr
+from wmr import swerve
 from wmr.analysis import design, linalg, lines, mobility, motion_kappa, reference, singularities, steering
 from wmr.analysis.sweep import Grid
 from wmr.model import backend, platform, tolerance
@@ -325,6 +326,35 @@ CASES = [
     Case("reference.det", lambda A: reference.det(A), (("A", "square"),)),
     *[Case(f"reference.{f}", (lambda f: lambda A: getattr(reference, f)(A))(f), (("A", "matrix"),),
            allow="inf" if f == "condition_number" else "") for f in ("rank", "condition_number")],
+    # --- swerve practice (wmr.swerve): centred-wheel robots
+    *[Case(f"swerve.{c.name}", c.call, c.roles, robots=(0, 4)) for c in (
+        Case("module_commands", lambda robot, twist, current: swerve.module_commands(robot, twist, current),
+             (R, T, ("current", "opt_beta"))),
+        Case("module_speeds", lambda robot, beta, twist: swerve.module_speeds(robot, beta, twist), (R, B, T)),
+        Case("chassis_twist", lambda robot, beta, speed: swerve.chassis_twist(robot, beta, speed),
+             (R, B, ("speed", "beta"))),
+        Case("radii", lambda robot: swerve.radii(robot), (R,)),
+        Case("swerve_robot", lambda robot: swerve.swerve_robot(robot), (R,)),
+        Case("optimize_modules", lambda robot, twist, current: swerve.optimize_modules(robot, twist, current),
+             (R, T, ("current", "beta"))),
+        Case("optimize_robot", lambda robot, twist, current, samples: swerve.optimize_robot(robot, twist, current, samples),
+             (R, T, ("current", "beta"), ("samples", "samples"))),
+        Case("transition_slip", lambda robot, current, beta, speed: swerve.transition_slip(robot, current, beta, speed),
+             (R, ("current", "beta"), B, ("speed", "beta"))),
+        Case("desaturate", lambda robot, twist, max_speed: swerve.desaturate(robot, twist, max_speed),
+             (R, T, ("max_speed", "positive"))),
+        Case("desaturation_scale", lambda robot, twist, max_speed: swerve.desaturation_scale(robot, twist, max_speed),
+             (R, T, ("max_speed", "positive"))),
+    )],
+    Case("swerve.cosine_compensate", lambda speed, beta, target: swerve.cosine_compensate(speed, beta, target),
+         (("speed", "angles"), ("beta", "angles"), ("target", "angle"))),
+    Case("swerve.se2_exp", lambda twist, dt: swerve.se2_exp(twist, dt), (T, ("dt", "dt"))),
+    Case("swerve.se2_log", lambda delta, dt: swerve.se2_log(delta, dt), (("delta", "twist"), ("dt", "dt"))),
+    Case("swerve.discretize", lambda twist, dt: swerve.discretize(twist, dt), (T, ("dt", "dt"))),
+    Case("swerve.to_wpilib", lambda beta, speed: swerve.to_wpilib(beta, speed), (("beta", "angles"), ("speed", "anything"))),
+    Case("swerve.from_wpilib", lambda alpha: swerve.from_wpilib(alpha), (("alpha", "angles"),)),
+    Case("swerve.to_chassis", lambda twist: swerve.to_chassis(twist), (T,)),
+    Case("swerve.from_chassis", lambda chassis: swerve.from_chassis(chassis), (("chassis", "twist"),)),
 ]
 
 #: public functions deliberately not fuzzed here, and why
@@ -353,6 +383,8 @@ def _more_roles(name, bot):
         good, odd, bad = _role("matrix", bot)
         return [g for g in good if np.shape(g)[-1] == np.shape(g)[-2]], [np.full((3, 3), BIG), np.zeros((0, 0))], \
             bad + [good[2]]
+    if name == "samples":
+        return [1, 3, np.int64(2)], [], [0, -1, 1.5, True, "1", None]
     if name in ("pair1", "rates1", "opt_beta1"):
         base = {"pair1": "pair", "rates1": "rates", "opt_beta1": "opt_beta"}[name]
         good, odd, bad = _role(base, bot)

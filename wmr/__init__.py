@@ -31,6 +31,7 @@ from .analysis.steering import centre_to_wheels, instantaneous_centre, steering_
 from .analysis.sweep import sweep
 from .model.tolerance import TOL
 from .model.wheels import CentredWheel, DualWheel, OffsetWheel
+from . import swerve
 
 __all__ = [
     "Robot", "OffsetWheel", "CentredWheel", "DualWheel", "paper_robot", "equilateral_mounts",
@@ -38,5 +39,6 @@ __all__ = [
     "admissible_twists", "condition_number", "is_isotropic", "characteristic_length",
     "forward", "inverse", "instantaneous_centre", "steering_angles", "centre_to_wheels",
     "simulate", "sweep", "TOL", "NUMERIC", "SYMBOLIC", "conventions",
+    "swerve",
 ]
 __version__ = "0.1.0"
