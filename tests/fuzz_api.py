@@ -28,7 +28,7 @@ import sympy as sp
 
 import wmr
 from wmr import swerve
-from wmr.analysis import design, linalg, lines, mobility, motion_kappa, reference, singularities, steering
+from wmr.analysis import design, linalg, lines, mobility, motion_kappa, overview, reference, singularities, steering
 from wmr.analysis.sweep import Grid
 from wmr.model import backend, platform, tolerance
 from wmr.model.backend import NUMERIC, SYMBOLIC
@@ -291,6 +291,13 @@ CASES = [
     Case("mount_circle", lambda robot: motion_kappa.mount_circle(robot), (R,)),
     Case("motion_map", lambda robot, half_width, L: motion_kappa.motion_map(robot, 5, half_width, L),
          (R, ("half_width", "opt_length"), ("L", "L_opt")), allow="inf"),
+    # --- robot overview (wmr analyze) and robot files
+    Case("configurations", lambda robot, seed: overview.configurations(robot, grid=40, twists=4, seed=seed),
+         (R, ("seed", "seed"))),
+    Case("dead_zone_radius", lambda robot: overview.dead_zone_radius(robot), (R,)),
+    Case("singular_families", lambda robot, L: overview.singular_families(robot, L), (R, ("L", "L_opt"))),
+    Case("overview", lambda robot: overview.overview(robot, grid=40, twists=4), (R,), allow="inf"),
+    Case("dump", lambda robot, path: wmr.dump(robot, path), (R, ("path", "no_path"))),
     # --- lines and singularities
     Case("line_intersection", lambda p1, u1, p2, u2: lines.line_intersection(p1, u1, p2, u2),
          (("p1", "pair1"), ("u1", "pair1"), ("p2", "pair1"), ("u2", "pair1"))),
@@ -368,6 +375,8 @@ NOT_FUZZED = {
     "landscape": "seconds per call (two slices of the design space); its numbers are checked in tests/test_design.py",
     "WorstCase": "result type of worst_kappa", "DesignSearch": "result type of search",
     "Landscape": "result type of landscape", "MotionMap": "result type of motion_map",
+    "load": "reads a file: every malformed case (one-line RobotFileError FILE:LINE: key) is tested in test_io.py",
+    "Overview": "the result type of overview, fuzzed through it",
 }
 
 
@@ -383,6 +392,10 @@ def _more_roles(name, bot):
         good, odd, bad = _role("matrix", bot)
         return [g for g in good if np.shape(g)[-1] == np.shape(g)[-2]], [np.full((3, 3), BIG), np.zeros((0, 0))], \
             bad + [good[2]]
+    if name == "seed":
+        return [0, 7, np.int64(3)], [2**40], [-1, 0.5, "1", None, True, np.nan]
+    if name == "no_path":                                     # dump writes nothing when path is None
+        return [None], [], [3, 1.5, b"x", object()]
     if name == "samples":
         return [1, 3, np.int64(2)], [], [0, -1, 1.5, True, "1", None]
     if name in ("pair1", "rates1", "opt_beta1"):
