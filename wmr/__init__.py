@@ -31,6 +31,7 @@ from .analysis.steering import centre_to_wheels, instantaneous_centre, steering_
 from .analysis.sweep import sweep
 from .model.tolerance import TOL
 from .model.wheels import CentredWheel, DualWheel, OffsetWheel
+from .io import dump, load
 from . import swerve
 
 __all__ = [
@@ -38,7 +39,7 @@ __all__ = [
     "E", "rotation", "point_velocity", "rank", "nullity", "null_space", "rank_F", "mobility",
     "admissible_twists", "condition_number", "is_isotropic", "characteristic_length",
     "forward", "inverse", "instantaneous_centre", "steering_angles", "centre_to_wheels",
-    "simulate", "sweep", "TOL", "NUMERIC", "SYMBOLIC", "conventions",
+    "simulate", "sweep", "TOL", "NUMERIC", "SYMBOLIC", "conventions", "load", "dump",
     "swerve",
 ]
 __version__ = "0.1.0"
