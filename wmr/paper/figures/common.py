@@ -43,7 +43,13 @@ MAX_PSI = r"\max|\psi|"
 
 
 def centred_robot():
-    """The paper's three-centred-wheel robot as drawn here (L = 1, r = 0.25)."""
+    """The paper's three-centred-wheel robot as drawn here (L = 1, r = 0.25).
+
+    Returns
+    -------
+    wmr.Robot
+        :func:`wmr.paper_robot` ``("centred", L=L_PAPER, r=R_CENTRED)``.
+    """
     return paper_robot("centred", L=L_PAPER, r=R_CENTRED)
 
 
@@ -80,10 +86,15 @@ def exact_det_J(beta_deg, r=R_CENTRED):
 
 
 def fit_circle(xy):
-    r"""Least-squares (Kåsa) circle through points (n, 2).
+    r"""Least-squares (Kåsa) circle through points.
 
     Solves :math:`x^2+y^2 = a x + b y + c` in the least-squares sense: centre :math:`(a/2, b/2)`,
     radius :math:`\sqrt{c + a^2/4 + b^2/4}`.
+
+    Parameters
+    ----------
+    xy : array_like (n, 2)
+        At least three points, not all on a line.
 
     Returns
     -------
@@ -106,23 +117,67 @@ def fit_circle(xy):
 
 
 def snap(a):
-    """Coordinates for drawing: rounded to :data:`SNAP_DECIMALS` places (no ``-0.0``), as a float array."""
+    """Coordinates for drawing: rounded to :data:`SNAP_DECIMALS` places (no ``-0.0``), as a float array.
+
+    Parameters
+    ----------
+    a : array_like (...)
+
+    Returns
+    -------
+    numpy.ndarray (...)
+
+    Examples
+    --------
+    >>> snap([1e-12, -1e-12, 0.123456789]).tolist()
+    [0.0, 0.0, 0.1234568]
+    """
     return np.round(np.asarray(a, dtype=float), SNAP_DECIMALS) + 0.0
 
 
 # --------------------------------------------------------------------------- fields and JSON
 def residual(**kw):
-    """A field holding a value that is zero up to round-off (JSON: :func:`wmr.paper.text.bound` of its magnitude)."""
+    """A field holding a value that is zero up to round-off (JSON: :func:`wmr.paper.text.bound` of its magnitude).
+
+    Parameters
+    ----------
+    **kw
+        Passed to :func:`dataclasses.field` (e.g. ``default``).
+
+    Returns
+    -------
+    dataclasses.Field
+    """
     return field(metadata={"json": "residual"}, **kw)
 
 
 def small(**kw):
-    """A field holding a small but meaningful value, e.g. an integration error (JSON: 2 significant digits)."""
+    """A field holding a small but meaningful value, e.g. an integration error (JSON: 2 significant digits).
+
+    Parameters
+    ----------
+    **kw
+        Passed to :func:`dataclasses.field`.
+
+    Returns
+    -------
+    dataclasses.Field
+    """
     return field(metadata={"json": "small"}, **kw)
 
 
 def drawing(**kw):
-    """A field holding arrays or objects for the picture only (not in JSON, not in repr or comparisons)."""
+    """A field holding arrays or objects for the picture only (not in JSON, not in repr or comparisons).
+
+    Parameters
+    ----------
+    **kw
+        Passed to :func:`dataclasses.field`.
+
+    Returns
+    -------
+    dataclasses.Field
+    """
     return field(repr=False, compare=False, metadata={"json": None}, **kw)
 
 
@@ -184,7 +239,20 @@ class AxleMeet:
 
 
 def axles_meet(robot, beta, target):
-    """Where the axles meet at ``beta`` (w,) and how far from ``target`` (2,); an :class:`AxleMeet`."""
+    """Where the axles meet at ``beta`` and how far that is from ``target``.
+
+    Parameters
+    ----------
+    robot : wmr.Robot
+    beta : array_like (w,)
+        Steering angles (radians).
+    target : array_like (2,)
+        The instantaneous centre asked for (body frame).
+
+    Returns
+    -------
+    AxleMeet
+    """
     meet = ln.axles_concurrency(robot, beta)
     if meet.point is None:
         return AxleMeet(meet.kind.name.lower(), None, float("inf"))
@@ -205,13 +273,18 @@ class SingularConfig:
         :math:`\det\mathbf J` in floating point (:func:`wmr.analysis.singularities.det_J`).
     det_J_exact : str
         Exact :math:`\det\mathbf J` (:func:`exact_det_J`) when the angles are exact, else ``""``.
-    rank_F, mobility : int
+    rank_F : int
+        :math:`\operatorname{rank}\mathbf F` (24).
+    mobility : int
+        :math:`\nu = 3 + n - \operatorname{rank}\mathbf F` (27).
     kappa_J : float
         :math:`\kappa(\mathbf J)`, :math:`\infty` when J is rank deficient.
     singular : bool
         :func:`wmr.analysis.singularities.is_singular`.
-    planes_meet, axles_meet : str
-        Where the wheel-plane lines and the axles meet (a :class:`wmr.analysis.lines.Meet` name, lower case).
+    planes_meet : str
+        Where the wheel-plane lines meet (a :class:`wmr.analysis.lines.Meet` name, lower case).
+    axles_meet : str
+        Where the axles meet (likewise).
     D_P : tuple (2,) or None
         The point where the wheel-plane lines meet.
     axle_crossings : tuple of (2,)
@@ -222,8 +295,10 @@ class SingularConfig:
         :func:`wmr.analysis.singularities.classify`.
     beta : numpy.ndarray (3,)
         Radians, snapped (drawing).
-    plane_reach, axle_reach : tuple of 3 arrays (k, 2)
-        Points each wheel-plane line and each axle must reach in the drawing.
+    plane_reach : tuple of 3 arrays (k, 2)
+        Points each wheel-plane line must reach in the drawing.
+    axle_reach : tuple of 3 arrays (k, 2)
+        Points each axle must reach in the drawing.
     """
 
     beta_deg: tuple
@@ -296,12 +371,42 @@ def singular_config(robot, beta, exact_deg=None, reach=3.2):
 
 
 def beta_text(beta_deg, digits=6):
-    r"""``$\beta_1 = 60^\circ$, $\beta_2 = ...$`` for angles in degrees."""
+    r"""``$\beta_1 = 60^\circ$, $\beta_2 = ...$`` for angles in degrees.
+
+    Parameters
+    ----------
+    beta_deg : sequence of float
+        Steering angles (degrees).
+    digits : int, optional
+        Significant digits (:func:`wmr.paper.text.degrees`).
+
+    Returns
+    -------
+    str
+        Markdown with ``$...$`` math.
+
+    Examples
+    --------
+    >>> beta_text([60, -120])
+    '$\\beta_1 = 60^\\circ$, $\\beta_2 = -120^\\circ$'
+    """
     return ", ".join(rf"$\beta_{k + 1} = {degrees(np.radians(b), digits)}^\circ$" for k, b in enumerate(beta_deg))
 
 
 def config_lines(cfg, kappa=True):
-    r"""Lines of text stating :math:`\det\mathbf J` (exact and float), rank F, mobility and :math:`\kappa(\mathbf J)`."""
+    r"""Lines of text stating :math:`\det\mathbf J` (58) (exact and float), rank F, mobility and :math:`\kappa(\mathbf J)` (30).
+
+    Parameters
+    ----------
+    cfg : SingularConfig
+    kappa : bool, optional
+        Include the line on :math:`\kappa(\mathbf J)`.
+
+    Returns
+    -------
+    list of str
+        Markdown with ``$...$`` math, one line each.
+    """
     det = residual_text(ABS_DET_J, abs(cfg.det_J))
     lines = [rf"$\det\mathbf{{J}} = {cfg.det_J_exact}$ (exact), ${det}$ (float)" if cfg.det_J_exact
              else rf"${det}$ (float)",
