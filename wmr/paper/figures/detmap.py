@@ -338,5 +338,3 @@ def caption(data):
             rf"rank $\mathbf{{F}} = {data.vortex_rank_F}$ and the robot cannot move. Where it can move (dashed), "
             rf"$\kappa(\mathbf{{J}}) \geq \sqrt2$: the smallest value at the steering angles of {data.mobile_twists} "
             rf"random twists and of a spin about $C$ is {data.kappa_mobile_min:.4f}.")
-
-    return f"{np.floor(x * 10**decimals) / 10**decimals:.{decimals}f}"

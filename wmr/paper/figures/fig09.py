@@ -15,7 +15,8 @@ from ...analysis.mobility import rank_F
 from ...analysis.simulation import simulate
 from ...analysis.steering import steering_angles
 from ..text import bound
-from .common import DEG, L_PAPER, AxleMeet, axles_meet, centred_robot, drawing, fit_circle, residual, snap
+from .common import DEG, L_PAPER, centred_robot, drawing, fit_circle, residual, snap
+from .configs import AxleMeet, axles_meet
 
 __all__ = ["NUMBER", "TITLE", "PAPER_CAPTION", "RotationRun", "Fig09Data", "data", "draw", "caption"]
 

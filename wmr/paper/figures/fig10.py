@@ -10,8 +10,8 @@ import numpy as np
 
 from ...analysis.mobility import admissible_twists
 from ..text import residual as residual_text
-from .common import (ABS_DET_J, DEG, L_PAPER, SingularConfig, beta_text, centred_robot, config_lines, drawing,
-                     singular_config, snap)
+from .common import ABS_DET_J, DEG, L_PAPER, centred_robot, drawing, snap
+from .configs import SingularConfig, beta_text, config_lines, singular_config
 
 __all__ = ["NUMBER", "TITLE", "PAPER_CAPTION", "Fig10Data", "data", "draw", "caption"]
 

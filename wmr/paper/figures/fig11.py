@@ -12,7 +12,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..text import residual as residual_text
-from .common import ABS_DET_J, DEG, beta_text, centred_robot, config_lines, drawing, singular_config
+from .common import ABS_DET_J, DEG, centred_robot, drawing
+from .configs import beta_text, config_lines, singular_config
 
 __all__ = ["NUMBER", "TITLE", "PAPER_CAPTION", "CONFIGS", "Fig11Data", "data", "draw", "caption"]
 
@@ -33,7 +34,7 @@ class Fig11Data:
     configs : dict
         Panel letter -> steering angles (3 floats, degrees).
     panels : dict
-        Panel letter -> :class:`~wmr.paper.figures.common.SingularConfig`.
+        Panel letter -> :class:`~wmr.paper.figures.configs.SingularConfig`.
     robot : wmr.Robot
         Drawing only: the robot drawn (:func:`~wmr.paper.figures.common.centred_robot`).
     """

@@ -11,7 +11,8 @@ import numpy as np
 
 from ...analysis import lines as ln
 from ..text import bound, residual as residual_text
-from .common import ABS_DET_J, beta_text, centred_robot, config_lines, drawing, residual, singular_config
+from .common import ABS_DET_J, centred_robot, drawing, residual
+from .configs import beta_text, config_lines, singular_config
 
 __all__ = ["NUMBER", "TITLE", "PAPER_CAPTION", "Fig12Data", "data", "draw", "caption"]
 
@@ -32,7 +33,7 @@ class Fig12Data:
     targets : dict
         Panel letter -> the point the planes are to pass through.
     panels : dict
-        Panel letter -> :class:`~wmr.paper.figures.common.SingularConfig` (exact :math:`\det\mathbf J` for (a),
+        Panel letter -> :class:`~wmr.paper.figures.configs.SingularConfig` (exact :math:`\det\mathbf J` for (a),
         whose angles are whole degrees).
     D_P_error : dict
         Panel letter -> distance of the computed :math:`D_P` from the target.

@@ -14,7 +14,8 @@ from ...analysis.kinematics import inverse
 from ...analysis.mobility import rank_F
 from ...analysis.steering import centre_to_wheels, instantaneous_centre, steering_angles
 from ..text import bound, degrees
-from .common import L_PAPER, AxleMeet, axles_meet, centred_robot, drawing, residual, snap
+from .common import L_PAPER, centred_robot, drawing, residual, snap
+from .configs import AxleMeet, axles_meet
 
 __all__ = ["NUMBER", "TITLE", "PAPER_CAPTION", "Fig13Data", "data", "draw", "caption"]
 

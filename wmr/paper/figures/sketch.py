@@ -21,7 +21,7 @@ def draw_singular(ax, robot, cfg, *, dp_label=None, dp_offset=(7, 3), frame=True
     ----------
     ax : Axes
     robot : Robot
-    cfg : wmr.paper.figures.common.SingularConfig
+    cfg : wmr.paper.figures.configs.SingularConfig
     dp_label : str, optional
         Label of :math:`D_P` (drawn when the planes meet at a finite point).
     dp_offset : tuple (2,), optional
