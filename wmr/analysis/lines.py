@@ -252,7 +252,7 @@ def _circle(pts, is_zero, shown):
 def _unit_points(robot, beta):
     """Each unit's points and axes (``unit.points``) at the steering angles ``beta (..., w)``."""
     robot = V.numeric_robot(robot)
-    beta = V.finite_array("beta", beta, last=robot.w)
+    beta = robot.effective_beta(beta)
     return [u.points(beta[..., i]) for i, u in enumerate(robot.wheels)]
 
 
@@ -299,7 +299,7 @@ def _one(robot, beta, what):
     robot = V.numeric_robot(robot)
     if robot.w < 2:
         raise ValueError(f"robot must have at least two wheel units for {what} (lines to meet), got {V.show(robot)}")
-    beta = V.finite_array("beta", beta, last=robot.w)
+    beta = robot.effective_beta(beta)
     if beta.ndim != 1:
         raise ValueError(f"beta must be one configuration of shape ({robot.w},) for {what}, got shape {beta.shape}")
     return beta
