@@ -27,7 +27,7 @@ TEX_DEBS := texlive-xetex texlive-fonts-recommended texlive-plain-generic \
             texlive-latex-extra lmodern fonts-lmodern pandoc poppler-utils
 TEX_CMDS := xelatex pandoc pdftotext pdfinfo
 
-.PHONY: help venv tex test report figures notebooks student bench clean lock
+.PHONY: help venv tex browser test report figures notebooks student bench clean lock
 
 help: ## show this help
 	@echo "wmr — reproducible edition of Leow, Low & Loh (2002)"
@@ -75,10 +75,22 @@ notebooks: venv ## execute notebooks/*.ipynb into build/notebooks (only changed 
 figures: venv ## regenerate figures/ outside the notebooks (python -m wmr.paper.figures figures/)
 	@$(BUILD) figures
 
+browser: ## (internal) make sure headless Chromium is present for the HTML test (apt-get on Debian as root)
+	@if command -v chromium >/dev/null 2>&1 || command -v chromium-browser >/dev/null 2>&1; then exit 0; fi; \
+	if command -v apt-get >/dev/null 2>&1 && [ "$$(id -u)" = 0 ]; then \
+	  echo "[browser] installing: chromium"; t0=$$(date +%s); \
+	  apt-get update -qq >/dev/null && \
+	  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends chromium >/dev/null; \
+	  echo "[browser] installed in $$(( $$(date +%s) - t0 )) s"; \
+	else \
+	  echo "[browser] chromium missing: the test that opens report.html in a browser will be skipped;" \
+	       "install it with: sudo apt-get install -y --no-install-recommends chromium"; \
+	fi
+
 report: venv tex ## build/report.html + build/report.pdf (cached: < 1 s when nothing changed)
 	@$(BUILD) report
 
-test: venv tex ## execute notebooks, pytest (two partitions at once), fail if the build modified tracked files
+test: venv tex browser ## execute notebooks, pytest (two partitions at once), fail if the build modified tracked files
 	@$(BUILD) test
 
 student: venv ## build/student/*.ipynb: the chapters without worked solutions (RUN=1: also run them)

@@ -10,11 +10,15 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["RESOLUTION", "DECIMALS", "degrees", "bound", "residual", "number", "rounded"]
+__all__ = ["RESOLUTION", "SMALL", "DECIMALS", "degrees", "bound", "residual", "number", "rounded"]
 
 #: Residuals below this are printed as ``< 1e-12``: round-off of the 6x9 matrices built here is
 #: about 1e-15, so the bound holds on any IEEE-754 machine while the printed text does not change.
 RESOLUTION = 1e-12
+#: Residuals from :data:`RESOLUTION` up to this are accumulated round-off of longer computations
+#: (an optimiser's stopping test, a sum over thousands of configurations): their digits differ
+#: between machines, so they are printed as the next power of ten above them (``< 1e-10``).
+SMALL = 1e-9
 #: Decimal places kept by :func:`rounded`: far above round-off (about 1e-15 for the quantities of
 #: order one printed here: lengths in units of L, angles in degrees), far below what is meaningful.
 DECIMALS = 10
@@ -49,7 +53,8 @@ def bound(value, resolution=RESOLUTION, latex=False):
 
     A floating-point residual that is exactly 0 on one machine is a few ulps on another, so 0 is
     printed as the same bound as any other round-off (the text is then the same everywhere); an
-    exact zero (SymPy) is printed by the caller, not here.
+    exact zero (SymPy) is printed by the caller, not here.  A small residual above the resolution
+    (below :data:`SMALL`) is printed as the power of ten above it: ``3.4e-11`` becomes ``< 1e-10``.
 
     Parameters
     ----------
@@ -66,16 +71,16 @@ def bound(value, resolution=RESOLUTION, latex=False):
 
     Examples
     --------
-    >>> bound(0.0), bound(4.2e-16), bound(3.14159e-3)
-    ('< 1e-12', '< 1e-12', '3.1e-03')
-    >>> bound(4.2e-16, latex=True), bound(3.14159e-5, latex=True)
-    ('< 10^{-12}', '3.1\\times10^{-5}')
+    >>> bound(0.0), bound(4.2e-16), bound(3.4e-11), bound(3.14159e-3)
+    ('< 1e-12', '< 1e-12', '< 1e-10', '3.1e-03')
+    >>> bound(4.2e-16, latex=True), bound(2e-10, latex=True), bound(3.14159e-5, latex=True)
+    ('< 10^{-12}', '< 10^{-9}', '3.1\\times10^{-5}')
     """
     v = float(value)
     if not np.isfinite(v) or v < 0:
         raise ValueError(f"value must be a finite residual >= 0, got {value!r}")
-    if v < resolution:
-        k = int(round(np.log10(resolution)))
+    if v < max(resolution, SMALL):
+        k = int(round(np.log10(resolution))) if v < resolution else int(np.floor(np.log10(v))) + 1
         return f"< 10^{{{k}}}" if latex else f"< 1e{k}"
     return number(v, 2) if latex else f"{v:.1e}"
 

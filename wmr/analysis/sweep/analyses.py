@@ -1,0 +1,64 @@
+r"""The analyses a sweep evaluates, by name (:data:`ANALYSES`; the table is in :mod:`wmr.analysis.sweep`).
+
+Each one maps a robot and a chunk of configurations :math:`\boldsymbol\beta` (shape ``(k, w)``) to
+one value per configuration (shape ``(k,)``) with the batched kernels.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ...model import validation as V
+
+__all__ = ["ANALYSES"]
+
+
+def _J_length(robot, L):
+    from ..isotropy import characteristic_length
+    return characteristic_length(robot) if L is None else V.number("L", V.positive("L", L))
+
+
+def _rank_F(robot, beta, L):
+    from ..mobility import rank_F
+    return rank_F(robot, beta)
+
+
+def _mobility(robot, beta, L):
+    from ..mobility import mobility
+    return mobility(robot, beta)
+
+
+def _det_J(robot, beta, L):
+    from ..linalg import det
+    return det(robot.J(beta, L=L))
+
+
+def _kappa_J(robot, beta, L):
+    from ..linalg import condition_number
+    return condition_number(robot.J(beta, L=L))
+
+
+def _kappa_JL1(robot, beta, L):
+    from ..linalg import condition_number
+    return np.full(beta.shape[:-1], float(condition_number(robot.J1(L))))
+
+
+@dataclass(frozen=True)
+class _Analysis:
+    title: str
+    evaluate: object          # (robot, beta (k, w), L) -> (k,)
+    integer: bool
+    worst: str                # "min", "max" or "min_abs"
+    uses_L: bool = False
+    square: bool = False
+
+
+#: The analyses :func:`sweep` knows, by name.
+ANALYSES = {
+    "rank_F": _Analysis("rank F", _rank_F, True, "min"),
+    "mobility": _Analysis("mobility", _mobility, True, "max"),
+    "det_J": _Analysis("det J", _det_J, False, "min_abs", uses_L=True, square=True),
+    "kappa_J": _Analysis("kappa(J)", _kappa_J, False, "max", uses_L=True),
+    "kappa_JL1": _Analysis("kappa(J_L1)", _kappa_JL1, False, "max", uses_L=True),
+}

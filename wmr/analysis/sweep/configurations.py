@@ -1,0 +1,228 @@
+r"""Which configurations a sweep visits: a :class:`Grid`, a :class:`Sample` or explicit angles.
+
+Every source numbers its configurations ``0 .. size(w) - 1`` and hands out any range of them
+(``configurations(w, start, stop)``, shape ``(stop - start, w)``) without generating the others,
+so chunks can be made anywhere, in any order.
+"""
+from __future__ import annotations
+
+import math
+import numbers
+from dataclasses import dataclass
+
+import numpy as np
+
+from ...model import validation as V
+
+__all__ = ["Grid", "Sample"]
+
+_BLOCK = 1 << 16                     # random samples are drawn in blocks of this size (see Sample)
+
+
+def _bounds(lo, hi):
+    lo, hi = V.real("lo", lo), V.real("hi", hi)
+    if not hi > lo:
+        raise ValueError(f"hi must be greater than lo, got lo = {lo!r}, hi = {hi!r}")
+    return float(lo), float(hi)
+
+
+def _count(name, value, minimum=1):
+    if isinstance(value, bool) or not isinstance(value, numbers.Integral):
+        if isinstance(value, float) and value.is_integer():
+            value = int(value)
+        else:
+            raise TypeError(f"{name} must be an integer, got {value!r}")
+    if value < minimum:
+        raise ValueError(f"{name} must be at least {minimum}, got {value!r}")
+    return int(value)
+
+
+@dataclass(frozen=True)
+class Grid:
+    r"""Every combination of regularly spaced steering angles.
+
+    Angle :math:`\beta_i` takes the ``steps_i`` values :math:`lo + k\,(hi - lo)/steps_i`,
+    :math:`k = 0, \dots, steps_i - 1` (``hi`` excluded: the angles are periodic), so a robot with
+    ``w`` units has :math:`\prod_i steps_i` configurations, numbered with the last angle varying
+    fastest.
+
+    Parameters
+    ----------
+    steps : int or sequence of int
+        Values per angle (one number for every angle, or one per unit), each >= 1.
+    lo, hi : float, optional
+        The range of every angle (default :math:`[-\pi, \pi)`).
+
+    Examples
+    --------
+    >>> g = Grid(4)
+    >>> g.size(2), g.configurations(2, 0, 3).round(4).tolist()
+    (16, [[-3.1416, -3.1416], [-3.1416, -1.5708], [-3.1416, 0.0]])
+    """
+
+    steps: object = 72
+    lo: float = -math.pi
+    hi: float = math.pi
+
+    def __post_init__(self):
+        steps = self.steps
+        if isinstance(steps, (list, tuple, np.ndarray)):
+            steps = tuple(_count("steps", s) for s in steps)
+            if not steps:
+                raise ValueError("steps must not be empty")
+        else:
+            steps = _count("steps", steps)
+        object.__setattr__(self, "steps", steps)
+        lo, hi = _bounds(self.lo, self.hi)
+        object.__setattr__(self, "lo", lo)
+        object.__setattr__(self, "hi", hi)
+
+    def shape(self, w):
+        """Values per angle.
+
+        Parameters
+        ----------
+        w : int
+            Number of steering angles (wheel units).
+
+        Returns
+        -------
+        tuple of w ints
+        """
+        if isinstance(self.steps, tuple):
+            if len(self.steps) != w:
+                raise ValueError(f"Grid.steps has {len(self.steps)} entries, the robot has w = {w} angles")
+            return self.steps
+        return (self.steps,) * w
+
+    def size(self, w):
+        """Number of configurations, :math:`\\prod_i steps_i`.
+
+        Parameters
+        ----------
+        w : int
+            Number of steering angles.
+
+        Returns
+        -------
+        int
+        """
+        return math.prod(self.shape(w))
+
+    def configurations(self, w, start, stop):
+        """Configurations ``start .. stop-1`` of the grid's numbering.
+
+        Parameters
+        ----------
+        w : int
+            Number of steering angles.
+        start, stop : int
+            A range of configuration numbers, ``0 <= start < stop <= size(w)``.
+
+        Returns
+        -------
+        numpy.ndarray (stop - start, w)
+        """
+        shape = self.shape(w)
+        digits = np.unravel_index(np.arange(start, stop, dtype=np.int64), shape)
+        out = np.empty((stop - start, w))
+        for i, (n, k) in enumerate(zip(shape, digits)):
+            out[:, i] = self.lo + k * ((self.hi - self.lo) / n)
+        return out
+
+
+@dataclass(frozen=True)
+class Sample:
+    r"""``n`` configurations drawn uniformly from :math:`[lo, hi)^w`, reproducibly.
+
+    Configuration ``k`` is row ``k mod B`` of block ``k // B`` (``B`` = 65536), and block ``j`` is
+    drawn by ``numpy.random.default_rng([seed, j])``: a configuration depends only on ``seed``
+    and ``k``, never on the chunk size or on the worker that drew it.
+
+    Parameters
+    ----------
+    n : int
+        Number of configurations, >= 1.
+    seed : int, optional
+        Non-negative seed.
+    lo, hi : float, optional
+        The range of every angle (default :math:`[-\pi, \pi)`).
+
+    Examples
+    --------
+    >>> s = Sample(10, seed=1)
+    >>> s.size(3), s.configurations(3, 2, 4).shape
+    (10, (2, 3))
+    >>> bool(np.array_equal(s.configurations(3, 0, 10)[2:4], s.configurations(3, 2, 4)))
+    True
+    """
+
+    n: int
+    seed: int = 0
+    lo: float = -math.pi
+    hi: float = math.pi
+
+    def __post_init__(self):
+        object.__setattr__(self, "n", _count("n", self.n))
+        object.__setattr__(self, "seed", _count("seed", self.seed, minimum=0))
+        lo, hi = _bounds(self.lo, self.hi)
+        object.__setattr__(self, "lo", lo)
+        object.__setattr__(self, "hi", hi)
+
+    def size(self, w):
+        """Number of configurations (``n``, whatever ``w``).
+
+        Parameters
+        ----------
+        w : int
+            Number of steering angles.
+
+        Returns
+        -------
+        int
+        """
+        return self.n
+
+    def configurations(self, w, start, stop):
+        """Configurations ``start .. stop-1`` of the sample.
+
+        Parameters
+        ----------
+        w : int
+            Number of steering angles.
+        start, stop : int
+            A range of configuration numbers, ``0 <= start < stop <= n``.
+
+        Returns
+        -------
+        numpy.ndarray (stop - start, w)
+        """
+        first, last = start // _BLOCK, (stop - 1) // _BLOCK
+        blocks = [np.random.default_rng([self.seed, j]).uniform(self.lo, self.hi, (_BLOCK, w))
+                  for j in range(first, last + 1)]
+        return np.concatenate(blocks)[start - first * _BLOCK: stop - first * _BLOCK]
+
+
+@dataclass(frozen=True)
+class _Explicit:
+    beta: np.ndarray
+
+    def size(self, w):
+        return self.beta.shape[0]
+
+    def configurations(self, w, start, stop):
+        return self.beta[start:stop]
+
+
+def _source(angles, w):
+    if isinstance(angles, (Grid, Sample)):
+        if angles.size(w) < 1:
+            raise ValueError(f"angles has no configurations: {angles!r}")
+        return angles
+    if isinstance(angles, (str, bytes)) or angles is None:
+        raise TypeError(f"angles must be a Grid, a Sample or an array (N, {w}) of steering angles, got {angles!r}")
+    beta = V.finite_array("angles", angles, last=w)
+    beta = beta.reshape(-1, w)
+    if beta.shape[0] == 0:
+        raise ValueError(f"angles must hold at least one configuration, got shape {np.shape(angles)}")
+    return _Explicit(beta)

@@ -1,0 +1,159 @@
+r"""Chunked execution of a sweep: :func:`sweep`, in this process or on a Dask cluster.
+
+The configurations ``0 .. N-1`` are cut into chunks of ``chunk`` consecutive numbers; each chunk
+is generated, evaluated with the batched kernels and reduced (:func:`_evaluate`, which is what a
+Dask worker runs), and the partial reductions are merged as they arrive.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from ...model import validation as V
+from .analyses import ANALYSES, _J_length
+from .configurations import _BLOCK, Grid, Sample, _count, _source
+from .reduction import _Partial
+from .result import _finish
+
+__all__ = ["sweep", "QUANTILES", "CHUNK"]
+
+#: Quantiles reported by default.
+QUANTILES = (0.0, 0.01, 0.05, 0.5, 0.95, 0.99, 1.0)
+#: Configurations per chunk (a multiple of the random-sample block).
+CHUNK = 1 << 18
+
+
+def _evaluate(robot, name, source, w, L, keep, start, stop, threads):
+    """Evaluate analysis ``name`` on configurations ``start .. stop-1``: a :class:`_Partial`.
+
+    Runs in this process or on a Dask worker; ``threads`` limits the kernels' threads.
+    """
+    from .._batch import limit_threads
+    an = ANALYSES[name]
+    beta = source.configurations(w, start, stop)
+    with limit_threads(threads):
+        x = np.asarray(an.evaluate(robot, beta, L))
+    part = _Partial()
+    part.add(start, x.astype(np.int64) if an.integer else x.astype(float), an.integer, keep)
+    return part
+
+
+def sweep(robot, analysis, angles, *, L=None, quantiles=QUANTILES, keep=False, chunk=CHUNK,
+          progress=None, client=None):
+    r"""Evaluate an analysis over a grid or sample of configurations, chunk by chunk.
+
+    Each chunk of configurations :math:`\boldsymbol\beta_k\in\mathbb R^w` is evaluated with the
+    batched kernels (:func:`wmr.rank_F`, :func:`wmr.mobility`, :meth:`wmr.Robot.J` with
+    :func:`wmr.analysis.linalg.det` and :func:`wmr.condition_number`) and folded into the
+    reduction; peak memory is that of one chunk (``chunk`` configurations) plus the reduction,
+    about ``chunk * (w + 20) * 8`` bytes plus a few MB, independent of the number of
+    configurations (unless ``keep``).
+
+    Parameters
+    ----------
+    robot : Robot
+        A numeric robot.
+    analysis : str
+        A key of :data:`ANALYSES`: ``"rank_F"``, ``"mobility"``, ``"det_J"`` (square
+        :math:`\mathbf J` only, i.e. ``robot.n_rates == 3``), ``"kappa_J"`` or ``"kappa_JL1"``.
+    angles : Grid, Sample or array_like (N, w)
+        The configurations: a :class:`Grid`, a :class:`Sample`, or explicit steering angles.
+    L : float, optional
+        Characteristic length of :math:`\mathbf J_{L1}` for ``det_J``, ``kappa_J`` and
+        ``kappa_JL1`` (default :func:`wmr.characteristic_length`).
+    quantiles : sequence of float, optional
+        Quantile levels in [0, 1].
+    keep : bool, optional
+        Also return every value (``Sweep.values``, ``8 N`` bytes).
+    chunk : int, optional
+        Configurations per chunk (rounded up to a multiple of 65536 for a :class:`Sample`).
+    progress : callable, optional
+        Called as ``progress(done, total)`` after each chunk.
+    client : dask.distributed.Client, optional
+        Evaluate the chunks on this Dask cluster (one kernel thread per task) instead of in
+        this process; the result is the same.
+
+    Returns
+    -------
+    Sweep
+
+    Raises
+    ------
+    TypeError
+        If ``robot`` is not a :class:`~wmr.Robot`, ``analysis`` not a string, ``angles`` not a
+        grid, sample or array, or ``progress`` not callable.
+    ValueError
+        If ``analysis`` is unknown, ``det_J`` is asked of a non-square :math:`\mathbf J`, the
+        robot is symbolic, or a number is out of range.
+
+    Examples
+    --------
+    >>> import wmr
+    >>> bot = wmr.paper_robot("centred")
+    >>> res = wmr.sweep(bot, "mobility", Grid(12))
+    >>> res.count, res.counts                    # mobility 1 where the axles meet (or are parallel)
+    (1728, {0: 1408, 1: 320})
+    >>> float(wmr.sweep(bot, "det_J", Grid(12)).worst)
+    0.0
+    """
+    from ...model.robot import Robot
+    if not isinstance(robot, Robot):
+        raise TypeError(f"robot must be a wmr.Robot, got {robot!r}")
+    if robot.is_symbolic:
+        raise ValueError(f"robot must be numeric for a sweep, got a symbolic robot {robot!r}")
+    if not isinstance(analysis, str):
+        raise TypeError(f"analysis must be a string, one of {sorted(ANALYSES)}, got {analysis!r}")
+    if analysis not in ANALYSES:
+        raise ValueError(f"analysis must be one of {sorted(ANALYSES)}, got {analysis!r}")
+    an = ANALYSES[analysis]
+    if an.square and robot.n_rates != 3:
+        raise ValueError(f"analysis 'det_J' needs a square J (n_rates = 3), got n_rates = {robot.n_rates} "
+                         f"for {robot!r}; use 'kappa_J' for a non-square J")
+    L = _J_length(robot, L) if an.uses_L else None
+    w = robot.w
+    source = _source(angles, w)
+    qs = tuple(float(V.real("quantiles", q)) for q in np.atleast_1d(np.asarray(quantiles, dtype=object)))
+    if any(not 0.0 <= q <= 1.0 for q in qs):
+        raise ValueError(f"quantiles must lie in [0, 1], got {list(quantiles)}")
+    chunk = _count("chunk", chunk)
+    if isinstance(source, Sample):
+        chunk = -(-chunk // _BLOCK) * _BLOCK
+    if progress is not None and not callable(progress):
+        raise TypeError(f"progress must be callable as progress(done, total), got {progress!r}")
+    if client is not None and not callable(getattr(client, "map", None)):
+        raise TypeError(f"client must be a dask.distributed.Client, got {client!r}")
+    keep = bool(keep)
+
+    total = source.size(w)
+    bounds = [(a, min(a + chunk, total)) for a in range(0, total, chunk)]
+    run = _run_local if client is None else _run_dask
+    result = run(bounds, total, progress, client, robot, analysis, source, w, L, keep)
+    return _finish(result, analysis, an, source, w, qs, keep)
+
+
+
+def _run_local(bounds, total, progress, client, *task):
+    """Evaluate the chunks ``bounds`` one after the other in this process; the merged :class:`_Partial`."""
+    result, done = _Partial(), 0
+    for a, b in bounds:
+        result.merge(_evaluate(*task, a, b, None))
+        done += b - a
+        if progress is not None:
+            progress(done, total)
+    return result
+
+
+def _run_dask(bounds, total, progress, client, *task):
+    """Evaluate the chunks on a Dask cluster (one kernel thread per task), merged as they finish."""
+    from dask.distributed import as_completed
+    n = len(bounds)
+    futures = client.map(_evaluate, *[[arg] * n for arg in task], [a for a, _ in bounds], [b for _, b in bounds],
+                         [1] * n, pure=False)
+    result, done = _Partial(), 0
+    for fut in as_completed(futures):
+        part = fut.result()
+        result.merge(part)
+        done += part.count
+        fut.release()
+        if progress is not None:
+            progress(done, total)
+    return result

@@ -1,0 +1,169 @@
+r"""The reduction of a sweep: what is kept of a chunk of values, and how two of them merge.
+
+Count, minimum, maximum and minimum magnitude with the first configuration attaining each
+(ties go to the lower configuration index), exact counts of integer values, and for real values
+a logarithmic bucket sketch whose quantiles are within a relative :data:`SKETCH_ACCURACY`.
+Merging is associative, so the result does not depend on how the configurations were chunked.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+__all__ = ["SKETCH_ACCURACY"]
+
+#: Relative accuracy of the quantiles of real-valued analyses (see :class:`~wmr.analysis.sweep.Sweep`).
+SKETCH_ACCURACY = 1e-4
+
+
+@dataclass
+class _Counts:
+    """Counts of integer bins ``offset .. offset + len(counts) - 1`` (grows as needed; mergeable)."""
+
+    offset: int = 0
+    counts: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=np.int64))
+
+    def add(self, keys, counts=None):
+        if keys.size == 0:
+            return
+        lo, hi = int(keys.min()), int(keys.max())
+        part = np.bincount(keys - lo, weights=counts, minlength=hi - lo + 1).astype(np.int64)
+        self._add_dense(lo, part)
+
+    def _add_dense(self, lo, part):
+        if part.size == 0:
+            return
+        if self.counts.size == 0:
+            self.offset, self.counts = lo, part.copy()
+            return
+        new_lo = min(lo, self.offset)
+        new_hi = max(lo + part.size, self.offset + self.counts.size)
+        if new_lo != self.offset or new_hi != self.offset + self.counts.size:
+            grown = np.zeros(new_hi - new_lo, dtype=np.int64)
+            grown[self.offset - new_lo: self.offset - new_lo + self.counts.size] = self.counts
+            self.offset, self.counts = new_lo, grown
+        self.counts[lo - self.offset: lo - self.offset + part.size] += part
+
+    def merge(self, other):
+        self._add_dense(other.offset, other.counts)
+
+    def items(self):
+        nz = np.flatnonzero(self.counts)
+        return [(int(self.offset + k), int(self.counts[k])) for k in nz]
+
+    def locate(self, rank, descending=False):
+        """The bin holding the member of 0-based ``rank`` in bin order: ``(bin, 0)``, or ``(None, rank - total)``."""
+        counts = self.counts[::-1] if descending else self.counts
+        cum = np.cumsum(counts)
+        if cum.size == 0 or rank >= cum[-1]:
+            return None, rank - (int(cum[-1]) if cum.size else 0)
+        i = int(np.searchsorted(cum, rank, side="right"))
+        return self.offset + (self.counts.size - 1 - i if descending else i), 0
+
+
+_GAMMA = (1 + SKETCH_ACCURACY) / (1 - SKETCH_ACCURACY)
+_LOG_GAMMA = math.log(_GAMMA)
+
+
+def _bucket(x):
+    """Bucket k of positive finite x: gamma^(k-1) < x <= gamma^k (a relative-accuracy sketch)."""
+    return np.ceil(np.log(x) / _LOG_GAMMA).astype(np.int64)
+
+
+def _bucket_value(k):
+    """The value that represents bucket k: within SKETCH_ACCURACY of every member."""
+    return 2.0 * math.exp(k * _LOG_GAMMA) / (_GAMMA + 1.0)
+
+
+@dataclass
+class _Partial:
+    """The reduction of a set of configurations (associative: see :meth:`merge`)."""
+
+    count: int = 0
+    lo: float = math.nan           # minimum and its configuration index (nan: nothing yet)
+    lo_at: int = -1
+    hi: float = math.nan           # maximum
+    hi_at: int = -1
+    small: float = math.nan        # minimum magnitude
+    small_at: int = -1
+    integers: _Counts = field(default_factory=_Counts)     # integer analyses: value -> count
+    positive: _Counts = field(default_factory=_Counts)     # real analyses: bucket -> count
+    negative: _Counts = field(default_factory=_Counts)
+    zeros: int = 0
+    infinite: int = 0              # +inf (a condition number at a singular configuration)
+    values: list = field(default_factory=list)             # (start, array) when kept
+
+    def add(self, start, x, integer, keep):
+        self.count += x.size
+        i = int(np.argmin(x))
+        self._lo(float(x[i]), start + i)
+        i = int(np.argmax(x))
+        self._hi(float(x[i]), start + i)
+        ax = np.abs(x)
+        i = int(np.argmin(ax))
+        self._small(float(ax[i]), start + i)
+        if integer:
+            self.integers.add(x.astype(np.int64))
+        else:
+            inf = np.isinf(x)
+            n_inf = int(np.count_nonzero(inf))
+            self.infinite += n_inf
+            fin = x[~inf] if n_inf else x
+            pos, neg = fin[fin > 0], fin[fin < 0]
+            self.zeros += fin.size - pos.size - neg.size
+            self.positive.add(_bucket(pos))
+            self.negative.add(_bucket(-neg))
+        if keep:
+            self.values.append((start, x.copy()))
+
+    @staticmethod
+    def _first(v, at, best, best_at, sign):
+        """Keep the better of (v, at) and (best, best_at): sign * value smaller, ties to the lower index."""
+        if best_at < 0 or sign * v < sign * best or (v == best and at < best_at):
+            return v, at
+        return best, best_at
+
+    def _lo(self, v, at):
+        self.lo, self.lo_at = self._first(v, at, self.lo, self.lo_at, 1)
+
+    def _hi(self, v, at):
+        self.hi, self.hi_at = self._first(v, at, self.hi, self.hi_at, -1)
+
+    def _small(self, v, at):
+        self.small, self.small_at = self._first(v, at, self.small, self.small_at, 1)
+
+    def merge(self, other):
+        self.count += other.count
+        if other.count:
+            self._lo(other.lo, other.lo_at)
+            self._hi(other.hi, other.hi_at)
+            self._small(other.small, other.small_at)
+        self.integers.merge(other.integers)
+        self.positive.merge(other.positive)
+        self.negative.merge(other.negative)
+        self.zeros += other.zeros
+        self.infinite += other.infinite
+        self.values.extend(other.values)
+        return self
+
+    def quantile(self, q, integer):
+        """The order statistic of rank floor(q (count - 1)) (exact for integers, else from the sketch)."""
+        return min(max(self._quantile(q, integer), self.lo), self.hi)
+
+    def _quantile(self, q, integer):
+        if q == 0.0:
+            return self.lo
+        if q == 1.0:
+            return self.hi
+        rank = math.floor(q * (self.count - 1))
+        if integer:
+            return float(self.integers.locate(rank)[0])
+        k, rank = self.negative.locate(rank, descending=True)   # most negative first
+        if k is not None:
+            return -_bucket_value(k)
+        if rank < self.zeros:
+            return 0.0
+        k, rank = self.positive.locate(rank - self.zeros)
+        return math.inf if k is None else _bucket_value(k)

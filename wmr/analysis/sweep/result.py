@@ -1,0 +1,105 @@
+r"""The result of a sweep (:class:`Sweep`), assembled from the final reduction."""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .analyses import ANALYSES
+
+__all__ = ["Sweep"]
+
+
+@dataclass(frozen=True)
+class Sweep:
+    r"""The result of :func:`sweep`.
+
+    Attributes
+    ----------
+    analysis : str
+        The analysis' name (a key of :data:`ANALYSES`).
+    count : int
+        Configurations evaluated.
+    min : float
+        Smallest value (exact).
+    max : float
+        Largest value (exact).
+    argmin : numpy.ndarray (w,)
+        The first configuration, in the sweep's numbering, where the minimum is attained.
+    argmax : numpy.ndarray (w,)
+        The first configuration where the maximum is attained.
+    worst : float
+        The value at the end closest to a singularity (see the module notes): the minimum of
+        rank F, the maximum of the mobility and of condition numbers, the smallest
+        :math:`|\det\mathbf J|`.
+    worst_angles : numpy.ndarray (w,)
+        The first configuration where ``worst`` is attained.
+    worst_index : int
+        Its number in the sweep.
+    quantiles : dict of float -> float
+        The order statistic of rank :math:`\lfloor q(\text{count}-1)\rfloor` for each requested
+        ``q``: exact for the integer analyses (rank F, mobility) and for ``q`` = 0 or 1, within a
+        relative error of :data:`SKETCH_ACCURACY` for the real-valued ones (a logarithmic
+        bucket sketch that needs no sorted copy of the values).
+    counts : dict of int -> int
+        Integer analyses: how many configurations take each value; empty otherwise.
+    infinite : int
+        Configurations where the value is ``inf`` (a singular matrix's condition number).
+    values : numpy.ndarray (count,) or None
+        Every value, in the sweep's numbering, when ``keep=True``.
+    """
+
+    analysis: str
+    count: int
+    min: float
+    max: float
+    argmin: np.ndarray
+    argmax: np.ndarray
+    worst: float
+    worst_angles: np.ndarray
+    worst_index: int
+    quantiles: dict
+    counts: dict
+    infinite: int
+    values: np.ndarray | None = None
+
+    def summary(self):
+        """A few lines of text that state the result (used by ``wmr sweep``).
+
+        Returns
+        -------
+        str
+        """
+        an = ANALYSES[self.analysis]
+        deg = np.degrees(self.worst_angles)
+        lines = [f"{an.title} over {self.count:,} configurations",
+                 f"  min {self.min:.6g}   max {self.max:.6g}",
+                 "  quantiles  " + "   ".join(f"{q:g}: {v:.6g}" for q, v in self.quantiles.items())]
+        if self.counts:
+            lines.append("  counts     " + "   ".join(f"{k}: {n:,}" for k, n in self.counts.items()))
+        if self.infinite:
+            lines.append(f"  singular (inf) at {self.infinite:,} configurations")
+        lines.append(f"  worst {self.worst:.6g} at configuration {self.worst_index}: beta = ("
+                     + ", ".join(f"{a:.4f}" for a in deg) + ") deg")
+        return "\n".join(lines)
+
+
+
+def _finish(part, name, an, source, w, qs, keep):
+    def angles_at(k):
+        return source.configurations(w, k, k + 1)[0]
+
+    worst, at = {"min": (part.lo, part.lo_at), "max": (part.hi, part.hi_at),
+                 "min_abs": (part.small, part.small_at)}[an.worst]
+    values = None
+    if keep:
+        values = np.empty(part.count)
+        for start, x in part.values:
+            values[start:start + x.size] = x
+    return Sweep(
+        analysis=name, count=part.count, min=part.lo, max=part.hi,
+        argmin=angles_at(part.lo_at), argmax=angles_at(part.hi_at),
+        worst=worst, worst_angles=angles_at(at), worst_index=at,
+        quantiles={q: part.quantile(q, an.integer) for q in qs},
+        counts=dict(part.integers.items()) if an.integer else {},
+        infinite=part.infinite, values=values)
