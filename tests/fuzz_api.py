@@ -27,7 +27,8 @@ import numpy as np
 import sympy as sp
 
 import wmr
-from wmr.analysis import linalg, lines, mobility, reference, singularities, steering
+from wmr import swerve
+from wmr.analysis import linalg, lines, mobility, overview, reference, singularities, steering
 from wmr.model import backend, platform, tolerance
 from wmr.model.backend import NUMERIC, SYMBOLIC
 
@@ -284,6 +285,13 @@ CASES = [
          robots=(0,)),
     Case("sweep", lambda robot, analysis, angles: wmr.sweep(robot, analysis, angles), (R, ("analysis", "analysis"),
                                                                                        ("angles", "angles"))),
+    # --- robot overview (wmr analyze) and robot files
+    Case("configurations", lambda robot, seed: overview.configurations(robot, grid=40, twists=4, seed=seed),
+         (R, ("seed", "seed"))),
+    Case("dead_zone_radius", lambda robot: overview.dead_zone_radius(robot), (R,)),
+    Case("singular_families", lambda robot, L: overview.singular_families(robot, L), (R, ("L", "L_opt"))),
+    Case("overview", lambda robot: overview.overview(robot, grid=40, twists=4), (R,), allow="inf"),
+    Case("dump", lambda robot, path: wmr.dump(robot, path), (R, ("path", "no_path"))),
     # --- lines and singularities
     Case("line_intersection", lambda p1, u1, p2, u2: lines.line_intersection(p1, u1, p2, u2),
          (("p1", "pair1"), ("u1", "pair1"), ("p2", "pair1"), ("u2", "pair1"))),
@@ -319,6 +327,35 @@ CASES = [
     Case("reference.det", lambda A: reference.det(A), (("A", "square"),)),
     *[Case(f"reference.{f}", (lambda f: lambda A: getattr(reference, f)(A))(f), (("A", "matrix"),),
            allow="inf" if f == "condition_number" else "") for f in ("rank", "condition_number")],
+    # --- swerve practice (wmr.swerve): centred-wheel robots
+    *[Case(f"swerve.{c.name}", c.call, c.roles, robots=(0, 4)) for c in (
+        Case("module_commands", lambda robot, twist, current: swerve.module_commands(robot, twist, current),
+             (R, T, ("current", "opt_beta"))),
+        Case("module_speeds", lambda robot, beta, twist: swerve.module_speeds(robot, beta, twist), (R, B, T)),
+        Case("chassis_twist", lambda robot, beta, speed: swerve.chassis_twist(robot, beta, speed),
+             (R, B, ("speed", "beta"))),
+        Case("radii", lambda robot: swerve.radii(robot), (R,)),
+        Case("swerve_robot", lambda robot: swerve.swerve_robot(robot), (R,)),
+        Case("optimize_modules", lambda robot, twist, current: swerve.optimize_modules(robot, twist, current),
+             (R, T, ("current", "beta"))),
+        Case("optimize_robot", lambda robot, twist, current, samples: swerve.optimize_robot(robot, twist, current, samples),
+             (R, T, ("current", "beta"), ("samples", "samples"))),
+        Case("transition_slip", lambda robot, current, beta, speed: swerve.transition_slip(robot, current, beta, speed),
+             (R, ("current", "beta"), B, ("speed", "beta"))),
+        Case("desaturate", lambda robot, twist, max_speed: swerve.desaturate(robot, twist, max_speed),
+             (R, T, ("max_speed", "positive"))),
+        Case("desaturation_scale", lambda robot, twist, max_speed: swerve.desaturation_scale(robot, twist, max_speed),
+             (R, T, ("max_speed", "positive"))),
+    )],
+    Case("swerve.cosine_compensate", lambda speed, beta, target: swerve.cosine_compensate(speed, beta, target),
+         (("speed", "angles"), ("beta", "angles"), ("target", "angle"))),
+    Case("swerve.se2_exp", lambda twist, dt: swerve.se2_exp(twist, dt), (T, ("dt", "dt"))),
+    Case("swerve.se2_log", lambda delta, dt: swerve.se2_log(delta, dt), (("delta", "twist"), ("dt", "dt"))),
+    Case("swerve.discretize", lambda twist, dt: swerve.discretize(twist, dt), (T, ("dt", "dt"))),
+    Case("swerve.to_wpilib", lambda beta, speed: swerve.to_wpilib(beta, speed), (("beta", "angles"), ("speed", "anything"))),
+    Case("swerve.from_wpilib", lambda alpha: swerve.from_wpilib(alpha), (("alpha", "angles"),)),
+    Case("swerve.to_chassis", lambda twist: swerve.to_chassis(twist), (T,)),
+    Case("swerve.from_chassis", lambda chassis: swerve.from_chassis(chassis), (("chassis", "twist"),)),
 ]
 
 #: public functions deliberately not fuzzed here, and why
@@ -329,6 +366,8 @@ NOT_FUZZED = {
     "trig_combination": "kernel of Robot.J2/F/J and twist_constraints, fuzzed through them",
     "is_symbolic": "a predicate: any value is a valid question",
     "CampionClass": "the result type of campion_class, fuzzed through it",
+    "load": "reads a file: every malformed case (one-line RobotFileError FILE:LINE: key) is tested in test_io.py",
+    "Overview": "the result type of overview, fuzzed through it",
 }
 
 
@@ -347,6 +386,12 @@ def _more_roles(name, bot):
     if name == "roller":
         return ([np.pi / 2, np.pi / 4, -np.pi / 4, 1, sp.pi / 3, np.float32(0.5)], [TINY, 1e-9, -np.pi / 2 + 1e-12],
                 [0, 0.0, -np.pi / 2, 2.0, np.pi, -3.0, [0.5]] + BAD_ANY)
+    if name == "seed":
+        return [0, 7, np.int64(3)], [2**40], [-1, 0.5, "1", None, True, np.nan]
+    if name == "no_path":                                     # dump writes nothing when path is None
+        return [None], [], [3, 1.5, b"x", object()]
+    if name == "samples":
+        return [1, 3, np.int64(2)], [], [0, -1, 1.5, True, "1", None]
     if name in ("pair1", "rates1", "opt_beta1"):
         base = {"pair1": "pair", "rates1": "rates", "opt_beta1": "opt_beta"}[name]
         good, odd, bad = _role(base, bot)

@@ -32,12 +32,15 @@ from .analysis.steering import centre_to_wheels, instantaneous_centre, steering_
 from .analysis.sweep import sweep
 from .model.tolerance import TOL
 from .model.wheels import CentredWheel, DualWheel, FixedWheel, OffsetWheel, SwedishWheel
+from .io import dump, load
+from . import swerve
 
 __all__ = [
     "Robot", "OffsetWheel", "CentredWheel", "DualWheel", "FixedWheel", "SwedishWheel", "paper_robot", "equilateral_mounts",
     "E", "rotation", "point_velocity", "rank", "nullity", "null_space", "rank_F", "mobility",
     "admissible_twists", "condition_number", "is_isotropic", "characteristic_length",
     "forward", "inverse", "instantaneous_centre", "steering_angles", "centre_to_wheels",
-    "simulate", "sweep", "campion_class", "TOL", "NUMERIC", "SYMBOLIC", "conventions",
+    "simulate", "sweep", "campion_class", "TOL", "NUMERIC", "SYMBOLIC", "conventions", "load", "dump",
+    "swerve",
 ]
 __version__ = "0.1.0"

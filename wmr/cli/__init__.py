@@ -19,6 +19,9 @@ __all__ = ["COMMANDS", "main"]
 
 #: command name -> module of this package that implements it
 COMMANDS = {
+    "analyze": "analyze",
+    "ik": "ik",
+    "fk": "fk",
     "sweep": "sweep",
 }
 

@@ -1,0 +1,130 @@
+"""`wmr analyze`, `wmr ik`, `wmr fk`: tables, JSON that matches the library, one-line errors (exit 2)."""
+import json
+import tomllib
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import wmr
+from wmr.analysis.overview import overview
+from wmr.cli import COMMANDS, main
+
+ROOT = Path(__file__).resolve().parent.parent
+SWERVE = str(ROOT / "examples" / "swerve4.toml")
+OFFSET = str(ROOT / "examples" / "paper_offset.toml")
+
+
+def _run(capsys, *argv):
+    code = main(list(argv))
+    out = capsys.readouterr()
+    return code, out.out, out.err
+
+
+def test_console_script_and_commands():
+    meta = tomllib.loads((ROOT / "pyproject.toml").read_text())
+    assert meta["project"]["scripts"]["wmr"] == "wmr.cli:main"
+    assert {"analyze", "ik", "fk", "sweep"} <= set(COMMANDS)
+
+
+# ------------------------------------------------------------------------------------- analyze
+def test_analyze_json_matches_the_library(capsys):
+    code, out, err = _run(capsys, "analyze", SWERVE, "--json", "--grid", "500", "--twists", "50")
+    assert code == 0 and err == ""
+    data = json.loads(out)
+    ov = overview(wmr.load(SWERVE), grid=500, twists=50)
+    assert data["rank_F"] == {"generic": 7, "min": 6, "max": 7} and data["nullity"] == {"generic": 0, "min": 0, "max": 1}
+    assert data["configurations"] == ov.configurations and data["L"] == ov.L
+    assert data["kappa_J_L1"] == pytest.approx(1.0) and data["kappa_J2"] == 1.0 and data["kappa_J"]["max"] == "inf"
+    assert [f["family"] for f in data["singular"]] == [f["family"] for f in ov.singular]
+    assert np.allclose(data["singular"][1]["beta_deg"], [-45, 45, 45, -45])
+    assert "delta_m" in data and "delta_s" in data
+    if ov.campion is not None:
+        assert (data["delta_m"], data["delta_s"], data["class"]) == (1, 2, "(1,2)")
+
+
+def test_analyze_table(capsys):
+    code, out, _ = _run(capsys, "analyze", OFFSET, "--grid", "200", "--twists", "20")
+    assert code == 0
+    rows = dict((line[:11].strip(), line[13:]) for line in out.splitlines() if line[:11].strip())
+    assert rows["rank F"].startswith("6 generic, 6..6 over 152 configurations")
+    assert rows["nullity F"] == "3 generic, 3..3" and rows["kappa(J2)"].startswith("1 isotropic")
+    assert rows["dead zone"].startswith("radius 1:") and rows["singular"].startswith("none found")
+    starts = {len(line) - len(line[13:]) for line in out.splitlines()}
+    assert starts == {13}                                                       # one aligned column
+
+
+# ------------------------------------------------------------------------------------- ik / fk
+def test_ik_json_matches_the_library(capsys):
+    code, out, _ = _run(capsys, "ik", SWERVE, "--vx", "1.0", "--vy", "0.5", "--omega", "0.8", "--json")
+    assert code == 0
+    data = json.loads(out)
+    bot = wmr.load(SWERVE)
+    twist = [0.8, 1.0, 0.5]                                                     # wmr's order: psi_dot, x_dot, y_dot
+    beta = wmr.steering_angles(bot, twist)
+    assert np.allclose(data["angles_deg"], np.degrees(beta))
+    assert np.allclose(list(data["rates"].values()), wmr.inverse(bot, beta, twist).value)
+    assert list(data["rates"]) == list(bot.rate_names)
+    assert data["admissible"] and not data["admissible_without_resteering"] and data["slip_without_resteering"] > 0.1
+
+
+def test_ik_without_resteering(capsys):
+    # driving along body y with every wheel at 0 deg (axles along x): admissible as they stand
+    code, out, _ = _run(capsys, "ik", SWERVE, "--vy", "0.5", "--current-angles", "0,0", "0", "0", "--json")
+    data = json.loads(out)
+    assert code == 0 and data["admissible_without_resteering"] and np.allclose(data["resteer_deg"], 0)
+    assert np.allclose(list(data["rates"].values()), -0.5 / 0.0508)           # h_dot = -r theta_dot j
+    code, out, _ = _run(capsys, "ik", SWERVE, "--vx", "0.5", "--current-angles", "0", "0", "0", "0")
+    assert code == 0 and "without re-steering: no" in out and "admissible: yes" in out
+
+
+def test_fk_json_matches_the_library(capsys):
+    bot = wmr.load(OFFSET)
+    beta = np.radians([10, 20, 30])
+    rates = wmr.inverse(bot, beta, [0.3, -1.0, 0.5]).value                     # compatible rates
+    code, out, _ = _run(capsys, "fk", OFFSET, "--angles", "10", "20", "30", "--rates=" + ",".join(map(repr, rates.tolist())), "--json")
+    data = json.loads(out)
+    assert code == 0 and np.allclose([data["omega"], data["vx"], data["vy"]], [0.3, -1.0, 0.5]) and data["admissible"]
+    code, out, _ = _run(capsys, "fk", OFFSET, "--angles", "10", "20", "30", "--rates", "1,2,1,2,1,2", "--json")
+    data = json.loads(out)
+    sol = wmr.forward(bot, beta, [1, 2, 1, 2, 1, 2])
+    assert np.allclose([data["omega"], data["vx"], data["vy"]], sol.value) and not data["admissible"]
+    assert np.allclose(data["residual"], sol.residual) and data["slip"] == pytest.approx(np.linalg.norm(sol.residual))
+
+
+def test_fk_slip(capsys):
+    code, out, _ = _run(capsys, "fk", SWERVE, "--angles", "0", "0", "0", "90", "--rates", "-10", "-10", "-10", "-10", "--json")
+    data = json.loads(out)
+    assert code == 0 and not data["admissible"] and data["slip"] == pytest.approx(0.622, abs=1e-3)
+    code, out, _ = _run(capsys, "fk", SWERVE, "--angles", "0", "0", "0", "0", "--rates", "-10", "-10", "-10", "-10")
+    rows = dict(line.split(None, 1) for line in out.splitlines() if not line.startswith("residual"))
+    assert rows["vy"] == "0.508 m/s" and rows["vx"] == "0 m/s" and rows["admissible"].startswith("yes")
+
+
+# ------------------------------------------------------------------------------------ bad input
+@pytest.fixture
+def bad_file(tmp_path):
+    path = tmp_path / "bad.toml"
+    path.write_text('[[wheel]]\ntype = "centred"\nposition = [0, 0]\nradius = -1\n')
+    return str(path)
+
+
+@pytest.mark.parametrize("argv, words", [
+    (["analyze", "nowhere.toml"], "nowhere.toml"),
+    (["analyze", "BAD"], "bad.toml:4: wheel[1].radius: must be positive"),
+    (["analyze", SWERVE, "--grid", "0"], "grid"),
+    (["ik", "BAD", "--vx", "1"], "bad.toml:4: wheel[1].radius"),
+    (["ik", SWERVE, "--vx", "fast"], "--vx must be a number"),
+    (["ik", SWERVE, "--omega", "nan"], "--omega must be a finite number"),
+    (["ik", SWERVE, "--current-angles", "0", "0"], "--current-angles needs 4 values"),
+    (["ik", SWERVE, "--current-angles", "0", "0", "0", "x"], "--current-angles must be a number"),
+    (["fk", SWERVE, "--angles", "0", "0", "0", "0", "--rates", "1"], "--rates needs 4 values"),
+    (["fk", OFFSET, "--angles", "0", "0", "0", "--rates", "1", "2", "3"], "phi_dot_1 theta_dot_1"),
+    (["fk", SWERVE, "--angles", "0", "0", "0", "inf", "--rates", "1", "1", "1", "1"], "--angles must be a finite"),
+    (["fk", "BAD", "--angles", "0", "--rates", "1"], "bad.toml:4"),
+])
+def test_bad_input_is_one_line(capsys, bad_file, argv, words):
+    argv = [bad_file if a == "BAD" else a for a in argv]
+    code, out, err = _run(capsys, *argv)
+    assert code == 2 and out == ""
+    assert err.startswith(f"wmr {argv[0]}: ") and words in err and err.count("\n") == 1, err

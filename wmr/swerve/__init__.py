@@ -1,0 +1,41 @@
+r"""Swerve practice: what swerve-drive users need beyond the paper's kinematics.
+
+A swerve module is a centred steered wheel (:class:`wmr.CentredWheel`); a swerve robot is a
+:class:`wmr.Robot` of them.  Frames, twist order and the mapping to WPILib
+(:math:`\alpha = \beta - \pi/2`, :math:`s = r\dot\theta`, ``ChassisSpeeds(vx, vy, omega)`` =
+:math:`[\dot\psi, \dot x, \dot y]` reordered) are stated in :mod:`wmr.swerve.modules`; the project's
+tests check them against ``robotpy-wpimath`` (``tests/test_swerve_wpilib.py``).
+
+- :mod:`wmr.swerve.modules`: module angles and speeds (inverse kinematics), least-squares chassis
+  twist (forward), conversions to and from WPILib's conventions;
+- :mod:`wmr.swerve.optimize`: WPILib's per-module ``optimize`` and the robot-level steering choice;
+- :mod:`wmr.swerve.limits`: desaturation keeping the instantaneous centre, cosine compensation,
+  discretisation of a twist over a control period (the SE(2) exponential).
+
+Usage
+-----
+>>> import numpy as np, wmr
+>>> from wmr import swerve
+>>> bot = wmr.Robot([wmr.CentredWheel((x, y), r=0.05)
+...                  for x, y in [(0.3, 0.3), (0.3, -0.3), (-0.3, 0.3), (-0.3, -0.3)]])
+>>> cmd = swerve.module_commands(bot, [0.0, 1.0, 0.0])       # beta (axle angles), speeds r*theta_dot
+>>> np.degrees(swerve.to_wpilib(cmd.beta)).round(9).tolist()  # WPILib module angles
+[0.0, 0.0, 0.0, 0.0]
+>>> now = np.radians([89.0, 91.0, 91.0, 89.0])                 # driving forward; then: drive left
+>>> swerve.optimize_modules(bot, [0.0, 0.0, 1.0], now).flipped.tolist()   # WPILib: opposite ways
+[True, False, False, True]
+>>> choice = swerve.optimize_robot(bot, [0.0, 0.0, 1.0], now)             # robot level: one way
+>>> len(set(choice.flipped.tolist())), choice.beta.shape, choice.speed.shape
+(1, (4,), (4,))
+>>> swerve.desaturate(bot, [4.0, 1.0, 0.0], max_speed=1.0).round(4).tolist()
+[1.5962, 0.399, 0.0]
+"""
+from .limits import cosine_compensate, desaturate, desaturation_scale, discretize, se2_exp, se2_log
+from .modules import (ModuleCommand, chassis_twist, from_chassis, from_wpilib, module_commands, module_speeds,
+                      radii, swerve_robot, to_chassis, to_wpilib)
+from .optimize import MAX_MODULES, SteeringChoice, optimize_modules, optimize_robot, transition_slip
+
+__all__ = ["ModuleCommand", "swerve_robot", "radii", "module_commands", "module_speeds", "chassis_twist",
+           "to_wpilib", "from_wpilib", "to_chassis", "from_chassis",
+           "SteeringChoice", "optimize_modules", "optimize_robot", "transition_slip", "MAX_MODULES",
+           "desaturate", "desaturation_scale", "cosine_compensate", "se2_exp", "se2_log", "discretize"]

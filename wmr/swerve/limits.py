@@ -1,0 +1,241 @@
+r"""Commanding a real swerve drive: desaturation, cosine compensation, discretisation (the SE(2) exponential).
+
+Desaturation
+    The module speeds are linear in the twist, :math:`s_i = \|\dot{\mathbf c} + \dot\psi\mathbf E\mathbf d_i\|`
+    (2), and the steering angles depend only on its direction: scaling the **twist** by
+    :math:`k = \min(1, s_{\max}/\max_i s_i)` keeps the instantaneous centre
+    :math:`\mathbf u_c = \mathbf E\dot{\mathbf c}/\dot\psi` (63) and every angle.  WPILib's
+    ``desaturateWheelSpeeds`` scales the module speeds by the same :math:`k`, which is the same
+    thing for a continuous twist -- but applied after ``ChassisSpeeds.discretize`` it scales the
+    *discretised* twist, whose exponential is no longer the commanded arc: the robot drifts
+    sideways (WPILib's own docstring warns of it).  Desaturate first, then discretise.
+Cosine compensation
+    While module :math:`i` is at :math:`\beta_i` instead of its target :math:`\beta^*_i`, drive it at
+    :math:`s_i\cos(\beta_i - \beta^*_i)`: the component of the wanted wheel velocity along the
+    wheel's actual rolling direction (WPILib's ``SwerveModuleState.cosineScale``).
+Discretisation
+    A twist held for a control period :math:`\Delta t` moves the robot along an arc, the SE(2)
+    exponential (:func:`se2_exp`):
+
+    .. math:: \Delta\psi = \dot\psi\Delta t, \qquad
+              \Delta\mathbf c = \mathbf V(\Delta\psi)\,\dot{\mathbf c}\,\Delta t, \qquad
+              \mathbf V(\theta) = \frac{\sin\theta}{\theta}\mathbf I + \frac{1-\cos\theta}{\theta}\mathbf E
+
+    (body frame at the start of the period).  :func:`discretize` returns the twist whose arc
+    ends at :math:`(\dot\psi\Delta t, \dot x\Delta t, \dot y\Delta t)`, i.e. :func:`se2_log` of that
+    pose over :math:`\Delta t` (WPILib's ``ChassisSpeeds.discretize``).
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from ..model import validation as V
+from .modules import swerve_robot
+
+__all__ = ["desaturate", "desaturation_scale", "cosine_compensate", "se2_exp", "se2_log", "discretize"]
+
+
+def desaturation_scale(robot, twist, max_speed):
+    r"""The factor :math:`k = \min(1, s_{\max}/\max_i s_i)` that brings the fastest module to ``max_speed``.
+
+    Parameters
+    ----------
+    robot : Robot
+        Centred wheels only.
+    twist : array (..., 3)
+        :math:`[\dot\psi, \dot x, \dot y]`, body frame.
+    max_speed : float
+        Largest module speed, m/s, > 0.
+
+    Returns
+    -------
+    numpy.ndarray (...)
+        In :math:`(0, 1]`; 1 for the zero twist.
+    """
+    robot = swerve_robot(robot)
+    t = V.finite_array("twist", twist, last=3)
+    max_speed = V.number("max_speed", V.positive("max_speed", max_speed))
+    d = np.asarray(robot.mount_points, dtype=float)
+    with np.errstate(over="ignore", invalid="ignore"):
+        # p_i = c_dot + psi_dot E d_i (2), scaled by m first so that |p_i| cannot overflow
+        m = np.abs(t[..., 1:]).max(axis=-1) + np.abs(t[..., 0]) * np.abs(d).max()
+        m = np.where(m > 0, m, 1.0)[..., None]
+        tm = t / m
+        px = tm[..., 1:2] - tm[..., 0:1] * d[:, 1]
+        py = tm[..., 2:3] + tm[..., 0:1] * d[:, 0]
+        peak = np.hypot(px, py).max(axis=-1) * m[..., 0]
+        k = np.where(peak > max_speed, max_speed / np.where(peak > 0, peak, 1.0), 1.0)
+    if not np.isfinite(k).all():
+        raise ValueError(f"twist is too large: the module speeds overflow (largest |twist| = {np.abs(t).max():.3g})")
+    return k
+
+
+def desaturate(robot, twist, max_speed):
+    r"""Scale the twist so that no module exceeds ``max_speed``, keeping the instantaneous centre.
+
+    :math:`k\,\mathbf t` with :math:`k` of :func:`desaturation_scale`: the angles do not change, the
+    module speeds all scale by :math:`k` (WPILib's ``desaturateWheelSpeeds``) and the centre
+    :math:`\mathbf E\dot{\mathbf c}/\dot\psi` (63) stays where it was.
+
+    Parameters
+    ----------
+    robot : Robot
+        Centred wheels only.
+    twist : array (..., 3)
+    max_speed : float
+        Largest module speed, m/s, > 0.
+
+    Returns
+    -------
+    numpy.ndarray (..., 3)
+
+    Examples
+    --------
+    >>> import wmr
+    >>> bot = wmr.Robot([wmr.CentredWheel((x, y), r=0.05) for x, y in [(1, 1), (1, -1), (-1, 1), (-1, -1)]])
+    >>> desaturate(bot, [0.0, 3.0, 4.0], max_speed=2.0).round(12).tolist()   # modules at 5 m/s
+    [0.0, 1.2, 1.6]
+    """
+    t = V.finite_array("twist", twist, last=3)
+    return t * desaturation_scale(robot, t, max_speed)[..., None]
+
+
+def cosine_compensate(speed, beta, target):
+    r"""Module speeds scaled by the cosine of the steering error, :math:`s_i\cos(\beta_i - \beta^*_i)`.
+
+    Parameters
+    ----------
+    speed : array (...)
+        Signed module speeds for the targets, m/s.
+    beta : array (...)
+        Actual steering angles.
+    target : array (...)
+        Target steering angles :math:`\beta^*`.
+
+    Returns
+    -------
+    numpy.ndarray (...)
+        Negative where the error exceeds :math:`\pi/2` (as WPILib's ``cosineScale``).
+
+    Examples
+    --------
+    >>> cosine_compensate([2.0, 2.0], [0.0, np.pi / 3], [0.0, 0.0]).round(12).tolist()
+    [2.0, 1.0]
+    """
+    speed = V.finite_array("speed", speed)
+    beta = V.finite_array("beta", beta)
+    target = V.finite_array("target", target)
+    V.batch_shape({"speed": speed, "beta": beta, "target": target}, core=0)
+    return speed * np.cos(beta - target)
+
+
+def _coefficients(theta):
+    r""":math:`A = \sin\theta/\theta`, :math:`B = (1-\cos\theta)/\theta = \sin(\theta/2)\,\mathrm{sinc}(\theta/2)`: exact at 0."""
+    return np.sinc(theta / np.pi), np.sin(theta / 2) * np.sinc(theta / (2 * np.pi))
+
+
+def se2_exp(twist, dt=1.0):
+    r"""The pose reached by holding a body twist for ``dt``: the SE(2) exponential.
+
+    Parameters
+    ----------
+    twist : array (..., 3)
+        :math:`[\dot\psi, \dot x, \dot y]`, body frame.
+    dt : float, optional
+        Duration, > 0.
+
+    Returns
+    -------
+    numpy.ndarray (..., 3)
+        :math:`[\Delta\psi, \Delta x, \Delta y]` in the body frame at the start:
+        :math:`\Delta\psi = \dot\psi\,\Delta t`, :math:`\Delta\mathbf c = \mathbf V(\Delta\psi)\dot{\mathbf c}\,\Delta t`.
+
+    Examples
+    --------
+    >>> se2_exp([np.pi, np.pi, 0.0], dt=1.0).round(12).tolist()    # half a turn about (0, 1)
+    [3.14159265359, 0.0, 2.0]
+    """
+    t = V.finite_array("twist", twist, last=3)
+    dt = V.number("dt", V.positive("dt", dt))
+    with np.errstate(over="ignore", invalid="ignore"):
+        g = t * dt
+        A, B = _coefficients(g[..., 0])
+        out = np.stack([g[..., 0], A * g[..., 1] - B * g[..., 2], B * g[..., 1] + A * g[..., 2]], axis=-1)
+    if not np.isfinite(out).all():
+        raise ValueError(f"twist and dt are too large: the pose overflows (largest |twist| = {np.abs(t).max():.3g}, "
+                         f"dt = {dt!r})")
+    return out
+
+
+def se2_log(delta, dt=1.0):
+    r"""The constant body twist that reaches the pose ``delta`` in ``dt``: the SE(2) logarithm.
+
+    Inverse of :func:`se2_exp` for :math:`|\Delta\psi| < 2\pi`:
+    :math:`\dot{\mathbf c}\,\Delta t = \mathbf V(\Delta\psi)^{-1}\Delta\mathbf c` with
+    :math:`\mathbf V^{-1} = (A\mathbf I - B\mathbf E)/(A^2 + B^2)`, :math:`A^2 + B^2 =
+    \mathrm{sinc}^2(\Delta\psi/2)`.
+
+    Parameters
+    ----------
+    delta : array (..., 3)
+        :math:`[\Delta\psi, \Delta x, \Delta y]`, body frame at the start; :math:`|\Delta\psi| < 2\pi`.
+    dt : float, optional
+        Duration, > 0.
+
+    Returns
+    -------
+    numpy.ndarray (..., 3)
+        The twist :math:`[\dot\psi, \dot x, \dot y]`.
+
+    Examples
+    --------
+    >>> se2_log([np.pi, 0.0, 2.0]).round(12).tolist()
+    [3.14159265359, 3.14159265359, 0.0]
+    """
+    g = V.finite_array("delta", delta, last=3)
+    dt = V.number("dt", V.positive("dt", dt))
+    if np.any(np.abs(g[..., 0]) >= 2 * np.pi):
+        raise ValueError(f"delta must turn by less than 2 pi (the logarithm is not unique), got "
+                         f"|delta psi| up to {np.abs(g[..., 0]).max():.6g}")
+    A, B = _coefficients(g[..., 0])
+    n = A * A + B * B
+    with np.errstate(over="ignore", invalid="ignore", under="ignore"):
+        out = np.stack([g[..., 0], (A * g[..., 1] + B * g[..., 2]) / n, (A * g[..., 2] - B * g[..., 1]) / n],
+                       axis=-1) / dt
+    if not np.isfinite(out).all():
+        raise ValueError(f"delta and dt give a twist beyond double precision (dt = {dt!r})")
+    return out
+
+
+def discretize(twist, dt):
+    r"""The twist that, held for ``dt``, ends where the components of ``twist`` would if independent.
+
+    :func:`se2_log` of :math:`(\dot\psi\Delta t, \dot x\Delta t, \dot y\Delta t)` over :math:`\Delta t`:
+    WPILib's ``ChassisSpeeds.discretize`` in wmr's twist order.
+
+    Parameters
+    ----------
+    twist : array (..., 3)
+        :math:`[\dot\psi, \dot x, \dot y]`, body frame; :math:`|\dot\psi|\Delta t < 2\pi`.
+    dt : float
+        Control period, > 0.
+
+    Returns
+    -------
+    numpy.ndarray (..., 3)
+
+    Examples
+    --------
+    >>> tw = discretize([1.0, 1.0, 0.0], dt=0.5)
+    >>> (se2_exp(tw, 0.5) / 0.5).round(12).tolist()                   # ends at (psi, x, y) = t dt
+    [1.0, 1.0, ...0.0]
+    """
+    t = V.finite_array("twist", twist, last=3)
+    dt = V.number("dt", V.positive("dt", dt))
+    with np.errstate(over="ignore"):
+        g = t * dt
+    if not np.isfinite(g).all():
+        raise ValueError(f"twist and dt are too large: twist * dt overflows (dt = {dt!r})")
+    if np.any(np.abs(g[..., 0]) >= 2 * np.pi):
+        raise ValueError(f"twist turns by 2 pi or more in one period dt = {dt!r}: |psi_dot| dt must be < 2 pi")
+    return se2_log(g, dt)

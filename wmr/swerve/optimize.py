@@ -1,0 +1,225 @@
+r"""Which way to turn each module: WPILib's per-module ``optimize`` and a robot-level choice.
+
+A module realises the same wheel velocity at :math:`\beta_i` with speed :math:`s_i` and at
+:math:`\beta_i + \pi` with speed :math:`-s_i`.  WPILib's ``SwerveModuleState.optimize`` picks, module
+by module, the one nearer the current angle (turn at most :math:`\pi/2`).  Each module is then
+optimal alone, but when the needed turn is close to :math:`\pi/2` neighbouring modules can turn
+opposite ways: while they turn, their wheel planes no longer share an instantaneous centre and the
+wheels slip (a robot-level fault no per-module rule sees).
+
+The robot-level choice (:func:`optimize_robot`) takes all :math:`2^w` flip patterns
+:math:`\mathbf f \in \{0, 1\}^w` together, each giving targets :math:`\beta_i + f_i\pi`, speeds
+:math:`(-1)^{f_i}s_i` and turns :math:`\Delta_i = \operatorname{wrap}(\beta_i + f_i\pi - \beta^0_i)`,
+and minimises
+
+.. math:: J(\mathbf f) = \sum_i |\Delta_i| + w\,\bar\sigma(\mathbf f),
+
+the total re-steer (radians) plus :math:`w` times the mean relative slip :math:`\bar\sigma` of the
+transition (:func:`transition_slip`): the modules turn at one common rate along their arcs
+(:math:`\beta_i(\tau) = \beta^0_i + \operatorname{clip}(\Delta_i, -\tau, \tau)`) while driven at the new
+speeds, and :math:`\sigma = \|\mathbf J_1\mathbf t - \mathbf J_2\dot{\boldsymbol\theta}\| /
+\|\mathbf J_2\dot{\boldsymbol\theta}\| \in [0, 1]` is the share of the commanded wheel motion that
+no twist can absorb (the residual of (21), :func:`wmr.forward`).  A pattern whose modules slip
+completely throughout costs as much as one radian more of turning per module.  Ties go to the
+fewest flips.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..model import validation as V
+from ..model.platform import wrap_angle
+from .modules import chassis_twist, module_commands, swerve_robot
+
+__all__ = ["SteeringChoice", "optimize_modules", "optimize_robot", "transition_slip", "MAX_MODULES"]
+
+#: Most modules :func:`optimize_robot` enumerates (:math:`2^w` patterns).
+MAX_MODULES = 10
+
+
+@dataclass(frozen=True)
+class SteeringChoice:
+    r"""Target angles and speeds of the modules, chosen from their current angles.
+
+    Attributes
+    ----------
+    beta : numpy.ndarray (..., w)
+        Target steering angles, in :math:`(-\pi, \pi]`.
+    speed : numpy.ndarray (..., w)
+        Signed module speeds at the targets, m/s.
+    flipped : numpy.ndarray of bool (..., w)
+        Modules turned to :math:`\beta_i + \pi` with the speed reversed (relative to
+        :func:`~wmr.swerve.modules.module_commands`, whose speeds are :math:`\ge 0`).
+    resteer : numpy.ndarray (...)
+        Total turn :math:`\sum_i|\Delta_i|`, radians.
+    slip : numpy.ndarray (...)
+        Mean relative slip :math:`\bar\sigma` of the transition (:func:`transition_slip`).
+    """
+
+    beta: np.ndarray
+    speed: np.ndarray
+    flipped: np.ndarray
+    resteer: np.ndarray
+    slip: np.ndarray
+
+
+def transition_slip(robot, current, beta, speed, samples=8):
+    r"""Mean relative slip while the modules turn from ``current`` to ``beta`` at one common rate.
+
+    Module :math:`i` turns along its shorter arc :math:`\Delta_i = \operatorname{wrap}(\beta_i -
+    \beta^0_i)` at the common rate, :math:`\beta_i(\tau) = \beta^0_i + \operatorname{clip}(\Delta_i,
+    -\tau, \tau)` for :math:`\tau \in [0, \max_i|\Delta_i|]`, driven at ``speed``.  At ``samples``
+    midpoints :math:`\tau_k = (k + \tfrac12)\max|\Delta|/K` the least-squares twist leaves the residual
+    :math:`\mathbf J_1\mathbf t - \mathbf J_2\dot{\boldsymbol\theta}` (21); the relative slip is its norm
+    over :math:`\|\mathbf J_2\dot{\boldsymbol\theta}\| = \|\mathbf s\|` (0 for zero speeds), and the
+    mean over the samples is returned.  The rate itself does not matter (the path is the same).
+
+    Parameters
+    ----------
+    robot : Robot
+        Centred wheels only.
+    current : array (..., w)
+        Angles now.
+    beta : array (..., w)
+        Target angles.
+    speed : array (..., w)
+        Signed module speeds during the transition (those of the targets), m/s.
+    samples : int, optional
+        Samples along the transition.
+
+    Returns
+    -------
+    numpy.ndarray (...)
+        In :math:`[0, 1]`; 0 when no module turns and the targets are admissible.
+
+    Examples
+    --------
+    >>> import wmr
+    >>> bot = wmr.Robot([wmr.CentredWheel((x, y), r=0.05) for x, y in [(1, 1), (1, -1), (-1, 1), (-1, -1)]])
+    >>> same = transition_slip(bot, [0.0] * 4, [np.pi / 2] * 4, [1.0] * 4)      # all turn left: parallel
+    >>> mixed = transition_slip(bot, [0.0] * 4, [np.pi / 2, -np.pi / 2] * 2, [1.0, -1.0] * 2)
+    >>> float(same.round(12)), bool(mixed > 0.3)
+    (0.0, True)
+    """
+    robot = swerve_robot(robot)
+    w = robot.w
+    current = V.finite_array("current", current, last=w)
+    beta = V.finite_array("beta", beta, last=w)
+    speed = V.finite_array("speed", speed, last=w)
+    samples = V.integer("samples", samples, minimum=1)
+    batch = V.batch_shape({"current": current, "beta": beta, "speed": speed})
+    delta = wrap_angle(beta - current)                                  # (..., w), shorter arcs
+    span = np.abs(delta).max(axis=-1, keepdims=True)                    # (..., 1)
+    tau = (np.arange(samples) + 0.5) / samples * span                    # (..., K)
+    path = current[..., None, :] + np.clip(delta[..., None, :], -tau[..., None], tau[..., None])   # (..., K, w)
+    s = np.broadcast_to(speed, batch + (w,))[..., None, :]
+    m = np.abs(s).max(axis=-1, keepdims=True)
+    s = s / np.where(m > 0, m, 1.0)                                     # the ratio is scale-free: no overflow
+    sol = chassis_twist(robot, path, s)                                 # (21) least squares at each sample
+    size = np.linalg.norm(s, axis=-1)                                   # |J2 theta_dot| = |s|
+    rel = np.linalg.norm(sol.residual, axis=-1) / np.where(size > 0, size, 1.0)
+    return np.minimum(rel, 1.0).mean(axis=-1)
+
+
+def _targets(robot, twist, current):
+    robot = swerve_robot(robot)
+    current = V.finite_array("current", current, last=robot.w)
+    cmd = module_commands(robot, twist, current)
+    cur = np.broadcast_to(current, cmd.beta.shape)
+    return robot, cmd, cur
+
+
+def optimize_modules(robot, twist, current):
+    r"""WPILib's ``SwerveModuleState.optimize``, module by module.
+
+    Module :math:`i` flips (:math:`\beta_i + \pi`, speed :math:`-s_i`) exactly when
+    :math:`|\operatorname{wrap}(\beta_i - \beta^0_i)| > \pi/2`, so that no module turns more than
+    :math:`\pi/2`.
+
+    Parameters
+    ----------
+    robot : Robot
+        Centred wheels only.
+    twist : array (..., 3)
+        Commanded :math:`[\dot\psi, \dot x, \dot y]`, body frame.
+    current : array (..., w)
+        Current steering angles :math:`\beta^0`.
+
+    Returns
+    -------
+    SteeringChoice
+
+    Examples
+    --------
+    >>> import wmr
+    >>> bot = wmr.Robot([wmr.CentredWheel((x, y), r=0.05) for x, y in [(1, 1), (1, -1), (-1, 1), (-1, -1)]])
+    >>> ch = optimize_modules(bot, [0.0, -1.0, 0.0], [np.pi / 2] * 4)     # reverse: flip, do not turn
+    >>> ch.flipped.tolist(), ch.speed.round(12).tolist()
+    ([True, True, True, True], [-1.0, -1.0, -1.0, -1.0])
+    """
+    robot, cmd, cur = _targets(robot, twist, current)
+    flip = np.abs(wrap_angle(cmd.beta - cur)) > np.pi / 2
+    return _choice(robot, cmd, cur, flip)
+
+
+def _choice(robot, cmd, cur, flip):
+    beta = wrap_angle(cmd.beta + np.pi * flip)
+    speed = np.where(flip, -cmd.speed, cmd.speed)
+    resteer = np.abs(wrap_angle(beta - cur)).sum(axis=-1)
+    return SteeringChoice(beta, speed + 0.0, flip, resteer, transition_slip(robot, cur, beta, speed))
+
+
+def optimize_robot(robot, twist, current, samples=8):
+    r"""Robot-level steering choice: all modules' flips together, minimising re-steer plus transition slip.
+
+    Minimises :math:`J(\mathbf f) = \sum_i|\Delta_i| + w\,\bar\sigma(\mathbf f)` over the :math:`2^w`
+    flip patterns (module docstring, :mod:`wmr.swerve.optimize`), vectorised over configurations and
+    patterns.  Where the per-module choice is consistent it is kept (it has the least re-steer);
+    where it turns neighbours opposite ways through a slipping transition, one turning sense is
+    chosen for all.
+
+    Parameters
+    ----------
+    robot : Robot
+        Centred wheels only, at most :data:`MAX_MODULES`.
+    twist : array (..., 3)
+        Commanded :math:`[\dot\psi, \dot x, \dot y]`, body frame.
+    current : array (..., w)
+        Current steering angles :math:`\beta^0`.
+    samples : int, optional
+        Samples of each transition (:func:`transition_slip`).
+
+    Returns
+    -------
+    SteeringChoice
+
+    Examples
+    --------
+    >>> import wmr
+    >>> bot = wmr.Robot([wmr.CentredWheel((x, y), r=0.05) for x, y in [(1, 1), (1, -1), (-1, 1), (-1, -1)]])
+    >>> now = np.radians([89.0, 91.0, 89.0, 91.0])          # driving forward, encoders off by 1 degree
+    >>> left = [0.0, 0.0, 1.0]                               # now drive left: a 90 degree change
+    >>> optimize_modules(bot, left, now).flipped.tolist()    # neighbours turn opposite ways
+    [True, False, True, False]
+    >>> optimize_robot(bot, left, now).flipped.tolist()      # one sense for all
+    [False, False, False, False]
+    """
+    robot, cmd, cur = _targets(robot, twist, current)
+    w = robot.w
+    if w > MAX_MODULES:
+        raise ValueError(f"robot has {w} modules: optimize_robot enumerates 2^w patterns, at most "
+                         f"{MAX_MODULES} modules")
+    samples = V.integer("samples", samples, minimum=1)
+    flips = ((np.arange(2 ** w)[:, None] >> np.arange(w)) & 1).astype(bool)           # (P, w), P = 2^w
+    flips = flips[np.argsort(flips.sum(axis=1), kind="stable")]                      # fewest flips first
+    beta = wrap_angle(cmd.beta[..., None, :] + np.pi * flips)                        # (..., P, w)
+    speed = np.where(flips, -cmd.speed[..., None, :], cmd.speed[..., None, :])
+    resteer = np.abs(wrap_angle(beta - cur[..., None, :])).sum(axis=-1)             # (..., P)
+    slip = transition_slip(robot, cur[..., None, :], beta, speed, samples)
+    best = np.argmin(resteer + w * slip, axis=-1)                                    # J(f), first minimum
+    take = (lambda a: np.take_along_axis(a, best[..., None, None], axis=-2)[..., 0, :])
+    pick = (lambda a: np.take_along_axis(a, best[..., None], axis=-1)[..., 0])
+    flip = np.broadcast_to(flips, beta.shape)
+    return SteeringChoice(take(beta), take(speed) + 0.0, take(flip), pick(resteer), pick(slip))
