@@ -148,6 +148,17 @@ def test_steering_angles_return_the_own_angles():
     assert np.allclose(beta[:, 3], 0.25)                                   # offset: current kept
 
 
+def test_line_helpers_return_the_own_angles():
+    bot = mixed()
+    for f in (lines.planes_through, lines.axles_through):
+        beta = f(bot, np.random.default_rng(2).normal(size=(3, 2)))
+        assert beta.shape == (3, 4) and np.allclose(beta[:, :2], [0.3, 1.1])
+    from wmr.analysis.det_exact import plane_line_matrix
+    M = plane_line_matrix(bot, None, L=1)                     # symbolic: only the steered units have symbols
+    assert M[:, :2].free_symbols == set() and M[:, 2].free_symbols == {bot.beta_symbols[2]}
+    assert np.allclose(np.array(M[:, :2].evalf(), float), plane_line_matrix(bot, np.zeros(4), L=1)[:, :2])
+
+
 def test_swedish_robots_realise_every_twist():
     for bot in (omni3(), mecanum4()):
         rng = np.random.default_rng(2)
