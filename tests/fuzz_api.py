@@ -28,7 +28,8 @@ import sympy as sp
 
 import wmr
 from wmr import swerve
-from wmr.analysis import linalg, lines, mobility, overview, reference, singularities, steering
+from wmr.analysis import design, linalg, lines, mobility, motion_kappa, overview, reference, singularities, steering
+from wmr.analysis.sweep import Grid
 from wmr.model import backend, platform, tolerance
 from wmr.model.backend import NUMERIC, SYMBOLIC
 
@@ -276,6 +277,20 @@ CASES = [
          robots=(0,)),
     Case("sweep", lambda robot, analysis, angles: wmr.sweep(robot, analysis, angles), (R, ("analysis", "analysis"),
                                                                                        ("angles", "angles"))),
+    # --- design study
+    Case("worst_kappa", lambda robot, L: design.worst_kappa(robot, angles=Grid(3, 0.0, np.pi), L=L),
+         (R, ("L", "L_opt")), allow="inf"),
+    Case("WheelDesign", lambda mounts, d, r: design.WheelDesign(mounts, d, r),
+         (("mounts", "pairs"), ("d", "nonneg"), ("r", "positive"))),
+    Case("equilateral_design", lambda ratio: design.equilateral_design(ratio), (("ratio", "nonneg"),)),
+    Case("worst_kappa_designs", lambda beta: design.worst_kappa_designs([design.equilateral_design(0.5)], beta),
+         (("beta", "beta"),), robots=(0,)),
+    Case("rotation_twists", lambda centres: motion_kappa.rotation_twists(centres), (("centres", "pair"),)),
+    Case("motion_kappa", lambda robot, twist, L: motion_kappa.motion_kappa(robot, twist, L), (R, T, ("L", "L_opt")),
+         allow="inf"),
+    Case("mount_circle", lambda robot: motion_kappa.mount_circle(robot), (R,)),
+    Case("motion_map", lambda robot, half_width, L: motion_kappa.motion_map(robot, 5, half_width, L),
+         (R, ("half_width", "opt_length"), ("L", "L_opt")), allow="inf"),
     # --- robot overview (wmr analyze) and robot files
     Case("configurations", lambda robot, seed: overview.configurations(robot, grid=40, twists=4, seed=seed),
          (R, ("seed", "seed"))),
@@ -356,6 +371,10 @@ NOT_FUZZED = {
     "exact_zero": "SymPy helper of the paper's families; argument checks tested in test_validation",
     "trig_combination": "kernel of Robot.J2/F/J and twist_constraints, fuzzed through them",
     "is_symbolic": "a predicate: any value is a valid question",
+    "search": "seconds per call (a search over designs); its arguments are checked in tests/test_design.py",
+    "landscape": "seconds per call (two slices of the design space); its numbers are checked in tests/test_design.py",
+    "WorstCase": "result type of worst_kappa", "DesignSearch": "result type of search",
+    "Landscape": "result type of landscape", "MotionMap": "result type of motion_map",
     "load": "reads a file: every malformed case (one-line RobotFileError FILE:LINE: key) is tested in test_io.py",
     "Overview": "the result type of overview, fuzzed through it",
 }

@@ -297,9 +297,9 @@ def test_detmap_is_not_an_svg_of_rasters():
 def test_write_all_and_the_command_line(tmp_path, capsys):
     F.write_all(tmp_path, keys=["conventions"], csv=False)
     F.write_all(tmp_path, keys=["fig13"], csv=False)
-    caps = json.loads((tmp_path / "captions.json").read_text(encoding="utf-8"))
-    assert list(caps) == ["fig13", "conventions"]                         # a subset keeps the others, in order
+    caps = {k: json.loads((tmp_path / f"{k}.json").read_text(encoding="utf-8")) for k in ("fig13", "conventions")}
     assert caps["fig13"]["number"] == "13" and caps["conventions"]["number"] == ""
+    assert caps["fig13"]["caption"] and not (tmp_path / "captions.json").exists()
     assert F.main([str(tmp_path), "nope"]) == 2
     assert F.main([]) == 2
     with pytest.raises(ValueError, match="key must be one of"):
@@ -329,3 +329,20 @@ def test_doctests(module):
     import importlib
     result = doctest.testmod(importlib.import_module(module), optionflags=doctest.ELLIPSIS)
     assert result.failed == 0, f"{result.failed} doctest(s) failed in {module}"
+
+
+def test_detmap_minimum_is_refined_and_the_isotropic_example_is_immobile(data):
+    """The caption's smallest kappa(J) is not above any grid value, and the isotropic example has rank F = 6."""
+    dm = data("detmap")
+    for sl in dm.slices:
+        assert sl.kappa_min_refined <= sl.kappa_min
+        assert sl.kappa_min_refined >= 1.0 + 1e-3
+    assert dm.vortex_rank_F == 6
+    bot = wmr.paper_robot("centred", L=1.0, r=1.0)
+    assert int(wmr.rank_F(bot, np.radians(dm.vortex_beta_deg))) == 6
+    assert dm.kappa_mobile_min >= np.sqrt(2) * (1 - 1e-9)
+    assert dm.kappa_mobile_min == pytest.approx(np.sqrt(2), rel=1e-9)   # reached by the spin about C
+    from wmr.paper.figures import detmap
+    text = detmap.caption(dm)
+    assert "rank $\\mathbf{F} = 6$ and the robot cannot move" in text
+    assert f"{min(s.kappa_min_refined for s in dm.slices):.4f}" in text

@@ -18,7 +18,7 @@ from wmr.paper import notebook as NB
 from wmr.paper import symbols as S
 
 ROOT = Path(__file__).resolve().parents[1]
-CHAPTERS = sorted((ROOT / "notebooks").glob("0[1-7]_*.ipynb"))
+CHAPTERS = sorted((ROOT / "notebooks").glob("[0-9][0-9]_*.ipynb"))
 PAPER_CHAPTERS = [p for p in CHAPTERS if p.name[:2] in {"01", "02", "03", "04", "05", "06"}]
 MAX_CELL_LINES = 12
 

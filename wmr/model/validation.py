@@ -25,7 +25,8 @@ Traceback (most recent call last):
 TypeError: angle must be a real number, got '0.7' (str)
 
 The array checks (``finite_array``, ``batch_shape``, ``symbolic_vector``, ``symbolic_matrix``) are in
-:mod:`wmr.model.arrays`, and reachable from here.
+:mod:`wmr.model.arrays`, the robot checks (``robot``, ``numeric_robot``, ``free_symbols``) in
+:mod:`wmr.model.robot_checks`; both are reachable from here (``validation.robot``).
 """
 from __future__ import annotations
 
@@ -268,77 +269,6 @@ def point(name, value):
     return tuple(out)
 
 
-def robot(value, name="robot"):
-    """Return ``value`` if it is a :class:`wmr.Robot` instance.
-
-    Parameters
-    ----------
-    value : object
-    name : str, optional
-
-    Returns
-    -------
-    Robot
-
-    Examples
-    --------
-    >>> from wmr.model.robot import Robot
-    >>> robot(Robot)
-    Traceback (most recent call last):
-        ...
-    TypeError: robot must be a wmr.Robot instance, got the class Robot itself (build one, e.g. wmr.Robot([...]) or wmr.paper_robot())
-    """
-    from .robot import Robot
-    if isinstance(value, Robot):
-        return value
-    if isinstance(value, type) and issubclass(value, Robot):
-        raise TypeError(f"{name} must be a wmr.Robot instance, got the class {value.__name__} itself "
-                        "(build one, e.g. wmr.Robot([...]) or wmr.paper_robot())")
-    raise _kind_error(name, value, "a wmr.Robot")
-
-
-def numeric_robot(value, name="robot"):
-    """Return ``value`` if it is a :class:`wmr.Robot` without free symbols, as floats (:meth:`wmr.Robot.numeric`).
-
-    Parameters
-    ----------
-    value : object
-    name : str, optional
-
-    Returns
-    -------
-    Robot
-        ``value`` itself, or its float counterpart for an exact robot.
-    """
-    value = robot(value, name)
-    if free_symbols(value):
-        raise ValueError(f"{name} must have numeric mount points and lengths here, got a robot with the symbols "
-                         f"{sorted(map(str, free_symbols(value)))}: {show(value)}")
-    return value.numeric() if value.is_symbolic else value
-
-
-def free_symbols(robot):
-    """The SymPy symbols in a robot's mount points and lengths (empty for numeric and exact robots).
-
-    Parameters
-    ----------
-    robot : Robot
-
-    Returns
-    -------
-    set of sympy.Symbol
-    """
-    import dataclasses
-    out = set()
-    for u in robot.wheels:
-        for f in dataclasses.fields(u):
-            v = getattr(u, f.name)
-            for e in (v if isinstance(v, tuple) else (v,)):
-                if isinstance(e, sp.Basic):
-                    out |= e.free_symbols
-    return out
-
-
 def flag(name, value):
     """Return ``value`` as ``bool`` if it is a bool (Python or NumPy).
 
@@ -404,12 +334,15 @@ def integer(name, value, minimum=None):
     return int(value)
 
 
-_ARRAY_CHECKS = ("finite_array", "batch_shape", "symbolic_vector", "symbolic_matrix")
+#: checks that live in other modules (imported on first use: they import this one), by name
+_ELSEWHERE = {"finite_array": "arrays", "batch_shape": "arrays", "symbolic_vector": "arrays",
+              "symbolic_matrix": "arrays", "robot": "robot_checks", "numeric_robot": "robot_checks",
+              "free_symbols": "robot_checks"}
 
 
 def __getattr__(name):
-    """The array checks live in :mod:`wmr.model.arrays`; ``validation.finite_array`` etc. reach them."""
-    if name in _ARRAY_CHECKS:
-        from . import arrays
-        return getattr(arrays, name)
+    """The array and robot checks live in :mod:`wmr.model.arrays` and :mod:`wmr.model.robot_checks`."""
+    if name in _ELSEWHERE:
+        import importlib
+        return getattr(importlib.import_module(f"{__package__}.{_ELSEWHERE[name]}"), name)
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

@@ -8,7 +8,6 @@ import numpy as np
 import sympy as sp
 
 from ...analysis.linalg import rank
-from ...analysis.mobility import mobility
 from ...model.robots import paper_robot
 from ...model.tolerance import TOL
 from ..verify import symbolic_equal

@@ -6,7 +6,6 @@ from __future__ import annotations
 
 import numpy as np
 
-from ...analysis.linalg import rank
 from ...analysis.mobility import rank_F
 from ...model.robots import paper_robot
 from .feedback import Feedback, _none

@@ -8,6 +8,7 @@ import numpy as np
 
 from ...analysis.kinematics import inverse
 from ...model.robots import paper_robot
+from ..text import bound
 from .feedback import Feedback, _none
 
 __all__ = ["curved_translation", "reversal"]
@@ -42,7 +43,7 @@ def curved_translation(beta_dot, v=0.2, omega=0.5, t_end=2.0):
     miss = float(np.max(np.abs(run.twist - np.array([twist(t) for t in run.t]))))
     slip = float(run.slip.max())
     if miss < 1e-6 and slip < 1e-6:
-        return Feedback(True, rf"The robot follows the turning velocity (largest error ${miss:.1g}$ m/s) without slip: the "
+        return Feedback(True, rf"The robot follows the turning velocity (largest error ${bound(miss, latex=True)}$ m/s) without slip: the "
                               r"wheels turn together at $\omega$, stay parallel, and the robot changes direction without "
                               "stopping. Mobility 1 is not the same as having to stop.")
     return Feedback(False, rf"The robot misses the commanded velocity by up to ${miss:.3g}$ m/s after {t_end:g} s: the axles "

@@ -5,7 +5,7 @@ import numpy as np
 
 from ...analysis.kinematics import inverse
 from ...analysis.linalg import rank
-from ...analysis.mobility import admissible_twists, mobility
+from ...analysis.mobility import admissible_twists
 from ...model.robot import Robot
 
 __all__ = ["describe_robot"]

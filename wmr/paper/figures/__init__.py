@@ -28,12 +28,10 @@ Examples
 from __future__ import annotations
 
 import importlib
-import json
 import sys
 import time
 from pathlib import Path
 
-from ..files import atomic_write
 from . import output
 
 __all__ = ["FIGURES", "KEYS", "module", "save", "show", "write_all", "main"]
@@ -119,10 +117,9 @@ def show(key, data=None, *, outdir=None, width=None):
 def write_all(outdir, keys=None, *, csv=True, verbose=False):
     """Compute and save the figures ``keys`` (default all) into ``outdir``; returns ``{key: data}``.
 
-    Also writes, until the report reads ``<key>.json`` and notebook 04 writes the singularity
-    list, ``captions.json`` (key -> number, title, paper_caption, caption, function; with a subset
-    of ``keys`` the other entries of an existing file are kept) and, with ``csv``,
-    ``singularities.csv`` (:func:`wmr.paper.families.write_csv`).
+    Each figure is written as its files and ``<key>.json`` (its numbers and both captions, what
+    the report reads); with ``csv`` also ``singularities.csv`` (:func:`wmr.paper.families.write_csv`,
+    which notebook 04 writes too).
     """
     outdir = Path(outdir)
     keys = list(KEYS) if keys is None else list(keys)
@@ -135,16 +132,7 @@ def write_all(outdir, keys=None, *, csv=True, verbose=False):
         save(key, out[key], outdir)
         if verbose:
             print(f"  {key:12s} {time.perf_counter() - t0:5.2f} s", file=sys.stderr)
-    # transitional (the report stream reads captions.json until it switches to <key>.json)
-    path = outdir / "captions.json"
-    caps = json.loads(path.read_text(encoding="utf-8")) if path.exists() and set(keys) != set(KEYS) else {}
-    for key in keys:
-        rec = json.loads((outdir / f"{key}.json").read_text(encoding="utf-8"))
-        caps[key] = {"number": rec["number"], "title": rec["title"], "paper_caption": rec["paper_caption"],
-                     "caption": rec["caption"], "function": f"wmr.paper.figures.{key}"}
-    caps = {k: caps[k] for k in KEYS if k in caps}
-    atomic_write(path, json.dumps(caps, indent=2, ensure_ascii=False) + "\n")
-    if csv:                        # transitional: notebook 04 is to write it (wmr.paper.families.write_csv)
+    if csv:
         from ..families import write_csv
         t0 = time.perf_counter()
         write_csv(outdir / "singularities.csv")

@@ -20,11 +20,13 @@ from ...analysis import lines as ln
 from ...analysis import singularities as sg
 from ...analysis.linalg import condition_number
 from ...analysis.mobility import rank_F, twist_constraints
+from ...analysis.steering import steering_angles
 from ...model.platform import wrap_angle
 from ..text import degrees, residual as residual_text
 from .common import ABS_DET_J, DEG, L_PAPER, centred_robot, drawing, residual, snap
 
-__all__ = ["NUMBER", "TITLE", "PAPER_CAPTION", "FORMATS", "DetSlice", "DetMapData", "data", "draw", "caption"]
+__all__ = ["NUMBER", "TITLE", "PAPER_CAPTION", "FORMATS", "MOBILE_TWISTS", "MOBILE_SEED", "DetSlice", "DetMapData",
+           "refine_kappa_min", "data", "draw", "caption"]
 
 NUMBER = ""
 TITLE = "Singular configurations and conditioning of J"
@@ -48,6 +50,9 @@ class DetSlice:
         Extremes of :math:`\det\mathbf J/r^3` on the grid.
     kappa_min : float
         Smallest :math:`\kappa(\mathbf J)` on the grid.
+    kappa_min_refined : float
+        The same minimum refined around the best grid point (:func:`refine_kappa_min`): the grid
+        minimum rounds the true one up.
     singular_fraction : float
         Fraction of grid points where :math:`\mathbf J` is rank deficient (:math:`\kappa = \infty`).
     singular_motions : tuple of (beta2, beta3, family)
@@ -63,6 +68,7 @@ class DetSlice:
     det_min: float
     det_max: float
     kappa_min: float
+    kappa_min_refined: float
     singular_fraction: float
     singular_motions: tuple
     singular_motion_det_max: float = residual()
@@ -89,6 +95,12 @@ class DetMapData:
         :math:`\kappa(\mathbf J)` there and at :math:`-45^\circ`.
     vortex_error : float
         :math:`\max|\kappa - 1|` of the two.
+    vortex_rank_F : int
+        rank F at the isotropic configuration (6: the robot cannot move there).
+    mobile_twists : int
+        Number of random twists (fixed seed) at whose steering angles :math:`\kappa(\mathbf J)` is evaluated.
+    kappa_mobile_min : float
+        Smallest :math:`\kappa(\mathbf J)` at those configurations, where the robot can move (:math:`\ge\sqrt2`).
     """
 
     n: int
@@ -99,6 +111,9 @@ class DetMapData:
     kappa_vortex: float
     kappa_vortex_minus: float
     vortex_error: float = residual()
+    vortex_rank_F: int = 0
+    mobile_twists: int = 0
+    kappa_mobile_min: float = 0.0
     grid: np.ndarray = drawing(default=None)         # (n,) degrees, cell centres
     lim: float = drawing(default=1.0)                # colour range of det J / r^3
 
@@ -113,14 +128,70 @@ def _slice(bot, beta1, g):
     mb, fams = sg.singular_motions(bot, beta1 * DEG)
     mdeg = np.degrees(mb)
     finite = kap[np.isfinite(kap)]
+    k = np.argmin(np.where(np.isfinite(kap), kap, np.inf))
     return DetSlice(
         beta1=float(beta1), det_min=float(D.min()), det_max=float(D.max()), kappa_min=float(finite.min()),
+        kappa_min_refined=refine_kappa_min(bot, beta1, B2.flat[k], B3.flat[k], g[1] - g[0]),
         singular_fraction=float(np.mean(~np.isfinite(kap))),
         singular_motions=tuple((float(a), float(b), f) for (_, a, b), f in zip(mdeg, fams)),
         singular_motion_det_max=float(np.abs(sg.det_J(bot, mb)).max()),
         singular_motion_ranks=tuple(sorted(set(int(v) for v in rank_F(bot, mb)))),
         det=snap(D), log_kappa=snap(np.log10(np.clip(np.where(np.isfinite(kap), kap, 1e16), 1, 1e16))),
         det_A=snap(np.linalg.det(A)))
+
+
+def refine_kappa_min(bot, beta1, beta2, beta3, step, rounds=4, m=41):
+    r"""Refine a grid minimum of :math:`\kappa(\mathbf J)` over :math:`(\beta_2, \beta_3)` at fixed :math:`\beta_1`.
+
+    Each round evaluates an ``m`` x ``m`` grid (one batch) spanning one cell of the previous grid
+    around its best point, so the cell shrinks by a factor ``(m - 1) / 2`` per round.
+
+    Parameters
+    ----------
+    bot : wmr.Robot
+        The robot (three steered wheels).
+    beta1, beta2, beta3 : float
+        Degrees: the slice and the best grid point.
+    step : float
+        Degrees: the spacing of the grid the point comes from.
+    rounds, m : int, optional
+
+    Returns
+    -------
+    float
+        The refined minimum (never above :math:`\kappa` at the starting point).
+
+    Examples
+    --------
+    >>> bot = centred_robot()
+    >>> k = refine_kappa_min(bot, 60.0, -69.75, 170.55, 0.9)   # the best point of the 400 x 400 grid: 1.30209
+    >>> round(k, 5)
+    1.30189
+    """
+    best = (float(beta2), float(beta3))
+    kmin = np.inf
+    for _ in range(rounds):
+        t = np.linspace(-step, step, m)
+        B2, B3 = np.meshgrid(best[0] + t, best[1] + t, indexing="xy")
+        beta = np.stack([np.full_like(B2, beta1), B2, B3], axis=-1) * DEG
+        kap = condition_number(bot.J(beta, L=L_PAPER))
+        k = int(np.argmin(kap))
+        if kap.flat[k] < kmin:
+            kmin, best = float(kap.flat[k]), (float(B2.flat[k]), float(B3.flat[k]))
+        step *= 2.0 / (m - 1)
+    return kmin
+
+
+#: Random twists (fixed seed) at whose steering angles kappa(J) is sampled where the robot can move.
+MOBILE_TWISTS = 2000
+MOBILE_SEED = 2002
+
+
+def _kappa_mobile_min(bot, n=MOBILE_TWISTS, seed=MOBILE_SEED):
+    """Smallest kappa(J) at the steering angles of ``n`` random twists and of a spin about C."""
+    twists = np.random.default_rng(seed).normal(size=(n, 3))
+    twists = np.vstack([twists, [1.0, 0.0, 0.0]])
+    return float(condition_number(bot.J(steering_angles(bot, twists), L=L_PAPER)).min())
 
 
 def data(beta1s=(60.0, 20.0), n=400):
@@ -139,7 +210,9 @@ def data(beta1s=(60.0, 20.0), n=400):
         n=n, slices=slices, a13=float(np.degrees(ln.pair_line_angle(bot, 1, 3))),
         a23=float(np.degrees(ln.pair_line_angle(bot, 2, 3))),
         vortex_beta_deg=tuple(np.degrees(wrap_angle(alpha + 45 * DEG)).tolist()), kappa_vortex=kv[1],
-        kappa_vortex_minus=kv[-1], vortex_error=max(abs(k - 1) for k in kv.values()), grid=g,
+        kappa_vortex_minus=kv[-1], vortex_error=max(abs(k - 1) for k in kv.values()),
+        vortex_rank_F=int(rank_F(bot, alpha + 45 * DEG)), mobile_twists=MOBILE_TWISTS,
+        kappa_mobile_min=_kappa_mobile_min(bot), grid=g,
         lim=float(np.round(max(max(abs(s.det_min), abs(s.det_max)) for s in slices), 3)))
 
 
@@ -199,7 +272,7 @@ def caption(data):
     """Our caption of the map (Markdown with ``$...$``)."""
     b1 = [s.beta1 for s in data.slices]
     det_max = max(s.singular_motion_det_max for s in data.slices)
-    kmin = min(s.kappa_min for s in data.slices)
+    kmin = min(s.kappa_min_refined for s in data.slices)
     vortex = ", ".join(degrees(np.radians(b)) for b in data.vortex_beta_deg)
     return (rf"$\det\mathbf{{J}}/r^3$ (top) and $\log_{{10}}\kappa(\mathbf{{J}})$ (bottom, clipped at "
             rf"{LOG_KAPPA_MAX:g}) of the WMR with three centred wheels over $(\beta_2, \beta_3)$ for "
@@ -212,7 +285,12 @@ def caption(data):
             r"only ones in which the robot can move (rank $\mathbf{F} = 5$). Markers: where the robot can move although "
             rf"$\mathbf{{J}}$ is singular (computed ${residual_text(ABS_DET_J, det_max)}$, rank "
             r"$\mathbf{F} = 5$): all planes parallel ((i), (i')) and rotations about a point of the circle through the "
-            rf"$P_i$. On these slices $\kappa(\mathbf{{J}}) \geq {kmin:.3f}$: although $\mathbf{{J}}_{{L1}}$ and "
-            r"$\mathbf{J}_2$ are isotropic, $\mathbf{J}$ is isotropic only at special configurations, e.g. with every "
-            r"wheel turned by the same $45^\circ$ from its radial line $CP_i$ (computed "
-            rf"${residual_text(KAPPA_ERROR, data.vortex_error)}$ at $\beta = ({vortex})^\circ$).")
+            rf"$P_i$. On these slices the smallest $\kappa(\mathbf{{J}})$ is {kmin:.4f} (the grid minimum, "
+            r"refined): although $\mathbf{J}_{L1}$ and $\mathbf{J}_2$ are isotropic, $\mathbf{J}$ is isotropic only at "
+            r"special configurations, e.g. with every wheel turned by the same $45^\circ$ from its radial line $CP_i$ "
+            rf"(computed ${residual_text(KAPPA_ERROR, data.vortex_error)}$ at $\beta = ({vortex})^\circ$), where "
+            rf"rank $\mathbf{{F}} = {data.vortex_rank_F}$ and the robot cannot move. Where it can move (dashed), "
+            rf"$\kappa(\mathbf{{J}}) \geq \sqrt2$: the smallest value at the steering angles of {data.mobile_twists} "
+            rf"random twists and of a spin about $C$ is {data.kappa_mobile_min:.4f}.")
+
+    return f"{np.floor(x * 10**decimals) / 10**decimals:.{decimals}f}"

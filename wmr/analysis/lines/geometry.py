@@ -1,18 +1,6 @@
-r"""Lines in the floor plane: the axle and wheel-plane lines of a robot, where lines meet, the circumcircle.
+r"""2-D line geometry: where two lines meet, whether several are concurrent (Plücker coordinates), the circumcircle.
 
-Two lines through each mount point :math:`P_i` organise the steering and singularity analyses:
-
-* the **axle line** through the wheel centre along :math:`\mathbf i_i`: all axle lines meet at the
-  instantaneous centre exactly when a rotation about it is admissible (mobility);
-* the **wheel-plane line** :math:`\ell_i` through :math:`P_i` along :math:`\mathbf j_i` (the trace of
-  the wheel plane on the floor): for three centred wheels :math:`\det\mathbf J = 0` exactly when
-  the three are concurrent (:mod:`wmr.analysis.singularities`).
-
-A line :math:`p + s\,u` has the Plücker coordinates :math:`[\,p\times u,\ u^T]^T`; a point
-:math:`D` lies on it iff :math:`[-1,\ -D_y,\ D_x]\,[p\times u,\ u^T]^T = 0`, so the common point of
-several lines is the left null vector of the matrix of their Plücker columns
-(:func:`lines_concurrency`).  Where lines (or an instantaneous centre) are is one of the
-:class:`Meet` values, used by every module of the package.
+Part of :mod:`wmr.analysis.lines`; nothing here knows about robots.
 """
 from __future__ import annotations
 
@@ -21,14 +9,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..model import validation as V
-from ..model.platform import line_angle
-from ..model.tolerance import TOL, near_zero
+from ...model import validation as V
+from ...model.tolerance import near_zero
 
 __all__ = ["Meet", "FINITE", "AT_INFINITY", "STILL", "NONE", "COINCIDENT", "PARALLEL", "Concurrency",
-           "line_intersection", "pair_intersections", "lines_concurrency", "circumcircle",
-           "wheel_plane_lines", "axle_lines", "concurrency_point", "axles_concurrency",
-           "planes_through", "axles_through", "pair_line_angle", "line_angle"]
+           "line_intersection", "pair_intersections", "lines_concurrency", "circumcircle"]
 
 
 class Meet(enum.IntEnum):
@@ -246,166 +231,3 @@ def _circle(pts, is_zero, shown):
     ux = (a2 * (by - cy) + b2 * (cy - ay) + c2 * (ay - by)) / dd
     uy = (a2 * (cx - bx) + b2 * (ax - cx) + c2 * (bx - ax)) / dd
     return (ux, uy), (ax - ux) ** 2 + (ay - uy) ** 2
-
-
-# ----------------------------------------------------------------------------- a robot's lines
-def _unit_points(robot, beta):
-    """Each unit's points and axes (``unit.points``) at the steering angles ``beta (..., w)``."""
-    robot = V.numeric_robot(robot)
-    beta = V.finite_array("beta", beta, last=robot.w)
-    return [u.points(beta[..., i]) for i, u in enumerate(robot.wheels)]
-
-
-def wheel_plane_lines(robot, beta):
-    r"""Wheel-plane lines :math:`\ell_i`: through :math:`P_i` along :math:`\mathbf j_i`.
-
-    (For an offset wheel the line also passes through :math:`H_i = P_i - d\mathbf j_i`; for a dual
-    wheel it is the unit's mid-plane.)
-
-    Parameters
-    ----------
-    robot : Robot
-    beta : array (..., w)
-
-    Returns
-    -------
-    points : numpy.ndarray (..., w, 2)
-    directions : numpy.ndarray (..., w, 2)
-        Unit vectors :math:`\mathbf j_i`.
-    """
-    pts = _unit_points(robot, beta)
-    return np.stack([p["P"] for p in pts], axis=-2), np.stack([p["j"] for p in pts], axis=-2)
-
-
-def axle_lines(robot, beta):
-    r"""Axle lines: through each wheel centre along :math:`\mathbf i_i` (centred: through :math:`P_i`).
-
-    Parameters
-    ----------
-    robot : Robot
-    beta : array (..., w)
-
-    Returns
-    -------
-    points : numpy.ndarray (..., w, 2)
-        Wheel centres :math:`H_i` (body frame).
-    directions : numpy.ndarray (..., w, 2)
-    """
-    pts = _unit_points(robot, beta)
-    return np.stack([p["H"] for p in pts], axis=-2), np.stack([p["i"] for p in pts], axis=-2)
-
-
-def _one(robot, beta, what):
-    robot = V.numeric_robot(robot)
-    if robot.w < 2:
-        raise ValueError(f"robot must have at least two wheel units for {what} (lines to meet), got {V.show(robot)}")
-    beta = V.finite_array("beta", beta, last=robot.w)
-    if beta.ndim != 1:
-        raise ValueError(f"beta must be one configuration of shape ({robot.w},) for {what}, got shape {beta.shape}")
-    return beta
-
-
-def concurrency_point(robot, beta):
-    r"""The point :math:`D_P` where the wheel-plane lines meet (one configuration).
-
-    Parameters
-    ----------
-    robot : Robot
-    beta : array (w,)
-
-    Returns
-    -------
-    Concurrency
-        For three centred wheels ``kind == NONE`` exactly when :math:`\det\mathbf J \ne 0`.
-    """
-    return lines_concurrency(*wheel_plane_lines(robot, _one(robot, beta, "concurrency_point")))
-
-
-def axles_concurrency(robot, beta):
-    """Where the axle lines meet (one configuration): the instantaneous centre when the robot can move.
-
-    Parameters
-    ----------
-    robot : Robot
-    beta : array (w,)
-
-    Returns
-    -------
-    Concurrency
-    """
-    return lines_concurrency(*axle_lines(robot, _one(robot, beta, "axles_concurrency")))
-
-
-def planes_through(robot, D):
-    r"""Steering angles whose wheel-plane lines all pass through the point D (body frame).
-
-    :math:`\mathbf j_i \parallel D - P_i`, with :math:`\beta_i\in(-\pi/2, \pi/2]` (the other choice,
-    :math:`\beta_i + \pi`, gives the same line).  Where :math:`D = P_i` the angle is free and 0 is
-    returned.
-
-    Parameters
-    ----------
-    robot : Robot
-    D : array (..., 2)
-
-    Returns
-    -------
-    numpy.ndarray (..., w)
-    """
-    robot = V.numeric_robot(robot)
-    D = V.finite_array("D", D, last=2)
-    v = D[..., None, :] - robot.mount_points                        # (..., w, 2)
-    beta = np.arctan2(-v[..., 0], v[..., 1])                       # j = (-sin b, cos b) || v
-    beta = np.where(_at(v, robot, D), 0.0, beta)
-    return line_angle(beta)
-
-
-def axles_through(robot, U):
-    r"""Steering angles whose axles all pass through U (body frame): rotation about U is admissible.
-
-    Parameters
-    ----------
-    robot : Robot
-    U : array (..., 2)
-
-    Returns
-    -------
-    numpy.ndarray (..., w), in :math:`(-\pi/2, \pi/2]`
-    """
-    robot = V.numeric_robot(robot)
-    U = V.finite_array("U", U, last=2)
-    v = U[..., None, :] - robot.mount_points
-    beta = np.arctan2(v[..., 1], v[..., 0])                        # i = (cos b, sin b) || v
-    beta = np.where(_at(v, robot, U), 0.0, beta)
-    return line_angle(beta)
-
-
-def _at(v, robot, X):
-    """Where the point X is a mount point: ``max|X - P_i| <= TOL`` times the size of the robot and of X."""
-    size = np.maximum(np.abs(robot.mount_points).max(), np.abs(X).max(axis=-1, keepdims=True))
-    return np.abs(v).max(axis=-1) <= TOL * size
-
-
-def pair_line_angle(robot, i, j):
-    r"""The steering angle (in :math:`(-\pi/2,\pi/2]`) that puts the plane of wheel i on the line :math:`P_iP_j` (1-based).
-
-    Parameters
-    ----------
-    robot : Robot
-    i, j : int
-        Wheel numbers, 1-based, distinct.
-
-    Returns
-    -------
-    float
-    """
-    robot = V.numeric_robot(robot)
-    for name, k in (("i", i), ("j", j)):
-        if isinstance(k, bool) or not isinstance(k, (int, np.integer)):
-            raise TypeError(f"{name} must be a wheel number (int), got {k!r}")
-        if not 1 <= k <= robot.w:
-            raise ValueError(f"{name} must be a wheel number in 1..{robot.w}, got {k!r}")
-    if i == j:
-        raise ValueError(f"i and j must be two different wheels, got i = j = {i}")
-    return float(planes_through(robot, robot.mount_points[j - 1])[i - 1])
-

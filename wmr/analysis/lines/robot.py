@@ -1,0 +1,176 @@
+r"""A robot's lines: the axle and wheel-plane lines at steering angles, where they meet, and the angles that put them through a point.
+
+Part of :mod:`wmr.analysis.lines`.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from ...model import validation as V
+from ...model.platform import line_angle
+from ...model.tolerance import TOL
+from .geometry import lines_concurrency
+
+__all__ = ["wheel_plane_lines", "axle_lines", "concurrency_point", "axles_concurrency", "planes_through",
+           "axles_through", "pair_line_angle"]
+
+
+def _unit_points(robot, beta):
+    """Each unit's points and axes (``unit.points``) at the steering angles ``beta (..., w)``."""
+    robot = V.numeric_robot(robot)
+    beta = V.finite_array("beta", beta, last=robot.w)
+    return [u.points(beta[..., i]) for i, u in enumerate(robot.wheels)]
+
+
+def wheel_plane_lines(robot, beta):
+    r"""Wheel-plane lines :math:`\ell_i`: through :math:`P_i` along :math:`\mathbf j_i`.
+
+    (For an offset wheel the line also passes through :math:`H_i = P_i - d\mathbf j_i`; for a dual
+    wheel it is the unit's mid-plane.)
+
+    Parameters
+    ----------
+    robot : Robot
+    beta : array (..., w)
+
+    Returns
+    -------
+    points : numpy.ndarray (..., w, 2)
+    directions : numpy.ndarray (..., w, 2)
+        Unit vectors :math:`\mathbf j_i`.
+    """
+    pts = _unit_points(robot, beta)
+    return np.stack([p["P"] for p in pts], axis=-2), np.stack([p["j"] for p in pts], axis=-2)
+
+
+def axle_lines(robot, beta):
+    r"""Axle lines: through each wheel centre along :math:`\mathbf i_i` (centred: through :math:`P_i`).
+
+    Parameters
+    ----------
+    robot : Robot
+    beta : array (..., w)
+
+    Returns
+    -------
+    points : numpy.ndarray (..., w, 2)
+        Wheel centres :math:`H_i` (body frame).
+    directions : numpy.ndarray (..., w, 2)
+    """
+    pts = _unit_points(robot, beta)
+    return np.stack([p["H"] for p in pts], axis=-2), np.stack([p["i"] for p in pts], axis=-2)
+
+
+def _one(robot, beta, what):
+    robot = V.numeric_robot(robot)
+    if robot.w < 2:
+        raise ValueError(f"robot must have at least two wheel units for {what} (lines to meet), got {V.show(robot)}")
+    beta = V.finite_array("beta", beta, last=robot.w)
+    if beta.ndim != 1:
+        raise ValueError(f"beta must be one configuration of shape ({robot.w},) for {what}, got shape {beta.shape}")
+    return beta
+
+
+def concurrency_point(robot, beta):
+    r"""The point :math:`D_P` where the wheel-plane lines meet (one configuration).
+
+    Parameters
+    ----------
+    robot : Robot
+    beta : array (w,)
+
+    Returns
+    -------
+    Concurrency
+        For three centred wheels ``kind == NONE`` exactly when :math:`\det\mathbf J \ne 0`.
+    """
+    return lines_concurrency(*wheel_plane_lines(robot, _one(robot, beta, "concurrency_point")))
+
+
+def axles_concurrency(robot, beta):
+    """Where the axle lines meet (one configuration): the instantaneous centre when the robot can move.
+
+    Parameters
+    ----------
+    robot : Robot
+    beta : array (w,)
+
+    Returns
+    -------
+    Concurrency
+    """
+    return lines_concurrency(*axle_lines(robot, _one(robot, beta, "axles_concurrency")))
+
+
+def planes_through(robot, D):
+    r"""Steering angles whose wheel-plane lines all pass through the point D (body frame).
+
+    :math:`\mathbf j_i \parallel D - P_i`, with :math:`\beta_i\in(-\pi/2, \pi/2]` (the other choice,
+    :math:`\beta_i + \pi`, gives the same line).  Where :math:`D = P_i` the angle is free and 0 is
+    returned.
+
+    Parameters
+    ----------
+    robot : Robot
+    D : array (..., 2)
+
+    Returns
+    -------
+    numpy.ndarray (..., w)
+    """
+    robot = V.numeric_robot(robot)
+    D = V.finite_array("D", D, last=2)
+    v = D[..., None, :] - robot.mount_points                        # (..., w, 2)
+    beta = np.arctan2(-v[..., 0], v[..., 1])                       # j = (-sin b, cos b) || v
+    beta = np.where(_at(v, robot, D), 0.0, beta)
+    return line_angle(beta)
+
+
+def axles_through(robot, U):
+    r"""Steering angles whose axles all pass through U (body frame): rotation about U is admissible.
+
+    Parameters
+    ----------
+    robot : Robot
+    U : array (..., 2)
+
+    Returns
+    -------
+    numpy.ndarray (..., w), in :math:`(-\pi/2, \pi/2]`
+    """
+    robot = V.numeric_robot(robot)
+    U = V.finite_array("U", U, last=2)
+    v = U[..., None, :] - robot.mount_points
+    beta = np.arctan2(v[..., 1], v[..., 0])                        # i = (cos b, sin b) || v
+    beta = np.where(_at(v, robot, U), 0.0, beta)
+    return line_angle(beta)
+
+
+def _at(v, robot, X):
+    """Where the point X is a mount point: ``max|X - P_i| <= TOL`` times the size of the robot and of X."""
+    size = np.maximum(np.abs(robot.mount_points).max(), np.abs(X).max(axis=-1, keepdims=True))
+    return np.abs(v).max(axis=-1) <= TOL * size
+
+
+def pair_line_angle(robot, i, j):
+    r"""The steering angle (in :math:`(-\pi/2,\pi/2]`) that puts the plane of wheel i on the line :math:`P_iP_j` (1-based).
+
+    Parameters
+    ----------
+    robot : Robot
+    i, j : int
+        Wheel numbers, 1-based, distinct.
+
+    Returns
+    -------
+    float
+    """
+    robot = V.numeric_robot(robot)
+    for name, k in (("i", i), ("j", j)):
+        if isinstance(k, bool) or not isinstance(k, (int, np.integer)):
+            raise TypeError(f"{name} must be a wheel number (int), got {k!r}")
+        if not 1 <= k <= robot.w:
+            raise ValueError(f"{name} must be a wheel number in 1..{robot.w}, got {k!r}")
+    if i == j:
+        raise ValueError(f"i and j must be two different wheels, got i = j = {i}")
+    return float(planes_through(robot, robot.mount_points[j - 1])[i - 1])

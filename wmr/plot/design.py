@@ -1,0 +1,138 @@
+r"""Drawing the design study: worst-case :math:`\kappa(\mathbf J)` over the design space, and along the motions.
+
+The numbers come from :func:`wmr.analysis.design.landscape` and
+:func:`wmr.analysis.motion_kappa.motion_map`; these functions only draw them.
+"""
+from __future__ import annotations
+
+import numpy as np
+from matplotlib.colors import LogNorm
+
+from .style import PALETTE, ROLE, new_figure, panel_title, style
+
+__all__ = ["draw_landscape", "draw_motion_maps", "show_figure"]
+
+_KAPPA_LEVELS = (1.05, 1.25, 1.5, 2.0, 3.0, 5.0, 10.0)
+
+
+def _kappa_image(ax, x, y, K, vmax):
+    """A log-scaled map of kappa (inf shown at the top of the scale) with labelled contours."""
+    shown = np.where(np.isfinite(K), K, vmax)
+    im = ax.pcolormesh(x, y, np.clip(shown, 1.0, vmax), norm=LogNorm(1.0, vmax), shading="auto", cmap="cividis")
+    levels = [v for v in _KAPPA_LEVELS if np.nanmin(shown) < v < vmax]
+    if levels:
+        cs = ax.contour(x, y, shown, levels=levels, colors="white", linewidths=0.5)
+        ax.clabel(cs, fontsize=6.5, fmt="%g")
+    ax.set_aspect("equal")
+    return im
+
+
+def _colorbar(fig, im, ax, label, vmax):
+    """A colour bar for a kappa map, with plain tick labels."""
+    cb = fig.colorbar(im, ax=ax, label=label, shrink=0.9)
+    ticks = [t for t in (1, 1.25, 1.5, 2, 3, 5, 10) if t <= vmax]
+    cb.set_ticks(ticks, labels=[f"{t:g}" for t in ticks])
+    cb.minorticks_off()
+    return cb
+
+
+def draw_landscape(data, fig=None):
+    r"""Two panels: :math:`\bar\kappa` against :math:`d/r`, and :math:`\bar\kappa` over wheel 2's position at :math:`d = r`.
+
+    Parameters
+    ----------
+    data : wmr.analysis.design.Landscape
+    fig : matplotlib.figure.Figure, optional
+        Draw into this figure.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
+    with style():
+        fig, (a, b) = new_figure(1, 2, width=7.2, height=3.2, fig=fig, drawing=False)
+        a.loglog(data.ratios, data.kappa_paper, color=PALETTE["blue"], label="equilateral, C at the centroid")
+        a.loglog(data.ratios, data.kappa_moved, color=PALETTE["vermillion"], ls="--",
+                 label=f"wheel 2 moved to ({data.moved[0]:g}, {data.moved[1]:g})")
+        a.axvline(1.0, color=PALETTE["grey"], lw=0.6, ls=":")
+        a.set_xticks([0.25, 0.5, 1, 2, 4], ["1/4", "1/2", "1", "2", "4"])
+        a.set_yticks([1, 1.5, 2, 3, 4], ["1", "1.5", "2", "3", "4"])
+        a.minorticks_off()
+        a.set_xlabel(r"offset ratio $d/r$")
+        a.set_ylabel(r"worst-case $\kappa(\mathbf{J})$")
+        a.legend(loc="upper center")
+        panel_title(a, "a", r"the offset sets $\kappa(\mathbf{J}_2)$")
+        vmax = float(min(np.nanmax(data.kappa_map[np.isfinite(data.kappa_map)]), 10.0))
+        im = _kappa_image(b, data.x, data.y, data.kappa_map, vmax)
+        m = data.mounts
+        b.plot(*np.vstack([m, m[:1]]).T, color=PALETTE["light"], lw=0.8, ls=":")
+        b.plot(m[[0, 2], 0], m[[0, 2], 1], "o", color=ROLE["point"], ms=4, mfc="white")
+        b.plot(*m[1], "*", color=PALETTE["yellow"], ms=9, mec="black", mew=0.5)
+        b.plot(0, 0, "+", color="white", ms=7)
+        for k, p in enumerate(m, 1):
+            b.annotate(f"$P_{k}$", p, xytext=(5, 4), textcoords="offset points", color="white", fontsize=8)
+        b.set_xlabel("$x_2$")
+        b.set_ylabel("$y_2$")
+        _colorbar(fig, im, b, r"worst-case $\kappa(\mathbf{J})$", vmax)
+        panel_title(b, "b", r"wheel 2 anywhere, $d = r$")
+    return fig
+
+
+def draw_motion_maps(maps, titles, fig=None):
+    r""":math:`\kappa(\mathbf J)` of the rotation about each point, one panel per robot (same colour scale).
+
+    Parameters
+    ----------
+    maps : sequence of wmr.analysis.motion_kappa.MotionMap
+    titles : sequence of str
+        One per map.
+    fig : matplotlib.figure.Figure, optional
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
+    maps, titles = list(maps), list(titles)
+    with style():
+        fig, axes = new_figure(1, len(maps), width=3.6 * len(maps), height=3.4, fig=fig, drawing=False)
+        vmax = 10.0
+        for k, (ax, mm, title) in enumerate(zip(axes, maps, titles)):
+            im = _kappa_image(ax, mm.x, mm.y, mm.kappa, vmax)
+            ax.plot(*mm.mounts.T, "s", color="white", mec="black", ms=5, mew=0.6)
+            ax.plot(0, 0, "+", color="white", ms=7)
+            if mm.circle is not None:
+                c, R = mm.circle
+                t = np.linspace(0, 2 * np.pi, 200)
+                ax.plot(c[0] + R * np.cos(t), c[1] + R * np.sin(t), color=PALETTE["vermillion"], lw=1.0,
+                        label=r"$\kappa = \infty$")
+                ax.legend(loc="lower right", frameon=True, framealpha=0.9)
+            ax.plot(*mm.argmin, "*", color=PALETTE["yellow"], ms=9, mec="black", mew=0.5)
+            ax.set_xlabel("$U_x$")
+            ax.set_ylabel("$U_y$" if k == 0 else "")
+            panel_title(ax, "abcdef"[k], title)
+        _colorbar(fig, im, axes, r"$\kappa(\mathbf{J})$ of the rotation about $U$", vmax)
+    return fig
+
+
+def show_figure(fig, caption, width=None):
+    """Display a figure in a notebook as a PNG, with its caption below (Markdown).
+
+    Parameters
+    ----------
+    fig : matplotlib.figure.Figure
+    caption : str
+        Markdown.
+    width : int, optional
+        Display width in pixels (default 110 per inch of the figure).
+
+    Returns
+    -------
+    None
+    """
+    import io
+
+    from IPython.display import Image, Markdown, display
+    buf = io.BytesIO()
+    with style():
+        fig.savefig(buf, format="png", dpi=150)
+    display(Image(buf.getvalue(), width=width or int(round(fig.get_figwidth() * 110))), Markdown(caption))
