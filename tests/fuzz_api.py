@@ -354,10 +354,22 @@ CASES = [
              (R, T, ("max_speed", "positive"))),
     )],
     Case("swerve.cosine_compensate", lambda speed, beta, target: swerve.cosine_compensate(speed, beta, target),
-         (("speed", "angles"), ("beta", "angles"), ("target", "angle"))),
+         (("speed", "angles"), ("beta", "angles"), ("target", "angles"))),
     Case("swerve.se2_exp", lambda twist, dt: swerve.se2_exp(twist, dt), (T, ("dt", "dt"))),
     Case("swerve.se2_log", lambda delta, dt: swerve.se2_log(delta, dt), (("delta", "twist"), ("dt", "dt"))),
     Case("swerve.discretize", lambda twist, dt: swerve.discretize(twist, dt), (T, ("dt", "dt"))),
+    Case("swerve.direction_change", lambda speed, angle, spin, t_change, t_end, dt:
+         swerve.direction_change(speed, angle, spin, t_change, t_end, dt),
+         (("speed", "positive"), ("angle", "angle"), ("spin", "angle"), ("t_change", "dt"), ("t_end", "dt"), ("dt", "dt"))),
+    Case("swerve.spin_and_translate", lambda speed, rate, t_start, t_end, dt:
+         swerve.spin_and_translate(speed, rate, t_start, t_end, dt),
+         (("speed", "positive"), ("rate", "angle"), ("t_start", "dt"), ("t_end", "dt"), ("dt", "dt"))),
+    Case("swerve.resteer_transient", lambda robot, profile, strategy, cosine, steer_rate:
+         swerve.resteer_transient(robot, profile, strategy, cosine, steer_rate),
+         (R, ("profile", "profile"), ("strategy", "strategy"), ("cosine", "flag"), ("steer_rate", "positive")),
+         robots=(0,)),
+    Case("swerve.resteer_study", lambda robot, profile, steer_rate: swerve.resteer_study(robot, profile, steer_rate),
+         (R, ("profile", "profile"), ("steer_rate", "positive")), robots=(0,)),
     Case("swerve.to_wpilib", lambda beta, speed: swerve.to_wpilib(beta, speed), (("beta", "angles"), ("speed", "anything"))),
     Case("swerve.from_wpilib", lambda alpha: swerve.from_wpilib(alpha), (("alpha", "angles"),)),
     Case("swerve.to_chassis", lambda twist: swerve.to_chassis(twist), (T,)),
@@ -392,6 +404,14 @@ def _more_roles(name, bot):
         good, odd, bad = _role("matrix", bot)
         return [g for g in good if np.shape(g)[-1] == np.shape(g)[-2]], [np.full((3, 3), BIG), np.zeros((0, 0))], \
             bad + [good[2]]
+    if name == "profile":                   # short twist profiles (a simulation per call)
+        return ([swerve.direction_change(t_change=0.02, t_end=0.05, dt=0.01), swerve.spin_and_translate(t_start=0.01, t_end=0.03, dt=0.01),
+                 swerve.TwistProfile("arc", 0.02, np.tile([1.0, 0.5, 0.0], (3, 1)))],
+                [swerve.TwistProfile("big", 0.01, np.full((2, 3), 1e300)), swerve.TwistProfile("tiny", 1e-300, np.full((2, 3), TINY))],
+                ["profile", None, 3, np.zeros((5, 3)), swerve.TwistProfile("nan", 0.01, np.full((2, 3), np.nan)),
+                 swerve.TwistProfile("empty", 0.01, np.zeros((0, 3))), swerve.TwistProfile("dt", -1.0, np.zeros((2, 3)))])
+    if name == "strategy":
+        return ["plain", "module", "robot"], [], ["wpilib", 3, None, ["robot"]]
     if name == "seed":
         return [0, 7, np.int64(3)], [2**40], [-1, 0.5, "1", None, True, np.nan]
     if name == "no_path":                                     # dump writes nothing when path is None

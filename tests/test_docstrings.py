@@ -121,9 +121,7 @@ def test_numpydoc_docstring(name, obj):
 #: Modules of other workstreams whose docstrings are not yet complete numpydoc (module prefix -> owner).
 #: Their items are still checked; an item that fails is reported as an expected failure naming the
 #: owner, and ``test_pending_modules_still_pending`` fails once a prefix has nothing left to fix.
-PENDING = {"wmr.paper.figures": "figs", "wmr.plot": "figs", "wmr.paper.families": "figs", "wmr.paper.text": "figs",
-           "wmr.paper.offset": "lessons", "wmr.paper.platform_wheels": "lessons", "wmr.paper.Printed": "lessons",
-           "wmr.paper.printed": "lessons", "wmr.paper.register": "lessons"}
+PENDING = {"wmr.paper.figures": "figs"}
 
 
 def numpydoc_problems(name, obj):

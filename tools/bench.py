@@ -228,7 +228,7 @@ def sweep_rows(n, dask):
         if dask:
             from dask.distributed import Client, LocalCluster
             bot = wmr.paper_robot("centred")
-            with LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cl, \
+            with LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=":0") as cl, \
                     Client(cl) as client:
                 wmr.sweep(bot, analysis, Sample(4 * CHUNK, seed=2), client=client)       # warm the workers
                 t0 = time.perf_counter()

@@ -111,7 +111,7 @@ def _client(spec):
         raise ValueError("--dask needs dask and distributed: pip install 'wmr[dask]'") from None
     if spec.startswith("local"):
         n = _number(spec.partition(":")[2] or "2", "dask local:N")
-        cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True, dashboard_address=None)
+        cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True, dashboard_address=":0")
         return Client(cluster), cluster
     return Client(spec), None
 

@@ -35,6 +35,14 @@ class Printed:
     garbled : str
         What the extraction garbled and how it was read.
     note : str
+        What the reader should know about the transcription.
+    extra : dict
+        Further printed objects of the equation, by name (e.g. the matrices of a product).
+
+    Examples
+    --------
+    >>> printed(59).section
+    '5.3'
     """
 
     id: str
@@ -53,7 +61,33 @@ _MODULES = ("platform_wheels", "offset", "isotropy", "centred", "steering", "con
 
 
 def register(id, section, latex, expr=None, garbled="", note="", **extra):
-    """Add a printed equation to :data:`PRINTED` (each id once)."""
+    """Add a printed equation to :data:`PRINTED` (each id once).
+
+    Parameters
+    ----------
+    id : int or str
+        Equation number.
+    section : str
+        Paper section.
+    latex : str
+        The printed form in LaTeX.
+    expr : object, optional
+        Its SymPy form (see :class:`Printed`).
+    garbled : str, optional
+        What the extraction garbled and how it was read.
+    note : str, optional
+    **extra
+        Further printed objects (:attr:`Printed.extra`).
+
+    Returns
+    -------
+    Printed
+
+    Raises
+    ------
+    ValueError
+        If equation ``id`` is registered already.
+    """
     id = str(id)
     if id in PRINTED:
         raise ValueError(f"equation ({id}) is registered twice")
@@ -71,7 +105,27 @@ def _load():
 
 
 def printed(id):
-    """The printed form of equation ``id`` (a :class:`Printed`)."""
+    """The printed form of equation ``id``, as transcribed in the modules of :mod:`wmr.paper`.
+
+    Parameters
+    ----------
+    id : int or str
+        Equation number, (2)-(65).
+
+    Returns
+    -------
+    Printed
+
+    Raises
+    ------
+    ValueError
+        If the equation is not transcribed.
+
+    Examples
+    --------
+    >>> printed(20).id
+    '20'
+    """
     _load()
     id = str(id)
     if id not in PRINTED:

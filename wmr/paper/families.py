@@ -10,8 +10,6 @@ paper's catalogue is here.
 """
 from __future__ import annotations
 
-import csv
-import io
 from dataclasses import dataclass
 
 import numpy as np
@@ -23,7 +21,7 @@ from ..analysis.singularities import (_require_square, classify, det_J, det_J_po
                                       exact_zero, numeric_robot)
 from ..model.platform import wrap_angle
 from ..model.robots import paper_robot
-from .files import atomic_write
+from .files import atomic_write, csv_text
 from .text import bound
 from .text import degrees as _deg
 
@@ -68,9 +66,34 @@ def paper_item(family):
 class Family:
     """One family of singular configurations, with computed evidence (a row of ``singularities.csv``).
 
-    ``samples`` is an array (n, 3) of representative configurations; ``exact`` a callable
-    returning the list of (cos, sin) pairs (unnormalised directions of :math:`\\mathbf i_i`, SymPy)
-    parameterising the family by free symbols, used for the exact check.
+    Attributes
+    ----------
+    key : str
+        Short id of the family.
+    family : str
+        Its name in the table.
+    configuration : str
+        The steering angles that make it (Markdown).
+    geometric_meaning : str
+        What the wheel-plane lines do there.
+    listed_in_paper : str
+        Whether the paper's list (i)-(v) after (59) contains it.
+    paper_item : str
+        The paper's item, e.g. ``"(ii)"`` (:func:`paper_item`), or ``""``.
+    note : str
+    samples : numpy.ndarray (n, 3)
+        Representative configurations (radians).
+    exact : callable or None
+        Returns the list of (cos, sin) pairs (unnormalised directions of :math:`\\mathbf i_i`, SymPy)
+        parameterising the family by free symbols, used for the exact check.
+    det_J_max : float
+        Computed: the largest :math:`|\\det\\mathbf J|` (58) over ``samples``.
+    det_J_exact_zero : bool or None
+        Computed: :math:`\\det\\mathbf J` vanishes identically on the family (None: not checked).
+    rank_F : str
+        Computed: the ranks of :math:`\\mathbf F` (24) seen on ``samples``.
+    classified_as : str
+        Computed: what :func:`wmr.analysis.singularities.classify` calls the samples.
     """
 
     key: str
@@ -89,7 +112,13 @@ class Family:
     classified_as: str = ""
 
     def row(self):
-        """The family as a row of ``singularities.csv`` (columns :data:`COLUMNS`; numbers as text)."""
+        """The family as a row of ``singularities.csv``.
+
+        Returns
+        -------
+        dict
+            Columns :data:`COLUMNS`; numbers as text.
+        """
         return {
             "family": self.family, "configuration": self.configuration,
             "geometric_meaning": self.geometric_meaning,
@@ -293,6 +322,9 @@ def check_paper_items(robot=None, L=None):
     ----------
     robot : Robot, optional
         Default: the paper's robot (exact coordinates).
+    L : float, optional
+        Characteristic length in :math:`\mathbf J_{L1}` (default: the robot's,
+        :func:`wmr.characteristic_length`); it scales :math:`\det\mathbf J` (58) and cannot make it vanish.
 
     Returns
     -------
@@ -324,16 +356,36 @@ def check_paper_items(robot=None, L=None):
 
 
 def table(robot=None, n=72, exact=True):
-    """The families as a list of dict rows (columns :data:`COLUMNS`)."""
+    """The families as rows of ``singularities.csv``.
+
+    Parameters
+    ----------
+    robot, n, exact
+        As for :func:`families`.
+
+    Returns
+    -------
+    list of dict
+        One row per family (columns :data:`COLUMNS`, numbers as text).
+    """
     return [f.row() for f in families(robot, n=n, exact=exact)]
 
 
 def write_csv(path, robot=None, n=72, exact=True):
-    """Write ``singularities.csv`` (columns :data:`COLUMNS`) atomically; returns the rows."""
+    """Write ``singularities.csv`` (columns :data:`COLUMNS`) atomically.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        Where to write (the caller knows the project; the library does not).
+    robot, n, exact
+        As for :func:`families`.
+
+    Returns
+    -------
+    list of dict
+        The rows written (:func:`table`).
+    """
     rows = table(robot, n=n, exact=exact)
-    buf = io.StringIO()
-    w = csv.DictWriter(buf, fieldnames=COLUMNS, lineterminator="\n")
-    w.writeheader()
-    w.writerows(rows)
-    atomic_write(path, buf.getvalue())
+    atomic_write(path, csv_text(rows, COLUMNS))
     return rows

@@ -46,17 +46,54 @@ p_tilde = sp.diag(-S.d, -S.r)                                # p~ of (21) as pri
 
 
 def J1_printed(points):
-    """Printed J1 of (21): rows [E d_k  1] for the given mount points, (2w, 3)."""
+    r"""Printed :math:`\mathbf J_1` of (21): block rows :math:`[\mathbf E\mathbf d_k\ \ \mathbf 1]` for the given mount points.
+
+    Parameters
+    ----------
+    points : sequence of w pairs
+        Mount points :math:`\mathbf d_k` (numbers or SymPy expressions).
+
+    Returns
+    -------
+    sympy.Matrix (2w, 3)
+
+    Examples
+    --------
+    >>> J1_printed([(1, 0)])
+    Matrix([
+    [0, 1, 0],
+    [1, 0, 1]])
+    """
     return sp.Matrix.vstack(*[sp.Matrix.hstack(E * sp.Matrix(p), ONE) for p in points])
 
 
 def J2_printed(betas):
-    """Printed J2 of (21): blockdiag(R_bwk p~), (2w, 2w)."""
+    r"""Printed :math:`\mathbf J_2` of (21): :math:`\operatorname{blockdiag}(\mathbf R_{bwk}\tilde{\mathbf p})`, with the printed :math:`\tilde{\mathbf p}`.
+
+    Parameters
+    ----------
+    betas : sequence of w angles
+        Steering angles :math:`\beta_k` (SymPy symbols or numbers).
+
+    Returns
+    -------
+    sympy.Matrix (2w, 2w)
+    """
     return sp.diag(*[R(b) * p_tilde for b in betas])
 
 
 def theta_dot_printed(w):
-    """The joint-rate vector of (21) as reconstructed: [phi_dot_1, theta_dot_1, ..., phi_dot_w, theta_dot_w]^T."""
+    r"""The joint-rate vector of (21) as reconstructed: :math:`[\dot\phi_1\ \dot\theta_1\ \dots\ \dot\phi_w\ \dot\theta_w]^T`.
+
+    Parameters
+    ----------
+    w : int
+        Number of wheel units.
+
+    Returns
+    -------
+    sympy.Matrix (2w, 1)
+    """
     syms = []
     for k in range(1, w + 1):
         syms += sp.symbols(rf"\dot{{\phi}}_{{{k}}} \dot{{\theta}}_{{{k}}}", real=True)
@@ -64,12 +101,34 @@ def theta_dot_printed(w):
 
 
 def F_printed(points, betas):
-    """Printed F of (24): [J1  -J2] for the given mount points and steering angles."""
+    r"""Printed :math:`\mathbf F` of (24): :math:`[\mathbf J_1\ \ -\mathbf J_2]` for the given mount points and steering angles.
+
+    Parameters
+    ----------
+    points : sequence of w pairs
+        Mount points (as for :func:`J1_printed`).
+    betas : sequence of w angles
+        Steering angles (as for :func:`J2_printed`).
+
+    Returns
+    -------
+    sympy.Matrix (2w, 3 + 2w)
+    """
     return sp.Matrix.hstack(J1_printed(points), -J2_printed(betas))
 
 
 def q_dot_printed(w):
-    """Printed q_dot of (25): [psi_dot, x_dot, y_dot, phi_dot_1, theta_dot_1, ..., phi_dot_w, theta_dot_w]^T."""
+    r"""Printed :math:`\dot{\mathbf q}` of (25): :math:`[\dot\psi\ \dot x\ \dot y\ \dot\phi_1\ \dot\theta_1\ \dots\ \dot\phi_w\ \dot\theta_w]^T`.
+
+    Parameters
+    ----------
+    w : int
+        Number of wheel units.
+
+    Returns
+    -------
+    sympy.Matrix (3 + 2w, 1)
+    """
     return sp.Matrix.vstack(T_EXPLICIT, theta_dot_printed(w))
 
 

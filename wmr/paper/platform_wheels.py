@@ -57,7 +57,24 @@ ONE = sp.eye(2)
 
 
 def R(angle):
-    """(11) as printed: [[cos, -sin], [sin, cos]]."""
+    r"""The rotation of (11) as printed, :math:`\begin{bmatrix}\cos & -\sin\\ \sin & \cos\end{bmatrix}`.
+
+    Parameters
+    ----------
+    angle : sympy.Expr or number
+        Radians.
+
+    Returns
+    -------
+    sympy.Matrix (2, 2)
+
+    Examples
+    --------
+    >>> R(sp.pi / 2)
+    Matrix([
+    [0, -1],
+    [1,  0]])
+    """
     return sp.Matrix([[sp.cos(angle), -sp.sin(angle)], [sp.sin(angle), sp.cos(angle)]])
 
 

@@ -88,6 +88,20 @@ def bound(value, resolution=RESOLUTION, latex=False):
 def residual(symbol, value, resolution=RESOLUTION):
     r"""A residual as a LaTeX relation: ``symbol < 10^{-12}`` (round-off) or ``symbol = 3.1\times10^{-5}``.
 
+    Parameters
+    ----------
+    symbol : str
+        LaTeX of the quantity, e.g. ``r"|\det\mathbf{J}|"``.
+    value : float
+        The residual.
+    resolution : float, optional
+        Below this the value is round-off and shown as a bound (:func:`bound`).
+
+    Returns
+    -------
+    str
+        LaTeX (no ``$``).
+
     Examples
     --------
     >>> residual(r"|\det\mathbf{J}|", 4.2e-18), residual("e", 2.5e-7)
@@ -134,6 +148,18 @@ def rounded(value, decimals=DECIMALS):
 
     Non-finite floats become the strings ``"inf"``, ``"-inf"``, ``"nan"`` (JSON has no such
     numbers); tuples and arrays become lists; ints, bools, strings and None pass unchanged.
+
+    Parameters
+    ----------
+    value : object
+        A number, or a dict, list, tuple or array of them (nested).
+    decimals : int, optional
+        Decimal places kept.
+
+    Returns
+    -------
+    object
+        The same structure, ready for :func:`json.dumps`.
 
     Examples
     --------

@@ -19,7 +19,31 @@ __all__ = ["label", "draw_point", "draw_arrow", "draw_frame", "draw_angle", "seg
 
 def label(ax, xy, text, *, offset=(4, 4), color=None, ha="left", va="bottom", fontsize=FONT_LABEL,
           zorder=9.0, halo=True, **kw):
-    """A text label at ``xy`` shifted by ``offset`` points, with a white halo for legibility."""
+    """A text label at ``xy`` shifted by ``offset`` points, with a white halo for legibility.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+    xy : array_like (2,)
+        Anchor in data coordinates.
+    text : str
+        The label (matplotlib mathtext allowed).
+    offset : tuple (2,), optional
+        Shift of the text from ``xy``, in points.
+    color : str, optional
+        Default: the annotation colour of :data:`wmr.plot.style.ROLE`.
+    ha, va : str, optional
+        Alignment of the text relative to the shifted anchor.
+    fontsize, zorder : float, optional
+    halo : bool, optional
+        Draw a white outline behind the text.
+    **kw
+        Passed to :meth:`matplotlib.axes.Axes.annotate`.
+
+    Returns
+    -------
+    matplotlib.text.Annotation
+    """
     t = ax.annotate(text, xy=tuple(np.asarray(xy, dtype=float)), xytext=offset, textcoords="offset points",
                     ha=ha, va=va, color=color or ROLE["annotation"], fontsize=fontsize, zorder=zorder, **kw)
     if halo:
@@ -29,7 +53,31 @@ def label(ax, xy, text, *, offset=(4, 4), color=None, ha="left", va="bottom", fo
 
 def draw_point(ax, xy, text=None, *, marker="o", color=None, size=4.0, offset=(4, 4), ha="left", va="bottom",
                zorder=8.0, fontsize=FONT_LABEL, face=None):
-    """A marked point with an optional label (in the point's colour)."""
+    """A marked point with an optional label (in the point's colour).
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+    xy : array_like (2,)
+        The point, data coordinates.
+    text : str, optional
+        Label (see :func:`label`); none by default.
+    marker : str, optional
+        A matplotlib marker.
+    color : str, optional
+        Default: the point colour of :data:`wmr.plot.style.ROLE`.
+    size : float, optional
+        Marker size (points).
+    offset, ha, va, fontsize : optional
+        Placement and size of the label, as in :func:`label`.
+    zorder : float, optional
+    face : str, optional
+        Face colour of the marker (default: ``color``).
+
+    Returns
+    -------
+    None
+    """
     col = color or ROLE["point"]
     ax.plot([xy[0]], [xy[1]], marker=marker, markersize=size, color=col, markerfacecolor=face or col,
             markeredgewidth=0.8, linestyle="none", zorder=zorder)
@@ -39,7 +87,28 @@ def draw_point(ax, xy, text=None, *, marker="o", color=None, size=4.0, offset=(4
 
 
 def draw_arrow(ax, start, vec, *, color=None, lw=1.1, zorder=6.0, head=7.0, style="-|>", ls="-"):
-    """An arrow from ``start`` along ``vec`` (data units)."""
+    """An arrow from ``start`` along ``vec`` (data units).
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+    start : array_like (2,)
+        Tail, data coordinates.
+    vec : array_like (2,)
+        The arrow itself: the tip is at ``start + vec``.
+    color : str, optional
+        Default: the frame colour of :data:`wmr.plot.style.ROLE`.
+    lw, zorder : float, optional
+        Line width and drawing order.
+    head : float, optional
+        Size of the head (``mutation_scale``).
+    style, ls : str, optional
+        Arrow style (``"-|>"``) and line style.
+
+    Returns
+    -------
+    matplotlib.patches.FancyArrowPatch
+    """
     s = np.asarray(start, dtype=float)
     a = FancyArrowPatch(s, s + np.asarray(vec, dtype=float), arrowstyle=style, mutation_scale=head,
                         color=color or ROLE["frame"], linewidth=lw, linestyle=ls, shrinkA=0, shrinkB=0,
@@ -50,7 +119,27 @@ def draw_arrow(ax, start, vec, *, color=None, lw=1.1, zorder=6.0, head=7.0, styl
 
 def draw_frame(ax, origin, angle, length, labels=(r"$\mathbf{i}$", r"$\mathbf{j}$"), *, color=None,
                zorder=6.0, fontsize=FONT_LABEL, lw=1.1):
-    """Two unit arrows (a frame) at ``origin`` turned by ``angle`` (radians), labelled at their tips."""
+    r"""Two arrows (a frame) at ``origin``: the columns of :math:`\mathbf R(\text{angle})` times ``length``.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+    origin : array_like (2,)
+        Data coordinates.
+    angle : float
+        Radians, counter-clockwise from the x-axis.
+    length : float
+        Length of each arrow (data units).
+    labels : tuple of 2 str, optional
+        Labels at the tips (an empty string: none).
+    color : str, optional
+        Default: the frame colour of :data:`wmr.plot.style.ROLE`.
+    zorder, fontsize, lw : float, optional
+
+    Returns
+    -------
+    None
+    """
     col = color or ROLE["frame"]
     o = np.asarray(origin, dtype=float)
     R = rotation(angle, NUMERIC)
@@ -63,7 +152,33 @@ def draw_frame(ax, origin, angle, length, labels=(r"$\mathbf{i}$", r"$\mathbf{j}
 
 def draw_angle(ax, centre, radius, a0, a1, text=None, *, color=None, lw=0.9, text_radius=1.35, fontsize=FONT_LABEL,
                arrow=True, zorder=6.0):
-    """An arc from angle ``a0`` to ``a1`` (radians, counter-clockwise if a1 > a0) with a label."""
+    """An arc from angle ``a0`` to ``a1`` (radians, counter-clockwise if a1 > a0) with a label.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+    centre : array_like (2,)
+        Data coordinates.
+    radius : float
+        Radius of the arc (data units).
+    a0, a1 : float
+        Start and end angles (radians).
+    text : str, optional
+        Label, placed on the bisector at ``text_radius * radius``.
+    color : str, optional
+        Default: the annotation colour of :data:`wmr.plot.style.ROLE`.
+    lw : float, optional
+    text_radius : float, optional
+        Distance of the label from ``centre``, in radii.
+    fontsize : float, optional
+    arrow : bool, optional
+        A head at ``a1`` (when the arc is long enough to carry one).
+    zorder : float, optional
+
+    Returns
+    -------
+    None
+    """
     col = color or ROLE["annotation"]
     lo, hi = (a0, a1) if a1 >= a0 else (a1, a0)
     ax.add_patch(Arc(centre, 2 * radius, 2 * radius, theta1=np.degrees(lo), theta2=np.degrees(hi), color=col,
@@ -80,7 +195,33 @@ def draw_angle(ax, centre, radius, a0, a1, text=None, *, color=None, lw=0.9, tex
 
 
 def segment_through(p, u, include=(), margin=0.3, min_half=0.5):
-    """Parameters (t0, t1) of the segment of the line p + t u (u normalised) covering p and the points ``include``."""
+    r"""Parameters of the segment of the line :math:`p + t\,u/\|u\|` that covers ``p`` and the points ``include``.
+
+    Each point :math:`q` of ``include`` is projected on the line, :math:`t_q = (q - p)\cdot u/\|u\|`.
+
+    Parameters
+    ----------
+    p : array_like (2,)
+        A point of the line.
+    u : array_like (2,)
+        Its direction (any length, not zero).
+    include : sequence of array_like (2,), optional
+        Points whose projections the segment must reach.
+    margin : float, optional
+        Added at both ends (data units).
+    min_half : float, optional
+        The segment reaches at least this far on either side of ``p``.
+
+    Returns
+    -------
+    t0, t1 : float
+        The ends, as distances along the unit direction.
+
+    Examples
+    --------
+    >>> segment_through((0, 0), (2, 0), include=[(3, 1)], margin=0.0)
+    (-0.5, 3.0)
+    """
     p, u = np.asarray(p, dtype=float), np.asarray(u, dtype=float)
     u = u / np.linalg.norm(u)
     ts = [0.0, -min_half, min_half] + [float(np.dot(np.asarray(q, dtype=float) - p, u)) for q in include]
@@ -91,9 +232,27 @@ def draw_line(ax, p, u, include=(), *, kind="axle", margin=0.3, min_half=0.5, zo
               alpha=1.0):
     r"""A construction line through ``p`` along ``u``, long enough to reach the points ``include``.
 
-    ``kind`` is a key of :data:`wmr.plot.style.DASHES`: ``"axle"`` dashed blue (along
-    :math:`\mathbf i_i`), ``"plane"`` dash-dotted vermillion (wheel-plane lines, along
-    :math:`\mathbf j_i`), ``"thin"`` thin grey.
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+    p : array_like (2,)
+        A point of the line.
+    u : array_like (2,)
+        Its direction.
+    include : sequence of array_like (2,), optional
+        Points the drawn segment must reach (:func:`segment_through`).
+    kind : str, optional
+        A key of :data:`wmr.plot.style.DASHES`: ``"axle"`` dashed blue (along
+        :math:`\mathbf i_i`), ``"plane"`` dash-dotted vermillion (wheel-plane lines, along
+        :math:`\mathbf j_i`), ``"thin"`` thin grey.
+    margin, min_half : float, optional
+        As for :func:`segment_through`.
+    zorder : float, optional
+    color : str, optional
+        Overrides the colour of ``kind``.
+    lw : float, optional
+        Overrides the width of ``kind``.
+    alpha : float, optional
 
     Returns
     -------
@@ -110,14 +269,46 @@ def draw_line(ax, p, u, include=(), *, kind="axle", margin=0.3, min_half=0.5, zo
 
 
 def draw_path(ax, xy, *, color=None, lw=1.3, ls="-", zorder=2.5, alpha=1.0):
-    """A trajectory (n, 2)."""
+    """A trajectory.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+    xy : array_like (n, 2)
+        The points of the path, in order.
+    color : str, optional
+        Default: the first path colour of :data:`wmr.plot.style.ROLE`.
+    lw : float, optional
+    ls : str, optional
+    zorder, alpha : float, optional
+
+    Returns
+    -------
+    matplotlib.lines.Line2D
+    """
     xy = np.asarray(xy, dtype=float)
     return ax.plot(xy[:, 0], xy[:, 1], color=color or ROLE["path"][0], linewidth=lw, linestyle=ls, zorder=zorder,
                    alpha=alpha)[0]
 
 
 def scale_bar(ax, length, text, *, loc=(0.04, 0.05), color=None):
-    """A scale bar of ``length`` data units at axes fraction ``loc`` (left end); call after the limits are set."""
+    """A scale bar of ``length`` data units at axes fraction ``loc`` (left end); call after the limits are set.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+    length : float
+        Data units.
+    text : str
+        Label above the bar.
+    loc : tuple (2,), optional
+        Left end of the bar, as fractions of the axes' limits.
+    color : str, optional
+
+    Returns
+    -------
+    None
+    """
     col = color or PALETTE["dark"]
     x0, x1 = ax.get_xlim()
     y0, y1 = ax.get_ylim()
@@ -129,7 +320,25 @@ def scale_bar(ax, length, text, *, loc=(0.04, 0.05), color=None):
 
 
 def info_box(ax, lines, *, loc=(0.98, 0.98), ha="right", va="top", fontsize=FONT_SMALL, below=False):
-    """Computed numbers, one per line, in a light box at axes fraction ``loc`` (``below``: centred under the axes)."""
+    """Computed numbers, one per line, in a light box at axes fraction ``loc``.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+    lines : sequence of str
+        The lines of text.
+    loc : tuple (2,), optional
+        Anchor of the box, axes fractions.
+    ha, va : str, optional
+        Alignment of the box at ``loc``.
+    fontsize : float, optional
+    below : bool, optional
+        Centre the box under the axes instead (overrides ``loc``, ``ha``, ``va``).
+
+    Returns
+    -------
+    None
+    """
     if below:
         loc, ha, va = (0.5, -0.015), "center", "top"
     ax.text(loc[0], loc[1], "\n".join(lines), transform=ax.transAxes, ha=ha, va=va, fontsize=fontsize,

@@ -28,25 +28,48 @@ __all__ = ["RobotDrawing", "to_world", "robot_geometry", "platform_radius", "dra
 
 # ----------------------------------------------------------------------------- geometry
 def to_world(pose, p):
-    """Body-frame points (..., 2) to the fixed frame for pose (psi, X, Y)."""
+    r"""Body-frame points to the fixed frame: :math:`\mathbf R(\psi)\,p + [X\ Y]^T`.
+
+    Parameters
+    ----------
+    pose : sequence (3,)
+        :math:`(\psi, X, Y)`, the platform pose in the fixed frame.
+    p : array_like (..., 2)
+        Points in body components.
+
+    Returns
+    -------
+    numpy.ndarray (..., 2)
+
+    Examples
+    --------
+    >>> to_world((np.pi / 2, 1.0, 0.0), [1.0, 0.0]).round(12) + 0.0
+    array([1., 1.])
+    """
     psi, X, Y = pose
     return np.asarray(p, dtype=float) @ rotation(psi, NUMERIC).T + np.array([X, Y])
 
 
 @dataclass(frozen=True)
 class RobotDrawing:
-    """World coordinates of what :func:`draw_robot` drew (for labels and construction lines).
+    r"""World coordinates of what :func:`draw_robot` drew (for labels and construction lines).
 
     Attributes
     ----------
-    C : (2,)
-    P, H : (w, 2)
-        Steering-axis points and wheel-unit centres.
-    wheels : list of (k, 2)
+    C : numpy.ndarray (2,)
+        The operation point.
+    P : numpy.ndarray (w, 2)
+        Steering-axis points :math:`P_i`.
+    H : numpy.ndarray (w, 2)
+        Wheel-unit centres :math:`H_i`.
+    wheels : list of numpy.ndarray (k, 2)
         Wheel centres of each unit.
-    i, j : (w, 2)
-        Axle and rolling directions (world).
+    i : numpy.ndarray (w, 2)
+        Axle directions :math:`\mathbf i_i` (world).
+    j : numpy.ndarray (w, 2)
+        Rolling directions :math:`\mathbf j_i` (world).
     psi : float
+        Heading of the platform (radians).
     """
 
     C: np.ndarray
@@ -59,7 +82,21 @@ class RobotDrawing:
 
 
 def robot_geometry(robot, beta, pose=(0.0, 0.0, 0.0)):
-    """World geometry of ``robot`` at steering angles ``beta`` (w,) and ``pose``; a :class:`RobotDrawing`."""
+    r"""World geometry of ``robot`` at steering angles ``beta`` and ``pose`` (nothing is drawn).
+
+    Parameters
+    ----------
+    robot : wmr.Robot
+        A numeric robot.
+    beta : array_like (w,)
+        Steering angles (radians).
+    pose : sequence (3,), optional
+        :math:`(\psi, X, Y)`.
+
+    Returns
+    -------
+    RobotDrawing
+    """
     beta = np.asarray(beta, dtype=float)
     R = rotation(pose[0], NUMERIC)
     P, H, wheels, ii, jj = [], [], [], [], []
@@ -75,7 +112,16 @@ def robot_geometry(robot, beta, pose=(0.0, 0.0, 0.0)):
 
 
 def platform_radius(robot):
-    """Radius of the platform disc: a little beyond the farthest mount point."""
+    r"""Radius of the platform disc: a little beyond the farthest mount point, :math:`\max_i\|\mathbf d_i\| + 0.9\max_i r_i`.
+
+    Parameters
+    ----------
+    robot : wmr.Robot
+
+    Returns
+    -------
+    float
+    """
     d = np.linalg.norm(robot.mount_points, axis=1).max()
     r = max(float(u.r) for u in robot.wheels)
     return float(d + 0.9 * r)
@@ -83,7 +129,21 @@ def platform_radius(robot):
 
 # ----------------------------------------------------------------------------- primitives
 def draw_platform(ax, centre, radius, *, ghost=False, zorder=1.0):
-    """The platform as a disc (dashed outline when ``ghost``)."""
+    """The platform as a disc (dashed outline when ``ghost``).
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+    centre : array_like (2,)
+    radius : float
+    ghost : bool, optional
+        Dashed outline only (an earlier or later pose).
+    zorder : float, optional
+
+    Returns
+    -------
+    None
+    """
     if ghost:
         ax.add_patch(Circle(centre, radius, facecolor="none", edgecolor=ROLE["platform_edge"],
                             linewidth=0.8, linestyle=(0, (4, 3)), zorder=zorder))
@@ -97,15 +157,27 @@ def draw_wheel(ax, centre, heading, r, width=None, *, ghost=False, arrow=True, z
 
     Parameters
     ----------
-    centre : (2,)
+    ax : matplotlib.axes.Axes
+    centre : array_like (2,)
     heading : float
         World angle of the wheel frame, :math:`\psi + \beta_i` (the rectangle's long side is
         along :math:`\mathbf j_i = \mathbf R(\psi+\beta_i)[0\ 1]^T`).
     r : float
     width : float, optional
         Tyre width (default 0.42 r).
+    ghost : bool, optional
+        Dashed outline only.
     arrow : bool
         Mark the rolling direction :math:`+\mathbf j_i` with a white arrow.
+    zorder : float, optional
+    color : str, optional
+        Default: the wheel colour of :data:`wmr.plot.style.ROLE`.
+    light : bool, optional
+        Light grey face (close-ups).
+
+    Returns
+    -------
+    None
     """
     w = 0.42 * r if width is None else width
     col = color or ROLE["wheel"]
@@ -124,7 +196,22 @@ def draw_wheel(ax, centre, heading, r, width=None, *, ghost=False, arrow=True, z
 
 
 def draw_pivot(ax, p, size, *, ghost=False, zorder=5.0):
-    """The steering axis at :math:`P_i`: a small white disc with a dark rim."""
+    """The steering axis at :math:`P_i`: a small white disc with a dark rim.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+    p : array_like (2,)
+        :math:`P_i` (world).
+    size : float
+        Radius of the disc (data units).
+    ghost : bool, optional
+    zorder : float, optional
+
+    Returns
+    -------
+    None
+    """
     ax.add_patch(Circle(p, size, facecolor="white" if not ghost else "none", edgecolor=PALETTE["dark"],
                         linewidth=0.8, zorder=zorder))
     if not ghost:
@@ -132,9 +219,29 @@ def draw_pivot(ax, p, size, *, ghost=False, zorder=5.0):
 
 
 def draw_unit(ax, unit, beta, pose=(0.0, 0.0, 0.0), *, ghost=False, zorder=4.0, show_j=True, light=False):
-    """One wheel unit: intermediate body, wheel disc(s) and pivot (world coordinates from ``pose``).
+    r"""One wheel unit: intermediate body, wheel disc(s) and pivot (world coordinates from ``pose``).
 
-    ``light`` draws the wheels light grey (close-ups, so that the arm and labels stay visible).
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+    unit : wheel unit
+        One of ``robot.wheels``.
+    beta : float
+        Its steering angle (radians).
+    pose : sequence (3,), optional
+        :math:`(\psi, X, Y)`.
+    ghost : bool, optional
+        Dashed outlines only.
+    zorder : float, optional
+    show_j : bool, optional
+        Mark the rolling direction on each wheel.
+    light : bool, optional
+        Draw the wheels light grey (close-ups, so that the arm and labels stay visible).
+
+    Returns
+    -------
+    P, H : numpy.ndarray (2,)
+        The unit's steering-axis point and centre (world).
     """
     pts = unit.points(float(beta))
     P = to_world(pose, pts["P"])
@@ -180,6 +287,19 @@ def draw_robot(ax, robot, beta, pose=(0.0, 0.0, 0.0), *, ghost=False, labels=Tru
     label_offsets : dict, optional
         Offsets in points for the labels ``"C"`` and ``1..w`` (default for :math:`P_i`: 17 points
         along the axle and 10 along the wheel plane, away from C: beside the wheel, clear of both lines).
+    suffix : str, optional
+        Appended to the labels.
+    frame_length : float, optional
+        Length of the frame arrows (default 0.42 times the platform radius).
+    platform : bool, optional
+        Draw the platform disc.
+    show_C : bool, optional
+        Mark the operation point.
+    show_j : bool, optional
+        Mark the rolling direction on each wheel.
+    zorder : float, optional
+    wheel_labels : bool, optional
+        Label the :math:`P_i` (with ``labels``).
 
     Returns
     -------
@@ -211,25 +331,64 @@ def draw_robot(ax, robot, beta, pose=(0.0, 0.0, 0.0), *, ghost=False, labels=Tru
 
 
 def robot_extent(g, radius):
-    """Points (n, 2) bounding a drawn robot: platform disc box and wheel centres +- one radius."""
+    """Points bounding a drawn robot: the box around the platform disc and the wheel centres.
+
+    Parameters
+    ----------
+    g : RobotDrawing
+    radius : float
+        Platform radius.
+
+    Returns
+    -------
+    numpy.ndarray (4 + n_wheels, 2)
+    """
     c = np.asarray(g.C)
     box = c + radius * np.array([[1, 1], [-1, -1], [1, -1], [-1, 1]])
     return np.vstack([box] + [np.asarray(w) for w in g.wheels])
 
 
+def _draw_lines(ax, points, directions, include, kind, **kw):
+    """One line per unit through ``points[k]`` along ``directions[k]``, extended to the points ``include[k]``."""
+    return [draw_line(ax, p, u, () if include is None else include[k], kind=kind, **kw)
+            for k, (p, u) in enumerate(zip(points, directions))]
+
+
 def draw_axles(ax, g, include=None, **kw):
-    """Dashed axle lines of a drawn robot (world), each extended to the points in ``include[k]``."""
-    segs = []
-    for k in range(len(g.P)):
-        inc = () if include is None else include[k]
-        segs.append(draw_line(ax, g.H[k], g.i[k], inc, kind="axle", **kw))
-    return segs
+    r"""Dashed axle lines of a drawn robot (world): through :math:`H_i` along :math:`\mathbf i_i`.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+    g : RobotDrawing
+    include : sequence of sequences of array_like (2,), optional
+        ``include[k]``: points the k-th line must reach (e.g. the instantaneous centre).
+    **kw
+        Passed to :func:`wmr.plot.annotate.draw_line`.
+
+    Returns
+    -------
+    list of numpy.ndarray (2, 2)
+        The end points of each line drawn.
+    """
+    return _draw_lines(ax, g.H, g.i, include, "axle", **kw)
 
 
 def draw_planes(ax, g, include=None, **kw):
-    """Wheel-plane lines (through :math:`P_i` along :math:`\\mathbf j_i`) of a drawn robot."""
-    segs = []
-    for k in range(len(g.P)):
-        inc = () if include is None else include[k]
-        segs.append(draw_line(ax, g.P[k], g.j[k], inc, kind="plane", **kw))
-    return segs
+    r"""Wheel-plane lines of a drawn robot (world): through :math:`P_i` along :math:`\mathbf j_i`.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+    g : RobotDrawing
+    include : sequence of sequences of array_like (2,), optional
+        ``include[k]``: points the k-th line must reach.
+    **kw
+        Passed to :func:`wmr.plot.annotate.draw_line`.
+
+    Returns
+    -------
+    list of numpy.ndarray (2, 2)
+        The end points of each line drawn.
+    """
+    return _draw_lines(ax, g.P, g.j, include, "plane", **kw)

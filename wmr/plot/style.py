@@ -71,7 +71,13 @@ HALO = [pe.withStroke(linewidth=2.6, foreground="white")]
 
 @contextmanager
 def style():
-    """Context in which figures are made and saved (:data:`RC`)."""
+    """Context in which figures are made and saved (:data:`RC`).
+
+    Returns
+    -------
+    contextlib.AbstractContextManager
+        Within it, matplotlib uses the settings :data:`RC`.
+    """
     with matplotlib.rc_context(RC):
         yield
 
@@ -109,7 +115,16 @@ def new_figure(nrows=1, ncols=1, width=7.0, height=3.2, *, fig=None, drawing=Tru
 
 
 def plain_axes(ax):
-    """Equal aspect, no ticks or spines: a drawing, not a chart."""
+    """Equal aspect, no ticks or spines: a drawing, not a chart.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+
+    Returns
+    -------
+    None
+    """
     ax.set_aspect("equal", adjustable="box")
     ax.set_xticks([])
     ax.set_yticks([])
@@ -118,12 +133,37 @@ def plain_axes(ax):
 
 
 def panel_title(ax, letter, text):
-    """Panel title '(a) text', left-aligned."""
+    """Panel title '(a) text', left-aligned.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+    letter : str
+        The panel's letter (``""``: the text alone).
+    text : str
+
+    Returns
+    -------
+    None
+    """
     ax.set_title(f"({letter}) {text}" if letter else text, loc="left", fontsize=RC["axes.titlesize"])
 
 
 def fit_view(ax, points, pad=0.15):
-    """Set limits that contain ``points`` (n, 2) with a margin of ``pad`` times the larger span."""
+    """Set limits that contain ``points`` with a margin of ``pad`` times the larger span.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+    points : array_like (n, 2)
+        Data coordinates (anything that reshapes to ``(n, 2)``).
+    pad : float, optional
+        Margin, as a fraction of the larger of the two spans.
+
+    Returns
+    -------
+    None
+    """
     p = np.asarray(points, dtype=float).reshape(-1, 2)
     lo, hi = p.min(axis=0), p.max(axis=0)
     m = pad * max(float((hi - lo).max()), 1e-9)
@@ -132,7 +172,20 @@ def fit_view(ax, points, pad=0.15):
 
 
 def common_view(axes, point_sets, pad=0.05):
-    """Give every axes the same data span (same scale), each centred on its own points (n_k, 2)."""
+    """Give every axes the same data span (same scale), each centred on its own points.
+
+    Parameters
+    ----------
+    axes : sequence of matplotlib.axes.Axes
+    point_sets : sequence of array_like (n_k, 2)
+        The points each axes must show, one set per axes.
+    pad : float, optional
+        Margin, as a fraction of the largest half-span.
+
+    Returns
+    -------
+    None
+    """
     boxes = []
     for pts in point_sets:
         p = np.asarray(pts, dtype=float).reshape(-1, 2)

@@ -10,7 +10,10 @@ tests check them against ``robotpy-wpimath`` (``tests/test_swerve_wpilib.py``).
   twist (forward), conversions to and from WPILib's conventions;
 - :mod:`wmr.swerve.optimize`: WPILib's per-module ``optimize`` and the robot-level steering choice;
 - :mod:`wmr.swerve.limits`: desaturation keeping the instantaneous centre, cosine compensation,
-  discretisation of a twist over a control period (the SE(2) exponential).
+  discretisation of a twist over a control period (the SE(2) exponential);
+- :mod:`wmr.swerve.transient`: the re-steering transient simulator (rate-limited modules following a
+  twist profile; slip and path error for each strategy);
+- :mod:`wmr.swerve.plot`: its figure (matplotlib, imported only there).
 
 Usage
 -----
@@ -29,13 +32,32 @@ Usage
 (1, (4,), (4,))
 >>> swerve.desaturate(bot, [4.0, 1.0, 0.0], max_speed=1.0).round(4).tolist()
 [1.5962, 0.399, 0.0]
+
+Re-steering transients (the design notebook's figure and table): a profile
+(:func:`direction_change`, :func:`spin_and_translate`, or any :class:`TwistProfile`), every strategy
+(:data:`STRATEGIES`: ``plain``, ``module`` = WPILib's optimize, ``robot`` = robot-level, each
+``+ cos`` with cosine compensation), one row per strategy:
+
+>>> study = swerve.resteer_study(bot, swerve.direction_change(spin=0.5), steer_rate=2 * np.pi)
+>>> rows = study.table()                      # list of dicts: pandas.DataFrame(rows) for a table
+>>> sorted(rows[0])
+['final_path_error_m', 'max_path_error_m', 'peak_slip_m_s', 'slip_distance_m', 'steering_travel_rad', 'strategy']
+>>> study.run("robot").slip_distance < study.run("module").slip_distance
+True
+
+and the figure (paths, slip, path error): ``from wmr.swerve.plot import transient_figure;
+fig = transient_figure(study)``.
 """
 from .limits import cosine_compensate, desaturate, desaturation_scale, discretize, se2_exp, se2_log
 from .modules import (ModuleCommand, chassis_twist, from_chassis, from_wpilib, module_commands, module_speeds,
                       radii, swerve_robot, to_chassis, to_wpilib)
 from .optimize import MAX_MODULES, SteeringChoice, optimize_modules, optimize_robot, transition_slip
+from .transient import (STRATEGIES, Transient, TransientStudy, TwistProfile, direction_change, resteer_study,
+                        resteer_transient, spin_and_translate)
 
 __all__ = ["ModuleCommand", "swerve_robot", "radii", "module_commands", "module_speeds", "chassis_twist",
            "to_wpilib", "from_wpilib", "to_chassis", "from_chassis",
            "SteeringChoice", "optimize_modules", "optimize_robot", "transition_slip", "MAX_MODULES",
-           "desaturate", "desaturation_scale", "cosine_compensate", "se2_exp", "se2_log", "discretize"]
+           "desaturate", "desaturation_scale", "cosine_compensate", "se2_exp", "se2_log", "discretize",
+           "TwistProfile", "Transient", "TransientStudy", "direction_change", "spin_and_translate",
+           "resteer_transient", "resteer_study", "STRATEGIES"]

@@ -34,10 +34,7 @@ def offset_other_side(answer):
     Feedback
     """
     from ..checks.wheels import disk_velocity, k, planar
-    fb = _none(answer, r"the 2-vector $\dot{\mathbf p}_i$")
-    if fb is not None:
-        return fb
-    M, fb = _matrix(answer, (2, 1), "the answer")
+    M, fb = _matrix(answer, (2, 1), r"the 2-vector $\dot{\mathbf p}_i$")
     if fb is not None:
         return fb
     disk = disk_velocity(PW.theta_dot_i)

@@ -69,10 +69,7 @@ def drift_of_c_general(answer):
     """
     from .. import printed
     from ..checks.assembly import drift_of_c
-    fb = _none(answer, r"the 2-vector $\dot{\mathbf c}$")
-    if fb is not None:
-        return fb
-    M, fb = _matrix(answer, (2, 1), "the answer")
+    M, fb = _matrix(answer, (2, 1), r"the 2-vector $\dot{\mathbf c}$")
     if fb is not None:
         return fb
     truth = drift_of_c(n=1).c_dot

@@ -73,10 +73,7 @@ def printed_42_signs(answer):
     Feedback
     """
     from .. import printed
-    fb = _none(answer, r"the $2\times2$ matrix $\tilde{\mathbf p}^2$")
-    if fb is not None:
-        return fb
-    M, fb = _matrix(answer, (2, 2), "the answer")
+    M, fb = _matrix(answer, (2, 2), r"the $2\times2$ matrix $\tilde{\mathbf p}^2$")
     if fb is not None:
         return fb
     ptilde = OffsetWheel((0, 0), r=S.r, d=S.d).block(sp.Integer(0))        # R(0) p~ = p~

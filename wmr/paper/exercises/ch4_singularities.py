@@ -4,11 +4,9 @@ See :mod:`wmr.paper.exercises` for how the checks are used.
 """
 from __future__ import annotations
 
-import numpy as np
-
 from ...analysis.mobility import rank_F
 from ...model.robots import paper_robot
-from .feedback import Feedback, _none
+from .feedback import Feedback, _angles
 
 __all__ = ["unlisted_singularity", "mobile_and_singular"]
 
@@ -27,10 +25,9 @@ def unlisted_singularity(beta_deg):
     """
     from ...analysis.singularities import classify
     from ..families import paper_item
-    fb = _none(beta_deg, "three steering angles in degrees")
+    beta, fb = _angles(beta_deg, degrees=True)
     if fb is not None:
         return fb
-    beta = np.radians(np.asarray(beta_deg, dtype=float))
     if beta.shape != (3,):
         return Feedback(False, "Give three angles.")
     bot = paper_robot("centred", L=1.0, r=1.0)
@@ -59,10 +56,9 @@ def mobile_and_singular(beta_deg):
     Feedback
     """
     from ...analysis.singularities import det_J
-    fb = _none(beta_deg, "three steering angles in degrees")
+    beta, fb = _angles(beta_deg, degrees=True)
     if fb is not None:
         return fb
-    beta = np.radians(np.asarray(beta_deg, dtype=float))
     bot = paper_robot("centred", L=1.0, r=1.0)
     dj = float(det_J(bot, beta))
     rk = int(rank_F(bot, beta))

@@ -7,7 +7,7 @@ from __future__ import annotations
 import numpy as np
 
 from ...analysis.kinematics import inverse
-from .feedback import Feedback, _none
+from .feedback import Feedback, _angles, _none
 
 __all__ = ["translation_angles", "rotation_angles", "printed_65_region"]
 
@@ -29,10 +29,9 @@ def translation_angles(beta, velocity=(0.3, 0.4), psi_deg=30.0):
     Feedback
     """
     from ..checks.steering import robot
-    fb = _none(beta, "three steering angles (radians)")
+    beta, fb = _angles(beta)
     if fb is not None:
         return fb
-    beta = np.asarray(beta, dtype=float)
     psi = np.radians(psi_deg)
     v = np.asarray(velocity, dtype=float)
     c = np.array([[np.cos(psi), np.sin(psi)], [-np.sin(psi), np.cos(psi)]]) @ v      # body components R(psi)^T v
@@ -65,10 +64,9 @@ def rotation_angles(beta, U=(0.5, 0.3)):
     Feedback
     """
     from ..checks.steering import robot
-    fb = _none(beta, "three steering angles (radians)")
+    beta, fb = _angles(beta)
     if fb is not None:
         return fb
-    beta = np.asarray(beta, dtype=float)
     u = np.asarray(U, dtype=float)
     twist = np.r_[1.0, np.array([u[1], -u[0]])]          # c_dot = -psi_dot E u
     sol = inverse(robot(), beta, twist)

@@ -3,6 +3,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+import numpy as np
 import sympy as sp
 
 __all__ = ["Feedback"]
@@ -38,11 +39,24 @@ def _none(answer, what):
     return None
 
 
-def _matrix(answer, shape, what):
+def _matrix(answer, shape, wanted):
+    """``(M, None)``: the answer as a SymPy matrix of ``shape``; or ``(None, Feedback)``: none yet (``wanted``) or not one."""
+    fb = _none(answer, wanted)
+    if fb is not None:
+        return None, fb
     try:
         M = sp.Matrix(answer)
     except (TypeError, ValueError, sp.SympifyError):
-        return None, Feedback(False, f"{what} must be a SymPy matrix (or a list) of shape {shape}, got {answer!r}.")
+        return None, Feedback(False, f"the answer must be a SymPy matrix (or a list) of shape {shape}, got {answer!r}.")
     if M.shape != shape:
-        return None, Feedback(False, f"{what} must have shape {shape}, got {M.shape}.")
+        return None, Feedback(False, f"the answer must have shape {shape}, got {M.shape}.")
     return M, None
+
+
+def _angles(answer, degrees=False):
+    """``(beta, None)``: the answer as steering angles in radians, array (k,); or ``(None, Feedback)``: none yet."""
+    fb = _none(answer, "three steering angles in degrees" if degrees else "three steering angles (radians)")
+    if fb is not None:
+        return None, fb
+    beta = np.asarray(answer, dtype=float)
+    return (np.radians(beta) if degrees else beta), None

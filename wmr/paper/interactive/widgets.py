@@ -14,7 +14,42 @@ from .state import mount_state, steering_state
 __all__ = ["SteeringExplorer", "MountExplorer"]
 
 
-class SteeringExplorer:
+class _Explorer:
+    """What both explorers share: the state drawn and described, shown below the controls and redrawn in place."""
+
+    _draw = _describe = None          # state -> Figure, state -> Markdown text (set by each explorer)
+    _width = 500                      # width of the picture (pixels)
+
+    def _render(self):
+        from IPython.display import Image, Markdown
+        s = self.state()
+        return Image(png(self._draw(s)), width=self._width), Markdown(self._describe(s))
+
+    def _sync(self):
+        """Set the controls that follow the others (none here)."""
+
+    def _changed(self, change=None):
+        self._sync()
+        if self._image is not None:
+            img, md = self._render()
+            self._image.update(img)
+            self._text.update(md)
+
+    def show(self):
+        """Display the controls, then the picture and the numbers (updated in place by the controls).
+
+        Returns
+        -------
+        None
+        """
+        from IPython.display import display
+        display(self.controls)
+        img, md = self._render()
+        self._image = display(img, display_id=True)
+        self._text = display(md, display_id=True)
+
+
+class SteeringExplorer(_Explorer):
     r"""Sliders for the three steering angles, or for a commanded twist; the robot and its numbers redrawn live.
 
     Parameters
@@ -56,38 +91,18 @@ class SteeringExplorer:
             return steering_state(self.robot, np.radians([b.value for b in self.betas]), [t.value for t in self.twist])
         return steering_state(self.robot, np.radians([b.value for b in self.betas]))
 
-    def _render(self):
-        from IPython.display import Image, Markdown
-        s = self.state()
-        return Image(png(draw_steering(s)), width=520), Markdown(describe_steering(s))
+    _draw, _describe, _width = staticmethod(draw_steering), staticmethod(describe_steering), 520
 
-    def _changed(self, change=None):
+    def _sync(self):
         if self.mode.value == "commanded twist":           # show the angles the twist needs
             s = self.state()
             for b, v in zip(self.betas, np.degrees(s.beta)):
                 b.unobserve(self._changed, names="value")
                 b.value = float(np.round(v))
                 b.observe(self._changed, names="value")
-        if self._image is not None:
-            img, md = self._render()
-            self._image.update(img)
-            self._text.update(md)
-
-    def show(self):
-        """Display the controls, then the picture and the numbers (updated in place by the controls).
-
-        Returns
-        -------
-        None
-        """
-        from IPython.display import display
-        display(self.controls)
-        img, md = self._render()
-        self._image = display(img, display_id=True)
-        self._text = display(md, display_id=True)
 
 
-class MountExplorer:
+class MountExplorer(_Explorer):
     r"""Sliders for the polar coordinates of three mount points and for L; :math:`\kappa(\mathbf J_{L1})` live.
 
     Parameters
@@ -135,30 +150,10 @@ class MountExplorer:
         """
         return mount_state(self.points(), None if self.auto.value else self.L.value)
 
-    def _render(self):
-        from IPython.display import Image, Markdown
-        s = self.state()
-        return Image(png(draw_mounts(s)), width=420), Markdown(describe_mounts(s))
+    _draw, _describe, _width = staticmethod(draw_mounts), staticmethod(describe_mounts), 420
 
-    def _changed(self, change=None):
+    def _sync(self):
         if self.auto.value:
             self.L.unobserve(self._changed, names="value")
             self.L.value = round(self.state().L_rms, 2)
             self.L.observe(self._changed, names="value")
-        if self._image is not None:
-            img, md = self._render()
-            self._image.update(img)
-            self._text.update(md)
-
-    def show(self):
-        """Display the controls, then the picture and the numbers (updated in place by the controls).
-
-        Returns
-        -------
-        None
-        """
-        from IPython.display import display
-        display(self.controls)
-        img, md = self._render()
-        self._image = display(img, display_id=True)
-        self._text = display(md, display_id=True)

@@ -8,11 +8,10 @@ import math
 import re
 from pathlib import Path
 
-from ..files import atomic_write
+from ..files import atomic_write, csv_text
 from ..text import bound
 from .markup import anchor, _row_problems
-from .store import _to_csv
-from .verdict import VERDICTS, Finding, grade
+from .verdict import COLUMNS, VERDICTS, Finding, grade
 
 __all__ = ["Row", "Ledger"]
 
@@ -164,4 +163,4 @@ class Ledger:
         if directory is None:
             raise TypeError("directory must be a path (the project's figures directory), got None")
         path = Path(directory) / "ledger" / f"{self.notebook}.csv"
-        return atomic_write(path, _to_csv(self.rows))
+        return atomic_write(path, csv_text(self.rows, COLUMNS))

@@ -5,25 +5,15 @@ Part of the ledger: :mod:`wmr.paper.ledger`.
 from __future__ import annotations
 
 import csv
-import io
 import os
 import sys
 from pathlib import Path
 
-from ..files import atomic_write
+from ..files import atomic_write, csv_text
 from .markup import anchor
 from .verdict import COLUMNS, EQUATIONS, KINDS, SEVERITIES, VERDICTS
 
 __all__ = ["read", "problems", "merge", "main"]
-
-
-def _to_csv(rows):
-    buf = io.StringIO()
-    w = csv.DictWriter(buf, fieldnames=COLUMNS, lineterminator="\n")
-    w.writeheader()
-    for r in rows:
-        w.writerow({k: r.get(k, "") for k in COLUMNS})
-    return buf.getvalue()
 
 
 def _sort_key(row):
@@ -106,7 +96,7 @@ def merge(directory):
     for frag in sorted((d / "ledger").glob("*.csv")):
         rows.extend(read(frag))
     rows.sort(key=_sort_key)
-    path = atomic_write(d / "ledger.csv", _to_csv(rows))
+    path = atomic_write(d / "ledger.csv", csv_text(rows, COLUMNS))
     return path, rows, problems(rows)
 
 

@@ -1,0 +1,380 @@
+r"""Re-steering transients: rate-limited modules following a commanded twist, and the slip they cause.
+
+The paper's robots are "omnidirectional": any twist is admissible once the wheels are steered.
+A real module steers at a finite rate :math:`|\dot\beta_i| \le \omega_s`, so after a change of
+command the modules spend a transient at angles that realise no twist, and the wheels slip.  This
+module measures that transient for each way of commanding the modules.
+
+Model, one control period :math:`\Delta t` after another (step :math:`k`):
+
+1. the commanded twist :math:`\mathbf t_k` (:class:`TwistProfile`) gives target angles and speeds by
+   a **strategy**: ``"plain"`` (:func:`~wmr.swerve.modules.module_commands`: speeds :math:`\ge 0`,
+   no flips), ``"module"`` (WPILib's per-module ``optimize``,
+   :func:`~wmr.swerve.optimize.optimize_modules`) or ``"robot"`` (the robot-level choice,
+   :func:`~wmr.swerve.optimize.optimize_robot`), optionally with **cosine compensation**
+   (:func:`~wmr.swerve.limits.cosine_compensate`);
+2. each module turns towards its target along the shorter arc, by at most :math:`\omega_s\Delta t`;
+3. the wheels roll at the (compensated) speeds at the new angles; the platform moves with the
+   least-squares twist of (21) (:func:`~wmr.swerve.modules.chassis_twist`), held over the period
+   (the SE(2) exponential, :func:`~wmr.swerve.limits.se2_exp`), and the residual
+   :math:`\mathbf J_1\mathbf t - \mathbf J_2\dot{\boldsymbol\theta}` is the **slip**: the velocities
+   (m/s) at which the wheels must slide, :math:`\sigma_k = \|\cdot\|`;
+4. the **reference** pose integrates the commanded twists the same way; the **path error** is the
+   distance between the two positions of C.
+
+A run is deterministic (no random input, a fixed step); data functions return dataclasses and
+:mod:`wmr.swerve.plot` draws them.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..model import validation as V
+from ..model.platform import wrap_angle
+from .limits import cosine_compensate, se2_exp
+from .modules import chassis_twist, module_commands, swerve_robot
+from .optimize import optimize_modules, optimize_robot
+
+__all__ = ["TwistProfile", "Transient", "TransientStudy", "direction_change", "spin_and_translate",
+           "resteer_transient", "resteer_study", "STRATEGIES", "MAX_STEPS"]
+
+#: The strategies compared by :func:`resteer_study`: (strategy, cosine compensation).
+STRATEGIES = (("plain", False), ("module", False), ("module", True), ("robot", False), ("robot", True))
+#: Most control periods in a profile.
+MAX_STEPS = 100_000
+
+
+@dataclass(frozen=True)
+class TwistProfile:
+    r"""A commanded twist, one per control period.
+
+    Attributes
+    ----------
+    name : str
+    dt : float
+        Control period, s.
+    twist : numpy.ndarray (N, 3)
+        :math:`[\dot\psi, \dot x, \dot y]` (body frame) held over :math:`[k\Delta t, (k+1)\Delta t)`.
+    """
+
+    name: str
+    dt: float
+    twist: np.ndarray
+
+    @property
+    def t(self):
+        """Start of each period, s: (N,)."""
+        return np.arange(len(self.twist)) * self.dt
+
+
+def _times(t_change, t_end, dt, first="t_change"):
+    t_change = V.number(first, V.positive(first, t_change))
+    t_end = V.number("t_end", V.positive("t_end", t_end))
+    dt = V.number("dt", V.positive("dt", dt))
+    if not t_change < t_end:
+        raise ValueError(f"{first} must be before t_end, got {first} = {t_change!r}, t_end = {t_end!r}")
+    n = np.ceil(t_end / dt - 1e-9)
+    if not n <= MAX_STEPS:
+        raise ValueError(f"dt = {dt!r} needs {n:.3g} periods to reach t_end = {t_end!r}, more than {MAX_STEPS}")
+    return t_change, dt, np.arange(int(n)) * dt
+
+
+def _body(field_velocity, psi_dot, t, names):
+    r"""Body twists from fixed-frame velocities (N, 2) and turning rates (N,), heading :math:`\psi = \int\dot\psi`."""
+    with np.errstate(over="ignore", invalid="ignore"):
+        psi = np.concatenate([[0.0], np.cumsum(psi_dot[:-1])]) * (t[1] - t[0] if len(t) > 1 else 0.0)
+        c, s = np.cos(psi), np.sin(psi)
+        vx, vy = field_velocity[:, 0], field_velocity[:, 1]
+        out = np.column_stack([psi_dot, c * vx + s * vy, -s * vx + c * vy])        # R(-psi) v
+    if not np.isfinite(out).all():
+        raise ValueError(f"{names} are too large: the commanded twist or heading overflows double precision")
+    return out
+
+
+def direction_change(speed=1.0, angle=np.pi / 2, spin=0.0, t_change=0.25, t_end=1.0, dt=0.01):
+    r"""Drive along the fixed x axis, then, at ``t_change``, along the direction ``angle``.
+
+    Parameters
+    ----------
+    speed : float
+        Speed of C, m/s, > 0.
+    angle : float
+        Change of direction, radians (:math:`\pi/2`: a 90 degree change).
+    spin : float
+        Constant turning rate :math:`\dot\psi` throughout, rad/s (a driver's small rotation
+        spreads the modules' angles, as real encoders do).
+    t_change, t_end, dt : float
+        Time of the change, duration and control period, s.
+
+    Returns
+    -------
+    TwistProfile
+
+    Examples
+    --------
+    >>> p = direction_change(speed=2.0, t_change=0.5, t_end=1.0, dt=0.25)
+    >>> p.twist.round(12).tolist()
+    [[0.0, 2.0, 0.0], [0.0, 2.0, 0.0], [0.0, 0.0, 2.0], [0.0, 0.0, 2.0]]
+    """
+    speed = V.number("speed", V.positive("speed", speed))
+    angle = V.number("angle", angle)
+    spin = V.number("spin", spin)
+    t_change, dt, t = _times(t_change, t_end, dt)
+    after = t >= t_change - 1e-9 * dt
+    heading = np.where(after, angle, 0.0)
+    v = speed * np.column_stack([np.cos(heading), np.sin(heading)])
+    with np.errstate(over="ignore"):
+        name = f"{np.degrees(angle):g} deg change of direction"
+    return TwistProfile(name, dt, _body(v, np.full(len(t), spin), t, "speed and spin"))
+
+
+def spin_and_translate(speed=1.0, rate=3.0, t_start=0.25, t_end=1.0, dt=0.01):
+    r"""Drive along the fixed x axis; from ``t_start`` on, keep doing so while spinning at ``rate``.
+
+    In the body frame the velocity of C turns at :math:`-\dot\psi`: every module must keep steering.
+
+    Parameters
+    ----------
+    speed : float
+        Speed of C, m/s, > 0.
+    rate : float
+        Turning rate :math:`\dot\psi` after ``t_start``, rad/s.
+    t_start, t_end, dt : float
+        Start of the spin, duration and control period, s.
+
+    Returns
+    -------
+    TwistProfile
+    """
+    speed = V.number("speed", V.positive("speed", speed))
+    rate = V.number("rate", rate)
+    t_start, dt, t = _times(t_start, t_end, dt, first="t_start")
+    psi_dot = np.where(t >= t_start - 1e-9 * dt, rate, 0.0)
+    v = np.tile([speed, 0.0], (len(t), 1))
+    return TwistProfile("spin while translating", dt, _body(v, psi_dot, t, "speed and rate"))
+
+
+@dataclass(frozen=True)
+class Transient:
+    r"""One simulated run (:func:`resteer_transient`).
+
+    Attributes
+    ----------
+    label : str
+        Strategy, e.g. ``"robot + cos"``.
+    t : numpy.ndarray (N+1,)
+        Sample times, s.
+    pose : numpy.ndarray (N+1, 3)
+        :math:`(\psi, X, Y)` of the robot, fixed frame.
+    reference : numpy.ndarray (N+1, 3)
+        The pose the commanded twists would give.
+    beta : numpy.ndarray (N+1, w)
+        Steering angles (unwrapped: their changes are the turns).
+    twist : numpy.ndarray (N, 3)
+        The platform's least-squares twist in each period.
+    slip : numpy.ndarray (N,)
+        :math:`\sigma_k`, norm of the residual of (21), m/s.
+    path_error : numpy.ndarray (N+1,)
+        Distance between the robot's C and the reference's, m.
+    """
+
+    label: str
+    t: np.ndarray
+    pose: np.ndarray
+    reference: np.ndarray
+    beta: np.ndarray
+    twist: np.ndarray
+    slip: np.ndarray
+    path_error: np.ndarray
+
+    @property
+    def slip_distance(self):
+        r""":math:`\sum_k\sigma_k\Delta t`: how far the wheels slide in all (m)."""
+        return float(self.slip.sum() * (self.t[1] - self.t[0]))
+
+    @property
+    def peak_slip(self):
+        """Largest slip, m/s."""
+        return float(self.slip.max())
+
+    @property
+    def max_path_error(self):
+        """Largest path error, m."""
+        return float(self.path_error.max())
+
+    @property
+    def final_path_error(self):
+        """Path error at the end, m."""
+        return float(self.path_error[-1])
+
+    @property
+    def steering_travel(self):
+        """Total turn of all modules, radians."""
+        return float(np.abs(np.diff(self.beta, axis=0)).sum())
+
+
+def _compose(pose, delta):
+    """Pose (psi, X, Y) followed by a body-frame increment (dpsi, dx, dy)."""
+    c, s = np.cos(pose[0]), np.sin(pose[0])
+    return np.array([pose[0] + delta[0], pose[1] + c * delta[1] - s * delta[2], pose[2] + s * delta[1] + c * delta[2]])
+
+
+def _targets(robot, strategy, twist, beta):
+    if strategy == "plain":
+        cmd = module_commands(robot, twist, beta)
+        return cmd.beta, cmd.speed
+    ch = (optimize_modules if strategy == "module" else optimize_robot)(robot, twist, beta)
+    return ch.beta, ch.speed
+
+
+def resteer_transient(robot, profile, strategy="robot", cosine=False, steer_rate=2 * np.pi, beta0=None):
+    r"""Simulate rate-limited modules following ``profile`` (module docstring: the four steps).
+
+    Parameters
+    ----------
+    robot : Robot
+        Centred wheels only.
+    profile : TwistProfile
+    strategy : {"plain", "module", "robot"}
+        How targets are chosen from the current angles.
+    cosine : bool
+        Scale each module's speed by the cosine of its steering error.
+    steer_rate : float
+        Largest steering rate :math:`\omega_s` of every module, rad/s, > 0.
+    beta0 : array (w,), optional
+        Initial angles; default: those of the first commanded twist (no transient at the start).
+
+    Returns
+    -------
+    Transient
+
+    Examples
+    --------
+    >>> import wmr
+    >>> bot = wmr.Robot([wmr.CentredWheel((x, y), r=0.05) for x, y in [(.3, .3), (.3, -.3), (-.3, .3), (-.3, -.3)]])
+    >>> run = resteer_transient(bot, direction_change(angle=0.0))          # no change: nothing to re-steer
+    >>> run.slip_distance < 1e-12, run.max_path_error < 1e-12
+    (True, True)
+    """
+    robot = swerve_robot(robot)
+    if not isinstance(profile, TwistProfile):
+        raise TypeError(f"profile must be a TwistProfile (direction_change(), spin_and_translate()), "
+                        f"got {V.show(profile)}")
+    if not isinstance(strategy, str) or strategy not in ("plain", "module", "robot"):
+        raise ValueError(f"strategy must be 'plain', 'module' or 'robot', got {V.show(strategy)}")
+    cosine = V.flag("cosine", cosine)
+    rate = V.number("steer_rate", V.positive("steer_rate", steer_rate))
+    tw = V.finite_array("profile.twist", profile.twist, last=3).reshape(-1, 3)
+    dt, w = V.number("profile.dt", V.positive("profile.dt", profile.dt)), robot.w
+    if len(tw) == 0:
+        raise ValueError("profile must command at least one period, got no twists")
+    beta = np.empty((len(tw) + 1, w))
+    beta[0] = module_commands(robot, tw[0]).beta if beta0 is None else V.finite_array("beta0", beta0, last=w)
+    pose, ref = np.zeros((len(tw) + 1, 3)), np.zeros((len(tw) + 1, 3))
+    twist, slip = np.empty((len(tw), 3)), np.empty(len(tw))
+    step = rate * dt
+    k = 0
+    try:
+        with np.errstate(over="ignore", invalid="ignore"):
+            for k, t_k in enumerate(tw):                          # time steps (each kernel call is batched)
+                target, speed = _targets(robot, strategy, t_k, beta[k])
+                beta[k + 1] = beta[k] + np.clip(wrap_angle(target - beta[k]), -step, step)   # |beta_dot| <= omega_s
+                if cosine:
+                    speed = cosine_compensate(speed, beta[k + 1], target)
+                sol = chassis_twist(robot, beta[k + 1], speed)   # (21): least squares; residual = slip
+                twist[k], slip[k] = sol.value, np.hypot.reduce(sol.residual)
+                pose[k + 1] = _compose(pose[k], se2_exp(sol.value, dt))
+                ref[k + 1] = _compose(ref[k], se2_exp(t_k, dt))
+            err = np.hypot(*(pose[:, 1:] - ref[:, 1:]).T)
+    except ValueError as e:                                       # a kernel's check, said of the profile
+        raise ValueError(f"profile commands a twist this simulation cannot follow (period {k}): {e}") from None
+    if not all(np.isfinite(a).all() for a in (pose, ref, slip, err)):
+        raise ValueError("profile commands twists too large: the simulated poses overflow double precision")
+    label = strategy + (" + cos" if cosine else "")
+    t = np.arange(len(tw) + 1) * dt
+    return Transient(label, t, pose, ref, beta, twist, slip, err)
+
+
+@dataclass(frozen=True)
+class TransientStudy:
+    """The runs of several strategies on one profile (:func:`resteer_study`).
+
+    Attributes
+    ----------
+    profile : TwistProfile
+    steer_rate : float
+        rad/s.
+    runs : tuple of Transient
+    """
+
+    profile: TwistProfile
+    steer_rate: float
+    runs: tuple
+
+    def table(self):
+        """One row per strategy: slip and path error.
+
+        Returns
+        -------
+        list of dict
+            Keys ``strategy``, ``slip_distance_m``, ``peak_slip_m_s``, ``max_path_error_m``,
+            ``final_path_error_m``, ``steering_travel_rad``.
+        """
+        return [{"strategy": r.label, "slip_distance_m": r.slip_distance, "peak_slip_m_s": r.peak_slip,
+                 "max_path_error_m": r.max_path_error, "final_path_error_m": r.final_path_error,
+                 "steering_travel_rad": r.steering_travel} for r in self.runs]
+
+    def run(self, label):
+        """The run of one strategy.
+
+        Parameters
+        ----------
+        label : str
+            E.g. ``"module"`` or ``"robot + cos"``.
+
+        Returns
+        -------
+        Transient
+        """
+        for r in self.runs:
+            if r.label == label:
+                return r
+        raise ValueError(f"label must be one of {[r.label for r in self.runs]}, got {V.show(label)}")
+
+
+def resteer_study(robot, profile, steer_rate=2 * np.pi, strategies=STRATEGIES):
+    r"""Run every strategy on one profile: the data of the figure and table of the design notebook.
+
+    Parameters
+    ----------
+    robot : Robot
+        Centred wheels only.
+    profile : TwistProfile
+    steer_rate : float
+        Largest steering rate of the modules, rad/s.
+    strategies : sequence of (str, bool)
+        (strategy, cosine compensation) pairs; default :data:`STRATEGIES`.
+
+    Returns
+    -------
+    TransientStudy
+
+    Examples
+    --------
+    >>> import wmr
+    >>> bot = wmr.Robot([wmr.CentredWheel((x, y), r=0.05) for x, y in [(.3, .3), (.3, -.3), (-.3, .3), (-.3, -.3)]])
+    >>> study = resteer_study(bot, direction_change(spin=0.5))
+    >>> [row["strategy"] for row in study.table()]
+    ['plain', 'module', 'module + cos', 'robot', 'robot + cos']
+    """
+    rate = V.number("steer_rate", V.positive("steer_rate", steer_rate))
+    try:
+        pairs = [(s, c) for s, c in strategies]
+    except (TypeError, ValueError):
+        raise TypeError(f"strategies must be (strategy, cosine) pairs, got {V.show(strategies)}") from None
+    if not pairs:
+        raise ValueError("strategies must name at least one (strategy, cosine) pair, got none")
+    runs = tuple(resteer_transient(robot, profile, s, c, rate) for s, c in pairs)
+    return TransientStudy(profile, rate, runs)
