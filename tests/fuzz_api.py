@@ -41,8 +41,11 @@ BIG, TINY = 1.7e308, 1e-320
 def _robots():
     mixed = wmr.Robot([wmr.OffsetWheel((1.0, 0.2), r=0.2, d=0.1), wmr.CentredWheel((-0.5, 0.9), r=0.3),
                        wmr.DualWheel((-0.4, -1.0), r=0.25, b=0.15), wmr.CentredWheel((0.6, -0.7), r=0.1)])
+    unsteered = wmr.Robot([wmr.SwedishWheel((0.5, 0.3), r=0.1, angle=0.4, roller=np.pi / 4),
+                           wmr.FixedWheel((-0.6, 0.2), r=0.2, angle=1.2), wmr.SwedishWheel((0.1, -0.7), r=0.1, angle=-2.0,
+                                                                                         roller=-np.pi / 4)])
     return [wmr.paper_robot("centred", L=0.5, r=0.1), wmr.paper_robot("offset", L=2.0, r=0.3),
-            wmr.paper_robot("dual", L=1.0, r=0.2), mixed, wmr.Robot([wmr.CentredWheel((0.0, 0.0), r=1.0)])]
+            wmr.paper_robot("dual", L=1.0, r=0.2), mixed, wmr.Robot([wmr.CentredWheel((0.0, 0.0), r=1.0)]), unsteered]
 
 
 ROBOTS = _robots()
@@ -218,6 +221,10 @@ CASES = [
     Case("CentredWheel", lambda position, r: wmr.CentredWheel(position, r=r), (("position", "point_sym"), ("r", "length_sym"))),
     Case("DualWheel", lambda position, r, b: wmr.DualWheel(position, r=r, b=b),
          (("position", "point_sym"), ("r", "length_sym"), ("b", "length_sym"))),
+    Case("FixedWheel", lambda position, r, angle: wmr.FixedWheel(position, r=r, angle=angle),
+         (("position", "point_sym"), ("r", "length_sym"), ("angle", "angle"))),
+    Case("SwedishWheel", lambda position, r, angle, roller: wmr.SwedishWheel(position, r=r, angle=angle, roller=roller),
+         (("position", "point_sym"), ("r", "length_sym"), ("angle", "angle"), ("roller", "roller"))),
     Case("Robot", lambda wheels, name: wmr.Robot(wheels, name=name), (("wheels", "wheels"), ("name", "text"))),
     Case("paper_robot", lambda kind, L, r, d, b, exact: wmr.paper_robot(kind, L=L, r=r, d=d, b=b, exact=exact),
          (("kind", "kind"), ("L", "length_sym"), ("r", "length_sym"), ("d", "opt_nonneg"), ("b", "opt_length_sym"),
@@ -230,6 +237,7 @@ CASES = [
     Case("Robot.F", lambda robot, beta: robot.F(beta), (S, ("beta", "sbeta"))),
     Case("Robot.J", lambda robot, beta, L: robot.J(beta, L=L), (S, ("beta", "sbeta"), ("L", "positive"))),
     Case("Robot.moved", lambda robot, origin, angle: robot.moved(origin, angle), (S, ("origin", "point"), ("angle", "angle"))),
+    Case("Robot.effective_beta", lambda robot, beta: robot.effective_beta(beta), (S, B)),
     Case("unit.block", lambda robot, beta: robot.wheels[0].block(beta), (S, ("beta", "angles"))),
     Case("unit.points", lambda robot, beta: robot.wheels[0].points(beta), (S, ("beta", "angles"))),
     Case("unit.rate_names", lambda robot, i: robot.wheels[0].rate_names(i), (S, ("i", "count"))),
@@ -259,6 +267,7 @@ CASES = [
     Case("twist_constraints", lambda robot, beta: mobility.twist_constraints(robot, beta), (R, B)),
     Case("admissible_twists", lambda robot, beta: wmr.admissible_twists(robot, beta), (R, ("beta", "beta1"))),
     Case("characteristic_length", lambda robot: wmr.characteristic_length(robot), (R,)),
+    Case("campion_class", lambda robot: wmr.campion_class(robot), (R,)),
     Case("forward", lambda robot, beta, rates: wmr.forward(robot, beta, rates), (R, B, ("rates", "rates"))),
     Case("inverse", lambda robot, beta, twist, beta_dot: wmr.inverse(robot, beta, twist, beta_dot),
          (R, B, T, ("beta_dot", "opt_beta"))),
@@ -383,6 +392,7 @@ NOT_FUZZED = {
     "exact_zero": "SymPy helper of the paper's families; argument checks tested in test_validation",
     "trig_combination": "kernel of Robot.J2/F/J and twist_constraints, fuzzed through them",
     "is_symbolic": "a predicate: any value is a valid question",
+    "CampionClass": "the result type of campion_class, fuzzed through it",
     "search": "seconds per call (a search over designs); its arguments are checked in tests/test_design.py",
     "landscape": "seconds per call (two slices of the design space); its numbers are checked in tests/test_design.py",
     "WorstCase": "result type of worst_kappa", "DesignSearch": "result type of search",
@@ -404,6 +414,9 @@ def _more_roles(name, bot):
         good, odd, bad = _role("matrix", bot)
         return [g for g in good if np.shape(g)[-1] == np.shape(g)[-2]], [np.full((3, 3), BIG), np.zeros((0, 0))], \
             bad + [good[2]]
+    if name == "roller":
+        return ([np.pi / 2, np.pi / 4, -np.pi / 4, 1, sp.pi / 3, np.float32(0.5)], [TINY, 1e-9, -np.pi / 2 + 1e-12],
+                [0, 0.0, -np.pi / 2, 2.0, np.pi, -3.0, [0.5]] + BAD_ANY)
     if name == "profile":                   # short twist profiles (a simulation per call)
         return ([swerve.direction_change(t_change=0.02, t_end=0.05, dt=0.01), swerve.spin_and_translate(t_start=0.01, t_end=0.03, dt=0.01),
                  swerve.TwistProfile("arc", 0.02, np.tile([1.0, 0.5, 0.0], (3, 1)))],

@@ -128,3 +128,15 @@ def test_bad_input_is_one_line(capsys, bad_file, argv, words):
     code, out, err = _run(capsys, *argv)
     assert code == 2 and out == ""
     assert err.startswith(f"wmr {argv[0]}: ") and words in err and err.count("\n") == 1, err
+
+
+@pytest.mark.skipif(not hasattr(wmr, "FixedWheel"), reason="wmr.FixedWheel (wheels stream) not on this branch yet")
+def test_ik_fixed_wheels(capsys):
+    diff = str(ROOT / "examples" / "differential.toml")
+    code, out, _ = _run(capsys, "ik", diff, "--vx", "0.5", "--omega", "1", "--json")
+    data = json.loads(out)
+    assert code == 0 and data["admissible"] and data["admissible_without_resteering"]
+    assert data["angles_deg"][:2] == [90.0, 90.0] and data["resteer_deg"][:2] == [0.0, 0.0]
+    assert np.allclose([data["rates"]["theta_dot_1"], data["rates"]["theta_dot_2"]], [(0.5 - 0.2) / 0.08, (0.5 + 0.2) / 0.08])
+    code, out, _ = _run(capsys, "ik", diff, "--vy", "0.5")                     # sideways: impossible
+    assert code == 0 and "admissible: no" in out and "without re-steering: no" in out

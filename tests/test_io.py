@@ -206,3 +206,21 @@ def test_every_example_loads_and_round_trips(name, tmp_path):
         pytest.skip("fixed / Swedish wheels not on this branch yet")
     bot = load(EXAMPLES / name)
     _same_matrices(bot, loads(dump(bot)))
+
+
+# ------------------------------------------------------------------------------ Campion classes
+CLASSES = {"paper_offset.toml": "(3,0)", "omni3.toml": "(3,0)", "mecanum4.toml": "(3,0)", "differential.toml": "(2,0)",
+           "steered_castors.toml": "(2,1)", "tricycle.toml": "(1,1)", "swerve4.toml": "(1,2)",
+           "paper_centred.toml": "(1,2)", "paper_dual.toml": "(1,2)"}
+
+
+def test_the_examples_cover_the_five_classes():
+    assert set(CLASSES) == {p.name for p in EXAMPLES.glob("*.toml")}
+    assert set(CLASSES.values()) == {"(3,0)", "(2,0)", "(2,1)", "(1,1)", "(1,2)"}         # all five of Campion's
+
+
+@needs_new_wheels
+@pytest.mark.parametrize("name, label", CLASSES.items())
+def test_example_class(name, label):
+    c = wmr.campion_class(load(EXAMPLES / name))
+    assert c.label == label and f"({c.delta_m},{c.delta_s})" == label

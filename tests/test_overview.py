@@ -91,3 +91,16 @@ def test_bad_arguments():
         configurations(wmr.paper_robot(), grid=0)
     with pytest.raises(ValueError, match="L"):
         singular_families(wmr.paper_robot(), L=-1.0)
+
+
+@pytest.mark.skipif(not hasattr(wmr, "FixedWheel"), reason="wmr.FixedWheel (wheels stream) not on this branch yet")
+def test_fixed_wheels_keep_their_angles_and_meet_only_at_infinity():
+    bot = wmr.load(EXAMPLES / "tricycle.toml")
+    fams = singular_families(bot)
+    assert [f["family"] for f in fams] == ["parallel"]                        # the rear planes never meet
+    assert np.allclose(np.degrees(fams[0]["beta"])[1:], 90.0) and np.isclose(abs(np.degrees(fams[0]["beta"][0])), 90.0)
+    o = overview(wmr.load(EXAMPLES / "differential.toml"), grid=100, twists=10)
+    assert (o.rank_F, o.nullity_range) == (5, (2, 2)) and o.singular == [] and not o.isotropic["J_L1"]
+    m = overview(wmr.load(EXAMPLES / "mecanum4.toml"), grid=100, twists=10)
+    assert np.isclose(m.kappa_J2, 1 + np.sqrt(2)) and "omni" in m.advice[0]             # sqrt((1 + c) / (1 - c))
+    assert overview(wmr.load(EXAMPLES / "omni3.toml"), grid=100, twists=10).isotropic == {"J_L1": True, "J2": True}

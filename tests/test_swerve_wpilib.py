@@ -220,3 +220,16 @@ def test_cosine_compensation_agrees_with_cosineScale():
         st.cosineScale(Rotation2d(float(c)))
         ref.append(st.speed)
     np.testing.assert_allclose(ours, ref, rtol=0, atol=1e-12)
+
+
+def test_the_shipped_frc_example_agrees_with_wpilib():
+    """examples/swerve4.toml (the robot file a designer starts from) against SwerveDrive4Kinematics."""
+    from pathlib import Path
+    bot = wmr.load(Path(__file__).resolve().parent.parent / "examples" / "swerve4.toml")
+    kin = _wpilib([tuple(map(float, p)) for p in bot.mount_points])
+    twists = _twists(seed=12)
+    cmd = swerve.module_commands(bot, twists)
+    ref = np.array([[(s.speed, s.angle.radians()) for s in kin.toSwerveModuleStates(ChassisSpeeds(vx, vy, om))]
+                    for om, vx, vy in twists])
+    np.testing.assert_allclose(cmd.speed, ref[..., 0], rtol=0, atol=1e-12)
+    assert np.max(_angle_gap(swerve.to_wpilib(cmd.beta), ref[..., 1])) < 1e-12

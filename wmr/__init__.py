@@ -18,6 +18,7 @@ Examples
 """
 from .model import conventions
 from .model.backend import NUMERIC, SYMBOLIC
+from .analysis.classes import campion_class
 from .analysis.isotropy import characteristic_length, is_isotropic
 from .analysis.linalg import condition_number
 from .analysis.kinematics import forward, inverse
@@ -30,16 +31,16 @@ from .analysis.simulation import simulate
 from .analysis.steering import centre_to_wheels, instantaneous_centre, steering_angles
 from .analysis.sweep import sweep
 from .model.tolerance import TOL
-from .model.wheels import CentredWheel, DualWheel, OffsetWheel
+from .model.wheels import CentredWheel, DualWheel, FixedWheel, OffsetWheel, SwedishWheel
 from .io import dump, load
 from . import swerve
 
 __all__ = [
-    "Robot", "OffsetWheel", "CentredWheel", "DualWheel", "paper_robot", "equilateral_mounts",
+    "Robot", "OffsetWheel", "CentredWheel", "DualWheel", "FixedWheel", "SwedishWheel", "paper_robot", "equilateral_mounts",
     "E", "rotation", "point_velocity", "rank", "nullity", "null_space", "rank_F", "mobility",
     "admissible_twists", "condition_number", "is_isotropic", "characteristic_length",
     "forward", "inverse", "instantaneous_centre", "steering_angles", "centre_to_wheels",
-    "simulate", "sweep", "TOL", "NUMERIC", "SYMBOLIC", "conventions", "load", "dump",
+    "simulate", "sweep", "campion_class", "TOL", "NUMERIC", "SYMBOLIC", "conventions", "load", "dump",
     "swerve",
 ]
 __version__ = "0.1.0"

@@ -9,6 +9,7 @@ r"""Analyses of any robot built with :mod:`wmr.model`.
 :mod:`~wmr.analysis.simulation`     time integration of the kinematics
 :mod:`~wmr.analysis.lines`          2-D line geometry: intersections, concurrency, circumcircle
 :mod:`~wmr.analysis.singularities`  :math:`\det\mathbf J` and the classification of singular configurations (58)-(59)
+:mod:`~wmr.analysis.classes`        Campion's classes: degrees of mobility and steerability
 :mod:`~wmr.analysis.design`         worst-case :math:`\kappa(\mathbf J)` of a layout, search over three-offset-wheel designs
 :mod:`~wmr.analysis.motion_kappa`   :math:`\kappa(\mathbf J)` along the admissible motions (rotations about each centre)
 :mod:`~wmr.analysis.det_exact`      the exact :math:`\det\mathbf J`: SymPy derivation, polynomial, wheel-plane-line identity
@@ -18,5 +19,5 @@ Every function takes a robot; none defaults to the paper's.
 """
 
 __all__ = ["linalg", "mobility", "isotropy", "kinematics", "steering", "simulation", "lines", "singularities", "det_exact",
-           "sweep", "reference",
+           "sweep", "reference", "classes",
            "design", "motion_kappa"]

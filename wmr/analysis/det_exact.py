@@ -68,8 +68,9 @@ def plane_line_matrix(robot, beta, L=1, backend=None):
     symbolic = bk is SYMBOLIC
     if symbolic:
         b = list(robot.beta_symbols) if beta is None else list(V.symbolic_vector("beta", beta, robot.w))
+        b = [bi if u.steered else sp.sympify(u.angle) for bi, u in zip(b, robot.wheels)]   # unsteered: own angle
     else:
-        beta = V.finite_array("beta", beta, last=robot.w)
+        beta = V.robot(robot).effective_beta(beta)
         b = [beta[..., i] for i in range(robot.w)]
     L = V.positive("L", L) if symbolic else V.number("L", V.positive("L", L))
     columns = []

@@ -173,7 +173,7 @@ def forward(robot, beta, rates):
     ([0.0, 0.0, 1.0], True)
     """
     robot = V.numeric_robot(robot)
-    beta = V.finite_array("beta", beta, last=robot.w)
+    beta = robot.effective_beta(beta)
     rates = V.finite_array("rates", rates, last=robot.n_rates)
     K = _constants(robot)
     if not K.full_rank:
@@ -240,7 +240,7 @@ def inverse(robot, beta, twist, beta_dot=None):
     False
     """
     robot = V.numeric_robot(robot)
-    beta = V.finite_array("beta", beta, last=robot.w)
+    beta = robot.effective_beta(beta)
     twist = V.finite_array("twist", twist, last=3)
     arrays = [beta, twist]
     if beta_dot is not None:

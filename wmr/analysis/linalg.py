@@ -52,7 +52,9 @@ def singular_values(A):
     big = np.max(np.abs(A), axis=(-2, -1))
     if np.any(big > 1e150) or np.any((big < 1e-150) & (big > 0)):   # far from 1: scaled, so LAPACK sees no overflow
         m = np.where(big > 0, big, 1.0)[..., None]
-        return _finite("A", singular_values(A / m[..., None]) * m, "its singular values")
+        with np.errstate(over="ignore"):                             # overflow is reported by _finite
+            sv = singular_values(A / m[..., None]) * m
+        return _finite("A", sv, "its singular values")
     return map_matrices(lambda X: np.linalg.svd(X, compute_uv=False), A)
 
 

@@ -61,7 +61,7 @@ def twist_constraints(robot, beta):
     ((3, 3), 3)
     """
     robot = V.numeric_robot(robot)
-    beta = V.finite_array("beta", beta, last=robot.w)
+    beta = robot.effective_beta(beta)
     J1 = robot.J1()
     # R(beta)^T = cos(beta) 1 + sin(beta) E^T (11), so the rows N_i^T R^T [E d_i 1] are
     # cos(beta_i) P_i + sin(beta_i) Q_i with constant P_i = N_i^T J1_i, Q_i = N_i^T E^T J1_i.
@@ -155,7 +155,7 @@ def admissible_twists(robot, beta):
     [0.0, 0.0, 1.0]
     """
     robot = V.numeric_robot(robot)
-    beta = V.finite_array("beta", beta, last=robot.w)
+    beta = robot.effective_beta(beta)
     if beta.ndim != 1:
         raise ValueError(f"beta must be one configuration of shape ({robot.w},) for admissible_twists, "
                          f"got shape {beta.shape}")

@@ -31,7 +31,7 @@ from ..model.platform import wrap_angle
 from ..model.tolerance import TOL
 from .isotropy import characteristic_length
 from .linalg import condition_number, rank
-from .lines import planes_through
+from .lines import AT_INFINITY, FINITE, lines_concurrency, planes_through, wheel_plane_lines
 from .mobility import rank_F
 from .steering import steering_angles
 from .sweep import Grid, sweep
@@ -149,20 +149,28 @@ FAMILIES = {
     "through-C": "wheel planes concurrent at C",
     "through-P": "wheel planes concurrent at a mount point",
     "through-point": "wheel planes concurrent at another point",
+    "other": "rank J < 3",
 }
 
 
-def _family(robot, beta, D):
-    """Short name of a family of singular configurations (``D`` None: planes parallel)."""
+def _family(robot, beta):
+    """Short name of the family of a singular configuration, from where its wheel-plane lines meet."""
     if robot.w == 3 and robot.n_rates == 3 and all(u.kind == "centred" for u in robot.wheels):
         from .singularities import classify
         return classify(robot, beta).family
-    if D is None:
+    P, u = wheel_plane_lines(robot, beta)
+    lined = [k for k, unit in enumerate(robot.wheels) if unit.kind in ("centred", "dual", "fixed")]
+    if len(lined) < 2:
+        return "other"
+    meet = lines_concurrency(P[lined], u[lined])
+    if meet.kind == AT_INFINITY:
         return "parallel"
+    if meet.kind != FINITE:
+        return "other"
     scale = float(np.abs(robot.mount_points).max())
-    if np.linalg.norm(D) <= TOL * scale:
+    if np.linalg.norm(meet.point) <= TOL * scale:
         return "through-C"
-    if np.any(np.linalg.norm(robot.mount_points - D, axis=1) <= TOL * scale):
+    if np.any(np.linalg.norm(robot.mount_points - meet.point, axis=1) <= TOL * scale):
         return "through-P"
     return "through-point"
 
@@ -221,15 +229,15 @@ def singular_families(robot, L=None):
     flip = cands.copy()
     flip[:, np.flatnonzero(steered)[:1]] += np.pi                             # one wheel turned by pi: the "'" families
     cands = np.concatenate([cands, flip])
-    where = [None] * len(dirs) + list(finite)
-    where = where + where
+    effective = getattr(robot, "effective_beta", None)
+    cands = effective(cands) if effective else cands                         # unsteered units at their own angle
     rk = rank(robot.J(cands, L=L))
     rf = rank_F(robot, cands)
     out, seen = [], set()
-    for b, D, r, f in zip(cands, where, rk, rf):
+    for b, r, f in zip(cands, rk, rf):
         if r >= 3:
             continue
-        fam = _family(robot, b, D)
+        fam = _family(robot, b)
         if fam in seen:
             continue
         seen.add(fam)
@@ -332,7 +340,11 @@ def _advice(robot, L):
         radii = sorted({float(u.r) for u in robot.wheels})
         if len(radii) > 1:
             out.append(f"J2: give every wheel the same radius (now {', '.join(f'{r:.4g}' for r in radii)})")
-        if not offs and len(radii) == 1:
+        mec = [k for k, u in enumerate(robot.wheels, 1) if u.kind == "swedish" and abs(np.cos(float(u.roller))) > TOL]
+        if mec:
+            out.append(f"J2: use omni wheels (rollers at 90 deg) on wheel {', '.join(map(str, mec))}: a Swedish "
+                       "wheel's block r[[0, sin g], [-1, -cos g]] has singular values r sqrt(1 +- cos g)")
+        if not offs and not mec and len(radii) == 1:
             out.append("J2: make the singular values of every unit's block equal ("
                        + "; ".join(f"wheel {k}: {', '.join(f'{x:.4g}' for x in s)}" for k, s in enumerate(sv, 1)) + ")")
     return out, {"J_L1": jl1, "J2": bool(j2)}

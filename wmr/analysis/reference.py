@@ -27,6 +27,8 @@ __all__ = ["J2", "F", "J", "rank", "rank_F", "det", "condition_number", "forward
 def J2(robot, beta):
     r""":math:`\mathbf J_2(\boldsymbol\beta)`, block by block: :math:`\mathbf R(\beta_i)\mathbf L_i` (11), (21).
 
+    A unit without a steering joint (fixed, Swedish) uses its own ``angle`` for :math:`\beta_i`.
+
     Parameters
     ----------
     robot : Robot
@@ -40,7 +42,8 @@ def J2(robot, beta):
     beta = V.finite_array("beta", beta, last=robot.w)
     out = np.zeros(beta.shape[:-1] + (2 * robot.w, robot.n_rates))
     for i, (u, sl) in enumerate(zip(robot.wheels, robot.rate_slices)):
-        c, s = np.cos(beta[..., i]), np.sin(beta[..., i])
+        b = beta[..., i] if u.steered else np.full(beta.shape[:-1], float(u.angle))    # unsteered: own angle
+        c, s = np.cos(b), np.sin(b)
         R = np.stack([np.stack([c, -s], -1), np.stack([s, c], -1)], -2)        # (11)
         out[..., 2 * i:2 * i + 2, sl] = R @ np.asarray(u._local_block(NUMERIC), dtype=float)
     return out

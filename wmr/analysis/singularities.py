@@ -248,7 +248,7 @@ def classify(robot, beta, L=None):
     """
     _require_square(robot)
     robot = V.numeric_robot(robot)
-    beta = V.finite_array("beta", beta, last=robot.w)
+    beta = robot.effective_beta(beta)
     if beta.ndim != 1:
         raise ValueError(f"beta must be one configuration of shape (3,) for classify, got shape {beta.shape}")
     dj = float(det_J(robot, beta, L))

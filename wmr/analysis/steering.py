@@ -111,7 +111,8 @@ def steering_angles(robot, twist, current=None):
     :math:`\beta_i = \operatorname{atan2}(\dot p_x, -\dot p_y)`.  Equivalently the axle
     :math:`\mathbf i_i` points at the instantaneous centre.  Where the mount point is still (it
     is the centre, or the twist is zero) every angle is admissible and ``current`` is kept;
-    offset wheels (full mobility) also keep ``current``.  "Still" means
+    offset wheels (full mobility) also keep ``current``; fixed and Swedish wheels (no steering
+    joint) get their own constant angle.  "Still" means
     :math:`\|\dot{\mathbf p}_i\| \le \mathrm{TOL}\,s` with
     :math:`s = \max(|\dot x|, |\dot y|) + |\dot\psi|\max_{i,k}|d_{ik}|`, the size of the terms of
     :math:`\dot{\mathbf p}_i` (the rule of :func:`wmr.model.tolerance.near_zero`).
@@ -146,6 +147,7 @@ def steering_angles(robot, twist, current=None):
     d = robot.mount_points                                             # (w, 2)
     dmax = float(np.abs(d).max())
     keep = np.array([u.kind not in ("centred", "dual") for u in robot.wheels])
+    own = [(i, float(u.angle)) for i, u in enumerate(robot.wheels) if not u.steered]
     N = tw.shape[0]
     beta = np.empty((N, w))
 
@@ -153,17 +155,16 @@ def steering_angles(robot, twist, current=None):
         psi, cx, cy = tw[a:b, 0:1], tw[a:b, 1:2], tw[a:b, 2:3]
         pdot = point_velocity(tw[a:b, None, :], d)                     # (2): c_dot + psi_dot E d_i
         px, py = pdot[..., 0], np.negative(pdot[..., 1])               # j_i = -p_dot_i / |p_dot_i|
-        # the mount point is still when |p_dot| <= TOL scale (relative): compared squared, no sqrt
+        # the mount point is still when |p_dot| <= TOL scale (relative); hypot: no overflow of squares
         scale = np.maximum(np.abs(cx), np.abs(cy))
         scale += np.abs(psi) * dmax
         scale *= TOL
-        scale *= scale
-        free = px * px
-        free += py * py
-        free = free <= scale
+        free = np.hypot(px, py) <= scale
         free |= keep
         np.arctan2(px, py, out=beta[a:b])
         np.copyto(beta[a:b], 0.0 if cur is None else cur[a:b], where=free)
+        for i, angle in own:                                           # fixed and Swedish: their own angle
+            beta[a:b, i] = angle
 
     for_chunks(chunk, N)
     return beta.reshape(batch + (w,))

@@ -14,7 +14,8 @@ angle, and rolls backwards in the second case) and the rates
 :func:`wmr.inverse` at those angles, in the order of :attr:`wmr.Robot.rate_names` (rad/s).  The
 twist is admissible when no wheel slips at those angles (a fixed-wheel robot cannot realise every
 twist); it is admissible *without re-steering* when no wheel slips at the current angles
-(``--current-angles``, degrees, one per unit; default 0).
+(``--current-angles``, degrees, one per unit; default 0; the entries of fixed and Swedish wheels are
+ignored: they keep their own angle).
 """
 from __future__ import annotations
 
@@ -24,7 +25,7 @@ import sys
 
 import numpy as np
 
-from ._numbers import fmt, number, numbers
+from ._numbers import clean, fmt, number, numbers
 
 __all__ = ["HELP", "add_arguments", "run"]
 
@@ -85,6 +86,8 @@ def run(args):
         twist = np.array([number(args.omega, "--omega"), number(args.vx, "--vx"), number(args.vy, "--vy")])
         current = np.zeros(robot.w) if args.current_angles is None else np.radians(
             numbers(args.current_angles, "--current-angles", robot.w, "one angle in degrees per wheel unit"))
+        if hasattr(robot, "effective_beta"):
+            current = robot.effective_beta(current)               # fixed and Swedish wheels: their own angle
         beta = wmr.steering_angles(robot, twist, current)
         if args.current_angles is not None:
             beta = _nearest(robot, beta, current)
@@ -103,8 +106,9 @@ def run(args):
         return 0
     print(f"twist: omega = {fmt(twist[0])} rad/s, vx = {fmt(twist[1])} m/s, vy = {fmt(twist[2])} m/s (body frame)")
     rows = [("wheel", "type", "angle_deg", "resteer_deg", "rates (rad/s)")]
+    shown = clean(sol.value, float(np.abs(sol.value).max(initial=0.0)))           # rounding noise shown as 0
     for k, (u, sl) in enumerate(zip(robot.wheels, robot.rate_slices)):
-        rates = ", ".join(f"{n} = {fmt(v)}" for n, v in zip(robot.rate_names[sl], sol.value[sl]))
+        rates = ", ".join(f"{n} = {fmt(v)}" for n, v in zip(robot.rate_names[sl], shown[sl]))
         rows.append((str(k + 1), u.kind, fmt(math.degrees(beta[k]), 5), fmt(math.degrees(change[k]), 5), rates))
     widths = [max(len(r[i]) for r in rows) for i in range(4)]
     for r in rows:

@@ -31,9 +31,9 @@ class Robot:
 
     Parameters
     ----------
-    wheels : sequence of OffsetWheel, CentredWheel or DualWheel
+    wheels : sequence of OffsetWheel, CentredWheel, DualWheel, FixedWheel or SwedishWheel
         The wheel units in their numbering order (wheel 1 first); any number >= 1, any mount
-        points, mixed types.
+        points, mixed types; a configuration has one entry per unit (:meth:`effective_beta`).
     name : str, optional
 
     Examples
@@ -81,6 +81,11 @@ class Robot:
     def w(self):
         """Number of wheel units."""
         return len(self.wheels)
+
+    @property
+    def steered(self):
+        """Tuple of w bools: True for units with a steering joint (offset, centred, dual); see :meth:`effective_beta`."""
+        return tuple(bool(u.steered) for u in self.wheels)
 
     @property
     def n_rates(self):
@@ -144,12 +149,40 @@ class Robot:
         return np.concatenate([column_norms(bot.J1(backend=NUMERIC)), rates])
 
     # --- matrices -------------------------------------------------------------------------------
+    def effective_beta(self, beta):
+        r"""The configuration the model uses: ``beta`` with each unsteered unit's entry set to its own angle.
+
+        Fixed and Swedish wheels have no steering joint: their entries are replaced by their ``angle``.
+
+        Parameters
+        ----------
+        beta : array (..., w)
+            Steering angles (radians).
+
+        Returns
+        -------
+        numpy.ndarray (..., w)
+            A checked float array (``beta`` itself when every unit is steered, else a copy).
+
+        Examples
+        --------
+        >>> from wmr import CentredWheel, FixedWheel
+        >>> bot = Robot([CentredWheel((1, 0), r=0.1), FixedWheel((-1, 0), r=0.1, angle=0.5)])
+        >>> bot.effective_beta([[0.1, 0.2], [0.3, 0.4]]).tolist()
+        [[0.1, 0.5], [0.3, 0.5]]
+        """
+        beta = V.finite_array("beta", beta, last=self.w)
+        own = [i for i, u in enumerate(self.wheels) if not u.steered]
+        if own:                                             # (a copy: the caller's array is not changed)
+            beta = beta.copy()
+            beta[..., own] = [V.number("angle", self.wheels[i].angle) for i in own]
+        return beta
+
     def _beta(self, beta, bk):
         if bk is SYMBOLIC:
-            if beta is None:
-                return list(self.beta_symbols)
-            return list(V.symbolic_vector("beta", beta, self.w))
-        return V.finite_array("beta", beta, last=self.w)
+            b = list(self.beta_symbols) if beta is None else list(V.symbolic_vector("beta", beta, self.w))
+            return [b[i] if u.steered else sp.sympify(u.angle) for i, u in enumerate(self.wheels)]
+        return self.effective_beta(beta)
 
     def J1(self, L=1, backend=None):
         r"""Platform Jacobian :math:`\mathbf J_1` (21), or :math:`\mathbf J_{L1}` (32) for ``L != 1``.
@@ -330,8 +363,8 @@ class Robot:
         :math:`\\mathbf d_i' = \\mathbf R(-\\text{angle})(\\mathbf d_i - \\text{origin})`, and steering
         angles shift by ``-angle``.  A twist transforms as
         :math:`\\dot\\psi' = \\dot\\psi`, :math:`\\dot{\\mathbf c}' = \\mathbf R(-\\text{angle})(\\dot{\\mathbf c} +
-        \\dot\\psi\\mathbf E\\,\\text{origin})`; joint rates do not change.  Used to check that
-        results do not depend on the body frame.
+        \\dot\\psi\\mathbf E\\,\\text{origin})`; joint rates do not change (the angles of fixed and Swedish
+        wheels shift by ``-angle``).  Used to check that results do not depend on the body frame.
 
         Parameters
         ----------
@@ -362,6 +395,7 @@ class Robot:
         try:
             if not all(np.isfinite(float(v)) for p in moved for v in p if not isinstance(v, sp.Basic)):
                 raise ValueError("their coordinates overflow")
-            return Robot([dataclasses.replace(u, position=p) for u, p in zip(self.wheels, moved)], name=self.name)
+            return Robot([dataclasses.replace(u, position=p, **({} if u.steered else {"angle": u.angle - angle}))
+                          for u, p in zip(self.wheels, moved)], name=self.name)
         except ValueError as e:
             raise ValueError(f"origin = {V.show(origin)} is too far from the mount points ({e})") from None

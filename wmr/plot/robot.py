@@ -227,7 +227,8 @@ def draw_unit(ax, unit, beta, pose=(0.0, 0.0, 0.0), *, ghost=False, zorder=4.0, 
     unit : wheel unit
         One of ``robot.wheels``.
     beta : float
-        Its steering angle (radians).
+        Its steering angle (radians); a unit without a steering joint (fixed, Swedish) is drawn
+        at its own angle, without a pivot, and a Swedish wheel's disc is crossed along its rollers.
     pose : sequence (3,), optional
         :math:`(\psi, X, Y)`.
     ghost : bool, optional
@@ -243,7 +244,8 @@ def draw_unit(ax, unit, beta, pose=(0.0, 0.0, 0.0), *, ghost=False, zorder=4.0, 
     P, H : numpy.ndarray (2,)
         The unit's steering-axis point and centre (world).
     """
-    pts = unit.points(float(beta))
+    beta = float(beta) if unit.steered else float(unit.angle)
+    pts = unit.points(beta)
     P = to_world(pose, pts["P"])
     H = to_world(pose, pts["H"])
     heading = pose[0] + float(beta)
@@ -257,8 +259,17 @@ def draw_unit(ax, unit, beta, pose=(0.0, 0.0, 0.0), *, ghost=False, zorder=4.0, 
         wh = to_world(pose, pts["wheels"])
         ax.plot(*wh.T, color=ROLE["body"], linewidth=lw, linestyle=ls, zorder=zorder - 0.1)
     for c in to_world(pose, pts["wheels"]):
-        draw_wheel(ax, c, heading, r, ghost=ghost, arrow=show_j, zorder=zorder, light=light)
-    draw_pivot(ax, P, 0.16 * r, ghost=ghost, zorder=zorder + 1)
+        draw_wheel(ax, c, heading, r, ghost=ghost, arrow=show_j and unit.kind != "swedish", zorder=zorder, light=light)
+    if unit.kind == "swedish":
+        a = heading + float(unit.roller)                     # the roller axes, across the disc
+        half = min(0.21 * r / max(abs(np.cos(float(unit.roller))), 1e-3), 0.25 * r)   # across the tyre
+        ends = half * np.array([np.cos(a), np.sin(a)])
+        jdir = np.array([-np.sin(heading), np.cos(heading)])
+        for k in (-0.6, 0.0, 0.6):
+            m = H + k * r * jdir
+            ax.plot(*np.stack([m - ends, m + ends]).T, color="white", linewidth=0.8, zorder=zorder + 0.1)
+    if unit.steered:
+        draw_pivot(ax, P, 0.16 * r, ghost=ghost, zorder=zorder + 1)
     return P, H
 
 

@@ -18,7 +18,7 @@ __all__ = ["wheel_plane_lines", "axle_lines", "concurrency_point", "axles_concur
 def _unit_points(robot, beta):
     """Each unit's points and axes (``unit.points``) at the steering angles ``beta (..., w)``."""
     robot = V.numeric_robot(robot)
-    beta = V.finite_array("beta", beta, last=robot.w)
+    beta = robot.effective_beta(beta)
     return [u.points(beta[..., i]) for i, u in enumerate(robot.wheels)]
 
 
@@ -65,7 +65,7 @@ def _one(robot, beta, what):
     robot = V.numeric_robot(robot)
     if robot.w < 2:
         raise ValueError(f"robot must have at least two wheel units for {what} (lines to meet), got {V.show(robot)}")
-    beta = V.finite_array("beta", beta, last=robot.w)
+    beta = robot.effective_beta(beta)
     if beta.ndim != 1:
         raise ValueError(f"beta must be one configuration of shape ({robot.w},) for {what}, got shape {beta.shape}")
     return beta
@@ -117,13 +117,14 @@ def planes_through(robot, D):
     Returns
     -------
     numpy.ndarray (..., w)
+        (Fixed and Swedish wheels cannot turn: their entries are their own angles.)
     """
     robot = V.numeric_robot(robot)
     D = V.finite_array("D", D, last=2)
     v = D[..., None, :] - robot.mount_points                        # (..., w, 2)
     beta = np.arctan2(-v[..., 0], v[..., 1])                       # j = (-sin b, cos b) || v
     beta = np.where(_at(v, robot, D), 0.0, beta)
-    return line_angle(beta)
+    return robot.effective_beta(line_angle(beta))                 # fixed, Swedish: their own angle
 
 
 def axles_through(robot, U):
@@ -137,13 +138,14 @@ def axles_through(robot, U):
     Returns
     -------
     numpy.ndarray (..., w), in :math:`(-\pi/2, \pi/2]`
+        (except fixed and Swedish wheels: their own angles).
     """
     robot = V.numeric_robot(robot)
     U = V.finite_array("U", U, last=2)
     v = U[..., None, :] - robot.mount_points
     beta = np.arctan2(v[..., 1], v[..., 0])                        # i = (cos b, sin b) || v
     beta = np.where(_at(v, robot, U), 0.0, beta)
-    return line_angle(beta)
+    return robot.effective_beta(line_angle(beta))                 # fixed, Swedish: their own angle
 
 
 def _at(v, robot, X):

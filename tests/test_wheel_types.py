@@ -1,0 +1,265 @@
+"""wmr.model.wheels_fixed: the fixed and Swedish wheels against first principles, and every analysis on robots with them."""
+import dataclasses
+
+import numpy as np
+import pytest
+import sympy as sp
+from hypothesis import given
+from hypothesis import strategies as st
+
+import wmr
+from wmr.analysis import lines, reference
+from wmr.model.wheels import UNIT_TYPES
+
+from conftest import K, angles, axle, coords, lengths, rolling_dir, seeds, transform_twist, vec3
+
+PI = np.pi
+
+
+def omni3(L=0.3, r=0.05):
+    """Three omni wheels, axles radial."""
+    return wmr.Robot([wmr.SwedishWheel(tuple(p), r=r, angle=float(np.arctan2(p[1], p[0])), roller=PI / 2)
+                      for p in wmr.equilateral_mounts(L)], name="three omni wheels")
+
+
+def mecanum4(a=0.3, b=0.2, r=0.05):
+    """Four mecanum wheels rolling along body x (axles along y), rollers of both hands (X layout)."""
+    pts = [(a, b), (a, -b), (-a, b), (-a, -b)]
+    return wmr.Robot([wmr.SwedishWheel(p, r=r, angle=PI / 2, roller=PI / 4 if p[0] * p[1] > 0 else -PI / 4)
+                      for p in pts], name="four mecanum wheels")
+
+
+def diff_castor(s=0.2, r=0.05):
+    return wmr.Robot([wmr.FixedWheel((0.0, s), r=r, angle=PI / 2), wmr.FixedWheel((0.0, -s), r=r, angle=PI / 2),
+                      wmr.OffsetWheel((-0.3, 0.0), r=0.03, d=0.03)], name="differential drive + castor")
+
+
+def mixed():
+    return wmr.Robot([wmr.SwedishWheel((0.4, 0.1), r=0.06, angle=0.3, roller=-PI / 4),
+                      wmr.FixedWheel((-0.2, 0.5), r=0.05, angle=1.1), wmr.CentredWheel((-0.3, -0.4), r=0.04),
+                      wmr.OffsetWheel((0.1, -0.6), r=0.03, d=0.02)])
+
+
+# --------------------------------------------------------------------------- first principles
+def hub_velocity(kind, beta, r, rates, roller=None):
+    """Velocity of the hub from no slip at the contact point (3D cross products, no wmr).
+
+    Fixed wheel: omega = theta_dot i, v_H = omega x (r k).  Swedish wheel: the roller (axis a,
+    horizontal) spins at sigma_dot about a; with a contact radius r the hub moves by
+    (theta_dot i + sigma_dot a) x (r k) (see SwedishWheel's docstring for a general roller radius).
+    """
+    i3 = vec3(axle(beta))
+    omega = rates[0] * i3
+    if kind == "swedish":
+        a3 = vec3(axle(beta + roller))                   # the roller axis: the axle turned by gamma
+        omega = omega + rates[1] * a3
+    return np.cross(omega, r * K)[:2]
+
+
+@given(coords, coords, lengths, angles, angles, seeds)
+def test_fixed_wheel_block_is_no_slip_and_ignores_beta(x, y, r, angle, beta, seed):
+    unit = wmr.FixedWheel((x, y), r=r, angle=angle)
+    rate = np.random.default_rng(seed).normal(size=1)
+    want = hub_velocity("fixed", angle, r, rate)
+    assert np.allclose(unit.block(beta) @ rate, want, atol=1e-12 * max(1.0, r))
+    assert np.allclose(unit.block(beta), wmr.CentredWheel((x, y), r=r).block(angle), rtol=0, atol=1e-15 * max(1, r))
+    pts = unit.points(np.full(3, beta))
+    assert np.allclose(pts["i"], axle(angle)) and np.allclose(pts["j"], rolling_dir(angle))
+    assert np.allclose(pts["H"], (x, y))
+
+
+@given(coords, coords, lengths, angles, st.floats(-1.5, 1.5).filter(lambda g: abs(g) > 0.05), angles, seeds)
+def test_swedish_block_is_no_slip(x, y, r, angle, roller, beta, seed):
+    unit = wmr.SwedishWheel((x, y), r=r, angle=angle, roller=roller)
+    rates = np.random.default_rng(seed).normal(size=2)
+    assert np.allclose(unit.block(beta) @ rates, hub_velocity("swedish", angle, r, rates, roller), atol=1e-12 * max(1, r))
+
+
+@given(coords, coords, lengths, angles, st.floats(-1.5, 1.5).filter(lambda g: abs(g) > 0.05), seeds)
+def test_swedish_wheel_constraint_is_along_the_roller_axis(x, y, r, angle, roller, seed):
+    """Any twist is realised (det L = r^2 sin g), and a^T v_P = -r sin(g) theta_dot is the only relation."""
+    bot = wmr.Robot([wmr.SwedishWheel((x, y), r=r, angle=angle, roller=roller)])
+    t = np.random.default_rng(seed).normal(size=3)
+    sol = wmr.inverse(bot, [0.0], t)
+    assert bool(sol.admissible)
+    v = np.array([t[1] - t[0] * y, t[2] + t[0] * x])            # hub velocity c_dot + psi_dot k x d, by hand
+    a = np.array([np.cos(angle + roller), np.sin(angle + roller)])
+    assert np.allclose(a @ v, -r * np.sin(roller) * sol.value[0], rtol=1e-9, atol=1e-12)
+    assert np.allclose(hub_velocity("swedish", angle, r, sol.value, roller), v, rtol=1e-9, atol=1e-12)
+    assert np.allclose(bot.wheels[0].roller_axis(), a)
+
+
+def test_omni_and_mecanum_blocks_by_hand():
+    omni = wmr.SwedishWheel((0.0, 0.0), r=2.0, angle=0.0, roller=PI / 2)
+    assert np.allclose(omni.block(0.7), [[0.0, 2.0], [-2.0, 0.0]])   # rolls along j, free along the axle i
+    s = np.sqrt(0.5)
+    mec = wmr.SwedishWheel((0.0, 0.0), r=1.0, angle=PI / 2, roller=-PI / 4)
+    # R(pi/2) [[0, r sin g], [-r, -r cos g]] with g = -pi/4
+    assert np.allclose(mec.block(0.0), [[1.0, s], [0.0, -s]])
+    exact = wmr.SwedishWheel((0, 0), r=1, angle=sp.pi / 2, roller=sp.pi / 4).block(sp.Symbol("b"))
+    assert exact == sp.Matrix([[1, sp.sqrt(2) / 2], [0, sp.sqrt(2) / 2]])
+    assert mec.rate_names(3) == ("theta_dot_3", "sigma_dot_3") and len(mec.rate_symbols(3)) == 2
+
+
+def test_unit_types_and_steered():
+    assert {t.kind for t in UNIT_TYPES} == {"offset", "centred", "dual", "fixed", "swedish"}
+    assert wmr.FixedWheel in UNIT_TYPES and wmr.SwedishWheel in UNIT_TYPES
+    assert mixed().steered == (False, False, True, True)
+    assert wmr.paper_robot("dual").steered == (True, True, True)
+    bot = mixed()
+    assert bot.rate_names == ("theta_dot_1", "sigma_dot_1", "theta_dot_2", "theta_dot_3", "phi_dot_4", "theta_dot_4")
+    assert np.allclose(bot.F_column_norms[3:], [0.06, 0.06, 0.05, 0.04, 0.02, 0.03])
+
+
+# --------------------------------------------------------------------------- the robot ignores their entries
+@pytest.mark.parametrize("make", [mixed, diff_castor, mecanum4, omni3])
+def test_unsteered_entries_are_ignored_everywhere(make):
+    bot = make()
+    rng = np.random.default_rng(5)
+    b1 = rng.uniform(-PI, PI, (7, bot.w))
+    b2 = b1.copy()
+    unsteered = ~np.array(bot.steered)
+    b2[:, unsteered] = rng.uniform(-PI, PI, (7, int(unsteered.sum())))
+    eff = bot.effective_beta(b1)
+    assert np.allclose(eff, bot.effective_beta(b2))
+    assert np.allclose(eff[:, unsteered], [float(u.angle) for u in bot.wheels if not u.steered])
+    assert np.allclose(eff[:, ~unsteered], b1[:, ~unsteered])
+    t = rng.normal(size=(7, 3))
+    rates = rng.normal(size=(7, bot.n_rates))
+    same = [lambda b: bot.J2(b), lambda b: bot.F(b), lambda b: bot.J(b, L=0.5), lambda b: wmr.rank_F(bot, b),
+            lambda b: wmr.mobility(bot, b), lambda b: wmr.inverse(bot, b, t).value, lambda b: wmr.forward(bot, b, rates).value,
+            lambda b: reference.J2(bot, b), lambda b: lines.axle_lines(bot, b)[1],
+            lambda b: wmr.admissible_twists(bot, b[0])]
+    for f in same:
+        assert np.allclose(f(b1), f(b2))
+    # the kernels agree with the dense reference (which uses each unit's own angle, independently)
+    assert np.allclose(bot.J2(b1), reference.J2(bot, b1), atol=1e-15)
+    assert np.array_equal(wmr.rank_F(bot, b1), reference.rank_F(bot, b1))
+    S = bot.J2(None)                                   # symbolic: their columns have no beta symbol
+    for i, (u, sl) in enumerate(zip(bot.wheels, bot.rate_slices)):
+        syms = S[2 * i:2 * i + 2, sl].free_symbols
+        assert (syms == set()) if not u.steered else (syms <= {bot.beta_symbols[i]})
+
+
+def test_steering_angles_return_the_own_angles():
+    bot = mixed()
+    beta = wmr.steering_angles(bot, np.random.default_rng(1).normal(size=(5, 3)), current=np.full((5, 4), 0.25))
+    assert np.allclose(beta[:, 0], 0.3) and np.allclose(beta[:, 1], 1.1)
+    assert np.allclose(beta[:, 3], 0.25)                                   # offset: current kept
+
+
+def test_line_helpers_return_the_own_angles():
+    bot = mixed()
+    for f in (lines.planes_through, lines.axles_through):
+        beta = f(bot, np.random.default_rng(2).normal(size=(3, 2)))
+        assert beta.shape == (3, 4) and np.allclose(beta[:, :2], [0.3, 1.1])
+    from wmr.analysis.det_exact import plane_line_matrix
+    M = plane_line_matrix(bot, None, L=1)                     # symbolic: only the steered units have symbols
+    assert M[:, :2].free_symbols == set() and M[:, 2].free_symbols == {bot.beta_symbols[2]}
+    assert np.allclose(np.array(M[:, :2].evalf(), float), plane_line_matrix(bot, np.zeros(4), L=1)[:, :2])
+
+
+def test_swedish_robots_realise_every_twist():
+    for bot in (omni3(), mecanum4()):
+        rng = np.random.default_rng(2)
+        beta, t = rng.uniform(-PI, PI, (20, bot.w)), rng.normal(size=(20, 3))
+        assert np.all(wmr.mobility(bot, beta) == 3)          # rank F = sum rank L_i = 2w: no twist constraint
+        inv = wmr.inverse(bot, beta, t)
+        assert inv.admissible.all()
+        assert np.allclose(wmr.forward(bot, beta, inv.value).value, t)
+        # the driven wheel rates alone determine the twist: a^T [E d 1] t = -r sin(g) theta_dot, rank 3
+        rows = np.array([u.roller_axis() @ bot.J1()[2 * i:2 * i + 2] for i, u in enumerate(bot.wheels)])
+        assert wmr.rank(rows) == 3
+        assert np.allclose(rows @ t[0], [-u.r * np.sin(u.roller) * inv.value[0, 2 * i] for i, u in enumerate(bot.wheels)])
+
+
+def test_same_handed_mecanum_cannot_be_driven_sideways_by_its_wheels():
+    """All rollers of one hand: the wheel-rate map loses rank (why SwedishWheel accepts negative roller angles)."""
+    pts = [(0.3, 0.2), (0.3, -0.2), (-0.3, 0.2), (-0.3, -0.2)]
+    bot = wmr.Robot([wmr.SwedishWheel(p, r=0.05, angle=0.0, roller=PI / 4) for p in pts])
+    rows = np.array([u.roller_axis() @ bot.J1()[2 * i:2 * i + 2] for i, u in enumerate(bot.wheels)])
+    assert wmr.rank(rows) == 2
+
+
+def test_fixed_wheels_constrain_the_twist():
+    bot = diff_castor()
+    beta = np.random.default_rng(3).uniform(-PI, PI, (10, 3))
+    assert np.all(wmr.mobility(bot, beta) == 2)     # 3 + 4 rates - (4 + 1 constraint: both axles along y)
+    # admissible twists: spin about C and drive along x (the fixed wheels roll along body x)
+    basis = wmr.admissible_twists(bot, beta[0])
+    assert basis.shape == (3, 2) and np.allclose(basis[2], 0)
+    assert not bool(wmr.inverse(bot, beta[0], [0.0, 0.0, 1.0]).admissible)      # sideways: slip
+    sol = wmr.inverse(bot, [9.0, -9.0, 0.4], [0.5, 1.0, 0.0])                # the castor realises anything
+    assert bool(sol.admissible)
+    # wheel speeds of a differential drive: hub speed v -/+ omega s along x = -r theta_dot j, j = (-1, 0)
+    assert np.allclose(sol.value[:2], [(1.0 - 0.5 * 0.2) / 0.05, (1.0 + 0.5 * 0.2) / 0.05])
+
+
+def test_simulated_differential_drive_drives_straight():
+    bot = diff_castor()       # equal wheel rates, the castor trailing (axle along y) and rolling at the same speed
+    traj = wmr.simulate(bot, [20.0, 20.0, 0.0, 1.0 / 0.03], [0.0, 0.0, PI / 2], t_end=0.5, dt=0.01)
+    assert np.allclose(traj.beta, traj.beta[0])                     # nothing turns
+    assert np.allclose(traj.twist, [0.0, 1.0, 0.0]) and np.allclose(traj.slip, 0, atol=1e-12)
+    assert np.allclose(traj.pose[-1], [0.0, 0.5, 0.0])
+
+
+def test_moved_keeps_the_robot():
+    bot = mixed()
+    origin, angle = (0.3, -0.2), 0.7
+    moved = bot.moved(origin, angle)
+    assert np.isclose(moved.wheels[0].angle, 0.3 - 0.7) and np.isclose(moved.wheels[1].angle, 1.1 - 0.7)
+    rng = np.random.default_rng(4)
+    beta, t = rng.uniform(-PI, PI, (6, 4)), rng.normal(size=(6, 3))
+    assert np.array_equal(wmr.rank_F(bot, beta), wmr.rank_F(moved, beta - angle))
+    a = wmr.inverse(bot, beta, t)
+    b = wmr.inverse(moved, beta - angle, transform_twist(t, origin, angle))
+    assert np.allclose(a.value, b.value) and np.array_equal(a.admissible, b.admissible)
+
+
+def test_sweep_and_drawing():
+    bot = mixed()
+    sw = wmr.sweep(bot, "rank_F", wmr.analysis.sweep.Sample(200, seed=1))
+    assert sw.min == sw.max == 8          # sum rank L_i = 2 + 1 + 1 + 2, plus the fixed and centred rows
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from wmr.plot.robot import draw_robot
+    fig, ax = plt.subplots()
+    for b in (omni3(), mecanum4(), diff_castor(), bot):
+        draw_robot(ax, b, np.zeros(b.w))
+    plt.close(fig)
+
+
+# --------------------------------------------------------------------------- bad input
+@pytest.mark.parametrize("kwargs, exc, word", [
+    (dict(roller=0.0), ValueError, "roller"), (dict(roller=1e-12), ValueError, "roller"),
+    (dict(roller=2.0), ValueError, "roller"), (dict(roller=-PI / 2), ValueError, "roller"),
+    (dict(roller="45"), TypeError, "roller"), (dict(roller=sp.Symbol("g")), TypeError, "roller"),
+    (dict(roller=np.nan), ValueError, "roller"), (dict(angle=None), TypeError, "angle"),
+    (dict(angle=np.inf), ValueError, "angle"), (dict(angle=[0.1]), TypeError, "angle"),
+    (dict(r=-1.0), ValueError, "r"), (dict(position=(1.0,)), ValueError, "position"),
+])
+def test_bad_swedish_wheel(kwargs, exc, word):
+    args = dict(position=(0.0, 0.0), r=0.1, angle=0.0, roller=PI / 4) | kwargs
+    with pytest.raises(exc, match=rf"\b{word}\b"):
+        wmr.SwedishWheel(**args)
+
+
+@pytest.mark.parametrize("kwargs, exc", [(dict(angle="0"), TypeError), (dict(angle=10**400), ValueError),
+                                         (dict(angle=True), TypeError), (dict(r=0), ValueError)])
+def test_bad_fixed_wheel(kwargs, exc):
+    args = dict(position=(0.0, 0.0), r=0.1, angle=0.0) | kwargs
+    with pytest.raises(exc, match=rf"\b{next(iter(kwargs))}\b"):
+        wmr.FixedWheel(**args)
+
+
+def test_bad_beta_is_still_rejected_for_unsteered_units():
+    bot = mixed()
+    with pytest.raises(ValueError, match=r"\bbeta\b"):
+        bot.effective_beta(np.zeros(3))
+    with pytest.raises(ValueError, match=r"\bbeta\b"):
+        bot.wheels[0].block([np.nan])
+    with pytest.raises(TypeError, match=r"\bbeta\b"):
+        bot.wheels[1].points("a")
+    with pytest.raises(ValueError, match=r"\broller\b"):
+        dataclasses.replace(bot.wheels[0], roller=0)
