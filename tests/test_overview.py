@@ -21,7 +21,7 @@ def test_configurations_hold_the_grid_and_the_motion_configurations():
 
 def test_configurations_have_at_least_four_values_per_angle():
     bot = wmr.paper_robot("offset", d=0.5)
-    assert configurations(bot, grid=8, twists=0).shape == (4 ** 3 + 4 + 3, 3)
+    assert configurations(bot, grid=16, twists=0).shape == (4 ** 3 + 4 + 3, 3)
 
 
 def test_configurations_grid_only_the_steered_angles():
@@ -102,3 +102,12 @@ def test_fixed_wheels_keep_their_angles_and_meet_only_at_infinity():
     m = overview(wmr.load(EXAMPLES / "mecanum4.toml"), grid=100, twists=10)
     assert np.isclose(m.kappa_J2, 1 + np.sqrt(2)) and "omni" in m.advice[0]             # sqrt((1 + c) / (1 - c))
     assert overview(wmr.load(EXAMPLES / "omni3.toml"), grid=100, twists=10).isotropic == {"J_L1": True, "J2": True}
+
+
+def test_many_steered_units_get_a_sample_not_a_huge_grid():
+    ring = [(np.cos(a), np.sin(a)) for a in np.linspace(0, 2 * np.pi, 12, endpoint=False)]
+    bot = wmr.Robot([wmr.CentredWheel(p, r=0.1) for p in ring])                 # 4 ** 12 = 1.7e7 grid points
+    beta = configurations(bot, grid=500, twists=10)
+    assert beta.shape == (500 + 4 + 12 + 10, 12)
+    o = overview(bot, grid=500, twists=10)
+    assert (o.rank_F, o.rank_F_range) == (12 + 3, (12 + 2, 12 + 3))              # generic rank F = w + 3

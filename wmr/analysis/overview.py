@@ -35,7 +35,7 @@ from .linalg import condition_number, rank
 from .lines import AT_INFINITY, FINITE, lines_concurrency, planes_through, wheel_plane_lines
 from .mobility import rank_F
 from .steering import steering_angles
-from .sweep import Grid, sweep
+from .sweep import Grid, Sample, sweep
 
 __all__ = ["FAMILIES", "Overview", "configurations", "dead_zone_radius", "singular_families", "overview"]
 
@@ -54,7 +54,8 @@ def configurations(robot, grid=GRID_SIZE, twists=TWISTS, seed=0):
         A numeric robot.
     grid : int, optional
         About how many grid configurations (each steered angle takes
-        ``max(4, floor(grid ** (1 / s)))`` values in :math:`[-\\pi, \\pi)` for ``s`` steered units).
+        ``max(4, floor(grid ** (1 / s)))`` values in :math:`[-\\pi, \\pi)` for ``s`` steered units;
+        when that would make more than ``4 * grid`` configurations, ``grid`` random ones instead).
     twists : int, optional
         How many random twists' steering angles (:func:`wmr.steering_angles`) to add, besides
         the translations along the body axes and the spins about C and about each mount point.
@@ -81,8 +82,11 @@ def configurations(robot, grid=GRID_SIZE, twists=TWISTS, seed=0):
     parts = []
     if s:
         steps = max(4, int(np.floor(grid ** (1.0 / s) + 1e-9)))
-        g = Grid(steps)
-        sub = g.configurations(s, 0, g.size(s))
+        if steps ** s <= 4 * grid:
+            g = Grid(steps)
+            sub = g.configurations(s, 0, g.size(s))
+        else:                                        # many steered units: a seeded sample of the same size
+            sub = Sample(grid, seed=seed).configurations(s, 0, grid)
         full = np.zeros((sub.shape[0], w))
         full[:, steered] = sub
         parts.append(full)
