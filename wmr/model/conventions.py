@@ -26,6 +26,13 @@ Offset
     gives (9) with the printed signs.
 Dual wheel
     Wheel 1 at :math:`H_i + b\,\mathbf i_i`, wheel 2 at :math:`H_i - b\,\mathbf i_i`, :math:`H_i = P_i`.
+Fixed and Swedish wheels
+    No steering joint: :math:`\beta_i` is the unit's constant ``angle`` (0: axle along the body x
+    axis), and the robot's configuration entry for the unit is ignored
+    (:meth:`wmr.Robot.effective_beta`).  A Swedish wheel's rollers are at ``roller`` =
+    :math:`\gamma` from the axle, counter-clockwise (:math:`\pi/2` omni, :math:`\pm\pi/4` mecanum);
+    its second rate :math:`\dot\sigma_i` moves the hub along the rollers' rolling direction
+    (:class:`wmr.SwedishWheel`).
 Numbering
     Wheels are numbered in the order given to :class:`wmr.Robot`.  The paper's three-wheel robot
     (:func:`wmr.paper_robot`) has :math:`\mathbf d_1 = L(-1,0)`, :math:`\mathbf d_2 = L(\tfrac12,
@@ -48,8 +55,9 @@ Where things live
     (:math:`\mathbf J_1, \mathbf J_2, \mathbf F, \mathbf J`), ready-made robots, and these conventions.
 :mod:`wmr.analysis`
     What can be computed for *any* robot (every function takes one; none defaults to the
-    paper's): linear algebra, mobility, isotropy, kinematics, steering, simulation, line
-    geometry, singularities, sweeps, and the dense reference the fast kernels are checked against.
+    paper's): linear algebra, mobility, Campion's classes, isotropy, kinematics, steering,
+    simulation, line geometry, singularities, sweeps, and the dense reference the fast kernels are
+    checked against.
 :mod:`wmr.plot`
     Drawing with matplotlib (imported only there: ``import wmr`` does not import matplotlib,
     pandas or IPython).
