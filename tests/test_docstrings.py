@@ -118,12 +118,6 @@ def test_numpydoc_docstring(name, obj):
         assert "Returns" in secs or "Yields" in secs, f"{name}: no 'Returns' section"
 
 
-#: Modules of other workstreams whose docstrings are not yet complete numpydoc (module prefix -> owner).
-#: Their items are still checked; an item that fails is reported as an expected failure naming the
-#: owner, and ``test_pending_modules_still_pending`` fails once a prefix has nothing left to fix.
-PENDING = {"wmr.paper.figures": "figs"}
-
-
 def numpydoc_problems(name, obj):
     """What is missing from the docstring of a module-level function or class (a list of sentences)."""
     doc = inspect.getdoc(obj)
@@ -145,34 +139,11 @@ def numpydoc_problems(name, obj):
     return out
 
 
-def _owner(name):
-    return next((o for prefix, o in PENDING.items() if name == prefix or name.startswith(prefix + ".")), None)
-
-
-OWN = [(n, o) for n, o in MODULE_LEVEL if not _owner(n)]
-
-
-@pytest.mark.parametrize("name, obj", OWN, ids=[n for n, _ in OWN])
+@pytest.mark.parametrize("name, obj", MODULE_LEVEL, ids=[n for n, _ in MODULE_LEVEL])
 def test_module_level_docstrings(name, obj):
     """The rest of the public API of every public module: documented too (dataclass fields under Attributes)."""
     problems = numpydoc_problems(name, obj)
     assert not problems, problems
-
-
-@pytest.mark.parametrize("owner", sorted(set(PENDING.values())))
-def test_pending_modules(owner):
-    """Modules of other streams: checked item by item; an expected failure that counts what is left."""
-    items = [(n, o) for n, o in MODULE_LEVEL if _owner(n) == owner]
-    problems = [p for n, o in items for p in numpydoc_problems(n, o)]
-    if problems:
-        pytest.xfail(f"{owner} stream: {len(problems)} numpydoc gaps in {len(items)} items, e.g. {problems[0]}")
-
-
-def test_pending_modules_still_pending():
-    """The PENDING list only shrinks: a prefix whose items all pass must be removed from it."""
-    done = [prefix for prefix in PENDING
-            if not any(numpydoc_problems(n, o) for n, o in MODULE_LEVEL if n == prefix or n.startswith(prefix + "."))]
-    assert not done, f"all documented now, remove from PENDING: {done}"
 
 
 def test_checker_catches_missing_sections():

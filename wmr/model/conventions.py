@@ -47,24 +47,48 @@ Errors
 
 Where things live
 -----------------
+Four layers, each importing only from the ones above it; ``import wmr`` loads the first two (no
+matplotlib, pandas or IPython).
+
 :mod:`wmr.model`
-    What a robot *is*: the backends (NumPy numbers, SymPy symbols), the tolerance, input checks,
-    the platform (:math:`\mathbf E`, :math:`\mathbf R(\beta)` and the wheel block
-    :math:`\mathbf R(\beta)\mathbf M = \cos\beta\,\mathbf M + \sin\beta\,\mathbf E\mathbf M` of (11),
-    :func:`wmr.model.platform.rotated`), the wheel units, the assembled :class:`wmr.Robot`
-    (:math:`\mathbf J_1, \mathbf J_2, \mathbf F, \mathbf J`), ready-made robots, and these conventions.
+    What a robot *is*: the backends (NumPy numbers, SymPy symbols; :mod:`~wmr.model.backend`), the
+    tolerance, the input checks (:mod:`~wmr.model.validation` for numbers and points,
+    :mod:`~wmr.model.arrays`, :mod:`~wmr.model.robot_checks`), the platform (:math:`\mathbf E`,
+    :math:`\mathbf R(\beta)` and the wheel block :math:`\mathbf R(\beta)\mathbf M = \cos\beta\,\mathbf M +
+    \sin\beta\,\mathbf E\mathbf M` of (11), :func:`wmr.model.platform.rotated`), batched trigonometry
+    (:mod:`~wmr.model.trig`), the wheel units, the assembled :class:`wmr.Robot` (:math:`\mathbf J_1,
+    \mathbf J_2, \mathbf F, \mathbf J`), ready-made robots (:mod:`~wmr.model.robots`), and these
+    conventions.
 :mod:`wmr.analysis`
     What can be computed for *any* robot (every function takes one; none defaults to the
-    paper's): linear algebra, mobility, Campion's classes, isotropy, kinematics, steering,
-    simulation, line geometry, singularities, sweeps, and the dense reference the fast kernels are
-    checked against.
+    paper's): linear algebra, mobility, Campion's classes (:mod:`~wmr.analysis.classes`), isotropy, kinematics, steering, simulation, singularities
+    and the exact :math:`\det\mathbf J`; the packages :mod:`~wmr.analysis.lines` (``geometry``: 2-D
+    lines, concurrency, circumcircle; ``robot``: a robot's axle and wheel-plane lines) and
+    :mod:`~wmr.analysis.sweep` (``configurations``, ``analyses``, ``reduction``, ``execute`` in this
+    process or on Dask, ``result``); design searches (:mod:`~wmr.analysis.design`), a robot at a
+    glance (:mod:`~wmr.analysis.overview`), and the dense reference the fast kernels are checked
+    against (:mod:`~wmr.analysis.reference`).
+:mod:`wmr.swerve`, :mod:`wmr.io`
+    Beside the analyses: swerve-drive practice (module states, limits, optimisation) and robot
+    files (TOML in, TOML out).
 :mod:`wmr.plot`
-    Drawing with matplotlib (imported only there: ``import wmr`` does not import matplotlib,
-    pandas or IPython).
+    Drawing with matplotlib (imported only there): the style, annotations and the robot seen
+    from above (its world geometry, computed without matplotlib, in :mod:`~wmr.plot.geometry`).
 :mod:`wmr.paper`
-    The edition of the paper: its printed forms, symbols, ledger, singular families and figures.
+    The edition of the paper: its printed forms (one module per chapter, ``register``/``printed``),
+    symbols, the ledger of verdicts (:mod:`~wmr.paper.ledger`: ``verdict``, ``markup``, ``rows``,
+    ``store``), the checks (:mod:`~wmr.paper.checks`: one package per chapter, one module per
+    equation group), the exercises (one module per chapter), the singular families, the figures
+    (:mod:`~wmr.paper.figures`: one module per figure, each a ``data`` function returning a data
+    class and a ``draw`` function taking it), the interactive chapter (``state``, ``draw``,
+    ``describe``, ``widgets``) and the notebook helpers (:mod:`~wmr.paper.notebook`).  Where its
+    files are written is always passed in.
 :mod:`wmr.cli`
-    The ``wmr`` command line.
+    The ``wmr`` command line: one module per command (:data:`wmr.cli.COMMANDS`).
+``tools/build`` (in the repository, not in the installed package)
+    The build of the edition: paths and stamps, cached parallel execution of the notebooks, the
+    ledger merge, report assembly and export (HTML, PDF), and its command line
+    (``python -m tools.build``).
 """
 
 __all__ = []

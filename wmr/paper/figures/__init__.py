@@ -45,7 +45,30 @@ FIGURES = {key: importlib.import_module(f"{__name__}.{key}") for key in KEYS}
 
 
 def module(key):
-    """The figure module of ``key``, with a ``ValueError`` naming the known keys for anything else."""
+    """The figure module of ``key``.
+
+    Parameters
+    ----------
+    key : str
+        One of :data:`KEYS`.
+
+    Returns
+    -------
+    module
+        With ``NUMBER``, ``TITLE``, ``PAPER_CAPTION``, ``data``, ``draw`` and ``caption``.
+
+    Raises
+    ------
+    TypeError
+        If ``key`` is not a string.
+    ValueError
+        If it is not a known key (the message names them).
+
+    Examples
+    --------
+    >>> module("fig07").NUMBER
+    '7'
+    """
     if not isinstance(key, str):
         raise TypeError(f"key must be a figure key (str), got {type(key).__name__}")
     if key not in KEYS:
@@ -115,11 +138,27 @@ def show(key, data=None, *, outdir=None, width=None):
 
 
 def write_all(outdir, keys=None, *, csv=True, verbose=False):
-    """Compute and save the figures ``keys`` (default all) into ``outdir``; returns ``{key: data}``.
+    """Compute and save the figures ``keys`` into ``outdir``.
 
     Each figure is written as its files and ``<key>.json`` (its numbers and both captions, what
     the report reads); with ``csv`` also ``singularities.csv`` (:func:`wmr.paper.families.write_csv`,
     which notebook 04 writes too).
+
+    Parameters
+    ----------
+    outdir : str or os.PathLike
+        Created if needed (the caller knows the project; the library does not).
+    keys : sequence of str, optional
+        Keys of :data:`FIGURES` (default: all).
+    csv : bool, optional
+        Also write ``singularities.csv``.
+    verbose : bool, optional
+        Print the time of each figure to stderr.
+
+    Returns
+    -------
+    dict
+        ``{key: data}``: the numbers of each figure written.
     """
     outdir = Path(outdir)
     keys = list(KEYS) if keys is None else list(keys)
@@ -142,7 +181,18 @@ def write_all(outdir, keys=None, *, csv=True, verbose=False):
 
 
 def main(argv=None):
-    """``python -m wmr.paper.figures OUTDIR [KEY ...]``: write the figures (all, or the given keys) into OUTDIR."""
+    """``python -m wmr.paper.figures OUTDIR [KEY ...]``: write the figures (all, or the given keys) into OUTDIR.
+
+    Parameters
+    ----------
+    argv : list of str, optional
+        The arguments (default ``sys.argv[1:]``).
+
+    Returns
+    -------
+    int
+        Exit status: 0, or 2 for a usage error.
+    """
     argv = sys.argv[1:] if argv is None else list(argv)
     if not argv or argv[0] in ("-h", "--help"):
         print(main.__doc__ + "\nkeys: " + " ".join(KEYS))

@@ -30,18 +30,30 @@ class ConventionsData:
 
     Attributes
     ----------
-    psi, beta : float
-        Platform orientation and steering angle drawn, degrees.
-    r, d, b : float
-        Wheel radius, offset and half-track of the dual wheel drawn.
-    i, j : tuple (2,)
-        :math:`\mathbf i_i`, :math:`\mathbf j_i` of the offset wheel at :math:`\beta`.
+    psi : float
+        Platform orientation drawn, degrees.
+    beta : float
+        Steering angle drawn, degrees.
+    r : float
+        Wheel radius.
+    d : float
+        Offset of the offset wheel drawn.
+    b : float
+        Half-track of the dual wheel drawn.
+    i : tuple (2,)
+        :math:`\mathbf i_i` (11) of the offset wheel at :math:`\beta`.
+    j : tuple (2,)
+        :math:`\mathbf j_i` of the offset wheel at :math:`\beta`.
     H_minus_P : tuple (2,)
         :math:`H_i - P_i` of the offset wheel.
     dual_wheels : tuple of 2 (2,)
         Wheel centres of the dual wheel (mounted at the origin).
     mount_points : tuple of 3 (2,)
         The paper's :math:`\mathbf d_1, \mathbf d_2, \mathbf d_3`.
+    robot : wmr.Robot
+        Drawing only: the paper's robot of panel (a).
+    units : tuple
+        Drawing only: the offset and the dual wheel of panels (b) and (c).
     """
 
     psi: float
@@ -59,7 +71,23 @@ class ConventionsData:
 
 
 def data(psi=25.0, beta=35.0, r=0.3, b=0.45):
-    """The conventions at platform angle ``psi`` and steering angle ``beta`` (degrees); a :class:`ConventionsData`."""
+    """The conventions at platform angle ``psi`` and steering angle ``beta``.
+
+    Parameters
+    ----------
+    psi : float, optional
+        Platform orientation (degrees).
+    beta : float, optional
+        Steering angle of the wheels of panels (b) and (c) (degrees).
+    r : float, optional
+        Wheel radius (and offset) of those wheels (units of L).
+    b : float, optional
+        Half-track of the dual wheel (units of L).
+
+    Returns
+    -------
+    ConventionsData
+    """
     bot = paper_robot("centred", L=L_PAPER, r=R_CENTRED)
     ow = OffsetWheel((0.0, 0.0), r=r, d=r)
     dw = DualWheel((0.0, 0.0), r=r, b=b)
@@ -71,7 +99,19 @@ def data(psi=25.0, beta=35.0, r=0.3, b=0.45):
 
 
 def draw(data, fig=None):
-    """Draw the conventions from their data; returns the Figure."""
+    """Draw the conventions from their data.
+
+    Parameters
+    ----------
+    data : ConventionsData
+        The numbers (:func:`data`).
+    fig : matplotlib.figure.Figure, optional
+        Draw into this figure (cleared) instead of a new one.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
     from ...plot import annotate as an
     from ...plot import robot as rd
     from ...plot.style import FONT_SMALL, PALETTE, ROLE, fit_view, new_figure, panel_title, style
@@ -134,7 +174,18 @@ def _exact(point):
 
 
 def caption(data):
-    """Our caption of the conventions drawing (Markdown with ``$...$``)."""
+    """Our caption of the conventions drawing (Markdown with ``$...$``).
+
+    Parameters
+    ----------
+    data : ConventionsData
+        The numbers (:func:`data`).
+
+    Returns
+    -------
+    str
+        Markdown with ``$...$`` math.
+    """
     return (r"Conventions of the package. (a) Fixed frame $\mathcal{F}$ and body frame $\mathcal{B}$ "
             r"($\mathbf{i}$, $\mathbf{j}$) at the operation point $C$, turned by $\psi$ (counter-clockwise positive, "
             rf"here {data.psi:g}$^\circ$); $\mathbf{{c}}$ locates $C$ in $\mathcal{{F}}$ and "

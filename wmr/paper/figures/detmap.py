@@ -46,8 +46,10 @@ class DetSlice:
     ----------
     beta1 : float
         Degrees.
-    det_min, det_max : float
-        Extremes of :math:`\det\mathbf J/r^3` on the grid.
+    det_min : float
+        Smallest :math:`\det\mathbf J/r^3` (58) on the grid.
+    det_max : float
+        Largest :math:`\det\mathbf J/r^3` on the grid.
     kappa_min : float
         Smallest :math:`\kappa(\mathbf J)` on the grid.
     kappa_min_refined : float
@@ -62,6 +64,12 @@ class DetSlice:
         Largest :math:`|\det\mathbf J|` there.
     singular_motion_ranks : tuple of int
         The ranks of F there.
+    det : numpy.ndarray (n, n)
+        Drawing only: :math:`\det\mathbf J/r^3`, rows :math:`\beta_3`, columns :math:`\beta_2`.
+    log_kappa : numpy.ndarray (n, n)
+        Drawing only: :math:`\log_{10}\kappa(\mathbf J)`, clipped to [0, 16].
+    det_A : numpy.ndarray (n, n)
+        Drawing only: the determinant of the twist-constraint matrix.
     """
 
     beta1: float
@@ -87,12 +95,16 @@ class DetMapData:
     n : int
         Grid points per axis.
     slices : tuple of DetSlice
-    a13, a23 : float
-        Angles (degrees) that put plane 1 on :math:`P_1P_3` and plane 2 on :math:`P_2P_3`.
+    a13 : float
+        Angle (degrees) that puts plane 1 on :math:`P_1P_3`.
+    a23 : float
+        Angle (degrees) that puts plane 2 on :math:`P_2P_3`.
     vortex_beta_deg : tuple (3,)
         Every wheel turned :math:`45^\circ` from its radial line :math:`CP_i`.
-    kappa_vortex, kappa_vortex_minus : float
-        :math:`\kappa(\mathbf J)` there and at :math:`-45^\circ`.
+    kappa_vortex : float
+        :math:`\kappa(\mathbf J)` (30) there.
+    kappa_vortex_minus : float
+        The same at :math:`-45^\circ`.
     vortex_error : float
         :math:`\max|\kappa - 1|` of the two.
     vortex_rank_F : int
@@ -101,6 +113,10 @@ class DetMapData:
         Number of random twists (fixed seed) at whose steering angles :math:`\kappa(\mathbf J)` is evaluated.
     kappa_mobile_min : float
         Smallest :math:`\kappa(\mathbf J)` at those configurations, where the robot can move (:math:`\ge\sqrt2`).
+    grid : numpy.ndarray (n,)
+        Drawing only: the cell centres (degrees).
+    lim : float
+        Drawing only: the colour range of :math:`\det\mathbf J/r^3`.
     """
 
     n: int
@@ -195,7 +211,14 @@ def _kappa_mobile_min(bot, n=MOBILE_TWISTS, seed=MOBILE_SEED):
 
 
 def data(beta1s=(60.0, 20.0), n=400):
-    r"""Evaluate :math:`\det\mathbf J` and :math:`\kappa(\mathbf J)` on slices ``beta1s`` (degrees), ``n`` x ``n`` each.
+    r"""Evaluate :math:`\det\mathbf J` (58) and :math:`\kappa(\mathbf J)` (30) on slices ``beta1s`` (degrees), ``n`` x ``n`` each.
+
+    Parameters
+    ----------
+    beta1s : sequence of float, optional
+        The values of :math:`\beta_1` (degrees), one slice each.
+    n : int, optional
+        Grid points per axis (:math:`\beta_2`, :math:`\beta_3` over a full turn, at cell centres).
 
     Returns
     -------
@@ -221,7 +244,19 @@ _FAMILY_STYLE = {"i": ("o", "vermillion"), "i'": ("s", "vermillion"), "v-circle"
 
 
 def draw(data, fig=None):
-    """Draw the map from its data; returns the Figure."""
+    """Draw the map from its data.
+
+    Parameters
+    ----------
+    data : DetMapData
+        The numbers (:func:`data`).
+    fig : matplotlib.figure.Figure, optional
+        Draw into this figure (cleared) instead of a new one.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
     from matplotlib import colormaps
     from matplotlib.lines import Line2D
 
@@ -269,7 +304,18 @@ def draw(data, fig=None):
 
 
 def caption(data):
-    """Our caption of the map (Markdown with ``$...$``)."""
+    """Our caption of the map (Markdown with ``$...$``).
+
+    Parameters
+    ----------
+    data : DetMapData
+        The numbers (:func:`data`).
+
+    Returns
+    -------
+    str
+        Markdown with ``$...$`` math.
+    """
     b1 = [s.beta1 for s in data.slices]
     det_max = max(s.singular_motion_det_max for s in data.slices)
     kmin = min(s.kappa_min_refined for s in data.slices)
@@ -292,5 +338,3 @@ def caption(data):
             rf"rank $\mathbf{{F}} = {data.vortex_rank_F}$ and the robot cannot move. Where it can move (dashed), "
             rf"$\kappa(\mathbf{{J}}) \geq \sqrt2$: the smallest value at the steering angles of {data.mobile_twists} "
             rf"random twists and of a spin about $C$ is {data.kappa_mobile_min:.4f}.")
-
-    return f"{np.floor(x * 10**decimals) / 10**decimals:.{decimals}f}"

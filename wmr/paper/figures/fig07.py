@@ -31,14 +31,18 @@ class Fig07Data:
 
     Attributes
     ----------
-    r, d : float
-        Wheel radius and offset (units of L).
+    r : float
+        Wheel radius (units of L).
+    d : float
+        Offset (units of L).
     beta0 : float
         Initial steering angle of every wheel, degrees.
     T : float
         Time of one turn; :math:`\dot\phi_i = 2\pi/T`.
     steps : int
-        RK4 steps per turn; ``dt = T / steps``.
+        RK4 steps per turn.
+    dt : float
+        Time step, ``T / steps``.
     later : float
         Fraction of the turn at which the dashed (later) pose is drawn.
     radius : float
@@ -47,14 +51,30 @@ class Fig07Data:
         :math:`|R - d|`.
     tolerance : float
         :math:`d(\omega\Delta t)^4`, the order of the RK4 global error.
-    centre, C_f : tuple (2,)
-        Centre of the fitted circle; centroid of the contact points :math:`G_i` at the start.
+    centre : tuple (2,)
+        Centre of the fitted circle.
+    C_f : tuple (2,)
+        Centroid of the contact points :math:`G_i` at the start.
     centre_error : float
         :math:`\|\text{centre} - C_\mathrm{f}\|`.
     contact_drift : float
         Largest displacement of a contact point :math:`G_i` during the turn.
-    psi_max, slip_max : float
-        Largest :math:`|\psi|` and largest residual of (21) along the run.
+    psi_max : float
+        Largest :math:`|\psi|` along the run.
+    slip_max : float
+        Largest residual of (21) along the run.
+    robot : wmr.Robot
+        Drawing only: the robot simulated.
+    beta : numpy.ndarray (N, 3)
+        Drawing only: steering angles along the run (radians).
+    pose : numpy.ndarray (N, 3)
+        Drawing only: :math:`(\psi, X, Y)` along the run.
+    pivots : numpy.ndarray (N, 3, 2)
+        Drawing only: the paths of the :math:`P_i`.
+    contacts : numpy.ndarray (3, 2)
+        Drawing only: the contact points :math:`G_i` at the start.
+    later_index : int
+        Drawing only: the time step of the dashed (later) pose.
     """
 
     r: float
@@ -125,7 +145,19 @@ def data(r=R_OFFSET, d=None, beta0=0.0, T=1.0, steps=240, later=3 / 8):
 
 
 def draw(data, fig=None):
-    """Draw Fig. 7 from its data; returns the Figure."""
+    """Draw Fig. 7 from its data.
+
+    Parameters
+    ----------
+    data : Fig07Data
+        The numbers (:func:`data`).
+    fig : matplotlib.figure.Figure, optional
+        Draw into this figure (cleared) instead of a new one.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
     from ...plot import annotate as an
     from ...plot import robot as rd
     from ...plot.style import FONT_SMALL, PALETTE, ROLE, new_figure, plain_axes, style
@@ -190,7 +222,18 @@ def draw(data, fig=None):
 
 
 def caption(data):
-    """Our caption of Fig. 7 (Markdown with ``$...$``)."""
+    """Our caption of Fig. 7 (Markdown with ``$...$``).
+
+    Parameters
+    ----------
+    data : Fig07Data
+        The numbers (:func:`data`).
+
+    Returns
+    -------
+    str
+        Markdown with ``$...$`` math.
+    """
     return (rf"Dead zone of the WMR with three offset wheels ($d = r = {data.d:g}L$), simulated (RK4, "
             rf"$\Delta t = T/{data.steps}$): the wheels, all at $\beta_i = {degrees(data.beta0 * DEG)}^\circ$, are "
             r"steered one full turn ($\dot\phi_i = 2\pi/T$) without driving ($\dot\theta_i = 0$). "

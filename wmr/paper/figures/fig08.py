@@ -41,6 +41,12 @@ class TranslationRun:
         :math:`\|\mathbf c(T) - \mathbf c(0)\|`.
     straightness : float or None
         Largest distance of the path of C from the chord (rectilinear run only).
+    beta : numpy.ndarray (N, 3)
+        Drawing only: steering angles along the run (radians).
+    pose : numpy.ndarray (N, 3)
+        Drawing only: :math:`(\psi, X, Y)` along the run.
+    pivots : numpy.ndarray (N, 3, 2)
+        Drawing only: the paths of the :math:`P_i`.
     """
 
     psi_max: float = residual()
@@ -56,7 +62,25 @@ class TranslationRun:
 
 @dataclass(frozen=True)
 class Fig08Data:
-    """The numbers of Fig. 8: the parameters (angles in degrees) and the two runs."""
+    r"""The numbers of Fig. 8: the parameters (angles in degrees) and the two runs.
+
+    Attributes
+    ----------
+    speed : float
+        Speed of C (units of L per unit of time).
+    t_end : float
+        Duration of each run.
+    dt : float
+        Time step.
+    beta_rect : float
+        Steering angle of the rectilinear run (degrees).
+    amplitude : float
+        Amplitude of the steering angle of the curvilinear run (degrees).
+    rectilinear : TranslationRun
+    curvilinear : TranslationRun
+    robot : wmr.Robot
+        Drawing only: the robot simulated.
+    """
 
     speed: float
     t_end: float
@@ -120,7 +144,19 @@ def _box(run):
 
 
 def draw(data, fig=None):
-    """Draw Fig. 8 from its data; returns the Figure."""
+    """Draw Fig. 8 from its data.
+
+    Parameters
+    ----------
+    data : Fig08Data
+        The numbers (:func:`data`).
+    fig : matplotlib.figure.Figure, optional
+        Draw into this figure (cleared) instead of a new one.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
     from ...plot import annotate as an
     from ...plot import robot as rd
     from ...plot.style import ROLE, common_view, new_figure, panel_title, style
@@ -157,7 +193,18 @@ def draw(data, fig=None):
 
 
 def caption(data):
-    """Our caption of Fig. 8 (Markdown with ``$...$``)."""
+    """Our caption of Fig. 8 (Markdown with ``$...$``).
+
+    Parameters
+    ----------
+    data : Fig08Data
+        The numbers (:func:`data`).
+
+    Returns
+    -------
+    str
+        Markdown with ``$...$`` math.
+    """
     a, b = data.rectilinear, data.curvilinear
     ranks = sorted(set(a.rank_F) | set(b.rank_F))
     return (r"Rectilinear (a) and curvilinear (b) translation of the WMR with three centred wheels, simulated: all "

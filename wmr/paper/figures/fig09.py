@@ -15,7 +15,8 @@ from ...analysis.mobility import rank_F
 from ...analysis.simulation import simulate
 from ...analysis.steering import steering_angles
 from ..text import bound
-from .common import DEG, L_PAPER, AxleMeet, axles_meet, centred_robot, drawing, fit_circle, residual, snap
+from .common import DEG, L_PAPER, centred_robot, drawing, fit_circle, residual, snap
+from .configs import AxleMeet, axles_meet
 
 __all__ = ["NUMBER", "TITLE", "PAPER_CAPTION", "RotationRun", "Fig09Data", "data", "draw", "caption"]
 
@@ -35,7 +36,10 @@ class RotationRun:
         The IC in the body frame (units of L).
     beta_deg : tuple (3,)
         Steering angles from :func:`wmr.steering_angles`, degrees.
-    rank_F, mobility : int
+    rank_F : int
+        :math:`\operatorname{rank}\mathbf F` (24) at the steering angles.
+    mobility : int
+        :math:`\nu` (27).
     axles : AxleMeet
         Where the axles meet, and the distance of that point from :math:`\mathbf u_c`.
     radius : float
@@ -48,6 +52,12 @@ class RotationRun:
         :math:`\psi` at the end, degrees.
     slip_max : float
         Largest residual of (21).
+    beta : numpy.ndarray (N, 3)
+        Drawing only: steering angles along the run (radians).
+    pose : numpy.ndarray (N, 3)
+        Drawing only: :math:`(\psi, X, Y)` along the run.
+    pivots : numpy.ndarray (N, 3, 2)
+        Drawing only: the paths of the :math:`P_i`.
     """
 
     u_c: tuple
@@ -67,7 +77,21 @@ class RotationRun:
 
 @dataclass(frozen=True)
 class Fig09Data:
-    """The numbers of Fig. 9: U (units of L), the angle turned (degrees) and the two runs ``C`` and ``U``."""
+    r"""The numbers of Fig. 9: U (units of L), the angle turned (degrees) and the two runs ``C`` and ``U``.
+
+    Attributes
+    ----------
+    uc_U : tuple (2,)
+        The point U in the body frame (units of L).
+    turn : float
+        Angle turned by the platform (degrees).
+    C : RotationRun
+        The rotation about C.
+    U : RotationRun
+        The rotation about U.
+    robot : wmr.Robot
+        Drawing only: the robot simulated.
+    """
 
     uc_U: tuple
     turn: float
@@ -121,7 +145,19 @@ def _box(run, name):
 
 
 def draw(data, fig=None):
-    """Draw Fig. 9 from its data; returns the Figure."""
+    """Draw Fig. 9 from its data.
+
+    Parameters
+    ----------
+    data : Fig09Data
+        The numbers (:func:`data`).
+    fig : matplotlib.figure.Figure, optional
+        Draw into this figure (cleared) instead of a new one.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
     from ...plot import annotate as an
     from ...plot import robot as rd
     from ...plot.style import PALETTE, ROLE, common_view, new_figure, panel_title, style
@@ -161,7 +197,18 @@ def draw(data, fig=None):
 
 
 def caption(data):
-    """Our caption of Fig. 9 (Markdown with ``$...$``)."""
+    """Our caption of Fig. 9 (Markdown with ``$...$``).
+
+    Parameters
+    ----------
+    data : Fig09Data
+        The numbers (:func:`data`).
+
+    Returns
+    -------
+    str
+        Markdown with ``$...$`` math.
+    """
     a, b = data.C, data.U
     return (r"Rotation of the WMR with three centred wheels (simulated, $\dot\psi = 1$, turned "
             rf"{a.turn_deg:.4g}$^\circ$; dashed: final pose): (a) IC at the operation point $C$, which stays fixed; "

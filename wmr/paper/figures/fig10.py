@@ -10,8 +10,8 @@ import numpy as np
 
 from ...analysis.mobility import admissible_twists
 from ..text import residual as residual_text
-from .common import (ABS_DET_J, DEG, L_PAPER, SingularConfig, beta_text, centred_robot, config_lines, drawing,
-                     singular_config, snap)
+from .common import ABS_DET_J, DEG, L_PAPER, centred_robot, drawing, snap
+from .configs import SingularConfig, beta_text, config_lines, singular_config
 
 __all__ = ["NUMBER", "TITLE", "PAPER_CAPTION", "Fig10Data", "data", "draw", "caption"]
 
@@ -32,6 +32,8 @@ class Fig10Data:
     admissible : tuple (3,)
         Unit twist :math:`(\dot\psi, \dot{\mathbf c})` spanning the admissible twists
         (:func:`wmr.admissible_twists`), signed so that its largest component is positive.
+    robot : wmr.Robot
+        Drawing only: the robot drawn (:func:`~wmr.paper.figures.common.centred_robot`).
     """
 
     beta: float
@@ -41,7 +43,17 @@ class Fig10Data:
 
 
 def data(beta=30.0):
-    """The configuration :math:`\\beta_i = ` ``beta`` (degrees) for every wheel; returns :class:`Fig10Data`."""
+    r"""The configuration :math:`\beta_i = ` ``beta`` for every wheel: item (i) of the list after (59).
+
+    Parameters
+    ----------
+    beta : float, optional
+        The common steering angle (degrees).
+
+    Returns
+    -------
+    Fig10Data
+    """
     bot = centred_robot()
     bdeg = [beta] * 3
     b = np.asarray(bdeg) * DEG
@@ -55,7 +67,19 @@ def data(beta=30.0):
 
 
 def draw(data, fig=None):
-    """Draw Fig. 10 from its data; returns the Figure."""
+    """Draw Fig. 10 from its data.
+
+    Parameters
+    ----------
+    data : Fig10Data
+        The numbers (:func:`data`).
+    fig : matplotlib.figure.Figure, optional
+        Draw into this figure (cleared) instead of a new one.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
     from ...plot import annotate as an
     from ...plot.style import PALETTE, fit_view, new_figure, style
     from .sketch import LINES_LEGEND, draw_singular
@@ -79,7 +103,18 @@ def draw(data, fig=None):
 
 
 def caption(data):
-    """Our caption of Fig. 10 (Markdown with ``$...$``)."""
+    """Our caption of Fig. 10 (Markdown with ``$...$``).
+
+    Parameters
+    ----------
+    data : Fig10Data
+        The numbers (:func:`data`).
+
+    Returns
+    -------
+    str
+        Markdown with ``$...$`` math.
+    """
     cfg = data.config
     return (rf"Singular configuration with the IC at infinity, $\beta_1 = \beta_2 = \beta_3 = {data.beta:g}^\circ$ "
             rf"(item (i)). Computed: $\det\mathbf{{J}} = {cfg.det_J_exact}$ exactly "

@@ -12,7 +12,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..text import residual as residual_text
-from .common import ABS_DET_J, DEG, beta_text, centred_robot, config_lines, drawing, singular_config
+from .common import ABS_DET_J, DEG, centred_robot, drawing
+from .configs import beta_text, config_lines, singular_config
 
 __all__ = ["NUMBER", "TITLE", "PAPER_CAPTION", "CONFIGS", "Fig11Data", "data", "draw", "caption"]
 
@@ -26,7 +27,17 @@ CONFIGS = {"a": (60.0, 140.0, 60.0), "b": (-60.0, -60.0, 20.0), "c": (80.0, 0.0,
 
 @dataclass(frozen=True)
 class Fig11Data:
-    """The numbers of Fig. 11: panel letter -> steering angles (degrees), and -> a ``SingularConfig``."""
+    """The numbers of Fig. 11: the singular configurations of its panels.
+
+    Attributes
+    ----------
+    configs : dict
+        Panel letter -> steering angles (3 floats, degrees).
+    panels : dict
+        Panel letter -> :class:`~wmr.paper.figures.configs.SingularConfig`.
+    robot : wmr.Robot
+        Drawing only: the robot drawn (:func:`~wmr.paper.figures.common.centred_robot`).
+    """
 
     configs: dict
     panels: dict
@@ -34,7 +45,17 @@ class Fig11Data:
 
 
 def data(configs=None):
-    """The configurations ``configs`` (letter -> 3 angles in degrees, default :data:`CONFIGS`); a :class:`Fig11Data`."""
+    """The singular configurations ``configs``, one panel each.
+
+    Parameters
+    ----------
+    configs : dict, optional
+        Panel letter -> 3 steering angles in degrees (default :data:`CONFIGS`).
+
+    Returns
+    -------
+    Fig11Data
+    """
     bot = centred_robot()
     configs = {k: tuple(map(float, v)) for k, v in (configs or CONFIGS).items()}
     panels = {k: singular_config(bot, np.asarray(b) * DEG, exact_deg=b) for k, b in configs.items()}
@@ -51,7 +72,19 @@ def _pair(cfg):
 
 
 def draw(data, fig=None):
-    """Draw Fig. 11 from its data; returns the Figure."""
+    """Draw Fig. 11 from its data.
+
+    Parameters
+    ----------
+    data : Fig11Data
+        The numbers (:func:`data`).
+    fig : matplotlib.figure.Figure, optional
+        Draw into this figure (cleared) instead of a new one.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
     from ...plot import annotate as an
     from ...plot.style import ROLE, common_view, new_figure, panel_title, style
     from .sketch import LINES_LEGEND, draw_singular
@@ -73,7 +106,18 @@ def draw(data, fig=None):
 
 
 def caption(data):
-    """Our caption of Fig. 11 (Markdown with ``$...$``)."""
+    """Our caption of Fig. 11 (Markdown with ``$...$``).
+
+    Parameters
+    ----------
+    data : Fig11Data
+        The numbers (:func:`data`).
+
+    Returns
+    -------
+    str
+        Markdown with ``$...$`` math.
+    """
     cfgs = data.panels.values()
     ranks = sorted(set(c.rank_F for c in cfgs))
     exact = sorted(set(c.det_J_exact for c in cfgs))

@@ -11,7 +11,8 @@ import numpy as np
 
 from ...analysis import lines as ln
 from ..text import bound, residual as residual_text
-from .common import ABS_DET_J, beta_text, centred_robot, config_lines, drawing, residual, singular_config
+from .common import ABS_DET_J, centred_robot, drawing, residual
+from .configs import beta_text, config_lines, singular_config
 
 __all__ = ["NUMBER", "TITLE", "PAPER_CAPTION", "Fig12Data", "data", "draw", "caption"]
 
@@ -32,10 +33,12 @@ class Fig12Data:
     targets : dict
         Panel letter -> the point the planes are to pass through.
     panels : dict
-        Panel letter -> :class:`~wmr.paper.figures.common.SingularConfig` (exact :math:`\det\mathbf J` for (a),
+        Panel letter -> :class:`~wmr.paper.figures.configs.SingularConfig` (exact :math:`\det\mathbf J` for (a),
         whose angles are whole degrees).
     D_P_error : dict
         Panel letter -> distance of the computed :math:`D_P` from the target.
+    robot : wmr.Robot
+        Drawing only: the robot drawn (:func:`~wmr.paper.figures.common.centred_robot`).
     """
 
     D_arbitrary: tuple
@@ -46,7 +49,17 @@ class Fig12Data:
 
 
 def data(D_arbitrary=(-0.5, 1.8)):
-    """Steer the planes through C and through ``D_arbitrary``; returns :class:`Fig12Data`."""
+    """Steer the wheel planes through C and through ``D_arbitrary`` (item (v) after (59)).
+
+    Parameters
+    ----------
+    D_arbitrary : tuple (2,), optional
+        The point of panel (b) (body frame, units of L).
+
+    Returns
+    -------
+    Fig12Data
+    """
     bot = centred_robot()
     targets = {"a": (0.0, 0.0), "b": tuple(map(float, D_arbitrary))}
     panels, err = {}, {}
@@ -60,7 +73,19 @@ def data(D_arbitrary=(-0.5, 1.8)):
 
 
 def draw(data, fig=None):
-    """Draw Fig. 12 from its data; returns the Figure."""
+    """Draw Fig. 12 from its data.
+
+    Parameters
+    ----------
+    data : Fig12Data
+        The numbers (:func:`data`).
+    fig : matplotlib.figure.Figure, optional
+        Draw into this figure (cleared) instead of a new one.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
     from ...plot import annotate as an
     from ...plot.style import ROLE, common_view, new_figure, panel_title, style
     from .sketch import LINES_LEGEND, draw_singular
@@ -82,7 +107,18 @@ def draw(data, fig=None):
 
 
 def caption(data):
-    """Our caption of Fig. 12 (Markdown with ``$...$``)."""
+    """Our caption of Fig. 12 (Markdown with ``$...$``).
+
+    Parameters
+    ----------
+    data : Fig12Data
+        The numbers (:func:`data`).
+
+    Returns
+    -------
+    str
+        Markdown with ``$...$`` math.
+    """
     a, b = data.panels["a"], data.panels["b"]
     D = data.D_arbitrary
     ranks = " and ".join(sorted(set(str(c.rank_F) for c in (a, b))))

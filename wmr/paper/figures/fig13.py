@@ -14,7 +14,8 @@ from ...analysis.kinematics import inverse
 from ...analysis.mobility import rank_F
 from ...analysis.steering import centre_to_wheels, instantaneous_centre, steering_angles
 from ..text import bound, degrees
-from .common import L_PAPER, AxleMeet, axles_meet, centred_robot, drawing, residual, snap
+from .common import L_PAPER, centred_robot, drawing, residual, snap
+from .configs import AxleMeet, axles_meet
 
 __all__ = ["NUMBER", "TITLE", "PAPER_CAPTION", "Fig13Data", "data", "draw", "caption"]
 
@@ -41,10 +42,18 @@ class Fig13Data:
         The printed (65), degrees.
     axles : AxleMeet
         Where the axles meet, and the distance of that point from U.
-    rank_F, mobility : int
+    rank_F : int
+        :math:`\operatorname{rank}\mathbf F` (24) at the steering angles.
+    mobility : int
+        :math:`\nu` (27).
     slip : float
         Largest residual of the inverse kinematics (:func:`wmr.inverse`).
     admissible : bool
+        The twist is executable without slip at ``beta_deg``.
+    robot : wmr.Robot
+        Drawing only: the robot drawn (:func:`~wmr.paper.figures.common.centred_robot`).
+    beta : numpy.ndarray (3,)
+        Drawing only: the steering angles (radians).
     """
 
     twist: tuple
@@ -62,7 +71,17 @@ class Fig13Data:
 
 
 def data(uc=(1.7, 1.1)):
-    """Steer the wheels for a rotation about the body point ``uc`` (units of L); returns :class:`Fig13Data`."""
+    """Steer the wheels for a rotation about the body point ``uc``: (63)-(65).
+
+    Parameters
+    ----------
+    uc : tuple (2,), optional
+        The instantaneous centre U in the body frame (units of L).
+
+    Returns
+    -------
+    Fig13Data
+    """
     bot = centred_robot()
     uc = np.asarray(uc, dtype=float)
     twist = np.array([1.0, uc[1], -uc[0]])                 # (63): c_dot = -psi_dot E u_c
@@ -85,7 +104,19 @@ def _angles(values, symbol=r"\beta"):
 
 
 def draw(data, fig=None):
-    """Draw Fig. 13 from its data; returns the Figure."""
+    """Draw Fig. 13 from its data.
+
+    Parameters
+    ----------
+    data : Fig13Data
+        The numbers (:func:`data`).
+    fig : matplotlib.figure.Figure, optional
+        Draw into this figure (cleared) instead of a new one.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
     from ...plot import annotate as an
     from ...plot import robot as rd
     from ...plot.style import PALETTE, ROLE, fit_view, new_figure, style
@@ -119,7 +150,18 @@ def draw(data, fig=None):
 
 
 def caption(data):
-    """Our caption of Fig. 13 (Markdown with ``$...$``)."""
+    """Our caption of Fig. 13 (Markdown with ``$...$``).
+
+    Parameters
+    ----------
+    data : Fig13Data
+        The numbers (:func:`data`).
+
+    Returns
+    -------
+    str
+        Markdown with ``$...$`` math.
+    """
     uc = data.u_c
     return (rf"Steering angles of the wheels for a rotation about $U$, $\mathbf{{u}}_c = ({uc[0]:g}, {uc[1]:g})L$ "
             r"(63); $\mathbf{u}_i = \mathbf{u}_c - \mathbf{d}_i$ (64) in green. The angles computed by "

@@ -21,7 +21,17 @@ FORMATS = ("svg", "pdf", "png")
 
 
 def formats(module):
-    """The formats written for a figure module (its ``FORMATS``, else :data:`FORMATS`)."""
+    """The formats written for a figure module (its ``FORMATS``, else :data:`FORMATS`).
+
+    Parameters
+    ----------
+    module : module
+        A figure module (:data:`wmr.paper.figures.FIGURES`).
+
+    Returns
+    -------
+    tuple of str
+    """
     return tuple(getattr(module, "FORMATS", FORMATS))
 
 
@@ -81,13 +91,44 @@ def render(fig, fmts, *, title="", creator="wmr"):
 
 
 def record(key, module, data):
-    """The JSON record of a figure: key, number, title, the paper's caption, our caption, the numbers, the formats."""
+    """The JSON record of a figure: key, number, title, the paper's caption, our caption, the numbers, the formats.
+
+    Parameters
+    ----------
+    key : str
+        The figure's key.
+    module : module
+        Its figure module.
+    data : data class
+        Its numbers (``module.data(...)``).
+
+    Returns
+    -------
+    dict
+        Ready for :func:`json.dumps` (the numbers through :func:`wmr.paper.figures.common.numbers`).
+    """
     return {"key": key, "number": module.NUMBER, "title": module.TITLE, "paper_caption": module.PAPER_CAPTION,
             "caption": module.caption(data), "numbers": numbers(data), "formats": list(formats(module))}
 
 
 def write(outdir, key, files, rec):
-    """Write ``outdir/<key>.<fmt>`` for each rendered file and ``outdir/<key>.json``; returns the paths."""
+    """Write ``outdir/<key>.<fmt>`` for each rendered file and ``outdir/<key>.json``, atomically.
+
+    Parameters
+    ----------
+    outdir : str or os.PathLike
+        Created if needed.
+    key : str
+        The figure's key (the files' stem).
+    files : dict
+        ``{fmt: bytes}`` from :func:`render`.
+    rec : dict
+        The record (:func:`record`).
+
+    Returns
+    -------
+    list of pathlib.Path
+    """
     from pathlib import Path
     outdir = Path(outdir)
     paths = [atomic_write(outdir / f"{key}.{fmt}", blob) for fmt, blob in files.items()]

@@ -21,9 +21,15 @@ def draw_singular(ax, robot, cfg, *, dp_label=None, dp_offset=(7, 3), frame=True
     ----------
     ax : Axes
     robot : Robot
-    cfg : wmr.paper.figures.common.SingularConfig
+    cfg : wmr.paper.figures.configs.SingularConfig
     dp_label : str, optional
         Label of :math:`D_P` (drawn when the planes meet at a finite point).
+    dp_offset : tuple (2,), optional
+        Offset of that label (points).
+    frame : bool, optional
+        Draw the body frame at C.
+    label_offsets : dict, optional
+        As for :func:`wmr.plot.robot.draw_robot`.
 
     Returns
     -------
