@@ -61,8 +61,8 @@ matplotlib, pandas or IPython).
     conventions.
 :mod:`wmr.analysis`
     What can be computed for *any* robot (every function takes one; none defaults to the
-    paper's): linear algebra, mobility, Campion's classes (:mod:`~wmr.analysis.classes`), isotropy, kinematics, steering, simulation, singularities
-    and the exact :math:`\det\mathbf J`; the packages :mod:`~wmr.analysis.lines` (``geometry``: 2-D
+    paper's): linear algebra, mobility, Campion's classes (:mod:`~wmr.analysis.classes`), isotropy,
+    kinematics, steering, simulation, singularities and the exact :math:`\det\mathbf J`; the packages :mod:`~wmr.analysis.lines` (``geometry``: 2-D
     lines, concurrency, circumcircle; ``robot``: a robot's axle and wheel-plane lines) and
     :mod:`~wmr.analysis.sweep` (``configurations``, ``analyses``, ``reduction``, ``execute`` in this
     process or on Dask, ``result``); design searches (:mod:`~wmr.analysis.design`), a robot at a
