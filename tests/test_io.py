@@ -8,9 +8,6 @@ import wmr
 from wmr.io import KEYS, RobotFileError, dump, load, loads
 
 EXAMPLES = Path(__file__).resolve().parent.parent / "examples"
-HAS_NEW_WHEELS = hasattr(wmr, "FixedWheel") and hasattr(wmr, "SwedishWheel")
-needs_new_wheels = pytest.mark.skipif(not HAS_NEW_WHEELS, reason="wmr.FixedWheel / wmr.SwedishWheel (wheels stream) "
-                                      "not on this branch yet")
 
 CENTRED = '''name = "two"
 
@@ -69,7 +66,6 @@ def test_round_trip(robot, tmp_path):
     assert dump(back) == text                           # a fixed point
 
 
-@needs_new_wheels
 def test_round_trip_fixed_and_swedish(tmp_path):
     bot = wmr.Robot([wmr.FixedWheel((0.0, 0.2), 0.08, np.pi / 2), wmr.FixedWheel((0.0, -0.2), 0.08, 0.3),
                      wmr.SwedishWheel((0.4, 0.1), 0.05, 1.1, np.pi / 4), wmr.CentredWheel((-0.3, 0.0), r=0.04)])
@@ -180,12 +176,6 @@ def test_bad_arguments_are_type_errors(tmp_path):
         load(tmp_path / "nowhere.toml")
 
 
-@pytest.mark.skipif(HAS_NEW_WHEELS, reason="only before the fixed and Swedish wheels exist")
-def test_new_types_say_what_is_missing():
-    with pytest.raises(RobotFileError, match="FixedWheel"):
-        loads('[[wheel]]\ntype = "fixed"\nposition = [0, 0]\nradius = 1\nangle_deg = 0\n')
-
-
 # ------------------------------------------------------------------------------------ examples
 PAPER = {"paper_centred.toml": "centred", "paper_offset.toml": "offset", "paper_dual.toml": "dual"}
 
@@ -197,13 +187,8 @@ def test_paper_examples_are_paper_robot(name, kind):
     assert bot.name == f"paper-{kind}"
 
 
-NEEDS_NEW = {"differential.toml", "tricycle.toml", "omni3.toml", "mecanum4.toml"}
-
-
 @pytest.mark.parametrize("name", sorted(p.name for p in EXAMPLES.glob("*.toml")))
 def test_every_example_loads_and_round_trips(name, tmp_path):
-    if name in NEEDS_NEW and not HAS_NEW_WHEELS:
-        pytest.skip("fixed / Swedish wheels not on this branch yet")
     bot = load(EXAMPLES / name)
     _same_matrices(bot, loads(dump(bot)))
 
@@ -219,7 +204,6 @@ def test_the_examples_cover_the_five_classes():
     assert set(CLASSES.values()) == {"(3,0)", "(2,0)", "(2,1)", "(1,1)", "(1,2)"}         # all five of Campion's
 
 
-@needs_new_wheels
 @pytest.mark.parametrize("name, label", CLASSES.items())
 def test_example_class(name, label):
     c = wmr.campion_class(load(EXAMPLES / name))

@@ -24,7 +24,6 @@ def test_configurations_have_at_least_four_values_per_angle():
     assert configurations(bot, grid=8, twists=0).shape == (4 ** 3 + 4 + 3, 3)
 
 
-@pytest.mark.skipif(not hasattr(wmr, "FixedWheel"), reason="wmr.FixedWheel (wheels stream) not on this branch yet")
 def test_configurations_grid_only_the_steered_angles():
     bot = wmr.load(EXAMPLES / "tricycle.toml")
     beta = configurations(bot, grid=100, twists=0)
@@ -93,7 +92,6 @@ def test_bad_arguments():
         singular_families(wmr.paper_robot(), L=-1.0)
 
 
-@pytest.mark.skipif(not hasattr(wmr, "FixedWheel"), reason="wmr.FixedWheel (wheels stream) not on this branch yet")
 def test_fixed_wheels_keep_their_angles_and_meet_only_at_infinity():
     bot = wmr.load(EXAMPLES / "tricycle.toml")
     fams = singular_families(bot)

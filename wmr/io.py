@@ -43,6 +43,7 @@ import numpy as np
 
 from .model import validation as V
 from .model.tolerance import near_zero
+from .model.wheels import CentredWheel, DualWheel, FixedWheel, OffsetWheel, SwedishWheel
 
 __all__ = ["RobotFileError", "KEYS", "load", "loads", "dump"]
 
@@ -166,18 +167,9 @@ def _suggest(word, choices):
 
 
 # ------------------------------------------------------------------------------------ reading
-def _unit_classes():
-    """type name -> wheel class (the fixed and Swedish wheels are looked up by name: newer modules)."""
-    import wmr
-    return {kind: getattr(wmr, cls, None) for kind, cls in (
-        ("fixed", "FixedWheel"), ("centred", "CentredWheel"), ("offset", "OffsetWheel"), ("dual", "DualWheel"),
-        ("swedish", "SwedishWheel"))}
-
-
 def _unit(kind, values):
-    cls = _unit_classes()[kind]
-    if cls is None:
-        raise ValueError(f"{kind!r} wheels need wmr.{kind.capitalize()}Wheel, which this version of wmr lacks")
+    cls = {"fixed": FixedWheel, "centred": CentredWheel, "offset": OffsetWheel, "dual": DualWheel,
+           "swedish": SwedishWheel}[kind]
     p, r = values["position"], values["radius"]
     if kind == "offset":
         return cls(p, r=r, d=values["offset"])

@@ -29,6 +29,7 @@ from ..model import validation as V
 from ..model.backend import NUMERIC
 from ..model.platform import wrap_angle
 from ..model.tolerance import TOL
+from .classes import campion_class
 from .isotropy import characteristic_length
 from .linalg import condition_number, rank
 from .lines import AT_INFINITY, FINITE, lines_concurrency, planes_through, wheel_plane_lines
@@ -42,14 +43,6 @@ __all__ = ["FAMILIES", "Overview", "configurations", "dead_zone_radius", "singul
 GRID_SIZE = 20000
 #: random twists whose steering angles are added to the grid
 TWISTS = 2000
-
-
-def _steered(robot):
-    """Bool per unit: does the unit have its own steering angle (centred, offset, dual)?"""
-    steered = getattr(robot, "steered", None)
-    if steered is not None:
-        return np.array(steered, dtype=bool)
-    return np.array([u.kind in ("centred", "offset", "dual") for u in robot.wheels])
 
 
 def configurations(robot, grid=GRID_SIZE, twists=TWISTS, seed=0):
@@ -83,7 +76,7 @@ def configurations(robot, grid=GRID_SIZE, twists=TWISTS, seed=0):
     grid = V.integer("grid", grid, minimum=1)
     twists = V.integer("twists", twists, minimum=0)
     seed = V.integer("seed", seed, minimum=0)
-    w, steered = robot.w, _steered(robot)
+    w, steered = robot.w, np.array(robot.steered, dtype=bool)
     s = int(steered.sum())
     parts = []
     if s:
@@ -215,10 +208,10 @@ def singular_families(robot, L=None):
     """
     robot = V.numeric_robot(robot)
     L = characteristic_length(robot) if L is None else V.number("L", V.positive("L", L))
-    steered = _steered(robot)
+    steered = np.array(robot.steered, dtype=bool)
     pts = robot.mount_points
     size = float(np.abs(pts).max()) or 1.0
-    fixed_dirs = [[-np.sin(u.angle), np.cos(u.angle)] for u, st in zip(robot.wheels, steered) if not st and hasattr(u, "angle")]
+    fixed_dirs = [[-np.sin(u.angle), np.cos(u.angle)] for u, st in zip(robot.wheels, steered) if not st]
     dirs = np.array([[1.0, 0.0], [0.0, 1.0], [0.6, 0.8]] + fixed_dirs)
     finite = np.array([[0.0, 0.0], *pts, [0.37 * size, 0.61 * size]])
     beta_inf = np.arctan2(-dirs[:, :1], dirs[:, 1:]) * np.ones(robot.w)      # j_i || direction, every unit
@@ -229,8 +222,7 @@ def singular_families(robot, L=None):
     flip = cands.copy()
     flip[:, np.flatnonzero(steered)[:1]] += np.pi                             # one wheel turned by pi: the "'" families
     cands = np.concatenate([cands, flip])
-    effective = getattr(robot, "effective_beta", None)
-    cands = effective(cands) if effective else cands                         # unsteered units at their own angle
+    cands = robot.effective_beta(cands)                                      # unsteered units at their own angle
     rk = rank(robot.J(cands, L=L))
     rf = rank_F(robot, cands)
     out, seen = [], set()
@@ -255,9 +247,9 @@ class Overview:
     name : str
     kinds : tuple of str
         The units' types, wheel 1 first.
-    campion : dict or None
-        ``delta_m``, ``delta_s``, ``label`` (Campion, Bastin & d'Andrea-Novel 1996), when
-        :func:`wmr.campion_class` exists.
+    campion : dict
+        ``delta_m``, ``delta_s``, ``label`` (Campion, Bastin & d'Andrea-Novel 1996), from
+        :func:`wmr.campion_class`.
     rank_F : int
         At a generic configuration (random angles).
     nullity : int
@@ -289,7 +281,7 @@ class Overview:
 
     name: str
     kinds: tuple
-    campion: dict | None
+    campion: dict
     rank_F: int
     nullity: int
     rank_F_range: tuple
@@ -306,10 +298,6 @@ class Overview:
 
 
 def _campion(robot):
-    try:
-        from .classes import campion_class
-    except ImportError:                              # the classification is newer than this module
-        return None
     c = campion_class(robot)
     return {"delta_m": int(c.delta_m), "delta_s": int(c.delta_s), "label": str(c.label)}
 

@@ -61,9 +61,9 @@ def as_json(ov):
     -------
     dict
     """
-    c = ov.campion or {}
-    return {"name": ov.name, "wheels": list(ov.kinds), "delta_m": c.get("delta_m"), "delta_s": c.get("delta_s"),
-            "class": c.get("label"),
+    c = ov.campion
+    return {"name": ov.name, "wheels": list(ov.kinds), "delta_m": c["delta_m"], "delta_s": c["delta_s"],
+            "class": c["label"],
             "rank_F": {"generic": ov.rank_F, "min": ov.rank_F_range[0], "max": ov.rank_F_range[1]},
             "nullity": {"generic": ov.nullity, "min": ov.nullity_range[0], "max": ov.nullity_range[1]},
             "configurations": ov.configurations, "L": ov.L, "kappa_J_L1": _num(ov.kappa_JL1), "kappa_J2": _num(ov.kappa_J2),
@@ -90,8 +90,7 @@ def table(ov):
         counts[k] = counts.get(k, 0) + 1
     c = ov.campion
     rows = [("robot", ov.name), ("wheels", ", ".join(f"{n} {k}" for k, n in counts.items())),
-            ("class", f"{c['label']}: delta_m = {c['delta_m']}, delta_s = {c['delta_s']} (Campion et al. 1996)"
-             if c else "unknown (wmr.campion_class is not available)"),
+            ("class", f"{c['label']}: delta_m = {c['delta_m']}, delta_s = {c['delta_s']} (Campion et al. 1996)"),
             ("rank F", f"{ov.rank_F} generic, {ov.rank_F_range[0]}..{ov.rank_F_range[1]} over "
                        f"{ov.configurations:,} configurations"),
             ("nullity F", f"{ov.nullity} generic, {ov.nullity_range[0]}..{ov.nullity_range[1]}"),

@@ -86,8 +86,7 @@ def run(args):
         twist = np.array([number(args.omega, "--omega"), number(args.vx, "--vx"), number(args.vy, "--vy")])
         current = np.zeros(robot.w) if args.current_angles is None else np.radians(
             numbers(args.current_angles, "--current-angles", robot.w, "one angle in degrees per wheel unit"))
-        if hasattr(robot, "effective_beta"):
-            current = robot.effective_beta(current)               # fixed and Swedish wheels: their own angle
+        current = robot.effective_beta(current)                   # fixed and Swedish wheels: their own angle
         beta = wmr.steering_angles(robot, twist, current)
         if args.current_angles is not None:
             beta = _nearest(robot, beta, current)
