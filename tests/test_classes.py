@@ -5,6 +5,8 @@ import re
 import numpy as np
 import pytest
 import sympy as sp
+from hypothesis import given
+from hypothesis import strategies as st
 
 import wmr
 from wmr.analysis.classes import CLASS_NAMES, CampionClass, campion_class
@@ -130,3 +132,41 @@ def test_symbolic_robot_is_rejected():
     bot = wmr.Robot([wmr.CentredWheel((x, 0), r=1), wmr.CentredWheel((0, x), r=1)])
     with pytest.raises(ValueError, match=r"\brobot\b"):
         campion_class(bot)
+
+
+#: angles: multiples of 15 degrees (exact alignments) or at least 1e-4 rad away from them, so that no
+#: configuration is within the rank tolerance of a special one (there the class may flip, by design)
+_ANGLES = st.one_of(st.integers(-12, 12).map(lambda k: k * PI / 12),
+                    st.floats(-PI, PI).filter(lambda a: np.min(np.abs(a - np.arange(-12, 13) * PI / 12)) > 1e-4))
+#: mount points on a 0.05 grid (collinear exactly, or clearly not)
+_POINTS = st.tuples(st.integers(-20, 20), st.integers(-20, 20)).map(lambda p: (p[0] / 20, p[1] / 20))
+
+
+@st.composite
+def mixed_robots(draw):
+    """Random robots of every wheel type (two to five units, distinct mount points)."""
+    w = draw(st.integers(2, 5))
+    pts = draw(st.lists(_POINTS, min_size=w, max_size=w, unique=True))
+    units = []
+    for p in pts:
+        kind = draw(st.sampled_from(["fixed", "swedish", "centred", "offset", "dual"]))
+        angle = draw(_ANGLES)
+        units.append({"fixed": lambda: wmr.FixedWheel(p, r=0.1, angle=angle),
+                      "swedish": lambda: wmr.SwedishWheel(p, r=0.1, angle=angle, roller=draw(st.sampled_from([PI / 2, PI / 4, -PI / 4]))),
+                      "centred": lambda: wmr.CentredWheel(p, r=0.1), "offset": lambda: wmr.OffsetWheel(p, r=0.1, d=0.05),
+                      "dual": lambda: wmr.DualWheel(p, r=0.1, b=0.05)}[kind]())
+    return wmr.Robot(units)
+
+
+@given(mixed_robots(), st.integers(-6, 6))
+def test_class_of_random_robots(bot, k):
+    """delta_m is the dimension of the admissible twists at the returned configuration; the class
+    does not change with the unit of length or the body frame; delta_m + delta_s <= 3."""
+    c = campion_class(bot)
+    assert 0 <= c.delta_m <= 3 and 0 <= c.delta_s and c.delta_m + c.delta_s <= 3
+    assert wmr.admissible_twists(bot, c.beta).shape[1] == c.delta_m
+    if c.delta_m:
+        assert bool(wmr.inverse(bot, c.beta, c.twist).admissible)
+    for other in (_scaled(bot, 10.0 ** k), bot.moved(origin=(0.3, -0.1), angle=1.0)):
+        d = campion_class(other)
+        assert (d.delta_m, d.delta_s, d.standard) == (c.delta_m, c.delta_s, c.standard)

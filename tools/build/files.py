@@ -2,12 +2,15 @@
 
 :func:`atomic_write` is the build's one way of writing a file: the bytes go to a temporary file
 beside the target, are flushed to disk, and replace the target in one ``os.replace``; a crash or a
-signal leaves either the old file or the new one, never a truncated one.
+signal leaves either the old file or the new one, never a truncated one.  It and :func:`atomic_path`
+are the library's own (``wmr/paper/files.py``, standard library only), loaded here by path so that
+the build does not import the package it builds (nor NumPy and SymPy) to write a stamp.
 """
 from __future__ import annotations
 
 import contextlib
 import hashlib
+import importlib.util
 import os
 import shutil
 import tempfile
@@ -16,40 +19,18 @@ from pathlib import Path
 __all__ = ["atomic_write", "atomic_path", "sha256_file", "hash_files", "temp_dir", "remove_temp_dirs"]
 
 
-def _umask_mode() -> int:
-    """The mode an ordinary new file gets (0o666 less the umask): ``mkstemp``'s 0o600 is too private."""
-    mask = os.umask(0)
-    os.umask(mask)
-    return 0o666 & ~mask
+def _library_files():
+    """``wmr/paper/files.py`` of this source tree, loaded as a module of its own (no ``wmr`` import)."""
+    path = Path(__file__).resolve().parents[2] / "wmr" / "paper" / "files.py"
+    spec = importlib.util.spec_from_file_location("_wmr_paper_files", path)
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod
 
 
-@contextlib.contextmanager
-def atomic_path(path: Path):
-    """Yield a temporary path beside ``path``; on success it replaces ``path`` atomically,
-    on any exception (or signal) it is removed and ``path`` is untouched.
-
-    For writers that want a file name (``nbformat.write``, ``zipfile``); see :func:`atomic_write`.
-    """
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix="." + path.name + ".", suffix=".tmp")
-    os.close(fd)
-    try:
-        yield Path(tmp)
-        with open(tmp, "rb+") as f:
-            os.fsync(f.fileno())
-        os.chmod(tmp, _umask_mode())
-        os.replace(tmp, path)
-    finally:
-        with contextlib.suppress(FileNotFoundError):
-            os.unlink(tmp)
-
-
-def atomic_write(path: Path, data: bytes | str) -> Path:
-    """Write ``data`` (str: UTF-8) to ``path`` atomically; return ``path``."""
-    with atomic_path(path) as tmp:
-        tmp.write_bytes(data.encode("utf-8") if isinstance(data, str) else data)
-    return Path(path)
+_files = _library_files()
+atomic_path = _files.atomic_path
+atomic_write = _files.atomic_write
 
 
 def sha256_file(path: Path) -> str | None:

@@ -26,6 +26,13 @@ Offset
     gives (9) with the printed signs.
 Dual wheel
     Wheel 1 at :math:`H_i + b\,\mathbf i_i`, wheel 2 at :math:`H_i - b\,\mathbf i_i`, :math:`H_i = P_i`.
+Fixed and Swedish wheels
+    No steering joint: :math:`\beta_i` is the unit's constant ``angle`` (0: axle along the body x
+    axis), and the robot's configuration entry for the unit is ignored
+    (:meth:`wmr.Robot.effective_beta`).  A Swedish wheel's rollers are at ``roller`` =
+    :math:`\gamma` from the axle, counter-clockwise (:math:`\pi/2` omni, :math:`\pm\pi/4` mecanum);
+    its second rate :math:`\dot\sigma_i` moves the hub along the rollers' rolling direction
+    (:class:`wmr.SwedishWheel`).
 Numbering
     Wheels are numbered in the order given to :class:`wmr.Robot`.  The paper's three-wheel robot
     (:func:`wmr.paper_robot`) has :math:`\mathbf d_1 = L(-1,0)`, :math:`\mathbf d_2 = L(\tfrac12,
@@ -54,8 +61,8 @@ matplotlib, pandas or IPython).
     conventions.
 :mod:`wmr.analysis`
     What can be computed for *any* robot (every function takes one; none defaults to the
-    paper's): linear algebra, mobility, isotropy, kinematics, steering, simulation, singularities
-    and the exact :math:`\det\mathbf J`; the packages :mod:`~wmr.analysis.lines` (``geometry``: 2-D
+    paper's): linear algebra, mobility, Campion's classes (:mod:`~wmr.analysis.classes`), isotropy,
+    kinematics, steering, simulation, singularities and the exact :math:`\det\mathbf J`; the packages :mod:`~wmr.analysis.lines` (``geometry``: 2-D
     lines, concurrency, circumcircle; ``robot``: a robot's axle and wheel-plane lines) and
     :mod:`~wmr.analysis.sweep` (``configurations``, ``analyses``, ``reduction``, ``execute`` in this
     process or on Dask, ``result``); design searches (:mod:`~wmr.analysis.design`), a robot at a

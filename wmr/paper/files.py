@@ -3,16 +3,60 @@
 Each file is written to a temporary file in the same directory and moved over the target with
 :func:`os.replace` (atomic on POSIX and Windows), so a reader sees the old file or the new one,
 never a part.  Where the files go is always passed in: the library never resolves repository paths.
+
+This module uses the standard library only: the build tool (``tools/build/files.py``) loads it by
+path, so the project has one atomic writer without the build importing NumPy or SymPy.
 """
 from __future__ import annotations
 
+import contextlib
 import csv
 import io
 import os
 import tempfile
 from pathlib import Path
 
-__all__ = ["atomic_write", "csv_text"]
+__all__ = ["atomic_path", "atomic_write", "csv_text"]
+
+
+def _file_mode():
+    """The mode an ordinary new file gets (``0o666`` less the umask): ``mkstemp``'s ``0o600`` is too private."""
+    umask = os.umask(0)
+    os.umask(umask)
+    return 0o666 & ~umask
+
+
+@contextlib.contextmanager
+def atomic_path(path):
+    """A temporary path beside ``path`` that replaces ``path`` atomically when the block succeeds.
+
+    On any exception (or a signal turned into one) the temporary file is removed and ``path`` is
+    untouched.  For writers that want a file name (``nbformat.write``, ``zipfile``); the bytes are
+    flushed to disk before the replace.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The target; its directory is created if needed.
+
+    Yields
+    ------
+    pathlib.Path
+        The temporary file to write.
+    """
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix="." + path.name + ".", suffix=".tmp")
+    os.close(fd)
+    try:
+        yield Path(tmp)
+        with open(tmp, "rb+") as f:
+            os.fsync(f.fileno())
+        os.chmod(tmp, _file_mode())
+        os.replace(tmp, path)
+    finally:
+        with contextlib.suppress(FileNotFoundError):
+            os.unlink(tmp)
 
 
 def atomic_write(path, data):
@@ -29,28 +73,21 @@ def atomic_write(path, data):
     Returns
     -------
     pathlib.Path
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> d = Path(tempfile.mkdtemp())
+    >>> atomic_write(d / "a" / "x.txt", "one").read_text(), sorted(p.name for p in (d / "a").iterdir())
+    ('one', ['x.txt'])
     """
     if isinstance(data, str):
         data = data.encode("utf-8")
     elif not isinstance(data, (bytes, bytearray)):
         raise TypeError(f"data must be bytes or str, got {type(data).__name__}")
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix="." + path.name + ".", suffix=".tmp")
-    try:
-        with os.fdopen(fd, "wb") as f:
-            f.write(data)
-        umask = os.umask(0)
-        os.umask(umask)
-        os.chmod(tmp, 0o666 & ~umask)
-        os.replace(tmp, path)
-    except BaseException:
-        try:
-            os.unlink(tmp)
-        except FileNotFoundError:
-            pass
-        raise
-    return path
+    with atomic_path(path) as tmp:
+        tmp.write_bytes(data)
+    return Path(path)
 
 
 def csv_text(rows, columns):

@@ -55,14 +55,14 @@ def mobile_and_singular(beta_deg):
     -------
     Feedback
     """
-    from ...analysis.singularities import det_J
+    from ...analysis.singularities import det_J, is_singular
     beta, fb = _angles(beta_deg, degrees=True)
     if fb is not None:
         return fb
     bot = paper_robot("centred", L=1.0, r=1.0)
     dj = float(det_J(bot, beta))
     rk = int(rank_F(bot, beta))
-    if abs(dj) > 1e-9:
+    if not is_singular(bot, beta):                       # relative to the size of det J's terms (wmr.TOL)
         return Feedback(False, rf"$\det\mathbf J = {dj:.3g}$: $\mathbf J$ is not singular here.")
     if rk != 5:
         return Feedback(False, r"$\mathbf J$ is singular, but rank $\mathbf F = 6$: the robot cannot move. The axle lines "
