@@ -305,6 +305,8 @@ def test_make_test_fails_when_the_build_modifies_tracked_files(tmp_path):
 
 
 def test_ci_runs_the_readme_test_command():
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    assert re.search(r"^make test +#", readme, re.M) and re.search(r"^make report +#", readme, re.M)
     assert re.search(r"^make test$", (ROOT / ".ci" / "run").read_text(), re.M)
     assert re.search(r"^test:.*\n\t@\$\(BUILD\) test$", (ROOT / "Makefile").read_text(), re.M)
 
