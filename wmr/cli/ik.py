@@ -112,8 +112,10 @@ def run(args):
     widths = [max(len(r[i]) for r in rows) for i in range(4)]
     for r in rows:
         print("  ".join(c.ljust(wd) for c, wd in zip(r[:4], widths)) + "  " + r[4])
-    print(f"admissible: {'yes' if sol.admissible else 'no'} at these angles (largest slip residual {fmt(out['slip'], 3)})")
+    # rounding noise shown as 0, next to the size of the wheel velocities J2 theta_dot (m/s)
+    slip = clean(out["slip"], float(np.abs(robot.J2(beta) @ sol.value).max(initial=0.0)))
+    slip_now = clean(out["slip_without_resteering"], float(np.abs(robot.J2(current) @ now.value).max(initial=0.0)))
+    print(f"admissible: {'yes' if sol.admissible else 'no'} at these angles (largest slip residual {fmt(slip, 3)})")
     print(f"without re-steering: {'yes' if now.admissible else 'no'} at the current angles "
-          f"({', '.join(fmt(a, 5) for a in out['current_deg'])}) deg (largest slip residual "
-          f"{fmt(out['slip_without_resteering'], 3)})")
+          f"({', '.join(fmt(a, 5) for a in out['current_deg'])}) deg (largest slip residual {fmt(slip_now, 3)})")
     return 0
