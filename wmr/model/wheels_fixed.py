@@ -37,6 +37,7 @@ from .backend import NUMERIC, choose
 from .platform import rotated
 from .tolerance import TOL
 from .wheel_base import _Unit
+from .wheels import CentredWheel
 
 __all__ = ["FixedWheel", "SwedishWheel"]
 
@@ -188,15 +189,10 @@ class FixedWheel(_Unsteered):
     kind = "fixed"
     n_rates = 1
 
-    def rate_names(self, i):
-        return (f"theta_dot_{self._number(i)}",)
-
-    def rate_symbols(self, i):
-        return (sp.Symbol(rf"\dot{{\theta}}_{{{self._number(i)}}}", real=True),)
-
-    def _local_block(self, bk):
-        # (51) at beta_i = angle: h_dot = -r theta_dot j_i
-        return bk.matrix([[0], [-self.r]])
+    # a centred wheel held at beta_i = angle: its rolling rate and its block (51), written once there
+    rate_names = CentredWheel.rate_names
+    rate_symbols = CentredWheel.rate_symbols
+    _local_block = CentredWheel._local_block
 
 
 @dataclass(frozen=True)
