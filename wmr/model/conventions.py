@@ -66,7 +66,7 @@ matplotlib, pandas or IPython).
     files (TOML in, TOML out).
 :mod:`wmr.plot`
     Drawing with matplotlib (imported only there): the style, annotations and the robot seen
-    from above.
+    from above (its world geometry, computed without matplotlib, in :mod:`~wmr.plot.geometry`).
 :mod:`wmr.paper`
     The edition of the paper: its printed forms (one module per chapter, ``register``/``printed``),
     symbols, the ledger of verdicts (:mod:`~wmr.paper.ledger`: ``verdict``, ``markup``, ``rows``,

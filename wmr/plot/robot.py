@@ -7,124 +7,21 @@ carrying wheel discs, which from above are rounded rectangles of length :math:`2
 rolling direction :math:`\mathbf j_i` (marked by an arrow).  Axles (dashed, along
 :math:`\mathbf i_i`) and wheel-plane lines (along :math:`\mathbf j_i`) can be drawn and extended to
 where they meet.  The geometry comes from :meth:`wmr.model.wheels.OffsetWheel.points` (and its
-siblings), so the pictures obey :mod:`wmr.conventions` by construction.
+siblings), so the pictures obey :mod:`wmr.conventions` by construction; it is computed without
+matplotlib in :mod:`wmr.plot.geometry` (:func:`robot_geometry` and its companions are re-exported here).
 """
 from __future__ import annotations
-
-from dataclasses import dataclass
 
 import numpy as np
 from matplotlib.patches import Circle, FancyArrowPatch, FancyBboxPatch
 from matplotlib.transforms import Affine2D
 
-from ..model.backend import NUMERIC
-from ..model.platform import rotation
 from .annotate import draw_frame, draw_line, draw_point, label
+from .geometry import RobotDrawing, platform_radius, robot_extent, robot_geometry, to_world
 from .style import PALETTE, ROLE
 
 __all__ = ["RobotDrawing", "to_world", "robot_geometry", "platform_radius", "draw_platform", "draw_wheel",
            "draw_pivot", "draw_unit", "draw_robot", "robot_extent", "draw_axles", "draw_planes"]
-
-
-# ----------------------------------------------------------------------------- geometry
-def to_world(pose, p):
-    r"""Body-frame points to the fixed frame: :math:`\mathbf R(\psi)\,p + [X\ Y]^T`.
-
-    Parameters
-    ----------
-    pose : sequence (3,)
-        :math:`(\psi, X, Y)`, the platform pose in the fixed frame.
-    p : array_like (..., 2)
-        Points in body components.
-
-    Returns
-    -------
-    numpy.ndarray (..., 2)
-
-    Examples
-    --------
-    >>> to_world((np.pi / 2, 1.0, 0.0), [1.0, 0.0]).round(12) + 0.0
-    array([1., 1.])
-    """
-    psi, X, Y = pose
-    return np.asarray(p, dtype=float) @ rotation(psi, NUMERIC).T + np.array([X, Y])
-
-
-@dataclass(frozen=True)
-class RobotDrawing:
-    r"""World coordinates of what :func:`draw_robot` drew (for labels and construction lines).
-
-    Attributes
-    ----------
-    C : numpy.ndarray (2,)
-        The operation point.
-    P : numpy.ndarray (w, 2)
-        Steering-axis points :math:`P_i`.
-    H : numpy.ndarray (w, 2)
-        Wheel-unit centres :math:`H_i`.
-    wheels : list of numpy.ndarray (k, 2)
-        Wheel centres of each unit.
-    i : numpy.ndarray (w, 2)
-        Axle directions :math:`\mathbf i_i` (world).
-    j : numpy.ndarray (w, 2)
-        Rolling directions :math:`\mathbf j_i` (world).
-    psi : float
-        Heading of the platform (radians).
-    """
-
-    C: np.ndarray
-    P: np.ndarray
-    H: np.ndarray
-    wheels: list
-    i: np.ndarray
-    j: np.ndarray
-    psi: float
-
-
-def robot_geometry(robot, beta, pose=(0.0, 0.0, 0.0)):
-    r"""World geometry of ``robot`` at steering angles ``beta`` and ``pose`` (nothing is drawn).
-
-    Parameters
-    ----------
-    robot : wmr.Robot
-        A numeric robot.
-    beta : array_like (w,)
-        Steering angles (radians).
-    pose : sequence (3,), optional
-        :math:`(\psi, X, Y)`.
-
-    Returns
-    -------
-    RobotDrawing
-    """
-    beta = np.asarray(beta, dtype=float)
-    R = rotation(pose[0], NUMERIC)
-    P, H, wheels, ii, jj = [], [], [], [], []
-    for k, u in enumerate(robot.wheels):
-        pts = u.points(beta[k])
-        P.append(to_world(pose, pts["P"]))
-        H.append(to_world(pose, pts["H"]))
-        wheels.append(to_world(pose, pts["wheels"]))
-        ii.append(R @ pts["i"])
-        jj.append(R @ pts["j"])
-    return RobotDrawing(np.array(pose[1:], dtype=float), np.array(P), np.array(H), wheels,
-                        np.array(ii), np.array(jj), float(pose[0]))
-
-
-def platform_radius(robot):
-    r"""Radius of the platform disc: a little beyond the farthest mount point, :math:`\max_i\|\mathbf d_i\| + 0.9\max_i r_i`.
-
-    Parameters
-    ----------
-    robot : wmr.Robot
-
-    Returns
-    -------
-    float
-    """
-    d = np.linalg.norm(robot.mount_points, axis=1).max()
-    r = max(float(u.r) for u in robot.wheels)
-    return float(d + 0.9 * r)
 
 
 # ----------------------------------------------------------------------------- primitives
@@ -339,24 +236,6 @@ def draw_robot(ax, robot, beta, pose=(0.0, 0.0, 0.0), *, ghost=False, labels=Tru
                 label(ax, g.P[k], f"$P_{{{k + 1}}}{suffix}$", offset=offs.get(k + 1, dflt), ha="center",
                       va="center")
     return g
-
-
-def robot_extent(g, radius):
-    """Points bounding a drawn robot: the box around the platform disc and the wheel centres.
-
-    Parameters
-    ----------
-    g : RobotDrawing
-    radius : float
-        Platform radius.
-
-    Returns
-    -------
-    numpy.ndarray (4 + n_wheels, 2)
-    """
-    c = np.asarray(g.C)
-    box = c + radius * np.array([[1, 1], [-1, -1], [1, -1], [-1, 1]])
-    return np.vstack([box] + [np.asarray(w) for w in g.wheels])
 
 
 def _draw_lines(ax, points, directions, include, kind, **kw):
