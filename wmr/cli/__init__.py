@@ -4,8 +4,9 @@ Each command lives in its own module of this package (one file per command) and 
 
 * ``HELP``: one line for ``wmr --help``;
 * ``add_arguments(parser)``: its options (an :class:`argparse.ArgumentParser`);
-* ``run(args) -> int``: the exit status (0 ok, 2 bad input: a one-line message on stderr, no
-  traceback).
+* ``run(args) -> int``: the exit status (0 ok).  Bad input raises ``ValueError`` or ``TypeError``
+  (an unreadable file ``OSError``); :func:`main` turns it into one line on stderr,
+  ``wmr COMMAND: message``, and exit status 2, without a traceback.
 
 :data:`COMMANDS` lists them in the order ``wmr --help`` shows.
 """
@@ -51,4 +52,8 @@ def main(argv=None):
     """
     args = _parser().parse_args(sys.argv[1:] if argv is None else argv)
     mod = importlib.import_module(f"{__name__}.{COMMANDS[args.command]}")
-    return mod.run(args)
+    try:
+        return mod.run(args)
+    except (ValueError, TypeError, OSError) as exc:               # bad input: one line, no traceback
+        print(f"wmr {args.command}: {' '.join(str(exc).split())}", file=sys.stderr)
+        return 2

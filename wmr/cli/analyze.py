@@ -13,7 +13,6 @@ from __future__ import annotations
 
 import json
 import math
-import sys
 
 __all__ = ["HELP", "add_arguments", "run", "as_json", "table"]
 
@@ -128,15 +127,11 @@ def run(args):
     Returns
     -------
     int
-        0, or 2 on bad input (one line on stderr).
+        0; bad input raises ValueError or TypeError (:func:`wmr.cli.main` reports it in one line, status 2).
     """
     import wmr
     from ..analysis.overview import overview
-    try:
-        robot = wmr.load(args.robot)
-        ov = overview(robot, grid=args.grid, twists=args.twists, seed=args.seed)
-    except (ValueError, TypeError, OSError) as exc:
-        print(f"wmr analyze: {' '.join(str(exc).split())}", file=sys.stderr)
-        return 2
+    robot = wmr.load(args.robot)
+    ov = overview(robot, grid=args.grid, twists=args.twists, seed=args.seed)
     print(json.dumps(as_json(ov), indent=2) if args.json else table(ov))
     return 0

@@ -15,7 +15,6 @@ exactly when the rates are compatible.
 from __future__ import annotations
 
 import json
-import sys
 
 import numpy as np
 
@@ -56,17 +55,13 @@ def run(args):
     Returns
     -------
     int
-        0, or 2 on bad input (one line on stderr).
+        0; bad input raises ValueError or TypeError (:func:`wmr.cli.main` reports it in one line, status 2).
     """
     import wmr
-    try:
-        robot = wmr.load(args.robot)
-        beta = np.radians(numbers(args.angles, "--angles", robot.w, "one angle in degrees per wheel unit"))
-        rates = np.array(numbers(args.rates, "--rates", robot.n_rates, " ".join(robot.rate_names)))
-        sol = wmr.forward(robot, beta, rates)
-    except (ValueError, TypeError, OSError) as exc:
-        print(f"wmr fk: {' '.join(str(exc).split())}", file=sys.stderr)
-        return 2
+    robot = wmr.load(args.robot)
+    beta = np.radians(numbers(args.angles, "--angles", robot.w, "one angle in degrees per wheel unit"))
+    rates = np.array(numbers(args.rates, "--rates", robot.n_rates, " ".join(robot.rate_names)))
+    sol = wmr.forward(robot, beta, rates)
     size = float(np.abs(robot.mount_points).max())
     t = clean(sol.value, max(abs(sol.value[0]) * size, *np.abs(sol.value[1:])))      # rounding noise shown as 0
     res = clean(sol.residual, float(np.abs(robot.J2(beta) @ rates).max()))

@@ -21,7 +21,6 @@ from __future__ import annotations
 
 import json
 import math
-import sys
 
 import numpy as np
 
@@ -78,23 +77,19 @@ def run(args):
     Returns
     -------
     int
-        0, or 2 on bad input (one line on stderr).
+        0; bad input raises ValueError or TypeError (:func:`wmr.cli.main` reports it in one line, status 2).
     """
     import wmr
-    try:
-        robot = wmr.load(args.robot)
-        twist = np.array([number(args.omega, "--omega"), number(args.vx, "--vx"), number(args.vy, "--vy")])
-        current = np.zeros(robot.w) if args.current_angles is None else np.radians(
-            numbers(args.current_angles, "--current-angles", robot.w, "one angle in degrees per wheel unit"))
-        current = robot.effective_beta(current)                   # fixed and Swedish wheels: their own angle
-        beta = wmr.steering_angles(robot, twist, current)
-        if args.current_angles is not None:
-            beta = _nearest(robot, beta, current)
-        sol = wmr.inverse(robot, beta, twist)
-        now = wmr.inverse(robot, current, twist)
-    except (ValueError, TypeError, OSError) as exc:
-        print(f"wmr ik: {' '.join(str(exc).split())}", file=sys.stderr)
-        return 2
+    robot = wmr.load(args.robot)
+    twist = np.array([number(args.omega, "--omega"), number(args.vx, "--vx"), number(args.vy, "--vy")])
+    current = np.zeros(robot.w) if args.current_angles is None else np.radians(
+        numbers(args.current_angles, "--current-angles", robot.w, "one angle in degrees per wheel unit"))
+    current = robot.effective_beta(current)                   # fixed and Swedish wheels: their own angle
+    beta = wmr.steering_angles(robot, twist, current)
+    if args.current_angles is not None:
+        beta = _nearest(robot, beta, current)
+    sol = wmr.inverse(robot, beta, twist)
+    now = wmr.inverse(robot, current, twist)
     change = _wrap(beta - current)
     out = {"twist": {"omega": twist[0], "vx": twist[1], "vy": twist[2]}, "angles_deg": np.degrees(beta).tolist(),
            "rates": dict(zip(robot.rate_names, sol.value.tolist())), "admissible": bool(sol.admissible),

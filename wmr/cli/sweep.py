@@ -138,14 +138,12 @@ def run(args):
     Returns
     -------
     int
-        0, or 2 on bad input (one line on stderr).
+        0; bad input raises ValueError or TypeError (:func:`wmr.cli.main` reports it in one line, status 2).
     """
     import wmr
     from ..analysis.sweep import sweep
     client = cluster = None
     try:
-        if not hasattr(wmr, "load"):
-            raise ValueError("reading robot files needs wmr.load, which this installation lacks")
         robot = wmr.load(args.robot)
         angles = _angles(args, robot.w)
         qs = [_level(q) for q in args.quantiles.split(",") if q.strip()]
@@ -154,9 +152,6 @@ def run(args):
             client, cluster = _client(args.dask)
         res = sweep(robot, args.analysis, angles, L=args.length, quantiles=qs, chunk=args.chunk,
                     progress=_Bar(sys.stderr) if show else None, client=client)
-    except (ValueError, TypeError, OSError) as exc:
-        print(f"wmr sweep: {exc}", file=sys.stderr)
-        return 2
     finally:
         if client is not None:
             client.close()
