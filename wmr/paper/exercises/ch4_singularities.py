@@ -4,7 +4,6 @@ See :mod:`wmr.paper.exercises` for how the checks are used.
 """
 from __future__ import annotations
 
-from ...analysis.mobility import rank_F
 from ...model.robots import paper_robot
 from .feedback import Feedback, _angles
 
@@ -55,17 +54,17 @@ def mobile_and_singular(beta_deg):
     -------
     Feedback
     """
-    from ...analysis.singularities import det_J, is_singular
+    from ...analysis.singularities import classify
     beta, fb = _angles(beta_deg, degrees=True)
     if fb is not None:
         return fb
-    bot = paper_robot("centred", L=1.0, r=1.0)
-    dj = float(det_J(bot, beta))
-    rk = int(rank_F(bot, beta))
-    if not is_singular(bot, beta):                       # relative to the size of det J's terms (wmr.TOL)
-        return Feedback(False, rf"$\det\mathbf J = {dj:.3g}$: $\mathbf J$ is not singular here.")
-    if rk != 5:
-        return Feedback(False, r"$\mathbf J$ is singular, but rank $\mathbf F = 6$: the robot cannot move. The axle lines "
-                               "must be concurrent too.")
+    if beta.shape != (3,):
+        return Feedback(False, "Give three angles.")
+    c = classify(paper_robot("centred", L=1.0, r=1.0), beta)      # the same decision as in exercise 4.1
+    if not c.singular:
+        return Feedback(False, rf"$\det\mathbf J = {c.det_J:.3g}$: $\mathbf J$ is not singular here.")
+    if c.rank_F != 5:
+        return Feedback(False, rf"$\mathbf J$ is singular, but rank $\mathbf F = {c.rank_F}$: the robot cannot move. The "
+                               "axle lines must be concurrent too.")
     return Feedback(True, r"$\det\mathbf J = 0$ and rank $\mathbf F = 5$: the robot can move although $\mathbf J$ is singular "
                           r"(all planes parallel, or the planes meet on the circle through the $P_i$).")
