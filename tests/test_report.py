@@ -29,7 +29,7 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 from tools import build  # noqa: E402
 from tools.build import gitinfo, html as html_export, inputs  # noqa: E402
-from tools.build.pdf import scaled_formulas  # noqa: E402
+from tools.build.pdf import MIN_FORMULA_SCALE, scaled_formulas  # noqa: E402
 
 TREE = build.Tree(os.environ.get("WMR_ROOT") or ROOT)  # WMR_ROOT: test another tree
 HAVE_TEX = bool(shutil.which("xelatex") and shutil.which("pandoc"))
@@ -37,7 +37,6 @@ HAVE_POPPLER = bool(shutil.which("pdftotext") and shutil.which("pdfinfo"))
 REMOTE = re.compile(r"^\s*(https?:)?//", re.I)
 CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser") or shutil.which("google-chrome")
 MAX_HTML_BYTES = 4_000_000
-MIN_FORMULA_SCALE = 0.6     # a formula may be shrunk to fit the line, never below this
 
 
 @pytest.fixture(scope="module")

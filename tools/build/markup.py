@@ -1,5 +1,6 @@
 """Markdown to HTML and to LaTeX, through one reader: pandoc's GitHub-flavoured Markdown with
-``$...$`` math (``gfm+tex_math_dollars``), the closest to what Jupyter shows.
+``$...$`` math and typographic quotes and dashes (``gfm+tex_math_dollars+smart``: "drifts" is set
+with opening and closing quotes, ``--`` as an en dash), the closest to what Jupyter shows.
 
 Every Markdown fragment of the report (cells, Markdown outputs, table cells, captions) is
 converted in **one** pandoc call per format (:class:`Batch`), so the HTML and the PDF read the
@@ -17,7 +18,7 @@ from .log import BuildError
 
 __all__ = ["READER", "Batch", "math_body", "text_of", "table_math_pipes", "tex_anchor_tokens", "tex_anchor_targets"]
 
-READER = "gfm+tex_math_dollars"
+READER = "gfm+tex_math_dollars+smart"
 _SEP = "WMRFRAGMENT{:05d}"
 _SEP_RE = {"html": re.compile(r"\n*<p>WMRFRAGMENT(\d{5})</p>\n*"),
            "latex": re.compile(r"\n*^WMRFRAGMENT(\d{5})$\n*", re.M)}

@@ -25,9 +25,12 @@ from .log import BuildError, say
 from .markup import Batch, math_body, text_of
 from .paths import TEMPLATES, Tree
 
-__all__ = ["export_pdf", "to_latex", "display_math", "wrap_tables", "breakable_code", "scaled_formulas", "fix_id", "UNICODE"]
+__all__ = ["export_pdf", "to_latex", "display_math", "wrap_tables", "breakable_code", "scaled_formulas", "fix_id", "UNICODE",
+           "MIN_FORMULA_SCALE"]
 
 MAX_RUNS = 4
+#: a formula wider than the line is shrunk to fit it; below this scale it counts as unreadable
+MIN_FORMULA_SCALE = 0.8
 #: characters of the text that Latin Modern lacks, set from the math fonts instead
 UNICODE = {
     "→": r"\ensuremath{\rightarrow}", "←": r"\ensuremath{\leftarrow}", "↔": r"\ensuremath{\leftrightarrow}",
@@ -190,9 +193,9 @@ def export_pdf(nb, t: Tree, out: Path, epoch: int) -> list[str]:
     missing = sorted(set(re.findall(r"Missing character: There is no (\S+)", log)))
     if missing:
         warnings.append(f"characters missing from the fonts: {' '.join(missing)}")
-    small = [f"{s:.2f} (p. {p})" for s, p in scaled_formulas(log) if s < 0.8]
+    small = [f"{s:.2f} (p. {p})" for s, p in scaled_formulas(log) if s < MIN_FORMULA_SCALE]
     if small:
-        warnings.append(f"formulas shrunk below 80 % to fit the line: {', '.join(small)}")
+        warnings.append(f"formulas shrunk below {MIN_FORMULA_SCALE:.0%} to fit the line: {', '.join(small)}")
     over = re.findall(r"Overfull \\hbox \((\d+\.\d+)pt too wide\)[^\n]*lines? (\d+)", log)
     wide = [f"{float(w):.0f}pt (report.tex line {l})" for w, l in over if float(w) > 2]
     if wide:

@@ -27,7 +27,7 @@ from .ledger import Finding, Ledger
 from .verify import SEED
 
 __all__ = ["Project", "project", "Chapter", "quote", "show", "say", "table", "explicit", "numeric", "mod_pi",
-           "latex"]
+           "latex", "aligned_sum"]
 
 
 def _display(*objs):
@@ -148,7 +148,7 @@ def latex(obj):
     return sp.latex(obj, mat_str="bmatrix", mat_delim="")
 
 
-def show(lhs, expr=None, tag=None):
+def show(lhs, expr=None, tag=None, per_line=None):
     r"""Typeset ``lhs = expr`` as display math (Markdown ``$$...$$``).
 
     Parameters
@@ -159,15 +159,59 @@ def show(lhs, expr=None, tag=None):
         The right side.
     tag : str, optional
         An equation tag, e.g. ``"59"`` for ``\tag{59}``.
+    per_line : int, optional
+        Break a SymPy sum into lines of this many terms (``aligned``), in SymPy's printing order:
+        a long sum then keeps the size of the text instead of being shrunk to the line.
 
     Returns
     -------
     None
     """
-    body = lhs if expr is None else f"{lhs} = {latex(expr)}"
+    if expr is None:
+        body = lhs
+    elif per_line is not None and isinstance(expr, sp.Add):
+        body = aligned_sum(lhs, expr, per_line)
+    else:
+        body = f"{lhs} = {latex(expr)}"
     if tag is not None:
         body += rf" \tag{{{tag}}}"
     _display(_markdown(f"$$\n{body}\n$$"))
+
+
+def aligned_sum(lhs, expr, per_line):
+    r"""LaTeX of ``lhs = expr`` with the terms of the sum ``expr`` in lines of ``per_line`` (``aligned``).
+
+    Parameters
+    ----------
+    lhs : str
+        LaTeX of the left side.
+    expr : sympy.Add
+        The right side; its terms are taken in SymPy's printing order.
+    per_line : int
+        Terms per line, at least 1.
+
+    Returns
+    -------
+    str
+        A LaTeX body (no ``$``).
+
+    Examples
+    --------
+    >>> x, y, z = sp.symbols("x y z")
+    >>> aligned_sum("s", x - y + z, 2)
+    '\\begin{aligned}s = {}& x - y\\\\ &+ z\\end{aligned}'
+    """
+    if isinstance(per_line, bool) or not isinstance(per_line, int):
+        raise TypeError(f"per_line must be an int, got {per_line!r}")
+    if per_line < 1:
+        raise ValueError(f"per_line must be at least 1, got {per_line}")
+    parts = []
+    for k, term in enumerate(expr.as_ordered_terms()):
+        neg = term.could_extract_minus_sign()
+        text = latex(-term if neg else term)
+        parts.append(("- " if neg else ("+ " if k else "")) + text)
+    lines = [" ".join(parts[i:i + per_line]) for i in range(0, len(parts), per_line)]
+    return r"\begin{aligned}" + lhs + " = {}& " + r"\\ &".join(lines) + r"\end{aligned}"
 
 
 def say(text):

@@ -147,16 +147,17 @@ register(
 
 register(
     "21", SECTION_KIN,
-    r"\mathbf{J}_1\mathbf{t} = \mathbf{J}_2\dot{\boldsymbol\theta},\quad "
+    # one line of print, three here: the display is broken by hand so that it keeps its size
+    r"\begin{aligned}&\mathbf{J}_1\mathbf{t} = \mathbf{J}_2\dot{\boldsymbol\theta},\quad "
     r"\mathbf{J}_1 = \begin{bmatrix}\mathbf{E}\mathbf{d}_1 & \mathbf{1}\\ \mathbf{E}\mathbf{d}_2 & \mathbf{1}\\ "
     r"\vdots & \vdots\\ \mathbf{E}\mathbf{d}_w & \mathbf{1}\end{bmatrix},\quad "
-    r"\mathbf{t} = \begin{bmatrix}\dot\psi\\ \dot{\mathbf{c}}\end{bmatrix},\quad "
-    r"\dot{\boldsymbol\theta} = \begin{bmatrix}\dot\phi_1 & \dot\theta_1 & \dot\phi_2 & \dot\theta_2 & \dots & "
-    r"\dot\phi_w & \dot\theta_w\end{bmatrix}^{\mathrm{T}},\quad "
-    r"\mathbf{J}_2 = \begin{bmatrix}\mathbf{R}_{bw1}\tilde{\mathbf{p}} & \mathbf{0} & \dots & \mathbf{0}\\ "
+    r"\mathbf{t} = \begin{bmatrix}\dot\psi\\ \dot{\mathbf{c}}\end{bmatrix},\\[4pt] "
+    r"&\dot{\boldsymbol\theta} = \begin{bmatrix}\dot\phi_1 & \dot\theta_1 & \dot\phi_2 & \dot\theta_2 & \dots & "
+    r"\dot\phi_w & \dot\theta_w\end{bmatrix}^{\mathrm{T}},\\[4pt] "
+    r"&\mathbf{J}_2 = \begin{bmatrix}\mathbf{R}_{bw1}\tilde{\mathbf{p}} & \mathbf{0} & \dots & \mathbf{0}\\ "
     r"\mathbf{0} & \mathbf{R}_{bw2}\tilde{\mathbf{p}} & \dots & \mathbf{0}\\ \vdots & \vdots & \ddots & \vdots\\ "
     r"\mathbf{0} & \mathbf{0} & \dots & \mathbf{R}_{bww}\tilde{\mathbf{p}}\end{bmatrix},\quad "
-    r"\tilde{\mathbf{p}} = \begin{bmatrix}-d & 0\\ 0 & -r\end{bmatrix}",
+    r"\tilde{\mathbf{p}} = \begin{bmatrix}-d & 0\\ 0 & -r\end{bmatrix}\end{aligned}",
     sp.Eq(_J1_3 * T_EXPLICIT, _J2_3 * _th_3, evaluate=False),
     garbled=r"the rate vector is extracted as $[\dot\phi_1\ \dot\phi_2\ \dot\phi_2 \dots \dot\phi_w\ \dot\theta_w]^{\mathrm T}$; "
             r"reconstructed as $[\dot\phi_1\ \dot\theta_1\ \dot\phi_2\ \dot\theta_2 \dots \dot\phi_w\ \dot\theta_w]^{\mathrm T}$, "
