@@ -105,7 +105,8 @@ def test_isotropy_d_zero_records_its_own_simulation():
     d = isotropy.dead_zone_of_isotropy(pairs=3, n=50)
     f = d["isotropy-d-zero"]
     assert grade(f) == "ok" and "simulated full steering turn" in f.check
-    assert abs(d.radius_min - 0.1) < 1e-6 and abs(d.radius_max - 0.1) < 1e-6
+    assert abs(d.radius_min - 0.1) < 1e-6 and abs(d.radius_max - 0.1) < 1e-6 and d.d == 0.1
+    assert d.radius_error == pytest.approx(max(d.radius_max - 0.1, 0.1 - d.radius_min), abs=1e-15)
 
 
 def test_omnidirectional_records_corner_and_curved_translation():

@@ -33,17 +33,18 @@ _INLINE_MATH = re.compile(r"(?<!\\)\$(?!\$)(.+?)(?<!\\)\$")
 def table_math_pipes(md: str) -> str:
     r"""On a row of a Markdown table, a ``|`` inside ``$...$`` belongs to the formula (an absolute
     value, a norm); GitHub-flavoured Markdown would split the cell there, so it is written
-    ``\vert`` (``\Vert`` for ``\|``).
+    ``\vert{}`` (``\Vert{}`` for ``\|``): the empty group ends the command without a space, so
+    that a closing ``$`` still follows a non-space and pandoc still reads the formula as math.
 
     Examples
     --------
     >>> print(table_math_pipes(r"| a | $\min|CC_f|$ |"))
-    | a | $\min\vert CC_f\vert $ |
+    | a | $\min\vert{}CC_f\vert{}$ |
     >>> table_math_pipes("not a table: $|x|$")
     'not a table: $|x|$'
     """
     def row(m):
-        return _INLINE_MATH.sub(lambda k: "$" + k.group(1).replace("\\|", "\\Vert ").replace("|", "\\vert ") + "$",
+        return _INLINE_MATH.sub(lambda k: "$" + k.group(1).replace("\\|", "\\Vert{}").replace("|", "\\vert{}") + "$",
                                 m.group(0))
     return _TABLE_ROW.sub(row, md)
 

@@ -140,7 +140,7 @@ def scalene_optimum(points):
     if got > 1 + 1e-6:
         return Feedback(False, f"Worst case $\\bar\\kappa = {got:.4f}$: the centroid of your points is "
                                f"{design.centroid_offset():.3g} RMS radii away from C.")
-    return Feedback(True, f"Sides {', '.join(f'{x:.3g}' for x in s)}: $\\bar\\kappa = {got:.6f}$. Only the centroid "
+    return Feedback(True, f"Sides {', '.join(f'{x:.3g}' for x in s)}: $\\bar\\kappa = {got:.4g}$. Only the centroid "
                           "matters (37); the equal distances of (38) are not needed.")
 
 

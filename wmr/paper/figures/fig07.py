@@ -211,7 +211,7 @@ def draw(data, fig=None):
         zoom = ax.indicate_inset_zoom(axi, edgecolor="#999999", linewidth=0.6, alpha=1.0)
         for line in zoom.connectors:                    # they would cross the drawing; the box and title say it
             line.set_visible(False)
-        an.info_box(ax, [rf"fitted radius of the path of $C$: $R = {data.radius:.9f}$",
+        an.info_box(ax, [r"path of $C$: a circle of fitted radius $R$",
                          rf"offset $d = {data.d:g}$:  $|R-d| = {number(data.radius_error, 2)}$ "
                          rf"$\leq d(\omega\Delta t)^4 = {number(data.tolerance, 2)}$",
                          rf"contact points $G_i$ moved $\leq {number(data.contact_drift, 2)}$;  "
@@ -238,7 +238,7 @@ def caption(data):
             rf"$\Delta t = T/{data.steps}$): the wheels, all at $\beta_i = {degrees(data.beta0 * DEG)}^\circ$, are "
             r"steered one full turn ($\dot\phi_i = 2\pi/T$) without driving ($\dot\theta_i = 0$). "
             r"$C$ traces a circle about $C_\mathrm{f}$, the centroid of the contact points $G_i$, of fitted radius "
-            rf"$R = {data.radius:.9f}$: the offset $d = {data.d:g}$ to within ${number(data.radius_error, 2)}$ "
+            rf"$R$, the offset $d = {data.d:g}$ to within $|R - d| = {number(data.radius_error, 2)}$ "
             rf"(integration error bound ${number(data.tolerance, 2)}$). The $G_i$ do not move (at most "
             rf"${number(data.contact_drift, 2)}$) and the platform does not turn "
             rf"(${residual_text(MAX_PSI, data.psi_max)}$). Solid: start; dashed: after {data.later:g} of the "

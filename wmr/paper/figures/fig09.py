@@ -213,7 +213,8 @@ def caption(data):
     return (r"Rotation of the WMR with three centred wheels (simulated, $\dot\psi = 1$, turned "
             rf"{a.turn_deg:.4g}$^\circ$; dashed: final pose): (a) IC at the operation point $C$, which stays fixed; "
             rf"(b) IC at $U$, $\mathbf{{u}}_c = ({data.uc_U[0]:g}, {data.uc_U[1]:g})L$, about which $C$ moves on a circle "
-            rf"of fitted radius {b.radius:.6f} ($\|\mathbf{{u}}_c\| = {b.radius_expected:.6f}$). Steering angles from "
+            rf"of radius $\|\mathbf{{u}}_c\| = {b.radius_expected:.4f}$ (the fitted radius differs by "
+            rf"${bound(abs(b.radius - b.radius_expected), latex=True)}$). Steering angles from "
             r"`wmr.steering_angles`: the axles (dashed) all pass through the IC (distance of their computed "
             rf"intersection from the IC ${bound(max(a.axles.error, b.axles.error), latex=True)}$); rank $\mathbf{{F}} = {a.rank_F}$ "
             r"(mobility 1) in both cases.")

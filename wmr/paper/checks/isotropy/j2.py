@@ -151,7 +151,8 @@ def dead_zone_of_isotropy(steps=200, omega=2.0, pairs=20, n=2000, seed=SEED):
     Returns
     -------
     Derivation
-        ``radius_min``, ``radius_max``, ``contact_drift``, ``slip``, finding ``isotropy-d-zero``.
+        ``d`` (the offset), ``radius_min``, ``radius_max`` (range of :math:`|CC_f|`), ``radius_error``
+        (:math:`\max\,\big||CC_f| - d\big|`), ``contact_drift``, ``slip``, finding ``isotropy-d-zero``.
     """
     iso = J2_isotropy(pairs=pairs, n=n, seed=seed)
     off = paper_robot("offset", L=0.4, r=0.1)                       # d = r = 0.1
@@ -161,9 +162,11 @@ def dead_zone_of_isotropy(steps=200, omega=2.0, pairs=20, n=2000, seed=SEED):
     radius = np.linalg.norm(run.pose[:, 1:] - contacts.mean(axis=1), axis=1)
     drift = float(np.max(np.abs(contacts - contacts[:1])))
     d = off.wheels[0].d
-    res = max(float(np.max(np.abs(radius - d))), drift)
+    radius_error = float(np.max(np.abs(radius - d)))
+    res = max(radius_error, drift)
     holds = res < 1e-9 and iso.kappa_d0_infinite and iso["isotropy-d-equals-r"].printed_holds
-    return Derivation(radius_min=float(radius.min()), radius_max=float(radius.max()), contact_drift=drift,
+    return Derivation(d=float(d), radius_min=float(radius.min()), radius_max=float(radius.max()),
+                      radius_error=radius_error, contact_drift=drift,
                       slip=float(run.slip.max()), findings=[claim(
         "isotropy-d-zero", holds, r"$\kappa(\mathbf J_2) = \max(d,r)/\min(d,r)$ is 1 only at $d = r$ and infinite at the "
                                   r"drift-free $d = 0$; a simulated full steering turn without driving at $d = r$ "
