@@ -162,6 +162,14 @@ def test_html_size(html_text):
     assert size <= MAX_HTML_BYTES, f"build/report.html is {size / 1e6:.2f} MB (limit {MAX_HTML_BYTES / 1e6:.0f} MB)"
 
 
+def test_html_keeps_punctuation_with_its_formula(html_text):
+    # a comma after inline math must not start a line of a narrow table cell, nor "(" end one before it
+    bound = r'(?<!<span class="nobr">)(?<!<span class="nobr">\()(?<!<span class="nobr">\[)'
+    loose = re.findall(bound + r'<span class="math inline">[^<]*</span>[,.;:)]'
+                       r'|(?<!<span class="nobr">)\(<span class="math inline">', html_text)
+    assert not loose, f"{len(loose)} formulas whose punctuation may wrap to the next line: {loose[:3]}"
+
+
 def test_html_ids_unique_and_links_resolve(html_text):
     ids = parse(html_text).ids
     dups = sorted({i for i in ids if ids.count(i) > 1})

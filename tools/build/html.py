@@ -21,7 +21,7 @@ from .log import BuildError, say
 from .markup import Batch, math_body, text_of
 from .paths import TEMPLATES
 
-__all__ = ["export_html", "mathjax_gz", "navigation", "unique_ids", "broken_links"]
+__all__ = ["export_html", "mathjax_gz", "navigation", "unique_ids", "broken_links", "keep_punctuation"]
 
 
 @functools.lru_cache(maxsize=1)
@@ -84,6 +84,24 @@ def _fill(nb, batch: Batch) -> None:
 
 
 _HEADING = re.compile(r'<h([12])((?:\s+[a-z-]+="[^"]*")*)>(.*?)</h\1>', re.S)
+
+
+_MATH_PUNCT = re.compile(r'([(\[]?)(<span class="math inline">[^<]*</span>)([,.;:!?)\]]*)')
+
+
+def keep_punctuation(page: str) -> str:
+    r"""Bind the brackets and punctuation around inline math to it (``<span class="nobr">``): a
+    browser may break a line before or after the typeset formula, an inline box, which in a narrow
+    table cell leaves a ``(`` at the end of a line or a comma at the start of the next.
+
+    Examples
+    --------
+    >>> keep_punctuation('(<span class="math inline">\\(x\\)</span>), and <span class="math inline">y</span> z')
+    '<span class="nobr">(<span class="math inline">\\(x\\)</span>),</span> and <span class="math inline">y</span> z'
+    """
+    def one(m):
+        return f'<span class="nobr">{m.group(0)}</span>' if m.group(1) or m.group(3) else m.group(0)
+    return _MATH_PUNCT.sub(one, page)
 
 
 def unique_ids(page: str) -> tuple[str, list[str]]:
@@ -170,7 +188,7 @@ def export_html(nb, out: Path) -> None:
     exp = _exporter()
     body, _ = exp.from_notebook_node(prepared, resources={
         "wmr_css": _css(), "wmr_mathjax_gz": mathjax_gz(), "wmr_paper_html": batch.fill(ref)})
-    body, dups = unique_ids(body)
+    body, dups = unique_ids(keep_punctuation(body))
     if dups:
         say("html", f"WARNING: ids defined more than once, renamed: {', '.join(sorted(set(dups)))}")
     body = body.replace("<!--WMR-NAV-->", navigation(body), 1)

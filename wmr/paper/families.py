@@ -271,7 +271,7 @@ def families(robot=None, n=72, exact=True):
     a23 = _deg(pair_line_angle(num, 2, 3))
     out.append(Family(
         "v-P", "(v-b) planes through a mount point",
-        rf"e.g. $\beta_1\equiv{a13}^\circ,\ \beta_2\equiv{a23}^\circ \pmod{{180^\circ}}$, $\beta_3$ free ($D_P=P_3$); likewise at $P_1$, $P_2$",
+        rf"e.g. $\beta_1\equiv{a13}^\circ$, $\beta_2\equiv{a23}^\circ$ (mod $180^\circ$), $\beta_3$ free ($D_P=P_3$); likewise at $P_1$, $P_2$",
         r"$D_P=P_k$: the other two planes lie on the sides through $P_k$; wheel $k$ may take any angle",
         "partly", "(v)", "Implied by (v) but, unlike (ii)-(iv), not identified as a family with a free angle.",
         samples=np.concatenate(rows),
