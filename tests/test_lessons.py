@@ -20,6 +20,8 @@ from wmr.paper import symbols as S
 ROOT = Path(__file__).resolve().parents[1]
 CHAPTERS = sorted((ROOT / "notebooks").glob("[0-9][0-9]_*.ipynb"))
 PAPER_CHAPTERS = [p for p in CHAPTERS if p.name[:2] in {"01", "02", "03", "04", "05", "06"}]
+#: every chapter but the interactive robot (07), whose "Things to try" are for the sliders
+EXERCISE_CHAPTERS = [p for p in CHAPTERS if p.name[:2] != "07"]
 MAX_CELL_LINES = 12
 
 
@@ -70,16 +72,23 @@ def test_equations_are_quoted_and_verdicts_are_generated(path):
     assert len(ledger_cells) == 1 and "ch.close()" in ledger_cells[0].source
 
 
-@pytest.mark.parametrize("path", PAPER_CHAPTERS, ids=lambda p: p.name)
+def test_exercise_chapters_include_the_design_study():
+    assert [p.name[:2] for p in EXERCISE_CHAPTERS] == ["01", "02", "03", "04", "05", "06", "08"]
+
+
+@pytest.mark.parametrize("path", EXERCISE_CHAPTERS, ids=lambda p: p.name)
 def test_chapter_has_exercises_with_checks_and_worked_solutions(path):
+    # checks live in wmr.paper.exercises (chapters 1-6) or wmr.paper.design_study (chapter 8, as `study`)
+    call = r"(?:exercises|study)\.(\w+)\("
+    own = {"describe_robot", "describe_design"}
     ex = [c for c in cells(path, "code") if "exercise" in tags(c)]
     sol = [c for c in cells(path, "code") if "solution" in tags(c)]
-    checks = {m for c in ex for m in re.findall(r"exercises\.(\w+)\(", c.source)} - {"describe_robot"}
+    checks = {m for c in ex for m in re.findall(call, c.source)} - own
     assert len(checks) >= 2, f"{path.name}: exercises {checks}"
-    assert {m for c in sol for m in re.findall(r"exercises\.(\w+)\(", c.source)} == checks
-    assert any("describe_robot" in c.source or "my_robot" in c.source for c in ex), f"{path.name}: no 'your own robot' cell"
+    assert {m for c in sol for m in re.findall(call, c.source)} == checks
+    assert any(any(o in c.source for o in own) or "my_robot" in c.source for c in ex), f"{path.name}: no 'your own robot' cell"
     for c in ex:
-        if re.search(r"exercises\.\w+\(", c.source) and "my_robot" not in c.source:
+        if re.search(call, c.source) and "my_robot" not in c.source:
             assert "= None" in c.source, f"{path.name}: an exercise template without a placeholder:\n{c.source}"
 
 

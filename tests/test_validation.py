@@ -4,6 +4,8 @@
 Every bad input raises ``TypeError`` (wrong kind) or ``ValueError`` (bad value) whose message names
 the argument and shows the value.
 """
+import warnings
+
 import numpy as np
 import pytest
 import sympy as sp
@@ -234,6 +236,8 @@ QUOTED = [   # (case, call, exception type, words the message must hold)
      ["dt", "max_steps", "5e+08"]),
     ("L = 1e-320", lambda: _BOT.J([0.1, 0.2, 0.3], L=1e-320), ValueError, ["L", "1e-320", "overflow"]),
     ("huge twist", lambda: wmr.inverse(_BOT, [0.0] * 3, [1.7e308] * 3), ValueError, ["twist", "overflow"]),
+    ("huge rates", lambda: wmr.simulate(_BOT, [1.7e308] * _BOT.n_rates, [0.0] * 3, t_end=1.0, dt=0.1), ValueError,
+     ["rates", "overflow"]),
     ("name not a string", lambda: wmr.Robot(_BOT.wheels, name=["n"]), TypeError, ["name", "['n']"]),
     ("exact not a bool", lambda: wmr.equilateral_mounts(1.0, exact="yes"), TypeError, ["exact", "'yes'"]),
     ("clockwise not a bool", lambda: wmr.equilateral_mounts(1.0, clockwise=None), TypeError, ["clockwise", "None"]),
@@ -245,7 +249,8 @@ QUOTED = [   # (case, call, exception type, words the message must hold)
 
 @pytest.mark.parametrize("case, call, kind, words", QUOTED, ids=[q[0] for q in QUOTED])
 def test_quoted_bad_input_is_rejected(case, call, kind, words):
-    with pytest.raises(Exception) as exc:
+    with pytest.raises(Exception) as exc, warnings.catch_warnings():
+        warnings.simplefilter("error", RuntimeWarning)          # no NumPy warning on the way to the error
         call()
     assert exc.type is kind, (exc.type, str(exc.value))
     assert all(w in str(exc.value) for w in words), str(exc.value)

@@ -20,6 +20,14 @@ TEMPLATES = Path(__file__).resolve().parent / "templates"
 TOOL_SOURCES = Path(__file__).resolve().parent
 
 
+def _listing(directory: Path, pattern: str, keep) -> list[Path]:
+    """The files of ``directory`` that match ``pattern`` (``**/`` for every level) and ``keep``,
+    in name order; none when the directory does not exist."""
+    if not directory.is_dir():
+        return []
+    return sorted(p for p in directory.glob(pattern) if p.is_file() and keep(p))
+
+
 @dataclass(frozen=True)
 class Tree:
     """The paths of one project tree.
@@ -54,15 +62,11 @@ class Tree:
 
     def notebook_files(self) -> list[Path]:
         """``notebooks/*.ipynb`` in name order (hidden files and checkpoints excluded)."""
-        if not self.notebooks.is_dir():
-            return []
-        return sorted(p for p in self.notebooks.glob("*.ipynb") if not p.name.startswith("."))
+        return _listing(self.notebooks, "*.ipynb", lambda p: not p.name.startswith("."))
 
     def wmr_files(self) -> list[Path]:
         """Every ``wmr/**/*.py``: a change to any of them makes every notebook stale."""
-        if not self.wmr.is_dir():
-            return []
-        return sorted(p for p in self.wmr.rglob("*.py") if "__pycache__" not in p.parts)
+        return _listing(self.wmr, "**/*.py", lambda p: "__pycache__" not in p.parts)
 
     # --- generated, tracked (written by the notebooks; must not change when re-built)
     @property
@@ -83,10 +87,7 @@ class Tree:
 
     def figure_files(self) -> list[Path]:
         """Files under ``figures/`` written by the notebooks (everything but the merged ledger)."""
-        if not self.figures.is_dir():
-            return []
-        return sorted(p for p in self.figures.rglob("*") if p.is_file() and p != self.ledger
-                      and not p.name.startswith("."))
+        return _listing(self.figures, "**/*", lambda p: p != self.ledger and not p.name.startswith("."))
 
     # --- build outputs (untracked)
     @property

@@ -168,10 +168,13 @@ def simulate(robot, rates, beta0, t_end, dt, steer=None, pose0=(0.0, 0.0, 0.0), 
     rate_fn = _as_input(rates, robot.n_rates, "rates")
     steer_fn = _as_input(np.zeros(robot.w) if steer is None else steer, robot.w, "steer")
 
+    def overflow(t):
+        return ValueError(f"rates or steer are too large for this run: the pose or the steering angles overflow "
+                          f"at t = {t:.6g}")
+
     def deriv(t, pose, beta):
         if not (np.isfinite(pose).all() and np.isfinite(beta).all()):
-            raise ValueError(f"rates or steer are too large for this run: the pose or the steering angles overflow "
-                             f"at t = {t:.6g}")
+            raise overflow(t)
         th = _one("rates(t)", rate_fn(t, (pose, beta)), robot.n_rates)
         st = _one("steer(t)", steer_fn(t, (pose, beta)), robot.w)
         sol = forward(robot, beta, th)
@@ -180,6 +183,8 @@ def simulate(robot, rates, beta0, t_end, dt, steer=None, pose0=(0.0, 0.0, 0.0), 
         dpose = np.array([tw[0], c * tw[1] - s * tw[2], s * tw[1] + c * tw[2]])
         dbeta = np.array([u.beta_rate(tw[0], th[sl], st[i])
                           for i, (u, sl) in enumerate(zip(robot.wheels, robot.rate_slices))])
+        if not (np.isfinite(dpose).all() and np.isfinite(dbeta).all()):
+            raise overflow(t)
         return dpose, dbeta, tw, float(np.linalg.norm(sol.residual))
 
     n = max(1, int(steps))                          # steps of t_end / n <= dt: the run ends at t_end
@@ -188,16 +193,17 @@ def simulate(robot, rates, beta0, t_end, dt, steer=None, pose0=(0.0, 0.0, 0.0), 
     pose = np.empty((n + 1, 3)); beta = np.empty((n + 1, robot.w))
     twist = np.empty((n + 1, 3)); slip = np.empty(n + 1)
     pose[0], beta[0] = pose0, beta0
-    for k in range(n):
-        t, p, b = ts[k], pose[k], beta[k]
-        k1p, k1b, tw, sl = deriv(t, p, b)
-        twist[k], slip[k] = tw, sl
-        k2p, k2b, *_ = deriv(t + dt / 2, p + dt / 2 * k1p, b + dt / 2 * k1b)
-        k3p, k3b, *_ = deriv(t + dt / 2, p + dt / 2 * k2p, b + dt / 2 * k2b)
-        k4p, k4b, *_ = deriv(t + dt, p + dt * k3p, b + dt * k3b)
-        pose[k + 1] = p + dt / 6 * (k1p + 2 * k2p + 2 * k3p + k4p)
-        beta[k + 1] = b + dt / 6 * (k1b + 2 * k2b + 2 * k3b + k4b)
-    _, _, twist[n], slip[n] = deriv(ts[n], pose[n], beta[n])
+    with np.errstate(over="ignore", invalid="ignore"):     # an overflow is detected and reported by deriv
+        for k in range(n):
+            t, p, b = ts[k], pose[k], beta[k]
+            k1p, k1b, tw, sl = deriv(t, p, b)
+            twist[k], slip[k] = tw, sl
+            k2p, k2b, *_ = deriv(t + dt / 2, p + dt / 2 * k1p, b + dt / 2 * k1b)
+            k3p, k3b, *_ = deriv(t + dt / 2, p + dt / 2 * k2p, b + dt / 2 * k2b)
+            k4p, k4b, *_ = deriv(t + dt, p + dt * k3p, b + dt * k3b)
+            pose[k + 1] = p + dt / 6 * (k1p + 2 * k2p + 2 * k3p + k4p)
+            beta[k + 1] = b + dt / 6 * (k1b + 2 * k2b + 2 * k3b + k4b)
+        _, _, twist[n], slip[n] = deriv(ts[n], pose[n], beta[n])
     if not (np.isfinite(pose).all() and np.isfinite(beta).all() and np.isfinite(slip).all()):
         raise ValueError(f"rates are too large for t_end = {t_end!r}: the pose overflows double precision")
     return Trajectory(robot, ts, pose, beta, twist, slip)
