@@ -191,7 +191,8 @@ def singular_list(n=1000, n_family=200, n_item=100, seed=SEED):
     b = sp.Symbol("b", real=True)
     fams = {}
     for n2, n3 in ((0, 0), (1, 0), (0, 1), (1, 1)):
-        fams[rf"$(b,\ b + {n2}\pi,\ b + {n3}\pi)$"] = det_paper.subs({b1: b, b2: b + n2 * sp.pi, b3: b + n3 * sp.pi})
+        label = ", ".join(sp.latex(b + n * sp.pi) for n in (0, n2, n3))
+        fams[rf"$({label})$"] = det_paper.subs({b1: b, b2: b + n2 * sp.pi, b3: b + n3 * sp.pi})
     for item, ((i, k), vals) in p59.extra["singular_sets"].items():
         for vi in vals:
             for vk in vals:
