@@ -177,6 +177,15 @@ def test_table_is_markdown_without_index(monkeypatch):
     assert md.splitlines()[0] == "| w | rank | ok | x |" and "| 1 | 5, 6 | yes | $0.123$ |" in md
 
 
+def test_a_quantity_that_does_not_exist_reads_undefined(monkeypatch):
+    shown = []
+    monkeypatch.setattr(NB, "_display", lambda *o: shown.extend(o))
+    NB.table([{"u": np.array([np.nan, np.nan]), "v": np.array([0.8, np.nan]), "x": float("nan")}])
+    assert "| undefined | $0.8$, undefined | undefined |" in shown[0].data and "NaN" not in shown[0].data
+    NB.show("q", sp.Integer(0) / 0)
+    assert r"q = \text{undefined}" in shown[1].data
+
+
 def test_mod_pi_and_latex():
     assert np.allclose(NB.mod_pi([np.pi + 0.25, -np.pi / 2, np.pi / 2]), [0.25, -np.pi / 2, -np.pi / 2])
     assert NB.latex(sp.Matrix([[1, 2]])) == r"\begin{bmatrix}1 & 2\end{bmatrix}"

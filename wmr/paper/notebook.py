@@ -127,8 +127,14 @@ def project(where=None):
 
 
 # --------------------------------------------------------------------------------------- showing
+#: how a quantity that does not exist (SymPy's ``nan``, NumPy's NaN from 0/0) is written for the reader
+UNDEFINED = "undefined"
+UNDEFINED_TEX = rf"\text{{{UNDEFINED}}}"
+
 def latex(obj):
     r"""LaTeX of a SymPy object (matrices with square brackets), or a string unchanged.
+
+    SymPy's ``nan`` (what 0/0 evaluates to) is written as the word it means, *undefined*.
 
     Parameters
     ----------
@@ -140,11 +146,13 @@ def latex(obj):
 
     Examples
     --------
-    >>> latex(sp.Matrix([[1, 0]])), latex(r"\alpha")
-    ('\\begin{bmatrix}1 & 0\\end{bmatrix}', '\\alpha')
+    >>> latex(sp.Matrix([[1, 0]])), latex(r"\alpha"), latex(sp.Integer(0) / 0)
+    ('\\begin{bmatrix}1 & 0\\end{bmatrix}', '\\alpha', '\\text{undefined}')
     """
     if isinstance(obj, str):
         return obj
+    if obj is sp.nan:
+        return UNDEFINED_TEX
     return sp.latex(obj, mat_str="bmatrix", mat_delim="")
 
 
@@ -235,12 +243,15 @@ def _cell(v, in_array=False):
         return "yes" if v else "no"
     if isinstance(v, (float, np.floating)):
         x = float(v)
+        if np.isnan(x):                                   # a quantity that does not exist here (0/0)
+            return UNDEFINED
         if 0 < abs(x) < RESOLUTION:                       # round-off: no digits that differ between machines
             return "$0$" if in_array else f"$< 10^{{{int(np.log10(RESOLUTION))}}}$"
         return f"${number(x)}$"
     if isinstance(v, (list, tuple, set, frozenset, np.ndarray)):
         items = sorted(v) if isinstance(v, (set, frozenset)) else list(np.ravel(v) if isinstance(v, np.ndarray) else v)
-        return ", ".join(_cell(x, in_array=True) for x in items)
+        cells = [_cell(x, in_array=True) for x in items]
+        return UNDEFINED if cells and all(c == UNDEFINED for c in cells) else ", ".join(cells)
     if isinstance(v, (int, np.integer)):
         return str(int(v))
     return str(v).replace("|", r"\|").replace("\n", " ")
@@ -252,7 +263,7 @@ def table(rows, columns=None):
     Parameters
     ----------
     rows : list of dict or list of sequence
-        One entry per row.  Booleans print as yes/no, floats with 3 significant digits in
+        One entry per row.  Booleans print as yes/no, NaN as "undefined", floats with 3 significant digits in
         math (round-off below :data:`wmr.paper.text.RESOLUTION` as a bound, or 0 inside a
         vector), lists as comma-separated values.
     columns : sequence of str, optional
