@@ -177,6 +177,17 @@ def test_table_is_markdown_without_index(monkeypatch):
     assert md.splitlines()[0] == "| w | rank | ok | x |" and "| 1 | 5, 6 | yes | $0.123$ |" in md
 
 
+def test_long_sums_are_broken_into_lines(monkeypatch):
+    shown = []
+    monkeypatch.setattr(NB, "_display", lambda *o: shown.extend(o))
+    x, y, z = sp.symbols("x y z")
+    NB.show("s", x - y + z, per_line=1)
+    assert r"\begin{aligned}s = {}& x\\ &- y\\ &+ z\end{aligned}" in shown[0].data
+    for bad, kind in ((0, ValueError), (1.5, TypeError), (True, TypeError)):
+        with pytest.raises(kind, match="per_line"):
+            NB.show("s", x, per_line=bad)
+
+
 def test_a_quantity_that_does_not_exist_reads_undefined(monkeypatch):
     shown = []
     monkeypatch.setattr(NB, "_display", lambda *o: shown.extend(o))

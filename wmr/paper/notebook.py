@@ -175,6 +175,8 @@ def show(lhs, expr=None, tag=None, per_line=None):
     -------
     None
     """
+    if per_line is not None:
+        _check_per_line(per_line)
     if expr is None:
         body = lhs
     elif per_line is not None and isinstance(expr, sp.Add):
@@ -184,6 +186,13 @@ def show(lhs, expr=None, tag=None, per_line=None):
     if tag is not None:
         body += rf" \tag{{{tag}}}"
     _display(_markdown(f"$$\n{body}\n$$"))
+
+
+def _check_per_line(per_line):
+    if isinstance(per_line, bool) or not isinstance(per_line, int):
+        raise TypeError(f"per_line must be an int, got {per_line!r}")
+    if per_line < 1:
+        raise ValueError(f"per_line must be at least 1, got {per_line}")
 
 
 def aligned_sum(lhs, expr, per_line):
@@ -209,10 +218,7 @@ def aligned_sum(lhs, expr, per_line):
     >>> aligned_sum("s", x - y + z, 2)
     '\\begin{aligned}s = {}& x - y\\\\ &+ z\\end{aligned}'
     """
-    if isinstance(per_line, bool) or not isinstance(per_line, int):
-        raise TypeError(f"per_line must be an int, got {per_line!r}")
-    if per_line < 1:
-        raise ValueError(f"per_line must be at least 1, got {per_line}")
+    _check_per_line(per_line)
     parts = []
     for k, term in enumerate(expr.as_ordered_terms()):
         neg = term.could_extract_minus_sign()
