@@ -13,6 +13,7 @@ import dataclasses
 from dataclasses import dataclass
 
 import numpy as np
+import sympy as sp
 
 from . import validation as V
 from .backend import NUMERIC, choose
@@ -27,9 +28,16 @@ class _Unit:
     r: float
 
     kind = "unit"
-    n_rates = 0
+    #: the unit's rate variables, in the order of its columns of J2: (plain name, TeX letter, suffix
+    #: after the wheel number), e.g. ``("theta", r"\theta", "1")`` for the first wheel of a dual unit
+    RATES = ()
+    n_rates = 0                     # len(RATES), set for every subclass
     #: True when the unit has a steering joint (its angle is an entry of the robot's configuration)
     steered = True
+
+    def __init_subclass__(cls, **kwargs):
+        super().__init_subclass__(**kwargs)
+        cls.n_rates = len(cls.RATES)
 
     def __post_init__(self):
         object.__setattr__(self, "position", V.point("position", self.position))
@@ -57,7 +65,8 @@ class _Unit:
         >>> DualWheel((0, 0), r=1, b=0.5).rate_names(3)
         ('theta_dot_31', 'theta_dot_32')
         """
-        raise NotImplementedError
+        i = self._number(i)
+        return tuple(f"{name}_dot_{i}{suffix}" for name, _, suffix in self.RATES)
 
     def rate_symbols(self, i):
         """SymPy symbols of the rate variables of wheel ``i``, typeset as in the paper.
@@ -78,7 +87,8 @@ class _Unit:
         >>> CentredWheel((0, 0), r=1).rate_symbols(1)
         (\\dot{\\theta}_{1},)
         """
-        raise NotImplementedError
+        i = self._number(i)
+        return tuple(sp.Symbol(rf"\dot{{{tex}}}_{{{i}{suffix}}}", real=True) for _, tex, suffix in self.RATES)
 
     def beta_rate(self, psi_dot, rates, steer=None):
         """Steering rate :math:`\\dot\\beta_i` of the unit on the platform (used by the simulation).

@@ -30,7 +30,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-import sympy as sp
 
 from . import validation as V
 from .wheel_base import _Unit
@@ -58,19 +57,11 @@ class OffsetWheel(_Unit):
 
     d: float = 0.0
     kind = "offset"
-    n_rates = 2
+    RATES = (("phi", r"\phi", ""), ("theta", r"\theta", ""))
 
     def __post_init__(self):
         super().__post_init__()
         object.__setattr__(self, "d", V.nonnegative("d (offset)", self.d))
-
-    def rate_names(self, i):
-        i = self._number(i)
-        return (f"phi_dot_{i}", f"theta_dot_{i}")
-
-    def rate_symbols(self, i):
-        i = self._number(i)
-        return sp.symbols(rf"\dot{{\phi}}_{{{i}}} \dot{{\theta}}_{{{i}}}", real=True)
 
     def _local_block(self, bk):
         # (20)/(21): p~ = diag(-d, -r)
@@ -123,13 +114,7 @@ class CentredWheel(_Unit):
     """
 
     kind = "centred"
-    n_rates = 1
-
-    def rate_names(self, i):
-        return (f"theta_dot_{self._number(i)}",)
-
-    def rate_symbols(self, i):
-        return (sp.Symbol(rf"\dot{{\theta}}_{{{self._number(i)}}}", real=True),)
+    RATES = (("theta", r"\theta", ""),)
 
     def _local_block(self, bk):
         # (51): R_bwi [0, -r]^T
@@ -179,19 +164,11 @@ class DualWheel(_Unit):
 
     b: float = 1.0
     kind = "dual"
-    n_rates = 2
+    RATES = (("theta", r"\theta", "1"), ("theta", r"\theta", "2"))
 
     def __post_init__(self):
         super().__post_init__()
         object.__setattr__(self, "b", V.positive("b (half wheel separation)", self.b))
-
-    def rate_names(self, i):
-        i = self._number(i)
-        return (f"theta_dot_{i}1", f"theta_dot_{i}2")
-
-    def rate_symbols(self, i):
-        i = self._number(i)
-        return sp.symbols(rf"\dot{{\theta}}_{{{i}1}} \dot{{\theta}}_{{{i}2}}", real=True)
 
     def _local_block(self, bk):
         # (17): h_dot_i = -(r/2)(theta_dot_i1 + theta_dot_i2) j_i

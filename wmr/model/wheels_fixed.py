@@ -187,11 +187,9 @@ class FixedWheel(_Unsteered):
     """
 
     kind = "fixed"
-    n_rates = 1
 
     # a centred wheel held at beta_i = angle: its rolling rate and its block (51), written once there
-    rate_names = CentredWheel.rate_names
-    rate_symbols = CentredWheel.rate_symbols
+    RATES = CentredWheel.RATES
     _local_block = CentredWheel._local_block
 
 
@@ -260,7 +258,7 @@ class SwedishWheel(_Unsteered):
     roller: float
 
     kind = "swedish"
-    n_rates = 2
+    RATES = (("theta", r"\theta", ""), ("sigma", r"\sigma", ""))
 
     def __post_init__(self):
         super().__post_init__()
@@ -270,14 +268,6 @@ class SwedishWheel(_Unsteered):
             raise ValueError(f"{name} must be in (-pi/2, pi/2] and not 0 (0: rollers parallel to the axle, "
                              f"a conventional wheel: use FixedWheel), got {V.show(self.roller)}")
         object.__setattr__(self, "roller", g)
-
-    def rate_names(self, i):
-        i = self._number(i)
-        return (f"theta_dot_{i}", f"sigma_dot_{i}")
-
-    def rate_symbols(self, i):
-        i = self._number(i)
-        return sp.symbols(rf"\dot{{\theta}}_{{{i}}} \dot{{\sigma}}_{{{i}}}", real=True)
 
     def _local_block(self, bk):
         # p_dot = -r theta_dot j - r sigma_dot E a, a = (cos g, sin g), E a = (-sin g, cos g)

@@ -10,6 +10,18 @@ from .feedback import Feedback, _angles
 __all__ = ["unlisted_singularity", "mobile_and_singular"]
 
 
+def _classified(beta_deg):
+    """The answer's configuration of the paper's centred-wheel robot, classified
+    (:func:`wmr.analysis.singularities.classify`), or the feedback on an answer that is not three angles."""
+    from ...analysis.singularities import classify
+    beta, fb = _angles(beta_deg, degrees=True)
+    if fb is not None:
+        return fb
+    if beta.shape != (3,):
+        return Feedback(False, "Give three angles.")
+    return classify(paper_robot("centred", L=1.0, r=1.0), beta)
+
+
 def unlisted_singularity(beta_deg):
     r"""Exercise 4.1: a singular configuration of the paper's centred-wheel robot that its list (i)-(v) does not state.
 
@@ -22,15 +34,10 @@ def unlisted_singularity(beta_deg):
     -------
     Feedback
     """
-    from ...analysis.singularities import classify
     from ..families import paper_item
-    beta, fb = _angles(beta_deg, degrees=True)
-    if fb is not None:
-        return fb
-    if beta.shape != (3,):
-        return Feedback(False, "Give three angles.")
-    bot = paper_robot("centred", L=1.0, r=1.0)
-    c = classify(bot, beta)
+    c = _classified(beta_deg)
+    if isinstance(c, Feedback):
+        return c
     if not c.singular:
         return Feedback(False, rf"$\det\mathbf J = {c.det_J:.3g} \neq 0$: not singular. The wheel-plane lines must be "
                                "concurrent or all parallel.")
@@ -54,13 +61,9 @@ def mobile_and_singular(beta_deg):
     -------
     Feedback
     """
-    from ...analysis.singularities import classify
-    beta, fb = _angles(beta_deg, degrees=True)
-    if fb is not None:
-        return fb
-    if beta.shape != (3,):
-        return Feedback(False, "Give three angles.")
-    c = classify(paper_robot("centred", L=1.0, r=1.0), beta)      # the same decision as in exercise 4.1
+    c = _classified(beta_deg)                # the same decision as in exercise 4.1
+    if isinstance(c, Feedback):
+        return c
     if not c.singular:
         return Feedback(False, rf"$\det\mathbf J = {c.det_J:.3g}$: $\mathbf J$ is not singular here.")
     if c.rank_F != 5:
