@@ -5,6 +5,8 @@ changes) so that the tests compare :mod:`wmr` with the physics, not with itself.
 """
 from __future__ import annotations
 
+from pathlib import Path
+
 import numpy as np
 import pytest
 from hypothesis import HealthCheck, settings
@@ -18,6 +20,9 @@ settings.register_profile(
     suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much,
                            HealthCheck.function_scoped_fixture])
 settings.load_profile("wmr")
+
+#: the repository this test suite belongs to
+ROOT = Path(__file__).resolve().parents[1]
 
 KINDS = ("offset", "centred", "dual")
 K = np.array([0.0, 0.0, 1.0])

@@ -176,16 +176,20 @@ def test_stamp_rejects_changed_outputs(tmp_path):
     assert not s.valid("k", [a, b])
 
 
-def test_damaged_figure_reexecutes_the_notebooks(tmp_path):
+def test_damaged_output_reexecutes_the_notebook_and_the_build_publishes(tmp_path):
     tree = build.Tree(tmp_path)
-    write_nb(tmp_path / "notebooks" / "01_fig.ipynb", [
-        "import os, pathlib\np = pathlib.Path(os.environ['WMR_PROJECT']) / 'figures' / 'f.svg'\n"
-        "p.parent.mkdir(exist_ok=True)\np.write_text('<svg>complete</svg>')"])
+    nb = write_nb(tmp_path / "notebooks" / "01_fig.ipynb", [
+        "import os, pathlib\np = pathlib.Path(os.environ['WMR_OUT']) / 'f.svg'\n"
+        "p.parent.mkdir(parents=True, exist_ok=True)\np.write_text('<svg>complete</svg>')"])
+    (tmp_path / "figures").mkdir()
     assert build.execute(tree, merge=False) == ["01_fig.ipynb"]
+    assert not (tmp_path / "figures" / "f.svg").exists()               # the chapter writes under build/ only
     assert build.execute(tree, merge=False) == []
-    (tmp_path / "figures" / "f.svg").write_text("<svg>tru")             # truncated by a crash
+    (tree.chapter_out(nb) / "f.svg").write_text("<svg>tru")             # truncated by a crash
     assert build.execute(tree, merge=False) == ["01_fig.ipynb"]
+    assert build.publish(tree, [nb]) == [tmp_path / "figures" / "f.svg"]
     assert (tmp_path / "figures" / "f.svg").read_text() == "<svg>complete</svg>"
+    assert build.publish(tree, [nb]) == []                              # same bytes: nothing written
 
 
 # ----------------------------------------------------------------------------- signals
@@ -276,8 +280,8 @@ def test_make_test_fails_when_the_build_modifies_tracked_files(tmp_path):
     nb = tmp_path / "notebooks" / "01_w.ipynb"
 
     def writes(value):
-        write_nb(nb, ["import os, pathlib\np = pathlib.Path(os.environ['WMR_PROJECT']) / 'figures' / 'data.txt'\n"
-                      f"p.parent.mkdir(exist_ok=True)\np.write_text({value})"])
+        write_nb(nb, ["import os, pathlib\np = pathlib.Path(os.environ['WMR_OUT']) / 'data.txt'\n"
+                      f"p.parent.mkdir(parents=True, exist_ok=True)\np.write_text({value})"])
     writes("'fixed'")
     (tmp_path / "figures").mkdir()
     (tmp_path / "figures" / "data.txt").write_text("fixed")

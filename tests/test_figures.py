@@ -8,7 +8,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from conftest import axle, rolling_dir
+from conftest import ROOT, axle, rolling_dir
 
 import wmr
 from wmr.model.tolerance import TOL
@@ -157,6 +157,13 @@ def test_fig10_parallel_planes(data):
     # the one admissible twist: translation along the wheel planes
     assert np.allclose(d10.admissible, [0.0, *rolling_dir(d10.beta * DEG)], atol=1e-12) or \
         np.allclose(d10.admissible, [0.0, *-rolling_dir(d10.beta * DEG)], atol=1e-12)
+    # three wheels, three axle lines and three plane lines drawn: none hides another
+    def gap(beta_deg):          # where each line crosses the perpendicular through C, axles and planes
+        b = beta_deg * DEG
+        P = d10.robot.mount_points
+        return min(np.diff(np.sort(P @ u)).min() for u in (rolling_dir(b), axle(b)))
+    assert d10.line_gap == pytest.approx(gap(d10.beta), abs=1e-12) and d10.line_gap > 0.25
+    assert gap(30.0) < 1e-12 and F.FIGURES["fig10"].data(30.0).line_gap < 1e-12   # two axles on one line
 
 
 def test_fig11_two_planes_on_a_side_of_the_mount_triangle(data):
@@ -277,7 +284,7 @@ def test_save_is_deterministic_atomic_and_has_no_build_data(tmp_path, data):
         d = data(key)
         a = F.save(key, d, tmp_path / "a")
         b = F.save(key, d, tmp_path / "b")
-        assert sorted(p.name for p in a) == sorted(f"{key}.{x}" for x in ("svg", "pdf", "png", "json"))
+        assert sorted(p.name for p in a) == sorted(f"{key}.{x}" for x in ("svg", "pdf", "json"))
         for p, q in zip(a, b):
             blob = p.read_bytes()
             assert blob == q.read_bytes(), f"{p.name} differs between two saves"
@@ -290,8 +297,11 @@ def test_save_is_deterministic_atomic_and_has_no_build_data(tmp_path, data):
     assert not list((tmp_path / "a").glob(".*"))                          # no temporary files left behind
 
 
-def test_detmap_is_not_an_svg_of_rasters():
-    assert "svg" not in F.output.formats(F.FIGURES["detmap"])
+def test_no_figure_is_committed_as_a_raster():
+    """Rasters anti-alias last-bit differences into different pixels: figures are SVG and PDF."""
+    assert all(F.output.formats(F.FIGURES[k]) == ("svg", "pdf") for k in F.KEYS)
+    tracked = subprocess.run(["git", "ls-files", "figures"], cwd=ROOT, capture_output=True, text=True, check=True)
+    assert not [f for f in tracked.stdout.split() if f.endswith((".png", ".jpg", ".jpeg", ".gif", ".webp"))]
 
 
 def test_write_all_and_the_command_line(tmp_path, capsys):
@@ -310,7 +320,7 @@ def test_show_displays_saves_and_returns_the_data(tmp_path, data):
     pytest.importorskip("IPython")
     d = data("fig13")
     assert F.show("fig13", d, outdir=tmp_path) is d
-    assert (tmp_path / "fig13.png").exists() and (tmp_path / "fig13.json").exists()
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["fig13.json", "fig13.pdf", "fig13.svg"]
 
 
 def test_data_paths_do_not_import_matplotlib():

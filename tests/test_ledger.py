@@ -113,8 +113,8 @@ def test_write_read_round_trip(tmp_path):
     led.add(ok(20, note='a "quoted", comma'))
     led.add(refuted(29))
     path = led.write(tmp_path)
-    assert path == tmp_path / "ledger" / "02_y.csv"
-    assert not list((tmp_path / "ledger").glob("*.tmp")) and not list((tmp_path / "ledger").glob(".*"))
+    assert path == tmp_path / "ledger.csv"
+    assert not list(tmp_path.glob("*.tmp")) and not list(tmp_path.glob(".*"))
     assert LG.read(path) == [dict(r) for r in led.rows]
     with pytest.raises(TypeError, match="directory"):
         led.write(None)
@@ -128,9 +128,9 @@ def test_merge_orders_and_reports(tmp_path):
     b.add(ok(3))
     b.add(Finding("omnidirectional", True, "ok", 0.0))
     b.add(ok(10))
-    a.write(tmp_path)
-    b.write(tmp_path)
-    path, rows, probs = LG.merge(tmp_path)
+    a.write(tmp_path / "out" / "a")
+    b.write(tmp_path / "out" / "b")
+    path, rows, probs = LG.merge(tmp_path / "out", tmp_path / "ledger.csv")
     assert path == tmp_path / "ledger.csv" and LG.read(path) == rows
     assert [r["id"] for r in rows] == ["2", "3", "10", "10", "drift", "omnidirectional"]
     text = "\n".join(probs)
@@ -150,21 +150,25 @@ def test_problems_on_hand_edited_rows():
 
 
 def test_main_exit_status(tmp_path, capsys):
-    full_ledger().write(tmp_path)
-    assert LG.main([str(tmp_path)]) == 0
+    full_ledger().write(tmp_path / "out" / "full")
+    args = [str(tmp_path / "out"), str(tmp_path / "ledger.csv")]
+    assert LG.main(args) == 0
     assert "ledger: 64 rows" in capsys.readouterr().out
     bad = LG.Ledger("bad")
     bad.add(ok(2))
-    bad.write(tmp_path)
-    assert LG.main([str(tmp_path)]) == 1
+    bad.write(tmp_path / "out" / "bad")
+    assert LG.main(args) == 1
     assert "duplicated rows: 2" in capsys.readouterr().err
 
 
-def test_main_defaults_to_the_project_of_the_environment(tmp_path, monkeypatch, capsys):
-    full_ledger().write(tmp_path / "figures")
-    monkeypatch.setenv("WMR_PROJECT", str(tmp_path))
-    assert LG.main([]) == 0
-    assert (tmp_path / "figures" / "ledger.csv").exists()
+def test_main_needs_the_chapters_and_the_destination(tmp_path, capsys):
+    assert LG.main([]) == 2 and LG.main([str(tmp_path)]) == 2
+    assert "usage" in capsys.readouterr().err
+    full_ledger().write(tmp_path / "out" / "01")
+    dest = tmp_path / "ledger.csv"
+    assert LG.main([str(tmp_path / "out"), str(dest)]) == 0 and dest.exists()
+    before = dest.stat().st_mtime_ns
+    assert LG.main([str(tmp_path / "out"), str(dest)]) == 0 and dest.stat().st_mtime_ns == before  # same bytes: untouched
 
 
 def test_committed_ledger_is_complete_and_clean():

@@ -139,28 +139,37 @@ def test_student_edition_has_no_solutions_and_still_runs():
 
 # ----------------------------------------------------------------------------------------------- where files go
 def test_project_from_environment(monkeypatch, tmp_path):
-    monkeypatch.setenv("WMR_PROJECT", str(tmp_path))
+    monkeypatch.setenv("WMR_OUT", str(tmp_path / "out"))
     p = NB.project("/somewhere/else/notebooks")
-    assert p.root == tmp_path.resolve() and p.figures == p.root / "figures" and p.source == "WMR_PROJECT"
+    assert p.out == p.figures == (tmp_path / "out").resolve() and p.source == "build"
 
 
 def test_project_from_the_notebook_location(monkeypatch, tmp_path):
-    monkeypatch.delenv("WMR_PROJECT", raising=False)
-    (tmp_path / "course" / "notebooks").mkdir(parents=True)
-    assert NB.project(tmp_path / "course" / "notebooks").root == (tmp_path / "course").resolve()
-    assert NB.project(tmp_path / "course").root == (tmp_path / "course").resolve()
-    copy = NB.project(tmp_path / "copy")                       # a copy elsewhere writes beside itself ...
-    assert copy.figures == (tmp_path / "copy" / "figures").resolve()
-    text = copy.where()                                        # ... and says so, and which wmr it imports
-    assert str(copy.figures) in text and "not this project" in text and str(Path(wmr.__file__).parent) in text
+    monkeypatch.delenv("WMR_OUT", raising=False)
+    for d in ("notebooks", "figures"):
+        (tmp_path / "course" / d).mkdir(parents=True)
+    course = (tmp_path / "course").resolve()
+    p = NB.project(tmp_path / "course" / "notebooks", "04_x")  # a chapter of a project: its build/scratch
+    assert (p.root, p.out, p.source) == (course, course / "build" / "scratch" / "04_x", "scratch")
+    assert NB.project(tmp_path / "course").root == course
+    copy = NB.project(tmp_path / "copy")                       # a copy elsewhere: a temporary folder ...
+    assert copy.root is None and copy.source == "temporary" and tmp_path not in copy.out.parents
+    assert not (tmp_path / "copy" / "figures").exists()
+    text = copy.where()                                        # ... and it says so
+    assert str(copy.out) in text and "temporary" in text
     monkeypatch.chdir(tmp_path / "course" / "notebooks")
-    assert NB.project().root == (tmp_path / "course").resolve()
+    assert NB.project().root == course
+    (tmp_path / "other" / "notebooks").mkdir(parents=True)     # notebooks/ without figures/: not a project
+    assert NB.project(tmp_path / "other" / "notebooks").source == "temporary"
 
 
-def test_project_of_this_repository_does_not_warn(monkeypatch):
-    monkeypatch.delenv("WMR_PROJECT", raising=False)
-    p = NB.project(ROOT / "notebooks")
-    assert p.root == ROOT and "not this project" not in p.where()
+def test_project_of_this_repository_writes_under_build_and_says_so(monkeypatch):
+    monkeypatch.delenv("WMR_OUT", raising=False)
+    p = NB.project(ROOT / "notebooks", "01_x")
+    assert p.root == ROOT and p.out == ROOT / "build" / "scratch" / "01_x"
+    assert "not this project" not in p.where() and "only `make report` or `make test` writes `figures/`" in p.where()
+    other = NB.Project(root=Path("/elsewhere"), out=Path("/elsewhere/build/scratch/x"), source="scratch")
+    assert "not this project" in other.where() and str(Path(wmr.__file__).parent) in other.where()
 
 
 def test_the_library_resolves_no_repository_path():

@@ -64,13 +64,13 @@ def write_nb(path: Path, sources: list[str], markdown: str | None = None) -> Pat
 def test_cache_reexecutes_only_changed_notebook(tmp_path):
     tree = build.Tree(tmp_path)
     a, b = tmp_path / "notebooks" / "01_a.ipynb", tmp_path / "notebooks" / "02_b.ipynb"
-    write_nb(a, ["import os\nos.getcwd()", "import sys\nsys.executable", "os.environ['WMR_PROJECT']"])
+    write_nb(a, ["import os\nos.getcwd()", "import sys\nsys.executable", "os.environ['WMR_OUT']"])
     write_nb(b, [], markdown="Markdown only: executed without a kernel.")
     assert build.execute(tree, merge=False) == ["01_a.ipynb", "02_b.ipynb"]
     out = nbformat.read(tree.executed_notebook(a), as_version=4)
-    # the contract: the notebook's own directory is the working directory, WMR_PROJECT the root
+    # the contract: the notebook's own directory is the working directory, WMR_OUT its folder under build/
     assert out.cells[0].outputs[0]["data"]["text/plain"].strip("'\"") == str(tmp_path / "notebooks")
-    assert out.cells[2].outputs[0]["data"]["text/plain"].strip("'\"") == str(tmp_path)
+    assert out.cells[2].outputs[0]["data"]["text/plain"].strip("'\"") == str(tree.chapter_out(a))
     kernel_py = Path(out.cells[1].outputs[0]["data"]["text/plain"].strip("'\""))
     assert kernel_py.parent == Path(sys.executable).parent         # the venv's Python
     assert build.execute(tree, merge=False) == []                  # nothing changed: nothing runs

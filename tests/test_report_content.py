@@ -103,7 +103,6 @@ def project(tmp_path_factory):
     svg = '<svg xmlns="http://www.w3.org/2000/svg" width="10" height="10"><rect width="10" height="10"/></svg>'
     for key, number, paper_cap in (("fig07", "7", "PAPER-CAPTION-7"), ("conventions", "", "")):
         (fig / f"{key}.svg").write_text(svg.replace("10\"/>", f"10\" id=\"{key}\"/>"))
-        (fig / f"{key}.png").write_bytes(png((10, 10, 10)))
         (fig / f"{key}.json").write_text(json.dumps({"key": key, "number": number, "title": f"Title of {key}",
                                                      "paper_caption": paper_cap, "caption": f"OUR-CAPTION-{key} with $L = 1$",
                                                      "numbers": {}}))

@@ -6,7 +6,7 @@
 A cell tagged ``solution`` is dropped; everything else stays, with its outputs cleared, so each
 exercise keeps its statement and its answer template (``answer = None`` and the check call, which
 answers "no answer yet").  ``--run`` executes each student notebook in a fresh kernel with
-``WMR_PROJECT`` set to a scratch project under ``build/student/.run`` (a student notebook never
+``WMR_OUT`` set to a scratch folder under ``build/student/.run`` (a student notebook never
 writes into the repository's ``figures/``); a run is skipped when neither the notebook nor any
 ``wmr/**/*.py`` changed since the last successful one.
 """
@@ -75,8 +75,8 @@ def run(paths, out=ROOT / "build" / "student", timeout=600):
     from nbclient.exceptions import CellExecutionError
     scratch = out / ".run"
     scratch.mkdir(parents=True, exist_ok=True)
-    env_before = os.environ.get("WMR_PROJECT")
-    os.environ["WMR_PROJECT"] = str(scratch)
+    env_before = os.environ.get("WMR_OUT")
+    os.environ["WMR_OUT"] = str(scratch / "out")
     os.environ.setdefault("MPLBACKEND", "Agg")
     results = {}
     try:
@@ -99,9 +99,9 @@ def run(paths, out=ROOT / "build" / "student", timeout=600):
                 results[path.name] = str(e)
     finally:
         if env_before is None:
-            os.environ.pop("WMR_PROJECT", None)
+            os.environ.pop("WMR_OUT", None)
         else:
-            os.environ["WMR_PROJECT"] = env_before
+            os.environ["WMR_OUT"] = env_before
     return results
 
 

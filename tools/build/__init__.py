@@ -18,9 +18,9 @@ Modules, one responsibility each:
 Only the standard library is imported up front (an up-to-date ``make report`` answers at once);
 nbformat, nbclient and nbconvert are imported when a step needs them.
 """
-from .execute import execute
+from .execute import execute, publish
 from .log import BuildError
 from .paths import Tree
 from .report import report
 
-__all__ = ["Tree", "BuildError", "execute", "report"]
+__all__ = ["Tree", "BuildError", "execute", "publish", "report"]

@@ -13,7 +13,6 @@ import re
 from pathlib import Path
 
 from .inputs import FigureMeta
-from .markup import text_of
 
 __all__ = ["DROP_TAGS", "KEEP_MIMES", "chapter_cells"]
 
@@ -51,20 +50,18 @@ def _figure_reference(source: str, figures: list[FigureMeta]) -> str:
     return "*" + " ".join(out) + "*"
 
 
-def _figure_images(figures: list[FigureMeta]) -> dict[str, FigureMeta]:
-    """base64 of each figure's PNG -> the figure (an output that shows exactly that file)."""
-    import base64
-    return {base64.b64encode(f.images["png"].read_bytes()).decode(): f for f in figures if "png" in f.images}
+#: output metadata key with which a notebook marks the display of one of the paper's figures
+FIGURE_METADATA = "wmr_figure"
 
 
 def chapter_cells(nb, figures: list[FigureMeta]) -> list:
     """The cells of one executed notebook, as the report shows them (new cell objects).
 
-    An output image that is byte for byte one of the figures' PNG files is replaced by a link to
+    An output marked as one of the figures (output metadata ``wmr_figure``) is replaced by a link to
     the figure as well (a figure cell that was not tagged).
     """
     import nbformat
-    shown = _figure_images(figures)
+    shown = {f.key: f for f in figures}
     out = []
     for c in nb.cells:
         tags = set(c.get("metadata", {}).get("tags", []))
@@ -77,10 +74,11 @@ def chapter_cells(nb, figures: list[FigureMeta]) -> list:
             out.append(nbformat.v4.new_markdown_cell(c.source))
         elif c.cell_type == "code":
             n = nbformat.v4.new_code_cell(c.source)
-            for o in map(_output, c.get("outputs", [])):
-                png = o and text_of(o["data"].get("image/png", "")).replace("\n", "")
-                if png and png in shown:
-                    f = shown[png]
+            for raw in c.get("outputs", []):
+                o = _output(raw)
+                key = raw.get("metadata", {}).get(FIGURE_METADATA)
+                if o and key in shown:
+                    f = shown[key]
                     o = {"output_type": "display_data", "metadata": {},
                          "data": {"text/markdown": _figure_reference(f'"{f.key}"', [f])}}
                 if o:

@@ -68,7 +68,7 @@ class Tree:
         """Every ``wmr/**/*.py``: a change to any of them makes every notebook stale."""
         return _listing(self.wmr, "**/*.py", lambda p: "__pycache__" not in p.parts)
 
-    # --- generated, tracked (written by the notebooks; must not change when re-built)
+    # --- generated, tracked (published by the build from what the chapters wrote; must not change when re-built)
     @property
     def figures(self) -> Path:
         return self.root / "figures"
@@ -78,16 +78,24 @@ class Tree:
         return self.figures / "ledger.csv"
 
     @property
-    def ledger_fragments(self) -> Path:
-        return self.figures / "ledger"
-
-    @property
     def singularities(self) -> Path:
         return self.figures / "singularities.csv"
 
     def figure_files(self) -> list[Path]:
-        """Files under ``figures/`` written by the notebooks (everything but the merged ledger)."""
-        return _listing(self.figures, "**/*", lambda p: p != self.ledger and not p.name.startswith("."))
+        """Files under ``figures/`` (what the build published)."""
+        return _listing(self.figures, "*", lambda p: not p.name.startswith("."))
+
+    # --- what each executed chapter wrote (``$WMR_OUT``): published into figures/ by the build
+    @property
+    def out(self) -> Path:
+        return self.build / "out"
+
+    def chapter_out(self, nb: Path) -> Path:
+        return self.out / nb.stem
+
+    def chapter_files(self, nb: Path) -> list[Path]:
+        """The files chapter ``nb`` wrote (figures, tables and its ``ledger.csv``)."""
+        return _listing(self.chapter_out(nb), "*", lambda p: not p.name.startswith("."))
 
     # --- build outputs (untracked)
     @property
@@ -100,10 +108,6 @@ class Tree:
 
     def notebook_stamp(self, nb: Path) -> Path:
         return self.executed / (nb.stem + ".stamp")
-
-    @property
-    def figures_stamp(self) -> Path:
-        return self.build / "figures.stamp"
 
     @property
     def ledger_stamp(self) -> Path:
@@ -155,15 +159,17 @@ class Tree:
         return self.build / "git-before.json"
 
     # --- environment of notebook kernels and of ``python -m wmr...``
-    def env(self) -> dict:
+    def env(self, out: Path | None = None) -> dict:
         """Environment for notebook kernels: the running (venv) Python first on ``PATH``, the
         project root on ``PYTHONPATH`` (its ``wmr`` first) and the build tool importable,
-        ``WMR_PROJECT`` (where notebooks write), one BLAS thread per process, a fixed hash seed."""
+        ``WMR_OUT`` (where a chapter writes: ``out``), one BLAS thread per process, a fixed hash seed."""
         env = dict(os.environ)
         env["PATH"] = str(Path(sys.executable).parent) + os.pathsep + env.get("PATH", "")
         pp = [str(self.root), str(TOOL_ROOT)] + ([env["PYTHONPATH"]] if env.get("PYTHONPATH") else [])
         env["PYTHONPATH"] = os.pathsep.join(dict.fromkeys(pp))
-        env["WMR_PROJECT"] = str(self.root)
+        env.pop("WMR_OUT", None)
+        if out is not None:
+            env["WMR_OUT"] = str(out)
         env["PYDEVD_DISABLE_FILE_VALIDATION"] = "1"
         env["MPLBACKEND"] = "Agg"
         # notebooks run side by side on few cores: one BLAS thread each (no oversubscription,

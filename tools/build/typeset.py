@@ -74,14 +74,10 @@ def part(title: str, intro: str = ""):
 
 # ----------------------------------------------------------------------------- HTML
 def image_for_html(images: dict) -> tuple[str, bytes] | None:
-    """(mime, bytes) of the image to embed: the SVG unless it wraps raster images, else the PNG."""
-    svg, png = images.get("svg"), images.get("png")
+    """(mime, bytes) of the image to embed: the figure's SVG."""
+    svg = images.get("svg")
     if svg and Path(svg).exists():
-        data = Path(svg).read_bytes()
-        if b"<image" not in data:
-            return "image/svg+xml", data
-    if png and Path(png).exists():
-        return "image/png", Path(png).read_bytes()
+        return "image/svg+xml", Path(svg).read_bytes()
     return None
 
 

@@ -2,9 +2,9 @@ r"""What the chapters (``notebooks/01..07``) share: where they write, how they s
 
 Written once here so that every chapter reads the same and none pastes its own helpers.
 
-* :func:`project` -- where a notebook writes its figures and ledger rows: ``$WMR_PROJECT`` (set by
-  the build), else the project the notebook file belongs to, found from the notebook's own
-  location (never from where :mod:`wmr` happens to be imported).
+* :func:`project` -- where a notebook writes its figures and ledger rows: ``$WMR_OUT`` (set by the
+  build), else a scratch folder under the project's ``build/`` found from the notebook's own location,
+  else a temporary folder.  A notebook never writes a tracked file.
 * :class:`Chapter` -- one per notebook: its ledger, its random generator (fixed seed), its
   figures (:meth:`Chapter.figure`) and its verdicts (:meth:`Chapter.record`, sentences generated
   from the ledger rows).
@@ -41,26 +41,34 @@ def _markdown(text):
 
 
 # --------------------------------------------------------------------------------------- where files go
+#: Set by the build: the directory an executed chapter writes its figures and ledger rows to.
+OUT_VARIABLE = "WMR_OUT"
+
+
 @dataclass(frozen=True)
 class Project:
-    """Where a notebook writes.
+    """Where a notebook writes.  Only the build publishes into the tracked ``figures/``.
 
     Attributes
     ----------
-    root : pathlib.Path
-        The project directory (the one holding ``notebooks/`` and ``figures/``).
-    figures : pathlib.Path
-        ``root/figures``: figure files, ``singularities.csv``, ``ledger.csv``.
-    ledger : pathlib.Path
-        ``root/figures/ledger``: the per-notebook ledger fragments.
+    root : pathlib.Path or None
+        The project the notebook belongs to (the directory holding ``notebooks/`` and ``figures/``),
+        or None for a notebook outside any project.
+    out : pathlib.Path
+        Where this run writes: ``$WMR_OUT`` when the build runs the chapter, else a scratch folder
+        ``<root>/build/scratch/<chapter>`` (untracked), else a new temporary folder.
     source : str
-        ``"WMR_PROJECT"`` when set by the environment, else ``"notebook location"``.
+        ``"build"``, ``"scratch"`` or ``"temporary"``.
     """
 
-    root: Path
-    figures: Path
-    ledger: Path
+    root: Path | None
+    out: Path
     source: str
+
+    @property
+    def figures(self):
+        """The folder for figure files and tables: :attr:`out`."""
+        return self.out
 
     def where(self):
         """A sentence saying where this notebook writes (and which ``wmr`` it imports, if from elsewhere).
@@ -72,9 +80,11 @@ class Project:
         """
         import wmr
         pkg = Path(wmr.__file__).resolve().parent
-        text = (f"*This notebook writes its figures and ledger rows to* `{self.figures}` "
-                f"*(found from {'`$WMR_PROJECT`' if self.source == 'WMR_PROJECT' else 'the notebook’s location'}).*")
-        if pkg.parent != self.root:
+        why = {"scratch": "a scratch folder of this project; only `make report` or `make test` writes `figures/`",
+               "temporary": "a temporary folder: this notebook is not inside the project",
+               "build": "the build"}[self.source]
+        text = f"*This run writes its figures and ledger rows to* `{self.out}` *({why}).*"
+        if self.root is not None and pkg.parent != self.root:
             text += f" *The `wmr` package it imports is* `{pkg}`*, not this project’s.*"
         return text
 
@@ -90,18 +100,29 @@ def _notebook_dir():
     return Path.cwd()
 
 
-def project(where=None):
-    """The directories a notebook writes to.
+def _project_root(here):
+    """The project holding the notebook directory ``here``: a directory with ``notebooks/`` and ``figures/``."""
+    for root in (here.parent if here.name == "notebooks" else here, here):
+        if (root / "notebooks").is_dir() and (root / "figures").is_dir():
+            return root
+    return None
 
-    From ``$WMR_PROJECT`` if set (the build sets it); otherwise from the notebook's own location
-    ``where`` (default: the running notebook's directory, i.e. Jupyter's working directory): a
-    notebook in ``<root>/notebooks/`` belongs to ``<root>``; a notebook anywhere else (a copy)
-    writes beside itself, into ``<its directory>/figures``.
+
+def project(where=None, chapter="scratch"):
+    """Where a notebook writes, never into a tracked file.
+
+    ``$WMR_OUT`` when set (the build sets it, and publishes what the chapters wrote into
+    ``figures/`` itself); otherwise the notebook's own location ``where`` (default: the running
+    notebook's directory) decides: a notebook of a project (``<root>/notebooks/``, with
+    ``<root>/figures/``) writes into ``<root>/build/scratch/<chapter>``; any other notebook (a copy)
+    into a new temporary folder.
 
     Parameters
     ----------
     where : path-like, optional
         The notebook's directory.
+    chapter : str, optional
+        The chapter's name: the scratch folder's.
 
     Returns
     -------
@@ -109,21 +130,20 @@ def project(where=None):
 
     Examples
     --------
-    >>> import os
-    >>> p = project("/tmp/course/notebooks") if "WMR_PROJECT" not in os.environ else None
-    >>> p is None or (str(p.root), str(p.figures)) == ("/tmp/course", "/tmp/course/figures")
-    True
+    >>> import os, tempfile
+    >>> p = project(tempfile.gettempdir()) if "WMR_OUT" not in os.environ else None
+    >>> p is None or (p.root, p.source)
+    (None, 'temporary')
     """
-    env = os.environ.get("WMR_PROJECT", "").strip()
+    env = os.environ.get(OUT_VARIABLE, "").strip()
+    here = (Path(where) if where is not None else _notebook_dir()).resolve()
+    root = _project_root(here)
     if env:
-        root, source = Path(env), "WMR_PROJECT"
-    else:
-        here = Path(where) if where is not None else _notebook_dir()
-        here = here.resolve()
-        root = here.parent if here.name == "notebooks" else (here if (here / "notebooks").is_dir() else here)
-        source = "notebook location"
-    root = root.resolve()
-    return Project(root=root, figures=root / "figures", ledger=root / "figures" / "ledger", source=source)
+        return Project(root=root, out=Path(env).resolve(), source="build")
+    if root is not None:
+        return Project(root=root, out=root / "build" / "scratch" / chapter, source="scratch")
+    import tempfile
+    return Project(root=None, out=Path(tempfile.mkdtemp(prefix=f"wmr-{chapter}-")), source="temporary")
 
 
 # --------------------------------------------------------------------------------------- showing
@@ -393,10 +413,10 @@ class Chapter:
 
     def __init__(self, notebook, where=None):
         self.notebook = notebook
-        self.project = project(where)
+        self.project = project(where, notebook)
         self.ledger = Ledger(notebook)
         self.rng = np.random.default_rng(SEED)
-        if self.project.source != "WMR_PROJECT":
+        if self.project.source != "build":
             say(self.project.where())
 
     def record(self, *results):
@@ -418,7 +438,7 @@ class Chapter:
         say("\n\n".join(r.sentence() for r in rows))
 
     def figure(self, key, data=None):
-        """Compute (unless given), show and save one of the paper's figures into the project's ``figures/``.
+        """Compute (unless given), show and save one of the paper's figures into :attr:`Project.out`.
 
         Parameters
         ----------
@@ -440,9 +460,9 @@ class Chapter:
         Returns
         -------
         None
-            (The fragment is ``<figures>/ledger/<notebook>.csv``.)
+            (The rows are ``<out>/ledger.csv``.)
         """
-        self.ledger.write(self.project.figures)
+        self.ledger.write(self.project.out)
         c = self.ledger.counts()
         say(f"*Ledger of this chapter:* {len(self.ledger.rows)} rows "
             f"({c['ok']} ok, {c['typo']} typo, {c['wrong']} wrong).")

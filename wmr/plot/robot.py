@@ -18,6 +18,7 @@ from matplotlib.transforms import Affine2D
 
 from .annotate import draw_frame, draw_line, draw_point, label
 from .geometry import RobotDrawing, platform_radius, robot_extent, robot_geometry, to_world
+from .snapping import snap
 from .style import PALETTE, ROLE
 
 __all__ = ["RobotDrawing", "to_world", "robot_geometry", "platform_radius", "draw_platform", "draw_wheel",
@@ -82,7 +83,8 @@ def draw_wheel(ax, centre, heading, r, width=None, *, ghost=False, arrow=True, z
     box = FancyBboxPatch((-w / 2, -r), w, 2 * r, boxstyle=f"round,pad=0,rounding_size={0.45 * w}",
                          facecolor=face, edgecolor=col,
                          linewidth=0.8, linestyle=(0, (3, 2)) if ghost else "-", zorder=zorder)
-    box.set_transform(Affine2D().rotate(heading).translate(*centre) + ax.transData)
+    # the placement is snapped here: snap_figure sees the box in its own frame, not this transform
+    box.set_transform(Affine2D().rotate(float(snap(heading))).translate(*snap(centre).tolist()) + ax.transData)
     ax.add_patch(box)
     if arrow and not ghost:
         jdir = np.array([-np.sin(heading), np.cos(heading)])
@@ -231,7 +233,10 @@ def draw_robot(ax, robot, beta, pose=(0.0, 0.0, 0.0), *, ghost=False, labels=Tru
         if wheel_labels:
             for k in range(robot.w):
                 out = g.P[k] - g.C              # beside the wheel, off the axle line, away from C
-                e = 17 * g.i[k] * (1 if g.i[k] @ out >= 0 else -1) + 10 * g.j[k] * (1 if g.j[k] @ out >= 0 else -1)
+                # the sides are decided on snapped products: a product that is zero but for round-off
+                # (a wheel plane through C) picks the same side on every machine
+                e = (17 * g.i[k] * (1 if snap(g.i[k] @ out) >= 0 else -1)
+                     + 10 * g.j[k] * (1 if snap(g.j[k] @ out) >= 0 else -1))
                 dflt = (float(e[0]), float(e[1]))
                 label(ax, g.P[k], f"$P_{{{k + 1}}}{suffix}$", offset=offs.get(k + 1, dflt), ha="center",
                       va="center")

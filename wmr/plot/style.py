@@ -196,3 +196,4 @@ def common_view(axes, point_sets, pad=0.05):
         c = (lo + hi) / 2
         ax.set_xlim(c[0] - hw, c[0] + hw)
         ax.set_ylim(c[1] - hh, c[1] + hh)
+

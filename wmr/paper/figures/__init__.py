@@ -33,6 +33,7 @@ import time
 from pathlib import Path
 
 from . import output
+from .common import snapped
 
 __all__ = ["FIGURES", "KEYS", "module", "save", "show", "write_all", "main"]
 
@@ -76,9 +77,15 @@ def module(key):
     return FIGURES[key]
 
 
+def _draw(key, data):
+    """Draw from the snapped data, then snap what the figure hands to the renderer (the same file anywhere)."""
+    from ...plot.snapping import snap_figure
+    return snap_figure(module(key).draw(snapped(data)))
+
+
 def _render(key, data, fig=None, fmts=None):
     mod = module(key)
-    fig = mod.draw(data) if fig is None else fig
+    fig = _draw(key, data) if fig is None else fig
     return output.render(fig, output.formats(mod) if fmts is None else fmts,
                          title=f"{key}: {mod.TITLE}", creator=f"wmr.paper.figures.{key}")
 
@@ -127,13 +134,14 @@ def show(key, data=None, *, outdir=None, width=None):
     from IPython.display import Image, Markdown, display
     mod = module(key)
     data = mod.data() if data is None else data
-    fig = mod.draw(data)
-    files = _render(key, data, fig, None if outdir is not None else ("png",))
+    fig = _draw(key, data)
+    files = _render(key, data, fig, (*output.formats(mod), "png") if outdir is not None else ("png",))
     if outdir is not None:
-        output.write(outdir, key, files, output.record(key, mod, data))
+        output.write(outdir, key, {f: b for f, b in files.items() if f != "png"}, output.record(key, mod, data))
     label = f"Figure {mod.NUMBER} (regenerated): " if mod.NUMBER else ""
-    display(Image(files["png"], width=width or int(round(fig.get_figwidth() * 110))),
-            Markdown(f"*{label}{mod.TITLE}.* {mod.caption(data)}"))
+    # marked, so that the report shows the figure once, from its files, instead of this picture
+    display(Image(files["png"], width=width or int(round(fig.get_figwidth() * 110))), metadata={"wmr_figure": key})
+    display(Markdown(f"*{label}{mod.TITLE}.* {mod.caption(data)}"))
     return data
 
 

@@ -21,18 +21,16 @@ import numpy as np
 
 from ...analysis import singularities as sg
 from ...model.robots import paper_robot
+from ...plot.snapping import snap
 from ..text import bound, rounded
 
-__all__ = ["L_PAPER", "R_CENTRED", "R_OFFSET", "DEG", "SNAP_DECIMALS", "ABS_DET_J", "MAX_PSI", "centred_robot",
-           "exact_det_J", "fit_circle", "snap", "residual", "small", "drawing", "numbers"]
+__all__ = ["L_PAPER", "R_CENTRED", "R_OFFSET", "DEG", "ABS_DET_J", "MAX_PSI", "centred_robot",
+           "exact_det_J", "fit_circle", "snap", "snapped", "residual", "small", "drawing", "numbers"]
 
 L_PAPER = 1.0      #: distance of the mount points from C in the figures (the unit of length)
 R_CENTRED = 0.25   #: wheel radius of the centred-wheel robot in the figures
 R_OFFSET = 0.3     #: wheel radius (= offset d) of the offset-wheel robot in Fig. 7
 DEG = np.pi / 180
-#: Decimal places (in units of L, or radians) of the coordinates handed to matplotlib: 1e-7 L is
-#: far below a pixel and far above round-off, so every machine draws the same file.
-SNAP_DECIMALS = 7
 #: LaTeX of quantities the captions bound.
 ABS_DET_J = r"|\det\mathbf{J}|"
 MAX_PSI = r"\max|\psi|"
@@ -112,23 +110,49 @@ def fit_circle(xy):
     return centre, float(np.sqrt(c + centre @ centre))
 
 
-def snap(a):
-    """Coordinates for drawing: rounded to :data:`SNAP_DECIMALS` places (no ``-0.0``), as a float array.
+def snapped(data):
+    """A figure's data with every value it draws from :func:`~wmr.plot.snapping.snap`-ped.
+
+    Walks the data class, and the data classes, tuples, lists and dicts inside it, and snaps the
+    floats and float arrays of its value and drawing fields.  Residual and small fields are left
+    alone: their text is already a bound or two digits (:func:`numbers`).  Objects that are not
+    data of a figure (a robot) are kept as they are.
 
     Parameters
     ----------
-    a : array_like (...)
+    data : dataclass instance
+        ``FIGURES[key].data()``.
 
     Returns
     -------
-    numpy.ndarray (...)
+    dataclass instance
+        Of the same class.
 
     Examples
     --------
-    >>> snap([1e-12, -1e-12, 0.123456789]).tolist()
-    [0.0, 0.0, 0.1234568]
+    >>> from wmr.paper.figures import fig13
+    >>> snapped(fig13.data()).beta.tolist() == snap(fig13.data().beta).tolist()
+    True
     """
-    return np.round(np.asarray(a, dtype=float), SNAP_DECIMALS) + 0.0
+    return _snapped(data)
+
+
+def _snapped(x):
+    if dataclasses.is_dataclass(x) and not isinstance(x, type):
+        if not type(x).__module__.startswith(__package__):
+            return x
+        kept = ("residual", "small")
+        return dataclasses.replace(x, **{f.name: getattr(x, f.name) if f.metadata.get("json") in kept
+                                         else _snapped(getattr(x, f.name)) for f in dataclasses.fields(x) if f.init})
+    if isinstance(x, (float, np.floating)):
+        return float(snap(x))
+    if isinstance(x, np.ndarray):
+        return snap(x) if x.dtype.kind == "f" else x
+    if isinstance(x, (tuple, list)):
+        return type(x)(_snapped(v) for v in x)
+    if isinstance(x, dict):
+        return {k: _snapped(v) for k, v in x.items()}
+    return x
 
 
 # --------------------------------------------------------------------------- fields and JSON

@@ -6,9 +6,9 @@ configurations with concurrent axles (zero contour of :math:`\det\mathbf A`, the
 matrix of :func:`wmr.analysis.mobility.twist_constraints`: rank F = 5, the robot can move);
 markers: where both hold (:func:`wmr.analysis.singularities.singular_motions`).
 
-Files: the colour maps are rasters, so this figure is written as PNG (for HTML) and PDF (for
-LaTeX, raster and vector in one file) only (:data:`FORMATS`): an SVG would wrap base64 rasters
-(about 800 KB) and gain nothing over the PNG.
+Files: SVG and PDF, like every figure.  The colour maps are drawn unresampled
+(``interpolation="none"``): each file embeds the grid's cells once, as a small image of snapped values,
+and the viewer scales it, so the file does not depend on how a renderer anti-aliases.
 """
 from __future__ import annotations
 
@@ -25,14 +25,12 @@ from ...model.platform import wrap_angle
 from ..text import degrees, residual as residual_text
 from .common import ABS_DET_J, DEG, L_PAPER, centred_robot, drawing, residual, snap
 
-__all__ = ["NUMBER", "TITLE", "PAPER_CAPTION", "FORMATS", "MOBILE_TWISTS", "MOBILE_SEED", "DetSlice", "DetMapData",
+__all__ = ["NUMBER", "TITLE", "PAPER_CAPTION", "MOBILE_TWISTS", "MOBILE_SEED", "DetSlice", "DetMapData",
            "refine_kappa_min", "data", "draw", "caption"]
 
 NUMBER = ""
 TITLE = "Singular configurations and conditioning of J"
 PAPER_CAPTION = ""
-#: PNG and PDF only (see the module's docstring).
-FORMATS = ("pdf", "png")
 #: Largest :math:`\log_{10}\kappa` shown (the colour scale is clipped there).
 LOG_KAPPA_MAX = 2.0
 KAPPA_ERROR = r"|\kappa(\mathbf{J}) - 1|"
@@ -144,7 +142,7 @@ def _slice(bot, beta1, g):
     mb, fams = sg.singular_motions(bot, beta1 * DEG)
     mdeg = np.degrees(mb)
     finite = kap[np.isfinite(kap)]
-    k = np.argmin(np.where(np.isfinite(kap), kap, np.inf))
+    k = np.argmin(snap(np.where(np.isfinite(kap), kap, np.inf)))     # snapped: ties (symmetry) go to the first
     return DetSlice(
         beta1=float(beta1), det_min=float(D.min()), det_max=float(D.max()), kappa_min=float(finite.min()),
         kappa_min_refined=refine_kappa_min(bot, beta1, B2.flat[k], B3.flat[k], g[1] - g[0]),
@@ -191,7 +189,7 @@ def refine_kappa_min(bot, beta1, beta2, beta3, step, rounds=4, m=41):
         B2, B3 = np.meshgrid(best[0] + t, best[1] + t, indexing="xy")
         beta = np.stack([np.full_like(B2, beta1), B2, B3], axis=-1) * DEG
         kap = condition_number(bot.J(beta, L=L_PAPER))
-        k = int(np.argmin(kap))
+        k = int(np.argmin(snap(kap)))
         if kap.flat[k] < kmin:
             kmin, best = float(kap.flat[k]), (float(B2.flat[k]), float(B3.flat[k]))
         step *= 2.0 / (m - 1)
@@ -270,7 +268,7 @@ def draw(data, fig=None):
                     (sl.log_kappa, dict(cmap=colormaps["cividis"].resampled(64), vmin=0, vmax=LOG_KAPPA_MAX)))
             for row, (Z, kw) in enumerate(maps):
                 ax = axes[row, col]
-                m = ax.imshow(Z, extent=(-180, 180, -180, 180), origin="lower", interpolation="nearest",
+                m = ax.imshow(Z, extent=(-180, 180, -180, 180), origin="lower", interpolation="none",
                               aspect="equal", **kw)
                 ax.contour(g, g, sl.det, levels=[0.0], colors=[PALETTE["black"]], linewidths=1.2)
                 ax.contour(g, g, sl.det_A, levels=[0.0], colors=[PALETTE["sky"]], linewidths=1.0,

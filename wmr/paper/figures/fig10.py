@@ -9,6 +9,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...analysis.mobility import admissible_twists
+from ...model.platform import E
 from ..text import residual as residual_text
 from .common import ABS_DET_J, DEG, L_PAPER, centred_robot, drawing, snap
 from .configs import SingularConfig, beta_text, config_lines, singular_config
@@ -32,6 +33,9 @@ class Fig10Data:
     admissible : tuple (3,)
         Unit twist :math:`(\dot\psi, \dot{\mathbf c})` spanning the admissible twists
         (:func:`wmr.admissible_twists`), signed so that its largest component is positive.
+    line_gap : float
+        The smallest distance, in units of :math:`L`, between two of the three parallel axle lines
+        or two of the three parallel wheel-plane lines: zero when one line hides another.
     robot : wmr.Robot
         Drawing only: the robot drawn (:func:`~wmr.paper.figures.common.centred_robot`).
     """
@@ -39,16 +43,19 @@ class Fig10Data:
     beta: float
     config: SingularConfig
     admissible: tuple
+    line_gap: float
     robot: object = drawing(default=None)
 
 
-def data(beta=30.0):
+def data(beta=15.0):
     r"""The configuration :math:`\beta_i = ` ``beta`` for every wheel: item (i) of the list after (59).
 
     Parameters
     ----------
     beta : float, optional
-        The common steering angle (degrees).
+        The common steering angle (degrees).  The default, :math:`15^\circ`, keeps the three axle lines
+        and the three wheel-plane lines apart (:attr:`Fig10Data.line_gap`); at multiples of
+        :math:`30^\circ` two of them coincide and the drawing shows two lines for three wheels.
 
     Returns
     -------
@@ -61,9 +68,12 @@ def data(beta=30.0):
     if A.shape[1] != 1:
         raise ValueError(f"expected one admissible direction at beta = {beta!r} deg, found {A.shape[1]}")
     t = A[:, 0] / np.linalg.norm(A[:, 0])
-    t = t if t[np.argmax(np.abs(t))] > 0 else -t
+    t = t if t[np.argmax(snap(np.abs(t)))] > 0 else -t      # snapped: equal components tie to the first
+    i = np.array([np.cos(b[0]), np.sin(b[0])])                # axle direction, the same for every wheel
+    offsets = (bot.mount_points @ (E() @ i), bot.mount_points @ i)   # where each axle / plane line lies
+    gap = min(float(np.diff(np.sort(o)).min()) for o in offsets) / L_PAPER
     return Fig10Data(beta=beta, config=singular_config(bot, b, exact_deg=bdeg), admissible=tuple(t.tolist()),
-                     robot=bot)
+                     line_gap=gap, robot=bot)
 
 
 def draw(data, fig=None):

@@ -17,7 +17,7 @@ from .common import numbers
 __all__ = ["FORMATS", "formats", "render", "record", "write"]
 
 #: Formats written for a figure unless its module says otherwise (``FORMATS`` in the module).
-FORMATS = ("svg", "pdf", "png")
+FORMATS = ("svg", "pdf")
 
 
 def formats(module):
@@ -63,8 +63,9 @@ def _palette_png(blob, metadata):
 def render(fig, fmts, *, title="", creator="wmr"):
     """Render ``fig`` to each format in ``fmts``; returns ``{fmt: bytes}``.
 
-    PNG is rendered first (at ``savefig.dpi``, then reduced to a 256-colour palette); the layout is
-    then frozen, so every format shows the same layout.
+    The layout is computed once, before any format is rendered, and then frozen: every format, and
+    every choice of formats, shows the same layout.  A PNG (for display in a notebook) is reduced to
+    a 256-colour palette.
 
     Parameters
     ----------
@@ -81,12 +82,13 @@ def render(fig, fmts, *, title="", creator="wmr"):
     from ...plot.style import style
     out = {}
     with style():
-        for k, fmt in enumerate(sorted(fmts, key=lambda f: f != "png")):
+        if fig.get_layout_engine() is not None:
+            fig.draw_without_rendering()
+            fig.set_layout_engine("none")
+        for fmt in fmts:
             buf = io.BytesIO()
             fig.savefig(buf, format=fmt, metadata=_metadata(fmt, title, creator))
             out[fmt] = _palette_png(buf.getvalue(), _metadata(fmt, title, creator)) if fmt == "png" else buf.getvalue()
-            if k == 0 and fig.get_layout_engine() is not None:
-                fig.set_layout_engine("none")
     return out
 
 

@@ -1,4 +1,4 @@
-"""``python -m wmr.paper.ledger [DIR]``: merge the ledger fragments (:func:`wmr.paper.ledger.main`)."""
+"""``python -m wmr.paper.ledger CHAPTERS DEST``: merge the chapters' ledger rows (:func:`wmr.paper.ledger.main`)."""
 from .store import main
 
 raise SystemExit(main())

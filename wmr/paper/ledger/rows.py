@@ -148,19 +148,19 @@ class Ledger:
         return {v: sum(r["verdict"] == v for r in self.rows) for v in VERDICTS}
 
     def write(self, directory):
-        """Write ``<directory>/ledger/<notebook>.csv`` atomically.
+        """Write this chapter's rows to ``<directory>/ledger.csv`` atomically.
 
         Parameters
         ----------
         directory : path-like
-            The project's figures directory (see :func:`wmr.paper.notebook.project`).
+            Where the chapter writes (:attr:`wmr.paper.notebook.Project.out`).
 
         Returns
         -------
         pathlib.Path
-            The fragment written.
+            The file written.
         """
         if directory is None:
-            raise TypeError("directory must be a path (the project's figures directory), got None")
-        path = Path(directory) / "ledger" / f"{self.notebook}.csv"
+            raise TypeError("directory must be a path (where the chapter writes), got None")
+        path = Path(directory) / "ledger.csv"
         return atomic_write(path, csv_text(self.rows, COLUMNS))

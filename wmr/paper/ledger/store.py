@@ -5,7 +5,6 @@ Part of the ledger: :mod:`wmr.paper.ledger`.
 from __future__ import annotations
 
 import csv
-import os
 import sys
 from pathlib import Path
 
@@ -75,13 +74,16 @@ def problems(rows):
     return out
 
 
-def merge(directory):
-    """Merge the fragments ``<directory>/ledger/*.csv`` into ``<directory>/ledger.csv``.
+def merge(chapters, dest):
+    """Concatenate the chapters' rows ``<chapters>/*/ledger.csv`` into ``dest``, in the ledger's order.
 
     Parameters
     ----------
-    directory : path-like
-        The project's figures directory.
+    chapters : path-like
+        The folder holding one folder per executed chapter (the build's ``build/out``).
+    dest : path-like
+        The ledger to write (the build's ``figures/ledger.csv``); left untouched when its bytes
+        would not change.
 
     Returns
     -------
@@ -91,38 +93,35 @@ def merge(directory):
     problems : list of str
         See :func:`problems`.
     """
-    d = Path(directory)
     rows = []
-    for frag in sorted((d / "ledger").glob("*.csv")):
+    for frag in sorted(Path(chapters).glob("*/ledger.csv")):
         rows.extend(read(frag))
     rows.sort(key=_sort_key)
-    path = atomic_write(d / "ledger.csv", csv_text(rows, COLUMNS))
-    return path, rows, problems(rows)
+    dest = Path(dest)
+    text = csv_text(rows, COLUMNS)
+    if not dest.exists() or dest.read_text(encoding="utf-8") != text:
+        atomic_write(dest, text)
+    return dest, rows, problems(rows)
 
 
 def main(argv=None):
-    """Command line: ``python -m wmr.paper.ledger [DIR]``; merges ``DIR/ledger/*.csv`` and reports.
-
-    ``DIR`` defaults to the figures directory of the project (``$WMR_PROJECT/figures``, else
-    ``./figures``; see :func:`wmr.paper.notebook.project`).
+    """Command line: ``python -m wmr.paper.ledger CHAPTERS DEST``; merges ``CHAPTERS/*/ledger.csv`` and reports.
 
     Parameters
     ----------
     argv : list of str, optional
-        ``[DIR]``.
+        ``[CHAPTERS, DEST]``.
 
     Returns
     -------
     int
-        Exit status: 1 when the merged ledger has problems.
+        Exit status: 1 when the merged ledger has problems, 2 for a usage error.
     """
     argv = sys.argv[1:] if argv is None else list(argv)
-    if argv:
-        directory = Path(argv[0])
-    else:
-        from ..notebook import project
-        directory = project(os.getcwd()).figures
-    path, rows, probs = merge(directory)
+    if len(argv) != 2:
+        print("usage: python -m wmr.paper.ledger CHAPTERS DEST", file=sys.stderr)
+        return 2
+    path, rows, probs = merge(*argv)
     counts = {v: sum(r.get("verdict") == v for r in rows) for v in VERDICTS}
     print(f"ledger: {len(rows)} rows -> {path} ({', '.join(f'{k} {n}' for k, n in counts.items())})")
     for p in probs:
