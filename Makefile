@@ -34,8 +34,8 @@ help: ## show this help
 	@echo
 	@grep -E '^[a-z]+:.*## ' $(MAKEFILE_LIST) | sed -E 's/^([a-z]+):.*## (.*)/  make \1\t\2/' | expand -t 18
 
-venv: ## (internal) create/refresh .venv from environment.lock, editable install of wmr
-	@want="$$(sha256sum environment.lock pyproject.toml | sha256sum | cut -d' ' -f1)"; \
+venv: ## (internal) create/refresh .venv from environment.lock, editable install of wmr, the edition importable
+	@want="$$({ sha256sum environment.lock pyproject.toml; echo "edition on sys.path (.pth) v1"; } | sha256sum | cut -d' ' -f1)"; \
 	have="$$(cat $(STAMP) 2>/dev/null || true)"; \
 	if [ -x $(VPY) ] && [ "$$want" = "$$have" ]; then exit 0; fi; \
 	if command -v flock >/dev/null 2>&1; then exec 9>.venv.lock; \
@@ -51,6 +51,8 @@ venv: ## (internal) create/refresh .venv from environment.lock, editable install
 	{ $(VPY) -m pip install --disable-pip-version-check --require-hashes -r environment.lock && \
 	  $(VPY) -m pip install --disable-pip-version-check --no-deps --no-build-isolation -e . ; } > $$log 2>&1 \
 	  || { cat $$log; echo "[venv] pip install failed (log: $$log)"; exit 1; }; \
+	$(VPY) -c 'import sysconfig; print(sysconfig.get_path("purelib"))' | \
+	  { read site; echo "$(CURDIR)" > "$$site/wmr-edition.pth"; }; \
 	echo "$$want" > $(STAMP); \
 	echo "[venv] ready in $$(( $$(date +%s) - t0 )) s"
 
@@ -72,7 +74,7 @@ tex: ## (internal) make sure xelatex/pandoc/poppler are present (apt-get on Debi
 notebooks: venv ## execute notebooks/*.ipynb into build/notebooks (only changed ones), merge the ledger
 	@$(BUILD) execute
 
-figures: venv ## regenerate figures/ outside the notebooks (python -m wmr.paper.figures figures/)
+figures: venv ## regenerate figures/ outside the notebooks (python -m edition.figures figures/)
 	@$(BUILD) figures
 
 browser: ## (internal) make sure headless Chromium is present for the HTML test (apt-get on Debian as root)

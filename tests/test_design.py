@@ -8,7 +8,7 @@ import wmr
 from wmr.analysis import design as D
 from wmr.analysis import motion_kappa as MK
 from wmr.analysis.sweep import Grid
-from wmr.paper import design_study as study
+from edition import design_study as study
 
 
 @pytest.fixture(scope="module")

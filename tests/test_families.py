@@ -1,4 +1,4 @@
-"""The paper's singular families (wmr.paper.families): every sample, rank count and verdict checked
+"""The paper's singular families (edition.families): every sample, rank count and verdict checked
 against independent line geometry; the prose is Markdown with $...$ math; the CSV is deterministic."""
 import csv
 import re
@@ -8,7 +8,7 @@ import pytest
 from conftest import axle, rolling_dir
 
 import wmr
-from wmr.paper import families as fam
+from edition import families as fam
 
 DEG = np.pi / 180
 P = wmr.paper_robot("centred").mount_points                      # L = 1: the circumcircle has radius 1

@@ -12,8 +12,8 @@ from conftest import ROOT, axle, rolling_dir
 
 import wmr
 from wmr.model.tolerance import TOL
-from wmr.paper import figures as F
-from wmr.paper.figures import common
+from edition import figures as F
+from edition.figures import common
 
 DEG = np.pi / 180
 P = wmr.paper_robot("centred", L=1.0, r=0.25).mount_points      # the paper's d_i, L = 1
@@ -324,15 +324,15 @@ def test_show_displays_saves_and_returns_the_data(tmp_path, data):
 
 
 def test_data_paths_do_not_import_matplotlib():
-    code = ("import sys, wmr.paper.figures.fig08 as f; f.data(); "
-            "import wmr.paper.figures as F; [F.FIGURES[k].data() for k in ('fig10', 'fig13', 'conventions')]; "
+    code = ("import sys, edition.figures.fig08 as f; f.data(); "
+            "import edition.figures as F; [F.FIGURES[k].data() for k in ('fig10', 'fig13', 'conventions')]; "
             "sys.exit('matplotlib' in sys.modules)")
     assert subprocess.run([sys.executable, "-c", code]).returncode == 0
 
 
 # ----------------------------------------------------------------------------- doctests of this stream's modules
-@pytest.mark.parametrize("module", ["wmr.paper.text", "wmr.paper.files", "wmr.paper.families", "wmr.paper.figures",
-                                    "wmr.paper.figures.common", "wmr.paper.figures.output", "wmr.plot.style",
+@pytest.mark.parametrize("module", ["edition.text", "edition.files", "edition.families", "edition.figures",
+                                    "edition.figures.common", "edition.figures.output", "wmr.plot.style",
                                     "wmr.plot.annotate", "wmr.plot.robot"])
 def test_doctests(module):
     import doctest
@@ -352,7 +352,7 @@ def test_detmap_minimum_is_refined_and_the_isotropic_example_is_immobile(data):
     assert int(wmr.rank_F(bot, np.radians(dm.vortex_beta_deg))) == 6
     assert dm.kappa_mobile_min >= np.sqrt(2) * (1 - 1e-9)
     assert dm.kappa_mobile_min == pytest.approx(np.sqrt(2), rel=1e-9)   # reached by the spin about C
-    from wmr.paper.figures import detmap
+    from edition.figures import detmap
     text = detmap.caption(dm)
     assert "rank $\\mathbf{F} = 6$ and the robot cannot move" in text
     assert f"{min(s.kappa_min_refined for s in dm.slices):.4f}" in text

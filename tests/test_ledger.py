@@ -1,11 +1,11 @@
-"""wmr.paper.ledger: verdicts computed from findings, fragments, merging, problems, Markdown fields."""
+"""edition.ledger: verdicts computed from findings, fragments, merging, problems, Markdown fields."""
 import csv
 import math
 
 import pytest
 
-from wmr.paper import ledger as LG
-from wmr.paper.ledger import Finding
+from edition import ledger as LG
+from edition.ledger import Finding
 
 
 def ok(id, **kw):
@@ -53,7 +53,7 @@ def test_printed_holds_must_be_a_bool():
 
 
 def test_row_has_the_contract_columns_and_the_transcribed_text():
-    from wmr.paper import claim, printed
+    from edition import claim, printed
     led = LG.Ledger("01_x")
     row = led.add(refuted(15, severity="wrong"))
     assert tuple(row) == LG.COLUMNS

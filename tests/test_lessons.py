@@ -13,9 +13,9 @@ import pytest
 import sympy as sp
 
 import wmr
-from wmr.paper import exercises as X
-from wmr.paper import notebook as NB
-from wmr.paper import symbols as S
+from edition import exercises as X
+from edition import notebook as NB
+from edition import symbols as S
 
 ROOT = Path(__file__).resolve().parents[1]
 CHAPTERS = sorted((ROOT / "notebooks").glob("[0-9][0-9]_*.ipynb"))
@@ -78,7 +78,7 @@ def test_exercise_chapters_include_the_design_study():
 
 @pytest.mark.parametrize("path", EXERCISE_CHAPTERS, ids=lambda p: p.name)
 def test_chapter_has_exercises_with_checks_and_worked_solutions(path):
-    # checks live in wmr.paper.exercises (chapters 1-6) or wmr.paper.design_study (chapter 8, as `study`)
+    # checks live in edition.exercises (chapters 1-6) or edition.design_study (chapter 8, as `study`)
     call = r"(?:exercises|study)\.(\w+)\("
     own = {"describe_robot", "describe_design"}
     ex = [c for c in cells(path, "code") if "exercise" in tags(c)]
@@ -226,8 +226,8 @@ def test_a_missing_answer_is_not_an_error(check):
 
 
 def test_offset_other_side_tells_the_sides_apart():
-    from wmr.paper import platform_wheels as PW
-    from wmr.paper.checks.wheels import disk_velocity, k, planar
+    from edition import platform_wheels as PW
+    from edition.checks.wheels import disk_velocity, k, planar
     disk = disk_velocity(PW.theta_dot_i)
     right = planar(disk.h_dot + (PW.phi_dot_i * k).cross(-S.d * disk.j3))
     printed_side = planar(disk.h_dot + (PW.phi_dot_i * k).cross(S.d * disk.j3))
@@ -248,8 +248,8 @@ def test_dual_exercises():
 
 
 def test_chapter_2_exercises():
-    from wmr.paper import printed
-    from wmr.paper.checks.assembly import concurrent_angles, drift_of_c
+    from edition import printed
+    from edition.checks.assembly import concurrent_angles, drift_of_c
     bot = wmr.paper_robot("offset", L=0.3, r=0.1, d=0.05)
     assert X.locked_steering(concurrent_angles(bot, (0.2, -0.1)))
     assert "parallel" in X.locked_steering([0.3, 0.3, 0.3]).message
@@ -259,7 +259,7 @@ def test_chapter_2_exercises():
 
 
 def test_chapter_3_exercises():
-    from wmr.paper import printed
+    from edition import printed
     p = np.array([[-0.4, 0.0], [0.1, 0.5], [0.3, -0.5]])
     L = float(np.sqrt(np.mean(np.sum(p**2, axis=1))))
     assert X.isotropic_placement(p, L)

@@ -46,7 +46,7 @@ def test_ledger_merged():
     except build.BuildError as e:
         pytest.fail(str(e), pytrace=False)
     rows = inputs.read_ledger(TREE.ledger)
-    assert rows, "python -m wmr.paper.ledger did not write figures/ledger.csv, or it has no rows"
+    assert rows, "python -m edition.ledger did not write figures/ledger.csv, or it has no rows"
     assert {r.verdict for r in rows} <= set(inputs.VERDICTS)
 
 

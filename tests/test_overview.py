@@ -64,7 +64,7 @@ def test_offset_not_equal_radius_is_advised():
 
 
 def test_dead_zone_agrees_with_the_simulation():
-    from wmr.paper.checks.assembly import dead_zone
+    from edition.checks.assembly import dead_zone
     bot = wmr.paper_robot("offset", L=0.4, r=0.1, d=0.04)
     sim = dead_zone(bot)
     assert np.isclose(sim["radius"], dead_zone_radius(bot), rtol=1e-6)

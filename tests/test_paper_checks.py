@@ -1,4 +1,4 @@
-"""wmr.paper.checks: verdicts follow the transcription -- a corrected transcription re-grades its row to ok,
+"""edition.checks: verdicts follow the transcription -- a corrected transcription re-grades its row to ok,
 a broken one of a true equation stops the chapter -- and the claims record their own evidence."""
 from __future__ import annotations
 
@@ -8,12 +8,12 @@ import numpy as np
 import pytest
 import sympy as sp
 
-import wmr.paper as paper
-from wmr.paper import isotropy as PI
-from wmr.paper import platform_wheels as PW
-from wmr.paper import symbols as S
-from wmr.paper.checks import assembly, centred, dual, isotropy, steering, wheels
-from wmr.paper.ledger import Ledger, grade
+import edition as paper
+from edition import isotropy as PI
+from edition import platform_wheels as PW
+from edition import symbols as S
+from edition.checks import assembly, centred, dual, isotropy, steering, wheels
+from edition.ledger import Ledger, grade
 
 
 @pytest.fixture

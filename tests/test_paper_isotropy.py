@@ -9,10 +9,11 @@ import numpy as np
 import pytest
 import sympy as sp
 
+import edition.symbols
 import wmr
 from wmr.analysis.isotropy import condition_number
 from wmr.analysis.mobility import rank_F, twist_constraints
-from wmr.paper import printed
+from edition import printed
 from wmr.model.tolerance import TOL
 
 SEED = 20020101
@@ -49,7 +50,7 @@ def test_printed_forms_registered():
         p = printed(n)
         assert p.latex and p.section.startswith(("4.3", "5."))
     # the transcription of (59) agrees with the paper's text used in these tests
-    f = sp.lambdify(wmr.paper.symbols.beta, printed(59).expr.rhs, "numpy")
+    f = sp.lambdify(edition.symbols.beta, printed(59).expr.rhs, "numpy")
     B = np.random.default_rng(SEED).uniform(-np.pi, np.pi, (50, 3))
     assert np.allclose(f(*B.T), _printed_det(B), atol=1e-14)
 

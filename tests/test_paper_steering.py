@@ -9,13 +9,13 @@ import pytest
 import sympy as sp
 
 import wmr
-from wmr.paper import symbols as S
+from edition import symbols as S
 from wmr.analysis.mobility import admissible_twists, mobility, rank_F
-from wmr.paper import printed
-from wmr.paper import steering as P
+from edition import printed
+from edition import steering as P
 from wmr.analysis.steering import AT_INFINITY, FINITE, STILL
 from wmr.model.tolerance import TOL
-from wmr.paper.verify import SEED, symbolic_equal
+from edition.verify import SEED, symbolic_equal
 
 N = 500
 

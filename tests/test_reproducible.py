@@ -17,8 +17,8 @@ import pytest
 from conftest import ROOT
 
 import wmr
-from wmr.paper import figures as F
-from wmr.paper.figures import output
+from edition import figures as F
+from edition.figures import output
 
 FIGURES = ROOT / "figures"
 #: the NumPy functions whose last bit differs between CPUs (vectorised implementations and libm)

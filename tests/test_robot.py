@@ -10,7 +10,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 import wmr
-from wmr.paper import symbols as S
+from edition import symbols as S
 
 from conftest import (check_J1_first_principles, check_J2_first_principles, check_offset_steer_only,
                       check_positive_rolling, check_round_trip, robots, seeds)

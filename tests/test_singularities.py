@@ -9,13 +9,14 @@ import numpy as np
 import pytest
 import sympy as sp
 
+import edition.symbols
 import wmr
 from wmr.analysis import lines as ln
 from wmr.analysis import singularities as sg
-from wmr.paper import families as catalogue
+from edition import families as catalogue
 from wmr.model.platform import rotation
 from wmr.model.tolerance import TOL
-from wmr.paper.verify import symbolic_equal
+from edition.verify import symbolic_equal
 from wmr.model.wheels import CentredWheel
 
 DEG = np.pi / 180
@@ -32,10 +33,10 @@ def fams():
 
 
 def printed_59():
-    """The printed (59) (from wmr.paper when transcribed there, else as printed in the paper)."""
+    """The printed (59) (from edition when transcribed there, else as printed in the paper)."""
     b1, b2, b3 = sp.symbols("beta1:4", real=True)
     try:
-        from wmr.paper import printed
+        from edition import printed
         e = printed("59").expr
         if isinstance(e, sp.Equality):
             e = e.rhs
@@ -57,7 +58,7 @@ def test_printed_list_holds_for_every_free_angle():
 
 
 def test_characterisation_is_exact():
-    S = wmr.paper.symbols
+    S = edition.symbols
     ch = sg.characterisation(wmr.paper_robot("centred", L=S.L, r=S.r, exact=True), L=S.L)
     assert ch["identity_general"]          # det J = -(r1 r2 r3 / L) det W for any three mount points
     assert ch["identity_robot"]
@@ -66,7 +67,7 @@ def test_characterisation_is_exact():
 
 
 def test_det_J_is_r_cubed_times_printed_59():
-    S = wmr.paper.symbols
+    S = edition.symbols
     det = sg.det_J_symbolic(wmr.paper_robot("centred", L=S.L, r=S.r, exact=True), L=S.L)
     assert symbolic_equal(det, S.r ** 3 * printed_59())
 
@@ -74,7 +75,7 @@ def test_det_J_is_r_cubed_times_printed_59():
 def test_det_J_numeric_matches_symbolic(bot):
     rng = np.random.default_rng(7)
     beta = rng.uniform(-np.pi, np.pi, (50, 3))
-    b = wmr.paper.symbols.beta
+    b = edition.symbols.beta
     f = sp.lambdify(b, 0.25 ** 3 * printed_59(), "numpy")
     assert np.allclose(sg.det_J(bot, beta), f(*beta.T), atol=1e-14)
     assert sg.det_J(bot, beta.reshape(5, 10, 3)).shape == (5, 10)

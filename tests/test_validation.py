@@ -1,5 +1,5 @@
 """Input checks (wmr.model.validation), the numerical-zero policy (wmr.model.tolerance), the thread chunking
-(wmr.analysis._batch) and the comparison helpers (wmr.paper.verify).
+(wmr.analysis._batch) and the comparison helpers (edition.verify).
 
 Every bad input raises ``TypeError`` (wrong kind) or ``ValueError`` (bad value) whose message names
 the argument and shows the value.
@@ -15,7 +15,7 @@ from hypothesis import strategies as st
 import wmr
 from wmr.analysis import _batch
 from wmr.model import validation as V
-from wmr.paper import verify
+from edition import verify
 from wmr.model.tolerance import TOL, near_zero
 
 x = sp.Symbol("x", real=True)

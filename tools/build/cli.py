@@ -1,7 +1,7 @@
 """Command line of the build: ``python -m tools.build [--root DIR] [--build DIR] [--notebooks DIR] COMMAND``.
 
 Commands: ``execute`` (stale notebooks, then the ledger), ``report [--html-only]``, ``figures``
-(``python -m wmr.paper.figures figures/``, for ``make figures``), ``test [-- PYTEST ARGS]`` (what
+(``python -m edition.figures figures/``, for ``make figures``), ``test [-- PYTEST ARGS]`` (what
 ``make test`` runs: execute, pytest in two partitions at once, then fail if the build modified
 tracked files), ``snapshot`` and
 ``check-clean`` (the two halves of that check). Exit status: 0 success, 1 a step failed, 2 the
@@ -26,9 +26,9 @@ __all__ = ["main"]
 
 
 def _figures(t: Tree) -> None:
-    p = procs.call([sys.executable, "-m", "wmr.paper.figures", str(t.figures)], cwd=t.root, env=t.env())
+    p = procs.call([sys.executable, "-m", "edition.figures", str(t.figures)], cwd=t.root, env=t.env())
     if p != 0:
-        raise BuildError(f"python -m wmr.paper.figures {t.rel(t.figures)} failed (exit {p})")
+        raise BuildError(f"python -m edition.figures {t.rel(t.figures)} failed (exit {p})")
 
 
 def _check_clean(t: Tree) -> int:
@@ -66,7 +66,7 @@ def main(argv: list[str] | None = None) -> int:
     sub.add_parser("execute", help="execute stale notebooks, merge the ledger")
     r = sub.add_parser("report", help="build/report.html and build/report.pdf")
     r.add_argument("--html-only", action="store_true")
-    sub.add_parser("figures", help="python -m wmr.paper.figures figures/")
+    sub.add_parser("figures", help="python -m edition.figures figures/")
     te = sub.add_parser("test", help="execute, pytest, fail if tracked files changed")
     te.add_argument("pytest_args", nargs=argparse.REMAINDER)
     sub.add_parser("snapshot", help="record git status before a build")

@@ -6,7 +6,7 @@ recorded (a truncated or deleted output heals itself). Each runs in a fresh kern
 (:mod:`tools.build.worker`) with its own directory as working directory and ``WMR_OUT`` set to
 ``build/out/<notebook>``: a chapter writes nothing tracked. :func:`publish` then copies the
 chapters' figures and tables into ``figures/`` (only files whose bytes changed) and
-``python -m wmr.paper.ledger build/out figures/ledger.csv`` concatenates their ledger rows.
+``python -m edition.ledger build/out figures/ledger.csv`` concatenates their ledger rows.
 """
 from __future__ import annotations
 
@@ -89,7 +89,7 @@ def execute(t: Tree | None = None, workers: int = WORKERS, merge: bool = True,
     t : Tree, optional
     workers : int
     merge : bool
-        Run ``python -m wmr.paper.ledger`` afterwards (when its inputs changed).
+        Run ``python -m edition.ledger`` afterwards (when its inputs changed).
     only : list of str, optional
         Restrict to these notebook file names.
 
@@ -175,14 +175,14 @@ def publish(t: Tree, nbs: list[Path]) -> list[Path]:
 
 
 def _module_present(t: Tree, mod: str) -> bool:
-    return (t.wmr / (mod + ".py")).exists() or (t.wmr / mod / "__init__.py").exists()
+    return (t.edition / (mod + ".py")).exists() or (t.edition / mod / "__init__.py").exists()
 
 
 def merge_ledger(t: Tree, force: bool = False) -> None:
-    """``python -m wmr.paper.ledger build/out figures/ledger.csv``: the chapters' rows in one ledger."""
+    """``python -m edition.ledger build/out figures/ledger.csv``: the chapters' rows in one ledger."""
     t0 = time.perf_counter()
-    if not _module_present(t, "paper/ledger"):
-        say("ledger", "skipped: wmr/paper/ledger.py not found")
+    if not _module_present(t, "ledger"):
+        say("ledger", "skipped: edition/ledger.py not found")
         return
     frags = sorted(t.out.glob("*/ledger.csv"))
     key = hash_files(frags, t.root, hashlib.sha256(wmr_hash(t).encode())).hexdigest()
@@ -191,9 +191,9 @@ def merge_ledger(t: Tree, force: bool = False) -> None:
         say("ledger", f"{t.rel(t.ledger)} up to date (cached)")
         return
     stamp.clear()
-    p = procs.run([sys.executable, "-m", "wmr.paper.ledger", str(t.out), str(t.ledger)], cwd=t.root, env=t.env())
+    p = procs.run([sys.executable, "-m", "edition.ledger", str(t.out), str(t.ledger)], cwd=t.root, env=t.env())
     if p.returncode != 0:
-        raise BuildError(f"python -m wmr.paper.ledger failed (exit {p.returncode}):\n{p.stdout}\n{p.stderr}")
+        raise BuildError(f"python -m edition.ledger failed (exit {p.returncode}):\n{p.stdout}\n{p.stderr}")
     stamp.write(key, [t.ledger])
     last = (p.stdout.strip().splitlines() or [""])[-1]
-    say("ledger", f"python -m wmr.paper.ledger: {last or t.rel(t.ledger)} ({len(frags)} fragments)", t0)
+    say("ledger", f"python -m edition.ledger: {last or t.rel(t.ledger)} ({len(frags)} fragments)", t0)

@@ -3,7 +3,7 @@
 :func:`atomic_write` is the build's one way of writing a file: the bytes go to a temporary file
 beside the target, are flushed to disk, and replace the target in one ``os.replace``; a crash or a
 signal leaves either the old file or the new one, never a truncated one.  It and :func:`atomic_path`
-are the library's own (``wmr/paper/files.py``, standard library only), loaded here by path so that
+are the library's own (``edition/files.py``, standard library only), loaded here by path so that
 the build does not import the package it builds (nor NumPy and SymPy) to write a stamp.
 """
 from __future__ import annotations
@@ -20,9 +20,9 @@ __all__ = ["atomic_write", "atomic_path", "sha256_file", "hash_files", "temp_dir
 
 
 def _library_files():
-    """``wmr/paper/files.py`` of this source tree, loaded as a module of its own (no ``wmr`` import)."""
-    path = Path(__file__).resolve().parents[2] / "wmr" / "paper" / "files.py"
-    spec = importlib.util.spec_from_file_location("_wmr_paper_files", path)
+    """``edition/files.py`` of this source tree, loaded as a module of its own (no ``wmr`` import)."""
+    path = Path(__file__).resolve().parents[2] / "edition" / "files.py"
+    spec = importlib.util.spec_from_file_location("_edition_files", path)
     mod = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(mod)
     return mod

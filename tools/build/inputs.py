@@ -65,7 +65,7 @@ def _entry(row: dict) -> Entry:
 
 @dataclass(frozen=True)
 class FigureMeta:
-    """One figure as written by ``wmr.paper.figures.save``: ``figures/<key>.json`` and its images."""
+    """One figure as written by ``edition.figures.save``: ``figures/<key>.json`` and its images."""
 
     key: str
     number: str

@@ -60,13 +60,17 @@ class Tree:
     def wmr(self) -> Path:
         return self.root / "wmr"
 
+    @property
+    def edition(self) -> Path:
+        return self.root / "edition"
+
     def notebook_files(self) -> list[Path]:
         """``notebooks/*.ipynb`` in name order (hidden files and checkpoints excluded)."""
         return _listing(self.notebooks, "*.ipynb", lambda p: not p.name.startswith("."))
 
     def wmr_files(self) -> list[Path]:
-        """Every ``wmr/**/*.py``: a change to any of them makes every notebook stale."""
-        return _listing(self.wmr, "**/*.py", lambda p: "__pycache__" not in p.parts)
+        """Every ``wmr/**/*.py`` and ``edition/**/*.py``: a change to any of them makes every notebook stale."""
+        return [p for d in (self.wmr, self.edition) for p in _listing(d, "**/*.py", lambda p: "__pycache__" not in p.parts)]
 
     # --- generated, tracked (published by the build from what the chapters wrote; must not change when re-built)
     @property

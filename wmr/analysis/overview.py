@@ -105,7 +105,7 @@ def dead_zone_radius(robot):
 
     With every unit an offset wheel of the same offset d, steering all units together with the
     drives locked moves C on a circle of radius d about the fixed centroid of the contact points
-    (the paper's dead zone, checked by simulation in ``wmr.paper.checks.assembly.dead_zone``).
+    (the paper's dead zone, checked by simulation in ``edition.checks.assembly.dead_zone``).
     Only d = 0 is drift-free, and then :math:`\kappa(\mathbf J_2) = \infty`.
 
     Parameters

@@ -29,7 +29,7 @@ instantaneous centre U; otherwise 6.  Both happen at once iff every :math:`P_i` 
 :math:`U` and :math:`D_P` at a right angle, i.e. (Thales) :math:`U` and :math:`D_P` are antipodal
 on the circle through :math:`P_1,P_2,P_3`, or both are at infinity: a rotation about any point
 of that circle passes through a singular :math:`\mathbf J` (:func:`classify` calls it
-``"v-circle"``; the catalogue of the paper's families is :mod:`wmr.paper.families`).
+``"v-circle"``; the catalogue of the paper's families is :mod:`edition.families`).
 
 Everything here is computed from :meth:`wmr.Robot.J` and :func:`wmr.analysis.mobility.rank_F`; nothing is
 copied from the paper.

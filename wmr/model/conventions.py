@@ -1,6 +1,6 @@
 r"""Conventions used everywhere in :mod:`wmr` (stated once, here).
 
-The drawing is ``figures/conventions.svg`` (made by :func:`wmr.paper.figures.conventions`).
+The drawing is ``figures/conventions.svg`` (made by :func:`edition.figures.conventions`).
 
 Frames
     :math:`\mathcal F` is fixed, :math:`\mathcal B` is attached to the platform with origin at the
@@ -74,14 +74,14 @@ matplotlib, pandas or IPython).
 :mod:`wmr.plot`
     Drawing with matplotlib (imported only there): the style, annotations and the robot seen
     from above (its world geometry, computed without matplotlib, in :mod:`~wmr.plot.geometry`).
-:mod:`wmr.paper`
+:mod:`edition`
     The edition of the paper: its printed forms (one module per chapter, ``register``/``printed``),
-    symbols, the ledger of verdicts (:mod:`~wmr.paper.ledger`: ``verdict``, ``markup``, ``rows``,
-    ``store``), the checks (:mod:`~wmr.paper.checks`: one package per chapter, one module per
+    symbols, the ledger of verdicts (:mod:`~edition.ledger`: ``verdict``, ``markup``, ``rows``,
+    ``store``), the checks (:mod:`~edition.checks`: one package per chapter, one module per
     equation group), the exercises (one module per chapter), the singular families, the figures
-    (:mod:`~wmr.paper.figures`: one module per figure, each a ``data`` function returning a data
+    (:mod:`~edition.figures`: one module per figure, each a ``data`` function returning a data
     class and a ``draw`` function taking it), the interactive chapter (``state``, ``draw``,
-    ``describe``, ``widgets``) and the notebook helpers (:mod:`~wmr.paper.notebook`).  Where its
+    ``describe``, ``widgets``) and the notebook helpers (:mod:`~edition.notebook`).  Where its
     files are written is always passed in.
 :mod:`wmr.cli`
     The ``wmr`` command line: one module per command (:data:`wmr.cli.COMMANDS`).

@@ -1,0 +1,200 @@
+r"""Drift, (28)-(29): how C and psi move when the drives are locked.
+
+Chapter 2's checks live in :mod:`edition.checks.assembly`; this module holds one group of them.
+"""
+from __future__ import annotations
+
+import numpy as np
+import sympy as sp
+
+from wmr.model.platform import rotation
+from wmr.model.robot import Robot
+from wmr.model.robots import paper_robot
+from wmr.model.tolerance import TOL
+from wmr.model.wheels import OffsetWheel
+from ... import offset as PO
+from ... import printed
+from ... import symbols as S
+from ...verify import SEED, symbolic_equal
+from .. import Derivation, claim, equation, require
+from .locked import concurrent_angles, locked_motion, locked_steering
+from .matrices import PAPER, general_robot, _exact
+
+__all__ = ["drift_of_c", "drift_of_psi", "drift"]
+
+
+def drift_of_c(n=100, origin=(0.06, -0.04), seed=SEED):
+    r"""(28): sum the three block rows of (21) with :math:`\dot\theta_i = 0` and solve for :math:`\dot{\mathbf c}`.
+
+    The printed form needs :math:`\sum_i\mathbf d_i = \mathbf 0` (C at the centroid of the mount
+    points); in general :math:`\dot{\mathbf c}` gains :math:`-\tfrac{\dot\psi}{3}\mathbf E\sum_i\mathbf d_i`.
+    Numerically, on genuine locked motions (concurrent arms): the paper's robot and the same robot
+    with C moved to ``origin``.
+
+    Parameters
+    ----------
+    n : int
+        Random centres of rotation.
+    origin : pair
+        Where C is moved for the comparison.
+    seed : int
+
+    Returns
+    -------
+    Derivation
+        ``c_dot`` (derived), ``extra`` (derived minus printed), ``off_centroid`` (the printed form's
+        error with C moved), finding (28).
+    """
+    P = printed(28)
+    bot = general_robot()
+    J1, J2 = _exact(bot.J1()), bot.J2()
+    t, th = sp.Matrix(bot.twist_symbols), sp.Matrix(bot.rate_symbols)
+    locked = {s: 0 for s in S.theta_dot}
+    rows = sum(((J1 * t - J2 * th).subs(locked)[2 * k:2 * k + 2, :] for k in range(3)), sp.zeros(2, 1))
+    sol = sp.solve(list(rows), [S.x_dot, S.y_dot], dict=True)[0]
+    c_dot = sp.Matrix([sol[S.x_dot], sol[S.y_dot]])
+    extra = (c_dot - P.expr.rhs).applyfunc(sp.simplify)
+    centroid = {PO.D[2][0]: -PO.D[0][0] - PO.D[1][0], PO.D[2][1]: -PO.D[0][1] - PO.D[1][1]}
+    holds = symbolic_equal(c_dot.subs(centroid), P.expr.rhs)
+    needs_centroid = not symbolic_equal(c_dot, P.expr.rhs)
+    f28 = sp.lambdify([*S.beta, *S.phi_dot, S.d], P.expr.rhs, "numpy")
+    paper = paper_robot("offset", **PAPER)
+    off = paper.moved(origin=origin)
+    rng = np.random.default_rng(seed)
+    res, res_off = 0.0, 0.0
+    for _ in range(n):
+        u = rng.uniform(-0.5, 0.5, 2)
+        for robot in (paper, off):
+            bc = concurrent_angles(robot, u)
+            x = locked_motion(robot, bc)
+            x = x / x[0]
+            e = float(np.abs(x[1:3] - np.ravel(f28(*bc, *x[3:], robot.wheels[0].d))).max())
+            if robot is paper:
+                res = max(res, e)
+            else:
+                res_off = max(res_off, e)
+    require(needs_centroid and res_off > 1e-3, "the printed (28) fails with C off the centroid")
+    return Derivation(c_dot=c_dot.applyfunc(sp.factor), extra=extra, off_centroid=res_off, findings=[equation(
+        28, holds, r"the sum of the block rows of (21) with $\dot\theta_i = 0$, solved for $\dot{\mathbf c}$, is the printed "
+                   r"form when $\sum_i\mathbf d_i = \mathbf 0$ (SymPy); it holds on "
+                   rf"{n} simulated drift motions of the paper's robot", res,
+        convention=r"$\sum_i\mathbf d_i = \mathbf 0$ (C at the centroid of the $P_i$); $\dot{\mathbf c}$ in body components",
+        note=r"in general $\dot{\mathbf c}$ gains $-\tfrac{\dot\psi}{3}\mathbf E\sum_i\mathbf d_i$: with C moved off the "
+             rf"centroid the printed form is off by up to ${res_off:.2f}$ on the same motions. It holds on every solution, "
+             r"but solutions exist only for concurrent or parallel arms (see the claim `drift`)")])
+
+
+def drift_of_psi(n=100, seed=SEED):
+    r"""(29): the printed quotient of two vectors, where it comes from, and the true drift rate of :math:`\psi`.
+
+    Projecting (20) onto :math:`(\mathbf E\mathbf d_i)^{\mathrm T}` and summing with :math:`\dot\theta_i = 0`
+    and :math:`\sum_i\mathbf d_i = \mathbf 0` gives :math:`\dot\psi`; the paper's route (multiplying by
+    :math:`\dot{\mathbf c}^{\mathrm T}\mathbf E`) eliminates :math:`\dot{\mathbf c}`, not :math:`\dot\theta_i`.
+
+    Parameters
+    ----------
+    n : int
+        Random triangles (centroid at C) with random centres of rotation.
+    seed : int
+
+    Returns
+    -------
+    Derivation
+        ``error`` (SymPy's message for vector / vector), ``a``, ``b``, ``c`` (coefficients of the
+        projected sum), ``psi_dot`` (corrected), ``gap`` (error of the pseudo-inverse reading of the
+        printed quotient), finding (29).
+    """
+    P = printed(29)
+    try:
+        P.extra["numerators"][0] / P.extra["divisors"][0]
+        error = None
+    except TypeError as e:
+        error = f"{type(e).__name__}: {e}"
+    bot = general_robot()
+    J1, J2 = _exact(bot.J1()), bot.J2()
+    t, th = sp.Matrix(bot.twist_symbols), sp.Matrix(bot.rate_symbols)
+    cdot = sp.Matrix([S.x_dot, S.y_dot])
+    locked = {s: 0 for s in S.theta_dot}
+    proj = sp.expand(sum(((PO.E * sp.Matrix(p)).T * (J1 * t - J2 * th).subs(locked)[2 * k:2 * k + 2, :]
+                          for k, p in enumerate(PO.D)), sp.zeros(1, 1))[0])
+    a = sp.factor(proj.coeff(S.psi_dot))
+    b = sp.Matrix([proj.coeff(S.x_dot), proj.coeff(S.y_dot)]).applyfunc(sp.factor)
+    c = sp.collect(sp.expand(proj - a * S.psi_dot - (b.T * cdot)[0]), S.phi_dot)
+    centroid = {PO.D[2][0]: -PO.D[0][0] - PO.D[1][0], PO.D[2][1]: -PO.D[0][1] - PO.D[1][1]}
+    b_vanishes = symbolic_equal(b.subs(centroid), sp.zeros(2, 1))
+    psi_dot = sp.expand((-(b.T * cdot)[0] - c).subs(centroid)) / sp.expand(a.subs(centroid))
+    paper_route = symbolic_equal((cdot.T * PO.E * (J1 * t)[0:2, :])[0], -S.psi_dot * (cdot.T * sp.Matrix(PO.D[0]))[0])
+    f = sp.lambdify([*sum(PO.D, ()), *S.beta, *S.phi_dot, S.d], psi_dot, "numpy")
+    rng = np.random.default_rng(seed)
+    res, gap = 0.0, 0.0
+    for _ in range(n):
+        pts = rng.uniform(-1, 1, (3, 2))
+        pts -= pts.mean(0)
+        robot = Robot([OffsetWheel(tuple(p), r=0.1, d=0.05) for p in pts])
+        bc = concurrent_angles(robot, rng.uniform(-0.5, 0.5, 2))
+        x = locked_motion(robot, bc)
+        x = x / x[0]
+        D = robot.mount_points
+        terms = [rotation(bb) @ np.array([-p, 0.0]) for bb, p in zip(bc, x[3:])]
+        reading = robot.wheels[0].d / 3 * sum(Dk @ tk / (Dk @ Dk) for Dk, tk in zip(D, terms))
+        res = max(res, abs(x[0] - f(*D.ravel(), *bc, *x[3:], robot.wheels[0].d)))
+        gap = max(gap, abs(x[0] - reading))
+    corrected = (r"\dot\psi = \frac{d\sum_{i=1}^{3}(\mathbf E\mathbf d_i)^{\mathrm T}\mathbf R_{bwi}"
+                 r"\begin{bmatrix}-\dot\phi_i\\ 0\end{bmatrix}}{\sum_{i=1}^{3}\mathbf d_i^{\mathrm T}\mathbf d_i}")
+    return Derivation(error=error, a=a, b=b, c=c, psi_dot=psi_dot, gap=gap, findings=[equation(
+        29, error is None, r"projecting (20) on $(\mathbf E\mathbf d_i)^{\mathrm T}$ and summing with $\dot\theta_i = 0$ "
+                           r"gives the corrected form when $\sum_i\mathbf d_i = \mathbf 0$ (SymPy); it equals the true "
+                           rf"$\dot\psi$ on {n} simulated drift motions of random triangles", res,
+        refuted=r"the right side divides the 2-vector $\mathbf R_{bwi}[-\dot\phi_i\ \ 0]^{\mathrm T}$ by the 2-vector "
+                r"$\mathbf d_i$, which SymPy rejects; read with $\mathbf d_i^{\mathrm T}/\|\mathbf d_i\|^2$ it is off by up "
+                rf"to ${gap:.2f}$ rad/s when $\dot\psi = 1$",
+        corrected=corrected, corrected_holds=b_vanishes and paper_route and res < TOL, severity="wrong",
+        why=r"the printed form divides a vector by a vector; multiplying (20) by $\dot{\mathbf c}^{\mathrm T}\mathbf E$ "
+            r"eliminates $\dot{\mathbf c}$, not $\dot\theta_i$",
+        convention=r"$\dot\theta_i = 0$, $\sum_i\mathbf d_i = \mathbf 0$",
+        note=r"for the paper's equilateral placement ($\mathbf d_i^{\mathrm T}\mathbf d_i = L^2$) the denominator is $3L^2$")])
+
+
+def drift(row28, row29, n_locked=None):
+    r"""Claim ``drift``: steering with the drives locked moves the platform -- a conditional that holds.
+
+    With :math:`\dot\theta_i = 0` and :math:`\mathbf t = \mathbf 0`, (21) leaves
+    :math:`\mathbf J_2[\dot\phi_i\ 0]^{\mathrm T} = \mathbf 0`, and :math:`\det\mathbf J_2 = d^3r^3 \neq 0`
+    forces :math:`\dot\phi_i = 0`: whenever the wheels are steered without driving, the platform
+    moves.  What fails is *free* steering: the locked system jams unless the arm lines are
+    concurrent or parallel (:func:`locked_steering`).  The residual is that of (28) and (29).
+
+    Parameters
+    ----------
+    row28, row29 : edition.ledger.Finding
+        The findings of :func:`drift_of_c` and :func:`drift_of_psi`.
+    n_locked : Derivation, optional
+        :func:`locked_steering` (computed if not given).
+
+    Returns
+    -------
+    Derivation
+        finding ``drift``.
+    """
+    locked = n_locked or locked_steering()
+    bot = general_robot()
+    J2 = bot.J2()
+    steer_only = sp.Matrix([S.phi_dot[0], 0, S.phi_dot[1], 0, S.phi_dot[2], 0])
+    moved = J2 * steer_only                                   # = J1 t must vanish if t = 0
+    sol = sp.solve(list(moved), list(S.phi_dot), dict=True)
+    forced = sol == [{p: 0 for p in S.phi_dot}]
+    det_J2 = sp.trigsimp(J2.det())
+    holds = forced and symbolic_equal(det_J2, S.d**3 * S.r**3)
+    return Derivation(findings=[claim(
+        "drift", holds, r"with $\dot\theta_i = 0$ and $\mathbf t = \mathbf 0$, (21) leaves "
+                        r"$\mathbf J_2[\dot\phi_1\ 0\ \dot\phi_2\ 0\ \dot\phi_3\ 0]^{\mathrm T} = \mathbf 0$, whose only "
+                        r"solution is $\dot\phi_i = 0$ since $\det\mathbf J_2 = d^3r^3 \neq 0$ (SymPy): any steering "
+                        r"without driving moves the platform, as (28) and (29) describe", max(row28.residual, row29.residual),
+        convention=r"offset $d > 0$, non-collinear $P_i$; residual of rows (28) and (29)",
+        note=r"what fails is free steering: with the drives locked the $6\times6$ system "
+             r"$\mathbf M(\boldsymbol\beta)[\mathbf t;\dot{\boldsymbol\phi}] = \mathbf 0$ has "
+             r"$\det\mathbf M = d^3\det[\mathbf d_i\times\mathbf j_i\ \ \mathbf j_i^{\mathrm T}]$"
+             + (" (SymPy)" if locked.proven else "")
+             + rf", nonzero (rank {sorted(locked.ranks)} at {locked.n} random configurations) unless the arm lines are "
+               r"concurrent or all parallel; only then can the robot steer without driving, and the concurrent case "
+               r"only instantaneously")])

@@ -1,0 +1,237 @@
+r"""Stacking the units, (20)-(27): J1, J2, F, its null space, the mobility of offset wheels.
+
+Chapter 2's checks live in :mod:`edition.checks.assembly`; this module holds one group of them.
+"""
+from __future__ import annotations
+
+from functools import lru_cache
+
+import numpy as np
+import sympy as sp
+
+from wmr.analysis.linalg import null_space
+from wmr.analysis.mobility import admissible_twists, mobility
+from wmr.analysis.steering import steering_angles
+from wmr.model.robot import Robot
+from wmr.model.robots import paper_robot
+from wmr.model.tolerance import TOL
+from wmr.model.wheels import OffsetWheel
+from ... import offset as PO
+from ... import platform_wheels as PW
+from ... import printed
+from ... import symbols as S
+from ...verify import SEED, max_residual, symbolic_equal
+from .. import Derivation, claim, equation, require
+
+__all__ = ["general_robot", "one_unit", "stacking", "functional_matrix", "null_space_of_F", "mobility_offset"]
+
+
+#: the paper's offset-wheel robot used for numbers in this chapter (metres)
+PAPER = dict(L=0.3, r=0.1, d=0.05)
+
+
+def _exact(M):
+    return M.applyfunc(sp.nsimplify)
+
+
+@lru_cache(maxsize=None)
+def general_robot():
+    """Three offset wheels at general (symbolic) mount points, symbolic r and d.
+
+    Returns
+    -------
+    wmr.Robot
+    """
+    return Robot([OffsetWheel(p, r=S.r, d=S.d) for p in PO.D])
+
+
+def one_unit():
+    r"""(20): the velocity of :math:`P_i` through the platform (5) equals that through the wheel (10).
+
+    Returns
+    -------
+    Derivation
+        ``lhs`` (:math:`\mathbf J_1\mathbf t`), ``rhs`` (:math:`\mathbf J_2\dot{\boldsymbol\theta}`), finding (20).
+    """
+    P = printed(20)
+    one = Robot([OffsetWheel(PW.d_i, r=S.r, d=S.d)])
+    lhs = _exact(one.J1()) * sp.Matrix(one.twist_symbols)
+    rhs = one.J2([PW.beta_i]) * sp.Matrix([PW.phi_dot_i, PW.theta_dot_i])
+    holds = symbolic_equal(lhs, P.expr.lhs) and symbolic_equal(rhs, P.expr.rhs)
+    res = max(max_residual(lhs, P.expr.lhs), max_residual(rhs, P.expr.rhs))
+    return Derivation(lhs=lhs, rhs=rhs, findings=[equation(
+        20, holds, r"both sides equal the one-unit robot's $\mathbf J_1\mathbf t$ and $\mathbf J_2\dot{\boldsymbol\theta}$ "
+                   r"(SymPy): the velocity of $P_i$ through the platform and through the wheel", res,
+        convention=r"as (5) and (10): $H_i = P_i - d\,\mathbf j_i$, $\dot\phi_i$ absolute")])
+
+
+def stacking(ws=(1, 2, 3, 4, 5), seed=SEED):
+    r"""(21): ``Robot.J1``, ``Robot.J2`` and the rate vector against the printed pattern (w = 3), sizes for several w.
+
+    Parameters
+    ----------
+    ws : sequence of int
+        Numbers of units whose matrix sizes are checked.
+    seed : int
+
+    Returns
+    -------
+    Derivation
+        ``J2``, ``theta_dot``, finding (21).
+    """
+    P = printed(21)
+    bot = general_robot()
+    J1, J2 = _exact(bot.J1()), bot.J2()
+    t, th = sp.Matrix(bot.twist_symbols), sp.Matrix(bot.rate_symbols)
+    holds = (symbolic_equal(J1, P.extra["J1"]) and symbolic_equal(J2, P.extra["J2"])
+             and list(th) == list(P.extra["theta_dot"]) and symbolic_equal(J1 * t - J2 * th, P.expr.lhs - P.expr.rhs))
+    rng = np.random.default_rng(seed)
+    sizes = True
+    for w in ws:
+        b = Robot([OffsetWheel(tuple(rng.uniform(-1, 1, 2)), r=0.1, d=0.05) for _ in range(w)])
+        sizes &= b.J1().shape == (2 * w, 3) and b.J2(np.zeros(w)).shape == (2 * w, 2 * w) and b.n_rates == 2 * w
+    res = max_residual(J1 * t - J2 * th, P.expr.lhs - P.expr.rhs)
+    return Derivation(J2=J2, theta_dot=th, findings=[equation(
+        21, holds and sizes, r"`Robot.J1`, `Robot.J2` and `Robot.rate_symbols` equal the printed $\mathbf J_1$, "
+                             r"$\mathbf J_2$ and the reconstructed rate vector for three units at general mount points "
+                             rf"(SymPy); sizes $2w\times3$ and $2w\times2w$ for $w = {min(ws)}, \dots, {max(ws)}$", res,
+        convention=r"units stacked in numbering order; rates $(\dot\phi_i, \dot\theta_i)$ per unit")])
+
+
+def functional_matrix(ws=(1, 2, 3, 4, 5)):
+    r"""(22)-(25): :math:`\mathbf F = [\mathbf J_1\ -\mathbf J_2]`, its columns, and the size of the zero vector of (22).
+
+    Parameters
+    ----------
+    ws : sequence of int
+        Numbers of units whose sizes are tabulated.
+
+    Returns
+    -------
+    Derivation
+        ``F``, ``qdot_names``, ``sizes`` (rows for a table), findings (22)-(25).
+    """
+    P22, P23, P24, P25 = (printed(i) for i in (22, 23, 24, 25))
+    bot = general_robot()
+    J1, J2 = _exact(bot.J1()), bot.J2()
+    t, th = sp.Matrix(bot.twist_symbols), sp.Matrix(bot.rate_symbols)
+    F = _exact(bot.F())
+    q = sp.Matrix(bot.qdot_symbols)
+    Fq = F * q
+    sizes = []
+    for w in ws:
+        b = Robot([OffsetWheel((float(w), 0.0), r=0.1, d=0.05)] * w)
+        Fw = b.F(np.zeros(w))
+        sizes.append({"w": w, "F": f"${Fw.shape[0]}\\times{Fw.shape[1]}$", "entries": int((Fw @ np.ones(Fw.shape[1])).shape[0]),
+                      "printed": int(P22.extra["zero_dim"].subs(PO.w_sym, w)), "shape_ok": Fw.shape == (2 * w, 3 + 2 * w)})
+    dim_as_printed = all(s["entries"] == s["printed"] for s in sizes)
+    dim_2w = all(s["entries"] == 2 * s["w"] for s in sizes)
+    shapes = all(s["shape_ok"] for s in sizes)
+    holds22 = symbolic_equal(Fq, P22.expr.lhs) and dim_as_printed
+    res22 = max_residual(Fq, P22.expr.lhs)
+    wlist = rf"$w = {min(ws)}, \dots, {max(ws)}$"
+    return Derivation(F=F, qdot_names=bot.qdot_names, sizes=sizes, findings=[
+        equation(22, holds22, r"$[\mathbf J_1\ \ -\mathbf J_2]\,\dot{\mathbf q}$ is the left side of (21) (SymPy) and has "
+                              rf"$2w$ entries ({wlist})", res22,
+                 refuted=r"the text calls the zero vector $(3+2w)$-dimensional; $\mathbf F\dot{\mathbf q}$ has $2w$ entries",
+                 corrected=r"[\mathbf J_1\ \ -\mathbf J_2]\begin{bmatrix}\mathbf t\\ \dot{\boldsymbol\theta}\end{bmatrix} "
+                           r"= \mathbf 0, \quad \mathbf 0 \in \mathbb R^{2w}",
+                 corrected_holds=symbolic_equal(Fq, P22.expr.lhs) and dim_2w, severity="typo",
+                 why=r"the equation holds, but the sentence after it gives the zero vector $3+2w$ entries instead of $2w$ "
+                     r"(one pair of no-slip equations per unit)",
+                 convention=r"$\mathbf F$ is $2w\times(3+2w)$"),
+        equation(23, symbolic_equal(Fq, J1 * t - J2 * th), r"`Robot.F` times `Robot.qdot_symbols` equals "
+                 r"$\mathbf J_1\mathbf t - \mathbf J_2\dot{\boldsymbol\theta}$ (SymPy)", max_residual(Fq, J1 * t - J2 * th),
+                 convention=r"$\dot{\mathbf q}$ ordered as (25)"),
+        equation(24, symbolic_equal(F, P24.expr.rhs) and F.shape == (6, 9) and shapes,
+                 rf"`Robot.F` equals the printed block matrix for three units at general mount points (SymPy); shape "
+                 rf"$2w\times(3+2w)$ for {wlist}", max_residual(F, P24.expr.rhs), convention="columns ordered as (25)"),
+        equation(25, list(q) == list(P25.expr.rhs), r"`Robot.qdot_symbols` is the printed vector, the column order of "
+                 r"$\mathbf F$", 0.0, convention="definition")])
+
+
+def null_space_of_F(n=300, seed=SEED):
+    r"""(26)-(27): :math:`\mathbf N = [\mathbf 1_3;\ \mathbf J_2^{-1}\mathbf J_1]` spans :math:`\mathcal N(\mathbf F)` exactly (d > 0).
+
+    Parameters
+    ----------
+    n : int
+        Random robots and configurations for the numeric check.
+    seed : int
+
+    Returns
+    -------
+    Derivation
+        ``det_J2``, ``N``, findings (26) and (27).
+    """
+    P26, P27 = printed(26), printed(27)
+    bot = general_robot()
+    J1, J2, F = _exact(bot.J1()), bot.J2(), _exact(bot.F())
+    blocks = [J2[2 * k:2 * k + 2, 2 * k:2 * k + 2] for k in range(3)]
+    J2_inv = sp.diag(*[B.inv().applyfunc(sp.trigsimp) for B in blocks])
+    det_J2 = sp.trigsimp(sp.prod([B.det() for B in blocks]))
+    N = sp.Matrix.vstack(sp.eye(3), J2_inv * J1)
+    exact = (symbolic_equal(J2 * J2_inv, sp.eye(6)) and symbolic_equal(F * N, sp.zeros(6, 3)) and N[:3, :] == sp.eye(3))
+    rng = np.random.default_rng(seed)
+    nullities, mob, res = set(), set(), 0.0
+    for _ in range(n):
+        r_, d_ = rng.uniform(0.02, 0.3, 2)
+        b = Robot([OffsetWheel(tuple(p), r=r_, d=d_) for p in rng.uniform(-1, 1, (3, 2))])
+        beta = rng.uniform(-np.pi, np.pi, 3)
+        Nn = null_space(b.F(beta))
+        nullities.add(Nn.shape[1])
+        res = max(res, float(np.abs(b.J1() @ Nn[:3] - b.J2(beta) @ Nn[3:]).max()))
+        mob.add(int(mobility(b, beta)))
+    require(res < TOL, "the numeric null vectors satisfy (21)")
+    return Derivation(det_J2=det_J2, N=N, nullities=nullities, findings=[
+        equation(26, exact, r"$\mathbf N = [\mathbf 1_3;\ \mathbf J_2^{-1}\mathbf J_1]$ satisfies $\mathbf F\mathbf N = \mathbf 0$ "
+                            rf"with $\det\mathbf J_2 = {sp.latex(det_J2)} \neq 0$ (SymPy); the SVD null vectors at {n} random "
+                            r"configurations satisfy (21)", res, convention=r"$\dot{\mathbf q}$ ordered as (25); $d > 0$"),
+        equation(27, exact and nullities == mob == {P27.extra["claim"]["nullity"]} and F.shape[1] == P27.extra["claim"]["q_dim"]
+                 and F.shape[1] - P27.extra["claim"]["nullity"] == P27.extra["claim"]["rank_F"],
+                 rf"the nullity from the SVD is 3 at all {n} random "
+                 r"configurations and equals `wmr.mobility` (structured rank)", 0.0,
+                 convention="definition (nullity = mobility)")])
+
+
+def mobility_offset(n=200, seed=SEED):
+    r"""Claim ``mobility-offset``: rank 6, nullity 3 and every twist admissible at every configuration when d > 0.
+
+    Also what changes at d = 0: nullity 3 generically but pure steering (immobile platform), 4 with a
+    one-dimensional family of twists when the axles are concurrent.
+
+    Parameters
+    ----------
+    n : int
+        Random steering configurations per case.
+    seed : int
+
+    Returns
+    -------
+    Derivation
+        ``cases`` (rows for a table), finding ``mobility-offset``.
+    """
+    exact = null_space_of_F(n=1).findings[0]
+    paper = paper_robot("offset", **PAPER)
+    flat = paper_robot("offset", L=PAPER["L"], r=PAPER["r"], d=0.0)
+    beta = np.random.default_rng(seed).uniform(-np.pi, np.pi, (n, 3))
+    conc = steering_angles(paper_robot("centred", L=PAPER["L"], r=PAPER["r"]), [1.0, 0.2, -0.1])[None, :]
+    cases = []
+    for name, b, betas in ((f"$d > 0$, {n} random $\\boldsymbol\\beta$", paper, beta),
+                           (f"$d = 0$, {n} random $\\boldsymbol\\beta$", flat, beta),
+                           ("$d = 0$, axles concurrent", flat, conc)):
+        nul = mobility(b, betas)
+        cases.append({"case": name, r"rank $\mathbf F$": sorted(set((9 - nul).tolist())),
+                      "nullity": sorted(set(nul.tolist())),
+                      "admissible twists (dim)": sorted({admissible_twists(b, x).shape[1] for x in betas})})
+    holds = (exact.printed_holds and cases[0]["nullity"] == [3] and cases[0]["admissible twists (dim)"] == [3])
+    require(cases[1]["nullity"] == [3] and cases[1]["admissible twists (dim)"] == [0], "d = 0: nullity 3, immobile")
+    require(cases[2]["nullity"] == [4] and cases[2]["admissible twists (dim)"] == [1], "d = 0, concurrent axles: nullity 4")
+    return Derivation(cases=cases, findings=[claim(
+        "mobility-offset", holds, r"for $d > 0$, $\mathbf N = [\mathbf 1_3;\ \mathbf J_2^{-1}\mathbf J_1]$ spans "
+        r"$\mathcal N(\mathbf F)$ at every configuration (SymPy), so rank 6, nullity 3 and every twist admissible "
+        rf"(confirmed at {n} random configurations)", exact.residual,
+        convention=r"offset $d > 0$, any mount points, any steering angles",
+        note=r"the count alone is not the whole story: at $d = 0$ the nullity is also 3 but the null space is pure "
+             r"steering (the platform cannot move), and 4 with a one-dimensional family of twists when the axles are "
+             r"concurrent")])

@@ -1,0 +1,22 @@
+r"""Chapter 4, equations (51)-(59): centred wheels -- kinematics, mobility, isotropy and singular configurations.
+
+Two lines through each mount point :math:`P_i` organise the chapter: the **axle line** (along
+:math:`\mathbf i_i`) and the **wheel-plane line** (along :math:`\mathbf j_i`).  The robot can move
+iff the axle lines are concurrent or all parallel (rank F = 5, :func:`mobility_centred`);
+:math:`\mathbf J` is singular iff the wheel-plane lines are (:func:`singular_configurations`).
+Matrices come from :class:`wmr.Robot` for general mount points :data:`edition.isotropy.D` or the
+paper's placement, and are compared with :mod:`edition.centred`.
+
+The checks, by equation group:
+
+================  ==================================================================================================
+:mod:`.mobility`  centred wheels, (51)-(57): kinematics, F, mobility and the isotropic kinematics
+:mod:`.singular`  singular configurations, (58)-(59): det J, the printed determinant, line classes, the paper's list
+================  ==================================================================================================
+"""
+from .mobility import L_NUM, R_NUM, general_robot, kinematics, functional_matrix, mobility_centred, isotropic_kinematics
+from .singular import singular_configurations, printed_determinant, classify_lines, singular_list, singular_v, planes_through, LINE_CLASSES
+
+__all__ = ["general_robot", "kinematics", "functional_matrix", "mobility_centred", "isotropic_kinematics",
+           "singular_configurations", "printed_determinant", "classify_lines", "singular_list", "singular_v",
+           "planes_through", "LINE_CLASSES"]

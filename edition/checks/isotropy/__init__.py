@@ -1,0 +1,24 @@
+r"""Chapter 3, equations (30)-(50): the condition number, isotropy of :math:`\mathbf J_{L1}` and :math:`\mathbf J_2`, robustness.
+
+The Jacobians come from :class:`wmr.Robot` (``J1(L)`` is :math:`\mathbf J_{L1}`, ``J2``, ``J``) for
+general (symbolic) mount points or the paper's placement, and are compared with the printed forms
+of :mod:`edition.isotropy`.  The last check, :func:`robust_control`, asks whether isotropic
+factors make the composite map :math:`\mathbf J = \mathbf J_{L1}^{\mathrm T}\mathbf J_2` (56) well
+conditioned, and proves a bound: for three centred wheels, wherever the robot can move,
+:math:`\kappa(\mathbf J) \ge \sqrt 2`.
+
+The checks, by equation group:
+
+==============  ==================================================================================================
+:mod:`.jl1`     isotropy of J_L1, (30)-(39): condition number, homogeneous Jacobian, Gram matrix, placement, L
+:mod:`.j2`      isotropy of J2, (40)-(50): its product, d = r, the dead zone of isotropy, the isotropic kinematics
+:mod:`.robust`  robust control: a bound on the condition number of J = J_L1^T J2 for centred wheels
+==============  ==================================================================================================
+"""
+from .jl1 import general_robot, condition_number_def, homogeneous_jacobian, gram, isotropy_conditions, placement, isotropic_gram, RHO
+from .j2 import J2_product, J2_isotropy, dead_zone_of_isotropy, isotropic_kinematics
+from .robust import robust_control
+
+__all__ = ["general_robot", "condition_number_def", "homogeneous_jacobian", "gram", "isotropy_conditions",
+           "placement", "isotropic_gram", "J2_product", "J2_isotropy", "dead_zone_of_isotropy",
+           "isotropic_kinematics", "robust_control", "RHO"]

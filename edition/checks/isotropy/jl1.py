@@ -1,0 +1,259 @@
+r"""Isotropy of J_L1, (30)-(39): condition number, homogeneous Jacobian, Gram matrix, placement, L.
+
+Chapter 3's checks live in :mod:`edition.checks.isotropy`; this module holds one group of them.
+"""
+from __future__ import annotations
+
+from functools import lru_cache
+
+import numpy as np
+import sympy as sp
+
+from wmr.analysis.isotropy import characteristic_length
+from wmr.analysis.linalg import condition_number
+from wmr.model.robot import Robot
+from wmr.model.robots import paper_robot
+from wmr.model.tolerance import TOL
+from wmr.model.wheels import CentredWheel, OffsetWheel
+from ... import isotropy as P
+from ... import printed
+from ... import symbols as S
+from ...verify import SEED, max_residual, symbolic_equal
+from .. import Derivation, claim, equation, require
+
+__all__ = ["general_robot", "condition_number_def", "homogeneous_jacobian", "gram", "isotropy_conditions",
+           "placement", "isotropic_gram", "RHO"]
+
+
+#: the mount radius symbol of the paper's placement with L left free
+RHO = sp.Symbol("rho", positive=True)
+
+
+@lru_cache(maxsize=None)
+def general_robot():
+    """Three offset wheels at general (symbolic) mount points :data:`edition.isotropy.D`.
+
+    Returns
+    -------
+    wmr.Robot
+    """
+    return Robot([OffsetWheel(d, r=S.r, d=S.d) for d in P.D])
+
+
+def condition_number_def(n_pairs=50, n_random=2000, seed=SEED):
+    r"""(30)-(31): the definition applied exactly to :math:`\mathbf J_{L1}` of the paper's placement with L free.
+
+    :math:`\kappa(\mathbf J_{L1}) = \max(\rho/L, L/\rho)` for mount radius :math:`\rho`; both ends of
+    (31) are attained (L = :math:`\rho`; all mount points at C).
+
+    Parameters
+    ----------
+    n_pairs : int
+        Random :math:`(\rho, L)` for the comparison with ``wmr.condition_number``.
+    n_random : int
+        Random 6x3 matrices compared with ``numpy.linalg.cond``.
+    seed : int
+
+    Returns
+    -------
+    Derivation
+        ``singular_values``, ``kappa`` (exact), ``k_min`` (smallest kappa of the random matrices),
+        findings (30) and (31).
+    """
+    p30, p31 = printed(30), printed(31)
+    JL1 = paper_robot("offset", L=RHO, r=S.r, exact=True).J1(S.L)
+    sv = JL1.singular_values()
+    kappa = p30.expr.rhs.subs({P.sigma_l: sp.Max(*sv), P.sigma_s: sp.Min(*sv)})
+    key = sp.default_sort_key
+    holds30 = symbolic_equal(sp.Matrix(sorted([s**2 for s in sv], key=key)),
+                             sp.Matrix(sorted((JL1.T * JL1).eigenvals(multiple=True), key=key)))
+    kfun = sp.lambdify((RHO, S.L), kappa, "numpy")
+    rng = np.random.default_rng(seed)
+    res = 0.0
+    for rho, L in rng.uniform(0.2, 2.0, (n_pairs, 2)):
+        res = max(res, abs(condition_number(paper_robot("offset", L=rho, r=0.1).J1(L)) - kfun(rho, L)))
+    A = rng.normal(size=(n_random, 6, 3))
+    k_rand = condition_number(A)
+    res = max(res, float(np.max(np.abs(k_rand - np.linalg.cond(A)))))
+    sv0 = Robot([CentredWheel((0, 0), r=1)] * 3).J1(sp.Integer(1)).singular_values()
+    k_iso = condition_number(paper_robot("offset", L=0.4, r=0.1).J1(0.4))
+    lower, upper = p31.expr
+    holds31 = (min(sv0) == 0 and upper == sp.oo and sp.simplify(kappa.subs(S.L, RHO)) == lower
+               and bool(np.all(k_rand >= lower)) and abs(k_iso - 1) <= TOL)
+    return Derivation(singular_values=sv, kappa=kappa, k_min=float(k_rand.min()), findings=[
+        equation(30, holds30, r"the squared singular values of $\mathbf J_{L1}$ (paper placement, radius $\rho$, $L$ free) are "
+                              r"the eigenvalues of $\mathbf J_{L1}^{\mathrm T}\mathbf J_{L1}$ (SymPy), giving "
+                              r"$\kappa = \max(\rho/L, L/\rho)$; `wmr.condition_number` agrees at "
+                              rf"{n_pairs} random $(\rho, L)$ and with `numpy.linalg.cond` on {n_random} random matrices",
+                 res, convention=r"$\sigma_l$, $\sigma_s$ the largest and smallest singular values",
+                 note=r"`wmr.condition_number` returns $\infty$ when $\sigma_s \le 10^{-9}\sigma_l$"),
+        equation(31, holds31, r"$\kappa = 1$ is attained ($\mathbf J_{L1}$ at $L = \rho$) and $\kappa = \infty$ too (all "
+                              r"mount points at C: $\sigma_s = 0$ exactly); every random matrix has $\kappa \geq 1$", 0.0)])
+
+
+def homogeneous_jacobian():
+    r"""(32)-(33): ``Robot.J1(L)`` for general mount points, and :math:`\mathbf J_1\mathbf t = \mathbf J_{L1}\mathbf t_L`.
+
+    Returns
+    -------
+    Derivation
+        ``JL1``, ``difference`` (:math:`\mathbf J_1\mathbf t - \mathbf J_{L1}\mathbf t_L`), findings (32) and (33).
+    """
+    p32, p33 = printed(32), printed(33)
+    gen = general_robot()
+    JL1, J1 = gen.J1(S.L), gen.J1(sp.Integer(1))
+    t, tL = sp.Matrix(gen.twist_symbols), p33.expr.rhs
+    return Derivation(JL1=JL1, difference=sp.expand(J1 * t - JL1 * tL), findings=[
+        equation(32, symbolic_equal(JL1, p32.expr.rhs), r"`Robot.J1(L)` for three general mount points equals the "
+                 r"printed matrix (SymPy)", max_residual(JL1, p32.expr.rhs),
+                 convention=r"rows $[\mathbf E\mathbf d_i/L\ \ \mathbf 1]$ in the wheel numbering; $\mathbf d_i = \overrightarrow{CP_i}$ in the body frame"),
+        equation(33, symbolic_equal(J1 * t, JL1 * tL), r"$\mathbf J_1\mathbf t = \mathbf J_{L1}\mathbf t_L$ for every "
+                 r"twist, placement and $L$ (SymPy), so (21) reads $\mathbf J_{L1}\mathbf t_L = \mathbf J_2\dot{\boldsymbol\theta}$",
+                 max_residual(J1 * t, JL1 * tL), convention=r"$\mathbf t = [\dot\psi\ \dot x\ \dot y]^{\mathrm T}$, body frame")])
+
+
+def gram():
+    r"""(34): :math:`\mathbf J_{L1}^{\mathrm T}\mathbf J_{L1}` for general mount points.
+
+    Returns
+    -------
+    Derivation
+        ``G``, finding (34).
+    """
+    p34 = printed(34)
+    JL1 = general_robot().J1(S.L)
+    G = JL1.T * JL1
+    return Derivation(G=G, findings=[equation(34, symbolic_equal(G, p34.expr.rhs), r"the product of the model's "
+                                              r"$\mathbf J_{L1}$ (general mount points) with its transpose equals the "
+                                              r"printed blocks (SymPy)", max_residual(G, p34.expr.rhs),
+                                              convention="general mount points, three wheels")])
+
+
+def isotropy_conditions():
+    r"""(35)-(37): the off-diagonal blocks of (34) vanish and its corner equals 3; (35) is equivalent to (37).
+
+    Returns
+    -------
+    Derivation
+        ``solution`` (:math:`\mathbf d_3` from (35)), findings (35), (36), (37).
+    """
+    p35, p36, p37 = printed(35), printed(36), printed(37)
+    G = gram().G
+    lam = G[1, 1]
+    require(G[1:, 1:] == lam * sp.eye(2) and lam == 3, "the lower block of (34) is 3 1 for every placement")
+    off_col, off_row, corner = G[1:, 0], G[0, 1:], sp.Eq(G[0, 0], lam)
+    d3 = list(P.D[2])
+    sol35 = sp.solve(list(off_col), d3, dict=True)
+    sol37 = sp.solve(list(p37.expr.lhs - p37.expr.rhs), d3, dict=True)
+    res37 = max_residual((p37.expr.lhs - p37.expr.rhs).subs(sol35[0]))
+    return Derivation(solution=sol35[0], findings=[
+        equation(35, symbolic_equal(off_col, p35.expr.lhs) and symbolic_equal(off_row, p35.extra["row_form"].lhs),
+                 r"the off-diagonal blocks of (34) are the printed expressions (SymPy); with (36), necessary and "
+                 r"sufficient for isotropy", max_residual(off_col, p35.expr.lhs)),
+        equation(36, symbolic_equal(corner.lhs - corner.rhs, p36.expr.lhs - p36.expr.rhs),
+                 r"the corner entry of (34) equal to the 3 of its lower block (SymPy); with (35), necessary and sufficient",
+                 max_residual(corner.lhs - corner.rhs, p36.expr.lhs - p36.expr.rhs)),
+        equation(37, sol35 == sol37, r"(35) and (37) have the same solution for $\mathbf d_3$ given $\mathbf d_1, \mathbf d_2$ "
+                 r"(SymPy): equivalent since $\mathbf E$ is invertible and $L > 0$", res37,
+                 convention=r"C at the centroid of $P_1P_2P_3$")])
+
+
+def placement(counterexample=((2, 0), (-1, 1), (-1, -1)), n=200, seed=SEED):
+    r"""(38) and claim ``isotropy-placement``: equal distances are sufficient, not necessary.
+
+    Given (37), (36) fixes only the *mean* squared distance :math:`L^2 = \tfrac13\sum_i\mathbf d_i^{\mathrm T}\mathbf d_i`.
+    The counterexample (an isosceles triangle with centroid C) is isotropic exactly.
+
+    Parameters
+    ----------
+    counterexample : three integer points
+    n : int
+        Random triangles with centroid C and L the RMS distance, checked numerically.
+    seed : int
+
+    Returns
+    -------
+    Derivation
+        ``G``, ``norms``, ``sides``, ``L2``, ``kappa`` (numeric), findings (38) and ``isotropy-placement``.
+    """
+    p38 = printed(38)
+    pts = [tuple(map(sp.Integer, q)) for q in counterexample]
+    norms = [sum(c**2 for c in q) for q in pts]
+    L2 = sp.Rational(sum(norms), 3)
+    ce = Robot([OffsetWheel(q, r=S.r, d=S.d) for q in pts])
+    G = ce.J1(sp.sqrt(L2)).T * ce.J1(sp.sqrt(L2))
+    sides = [sp.sqrt(sum((a - b)**2 for a, b in zip(pts[i], pts[j]))) for i, j in ((0, 1), (1, 2), (2, 0))]
+    num = Robot([OffsetWheel(tuple(map(float, q)), r=0.1, d=0.1) for q in counterexample])
+    L_num = characteristic_length(num)
+    k_ce = float(condition_number(num.J1(L_num)))
+    at = {s_: v for p_, q in zip(P.D, pts) for s_, v in zip(p_, q)} | {S.L: sp.sqrt(L2)}
+    printed_holds = all(bool(sp.simplify((e.lhs - e.rhs).subs(at)) == 0) for e in p38.expr)   # (38) at the isotropic example
+    rng = np.random.default_rng(seed)
+    res = 0.0
+    for _ in range(n):
+        d12 = rng.normal(size=(2, 2))
+        tri = np.vstack([d12, -d12.sum(axis=0)])
+        bot = Robot([OffsetWheel(q, r=0.1, d=0.1) for q in tri])
+        res = max(res, abs(float(condition_number(bot.J1(np.sqrt(np.mean(np.sum(tri**2, axis=1)))))) - 1.0))
+    proven = G == 3 * sp.eye(3) and abs(k_ce - 1) <= TOL and res < 1e-9 and abs(L_num**2 - float(L2)) < 1e-12
+    ce_text = ", ".join(f"$({a}, {b})$" for a, b in counterexample)
+    refuted = (rf"$P_i$ = {ce_text}, an isosceles triangle with sides ${', '.join(sp.latex(s) for s in sides)}$ and centroid C, "
+               rf"has $\mathbf J_{{L1}}^{{\mathrm T}}\mathbf J_{{L1}} = 3\cdot\mathbf 1$ exactly at $L^2 = {sp.latex(L2)}$ "
+               rf"while $\mathbf d_i^{{\mathrm T}}\mathbf d_i = {', '.join(map(str, norms))}$")
+    proof = (r"with (37), $\mathbf J_{L1}$ is isotropic iff $L^2 = \tfrac13\sum_i\mathbf d_i^{\mathrm T}\mathbf d_i$ (SymPy on the "
+             rf"counterexample); $\kappa(\mathbf J_{{L1}}) = 1$ at {n} random triangles with centroid C and $L$ their RMS distance")
+    return Derivation(G=G, norms=norms, sides=sides, L2=L2, kappa=k_ce, findings=[
+        equation(38, printed_holds, proof, res, refuted=refuted,
+                 corrected=r"L^2 = \frac13\sum_{i=1}^{3}\mathbf d_i^{\mathrm T}\mathbf d_i",
+                 corrected_holds=proven, severity="wrong",
+                 why=r"(36) with (37) fixes only the mean of $\mathbf d_i^{\mathrm T}\mathbf d_i$: equal distances are "
+                     r"sufficient, not necessary", convention="C at the centroid (37)"),
+        claim("isotropy-placement", len(set(sides)) == 1 and proven, proof, res, refuted=refuted,
+              corrected=r"$\mathbf J_{L1}$ is isotropic if and only if $\sum_i\mathbf d_i = \mathbf 0$ and "
+                        r"$L^2 = \tfrac13\sum_i\|\mathbf d_i\|^2$: any triangle with its centroid at C will do; the "
+                        r"equilateral triangle is the special case with $L$ its circumradius",
+              corrected_holds=proven, severity="wrong",
+              why="isotropy does not need an equilateral triangle, only the centroid at C and the right $L$",
+              convention=r"isotropy of $\mathbf J_{L1}$ with the characteristic length $L$ free")])
+
+
+def isotropic_gram(rho=0.4, n=20, seed=SEED):
+    r"""(39) and claim ``isotropy-L``: the paper's placement gives :math:`3\cdot\mathbf 1` at L = mount radius, and only there.
+
+    Parameters
+    ----------
+    rho : float
+        Mount radius of the numeric robot.
+    n : int
+        Random L values (each robot built at that L) for the numeric check of (39).
+    seed : int
+
+    Returns
+    -------
+    Derivation
+        ``G``, ``L_iso`` (solutions of kappa = 1), ``L_grid``, ``kappa_grid``, findings (39) and ``isotropy-L``.
+    """
+    p39 = printed(39)
+    paper = paper_robot("offset", L=S.L, r=S.r, exact=True)
+    G = paper.J1(S.L).T * paper.J1(S.L)
+    rng = np.random.default_rng(seed)
+    res39 = 0.0
+    for L in rng.uniform(0.1, 3.0, n):
+        J = paper_robot("offset", L=L, r=0.1).J1(L)
+        res39 = max(res39, float(np.max(np.abs(J.T @ J - 3 * np.eye(3)))))
+    L_iso = sp.solve(sp.Eq(RHO / S.L, S.L / RHO), S.L)
+    grid = np.round(np.linspace(0.1, 1.0, 91), 12)
+    bot = paper_robot("offset", L=rho, r=0.1)
+    kap = np.array([condition_number(bot.J1(L)) for L in grid])
+    resL = abs(characteristic_length(bot) - rho)
+    at = float(grid[kap.argmin()])
+    return Derivation(G=G, L_iso=L_iso, L_grid=grid, kappa_grid=kap, findings=[
+        equation(39, symbolic_equal(G, p39.expr.rhs), r"$\mathbf J_{L1}^{\mathrm T}\mathbf J_{L1}$ of the paper's placement "
+                 r"with symbolic $L$ equals $3\cdot\mathbf 1$ (SymPy); numerically at " rf"{n} random $L$", res39,
+                 convention=r"paper placement $\mathbf d_1 = L(-1, 0)$, $\mathbf d_{2,3} = L(\tfrac12, \pm\tfrac{\sqrt3}{2})$; "
+                            "holds for every placement satisfying (35)-(36)"),
+        claim("isotropy-L", L_iso == [RHO] and abs(at - rho) < 1e-12 and resL < 1e-12,
+              r"$\kappa(\mathbf J_{L1}) = \max(\rho/L, L/\rho)$ exactly, which is 1 only at $L = \rho$; on a grid of "
+              rf"{len(grid)} values of $L$ the minimum is at $L = {at:g} = \rho$; `wmr.characteristic_length` returns it", resL,
+              convention=r"equilateral placement with centroid C; in general $L$ is the RMS distance "
+                         r"$\sqrt{\tfrac13\sum_i\|\mathbf d_i\|^2}$")])

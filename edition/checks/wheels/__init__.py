@@ -1,0 +1,27 @@
+r"""Chapter 1, equations (2)-(19): the platform, the rolling disk, offset, centred and dual wheels.
+
+Every result is derived from first principles -- rigid-body velocities with 3D cross products
+(:math:`\dot{\mathbf p} = \dot{\mathbf c} + \boldsymbol\omega\times\mathbf d`) and the no-slip
+condition of a thin disk -- and compared with the printed form (:func:`edition.printed`) exactly
+(SymPy) and with the package's builders and kernels numerically.  Frames: :mod:`wmr.conventions`
+(axle :math:`\mathbf i_i`, rolling direction :math:`\mathbf j_i = \mathbf k\times\mathbf i_i`,
+offset wheel centre :math:`H_i = P_i - d\,\mathbf j_i`, dual wheels at :math:`P_i \pm b\,\mathbf i_i`).
+
+The checks, by equation group:
+
+================  ================================================================================================
+:mod:`.frames`    3D lifting, the vertical axis and the rolling disk (the derivation of (6)), shared by the checks
+:mod:`.platform`  the platform, (2)-(5): point velocities, E, the twist layout, the row of a point
+:mod:`.wheel`     one wheel, (6)-(12): rolling disk, steering composition, offset and centred wheels
+:mod:`.dual`      the dual wheel, (13)-(19): no slip, the turning rate, its integral and the average
+================  ================================================================================================
+"""
+from .frames import k, lift, planar, disk_velocity
+from .platform import platform_point, skew_matrix, twist_layout, platform_row
+from .wheel import rolling_disk, steering_composition, offset_wheel, wheel_frame, offset_in_body, centred_wheel
+from .dual import dual_no_slip, dual_steering, dual_integrated, dual_average, dual_average_angle
+
+__all__ = ["k", "lift", "planar", "disk_velocity", "platform_point", "skew_matrix", "twist_layout",
+           "platform_row", "rolling_disk", "steering_composition", "offset_wheel", "wheel_frame",
+           "offset_in_body", "centred_wheel", "dual_no_slip", "dual_steering", "dual_integrated", "dual_average",
+           "dual_average_angle"]

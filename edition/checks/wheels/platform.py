@@ -1,0 +1,127 @@
+r"""The platform, (2)-(5): point velocities, E, the twist layout, the row of a point.
+
+Chapter 1's checks live in :mod:`edition.checks.wheels`; this module holds one group of them.
+"""
+from __future__ import annotations
+
+import numpy as np
+import sympy as sp
+
+from wmr.model.backend import SYMBOLIC
+from wmr.model.platform import E, point_row, point_velocity, rotation
+from wmr.model.robot import Robot
+from wmr.model.tolerance import TOL
+from wmr.model.wheels import CentredWheel
+from ... import platform_wheels as PW
+from ... import printed
+from ... import symbols as S
+from ...verify import SEED, max_residual, symbolic_equal
+from .. import Derivation, equation, require
+from .frames import k, lift, planar
+
+__all__ = ["platform_point", "skew_matrix", "twist_layout", "platform_row"]
+
+
+def platform_point(n=500, seed=SEED):
+    r"""(2): velocity of a platform point, :math:`\dot{\mathbf c} + \dot\psi\mathbf k\times\mathbf d_i` (3D cross product).
+
+    Parameters
+    ----------
+    n : int
+        Random twists and points for the check of :func:`wmr.point_velocity`.
+    seed : int
+
+    Returns
+    -------
+    Derivation
+        ``p_dot`` (the derived velocity), finding (2).
+    """
+    P = printed(2)
+    d_i = sp.Matrix(PW.d_i)
+    p_dot = PW.c_dot + planar((S.psi_dot * k).cross(lift(d_i)))
+    holds = symbolic_equal(p_dot, P.expr.rhs)
+    res = max_residual(p_dot, P.expr.rhs)
+    rng = np.random.default_rng(seed)
+    tw, dd = rng.uniform(-2, 2, (n, 3)), rng.uniform(-2, 2, (n, 2))
+    f = sp.lambdify([S.psi_dot, S.x_dot, S.y_dot, *PW.d_i], p_dot, "numpy")
+    num = float(np.abs(point_velocity(tw, dd) - np.moveaxis(f(*tw.T, *dd.T)[:, 0], 0, -1)).max())
+    require(num < TOL, "wmr.point_velocity equals the rigid-body velocity")
+    return Derivation(p_dot=p_dot, findings=[equation(
+        2, holds, rf"equal to $\dot{{\mathbf c}} + \dot\psi\,\mathbf k\times\mathbf d_i$ (3D cross product, SymPy); "
+                  rf"`wmr.point_velocity` agrees at {n} random twists and points", max(res, num),
+        convention=r"$\dot\psi\times\mathbf d_i$ read as $(\dot\psi\mathbf k)\times\mathbf d_i$; body-frame components",
+        note=r"the extraction's undefined middle term $\dot{\mathbf c}_w$ dropped; the relation is frame-free "
+             r"because $\mathbf E$ commutes with rotations")])
+
+
+def skew_matrix():
+    r"""(3): :math:`\mathbf E` has columns :math:`\mathbf k\times\mathbf e_1, \mathbf k\times\mathbf e_2`.
+
+    Returns
+    -------
+    Derivation
+        ``E`` (derived), finding (3).
+    """
+    P = printed(3)
+    E_derived = sp.Matrix.hstack(planar(k.cross(lift([1, 0]))), planar(k.cross(lift([0, 1]))))
+    M = P.expr.rhs
+    holds = (symbolic_equal(E_derived, M) and symbolic_equal(M.T, -M) and symbolic_equal(rotation(sp.pi / 2, SYMBOLIC), M))
+    require(symbolic_equal(E(SYMBOLIC), E_derived), "wmr.E is the derived matrix")
+    res = float(np.abs(E() - np.array(E_derived, dtype=float)).max())
+    return Derivation(E=E_derived, findings=[equation(
+        3, holds, r"the columns $\mathbf k\times\mathbf e_1$, $\mathbf k\times\mathbf e_2$ (SymPy); skew-symmetric and "
+                  r"equal to the rotation through $+90^\circ$; `wmr.E` is the same matrix", res,
+        convention=r"$\mathbf k$ up, angles counter-clockwise positive")])
+
+
+def twist_layout():
+    r"""(4): the twist is ordered :math:`[\dot\psi\ \dot x\ \dot y]`, as the package's generalised rates are.
+
+    Returns
+    -------
+    Derivation
+        ``names`` (the package's first three rate names), finding (4).
+    """
+    P = printed(4)
+    bot = Robot([CentredWheel(PW.d_i, r=S.r)])
+    holds = list(bot.twist_symbols) == list(P.expr.rhs)
+    return Derivation(names=bot.qdot_names[:3], findings=[equation(
+        4, holds, r"`Robot.twist_symbols` is $[\dot\psi\ \dot x\ \dot y]$, the order used by "
+                  r"$\mathbf J_1$, $\mathbf F$ and the kinematics", 0.0,
+        convention=r"$\mathbf t = [\dot\psi\ \dot x\ \dot y]^{\mathrm T}$, $\dot{\mathbf c}$ in body components")])
+
+
+def platform_row(n=5, samples=500, seed=SEED):
+    r"""(5): the row :math:`[\mathbf E\mathbf d_i\ \ \mathbf 1]` (``point_row``) against the printed matrix and (2).
+
+    Parameters
+    ----------
+    n : int
+        Units of the numeric robot whose :math:`\mathbf J_1` is checked.
+    samples : int
+        Random twists.
+    seed : int
+
+    Returns
+    -------
+    Derivation
+        ``row`` (2, 3), finding (5).
+    """
+    P = printed(5)
+    row = point_row(PW.d_i, backend=SYMBOLIC)
+    bot = Robot([CentredWheel(PW.d_i, r=S.r)])
+    t = sp.Matrix(bot.twist_symbols)
+    p_dot = platform_point(n=1).p_dot
+    holds = (symbolic_equal(row, P.extra["matrix"]) and symbolic_equal(row * t, p_dot)
+             and symbolic_equal(sp.nsimplify(bot.J1()), P.extra["matrix"]))
+    res = max_residual(row * t, P.expr.rhs)
+    rng = np.random.default_rng(seed)
+    tw, dd = rng.uniform(-2, 2, (samples, 3)), rng.uniform(-2, 2, (n, 2))
+    J1 = Robot([CentredWheel(p, r=1.0) for p in dd]).J1()
+    num = float(np.abs((tw[:, None, :] @ J1.T)[:, 0].reshape(-1, n, 2) - point_velocity(tw[:, None, :], dd)).max())
+    require(num < TOL, "the numeric J1 times a twist equals wmr.point_velocity")
+    return Derivation(row=row, findings=[equation(
+        5, holds, r"`point_row` and the blocks of `Robot.J1` equal the printed row, and the row times $\mathbf t$ "
+                  rf"equals the derived (2) (SymPy); the numeric $\mathbf J_1$ of a {n}-unit robot agrees with "
+                  rf"`wmr.point_velocity` at {samples} random twists", max(res, num),
+        convention=r"$\mathbf t$ ordered as (4)")])

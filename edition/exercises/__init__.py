@@ -1,0 +1,54 @@
+r"""The exercises of the chapters: one check function each, that says whether an answer is right and why not.
+
+Each chapter ends with two or three exercises (cells tagged ``exercise``) and their worked
+solutions (tagged ``solution``; ``make student`` drops them).  A student writes an answer and
+calls the exercise's check, e.g.::
+
+    answer = sp.Matrix([...])
+    exercises.offset_other_side(answer)
+
+The check returns a :class:`Feedback` (shown as a Markdown paragraph): right, or not yet with
+the reason -- computed from the model, never compared with a typed-in answer.  ``None`` (the
+template's placeholder) gives "no answer yet" without failing, so the student notebooks run.
+
+Chapter by chapter:
+
+=====  ==============================  =====================================================================
+ch.    check                           the exercise
+=====  ==============================  =====================================================================
+1      :func:`offset_other_side`       the velocity of :math:`P_i` with the wheel centre on the other side
+1      :func:`dual_counterexample`     a slip-free motion that refutes the printed (15)
+1      :func:`dual_spin_in_place`      wheel rates that turn a dual wheel on the spot
+2      :func:`locked_steering`         steering angles at which the locked robot can still steer
+2      :func:`drift_of_c_general`      (28) with C anywhere, not only at the centroid   
+3      :func:`isotropic_placement`     move wheel 2 and find the L that makes :math:`\mathbf J_{L1}` isotropic
+3      :func:`printed_42_signs`        show that the printed (42) has the wrong signs
+3      :func:`offset_for_kappa`        the offset that gives :math:`\kappa(\mathbf J_2) = 2`
+4      :func:`unlisted_singularity`    a singular configuration the paper does not list
+4      :func:`mobile_and_singular`     steering angles where the robot moves although :math:`\mathbf J` is singular
+5      :func:`translation_angles`      steering angles for a translation, and the slip of the printed (60)
+5      :func:`rotation_angles`         steering angles for a rotation about a given point
+5      :func:`printed_65_region`       where the centre must lie for the printed (65) to hold
+6      :func:`curved_translation`      steering while translating, without stopping
+6      :func:`reversal`                a discontinuous heading that needs no re-steering
+=====  ==============================  =====================================================================
+
+"Your own robot" cells use :func:`describe_robot`.
+
+The checks live one module per chapter (:mod:`~edition.exercises.ch1_wheels` ...
+:mod:`~edition.exercises.ch6_motion`), the verdict type in :mod:`~edition.exercises.feedback`
+and the "your own robot" summary in :mod:`~edition.exercises.own_robot`.
+"""
+from .feedback import Feedback
+from .ch1_wheels import offset_other_side, dual_counterexample, dual_spin_in_place
+from .own_robot import describe_robot
+from .ch2_mobility import locked_steering, drift_of_c_general
+from .ch3_isotropy import isotropic_placement, printed_42_signs, offset_for_kappa
+from .ch4_singularities import unlisted_singularity, mobile_and_singular
+from .ch5_steering import translation_angles, rotation_angles, printed_65_region
+from .ch6_motion import curved_translation, reversal
+
+__all__ = ["Feedback", "offset_other_side", "dual_counterexample", "dual_spin_in_place", "locked_steering",
+           "drift_of_c_general", "isotropic_placement", "printed_42_signs", "offset_for_kappa",
+           "unlisted_singularity", "mobile_and_singular", "translation_angles", "rotation_angles",
+           "printed_65_region", "curved_translation", "reversal", "describe_robot"]
