@@ -17,8 +17,8 @@ import sympy as sp
 
 from wmr.analysis.lines import axles_through, circumcircle, pair_line_angle, planes_through
 from wmr.analysis.mobility import rank_F
-from wmr.analysis.singularities import (_require_square, classify, det_J, det_J_polynomial, exact_robot,
-                                      exact_zero, numeric_robot)
+from wmr.analysis.singularities import (classify, det_J, det_J_polynomial, exact_robot, exact_zero,
+                                      numeric_robot)
 from wmr.model.platform import wrap_angle
 from wmr.model.robots import paper_robot
 from .files import atomic_write, csv_text
@@ -160,8 +160,8 @@ def families(robot=None, n=72, exact=True):
     """
     if robot is None:
         robot = paper_robot("centred")
-    _require_square(robot)
     num = numeric_robot(robot)
+    det_J(num, np.zeros(3), L=1.0)              # wmr's own check: J must be square (three centred wheels)
     exact_bot = exact_robot(robot)
     P = num.mount_points
     t = np.linspace(-np.pi, np.pi, n, endpoint=False)

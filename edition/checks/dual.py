@@ -22,7 +22,7 @@ from wmr.model.robots import paper_robot
 from wmr.model.tolerance import TOL
 from wmr.model.wheels import CentredWheel, DualWheel
 from .. import symbols as S
-from ..notebook import mod_pi
+from ..algebra import mod_pi
 from ..text import bound
 from ..verify import SEED, symbolic_equal
 from . import Derivation, claim, require

@@ -11,10 +11,9 @@ from wmr.analysis.kinematics import inverse
 from wmr.model.robots import paper_robot
 from wmr.model.tolerance import TOL
 from wmr.model.wheels import DualWheel
-from .. import platform_wheels as PW
 from .. import symbols as S
 from ..verify import symbolic_equal
-from .feedback import Feedback, _matrix, _none
+from .feedback import Feedback, as_matrix, missing
 
 __all__ = ["offset_other_side", "dual_counterexample", "dual_spin_in_place"]
 
@@ -22,7 +21,7 @@ __all__ = ["offset_other_side", "dual_counterexample", "dual_spin_in_place"]
 def offset_other_side(answer):
     r"""Exercise 1.1: the velocity of :math:`P_i` when the wheel centre is at :math:`H_i = P_i + d\,\mathbf j_i`.
 
-    The answer is the fixed-frame 2-vector in the symbols of :mod:`edition.platform_wheels`
+    The answer is the fixed-frame 2-vector in the symbols of :mod:`edition.symbols`
     (:math:`\phi_i`, :math:`\dot\phi_i`, :math:`\dot\theta_i`) and :math:`r, d`.
 
     Parameters
@@ -34,19 +33,19 @@ def offset_other_side(answer):
     Feedback
     """
     from ..checks.wheels import disk_velocity, k, planar
-    M, fb = _matrix(answer, (2, 1), r"the 2-vector $\dot{\mathbf p}_i$")
+    M, fb = as_matrix(answer, (2, 1), r"the 2-vector $\dot{\mathbf p}_i$")
     if fb is not None:
         return fb
-    disk = disk_velocity(PW.theta_dot_i)
-    truth = planar(disk.h_dot + (PW.phi_dot_i * k).cross(-S.d * disk.j3))       # P - H = -d j
+    disk = disk_velocity(S.theta_dot_i)
+    truth = planar(disk.h_dot + (S.phi_dot_i * k).cross(-S.d * disk.j3))       # P - H = -d j
     if symbolic_equal(M, truth):
         return Feedback(True, r"With the centre ahead of the steering axis the steering term changes sign: "
                               r"$\dot{\mathbf p}_i = -r\dot\theta_i\mathbf j_i + d\dot\phi_i\mathbf i_i$.")
-    printed_side = planar(disk.h_dot + (PW.phi_dot_i * k).cross(S.d * disk.j3))
+    printed_side = planar(disk.h_dot + (S.phi_dot_i * k).cross(S.d * disk.j3))
     if symbolic_equal(M, printed_side):
         return Feedback(False, r"That is (9) itself, the centre at $P_i - d\,\mathbf j_i$. Here "
                                r"$P_i - H_i = -d\,\mathbf j_i$: redo the cross product $\dot\phi_i\mathbf k\times(P_i - H_i)$.")
-    if not symbolic_equal(M.subs(PW.phi_dot_i, 0), truth.subs(PW.phi_dot_i, 0)):
+    if not symbolic_equal(M.subs(S.phi_dot_i, 0), truth.subs(S.phi_dot_i, 0)):
         return Feedback(False, r"The rolling term is off: the wheel centre moves as (6), $-r\dot\theta_i\mathbf j_i$.")
     return Feedback(False, r"Start from $\dot{\mathbf p}_i = \dot{\mathbf h}_i + \dot\phi_i\mathbf k\times(P_i - H_i)$ "
                            r"with $\dot{\mathbf h}_i$ from (6) and $P_i - H_i = -d\,\mathbf j_i$; your answer differs by "
@@ -69,7 +68,7 @@ def dual_counterexample(beta, twist, robot=None):
     -------
     Feedback
     """
-    fb = _none(None if beta is None or twist is None else 0, "steering angles `beta` and a `twist`")
+    fb = missing(None if beta is None or twist is None else 0, "steering angles `beta` and a `twist`")
     if fb is not None:
         return fb
     robot = robot or paper_robot("dual", L=0.5, r=0.1, b=0.08)
@@ -110,7 +109,7 @@ def dual_spin_in_place(rates, r=0.1, b=0.05, beta_dot=1.0):
     -------
     Feedback
     """
-    fb = _none(rates, r"the pair $(\dot\theta_{i1}, \dot\theta_{i2})$")
+    fb = missing(rates, r"the pair $(\dot\theta_{i1}, \dot\theta_{i2})$")
     if fb is not None:
         return fb
     rates = np.asarray(rates, dtype=float)

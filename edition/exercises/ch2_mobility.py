@@ -11,7 +11,7 @@ from wmr.analysis.linalg import rank
 from wmr.model.robots import paper_robot
 from wmr.model.tolerance import TOL
 from ..verify import symbolic_equal
-from .feedback import Feedback, _matrix, _none
+from .feedback import Feedback, as_matrix, missing
 
 __all__ = ["locked_steering", "drift_of_c_general"]
 
@@ -31,7 +31,7 @@ def locked_steering(beta, robot=None):
     Feedback
     """
     from ..checks.assembly import PAPER, locked_system
-    fb = _none(beta, "three steering angles")
+    fb = missing(beta, "three steering angles")
     if fb is not None:
         return fb
     robot = robot or paper_robot("offset", **PAPER)
@@ -57,7 +57,7 @@ def drift_of_c_general(answer):
     r"""Exercise 2.2: :math:`\dot{\mathbf c}` of the locked robot for general mount points (C anywhere).
 
     The answer is a SymPy 2-vector in :data:`edition.symbols` (``d``, ``beta``, ``phi_dot``, ``psi_dot``)
-    and the mount points :data:`edition.offset.D`.
+    and the mount points :data:`edition.symbols.D`.
 
     Parameters
     ----------
@@ -67,9 +67,9 @@ def drift_of_c_general(answer):
     -------
     Feedback
     """
-    from .. import printed
+    from ..transcription import printed
     from ..checks.assembly import drift_of_c
-    M, fb = _matrix(answer, (2, 1), r"the 2-vector $\dot{\mathbf c}$")
+    M, fb = as_matrix(answer, (2, 1), r"the 2-vector $\dot{\mathbf c}$")
     if fb is not None:
         return fb
     truth = drift_of_c(n=1).c_dot

@@ -13,7 +13,7 @@ from wmr.model.robots import paper_robot
 from wmr.model.wheels import OffsetWheel
 from .. import symbols as S
 from ..verify import symbolic_equal
-from .feedback import Feedback, _matrix, _none
+from .feedback import Feedback, as_matrix, missing
 
 __all__ = ["isotropic_placement", "printed_42_signs", "offset_for_kappa"]
 
@@ -34,7 +34,7 @@ def isotropic_placement(points, L, fixed=((-0.4, 0.0), (0.1, 0.5))):
     -------
     Feedback
     """
-    fb = _none(None if points is None or L is None else 0, "the three mount points and $L$")
+    fb = missing(None if points is None or L is None else 0, "the three mount points and $L$")
     if fb is not None:
         return fb
     pts = np.asarray(points, dtype=float)
@@ -72,8 +72,8 @@ def printed_42_signs(answer):
     -------
     Feedback
     """
-    from .. import printed
-    M, fb = _matrix(answer, (2, 2), r"the $2\times2$ matrix $\tilde{\mathbf p}^2$")
+    from ..transcription import printed
+    M, fb = as_matrix(answer, (2, 2), r"the $2\times2$ matrix $\tilde{\mathbf p}^2$")
     if fb is not None:
         return fb
     ptilde = OffsetWheel((0, 0), r=S.r, d=S.d).block(sp.Integer(0))        # R(0) p~ = p~
@@ -104,7 +104,7 @@ def offset_for_kappa(offsets, r=0.1, kappa=2.0, n=200):
     -------
     Feedback
     """
-    fb = _none(offsets, "a list of offsets $d$")
+    fb = missing(offsets, "a list of offsets $d$")
     if fb is not None:
         return fb
     ds = sorted(float(d) for d in np.atleast_1d(offsets))

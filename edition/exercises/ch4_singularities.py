@@ -5,7 +5,7 @@ See :mod:`edition.exercises` for how the checks are used.
 from __future__ import annotations
 
 from wmr.model.robots import paper_robot
-from .feedback import Feedback, _angles
+from .feedback import Feedback, as_angles
 
 __all__ = ["unlisted_singularity", "mobile_and_singular"]
 
@@ -14,7 +14,7 @@ def _classified(beta_deg):
     """The answer's configuration of the paper's centred-wheel robot, classified
     (:func:`wmr.analysis.singularities.classify`), or the feedback on an answer that is not three angles."""
     from wmr.analysis.singularities import classify
-    beta, fb = _angles(beta_deg, degrees=True)
+    beta, fb = as_angles(beta_deg, degrees=True)
     if fb is not None:
         return fb
     if beta.shape != (3,):

@@ -7,7 +7,7 @@ from __future__ import annotations
 import numpy as np
 
 from wmr.analysis.kinematics import inverse
-from .feedback import Feedback, _angles, _none
+from .feedback import Feedback, as_angles, missing
 
 __all__ = ["translation_angles", "rotation_angles", "printed_65_region"]
 
@@ -29,7 +29,7 @@ def translation_angles(beta, velocity=(0.3, 0.4), psi_deg=30.0):
     Feedback
     """
     from ..checks.steering import robot
-    beta, fb = _angles(beta)
+    beta, fb = as_angles(beta)
     if fb is not None:
         return fb
     psi = np.radians(psi_deg)
@@ -40,7 +40,7 @@ def translation_angles(beta, velocity=(0.3, 0.4), psi_deg=30.0):
     if bool(sol.admissible):
         return Feedback(True, r"Every axle is perpendicular to the velocity and the wheels roll along it: "
                               r"$\phi_i = \psi + \beta_i = \operatorname{atan2}(\dot Y, \dot X) + \pi/2$ (mod $\pi$).")
-    from ..notebook import mod_pi
+    from ..algebra import mod_pi
     if np.allclose(mod_pi(beta + psi - np.arctan2(v[1], v[0])), 0.0, atol=1e-9):
         return Feedback(False, r"These are the angles of the printed (60): the *axles* point along the velocity and the "
                                rf"wheels would slide sideways at the full speed (${np.linalg.norm(v):.3g}$ m/s).")
@@ -64,7 +64,7 @@ def rotation_angles(beta, U=(0.5, 0.3)):
     Feedback
     """
     from ..checks.steering import robot
-    beta, fb = _angles(beta)
+    beta, fb = as_angles(beta)
     if fb is not None:
         return fb
     u = np.asarray(U, dtype=float)
@@ -91,7 +91,7 @@ def printed_65_region(U):
     Feedback
     """
     from ..checks.steering import robot
-    fb = _none(U, "a point $U = (u_x, u_y)$")
+    fb = missing(U, "a point $U = (u_x, u_y)$")
     if fb is not None:
         return fb
     u = np.asarray(U, dtype=float)

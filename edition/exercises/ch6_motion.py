@@ -9,7 +9,7 @@ import numpy as np
 from wmr.analysis.kinematics import inverse
 from wmr.model.robots import paper_robot
 from ..text import bound
-from .feedback import Feedback, _none
+from .feedback import Feedback, missing
 
 __all__ = ["curved_translation", "reversal"]
 
@@ -32,7 +32,7 @@ def curved_translation(beta_dot, v=0.2, omega=0.5, t_end=2.0):
     """
     from wmr.analysis.simulation import simulate
     from wmr.analysis.steering import steering_angles
-    fb = _none(beta_dot, "three steering rates (rad/s)")
+    fb = missing(beta_dot, "three steering rates (rad/s)")
     if fb is not None:
         return fb
     bd = np.asarray(beta_dot, dtype=float) * np.ones(3)
@@ -65,7 +65,7 @@ def reversal(twist_plus, twist_minus=(0.0, 0.2, 0.1)):
     Feedback
     """
     from wmr.analysis.steering import steering_angles
-    fb = _none(twist_plus, "a twist")
+    fb = missing(twist_plus, "a twist")
     if fb is not None:
         return fb
     cen = paper_robot("centred", L=0.4, r=0.1)

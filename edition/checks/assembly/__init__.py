@@ -2,7 +2,7 @@ r"""Chapter 2, equations (20)-(29): assembling offset-wheel units, the functiona
 
 The robot's matrices come from :class:`wmr.Robot` (``J1``, ``J2``, ``F``), built for three units
 at *general* mount points :math:`\mathbf d_k = (d_{kx}, d_{ky})` with symbolic steering angles,
-and are compared with the printed forms of :mod:`edition.offset`.  With the drives locked
+and are compared with the printed forms (:mod:`edition.transcription`).  With the drives locked
 (:math:`\dot\theta_i = 0`) the unknowns are the twist and the steering rates: the square system
 :math:`\mathbf M(\boldsymbol\beta)[\mathbf t;\dot{\boldsymbol\phi}] = \mathbf 0` of
 :func:`locked_system` decides whether the robot can steer at all, and :func:`locked_motion` gives

@@ -7,18 +7,19 @@ from __future__ import annotations
 import numpy as np
 import sympy as sp
 
-from wmr.model.platform import rotation
+from wmr.model.backend import SYMBOLIC
+from wmr.model.platform import E, rotation
 from wmr.model.robot import Robot
 from wmr.model.robots import paper_robot
 from wmr.model.tolerance import TOL
 from wmr.model.wheels import OffsetWheel
-from ... import offset as PO
-from ... import printed
+from ...transcription import printed
 from ... import symbols as S
+from ...algebra import exact_matrix
 from ...verify import SEED, symbolic_equal
 from .. import Derivation, claim, equation, require
 from .locked import concurrent_angles, locked_motion, locked_steering
-from .matrices import PAPER, general_robot, _exact
+from .matrices import PAPER, general_robot
 
 __all__ = ["drift_of_c", "drift_of_psi", "drift"]
 
@@ -47,14 +48,14 @@ def drift_of_c(n=100, origin=(0.06, -0.04), seed=SEED):
     """
     P = printed(28)
     bot = general_robot()
-    J1, J2 = _exact(bot.J1()), bot.J2()
+    J1, J2 = exact_matrix(bot.J1()), bot.J2()
     t, th = sp.Matrix(bot.twist_symbols), sp.Matrix(bot.rate_symbols)
     locked = {s: 0 for s in S.theta_dot}
     rows = sum(((J1 * t - J2 * th).subs(locked)[2 * k:2 * k + 2, :] for k in range(3)), sp.zeros(2, 1))
     sol = sp.solve(list(rows), [S.x_dot, S.y_dot], dict=True)[0]
     c_dot = sp.Matrix([sol[S.x_dot], sol[S.y_dot]])
     extra = (c_dot - P.expr.rhs).applyfunc(sp.simplify)
-    centroid = {PO.D[2][0]: -PO.D[0][0] - PO.D[1][0], PO.D[2][1]: -PO.D[0][1] - PO.D[1][1]}
+    centroid = {S.D[2][0]: -S.D[0][0] - S.D[1][0], S.D[2][1]: -S.D[0][1] - S.D[1][1]}
     holds = symbolic_equal(c_dot.subs(centroid), P.expr.rhs)
     needs_centroid = not symbolic_equal(c_dot, P.expr.rhs)
     f28 = sp.lambdify([*S.beta, *S.phi_dot, S.d], P.expr.rhs, "numpy")
@@ -111,20 +112,20 @@ def drift_of_psi(n=100, seed=SEED):
     except TypeError as e:
         error = f"{type(e).__name__}: {e}"
     bot = general_robot()
-    J1, J2 = _exact(bot.J1()), bot.J2()
+    J1, J2 = exact_matrix(bot.J1()), bot.J2()
     t, th = sp.Matrix(bot.twist_symbols), sp.Matrix(bot.rate_symbols)
     cdot = sp.Matrix([S.x_dot, S.y_dot])
     locked = {s: 0 for s in S.theta_dot}
-    proj = sp.expand(sum(((PO.E * sp.Matrix(p)).T * (J1 * t - J2 * th).subs(locked)[2 * k:2 * k + 2, :]
-                          for k, p in enumerate(PO.D)), sp.zeros(1, 1))[0])
+    proj = sp.expand(sum(((E(SYMBOLIC) * sp.Matrix(p)).T * (J1 * t - J2 * th).subs(locked)[2 * k:2 * k + 2, :]
+                          for k, p in enumerate(S.D)), sp.zeros(1, 1))[0])
     a = sp.factor(proj.coeff(S.psi_dot))
     b = sp.Matrix([proj.coeff(S.x_dot), proj.coeff(S.y_dot)]).applyfunc(sp.factor)
     c = sp.collect(sp.expand(proj - a * S.psi_dot - (b.T * cdot)[0]), S.phi_dot)
-    centroid = {PO.D[2][0]: -PO.D[0][0] - PO.D[1][0], PO.D[2][1]: -PO.D[0][1] - PO.D[1][1]}
+    centroid = {S.D[2][0]: -S.D[0][0] - S.D[1][0], S.D[2][1]: -S.D[0][1] - S.D[1][1]}
     b_vanishes = symbolic_equal(b.subs(centroid), sp.zeros(2, 1))
     psi_dot = sp.expand((-(b.T * cdot)[0] - c).subs(centroid)) / sp.expand(a.subs(centroid))
-    paper_route = symbolic_equal((cdot.T * PO.E * (J1 * t)[0:2, :])[0], -S.psi_dot * (cdot.T * sp.Matrix(PO.D[0]))[0])
-    f = sp.lambdify([*sum(PO.D, ()), *S.beta, *S.phi_dot, S.d], psi_dot, "numpy")
+    paper_route = symbolic_equal((cdot.T * E(SYMBOLIC) * (J1 * t)[0:2, :])[0], -S.psi_dot * (cdot.T * sp.Matrix(S.D[0]))[0])
+    f = sp.lambdify([*sum(S.D, ()), *S.beta, *S.phi_dot, S.d], psi_dot, "numpy")
     rng = np.random.default_rng(seed)
     res, gap = 0.0, 0.0
     for _ in range(n):

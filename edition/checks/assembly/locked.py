@@ -15,7 +15,6 @@ from wmr.model.robot import Robot
 from wmr.model.robots import paper_robot
 from wmr.model.tolerance import TOL
 from wmr.model.wheels import OffsetWheel
-from ... import offset as PO
 from ... import symbols as S
 from ...verify import SEED, symbolic_equal
 from .. import Derivation, require
@@ -103,13 +102,13 @@ def locked_steering(robots=200, per=10, seed=SEED):
     bot = general_robot()
     M = locked_system(bot, None).applyfunc(sp.nsimplify)
     det_M = sp.factor(sp.expand(M.det(method="berkowitz")))
-    A = sp.Matrix.vstack(*[rotation(b, SYMBOLIC)[:, 1].T * point_row(p, backend=SYMBOLIC) for p, b in zip(PO.D, S.beta)])
+    A = sp.Matrix.vstack(*[rotation(b, SYMBOLIC)[:, 1].T * point_row(p, backend=SYMBOLIC) for p, b in zip(S.D, S.beta)])
     plucker = symbolic_equal(det_M, S.d**3 * A.det())
     ux, uy, l1, l2, s3, n3 = sp.symbols("u_x u_y lambda_1 lambda_2 s_3 n_3", real=True)
     u = sp.Matrix([ux, uy])
     Rb = [rotation(b, SYMBOLIC) for b in S.beta]
     lines = [u + l1 * Rb[0][:, 1], u + l2 * Rb[1][:, 1], u + s3 * Rb[2][:, 1] + n3 * Rb[2][:, 0]]
-    sub = dict(zip(sum(PO.D, ()), sum((tuple(v) for v in lines), ())))
+    sub = dict(zip(sum(S.D, ()), sum((tuple(v) for v in lines), ())))
     det_conc = sp.factor(sp.trigsimp(sp.expand(det_M.subs(sub))))
     det_par = sp.simplify(det_M.subs({S.beta[1]: S.beta[0], S.beta[2]: S.beta[0]}))
     geometry = symbolic_equal(det_conc, -S.d**3 * n3 * sp.sin(S.beta[0] - S.beta[1])) and det_par == 0

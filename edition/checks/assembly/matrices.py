@@ -16,10 +16,9 @@ from wmr.model.robot import Robot
 from wmr.model.robots import paper_robot
 from wmr.model.tolerance import TOL
 from wmr.model.wheels import OffsetWheel
-from ... import offset as PO
-from ... import platform_wheels as PW
-from ... import printed
+from ...transcription import printed
 from ... import symbols as S
+from ...algebra import exact_matrix
 from ...verify import SEED, max_residual, symbolic_equal
 from .. import Derivation, claim, equation, require
 
@@ -30,10 +29,6 @@ __all__ = ["general_robot", "one_unit", "stacking", "functional_matrix", "null_s
 PAPER = dict(L=0.3, r=0.1, d=0.05)
 
 
-def _exact(M):
-    return M.applyfunc(sp.nsimplify)
-
-
 @lru_cache(maxsize=None)
 def general_robot():
     """Three offset wheels at general (symbolic) mount points, symbolic r and d.
@@ -42,7 +37,7 @@ def general_robot():
     -------
     wmr.Robot
     """
-    return Robot([OffsetWheel(p, r=S.r, d=S.d) for p in PO.D])
+    return Robot([OffsetWheel(p, r=S.r, d=S.d) for p in S.D])
 
 
 def one_unit():
@@ -54,9 +49,9 @@ def one_unit():
         ``lhs`` (:math:`\mathbf J_1\mathbf t`), ``rhs`` (:math:`\mathbf J_2\dot{\boldsymbol\theta}`), finding (20).
     """
     P = printed(20)
-    one = Robot([OffsetWheel(PW.d_i, r=S.r, d=S.d)])
-    lhs = _exact(one.J1()) * sp.Matrix(one.twist_symbols)
-    rhs = one.J2([PW.beta_i]) * sp.Matrix([PW.phi_dot_i, PW.theta_dot_i])
+    one = Robot([OffsetWheel(S.d_i, r=S.r, d=S.d)])
+    lhs = exact_matrix(one.J1()) * sp.Matrix(one.twist_symbols)
+    rhs = one.J2([S.beta_i]) * sp.Matrix([S.phi_dot_i, S.theta_dot_i])
     holds = symbolic_equal(lhs, P.expr.lhs) and symbolic_equal(rhs, P.expr.rhs)
     res = max(max_residual(lhs, P.expr.lhs), max_residual(rhs, P.expr.rhs))
     return Derivation(lhs=lhs, rhs=rhs, findings=[equation(
@@ -81,7 +76,7 @@ def stacking(ws=(1, 2, 3, 4, 5), seed=SEED):
     """
     P = printed(21)
     bot = general_robot()
-    J1, J2 = _exact(bot.J1()), bot.J2()
+    J1, J2 = exact_matrix(bot.J1()), bot.J2()
     t, th = sp.Matrix(bot.twist_symbols), sp.Matrix(bot.rate_symbols)
     holds = (symbolic_equal(J1, P.extra["J1"]) and symbolic_equal(J2, P.extra["J2"])
              and list(th) == list(P.extra["theta_dot"]) and symbolic_equal(J1 * t - J2 * th, P.expr.lhs - P.expr.rhs))
@@ -113,9 +108,9 @@ def functional_matrix(ws=(1, 2, 3, 4, 5)):
     """
     P22, P23, P24, P25 = (printed(i) for i in (22, 23, 24, 25))
     bot = general_robot()
-    J1, J2 = _exact(bot.J1()), bot.J2()
+    J1, J2 = exact_matrix(bot.J1()), bot.J2()
     t, th = sp.Matrix(bot.twist_symbols), sp.Matrix(bot.rate_symbols)
-    F = _exact(bot.F())
+    F = exact_matrix(bot.F())
     q = sp.Matrix(bot.qdot_symbols)
     Fq = F * q
     sizes = []
@@ -123,7 +118,7 @@ def functional_matrix(ws=(1, 2, 3, 4, 5)):
         b = Robot([OffsetWheel((float(w), 0.0), r=0.1, d=0.05)] * w)
         Fw = b.F(np.zeros(w))
         sizes.append({"w": w, "F": f"${Fw.shape[0]}\\times{Fw.shape[1]}$", "entries": int((Fw @ np.ones(Fw.shape[1])).shape[0]),
-                      "printed": int(P22.extra["zero_dim"].subs(PO.w_sym, w)), "shape_ok": Fw.shape == (2 * w, 3 + 2 * w)})
+                      "printed": int(P22.extra["zero_dim"].subs(S.w, w)), "shape_ok": Fw.shape == (2 * w, 3 + 2 * w)})
     dim_as_printed = all(s["entries"] == s["printed"] for s in sizes)
     dim_2w = all(s["entries"] == 2 * s["w"] for s in sizes)
     shapes = all(s["shape_ok"] for s in sizes)
@@ -166,7 +161,7 @@ def null_space_of_F(n=300, seed=SEED):
     """
     P26, P27 = printed(26), printed(27)
     bot = general_robot()
-    J1, J2, F = _exact(bot.J1()), bot.J2(), _exact(bot.F())
+    J1, J2, F = exact_matrix(bot.J1()), bot.J2(), exact_matrix(bot.F())
     blocks = [J2[2 * k:2 * k + 2, 2 * k:2 * k + 2] for k in range(3)]
     J2_inv = sp.diag(*[B.inv().applyfunc(sp.trigsimp) for B in blocks])
     det_J2 = sp.trigsimp(sp.prod([B.det() for B in blocks]))

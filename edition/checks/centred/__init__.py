@@ -4,8 +4,8 @@ Two lines through each mount point :math:`P_i` organise the chapter: the **axle 
 :math:`\mathbf i_i`) and the **wheel-plane line** (along :math:`\mathbf j_i`).  The robot can move
 iff the axle lines are concurrent or all parallel (rank F = 5, :func:`mobility_centred`);
 :math:`\mathbf J` is singular iff the wheel-plane lines are (:func:`singular_configurations`).
-Matrices come from :class:`wmr.Robot` for general mount points :data:`edition.isotropy.D` or the
-paper's placement, and are compared with :mod:`edition.centred`.
+Matrices come from :class:`wmr.Robot` for general mount points :data:`edition.symbols.D` or the
+paper's placement, and are compared with the printed forms (:mod:`edition.transcription`).
 
 The checks, by equation group:
 

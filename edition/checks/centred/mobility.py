@@ -18,11 +18,10 @@ from wmr.model.platform import E, rotation
 from wmr.model.robot import Robot
 from wmr.model.robots import paper_robot
 from wmr.model.wheels import CentredWheel, OffsetWheel
-from ... import centred as C
-from ... import printed
+from ...transcription import printed
 from ... import symbols as S
-from ...isotropy import D
-from ...notebook import explicit, numeric
+
+from ...algebra import explicit, numeric
 from ...verify import SEED, max_residual, symbolic_equal
 from .. import Derivation, claim, equation, require
 
@@ -31,7 +30,8 @@ __all__ = ["general_robot", "kinematics", "functional_matrix", "mobility_centred
 
 #: the numeric robot of this chapter (metres)
 L_NUM, R_NUM = 0.4, 0.1
-_u = sp.Matrix(sp.symbols("u_x u_y", real=True))
+#: a general point U of the plane (body frame): the centre of a rotation
+u_point = sp.Matrix(sp.symbols("u_x u_y", real=True))
 
 
 @lru_cache(maxsize=None)
@@ -42,10 +42,21 @@ def general_robot():
     -------
     wmr.Robot
     """
-    return Robot([CentredWheel(d, r=S.r) for d in D])
+    return Robot([CentredWheel(d, r=S.r) for d in S.D])
 
 
-def _axes():
+def unit_axes():
+    r"""The axes of the three units of :func:`general_robot`, from its :math:`\mathbf J_2`.
+
+    Returns
+    -------
+    axle : list of 3 Matrix (2, 1)
+        :math:`\mathbf i_k = \mathbf E\mathbf b_k / r` (the column :math:`\mathbf b_k` of unit k is :math:`-r\mathbf j_k`).
+    rolling : list of 3 Matrix (2, 1)
+        :math:`\mathbf j_k`.
+    columns : list of 3 Matrix (2, 1)
+        The nonzero blocks :math:`\mathbf b_k = \mathbf R_{bwk}[0\ \ -r]^{\mathrm T}` of :math:`\mathbf J_2`.
+    """
     gen = general_robot()
     J2 = gen.J2()
     cols = [J2[2 * k:2 * k + 2, k] for k in range(3)]          # b_i = R_bwi [0, -r]^T = -r j_i
@@ -61,14 +72,14 @@ def kinematics():
         ``lhs``, ``rhs``, finding (51).
     """
     p51 = printed(51)
-    one = Robot([CentredWheel(C.d_i, r=S.r)])
+    one = Robot([CentredWheel(S.d_i, r=S.r)])
     lhs = one.J1(sp.Integer(1)) * sp.Matrix(one.twist_symbols)
-    rhs = one.J2([C.beta_i]) * sp.Matrix([C.theta_dot_i])
+    rhs = one.J2([S.beta_i]) * sp.Matrix([S.theta_dot_i])
     J2 = general_robot().J2()
-    off0 = OffsetWheel(C.d_i, r=S.r, d=sp.Integer(0))
+    off0 = OffsetWheel(S.d_i, r=S.r, d=sp.Integer(0))
     holds = (symbolic_equal(lhs - rhs, p51.expr.lhs - p51.expr.rhs) and symbolic_equal(J2, p51.extra["J2"])
-             and symbolic_equal(off0.block(C.beta_i)[:, 1], one.wheels[0].block(C.beta_i))
-             and symbolic_equal(off0.block(C.beta_i)[:, 0], sp.zeros(2, 1)))
+             and symbolic_equal(off0.block(S.beta_i)[:, 1], one.wheels[0].block(S.beta_i))
+             and symbolic_equal(off0.block(S.beta_i)[:, 0], sp.zeros(2, 1)))
     res = max(max_residual(lhs - rhs, p51.expr.lhs - p51.expr.rhs), max_residual(J2, p51.extra["J2"]))
     return Derivation(lhs=lhs, rhs=rhs, findings=[equation(
         51, holds, r"the one-wheel robot's $\mathbf J_1\mathbf t = \mathbf J_2\dot\theta_i$ is the printed equation, and "
@@ -124,15 +135,15 @@ def mobility_centred(n=20000, n_coord=300, grid=36, seed=SEED):
         ``A`` (3, 3), ``minor`` (a 2x2 minor), ``summary`` (rows for a table), finding ``mobility-centred``.
     """
     gen = general_robot()
-    axle, jdir, cols = _axes()
+    axle, jdir, cols = unit_axes()
     J1 = gen.J1(sp.Integer(1))
     beta = gen.beta_symbols
     require(all((a.T * b)[0] == 0 for a, b in zip(axle, cols)), "the axle annihilates the wheel column")
     require(all(symbolic_equal(a, rotation(bk, SYMBOLIC)[:, 0]) for a, bk in zip(axle, beta)), "E b_i / r is the axle")
     A = sp.Matrix.vstack(*[axle[k].T * J1[2 * k:2 * k + 2, :] for k in range(3)])
-    t_rot = sp.Matrix([S.psi_dot, *(-S.psi_dot * E(SYMBOLIC) * _u)])
+    t_rot = sp.Matrix([S.psi_dot, *(-S.psi_dot * E(SYMBOLIC) * u_point)])
     t_tra = sp.Matrix([0, S.x_dot, S.y_dot])
-    rot = symbolic_equal(A * t_rot, sp.Matrix([-S.psi_dot * (jdir[k].T * (sp.Matrix(D[k]) - _u))[0] for k in range(3)]))
+    rot = symbolic_equal(A * t_rot, sp.Matrix([-S.psi_dot * (jdir[k].T * (sp.Matrix(S.D[k]) - u_point))[0] for k in range(3)]))
     tra = symbolic_equal(A * t_tra, sp.Matrix([(axle[k].T * t_tra[1:, :])[0] for k in range(3)]))
     m23 = sp.trigsimp(A[[0, 1], 1:].det())
     b_ = sp.Symbol("b", real=True)
@@ -140,11 +151,11 @@ def mobility_centred(n=20000, n_coord=300, grid=36, seed=SEED):
     for k in (0, 1):                                          # beta_2 = beta_1 + k pi
         A12 = A[:2, :].subs({beta[0]: b_, beta[1]: b_ + k * sp.pi})
         m2 = sum(A12[:, list(c)].det()**2 for c in ((0, 1), (0, 2), (1, 2)))
-        minors &= symbolic_equal(m2, ((jdir[0].subs(beta[0], b_).T * (sp.Matrix(D[0]) - sp.Matrix(D[1])))[0])**2)
+        minors &= symbolic_equal(m2, ((jdir[0].subs(beta[0], b_).T * (sp.Matrix(S.D[0]) - sp.Matrix(S.D[1])))[0])**2)
     bot = paper_robot("centred", L=L_NUM, r=R_NUM)
     rng = np.random.default_rng(seed)
     B = rng.uniform(-np.pi, np.pi, (n, 3))
-    A_fun = sp.lambdify([*beta, *[s for d in D for s in d]], A, "numpy")
+    A_fun = sp.lambdify([*beta, *[s for d in S.D for s in d]], A, "numpy")
     A_num, _ = twist_constraints(bot, B[:300])
     res = max(float(np.max(np.abs(np.abs(np.array(A_fun(*b, *bot.mount_points.ravel()), dtype=float)) - np.abs(An))))
               for b, An in zip(B[:300], A_num))
@@ -196,12 +207,12 @@ def isotropic_kinematics(n=25, seed=SEED):
     JL1p, J2p, Jp = paper.J1(S.L), paper.J2(), paper.J(L=S.L)
     th = sp.Matrix(paper.rate_symbols)
     tLs = sp.Matrix(sp.symbols("t_L1:4", real=True))
-    holds56 = symbolic_equal(Jp, explicit(p56.expr.rhs, {C.JL1: JL1p, C.J2: J2p}))
+    holds56 = symbolic_equal(Jp, explicit(p56.expr.rhs, {S.JL1: JL1p, S.J2_centred: J2p}))
     pinv_JL1 = (JL1p.T * JL1p).inv() * JL1p.T
-    holds55 = symbolic_equal(pinv_JL1, JL1p.T / 3) and symbolic_equal(explicit(p55.expr.rhs, {C.J: Jp, C.theta_dot: th}),
+    holds55 = symbolic_equal(pinv_JL1, JL1p.T / 3) and symbolic_equal(explicit(p55.expr.rhs, {S.J: Jp, S.theta_dot_centred: th}),
                                                                         pinv_JL1 * J2p * th)
     pinv_J2 = (J2p.T * J2p).inv() * J2p.T
-    holds57 = symbolic_equal(explicit(p57.expr.rhs, {C.J: Jp, C.tL: tLs}), pinv_J2 * JL1p * tLs)
+    holds57 = symbolic_equal(explicit(p57.expr.rhs, {S.J: Jp, S.tL: tLs}), pinv_J2 * JL1p * tLs)
     bot = paper_robot("centred", L=L_NUM, r=R_NUM)
     scale = np.diag([L_NUM, 1.0, 1.0])
     rng = np.random.default_rng(seed)
@@ -212,17 +223,17 @@ def isotropic_kinematics(n=25, seed=SEED):
         Jn = bot.J(b, L=L_NUM)
         thr = rng.normal(size=3)
         fw = forward(bot, b, thr)
-        t55 = np.linalg.solve(scale, numeric(p55.expr.rhs, {C.J: Jn, C.theta_dot: thr[:, None]})[:, 0])
+        t55 = np.linalg.solve(scale, numeric(p55.expr.rhs, {S.J: Jn, S.theta_dot_centred: thr[:, None]})[:, 0])
         tw = rng.normal(size=3)
         inv = inverse(bot, b, tw)
-        th57 = numeric(p57.expr.rhs.subs(S.r, R_NUM), {C.J: Jn, C.tL: (scale @ tw)[:, None]})[:, 0]
+        th57 = numeric(p57.expr.rhs.subs(S.r, R_NUM), {S.J: Jn, S.tL: (scale @ tw)[:, None]})[:, 0]
         res55 = max(res55, float(np.max(np.abs(t55 - fw.value))))
         res57 = max(res57, float(np.max(np.abs(th57 - inv.value))))
         fw_ok, inv_ok = fw_ok + int(fw.admissible), inv_ok + int(inv.admissible)
         bc = steering_angles(bot, tw)
         Jc = bot.J(bc, L=L_NUM)
-        thc = numeric(p57.expr.rhs.subs(S.r, R_NUM), {C.J: Jc, C.tL: (scale @ tw)[:, None]})[:, 0]
-        back = np.linalg.solve(scale, numeric(p55.expr.rhs, {C.J: Jc, C.theta_dot: thc[:, None]})[:, 0])
+        thc = numeric(p57.expr.rhs.subs(S.r, R_NUM), {S.J: Jc, S.tL: (scale @ tw)[:, None]})[:, 0]
+        back = np.linalg.solve(scale, numeric(p55.expr.rhs, {S.J: Jc, S.theta_dot_centred: thc[:, None]})[:, 0])
         ic = inverse(bot, bc, tw)
         coord_ok += int(ic.admissible and forward(bot, bc, thc).admissible)
         res_exact = max(res_exact, float(np.max(np.abs(back - tw))), float(np.max(np.abs(ic.residual))))

@@ -4,6 +4,8 @@ Chapter 4's checks live in :mod:`edition.checks.centred`; this module holds one 
 """
 from __future__ import annotations
 
+import re
+
 import numpy as np
 import sympy as sp
 
@@ -15,13 +17,12 @@ from wmr.model.robot import Robot
 from wmr.model.robots import equilateral_mounts, paper_robot
 from wmr.model.tolerance import TOL, near_zero
 from wmr.model.wheels import CentredWheel
-from ... import centred as C
-from ... import printed
+from ...transcription import printed
 from ... import symbols as S
-from ...isotropy import D
+
 from ...verify import SEED, max_residual, symbolic_equal
 from .. import Derivation, claim, equation, require
-from .mobility import L_NUM, R_NUM, general_robot, _axes, _u
+from .mobility import L_NUM, R_NUM, general_robot, u_point, unit_axes
 
 __all__ = ["singular_configurations", "printed_determinant", "classify_lines", "singular_list", "singular_v",
            "planes_through", "LINE_CLASSES"]
@@ -43,11 +44,11 @@ def singular_configurations(n=20000, seed=SEED):
     """
     p58 = printed(58)
     gen = general_robot()
-    axle, _, _ = _axes()
+    axle, _, _ = unit_axes()
     Jg = gen.J(L=S.L)
-    tL_rot = sp.Matrix([S.L * S.psi_dot, *(-S.psi_dot * E(SYMBOLIC) * _u)])
-    rows = symbolic_equal(Jg.T * tL_rot, sp.Matrix([-S.r * S.psi_dot * (axle[k].T * (sp.Matrix(D[k]) - _u))[0] for k in range(3)]))
-    lines = sp.Matrix([[axle[k][0], axle[k][1], (axle[k].T * sp.Matrix(D[k]))[0]] for k in range(3)])
+    tL_rot = sp.Matrix([S.L * S.psi_dot, *(-S.psi_dot * E(SYMBOLIC) * u_point)])
+    rows = symbolic_equal(Jg.T * tL_rot, sp.Matrix([-S.r * S.psi_dot * (axle[k].T * (sp.Matrix(S.D[k]) - u_point))[0] for k in range(3)]))
+    lines = sp.Matrix([[axle[k][0], axle[k][1], (axle[k].T * sp.Matrix(S.D[k]))[0]] for k in range(3)])
     det_g = Jg.det()
     holds = rows and symbolic_equal(det_g, -S.r**3 / S.L * lines.det())
     bot = paper_robot("centred", L=L_NUM, r=R_NUM)
@@ -105,11 +106,44 @@ def printed_determinant(n=200, seed=SEED):
         59, holds, r"for the paper's placement, $\det\mathbf J$ with symbolic $L$ and $r$ is $r^3$ times the printed form "
                    r"and does not depend on $L$ (SymPy)", max_residual(det_paper, S.r**3 * p59.expr.rhs),
         refuted=r"the printed form is $\det\mathbf J$ at $r = 1$ only",
-        corrected=C.det_J_59_latex(r"\det(\mathbf J)", factor="r^3", per_line=2), corrected_holds=r3 and len(matches) == 1,
+        corrected=factored_sum(p59.latex, r"\det(\mathbf J)", "r^3", per_line=2), corrected_holds=r3 and len(matches) == 1,
         severity="typo", why=r"the factor $r^3$ is missing: the printed form is the determinant for $r = 1$",
         convention=rf"wheel 1 at $L(-1, 0)$, numbered clockwise: $\mathbf d_2 = L(\tfrac12, \tfrac{{\sqrt3}}{{2}})$, "
                    rf"$\mathbf d_3 = L(\tfrac12, -\tfrac{{\sqrt3}}{{2}})$, the only one of the {len(rows)} placements tried "
                    r"that gives the printed sign; $\det\mathbf J$ does not depend on $L$")])
+
+
+def factored_sum(latex, lhs, factor, per_line):
+    r"""A printed sum ``\begin{aligned}lhs = &t_1 + t_2 ...\end{aligned}`` as ``lhs = factor(...)``, ``per_line`` terms a line.
+
+    The terms are taken from the printed LaTeX as they are (split before each top-level `` + ``
+    or `` - ``), so the corrected form shows the printed terms, in the printed order.
+
+    Parameters
+    ----------
+    latex : str
+        The printed form, an ``aligned`` body whose right side is a sum.
+    lhs : str
+        LaTeX of the left side to print.
+    factor : str
+        LaTeX of the factor, e.g. ``"r^3"``.
+    per_line : int
+        Terms per line.
+
+    Returns
+    -------
+    str
+        A LaTeX body (no ``$``).
+
+    Examples
+    --------
+    >>> factored_sum(r"\begin{aligned}y = &- a + b\\ &- c\end{aligned}", "y", "k", 2)
+    '\\begin{aligned}y = k\\Big(&- a + b\\\\ &- c\\Big)\\end{aligned}'
+    """
+    body = latex.removeprefix(r"\begin{aligned}").removesuffix(r"\end{aligned}")
+    terms = re.split(r" (?=[+-] )", body.split(" = &", 1)[1].replace(r"\\ &", " "))
+    lines = [" ".join(terms[i:i + per_line]) for i in range(0, len(terms), per_line)]
+    return rf"\begin{{aligned}}{lhs} = {factor}\Big(&" + r"\\ &".join(lines) + r"\Big)\end{aligned}"
 
 
 #: classes of three wheel-plane lines (see :func:`classify_lines`)
@@ -201,7 +235,7 @@ def singular_list(n=1000, n_family=200, n_item=100, seed=SEED):
     paper = paper_robot("centred", L=S.L, r=S.r, exact=True)
     dets, rhos = det_paper, []
     for k, q in enumerate(paper.wheels):
-        w = _u - sp.Matrix(q.position)
+        w = u_point - sp.Matrix(q.position)
         rhos.append(sp.sqrt(w[0]**2 + w[1]**2))
         dets = dets.subs({sp.sin(S.beta[k]): -w[0] / rhos[k], sp.cos(S.beta[k]): w[1] / rhos[k]})
     fams["(v) planes concurrent at $U = (u_x, u_y)$"] = sp.expand(dets * sp.prod(rhos))

@@ -2,7 +2,7 @@ r"""Chapter 3, equations (30)-(50): the condition number, isotropy of :math:`\ma
 
 The Jacobians come from :class:`wmr.Robot` (``J1(L)`` is :math:`\mathbf J_{L1}`, ``J2``, ``J``) for
 general (symbolic) mount points or the paper's placement, and are compared with the printed forms
-of :mod:`edition.isotropy`.  The last check, :func:`robust_control`, asks whether isotropic
+of the transcription (:mod:`edition.transcription`).  The last check, :func:`robust_control`, asks whether isotropic
 factors make the composite map :math:`\mathbf J = \mathbf J_{L1}^{\mathrm T}\mathbf J_2` (56) well
 conditioned, and proves a bound: for three centred wheels, wherever the robot can move,
 :math:`\kappa(\mathbf J) \ge \sqrt 2`.

@@ -12,10 +12,9 @@ from wmr.analysis.linalg import condition_number
 from wmr.analysis.simulation import simulate
 from wmr.model.robots import paper_robot
 from wmr.model.tolerance import TOL
-from ... import isotropy as P
-from ... import printed
+from ...transcription import printed
 from ... import symbols as S
-from ...notebook import explicit, numeric
+from ...algebra import explicit, numeric
 from ...verify import SEED, max_residual, symbolic_equal
 from .. import Derivation, claim, equation, require
 from .jl1 import general_robot
@@ -40,15 +39,15 @@ def J2_product():
     ptilde = gen.wheels[0].block(sp.Integer(0))                  # R(0) p~ = p~
     ptilde2 = ptilde * ptilde
     beta = gen.beta_symbols
-    ups = [explicit(p41.expr.rhs, {P.ptilde2: ptilde2, P.beta_i: b}) for b in beta]
+    ups = [explicit(p41.expr.rhs, {S.ptilde2: ptilde2, S.beta_i: b}) for b in beta]
     holds41 = all(symbolic_equal(u, blk) for u, blk in zip(ups, blocks))
-    full = explicit(p40.expr.rhs, dict(zip(P.Upsilon, ups)))
-    neg = explicit(p41.expr.rhs, {P.ptilde2: p42.expr.rhs, P.beta_i: 0}).subs({S.d: 1, S.r: 1})
+    full = explicit(p40.expr.rhs, dict(zip(S.Upsilon, ups)))
+    neg = explicit(p41.expr.rhs, {S.ptilde2: p42.expr.rhs, S.beta_i: 0}).subs({S.d: 1, S.r: 1})
     pos = blocks[0].subs({beta[0]: 0, S.d: 1, S.r: 1})
     holds42 = symbolic_equal(ptilde2, p42.expr.rhs)
     corrected42 = symbolic_equal(ptilde2, sp.diag(S.d**2, S.r**2)) and symbolic_equal(neg, -pos)
-    holds43 = all(symbolic_equal(p43.expr.rhs.subs(P.beta_i, b), blk) for b, blk in zip(beta, blocks))
-    res43 = max(max_residual(p43.expr.rhs.subs(P.beta_i, b), blk) for b, blk in zip(beta, blocks))
+    holds43 = all(symbolic_equal(p43.expr.rhs.subs(S.beta_i, b), blk) for b, blk in zip(beta, blocks))
+    res43 = max(max_residual(p43.expr.rhs.subs(S.beta_i, b), blk) for b, blk in zip(beta, blocks))
     return Derivation(ptilde=ptilde, ptilde2=ptilde2, Upsilon1=blocks[0].applyfunc(sp.trigsimp), with_printed_42=neg,
                       with_model=pos, findings=[
         equation(40, symbolic_equal(JJ, full), r"$\mathbf J_2\mathbf J_2^{\mathrm T}$ of the model is block-diagonal with the "
@@ -92,7 +91,7 @@ def J2_isotropy(pairs=20, n=2000, seed=SEED):
     p44, p45, p46, p47, p48 = (printed(i) for i in (44, 45, 46, 47, 48))
     gen = general_robot()
     J2 = gen.J2()
-    U1 = (J2 * J2.T)[0:2, 0:2].subs(gen.beta_symbols[0], P.beta_i)
+    U1 = (J2 * J2.T)[0:2, 0:2].subs(gen.beta_symbols[0], S.beta_i)
     dev = U1 - sp.trace(U1) / 2 * sp.eye(2)
     frob2 = sum(e**2 for e in dev)
     dev_ok = symbolic_equal(frob2, (S.d**2 - S.r**2)**2 / 2) and symbolic_equal(sp.trace(U1), S.d**2 + S.r**2)
@@ -207,15 +206,15 @@ def isotropic_kinematics(L=0.4, r=0.1, n=25, seed=SEED):
         b = rng.uniform(-np.pi, np.pi, 3)
         JL1n, J2n = bot.J1(L), bot.J2(b)
         th = rng.normal(size=6)
-        tL = numeric(p49.expr.rhs, {P.JL1: JL1n, P.J2: J2n, P.theta_dot: th[:, None]})[:, 0]
+        tL = numeric(p49.expr.rhs, {S.JL1: JL1n, S.J2_offset: J2n, S.theta_dot_offset: th[:, None]})[:, 0]
         fw = forward(bot, b, th)
         res49 = max(res49, float(np.max(np.abs(np.linalg.solve(scale, tL) - fw.value))))
         slip += int(not fw.admissible)
         tw = rng.normal(size=3)
         inv = inverse(bot, b, tw)
-        th50 = numeric(p50.expr.rhs.subs(S.r, r), {P.JL1: JL1n, P.J2: J2n, P.tL: (scale @ tw)[:, None]})[:, 0]
+        th50 = numeric(p50.expr.rhs.subs(S.r, r), {S.JL1: JL1n, S.J2_offset: J2n, S.tL: (scale @ tw)[:, None]})[:, 0]
         res50 = max(res50, float(np.max(np.abs(th50 - inv.value))), float(np.max(np.abs(inv.residual))))
-        back = numeric(p49.expr.rhs, {P.JL1: JL1n, P.J2: J2n, P.theta_dot: th50[:, None]})[:, 0]
+        back = numeric(p49.expr.rhs, {S.JL1: JL1n, S.J2_offset: J2n, S.theta_dot_offset: th50[:, None]})[:, 0]
         res49_exact = max(res49_exact, float(np.max(np.abs(np.linalg.solve(scale, back) - tw))))
     require(slip == n, "random joint rates of three offset wheels need slip")
     return Derivation(needs_slip=slip, n=n, findings=[

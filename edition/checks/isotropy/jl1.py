@@ -15,8 +15,7 @@ from wmr.model.robot import Robot
 from wmr.model.robots import paper_robot
 from wmr.model.tolerance import TOL
 from wmr.model.wheels import CentredWheel, OffsetWheel
-from ... import isotropy as P
-from ... import printed
+from ...transcription import printed
 from ... import symbols as S
 from ...verify import SEED, max_residual, symbolic_equal
 from .. import Derivation, claim, equation, require
@@ -31,13 +30,13 @@ RHO = sp.Symbol("rho", positive=True)
 
 @lru_cache(maxsize=None)
 def general_robot():
-    """Three offset wheels at general (symbolic) mount points :data:`edition.isotropy.D`.
+    """Three offset wheels at general (symbolic) mount points :data:`edition.symbols.D`.
 
     Returns
     -------
     wmr.Robot
     """
-    return Robot([OffsetWheel(d, r=S.r, d=S.d) for d in P.D])
+    return Robot([OffsetWheel(d, r=S.r, d=S.d) for d in S.D])
 
 
 def condition_number_def(n_pairs=50, n_random=2000, seed=SEED):
@@ -63,7 +62,7 @@ def condition_number_def(n_pairs=50, n_random=2000, seed=SEED):
     p30, p31 = printed(30), printed(31)
     JL1 = paper_robot("offset", L=RHO, r=S.r, exact=True).J1(S.L)
     sv = JL1.singular_values()
-    kappa = p30.expr.rhs.subs({P.sigma_l: sp.Max(*sv), P.sigma_s: sp.Min(*sv)})
+    kappa = p30.expr.rhs.subs({S.sigma_l: sp.Max(*sv), S.sigma_s: sp.Min(*sv)})
     key = sp.default_sort_key
     holds30 = symbolic_equal(sp.Matrix(sorted([s**2 for s in sv], key=key)),
                              sp.Matrix(sorted((JL1.T * JL1).eigenvals(multiple=True), key=key)))
@@ -142,7 +141,7 @@ def isotropy_conditions():
     lam = G[1, 1]
     require(G[1:, 1:] == lam * sp.eye(2) and lam == 3, "the lower block of (34) is 3 1 for every placement")
     off_col, off_row, corner = G[1:, 0], G[0, 1:], sp.Eq(G[0, 0], lam)
-    d3 = list(P.D[2])
+    d3 = list(S.D[2])
     sol35 = sp.solve(list(off_col), d3, dict=True)
     sol37 = sp.solve(list(p37.expr.lhs - p37.expr.rhs), d3, dict=True)
     res37 = max_residual((p37.expr.lhs - p37.expr.rhs).subs(sol35[0]))
@@ -186,7 +185,7 @@ def placement(counterexample=((2, 0), (-1, 1), (-1, -1)), n=200, seed=SEED):
     num = Robot([OffsetWheel(tuple(map(float, q)), r=0.1, d=0.1) for q in counterexample])
     L_num = characteristic_length(num)
     k_ce = float(condition_number(num.J1(L_num)))
-    at = {s_: v for p_, q in zip(P.D, pts) for s_, v in zip(p_, q)} | {S.L: sp.sqrt(L2)}
+    at = {s_: v for p_, q in zip(S.D, pts) for s_, v in zip(p_, q)} | {S.L: sp.sqrt(L2)}
     printed_holds = all(bool(sp.simplify((e.lhs - e.rhs).subs(at)) == 0) for e in p38.expr)   # (38) at the isotropic example
     rng = np.random.default_rng(seed)
     res = 0.0

@@ -13,7 +13,6 @@ from wmr.analysis.steering import steering_angles
 from wmr.model.robot import Robot
 from wmr.model.robots import paper_robot
 from wmr.model.wheels import CentredWheel
-from ... import isotropy as P
 from ... import symbols as S
 from ...verify import SEED, symbolic_equal
 from .. import Derivation, claim, require
@@ -68,7 +67,7 @@ def robust_control(n=100000, grid=400, seed=SEED):
     Jo = off.J(L=S.L)
     offset_robust = symbolic_equal(Jo * Jo.T, 3 * S.r**2 * sp.eye(3))
     # centred wheels: J J^T = r^2 (J_L1^T J_L1 - A^T A) for general mount points
-    gen = Robot([CentredWheel(d, r=S.r) for d in P.D])
+    gen = Robot([CentredWheel(d, r=S.r) for d in S.D])
     J, JL1 = gen.J(L=S.L), gen.J1(S.L)
     beta = gen.beta_symbols
     axle = [sp.Matrix([sp.cos(b), sp.sin(b)]) for b in beta]

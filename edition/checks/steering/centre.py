@@ -9,9 +9,8 @@ import sympy as sp
 
 from wmr.analysis.steering import AT_INFINITY, FINITE, STILL, centre_to_wheels, instantaneous_centre
 from wmr.model.backend import SYMBOLIC
-from wmr.model.platform import point_row, point_velocity, rotation
-from ... import printed
-from ... import steering as P
+from wmr.model.platform import E, point_row, point_velocity, rotation
+from ...transcription import printed
 from ... import symbols as S
 from ...verify import SEED, symbolic_equal
 from .. import Derivation, equation, require
@@ -42,17 +41,17 @@ def instant_centre_velocity(n=2000, seed=SEED):
     ucB = sp.Matrix(sp.symbols(r"u_{cx}^{\mathcal{B}} u_{cy}^{\mathcal{B}}", real=True))
     u_t = c_t + rotation(psi_t, SYMBOLIC) * ucB
     uc_world = u_t - c_t
-    ok61 = symbolic_equal(p61.expr.subs(dict(zip(P.u, u_t)) | dict(zip(P.c, c_t)), simultaneous=True),
+    ok61 = symbolic_equal(p61.expr.subs(dict(zip(S.u, u_t)) | dict(zip(S.c, c_t)), simultaneous=True),
                           rotation(psi_t, SYMBOLIC) * ucB)
     u_dot = u_t.diff(time)
     subs = {S.x_dot: c_t[0].diff(time), S.y_dot: c_t[1].diff(time), S.psi_dot: psi_t.diff(time),
-            P.u_c[0]: uc_world[0], P.u_c[1]: uc_world[1]}
+            S.u_c[0]: uc_world[0], S.u_c[1]: uc_world[1]}
     ok_fixed = symbolic_equal(u_dot, p62.expr.subs(subs, simultaneous=True))
-    ok_body = symbolic_equal(point_row(tuple(P.u_c), backend=SYMBOLIC) * ns.t, p62.expr)
-    commute = symbolic_equal(S.E * rotation(S.psi, SYMBOLIC), rotation(S.psi, SYMBOLIC) * S.E)
+    ok_body = symbolic_equal(point_row(tuple(S.u_c), backend=SYMBOLIC) * ns.t, p62.expr)
+    commute = symbolic_equal(E(SYMBOLIC) * rotation(S.psi, SYMBOLIC), rotation(S.psi, SYMBOLIC) * E(SYMBOLIC))
     rng = np.random.default_rng(seed)
     Tw, Uc = rng.normal(size=(n, 3)), rng.normal(size=(n, 2))
-    res = float(np.max(np.abs(evaluate(p62.expr, (*ns.t, *P.u_c), *Tw.T, *Uc.T) - point_velocity(Tw, Uc))))
+    res = float(np.max(np.abs(evaluate(p62.expr, (*ns.t, *S.u_c), *Tw.T, *Uc.T) - point_velocity(Tw, Uc))))
     shown = u_dot.subs({psi_t.diff(time): S.psi_dot, psi_t: S.psi, c_t[0].diff(time): S.X_dot, c_t[1].diff(time): S.Y_dot})
     return Derivation(u_dot=shown, findings=[
         equation(61, ok61, r"for the platform point at U, $\mathbf u - \mathbf c = \mathbf R(\psi)[\mathbf u_c]_{\mathcal B}$: "
@@ -84,11 +83,11 @@ def instant_centre(n=2000, seed=SEED):
     """
     p63 = printed(63)
     ns = no_slip()
-    vel = point_row(tuple(P.u_c), backend=SYMBOLIC) * ns.t
-    coeffs = sp.Matrix([[vel[k].diff(P.u_c[j]) for j in range(2)] for k in range(2)])
-    sol = sp.solve(list(vel), list(P.u_c), dict=True)
+    vel = point_row(tuple(S.u_c), backend=SYMBOLIC) * ns.t
+    coeffs = sp.Matrix([[vel[k].diff(S.u_c[j]) for j in range(2)] for k in range(2)])
+    sol = sp.solve(list(vel), list(S.u_c), dict=True)
     require(len(sol) == 1, "one point at rest")
-    uc = P.u_c.subs(sol[0])
+    uc = S.u_c.subs(sol[0])
     holds = symbolic_equal(uc, p63.expr)
     norm_ok = symbolic_equal(sum(e**2 for e in p63.expr), (S.x_dot**2 + S.y_dot**2) / S.psi_dot**2)
     rng = np.random.default_rng(seed)
@@ -134,14 +133,14 @@ def centre_to_wheel(n=2000, seed=SEED):
     d = sp.Matrix([S.dx, S.dy])
     ui = uc - d
     p_dot = point_row((S.dx, S.dy), backend=SYMBOLIC) * ns.t
-    rot = symbolic_equal(p_dot, -S.psi_dot * S.E * ui)
+    rot = symbolic_equal(p_dot, -S.psi_dot * E(SYMBOLIC) * ui)
     rng = np.random.default_rng(seed)
     Tw = rng.normal(size=(n, 3))
     Tw[:, 0] = np.sign(Tw[:, 0]) * rng.uniform(0.2, 2.0, n)
     D = robot().mount_points
     ui_pr = np.stack([evaluate(p64.expr, (*ns.t, S.dx, S.dy), *Tw.T, D[i, 0], D[i, 1]) for i in range(3)], 1)
     res = float(np.max(np.abs(ui_pr - centre_to_wheels(Tw, D))))
-    return Derivation(u_i=ui, rotation_check=sp.simplify(p_dot + S.psi_dot * S.E * ui), findings=[equation(
+    return Derivation(u_i=ui, rotation_check=sp.simplify(p_dot + S.psi_dot * E(SYMBOLIC) * ui), findings=[equation(
         64, symbolic_equal(ui, p64.expr) and rot, r"$\overrightarrow{P_iU} = \overrightarrow{CU} - \overrightarrow{CP_i}$ with "
                                                   r"the derived (63), and the model's velocity of $P_i$ is "
                                                   r"$-\dot\psi\mathbf E\mathbf u_i$, a rotation about U (SymPy); "

@@ -9,13 +9,12 @@ import sympy as sp
 
 from wmr.analysis.steering import centre_to_wheels, instantaneous_centre, steering_angles
 from wmr.model.backend import SYMBOLIC
-from wmr.model.platform import rotation
+from wmr.model.platform import E, rotation
 from wmr.model.robots import paper_robot
 from wmr.model.tolerance import TOL
-from ... import printed
-from ... import steering as P
+from ...transcription import printed
 from ... import symbols as S
-from ...notebook import mod_pi
+from ...algebra import mod_pi
 from ...verify import SEED, symbolic_equal
 from .. import Derivation, equation, require
 from .constraint import evaluate, feasibility, no_slip, robot
@@ -113,20 +112,20 @@ def rotation_angles(n=2000, seed=SEED, eps=1e-7):
     """
     p64, p65 = printed(64), printed(65)
     ns = no_slip()
-    ui = P.u_i
+    ui = S.u_i
     d = sp.Matrix([S.dx, S.dy])
-    c_dot = -S.psi_dot * S.E * (ui + d)                       # from u_dot = 0 with u_c = u_i + d_i
+    c_dot = -S.psi_dot * E(SYMBOLIC) * (ui + d)                       # from u_dot = 0 with u_c = u_i + d_i
     g65 = sp.factor(sp.expand(ns.g.subs({S.x_dot: c_dot[0], S.y_dot: c_dot[1]}, simultaneous=True)))
     beta_true = sp.atan2(ui[1], ui[0])
     true_ok = symbolic_equal(g65.subs(ns.beta, beta_true), 0)
     a = sp.Symbol("a", positive=True)
-    on_axis = symbolic_equal(p65.expr.rhs.subs({P.u_c[0]: a, P.u_c[1]: 0}), sp.cos(beta_true))
+    on_axis = symbolic_equal(p65.expr.rhs.subs({S.u_c[0]: a, S.u_c[1]: 0}), sp.cos(beta_true))
     exact = paper_robot("centred", L=1, r=1, exact=True)
     U = sp.Matrix([0, 1])
     rows = []
     for i, unit in enumerate(exact.wheels, 1):
         u_i = U - sp.Matrix(unit.position)
-        sub = {P.u_c[0]: U[0], P.u_c[1]: U[1], P.u_i[0]: u_i[0], P.u_i[1]: u_i[1]}
+        sub = {S.u_c[0]: U[0], S.u_c[1]: U[1], S.u_i[0]: u_i[0], S.u_i[1]: u_i[1]}
         b_pr = sp.acos(sp.nsimplify(p65.expr.rhs.subs(sub)))
         slips = [float(g65.subs(sub).subs({ns.beta: s * b_pr, S.psi_dot: 1})) for s in (1, -1)]
         rows.append({"wheel": i, "printed": float(b_pr * 180 / sp.pi), "derived": float(beta_true.subs(sub) * 180 / sp.pi),
@@ -138,7 +137,7 @@ def rotation_angles(n=2000, seed=SEED, eps=1e-7):
     Tw = rng.normal(size=(n, 3))
     Tw[:, 0] = np.sign(Tw[:, 0]) * rng.uniform(0.2, 2.0, n)
     uc_n, ui_n = instantaneous_centre(Tw).point, centre_to_wheels(Tw, D)
-    cos_pr = evaluate(p65.expr.rhs, (*P.u_c, *P.u_i), uc_n[:, None, 0], uc_n[:, None, 1], ui_n[..., 0], ui_n[..., 1])
+    cos_pr = evaluate(p65.expr.rhs, (*S.u_c, *S.u_i), uc_n[:, None, 0], uc_n[:, None, 1], ui_n[..., 0], ui_n[..., 1])
     lateral = lambda b: np.abs(ui_n[..., 1] * np.cos(b) - ui_n[..., 0] * np.sin(b))
     b_pr = np.arccos(np.clip(cos_pr, -1, 1))
     b_pr = np.where(lateral(b_pr) <= lateral(-b_pr), b_pr, -b_pr)        # the better sign, wheel by wheel
@@ -147,7 +146,7 @@ def rotation_angles(n=2000, seed=SEED, eps=1e-7):
     Tx[:, 1] = 0.0
     Tx[:, 2] = -np.abs(Tx[:, 2]) * Tx[:, 0]                             # u_c = (-y_dot/psi_dot, 0) on the +x axis
     ui_x, uc_x = centre_to_wheels(Tx, D), instantaneous_centre(Tx).point
-    cos_x = evaluate(p65.expr.rhs, (*P.u_c, *P.u_i), uc_x[:, None, 0], uc_x[:, None, 1], ui_x[..., 0], ui_x[..., 1])
+    cos_x = evaluate(p65.expr.rhs, (*S.u_c, *S.u_i), uc_x[:, None, 0], uc_x[:, None, 1], ui_x[..., 0], ui_x[..., 1])
     b_x = np.sign(ui_x[..., 1]) * np.arccos(np.clip(cos_x, -1, 1))
     reports = {"printed (65)": feasibility(b_pr, Tw), "derived": feasibility(b_tr, Tw),
                "printed, U on the positive x-axis": feasibility(b_x, Tx)}
@@ -169,7 +168,7 @@ def rotation_angles(n=2000, seed=SEED, eps=1e-7):
     proven = (true_ok and reports["derived"]["rank_F"] == {5} and reports["derived"]["admissible"] == 1.0
               and res < TOL and limit_ok)
     return Derivation(g=g65, counterexample=rows, reports=reports, limit=lim, dev_lim=dev_lim, radial=radial,
-                      at_C=p65.expr.rhs.subs({P.u_c[0]: 0, P.u_c[1]: 0}), n=n, findings=[equation(
+                      at_C=p65.expr.rhs.subs({S.u_c[0]: 0, S.u_c[1]: 0}), n=n, findings=[equation(
         65, holds, r"$g_i = \dot\psi(u_{iy}\cos\beta_i - u_{ix}\sin\beta_i)$ in rotation about U, zero for "
                    r"$\beta_i = \operatorname{atan2}(u_{iy}, u_{ix})$ (SymPy); at these angles all " rf"{n} random rotations "
                    r"are executable (rank $\mathbf F = 5$, zero residual), they equal `wmr.steering_angles` mod $\pi$, and "
