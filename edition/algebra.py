@@ -40,7 +40,8 @@ def numeric(expr, mapping):
 
 
 def mod_pi(angle):
-    r"""An angle modulo :math:`\pi`, in :math:`[-\pi/2, \pi/2)`: a wheel rolls either way, so axle angles count mod :math:`\pi`.
+    r"""An angle modulo :math:`\pi`, in :math:`[-\pi/2, \pi/2)`: a wheel rolls either way, so axle angles count mod
+    :math:`\pi`.
 
     Parameters
     ----------

@@ -220,7 +220,8 @@ def load(path=TABLE):
         data = _plain(entry.get("data", {}))
         if set(extra) & set(data):
             _fail(path, where, f"{sorted(set(extra) & set(data))} both in 'extra' and in 'data'")
-        equations[id] = Printed(id, _text(entry, "section", path, where, True), _text(entry, "latex", path, where, True),
+        equations[id] = Printed(id, _text(entry, "section", path, where, True), _text(entry, "latex", path, where,
+                                                                                      True),
                                 expr, _fragments(entry, path, where), _text(entry, "doubt", path, where),
                                 _text(entry, "note", path, where), {**extra, **data})
     claims = {}

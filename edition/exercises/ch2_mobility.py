@@ -10,6 +10,7 @@ import sympy as sp
 from wmr.analysis.linalg import rank
 from wmr.model.robots import paper_robot
 from wmr.model.tolerance import TOL
+
 from ..verify import symbolic_equal
 from .feedback import Feedback, as_matrix, missing
 
@@ -67,8 +68,8 @@ def drift_of_c_general(answer):
     -------
     Feedback
     """
-    from ..transcription import printed
     from ..checks.assembly import drift_of_c
+    from ..transcription import printed
     M, fb = as_matrix(answer, (2, 1), r"the 2-vector $\dot{\mathbf c}$")
     if fb is not None:
         return fb
@@ -80,6 +81,6 @@ def drift_of_c_general(answer):
     if symbolic_equal(M, printed(28).expr.rhs):
         return Feedback(False, r"That is the printed (28), which assumes $\sum_i\mathbf d_i = \mathbf 0$. Keep the "
                                r"platform rows $\dot\psi\mathbf E\mathbf d_i$ when you sum.")
-    return Feedback(False, r"Sum the three block rows of $\mathbf J_1\mathbf t = \mathbf J_2\dot{\boldsymbol\theta}$ with "
-                           r"$\dot\theta_i = 0$ and solve for $\dot x, \dot y$; your answer differs from it by "
+    return Feedback(False, r"Sum the three block rows of $\mathbf J_1\mathbf t = \mathbf J_2\dot{\boldsymbol\theta}$ "
+                           r"with $\dot\theta_i = 0$ and solve for $\dot x, \dot y$; your answer differs from it by "
                            f"${sp.latex(sp.simplify(M - truth).T)}^{{\\mathrm T}}$.")

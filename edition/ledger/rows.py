@@ -11,7 +11,7 @@ from pathlib import Path
 from ..files import atomic_write, csv_text
 from ..text import bound
 from ..transcription import claim, printed
-from .verdict import COLUMNS, VERDICTS, Finding, anchor, grade
+from .verdict import COLUMNS, VERDICTS, anchor, grade
 
 __all__ = ["Row", "Ledger"]
 

@@ -4,7 +4,7 @@ Chapter 1's checks live in :mod:`edition.checks.wheels`; this module holds one g
 """
 from __future__ import annotations
 
-from functools import lru_cache
+from functools import cache
 
 import numpy as np
 import sympy as sp
@@ -16,12 +16,13 @@ from wmr.model.platform import point_velocity, rotation
 from wmr.model.robots import paper_robot
 from wmr.model.tolerance import TOL
 from wmr.model.wheels import CentredWheel, DualWheel
-from ...transcription import printed
+
 from ... import symbols as S
+from ...algebra import explicit
 from ...text import bound
+from ...transcription import printed
 from ...verify import SEED, max_residual, symbolic_equal
 from .. import Derivation, equation, require
-from ...algebra import explicit
 from .frames import disk_velocity, k, planar, time, unit_axes
 
 __all__ = ["dual_no_slip", "dual_steering", "dual_integrated", "dual_average", "dual_average_angle"]
@@ -48,7 +49,7 @@ def dual_no_slip():
     return Derivation(**out, findings=found)
 
 
-@lru_cache(maxsize=None)
+@cache
 def _turning_rate():
     """omega_z of the intermediate body from the two wheel velocities (rigid body): the derivation of (15)."""
     d1, d2 = disk_velocity(S.theta_dot_i1), disk_velocity(S.theta_dot_i2)
@@ -94,18 +95,20 @@ def dual_steering(n=500, seed=SEED, r=0.1, b=0.08, L=0.5):
     sol = inverse(dual, beta, spin)
     require(bool(sol.admissible), "the spin about C with axles through C is admissible")
     rows = []
-    for i, (dp, bt) in enumerate(zip(dual.mount_points, beta)):
+    for i, (dp, bt) in enumerate(zip(dual.mount_points, beta, strict=True)):
         ii, jj = np.array([np.cos(bt), np.sin(bt)]), np.array([-np.sin(bt), np.cos(bt)])
         v1, v2 = point_velocity(spin, dp + b * ii), point_velocity(spin, dp - b * ii)
         th1, th2 = -jj @ v1 / r, -jj @ v2 / r
         rows.append({"unit": i + 1, "sideways slip": max(abs(ii @ v1), abs(ii @ v2)), "theta1": th1, "theta2": th2,
                      "printed": -r / (2 * b) * (th1 - th2), "true": 0.0})
     require(max(x["sideways slip"] for x in rows) < TOL, "the spin needs no sideways slip")
-    require(np.allclose(sol.value, [v for x in rows for v in (x["theta1"], x["theta2"])]), "wmr.inverse finds the rates")
+    require(np.allclose(sol.value, [v for x in rows for v in (x["theta1"], x["theta2"])]), "wmr.inverse finds the "
+                                                                                           "rates")
     printed_gap = max(abs(x["printed"] - x["true"]) for x in rows)
     # the corrected law at random unit states
     rng = np.random.default_rng(seed)
-    bt, psid, betad, s = rng.uniform(-np.pi, np.pi, n), rng.uniform(-3, 3, n), rng.uniform(-3, 3, n), rng.uniform(-2, 2, n)
+    bt, psid, betad, s = rng.uniform(-np.pi, np.pi, n), rng.uniform(-3, 3, n), rng.uniform(-3, 3, n), rng.uniform(-2, 2,
+                                                                                                                  n)
     rr, bb = rng.uniform(0.05, 0.5, n), rng.uniform(0.05, 0.5, n)
     jj = np.stack([-np.sin(bt), np.cos(bt)], -1)
     phid = psid + betad
@@ -116,20 +119,24 @@ def dual_steering(n=500, seed=SEED, r=0.1, b=0.08, L=0.5):
     res = float(np.abs(f(th1, th2, rr, bb) - phid).max())
     m = min(n, 50)
     res_wmr = max(abs(DualWheel((0.0, 0.0), r=float(a), b=float(c)).beta_rate(p, np.array([x, y])) - q)
-                  for a, c, p, x, y, q in zip(rr[:m], bb[:m], psid, th1, th2, betad))
+                  for a, c, p, x, y, q in zip(rr[:m], bb[:m], psid, th1, th2, betad, strict=False))
     corrected = (r"\dot\phi_i = \dot\psi + \dot\beta_i = " + sp.latex(phi_dot))
     return Derivation(rigid=rigid.applyfunc(sp.factor), phi_dot=phi_dot, beta_dot=beta_dot, difference=diff,
                       spin=rows, findings=[equation(
         15, holds, r"$\dot\phi_i = -\frac{r}{2b}(\dot\theta_{i1} - \dot\theta_{i2})$ from "
-                   r"$\dot{\mathbf h}_{i1} - \dot{\mathbf h}_{i2} = \dot\phi_i\mathbf k\times 2b\,\mathbf i_i$ (SymPy); "
+                   r"$\dot{\mathbf h}_{i1} - \dot{\mathbf h}_{i2} = \dot\phi_i\mathbf k\times 2b\,\mathbf i_i$ "
+                   r"(SymPy); "
                    rf"at {n} random unit states the rates give $\dot\psi + \dot\beta_i$ (and `DualWheel.beta_rate` "
                    rf"gives $\dot\beta_i$ at {m})", max(res, res_wmr),
-        refuted=(r"printed minus derived is exactly $\dot\psi$" if off_by_psi_dot else "printed differs from the derivation")
-                + rf"; a spin about C at $\dot\psi = 1$ with locked units: printed $\dot\beta_i = {printed_gap:.3g}$, true 0",
+        refuted=(r"printed minus derived is exactly "
+                 r"$\dot\psi$" if off_by_psi_dot else "printed differs from the derivation")
+                + rf"; a spin about C at $\dot\psi = 1$ with locked units: printed $\dot\beta_i = {printed_gap:.3g}$, "
+                  r"true 0",
         corrected=corrected, corrected_holds=res < TOL and res_wmr < TOL, severity="wrong",
         why=r"the wheel-rate difference fixes the absolute turning rate $\dot\phi_i$ of the unit, not its rate "
             r"$\dot\beta_i$ relative to the platform; the printed form is off by $\dot\psi$",
-        convention=r"wheel 1 at $P_i + b\,\mathbf i_i$, wheel 2 at $P_i - b\,\mathbf i_i$; $\beta_i$ relative to the platform")])
+        convention=r"wheel 1 at $P_i + b\,\mathbf i_i$, wheel 2 at $P_i - b\,\mathbf i_i$; $\beta_i$ relative to the "
+                   r"platform")])
 
 
 def dual_integrated(r=0.1, b=0.08, L=0.5, steps=100):
@@ -158,7 +165,8 @@ def dual_integrated(r=0.1, b=0.08, L=0.5, steps=100):
     shown = phi.subs({th1_t: S.theta_i1, th2_t: S.theta_i2})
     rates_t = {S.theta_dot_i1: th1_t.diff(time), S.theta_dot_i2: th2_t.diff(time)}
     corrected_ok = symbolic_equal(phi.diff(time), phi_dot.subs(rates_t))
-    inherits = symbolic_equal(P16.expr.rhs.subs({S.theta_i1: th1_t, S.theta_i2: th2_t}).diff(time), P15.expr.rhs.subs(rates_t))
+    inherits = symbolic_equal(P16.expr.rhs.subs({S.theta_i1: th1_t, S.theta_i2: th2_t}).diff(time),
+                              P15.expr.rhs.subs(rates_t))
     dual = paper_robot("dual", L=L, r=r, b=b)
     beta0 = np.arctan2(dual.mount_points[:, 1], dual.mount_points[:, 0])
     sol = inverse(dual, beta0, np.array([1.0, 0.0, 0.0]))
@@ -169,13 +177,14 @@ def dual_integrated(r=0.1, b=0.08, L=0.5, steps=100):
     printed_change = np.asarray(f16(dth[:, 0], dth[:, 1], r, b), dtype=float) * np.ones(3)
     true_change = run.beta[-1] - beta0
     jam = inverse(dual, beta0 + printed_change, np.array([1.0, 0.0, 0.0]))
-    corrected_change = -r / (2 * b) * (dth[:, 0] - dth[:, 1])            # the corrected (16): the change of psi + beta_i
+    # the corrected (16): the change of psi + beta_i
+    corrected_change = -r / (2 * b) * (dth[:, 0] - dth[:, 1])
     res = float(np.abs(corrected_change - (run.pose[-1, 0] + true_change)).max())
     holds = bool(np.allclose(printed_change, true_change, atol=1e-6))
     return Derivation(phi=shown, printed_change=printed_change, true_change=true_change, findings=[equation(
         16, holds, r"$\phi_i = \psi + \beta_i = -\frac{r}{2b}(\theta_{i1} - \theta_{i2})$ differentiates into the "
-                   rf"corrected (15) (SymPy); in a simulated quarter turn (`wmr.simulate`, {steps} steps) the change of "
-                   r"$\psi + \beta_i$ equals it", res,
+                   rf"corrected (15) (SymPy); in a simulated quarter turn (`wmr.simulate`, {steps} steps) the change "
+                   r"of $\psi + \beta_i$ equals it", res,
         refuted=(r"it differentiates into the printed (15)" if inherits else "it is not the integral of (15)")
                 + rf"; a quarter turn with locked units: printed $\Delta\beta_i = {printed_change[0]:.4g}$, simulated "
                   rf"${bound(abs(true_change).max(), latex=True)}$ with slip ${bound(run.slip.max(), latex=True)}$, "
@@ -203,7 +212,8 @@ def dual_average():
     h = planar(d1.h_dot + (phi_dot * k).cross(-S.b * d1.i3))
     axes = unit_axes()
     members = (explicit(P17.extra["definition"], {S.h_dot_i1: planar(d1.h_dot), S.h_dot_i2: planar(d2.h_dot)}),
-               explicit(P17.expr.rhs, axes), explicit(P17.extra["average_form"], axes).subs(S.theta_dot_i, P18.expr.rhs))
+               explicit(P17.expr.rhs, axes), explicit(P17.extra["average_form"], axes).subs(S.theta_dot_i,
+                                                                                            P18.expr.rhs))
     holds17 = all(symbolic_equal(h, x) for x in members)
     res17 = max(max_residual(h, x) for x in members)
     dual_unit, centred_unit = DualWheel(S.d_i, r=S.r, b=S.b), CentredWheel(S.d_i, r=S.r)

@@ -4,7 +4,7 @@ Chapter 1's checks live in :mod:`edition.checks.wheels`; this module holds one g
 """
 from __future__ import annotations
 
-from functools import lru_cache
+from functools import cache
 
 import sympy as sp
 
@@ -49,7 +49,7 @@ def planar(v):
     return sp.Matrix(v[:2])
 
 
-@lru_cache(maxsize=None)
+@cache
 def disk_velocity(theta_dot, phi=S.phi_i, phi_dot=S.phi_dot_i, r=S.r):
     r"""Velocity of the centre of a thin disk rolling without slip, and its axes (derivation of (6)).
 
@@ -78,7 +78,8 @@ def disk_velocity(theta_dot, phi=S.phi_i, phi_dot=S.phi_dot_i, r=S.r):
 
 
 def unit_axes():
-    r"""The axes :math:`\mathbf i_i, \mathbf j_i` of unit *i* in the fixed frame, from the rolling disk (:func:`disk_velocity`).
+    r"""The axes :math:`\mathbf i_i, \mathbf j_i` of unit *i* in the fixed frame, from the rolling disk
+    (:func:`disk_velocity`).
 
     Returns
     -------

@@ -12,8 +12,9 @@ from wmr.model.platform import E, point_row, point_velocity, rotation
 from wmr.model.robot import Robot
 from wmr.model.tolerance import TOL
 from wmr.model.wheels import CentredWheel
-from ...transcription import printed
+
 from ... import symbols as S
+from ...transcription import printed
 from ...verify import SEED, max_residual, symbolic_equal
 from .. import Derivation, equation, require
 from .frames import k, lift, planar
@@ -22,7 +23,8 @@ __all__ = ["platform_point", "skew_matrix", "twist_layout", "platform_row"]
 
 
 def platform_point(n=500, seed=SEED):
-    r"""(2): velocity of a platform point, :math:`\dot{\mathbf c} + \dot\psi\mathbf k\times\mathbf d_i` (3D cross product).
+    r"""(2): velocity of a platform point, :math:`\dot{\mathbf c} + \dot\psi\mathbf k\times\mathbf d_i` (3D cross
+    product).
 
     Parameters
     ----------
@@ -64,7 +66,8 @@ def skew_matrix():
     P = printed(3)
     E_derived = sp.Matrix.hstack(planar(k.cross(lift([1, 0]))), planar(k.cross(lift([0, 1]))))
     M = P.expr.rhs
-    holds = (symbolic_equal(E_derived, M) and symbolic_equal(M.T, -M) and symbolic_equal(rotation(sp.pi / 2, SYMBOLIC), M))
+    holds = (symbolic_equal(E_derived, M) and symbolic_equal(M.T, -M) and symbolic_equal(rotation(sp.pi / 2, SYMBOLIC),
+                                                                                         M))
     require(symbolic_equal(E(SYMBOLIC), E_derived), "wmr.E is the derived matrix")
     res = float(np.abs(E() - np.array(E_derived, dtype=float)).max())
     return Derivation(E=E_derived, findings=[equation(

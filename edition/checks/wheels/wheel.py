@@ -11,11 +11,12 @@ from wmr.model.backend import SYMBOLIC
 from wmr.model.platform import E, rotation
 from wmr.model.tolerance import TOL
 from wmr.model.wheels import CentredWheel, OffsetWheel
-from ...transcription import printed
+
 from ... import symbols as S
+from ...algebra import explicit
+from ...transcription import printed
 from ...verify import SEED, max_residual, symbolic_equal
 from .. import Derivation, equation, require
-from ...algebra import explicit
 from .frames import disk_velocity, k, planar, time, unit_axes
 
 __all__ = ["rolling_disk", "steering_composition", "offset_wheel", "wheel_frame", "offset_in_body", "centred_wheel"]
@@ -37,12 +38,15 @@ def rolling_disk():
     res = max_residual(planar(d.h_dot), rhs)
     return Derivation(h_dot=d.h_dot, Omega=d.Omega, along=along, findings=[equation(
         6, holds, r"solving $\dot{\mathbf h}_i + \boldsymbol\Omega\times(-r\mathbf k) = \mathbf 0$ with "
-                  r"$\boldsymbol\Omega = \dot\theta_i\mathbf i_i + \dot\phi_i\mathbf k$ gives the printed form (SymPy)", res,
-        convention=r"$\dot\theta_i$ positive about $+\mathbf i_i$ (right-hand rule); $\mathbf j_i = \mathbf k\times\mathbf i_i$")])
+                  r"$\boldsymbol\Omega = \dot\theta_i\mathbf i_i + \dot\phi_i\mathbf k$ gives the printed form "
+                  r"(SymPy)", res,
+        convention=r"$\dot\theta_i$ positive about $+\mathbf i_i$ (right-hand rule); "
+                   r"$\mathbf j_i = \mathbf k\times\mathbf i_i$")])
 
 
 def steering_composition(n=200, seed=SEED):
-    r"""(7)-(8): :math:`\mathbf R(\psi)\mathbf R(\beta_i) = \mathbf R(\psi+\beta_i)`, and its rate from :math:`\dot{\mathbf R}\mathbf R^{\mathrm T}`.
+    r"""(7)-(8): :math:`\mathbf R(\psi)\mathbf R(\beta_i) = \mathbf R(\psi+\beta_i)`, and its rate from
+    :math:`\dot{\mathbf R}\mathbf R^{\mathrm T}`.
 
     Parameters
     ----------
@@ -145,7 +149,8 @@ def offset_in_body():
     Returns
     -------
     Derivation
-        ``p_dot_B`` (body components), ``in_wheel_frame`` (components along :math:`\mathbf i_i, \mathbf j_i`), finding (10).
+        ``p_dot_B`` (body components), ``in_wheel_frame`` (components along :math:`\mathbf i_i, \mathbf j_i`), finding
+        (10).
     """
     P = printed(10)
     d = disk_velocity(S.theta_dot_i)
@@ -160,8 +165,9 @@ def offset_in_body():
              and symbolic_equal(in_wheel, sp.Matrix([-S.d * S.phi_dot_i, -S.r * S.theta_dot_i])))
     res = max(max_residual(p_B, P.expr.rhs), max_residual(p_wmr, P.expr.rhs))
     return Derivation(p_dot_B=p_B, in_wheel_frame=in_wheel, findings=[equation(
-        10, holds, r"(9) rotated into the body frame equals $\mathbf R_{bwi}[-d\dot\phi_i\ \ -r\dot\theta_i]^{\mathrm T}$ "
-                   r"and `OffsetWheel.block` times the rates (SymPy)", res,
+        10, holds, r"(9) rotated into the body frame equals "
+                   r"$\mathbf R_{bwi}[-d\dot\phi_i\ \ -r\dot\theta_i]^{\mathrm T}$ and `OffsetWheel.block` times the "
+                   r"rates (SymPy)", res,
         convention=r"$H_i = P_i - d\,\mathbf j_i$; $[\dot{\mathbf p}_i]$ in wheel-frame components")])
 
 
