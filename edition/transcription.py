@@ -122,8 +122,8 @@ class Transcription:
     names: dict
 
 
-def _fail(path, where, message):
-    raise TranscriptionError(f"{path}: {where}: {message}")
+def _fail(where, message):
+    raise TranscriptionError(f"{where}: {message}")
 
 
 def _names():
@@ -133,13 +133,13 @@ def _names():
     return names
 
 
-def _parse(text, names, path, where):
+def _parse(text, names, where):
     if not isinstance(text, str):
-        _fail(path, where, f"a SymPy form must be a string, got {text!r}")
+        _fail(where, f"a SymPy form must be a string, got {text!r}")
     try:
         return parse_expr(text, local_dict={}, global_dict=names, transformations=(auto_number,))
     except Exception as e:        # SyntaxError, NameError, TypeError, ...: all say the same: this entry is wrong
-        _fail(path, where, f"cannot read {text!r}: {type(e).__name__}: {e}")
+        _fail(where, f"cannot read {text!r}: {type(e).__name__}: {e}")
 
 
 def _plain(value):
@@ -151,29 +151,37 @@ def _plain(value):
     return value
 
 
-def _sympy_tree(value, names, path, where):
+def _sympy_tree(value, names, where):
     """Strings parsed as SymPy forms, arrays as tuples, tables as dicts (recursively)."""
     if isinstance(value, list):
-        return tuple(_sympy_tree(v, names, path, f"{where}[{k}]") for k, v in enumerate(value))
+        return tuple(_sympy_tree(v, names, f"{where}[{k}]") for k, v in enumerate(value))
     if isinstance(value, dict):
-        return {k: _sympy_tree(v, names, path, f"{where}.{k}") for k, v in value.items()}
-    return _parse(value, names, path, where)
+        return {k: _sympy_tree(v, names, f"{where}.{k}") for k, v in value.items()}
+    return _parse(value, names, where)
 
 
-def _text(entry, key, path, where, required=False):
+def _text(entry, key, where, required=False):
     v = entry.get(key, "")
     if required and not v:
-        _fail(path, where, f"'{key}' is missing")
+        _fail(where, f"'{key}' is missing")
     if not isinstance(v, str):
-        _fail(path, where, f"'{key}' must be a string, got {v!r}")
+        _fail(where, f"'{key}' must be a string, got {v!r}")
     return v
 
 
-def _fragments(entry, path, where):
+def _entry(entry, where, keys):
+    """``where``, once the entry has no key outside ``keys``."""
+    bad = set(entry) - keys
+    if bad:
+        _fail(where, f"unknown keys {sorted(bad)}; known: {sorted(keys)}")
+    return where
+
+
+def _fragments(entry, where):
     v = entry.get("extracted", ())
     v = (v,) if isinstance(v, str) else tuple(v)
     if not all(isinstance(x, str) and x for x in v):
-        _fail(path, f"{where}.extracted", "must be a string or an array of non-empty strings")
+        _fail(f"{where}.extracted", "must be a string or an array of non-empty strings")
     return v
 
 
@@ -203,35 +211,28 @@ def load(path=TABLE):
         raise TranscriptionError(f"{path}: {e}") from None
     unknown = set(raw) - {"notation", "equation", "claim"}
     if unknown:
-        _fail(path, "top level", f"unknown tables {sorted(unknown)}")
+        _fail(f"{path}: top level", f"unknown tables {sorted(unknown)}")
     names = _names()
     for name, text in raw.get("notation", {}).items():
         if name in names:
-            _fail(path, f"notation.{name}", "the name is defined already (a symbol or a SymPy name)")
-        names[name] = _parse(text, names, path, f"notation.{name}")
+            _fail(f"{path}: notation.{name}", "the name is defined already (a symbol or a SymPy name)")
+        names[name] = _parse(text, names, f"{path}: notation.{name}")
     equations = {}
-    for id, entry in raw.get("equation", {}).items():
-        where = f"equation.{id}"
-        bad = set(entry) - _EQUATION_KEYS
-        if bad:
-            _fail(path, where, f"unknown keys {sorted(bad)}; known: {sorted(_EQUATION_KEYS)}")
-        expr = _parse(entry["sympy"], names, path, f"{where}.sympy") if "sympy" in entry else None
-        extra = _sympy_tree(entry.get("extra", {}), names, path, f"{where}.extra")
+    for key, entry in raw.get("equation", {}).items():
+        where = _entry(entry, f"{path}: equation.{key}", _EQUATION_KEYS)
+        expr = _parse(entry["sympy"], names, f"{where}.sympy") if "sympy" in entry else None
+        extra = _sympy_tree(entry.get("extra", {}), names, f"{where}.extra")
         data = _plain(entry.get("data", {}))
         if set(extra) & set(data):
-            _fail(path, where, f"{sorted(set(extra) & set(data))} both in 'extra' and in 'data'")
-        equations[id] = Printed(id, _text(entry, "section", path, where, True), _text(entry, "latex", path, where,
-                                                                                      True),
-                                expr, _fragments(entry, path, where), _text(entry, "doubt", path, where),
-                                _text(entry, "note", path, where), {**extra, **data})
+            _fail(where, f"{sorted(set(extra) & set(data))} both in 'extra' and in 'data'")
+        equations[key] = Printed(key, _text(entry, "section", where, True), _text(entry, "latex", where, True), expr,
+                                 _fragments(entry, where), _text(entry, "doubt", where), _text(entry, "note", where),
+                                 {**extra, **data})
     claims = {}
     for slug, entry in raw.get("claim", {}).items():
-        where = f"claim.{slug}"
-        bad = set(entry) - _CLAIM_KEYS
-        if bad:
-            _fail(path, where, f"unknown keys {sorted(bad)}; known: {sorted(_CLAIM_KEYS)}")
-        claims[slug] = Claim(slug, _text(entry, "section", path, where, True), _text(entry, "text", path, where, True),
-                             _fragments(entry, path, where))
+        where = _entry(entry, f"{path}: claim.{slug}", _CLAIM_KEYS)
+        claims[slug] = Claim(slug, _text(entry, "section", where, True), _text(entry, "text", where, True),
+                             _fragments(entry, where))
     return Transcription(equations, claims, names)
 
 
