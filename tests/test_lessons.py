@@ -13,8 +13,10 @@ import pytest
 import sympy as sp
 
 import wmr
+from edition import display as DP
 from edition import exercises as X
 from edition import notebook as NB
+from edition.algebra import mod_pi
 from edition import symbols as S
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -180,35 +182,35 @@ def test_the_library_resolves_no_repository_path():
 # ----------------------------------------------------------------------------------------------- helpers
 def test_table_is_markdown_without_index(monkeypatch):
     shown = []
-    monkeypatch.setattr(NB, "_display", lambda *o: shown.extend(o))
-    NB.table([{"w": 1, "rank": {5, 6}, "ok": True, "x": 0.123456}])
+    monkeypatch.setattr(DP, "_display", lambda *o: shown.extend(o))
+    DP.table([{"w": 1, "rank": {5, 6}, "ok": True, "x": 0.123456}])
     md = shown[0].data
     assert md.splitlines()[0] == "| w | rank | ok | x |" and "| 1 | 5, 6 | yes | $0.123$ |" in md
 
 
 def test_long_sums_are_broken_into_lines(monkeypatch):
     shown = []
-    monkeypatch.setattr(NB, "_display", lambda *o: shown.extend(o))
+    monkeypatch.setattr(DP, "_display", lambda *o: shown.extend(o))
     x, y, z = sp.symbols("x y z")
-    NB.show("s", x - y + z, per_line=1)
+    DP.show("s", x - y + z, per_line=1)
     assert r"\begin{aligned}s = {}& x\\ &- y\\ &+ z\end{aligned}" in shown[0].data
     for bad, kind in ((0, ValueError), (1.5, TypeError), (True, TypeError)):
         with pytest.raises(kind, match="per_line"):
-            NB.show("s", x, per_line=bad)
+            DP.show("s", x, per_line=bad)
 
 
 def test_a_quantity_that_does_not_exist_reads_undefined(monkeypatch):
     shown = []
-    monkeypatch.setattr(NB, "_display", lambda *o: shown.extend(o))
-    NB.table([{"u": np.array([np.nan, np.nan]), "v": np.array([0.8, np.nan]), "x": float("nan")}])
+    monkeypatch.setattr(DP, "_display", lambda *o: shown.extend(o))
+    DP.table([{"u": np.array([np.nan, np.nan]), "v": np.array([0.8, np.nan]), "x": float("nan")}])
     assert "| undefined | $0.8$, undefined | undefined |" in shown[0].data and "NaN" not in shown[0].data
-    NB.show("q", sp.Integer(0) / 0)
+    DP.show("q", sp.Integer(0) / 0)
     assert r"q = \text{undefined}" in shown[1].data
 
 
 def test_mod_pi_and_latex():
-    assert np.allclose(NB.mod_pi([np.pi + 0.25, -np.pi / 2, np.pi / 2]), [0.25, -np.pi / 2, -np.pi / 2])
-    assert NB.latex(sp.Matrix([[1, 2]])) == r"\begin{bmatrix}1 & 2\end{bmatrix}"
+    assert np.allclose(mod_pi([np.pi + 0.25, -np.pi / 2, np.pi / 2]), [0.25, -np.pi / 2, -np.pi / 2])
+    assert DP.latex(sp.Matrix([[1, 2]])) == r"\begin{bmatrix}1 & 2\end{bmatrix}"
 
 
 # ----------------------------------------------------------------------------------------------- exercise checks
@@ -226,14 +228,13 @@ def test_a_missing_answer_is_not_an_error(check):
 
 
 def test_offset_other_side_tells_the_sides_apart():
-    from edition import platform_wheels as PW
     from edition.checks.wheels import disk_velocity, k, planar
-    disk = disk_velocity(PW.theta_dot_i)
-    right = planar(disk.h_dot + (PW.phi_dot_i * k).cross(-S.d * disk.j3))
-    printed_side = planar(disk.h_dot + (PW.phi_dot_i * k).cross(S.d * disk.j3))
+    disk = disk_velocity(S.theta_dot_i)
+    right = planar(disk.h_dot + (S.phi_dot_i * k).cross(-S.d * disk.j3))
+    printed_side = planar(disk.h_dot + (S.phi_dot_i * k).cross(S.d * disk.j3))
     assert X.offset_other_side(right)
     assert "That is (9) itself" in X.offset_other_side(printed_side).message
-    assert "rolling term" in X.offset_other_side(right + sp.Matrix([S.r * PW.theta_dot_i, 0])).message
+    assert "rolling term" in X.offset_other_side(right + sp.Matrix([S.r * S.theta_dot_i, 0])).message
     assert "shape" in X.offset_other_side(sp.Matrix([1, 2, 3])).message
 
 
