@@ -17,7 +17,7 @@ import sympy as sp
 
 from wmr.analysis.lines import axles_through, circumcircle, pair_line_angle, planes_through
 from wmr.analysis.mobility import rank_F
-from wmr.analysis.singularities import (_require_square, classify, det_J, det_J_polynomial, exact_robot,
+from wmr.analysis.singularities import (classify, det_J, det_J_polynomial, exact_robot, require_square,
                                       exact_zero, numeric_robot)
 from wmr.model.platform import wrap_angle
 from wmr.model.robots import paper_robot
@@ -160,7 +160,7 @@ def families(robot=None, n=72, exact=True):
     """
     if robot is None:
         robot = paper_robot("centred")
-    _require_square(robot)
+    require_square(robot)
     num = numeric_robot(robot)
     exact_bot = exact_robot(robot)
     P = num.mount_points

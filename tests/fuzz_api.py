@@ -7,12 +7,14 @@ Each argument has a *role*; a role gives three kinds of values for a robot:
 
 * ``good``: ordinary valid values;
 * ``odd``: valid but awkward values (extreme magnitudes, Fractions, NumPy scalars, empty batches):
-  the call must return finite results or raise ``TypeError``/``ValueError`` (overflow detected);
+  the call must return finite results or raise an input error (overflow detected);
 * ``bad``: values the function cannot handle (wrong kind, wrong shape, NaN, infinity, SymPy
   ``oo``/``nan``/``zoo``/``I``, ``10**400``, ``np.longdouble('1e400')``, the class ``Robot``...):
-  the call must raise ``TypeError`` or ``ValueError``.
+  the call must raise an input error.
 
-A rejection's message must name the argument (as a word).  Outcomes: ``returned``, ``rejected``,
+An input error is the package's own :class:`wmr.errors.InputError` (an ``InputTypeError`` or
+``InputValueError``): a bare ``TypeError`` or ``ValueError`` (from inside NumPy, say) is a
+``wrong-exception``.  A rejection's message must name the argument (as a word).  Outcomes: ``returned``, ``rejected``,
 and the faults ``wrong-exception``, ``unnamed``, ``accepted-bad``, ``non-finite``, ``hang``.
 """
 from __future__ import annotations
@@ -28,9 +30,13 @@ import sympy as sp
 
 import wmr
 from wmr import swerve
-from wmr.analysis import design, linalg, lines, mobility, motion_kappa, overview, reference, singularities, steering
+from wmr.analysis import design, linalg, lines, mobility, motion_kappa, overview, reference, singularities, square, steering
 from wmr.analysis.sweep import Grid
-from wmr.model import backend, platform, tolerance
+from wmr.analysis.sweep import analyses as sweep_analyses
+from wmr.analysis.sweep import configurations as sweep_configurations
+from wmr.errors import InputError
+from wmr.model import backend, platform, tolerance, wheels
+from wmr.model.wheels import unsteered
 from wmr.model.backend import NUMERIC, SYMBOLIC
 
 x_sym = sp.Symbol("x", positive=True)
@@ -259,6 +265,7 @@ CASES = [
                                                             "condition_number", "gram")],
     Case("linalg.det", lambda A: linalg.det(A), (("A", "square"),)),
     Case("linalg.null_space", lambda A: linalg.null_space(A), (("A", "matrix1"),)),
+    Case("linalg.left_null_space", lambda A: linalg.left_null_space(A), (("A", "matrix1"),)),
     Case("linalg.pinv_columns", lambda A: linalg.pinv_columns(A), (("A", "matrix1"),)),
     Case("is_isotropic", lambda A: wmr.is_isotropic(A), (("A", "matrix"),)),
     # --- analyses
@@ -286,6 +293,13 @@ CASES = [
          robots=(0,)),
     Case("sweep", lambda robot, analysis, angles: wmr.sweep(robot, analysis, angles), (R, ("analysis", "analysis"),
                                                                                        ("angles", "angles"))),
+    Case("as_source", lambda robot, angles: sweep_configurations.as_source(angles, robot.w), (S, ("angles", "angles"))),
+    Case("count", lambda value: sweep_configurations.count("value", value), (("value", "count"),)),
+    Case("J_length", lambda robot, L: sweep_analyses.J_length(robot, L), (R, ("L", "L_opt"))),
+    Case("require_square", lambda robot: square.require_square(robot), (R,)),
+    Case("default_L", lambda robot, L: square.default_L(robot, L), (("robot", "any_robot"), ("L", "L_opt"))),
+    Case("wheel_kind", lambda kind: wheels.wheel_kind(kind), (("kind", "kind"),)),
+    Case("constant", lambda angle: unsteered.constant("angle", angle), (("angle", "angle"),)),
     # --- design study
     Case("worst_kappa", lambda robot, L: design.worst_kappa(robot, angles=Grid(3, 0.0, np.pi), L=L),
          (R, ("L", "L_opt")), allow="inf"),
@@ -399,6 +413,18 @@ NOT_FUZZED = {
     "Landscape": "result type of landscape", "MotionMap": "result type of motion_map",
     "load": "reads a file: every malformed case (one-line RobotFileError FILE:LINE: key) is tested in test_io.py",
     "Overview": "the result type of overview, fuzzed through it",
+    # the wheel kinds' declarations (what a kind's author writes), checked in tests/test_wheel_kinds.py
+    "WheelUnit": "the base of the wheel kinds, fuzzed through the five kinds (OffsetWheel, ...)",
+    "UnsteeredUnit": "as WheelUnit (FixedWheel, SwedishWheel)", "Joint": "a kind's declaration (test_wheel_kinds)",
+    "FileKey": "a kind's declaration; reading robot files is tested in test_io.py",
+    "Disc": "drawing data of WheelUnit.parts", "Link": "as Disc", "Rollers": "as Disc", "Pivot": "as Disc",
+    "wheel_kinds": "no arguments", "kinds_table": "no arguments",
+    "toml_string": "formatting of robot files, tested through dump and load in test_io.py", "toml_text": "as toml_string",
+    "kind_error": "builds the error every check raises (the checks are fuzzed)",
+    "finite_float": "the conversion under real and number (fuzzed through every check); callers check the kind first",
+    "rank_from_singular_values": "the rule rank applies to singular_values' output, fuzzed through rank",
+    "kappa_from_singular_values": "the rule condition_number applies, fuzzed through it",
+    "Partial": "the sweep's reduction, fuzzed through sweep", "finish": "as Partial",
 }
 
 
@@ -487,7 +513,7 @@ def outcome(case, args, bad, seconds=5):
         result = case.call(**args)
     except _Timeout:
         return "hang", ""
-    except (TypeError, ValueError) as e:
+    except InputError as e:                                 # the package's own input errors, nothing else
         msg = str(e)
         if not any(re.search(rf"(?<![A-Za-z_]){re.escape(a)}(?![A-Za-z_])", msg) for a in args):
             return "unnamed", f"{type(e).__name__}: {msg[:160]}"

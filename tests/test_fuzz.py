@@ -22,6 +22,7 @@ from hypothesis import strategies as st
 
 import fuzz_api as F
 import wmr
+from wmr.errors import InputValueError
 
 EXAMPLES = 8
 
@@ -89,8 +90,10 @@ def test_the_fuzzer_catches_faults(monkeypatch):
     assert F.outcome(case, {"x": 1.0}, ["x"])[0] == "accepted-bad"
     boom = F.Case("g", lambda x: [][1], (("x", "angle"),))
     assert F.outcome(boom, {"x": 1.0}, [])[0] == "wrong-exception"
-    vague = F.Case("h", lambda x: (_ for _ in ()).throw(ValueError("something is wrong")), (("x", "angle"),))
+    vague = F.Case("h", lambda x: (_ for _ in ()).throw(InputValueError("something is wrong")), (("x", "angle"),))
     assert F.outcome(vague, {"x": 1.0}, [])[0] == "unnamed"
+    builtin = F.Case("k", lambda x: (_ for _ in ()).throw(ValueError(f"x = {x} is bad")), (("x", "angle"),))
+    assert F.outcome(builtin, {"x": 1.0}, ["x"])[0] == "wrong-exception"        # not the package's own error
     monkeypatch.setattr(wmr.analysis.mobility, "rank_F", lambda robot, beta: float("nan"))
     assert F.outcome(F.CASES[[c.name for c in F.CASES].index("mobility")], {"robot": F.ROBOTS[0], "beta": [0.0] * 3}, [])[0] \
         == "non-finite"

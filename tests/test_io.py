@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 
 import wmr
-from wmr.io import KEYS, RobotFileError, dump, load, loads
+from wmr.io import RobotFileError, dump, load, loads, wheel_keys
 
 EXAMPLES = Path(__file__).resolve().parent.parent / "examples"
 
@@ -151,11 +151,11 @@ def test_malformed_file_gives_one_line(case, tmp_path):
 
 
 def test_missing_key_names_each_key_of_each_type():
-    for kind, keys in KEYS.items():
+    assert {"offset", "centred", "dual", "fixed", "swedish"} <= set(wheel_keys())
+    for kind, keys in wheel_keys().items():
         for key in keys[1:]:
-            lines = [f'type = "{kind}"', "position = [0.0, 0.0]", "radius = 0.1", "offset = 0.1", "half_separation = 0.1",
-                     "angle_deg = 10.0", "roller_deg = 45.0"]
-            lines = [s for s in lines if s.split(" = ")[0] in keys and not s.startswith(key + " ")]
+            lines = [f'type = "{kind}"'] + [f"{k} = " + ("[0.0, 0.0]" if k == "position" else "0.1") for k in keys[1:]]
+            lines = [s for s in lines if not s.startswith(key + " ")]
             with pytest.raises(RobotFileError, match=rf"^f\.toml:1: wheel\[1\]\.{key}: missing"):
                 loads("[[wheel]]\n" + "\n".join(lines) + "\n", "f.toml")
 

@@ -9,7 +9,7 @@ from hypothesis import strategies as st
 
 import wmr
 from wmr.analysis import lines, reference
-from wmr.model.wheels import UNIT_TYPES
+from wmr.model.wheels import wheel_kinds
 
 from conftest import K, angles, axle, coords, lengths, rolling_dir, seeds, transform_twist, vec3
 
@@ -102,8 +102,9 @@ def test_omni_and_mecanum_blocks_by_hand():
 
 
 def test_unit_types_and_steered():
-    assert {t.kind for t in UNIT_TYPES} == {"offset", "centred", "dual", "fixed", "swedish"}
-    assert wmr.FixedWheel in UNIT_TYPES and wmr.SwedishWheel in UNIT_TYPES
+    kinds = wheel_kinds()
+    assert {"offset", "centred", "dual", "fixed", "swedish"} <= set(kinds)
+    assert kinds["fixed"] is wmr.FixedWheel and kinds["swedish"] is wmr.SwedishWheel
     assert mixed().steered == (False, False, True, True)
     assert wmr.paper_robot("dual").steered == (True, True, True)
     bot = mixed()

@@ -1,6 +1,6 @@
 r"""wmr: kinematics of wheeled mobile robots, after Leow, Low & Loh (2002).
 
-A robot is a platform carried by wheel units (offset, centred or dual wheels) mounted at
+A robot is a platform carried by wheel units (offset, centred, dual, fixed or Swedish wheels) mounted at
 points :math:`P_i`.  The package builds the paper's matrices once, for SymPy (exact derivations)
 and NumPy (batched numbers): :math:`\mathbf J_1`, :math:`\mathbf J_{L1}`, :math:`\mathbf J_2`,
 :math:`\mathbf F = [\mathbf J_1\ -\mathbf J_2]`, :math:`\mathbf J = \mathbf J_{L1}^T\mathbf J_2`, and
@@ -33,7 +33,7 @@ from .analysis.sweep import sweep
 from .model.tolerance import TOL
 from .model.wheels import CentredWheel, DualWheel, FixedWheel, OffsetWheel, SwedishWheel
 from .io import dump, load
-from . import swerve
+from . import errors, swerve
 
 __all__ = [
     "Robot", "OffsetWheel", "CentredWheel", "DualWheel", "FixedWheel", "SwedishWheel", "paper_robot", "equilateral_mounts",
@@ -41,6 +41,6 @@ __all__ = [
     "admissible_twists", "condition_number", "is_isotropic", "characteristic_length",
     "forward", "inverse", "instantaneous_centre", "steering_angles", "centre_to_wheels",
     "simulate", "sweep", "campion_class", "TOL", "NUMERIC", "SYMBOLIC", "conventions", "load", "dump",
-    "swerve",
+    "swerve", "errors",
 ]
 __version__ = "0.1.0"

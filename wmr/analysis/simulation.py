@@ -14,6 +14,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..errors import InputTypeError, InputValueError
 from ..model import validation as V
 from .kinematics import forward
 
@@ -70,7 +71,7 @@ class Trajectory:
             X = c * p[..., 0] - s * p[..., 1] + XY[:, 0].reshape(shape)
             Y = s * p[..., 0] + c * p[..., 1] + XY[:, 1].reshape(shape)
         if not (np.isfinite(X).all() and np.isfinite(Y).all()):
-            raise ValueError(f"body_points are too large: their fixed-frame positions overflow "
+            raise InputValueError(f"body_points are too large: their fixed-frame positions overflow "
                              f"(largest |body_points| = {np.abs(p).max():.3g})")
         return np.stack([X, Y], axis=-1)
 
@@ -90,10 +91,10 @@ class Trajectory:
         """
         i = V.integer("i", i)
         if not -self.robot.w <= i < self.robot.w:
-            raise ValueError(f"i must be a unit index in 0..{self.robot.w - 1}, got {i}")
+            raise InputValueError(f"i must be a unit index in 0..{self.robot.w - 1}, got {i}")
         pts = self.robot.wheels[i].points(self.beta[:, i])
         if not isinstance(key, str) or key not in pts:
-            raise (TypeError if not isinstance(key, str) else ValueError)(
+            raise (InputTypeError if not isinstance(key, str) else InputValueError)(
                 f"key must be one of {sorted(pts)}, got {V.show(key)}")
         return self.world(pts[key])
 
@@ -101,7 +102,7 @@ class Trajectory:
 def _one(name, value, size):
     arr = V.finite_array(name, value, last=size)
     if arr.ndim != 1:
-        raise ValueError(f"{name} must be one vector of shape ({size},), got shape {arr.shape}")
+        raise InputValueError(f"{name} must be one vector of shape ({size},), got shape {arr.shape}")
     return arr
 
 
@@ -163,13 +164,13 @@ def simulate(robot, rates, beta0, t_end, dt, steer=None, pose0=(0.0, 0.0, 0.0), 
     with np.errstate(over="ignore"):
         steps = np.ceil(t_end / dt - 1e-9)
     if not steps <= max_steps:
-        raise ValueError(f"dt = {dt!r} needs {steps:.3g} steps to reach t_end = {t_end!r}, more than "
+        raise InputValueError(f"dt = {dt!r} needs {steps:.3g} steps to reach t_end = {t_end!r}, more than "
                          f"max_steps = {max_steps}: take a larger dt (or raise max_steps)")
     rate_fn = _as_input(rates, robot.n_rates, "rates")
     steer_fn = _as_input(np.zeros(robot.w) if steer is None else steer, robot.w, "steer")
 
     def overflow(t):
-        return ValueError(f"rates or steer are too large for this run: the pose or the steering angles overflow "
+        return InputValueError(f"rates or steer are too large for this run: the pose or the steering angles overflow "
                           f"at t = {t:.6g}")
 
     def deriv(t, pose, beta):
@@ -205,5 +206,5 @@ def simulate(robot, rates, beta0, t_end, dt, steer=None, pose0=(0.0, 0.0, 0.0), 
             beta[k + 1] = b + dt / 6 * (k1b + 2 * k2b + 2 * k3b + k4b)
         _, _, twist[n], slip[n] = deriv(ts[n], pose[n], beta[n])
     if not (np.isfinite(pose).all() and np.isfinite(beta).all() and np.isfinite(slip).all()):
-        raise ValueError(f"rates are too large for t_end = {t_end!r}: the pose overflows double precision")
+        raise InputValueError(f"rates are too large for t_end = {t_end!r}: the pose overflows double precision")
     return Trajectory(robot, ts, pose, beta, twist, slip)

@@ -100,10 +100,9 @@ def table(ov):
     if ov.dead_zone is not None:
         rows.append(("dead zone", f"radius {ov.dead_zone:.4g}: C's circle when the units are steered without driving "
                                   "(drift-free only for offset 0)"))
-    if any(k == "offset" for k in ov.kinds) and ov.dead_zone is None and all(k == "offset" for k in ov.kinds):
+    if ov.dead_zone is None and ov.dead_zones and all(z is not None for z in ov.dead_zones):
         rows.append(("dead zone", "none: the offsets differ, the locked units cannot be steered together"))
-    steered = any(k in ("centred", "dual", "offset") for k in ov.kinds)
-    if steered and not ov.singular:
+    if any(ov.steered) and not ov.singular:
         rows.append(("singular", "none found: rank J = 3 at every candidate"))
     for n, f in enumerate(ov.singular):
         beta = ", ".join(f"{math.degrees(b):.4g}" for b in f["beta"])

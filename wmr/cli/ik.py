@@ -57,8 +57,12 @@ def _wrap(a):
 
 
 def _nearest(robot, beta, current):
-    """Per unit, beta or beta + pi (the rate reversed), whichever is nearer the current angle (centred, dual units)."""
-    turnable = np.array([u.kind in ("centred", "dual") for u in robot.wheels])
+    """Per unit, beta or beta + pi (the rate reversed), whichever is nearer the current angle.
+
+    For steered units that roll in their wheel plane (centred and dual wheels): both angles put the
+    plane along the mount point's velocity.
+    """
+    turnable = np.array([u.steered and u.rolls_in_plane for u in robot.wheels])
     flip = turnable & (np.abs(_wrap(beta + np.pi - current)) < np.abs(_wrap(beta - current)))
     return _wrap(np.where(flip, beta + np.pi, beta))
 

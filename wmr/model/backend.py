@@ -11,6 +11,8 @@ from __future__ import annotations
 import numpy as np
 import sympy as sp
 
+from ..errors import InputTypeError
+
 __all__ = ["NumericBackend", "SymbolicBackend", "NUMERIC", "SYMBOLIC", "is_symbolic", "choose"]
 
 
@@ -158,6 +160,6 @@ def choose(*values, backend=None):
     """
     if backend is not None:
         if backend not in (NUMERIC, SYMBOLIC):
-            raise TypeError(f"backend must be wmr.model.backend.NUMERIC or SYMBOLIC, got {backend!r}")
+            raise InputTypeError(f"backend must be wmr.model.backend.NUMERIC or SYMBOLIC, got {backend!r}")
         return backend
     return SYMBOLIC if is_symbolic(*values) else NUMERIC

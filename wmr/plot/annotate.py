@@ -9,6 +9,7 @@ import numpy as np
 from matplotlib.lines import Line2D
 from matplotlib.patches import Arc, FancyArrowPatch
 
+from ..errors import InputValueError
 from ..model.backend import NUMERIC
 from ..model.platform import rotation
 from .style import DASHES, FONT_LABEL, FONT_SMALL, HALO, PALETTE, ROLE
@@ -373,5 +374,5 @@ def legend_handles(items):
             hs.append(Line2D([], [], color=c, marker=m, markersize=5, linestyle="none", label=text,
                              markerfacecolor="white" if how == "open" else c))
         else:
-            raise ValueError(f"legend item kind must be axle, plane, thin, path:, point:, marker: or open:, got {kind!r}")
+            raise InputValueError(f"legend item kind must be axle, plane, thin, path:, point:, marker: or open:, got {kind!r}")
     return hs

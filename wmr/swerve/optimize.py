@@ -29,6 +29,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..errors import InputValueError
 from ..model import validation as V
 from ..model.platform import wrap_angle
 from .modules import chassis_twist, module_commands, swerve_robot
@@ -209,7 +210,7 @@ def optimize_robot(robot, twist, current, samples=8):
     robot, cmd, cur = _targets(robot, twist, current)
     w = robot.w
     if w > MAX_MODULES:
-        raise ValueError(f"robot has {w} modules: optimize_robot enumerates 2^w patterns, at most "
+        raise InputValueError(f"robot has {w} modules: optimize_robot enumerates 2^w patterns, at most "
                          f"{MAX_MODULES} modules")
     samples = V.integer("samples", samples, minimum=1)
     flips = ((np.arange(2 ** w)[:, None] >> np.arange(w)) & 1).astype(bool)           # (P, w), P = 2^w

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ...errors import InputTypeError, InputValueError
 from ...model import validation as V
 from ...model.platform import line_angle
 from ...model.tolerance import TOL
@@ -64,10 +65,10 @@ def axle_lines(robot, beta):
 def _one(robot, beta, what):
     robot = V.numeric_robot(robot)
     if robot.w < 2:
-        raise ValueError(f"robot must have at least two wheel units for {what} (lines to meet), got {V.show(robot)}")
+        raise InputValueError(f"robot must have at least two wheel units for {what} (lines to meet), got {V.show(robot)}")
     beta = robot.effective_beta(beta)
     if beta.ndim != 1:
-        raise ValueError(f"beta must be one configuration of shape ({robot.w},) for {what}, got shape {beta.shape}")
+        raise InputValueError(f"beta must be one configuration of shape ({robot.w},) for {what}, got shape {beta.shape}")
     return beta
 
 
@@ -170,9 +171,9 @@ def pair_line_angle(robot, i, j):
     robot = V.numeric_robot(robot)
     for name, k in (("i", i), ("j", j)):
         if isinstance(k, bool) or not isinstance(k, (int, np.integer)):
-            raise TypeError(f"{name} must be a wheel number (int), got {k!r}")
+            raise InputTypeError(f"{name} must be a wheel number (int), got {k!r}")
         if not 1 <= k <= robot.w:
-            raise ValueError(f"{name} must be a wheel number in 1..{robot.w}, got {k!r}")
+            raise InputValueError(f"{name} must be a wheel number in 1..{robot.w}, got {k!r}")
     if i == j:
-        raise ValueError(f"i and j must be two different wheels, got i = j = {i}")
+        raise InputValueError(f"i and j must be two different wheels, got i = j = {i}")
     return float(planes_through(robot, robot.mount_points[j - 1])[i - 1])

@@ -11,11 +11,23 @@ import numpy as np
 
 from ...model import validation as V
 
-__all__ = ["ANALYSES"]
+__all__ = ["ANALYSES", "J_length"]
 
 
-def _J_length(robot, L):
+def J_length(robot, L):
+    r"""The characteristic length of the analyses of :math:`\mathbf J_{L1}`: ``L`` checked, or :func:`wmr.characteristic_length`.
+
+    Parameters
+    ----------
+    robot : Robot
+    L : float or None
+
+    Returns
+    -------
+    float
+    """
     from ..isotropy import characteristic_length
+    V.numeric_robot(robot)
     return characteristic_length(robot) if L is None else V.number("L", V.positive("L", L))
 
 
