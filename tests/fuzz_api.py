@@ -30,14 +30,24 @@ import sympy as sp
 
 import wmr
 from wmr import swerve
-from wmr.analysis import design, linalg, lines, mobility, motion_kappa, overview, reference, singularities, square, steering
+from wmr.analysis import (
+    design,
+    linalg,
+    lines,
+    mobility,
+    motion_kappa,
+    overview,
+    reference,
+    singularities,
+    square,
+)
 from wmr.analysis.sweep import Grid
 from wmr.analysis.sweep import analyses as sweep_analyses
 from wmr.analysis.sweep import configurations as sweep_configurations
 from wmr.errors import InputError
 from wmr.model import backend, platform, tolerance, wheels
-from wmr.model.wheels import unsteered
 from wmr.model.backend import NUMERIC, SYMBOLIC
+from wmr.model.wheels import unsteered
 
 x_sym = sp.Symbol("x", positive=True)
 RNG = np.random.default_rng(2002)
@@ -212,6 +222,13 @@ class Case:
     robots: tuple = ()           # which robots the roles are drawn for (default: all)
 
 
+def _attr(module, name):
+    """A call of ``module.name`` with the arguments by name (for the cases built in a loop)."""
+    def call(**arguments):
+        return getattr(module, name)(**arguments)
+    return call
+
+
 def _traj():
     return wmr.simulate(ROBOTS[0], [-1.0, -1.0, -1.0], [0.0, 0.0, 0.0], t_end=0.2, dt=0.1)
 
@@ -260,7 +277,7 @@ CASES = [
     Case("choose", lambda value, backend: backend_choose(value, backend), (("value", "anything"), ("backend", "backend_any"))),
     Case("near_zero", lambda x, scale: tolerance.near_zero(x, scale), (("x", "angles"), ("scale", "nonneg_any"))),
     # --- linear algebra
-    *[Case(f"linalg.{f}", (lambda f: lambda A: getattr(linalg, f)(A))(f), (("A", "matrix"),),
+    *[Case(f"linalg.{f}", _attr(linalg, f), (("A", "matrix"),),
            allow="inf" if f == "condition_number" else "") for f in ("singular_values", "column_norms", "rank", "nullity",
                                                             "condition_number", "gram")],
     Case("linalg.det", lambda A: linalg.det(A), (("A", "square"),)),
@@ -329,15 +346,15 @@ CASES = [
     Case("lines_concurrency", lambda points, directions: lines.lines_concurrency(points, directions),
          (("points", "pairs"), ("directions", "pairs"))),
     Case("circumcircle", lambda points: lines.circumcircle(points), (("points", "pairs"),)),
-    *[Case(f"lines.{f}", (lambda f: lambda robot, beta: getattr(lines, f)(robot, beta))(f), (R, B))
+    *[Case(f"lines.{f}", _attr(lines, f), (R, B))
       for f in ("wheel_plane_lines", "axle_lines")],
-    *[Case(f"lines.{f}", (lambda f: lambda robot, beta: getattr(lines, f)(robot, beta))(f), (R, ("beta", "beta1")))
+    *[Case(f"lines.{f}", _attr(lines, f), (R, ("beta", "beta1")))
       for f in ("concurrency_point", "axles_concurrency")],
     Case("planes_through", lambda robot, D: lines.planes_through(robot, D), (R, ("D", "pair"))),
     Case("axles_through", lambda robot, U: lines.axles_through(robot, U), (R, ("U", "pair"))),
     Case("pair_line_angle", lambda robot, i, j: lines.pair_line_angle(robot, i, j), (R, ("i", "wheel"), ("j", "wheel"))),
     Case("line_angle", lambda beta: lines.line_angle(beta), (("beta", "angles"),)),
-    *[Case(f"singularities.{f}", (lambda f: lambda robot, beta, L: getattr(singularities, f)(robot, beta, L))(f),
+    *[Case(f"singularities.{f}", _attr(singularities, f),
            (("robot", "robot3"), ("beta", "beta"), ("L", "L_opt")), robots=(0,))
       for f in ("det_J", "det_J_scale", "is_singular")],
     Case("classify", lambda robot, beta, L: singularities.classify(robot, beta, L),
@@ -349,12 +366,12 @@ CASES = [
     Case("exact_robot", lambda robot: singularities.exact_robot(robot), (("robot", "any_robot"),)),
     Case("numeric_robot", lambda robot: singularities.numeric_robot(robot), (R,)),
     # --- the dense reference
-    *[Case(f"reference.{f}", (lambda f: lambda robot, beta: getattr(reference, f)(robot, beta))(f), (R, B))
+    *[Case(f"reference.{f}", _attr(reference, f), (R, B))
       for f in ("J2", "F", "rank_F")],
     Case("reference.forward", lambda robot, beta, rates: reference.forward(robot, beta, rates), (R, B, ("rates", "rates"))),
     Case("reference.inverse", lambda robot, beta, twist: reference.inverse(robot, beta, twist), (R, B, T)),
     Case("reference.det", lambda A: reference.det(A), (("A", "square"),)),
-    *[Case(f"reference.{f}", (lambda f: lambda A: getattr(reference, f)(A))(f), (("A", "matrix"),),
+    *[Case(f"reference.{f}", _attr(reference, f), (("A", "matrix"),),
            allow="inf" if f == "condition_number" else "") for f in ("rank", "condition_number")],
     # --- swerve practice (wmr.swerve): centred-wheel robots
     *[Case(f"swerve.{c.name}", c.call, c.roles, robots=(0, 4)) for c in (
@@ -518,7 +535,7 @@ def outcome(case, args, bad, seconds=5):
         if not any(re.search(rf"(?<![A-Za-z_]){re.escape(a)}(?![A-Za-z_])", msg) for a in args):
             return "unnamed", f"{type(e).__name__}: {msg[:160]}"
         return "rejected", ""
-    except Exception as e:                                  # noqa: BLE001 - this is what we count
+    except Exception as e:
         if isinstance(e, AttributeError) and str(e).startswith("module 'wmr"):
             return "missing", str(e)                        # (measuring an older tree)
         return "wrong-exception", f"{type(e).__name__}: {str(e)[:160]}"

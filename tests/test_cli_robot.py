@@ -128,6 +128,31 @@ def test_bad_input_is_one_line(capsys, bad_file, argv, words):
     assert err.startswith(f"wmr {argv[0]}: ") and words in err and err.count("\n") == 1, err
 
 
+@pytest.mark.parametrize("error", [ValueError("a bug"), TypeError("another bug"), IndexError("and another")])
+def test_a_library_bug_is_not_called_bad_input(capsys, monkeypatch, error):
+    """A builtin exception from inside wmr (here a planted one) is a bug: traceback, a request to report, exit 1."""
+    def broken(*args, **kwargs):
+        raise error
+    monkeypatch.setattr(wmr, "steering_angles", broken)
+    code, out, err = _run(capsys, "ik", SWERVE, "--vx", "1")
+    assert code == 1 and out == ""
+    assert "Traceback (most recent call last)" in err and f"{type(error).__name__}: {error}" in err
+    assert err.rstrip().splitlines()[-1].startswith("wmr ik: internal error: this is a bug in wmr") and "report" in err
+
+
+def test_input_errors_are_the_package_s_own(capsys, monkeypatch):
+    """What the command line reports as bad input is an InputError (which is also a ValueError or TypeError)."""
+    from wmr.errors import InputError
+    with pytest.raises(InputError) as info:
+        wmr.load(ROOT / "examples" / "swerve4.toml").J1(L=-1.0)
+    assert isinstance(info.value, ValueError)
+    def bad(*args, **kwargs):
+        raise info.value
+    monkeypatch.setattr(wmr, "steering_angles", bad)
+    code, _, err = _run(capsys, "ik", SWERVE, "--vx", "1")
+    assert code == 2 and err == f"wmr ik: {info.value}\n"
+
+
 def test_ik_fixed_wheels(capsys):
     diff = str(ROOT / "examples" / "differential.toml")
     code, out, _ = _run(capsys, "ik", diff, "--vx", "0.5", "--omega", "1", "--json")

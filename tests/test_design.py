@@ -5,10 +5,10 @@ import numpy as np
 import pytest
 
 import wmr
+from edition import design_study as study
 from wmr.analysis import design as D
 from wmr.analysis import motion_kappa as MK
 from wmr.analysis.sweep import Grid
-from edition import design_study as study
 
 
 @pytest.fixture(scope="module")

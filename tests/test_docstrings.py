@@ -10,12 +10,12 @@ import importlib
 import inspect
 import pkgutil
 import re
-
 from pathlib import Path
 
 import pytest
 
 import wmr
+
 
 def _walk():
     """Every module of the package (walked, not listed by hand), except the ``__main__`` scripts."""

@@ -20,9 +20,10 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-import fuzz_api as F
 import wmr
 from wmr.errors import InputValueError
+
+import fuzz_api as F
 
 EXAMPLES = 8
 

@@ -12,8 +12,7 @@ from wmr.model.tolerance import TOL
 M = importlib.import_module("wmr.analysis.mobility")   # the module (wmr.mobility is the function)
 LA = importlib.import_module("wmr.analysis.linalg")
 
-from conftest import (random_twist, robots, same_subspace, seeds, steered_beta, transform_twist,
-                      twist_map, with_kind)
+from conftest import random_twist, robots, same_subspace, seeds, steered_beta, transform_twist, twist_map, with_kind
 
 
 # --- linear algebra ---------------------------------------------------------------------------

@@ -14,11 +14,12 @@ import json
 
 import numpy as np
 import pytest
-from conftest import ROOT
 
 import wmr
 from edition import figures as F
 from edition.figures import output
+
+from conftest import ROOT
 
 FIGURES = ROOT / "figures"
 #: the NumPy functions whose last bit differs between CPUs (vectorised implementations and libm)

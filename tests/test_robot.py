@@ -12,8 +12,15 @@ from hypothesis import strategies as st
 import wmr
 from edition import symbols as S
 
-from conftest import (check_J1_first_principles, check_J2_first_principles, check_offset_steer_only,
-                      check_positive_rolling, check_round_trip, robots, seeds)
+from conftest import (
+    check_J1_first_principles,
+    check_J2_first_principles,
+    check_offset_steer_only,
+    check_positive_rolling,
+    check_round_trip,
+    robots,
+    seeds,
+)
 
 
 @given(robots(), seeds, st.sampled_from([(), (4,), (2, 3)]))

@@ -11,12 +11,12 @@ import sympy as sp
 
 import edition.symbols
 import wmr
+from edition import families as catalogue
+from edition.verify import symbolic_equal
 from wmr.analysis import lines as ln
 from wmr.analysis import singularities as sg
-from edition import families as catalogue
 from wmr.model.platform import rotation
 from wmr.model.tolerance import TOL
-from edition.verify import symbolic_equal
 from wmr.model.wheels import CentredWheel
 
 DEG = np.pi / 180

@@ -3,7 +3,6 @@ import numpy as np
 import pytest
 
 import wmr
-from wmr import swerve
 from wmr.swerve import transient as T
 
 SQUARE = [(0.3, 0.3), (0.3, -0.3), (-0.3, 0.3), (-0.3, -0.3)]

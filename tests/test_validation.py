@@ -14,10 +14,10 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 import wmr
+from edition import verify
 from wmr.analysis import _batch
 from wmr.errors import InputTypeError, InputValueError
 from wmr.model import validation as V
-from edition import verify
 from wmr.model.tolerance import TOL, near_zero
 
 x = sp.Symbol("x", real=True)
@@ -218,8 +218,9 @@ def test_max_residual(n):
 
 
 # --- the failures quoted in issue 11, part 2 -----------------------------------------------------------
-import sympy as _sp  # noqa: E402  (kept local to this section)
 from fractions import Fraction  # noqa: E402
+
+import sympy as _sp  # noqa: E402  (kept local to this section)
 
 _BOT = wmr.paper_robot("centred", L=0.5, r=0.1)
 QUOTED = [   # (case, call, exception type, words the message must hold)

@@ -224,6 +224,7 @@ def test_sweep_and_drawing():
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
+
     from wmr.plot.robot import draw_robot
     fig, ax = plt.subplots()
     for b in (omni3(), mecanum4(), diff_castor(), bot):

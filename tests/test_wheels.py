@@ -8,8 +8,17 @@ from hypothesis import strategies as st
 import wmr
 from wmr.model.backend import SYMBOLIC
 
-from conftest import (angles, axle, coords, lengths, make_unit, rolling_dir, seeds,
-                      unit_mount_velocity, wheel_centre_velocity)
+from conftest import (
+    angles,
+    axle,
+    coords,
+    lengths,
+    make_unit,
+    rolling_dir,
+    seeds,
+    unit_mount_velocity,
+    wheel_centre_velocity,
+)
 
 UNITS = [
     wmr.OffsetWheel((0.3, -0.2), r=0.1, d=0.05),

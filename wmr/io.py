@@ -35,6 +35,7 @@ import os
 import re
 import tomllib
 from pathlib import Path
+from typing import NoReturn
 
 import numpy as np
 
@@ -78,7 +79,8 @@ class _Lines:
     """Where the keys are in the text: the line of each top-level key, wheel table and wheel key."""
 
     def __init__(self, text):
-        self.top, self.wheels = {}, []          # wheels: [(header line, {key: line})]
+        self.top: dict[str, int] = {}
+        self.wheels: list[tuple[int, dict[str, int]]] = []          # [(header line, {key: line})]
         where = self.top
         for n, line in enumerate(text.splitlines(), 1):
             if _WHEEL_HEADER.match(line):
@@ -201,7 +203,7 @@ def loads(text, source="<string>"):
         raise InputTypeError(f"source must be a file name (str), got {V.show(source)}")
     lines = _Lines(text)
 
-    def fail(line, key, reason):
+    def fail(line: int, key: str, reason: str) -> NoReturn:
         raise RobotFileError(source, line, key, reason)
 
     try:
@@ -213,8 +215,9 @@ def loads(text, source="<string>"):
         line = int(m.group(1)) if m else lines.end
         head = re.sub(r"\s*\(at .*\)$", "", msg) + (" (a key given twice?)" if "overwrite" in msg else "")
         where = f" at column {m.group(2)}" if m else " at the end of the file"
-        key = _KEY.match(text.splitlines()[line - 1]) if text.splitlines() else None
-        fail(line, key.group(1).strip("\"'") if key else "syntax", f"TOML syntax error: {head.lower()}{where}")
+        at = _KEY.match(text.splitlines()[line - 1]) if text.splitlines() else None
+        fail(line, at.group(1).strip("\"'") if at else "syntax", f"TOML syntax error: {head.lower()}{where}")
+    assert data is not None
     for key in data:
         if key not in _TOP_KEYS:
             fail(lines.of(None, key), key, "unknown key" + _suggest(key, _TOP_KEYS)
@@ -321,7 +324,8 @@ def dump(robot, path=None):
     if path is not None and not isinstance(path, (str, os.PathLike)):
         raise InputTypeError(f"path must be a file name (str or os.PathLike) or None, got {V.show(path)}")
     robot = robot.numeric()
-    out = ["# wmr robot file: lengths in metres, angles in degrees (schema: wmr.io)", f"name = {toml_string(robot.name)}"]
+    out = ["# wmr robot file: lengths in metres, angles in degrees (schema: wmr.io)",
+           f"name = {toml_string(robot.name)}"]
     kinds = wheel_kinds()
     for k, u in enumerate(robot.wheels, 1):
         if kinds.get(u.kind) is not type(u):
@@ -329,7 +333,8 @@ def dump(robot, path=None):
                                   f"registered wheel kind: robot files cannot describe it (kinds: {', '.join(kinds)})")
         out += ["", "[[wheel]]", f"type = {toml_string(u.kind)}"]
         out += [f"{key.name} = {_value(key.write(u))}" for key in u.file_keys()]
-        changed = [(j.name, j.driven) for j, default in zip(u.joints, u.JOINTS, strict=True) if j.driven != default.driven]
+        changed = [(j.name, j.driven) for j, default in zip(u.joints, u.JOINTS, strict=True)
+                   if j.driven != default.driven]
         if changed:
             out.append(f"{_DRIVEN} = {{" + ", ".join(f"{n} = {'true' if d else 'false'}" for n, d in changed) + "}")
     text = "\n".join(out) + "\n"

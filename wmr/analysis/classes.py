@@ -169,7 +169,7 @@ def campion_class(robot):
     # admissible twists of the fixed wheels, in dimensionless coordinates t_hat = t * scale
     N = null_space(Cf / scale, scale=np.ones(3)) if Cf.shape[0] else np.eye(3)
     rf = _rank(Cf, scale)
-    best = None
+    best: tuple | None = None
     for _ in range(_DRAWS):
         g, current = rng.normal(size=3), rng.uniform(-np.pi, np.pi, w)
         t = (N @ (N.T @ g)) / scale                      # projection onto N(C1f): any basis gives the same t
@@ -179,6 +179,7 @@ def campion_class(robot):
         dm, ds, rs = 3 - r_star, r_star - rf, _rank(Cs, scale)
         if best is None or (dm, -ds) < (best[0], -best[1]):
             best = (dm, ds, rs, t, beta)
+    assert best is not None                              # (_DRAWS >= 1)
     dm, ds, rs, t, beta = best
     standard = (dm, ds) in CLASS_NAMES and rf <= 1
     if standard:

@@ -45,7 +45,9 @@ def det_J_symbolic(robot, L=None):
 
 
 def plane_line_matrix(robot, beta, L=1, backend=None):
-    r"""The matrix :math:`\mathbf W` whose columns are the Plücker vectors :math:`[m_i/L,\ \mathbf j_i^T]^T` of the wheel-plane lines.
+    r"""The matrix :math:`\mathbf W` whose columns are the Plücker vectors of the wheel-plane lines.
+
+    Column i is :math:`[m_i/L,\ \mathbf j_i^T]^T`.
 
     :math:`m_i = \mathbf d_i^T\mathbf i_i = \mathbf d_i\times\mathbf j_i` is the moment of the line
     about C.  For three centred wheels :math:`\mathbf J = -\mathbf W\,\mathrm{diag}(r_i)`.
@@ -143,7 +145,9 @@ def characterisation(robot, L=None):
 
 
 def det_J_polynomial(robot, L=None):
-    r""":math:`\det\mathbf J` as a polynomial in :math:`c_i = \cos\beta_i`, :math:`s_i = \sin\beta_i` (degree 1 in each pair).
+    r""":math:`\det\mathbf J` as a polynomial in :math:`c_i = \cos\beta_i`, :math:`s_i = \sin\beta_i`.
+
+    Of degree 1 in each pair :math:`(c_i, s_i)`.
 
     Parameters
     ----------

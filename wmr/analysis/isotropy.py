@@ -68,5 +68,6 @@ def characteristic_length(robot):
     big = float(np.abs(d).max())                      # scaled first: no overflow at 1e300, no underflow at 1e-300
     L = big * float(np.sqrt(np.mean(np.sum((d / big) ** 2, axis=1)))) if big > 0 else 0.0
     if L == 0:
-        raise InputValueError(f"robot has all its mount points at C: no characteristic length exists (got L = 0): {V.show(robot)}")
+        raise InputValueError(f"robot has all its mount points at C: no characteristic length exists (got L = 0): "
+                              f"{V.show(robot)}")
     return L

@@ -166,7 +166,8 @@ def forward(robot, beta, rates):
     -----
     :math:`\mathbf J_1^+` is computed once per robot; the batch is processed in chunks on all
     cores, and :math:`\mathbf J_2` is never formed: unit :math:`i` contributes
-    :math:`\cos\beta_i\,\mathbf L_i\dot{\boldsymbol\theta}_i + \sin\beta_i\,\mathbf E\mathbf L_i\dot{\boldsymbol\theta}_i`.
+    :math:`\cos\beta_i\,\mathbf L_i\dot{\boldsymbol\theta}_i +
+    \sin\beta_i\,\mathbf E\mathbf L_i\dot{\boldsymbol\theta}_i`.
 
     Examples
     --------
@@ -218,8 +219,8 @@ def inverse(robot, beta, twist, beta_dot=None):
     beta_dot : array (..., w), optional
         Wanted steering rates of the units whose rates steer them (a dual wheel: its wheel-rate
         difference, the corrected (15); :meth:`~wmr.model.wheels.WheelUnit.steering_row`); default 0,
-        i.e. the unit keeps its angle on the platform.  Ignored for other units (offset wheels' steering rate follows from the twist; centred wheels
-        steer independently).
+        i.e. the unit keeps its angle on the platform.  Ignored for other units (offset wheels' steering
+        rate follows from the twist; centred wheels steer independently).
 
     Returns
     -------

@@ -213,7 +213,7 @@ def null_space(A, scale=None):
 
 
 def pinv_columns(A):
-    r"""Pseudo-inverse of one matrix, with its columns scaled as in :func:`rank`: :math:`\mathbf D^{-1}(\mathbf A\mathbf D^{-1})^+`.
+    r"""Pseudo-inverse with the columns scaled as in :func:`rank`: :math:`\mathbf D^{-1}(\mathbf A\mathbf D^{-1})^+`.
 
     Singular values of :math:`\mathbf A\mathbf D^{-1}` at most ``TOL`` times the largest are
     dropped (the rank rule).  For full column rank this is :math:`\mathbf A^+` whatever the units
@@ -272,7 +272,8 @@ def condition_number(A):
 
     Rank-deficient matrices (smallest singular value at most ``TOL * sigma_l``, i.e.
     :math:`\kappa \ge 1/\mathrm{TOL}`) get ``inf``, as (31) prescribes; the matrix is taken as
-    given (no column scaling: :math:`\kappa` is the paper's measure, made homogeneous by L).  Stacks of 3x3 matrices use the closed form of
+    given (no column scaling: :math:`\kappa` is the paper's measure, made homogeneous by L).  Stacks of 3x3
+    matrices use the closed form of
     :func:`wmr.analysis._closed.condition_number_3x3` (singular values from the eigenvalues of
     :math:`\mathbf A^T\mathbf A` and :math:`\det\mathbf A`) wherever its computed error bound is
     within ``16 eps kappa``, and the SVD for the other members; other sizes use the SVD.
@@ -294,7 +295,8 @@ def condition_number(A):
     """
     A = _as_stack(A)
     if min(A.shape[-2:]) == 0:
-        raise InputValueError(f"A must have at least one row and one column for a condition number, got shape {A.shape}")
+        raise InputValueError(f"A must have at least one row and one column for a condition number, "
+                              f"got shape {A.shape}")
     if A.shape[-2:] != (3, 3):
         return kappa_from_singular_values(singular_values(A))
     flat = A.reshape(-1, 3, 3)

@@ -12,7 +12,8 @@ kind, which a grid or a random sample would almost surely miss, so the minimum o
 found; its maximum is the generic value.
 
 Characteristic length.  With :math:`a = \sum_i\|\mathbf d_i\|^2`, :math:`\mathbf b = \sum_i\mathbf E\mathbf d_i`,
-(34) reads :math:`\mathbf J_{L1}^T\mathbf J_{L1} = \begin{bmatrix}a/L^2 & \mathbf b^T/L\\ \mathbf b/L & w\mathbf 1\end{bmatrix}`,
+(34) reads
+:math:`\mathbf J_{L1}^T\mathbf J_{L1} = \begin{bmatrix}a/L^2 & \mathbf b^T/L\\ \mathbf b/L & w\mathbf 1\end{bmatrix}`,
 whose eigenvalues are :math:`w` and :math:`\mu_\pm` with :math:`\mu_+ + \mu_- = a/L^2 + w`,
 :math:`\mu_+\mu_- = (a/L^2)(w - \|\mathbf b\|^2/a)`; :math:`\kappa^2 = \mu_+/\mu_-` is smallest at
 :math:`a/L^2 = w`, i.e. at :func:`wmr.characteristic_length` :math:`L^2 = a/w` wherever C is, where
@@ -201,7 +202,8 @@ def singular_families(robot, L=None):
     Returns
     -------
     list of dict
-        ``family`` (a short name), ``description`` (plain words), ``beta`` (w angles, radians), ``rank_J``, ``rank_F`` (ints); empty when
+        ``family`` (a short name), ``description`` (plain words), ``beta`` (w angles, radians), ``rank_J``,
+        ``rank_F`` (ints); empty when
         no candidate is singular (e.g. offset wheels, d > 0: J2 is invertible).
 
     Examples
@@ -335,7 +337,7 @@ def _advice(robot, L):
                    f"{', '.join(map(str, rank_deficient))} drive their mount point through one direction only); "
                    "no choice of lengths makes it isotropic")
     elif not j2:
-        hints = {}                                          # each unit's own advice, wheels grouped by it
+        hints: dict[str, list[str]] = {}                    # each unit's own advice, wheels grouped by it
         for k, u in enumerate(robot.wheels, 1):
             if u.isotropy_advice() is not None:
                 hints.setdefault(u.isotropy_advice(), []).append(str(k))

@@ -5,8 +5,10 @@ model's definitions, :math:`\mathbf J_2 = \mathrm{blockdiag}(\mathbf R(\beta_i)\
 :math:`\mathbf R(\beta)` of (11) written out with ``np.cos`` and ``np.sin`` and multiplied by the
 unit's local block, :math:`\mathbf F = [\mathbf J_1\ -\mathbf J_2]` (24),
 :math:`\mathbf J = \mathbf J_{L1}^T\mathbf J_2` (56); every rank and condition number comes from a
-full SVD with the rule of :mod:`wmr.model.tolerance` (ranks of the matrix with unit-length columns) (the same two lines of
-:mod:`wmr.analysis.linalg` that turn singular values into a rank or a condition number); kinematics are pseudo-inverse solutions
+full SVD with the rule of :mod:`wmr.model.tolerance` (ranks of the matrix with unit-length columns) (the same
+two lines of :mod:`wmr.analysis.linalg` that turn singular values into a rank or a condition number:
+:func:`~wmr.analysis.linalg.rank_from_singular_values`, :func:`~wmr.analysis.linalg.kappa_from_singular_values`);
+kinematics are pseudo-inverse solutions
 of the whole system (21).  The tests and ``make bench`` compare the batched kernels
 (:meth:`wmr.Robot.J`, :func:`wmr.rank_F`, :func:`wmr.analysis.linalg.det`,
 :func:`wmr.condition_number`, :func:`wmr.forward`, :func:`wmr.inverse`) with these on random,
@@ -90,7 +92,8 @@ def J(robot, beta, L=1.0):
 def _matrices(A, square=False):
     A = V.finite_array("A", A)
     if A.ndim < 2 or min(A.shape[-2:]) == 0 or (square and A.shape[-1] != A.shape[-2]):
-        raise InputValueError(f"A must have shape (..., m, n) with m, n >= 1{' and m = n' if square else ''}, got {A.shape}")
+        raise InputValueError(f"A must have shape (..., m, n) with m, n >= 1{' and m = n' if square else ''}, "
+                              f"got {A.shape}")
     return A
 
 
@@ -109,7 +112,9 @@ def _sv(A):
 
 
 def rank(A):
-    """Rank from a full SVD by the package's rule (columns divided by their lengths, then singular values above ``TOL * s_max``).
+    """Rank from a full SVD by the package's rule.
+
+    The columns are divided by their lengths, then the singular values above ``TOL * s_max`` counted.
 
     Parameters
     ----------

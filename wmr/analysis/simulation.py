@@ -16,6 +16,7 @@ import numpy as np
 
 from ..errors import InputTypeError, InputValueError
 from ..model import validation as V
+from ..model.robot import Robot
 from .kinematics import forward
 
 __all__ = ["Trajectory", "simulate", "MAX_STEPS"]
@@ -39,7 +40,7 @@ class Trajectory:
         Norm of the residual of (21): zero when the commanded rates were compatible.
     """
 
-    robot: object
+    robot: Robot
     t: np.ndarray
     pose: np.ndarray
     beta: np.ndarray
@@ -191,8 +192,8 @@ def simulate(robot, rates, beta0, t_end, dt, steer=None, pose0=(0.0, 0.0, 0.0), 
     n = max(1, int(steps))                          # steps of t_end / n <= dt: the run ends at t_end
     dt = t_end / n
     ts = np.arange(n + 1) * dt
-    pose = np.empty((n + 1, 3)); beta = np.empty((n + 1, robot.w))
-    twist = np.empty((n + 1, 3)); slip = np.empty(n + 1)
+    pose, beta = np.empty((n + 1, 3)), np.empty((n + 1, robot.w))
+    twist, slip = np.empty((n + 1, 3)), np.empty(n + 1)
     pose[0], beta[0] = pose0, beta0
     with np.errstate(over="ignore", invalid="ignore"):     # an overflow is detected and reported by deriv
         for k in range(n):

@@ -44,6 +44,7 @@ from ..errors import InputValueError
 from ..model import validation as V
 from ..model.platform import wrap_angle
 from ..model.tolerance import TOL, near_zero
+from .det_exact import characterisation, det_J_polynomial, det_J_symbolic, exact_zero, plane_line_matrix
 from .linalg import det
 from .lines import (
     AT_INFINITY,
@@ -58,7 +59,6 @@ from .lines import (
     pair_intersections,
     wheel_plane_lines,
 )
-from .det_exact import characterisation, det_J_polynomial, det_J_symbolic, exact_zero, plane_line_matrix
 from .mobility import rank_F
 from .square import default_L, exact_robot, require_square
 

@@ -60,7 +60,8 @@ def default_L(robot, L, numeric=True):
         L = V.positive("L", L)
         return V.number("L", L) if numeric else L
     if V.free_symbols(V.robot(robot)):
-        raise InputValueError(f"L must be given explicitly for a robot with symbolic mount points, got L = None for {V.show(robot)}")
+        raise InputValueError(f"L must be given explicitly for a robot with symbolic mount points, got L = None "
+                              f"for {V.show(robot)}")
     return characteristic_length(robot)
 
 

@@ -21,7 +21,8 @@ from ..model.tolerance import TOL
 from ._batch import for_chunks
 from .lines import AT_INFINITY, FINITE, STILL
 
-__all__ = ["InstantCentre", "instantaneous_centre", "steering_angles", "centre_to_wheels", "FINITE", "AT_INFINITY", "STILL"]
+__all__ = ["InstantCentre", "instantaneous_centre", "steering_angles", "centre_to_wheels", "FINITE", "AT_INFINITY",
+           "STILL"]
 
 
 @dataclass(frozen=True)
@@ -95,7 +96,8 @@ def instantaneous_centre(twist, length=None):
         sign = np.where(kind == FINITE, np.sign(psi), 1.0)
         direction = (sign / np.where(speed == 0, 1.0, speed))[..., None] * (Ec / m[..., None])
     if not np.isfinite(point[kind == FINITE]).all():
-        raise InputValueError("twist has a centre |c_dot| / |psi_dot| beyond double precision: give length (the robot's "
+        raise InputValueError("twist has a centre |c_dot| / |psi_dot| beyond double precision: give length (the "
+                              "robot's "
                          "size) to call it at infinity")
     point = np.where((kind == AT_INFINITY)[..., None], np.inf, point)
     point = np.where((kind == STILL)[..., None], np.nan, point)
@@ -172,7 +174,7 @@ def steering_angles(robot, twist, current=None):
 
 
 def centre_to_wheels(twist, d):
-    r""":math:`\mathbf u_i = \tfrac1{\dot\psi}\mathbf E\dot{\mathbf c} - \mathbf d_i` (64): vectors from the mount points to U.
+    r"""Vectors from the mount points to U, :math:`\mathbf u_i = \mathbf E\dot{\mathbf c}/\dot\psi - \mathbf d_i` (64).
 
     Parameters
     ----------

@@ -9,7 +9,7 @@ __all__ = ["number", "numbers", "fmt", "clean"]
 
 
 def number(text, option):
-    """``text`` as a finite float, or ValueError naming ``option``."""
+    """``text`` as a finite float, or an input error naming ``option``."""
     try:
         x = float(text)
     except (TypeError, ValueError):

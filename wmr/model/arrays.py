@@ -71,7 +71,8 @@ def finite_array(name, value, last=None):
         try:
             raw = np.asarray(value)
         except (ValueError, TypeError):
-            raise InputValueError(f"{name} must be a regular (not ragged) array of real numbers, got {show(value)}") from None
+            raise InputValueError(f"{name} must be a regular (not ragged) array of real numbers, "
+                                  f"got {show(value)}") from None
         kind = raw.dtype.kind
         if kind in "iuf":
             with np.errstate(over="ignore"):

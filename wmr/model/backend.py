@@ -32,8 +32,7 @@ class NumericBackend:
     @staticmethod
     def matrix(rows):
         """Build a ``(..., m, n)`` array from nested rows of broadcastable entries."""
-        flat = [np.asarray(e, dtype=float) for row in rows for e in row]
-        flat = np.broadcast_arrays(*flat)
+        flat = np.broadcast_arrays(*[np.asarray(e, dtype=float) for row in rows for e in row])
         m, n = len(rows), len(rows[0])
         return np.stack(flat, axis=-1).reshape(flat[0].shape + (m, n))
 
@@ -50,10 +49,9 @@ class NumericBackend:
     @staticmethod
     def broadcast_hstack(*Ms):
         """Concatenate along columns after broadcasting the batch axes (not the matrix axes)."""
-        Ms = [np.asarray(M, dtype=float) for M in Ms]
-        batch = np.broadcast_shapes(*[M.shape[:-2] for M in Ms])
-        Ms = [np.broadcast_to(M, batch + M.shape[-2:]) for M in Ms]
-        return np.concatenate(Ms, axis=-1)
+        arrays = [np.asarray(M, dtype=float) for M in Ms]
+        batch = np.broadcast_shapes(*[M.shape[:-2] for M in arrays])
+        return np.concatenate([np.broadcast_to(M, batch + M.shape[-2:]) for M in arrays], axis=-1)
 
     hstack = broadcast_hstack
 

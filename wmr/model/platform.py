@@ -26,7 +26,7 @@ __all__ = ["E", "rotation", "cos_sin", "rotated", "wrap_angle", "line_angle", "p
 
 
 def E(backend=NUMERIC):
-    r"""The 90-degree counter-clockwise rotation :math:`\mathbf E` of (3): :math:`\mathbf E\mathbf v = \mathbf k\times\mathbf v`.
+    r"""The counter-clockwise quarter turn :math:`\mathbf E` (3): :math:`\mathbf E\mathbf v = \mathbf k\times\mathbf v`.
 
     Parameters
     ----------
@@ -119,7 +119,7 @@ def cos_sin(beta, out=None):
 
 
 def rotated(beta, M, EM, axes=2, backend=None):
-    r""":math:`\mathbf R(\beta)\mathbf M = \cos\beta\,\mathbf M + \sin\beta\,\mathbf E\mathbf M`, batched over :math:`\beta`.
+    r"""A block rotated by :math:`\beta`: :math:`\cos\beta\,\mathbf M + \sin\beta\,\mathbf E\mathbf M`, batched.
 
     The rotation (11) is linear in :math:`(\cos\beta, \sin\beta)`:
     :math:`\mathbf R(\beta) = \cos\beta\,\mathbf 1 + \sin\beta\,\mathbf E`.  So a block turned by
@@ -213,7 +213,7 @@ def wrap_angle(angle):
 
 
 def line_angle(beta):
-    r"""The angle of a line through the origin, in :math:`(-\pi/2, \pi/2]`: ``beta`` and ``beta + pi`` give the same line.
+    r"""The angle of a line through the origin, in :math:`(-\pi/2, \pi/2]` (``beta`` and ``beta + pi``: one line).
 
     Parameters
     ----------
@@ -299,6 +299,7 @@ def point_velocity(twist, d):
     with np.errstate(over="ignore", invalid="ignore"):
         v = np.stack([t[..., 1] - t[..., 0] * d[..., 1], t[..., 2] + t[..., 0] * d[..., 0]], axis=-1)
     if not np.isfinite(v).all():
-        raise InputValueError(f"twist and d are too large: the velocity overflows (largest |twist| = {np.abs(t).max():.3g}, "
+        raise InputValueError(f"twist and d are too large: the velocity overflows "
+                              f"(largest |twist| = {np.abs(t).max():.3g}, "
                          f"|d| = {np.abs(d).max():.3g})")
     return v

@@ -81,7 +81,7 @@ class Robot:
 
     @property
     def steered(self):
-        """Tuple of w bools: True for units with a steering joint (offset, centred, dual); see :meth:`effective_beta`."""
+        """Tuple of w bools: True for units with a steering joint (offset, centred, dual); :meth:`effective_beta`."""
         return tuple(bool(u.steered) for u in self.wheels)
 
     @property
@@ -131,7 +131,7 @@ class Robot:
 
     @property
     def F_column_norms(self):
-        r"""Lengths of the columns of :math:`\mathbf F` (22)-(24), the same at every :math:`\boldsymbol\beta`: array (3 + n_rates,).
+        r"""Lengths of the columns of :math:`\mathbf F` (22)-(24), the same at every configuration: (3 + n_rates,).
 
         :math:`\sqrt{\sum_i\|\mathbf d_i\|^2}` (the :math:`\dot\psi` column, a length), :math:`\sqrt w`,
         :math:`\sqrt w` (:math:`\dot x, \dot y`), then the lengths of the units' local blocks'
@@ -176,7 +176,8 @@ class Robot:
     def _beta(self, beta, bk):
         if bk is SYMBOLIC:
             b = list(self.beta_symbols) if beta is None else list(A.symbolic_vector("beta", beta, self.w))
-            return [b[i] if u.constant_angle is None else sp.sympify(u.constant_angle) for i, u in enumerate(self.wheels)]
+            return [b[i] if u.constant_angle is None else sp.sympify(u.constant_angle)
+                    for i, u in enumerate(self.wheels)]
         return self.effective_beta(beta)
 
     def J1(self, L=1, backend=None):

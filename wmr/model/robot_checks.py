@@ -30,7 +30,7 @@ def robot(value, name="robot"):
     >>> robot(Robot)
     Traceback (most recent call last):
         ...
-    wmr.errors.InputTypeError: robot must be a wmr.Robot instance, got the class Robot itself (build one, e.g. wmr.Robot([...]) or wmr.paper_robot())
+    wmr.errors.InputTypeError: robot must be a wmr.Robot instance, got the class Robot itself (build one, ...)
     """
     if isinstance(value, Robot):
         return value

@@ -106,7 +106,8 @@ def near_zero(x, scale=1.0):
     x = np.abs(finite_array("x", x))
     scale = finite_array("scale", scale)
     if np.any(scale < 0):
-        raise InputValueError(f"scale must be a size (>= 0), got negative values {scale[scale < 0].ravel()[:3].tolist()}")
+        raise InputValueError(f"scale must be a size (>= 0), got negative values "
+                              f"{scale[scale < 0].ravel()[:3].tolist()}")
     try:
         return x <= TOL * scale
     except ValueError:

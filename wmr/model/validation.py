@@ -22,8 +22,19 @@ Examples
 from __future__ import annotations
 
 from .arrays import batch_shape, finite_array, symbolic_matrix, symbolic_vector
-from .checks import (finite_float, flag, integer, kind_error, nonnegative, number, optional_text, point, positive,
-                     real, show)
+from .checks import (
+                     finite_float,
+                     flag,
+                     integer,
+                     kind_error,
+                     nonnegative,
+                     number,
+                     optional_text,
+                     point,
+                     positive,
+                     real,
+                     show,
+)
 from .robot_checks import free_symbols, numeric_robot, robot
 
 __all__ = ["real", "number", "positive", "nonnegative", "point", "flag", "optional_text", "integer", "show",

@@ -101,7 +101,7 @@ def robot_geometry(robot, beta, pose=(0.0, 0.0, 0.0)):
 
 
 def platform_radius(robot):
-    r"""Radius of the platform disc: a little beyond the farthest mount point, :math:`\max_i\|\mathbf d_i\| + 0.9\max_i r_i`.
+    r"""Radius of the platform disc, beyond the farthest mount point: :math:`\max_i\|\mathbf d_i\| + 0.9\max_i r_i`.
 
     Parameters
     ----------

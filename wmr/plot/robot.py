@@ -172,7 +172,8 @@ def draw_unit(ax, unit, beta, pose=(0.0, 0.0, 0.0), *, ghost=False, zorder=4.0, 
         elif isinstance(part, Pivot):
             draw_pivot(ax, to_world(pose, part.point), 0.16 * part.r, ghost=ghost, zorder=zorder + 1)
         else:
-            raise InputTypeError(f"unit.parts() must give Disc, Link, Rollers or Pivot parts, got {type(part).__name__}")
+            raise InputTypeError(f"unit.parts() must give Disc, Link, Rollers or Pivot parts, "
+                                 f"got {type(part).__name__}")
     return to_world(pose, pts["P"]), to_world(pose, pts["H"])
 
 

@@ -67,7 +67,8 @@ def desaturation_scale(robot, twist, max_speed):
         peak = np.hypot(px, py).max(axis=-1) * m[..., 0]
         k = np.where(peak > max_speed, max_speed / np.where(peak > 0, peak, 1.0), 1.0)
     if not np.isfinite(k).all():
-        raise InputValueError(f"twist is too large: the module speeds overflow (largest |twist| = {np.abs(t).max():.3g})")
+        raise InputValueError(f"twist is too large: the module speeds overflow "
+                              f"(largest |twist| = {np.abs(t).max():.3g})")
     return k
 
 
@@ -131,7 +132,10 @@ def cosine_compensate(speed, beta, target):
 
 
 def _coefficients(theta):
-    r""":math:`A = \sin\theta/\theta`, :math:`B = (1-\cos\theta)/\theta = \sin(\theta/2)\,\mathrm{sinc}(\theta/2)`: exact at 0."""
+    r""":math:`A = \sin\theta/\theta` and :math:`B = (1-\cos\theta)/\theta = \sin(\theta/2)\,\mathrm{sinc}(\theta/2)`.
+
+    Exact at 0.
+    """
     return np.sinc(theta / np.pi), np.sin(theta / 2) * np.sinc(theta / (2 * np.pi))
 
 
@@ -149,7 +153,8 @@ def se2_exp(twist, dt=1.0):
     -------
     numpy.ndarray (..., 3)
         :math:`[\Delta\psi, \Delta x, \Delta y]` in the body frame at the start:
-        :math:`\Delta\psi = \dot\psi\,\Delta t`, :math:`\Delta\mathbf c = \mathbf V(\Delta\psi)\dot{\mathbf c}\,\Delta t`.
+        :math:`\Delta\psi = \dot\psi\,\Delta t`,
+        :math:`\Delta\mathbf c = \mathbf V(\Delta\psi)\dot{\mathbf c}\,\Delta t`.
 
     Examples
     --------
@@ -163,7 +168,8 @@ def se2_exp(twist, dt=1.0):
         A, B = _coefficients(g[..., 0])
         out = np.stack([g[..., 0], A * g[..., 1] - B * g[..., 2], B * g[..., 1] + A * g[..., 2]], axis=-1)
     if not np.isfinite(out).all():
-        raise InputValueError(f"twist and dt are too large: the pose overflows (largest |twist| = {np.abs(t).max():.3g}, "
+        raise InputValueError(f"twist and dt are too large: the pose overflows "
+                              f"(largest |twist| = {np.abs(t).max():.3g}, "
                          f"dt = {dt!r})")
     return out
 

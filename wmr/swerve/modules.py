@@ -89,7 +89,7 @@ def swerve_robot(robot):
     >>> swerve_robot(wmr.paper_robot("offset")).w
     Traceback (most recent call last):
         ...
-    wmr.errors.InputValueError: robot must have centred wheels only (swerve modules), got units ['offset', 'offset', 'offset']
+    wmr.errors.InputValueError: robot must have centred wheels only (swerve modules), got units ['offset', ...]
     """
     robot = V.numeric_robot(robot)
     if not all(u.steered and u.rolls_in_plane and u.n_rates == 1 for u in robot.wheels):

@@ -195,7 +195,8 @@ def landscape(n=41, m=41, moved=(0.2, 1.2)):
     km = worst_kappa_designs([WheelDesign(shifted, q) for q in ratios], beta)
     x, y = np.linspace(-1.4, 2.0, m), np.linspace(-1.2, 2.2, m)
     X, Y = np.meshgrid(x, y)
-    designs = [WheelDesign(np.array([paper.mounts[0], (a, b), paper.mounts[2]]), 1.0) for a, b in zip(X.ravel(), Y.ravel())]
+    designs = [WheelDesign(np.array([paper.mounts[0], (a, b), paper.mounts[2]]), 1.0)
+               for a, b in zip(X.ravel(), Y.ravel())]
     K = worst_kappa_designs(designs, beta).reshape(m, m)
     return Landscape(ratios=ratios, kappa_paper=kp, kappa_moved=km, moved=moved, x=x, y=y, kappa_map=K,
                      mounts=paper.mounts)

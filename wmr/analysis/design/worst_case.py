@@ -215,7 +215,9 @@ class WheelDesign:
 
 
 def equilateral_design(ratio=1.0):
-    r"""Three offset wheels at the vertices of an equilateral triangle centred at C, :math:`|\mathbf d_i| = r = 1`, :math:`d/r` = ``ratio``.
+    r"""Three offset wheels at the vertices of an equilateral triangle centred at C.
+
+    :math:`|\mathbf d_i| = r = 1` and :math:`d/r` = ``ratio``.
 
     With ``ratio = 1`` this is the answer of the paper ((37), (38) and (46)), in its numbering
     (:func:`wmr.equilateral_mounts`).

@@ -95,7 +95,8 @@ def pair_intersections(points, directions):
     points = V.finite_array("points", points, last=2)
     directions = V.finite_array("directions", directions, last=2)
     if points.ndim != 2 or points.shape != directions.shape:
-        raise InputValueError(f"points and directions must both have shape (w, 2), got {points.shape} and {directions.shape}")
+        raise InputValueError(f"points and directions must both have shape (w, 2), got {points.shape} and "
+                              f"{directions.shape}")
     if not np.all(np.any(directions != 0, axis=-1)):
         raise InputValueError(f"directions must be non-zero vectors, got {V.show(directions)}")
     out = {}

@@ -1,4 +1,4 @@
-r"""A robot's lines: the axle and wheel-plane lines at steering angles, where they meet, and the angles that put them through a point.
+r"""A robot's lines: axle and wheel-plane lines, where they meet, and the angles that put them through a point.
 
 Part of :mod:`wmr.analysis.lines`.
 """
@@ -65,10 +65,12 @@ def axle_lines(robot, beta):
 def _one(robot, beta, what):
     robot = V.numeric_robot(robot)
     if robot.w < 2:
-        raise InputValueError(f"robot must have at least two wheel units for {what} (lines to meet), got {V.show(robot)}")
+        raise InputValueError(f"robot must have at least two wheel units for {what} (lines to meet), "
+                              f"got {V.show(robot)}")
     beta = robot.effective_beta(beta)
     if beta.ndim != 1:
-        raise InputValueError(f"beta must be one configuration of shape ({robot.w},) for {what}, got shape {beta.shape}")
+        raise InputValueError(f"beta must be one configuration of shape ({robot.w},) for {what}, "
+                              f"got shape {beta.shape}")
     return beta
 
 
@@ -156,7 +158,9 @@ def _at(v, robot, X):
 
 
 def pair_line_angle(robot, i, j):
-    r"""The steering angle (in :math:`(-\pi/2,\pi/2]`) that puts the plane of wheel i on the line :math:`P_iP_j` (1-based).
+    r"""The steering angle in :math:`(-\pi/2,\pi/2]` that puts the plane of wheel i on the line :math:`P_iP_j`.
+
+    Wheels are numbered from 1.
 
     Parameters
     ----------

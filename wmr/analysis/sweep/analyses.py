@@ -5,7 +5,9 @@ one value per configuration (shape ``(k,)``) with the batched kernels.
 """
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
@@ -15,7 +17,9 @@ __all__ = ["ANALYSES", "J_length"]
 
 
 def J_length(robot, L):
-    r"""The characteristic length of the analyses of :math:`\mathbf J_{L1}`: ``L`` checked, or :func:`wmr.characteristic_length`.
+    r"""The characteristic length of the analyses of :math:`\mathbf J_{L1}`.
+
+    ``L`` checked, or :func:`wmr.characteristic_length` when None.
 
     Parameters
     ----------
@@ -59,7 +63,7 @@ def _kappa_JL1(robot, beta, L):
 @dataclass(frozen=True)
 class _Analysis:
     title: str
-    evaluate: object          # (robot, beta (k, w), L) -> (k,)
+    evaluate: Callable[..., Any]      # (robot, beta (k, w), L) -> (k,)
     integer: bool
     worst: str                # "min", "max" or "min_abs"
     uses_L: bool = False

@@ -23,12 +23,15 @@ QUANTILES = (0.0, 0.01, 0.05, 0.5, 0.95, 0.99, 1.0)
 CHUNK = 1 << 18
 
 
-def _evaluate(robot, name, source, w, L, keep, start, stop, threads):
-    """Evaluate analysis ``name`` on configurations ``start .. stop-1``: a :class:`Partial`.
+def _evaluate(task, start, stop, threads):
+    """Evaluate the analysis of ``task`` on configurations ``start .. stop-1``: a :class:`Partial`.
+
+    ``task`` is ``(robot, analysis name, source, w, L, keep)``.
 
     Runs in this process or on a Dask worker; ``threads`` limits the kernels' threads.
     """
     from .._batch import limit_threads
+    robot, name, source, w, L, keep = task
     an = ANALYSES[name]
     beta = source.configurations(w, start, stop)
     with limit_threads(threads):
@@ -137,7 +140,7 @@ def _run_local(bounds, total, progress, client, *task):
     """Evaluate the chunks ``bounds`` one after the other in this process; the merged :class:`Partial`."""
     result, done = Partial(), 0
     for a, b in bounds:
-        result.merge(_evaluate(*task, a, b, None))
+        result.merge(_evaluate(task, a, b, None))
         done += b - a
         if progress is not None:
             progress(done, total)
@@ -148,7 +151,7 @@ def _run_dask(bounds, total, progress, client, *task):
     """Evaluate the chunks on a Dask cluster (one kernel thread per task), merged as they finish."""
     from dask.distributed import as_completed
     n = len(bounds)
-    futures = client.map(_evaluate, *[[arg] * n for arg in task], [a for a, _ in bounds], [b for _, b in bounds],
+    futures = client.map(_evaluate, [task] * n, [a for a, _ in bounds], [b for _, b in bounds],
                          [1] * n, pure=False)
     result, done = Partial(), 0
     for fut in as_completed(futures):

@@ -40,21 +40,19 @@ from __future__ import annotations
 import importlib
 import pkgutil
 
-# isort: off  (the paper's kinds first, in the order the messages list the kinds)
-from .offset import OffsetWheel
 from .centred import CentredWheel
 from .dual import DualWheel
 from .fixed import FixedWheel
-from .swedish import SwedishWheel
-# isort: on
 from .joints import JOINT_KINDS, Joint
+from .offset import OffsetWheel
+from .swedish import SwedishWheel
 from .unit import WheelUnit, wheel_kind, wheel_kinds
 
 __all__ = ["WheelUnit", "Joint", "JOINT_KINDS", "OffsetWheel", "CentredWheel", "DualWheel", "FixedWheel",
            "SwedishWheel", "wheel_kinds", "wheel_kind", "kinds_table"]
 
 # a kind is registered by being defined: import every module of this package, so that a new module
-# is all a new kind needs (the five above first, in the order of the messages that list the kinds)
+# is all a new kind needs
 for _info in pkgutil.iter_modules(__path__):
     importlib.import_module(f"{__name__}.{_info.name}")
 
@@ -69,8 +67,8 @@ def kinds_table():
     Examples
     --------
     >>> [line.split()[0] for line in kinds_table().splitlines()[3:8]]
-    ['``offset``', '``centred``', '``dual``', '``fixed``', '``swedish``']
-    >>> print(kinds_table().splitlines()[5].split("  ")[-1])      # a dual wheel's rates
+    ['``centred``', '``dual``', '``fixed``', '``offset``', '``swedish``']
+    >>> print(kinds_table().splitlines()[4].split("  ")[-1])      # a dual wheel's rates
     :math:`\dot\theta_{i1},\ \dot\theta_{i2}`
     """
     rows = [("kind", "class", "joints (default actuation)", r"rates :math:`\dot{\boldsymbol\theta}_i`")]

@@ -107,7 +107,7 @@ class DualWheel(WheelUnit):
         return self._finite_rate(-(self.r / (2 * self.b)) * (rates[..., 0] - rates[..., 1]) - psi_dot, rates)
 
     def steering_row(self):
-        r"""Corrected (15): :math:`\mathbf c = [-\tfrac{r}{2b}\ \ \tfrac{r}{2b}]`, the rate difference that turns the unit.
+        r"""Corrected (15): the rate difference :math:`\mathbf c = [-\tfrac{r}{2b}\ \ \tfrac{r}{2b}]` turns the unit.
 
         Returns
         -------

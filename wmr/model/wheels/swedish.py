@@ -118,7 +118,9 @@ class SwedishWheel(UnsteeredUnit):
         object.__setattr__(self, "roller", g)
 
     def local_block(self, backend=NUMERIC):
-        r""":math:`\mathbf L_i = \begin{bmatrix}0 & r\sin\gamma\\ -r & -r\cos\gamma\end{bmatrix}`, columns :math:`(\dot\theta_i, \dot\sigma_i)`.
+        r"""The local block :math:`\mathbf L_i = \begin{bmatrix}0 & r\sin\gamma\\ -r & -r\cos\gamma\end{bmatrix}`.
+
+        Its columns are those of :math:`\dot\theta_i` and :math:`\dot\sigma_i`.
 
         Parameters
         ----------

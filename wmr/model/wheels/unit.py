@@ -55,7 +55,7 @@ _KINDS: dict[str, type[WheelUnit]] = {}
 
 
 def wheel_kinds() -> dict[str, type[WheelUnit]]:
-    """Every registered wheel kind: ``{kind: class}``, in the order they were defined.
+    """Every registered wheel kind: ``{kind: class}``, by name (the order in which messages list them).
 
     Returns
     -------
@@ -63,10 +63,10 @@ def wheel_kinds() -> dict[str, type[WheelUnit]]:
 
     Examples
     --------
-    >>> sorted(wheel_kinds())[:3]
+    >>> list(wheel_kinds())[:3]
     ['centred', 'dual', 'fixed']
     """
-    return dict(_KINDS)
+    return dict(sorted(_KINDS.items()))
 
 
 def wheel_kind(name: str) -> type[WheelUnit]:
@@ -91,10 +91,10 @@ def wheel_kind(name: str) -> type[WheelUnit]:
     wmr.errors.InputValueError: kind must be one of ..., got 'centered' (did you mean 'centred'?)
     """
     if not isinstance(name, str):
-        raise C.kind_error("kind", name, f"a wheel kind ({', '.join(_KINDS)})")
+        raise C.kind_error("kind", name, f"a wheel kind ({', '.join(sorted(_KINDS))})")
     if name not in _KINDS:
-        close = difflib.get_close_matches(name, list(_KINDS), n=1)
-        raise InputValueError(f"kind must be one of {', '.join(_KINDS)}, got {name!r}"
+        close = difflib.get_close_matches(name, sorted(_KINDS), n=1)
+        raise InputValueError(f"kind must be one of {', '.join(sorted(_KINDS))}, got {name!r}"
                               + (f" (did you mean {close[0]!r}?)" if close else ""))
     return _KINDS[name]
 
@@ -157,9 +157,10 @@ class WheelUnit:
         if not self.is_symbolic:
             with np.errstate(over="ignore", invalid="ignore"):
                 L, EL = (np.asarray(m, dtype=float) for m in self.block_terms(NUMERIC))
-                if not np.isfinite(2 * np.abs(L) + 2 * np.abs(EL)).all() or not np.isfinite(4 * np.abs(self.position)).all():
-                    raise InputValueError(f"{type(self).__name__} has lengths too large for double-precision kinematics "
-                                          f"(R(beta) L_i would overflow): {C.show(self)}")
+                ok = np.isfinite(2 * np.abs(L) + 2 * np.abs(EL)).all() and np.isfinite(4 * np.abs(self.position)).all()
+            if not ok:
+                raise InputValueError(f"{type(self).__name__} has lengths too large for double-precision "
+                                      f"kinematics (R(beta) L_i would overflow): {C.show(self)}")
 
     def _validate(self) -> None:
         """Check and convert the kind's own fields (a kind with fields of its own extends this)."""
@@ -334,7 +335,7 @@ class WheelUnit:
 
     # --- the block of J2 -------------------------------------------------------------------------
     def local_block(self, backend=NUMERIC):
-        r"""The unit's constant local block :math:`\mathbf L_i` (its block of :math:`\mathbf J_2` at :math:`\beta_i = 0`).
+        r"""The unit's constant local block :math:`\mathbf L_i` (its block of :math:`\mathbf J_2` at :math:`\beta = 0`).
 
         Parameters
         ----------
@@ -373,7 +374,8 @@ class WheelUnit:
         bk = choose(beta, *self._values(), backend=backend)
         if bk is NUMERIC:
             beta = A.finite_array("beta", beta)
-        return rotated(beta, *self.block_terms(bk), backend=bk)      # (11): R(beta) L = cos L + sin E L
+        L, EL = self.block_terms(bk)
+        return rotated(beta, L, EL, backend=bk)                     # (11): R(beta) L = cos L + sin E L
 
     def block_terms(self, backend=NUMERIC):
         r"""The constant pair :math:`(\mathbf L_i, \mathbf E\mathbf L_i)` with
@@ -424,7 +426,7 @@ class WheelUnit:
         return self._points(P, i_dir, j_dir)
 
     def _points(self, P, i_dir, j_dir):
-        """The unit's points from :math:`P_i` and the axle and rolling directions (a kind with other points overrides)."""
+        """The unit's points from :math:`P_i` and its axle and rolling directions (kinds with others override this)."""
         return {"P": P, "H": P, "wheels": P[..., None, :], "i": i_dir, "j": j_dir}
 
     def parts(self, beta):

@@ -15,6 +15,7 @@ steering joint is ignored and its own ``angle`` used (:meth:`wmr.Robot.effective
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
+from typing import ClassVar
 
 import numpy as np
 import sympy as sp
@@ -70,7 +71,8 @@ class UnsteeredUnit(WheelUnit):
 
     angle: float
     #: the angle, written in degrees in a robot file
-    FILE_KEYS = (FileKey("angle_deg", "angle", "the steering angle in degrees", degrees=True),)
+    FILE_KEYS: ClassVar[tuple[FileKey, ...]] = (FileKey("angle_deg", "angle", "the steering angle in degrees",
+                                                        degrees=True),)
 
     def _validate(self):
         super()._validate()
@@ -82,7 +84,7 @@ class UnsteeredUnit(WheelUnit):
         return self.angle
 
     def remounted(self, position, turn):
-        """The same unit seen from a body frame turned by ``turn``: mounted at ``position``, ``angle`` shifted by ``-turn``.
+        """The same unit seen from a body frame turned by ``turn``: at ``position``, ``angle`` shifted by ``-turn``.
 
         Parameters
         ----------
@@ -144,7 +146,8 @@ class UnsteeredUnit(WheelUnit):
         else:
             C.real("beta", beta)
             angle = self.angle
-        return rotated(angle, *self.block_terms(bk), backend=bk)
+        L, EL = self.block_terms(bk)
+        return rotated(angle, L, EL, backend=bk)
 
     def points(self, beta):
         r"""Points of the unit in the body frame, at its own angle (``beta`` sets the batch shape only).
