@@ -47,7 +47,7 @@ from wmr.analysis.sweep import configurations as sweep_configurations
 from wmr.errors import InputError
 from wmr.model import backend, platform, tolerance, wheels
 from wmr.model.backend import NUMERIC, SYMBOLIC
-from wmr.model.wheels import unsteered
+from wmr.model.wheels import joints, unsteered
 
 x_sym = sp.Symbol("x", positive=True)
 RNG = np.random.default_rng(2002)
@@ -206,6 +206,9 @@ def _role(name, bot):
         return [Sample(50, seed=1), RNG.uniform(-3, 3, (20, w))], [], [None, "grid", np.zeros((5, w + 1)), 3]
     if name == "key":
         return ["P", "H", "wheels", "i", "j"], [], ["Q", 3, None]
+    if name == "driven":                    # the actuation of a dual wheel's three joints
+        return ([None, {"swivel": True}, {}, (False, True, True), [True, True, False], {"drive1": np.True_}], [],
+                [{"steer": True}, {"drive1": 1}, (True, True), "swivel", 3, {"swivel": None}, [True] * 4, [1, 0, 1]])
     if name == "index":
         return [0, w - 1], [], [w, -w - 1, 1.5, "0", None, True]
     raise KeyError(name)
@@ -317,6 +320,8 @@ CASES = [
     Case("default_L", lambda robot, L: square.default_L(robot, L), (("robot", "any_robot"), ("L", "L_opt"))),
     Case("wheel_kind", lambda kind: wheels.wheel_kind(kind), (("kind", "kind"),)),
     Case("constant", lambda angle: unsteered.constant("angle", angle), (("angle", "angle"),)),
+    Case("actuation", lambda driven: joints.actuation(wmr.DualWheel.JOINTS, driven, "DualWheel"),
+         (("driven", "driven"),)),
     # --- design study
     Case("worst_kappa", lambda robot, L: design.worst_kappa(robot, angles=Grid(3, 0.0, np.pi), L=L),
          (R, ("L", "L_opt")), allow="inf"),
@@ -433,6 +438,8 @@ NOT_FUZZED = {
     # the wheel kinds' declarations (what a kind's author writes), checked in tests/test_wheel_kinds.py
     "WheelUnit": "the base of the wheel kinds, fuzzed through the five kinds (OffsetWheel, ...)",
     "UnsteeredUnit": "as WheelUnit (FixedWheel, SwedishWheel)", "Joint": "a kind's declaration (test_wheel_kinds)",
+    "UnitGeometry": "a base of WheelUnit: points and parts, fuzzed through unit.points",
+    "register": "called when a kind's class is defined (test_wheel_kinds defines one)",
     "FileKey": "a kind's declaration; reading robot files is tested in test_io.py",
     "Disc": "drawing data of WheelUnit.parts", "Link": "as Disc", "Rollers": "as Disc", "Pivot": "as Disc",
     "wheel_kinds": "no arguments", "kinds_table": "no arguments",

@@ -10,8 +10,6 @@ of :math:`\mathbf F` is which rate.
 """
 from __future__ import annotations
 
-import dataclasses
-
 import numpy as np
 import sympy as sp
 
@@ -63,7 +61,7 @@ class Robot:
             if not isinstance(u, WheelUnit):
                 kinds = ", ".join(t.__name__ for t in wheel_kinds().values())
                 raise InputTypeError(f"wheels[{k}] must be a wheel unit ({kinds}, ...), got {C.show(u)}")
-        self.wheels = wheels
+        self.wheels: tuple[WheelUnit, ...] = wheels
         self.name = C.optional_text("name", name) or "robot"
         starts = np.cumsum([0] + [u.n_rates for u in wheels])
         #: slice of each unit's rates inside the joint-rate vector theta_dot
@@ -342,19 +340,12 @@ class Robot:
         if self.free_symbols:
             raise InputValueError(f"robot has free symbols {sorted(map(str, self.free_symbols))}: it has no numeric "
                                   f"counterpart ({C.show(self)})")
-
-        def num(v):
-            return float(v) if isinstance(v, sp.Basic) else v
-
-        units = [dataclasses.replace(u, position=tuple(map(num, u.position)),
-                                     **{k: num(v) for k, v in u.parameters().items()}) for u in self.wheels]
-        return Robot(units, name=self.name)
+        return Robot([u.numeric() for u in self.wheels], name=self.name)
 
     @property
     def free_symbols(self):
         """The SymPy symbols in the mount points and lengths (an empty set for numeric and exact robots)."""
-        return set().union(*(getattr(v, "free_symbols", set()) for u in self.wheels
-                             for v in (*u.position, *u.parameters().values()) if isinstance(v, sp.Basic)))
+        return set().union(*(u.free_symbols for u in self.wheels))
 
     # --- frames ---------------------------------------------------------------------------------
     def moved(self, origin=(0.0, 0.0), angle=0.0):

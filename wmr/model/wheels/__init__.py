@@ -13,16 +13,18 @@ Each unit contributes the block of the no-slip equation
 (the i-th block row of (21)), :math:`\mathbf B_i = \mathbf R_{bwi}\mathbf L_i`, where
 :math:`\dot{\boldsymbol\theta}_i` are its rate variables and :math:`\mathbf L_i` its constant local block.
 
-================================  ====================================================================
-module                            what
-================================  ====================================================================
-:mod:`~wmr.model.wheels.unit`     :class:`WheelUnit`, what every kind shares and answers; the registry
-:mod:`~wmr.model.wheels.joints`   the joints of a unit (steer, swivel, drive, roller), driven or passive
-:mod:`~wmr.model.wheels.parts`    the parts of a unit seen from above, as data for drawing
-:mod:`~wmr.model.wheels.filekeys` the keys of a unit's table in a robot file
-:mod:`~wmr.model.wheels.unsteered` the base of the kinds without a steering joint (a constant angle)
-one module per kind               ``offset``, ``centred``, ``dual``, ``fixed``, ``swedish``, ...
-================================  ====================================================================
+===================================  ======================================================================
+module                               what
+===================================  ======================================================================
+:mod:`~wmr.model.wheels.unit`        :class:`WheelUnit`, what every kind shares and answers
+:mod:`~wmr.model.wheels.registry`    the kinds, registered by being defined (:func:`wheel_kinds`)
+:mod:`~wmr.model.wheels.geometry`    a unit's points and parts seen from above
+:mod:`~wmr.model.wheels.joints`      the joints of a unit (steer, swivel, drive, roller), driven or passive
+:mod:`~wmr.model.wheels.parts`       the parts of a unit seen from above, as data for drawing
+:mod:`~wmr.model.wheels.filekeys`    the keys of a unit's table in a robot file
+:mod:`~wmr.model.wheels.unsteered`   the base of the kinds without a steering joint (a constant angle)
+one module per kind                  ``offset``, ``centred``, ``dual``, ``fixed``, ``swedish``, ...
+===================================  ======================================================================
 
 **A new kind of wheel** is one module in this package: a frozen dataclass subclassing
 :class:`WheelUnit` (or :class:`~wmr.model.wheels.unsteered.UnsteeredUnit`) that sets ``kind``,
@@ -45,8 +47,9 @@ from .dual import DualWheel
 from .fixed import FixedWheel
 from .joints import JOINT_KINDS, Joint
 from .offset import OffsetWheel
+from .registry import wheel_kind, wheel_kinds
 from .swedish import SwedishWheel
-from .unit import WheelUnit, wheel_kind, wheel_kinds
+from .unit import WheelUnit
 
 __all__ = ["WheelUnit", "Joint", "JOINT_KINDS", "OffsetWheel", "CentredWheel", "DualWheel", "FixedWheel",
            "SwedishWheel", "wheel_kinds", "wheel_kind", "kinds_table"]

@@ -27,12 +27,14 @@ Joint(name='drive', kind='drive', driven=True, rate=('theta', '\\theta', ''))
 """
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass
+from typing import Any
 
 from ...errors import InputTypeError, InputValueError
-from ..checks import show
+from ..checks import flag, kind_error, show
 
-__all__ = ["JOINT_KINDS", "STEERING_JOINTS", "Joint"]
+__all__ = ["JOINT_KINDS", "STEERING_JOINTS", "Joint", "actuation"]
 
 #: the kinds of joint a wheel unit can have, and what each is
 JOINT_KINDS = {
@@ -83,3 +85,44 @@ class Joint:
     def steering(self) -> bool:
         """True for a vertical joint (``steer`` or ``swivel``): its angle is a configuration entry."""
         return self.kind in STEERING_JOINTS
+
+
+def actuation(joints: tuple[Joint, ...], driven: Any, owner: str = "unit") -> tuple[bool, ...]:
+    """Which of ``joints`` a motor drives: their defaults, overridden by ``driven``.
+
+    Parameters
+    ----------
+    joints : tuple of Joint
+        A kind's joints (``JOINTS``), with their default actuation.
+    driven : None, mapping of str to bool, or sequence of bool
+        None (the defaults), ``{joint name: bool}`` for the joints that differ, or one bool per joint.
+    owner : str, optional
+        The unit's class name, for messages.
+
+    Returns
+    -------
+    tuple of bool
+        One per joint, in their order.
+
+    Examples
+    --------
+    >>> swivel, drive = Joint("swivel", "swivel", driven=False), Joint("drive", "drive", driven=True)
+    >>> actuation((swivel, drive), None), actuation((swivel, drive), {"drive": False})
+    ((False, True), (False, False))
+    """
+    names = [j.name for j in joints]
+    out = [j.driven for j in joints]
+    if driven is None:
+        return tuple(out)
+    if isinstance(driven, Mapping):
+        for name, value in driven.items():
+            if name not in names:
+                raise InputValueError(f"driven names a joint {name!r} that {owner} does not have "
+                                      f"(its joints: {', '.join(names)})")
+            out[names.index(name)] = flag(f"driven[{name!r}]", value)
+        return tuple(out)
+    if isinstance(driven, (str, bytes)) or not hasattr(driven, "__len__"):
+        raise kind_error("driven", driven, "a mapping {joint name: bool} or one bool per joint")
+    if len(driven) != len(names):
+        raise InputValueError(f"driven must have one bool per joint ({', '.join(names)}), got {show(driven)}")
+    return tuple(flag(f"driven[{k}]", value) for k, value in enumerate(driven))

@@ -1,4 +1,4 @@
-r"""The wheel unit in general: what every kind of :mod:`wmr.model.wheels` shares, and the registry of kinds.
+r"""The wheel unit in general: what every kind of :mod:`wmr.model.wheels` shares and answers.
 
 A unit mounted at :math:`P_i` (``position`` = :math:`\mathbf d_i`) contributes the block
 :math:`\mathbf B_i(\beta_i) = \mathbf R_{bwi}\mathbf L_i` of :math:`\mathbf J_2` (21), where
@@ -21,19 +21,18 @@ its joints               ``JOINTS`` (:mod:`~wmr.model.wheels.joints`): steer, sw
 its steering             :meth:`~WheelUnit.beta_rate`; :meth:`~WheelUnit.steering_row` if its rates
                          turn it in a way the block leaves free (a dual wheel); ``rolls_in_plane``
 its geometry, drawing    :meth:`~WheelUnit.points` (batched) and :meth:`~WheelUnit.parts`
-                         (:mod:`~wmr.model.wheels.parts`, data that :mod:`wmr.plot` draws)
+                         (:mod:`~wmr.model.wheels.geometry`; :mod:`~wmr.model.wheels.parts`, data that
+                         :mod:`wmr.plot` draws)
 its robot-file keys      ``FILE_KEYS`` (:mod:`~wmr.model.wheels.filekeys`), after ``position`` and ``radius``
 its design hints         :meth:`~WheelUnit.dead_zone`, :meth:`~WheelUnit.isotropy_advice`
 =======================  ===========================================================================
 
-Defining the subclass registers the kind (:func:`wheel_kinds`, :func:`wheel_kind`); the robot, the
-analyses, the robot files and the drawings then take it without a change.
+Defining the subclass registers the kind (:mod:`~wmr.model.wheels.registry`); the robot, the analyses,
+the robot files and the drawings then take it without a change.
 """
 from __future__ import annotations
 
 import dataclasses
-import difflib
-from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any, ClassVar
 
@@ -46,61 +45,14 @@ from .. import checks as C
 from ..backend import NUMERIC, choose, is_symbolic
 from ..platform import E, rotated
 from .filekeys import COMMON_KEYS, FileKey
-from .joints import Joint
-from .parts import Disc, Pivot
+from .geometry import UnitGeometry
+from .joints import Joint, actuation
+from .registry import register
 
-__all__ = ["WheelUnit", "wheel_kinds", "wheel_kind"]
-
-_KINDS: dict[str, type[WheelUnit]] = {}
-
-
-def wheel_kinds() -> dict[str, type[WheelUnit]]:
-    """Every registered wheel kind: ``{kind: class}``, by name (the order in which messages list them).
-
-    Returns
-    -------
-    dict of str to type
-
-    Examples
-    --------
-    >>> list(wheel_kinds())[:3]
-    ['centred', 'dual', 'fixed']
-    """
-    return dict(sorted(_KINDS.items()))
-
-
-def wheel_kind(name: str) -> type[WheelUnit]:
-    """The class of the wheel kind ``name`` (the ``type`` of a robot file's ``[[wheel]]`` table).
-
-    Parameters
-    ----------
-    name : str
-
-    Returns
-    -------
-    type
-        A subclass of :class:`WheelUnit`.
-
-    Examples
-    --------
-    >>> wheel_kind("centred").__name__
-    'CentredWheel'
-    >>> wheel_kind("centered")
-    Traceback (most recent call last):
-        ...
-    wmr.errors.InputValueError: kind must be one of ..., got 'centered' (did you mean 'centred'?)
-    """
-    if not isinstance(name, str):
-        raise C.kind_error("kind", name, f"a wheel kind ({', '.join(sorted(_KINDS))})")
-    if name not in _KINDS:
-        close = difflib.get_close_matches(name, sorted(_KINDS), n=1)
-        raise InputValueError(f"kind must be one of {', '.join(sorted(_KINDS))}, got {name!r}"
-                              + (f" (did you mean {close[0]!r}?)" if close else ""))
-    return _KINDS[name]
-
+__all__ = ["WheelUnit"]
 
 @dataclass(frozen=True)
-class WheelUnit:
+class WheelUnit(UnitGeometry):
     r"""A wheel unit at :math:`P_i`: the base of every wheel kind.
 
     Parameters
@@ -144,15 +96,12 @@ class WheelUnit:
         cls.n_rates = len(cls.RATES)
         cls.steered = any(j.steering for j in cls.JOINTS)
         if "kind" in vars(cls) and cls.kind:
-            if cls.kind in _KINDS and _KINDS[cls.kind].__qualname__ != cls.__qualname__:
-                raise InputValueError(f"wheel kind {cls.kind!r} is already {_KINDS[cls.kind].__name__}: "
-                                      f"{cls.__name__} needs another name")
-            _KINDS[cls.kind] = cls
+            register(cls)
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "position", C.point("position", self.position))
         object.__setattr__(self, "r", C.positive("r (wheel radius)", self.r))
-        object.__setattr__(self, "driven", self._driven(self.driven))
+        object.__setattr__(self, "driven", actuation(self.JOINTS, self.driven, type(self).__name__))
         self._validate()
         if not self.is_symbolic:
             with np.errstate(over="ignore", invalid="ignore"):
@@ -164,25 +113,6 @@ class WheelUnit:
 
     def _validate(self) -> None:
         """Check and convert the kind's own fields (a kind with fields of its own extends this)."""
-
-    def _driven(self, value: Any) -> tuple[bool, ...]:
-        """``driven`` as one bool per joint (the kind's defaults where not given)."""
-        names = [j.name for j in self.JOINTS]
-        out = [j.driven for j in self.JOINTS]
-        if value is None:
-            return tuple(out)
-        if isinstance(value, Mapping):
-            for name, flag in value.items():
-                if name not in names:
-                    raise InputValueError(f"driven names a joint {name!r} that {type(self).__name__} does not have "
-                                          f"(its joints: {', '.join(names)})")
-                out[names.index(name)] = C.flag(f"driven[{name!r}]", flag)
-            return tuple(out)
-        if isinstance(value, (str, bytes)) or not hasattr(value, "__len__"):
-            raise C.kind_error("driven", value, "a mapping {joint name: bool} or one bool per joint")
-        if len(value) != len(names):
-            raise InputValueError(f"driven must have one bool per joint ({', '.join(names)}), got {C.show(value)}")
-        return tuple(C.flag(f"driven[{k}]", f) for k, f in enumerate(value))
 
     # --- joints and rates ----------------------------------------------------------------------
     @property
@@ -303,6 +233,36 @@ class WheelUnit:
         return {f.name: getattr(self, f.name) for f in dataclasses.fields(self) if f.name not in ("position", "driven")}
 
     @property
+    def free_symbols(self):
+        """The SymPy symbols in the unit's position and parameters (an empty set for numbers and exact numbers)."""
+        return set().union(*(v.free_symbols for v in self._values() if isinstance(v, sp.Basic)))
+
+    def numeric(self):
+        """The same unit with float position and parameters (SymPy numbers such as :math:`\\sqrt3/2` evaluated).
+
+        Returns
+        -------
+        WheelUnit
+            Of the same kind (itself when it holds no SymPy values).
+
+        Raises
+        ------
+        wmr.errors.InputValueError
+            If a value has a free symbol.
+        """
+        if not self.is_symbolic:
+            return self
+        if self.free_symbols:
+            raise InputValueError(f"{type(self).__name__} has free symbols {sorted(map(str, self.free_symbols))}: it "
+                                  f"has no numeric counterpart ({C.show(self)})")
+
+        def num(v):
+            return float(v) if isinstance(v, sp.Basic) else v
+
+        return dataclasses.replace(self, position=tuple(map(num, self.position)),
+                                   **{k: num(v) for k, v in self.parameters().items()})
+
+    @property
     def is_symbolic(self):
         """True when the position or a length of the unit is a SymPy expression."""
         return is_symbolic(*self._values())
@@ -310,11 +270,6 @@ class WheelUnit:
     def _values(self):
         """The unit's parameters as a flat tuple (position coordinates, lengths, angles)."""
         return (*self.position, *self.parameters().values())
-
-    @property
-    def constant_angle(self):
-        """The constant angle of a unit without a steering joint; None for a steered unit."""
-        return None
 
     def remounted(self, position, turn):
         """The same unit described from a body frame turned by ``turn``, with its mount point at ``position``.
@@ -395,79 +350,6 @@ class WheelUnit:
         """
         L = self.local_block(backend)
         return L, E(backend) @ L
-
-    # --- geometry and drawing ------------------------------------------------------------------------
-    def points(self, beta):
-        r"""Points of the unit in the body frame (for drawing and for checks).
-
-        Parameters
-        ----------
-        beta : float or array (...)
-            Steering angle(s) :math:`\beta_i` (a unit with a constant angle uses its own).
-
-        Returns
-        -------
-        dict of numpy.ndarray
-            ``"P"`` (steering axis, (..., 2)), ``"H"`` (centre of the wheel, or of the pair,
-            (..., 2)), ``"wheels"`` ((..., k, 2): wheel centres = ground contact points seen from
-            above), ``"i"`` and ``"j"`` (unit axle and rolling directions, (..., 2)).
-
-        Examples
-        --------
-        >>> from wmr import OffsetWheel
-        >>> OffsetWheel((1.0, 0.0), r=0.1, d=0.2).points(0.0)["H"].tolist()    # H = P - d j
-        [1.0, -0.2]
-        """
-        beta = A.finite_array("beta", beta)
-        c, s = np.cos(beta), np.sin(beta)
-        i_dir = np.stack([c, s], axis=-1)
-        j_dir = np.stack([-s, c], axis=-1)
-        P = np.broadcast_to(np.asarray(self.position, dtype=float), i_dir.shape)
-        return self._points(P, i_dir, j_dir)
-
-    def _points(self, P, i_dir, j_dir):
-        """The unit's points from :math:`P_i` and its axle and rolling directions (kinds with others override this)."""
-        return {"P": P, "H": P, "wheels": P[..., None, :], "i": i_dir, "j": j_dir}
-
-    def parts(self, beta):
-        r"""The unit's parts seen from above at one steering angle, body frame (:mod:`~wmr.model.wheels.parts`).
-
-        Parameters
-        ----------
-        beta : float
-            The unit's steering angle :math:`\beta_i` (a unit with a constant angle uses its own).
-
-        Returns
-        -------
-        tuple of Disc, Link, Rollers or Pivot
-            In drawing order: a disc per wheel, and a pivot at :math:`P_i` for a steered unit.
-
-        Examples
-        --------
-        >>> from wmr import CentredWheel
-        >>> [type(p).__name__ for p in CentredWheel((1.0, 0.0), r=0.1).parts(0.3)]
-        ['Disc', 'Pivot']
-        """
-        beta = C.number("beta", beta)
-        pts = self.points(beta)
-        return self._discs(pts, beta) + ((Pivot(pts["P"], float(self.r)),) if self.steered else ())
-
-    def _discs(self, pts, beta, arrow=True):
-        return tuple(Disc(c, float(self.drawn_angle(beta)), float(self.r), arrow) for c in pts["wheels"])
-
-    def drawn_angle(self, beta):
-        """The angle the unit is drawn at: ``beta``, or a unit's own constant angle.
-
-        Parameters
-        ----------
-        beta : float
-            The unit's configuration entry.
-
-        Returns
-        -------
-        float
-        """
-        return C.number("beta", beta) if self.constant_angle is None else C.number("angle", self.constant_angle)
 
     # --- design hints ---------------------------------------------------------------------------------
     def dead_zone(self):
