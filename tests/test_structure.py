@@ -197,7 +197,8 @@ def test_no_dispatch_on_the_kind_of_a_wheel():
         if name.startswith("wmr.model.wheels"):
             continue
         for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
-            if not (isinstance(node, ast.Compare) and isinstance(node.left, ast.Attribute) and node.left.attr == "kind"):
+            left = getattr(node, "left", None)
+            if not (isinstance(node, ast.Compare) and isinstance(left, ast.Attribute) and left.attr == "kind"):
                 continue
             consts = [c for c in ast.walk(node) if isinstance(c, ast.Constant) and c.value in names]
             if consts:
