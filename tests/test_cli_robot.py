@@ -33,7 +33,8 @@ def test_analyze_json_matches_the_library(capsys):
     assert code == 0 and err == ""
     data = json.loads(out)
     ov = overview(wmr.load(SWERVE), grid=500, twists=50)
-    assert data["rank_F"] == {"generic": 7, "min": 6, "max": 7} and data["nullity"] == {"generic": 0, "min": 0, "max": 1}
+    assert data["rank_F"] == {"generic": 7, "min": 6, "max": 7}
+    assert data["nullity"] == {"generic": 0, "min": 0, "max": 1}
     assert data["configurations"] == ov.configurations and data["L"] == ov.L
     assert data["kappa_J_L1"] == pytest.approx(1.0) and data["kappa_J2"] == 1.0 and data["kappa_J"]["max"] == "inf"
     assert [f["family"] for f in data["singular"]] == [f["family"] for f in ov.singular]
@@ -80,7 +81,8 @@ def test_fk_json_matches_the_library(capsys):
     bot = wmr.load(OFFSET)
     beta = np.radians([10, 20, 30])
     rates = wmr.inverse(bot, beta, [0.3, -1.0, 0.5]).value                     # compatible rates
-    code, out, _ = _run(capsys, "fk", OFFSET, "--angles", "10", "20", "30", "--rates=" + ",".join(map(repr, rates.tolist())), "--json")
+    code, out, _ = _run(capsys, "fk", OFFSET, "--angles", "10", "20", "30",
+                        "--rates=" + ",".join(map(repr, rates.tolist())), "--json")
     data = json.loads(out)
     assert code == 0 and np.allclose([data["omega"], data["vx"], data["vy"]], [0.3, -1.0, 0.5]) and data["admissible"]
     code, out, _ = _run(capsys, "fk", OFFSET, "--angles", "10", "20", "30", "--rates", "1,2,1,2,1,2", "--json")
@@ -91,7 +93,8 @@ def test_fk_json_matches_the_library(capsys):
 
 
 def test_fk_slip(capsys):
-    code, out, _ = _run(capsys, "fk", SWERVE, "--angles", "0", "0", "0", "90", "--rates", "-10", "-10", "-10", "-10", "--json")
+    code, out, _ = _run(capsys, "fk", SWERVE, "--angles", "0", "0", "0", "90", "--rates", "-10", "-10", "-10", "-10",
+                        "--json")
     data = json.loads(out)
     assert code == 0 and not data["admissible"] and data["slip"] == pytest.approx(0.622, abs=1e-3)
     code, out, _ = _run(capsys, "fk", SWERVE, "--angles", "0", "0", "0", "0", "--rates", "-10", "-10", "-10", "-10")
@@ -159,6 +162,7 @@ def test_ik_fixed_wheels(capsys):
     data = json.loads(out)
     assert code == 0 and data["admissible"] and data["admissible_without_resteering"]
     assert data["angles_deg"][:2] == [90.0, 90.0] and data["resteer_deg"][:2] == [0.0, 0.0]
-    assert np.allclose([data["rates"]["theta_dot_1"], data["rates"]["theta_dot_2"]], [(0.5 - 0.2) / 0.08, (0.5 + 0.2) / 0.08])
+    assert np.allclose([data["rates"]["theta_dot_1"], data["rates"]["theta_dot_2"]],
+                       [(0.5 - 0.2) / 0.08, (0.5 + 0.2) / 0.08])
     code, out, _ = _run(capsys, "ik", diff, "--vy", "0.5")                     # sideways: impossible
     assert code == 0 and "admissible: no" in out and "without re-steering: no" in out

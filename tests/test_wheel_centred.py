@@ -47,7 +47,8 @@ def test_a_swerve_module():
 
 
 BAD = [
-    (dict(r=0.0), ValueError, "r", "0"), (dict(r=-1.0), ValueError, "r", "-1"), (dict(r=np.nan), ValueError, "r", "nan"),
+    (dict(r=0.0), ValueError, "r", "0"), (dict(r=-1.0), ValueError, "r", "-1"),
+    (dict(r=np.nan), ValueError, "r", "nan"),
     (dict(r=np.inf), ValueError, "r", "inf"), (dict(r="1"), TypeError, "r", "'1'"),
     (dict(position=(0, 0, 0)), ValueError, "position", "(0, 0, 0)"),
     (dict(position=(np.nan, 0)), ValueError, "position", "nan"), (dict(position=5.0), TypeError, "position", "5.0"),

@@ -13,7 +13,7 @@ from conftest import angles, axle, coords, lengths, rolling_dir, seeds, unit_mou
 
 @given(coords, coords, lengths, lengths, angles, seeds)
 def test_block_is_no_slip_and_steering_is_7(x, y, r, d, beta, seed):
-    """B(beta) theta_dot is the velocity of P implied by no slip at the contact point; beta_dot = phi_dot - psi_dot (7)."""
+    """B(beta) theta_dot is the velocity of P that no slip at the contact implies; beta_dot = phi_dot - psi_dot (7)."""
     unit = wmr.OffsetWheel((x, y), r=r, d=d)
     rates = np.random.default_rng(seed).normal(size=2)
     want, phi_dot = unit_mount_velocity(unit, beta, rates)

@@ -17,7 +17,8 @@ PI = np.pi
 def test_swedish_block_is_no_slip(x, y, r, angle, roller, beta, seed):
     unit = wmr.SwedishWheel((x, y), r=r, angle=angle, roller=roller)
     rates = np.random.default_rng(seed).normal(size=2)
-    assert np.allclose(unit.block(beta) @ rates, hub_velocity("swedish", angle, r, rates, roller), atol=1e-12 * max(1, r))
+    assert np.allclose(unit.block(beta) @ rates, hub_velocity("swedish", angle, r, rates, roller),
+                       atol=1e-12 * max(1, r))
 
 
 @given(coords, coords, lengths, angles, st.floats(-1.5, 1.5).filter(lambda g: abs(g) > 0.05), seeds)

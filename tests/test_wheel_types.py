@@ -65,7 +65,8 @@ def test_unsteered_entries_are_ignored_everywhere(make):
     t = rng.normal(size=(7, 3))
     rates = rng.normal(size=(7, bot.n_rates))
     same = [lambda b: bot.J2(b), lambda b: bot.F(b), lambda b: bot.J(b, L=0.5), lambda b: wmr.rank_F(bot, b),
-            lambda b: wmr.mobility(bot, b), lambda b: wmr.inverse(bot, b, t).value, lambda b: wmr.forward(bot, b, rates).value,
+            lambda b: wmr.mobility(bot, b), lambda b: wmr.inverse(bot, b, t).value,
+            lambda b: wmr.forward(bot, b, rates).value,
             lambda b: reference.J2(bot, b), lambda b: lines.axle_lines(bot, b)[1],
             lambda b: wmr.admissible_twists(bot, b[0])]
     for f in same:
@@ -108,7 +109,8 @@ def test_swedish_robots_realise_every_twist():
         # the driven wheel rates alone determine the twist: a^T [E d 1] t = -r sin(g) theta_dot, rank 3
         rows = np.array([u.roller_axis() @ bot.J1()[2 * i:2 * i + 2] for i, u in enumerate(bot.wheels)])
         assert wmr.rank(rows) == 3
-        assert np.allclose(rows @ t[0], [-u.r * np.sin(u.roller) * inv.value[0, 2 * i] for i, u in enumerate(bot.wheels)])
+        assert np.allclose(rows @ t[0], [-u.r * np.sin(u.roller) * inv.value[0, 2 * i]
+                                         for i, u in enumerate(bot.wheels)])
 
 
 def test_same_handed_mecanum_cannot_be_driven_sideways_by_its_wheels():
