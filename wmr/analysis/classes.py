@@ -11,7 +11,7 @@ wheels with a fixed wheel plane through the wheel centre:
   ``wmr``: centred and dual units), at its steering angle;
 * :math:`\mathbf C_1^* = [\mathbf C_{1f};\ \mathbf C_{1s}(\boldsymbol\beta_s)]`.  Offset (castor) and
   Swedish wheels add no row: their hubs can move in every direction (their local blocks are
-  invertible, :mod:`wmr.model.wheels_fixed`); an offset wheel with :math:`d = 0` is a centred
+  invertible, :mod:`wmr.model.wheels.swedish`); an offset wheel with :math:`d = 0` is a centred
   wheel and counts as one.
 
 These rows are exactly the twist constraints of :func:`wmr.analysis.mobility.twist_constraints`
