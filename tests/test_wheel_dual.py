@@ -5,6 +5,7 @@ import pytest
 from hypothesis import given
 
 import wmr
+from wmr.analysis import reference
 
 from conftest import angles, axle, coords, lengths, rolling_dir, seeds, unit_mount_velocity
 
@@ -47,7 +48,7 @@ def test_inverse_kinematics_steers_it_as_wanted():
     assert np.allclose(got, beta_dot) and np.allclose([u.beta_rate(twist[0], still.value[sl]) for u, sl in
                                                        zip(bot.wheels, bot.rate_slices)], 0, atol=1e-12)
     assert np.allclose(bot.J2(beta) @ turning.value, bot.J2(beta) @ still.value)
-    assert np.allclose(wmr.analysis.reference.inverse(bot, beta, twist, beta_dot)[0], turning.value)
+    assert np.allclose(reference.inverse(bot, beta, twist, beta_dot)[0], turning.value)
 
 
 def test_its_swivel_is_passive():

@@ -51,6 +51,7 @@ from .registry import register
 
 __all__ = ["WheelUnit"]
 
+
 @dataclass(frozen=True)
 class WheelUnit(UnitGeometry):
     r"""A wheel unit at :math:`P_i`: the base of every wheel kind.
