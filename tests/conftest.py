@@ -64,6 +64,21 @@ def wheel_centre_velocity(theta_dot, phi_dot, beta, r):
     return np.cross(omega, r * K)[..., :2]
 
 
+def hub_velocity(kind, beta, r, rates, roller=None):
+    """Velocity of the hub of a wheel without a steering joint, from no slip at the contact point (3D, no wmr).
+
+    Fixed wheel: omega = theta_dot i, v_H = omega x (r k).  Swedish wheel: the roller (axis a,
+    horizontal) spins at sigma_dot about a; with a contact radius r the hub moves by
+    (theta_dot i + sigma_dot a) x (r k) (see SwedishWheel's docstring for a general roller radius).
+    """
+    i3 = vec3(axle(beta))
+    omega = rates[0] * i3
+    if kind == "swedish":
+        a3 = vec3(axle(beta + roller))                   # the roller axis: the axle turned by gamma
+        omega = omega + rates[1] * a3
+    return np.cross(omega, r * K)[:2]
+
+
 def unit_mount_velocity(unit, beta, rates, psi_dot=0.0):
     """Velocity of the steering-axis point P of one unit from its wheels' no-slip conditions.
 

@@ -28,8 +28,9 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from tools import build  # noqa: E402
-from tools.build import files, procs  # noqa: E402
+from tools.build import files  # noqa: E402
 from tools.build.stamps import Stamp  # noqa: E402
+
 from test_notebooks import write_nb  # noqa: E402
 
 PY = sys.executable
@@ -120,7 +121,7 @@ def test_atomic_path_keeps_old_file_on_error(tmp_path):
     with pytest.raises(ZeroDivisionError):
         with files.atomic_path(target) as tmp:
             tmp.write_text("half")
-            1 / 0
+            1 / 0  # noqa: B018  (raises)
     assert target.read_text() == "old" and sorted(p.name for p in tmp_path.iterdir()) == ["f.txt"]
 
 
@@ -208,7 +209,8 @@ def test_killing_make_leaves_no_process(tmp_path, sig):
     marker = uuid.uuid4().hex
     tree = slow_tree(tmp_path)
     p = _make(tree, marker)
-    assert wait_for(lambda: kernel_running(marker)), f"no kernel started:\n{p.stdout.read() if p.poll() is not None else ''}"
+    assert wait_for(lambda: kernel_running(marker)), \
+        f"no kernel started:\n{p.stdout.read() if p.poll() is not None else ''}"
     os.kill(p.pid, sig)                                                # make itself, not its group
     p.wait(timeout=60)
     left = wait_for(lambda: not marked_processes(marker), timeout=20) or marked_processes(marker)
@@ -295,7 +297,8 @@ def test_make_test_fails_when_the_build_modifies_tracked_files(tmp_path):
     (tmp_path / "notes.txt").write_text("an uncommitted edit: not the build's doing\n")
 
     def make_test():
-        p = subprocess.run([PY, "-m", "tools.build", "--root", str(tmp_path), "test", "--", "-q", "-p", "no:cacheprovider"],
+        p = subprocess.run([PY, "-m", "tools.build", "--root", str(tmp_path), "test", "--", "-q", "-p",
+                            "no:cacheprovider"],
                            cwd=ROOT, env=dict(os.environ, PYTHONPATH=str(ROOT), PYTEST_DISABLE_PLUGIN_AUTOLOAD="1"),
                            capture_output=True, text=True)
         return p.returncode, p.stdout + p.stderr

@@ -205,7 +205,8 @@ def test_main_needs_the_chapters_and_the_destination(tmp_path, capsys):
     dest = tmp_path / "ledger.csv"
     assert LG.main([str(tmp_path / "out"), str(dest)]) == 0 and dest.exists()
     before = dest.stat().st_mtime_ns
-    assert LG.main([str(tmp_path / "out"), str(dest)]) == 0 and dest.stat().st_mtime_ns == before  # same bytes: untouched
+    # the same bytes: the file is left untouched
+    assert LG.main([str(tmp_path / "out"), str(dest)]) == 0 and dest.stat().st_mtime_ns == before
     assert LG.main([str(tmp_path / "out" / "01" / "ledger.csv"), str(dest)]) == 0      # a chapter's file
 
 

@@ -16,8 +16,8 @@ import wmr
 from edition import display as DP
 from edition import exercises as X
 from edition import notebook as NB
-from edition.algebra import mod_pi
 from edition import symbols as S
+from edition.algebra import mod_pi
 
 ROOT = Path(__file__).resolve().parents[1]
 CHAPTERS = sorted((ROOT / "notebooks").glob("[0-9][0-9]_*.ipynb"))
@@ -47,8 +47,10 @@ def test_chapter_is_thin_and_prints_nothing(path):
     for c in cells(path, "code"):
         n = len(c.source.splitlines())
         assert n <= MAX_CELL_LINES, f"{path.name}: a code cell of {n} lines:\n{c.source}"
-        assert not re.search(r"\bprint\(|\bdisplay\(|DataFrame|\.to_frame\(", c.source), f"{path.name}: raw output in\n{c.source}"
-        assert "def " not in c.source or "widget" in tags(c), f"{path.name}: a helper defined in the chapter:\n{c.source}"
+        raw = re.search(r"\bprint\(|\bdisplay\(|DataFrame|\.to_frame\(", c.source)
+        assert not raw, f"{path.name}: raw output in\n{c.source}"
+        assert "def " not in c.source or "widget" in tags(c), \
+            f"{path.name}: a helper defined in the chapter:\n{c.source}"
 
 
 def test_every_ledger_row_is_anchored_in_its_notebook():
@@ -88,7 +90,8 @@ def test_chapter_has_exercises_with_checks_and_worked_solutions(path):
     checks = {m for c in ex for m in re.findall(call, c.source)} - own
     assert len(checks) >= 2, f"{path.name}: exercises {checks}"
     assert {m for c in sol for m in re.findall(call, c.source)} == checks
-    assert any(any(o in c.source for o in own) or "my_robot" in c.source for c in ex), f"{path.name}: no 'your own robot' cell"
+    assert any(any(o in c.source for o in own) or "my_robot" in c.source for c in ex), \
+        f"{path.name}: no 'your own robot' cell"
     for c in ex:
         if re.search(call, c.source) and "my_robot" not in c.source:
             assert "= None" in c.source, f"{path.name}: an exercise template without a placeholder:\n{c.source}"
@@ -135,7 +138,8 @@ def test_student_edition_has_no_solutions_and_still_runs():
     failed = {k: v for k, v in tool.run(paths, out=out).items() if v}
     assert not failed, "student notebooks fail:\n" + "\n".join(f"{k}: {v[-2000:]}" for k, v in failed.items())
     done = nbformat.read(out / ".run" / paths[0].name, as_version=4)
-    text = "\n".join(o.get("data", {}).get("text/markdown", "") for c in done.cells if c.cell_type == "code" for o in c.outputs)
+    text = "\n".join(o.get("data", {}).get("text/markdown", "")
+                     for c in done.cells if c.cell_type == "code" for o in c.outputs)
     assert "No answer yet" in text and "**Right.**" not in text
 
 
@@ -242,7 +246,8 @@ def test_dual_exercises():
     bot = wmr.paper_robot("dual", L=0.5, r=0.1, b=0.08)
     tw = np.array([0.5, 0.2, -0.1])
     assert X.dual_counterexample(wmr.steering_angles(bot, tw), tw)
-    assert "with $\\dot\\psi \\neq 0$" in X.dual_counterexample(wmr.steering_angles(bot, [0, 1.0, 0]), [0, 1.0, 0]).message
+    assert "with $\\dot\\psi \\neq 0$" in X.dual_counterexample(wmr.steering_angles(bot, [0, 1.0, 0]),
+                                                                [0, 1.0, 0]).message
     assert "slip" in X.dual_counterexample([0, 0, 0], tw).message
     assert X.dual_spin_in_place((-0.5, 0.5)) and "moves" in X.dual_spin_in_place((0.5, 0.5)).message
     assert "turns at" in X.dual_spin_in_place((-1.0, 1.0)).message

@@ -9,9 +9,9 @@ import pytest
 import sympy as sp
 
 from edition import symbols as S
-from edition.transcription import printed, table
 from edition.checks import assembly, centred, dual, isotropy, steering, wheels
 from edition.ledger import Ledger, grade
+from edition.transcription import printed, table
 
 
 @pytest.fixture

@@ -9,12 +9,12 @@ import pytest
 import sympy as sp
 
 import wmr
-from edition import symbols as S
-from wmr.analysis.mobility import admissible_twists, mobility, rank_F
 from edition import printed
+from edition import symbols as S
+from edition.verify import SEED, symbolic_equal
+from wmr.analysis.mobility import admissible_twists, mobility, rank_F
 from wmr.analysis.steering import AT_INFINITY, FINITE, STILL
 from wmr.model.tolerance import TOL
-from edition.verify import SEED, symbolic_equal
 
 N = 500
 

@@ -10,7 +10,6 @@ ASCII math in its text, no formula shrunk below a readable size, the build date 
 from __future__ import annotations
 
 import base64
-import csv
 import gzip
 import os
 import re
@@ -29,7 +28,8 @@ import pytest
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 from tools import build  # noqa: E402
-from tools.build import gitinfo, html as html_export, inputs  # noqa: E402
+from tools.build import gitinfo, inputs  # noqa: E402
+from tools.build import html as html_export  # noqa: E402
 from tools.build.pdf import MIN_FORMULA_SCALE, scaled_formulas  # noqa: E402
 
 TREE = build.Tree(os.environ.get("WMR_ROOT") or ROOT)  # WMR_ROOT: test another tree
@@ -195,7 +195,8 @@ def test_each_figure_embedded_once(html_text):
     dup = len(srcs) - len(set(srcs))
     assert dup == 0, f"{dup} images embedded more than once"
     for f in figs:
-        block = re.findall(r'<figure class="wmr-figure" id="figure-%s">(.*?)</figure>' % re.escape(f.key), html_text, re.S)
+        block = re.findall(r'<figure class="wmr-figure" id="figure-%s">(.*?)</figure>' % re.escape(f.key), html_text,
+                           re.S)
         assert len(block) == 1, f"figure {f.key} shown {len(block)} times in the figures section"
         assert "data:image/svg+xml" in block[0], f"{f.key}: not shown from its SVG"
 
@@ -307,7 +308,8 @@ def test_pdf_words_inside_the_margins(pdf_path):
     bbox = _pdftext(pdf_path, "-bbox")
     out = []
     for page, body in enumerate(re.findall(r"<page[^>]*>(.*?)</page>", bbox, re.S), 1):
-        for x0, x1, word in re.findall(r'<word xMin="([\d.]+)" yMin="[\d.]+" xMax="([\d.]+)" yMax="[\d.]+">([^<]*)</word>', body):
+        words = r'<word xMin="([\d.]+)" yMin="[\d.]+" xMax="([\d.]+)" yMax="[\d.]+">([^<]*)</word>'
+        for x0, x1, word in re.findall(words, body):
             if float(x1) > page_w - margin + 3 or float(x0) < margin - 3:
                 out.append(f"p. {page}: {word!r} at x = {float(x0):.0f}..{float(x1):.0f}")
     assert not out, f"{len(out)} words past the margins: {out[:10]}"

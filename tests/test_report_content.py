@@ -40,7 +40,8 @@ def png(rgb=(200, 30, 30)) -> bytes:
 
 FIG_PNG = png()
 LEDGER = [
-    dict(id="2", kind="equation", section="3.1", verdict="ok", printed=r"\dot{\mathbf p}_i = \dot{\mathbf c} + \dot\psi\,\mathbf E\mathbf d_i",
+    dict(id="2", kind="equation", section="3.1", verdict="ok",
+         printed=r"\dot{\mathbf p}_i = \dot{\mathbf c} + \dot\psi\,\mathbf E\mathbf d_i",
          corrected="", why="", convention=r"$\dot\psi\times\mathbf d_i$ read as $(\dot\psi\mathbf k)\times\mathbf d_i$",
          check="printed form proven equal to the derivation (SymPy)", printed_holds="yes", residual="< 1e-12",
          notebook="01_first", anchor="eq-2", note=""),
@@ -50,7 +51,8 @@ LEDGER = [
          printed_holds="no", residual="0", notebook="01_first", anchor="eq-3", note="FIXTURE-NOTE"),
     dict(id="drift", kind="claim", section="4.2", verdict="wrong",
          printed="“the WMR drifts when $\\dot\\theta_i = 0$” (FIXTURE-CLAIM)",
-         corrected=r"with locked drives ($\dot\theta_i = 0$) the platform stands still: $\mathbf t = \mathbf 0$", why="$\\det\\mathbf M \\ne 0$ at 2000 configurations",
+         corrected=r"with locked drives ($\dot\theta_i = 0$) the platform stands still: $\mathbf t = \mathbf 0$",
+         why="$\\det\\mathbf M \\ne 0$ at 2000 configurations",
          convention="", check="refuted by counterexample", printed_holds="no", residual="0",
          notebook="01_first", anchor="claim-drift", note=""),
 ]
@@ -75,13 +77,16 @@ def project(tmp_path_factory):
     nb = nbformat.v4.new_notebook()
     nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3", "language": "python"}
     nb.cells = [
-        _cell("md", "# 1. First chapter\n\nProse with $x^2$.\n\n<a id=\"eq-2\"></a>\n\n## 1.1 Equation (2)\n\n$$\\dot{\\mathbf p}_i \\tag{2}$$"),
+        _cell("md", "# 1. First chapter\n\nProse with $x^2$.\n\n<a id=\"eq-2\"></a>\n\n"
+              "## 1.1 Equation (2)\n\n$$\\dot{\\mathbf p}_i \\tag{2}$$"),
         _cell("code", "from IPython.display import Image, Markdown, Math, display\nimport base64"),
-        _cell("code", f"key = 'fig07'\nImage(data=base64.b64decode({base64.b64encode(FIG_PNG).decode()!r}))", ["figure"]),
+        _cell("code", f"key = 'fig07'\nImage(data=base64.b64decode({base64.b64encode(FIG_PNG).decode()!r}))",
+              ["figure"]),
         _cell("md", "<a id=\"eq-3\"></a>\n\n## 1.2 Equation (3)\n\nDerivation of (3)."),
         _cell("code", "print('PRINTED-OUTPUT')\ndisplay(Markdown('Shown: $\\\\kappa = 1$ (MARKDOWN-OUTPUT)'))"),
         _cell("code", "Math(r'\\mathbf J = \\mathbf 1 \\quad (LATEX-OUTPUT)')"),
-        _cell("code", "class T:\n    def _repr_html_(self):\n        return '<table><tr><td>HTML-TABLE-OUTPUT</td></tr></table>'\nT()"),
+        _cell("code", "class T:\n    def _repr_html_(self):\n"
+              "        return '<table><tr><td>HTML-TABLE-OUTPUT</td></tr></table>'\nT()"),
         _cell("md", "**Exercise.** EXERCISE-TEXT", ["exercise"]),
         _cell("code", "'SOLUTION-TEXT'", ["solution"]),
         _cell("code", "display(Markdown('LEDGER-CELL-OUTPUT'))", ["ledger"]),
@@ -104,7 +109,8 @@ def project(tmp_path_factory):
     for key, number, paper_cap in (("fig07", "7", "PAPER-CAPTION-7"), ("conventions", "", "")):
         (fig / f"{key}.svg").write_text(svg.replace("10\"/>", f"10\" id=\"{key}\"/>"))
         (fig / f"{key}.json").write_text(json.dumps({"key": key, "number": number, "title": f"Title of {key}",
-                                                     "paper_caption": paper_cap, "caption": f"OUR-CAPTION-{key} with $L = 1$",
+                                                     "paper_caption": paper_cap,
+                                                     "caption": f"OUR-CAPTION-{key} with $L = 1$",
                                                      "numbers": {}}))
     tree = build.Tree(root)
     build.report(tree, html_only=True)

@@ -6,19 +6,17 @@ unit; angles in degrees)::
     name = "paper, three centred wheels"     # optional (default: the file's name)
 
     [[wheel]]                 # one table per wheel unit, wheel 1 first (the numbering of wmr.Robot)
-    type = "centred"          # "fixed" | "centred" | "offset" | "dual" | "swedish"
+    type = "centred"          # the wheel kind: offset, centred, dual, fixed, swedish, ... (wheel_keys())
     position = [-0.3, 0.0]    # the mount point d_i = CP_i, body frame, from the operation point C
     radius = 0.05             # the wheel radius r, > 0
-    # offset = 0.03           # offset (castor) wheels: the offset d >= 0
-    # half_separation = 0.1   # dual wheels: half the distance b > 0 between the two wheels
-    # angle_deg = 90.0        # fixed and swedish wheels: the steering angle beta of wmr's conventions
-    #                         #   (0: axle along the body x axis, the wheel rolls along body y)
-    # roller_deg = 45.0       # swedish wheels: angle between the roller axes and the wheel axle
-    #                         #   (90: omni wheel, 45: mecanum wheel)
+    # ...                     # the kind's own keys, e.g. offset = 0.03 for an offset wheel
+    # driven = {steer = false, drive = false}   # optional: joints whose actuation differs from the kind's default
 
-Each type takes exactly its keys (:data:`KEYS`).  A malformed file raises :class:`RobotFileError`,
-whose message is one line, ``FILE:LINE: key: what is wrong``; wheels are named ``wheel[k]`` with
-``k`` counted from 1, as the paper numbers them.
+Each kind takes exactly its keys, declared by the kind itself (its ``FILE_KEYS``,
+:mod:`wmr.model.wheels.filekeys`; :func:`wheel_keys` lists them); ``driven`` is optional for every
+kind.  A malformed file raises :class:`~wmr.errors.RobotFileError`, whose message is one line,
+``FILE:LINE: key: what is wrong``; wheels are named ``wheel[k]`` with ``k`` counted from 1, as the
+paper numbers them.
 
 Examples
 --------
@@ -33,54 +31,42 @@ True
 from __future__ import annotations
 
 import difflib
-import math
 import os
 import re
 import tomllib
 from pathlib import Path
+from typing import NoReturn
 
 import numpy as np
 
+from .errors import InputError, InputTypeError, InputValueError, RobotFileError
 from .model import validation as V
+from .model.robot import Robot
 from .model.tolerance import near_zero
-from .model.wheels import CentredWheel, DualWheel, FixedWheel, OffsetWheel, SwedishWheel
+from .model.wheels import wheel_kinds
+from .model.wheels.filekeys import toml_string, toml_text
 
-__all__ = ["RobotFileError", "KEYS", "load", "loads", "dump"]
+__all__ = ["RobotFileError", "wheel_keys", "load", "loads", "dump"]
 
-#: the keys each wheel type takes (all of them are required)
-KEYS = {
-    "fixed": ("type", "position", "radius", "angle_deg"),
-    "centred": ("type", "position", "radius"),
-    "offset": ("type", "position", "radius", "offset"),
-    "dual": ("type", "position", "radius", "half_separation"),
-    "swedish": ("type", "position", "radius", "angle_deg", "roller_deg"),
-}
-_ALL_KEYS = ("type", "position", "radius", "offset", "half_separation", "angle_deg", "roller_deg")
 _TOP_KEYS = ("name", "wheel")
-#: what each key holds, for the messages
-_MEANING = {"position": "the mount point [x, y] in metres", "radius": "the wheel radius in metres, > 0",
-            "offset": "the offset d in metres, >= 0", "half_separation": "half the wheel separation b in metres, > 0",
-            "angle_deg": "the steering angle in degrees", "roller_deg": "the roller angle in degrees (90 omni, 45 mecanum)"}
+#: the optional key of every wheel table: the joints whose actuation differs from the kind's default
+_DRIVEN = "driven"
 
 
-class RobotFileError(ValueError):
-    """A malformed robot file; ``str(error)`` is one line: ``FILE:LINE: key: what is wrong``.
+def wheel_keys():
+    """The keys of each wheel kind's table, as the kinds declare them (all required; ``driven`` is optional).
 
-    Parameters
-    ----------
-    file : str
-        The file's name as given.
-    line : int
-        The line (from 1) of the offending key or table.
-    key : str
-        The offending key, e.g. ``wheel[2].radius``.
-    reason : str
-        What is wrong.
+    Returns
+    -------
+    dict of str to tuple of str
+        ``{kind: ("type", "position", "radius", its own keys...)}``, every registered kind.
+
+    Examples
+    --------
+    >>> wheel_keys()["dual"]
+    ('type', 'position', 'radius', 'half_separation')
     """
-
-    def __init__(self, file, line, key, reason):
-        self.file, self.line, self.key, self.reason = file, line, key, " ".join(str(reason).split())
-        super().__init__(f"{file}:{line}: {key}: {self.reason}")
+    return {kind: ("type",) + tuple(k.name for k in cls.file_keys()) for kind, cls in wheel_kinds().items()}
 
 
 # ------------------------------------------------------------------------------------- lines
@@ -93,7 +79,8 @@ class _Lines:
     """Where the keys are in the text: the line of each top-level key, wheel table and wheel key."""
 
     def __init__(self, text):
-        self.top, self.wheels = {}, []          # wheels: [(header line, {key: line})]
+        self.top: dict[str, int] = {}
+        self.wheels: list[tuple[int, dict[str, int]]] = []          # [(header line, {key: line})]
         where = self.top
         for n, line in enumerate(text.splitlines(), 1):
             if _WHEEL_HEADER.match(line):
@@ -118,45 +105,6 @@ class _Lines:
 
 
 # ------------------------------------------------------------------------------------ values
-def _is_number(v):
-    return isinstance(v, (int, float)) and not isinstance(v, bool)
-
-
-def _number(v, what):
-    if not _is_number(v):
-        raise ValueError(f"must be a number ({what}), got {_toml(v)}")
-    if not math.isfinite(v):
-        raise ValueError(f"must be a finite number ({what}), got {_toml(v)}")
-    return float(v)
-
-
-def _check(key, v):
-    """The value of wheel key ``key`` as the wheel classes take it, or ValueError saying what is wrong."""
-    if key == "position":
-        if not isinstance(v, list) or len(v) != 2 or not all(_is_number(x) for x in v):
-            raise ValueError(f"must be two numbers [x, y] ({_MEANING[key]}), got {_toml(v)}")
-        return tuple(_number(x, _MEANING[key]) for x in v)
-    x = _number(v, _MEANING[key])
-    if key in ("radius", "half_separation") and not x > 0:
-        raise ValueError(f"must be positive ({_MEANING[key]}), got {_toml(v)}")
-    if key == "offset" and x < 0:
-        raise ValueError(f"must not be negative ({_MEANING[key]}), got {_toml(v)}")
-    return x
-
-
-def _toml(v):
-    """A short TOML-like text of a parsed value."""
-    if isinstance(v, str):
-        return _string(v) if len(v) < 40 else _string(v[:37] + "...")
-    if isinstance(v, bool):
-        return "true" if v else "false"
-    if isinstance(v, list):
-        return "[" + ", ".join(_toml(x) for x in v[:4]) + (", ...]" if len(v) > 4 else "]")
-    if isinstance(v, dict):
-        return "a table"
-    return V.show(v, 40)
-
-
 def _a(kind):
     return ("an " if kind[0] in "aeiou" else "a ") + kind
 
@@ -167,49 +115,55 @@ def _suggest(word, choices):
 
 
 # ------------------------------------------------------------------------------------ reading
-def _unit(kind, values):
-    cls = {"fixed": FixedWheel, "centred": CentredWheel, "offset": OffsetWheel, "dual": DualWheel,
-           "swedish": SwedishWheel}[kind]
-    p, r = values["position"], values["radius"]
-    if kind == "offset":
-        return cls(p, r=r, d=values["offset"])
-    if kind == "dual":
-        return cls(p, r=r, b=values["half_separation"])
-    if kind == "fixed":
-        return cls(p, r, math.radians(values["angle_deg"]))
-    if kind == "swedish":
-        return cls(p, r, math.radians(values["angle_deg"]), math.radians(values["roller_deg"]))
-    return cls(p, r=r)
+def _driven(value, cls, where, fail):
+    """The ``driven`` table of a wheel: {joint name: bool}, joints of the kind only."""
+    names = [j.name for j in cls.JOINTS]
+    if not isinstance(value, dict):
+        fail(*where, f"must be a table {{joint = true or false}} (joints of {_a(cls.kind)} wheel: "
+             f"{', '.join(names)}), got {toml_text(value)}")
+    for name, flag in value.items():
+        if name not in names:
+            fail(*where, f"{_a(cls.kind)} wheel has no joint {name!r} (its joints: {', '.join(names)})"
+                 + _suggest(name, names))
+        if not isinstance(flag, bool):
+            fail(*where, f"{name} must be true or false, got {toml_text(flag)}")
+    return value
 
 
 def _wheel(k, table, lines, fail):
     """The wheel unit of the k-th ``[[wheel]]`` table (0-based ``k``)."""
     name = f"wheel[{k + 1}]"
+    kinds = wheel_kinds()
     if not isinstance(table, dict):
-        fail(lines.of(k), name, f"must be a table ([[wheel]]), got {_toml(table)}")
+        fail(lines.of(k), name, f"must be a table ([[wheel]]), got {toml_text(table)}")
     if "type" not in table:
-        fail(lines.of(k), f"{name}.type", f"missing (one of {', '.join(KEYS)})")
+        fail(lines.of(k), f"{name}.type", f"missing (one of {', '.join(kinds)})")
     kind = table["type"]
-    if not isinstance(kind, str) or kind not in KEYS:
-        fail(lines.of(k, "type"), f"{name}.type", f"must be one of {', '.join(KEYS)}, got {_toml(kind)}"
-             + (_suggest(kind, KEYS) if isinstance(kind, str) else ""))
+    if not isinstance(kind, str) or kind not in kinds:
+        fail(lines.of(k, "type"), f"{name}.type", f"must be one of {', '.join(kinds)}, got {toml_text(kind)}"
+             + (_suggest(kind, list(kinds)) if isinstance(kind, str) else ""))
+    cls = kinds[kind]
+    keys = {key.name: key for key in cls.file_keys()}
+    every = ["type", *dict.fromkeys(key.name for c in kinds.values() for key in c.file_keys()), _DRIVEN]
     for key in table:
-        if key not in _ALL_KEYS:
-            fail(lines.of(k, key), f"{name}.{key}", "unknown key" + _suggest(key, _ALL_KEYS))
-        if key not in KEYS[kind]:
+        if key not in every:
+            fail(lines.of(k, key), f"{name}.{key}", "unknown key" + _suggest(key, every))
+        if key not in keys and key not in ("type", _DRIVEN):
             fail(lines.of(k, key), f"{name}.{key}",
-                 f"not a key of {_a(kind)} wheel ({_a(kind)} wheel takes {', '.join(KEYS[kind])})")
-    values = {}
-    for key in KEYS[kind][1:]:
-        if key not in table:
-            fail(lines.of(k), f"{name}.{key}", f"missing ({_MEANING[key]})")
+                 f"not a key of {_a(kind)} wheel ({_a(kind)} wheel takes {', '.join(['type', *keys])})")
+    fields = {}
+    for key in keys.values():
+        if key.name not in table:
+            fail(lines.of(k), f"{name}.{key.name}", f"missing ({key.meaning})")
         try:
-            values[key] = _check(key, table[key])
-        except ValueError as exc:
-            fail(lines.of(k, key), f"{name}.{key}", str(exc))
+            fields[key.field] = key.read(table[key.name])
+        except InputError as exc:
+            fail(lines.of(k, key.name), f"{name}.{key.name}", str(exc))
+    if _DRIVEN in table:
+        fields["driven"] = _driven(table[_DRIVEN], cls, (lines.of(k, _DRIVEN), f"{name}.{_DRIVEN}"), fail)
     try:
-        return _unit(kind, values)
-    except (ValueError, TypeError) as exc:
+        return cls(**fields)
+    except InputError as exc:
         fail(lines.of(k), name, str(exc))
 
 
@@ -241,16 +195,15 @@ def loads(text, source="<string>"):
     >>> loads('[[wheel]]\\ntype = "centred"\\nposition = [0, 0]\\n', "bot.toml")
     Traceback (most recent call last):
     ...
-    wmr.io.RobotFileError: bot.toml:1: wheel[1].radius: missing (the wheel radius in metres, > 0)
+    wmr.errors.RobotFileError: bot.toml:1: wheel[1].radius: missing (the wheel radius in metres, > 0)
     """
     if not isinstance(text, str):
-        raise TypeError(f"text must be the TOML text of a robot file (str), got {V.show(text)}")
+        raise InputTypeError(f"text must be the TOML text of a robot file (str), got {V.show(text)}")
     if not isinstance(source, str):
-        raise TypeError(f"source must be a file name (str), got {V.show(source)}")
-    from .model.robot import Robot
+        raise InputTypeError(f"source must be a file name (str), got {V.show(source)}")
     lines = _Lines(text)
 
-    def fail(line, key, reason):
+    def fail(line: int, key: str, reason: str) -> NoReturn:
         raise RobotFileError(source, line, key, reason)
 
     try:
@@ -262,18 +215,19 @@ def loads(text, source="<string>"):
         line = int(m.group(1)) if m else lines.end
         head = re.sub(r"\s*\(at .*\)$", "", msg) + (" (a key given twice?)" if "overwrite" in msg else "")
         where = f" at column {m.group(2)}" if m else " at the end of the file"
-        key = _KEY.match(text.splitlines()[line - 1]) if text.splitlines() else None
-        fail(line, key.group(1).strip("\"'") if key else "syntax", f"TOML syntax error: {head.lower()}{where}")
+        at = _KEY.match(text.splitlines()[line - 1]) if text.splitlines() else None
+        fail(line, at.group(1).strip("\"'") if at else "syntax", f"TOML syntax error: {head.lower()}{where}")
+    assert data is not None
     for key in data:
         if key not in _TOP_KEYS:
             fail(lines.of(None, key), key, "unknown key" + _suggest(key, _TOP_KEYS)
                  + " (a robot file holds name and [[wheel]] tables)")
     name = data.get("name", "robot" if source.startswith("<") else Path(source).stem or "robot")
     if not isinstance(name, str):
-        fail(lines.of(None, "name"), "name", f"must be a string, got {_toml(name)}")
+        fail(lines.of(None, "name"), "name", f"must be a string, got {toml_text(name)}")
     tables = data.get("wheel", [])
     if not isinstance(tables, list):
-        fail(lines.of(None, "wheel"), "wheel", f"must be [[wheel]] tables, got {_toml(tables)}")
+        fail(lines.of(None, "wheel"), "wheel", f"must be [[wheel]] tables, got {toml_text(tables)}")
     if not tables:
         fail(lines.of(None, "wheel"), "wheel", "no wheels: a robot needs at least one [[wheel]] table")
     units = [_wheel(k, t, lines, fail) for k, t in enumerate(tables)]
@@ -286,7 +240,7 @@ def loads(text, source="<string>"):
                  f"({points[k, 0]:g}, {points[k, 1]:g}): two units cannot share a steering axis")
     try:
         return Robot(units, name=name)
-    except (ValueError, TypeError) as exc:
+    except InputError as exc:
         fail(lines.of(None, "wheel"), "wheel", str(exc))
 
 
@@ -313,7 +267,7 @@ def load(path):
         If ``path`` is not a path.
     """
     if not isinstance(path, (str, os.PathLike)):
-        raise TypeError(f"path must be a file name (str or os.PathLike), got {V.show(path)}")
+        raise InputTypeError(f"path must be a file name (str or os.PathLike), got {V.show(path)}")
     raw = Path(path).read_bytes()
     try:
         text = raw.decode("utf-8")
@@ -324,19 +278,15 @@ def load(path):
 
 
 # ------------------------------------------------------------------------------------ writing
-_ESCAPES = {'"': '\\"', "\\": "\\\\", "\n": "\\n", "\t": "\\t"}
-
-
-def _string(s):
-    """A TOML basic string (control characters escaped)."""
-    return '"' + "".join(_ESCAPES.get(c) or (f"\\u{ord(c):04X}" if ord(c) < 0x20 or ord(c) == 0x7F else c)
-                         for c in s) + '"'
-
-
 def _float(x):
     """The shortest text that reads back as the same double (TOML floats need a '.' or an exponent)."""
     text = repr(float(x))
     return text if any(c in text for c in ".eE") else text + ".0"
+
+
+def _value(v):
+    """The TOML text of a number or a list of numbers."""
+    return "[" + ", ".join(_float(x) for x in v) + "]" if isinstance(v, list) else _float(v)
 
 
 def dump(robot, path=None):
@@ -348,7 +298,7 @@ def dump(robot, path=None):
     Parameters
     ----------
     robot : Robot
-        Its wheel units must be of a type of the schema (:data:`KEYS`).
+        Any robot: every wheel kind declares its keys (:func:`wheel_keys`).
     path : str or os.PathLike, optional
         Where to write the text (UTF-8).
 
@@ -372,24 +322,21 @@ def dump(robot, path=None):
     """
     robot = V.robot(robot)
     if path is not None and not isinstance(path, (str, os.PathLike)):
-        raise TypeError(f"path must be a file name (str or os.PathLike) or None, got {V.show(path)}")
+        raise InputTypeError(f"path must be a file name (str or os.PathLike) or None, got {V.show(path)}")
     robot = robot.numeric()
-    out = ["# wmr robot file: lengths in metres, angles in degrees (schema: wmr.io)", f"name = {_string(robot.name)}"]
+    out = ["# wmr robot file: lengths in metres, angles in degrees (schema: wmr.io)",
+           f"name = {toml_string(robot.name)}"]
+    kinds = wheel_kinds()
     for k, u in enumerate(robot.wheels, 1):
-        if u.kind not in KEYS:
-            raise ValueError(f"robot has wheel {k} of kind {u.kind!r}, which robot files cannot describe "
-                             f"(types: {', '.join(KEYS)})")
-        x, y = u.position
-        out += ["", "[[wheel]]", f"type = {_string(u.kind)}", f"position = [{_float(x)}, {_float(y)}]",
-                f"radius = {_float(u.r)}"]
-        if u.kind == "offset":
-            out.append(f"offset = {_float(u.d)}")
-        elif u.kind == "dual":
-            out.append(f"half_separation = {_float(u.b)}")
-        if u.kind in ("fixed", "swedish"):
-            out.append(f"angle_deg = {_float(math.degrees(u.angle))}")
-        if u.kind == "swedish":
-            out.append(f"roller_deg = {_float(math.degrees(u.roller))}")
+        if kinds.get(u.kind) is not type(u):
+            raise InputValueError(f"robot has wheel {k} of kind {u.kind!r} ({type(u).__name__}), which is not a "
+                                  f"registered wheel kind: robot files cannot describe it (kinds: {', '.join(kinds)})")
+        out += ["", "[[wheel]]", f"type = {toml_string(u.kind)}"]
+        out += [f"{key.name} = {_value(key.write(u))}" for key in u.file_keys()]
+        changed = [(j.name, j.driven) for j, default in zip(u.joints, u.JOINTS, strict=True)
+                   if j.driven != default.driven]
+        if changed:
+            out.append(f"{_DRIVEN} = {{" + ", ".join(f"{n} = {'true' if d else 'false'}" for n, d in changed) + "}")
     text = "\n".join(out) + "\n"
     if path is not None:
         Path(path).write_text(text, encoding="utf-8")

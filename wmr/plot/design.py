@@ -37,7 +37,7 @@ def _colorbar(fig, im, ax, label, vmax):
 
 
 def draw_landscape(data, fig=None):
-    r"""Two panels: :math:`\bar\kappa` against :math:`d/r`, and :math:`\bar\kappa` over wheel 2's position at :math:`d = r`.
+    r"""Two panels: :math:`\bar\kappa` against :math:`d/r`, and over wheel 2's position at :math:`d = r`.
 
     Parameters
     ----------
