@@ -13,30 +13,6 @@ import pytest
 ROOT = Path(__file__).resolve().parent.parent
 MAX_LINES = 400
 
-#: what edition/ still does wrong, to be emptied by the edition's share of issue 23 (no new ones allowed)
-EDITION_KNOWN_PRIVATE = {
-    ("edition.exercises.ch5_steering", "edition.exercises.feedback", "_angles"),
-    ("edition.exercises.ch5_steering", "edition.exercises.feedback", "_none"),
-    ("edition.exercises.ch4_singularities", "edition.exercises.feedback", "_angles"),
-    ("edition.exercises.ch3_isotropy", "edition.exercises.feedback", "_matrix"),
-    ("edition.exercises.ch3_isotropy", "edition.exercises.feedback", "_none"),
-    ("edition.exercises.ch2_mobility", "edition.exercises.feedback", "_matrix"),
-    ("edition.exercises.ch2_mobility", "edition.exercises.feedback", "_none"),
-    ("edition.exercises.ch6_motion", "edition.exercises.feedback", "_none"),
-    ("edition.exercises.ch1_wheels", "edition.exercises.feedback", "_matrix"),
-    ("edition.exercises.ch1_wheels", "edition.exercises.feedback", "_none"),
-    ("edition.checks.assembly.drift", "edition.checks.assembly.matrices", "_exact"),
-    ("edition.checks.wheels.wheel", "edition.checks.wheels.frames", "_axes"),
-    ("edition.checks.wheels.wheel", "edition.checks.wheels.frames", "_explicit"),
-    ("edition.checks.wheels.wheel", "edition.checks.wheels.frames", "_t"),
-    ("edition.checks.wheels.dual", "edition.checks.wheels.frames", "_axes"),
-    ("edition.checks.wheels.dual", "edition.checks.wheels.frames", "_explicit"),
-    ("edition.checks.wheels.dual", "edition.checks.wheels.frames", "_t"),
-    ("edition.checks.centred.singular", "edition.checks.centred.mobility", "_axes"),
-    ("edition.checks.centred.singular", "edition.checks.centred.mobility", "_u"),
-    ("edition.ledger.rows", "edition.ledger.markup", "_row_problems"),
-}
-
 
 # ------------------------------------------------------------------------------------------ the reader
 def modules(*packages, root=ROOT):
@@ -158,9 +134,8 @@ def test_no_private_names_imported_across_modules_of_wmr():
     assert private_imports(WMR) == set()
 
 
-def test_the_edition_imports_no_new_private_names():
-    found = private_imports(BOTH) - private_imports(WMR)
-    assert found <= EDITION_KNOWN_PRIVATE, sorted(found - EDITION_KNOWN_PRIVATE)
+def test_no_private_names_imported_across_modules_of_the_edition():
+    assert private_imports(BOTH) - private_imports(WMR) == set()
 
 
 def test_imports_go_one_way():
