@@ -24,6 +24,7 @@ COMMANDS = {
     "ik": "ik",
     "fk": "fk",
     "sweep": "sweep",
+    "simulate": "simulate",
 }
 
 

@@ -1,0 +1,549 @@
+r"""Running an exported robot in MuJoCo: commands in wmr's variables in, measurements in wmr's variables out.
+
+A :class:`Simulation` holds a compiled model and its state.  It takes commands in wmr's own terms,
+steering angles :math:`\boldsymbol\beta` and joint rates :math:`\dot{\boldsymbol\theta}` (the rate vector
+of :attr:`wmr.Robot.rate_names`), and gives each servo its target through the unit's chain
+(:mod:`wmr.sim.chains`): a steering servo tracks :math:`\beta_i`, a drive servo the rate its hinge
+measures.  Servos can be switched off (a free drive), and a force and torque can be applied to the
+platform at C (a push).
+
+:meth:`Simulation.sample` measures, in wmr's variables: the platform pose :math:`(\psi, X, Y)` and
+body twist :math:`[\dot\psi, \dot x, \dot y]`; the steering angles and the encoders' joint rates
+(an offset wheel's :math:`\dot\phi_i = \dot\psi + \dot\beta_i` (7) from its steering encoder and the
+platform's turning rate); the servo torques; and per wheel the contact point, the contact force
+(world frame, on the wheel), the torque about the contact normal, and the **slip**, the velocity
+of the wheel's material point at the contact relative to the ground (zero for rolling without
+slipping, (6)).  :func:`run` drives a simulation along a :class:`Schedule` and returns a
+:class:`Recording` of samples.
+
+MuJoCo is imported here only (``pip install wmr[sim]``); ``import wmr`` does not import it.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..model import validation as V
+from .chains import POSITION, VELOCITY
+from .mjcf import Export, export
+
+__all__ = ["MAX_STEPS", "Recording", "Sample", "Schedule", "Simulation", "run"]
+
+#: the most integration steps a run may take (a run of 10^7 steps takes minutes)
+MAX_STEPS = 5_000_000
+
+
+def _mujoco():
+    try:
+        import mujoco
+    except ImportError as e:                        # pragma: no cover - the edition's venv has it
+        raise ImportError("wmr.sim needs MuJoCo: pip install 'wmr[sim]' (or pip install mujoco)") from e
+    return mujoco
+
+
+@dataclass(frozen=True)
+class Sample:
+    r"""What the simulation measures at one instant (see the module docstring).
+
+    Attributes
+    ----------
+    t : float
+    pose : numpy.ndarray (3,)
+        :math:`(\psi, X, Y)`: heading and position of C, fixed frame.
+    twist : numpy.ndarray (3,)
+        :math:`[\dot\psi, \dot x, \dot y]`, body frame.
+    beta : numpy.ndarray (w,)
+        Steering angles (unwrapped; unsteered units: their own angle).
+    rates : numpy.ndarray (n_rates,)
+        The encoders' joint rates in wmr's order.
+    torque : numpy.ndarray (n_servos,)
+        Servo torques, in the order of :attr:`Simulation.servo_names`.
+    point : numpy.ndarray (n_wheels, 3)
+        Contact points, fixed frame (NaN for a wheel off the ground).
+    force : numpy.ndarray (n_wheels, 3)
+        Contact force on each wheel, fixed frame.
+    moment : numpy.ndarray (n_wheels, 3)
+        Contact torque on each wheel (torsional and rolling friction), fixed frame.
+    slip : numpy.ndarray (n_wheels, 2)
+        Horizontal velocity of each wheel's material point at its contact, fixed frame.
+    dissipation : numpy.ndarray (n_wheels,)
+        Power the contact takes from each wheel, W: :math:`-(\mathbf f\cdot\mathbf v + \boldsymbol\tau\cdot\boldsymbol\omega)`
+        with :math:`\mathbf v` the velocity of the wheel's point at the contact and
+        :math:`\boldsymbol\omega` the wheel's angular velocity (sliding, torsional and rolling friction
+        together; the soft contact's springs add or return a little).
+    """
+
+    t: float
+    pose: np.ndarray
+    twist: np.ndarray
+    beta: np.ndarray
+    rates: np.ndarray
+    torque: np.ndarray
+    point: np.ndarray
+    force: np.ndarray
+    moment: np.ndarray
+    slip: np.ndarray
+    dissipation: np.ndarray
+
+
+@dataclass(frozen=True)
+class Recording:
+    """Samples of a run, stacked: each attribute of :class:`Sample` with a leading time axis (N, ...).
+
+    Attributes
+    ----------
+    export : Export
+        The exported robot (names, chains, parameters).
+    t : numpy.ndarray (N,)
+    pose : numpy.ndarray (N, 3)
+    twist : numpy.ndarray (N, 3)
+    beta : numpy.ndarray (N, w)
+    rates : numpy.ndarray (N, n_rates)
+    torque : numpy.ndarray (N, n_servos)
+    point : numpy.ndarray (N, n_wheels, 3)
+    force : numpy.ndarray (N, n_wheels, 3)
+    moment : numpy.ndarray (N, n_wheels, 3)
+    slip : numpy.ndarray (N, n_wheels, 2)
+    dissipation : numpy.ndarray (N, n_wheels)
+        Each as in :class:`Sample`, stacked over the N samples.
+    """
+
+    export: Export
+    t: np.ndarray
+    pose: np.ndarray
+    twist: np.ndarray
+    beta: np.ndarray
+    rates: np.ndarray
+    torque: np.ndarray
+    point: np.ndarray
+    force: np.ndarray
+    moment: np.ndarray
+    slip: np.ndarray
+    dissipation: np.ndarray
+
+    @property
+    def slip_speed(self):
+        """Slip speed of each wheel, m/s: (N, n_wheels)."""
+        return np.hypot(self.slip[..., 0], self.slip[..., 1])
+
+    def kinematic_slip(self):
+        r"""wmr's view of the encoders: the residual of (21) of the least-squares twist, per sample.
+
+        :func:`wmr.forward` from the measured steering angles and joint rates; the residual
+        :math:`\mathbf J_1\mathbf t - \mathbf J_2\dot{\boldsymbol\theta}` is zero exactly when the rates are
+        compatible.
+
+        Returns
+        -------
+        tuple of numpy.ndarray
+            The twist from the encoders (N, 3) and the residual's norm (N,).
+        """
+        from ..analysis.kinematics import forward
+        sol = forward(self.export.robot, self.beta, self.rates)
+        return sol.value, np.linalg.norm(sol.residual, axis=-1)
+
+
+@dataclass(frozen=True)
+class Schedule:
+    r"""Commands in wmr's variables over time, interpolated linearly between knots.
+
+    Attributes
+    ----------
+    t : numpy.ndarray (K,)
+        Knot times, increasing; before the first and after the last the end values hold.
+    beta : numpy.ndarray (K, w)
+        Steering angles for the steering servos.
+    rates : numpy.ndarray (K, n_rates)
+        Joint rates for the drive servos.
+    """
+
+    t: np.ndarray
+    beta: np.ndarray
+    rates: np.ndarray
+
+    def __post_init__(self):
+        t = V.finite_array("t", self.t)
+        if t.ndim != 1 or len(t) == 0 or (len(t) > 1 and not np.all(np.diff(t) > 0)):
+            raise ValueError(f"t must be a non-empty increasing vector, got {V.show(self.t)}")
+        beta = V.finite_array("beta", self.beta)
+        rates = V.finite_array("rates", self.rates)
+        if beta.ndim != 2 or rates.ndim != 2 or len(beta) != len(t) or len(rates) != len(t):
+            raise ValueError(f"beta and rates must have one row per knot ({len(t)}), got shapes "
+                             f"{beta.shape} and {rates.shape}")
+        object.__setattr__(self, "t", t)
+        object.__setattr__(self, "beta", beta)
+        object.__setattr__(self, "rates", rates)
+
+    @classmethod
+    def constant(cls, beta, rates):
+        """The same command at every time.
+
+        Parameters
+        ----------
+        beta : array (w,)
+        rates : array (n_rates,)
+
+        Returns
+        -------
+        Schedule
+        """
+        return cls(np.zeros(1), np.atleast_2d(np.asarray(beta, dtype=float)),
+                   np.atleast_2d(np.asarray(rates, dtype=float)))
+
+    def at(self, t):
+        """The commands at times ``t``.
+
+        Parameters
+        ----------
+        t : float or array (n,)
+
+        Returns
+        -------
+        tuple of numpy.ndarray
+            beta (w,) and rates (n_rates,), or (n, w) and (n, n_rates) for an array of times.
+        """
+        tt = np.atleast_1d(np.asarray(t, dtype=float))
+        out = []
+        for values in (self.beta, self.rates):
+            if len(self.t) == 1:
+                out.append(np.repeat(values, len(tt), axis=0))
+            else:
+                out.append(np.stack([np.interp(tt, self.t, col) for col in values.T], axis=-1))
+        return (out[0], out[1]) if np.ndim(t) else (out[0][0], out[1][0])
+
+    def beta_rate(self, t):
+        """The rate of the steering targets at times ``t`` (the slope of the segment; 0 outside the knots).
+
+        Parameters
+        ----------
+        t : array (n,)
+
+        Returns
+        -------
+        numpy.ndarray (n, w)
+        """
+        tt = np.atleast_1d(np.asarray(t, dtype=float))
+        out = np.zeros((len(tt), self.beta.shape[1]))
+        if len(self.t) > 1:
+            slope = np.diff(self.beta, axis=0) / np.diff(self.t)[:, None]
+            k = np.searchsorted(self.t, tt, side="right") - 1
+            inside = (k >= 0) & (k < len(self.t) - 1)
+            out[inside] = slope[k[inside]]
+        return out
+
+
+def _yaw(q):
+    """Heading of a quaternion (w, x, y, z) about the vertical."""
+    w, x, y, z = q
+    return float(np.arctan2(2 * (w * z + x * y), 1 - 2 * (y * y + z * z)))
+
+
+class Simulation:
+    r"""A robot in MuJoCo, commanded and measured in wmr's variables.
+
+    Parameters
+    ----------
+    robot : Robot or Export
+        The robot (exported here with the other arguments), or an :class:`~wmr.sim.mjcf.Export`.
+    beta : array (w,), optional
+        Initial steering angles (default 0), also the first target of the steering servos.
+    passive : sequence of bool, optional
+        Passive units (:func:`wmr.sim.mjcf.default_passive`).
+    params : Params, optional
+    settle : float, optional
+        Seconds to let the robot settle on its wheels with every servo holding still before
+        time 0 (default 0.2; the clock then restarts at 0 with the pose at the origin).
+    **changes
+        Parameters to change by name.
+
+    Attributes
+    ----------
+    export : Export
+    model, data : mujoco.MjModel, mujoco.MjData
+    servo_names : tuple of str
+    wheel_names : tuple of str
+        The contact geoms, one per wheel (``u<i>_wheel``...).
+    wheel_unit : numpy.ndarray of int (n_wheels,)
+        The unit (0-based) of each wheel.
+    """
+
+    def __init__(self, robot, beta=None, passive=None, params=None, settle=0.2, **changes):
+        mj = _mujoco()
+        self._mj = mj
+        self.export = robot if isinstance(robot, Export) else export(robot, beta, passive, params, **changes)
+        ex = self.export
+        self.model = mj.MjModel.from_xml_string(ex.xml)
+        self.data = mj.MjData(self.model)
+        self.robot = ex.robot
+        m = self.model
+        self._id = lambda kind, name: mj.mj_name2id(m, kind, name)
+        # joints: per unit, (joint, qpos address, dof address)
+        self._joints = []
+        for i, ch in enumerate(ex.chains):
+            row = []
+            for j in ch.joints:
+                jid = self._id(mj.mjtObj.mjOBJ_JOINT, ex.name(i, j.name))
+                row.append((j, int(m.jnt_qposadr[jid]), int(m.jnt_dofadr[jid])))
+            self._joints.append(row)
+        self.servo_names = tuple(m.actuator(a).name for a in range(m.nu))
+        self._servo = {n: a for a, n in enumerate(self.servo_names)}
+        wheels = [(i, ex.name(i, k.name)) for i, ch in enumerate(ex.chains) for k in ch.wheels]
+        self.wheel_names = tuple(n for _, n in wheels)
+        self.wheel_unit = np.array([i for i, _ in wheels], dtype=int)
+        self._geom = {self._id(mj.mjtObj.mjOBJ_GEOM, n): k for k, (_, n) in enumerate(wheels)}
+        self._wheel_body = [int(m.geom_bodyid[g]) for g in sorted(self._geom, key=self._geom.get)]
+        self._platform = self._id(mj.mjtObj.mjOBJ_BODY, "platform")
+        self._gains = (m.actuator_gainprm.copy(), m.actuator_biasprm.copy())
+        self._jacp, self._jacr = np.zeros((3, m.nv)), np.zeros((3, m.nv))
+        self._f6 = np.zeros(6)
+        # each servo's target as a linear map of (beta, rates): a steering servo takes beta_i, a drive servo its rate
+        self._from_beta, self._from_rates = np.zeros((m.nu, self.robot.w)), np.zeros((m.nu, self.robot.n_rates))
+        for i, (row, sl) in enumerate(zip(self._joints, self.robot.rate_slices)):
+            for j, _, _ in row:
+                a = self._servo.get(ex.name(i, j.name))
+                if a is not None and j.servo == POSITION and j.steering:
+                    self._from_beta[a, i] = 1.0
+                elif a is not None and j.servo == VELOCITY and j.rate is not None:
+                    self._from_rates[a, sl.start + j.rate] = 1.0
+        # a position servo pushes kp (target - q) - kv q_dot: fed target + (kv / kp) target_dot, it is a PD law
+        # on the error and follows a turning target without lag
+        kp, kv = m.actuator_gainprm[:, 0], -m.actuator_biasprm[:, 2]
+        self._lead = np.where(self._from_beta.any(axis=1) & (kp > 0), kv / np.where(kp > 0, kp, 1.0), 0.0)
+        mj.mj_resetDataKeyframe(m, self.data, 0)
+        self._beta = np.array(ex.beta0, dtype=float)
+        self._rates = np.zeros(self.robot.n_rates)
+        self.command(self._beta, self._rates)
+        settle = V.number("settle", V.nonnegative("settle", settle))
+        if settle > 0:
+            self.advance(settle)
+            self.data.time = 0.0
+            self.data.qpos[0:2] = 0.0                                  # C back at the origin, heading kept
+        mj.mj_forward(m, self.data)
+
+    # --- commands --------------------------------------------------------------------------
+    def command(self, beta=None, rates=None, beta_rate=None):
+        r"""Set the servos' targets from steering angles and joint rates (wmr's variables).
+
+        Parameters
+        ----------
+        beta : array (w,), optional
+            Targets of the steering servos (entries of unsteered or passive units are ignored);
+            default: keep the last.
+        rates : array (n_rates,), optional
+            Joint rates; each drive servo takes the rate its hinge measures (an offset wheel's
+            steering is a position servo: it takes ``beta``).  Default: keep the last.
+        beta_rate : array (w,), optional
+            The rate at which the steering targets turn (default 0): a steering servo is fed
+            ``beta + (kv / kp) beta_rate``, so that it follows a turning target without lag.
+
+        Returns
+        -------
+        None
+        """
+        if beta is not None:
+            self._beta = V.finite_array("beta", beta, last=self.robot.w).reshape(self.robot.w).copy()
+        if rates is not None:
+            self._rates = V.finite_array("rates", rates, last=self.robot.n_rates).reshape(self.robot.n_rates).copy()
+        lead = 0.0 if beta_rate is None else self._lead * (self._from_beta @ V.finite_array("beta_rate", beta_rate, last=self.robot.w))
+        self.data.ctrl[:] = self._from_beta @ self._beta + self._from_rates @ self._rates + lead
+
+    def release(self, names):
+        """Switch servos off (their hinges turn freely), e.g. ``["u1_drive"]``; :meth:`engage` switches them on.
+
+        Parameters
+        ----------
+        names : iterable of str
+            Servo names (:attr:`servo_names`).
+
+        Returns
+        -------
+        None
+        """
+        for n in names:
+            a = self._servo_index(n)
+            self.model.actuator_gainprm[a] = 0.0
+            self.model.actuator_biasprm[a] = 0.0
+
+    def engage(self, names):
+        """Switch servos back on (undo :meth:`release`).
+
+        Parameters
+        ----------
+        names : iterable of str
+
+        Returns
+        -------
+        None
+        """
+        for n in names:
+            a = self._servo_index(n)
+            self.model.actuator_gainprm[a] = self._gains[0][a]
+            self.model.actuator_biasprm[a] = self._gains[1][a]
+
+    def _servo_index(self, name):
+        if name not in self._servo:
+            raise ValueError(f"no servo named {V.show(name)}; servos: {list(self.servo_names)}")
+        return self._servo[name]
+
+    def push(self, force=(0.0, 0.0), torque=0.0):
+        """Apply a horizontal force at C and a torque about the vertical to the platform (until changed).
+
+        Parameters
+        ----------
+        force : pair
+            N, fixed frame.
+        torque : float
+            N m.
+
+        Returns
+        -------
+        None
+        """
+        f = V.finite_array("force", force, last=2).reshape(2)
+        tau = V.number("torque", torque)
+        self.data.xfrc_applied[:] = 0.0
+        # xfrc_applied acts at the body's centre of mass: move the force to C by adding its moment
+        com = self.data.xipos[self._platform]
+        C = self.data.xpos[self._platform]
+        arm = C[:2] - com[:2]
+        self.data.xfrc_applied[self._platform, 0:2] = f
+        self.data.xfrc_applied[self._platform, 5] = tau + arm[0] * f[1] - arm[1] * f[0]
+
+    # --- time ------------------------------------------------------------------------------
+    def advance(self, seconds):
+        """Integrate ``seconds`` (rounded to whole steps) with the present commands.
+
+        Parameters
+        ----------
+        seconds : float
+            >= 0.
+
+        Returns
+        -------
+        None
+        """
+        seconds = V.number("seconds", V.nonnegative("seconds", seconds))
+        n = round(seconds / self.model.opt.timestep)
+        if n > MAX_STEPS:
+            raise ValueError(f"seconds = {seconds!r} needs {n} steps, more than {MAX_STEPS}")
+        if n:
+            self._mj.mj_step(self.model, self.data, nstep=n)
+        if not np.isfinite(self.data.qpos).all():
+            raise FloatingPointError(f"the simulation diverged at t = {self.data.time:.6g} s")
+
+    @property
+    def t(self):
+        """Simulated time, s."""
+        return float(self.data.time)
+
+    # --- measurements ----------------------------------------------------------------------
+    def sample(self):
+        """Measure the present state (module docstring).
+
+        Returns
+        -------
+        Sample
+        """
+        mj, m, d = self._mj, self.model, self.data
+        mj.mj_forward(m, d)                                      # positions, contacts and forces of this state
+        q = d.qpos
+        psi = _yaw(q[3:7])
+        c, s = np.cos(psi), np.sin(psi)
+        v = d.qvel[0:3]                                          # world-frame velocity of C
+        wz = float(d.xmat[self._platform].reshape(3, 3)[:, 2] @ d.qvel[3:6])   # turning rate (body -> world z)
+        twist = np.array([wz, c * v[0] + s * v[1], -s * v[0] + c * v[1]])
+        beta = np.array(self.robot.effective_beta(np.zeros(self.robot.w)), dtype=float)
+        rates = np.zeros(self.robot.n_rates)
+        for i, (row, sl) in enumerate(zip(self._joints, self.robot.rate_slices)):
+            for j, qa, da in row:
+                if j.steering:
+                    beta[i] = q[qa]
+                if j.rate is not None:
+                    rates[sl.start + j.rate] = d.qvel[da] + (wz if j.absolute else 0.0)
+        nw = len(self.wheel_names)
+        point = np.full((nw, 3), np.nan)
+        force, moment = np.zeros((nw, 3)), np.zeros((nw, 3))
+        slip, power = np.zeros((nw, 2)), np.zeros(nw)
+        for k in range(d.ncon):
+            con = d.contact[k]
+            g1, g2 = int(con.geom[0]), int(con.geom[1])
+            w = self._geom.get(g2, self._geom.get(g1))
+            if w is None:
+                continue
+            mj.mj_contactForce(m, d, k, self._f6)
+            frame = con.frame.reshape(3, 3)                      # rows: normal (geom1 -> geom2), tangents
+            sign = 1.0 if g2 in self._geom else -1.0             # the force on geom2 is +, on geom1 -
+            f = sign * (frame.T @ self._f6[:3])
+            tq = sign * (frame.T @ self._f6[3:6])
+            p = np.array(con.pos)
+            mj.mj_jac(m, d, self._jacp, self._jacr, p, self._wheel_body[w])
+            u, om = self._jacp @ d.qvel, self._jacr @ d.qvel         # the wheel's point at p, the wheel's spin
+            force[w] += f
+            moment[w] += tq
+            point[w] = p
+            slip[w] = u[:2]
+            power[w] -= f @ u + tq @ om
+        torque = np.array(d.actuator_force, dtype=float)
+        return Sample(float(d.time), np.array([psi, q[0], q[1]]), twist, beta, rates, torque, point, force, moment,
+                      slip, power)
+
+
+def run(sim, schedule, seconds, control_dt=0.001, every=10, on_step=None):
+    """Drive a simulation along a schedule and record it.
+
+    Each control period the servos get the schedule's command at the period's start (as
+    :meth:`Simulation.command` gives it), then the physics advances one period.
+
+    Parameters
+    ----------
+    sim : Simulation
+    schedule : Schedule or None
+        None: keep the present commands.
+    seconds : float
+        Duration, > 0.
+    control_dt : float
+        Control period, s (rounded to whole integration steps; default 0.001, a 1 kHz controller).
+    every : int
+        Record every ``every``-th period (and the first and last; default 10).
+    on_step : callable, optional
+        ``on_step(sim)`` called at each period before the command (e.g. to push).
+
+    Returns
+    -------
+    Recording
+    """
+    seconds = V.number("seconds", V.positive("seconds", seconds))
+    control_dt = V.number("control_dt", V.positive("control_dt", control_dt))
+    every = V.integer("every", every, minimum=1)
+    if schedule is not None and not isinstance(schedule, Schedule):
+        raise TypeError(f"schedule must be a wmr.sim.Schedule or None, got {V.show(schedule)}")
+    n = int(np.ceil(seconds / control_dt - 1e-9))
+    if n * max(1, round(control_dt / sim.model.opt.timestep)) > MAX_STEPS:
+        raise ValueError(f"seconds = {seconds!r} needs more than {MAX_STEPS} steps")
+    steps = max(1, round(control_dt / sim.model.opt.timestep))
+    mj, m, d = sim._mj, sim.model, sim.data
+    times = np.arange(n) * steps * m.opt.timestep
+    if schedule is not None:
+        beta, rates = schedule.at(times)
+        turning = schedule.beta_rate(times)
+        ctrl = beta @ sim._from_beta.T + rates @ sim._from_rates.T + sim._lead * (turning @ sim._from_beta.T)
+    samples = [sim.sample()]
+    for k in range(n):
+        if on_step is not None:
+            on_step(sim)
+        if schedule is not None:
+            d.ctrl[:] = ctrl[k]
+        mj.mj_step(m, d, nstep=steps)
+        if (k + 1) % every == 0 or k == n - 1:
+            if not np.isfinite(d.qpos).all():
+                raise FloatingPointError(f"the simulation diverged at t = {d.time:.6g} s")
+            samples.append(sim.sample())
+    if schedule is not None:
+        sim._beta, sim._rates = beta[-1].copy(), rates[-1].copy()
+    return _stack(sim.export, samples)
+
+
+def _stack(ex, samples):
+    fields = ("t", "pose", "twist", "beta", "rates", "torque", "point", "force", "moment", "slip", "dissipation")
+    return Recording(ex, *(np.array([getattr(s, f) for s in samples]) for f in fields))
