@@ -95,6 +95,8 @@ def test_castors_are_passive_unless_said_otherwise():
     assert default_passive(wmr.paper_robot("offset")) == (False, False, False)
     xml = to_mjcf(diff)
     assert "u3_steer" in xml and 'joint="u3_' not in xml                    # a castor: its hinges, no servo
+    m = _model(xml)
+    assert export(diff).servo_names == tuple(m.actuator(a).name for a in range(m.nu)) == ("u1_drive", "u2_drive")
     assert to_mjcf(diff, passive=[False, False, False]).count('joint="u3_') == 2
 
 

@@ -108,6 +108,25 @@ def test_released_drives_roll_and_pushes_push():
         sim2.release(["u9_drive"])
 
 
+def test_locked_drives_hold():
+    """Drives locked: the push along the wheels that rolled the robot above now moves it by creep only, the
+    encoders read zero; unlocked, it rolls again."""
+    robot = wmr.paper_robot("centred", L=0.3, r=0.05)
+    sim = Simulation(robot)
+    sim.lock(sim.export.drive_names)
+    W = sim.export.weight
+    sim.push((0.0, 0.1 * W))
+    sim.advance(0.5)
+    s = sim.sample()
+    assert abs(s.twist[2]) < 1e-3 and np.abs(s.rates).max() < 1e-3
+    sim.unlock(sim.export.drive_names)
+    sim.release(sim.export.drive_names)
+    sim.advance(0.5)
+    assert sim.sample().twist[2] > 0.1
+    with pytest.raises(ValueError, match="no lockable drive"):
+        sim.lock(["u1_steer"])
+
+
 def test_schedule_checks_and_interpolates():
     s = Schedule([0.0, 1.0], [[0.0], [1.0]], [[2.0], [4.0]])
     beta, rates = s.at(0.25)

@@ -3,7 +3,9 @@ r"""Any :class:`wmr.Robot` as a MuJoCo model (MJCF text): :func:`to_mjcf`.
 The model: a ground plane; the platform, a free body whose frame is the body frame of wmr
 (origin C on the mount plane, x forward, z up); under it each unit's chain of links
 (:func:`wmr.sim.chains.unit_chain`, one description per wheel kind); an actuator for every servoed
-hinge; and a keyframe ``start`` with the steering angles :math:`\boldsymbol\beta_0`.  Names follow
+hinge; a lock for every drive hinge (a joint equality ``<name>_lock``, inactive: the drive locked,
+as the paper's Section 4.2 locks it, when switched on); and a keyframe ``start`` with the steering
+angles :math:`\boldsymbol\beta_0`.  Names follow
 the paper's numbering: unit ``i`` (from 1) has bodies, joints and actuators ``u<i>_<name>`` (e.g.
 ``u2_steer``, ``u2_drive``), and the geom by which a wheel touches the ground is named after its
 link (``u2_wheel``; ``u3_wheel1``, ``u3_wheel2`` for a dual wheel).
@@ -59,6 +61,17 @@ class Export:
     def name(i, part):
         """The MuJoCo name of part ``part`` of unit ``i`` (0-based index): ``u<i+1>_<part>``."""
         return f"u{i + 1}_{part}"
+
+    @property
+    def drive_names(self):
+        """Every drive hinge (driven or not), each with its lock ``<name>_lock``: tuple of str."""
+        return tuple(self.name(i, j.name) for i, ch in enumerate(self.chains) for j in ch.joints if j.servo == VELOCITY)
+
+    @property
+    def servo_names(self):
+        """The servos (MuJoCo actuators) in the model's order: one per servoed hinge of each active unit (tuple of str)."""
+        return tuple(self.name(i, j.name) for i, ch in enumerate(self.chains) if not self.passive[i]
+                     for j in ch.joints if j.servo is not None)
 
 
 
@@ -250,6 +263,10 @@ def _write(robot, params, chains, passive, height, beta0, weight):
                 lines.append(f'    <velocity name="{name}" joint="{name}" kv="{_f(params.drive_kv * tau)}" '
                              f'forcerange="{_v(-tau, tau)}"/>')
     lines.append("  </actuator>")
+    drives = Export(None, robot, params, chains, passive, height, beta0, weight).drive_names
+    if drives:                       # a lock per drive hinge, off until Simulation.lock switches it on (a brake)
+        lines += (["  <equality>"] + [f'    <joint name="{n}_lock" joint1="{n}" polycoef="0 0 0 0 0" active="false"/>'
+                                       for n in drives] + ["  </equality>"])
     qpos = [0.0, 0.0, height, 1.0, 0.0, 0.0, 0.0]
     for i, ch in enumerate(chains):
         qpos += [float(beta0[i]) if j.steering else 0.0 for j in ch.joints]

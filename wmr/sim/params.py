@@ -74,7 +74,8 @@ class Params:
     steer_damping : float
         Damping ratio of the steering servo (default 1: critical).
     drive_kv : float
-        Velocity gain, in torque limits per rad/s (default 20: saturates at 0.05 rad/s of error).
+        Velocity gain, in torque limits per rad/s (default 2: saturates at 0.5 rad/s of error; stiffer servos
+        fight each other through the soft contacts and make the wheels chatter).
     timestep : float
         Integration step, s (default 0.001); MuJoCo's ``implicitfast`` integrator, Newton solver.
     contact_time : float
@@ -94,7 +95,7 @@ class Params:
     drive_torque: float = 0.5
     steer_kp: float = 20.0
     steer_damping: float = 1.0
-    drive_kv: float = 20.0
+    drive_kv: float = 2.0
     timestep: float = 0.001
     contact_time: float = 0.005
     impratio: float = 100.0

@@ -4,8 +4,8 @@ A :class:`Simulation` holds a compiled model and its state.  It takes commands i
 steering angles :math:`\boldsymbol\beta` and joint rates :math:`\dot{\boldsymbol\theta}` (the rate vector
 of :attr:`wmr.Robot.rate_names`), and gives each servo its target through the unit's chain
 (:mod:`wmr.sim.chains`): a steering servo tracks :math:`\beta_i`, a drive servo the rate its hinge
-measures.  Servos can be switched off (a free drive), and a force and torque can be applied to the
-platform at C (a push).
+measures.  Servos can be switched off (a free drive), drive hinges locked (the paper's locked
+drives), and a force and torque can be applied to the platform at C (a push).
 
 :meth:`Simulation.sample` measures, in wmr's variables: the platform pose :math:`(\psi, X, Y)` and
 body twist :math:`[\dot\psi, \dot x, \dot y]`; the steering angles and the encoders' joint rates
@@ -381,6 +381,52 @@ class Simulation:
             self.model.actuator_gainprm[a] = self._gains[0][a]
             self.model.actuator_biasprm[a] = self._gains[1][a]
 
+    def lock(self, names):
+        """Lock drive hinges where they are (their servos off): the paper's "driving actuators locked".
+
+        A lock is a joint equality of the model (``<name>_lock``), as stiff as MuJoCo's constraints,
+        with no torque limit; :meth:`unlock` frees the hinges and switches their servos back on.
+
+        Parameters
+        ----------
+        names : iterable of str
+            Drive hinges (= their servos' names), e.g. ``["u1_drive"]``.
+
+        Returns
+        -------
+        None
+        """
+        mj, m, d = self._mj, self.model, self.data
+        for n in names:
+            eq = self._id(mj.mjtObj.mjOBJ_EQUALITY, f"{n}_lock")
+            if eq < 0:
+                raise ValueError(f"no lockable drive hinge named {V.show(n)}; drives: "
+                                 f"{[x for x in self.servo_names if 'drive' in x]}")
+            m.eq_data[eq, 0] = d.qpos[m.jnt_qposadr[m.eq_obj1id[eq]]]
+            d.eq_active[eq] = 1
+            if n in self._servo:
+                self.release([n])
+
+    def unlock(self, names):
+        """Undo :meth:`lock`.
+
+        Parameters
+        ----------
+        names : iterable of str
+
+        Returns
+        -------
+        None
+        """
+        mj = self._mj
+        for n in names:
+            eq = self._id(mj.mjtObj.mjOBJ_EQUALITY, f"{n}_lock")
+            if eq < 0:
+                raise ValueError(f"no lockable drive hinge named {V.show(n)}")
+            self.data.eq_active[eq] = 0
+            if n in self._servo:
+                self.engage([n])
+
     def _servo_index(self, name):
         if name not in self._servo:
             raise ValueError(f"no servo named {V.show(name)}; servos: {list(self.servo_names)}")
@@ -493,7 +539,9 @@ def run(sim, schedule, seconds, control_dt=0.001, every=10, on_step=None):
     """Drive a simulation along a schedule and record it.
 
     Each control period the servos get the schedule's command at the period's start (as
-    :meth:`Simulation.command` gives it), then the physics advances one period.
+    :meth:`Simulation.command` gives it), then the physics advances one period.  A sample is taken
+    at the start of every ``every``-th period, after its commands are set (so that the servo torques
+    sampled are those applied), and one at the end.
 
     Parameters
     ----------
@@ -505,7 +553,7 @@ def run(sim, schedule, seconds, control_dt=0.001, every=10, on_step=None):
     control_dt : float
         Control period, s (rounded to whole integration steps; default 0.001, a 1 kHz controller).
     every : int
-        Record every ``every``-th period (and the first and last; default 10).
+        Record every ``every``-th period (and the end; default 10).
     on_step : callable, optional
         ``on_step(sim)`` called at each period before the command (e.g. to push).
 
@@ -528,17 +576,18 @@ def run(sim, schedule, seconds, control_dt=0.001, every=10, on_step=None):
         beta, rates = schedule.at(times)
         turning = schedule.beta_rate(times)
         ctrl = beta @ sim._from_beta.T + rates @ sim._from_rates.T + sim._lead * (turning @ sim._from_beta.T)
-    samples = [sim.sample()]
+    samples = []
     for k in range(n):
         if on_step is not None:
             on_step(sim)
         if schedule is not None:
             d.ctrl[:] = ctrl[k]
+        if k % every == 0:
+            samples.append(sim.sample())                 # the state at the period's start, with its commands
         mj.mj_step(m, d, nstep=steps)
-        if (k + 1) % every == 0 or k == n - 1:
-            if not np.isfinite(d.qpos).all():
-                raise FloatingPointError(f"the simulation diverged at t = {d.time:.6g} s")
-            samples.append(sim.sample())
+        if not np.isfinite(d.qpos).all():
+            raise FloatingPointError(f"the simulation diverged at t = {d.time:.6g} s")
+    samples.append(sim.sample())
     if schedule is not None:
         sim._beta, sim._rates = beta[-1].copy(), rates[-1].copy()
     return _stack(sim.export, samples)
