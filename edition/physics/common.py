@@ -135,16 +135,17 @@ def fmt(x, digits=DIGITS):
 
     Examples
     --------
-    >>> fmt(0.049373), fmt(123456.0), fmt(2.0), fmt(0.00001234)
-    ('0.049', '120000', '2', '1.2e-05')
+    >>> fmt(0.049373), fmt(12345.0), fmt(2.0), fmt(0.00001234)
+    ('0.049', '12000', '2.0', '1.2e-05')
     """
     v = sig(x, digits)
-    if v == 0 or not np.isfinite(v):
-        return str(v).replace(".0", "") if np.isfinite(v) else str(v)
+    if v == 0:
+        return "0"
+    if not np.isfinite(v):
+        return str(v)
     if 1e-4 <= abs(v) < 1e5:
         e = int(np.floor(np.log10(abs(v))))
-        text = f"{v:.{max(0, digits - 1 - e)}f}"
-        return text
+        return f"{v:.{max(0, digits - 1 - e)}f}"
     return f"{v:.{digits - 1}e}"
 
 
