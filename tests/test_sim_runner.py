@@ -33,6 +33,8 @@ def test_wheels_roll_at_omega_r():
     assert rec.twist[late, 1].mean() == pytest.approx(v, rel=0.01)
     assert np.abs(rec.twist[late, 2]).max() < 0.01 * v and np.abs(rec.twist[late, 0]).max() < 0.01 * v / 0.25
     assert np.allclose(rec.rates[late], omega, rtol=0.01)                   # the encoders read omega
+    assert sim.joint_names == ("u1_drive", "u2_drive", "u3_drive") and np.array_equal(rec.joint_vel, rec.rates)
+    assert rec.joint_pos[-1] == pytest.approx(np.trapezoid(rec.joint_vel, rec.t, axis=0), rel=0.01)   # angle = integral
     assert rec.slip_speed[late].max() < 0.01 * v                            # rolling, not sliding
     assert rec.pose[-1, 1] == pytest.approx(v * rec.t[-1], rel=0.05)        # from rest: a short start-up
 

@@ -9,8 +9,11 @@ model predicts can be measured.
 - :mod:`wmr.sim.chains`: each wheel unit as a chain of bodies and joints (:func:`unit_chain`, one
   description per wheel kind);
 - :mod:`wmr.sim.mjcf`: :func:`to_mjcf`, the MJCF text of any robot (no MuJoCo needed);
-- :mod:`wmr.sim.run`: :class:`Simulation` (commands and measurements in wmr's variables),
-  :class:`Schedule`, :func:`run` and its :class:`Recording`;
+- :mod:`wmr.sim.simulation`: :class:`Simulation`, a robot in MuJoCo commanded and measured in wmr's
+  variables (servos, drive locks, pushes);
+- :mod:`wmr.sim.recording`: :class:`Schedule` (commands over time), :class:`Sample` and :class:`Recording`
+  (measurements);
+- :mod:`wmr.sim.runner`: :func:`run`, a simulation driven along a schedule;
 - :mod:`wmr.sim.commands`: :func:`twist_schedule`, the joint commands of a twist from wmr's inverse
   kinematics.
 
@@ -28,7 +31,9 @@ from .chains import Chain, Joint, Link, Shape, unit_chain
 from .commands import start_angles, twist_schedule
 from .mjcf import Export, default_passive, export, to_mjcf
 from .params import Params
-from .run import Recording, Sample, Schedule, Simulation, run
+from .recording import Recording, Sample, Schedule
+from .runner import run
+from .simulation import Simulation
 
 __all__ = [
            "Chain",

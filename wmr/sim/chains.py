@@ -57,11 +57,11 @@ VELOCITY = "velocity"
 
 #: why Swedish wheels are not exported
 SWEDISH_REFUSAL = (
-    "a Swedish (omni/mecanum) wheel rolls on a ring of free rollers, and MuJoCo has no roller contact: "
-    "the rollers would have to be separate bodies of primitive shapes (capsules, ellipsoids) whose "
-    "envelope is not the wheel's circle, so the hub bounces by a fraction of the roller radius and "
-    "the contact jumps from roller to roller; an anisotropic-friction sphere instead would not be a "
-    "roller at all. wmr.sim refuses the wheel rather than simulate something else under its name")
+    "a Swedish (omni/mecanum) wheel rolls on a ring of free rollers, and MuJoCo has no roller contact: a faithful model "
+    "needs every roller as a body on its own hinge, shaped (a convex barrel mesh) so that the rollers' envelope is the "
+    "wheel's circle, with the contact passing from roller to roller and no encoder for the roller rate sigma_dot. "
+    "wmr.sim does not build that, and a sphere with anisotropic friction would not be a roller at all: it refuses the "
+    "wheel rather than simulate something else under its name")
 
 
 @dataclass(frozen=True)

@@ -16,7 +16,7 @@ from ..analysis.steering import steering_angles
 from ..model import validation as V
 from ..model.platform import point_velocity
 from ..model.wheels import OffsetWheel
-from .run import Schedule
+from .recording import Schedule
 
 __all__ = ["start_angles", "twist_schedule"]
 

@@ -1,4 +1,4 @@
-r"""Running an exported robot in MuJoCo: commands in wmr's variables in, measurements in wmr's variables out.
+r"""A robot in MuJoCo, commanded and measured in wmr's variables: :class:`Simulation`.
 
 A :class:`Simulation` holds a compiled model and its state.  It takes commands in wmr's own terms,
 steering angles :math:`\boldsymbol\beta` and joint rates :math:`\dot{\boldsymbol\theta}` (the rate vector
@@ -11,24 +11,23 @@ drives), and a force and torque can be applied to the platform at C (a push).
 body twist :math:`[\dot\psi, \dot x, \dot y]`; the steering angles and the encoders' joint rates
 (an offset wheel's :math:`\dot\phi_i = \dot\psi + \dot\beta_i` (7) from its steering encoder and the
 platform's turning rate); the servo torques; and per wheel the contact point, the contact force
-(world frame, on the wheel), the torque about the contact normal, and the **slip**, the velocity
+(world frame, on the wheel), its friction torques, and the **slip**, the velocity
 of the wheel's material point at the contact relative to the ground (zero for rolling without
-slipping, (6)).  :func:`run` drives a simulation along a :class:`Schedule` and returns a
-:class:`Recording` of samples.
+slipping, (6)), and the power the contact takes from it (:class:`~wmr.sim.recording.Sample`).
+:func:`wmr.sim.runner.run` drives a simulation along a :class:`~wmr.sim.recording.Schedule`.
 
 MuJoCo is imported here only (``pip install wmr[sim]``); ``import wmr`` does not import it.
 """
 from __future__ import annotations
-
-from dataclasses import dataclass
 
 import numpy as np
 
 from ..model import validation as V
 from .chains import POSITION, VELOCITY
 from .mjcf import Export, export
+from .recording import Sample
 
-__all__ = ["MAX_STEPS", "Recording", "Sample", "Schedule", "Simulation", "run"]
+__all__ = ["MAX_STEPS", "Simulation"]
 
 #: the most integration steps a run may take (a run of 10^7 steps takes minutes)
 MAX_STEPS = 5_000_000
@@ -40,197 +39,6 @@ def _mujoco():
     except ImportError as e:                        # pragma: no cover - the edition's venv has it
         raise ImportError("wmr.sim needs MuJoCo: pip install 'wmr[sim]' (or pip install mujoco)") from e
     return mujoco
-
-
-@dataclass(frozen=True)
-class Sample:
-    r"""What the simulation measures at one instant (see the module docstring).
-
-    Attributes
-    ----------
-    t : float
-    pose : numpy.ndarray (3,)
-        :math:`(\psi, X, Y)`: heading and position of C, fixed frame.
-    twist : numpy.ndarray (3,)
-        :math:`[\dot\psi, \dot x, \dot y]`, body frame.
-    beta : numpy.ndarray (w,)
-        Steering angles (unwrapped; unsteered units: their own angle).
-    rates : numpy.ndarray (n_rates,)
-        The encoders' joint rates in wmr's order.
-    torque : numpy.ndarray (n_servos,)
-        Servo torques, in the order of :attr:`Simulation.servo_names`.
-    point : numpy.ndarray (n_wheels, 3)
-        Contact points, fixed frame (NaN for a wheel off the ground).
-    force : numpy.ndarray (n_wheels, 3)
-        Contact force on each wheel, fixed frame.
-    moment : numpy.ndarray (n_wheels, 3)
-        Contact torque on each wheel (torsional and rolling friction), fixed frame.
-    slip : numpy.ndarray (n_wheels, 2)
-        Horizontal velocity of each wheel's material point at its contact, fixed frame.
-    dissipation : numpy.ndarray (n_wheels,)
-        Power the contact takes from each wheel, W: :math:`-(\mathbf f\cdot\mathbf v + \boldsymbol\tau\cdot\boldsymbol\omega)`
-        with :math:`\mathbf v` the velocity of the wheel's point at the contact and
-        :math:`\boldsymbol\omega` the wheel's angular velocity (sliding, torsional and rolling friction
-        together; the soft contact's springs add or return a little).
-    """
-
-    t: float
-    pose: np.ndarray
-    twist: np.ndarray
-    beta: np.ndarray
-    rates: np.ndarray
-    torque: np.ndarray
-    point: np.ndarray
-    force: np.ndarray
-    moment: np.ndarray
-    slip: np.ndarray
-    dissipation: np.ndarray
-
-
-@dataclass(frozen=True)
-class Recording:
-    """Samples of a run, stacked: each attribute of :class:`Sample` with a leading time axis (N, ...).
-
-    Attributes
-    ----------
-    export : Export
-        The exported robot (names, chains, parameters).
-    t : numpy.ndarray (N,)
-    pose : numpy.ndarray (N, 3)
-    twist : numpy.ndarray (N, 3)
-    beta : numpy.ndarray (N, w)
-    rates : numpy.ndarray (N, n_rates)
-    torque : numpy.ndarray (N, n_servos)
-    point : numpy.ndarray (N, n_wheels, 3)
-    force : numpy.ndarray (N, n_wheels, 3)
-    moment : numpy.ndarray (N, n_wheels, 3)
-    slip : numpy.ndarray (N, n_wheels, 2)
-    dissipation : numpy.ndarray (N, n_wheels)
-        Each as in :class:`Sample`, stacked over the N samples.
-    """
-
-    export: Export
-    t: np.ndarray
-    pose: np.ndarray
-    twist: np.ndarray
-    beta: np.ndarray
-    rates: np.ndarray
-    torque: np.ndarray
-    point: np.ndarray
-    force: np.ndarray
-    moment: np.ndarray
-    slip: np.ndarray
-    dissipation: np.ndarray
-
-    @property
-    def slip_speed(self):
-        """Slip speed of each wheel, m/s: (N, n_wheels)."""
-        return np.hypot(self.slip[..., 0], self.slip[..., 1])
-
-    def kinematic_slip(self):
-        r"""wmr's view of the encoders: the residual of (21) of the least-squares twist, per sample.
-
-        :func:`wmr.forward` from the measured steering angles and joint rates; the residual
-        :math:`\mathbf J_1\mathbf t - \mathbf J_2\dot{\boldsymbol\theta}` is zero exactly when the rates are
-        compatible.
-
-        Returns
-        -------
-        tuple of numpy.ndarray
-            The twist from the encoders (N, 3) and the residual's norm (N,).
-        """
-        from ..analysis.kinematics import forward
-        sol = forward(self.export.robot, self.beta, self.rates)
-        return sol.value, np.linalg.norm(sol.residual, axis=-1)
-
-
-@dataclass(frozen=True)
-class Schedule:
-    r"""Commands in wmr's variables over time, interpolated linearly between knots.
-
-    Attributes
-    ----------
-    t : numpy.ndarray (K,)
-        Knot times, increasing; before the first and after the last the end values hold.
-    beta : numpy.ndarray (K, w)
-        Steering angles for the steering servos.
-    rates : numpy.ndarray (K, n_rates)
-        Joint rates for the drive servos.
-    """
-
-    t: np.ndarray
-    beta: np.ndarray
-    rates: np.ndarray
-
-    def __post_init__(self):
-        t = V.finite_array("t", self.t)
-        if t.ndim != 1 or len(t) == 0 or (len(t) > 1 and not np.all(np.diff(t) > 0)):
-            raise ValueError(f"t must be a non-empty increasing vector, got {V.show(self.t)}")
-        beta = V.finite_array("beta", self.beta)
-        rates = V.finite_array("rates", self.rates)
-        if beta.ndim != 2 or rates.ndim != 2 or len(beta) != len(t) or len(rates) != len(t):
-            raise ValueError(f"beta and rates must have one row per knot ({len(t)}), got shapes "
-                             f"{beta.shape} and {rates.shape}")
-        object.__setattr__(self, "t", t)
-        object.__setattr__(self, "beta", beta)
-        object.__setattr__(self, "rates", rates)
-
-    @classmethod
-    def constant(cls, beta, rates):
-        """The same command at every time.
-
-        Parameters
-        ----------
-        beta : array (w,)
-        rates : array (n_rates,)
-
-        Returns
-        -------
-        Schedule
-        """
-        return cls(np.zeros(1), np.atleast_2d(np.asarray(beta, dtype=float)),
-                   np.atleast_2d(np.asarray(rates, dtype=float)))
-
-    def at(self, t):
-        """The commands at times ``t``.
-
-        Parameters
-        ----------
-        t : float or array (n,)
-
-        Returns
-        -------
-        tuple of numpy.ndarray
-            beta (w,) and rates (n_rates,), or (n, w) and (n, n_rates) for an array of times.
-        """
-        tt = np.atleast_1d(np.asarray(t, dtype=float))
-        out = []
-        for values in (self.beta, self.rates):
-            if len(self.t) == 1:
-                out.append(np.repeat(values, len(tt), axis=0))
-            else:
-                out.append(np.stack([np.interp(tt, self.t, col) for col in values.T], axis=-1))
-        return (out[0], out[1]) if np.ndim(t) else (out[0][0], out[1][0])
-
-    def beta_rate(self, t):
-        """The rate of the steering targets at times ``t`` (the slope of the segment; 0 outside the knots).
-
-        Parameters
-        ----------
-        t : array (n,)
-
-        Returns
-        -------
-        numpy.ndarray (n, w)
-        """
-        tt = np.atleast_1d(np.asarray(t, dtype=float))
-        out = np.zeros((len(tt), self.beta.shape[1]))
-        if len(self.t) > 1:
-            slope = np.diff(self.beta, axis=0) / np.diff(self.t)[:, None]
-            k = np.searchsorted(self.t, tt, side="right") - 1
-            inside = (k >= 0) & (k < len(self.t) - 1)
-            out[inside] = slope[k[inside]]
-        return out
 
 
 def _yaw(q):
@@ -262,6 +70,8 @@ class Simulation:
     export : Export
     model, data : mujoco.MjModel, mujoco.MjData
     servo_names : tuple of str
+    joint_names : tuple of str
+        Every hinge of the units (``u<i>_<name>``), in MuJoCo's order.
     wheel_names : tuple of str
         The contact geoms, one per wheel (``u<i>_wheel``...).
     wheel_unit : numpy.ndarray of int (n_wheels,)
@@ -287,6 +97,9 @@ class Simulation:
                 row.append((j, int(m.jnt_qposadr[jid]), int(m.jnt_dofadr[jid])))
             self._joints.append(row)
         self.servo_names = tuple(m.actuator(a).name for a in range(m.nu))
+        self.joint_names = tuple(ex.name(i, j.name) for i, ch in enumerate(ex.chains) for j in ch.joints)
+        self._qa = np.array([qa for row in self._joints for _, qa, _ in row], dtype=int)
+        self._da = np.array([da for row in self._joints for _, _, da in row], dtype=int)
         self._servo = {n: a for a, n in enumerate(self.servo_names)}
         wheels = [(i, ex.name(i, k.name)) for i, ch in enumerate(ex.chains) for k in ch.wheels]
         self.wheel_names = tuple(n for _, n in wheels)
@@ -345,8 +158,32 @@ class Simulation:
             self._beta = V.finite_array("beta", beta, last=self.robot.w).reshape(self.robot.w).copy()
         if rates is not None:
             self._rates = V.finite_array("rates", rates, last=self.robot.n_rates).reshape(self.robot.n_rates).copy()
-        lead = 0.0 if beta_rate is None else self._lead * (self._from_beta @ V.finite_array("beta_rate", beta_rate, last=self.robot.w))
-        self.data.ctrl[:] = self._from_beta @ self._beta + self._from_rates @ self._rates + lead
+        self.data.ctrl[:] = self.targets(self._beta, self._rates, beta_rate)
+
+    def targets(self, beta, rates, beta_rate=None):
+        r"""The servos' targets for commands in wmr's variables (batched; :meth:`command` sets one of them).
+
+        A steering servo takes :math:`\beta_i + (k_v/k_p)\dot\beta_i` (its target turning without lag), a
+        drive servo the rate its hinge measures.
+
+        Parameters
+        ----------
+        beta : array (..., w)
+        rates : array (..., n_rates)
+        beta_rate : array (..., w), optional
+            Default 0.
+
+        Returns
+        -------
+        numpy.ndarray (..., n_servos)
+            In the order of :attr:`servo_names` (MuJoCo's ``ctrl``).
+        """
+        beta = V.finite_array("beta", beta, last=self.robot.w)
+        rates = V.finite_array("rates", rates, last=self.robot.n_rates)
+        out = beta @ self._from_beta.T + rates @ self._from_rates.T
+        if beta_rate is not None:
+            out = out + self._lead * (V.finite_array("beta_rate", beta_rate, last=self.robot.w) @ self._from_beta.T)
+        return out
 
     def release(self, names):
         """Switch servos off (their hinges turn freely), e.g. ``["u1_drive"]``; :meth:`engage` switches them on.
@@ -474,7 +311,26 @@ class Simulation:
         if n > MAX_STEPS:
             raise ValueError(f"seconds = {seconds!r} needs {n} steps, more than {MAX_STEPS}")
         if n:
-            self._mj.mj_step(self.model, self.data, nstep=n)
+            self.step(n)
+
+    def step(self, n=1):
+        """Integrate ``n`` steps with the present servo targets (``data.ctrl``), as fast as MuJoCo goes.
+
+        Parameters
+        ----------
+        n : int
+            >= 1.
+
+        Returns
+        -------
+        None
+
+        Raises
+        ------
+        FloatingPointError
+            If the state is no longer finite (the simulation diverged).
+        """
+        self._mj.mj_step(self.model, self.data, nstep=n)
         if not np.isfinite(self.data.qpos).all():
             raise FloatingPointError(f"the simulation diverged at t = {self.data.time:.6g} s")
 
@@ -531,68 +387,5 @@ class Simulation:
             slip[w] = u[:2]
             power[w] -= f @ u + tq @ om
         torque = np.array(d.actuator_force, dtype=float)
-        return Sample(float(d.time), np.array([psi, q[0], q[1]]), twist, beta, rates, torque, point, force, moment,
-                      slip, power)
-
-
-def run(sim, schedule, seconds, control_dt=0.001, every=10, on_step=None):
-    """Drive a simulation along a schedule and record it.
-
-    Each control period the servos get the schedule's command at the period's start (as
-    :meth:`Simulation.command` gives it), then the physics advances one period.  A sample is taken
-    at the start of every ``every``-th period, after its commands are set (so that the servo torques
-    sampled are those applied), and one at the end.
-
-    Parameters
-    ----------
-    sim : Simulation
-    schedule : Schedule or None
-        None: keep the present commands.
-    seconds : float
-        Duration, > 0.
-    control_dt : float
-        Control period, s (rounded to whole integration steps; default 0.001, a 1 kHz controller).
-    every : int
-        Record every ``every``-th period (and the end; default 10).
-    on_step : callable, optional
-        ``on_step(sim)`` called at each period before the command (e.g. to push).
-
-    Returns
-    -------
-    Recording
-    """
-    seconds = V.number("seconds", V.positive("seconds", seconds))
-    control_dt = V.number("control_dt", V.positive("control_dt", control_dt))
-    every = V.integer("every", every, minimum=1)
-    if schedule is not None and not isinstance(schedule, Schedule):
-        raise TypeError(f"schedule must be a wmr.sim.Schedule or None, got {V.show(schedule)}")
-    n = int(np.ceil(seconds / control_dt - 1e-9))
-    if n * max(1, round(control_dt / sim.model.opt.timestep)) > MAX_STEPS:
-        raise ValueError(f"seconds = {seconds!r} needs more than {MAX_STEPS} steps")
-    steps = max(1, round(control_dt / sim.model.opt.timestep))
-    mj, m, d = sim._mj, sim.model, sim.data
-    times = np.arange(n) * steps * m.opt.timestep
-    if schedule is not None:
-        beta, rates = schedule.at(times)
-        turning = schedule.beta_rate(times)
-        ctrl = beta @ sim._from_beta.T + rates @ sim._from_rates.T + sim._lead * (turning @ sim._from_beta.T)
-    samples = []
-    for k in range(n):
-        if on_step is not None:
-            on_step(sim)
-        if schedule is not None:
-            d.ctrl[:] = ctrl[k]
-        if k % every == 0:
-            samples.append(sim.sample())                 # the state at the period's start, with its commands
-        mj.mj_step(m, d, nstep=steps)
-        if not np.isfinite(d.qpos).all():
-            raise FloatingPointError(f"the simulation diverged at t = {d.time:.6g} s")
-    samples.append(sim.sample())
-    if schedule is not None:
-        sim._beta, sim._rates = beta[-1].copy(), rates[-1].copy()
-    return _stack(sim.export, samples)
-
-
-def _stack(ex, samples):
-    fields = ("t", "pose", "twist", "beta", "rates", "torque", "point", "force", "moment", "slip", "dissipation")
-    return Recording(ex, *(np.array([getattr(s, f) for s in samples]) for f in fields))
+        return Sample(float(d.time), np.array([psi, q[0], q[1]]), twist, beta, rates, torque, q[self._qa].copy(),
+                      d.qvel[self._da].copy(), point, force, moment, slip, power)
