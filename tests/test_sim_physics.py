@@ -84,3 +84,15 @@ def test_doctests_and_docstrings(module):
     mod = importlib.import_module(f"edition.physics.{module}")
     assert mod.__doc__ and mod.__all__
     assert doctest.testmod(mod, optionflags=doctest.ELLIPSIS).failed == 0
+
+
+def test_findings_section_is_made_from_the_published_table(tmp_path):
+    rows = physics.read_csv(COMMITTED)
+    md = physics.findings_markdown(COMMITTED)
+    failed = [r["experiment"] for r in rows if r["verdict"].startswith(FAILS)]
+    assert f"{len(rows) - len(failed)} hold, {len(failed)} do not" in md
+    assert md.count("\n| ") == len(rows) + 1 and all(r["verdict"].replace("|", "\\|") in md for r in rows)
+    bad = tmp_path / "x.csv"
+    bad.write_text("a,b\n1,2\n")
+    with pytest.raises(ValueError, match="not a physics.csv"):
+        physics.read_csv(bad)

@@ -19,8 +19,10 @@ through :mod:`wmr.sim`, beside what wmr's kinematics predicts, and judged by a s
 ==  ==================================  =============================================  ==========================
 
 :func:`run_all` runs them; :func:`write_csv` writes ``physics.csv``, one row per experiment with the
-columns :data:`COLUMNS`; :mod:`edition.physics.plot` draws them; :mod:`edition.physics.exercises` holds
-chapter 9's exercises.
+columns :data:`COLUMNS` (chapter 9 writes it, the build publishes it into ``figures/``), and
+:func:`findings_markdown` turns the published file into the report's findings section;
+:mod:`edition.physics.plot` draws the experiments; :mod:`edition.physics.exercises` holds chapter 9's
+exercises.
 """
 from __future__ import annotations
 
@@ -94,3 +96,55 @@ def write_csv(outcomes, path):
     path.parent.mkdir(parents=True, exist_ok=True)
     path.write_text(csv_text(outcomes), encoding="utf-8")
     return path
+
+
+def read_csv(path):
+    """The rows of a ``physics.csv``.
+
+    Parameters
+    ----------
+    path : path-like
+
+    Returns
+    -------
+    list of dict
+        One per experiment, keyed by :data:`COLUMNS`.
+
+    Raises
+    ------
+    ValueError
+        If the file's header is not :data:`COLUMNS`.
+    """
+    path = Path(path)
+    with path.open(newline="", encoding="utf-8") as f:
+        rows = list(csv.DictReader(f))
+    if not rows or tuple(rows[0]) != COLUMNS:
+        raise ValueError(f"{path}: not a physics.csv (columns {COLUMNS}), got {tuple(rows[0]) if rows else 'no rows'}")
+    return rows
+
+
+def findings_markdown(path):
+    """The report's findings on the physical claims: a Markdown section made from a published ``physics.csv``.
+
+    Parameters
+    ----------
+    path : path-like
+        ``figures/physics.csv``.
+
+    Returns
+    -------
+    str
+        A heading, one sentence of counts and a table (claim, verdict and criterion, prediction, measurement).
+    """
+    rows = read_csv(path)
+    fails = [r for r in rows if r["verdict"].startswith("does not hold")]
+
+    def cell(text):
+        return text.replace("|", "\\|").replace("\n", " ")
+    head = (f"# Physical claims in a physics engine\n\nChapter 9 puts {len(rows)} of the paper's claims about real robots "
+            f"to MuJoCo: {len(rows) - len(fails)} hold, {len(fails)} do not "
+            f"({', '.join(r['experiment'] for r in fails) or 'none'}).\n\n")
+    table = ("| claim | verdict | prediction (wmr) | measurement (MuJoCo) |\n|---|---|---|---|\n"
+             + "".join(f"| {cell(r['claim'])} | {cell(r['verdict'])} | {cell(r['prediction'])} | {cell(r['measurement'])} |\n"
+                       for r in rows))
+    return head + table
