@@ -9,7 +9,11 @@ import numpy as np
 
 from wmr.plot.style import PALETTE, ROLE, new_figure, panel_title, style
 
-__all__ = ["draw_contacts", "draw_drift", "draw_friction_noise", "draw_resteer"]
+__all__ = ["SHOWN", "draw_contacts", "draw_drift", "draw_friction_noise", "draw_resteer"]
+
+#: how chapter 9 shows its figures (:func:`wmr.plot.design.show_figure`): 100 dpi, a palette of 48 colours --
+#: a quarter of the bytes of a full-colour 150-dpi PNG, so that the report stays within its size budget
+SHOWN = {"dpi": 100, "colours": 48}
 
 _SIM, _MODEL = PALETTE["vermillion"], PALETTE["blue"]
 
