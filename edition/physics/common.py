@@ -257,6 +257,27 @@ def parameters(robot, params=None, **extra):
     return f"{size}; {phys}" + (f"; {more}" if more else "")
 
 
+def twist_text(twist):
+    r"""A body twist in words: its turning rate and the velocity of C.
+
+    Parameters
+    ----------
+    twist : triple
+        :math:`(\dot\psi, \dot x, \dot y)`.
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> twist_text((0.5, 0.2, 0.0))
+    'turning at 0.5 rad/s, C at (0.2, 0) m/s (body frame)'
+    """
+    w, x, y = (float(v) for v in twist)
+    return f"turning at {w:g} rad/s, C at ({x:g}, {y:g}) m/s (body frame)"
+
+
 def relative_pose(pose, start):
     """Poses (psi, X, Y) seen from the pose ``start``: the frame of C at the start.
 

@@ -28,7 +28,7 @@ from wmr.model.platform import point_row
 from wmr.sim import Params, Schedule, Simulation, run
 
 from ..text import bound
-from .common import FAILS, HOLDS, Outcome, fmt, paper, parameters, pct, sig
+from .common import FAILS, HOLDS, Outcome, fmt, paper, parameters, pct, sig, twist_text
 
 __all__ = ["DIRECTIONS", "OFF", "TWIST", "brake_experiment", "breakaway", "steering_experiment", "weakest_push"]
 
@@ -99,7 +99,7 @@ def steering_experiment(params=None, twist=TWIST, off=OFF, seconds=3.0):
         f"incompatible slip {fmt(ratio)} times wmr's least-squares slip; platform twist within {pct(twist_err)} of "
         "wmr's least-squares twist",
         HOLDS if holds else FAILS, "coordinated slip <= 1/10 of incompatible; incompatible fight >= 3 x coordinated",
-        parameters(robot, params, twist=f"(psi_dot, x_dot, y_dot) = ({', '.join(f'{x:g}' for x in twist)})",
+        parameters(robot, params, twist=twist_text(twist),
                    averaged=f"t = 1 to {seconds:g} s"),
         data=out | {"twist": twist})
 

@@ -16,7 +16,18 @@ import numpy as np
 import wmr
 from wmr.sim import Simulation, run, twist_schedule
 
-from .common import HOLDS, SIZE, Outcome, fmt, paper, parameters, pct, sig, verdict
+from .common import (
+    HOLDS,
+    SIZE,
+    Outcome,
+    fmt,
+    paper,
+    parameters,
+    pct,
+    sig,
+    twist_text,
+    verdict,
+)
 
 __all__ = ["DRAWS", "SEED", "SIGMA", "TWIST", "designs", "noise_experiment", "noise_run"]
 
@@ -108,13 +119,13 @@ def noise_experiment(params=None):
     n = next(iter(out.values()))["samples"]
     return Outcome(
         "isotropy-noise", "isotropy and encoder noise", "4.3, 5.3",
-        "the accuracy of the forward kinematics depends on the condition number: an isotropic design (kappa = 1) "
-        "spreads encoder noise evenly, kappa > 1 by the ratio kappa",
-        f"kappa(J) along the run: {listing}",
+        r"the accuracy of the forward kinematics depends on the condition number: an isotropic design "
+        r"($\kappa(\mathbf J) = 1$) spreads encoder noise evenly, $\kappa > 1$ by the ratio $\kappa$",
+        rf"$\kappa(\mathbf J)$ along the run: {listing}",
         f"spread of the twist error (largest / smallest principal std): {measured}",
-        f"largest difference between the spread and kappa(J): {pct(sig(err))}",
+        rf"largest difference between the spread and $\kappa(\mathbf J)$: {pct(sig(err))}",
         v, "<= 5 %: holds; <= 15 %: holds within it",
-        parameters(paper("offset"), params, twist=f"(psi_dot, x_dot, y_dot) = ({', '.join(f'{x:g}' for x in TWIST)})",
+        parameters(paper("offset"), params, twist=twist_text(TWIST),
                    noise=f"sigma = {SIGMA:g} rad/s on every joint rate, {DRAWS} draws per sample, seed {SEED}",
-                   samples=f"{n} per design", units="(L psi_dot, x_dot, y_dot), L = RMS mount distance"),
+                   samples=f"{n} per design", units="turning rate times L and velocity of C, L = RMS mount distance"),
         data={"runs": out, "sigma": SIGMA, "holds": v == HOLDS})
