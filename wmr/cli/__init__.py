@@ -29,6 +29,7 @@ COMMANDS = {
     "ik": "ik",
     "fk": "fk",
     "sweep": "sweep",
+    "simulate": "simulate",
 }
 
 

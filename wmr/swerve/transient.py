@@ -179,6 +179,8 @@ class Transient:
         :math:`\sigma_k`, norm of the residual of (21), m/s.
     path_error : numpy.ndarray (N+1,)
         Distance between the robot's C and the reference's, m.
+    speed : numpy.ndarray (N, w)
+        The module speeds commanded in each period (after cosine compensation), m/s.
     """
 
     label: str
@@ -189,6 +191,7 @@ class Transient:
     twist: np.ndarray
     slip: np.ndarray
     path_error: np.ndarray
+    speed: np.ndarray
 
     @property
     def slip_distance(self):
@@ -274,7 +277,7 @@ def resteer_transient(robot, profile, strategy="robot", cosine=False, steer_rate
     beta = np.empty((len(tw) + 1, w))
     beta[0] = module_commands(robot, tw[0]).beta if beta0 is None else V.finite_array("beta0", beta0, last=w)
     pose, ref = np.zeros((len(tw) + 1, 3)), np.zeros((len(tw) + 1, 3))
-    twist, slip = np.empty((len(tw), 3)), np.empty(len(tw))
+    twist, slip, speeds = np.empty((len(tw), 3)), np.empty(len(tw)), np.empty((len(tw), w))
     step = rate * dt
     k = 0
     try:
@@ -284,6 +287,7 @@ def resteer_transient(robot, profile, strategy="robot", cosine=False, steer_rate
                 beta[k + 1] = beta[k] + np.clip(wrap_angle(target - beta[k]), -step, step)   # |beta_dot| <= omega_s
                 if cosine:
                     speed = cosine_compensate(speed, beta[k + 1], target)
+                speeds[k] = speed
                 sol = chassis_twist(robot, beta[k + 1], speed)   # (21): least squares; residual = slip
                 twist[k], slip[k] = sol.value, np.hypot.reduce(sol.residual)
                 pose[k + 1] = _compose(pose[k], se2_exp(sol.value, dt))
@@ -295,7 +299,7 @@ def resteer_transient(robot, profile, strategy="robot", cosine=False, steer_rate
         raise InputValueError("profile commands twists too large: the simulated poses overflow double precision")
     label = strategy + (" + cos" if cosine else "")
     t = np.arange(len(tw) + 1) * dt
-    return Transient(label, t, pose, ref, beta, twist, slip, err)
+    return Transient(label, t, pose, ref, beta, twist, slip, err, speeds)
 
 
 @dataclass(frozen=True)
