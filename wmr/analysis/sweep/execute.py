@@ -12,6 +12,7 @@ from ...errors import InputTypeError, InputValueError
 from ...model import validation as V
 from .analyses import ANALYSES, J_length
 from .configurations import BLOCK, Sample, as_source, count
+from .motions import Drivable, Motions
 from .reduction import Partial
 from .result import finish
 
@@ -33,9 +34,12 @@ def _evaluate(task, start, stop, threads):
     from .._batch import limit_threads
     robot, name, source, w, L, keep = task
     an = ANALYSES[name]
-    beta = source.configurations(w, start, stop)
     with limit_threads(threads):
-        x = np.asarray(an.evaluate(robot, beta, L))
+        x = None
+        if an.drivable is not None and isinstance(source, Motions):      # a fused kernel from the twists
+            x = an.drivable(source, start, stop, L)
+        if x is None:
+            x = np.asarray(an.evaluate(robot, source.configurations(w, start, stop), L))
     part = Partial()
     part.add(start, x.astype(np.int64) if an.integer else x.astype(float), an.integer, keep)
     return part
@@ -115,12 +119,12 @@ def sweep(robot, analysis, angles, *, L=None, quantiles=QUANTILES, keep=False, c
                          f"for {robot!r}; use 'kappa_J' for a non-square J")
     L = J_length(robot, L) if an.uses_L else None
     w = robot.w
-    source = as_source(angles, w)
+    source = angles.bind(robot) if isinstance(angles, Drivable) else as_source(angles, w)
     qs = tuple(float(V.real("quantiles", q)) for q in np.atleast_1d(np.asarray(quantiles, dtype=object)))
     if any(not 0.0 <= q <= 1.0 for q in qs):
         raise InputValueError(f"quantiles must lie in [0, 1], got {list(quantiles)}")
     chunk = count("chunk", chunk)
-    if isinstance(source, Sample):
+    if isinstance(source, (Sample, Motions)):
         chunk = -(-chunk // BLOCK) * BLOCK
     if progress is not None and not callable(progress):
         raise InputTypeError(f"progress must be callable as progress(done, total), got {progress!r}")

@@ -17,7 +17,7 @@ In a robot file::
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -176,3 +176,12 @@ class SwedishWheel(UnsteeredUnit):
             return None
         return ("use omni wheels (rollers at 90 deg) on wheel {wheels}: a Swedish wheel's block "
                 "r[[0, sin g], [-1, -cos g]] has singular values r sqrt(1 +- cos g)")
+
+    def isotropic_variant(self):
+        """The same wheel with omni rollers (:math:`\\gamma = \\pi/2`); None when it has them already.
+
+        Returns
+        -------
+        SwedishWheel or None
+        """
+        return None if self.isotropy_advice() is None else replace(self, roller=np.pi / 2)

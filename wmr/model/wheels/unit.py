@@ -24,7 +24,8 @@ its geometry, drawing    :meth:`~WheelUnit.points` (batched) and :meth:`~WheelUn
                          (:mod:`~wmr.model.wheels.geometry`; :mod:`~wmr.model.wheels.parts`, data that
                          :mod:`wmr.plot` draws)
 its robot-file keys      ``FILE_KEYS`` (:mod:`~wmr.model.wheels.filekeys`), after ``position`` and ``radius``
-its design hints         :meth:`~WheelUnit.dead_zone`, :meth:`~WheelUnit.isotropy_advice`
+its design hints         :meth:`~WheelUnit.dead_zone`, :meth:`~WheelUnit.isotropy_advice`,
+                         :meth:`~WheelUnit.isotropic_variant`
 =======================  ===========================================================================
 
 Defining the subclass registers the kind (:mod:`~wmr.model.wheels.registry`); the robot, the analyses,
@@ -373,6 +374,18 @@ class WheelUnit(UnitGeometry):
         str or None
             A format string with the field ``{wheels}`` (the wheel numbers), or None when the
             block is isotropic already or no choice of this kind's parameters makes it so.
+        """
+        return None
+
+    def isotropic_variant(self):
+        """The same unit changed as :meth:`isotropy_advice` says (its block isotropic), or None.
+
+        The design advice of ``wmr analyze`` builds the changed robot from it and re-analyses it
+        (:mod:`wmr.analysis.advice`) before printing the advice.
+
+        Returns
+        -------
+        WheelUnit or None
         """
         return None
 
