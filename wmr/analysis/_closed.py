@@ -273,7 +273,7 @@ def kappa_from_columns(cols, accuracy=ACCURACY):
     f, lam1, lam2, E = _gram_eigen(g[0][0], g[0][1], g[0][2], g[1][1], g[1][2], g[2][2])
     # 2x2 minors of rows 1, 2 for every pair of columns, then each 3-subset's determinant along row 0
     minor = {(j, k): rows[1][j] * rows[2][k] - rows[1][k] * rows[2][j] for j in range(n) for k in range(j + 1, n)}
-    D = None
+    D = np.zeros_like(lam1)
     for a in range(n):
         for b in range(a + 1, n):
             for c in range(b + 1, n):
@@ -281,7 +281,7 @@ def kappa_from_columns(cols, accuracy=ACCURACY):
                 d -= rows[0][b] * minor[a, c]
                 d += rows[0][c] * minor[a, b]
                 d *= d
-                D = d if D is None else np.add(D, d, out=D)
+                D += d
     # rounding: |fl(det M_S) - det M_S| <= eps per|M_S| <= eps prod_{j in S} ||c_j||_1, so by Cauchy-Schwarz
     # and Maclaurin sum_S |det M_S| prod ||c_j||_1 <= sqrt(D C(n,3)) (sum_j ||c_j||_1^2 / n)^(3/2), and
     # ||c_j||_1^2 <= 3 ||c_j||^2 with sum_j ||c_j||^2 = tr G = f

@@ -12,7 +12,11 @@ robot).
   characteristic length is recomputed for the moved robot -- it is not the old one
   (:mod:`wmr.analysis.overview`: :math:`L^2 = \sum_i\|\mathbf d_i\|^2/w` depends on where C is).
 * :math:`\mathbf J_2`: each unit's own change (:meth:`~wmr.model.wheels.WheelUnit.isotropic_variant`:
-  offset = radius, omni rollers), one common radius, and all of them together.
+  offset = radius, omni rollers), one common radius, and all of them together.  A change is not
+  advised either when the changed robot's motors cannot drive every motion it can make.
+* Actuation: when the motors cannot drive every motion (actuated mobility below
+  :math:`\delta_m`), the fewest units rebuilt another way that fix it
+  (:meth:`~wmr.model.wheels.WheelUnit.other_builds`: a mecanum wheel of the other hand).
 
 :math:`\mathbf J_2^T\mathbf J_2 = \mathrm{blockdiag}(\mathbf L_i^T\mathbf L_i)` does not depend on the
 configuration, so :math:`\kappa(\mathbf J_2)` is one number per robot.
@@ -20,6 +24,7 @@ configuration, so :math:`\kappa(\mathbf J_2)` is one number per robot.
 from __future__ import annotations
 
 import dataclasses
+import itertools
 from dataclasses import dataclass
 
 import numpy as np
@@ -27,13 +32,15 @@ import numpy as np
 from ..model import validation as V
 from ..model.backend import NUMERIC
 from ..model.tolerance import TOL
-from .actuation import actuated_mobility
+from .actuation import actuated_mobility, driven_columns
 from .classes import campion_class
 from .isotropy import characteristic_length
+from .kinematics import inverse
 from .limitations import limitations
 from .linalg import condition_number
+from .mobility import admissible_twists
 
-__all__ = ["Advice", "profile", "advice"]
+__all__ = ["Advice", "profile", "advice", "actuation_advice", "motor_conditioning"]
 
 
 @dataclass(frozen=True)
@@ -43,13 +50,15 @@ class Advice:
     Attributes
     ----------
     matrix : str
-        ``"J_L1"`` or ``"J2"``.
+        ``"J_L1"``, ``"J2"`` or ``"actuation"`` (what the change is for).
     text : str
         The suggestion with the numbers that result (one sentence).
     advised : bool
         False when the change would cost a motion (another class or a lower actuated mobility).
-    before, after : dict
-        :func:`profile` of the robot and of the changed robot (``after`` empty when nothing can be changed).
+    before : dict
+        :func:`profile` of the robot.
+    after : dict
+        :func:`profile` of the changed robot (empty when nothing can be changed).
     """
 
     matrix: str
@@ -57,6 +66,46 @@ class Advice:
     advised: bool
     before: dict
     after: dict
+
+
+def motor_conditioning(robot, beta) -> float:
+    r"""How evenly the motors command the admissible twists: :math:`\kappa` of the map from twist to motor rates.
+
+    With an orthonormal basis :math:`\hat{\mathbf T}` of the admissible twists in dimensionless
+    coordinates (:func:`wmr.admissible_twists`, scaled), the motor rates of each basis twist
+    (:func:`wmr.inverse`, driven columns) form :math:`\mathbf M`; its condition number is 1 when
+    every admissible direction costs the motors the same, ``inf`` when some admissible direction
+    needs no motor (actuated mobility below the dimension of the admissible twists).
+
+    Parameters
+    ----------
+    robot : Robot
+    beta : array (w,)
+
+    Returns
+    -------
+    float
+
+    Examples
+    --------
+    >>> import wmr
+    >>> kiwi = wmr.Robot([wmr.SwedishWheel((0.2 * np.cos(a), 0.2 * np.sin(a)), r=0.05, angle=a, roller=np.pi / 2)
+    ...                   for a in np.radians([90, 210, 330])])
+    >>> round(motor_conditioning(kiwi, np.zeros(3)) ** 2, 9)       # M^T M = diag(3, 3/2, 3/2) / r^2
+    2.0
+    """
+    robot = V.numeric_robot(robot)
+    beta = robot.effective_beta(beta)
+    s = robot.F_column_norms[:3]                                      # dimensionless twist coordinates
+    T = admissible_twists(robot, beta) * s[:, None]                # dimensionless, then orthonormalised
+    if T.shape[1] == 0:
+        return float("inf")
+    Q, _ = np.linalg.qr(T)
+    rates = inverse(robot, beta, (Q / s[:, None]).T).value            # (m, n_rates)
+    M = rates[:, driven_columns(robot)].T                            # (n_driven, m)
+    if M.shape[0] < M.shape[1]:
+        return float("inf")
+    return float(condition_number(M))
 
 
 def profile(robot) -> dict:
@@ -92,22 +141,80 @@ def _g(x):
     return f"{x:.4g}" if np.isfinite(x) else "inf"
 
 
+def _delta_m(label):
+    return int(label.strip("()").split(",")[0])
+
+
 def _lost(robot, changed, before, after):
-    """Why a change is not advised (empty when it costs no motion)."""
-    if after["class"] == before["class"] and after["actuated_mobility"] >= before["actuated_mobility"]:
+    """Why a change is not advised (empty when it costs no motion and its motors drive every motion)."""
+    if (after["class"] == before["class"] and after["actuated_mobility"] >= before["actuated_mobility"]
+            and after["actuated_mobility"] == _delta_m(after["class"])):
         return ""
-    new = [s for s in limitations(changed) if s not in limitations(robot)]
+    new = [s for s in limitations(changed) if s not in limitations(robot)] or limitations(changed)
     why = f"class {after['class']} (now {before['class']}), actuated mobility {after['actuated_mobility']} " \
           f"(now {before['actuated_mobility']})"
     return f"; not advised: {why}" + (f" -- {new[0]}" if new else "")
 
 
-def _change(robot, before, units, what):
-    """Advice on J2 for the robot with ``units`` (index -> new unit) changed."""
+def _rebuilt(robot, units):
     wheels = list(robot.wheels)
     for k, u in units.items():
         wheels[k] = u
-    changed = type(robot)(wheels, name=robot.name)
+    return type(robot)(wheels, name=robot.name)
+
+
+def actuation_advice(robot, before=None) -> list[Advice]:
+    """When the motors cannot drive every motion: units rebuilt another way that fix it (checked).
+
+    Tries every set of at most four of the units that have another build
+    (:meth:`~wmr.model.wheels.WheelUnit.other_builds`), keeps those that give an actuated mobility
+    equal to the degree of mobility, and advises the one whose motors command the admissible
+    twists most evenly (:func:`~wmr.analysis.actuation.motor_conditioning`; fewer changes first on
+    a tie); nothing when none does or nothing is lost.
+
+    Parameters
+    ----------
+    robot : Robot
+    before : dict, optional
+        Its :func:`profile`.
+
+    Returns
+    -------
+    list of Advice
+    """
+    robot = V.numeric_robot(robot)
+    before = profile(robot) if before is None else before
+    dm = _delta_m(before["class"])
+    if before["actuated_mobility"] >= dm:
+        return []
+    beta = np.asarray(campion_class(robot).beta)
+    options = [(k, words, u) for k, unit in enumerate(robot.wheels) for words, u in unit.other_builds()]
+    best = None
+    for size in range(1, min(4, len(options)) + 1):
+        for pick in itertools.combinations(options, size):
+            if len({k for k, _, _ in pick}) < size:
+                continue
+            changed = _rebuilt(robot, {k: u for k, _, u in pick})
+            if int(actuated_mobility(changed, beta)) < dm:
+                continue
+            key = (round(motor_conditioning(changed, beta), 9), size)
+            if best is None or key < best[0]:
+                best = (key, pick, changed)
+    if best is None:
+        return []
+    (kappa, _), pick, changed = best
+    after = profile(changed)
+    if after["class"] != before["class"] or after["actuated_mobility"] < dm:
+        return []
+    what = "; ".join(f"wheel {k + 1} {words}" for k, words, _ in pick)
+    return [Advice("actuation", f"actuation: build {what}: then actuated mobility {after['actuated_mobility']} "
+                   f"(now {before['actuated_mobility']}), the motors' map to the twist has condition number "
+                   f"{kappa:.4g}, kappa(J2) = {_g(after['kappa_J2'])}", True, before, after)]
+
+
+def _change(robot, before, units, what):
+    """Advice on J2 for the robot with ``units`` (index -> new unit) changed."""
+    changed = _rebuilt(robot, units)
     after = profile(changed)
     lost = _lost(robot, changed, before, after)
     text = f"J2: {what}: then kappa(J2) = {_g(after['kappa_J2'])} (now {_g(before['kappa_J2'])}){lost}"
@@ -144,7 +251,7 @@ def advice(robot, before=None) -> tuple[list[Advice], dict]:
     """
     robot = V.numeric_robot(robot)
     before = profile(robot) if before is None else before
-    out = []
+    out = actuation_advice(robot, before)
     pts = robot.mount_points
     centroid = pts.mean(axis=0)
     jl1 = bool(np.all(np.abs(centroid) <= TOL * float(np.abs(pts).max())))

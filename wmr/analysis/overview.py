@@ -34,19 +34,37 @@ from ..model.tolerance import TOL
 from .actuation import describe_twist, free_twists
 from .advice import advice, profile
 from .classes import campion_class
+from .kinematics import inverse
 from .limitations import limitations
+from .linalg import condition_number
 from .mobility import rank_F
 from .singular_configurations import FAMILIES, MEANINGS, singular_families
 from .steering import steering_angles
 from .sweep import Drivable, Grid, Sample, sweep
 
-__all__ = ["FAMILIES", "MEANINGS", "Overview", "configurations", "dead_zone_radius", "singular_families",
-           "overview"]
+__all__ = ["FAMILIES", "MEANINGS", "Overview", "configurations", "special_twists", "dead_zone_radius",
+           "singular_families", "overview"]
 
 #: about this many grid configurations are examined (the grid has at least 4 values per steered angle)
 GRID_SIZE = 20000
 #: random twists whose steering angles are added to the grid
 TWISTS = 2000
+
+
+def special_twists(robot):
+    """The motions where rank drops are expected: translations along x, y and the diagonal, spins about C and each P_i.
+
+    Parameters
+    ----------
+    robot : Robot
+
+    Returns
+    -------
+    numpy.ndarray (4 + w, 3)
+    """
+    special = [[0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [0.0, 1.0, 1.0], [1.0, 0.0, 0.0]]
+    special += [[1.0, d[1], -d[0]] for d in robot.mount_points]           # spin about P_i: c_dot = -psi E d_i
+    return np.array(special)
 
 
 def configurations(robot, grid=GRID_SIZE, twists=TWISTS, seed=0):
@@ -96,10 +114,8 @@ def configurations(robot, grid=GRID_SIZE, twists=TWISTS, seed=0):
         parts.append(full)
     size = float(np.abs(robot.mount_points).max()) or 1.0
     rng = np.random.default_rng(seed)
-    special = [[0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [0.0, 1.0, 1.0], [1.0, 0.0, 0.0]]
-    special += [[1.0, d[1], -d[0]] for d in robot.mount_points]           # spin about P_i: c_dot = -psi E d_i
-    tw = np.concatenate([np.array(special), np.c_[rng.uniform(-1, 1, (twists, 1)) / size,
-                                                  rng.uniform(-1, 1, (twists, 2))]])
+    tw = np.concatenate([special_twists(robot), np.c_[rng.uniform(-1, 1, (twists, 1)) / size,
+                                                      rng.uniform(-1, 1, (twists, 2))]])
     parts.append(steering_angles(robot, tw))
     return np.concatenate(parts)
 
@@ -177,8 +193,10 @@ class Overview:
         :math:`\kappa(\mathbf J_2)`, the same at every configuration
         (:math:`\mathbf J_2^T\mathbf J_2 = \mathrm{blockdiag}(\mathbf L_i^T\mathbf L_i)`); ``inf`` when singular.
     kappa_J : dict
-        :math:`\kappa(\mathbf J)` (56) over the drivable configurations (:class:`~wmr.analysis.sweep.Drivable`,
-        ``drivable`` of them): ``min``, ``median``, ``p95``, ``max``.
+        :math:`\kappa(\mathbf J)` (56) over the drivable configurations: those of sampled twists
+        (:class:`~wmr.analysis.sweep.Drivable`; their ``median`` and ``p95``) and of the special motions
+        the robot can make (:func:`special_twists`; ``min`` and ``max`` cover both, e.g. ``inf`` for a
+        straight drive with every wheel parallel).
     isotropic : dict
         ``J_L1``, ``J2`` (bool): isotropic as designed.
     advice : list of str
@@ -195,7 +213,7 @@ class Overview:
     dead_zones : tuple of float or None
         Each unit's :meth:`~wmr.model.wheels.WheelUnit.dead_zone`.
     drivable : int
-        How many drivable configurations ``kappa_J`` covers.
+        How many drivable configurations ``kappa_J`` covers (sampled, and special motions).
     """
 
     name: str
@@ -257,6 +275,10 @@ def overview(robot, grid=GRID_SIZE, twists=TWISTS, seed=0):
     L = before["L"]
     drive = Drivable(max(100, twists), seed=seed)
     kj = sweep(robot, "kappa_J", drive, L=L, quantiles=(0.5, 0.95))
+    special = special_twists(robot)                       # and the special motions the robot can make
+    sb = steering_angles(robot, special)
+    sb = sb[inverse(robot, sb, special).no_slip]
+    ks = condition_number(robot.J(sb, L=L)) if sb.size else np.zeros(0)
     tips, iso = advice(robot, before)
     c = campion_class(robot)
     cbeta = np.asarray(c.beta)
@@ -269,8 +291,8 @@ def overview(robot, grid=GRID_SIZE, twists=TWISTS, seed=0):
         limitations=limitations(robot, c), rank_F=rf, nullity=n - rf,
         rank_F_range=(int(ranks.min), int(ranks.max)), nullity_range=(n - int(ranks.max), n - int(ranks.min)),
         configurations=int(beta.shape[0]), L=float(L), kappa_JL1=before["kappa_JL1"], kappa_J2=before["kappa_J2"],
-        kappa_J={"min": float(kj.min), "median": float(kj.quantiles[0.5]), "p95": float(kj.quantiles[0.95]),
-                 "max": float(kj.max)},
+        kappa_J={"min": float(min(kj.min, ks.min(initial=np.inf))), "median": float(kj.quantiles[0.5]),
+                 "p95": float(kj.quantiles[0.95]), "max": float(max(kj.max, ks.max(initial=0.0)))},
         isotropic=iso, advice=[t.text for t in tips], advised=[t.advised for t in tips],
         dead_zone=dead_zone_radius(robot), singular=singular_families(robot, L), steered=robot.steered,
-        dead_zones=tuple(u.dead_zone() for u in robot.wheels), drivable=int(kj.count))
+        dead_zones=tuple(u.dead_zone() for u in robot.wheels), drivable=int(kj.count + sb.shape[0]))

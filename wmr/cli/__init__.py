@@ -30,6 +30,7 @@ COMMANDS = {
     "fk": "fk",
     "sweep": "sweep",
     "simulate": "simulate",
+    "explain": "explain",
 }
 
 
@@ -60,6 +61,9 @@ def main(argv=None):
     mod = importlib.import_module(f"{__name__}.{COMMANDS[args.command]}")
     try:
         return mod.run(args)
+    except BrokenPipeError:                                       # the reader stopped (wmr ... | head): not an error
+        sys.stderr.close()
+        return 0
     except (InputError, OSError) as exc:                          # bad input: one line, no traceback
         print(f"wmr {args.command}: {' '.join(str(exc).split())}", file=sys.stderr)
         return 2

@@ -34,7 +34,16 @@ TWIST_OBJECTS = {
 
 
 def twist_kind(value):
-    """The entry of :data:`TWIST_OBJECTS` that ``value`` is, or None (arrays, numbers and sequences are none)."""
+    """The entry of :data:`TWIST_OBJECTS` that ``value`` is, or None (arrays, numbers and sequences are none).
+
+    Parameters
+    ----------
+    value : object
+
+    Returns
+    -------
+    str or None
+    """
     if isinstance(value, (np.ndarray, numbers.Number, str, bytes, list, tuple)) or value is None:
         return None
     for kind, (fields, _) in TWIST_OBJECTS.items():

@@ -71,15 +71,21 @@ class Sweep:
     covers: str = ""
     complete: bool = True
 
-    def summary(self):
+    def summary(self, convention="wmr"):
         """A few lines of text that state the result (used by ``wmr sweep``).
+
+        Parameters
+        ----------
+        convention : str, optional
+            How the worst configuration's angles are written (:data:`wmr.model.conventions.CONVENTIONS`).
 
         Returns
         -------
         str
         """
+        from ...model.conventions import angle_to
         an = ANALYSES[self.analysis]
-        deg = np.degrees(self.worst_angles)
+        deg = np.degrees(angle_to(self.worst_angles, convention))
         head = f"{an.title} over {self.count:,} configurations" + ("" if self.complete else " (INTERRUPTED: partial)")
         lines = [head + (f": {self.covers}" if self.covers else ""),
                  f"  min {self.min:.6g}   max {self.max:.6g}",
@@ -89,7 +95,8 @@ class Sweep:
         if self.infinite:
             lines.append(f"  singular (inf) at {self.infinite:,} configurations")
         end = {"min": "the minimum", "max": "the maximum", "min_abs": "the smallest magnitude"}[an.worst]
-        lines.append(f"  worst {self.worst:.6g} ({end}) at configuration {self.worst_index}: beta = ("
+        what = "axle angles" if convention == "wmr" else f"{convention} angles"
+        lines.append(f"  worst {self.worst:.6g} ({end}) at configuration {self.worst_index}: {what} ("
                      + ", ".join(f"{a:.4f}" for a in deg) + ") deg")
         return "\n".join(lines)
 

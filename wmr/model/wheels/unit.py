@@ -25,7 +25,8 @@ its geometry, drawing    :meth:`~WheelUnit.points` (batched) and :meth:`~WheelUn
                          :mod:`wmr.plot` draws)
 its robot-file keys      ``FILE_KEYS`` (:mod:`~wmr.model.wheels.filekeys`), after ``position`` and ``radius``
 its design hints         :meth:`~WheelUnit.dead_zone`, :meth:`~WheelUnit.isotropy_advice`,
-                         :meth:`~WheelUnit.isotropic_variant`
+                         :meth:`~WheelUnit.isotropic_variant`, :meth:`~WheelUnit.other_builds`
+                         (:mod:`~wmr.model.wheels.design`)
 =======================  ===========================================================================
 
 Defining the subclass registers the kind (:mod:`~wmr.model.wheels.registry`); the robot, the analyses,
@@ -45,6 +46,7 @@ from .. import arrays as A
 from .. import checks as C
 from ..backend import NUMERIC, choose, is_symbolic
 from ..platform import E, rotated
+from .design import DesignHints
 from .filekeys import COMMON_KEYS, FileKey
 from .geometry import UnitGeometry
 from .joints import Joint, actuation
@@ -54,7 +56,7 @@ __all__ = ["WheelUnit"]
 
 
 @dataclass(frozen=True)
-class WheelUnit(UnitGeometry):
+class WheelUnit(UnitGeometry, DesignHints):
     r"""A wheel unit at :math:`P_i`: the base of every wheel kind.
 
     Parameters
@@ -107,8 +109,11 @@ class WheelUnit(UnitGeometry):
         self._validate()
         if not self.is_symbolic:
             with np.errstate(over="ignore", invalid="ignore"):
+                if not np.isfinite(4 * np.abs(np.asarray(self.position, dtype=float))).all():
+                    raise InputValueError(f"position is too large for double-precision kinematics (4 |d_i| "
+                                          f"overflows): {C.show(self.position)}")
                 L, EL = (np.asarray(m, dtype=float) for m in self.block_terms(NUMERIC))
-                ok = np.isfinite(2 * np.abs(L) + 2 * np.abs(EL)).all() and np.isfinite(4 * np.abs(self.position)).all()
+                ok = np.isfinite(2 * np.abs(L) + 2 * np.abs(EL)).all()
             if not ok:
                 raise InputValueError(f"{type(self).__name__} has lengths too large for double-precision "
                                       f"kinematics (R(beta) L_i would overflow): {C.show(self)}")
@@ -352,42 +357,6 @@ class WheelUnit(UnitGeometry):
         """
         L = self.local_block(backend)
         return L, E(backend) @ L
-
-    # --- design hints ---------------------------------------------------------------------------------
-    def dead_zone(self):
-        """The radius of C's circle when every unit is steered with its drives locked, if this unit has one.
-
-        The paper's dead zone of a robot on offset wheels (:func:`wmr.analysis.overview.dead_zone_radius`).
-
-        Returns
-        -------
-        float or None
-            None: steering the unit does not move the platform (or the unit is not steered).
-        """
-        return None
-
-    def isotropy_advice(self):
-        """What would make this unit's block isotropic (equal singular values), as a sentence about ``{wheels}``.
-
-        Returns
-        -------
-        str or None
-            A format string with the field ``{wheels}`` (the wheel numbers), or None when the
-            block is isotropic already or no choice of this kind's parameters makes it so.
-        """
-        return None
-
-    def isotropic_variant(self):
-        """The same unit changed as :meth:`isotropy_advice` says (its block isotropic), or None.
-
-        The design advice of ``wmr analyze`` builds the changed robot from it and re-analyses it
-        (:mod:`wmr.analysis.advice`) before printing the advice.
-
-        Returns
-        -------
-        WheelUnit or None
-        """
-        return None
 
     @classmethod
     def file_keys(cls):
