@@ -250,8 +250,8 @@ def kappa_from_columns(cols, accuracy=ACCURACY):
 
     Parameters
     ----------
-    cols : list of n lists of 3 numpy.ndarray (k,)
-        ``cols[j][i]``: entry (i, j) of every matrix of the batch.
+    cols : numpy.ndarray (3, n, k), or a list of n lists of 3 numpy.ndarray (k,)
+        Entry (i, j) of every matrix of the batch: ``cols[i, j]`` (an array), or ``cols[j][i]`` (lists).
     accuracy : float, optional
         Relative error accepted besides ``KAPPA_ERROR * eps * kappa`` (default :data:`ACCURACY`).
 
@@ -263,29 +263,33 @@ def kappa_from_columns(cols, accuracy=ACCURACY):
     Examples
     --------
     >>> M = np.array([[1.0, 0.0, 0.0, 1.0], [0.0, 2.0, 0.0, 0.0], [0.0, 0.0, 3.0, 0.0]])
-    >>> kappa, ok = kappa_from_columns([[np.array([x]) for x in col] for col in M.T])
+    >>> kappa, ok = kappa_from_columns(M[:, :, None])
     >>> bool(ok[0]), bool(np.isclose(kappa[0], np.linalg.cond(M)))
     (True, True)
     """
-    n = len(cols)
-    rows = [[cols[j][i] for j in range(n)] for i in range(3)]
-    g = _gram_entries(rows, rows=True)
-    f, lam1, lam2, E = _gram_eigen(g[0][0], g[0][1], g[0][2], g[1][1], g[1][2], g[2][2])
+    C = np.asarray(cols, dtype=float)
+    if not isinstance(cols, np.ndarray):                        # lists: column-major -> (3, n, k)
+        C = C.transpose(1, 0, 2)
+    n = C.shape[1]
+    # G = M M^T: each entry a sum over the columns (one reduction over the stacked columns)
+    g = {(i, j): np.einsum("jk,jk->k", C[i], C[j]) for i in range(3) for j in range(i, 3)}
+    f, lam1, lam2, E = _gram_eigen(g[0, 0], g[0, 1], g[0, 2], g[1, 1], g[1, 2], g[2, 2])
     # 2x2 minors of rows 1, 2 for every pair of columns, then each 3-subset's determinant along row 0
-    minor = {(j, k): rows[1][j] * rows[2][k] - rows[1][k] * rows[2][j] for j in range(n) for k in range(j + 1, n)}
-    D = np.zeros_like(lam1)
-    for a in range(n):
-        for b in range(a + 1, n):
-            for c in range(b + 1, n):
-                d = rows[0][a] * minor[b, c]
-                d -= rows[0][b] * minor[a, c]
-                d += rows[0][c] * minor[a, b]
-                d *= d
-                D += d
+    pairs = [(j, k) for j in range(n) for k in range(j + 1, n)]
+    at = {p: q for q, p in enumerate(pairs)}
+    J, K = np.array(pairs).T
+    minor = C[1, J] * C[2, K]
+    minor -= C[1, K] * C[2, J]
+    A, B, Cc = np.array([(a, b, c) for a in range(n) for b in range(a + 1, n) for c in range(b + 1, n)]).T
+    bc, ac, ab = ([at[p] for p in zip(x, y)] for x, y in ((B, Cc), (A, Cc), (A, B)))
+    d = C[0, A] * minor[bc]
+    d -= C[0, B] * minor[ac]
+    d += C[0, Cc] * minor[ab]
+    D = np.einsum("jk,jk->k", d, d)
     # rounding: |fl(det M_S) - det M_S| <= eps per|M_S| <= eps prod_{j in S} ||c_j||_1, so by Cauchy-Schwarz
     # and Maclaurin sum_S |det M_S| prod ||c_j||_1 <= sqrt(D C(n,3)) (sum_j ||c_j||_1^2 / n)^(3/2), and
     # ||c_j||_1^2 <= 3 ||c_j||^2 with sum_j ||c_j||^2 = tr G = f
-    subsets = n * (n - 1) * (n - 2) / 6
+    subsets = len(A)
     det_error = _EPS * (np.sqrt(subsets * (3 * f / n) ** 3 / D) + n)
     absD = np.sqrt(D)
     kappa = lam1 * np.sqrt(lam2) / absD

@@ -173,7 +173,12 @@ def uncontrolled(robot, beta, twist) -> tuple[np.ndarray, np.ndarray]:
     t = V.twist_array("twist", twist)
     batch = V.batch_shape({"beta": beta, "twist": t})
     s = _scale(robot)
-    that = np.broadcast_to(t, batch + (3,)) * s
+    # the dimensionless twist t o s, scaled to a largest entry of 1 (the decision does not depend on the
+    # twist's size; nothing overflows however large the robot or the twist)
+    mt = np.abs(t).max(axis=-1, keepdims=True)
+    h = np.broadcast_to(t / np.where(mt > 0, mt, 1.0), batch + (3,)) * s
+    mh = np.abs(h).max(axis=-1, keepdims=True)
+    that = h / np.where(mh > 0, mh, 1.0)
     free = ~driven_columns(robot)
     if not free.any() and rank(robot.J1() / s) == 3:      # every joint driven: the motors hold every twist
         part_hat = np.zeros(batch + (3,))
@@ -190,7 +195,9 @@ def uncontrolled(robot, beta, twist) -> tuple[np.ndarray, np.ndarray]:
             coef = np.einsum("...ij,...j->...i", Vt, that) * null
             part_hat = np.einsum("...ij,...i->...j", Vt, coef)
     commanded = np.linalg.norm(part_hat, axis=-1) <= TOL * np.linalg.norm(that, axis=-1)
-    return part_hat / s, commanded
+    with np.errstate(over="ignore"):                      # (for display: a part beyond 1e308 is inf)
+        part = part_hat / s * mh * mt
+    return part, commanded
 
 
 def describe_twist(robot, twist) -> str:

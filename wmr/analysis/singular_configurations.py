@@ -70,9 +70,10 @@ def _family(robot, beta):
     if meet.kind != FINITE:
         return "other"
     scale = float(np.abs(robot.mount_points).max())
-    if np.linalg.norm(meet.point) <= TOL * scale:
+    if np.hypot(*meet.point) <= TOL * scale:                   # hypot: no overflow of the squares
         return "through-C"
-    if np.any(np.linalg.norm(robot.mount_points - meet.point, axis=1) <= TOL * scale):
+    gap = robot.mount_points - meet.point
+    if np.any(np.hypot(gap[:, 0], gap[:, 1]) <= TOL * scale):
         return "through-P"
     return "through-point"
 

@@ -55,9 +55,9 @@ def _kappa_J(robot, beta, L):
     return condition_number(robot.J(beta, L=L))
 
 
-def _kappa_J_drivable(source, start, stop, L):
+def _kappa_J_drivable(source, start, stop, L, fold):
     from .motions import kappa_J_drivable
-    return kappa_J_drivable(source, start, stop, L)
+    return kappa_J_drivable(source, start, stop, L, fold)
 
 
 def _actuated(robot, beta, L):
@@ -78,7 +78,7 @@ class _Analysis:
     worst: str                # "min", "max" or "min_abs"
     uses_L: bool = False
     square: bool = False
-    drivable: Callable[..., Any] | None = None      # (source, start, stop, L) -> (k,) or None: fused kernel
+    drivable: Callable[..., Any] | None = None      # (source, start, stop, L, fold) -> bool: a fused kernel
 
 
 #: The analyses :func:`sweep` knows, by name.

@@ -38,15 +38,24 @@ def _evaluate(task, start, stop, threads):
     from .._batch import limit_threads
     robot, name, source, w, L, keep = task
     an = ANALYSES[name]
+
+    def reduced(first, x):
+        part = Partial()
+        part.add(first, x.astype(np.int64) if an.integer else x.astype(float), an.integer, keep)
+        return part
     with limit_threads(threads):
-        x = None
-        if an.drivable is not None and isinstance(source, Motions):      # a fused kernel from the twists
-            x = an.drivable(source, start, stop, L)
-        if x is None:
-            x = np.asarray(an.evaluate(robot, source.configurations(w, start, stop), L))
-    part = Partial()
-    part.add(start, x.astype(np.int64) if an.integer else x.astype(float), an.integer, keep)
-    return part
+        if an.drivable is not None and isinstance(source, Motions):      # a fused kernel from the twists,
+            parts: dict[int, Partial] = {}                                # reduced block by block on any core
+
+            def fold(first, x):
+                parts[first] = reduced(first, x)
+            if an.drivable(source, start, stop, L, fold):
+                whole = Partial()
+                for first in sorted(parts):
+                    whole.merge(parts[first])
+                return whole
+        x = np.asarray(an.evaluate(robot, source.configurations(w, start, stop), L))
+    return reduced(start, x)
 
 
 def sweep(robot, analysis, angles, *, L=None, quantiles=QUANTILES, keep=False, chunk=CHUNK,

@@ -155,7 +155,7 @@ class Motions:
         current : numpy.ndarray (k, w) or None
         """
         first, last = start // BLOCK, (stop - 1) // BLOCK
-        m, w = self.basis.shape[1], self.robot.w
+        m = self.basis.shape[1]
         tws, curs = [], []
         for j in range(first, last + 1):
             rng = np.random.default_rng([self.seed, j, 24])
@@ -167,17 +167,21 @@ class Motions:
         # t = (N g) / s, written out (a BLAS product of (m, k) by (3, m) would start threads for nothing);
         # entry-major: each component of the twists is one contiguous vector
         M = self.basis / self.scale[:, None]                       # (3, m)
+        if m == 3 and not np.any(M - np.diag(np.diag(M))):        # no fixed wheel: a diagonal map, in place
+            g *= np.diag(M)[:, None]                               # (g is a fresh draw: changed in place)
+            return g.T, None if not self.free else self._current(curs, a, b)
         tw = np.zeros((3, b - a))
         for c in range(3):
             for j in range(m):
                 if M[c, j] != 0.0:
                     tw[c] += g[j] * M[c, j]
         tw = tw.T
-        if not self.free:
-            return tw, None
-        current = np.zeros((b - a, w))
+        return tw, None if not self.free else self._current(curs, a, b)
+
+    def _current(self, curs, a, b):
+        current = np.zeros((b - a, self.robot.w))
         current[:, self.free] = np.concatenate(curs)[a:b]
-        return tw, current
+        return current
 
     def configurations(self, w, start, stop):
         """Configurations ``start .. stop-1``: the steering angles of the twists (k, w).
@@ -200,11 +204,11 @@ def _swerve_like(robot):
                                       for u in robot.wheels)
 
 
-def kappa_J_drivable(source, start, stop, L):
-    r""":math:`\kappa(\mathbf J)` over configurations ``start .. stop-1`` of a drivable source (None: no fused kernel).
+def kappa_J_drivable(source, start, stop, L, fold):
+    r""":math:`\kappa(\mathbf J)` over configurations ``start .. stop-1`` of a drivable source, block by block.
 
-    Each block of twists is drawn and evaluated in one task (:func:`kappa_J_of_twists`), so the
-    drawing runs on every core too.
+    Each block of twists is drawn, evaluated (:func:`kappa_J_of_twists`) and handed to ``fold`` in
+    one task, so that the drawing and the reduction run on every core too.
 
     Parameters
     ----------
@@ -213,20 +217,23 @@ def kappa_J_drivable(source, start, stop, L):
         A range of configuration numbers; ``start`` a multiple of
         :data:`~wmr.analysis.sweep.configurations.BLOCK`.
     L : float
+    fold : callable
+        ``fold(first, values)``: the values of configurations ``first .. first + len(values) - 1``;
+        called from the task that computed them (any thread).
 
     Returns
     -------
-    numpy.ndarray (stop - start,) or None
+    bool
+        False when no fused kernel applies (nothing was evaluated).
     """
     if not _swerve_like(source.robot):
-        return None
-    out = np.empty(stop - start)
+        return False
 
     def block(a, b):
-        out[a:b] = kappa_J_of_twists(source.robot, source.twists(start + a, start + b)[0], L)
+        fold(start + a, kappa_J_of_twists(source.robot, source.twists(start + a, start + b)[0], L))
 
     for_chunks(block, stop - start, BLOCK)
-    return out
+    return True
 
 
 def kappa_J_of_twists(robot, twist, L):
@@ -263,33 +270,34 @@ def kappa_J_of_twists(robot, twist, L):
     JL1 = robot.J1(L=L)
     d = robot.mount_points
     dmax = float(np.abs(d).max())
-    cols = []                                       # (a_i, b_i): column i = cos(beta_i) a_i + sin(beta_i) b_i
-    for i, u in enumerate(robot.wheels):
-        Li, ELi = (np.asarray(m, dtype=float)[:, 0] for m in u.block_terms(NUMERIC))
-        cols.append((JL1[2 * i:2 * i + 2].T @ Li, JL1[2 * i:2 * i + 2].T @ ELi))
+    # column i of J = cos(beta_i) a_i + sin(beta_i) b_i, a_i = J_L1,i^T L_i, b_i = J_L1,i^T E L_i (3,)
+    ab = [(JL1[2 * i:2 * i + 2].T @ np.asarray(Li, dtype=float)[:, 0], JL1[2 * i:2 * i + 2].T @ np.asarray(ELi,
+          dtype=float)[:, 0]) for i, (Li, ELi) in enumerate(u.block_terms(NUMERIC) for u in robot.wheels)]
+    a = np.array([x for x, _ in ab]).T[:, :, None]            # (3, w, 1)
+    b = np.array([y for _, y in ab]).T[:, :, None]
+    dx, dy = d[:, :1], d[:, 1:]                                 # (w, 1)
     out = np.empty(twist.shape[0])
     redo = np.zeros(twist.shape[0], dtype=bool)
 
-    def chunk(a, b):
-        psi, vx, vy = twist[a:b, 0], twist[a:b, 1], twist[a:b, 2]
+    def chunk(lo, hi):
+        psi, vx, vy = twist[lo:hi, 0], twist[lo:hi, 1], twist[lo:hi, 2]
         scale = np.maximum(np.abs(vx), np.abs(vy))
         scale += np.abs(psi) * dmax
         scale *= TOL                                # a wheel at the centre: |p_dot| <= TOL scale (steering_angles)
-        entries, slowest = [], None
-        for (dx, dy), (ai, bi) in zip(d, cols):
-            px = vx - psi * dy                      # (2): p_dot = c_dot + psi_dot E d_i
-            py = vy + psi * dx
-            n = px * px
-            n += py * py                            # |p_dot|^2: finite for the sampled twists (checked below)
-            np.sqrt(n, out=n)
-            slowest = n if slowest is None else np.minimum(slowest, n, out=slowest)
-            inv = 1.0 / n
-            px *= inv                               # sin(beta_i)
-            py *= -inv                              # cos(beta_i)
-            entries.append([_combine(py, ai[e], px, bi[e]) for e in range(3)])
-        k, ok = kappa_from_columns(entries)
-        out[a:b] = k
-        redo[a:b] = ~ok | ~(slowest > scale)
+        s = vx - dy * psi                           # (w, k): p_dot = c_dot + psi_dot E d_i (2), then
+        c = -vy - dx * psi                          # sin(beta_i) = p_x / |p|, cos(beta_i) = -p_y / |p|
+        n = s * s
+        n += c * c
+        np.sqrt(n, out=n)
+        slowest = n.min(axis=0)
+        np.divide(1.0, n, out=n)
+        s *= n
+        c *= n
+        C = c * a                                   # (3, w, k): the columns of J
+        C += s * b
+        k, ok = kappa_from_columns(C)
+        out[lo:hi] = k
+        redo[lo:hi] = ~ok | ~(slowest > scale)
 
     with np.errstate(all="ignore"):
         for_chunks(chunk, twist.shape[0])
@@ -297,12 +305,3 @@ def kappa_J_of_twists(robot, twist, L):
         rows = np.flatnonzero(redo)
         out[rows] = condition_number(robot.J(steering_angles(robot, twist[rows]), L=L))
     return out
-
-
-def _combine(c, a, s, b):
-    """``c * a + s * b`` for scalars a, b (a zero one skipped)."""
-    if a == 0.0:
-        return s * b if b != 0.0 else np.zeros_like(s)
-    if b == 0.0:
-        return c * a
-    return c * a + s * b

@@ -112,6 +112,11 @@ class WheelUnit(UnitGeometry, DesignHints):
                 if not np.isfinite(4 * np.abs(np.asarray(self.position, dtype=float))).all():
                     raise InputValueError(f"position is too large for double-precision kinematics (4 |d_i| "
                                           f"overflows): {C.show(self.position)}")
+                for key in self.file_keys():          # a length whose reciprocal overflows (a subnormal)
+                    v = getattr(self, key.field)
+                    if key.check != "pair" and not key.degrees and v != 0 and not np.isfinite(1.0 / abs(float(v))):
+                        raise InputValueError(f"{key.field} is too small for double-precision kinematics "
+                                              f"(1/{key.field} overflows): {C.show(v)}")
                 L, EL = (np.asarray(m, dtype=float) for m in self.block_terms(NUMERIC))
                 ok = np.isfinite(2 * np.abs(L) + 2 * np.abs(EL)).all()
             if not ok:
