@@ -38,7 +38,7 @@ from .kinematics import inverse
 from .limitations import limitations
 from .linalg import condition_number
 from .mobility import rank_F
-from .singular_configurations import FAMILIES, MEANINGS, singular_families
+from .singular import FAMILIES, MEANINGS, singular_families
 from .steering import steering_angles
 from .sweep import Drivable, Grid, Sample, sweep
 

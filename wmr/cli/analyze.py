@@ -146,7 +146,7 @@ def table(ov, convention: str = "wmr") -> str:
     if not ov.advice:
         rows.append(("isotropy", "J_L1 and J2 are isotropic as designed"))
     for n, a in enumerate(ov.advice):
-        rows.append(("to isotropy" if n == 0 else "", a))
+        rows.append(("advice" if n == 0 else "", a))
     width = max(len(k) for k, _ in rows)
     return "\n".join(f"{k:<{width}}  {v}" for k, v in rows)
 

@@ -92,11 +92,12 @@ The repository holds three things, and imports go one way (edition -> wmr, build
         of (11), :func:`wmr.model.platform.rotated`), batched trigonometry (:mod:`~wmr.model.trig`),
         the wheel units (:mod:`~wmr.model.wheels`: one module per kind, each answering for its block,
         joints, drawing and robot-file keys), the assembled :class:`wmr.Robot` (:math:`\mathbf J_1,
-        \mathbf J_2, \mathbf F, \mathbf J`), ready-made robots (:mod:`~wmr.model.robots`), and these
-        conventions.
+        \mathbf J_2, \mathbf F, \mathbf J`), ready-made robots (:mod:`~wmr.model.robots`), the limits
+        checked before work starts (:mod:`~wmr.model.limits`), and these conventions.
     :mod:`wmr.analysis`
         What can be computed for *any* robot (every function takes one; none defaults to the
-        paper's): linear algebra, mobility, Campion's classes, isotropy, kinematics, steering,
+        paper's): linear algebra, mobility, Campion's classes, actuation (driven and passive joints,
+        :mod:`~wmr.analysis.actuation`), limitations in words, checked design advice, isotropy, kinematics, steering,
         simulation, singularities and the exact :math:`\det\mathbf J`; the packages
         :mod:`~wmr.analysis.lines` (2-D lines; a robot's axle and wheel-plane lines) and
         :mod:`~wmr.analysis.sweep` (``configurations``, ``analyses``, ``reduction``, ``execute`` in
