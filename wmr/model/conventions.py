@@ -184,13 +184,15 @@ def angle_to(beta, name: str) -> np.ndarray:
     return wrap_angle(finite_array("beta", beta) + _OFFSET[convention(name)])
 
 
-def angle_from(angle, name: str) -> np.ndarray:
+def angle_from(angle, name: str, argument: str = "angle") -> np.ndarray:
     r"""wmr's steering angles :math:`\beta` (radians) from angles in the convention ``name`` (radians).
 
     Parameters
     ----------
     angle : array (...)
     name : str
+    argument : str, optional
+        The name of ``angle`` in messages (the caller's argument).
 
     Returns
     -------
@@ -201,4 +203,4 @@ def angle_from(angle, name: str) -> np.ndarray:
     >>> float(np.degrees(angle_from(0.0, "ros")))
     90.0
     """
-    return wrap_angle(finite_array("angle", angle) - _OFFSET[convention(name)])
+    return wrap_angle(finite_array(argument, angle) - _OFFSET[convention(name)])

@@ -242,7 +242,7 @@ def from_wpilib(alpha, speed=None):
     numpy.ndarray or tuple
         ``beta`` (...), or ``(beta, speed)`` when ``speed`` is given.
     """
-    beta = angle_from(alpha, "wpilib")
+    beta = angle_from(alpha, "wpilib", "alpha")
     return beta if speed is None else (beta, V.finite_array("speed", speed))
 
 
