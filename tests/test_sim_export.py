@@ -15,7 +15,7 @@ import wmr
 from wmr.errors import InputTypeError, InputValueError
 from wmr.model.backend import NUMERIC
 from wmr.model.wheels import Joint, WheelUnit
-from wmr.model.wheels.mechanism import VERTICAL, Body, Mechanism, mount, wheel
+from wmr.model.wheels.mechanism import VERTICAL, Body, mount, wheel
 from wmr.sim import VELOCITY, Params, Schedule, Simulation, export, run, servo, start_angles, to_mjcf
 
 mujoco = pytest.importorskip("mujoco")
@@ -162,13 +162,13 @@ class TwinCastor(WheelUnit):
         return {"P": P, "H": H, "wheels": np.stack([H + self.b * i_dir, H - self.b * i_dir], axis=-2), "i": i_dir,
                 "j": j_dir}
 
-    def mechanism(self, height):
+    def root_body(self, height):
         r, d, b = float(self.r), float(self.d), float(self.b)
         z = r - height
         swivel, drive1, drive2 = self.joints
         wheels = (wheel("wheel1", (b, -d, z), r, drive1), wheel("wheel2", (-b, -d, z), r, drive2))
-        return Mechanism(Body("swivel", mount(self.position), 0.0, swivel, VERTICAL, size=d,
-                              rods=(((0.0, 0.0, 0.0), (0.0, -d, z)), ((b, -d, z), (-b, -d, z))), children=wheels))
+        return Body("swivel", mount(self.position), 0.0, swivel, VERTICAL, size=d,
+                    rods=(((0.0, 0.0, 0.0), (0.0, -d, z)), ((b, -d, z), (-b, -d, z))), children=wheels)
 
 
 def test_a_kind_wmr_sim_has_never_seen_is_exported_from_its_own_description():
@@ -210,8 +210,7 @@ def test_a_unit_without_a_mechanism_is_refused():
     """A kind that does not describe its bodies and joints is refused, naming the wheel, not guessed at."""
     @dataclasses.dataclass(frozen=True)
     class Mute(wmr.CentredWheel):                   # (no kind of its own: not registered)
-        def mechanism(self, height):
-            return WheelUnit.mechanism(self, height)
+        root_body = WheelUnit.root_body             # the default: no description
 
     robot = wmr.Robot([wmr.CentredWheel((0.3, 0.0), r=0.05), Mute((-0.3, 0.0), r=0.05)])
     with pytest.raises(NotImplementedError, match=r"wheel 2 \(Mute\): Mute does not describe its mechanism"):

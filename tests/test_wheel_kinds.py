@@ -9,13 +9,13 @@ import sys
 from pathlib import Path
 
 import pytest
+import sympy as sp
 
 import wmr
 from wmr.errors import InputTypeError, InputValueError
 from wmr.model.wheels import Joint, WheelUnit, wheel_kind, wheel_kinds
 from wmr.model.wheels.filekeys import FileKey
 from wmr.model.wheels.joints import actuation
-from wmr.model.wheels.mechanism import Mechanism
 
 from wheel_contract import CHECKS, check_declarations, check_kind, check_mechanism
 
@@ -49,26 +49,38 @@ def test_the_mechanism_contract_can_fail():
     """A mechanism with its wheel ahead of P, one deaf to the unit's actuation, a refusal without a reason: caught."""
     @dataclasses.dataclass(frozen=True)
     class Ahead(wmr.OffsetWheel):                   # H = P + d j: not where points() puts the wheel
-        def mechanism(self, height):
-            root = wmr.OffsetWheel.mechanism(self, height).root
+        def root_body(self, height):
+            root = wmr.OffsetWheel.root_body(self, height)
             arm = root.children[0]
-            ahead = dataclasses.replace(arm, pos=(0.0, self.d, arm.pos[2]))
-            return Mechanism(dataclasses.replace(root, children=(ahead,)))
+            return dataclasses.replace(root, children=(dataclasses.replace(arm, pos=(0.0, self.d, arm.pos[2])),))
 
     @dataclasses.dataclass(frozen=True)
     class Deaf(wmr.OffsetWheel):                    # the kind's default actuation, whatever the unit's
-        def mechanism(self, height):
-            return wmr.OffsetWheel(self.position, self.r, d=self.d).mechanism(height)
+        def root_body(self, height):
+            return wmr.OffsetWheel(self.position, self.r, d=self.d).root_body(height)
 
     @dataclasses.dataclass(frozen=True)
     class Shrug(wmr.CentredWheel):
-        def mechanism(self, height):
+        def root_body(self, height):
             raise NotImplementedError("no")
 
     for cls in (Ahead, Deaf, Shrug):
         with pytest.raises(AssertionError):
             check_mechanism(cls)
     check_mechanism(wmr.OffsetWheel)
+
+
+def test_a_mechanism_takes_a_height_and_numbers():
+    unit = wmr.OffsetWheel((0.3, 0.0), r=0.05, d=0.02)
+    assert unit.mechanism(0.05).wheels[0].pos == (0.0, -0.02, 0.0)
+    with pytest.raises(InputValueError, match=r"height .* at least the wheel radius r = 0.05, got 0.04"):
+        unit.mechanism(0.04)
+    with pytest.raises(InputTypeError, match="height"):
+        unit.mechanism("tall")
+    with pytest.raises(InputValueError, match="free symbols"):
+        wmr.OffsetWheel((0.3, 0.0), r=0.05, d=sp.Symbol("d")).mechanism(0.05)
+    exact = wmr.OffsetWheel((sp.sqrt(3) / 10, 0), r=sp.Rational(1, 20), d=sp.Rational(1, 50)).mechanism(0.05)
+    assert exact.root.pos == (float(sp.sqrt(3) / 10), 0.0, 0.0) and exact.wheels[0].pos == (0.0, -0.02, 0.0)
 
 
 # ------------------------------------------------------------------------------------------ the registry
@@ -178,7 +190,7 @@ class BallCaster(UnsteeredUnit):
         """
         return backend.matrix([[0, self.r], [-self.r, 0]])
 
-    def mechanism(self, height):
+    def root_body(self, height):
         """None: refused, since a ball turns about every axis in its socket.
 
         Parameters
@@ -187,7 +199,7 @@ class BallCaster(UnsteeredUnit):
 
         Returns
         -------
-        Mechanism
+        Body
             Never.
 
         Raises

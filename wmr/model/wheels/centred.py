@@ -20,7 +20,7 @@ import numpy as np
 
 from ..backend import NUMERIC
 from .joints import Joint
-from .mechanism import VERTICAL, Body, Mechanism, mount, wheel
+from .mechanism import VERTICAL, Body, mount, wheel
 from .unit import WheelUnit
 
 __all__ = ["CentredWheel"]
@@ -80,7 +80,7 @@ class CentredWheel(WheelUnit):
         _, _, steer, shape = self._rates_in(psi_dot, rates, steer)
         return np.zeros(shape) if steer is None else np.broadcast_to(steer, shape).copy()
 
-    def mechanism(self, height):
+    def root_body(self, height):
         r"""The steer body at :math:`P_i` on ``steer``, the wheel under it (centre :math:`P_i`) on ``drive``.
 
         See :mod:`~wmr.model.wheels.mechanism`.
@@ -88,13 +88,13 @@ class CentredWheel(WheelUnit):
         Parameters
         ----------
         height : float
-            Height of the mount plane above the ground (>= r).
+            Height of the mount plane above the ground (>= r, checked by :meth:`mechanism`).
 
         Returns
         -------
-        Mechanism
+        Body
         """
         r = float(self.r)
         steer, drive = self.joints
-        return Mechanism(Body("steer", mount(self.position), 0.0, steer, VERTICAL, size=r / 2,
-                              children=(wheel("wheel", (0.0, 0.0, r - height), r, drive),)))
+        return Body("steer", mount(self.position), 0.0, steer, VERTICAL, size=r / 2,
+                    children=(wheel("wheel", (0.0, 0.0, r - height), r, drive),))

@@ -2,8 +2,9 @@ r"""A wheel unit as bodies and joints, as data: what a physics engine needs to k
 
 wmr's model of a unit is a block of :math:`\mathbf J_2`; a physics engine needs the unit's
 **mechanism**: the intermediate body on its steering joint at :math:`P_i`, the arm to the wheel centre,
-the wheels on their drive joints.  Each kind describes its own (:meth:`UnitMechanism.mechanism`) as a
-tree of :class:`Body`, plain data with no engine in it; :mod:`wmr.sim` writes any such tree as a MuJoCo
+the wheels on their drive joints.  Each kind describes its own as a tree of :class:`Body`
+(:meth:`UnitMechanism.root_body`; :meth:`UnitMechanism.mechanism` checks and assembles it), plain data
+with no engine in it; :mod:`wmr.sim` writes any such tree as a MuJoCo
 model (adding masses, friction and servos) without knowing which kind it came from.
 
 Frames (those of :mod:`wmr.model.conventions`): the root body's origin is given in the platform frame,
@@ -41,11 +42,12 @@ Examples
 """
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
 from ...errors import InputValueError
-from ..checks import show
+from ..checks import number, show
 from .joints import Joint
 
 __all__ = ["AXLE", "VERTICAL", "Body", "Mechanism", "UnitMechanism", "mount", "wheel"]
@@ -188,7 +190,15 @@ def wheel(name: str, pos: Point, r: float, joint: Joint, angle: float = 0.0) -> 
 
 
 class UnitMechanism:
-    """What a wheel unit tells a physics engine (a base of every kind, :class:`~wmr.model.wheels.unit.WheelUnit`)."""
+    """What a wheel unit tells a physics engine (a base of every kind, :class:`~wmr.model.wheels.unit.WheelUnit`).
+
+    A kind defines :meth:`root_body`; :meth:`mechanism` checks the height, takes the unit's numbers
+    and assembles the tree.
+    """
+
+    # what a unit provides (WheelUnit's field and method)
+    r: Any
+    numeric: Callable[[], Any]
 
     def mechanism(self, height: float) -> Mechanism:
         """The unit's bodies and joints (this module's docstring), at joint angles 0.
@@ -208,6 +218,32 @@ class UnitMechanism:
         NotImplementedError
             For a unit that a physics engine of rigid bodies and point contacts cannot represent
             faithfully (the message says why), or a kind that does not describe its mechanism.
+        wmr.errors.InputError
+            If ``height`` is not a number at least the wheel radius, or the unit has free symbols.
+        """
+        unit = self.numeric()
+        height = number("height", height)
+        if not height >= unit.r:
+            raise InputValueError(f"height (of the mount plane above the ground) must be at least the wheel radius "
+                                  f"r = {unit.r!r}, got {show(height)}")
+        return Mechanism(unit.root_body(height))
+
+    def root_body(self, height: float) -> Body:
+        """The body mounted on the platform, with the rest of the unit under it (see :meth:`mechanism`).
+
+        Parameters
+        ----------
+        height : float
+            Height of the mount plane above the ground (checked: at least the wheel radius).
+
+        Returns
+        -------
+        Body
+
+        Raises
+        ------
+        NotImplementedError
+            Unless the kind describes its mechanism (or says why it cannot).
         """
         raise NotImplementedError(f"{type(self).__name__} does not describe its mechanism (its bodies and joints: "
-                                  "WheelUnit.mechanism), so no physics engine can take it")
+                                  "WheelUnit.root_body), so no physics engine can take it")

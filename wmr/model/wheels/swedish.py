@@ -32,7 +32,7 @@ from .unsteered import UnsteeredUnit, constant
 
 __all__ = ["NO_FAITHFUL_MECHANISM", "SwedishWheel"]
 
-#: why a Swedish wheel has no mechanism a physics engine could take (:meth:`SwedishWheel.mechanism`)
+#: why a Swedish wheel has no mechanism a physics engine could take (:meth:`SwedishWheel.root_body`)
 NO_FAITHFUL_MECHANISM = (
     "a Swedish (omni/mecanum) wheel rolls on a ring of free rollers, and a physics engine of rigid bodies and point "
     "contacts (MuJoCo) has no roller contact: a faithful model needs every roller as a body on its own hinge, shaped "
@@ -174,7 +174,7 @@ class SwedishWheel(UnsteeredUnit):
         pts = self.points(angle)
         return self._discs(pts, angle, arrow=False) + (Rollers(pts["H"], angle, float(self.r), float(self.roller)),)
 
-    def mechanism(self, height):
+    def root_body(self, height):
         """None a physics engine could take faithfully: refused (:data:`NO_FAITHFUL_MECHANISM`).
 
         Parameters
@@ -183,7 +183,7 @@ class SwedishWheel(UnsteeredUnit):
 
         Returns
         -------
-        Mechanism
+        Body
             Never.
 
         Raises
