@@ -23,6 +23,8 @@ its steering             :meth:`~WheelUnit.beta_rate`; :meth:`~WheelUnit.steerin
 its geometry, drawing    :meth:`~WheelUnit.points` (batched) and :meth:`~WheelUnit.parts`
                          (:mod:`~wmr.model.wheels.geometry`; :mod:`~wmr.model.wheels.parts`, data that
                          :mod:`wmr.plot` draws)
+its mechanism            :meth:`~WheelUnit.mechanism`: bodies and joints as data, which :mod:`wmr.sim`
+                         puts in a physics engine (:mod:`~wmr.model.wheels.mechanism`)
 its robot-file keys      ``FILE_KEYS`` (:mod:`~wmr.model.wheels.filekeys`), after ``position`` and ``radius``
 its design hints         :meth:`~WheelUnit.dead_zone`, :meth:`~WheelUnit.isotropy_advice`
 =======================  ===========================================================================
@@ -47,13 +49,14 @@ from ..platform import E, rotated
 from .filekeys import COMMON_KEYS, FileKey
 from .geometry import UnitGeometry
 from .joints import Joint, actuation
+from .mechanism import UnitMechanism
 from .registry import register
 
 __all__ = ["WheelUnit"]
 
 
 @dataclass(frozen=True)
-class WheelUnit(UnitGeometry):
+class WheelUnit(UnitGeometry, UnitMechanism):
     r"""A wheel unit at :math:`P_i`: the base of every wheel kind.
 
     Parameters
