@@ -33,10 +33,12 @@ def test_simulate_json_and_model(capsys, tmp_path):
 
 
 def test_simulate_table_and_export_only(capsys, tmp_path):
-    code, out, _ = _run(capsys, "simulate", str(ROOT / "examples" / "differential.toml"), "--omega", "1", "--seconds", "1")
+    code, out, _ = _run(capsys, "simulate", str(ROOT / "examples" / "differential.toml"), "--omega", "1",
+                        "--seconds", "1")
     assert code == 0 and out.splitlines()[0].startswith("commanded") and "from encoders" in out
     xml = tmp_path / "tri.xml"
-    code, out, _ = _run(capsys, "simulate", str(ROOT / "examples" / "tricycle.toml"), "--seconds", "0", "--mjcf", str(xml))
+    code, out, _ = _run(capsys, "simulate", str(ROOT / "examples" / "tricycle.toml"), "--seconds", "0",
+                        "--mjcf", str(xml))
     assert code == 0 and xml.read_text().startswith("<mujoco")
 
 

@@ -1,8 +1,9 @@
 """wmr.sim's export: every example robot loads and steps in MuJoCo or is refused with a reason; the model's
-geometry is wmr's (checked against the units' own points); servos where each wheel kind has them; MuJoCo only
-where asked for."""
+geometry is wmr's (checked against the units' own points); servos on the joints the units drive and on no
+other; a kind wmr.sim has never seen exported from its own description; MuJoCo only where asked for."""
 from __future__ import annotations
 
+import dataclasses
 import subprocess
 import sys
 from pathlib import Path
@@ -11,15 +12,11 @@ import numpy as np
 import pytest
 
 import wmr
-from wmr.sim import (
-    Params,
-    chains,
-    default_passive,
-    export,
-    start_angles,
-    to_mjcf,
-    unit_chain,
-)
+from wmr.errors import InputTypeError, InputValueError
+from wmr.model.backend import NUMERIC
+from wmr.model.wheels import Joint, WheelUnit
+from wmr.model.wheels.mechanism import VERTICAL, Body, mount, wheel
+from wmr.sim import VELOCITY, Params, Schedule, Simulation, export, run, servo, start_angles, to_mjcf
 
 mujoco = pytest.importorskip("mujoco")
 
@@ -45,7 +42,7 @@ def test_every_example_loads_and_steps_or_is_refused(path):
     mujoco.mj_resetDataKeyframe(m, d, 0)
     mujoco.mj_step(m, d, nstep=500)
     assert np.isfinite(d.qpos).all()
-    wheels = sum(len(c.wheels) for c in export(robot).chains)
+    wheels = sum(len(m.wheels) for m in export(robot).mechanisms)
     assert d.ncon == wheels                                     # every wheel on the ground, nothing else touching
     assert abs(d.qpos[2] - max(u.r for u in robot.wheels)) < 0.01 * max(u.r for u in robot.wheels)
 
@@ -66,38 +63,55 @@ def test_geometry_is_wmrs():
         d = mujoco.MjData(m)
         mujoco.mj_resetDataKeyframe(m, d, 0)
         mujoco.mj_forward(m, d)
-        for i, (u, ch) in enumerate(zip(robot.wheels, ex.chains)):
+        for i, (u, mech) in enumerate(zip(robot.wheels, ex.mechanisms)):
             want = u.points(beta[i])["wheels"]
-            for k, link in enumerate(ch.wheels):
-                got = d.xpos[mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_BODY, ex.name(i, link.name))]
-                assert np.allclose(got[:2], want[k], atol=1e-9) and got[2] == pytest.approx(u.r)
-                axle = d.xmat[mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_BODY, ex.name(i, link.name))].reshape(3, 3)[:, 0]
+            for k, body in enumerate(mech.wheels):
+                b = mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_BODY, ex.name(i, body.name))
+                assert np.allclose(d.xpos[b][:2], want[k], atol=1e-9) and d.xpos[b][2] == pytest.approx(u.r)
+                axle = d.xmat[b].reshape(3, 3)[:, 0]
                 assert np.allclose(axle[:2], u.points(beta[i])["i"], atol=1e-9)          # drive hinge about i_i
 
 
 def test_each_kind_has_its_servos_and_rates():
-    robot = _mixed()
-    xml = to_mjcf(robot, passive=[False] * 4)
+    robot = _mixed()                                                        # every joint as its kind drives it
+    xml = to_mjcf(robot)
     assert xml.count("<position ") == 2 and xml.count("<velocity ") == 5      # offset, centred; 1 + 1 + 2 + 1 drives
-    ex = export(robot, passive=[False] * 4)
-    for u, ch in zip(robot.wheels, ex.chains):
-        assert sorted(j.rate for j in ch.joints if j.rate is not None) == list(range(u.n_rates))
-        assert sum(j.steering for j in ch.joints) == (1 if u.steered else 0)
-    dual = ex.chains[2]
-    assert [j.servo for j in dual.joints] == [None, chains.VELOCITY, chains.VELOCITY]      # the pivot is passive
-    offset = ex.chains[0]
+    ex = export(robot)
+    cols = [col for _, _, col in ex.hinges() if col is not None]
+    assert sorted(cols) == list(range(robot.n_rates))                       # every rate measured by one encoder
+    for i, (u, mech) in enumerate(zip(robot.wheels, ex.mechanisms)):
+        assert sorted(j.name for j in mech.joints) == sorted(j.name for j in u.joints)
+        assert sum(j.steering for j in mech.joints) == (1 if u.steered else 0)
+        assert all(robot.rate_slices[i].start <= c < robot.rate_slices[i].stop for k, _, c in ex.hinges()
+                   if k == i and c is not None)
+    dual = ex.mechanisms[2]
+    assert [(j.name, servo(j)) for j in dual.joints] == [("swivel", None), ("drive1", VELOCITY), ("drive2", VELOCITY)]
+    offset = ex.mechanisms[0]
     assert [(j.name, j.absolute) for j in offset.joints] == [("steer", True), ("drive", False)]   # phi = psi + beta (7)
 
 
-def test_castors_are_passive_unless_said_otherwise():
-    diff = wmr.load(ROOT / "examples" / "differential.toml")
-    assert default_passive(diff) == (False, False, True)
-    assert default_passive(wmr.paper_robot("offset")) == (False, False, False)
+def test_passive_joints_get_no_servo():
+    """The units say which joints are driven: a castor (both joints passive) gets none, one passive joint none."""
+    diff = wmr.load(ROOT / "examples" / "differential.toml")               # its castor: driven = {steer, drive: false}
     xml = to_mjcf(diff)
     assert "u3_steer" in xml and 'joint="u3_' not in xml                    # a castor: its hinges, no servo
     m = _model(xml)
     assert export(diff).servo_names == tuple(m.actuator(a).name for a in range(m.nu)) == ("u1_drive", "u2_drive")
-    assert to_mjcf(diff, passive=[False, False, False]).count('joint="u3_') == 2
+    motor = dataclasses.replace(diff.wheels[2], driven=None)                # the kind's default: both driven
+    assert to_mjcf(wmr.Robot([*diff.wheels[:2], motor])).count('joint="u3_') == 2
+    free_steer = dataclasses.replace(diff.wheels[2], driven={"steer": False})
+    assert export(wmr.Robot([*diff.wheels[:2], free_steer])).servo_names == ("u1_drive", "u2_drive", "u3_drive")
+    steered_swivel = wmr.DualWheel((0.0, 0.0), r=0.05, b=0.1, driven={"swivel": True})
+    assert '<position name="u1_swivel"' in to_mjcf(wmr.Robot([steered_swivel]))
+
+
+def test_start_angles_trail_where_the_steering_is_free():
+    """Offset wheels (steering free for any twist) start trailing, j along p_dot; centred wheels as steering_angles."""
+    robot = _mixed()
+    twist = np.array([0.0, 1.0, 0.0])                                       # forward: p_dot = (1, 0) everywhere
+    beta = start_angles(robot, twist)
+    assert beta[0] == pytest.approx(-np.pi / 2)                             # j = (-sin, cos) = (1, 0): arm behind P
+    assert np.allclose(beta[1:3], wmr.steering_angles(robot, twist)[1:3]) and beta[3] == pytest.approx(0.4)
 
 
 def test_parameters_reach_the_model():
@@ -121,20 +135,86 @@ def test_export_is_deterministic_and_carries_the_start_angles():
     assert np.allclose(m.key_qpos[0][[7, 9, 11]], [0.1, 0.2, 0.3])
 
 
+@dataclasses.dataclass(frozen=True)
+class TwinCastor(WheelUnit):
+    r"""An office chair's castor, a kind wmr.sim has never seen (not registered).
+
+    Two wheels at :math:`H \pm b\,\mathbf i` on an arm, :math:`H = P - d\,\mathbf j`, on a free swivel; every joint
+    passive.
+
+    The wheels roll :math:`H` at :math:`-\tfrac r2(\dot\theta_1 + \dot\theta_2)\mathbf j` and turn the arm at
+    :math:`\dot\phi = -\tfrac{r}{2b}(\dot\theta_1 - \dot\theta_2)`, so :math:`P = H + d\,\mathbf j` moves at
+    :math:`-\tfrac r2(\dot\theta_1 + \dot\theta_2)\mathbf j + \tfrac{dr}{2b}(\dot\theta_1 - \dot\theta_2)\mathbf i`.
+    """
+
+    d: float = 0.03
+    b: float = 0.02
+    JOINTS = (Joint("swivel", "swivel", driven=False),
+              Joint("drive1", "drive", driven=False, rate=("theta", r"\theta", "1")),
+              Joint("drive2", "drive", driven=False, rate=("theta", r"\theta", "2")))
+
+    def local_block(self, backend=NUMERIC):
+        k = self.d * self.r / (2 * self.b)
+        return backend.matrix([[k, -k], [-self.r / 2, -self.r / 2]])
+
+    def _points(self, P, i_dir, j_dir):
+        H = P - self.d * j_dir
+        return {"P": P, "H": H, "wheels": np.stack([H + self.b * i_dir, H - self.b * i_dir], axis=-2), "i": i_dir,
+                "j": j_dir}
+
+    def root_body(self, height):
+        r, d, b = float(self.r), float(self.d), float(self.b)
+        z = r - height
+        swivel, drive1, drive2 = self.joints
+        wheels = (wheel("wheel1", (b, -d, z), r, drive1), wheel("wheel2", (-b, -d, z), r, drive2))
+        return Body("swivel", mount(self.position), 0.0, swivel, VERTICAL, size=d,
+                    rods=(((0.0, 0.0, 0.0), (0.0, -d, z)), ((b, -d, z), (-b, -d, z))), children=wheels)
+
+
+def test_a_kind_wmr_sim_has_never_seen_is_exported_from_its_own_description():
+    """A differential drive on the twin castor above: its wheels where its points() put them, no servo on it, and
+    driven forward from a sideways start the castor swings round to trail (j along the motion)."""
+    diff = wmr.load(ROOT / "examples" / "differential.toml")
+    robot = wmr.Robot([*diff.wheels[:2], TwinCastor((-0.3, 0.0), r=0.03)])
+    for beta in (0.0, 1.1, -2.5):
+        ex = export(robot, [0.0, 0.0, beta])
+        m = _model(ex.xml)
+        d = mujoco.MjData(m)
+        mujoco.mj_resetDataKeyframe(m, d, 0)
+        mujoco.mj_forward(m, d)
+        for k, name in enumerate(("u3_wheel1", "u3_wheel2")):
+            got = d.xpos[mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_BODY, name)]
+            assert np.allclose(got[:2], robot.wheels[2].points(beta)["wheels"][k], atol=1e-9)
+    assert ex.servo_names == ("u1_drive", "u2_drive") and ex.drive_names[2:] == ("u3_drive1", "u3_drive2")
+    sim = Simulation(robot, beta=[0.0, 0.0, 0.0])                          # arm across the motion
+    rec = run(sim, Schedule.constant(np.zeros(3), [5.0, 5.0, 0.0, 0.0]), 3.0)
+    assert rec.twist[-1, 1] == pytest.approx(0.08 * 5.0, rel=0.05)         # v = r omega forward
+    assert abs(rec.twist[-1, 0]) < 1e-3                                     # and straight: the castor drags not
+    trail = -np.pi / 2                                                      # j = (-sin, cos) = (1, 0)
+    assert abs(np.angle(np.exp(1j * (rec.beta[-1, 2] - trail)))) < 0.01     # (held by a servo at 0: 0.036 off)
+
+
 def test_bad_input_is_named():
     robot = wmr.paper_robot("centred", L=0.3, r=0.05)
-    with pytest.raises(ValueError, match="passive"):
-        to_mjcf(robot, passive=[True])
-    with pytest.raises(ValueError, match="sliding"):
+    with pytest.raises(InputValueError, match="sliding"):
         to_mjcf(robot, sliding=-1.0)
-    with pytest.raises(TypeError, match="unknown parameter"):
+    with pytest.raises(InputTypeError, match="unknown parameter"):
         to_mjcf(robot, slidng=1.0)
-    with pytest.raises(TypeError, match="params"):
+    with pytest.raises(InputTypeError, match="params"):
         to_mjcf(robot, params={"sliding": 1.0})
-    with pytest.raises(ValueError, match="beta"):
+    with pytest.raises(InputValueError, match="beta"):
         to_mjcf(robot, beta=[0.0, 0.0])
-    with pytest.raises(NotImplementedError, match="no physical description"):
-        unit_chain(object(), 0.1)
+
+
+def test_a_unit_without_a_mechanism_is_refused():
+    """A kind that does not describe its bodies and joints is refused, naming the wheel, not guessed at."""
+    @dataclasses.dataclass(frozen=True)
+    class Mute(wmr.CentredWheel):                   # (no kind of its own: not registered)
+        root_body = WheelUnit.root_body             # the default: no description
+
+    robot = wmr.Robot([wmr.CentredWheel((0.3, 0.0), r=0.05), Mute((-0.3, 0.0), r=0.05)])
+    with pytest.raises(NotImplementedError, match=r"wheel 2 \(Mute\): Mute does not describe its mechanism"):
+        to_mjcf(robot)
 
 
 def test_import_wmr_does_not_import_mujoco():
@@ -142,8 +222,9 @@ def test_import_wmr_does_not_import_mujoco():
         out = subprocess.run([sys.executable, "-c", f"import sys; {statement}; print('mujoco' in sys.modules)"],
                              capture_output=True, text=True, check=True).stdout.strip()
         assert out == "False", statement
-    out = subprocess.run([sys.executable, "-c", ("import sys, wmr.sim; wmr.sim.Simulation(wmr.paper_robot('centred', L=0.3, r=0.05), settle=0);"
-                          " print('mujoco' in sys.modules)")], capture_output=True, text=True, check=True).stdout.strip()
+    make = "wmr.sim.Simulation(wmr.paper_robot('centred', L=0.3, r=0.05), settle=0)"
+    out = subprocess.run([sys.executable, "-c", f"import sys, wmr.sim; {make}; print('mujoco' in sys.modules)"],
+                         capture_output=True, text=True, check=True).stdout.strip()
     assert out == "True"                                     # the check above can see an import
 
 

@@ -8,6 +8,7 @@ import io
 
 import numpy as np
 import pytest
+
 from conftest import ROOT
 
 pytest.importorskip("mujoco")

@@ -9,6 +9,7 @@ import sys
 from pathlib import Path
 
 import pytest
+import sympy as sp
 
 import wmr
 from wmr.errors import InputTypeError, InputValueError
@@ -16,7 +17,7 @@ from wmr.model.wheels import Joint, WheelUnit, wheel_kind, wheel_kinds
 from wmr.model.wheels.filekeys import FileKey
 from wmr.model.wheels.joints import actuation
 
-from wheel_contract import CHECKS, check_declarations, check_kind
+from wheel_contract import CHECKS, check_declarations, check_kind, check_mechanism
 
 ROOT = Path(__file__).resolve().parent.parent
 KINDS = sorted(wheel_kinds())
@@ -42,6 +43,44 @@ def test_the_contract_can_fail():
     with pytest.raises(AssertionError):
         check_declarations(Liar)
     check_declarations(wmr.OffsetWheel)
+
+
+def test_the_mechanism_contract_can_fail():
+    """A mechanism with its wheel ahead of P, one deaf to the unit's actuation, a refusal without a reason: caught."""
+    @dataclasses.dataclass(frozen=True)
+    class Ahead(wmr.OffsetWheel):                   # H = P + d j: not where points() puts the wheel
+        def root_body(self, height):
+            root = wmr.OffsetWheel.root_body(self, height)
+            arm = root.children[0]
+            return dataclasses.replace(root, children=(dataclasses.replace(arm, pos=(0.0, self.d, arm.pos[2])),))
+
+    @dataclasses.dataclass(frozen=True)
+    class Deaf(wmr.OffsetWheel):                    # the kind's default actuation, whatever the unit's
+        def root_body(self, height):
+            return wmr.OffsetWheel(self.position, self.r, d=self.d).root_body(height)
+
+    @dataclasses.dataclass(frozen=True)
+    class Shrug(wmr.CentredWheel):
+        def root_body(self, height):
+            raise NotImplementedError("no")
+
+    for cls in (Ahead, Deaf, Shrug):
+        with pytest.raises(AssertionError):
+            check_mechanism(cls)
+    check_mechanism(wmr.OffsetWheel)
+
+
+def test_a_mechanism_takes_a_height_and_numbers():
+    unit = wmr.OffsetWheel((0.3, 0.0), r=0.05, d=0.02)
+    assert unit.mechanism(0.05).wheels[0].pos == (0.0, -0.02, 0.0)
+    with pytest.raises(InputValueError, match=r"height .* at least the wheel radius r = 0.05, got 0.04"):
+        unit.mechanism(0.04)
+    with pytest.raises(InputTypeError, match="height"):
+        unit.mechanism("tall")
+    with pytest.raises(InputValueError, match="free symbols"):
+        wmr.OffsetWheel((0.3, 0.0), r=0.05, d=sp.Symbol("d")).mechanism(0.05)
+    exact = wmr.OffsetWheel((sp.sqrt(3) / 10, 0), r=sp.Rational(1, 20), d=sp.Rational(1, 50)).mechanism(0.05)
+    assert exact.root.pos == (float(sp.sqrt(3) / 10), 0.0, 0.0) and exact.wheels[0].pos == (0.0, -0.02, 0.0)
 
 
 # ------------------------------------------------------------------------------------------ the registry
@@ -150,6 +189,26 @@ class BallCaster(UnsteeredUnit):
         numpy.ndarray (2, 2) or sympy.Matrix (2, 2)
         """
         return backend.matrix([[0, self.r], [-self.r, 0]])
+
+    def root_body(self, height):
+        """None: refused, since a ball turns about every axis in its socket.
+
+        Parameters
+        ----------
+        height : float
+
+        Returns
+        -------
+        Body
+            Never.
+
+        Raises
+        ------
+        NotImplementedError
+            Always, with the reason.
+        """
+        raise NotImplementedError("a ball caster turns about every axis in its socket: two hinges in series would "
+                                  "lock when the outer one turns a quarter turn, and a mechanism has hinges only")
 '''
 
 DIFFERENTIAL_WITH_BALL = '''\
@@ -199,12 +258,21 @@ from wmr.plot.robot import draw_robot
 fig, ax = plt.subplots()
 draw_robot(ax, bot, np.zeros(3))
 assert main(["analyze", sys.argv[1], "--json", "--grid", "50", "--twists", "5"]) == 0
+import wmr.sim
+try:
+    wmr.sim.to_mjcf(bot)                                   # a physics engine: refused, with the kind's reason
+except NotImplementedError as exc:
+    assert "wheel 3 (BallCaster): a ball caster turns about every axis" in str(exc), exc
+else:
+    raise AssertionError("a ball caster was exported")
+assert main(["simulate", sys.argv[1], "--seconds", "0"]) == 2
 print("``ball``" in kinds_table() and "``ball``" in wmr.model.wheels.__doc__)
 '''
 
 
 def test_a_new_kind_is_one_new_module(tmp_path):
-    """Copy the package, add ``wmr/model/wheels/ball.py`` and nothing else: every part of wmr takes the new kind."""
+    """Copy the package, add ``wmr/model/wheels/ball.py`` and nothing else: every part of wmr takes the new kind
+    (wmr.sim refuses it with the reason its module gives)."""
     shutil.copytree(ROOT / "wmr", tmp_path / "wmr", ignore=shutil.ignore_patterns("__pycache__"))
     (tmp_path / "wmr" / "model" / "wheels" / "ball.py").write_text(BALL)
     changed = sorted(str(p.relative_to(tmp_path / "wmr")) for p in (tmp_path / "wmr").rglob("*.py")

@@ -6,7 +6,8 @@ a line written for it here.  The checks compare the kind's declarations with eac
 block of J2: its rates with its joints, ``steered`` with its joints and its constant angle,
 ``rolls_in_plane`` with the left null space of its block, a steering row with the null space, the block
 with the rotation (11), SymPy with NumPy; then files, drawing, kinematics and the analyses of a robot
-on three such units.
+on three such units; and the unit's mechanism for a physics engine (its own joints, its wheels where its
+points put them) or a refusal that says why.
 """
 from __future__ import annotations
 
@@ -184,8 +185,51 @@ def check_robot(cls):
         assert zone is None or zone >= 0
 
 
+def _turn(axis, angle):
+    """Rotation by ``angle`` about the unit ``axis`` (Rodrigues)."""
+    k = np.asarray(axis, dtype=float)
+    K = np.array([[0, -k[2], k[1]], [k[2], 0, -k[0]], [-k[1], k[0], 0]])
+    return np.eye(3) + np.sin(angle) * K + (1 - np.cos(angle)) * K @ K
+
+
+def _wheel_frames(body, beta, R=None, o=None):
+    """(centre, axle) of every wheel body of a mechanism, platform frame, its steering joints at ``beta``."""
+    R, o = (np.eye(3), np.zeros(3)) if R is None else (R, o)
+    o = o + R @ np.asarray(body.pos, dtype=float)
+    R = R @ _turn((0.0, 0.0, 1.0), body.angle)
+    if body.joint is not None:
+        R = R @ _turn(body.axis, beta if body.joint.steering else 0.0)
+    out = [(o, R[:, 0])] if body.wheel is not None else []
+    for c in body.children:
+        out += _wheel_frames(c, beta, R, o)
+    return out
+
+
+def check_mechanism(cls):
+    """Its bodies and joints for a physics engine: the unit's own joints (with its actuation), each once, a wheel body
+    per wheel at any steering angle where points() puts it, its axle i, at height r; or a refusal that says why."""
+    unit = example(cls)
+    height = 1.5 * float(unit.r)
+    try:
+        mech = unit.mechanism(height)
+    except NotImplementedError as exc:
+        assert len(str(exc).split()) >= 8, f"{cls.kind}: a refusal must say why, got {exc}"
+        return
+    assert sorted(mech.joints, key=lambda j: j.name) == sorted(unit.joints, key=lambda j: j.name)
+    flipped = cls(**{**_fields(unit), "driven": {cls.JOINTS[0].name: not cls.JOINTS[0].driven}})
+    assert {j.name: j.driven for j in flipped.mechanism(height).joints} == {j.name: j.driven for j in flipped.joints}
+    assert sum(j.steering for j in mech.joints) == (1 if cls.steered else 0)
+    for beta in (0.0, 0.7, -2.2):
+        pts = unit.points(beta)
+        frames = _wheel_frames(mech.root, beta)
+        assert len(frames) == pts["wheels"].shape[0] == len(mech.wheels)
+        for (centre, axle), want, body in zip(frames, pts["wheels"], mech.wheels):
+            assert np.allclose(centre[:2], want, atol=1e-12) and np.isclose(centre[2] + height, float(unit.r))
+            assert np.allclose(axle, [*pts["i"], 0.0], atol=1e-12) and body.wheel == float(unit.r)
+
+
 CHECKS = (check_registered, check_declarations, check_block, check_geometry_and_drawing, check_files, check_steering,
-          check_robot)
+          check_robot, check_mechanism)
 
 
 def check_kind(cls):

@@ -141,10 +141,10 @@ def findings_markdown(path):
 
     def cell(text):
         return text.replace("|", "\\|").replace("\n", " ")
-    head = (f"# Physical claims in a physics engine\n\nChapter 9 puts {len(rows)} of the paper's claims about real robots "
-            f"to MuJoCo: {len(rows) - len(fails)} hold, {len(fails)} do not "
+    head = (f"# Physical claims in a physics engine\n\nChapter 9 puts {len(rows)} of the paper's claims about real "
+            f"robots to MuJoCo: {len(rows) - len(fails)} hold, {len(fails)} do not "
             f"({', '.join(r['experiment'] for r in fails) or 'none'}).\n\n")
     table = ("| claim | verdict | prediction (wmr) | measurement (MuJoCo) |\n|---|---|---|---|\n"
-             + "".join(f"| {cell(r['claim'])} | {cell(r['verdict'])} | {cell(r['prediction'])} | {cell(r['measurement'])} |\n"
-                       for r in rows))
+             + "".join(f"| {cell(r['claim'])} | {cell(r['verdict'])} | {cell(r['prediction'])} | "
+                       f"{cell(r['measurement'])} |\n" for r in rows))
     return head + table

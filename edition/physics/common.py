@@ -150,7 +150,7 @@ def fmt(x, digits=DIGITS):
 
 
 def fmt_above(x, floor, digits=DIGITS):
-    """``fmt(x)``, or a bound ``< floor`` when ``|x|`` is below ``floor`` (a value that is zero but for creep and round-off).
+    """``fmt(x)``, or a bound ``< floor`` when ``|x|`` is below ``floor`` (zero but for creep and round-off).
 
     Parameters
     ----------
@@ -250,9 +250,9 @@ def parameters(robot, params=None, **extra):
     p = params or Params()
     units = ", ".join(sorted({type(u).__name__ for u in robot.wheels}))
     size = f"{robot.w} x {units}, |d_i| <= {fmt(float(np.abs(robot.mount_points).max()), 3)} m"
-    phys = (f"mu = {p.sliding:g}, torsional = {p.torsional:g} r, rolling = {p.rolling:g}, platform {p.platform_mass:g} kg, "
-            f"wheel {p.wheel_mass:g} kg, steer limit {p.steer_torque:g} W r, drive limit {p.drive_torque:g} W r, "
-            f"step {p.timestep:g} s")
+    phys = (f"mu = {p.sliding:g}, torsional = {p.torsional:g} r, rolling = {p.rolling:g}, "
+            f"platform {p.platform_mass:g} kg, wheel {p.wheel_mass:g} kg, steer limit {p.steer_torque:g} W r, "
+            f"drive limit {p.drive_torque:g} W r, step {p.timestep:g} s")
     more = "; ".join(f"{k.replace('_', ' ')} {v}" for k, v in extra.items())
     return f"{size}; {phys}" + (f"; {more}" if more else "")
 

@@ -1,4 +1,4 @@
-r"""What the rank of :math:`\mathbf F` means at the contacts: incompatible steering (experiment 3) and braking (experiment 4).
+r"""What the rank of :math:`\mathbf F` means at the contacts: incompatible steering (experiment 3), braking (4).
 
 Three centred wheels have mobility 1 when their axle lines meet in one point (rank F = 5) and 0 when
 they do not (rank F = 6, Section 5.2).  wmr's least-squares inverse kinematics then leaves a residual,
@@ -11,7 +11,8 @@ The force needed to move a rigid robot whose wheels resist sliding with Coulomb 
 :math:`\mu N_i` (across the wheel) and rolling with :math:`c_{rr}N_i` (along it) is, by the principle of
 maximum dissipation, the smallest dissipation over the motions that move C in the push's direction:
 
-.. math:: F(\mathbf u) = \min_{\mathbf t:\ \mathbf u\cdot\dot{\mathbf c} = 1}\ \sum_i N_i\big(\mu\,|\mathbf i_i^{\mathrm T}[\mathbf E\mathbf d_i\ \mathbf 1]\mathbf t|
+.. math:: F(\mathbf u) = \min_{\mathbf t:\ \mathbf u\cdot\dot{\mathbf c} = 1}\ \sum_i N_i\big(
+          \mu\,|\mathbf i_i^{\mathrm T}[\mathbf E\mathbf d_i\ \mathbf 1]\mathbf t|
           + c_{rr}\,|\mathbf j_i^{\mathrm T}[\mathbf E\mathbf d_i\ \mathbf 1]\mathbf t|\big),
 
 a convex piecewise-linear function of the two free components of :math:`\mathbf t`, smallest at a
@@ -231,7 +232,8 @@ def brake_experiment(params=None, directions=DIRECTIONS):
             weakest_push(robot, beta, (np.cos(np.radians(a)), np.sin(np.radians(a))), p.sliding, p.rolling)
             for a in directions])
         out[name] = {"beta": beta, "rank": int(wmr.rank_F(robot, beta)), "measured": measured, "predicted": predicted,
-                     "weakest": sig(measured.min()), "predicted_weakest": None if predicted is None else sig(predicted.min())}
+                     "weakest": sig(measured.min()),
+                     "predicted_weakest": None if predicted is None else sig(predicted.min())}
     a, b, k = out["fig12a"], out["parked"], out["braked"]
     holds = a["weakest"] >= 10 * b["weakest"]
     return Outcome(

@@ -107,8 +107,8 @@ def dead_zone_experiment(params=None):
         "dead-zone", "the dead zone", "4.2, Fig. 7, (28)-(29)",
         "steered one full turn with the drives locked, C traces a circle of radius d about the centroid C_f of the "
         "contact points, which stay fixed",
-        f"wmr.simulate: a circle of radius {fmt(model['radius'], 3)} m about C_f (d = {fmt(d)} m); contact points fixed, "
-        f"heading fixed",
+        f"wmr.simulate: a circle of radius {fmt(model['radius'], 3)} m about C_f (d = {fmt(d)} m); contact points "
+        f"fixed, heading fixed",
         f"|CC_f| from {fmt(dist.min(), 3)} to {fmt(dist.max(), 3)} m; fitted circle radius {fmt(radius, 3)} m, centre "
         f"{fmt(np.linalg.norm(centre - Cf) * 1000)} mm from C_f; contact points moved {fmt(drift * 1000)} mm; heading "
         f"{fmt(np.degrees(np.ptp(rec.pose[:, 0])))} deg",
@@ -166,8 +166,8 @@ def jam_experiment(params=None, generic=GENERIC):
         f"rank M = {g['rank']} at beta = ({angles}) deg: no motion; rank M = {e['rank']} with all beta equal: the "
         "dead-zone motion",
         f"generic: steering turned {pct(g['travel'])} of the commanded turn, C moved {pct(g['moved'])} of d, steering "
-        f"torque {pct(g['torque'])} of its limit; equal: steering turned {pct(e['travel'])}, torque {pct(e['torque'])} of "
-        "its limit",
+        f"torque {pct(g['torque'])} of its limit; equal: steering turned {pct(e['travel'])}, torque "
+        f"{pct(e['torque'])} of its limit",
         f"generic angles stall at the torque limit ({pct(g['torque'])}) with {pct(g['travel'])} of the turn made",
         v, "generic: turn <= 2 %, C moved <= 10 % of d, torque >= 95 % of the limit; equal: turn >= 98 %",
         parameters(robot, params, turn=f"2 pi in {TURN:g} s, drives locked", generic=f"beta = ({angles}) deg"),

@@ -42,8 +42,9 @@ RATE = 1.0
 def reorient(kind, params=None, rate=RATE, seconds=3.0):
     r"""Reorient every unit of the paper's robot in place at ``rate``; the torque it takes, per unit.
 
-    Centred wheels: the steering servos turn at ``rate`` with the drives locked (rolling disabled).  Dual wheels: the drives run at the rates of :func:`wmr.inverse` for a still platform
-    and :math:`\dot\beta_i` = ``rate`` (the corrected (15)); the pivots are passive.
+    Centred wheels: the steering servos turn at ``rate`` with the drives locked (rolling disabled).  Dual wheels:
+    the drives run at the rates of :func:`wmr.inverse` for a still platform and :math:`\dot\beta_i` = ``rate``
+    (the corrected (15)); the swivels are passive.
 
     Parameters
     ----------
@@ -79,7 +80,8 @@ def reorient(kind, params=None, rate=RATE, seconds=3.0):
     turned = np.diff(rec.beta[late], axis=0).sum(axis=0) / (rec.t[late][-1] - rec.t[late][0])
     return {"torque": power / rate, "load": load, "rate": turned,
             "servo": dict(zip(sim.servo_names, np.abs(rec.torque[late]).mean(axis=0))),
-            "still": float(np.linalg.norm(rec.pose[:, 1:] - rec.pose[0, 1:], axis=1).max()), "weight": sim.export.weight}
+            "still": float(np.linalg.norm(rec.pose[:, 1:] - rec.pose[0, 1:], axis=1).max()),
+            "weight": sim.export.weight}
 
 
 def reorient_experiment(params=None):
@@ -123,12 +125,12 @@ def reorient_experiment(params=None):
         f"centred: the dry-friction torque mu_t N = {fmt(pred_c)} N m; dual: rolling friction only, c_rr N b = "
         f"{fmt(pred_d)} N m (N = W/3)",
         f"torque to reorient at {RATE:g} rad/s, torsional friction on / off: centred {fmt(t[('centred', 'on')])} / "
-        f"{fmt_above(t[('centred', 'off')], floor)} N m, dual {fmt(t[('dual', 'on')])} / {fmt_above(t[('dual', 'off')], floor)} "
-        "N m; servo torques: "
+        f"{fmt_above(t[('centred', 'off')], floor)} N m, dual {fmt(t[('dual', 'on')])} / "
+        f"{fmt_above(t[('dual', 'off')], floor)} N m; servo torques: "
         f"centred steering {fmt(servo_c)} N m, dual drives {fmt(servo_d)} N m each",
-        f"the dual wheel's torque is {fmt(sig(t[('dual', 'on')] / pred_d))} times its rolling friction; its torsional part "
-        f"{fmt(dry_d)} N m is {pct(sig(dry_d / dry_c))} of the centred wheel's {fmt(dry_c)} N m: each of its wheels still "
-        "turns about the vertical at the steering rate",
+        f"the dual wheel's torque is {fmt(sig(t[('dual', 'on')] / pred_d))} times its rolling friction; its "
+        f"torsional part {fmt(dry_d)} N m is {pct(sig(dry_d / dry_c))} of the centred wheel's {fmt(dry_c)} N m: each "
+        "of its wheels still turns about the vertical at the steering rate",
         HOLDS if holds else FAILS, "the dual wheel's torsional part <= 1/10 of the centred wheel's",
         parameters(paper("dual"), params, reorientation=f"every unit at {RATE:g} rad/s in place, platform free",
                    dual="b = r", measured="contact dissipation / steering rate, t = 1 to 3 s"),

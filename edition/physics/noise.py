@@ -81,7 +81,7 @@ def noise_run(robot, params=None, seconds=3.0, rng=None):
     keep = rec.t >= 0.5
     beta, rates, true = rec.beta[keep], rec.rates[keep], rec.twist[keep]
     L = wmr.characteristic_length(robot)
-    h = np.array([L, 1.0, 1.0])                                                # homogeneous units (L psi_dot, x_dot, y_dot)
+    h = np.array([L, 1.0, 1.0])                                 # homogeneous units (L psi_dot, x_dot, y_dot)
     noisy = rates[None] + SIGMA * rng.standard_normal((DRAWS,) + rates.shape)
     err = (wmr.forward(robot, beta[None], noisy).value - true[None]) * h
     cov = np.cov(err.reshape(-1, 3).T)

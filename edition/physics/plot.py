@@ -58,7 +58,8 @@ def draw_drift(dead, jam, fig=None):
             rec = jam.data[name]["rec"]
             travel = np.degrees(np.abs(rec.beta - rec.beta[0]).max(axis=1))
             b.plot(rec.t, travel, color=colour, label=f"{name} angles: steering turned")
-            torque = np.abs(rec.torque[:, [k for k, n in enumerate(rec.export.servo_names) if n.endswith("steer")]]).max(axis=1)
+            steer = [k for k, n in enumerate(rec.export.servo_names) if n.endswith("steer")]
+            torque = np.abs(rec.torque[:, steer]).max(axis=1)
             b.plot(rec.t, 360 * torque / torque.max() if name == "generic" else np.nan * rec.t, color=colour, ls=":",
                    lw=1.0, label="generic angles: steering torque (full scale = limit)" if name == "generic" else None)
         t = jam.data["generic"]["rec"].t

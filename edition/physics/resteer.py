@@ -63,7 +63,8 @@ def replay(robot, transient, params=None, lead_in=1.0):
     err = np.hypot(*(pose[:, 1:] - ref[:, 1:]).T)
     slip = np.linalg.norm(rec.slip.reshape(len(tt), -1), axis=1)
     area = float(np.sum((slip[1:] + slip[:-1]) * np.diff(tt)) / 2)
-    return {"t": tt, "pose": pose, "slip": slip, "path_error": err, "slip_distance": area, "final_path_error": float(err[-1])}
+    return {"t": tt, "pose": pose, "slip": slip, "path_error": err, "slip_distance": area,
+            "final_path_error": float(err[-1])}
 
 
 def _best(values):

@@ -1,4 +1,4 @@
-"""``wmr simulate ROBOT.toml --vx VX --vy VY --omega W --seconds T``: the robot in MuJoCo, driven by wmr's inverse kinematics.
+"""``wmr simulate ROBOT.toml --vx VX --vy VY --omega W --seconds T``: the robot in MuJoCo, driven by wmr's kinematics.
 
 Examples::
 
@@ -21,6 +21,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..errors import InputValueError
 from ._numbers import fmt, number
 
 __all__ = ["HELP", "add_arguments", "run"]
@@ -57,8 +58,8 @@ def _params(items):
     for item in items:
         name, eq, value = str(item).partition("=")
         if not eq or name not in Params.__dataclass_fields__:
-            raise ValueError(f"--param must be NAME=VALUE with NAME one of {sorted(Params.__dataclass_fields__)}, "
-                             f"got {item!r}")
+            raise InputValueError(f"--param must be NAME=VALUE with NAME one of "
+                                  f"{sorted(Params.__dataclass_fields__)}, got {item!r}")
         out[name] = number(value, f"--param {name}")
     return Params(**out)
 
@@ -73,7 +74,8 @@ def run(args):
     Returns
     -------
     int
-        0; bad input raises ValueError or TypeError (:func:`wmr.cli.main` reports it in one line, status 2).
+        0; bad input raises a :class:`~wmr.errors.InputError` (:func:`wmr.cli.main` reports it in one line,
+        status 2), a robot wmr.sim cannot export (a Swedish wheel) too.
     """
     import wmr
 
@@ -82,13 +84,13 @@ def run(args):
     twist = np.array([number(args.omega, "--omega"), number(args.vx, "--vx"), number(args.vy, "--vy")])
     seconds = number(args.seconds, "--seconds")
     if seconds < 0:
-        raise ValueError(f"--seconds must be >= 0, got {args.seconds!r}")
+        raise InputValueError(f"--seconds must be >= 0, got {args.seconds!r}")
     params = _params(args.param)
     try:
         beta0 = sim.start_angles(robot, twist)
         ex = sim.export(robot, beta0, params=params)
     except NotImplementedError as e:
-        raise ValueError(f"cannot export {args.robot}: {e}") from None
+        raise InputValueError(f"cannot export {args.robot}: {e}") from None
     if args.mjcf:
         Path(args.mjcf).write_text(ex.xml, encoding="utf-8")
     if seconds == 0:
@@ -107,7 +109,8 @@ def run(args):
     out = {"commanded": dict(zip(("omega", "vx", "vy"), twist.tolist())),
            "simulated": dict(zip(("omega", "vx", "vy"), rec.twist[late].mean(axis=0).tolist())),
            "forward_from_encoders": dict(zip(("omega", "vx", "vy"), fk[late].mean(axis=0).tolist())),
-           "encoder_slip_residual": float(residual[late].mean()), "contact_slip_speed": float(rec.slip_speed[late].mean()),
+           "encoder_slip_residual": float(residual[late].mean()),
+           "contact_slip_speed": float(rec.slip_speed[late].mean()),
            "final_pose": dict(zip(("psi", "X", "Y"), rec.pose[-1].tolist())), "servo_load": load, "seconds": seconds,
            "mjcf": args.mjcf}
     if args.json:
@@ -116,11 +119,13 @@ def run(args):
 
     def tw(d):
         return f"omega = {fmt(d['omega'], 4)} rad/s, vx = {fmt(d['vx'], 4)} m/s, vy = {fmt(d['vy'], 4)} m/s"
-    rows = [("commanded", tw(out["commanded"])), ("simulated", tw(out["simulated"]) + f" (mean over t >= {fmt(seconds / 2)} s)"),
+    rows = [("commanded", tw(out["commanded"])),
+            ("simulated", tw(out["simulated"]) + f" (mean over t >= {fmt(seconds / 2)} s)"),
             ("from encoders", tw(out["forward_from_encoders"]) + " (wmr.forward)"),
             ("slip residual", f"{fmt(out['encoder_slip_residual'], 3)} m/s (encoders, J1 t - J2 theta_dot)"),
             ("contact slip", f"{fmt(out['contact_slip_speed'], 3)} m/s (mean slip speed of the wheels)"),
-            ("final pose", f"psi = {fmt(rec.pose[-1, 0], 4)} rad, X = {fmt(rec.pose[-1, 1], 4)} m, Y = {fmt(rec.pose[-1, 2], 4)} m"),
+            ("final pose", f"psi = {fmt(rec.pose[-1, 0], 4)} rad, X = {fmt(rec.pose[-1, 1], 4)} m, "
+                           f"Y = {fmt(rec.pose[-1, 2], 4)} m"),
             ("servo load", f"{fmt(100 * load, 3)} % of the torque limit at most")]
     if args.mjcf:
         rows.append(("model", args.mjcf))

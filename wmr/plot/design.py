@@ -144,6 +144,7 @@ def show_figure(fig, caption, width=None, dpi=150, colours=None):
     if colours:
         from PIL import Image as Picture
         small = io.BytesIO()
-        Picture.open(io.BytesIO(png)).convert("RGB").quantize(colors=int(colours)).save(small, format="PNG", optimize=True)
+        picture = Picture.open(io.BytesIO(png)).convert("RGB").quantize(colors=int(colours))
+        picture.save(small, format="PNG", optimize=True)
         png = small.getvalue()
     display(Image(png, width=width or round(fig.get_figwidth() * 110)), Markdown(caption))

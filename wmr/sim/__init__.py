@@ -2,12 +2,14 @@ r"""Any :class:`wmr.Robot` in a physics engine (MuJoCo): export, run, measure.
 
 wmr's model is the paper's: rigid bodies, point contacts, no slip.  This package puts a robot into
 MuJoCo, where wheels have mass, contacts have friction and servos have limits, so that what the
-model predicts can be measured.
+model predicts can be measured.  It knows no wheel kind: each unit describes its own bodies and
+joints (:meth:`wmr.model.wheels.WheelUnit.mechanism`, plain data) and says which joints are driven
+(``driven=``; a castor is an offset wheel with both joints passive).
 
 - :mod:`wmr.sim.params`: :class:`Params`, the physical parameters (masses, friction, servo limits)
   with their stated defaults;
-- :mod:`wmr.sim.chains`: each wheel unit as a chain of bodies and joints (:func:`unit_chain`, one
-  description per wheel kind);
+- :mod:`wmr.sim.bodies`: a unit's mechanism in MuJoCo's terms (servos on the driven joints, masses,
+  inertias, geoms);
 - :mod:`wmr.sim.mjcf`: :func:`to_mjcf`, the MJCF text of any robot (no MuJoCo needed);
 - :mod:`wmr.sim.simulation`: :class:`Simulation`, a robot in MuJoCo commanded and measured in wmr's
   variables (servos, drive locks, pushes);
@@ -27,30 +29,27 @@ Examples
 >>> '<freejoint name="platform"/>' in to_mjcf(wmr.load("examples/swerve4.toml"))   # doctest: +SKIP
 True
 """
-from .chains import Chain, Joint, Link, Shape, unit_chain
+from .bodies import POSITION, VELOCITY, servo
 from .commands import start_angles, twist_schedule
-from .mjcf import Export, default_passive, export, to_mjcf
+from .mjcf import Export, export, to_mjcf
 from .params import Params
 from .recording import Recording, Sample, Schedule
 from .runner import run
 from .simulation import Simulation
 
 __all__ = [
-           "Chain",
+           "POSITION",
+           "VELOCITY",
            "Export",
-           "Joint",
-           "Link",
            "Params",
            "Recording",
            "Sample",
            "Schedule",
-           "Shape",
            "Simulation",
-           "default_passive",
            "export",
            "run",
+           "servo",
            "start_angles",
            "to_mjcf",
            "twist_schedule",
-           "unit_chain",
 ]

@@ -15,7 +15,6 @@ from ..analysis.simulation import simulate
 from ..analysis.steering import steering_angles
 from ..model import validation as V
 from ..model.platform import point_velocity
-from ..model.wheels import OffsetWheel
 from .recording import Schedule
 
 __all__ = ["start_angles", "twist_schedule"]
@@ -24,9 +23,11 @@ __all__ = ["start_angles", "twist_schedule"]
 def start_angles(robot, twist):
     r"""Steering angles to start a constant twist from.
 
-    Centred and dual wheels: :func:`wmr.steering_angles` (wheel planes along the velocities of their
-    mount points).  Offset wheels: trailing, the arm behind :math:`P_i` (:math:`\mathbf j_i` along
-    :math:`\dot{\mathbf p}_i`), as a castor settles; a still mount point keeps 0.
+    Units that roll in their plane (centred and dual wheels): :func:`wmr.steering_angles` (wheel planes
+    along the velocities of their mount points).  Steered units whose steering the twist leaves free
+    (steered, not rolling in their plane: offset wheels): trailing, :math:`\mathbf j_i` along
+    :math:`\dot{\mathbf p}_i` (an offset wheel's arm behind :math:`P_i`, as a castor settles); a still
+    mount point keeps 0.  Units without a steering joint: their own angle.
 
     Parameters
     ----------
@@ -43,7 +44,7 @@ def start_angles(robot, twist):
     beta = np.array(steering_angles(robot, twist), dtype=float)
     pdot = point_velocity(twist, robot.mount_points)                    # (2): c_dot + psi_dot E d_i
     for i, u in enumerate(robot.wheels):
-        if isinstance(u, OffsetWheel) and np.hypot(*pdot[i]) > 0:
+        if u.steered and not u.rolls_in_plane and np.hypot(*pdot[i]) > 0:
             beta[i] = np.arctan2(-pdot[i, 0], pdot[i, 1])               # j_i = (-sin, cos) along p_dot_i
     return beta
 

@@ -1,30 +1,35 @@
 r"""Any :class:`wmr.Robot` as a MuJoCo model (MJCF text): :func:`to_mjcf`.
 
 The model: a ground plane; the platform, a free body whose frame is the body frame of wmr
-(origin C on the mount plane, x forward, z up); under it each unit's chain of links
-(:func:`wmr.sim.chains.unit_chain`, one description per wheel kind); an actuator for every servoed
-hinge; a lock for every drive hinge (a joint equality ``<name>_lock``, inactive: the drive locked,
-as the paper's Section 4.2 locks it, when switched on); and a keyframe ``start`` with the steering
-angles :math:`\boldsymbol\beta_0`.  Names follow
-the paper's numbering: unit ``i`` (from 1) has bodies, joints and actuators ``u<i>_<name>`` (e.g.
-``u2_steer``, ``u2_drive``), and the geom by which a wheel touches the ground is named after its
-link (``u2_wheel``; ``u3_wheel1``, ``u3_wheel2`` for a dual wheel).
+(origin C on the mount plane, x forward, z up); under it each unit's bodies and joints, as the unit
+describes them (:meth:`wmr.model.wheels.WheelUnit.mechanism`; :mod:`wmr.sim.bodies` gives them
+masses and geoms); a servo on every driven joint (:func:`wmr.sim.bodies.servo`); a lock for every
+drive hinge (a joint equality ``<name>_lock``, inactive: the drive locked, as the paper's Section
+4.2 locks it, when switched on); and a keyframe ``start`` with the steering angles
+:math:`\boldsymbol\beta_0`.  Names follow the paper's numbering: unit ``i`` (from 1) has bodies,
+joints and actuators ``u<i>_<name>``, with the unit's own names of its bodies and joints (e.g.
+``u2_steer``, ``u2_drive``; ``u3_swivel`` for a dual wheel's), and the geom by which a wheel touches
+the ground is named after its body (``u2_wheel``; ``u3_wheel1``, ``u3_wheel2`` for a dual wheel).
 
-Nothing here imports MuJoCo: the text is written from the chains, deterministically (the same
-robot and parameters give the same bytes).
+Nothing here imports MuJoCo, and nothing here knows a wheel kind: the text is written from the units'
+mechanisms, deterministically (the same robot and parameters give the same bytes).
 """
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 
 import numpy as np
 
+from ..errors import InputTypeError, InputValueError
 from ..model import validation as V
-from ..model.wheels import OffsetWheel
-from .chains import POSITION, VELOCITY, height_of, unit_chain
+from ..model.robot import Robot
+from ..model.wheels.joints import rate_columns
+from ..model.wheels.mechanism import Mechanism
+from .bodies import POSITION, body_xml, height_of, mechanisms, num, nums, servo
 from .params import GRAVITY, Params
 
-__all__ = ["Export", "default_passive", "export", "to_mjcf"]
+__all__ = ["Export", "export", "to_mjcf"]
 
 
 @dataclass(frozen=True)
@@ -36,10 +41,9 @@ class Export:
     xml : str
     robot : Robot
     params : Params
-    chains : tuple of Chain
-        One per unit, in the robot's order.
-    passive : tuple of bool
-        Per unit: True when its hinges carry no servo (a castor).
+    mechanisms : tuple of Mechanism
+        One per unit, in the robot's order (:meth:`wmr.model.wheels.WheelUnit.mechanism`); their
+        joints carry the units' actuation.
     height : float
         Height of the mount plane, i.e. of C, above the ground at rest.
     beta0 : numpy.ndarray (w,)
@@ -49,87 +53,67 @@ class Export:
     """
 
     xml: str
-    robot: object
+    robot: Robot
     params: Params
-    chains: tuple
-    passive: tuple
+    mechanisms: tuple[Mechanism, ...]
     height: float
     beta0: np.ndarray
     weight: float
 
     @staticmethod
     def name(i, part):
-        """The MuJoCo name of part ``part`` of unit ``i`` (0-based index): ``u<i+1>_<part>``."""
+        """The MuJoCo name of part ``part`` of unit ``i`` (0-based index): ``u<i+1>_<part>``.
+
+        Parameters
+        ----------
+        i : int
+        part : str
+
+        Returns
+        -------
+        str
+        """
         return f"u{i + 1}_{part}"
 
     @property
     def drive_names(self):
         """Every drive hinge (driven or not), each with its lock ``<name>_lock``: tuple of str."""
-        return tuple(self.name(i, j.name) for i, ch in enumerate(self.chains) for j in ch.joints if j.servo == VELOCITY)
+        return drive_names(self.mechanisms)
 
     @property
     def servo_names(self):
-        """The servos (MuJoCo actuators) in the model's order: one per servoed hinge of each active unit (tuple of str)."""
-        return tuple(self.name(i, j.name) for i, ch in enumerate(self.chains) if not self.passive[i]
-                     for j in ch.joints if j.servo is not None)
+        """The servos (MuJoCo actuators) in the model's order: one per driven joint (tuple of str)."""
+        return tuple(self.name(i, j.name) for i, m in enumerate(self.mechanisms) for j in m.joints if servo(j))
+
+    def hinges(self):
+        """Every joint of every unit, in MuJoCo's order, with what wmr's variables make of it.
+
+        Returns
+        -------
+        list of tuple (int, Joint, int or None)
+            ``(unit, joint, column)``: the unit's index (0-based), its joint (with the unit's
+            actuation) and the column of the robot's rate vector that the joint's encoder gives
+            (None: it gives none).
+        """
+        out = []
+        for i, (u, m, sl) in enumerate(zip(self.robot.wheels, self.mechanisms, self.robot.rate_slices)):
+            cols = rate_columns(u.joints)
+            out += [(i, j, None if j.name not in cols else sl.start + cols[j.name]) for j in m.joints]
+        return out
 
 
-
-def default_passive(robot):
-    """Which units are passive castors when nothing says so: the offset wheels of a robot that has other units.
-
-    A robot of offset wheels only (the paper's Section 4) drives and steers them all; in a robot with
-    other units (a differential drive with a castor, a steered wheel and two castors) its offset wheels
-    are castors.  (wmr's model does not record which joints are driven; say it with ``passive``.)
+def drive_names(mechs):
+    """The MuJoCo names of the drive hinges of the units' mechanisms (each has a lock).
 
     Parameters
     ----------
-    robot : Robot
+    mechs : sequence of Mechanism
 
     Returns
     -------
-    tuple of bool
+    tuple of str
     """
-    offset = [isinstance(u, OffsetWheel) for u in robot.wheels]
-    return tuple(offset) if not all(offset) else (False,) * robot.w
-
-
-def _f(x):
-    """A float as MJCF text, 12 significant digits (no negative zero)."""
-    return format(float(x) + 0.0, ".12g")
-
-
-def _v(*xs):
-    return " ".join(_f(x) for x in xs)
-
-
-def _quat_z(angle):
-    return _v(np.cos(angle / 2), 0.0, 0.0, np.sin(angle / 2))
-
-
-def _geom(shape, name, r_wheel, params, pad):
-    if shape.contact:
-        mu_t, mu_r = params.torsional * r_wheel, params.rolling * r_wheel
-        return (f'{pad}<geom name="{name}" type="sphere" size="{_f(shape.radius)}" condim="6" '
-                f'friction="{_v(params.sliding, mu_t, mu_r)}" solref="{_v(params.contact_time, 1.0)}" '
-                f'contype="1" conaffinity="0" group="3"/>')
-    where = f' fromto="{_v(*shape.fromto)}"' if shape.fromto is not None else ""
-    return f'{pad}<geom type="{shape.kind}" size="{_f(shape.radius)}"{where} contype="0" conaffinity="0" group="1"/>'
-
-
-def _body(link, i, params, lines, depth):
-    pad = "  " * depth
-    quat = f' quat="{_quat_z(link.angle)}"' if link.angle else ""
-    lines.append(f'{pad}<body name="{Export.name(i, link.name)}" pos="{_v(*link.pos)}"{quat}>')
-    if link.joint is not None:
-        lines.append(f'{pad}  <joint name="{Export.name(i, link.joint.name)}" type="hinge" axis="{_v(*link.joint.axis)}"/>')
-    lines.append(f'{pad}  <inertial pos="0 0 0" mass="{_f(link.mass)}" diaginertia="{_v(*link.inertia)}"/>')
-    radius = max((s.radius for s in link.shapes if s.contact), default=0.0)
-    for s in link.shapes:
-        lines.append(_geom(s, Export.name(i, link.name), radius, params, pad + "  "))
-    for c in link.children:
-        _body(c, i, params, lines, depth + 1)
-    lines.append(f"{pad}</body>")
+    return tuple(Export.name(i, j.name) for i, m in enumerate(mechs) for j in m.joints if j.kind == "drive")
 
 
 def _platform(robot, params, height):
@@ -143,22 +127,21 @@ def _platform(robot, params, height):
     inertia = (m * (b * b + t * t) / 12, m * (a * a + t * t) / 12, m * (a * a + b * b) / 12)
     com = P.mean(axis=0)
     centre = (lo + hi) / 2
-    return (f'    <inertial pos="{_v(com[0], com[1], 0.0)}" mass="{_f(m)}" diaginertia="{_v(*inertia)}"/>\n'
-            f'    <geom type="box" pos="{_v(centre[0], centre[1], t)}" size="{_v(a / 2, b / 2, t / 2)}" '
+    return (f'    <inertial pos="{nums(com[0], com[1], 0.0)}" mass="{num(m)}" diaginertia="{nums(*inertia)}"/>\n'
+            f'    <geom type="box" pos="{nums(centre[0], centre[1], t)}" size="{nums(a / 2, b / 2, t / 2)}" '
             f'contype="0" conaffinity="0" group="1" rgba="0.6 0.6 0.7 0.5"/>')
 
 
-def export(robot, beta=None, passive=None, params=None, **changes):
+def export(robot, beta=None, params=None, **changes):
     r"""Export a robot: the MJCF text and the map from its names to wmr's units.
 
     Parameters
     ----------
     robot : Robot
+        Its units' joints say which are driven (``driven=``; a castor is an offset wheel with both
+        joints passive): a driven joint gets a servo, a passive one none.
     beta : array (w,), optional
         Steering angles of the keyframe ``start`` (default 0; unsteered units: their own angle).
-    passive : sequence of bool, optional
-        Per unit, True for a passive unit (no servo on its hinges); default
-        :func:`default_passive`.
     params : Params, optional
     **changes
         Parameters to change (names of :class:`Params`), e.g. ``torsional=0``.
@@ -170,45 +153,41 @@ def export(robot, beta=None, passive=None, params=None, **changes):
     Raises
     ------
     NotImplementedError
-        If a unit cannot be represented faithfully (Swedish wheels).
+        If a unit cannot be represented faithfully (Swedish wheels: the unit says why).
+    wmr.errors.InputError
+        For bad input, naming the argument.
     """
     robot = V.numeric_robot(robot)
     if params is not None and not isinstance(params, Params):
-        raise TypeError(f"params must be a wmr.sim.Params, got {V.show(params)}")
+        raise InputTypeError(f"params must be a wmr.sim.Params, got {V.show(params)}")
     params = (params or Params()).replace(**changes) if changes else (params or Params())
     beta0 = robot.effective_beta(np.zeros(robot.w) if beta is None else beta)
     if beta0.shape != (robot.w,):
-        raise ValueError(f"beta must be one vector of {robot.w} steering angles, got shape {beta0.shape}")
-    if passive is None:
-        passive = default_passive(robot)
-    passive = tuple(V.flag(f"passive[{k}]", p) for k, p in enumerate(passive))
-    if len(passive) != robot.w:
-        raise ValueError(f"passive must have one flag per unit ({robot.w}), got {len(passive)}")
+        raise InputValueError(f"beta must be one vector of {robot.w} steering angles, got shape {beta0.shape}")
     height = height_of(robot)
-    chains = tuple(unit_chain(u, height, params) for u in robot.wheels)
-    n_bodies = sum(len(c.links) - len(c.wheels) for c in chains)
-    n_wheels = sum(len(c.wheels) for c in chains)
+    mechs = mechanisms(robot, height)
+    n_bodies = sum(len(m.bodies) - len(m.wheels) for m in mechs)
+    n_wheels = sum(len(m.wheels) for m in mechs)
     weight = params.total_mass(n_bodies, n_wheels) * GRAVITY
-    xml = _write(robot, params, chains, passive, height, beta0, weight)
-    return Export(xml, robot, params, chains, passive, height, beta0, weight)
+    xml = _write(robot, params, mechs, height, beta0, weight)
+    return Export(xml, robot, params, mechs, height, beta0, weight)
 
 
-def to_mjcf(robot, beta=None, passive=None, params=None, **changes):
+def to_mjcf(robot, beta=None, params=None, **changes):
     r"""A MuJoCo model (MJCF text) of any :class:`wmr.Robot`.
 
-    The platform (a free body, its frame wmr's body frame at C), each unit's real joints
-    (:mod:`wmr.sim.chains`): steering hinges under position servos, drive hinges under velocity
-    servos, offset arms, the dual wheel's passive pivot, fixed wheels, passive castors; wheels
-    touching the ground at one point each, with sliding, torsional and rolling friction
-    (:mod:`wmr.sim.params`).
+    The platform (a free body, its frame wmr's body frame at C) and each unit's bodies and joints as
+    the unit describes them (:meth:`wmr.model.wheels.WheelUnit.mechanism`: steering hinges, offset
+    arms, the dual wheel's swivel, drive hinges); position servos on the driven steering joints,
+    velocity servos on the driven drive joints, none on passive joints (a castor's, a dual wheel's
+    swivel); wheels touching the ground at one point each, with sliding, torsional and rolling
+    friction (:mod:`wmr.sim.params`).
 
     Parameters
     ----------
     robot : Robot
     beta : array (w,), optional
         Steering angles of the keyframe ``start`` (default 0).
-    passive : sequence of bool, optional
-        Per unit, True for a passive unit; default :func:`default_passive` (castors).
     params : Params, optional
         Physical parameters (default :class:`Params`).
     **changes
@@ -222,7 +201,7 @@ def to_mjcf(robot, beta=None, passive=None, params=None, **changes):
     Raises
     ------
     NotImplementedError
-        For Swedish wheels (:data:`wmr.sim.chains.SWEDISH_REFUSAL`).
+        For Swedish wheels (:data:`wmr.model.wheels.swedish.NO_FAITHFUL_MECHANISM`).
 
     Examples
     --------
@@ -232,47 +211,47 @@ def to_mjcf(robot, beta=None, passive=None, params=None, **changes):
     >>> xml.count('<position '), xml.count('<velocity ')
     (3, 3)
     """
-    return export(robot, beta, passive, params, **changes).xml
+    return export(robot, beta, params, **changes).xml
 
 
-def _write(robot, params, chains, passive, height, beta0, weight):
+def _actuator(name, kind, r, params, weight):
+    """A servo: its torque limit a fraction of W r, its gain per unit of that limit (:mod:`wmr.sim.params`)."""
+    if kind == POSITION:
+        tau = params.steer_torque * weight * r
+        return (f'    <position name="{name}" joint="{name}" kp="{num(params.steer_kp * tau)}" '
+                f'dampratio="{num(params.steer_damping)}" forcerange="{nums(-tau, tau)}"/>')
+    tau = params.drive_torque * weight * r
+    return (f'    <velocity name="{name}" joint="{name}" kv="{num(params.drive_kv * tau)}" '
+            f'forcerange="{nums(-tau, tau)}"/>')
+
+
+def _write(robot, params, mechs, height, beta0, weight):
     lines = [f'<mujoco model="{_escape(robot.name)}">',
              '  <compiler angle="radian" autolimits="true"/>',
-             (f'  <option timestep="{_f(params.timestep)}" integrator="implicitfast" cone="elliptic" '
-             f'impratio="{_f(params.impratio)}" jacobian="dense" gravity="0 0 {_f(-GRAVITY)}"/>'),
+             (f'  <option timestep="{num(params.timestep)}" integrator="implicitfast" cone="elliptic" '
+              f'impratio="{num(params.impratio)}" jacobian="dense" gravity="0 0 {num(-GRAVITY)}"/>'),
              "  <worldbody>",
-             '    <geom name="ground" type="plane" size="0 0 1" friction="0 0 0" contype="0" conaffinity="1" condim="6"/>',
-             f'    <body name="platform" pos="0 0 {_f(height)}">',
+             ('    <geom name="ground" type="plane" size="0 0 1" friction="0 0 0" contype="0" conaffinity="1" '
+              'condim="6"/>'),
+             f'    <body name="platform" pos="0 0 {num(height)}">',
              '      <freejoint name="platform"/>',
              "  " + _platform(robot, params, height).replace("\n", "\n  ")]
-    for i, ch in enumerate(chains):
-        _body(ch.root, i, params, lines, 3)
+    for i, (u, m) in enumerate(zip(robot.wheels, mechs)):
+        lines += body_xml(m.root, functools.partial(Export.name, i), float(u.r), params, 3)
     lines += ["    </body>", "  </worldbody>", "  <actuator>"]
-    for i, (u, ch) in enumerate(zip(robot.wheels, chains)):
-        if passive[i]:
-            continue
-        r = float(u.r)
-        for j in ch.joints:
-            name = Export.name(i, j.name)
-            if j.servo == POSITION:
-                tau = params.steer_torque * weight * r
-                lines.append(f'    <position name="{name}" joint="{name}" kp="{_f(params.steer_kp * tau)}" '
-                             f'dampratio="{_f(params.steer_damping)}" forcerange="{_v(-tau, tau)}"/>')
-            elif j.servo == VELOCITY:
-                tau = params.drive_torque * weight * r
-                lines.append(f'    <velocity name="{name}" joint="{name}" kv="{_f(params.drive_kv * tau)}" '
-                             f'forcerange="{_v(-tau, tau)}"/>')
+    for i, (u, m) in enumerate(zip(robot.wheels, mechs)):
+        lines += [_actuator(Export.name(i, j.name), servo(j), float(u.r), params, weight) for j in m.joints if servo(j)]
     lines.append("  </actuator>")
-    drives = Export(None, robot, params, chains, passive, height, beta0, weight).drive_names
+    drives = drive_names(mechs)
     if drives:                       # a lock per drive hinge, off until Simulation.lock switches it on (a brake)
         lines += (["  <equality>"] + [f'    <joint name="{n}_lock" joint1="{n}" polycoef="0 0 0 0 0" active="false"/>'
                                        for n in drives] + ["  </equality>"])
     qpos = [0.0, 0.0, height, 1.0, 0.0, 0.0, 0.0]
-    for i, ch in enumerate(chains):
-        qpos += [float(beta0[i]) if j.steering else 0.0 for j in ch.joints]
-    lines += ["  <keyframe>", f'    <key name="start" qpos="{_v(*qpos)}"/>', "  </keyframe>", "</mujoco>", ""]
+    for i, m in enumerate(mechs):
+        qpos += [float(beta0[i]) if j.steering else 0.0 for j in m.joints]
+    lines += ["  <keyframe>", f'    <key name="start" qpos="{nums(*qpos)}"/>', "  </keyframe>", "</mujoco>", ""]
     return "\n".join(lines)
 
 
 def _escape(text):
-    return (str(text).replace("&", "&amp;").replace('"', "&quot;").replace("<", "&lt;").replace(">", "&gt;"))
+    return str(text).replace("&", "&amp;").replace('"', "&quot;").replace("<", "&lt;").replace(">", "&gt;")

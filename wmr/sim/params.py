@@ -39,6 +39,7 @@ from __future__ import annotations
 import dataclasses
 from dataclasses import dataclass
 
+from ..errors import InputTypeError
 from ..model import validation as V
 
 __all__ = ["GRAVITY", "Params"]
@@ -119,7 +120,7 @@ class Params:
         """
         unknown = sorted(set(changes) - {f.name for f in dataclasses.fields(self)})
         if unknown:
-            raise TypeError(f"unknown parameter(s) {unknown}; known: {[f.name for f in dataclasses.fields(self)]}")
+            raise InputTypeError(f"unknown parameter(s) {unknown}; known: {[f.name for f in dataclasses.fields(self)]}")
         return dataclasses.replace(self, **changes)
 
     def total_mass(self, n_bodies, n_wheels):

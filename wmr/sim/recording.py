@@ -1,4 +1,4 @@
-r"""What goes into a simulation and what comes out, in wmr's variables: :class:`Schedule`, :class:`Sample`, :class:`Recording`.
+r"""What goes into a simulation and what comes out, in wmr's variables.
 
 A :class:`Schedule` is a command over time -- steering angles :math:`\boldsymbol\beta` for the steering
 servos and joint rates :math:`\dot{\boldsymbol\theta}` (the rate vector of :attr:`wmr.Robot.rate_names`) for
@@ -12,6 +12,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..errors import InputValueError
 from ..model import validation as V
 from .mjcf import Export
 
@@ -49,7 +50,8 @@ class Sample:
     slip : numpy.ndarray (n_wheels, 2)
         Horizontal velocity of each wheel's material point at its contact, fixed frame.
     dissipation : numpy.ndarray (n_wheels,)
-        Power the contact takes from each wheel, W: :math:`-(\mathbf f\cdot\mathbf v + \boldsymbol\tau\cdot\boldsymbol\omega)`
+        Power the contact takes from each wheel, W:
+        :math:`-(\mathbf f\cdot\mathbf v + \boldsymbol\tau\cdot\boldsymbol\omega)`
         with :math:`\mathbf v` the velocity of the wheel's point at the contact and
         :math:`\boldsymbol\omega` the wheel's angular velocity (sliding, torsional and rolling friction
         together; the soft contact's springs add or return a little).
@@ -77,7 +79,7 @@ class Recording:
     Attributes
     ----------
     export : Export
-        The exported robot (names, chains, parameters).
+        The exported robot (names, mechanisms, parameters).
     t : numpy.ndarray (N,)
     pose : numpy.ndarray (N, 3)
     twist : numpy.ndarray (N, 3)
@@ -152,12 +154,12 @@ class Schedule:
     def __post_init__(self):
         t = V.finite_array("t", self.t)
         if t.ndim != 1 or len(t) == 0 or (len(t) > 1 and not np.all(np.diff(t) > 0)):
-            raise ValueError(f"t must be a non-empty increasing vector, got {V.show(self.t)}")
+            raise InputValueError(f"t must be a non-empty increasing vector, got {V.show(self.t)}")
         beta = V.finite_array("beta", self.beta)
         rates = V.finite_array("rates", self.rates)
         if beta.ndim != 2 or rates.ndim != 2 or len(beta) != len(t) or len(rates) != len(t):
-            raise ValueError(f"beta and rates must have one row per knot ({len(t)}), got shapes "
-                             f"{beta.shape} and {rates.shape}")
+            raise InputValueError(f"beta and rates must have one row per knot ({len(t)}), got shapes "
+                                  f"{beta.shape} and {rates.shape}")
         object.__setattr__(self, "t", t)
         object.__setattr__(self, "beta", beta)
         object.__setattr__(self, "rates", rates)

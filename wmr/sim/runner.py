@@ -1,8 +1,9 @@
-r"""Driving a :class:`~wmr.sim.Simulation` along a :class:`~wmr.sim.Schedule`: :func:`run` and its :class:`~wmr.sim.Recording`."""
+r"""Driving a :class:`~wmr.sim.Simulation` along a :class:`~wmr.sim.Schedule`: :func:`run`, and what it records."""
 from __future__ import annotations
 
 import numpy as np
 
+from ..errors import InputTypeError, InputValueError
 from ..model import validation as V
 from .recording import Recording, Schedule
 from .simulation import MAX_STEPS, Simulation
@@ -40,12 +41,12 @@ def run(sim, schedule, seconds, control_dt=0.001, every=10, on_step=None):
     control_dt = V.number("control_dt", V.positive("control_dt", control_dt))
     every = V.integer("every", every, minimum=1)
     if not isinstance(sim, Simulation):
-        raise TypeError(f"sim must be a wmr.sim.Simulation, got {V.show(sim)}")
+        raise InputTypeError(f"sim must be a wmr.sim.Simulation, got {V.show(sim)}")
     if schedule is not None and not isinstance(schedule, Schedule):
-        raise TypeError(f"schedule must be a wmr.sim.Schedule or None, got {V.show(schedule)}")
+        raise InputTypeError(f"schedule must be a wmr.sim.Schedule or None, got {V.show(schedule)}")
     n = int(np.ceil(seconds / control_dt - 1e-9))
     if n * max(1, round(control_dt / sim.model.opt.timestep)) > MAX_STEPS:
-        raise ValueError(f"seconds = {seconds!r} needs more than {MAX_STEPS} steps")
+        raise InputValueError(f"seconds = {seconds!r} needs more than {MAX_STEPS} steps")
     steps = max(1, round(control_dt / sim.model.opt.timestep))
     times = np.arange(n) * steps * sim.model.opt.timestep
     if schedule is not None:
@@ -68,6 +69,6 @@ def run(sim, schedule, seconds, control_dt=0.001, every=10, on_step=None):
 
 
 def _stack(ex, samples):
-    fields = ("t", "pose", "twist", "beta", "rates", "torque", "joint_pos", "joint_vel", "point", "force", "moment", "slip",
-              "dissipation")
+    fields = ("t", "pose", "twist", "beta", "rates", "torque", "joint_pos", "joint_vel", "point", "force", "moment",
+              "slip", "dissipation")
     return Recording(ex, *(np.array([getattr(s, f) for s in samples]) for f in fields))

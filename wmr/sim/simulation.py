@@ -2,8 +2,8 @@ r"""A robot in MuJoCo, commanded and measured in wmr's variables: :class:`Simula
 
 A :class:`Simulation` holds a compiled model and its state.  It takes commands in wmr's own terms,
 steering angles :math:`\boldsymbol\beta` and joint rates :math:`\dot{\boldsymbol\theta}` (the rate vector
-of :attr:`wmr.Robot.rate_names`), and gives each servo its target through the unit's chain
-(:mod:`wmr.sim.chains`): a steering servo tracks :math:`\beta_i`, a drive servo the rate its hinge
+of :attr:`wmr.Robot.rate_names`), and gives each servo its target through the unit's joints
+(:meth:`wmr.sim.Export.hinges`): a steering servo tracks :math:`\beta_i`, a drive servo the rate its hinge
 measures.  Servos can be switched off (a free drive), drive hinges locked (the paper's locked
 drives), and a force and torque can be applied to the platform at C (a push).
 
@@ -22,8 +22,9 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..errors import InputValueError
 from ..model import validation as V
-from .chains import POSITION, VELOCITY
+from .bodies import POSITION, VELOCITY, servo
 from .mjcf import Export, export
 from .recording import Sample
 
@@ -56,8 +57,6 @@ class Simulation:
         The robot (exported here with the other arguments), or an :class:`~wmr.sim.mjcf.Export`.
     beta : array (w,), optional
         Initial steering angles (default 0), also the first target of the steering servos.
-    passive : sequence of bool, optional
-        Passive units (:func:`wmr.sim.mjcf.default_passive`).
     params : Params, optional
     settle : float, optional
         Seconds to let the robot settle on its wheels with every servo holding still before
@@ -78,47 +77,43 @@ class Simulation:
         The unit (0-based) of each wheel.
     """
 
-    def __init__(self, robot, beta=None, passive=None, params=None, settle=0.2, **changes):
+    def __init__(self, robot, beta=None, params=None, settle=0.2, **changes):
         mj = _mujoco()
         self._mj = mj
-        self.export = robot if isinstance(robot, Export) else export(robot, beta, passive, params, **changes)
+        self.export = robot if isinstance(robot, Export) else export(robot, beta, params, **changes)
         ex = self.export
         self.model = mj.MjModel.from_xml_string(ex.xml)
         self.data = mj.MjData(self.model)
         self.robot = ex.robot
         m = self.model
         self._id = lambda kind, name: mj.mj_name2id(m, kind, name)
-        # joints: per unit, (joint, qpos address, dof address)
-        self._joints = []
-        for i, ch in enumerate(ex.chains):
-            row = []
-            for j in ch.joints:
-                jid = self._id(mj.mjtObj.mjOBJ_JOINT, ex.name(i, j.name))
-                row.append((j, int(m.jnt_qposadr[jid]), int(m.jnt_dofadr[jid])))
-            self._joints.append(row)
+        # every hinge: (unit, joint, rate column or None, qpos address, dof address), in MuJoCo's order
+        self._hinges = []
+        for i, j, col in ex.hinges():
+            jid = self._id(mj.mjtObj.mjOBJ_JOINT, ex.name(i, j.name))
+            self._hinges.append((i, j, col, int(m.jnt_qposadr[jid]), int(m.jnt_dofadr[jid])))
         self.servo_names = tuple(m.actuator(a).name for a in range(m.nu))
-        self.joint_names = tuple(ex.name(i, j.name) for i, ch in enumerate(ex.chains) for j in ch.joints)
-        self._qa = np.array([qa for row in self._joints for _, qa, _ in row], dtype=int)
-        self._da = np.array([da for row in self._joints for _, _, da in row], dtype=int)
+        self.joint_names = tuple(ex.name(i, j.name) for i, j, *_ in self._hinges)
+        self._qa = np.array([h[3] for h in self._hinges], dtype=int)
+        self._da = np.array([h[4] for h in self._hinges], dtype=int)
         self._servo = {n: a for a, n in enumerate(self.servo_names)}
-        wheels = [(i, ex.name(i, k.name)) for i, ch in enumerate(ex.chains) for k in ch.wheels]
+        wheels = [(i, ex.name(i, b.name)) for i, mech in enumerate(ex.mechanisms) for b in mech.wheels]
         self.wheel_names = tuple(n for _, n in wheels)
         self.wheel_unit = np.array([i for i, _ in wheels], dtype=int)
         self._geom = {self._id(mj.mjtObj.mjOBJ_GEOM, n): k for k, (_, n) in enumerate(wheels)}
-        self._wheel_body = [int(m.geom_bodyid[g]) for g in sorted(self._geom, key=self._geom.get)]
+        self._wheel_body = [int(m.geom_bodyid[g]) for g in sorted(self._geom, key=lambda g: self._geom[g])]
         self._platform = self._id(mj.mjtObj.mjOBJ_BODY, "platform")
         self._gains = (m.actuator_gainprm.copy(), m.actuator_biasprm.copy())
         self._jacp, self._jacr = np.zeros((3, m.nv)), np.zeros((3, m.nv))
         self._f6 = np.zeros(6)
         # each servo's target as a linear map of (beta, rates): a steering servo takes beta_i, a drive servo its rate
         self._from_beta, self._from_rates = np.zeros((m.nu, self.robot.w)), np.zeros((m.nu, self.robot.n_rates))
-        for i, (row, sl) in enumerate(zip(self._joints, self.robot.rate_slices)):
-            for j, _, _ in row:
-                a = self._servo.get(ex.name(i, j.name))
-                if a is not None and j.servo == POSITION and j.steering:
-                    self._from_beta[a, i] = 1.0
-                elif a is not None and j.servo == VELOCITY and j.rate is not None:
-                    self._from_rates[a, sl.start + j.rate] = 1.0
+        for i, j, col, _, _ in self._hinges:
+            a, kind = self._servo.get(ex.name(i, j.name)), servo(j)
+            if a is not None and kind == POSITION:                  # a driven steering joint
+                self._from_beta[a, i] = 1.0
+            elif a is not None and kind == VELOCITY and col is not None:
+                self._from_rates[a, col] = 1.0
         # a position servo pushes kp (target - q) - kv q_dot: fed target + (kv / kp) target_dot, it is a PD law
         # on the error and follows a turning target without lag
         kp, kv = m.actuator_gainprm[:, 0], -m.actuator_biasprm[:, 2]
@@ -237,8 +232,8 @@ class Simulation:
         for n in names:
             eq = self._id(mj.mjtObj.mjOBJ_EQUALITY, f"{n}_lock")
             if eq < 0:
-                raise ValueError(f"no lockable drive hinge named {V.show(n)}; drives: "
-                                 f"{[x for x in self.servo_names if 'drive' in x]}")
+                raise InputValueError(f"no lockable drive hinge named {V.show(n)}; drives: "
+                                      f"{list(self.export.drive_names)}")
             m.eq_data[eq, 0] = d.qpos[m.jnt_qposadr[m.eq_obj1id[eq]]]
             d.eq_active[eq] = 1
             if n in self._servo:
@@ -259,14 +254,14 @@ class Simulation:
         for n in names:
             eq = self._id(mj.mjtObj.mjOBJ_EQUALITY, f"{n}_lock")
             if eq < 0:
-                raise ValueError(f"no lockable drive hinge named {V.show(n)}")
+                raise InputValueError(f"no lockable drive hinge named {V.show(n)}")
             self.data.eq_active[eq] = 0
             if n in self._servo:
                 self.engage([n])
 
     def _servo_index(self, name):
         if name not in self._servo:
-            raise ValueError(f"no servo named {V.show(name)}; servos: {list(self.servo_names)}")
+            raise InputValueError(f"no servo named {V.show(name)}; servos: {list(self.servo_names)}")
         return self._servo[name]
 
     def push(self, force=(0.0, 0.0), torque=0.0):
@@ -309,7 +304,7 @@ class Simulation:
         seconds = V.number("seconds", V.nonnegative("seconds", seconds))
         n = round(seconds / self.model.opt.timestep)
         if n > MAX_STEPS:
-            raise ValueError(f"seconds = {seconds!r} needs {n} steps, more than {MAX_STEPS}")
+            raise InputValueError(f"seconds = {seconds!r} needs {n} steps, more than {MAX_STEPS}")
         if n:
             self.step(n)
 
@@ -357,12 +352,11 @@ class Simulation:
         twist = np.array([wz, c * v[0] + s * v[1], -s * v[0] + c * v[1]])
         beta = np.array(self.robot.effective_beta(np.zeros(self.robot.w)), dtype=float)
         rates = np.zeros(self.robot.n_rates)
-        for i, (row, sl) in enumerate(zip(self._joints, self.robot.rate_slices)):
-            for j, qa, da in row:
-                if j.steering:
-                    beta[i] = q[qa]
-                if j.rate is not None:
-                    rates[sl.start + j.rate] = d.qvel[da] + (wz if j.absolute else 0.0)
+        for i, j, col, qa, da in self._hinges:
+            if j.steering:
+                beta[i] = q[qa]
+            if col is not None:
+                rates[col] = d.qvel[da] + (wz if j.absolute else 0.0)
         nw = len(self.wheel_names)
         point = np.full((nw, 3), np.nan)
         force, moment = np.zeros((nw, 3)), np.zeros((nw, 3))

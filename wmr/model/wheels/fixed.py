@@ -19,6 +19,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from .centred import CentredWheel
+from .mechanism import wheel
 from .unsteered import UnsteeredUnit
 
 __all__ = ["FixedWheel"]
@@ -63,3 +64,22 @@ class FixedWheel(UnsteeredUnit):
     JOINTS = (CentredWheel.JOINTS[-1],)
     local_block = CentredWheel.local_block
     rolls_in_plane = True
+
+    def root_body(self, height):
+        r"""The wheel alone, centred at :math:`P_i` and turned by its ``angle``, on ``drive``.
+
+        See :mod:`~wmr.model.wheels.mechanism`.
+
+        Parameters
+        ----------
+        height : float
+            Height of the mount plane above the ground (>= r, checked by :meth:`mechanism`).
+
+        Returns
+        -------
+        Body
+        """
+        r = float(self.r)
+        x, y = (float(v) for v in self.position)
+        (drive,) = self.joints
+        return wheel("wheel", (x, y, r - height), r, drive, angle=float(self.angle))

@@ -18,12 +18,14 @@ kind        the joint
 ==========  =====================================================================================
 
 A unit with a ``steer`` or ``swivel`` joint is *steered*: its :math:`\beta_i` comes from the
-robot's configuration.  A unit without one has a constant angle of its own.
+robot's configuration.  A unit without one has a constant angle of its own.  A joint's rate variable
+is its own rate, or (``absolute``) its rate measured from the ground: an offset wheel's
+:math:`\dot\phi_i = \dot\psi + \dot\beta_i` (7).
 
 Examples
 --------
 >>> Joint("drive", "drive", driven=True, rate=("theta", r"\theta", ""))
-Joint(name='drive', kind='drive', driven=True, rate=('theta', '\\theta', ''))
+Joint(name='drive', kind='drive', driven=True, rate=('theta', '\\theta', ''), absolute=False)
 """
 from __future__ import annotations
 
@@ -34,7 +36,7 @@ from typing import Any
 from ...errors import InputTypeError, InputValueError
 from ..checks import flag, kind_error, show
 
-__all__ = ["JOINT_KINDS", "STEERING_JOINTS", "Joint", "actuation"]
+__all__ = ["JOINT_KINDS", "STEERING_JOINTS", "Joint", "actuation", "rate_columns"]
 
 #: the kinds of joint a wheel unit can have, and what each is
 JOINT_KINDS = {
@@ -64,12 +66,17 @@ class Joint:
         rate is a column of :math:`\mathbf J_2`, e.g. ``("theta", r"\theta", "1")`` for the first
         wheel of a dual unit; ``None`` when it is not (a centred wheel's steering rate, which
         enters only through the angle).
+    absolute : bool, optional
+        True when the rate variable is the joint's rate **plus** the platform's turning rate
+        :math:`\dot\psi` (a rate measured from the ground, as an offset wheel's absolute steering
+        rate :math:`\dot\phi_i = \dot\psi + \dot\beta_i` (7)); default False, the joint's own rate.
     """
 
     name: str
     kind: str
     driven: bool
     rate: tuple[str, str, str] | None = None
+    absolute: bool = False
 
     def __post_init__(self) -> None:
         if not isinstance(self.name, str) or not self.name.isidentifier():
@@ -80,6 +87,10 @@ class Joint:
             raise InputTypeError(f"driven must be True or False, got {show(self.driven)}")
         if self.rate is not None and (len(self.rate) != 3 or not all(isinstance(s, str) for s in self.rate)):
             raise InputValueError(f"rate must be (plain name, TeX letter, suffix), got {show(self.rate)}")
+        if not isinstance(self.absolute, bool):
+            raise InputTypeError(f"absolute must be True or False, got {show(self.absolute)}")
+        if self.absolute and self.rate is None:
+            raise InputValueError(f"absolute is True for joint {self.name!r}, which has no rate variable")
 
     @property
     def steering(self) -> bool:
@@ -126,3 +137,27 @@ def actuation(joints: tuple[Joint, ...], driven: Any, owner: str = "unit") -> tu
     if len(driven) != len(names):
         raise InputValueError(f"driven must have one bool per joint ({', '.join(names)}), got {show(driven)}")
     return tuple(flag(f"driven[{k}]", value) for k, value in enumerate(driven))
+
+
+def rate_columns(joints: tuple[Joint, ...]) -> dict[str, int]:
+    r"""Where each joint's rate is among a unit's rates: ``{joint name: column}`` for the joints that have one.
+
+    The unit's rates :math:`\dot{\boldsymbol\theta}_i` are its joints' rates in the order of the
+    joints (its columns of :math:`\mathbf J_2`).
+
+    Parameters
+    ----------
+    joints : tuple of Joint
+
+    Returns
+    -------
+    dict of str to int
+
+    Examples
+    --------
+    >>> swivel = Joint("swivel", "swivel", driven=False)
+    >>> drives = [Joint(f"drive{k}", "drive", driven=True, rate=("theta", r"\theta", str(k))) for k in (1, 2)]
+    >>> rate_columns((swivel, *drives))
+    {'drive1': 0, 'drive2': 1}
+    """
+    return {j.name: k for k, j in enumerate(j for j in joints if j.rate is not None)}

@@ -26,6 +26,7 @@ from ..backend import NUMERIC
 from ..tolerance import TOL
 from .filekeys import FileKey
 from .joints import Joint
+from .mechanism import VERTICAL, Body, mount, wheel
 from .parts import Link
 from .unit import WheelUnit
 
@@ -61,7 +62,7 @@ class OffsetWheel(WheelUnit):
 
     d: float = 0.0
     kind = "offset"
-    JOINTS = (Joint("steer", "steer", driven=True, rate=("phi", r"\phi", "")),
+    JOINTS = (Joint("steer", "steer", driven=True, rate=("phi", r"\phi", ""), absolute=True),    # phi = psi + beta (7)
               Joint("drive", "drive", driven=True, rate=("theta", r"\theta", "")))
     FILE_KEYS = (FileKey("offset", "d", "the offset d in metres, >= 0", check="nonnegative"),)
 
@@ -124,6 +125,28 @@ class OffsetWheel(WheelUnit):
         """
         pts = self.points(C.number("beta", beta))
         return (Link(np.stack([pts["P"], pts["H"]]), over=True, r=float(self.r)),) + super().parts(beta)
+
+    def root_body(self, height):
+        r"""The steer body at :math:`P_i` on ``steer``, its arm to the wheel at :math:`H_i = P_i - d\,\mathbf j_i`.
+
+        The wheel turns on ``drive``.
+
+        See :mod:`~wmr.model.wheels.mechanism`.
+
+        Parameters
+        ----------
+        height : float
+            Height of the mount plane above the ground (>= r, checked by :meth:`mechanism`).
+
+        Returns
+        -------
+        Body
+        """
+        r, d = float(self.r), float(self.d)
+        H = (0.0, -d, r - height)                                  # H = P - d j, the wheel centre at height r
+        steer, drive = self.joints
+        return Body("steer", mount(self.position), 0.0, steer, VERTICAL, size=max(d, r / 2),
+                    rods=(((0.0, 0.0, 0.0), H),), children=(wheel("wheel", H, r, drive),))
 
     def dead_zone(self):
         """The offset d: steered with the drives locked, offset wheels carry C on a circle of radius d.

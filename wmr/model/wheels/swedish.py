@@ -30,7 +30,16 @@ from .joints import Joint
 from .parts import Rollers
 from .unsteered import UnsteeredUnit, in_degrees, radians
 
-__all__ = ["SwedishWheel"]
+__all__ = ["NO_FAITHFUL_MECHANISM", "SwedishWheel"]
+
+#: why a Swedish wheel has no mechanism a physics engine could take (:meth:`SwedishWheel.root_body`)
+NO_FAITHFUL_MECHANISM = (
+    "a Swedish (omni/mecanum) wheel rolls on a ring of free rollers, and a physics engine of rigid bodies and point "
+    "contacts (MuJoCo) has no roller contact: a faithful model needs every roller as a body on its own hinge, shaped "
+    "(a convex barrel mesh) so that the rollers' envelope is the wheel's circle, with the contact passing from roller "
+    "to roller and no encoder for the roller rate sigma_dot. wmr does not build that, and a sphere with anisotropic "
+    "friction would not be a roller at all: the wheel is refused rather than simulated as something else under its "
+    "name")
 
 
 @dataclass(frozen=True)
@@ -171,6 +180,25 @@ class SwedishWheel(UnsteeredUnit):
         angle = self.drawn_angle(beta)
         pts = self.points(angle)
         return self._discs(pts, angle, arrow=False) + (Rollers(pts["H"], angle, float(self.r), float(self.roller)),)
+
+    def root_body(self, height):
+        """None a physics engine could take faithfully: refused (:data:`NO_FAITHFUL_MECHANISM`).
+
+        Parameters
+        ----------
+        height : float
+
+        Returns
+        -------
+        Body
+            Never.
+
+        Raises
+        ------
+        NotImplementedError
+            Always, with :data:`NO_FAITHFUL_MECHANISM`.
+        """
+        raise NotImplementedError(f"Swedish wheel at {tuple(float(v) for v in self.position)}: {NO_FAITHFUL_MECHANISM}")
 
     def isotropy_advice(self):
         """Omni rollers (:math:`\\gamma = \\pi/2`) make the block :math:`r\\,\\mathbf R`, isotropic; None if they are.

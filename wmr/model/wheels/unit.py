@@ -23,6 +23,8 @@ its steering             :meth:`~WheelUnit.beta_rate`; :meth:`~WheelUnit.steerin
 its geometry, drawing    :meth:`~WheelUnit.points` (batched) and :meth:`~WheelUnit.parts`
                          (:mod:`~wmr.model.wheels.geometry`; :mod:`~wmr.model.wheels.parts`, data that
                          :mod:`wmr.plot` draws)
+its mechanism            :meth:`~WheelUnit.mechanism`: bodies and joints as data, which :mod:`wmr.sim`
+                         puts in a physics engine (:mod:`~wmr.model.wheels.mechanism`)
 its robot-file keys      ``FILE_KEYS`` (:mod:`~wmr.model.wheels.filekeys`), after ``position`` and ``radius``
 its design hints         :meth:`~WheelUnit.dead_zone`, :meth:`~WheelUnit.isotropy_advice`,
                          :meth:`~WheelUnit.isotropic_variant`, :meth:`~WheelUnit.other_builds`
@@ -50,13 +52,14 @@ from .design import DesignHints
 from .filekeys import COMMON_KEYS, FileKey
 from .geometry import UnitGeometry
 from .joints import Joint, actuation
+from .mechanism import UnitMechanism
 from .registry import register
 
 __all__ = ["WheelUnit"]
 
 
 @dataclass(frozen=True)
-class WheelUnit(UnitGeometry, DesignHints):
+class WheelUnit(UnitGeometry, UnitMechanism, DesignHints):
     r"""A wheel unit at :math:`P_i`: the base of every wheel kind.
 
     Parameters
