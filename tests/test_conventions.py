@@ -24,8 +24,8 @@ def _run(capsys, *argv):
 
 
 def test_a_chassis_speeds_is_read_by_its_fields():
-    from wpimath.kinematics import ChassisSpeeds, SwerveDrive4Kinematics
     from wpimath.geometry import Translation2d
+    from wpimath.kinematics import ChassisSpeeds, SwerveDrive4Kinematics
     bot = wmr.load(SWERVE)
     speeds = ChassisSpeeds(1.0, 0.5, 0.8)                                       # vx, vy, omega
     cmd = wmr.swerve.module_commands(bot, speeds)

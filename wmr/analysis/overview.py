@@ -62,6 +62,7 @@ def special_twists(robot):
     -------
     numpy.ndarray (4 + w, 3)
     """
+    robot = V.numeric_robot(robot)
     special = [[0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [0.0, 1.0, 1.0], [1.0, 0.0, 0.0]]
     special += [[1.0, d[1], -d[0]] for d in robot.mount_points]           # spin about P_i: c_dot = -psi E d_i
     return np.array(special)

@@ -128,7 +128,7 @@ from .arrays import finite_array
 from .checks import kind_error
 from .platform import wrap_angle
 
-__all__ = ["CONVENTIONS", "TWIST_ORDER", "convention", "angle_to", "angle_from"]
+__all__ = ["CONVENTIONS", "TWIST_ORDER", "checked", "angle_to", "angle_from"]
 
 #: the conventions a user can bring, in one line each (see the module notes)
 CONVENTIONS = {
@@ -142,12 +142,12 @@ TWIST_ORDER = {"wmr": ("omega", "vx", "vy"), "wpilib": ("vx", "vy", "omega"), "r
 _OFFSET = {"wmr": 0.0, "wpilib": -np.pi / 2, "ros": -np.pi / 2}
 
 
-def convention(name: object) -> str:
-    """``name`` checked: one of :data:`CONVENTIONS`.
+def checked(convention: object) -> str:
+    """``convention`` checked: one of :data:`CONVENTIONS`.
 
     Parameters
     ----------
-    name : str
+    convention : str
 
     Returns
     -------
@@ -155,21 +155,21 @@ def convention(name: object) -> str:
 
     Examples
     --------
-    >>> convention("wpilib")
+    >>> checked("wpilib")
     'wpilib'
     """
-    if not isinstance(name, str) or name not in CONVENTIONS:
-        raise kind_error("convention", name, f"one of {', '.join(CONVENTIONS)}")
-    return name
+    if not isinstance(convention, str) or convention not in CONVENTIONS:
+        raise kind_error("convention", convention, f"one of {', '.join(CONVENTIONS)}")
+    return convention
 
 
-def angle_to(beta, name: str) -> np.ndarray:
-    r"""wmr's steering angles :math:`\beta` (radians) in the convention ``name`` (radians, in :math:`(-\pi, \pi]`).
+def angle_to(beta, convention: str) -> np.ndarray:
+    r"""wmr's steering angles :math:`\beta` (radians) in the ``convention`` (radians, in :math:`(-\pi, \pi]`).
 
     Parameters
     ----------
     beta : array (...)
-    name : str
+    convention : str
         A key of :data:`CONVENTIONS`.
 
     Returns
@@ -181,16 +181,16 @@ def angle_to(beta, name: str) -> np.ndarray:
     >>> float(np.degrees(angle_to(np.pi / 2, "wpilib")))       # axle along y: the module rolls forward
     0.0
     """
-    return wrap_angle(finite_array("beta", beta) + _OFFSET[convention(name)])
+    return wrap_angle(finite_array("beta", beta) + _OFFSET[checked(convention)])
 
 
-def angle_from(angle, name: str, argument: str = "angle") -> np.ndarray:
-    r"""wmr's steering angles :math:`\beta` (radians) from angles in the convention ``name`` (radians).
+def angle_from(angle, convention: str, argument: str = "angle") -> np.ndarray:
+    r"""wmr's steering angles :math:`\beta` (radians) from angles in the ``convention`` (radians).
 
     Parameters
     ----------
     angle : array (...)
-    name : str
+    convention : str
     argument : str, optional
         The name of ``angle`` in messages (the caller's argument).
 
@@ -203,4 +203,4 @@ def angle_from(angle, name: str, argument: str = "angle") -> np.ndarray:
     >>> float(np.degrees(angle_from(0.0, "ros")))
     90.0
     """
-    return wrap_angle(finite_array(argument, angle) - _OFFSET[convention(name)])
+    return wrap_angle(finite_array(argument, angle) - _OFFSET[checked(convention)])

@@ -27,6 +27,7 @@ from __future__ import annotations
 import os
 
 from ..errors import InputValueError, LimitError
+from .checks import number
 
 __all__ = ["LIMITS", "limit", "check"]
 
@@ -49,7 +50,7 @@ def limit(name: str) -> int:
     -------
     int
     """
-    if name not in LIMITS:
+    if not isinstance(name, str) or name not in LIMITS:
         raise InputValueError(f"name must be one of {', '.join(LIMITS)}, got {name!r}")
     default, env, _ = LIMITS[name]
     text = os.environ.get(env, "").strip().replace("_", "")
@@ -83,10 +84,15 @@ def check(name: str, amount: float, what: str) -> None:
     wmr.errors.LimitError
     """
     most = limit(name)
+    if isinstance(amount, bool) or not isinstance(amount, int):          # (an int may be beyond a float)
+        amount = number("amount", amount)
     if amount <= most:
         return
     _, env, unit = LIMITS[name]
-    shown = f"{amount:,.0f}" if amount < 1e15 else f"{amount:.3g}"
-    wanted = f"{int(amount) + 1}" if amount < 1e15 else f"{amount:.1e}"
+    if amount < 1e15:
+        shown, wanted = f"{amount:,.0f}", f"{int(amount) + 1}"
+    else:                                               # (an int may be beyond a float: its digits)
+        digits = str(int(amount))
+        shown = wanted = f"{digits[0]}.{digits[1:3]}e+{len(digits) - 1}"
     raise LimitError(f"{what} has {shown} {unit}, more than the limit of {most:,} (set the environment variable "
                      f"{env} to raise it, e.g. {env}={wanted})")

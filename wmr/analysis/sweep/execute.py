@@ -176,6 +176,9 @@ def bytes_per_configuration(robot, analysis) -> int:
     -------
     int
     """
+    robot = V.numeric_robot(robot)
+    if analysis not in ANALYSES:
+        raise InputValueError(f"analysis must be one of {sorted(ANALYSES)}, got {analysis!r}")
     w, n = robot.w, robot.n_rates
     own = {"rank_F": 40 * w, "mobility": 40 * w, "actuated_mobility": 80 * w, "det_J": 24 * n + 32,
            "kappa_J": 24 * n + 64, "kappa_JL1": 8}[analysis]

@@ -33,6 +33,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ...model import validation as V
 from ...model.backend import NUMERIC
 from ...model.tolerance import TOL
 from .._batch import for_chunks
@@ -112,7 +113,8 @@ class Motions:
     """
 
     def __init__(self, robot, n, seed):
-        self.robot, self.n, self.seed = robot, n, seed
+        robot = V.numeric_robot(robot)
+        self.robot, self.n, self.seed = robot, count("n", n), count("seed", seed, minimum=0)
         self.scale = robot.F_column_norms[:3]
         fixed = [i for i, u in enumerate(robot.wheels) if not u.steered]
         if fixed:                                   # the directions the fixed wheels allow: N(C1f), dimensionless
@@ -265,6 +267,9 @@ def kappa_J_of_twists(robot, twist, L):
     >>> bool(np.allclose(kappa_J_of_twists(bot, tw, 0.4), want, rtol=1e-12))
     True
     """
+    robot = V.numeric_robot(robot)
+    twist = V.finite_array("twist", twist, last=3).reshape(-1, 3)
+    L = V.number("L", V.positive("L", L))
     if not _swerve_like(robot):
         return None
     JL1 = robot.J1(L=L)
