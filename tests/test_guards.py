@@ -175,3 +175,14 @@ def test_huge_but_finite_robot_runs_without_warnings(tmp_path):
         p = subprocess.run([sys.executable, "-W", "error", "-m", "wmr", *map(str, argv)], capture_output=True,
                            text=True, timeout=120)
         assert p.returncode == 0 and p.stderr == "", p.stderr
+
+
+@pytest.mark.parametrize("argv, words", [(["--grid", "1000000000"], "WMR_MAX_CONFIGURATIONS"),
+                                         (["--twists", "100000000"], "WMR_MAX_MEMORY_MB")])
+def test_analyze_is_guarded_too(capsys, argv, words):
+    from wmr.cli import main
+    t0 = time.perf_counter()
+    assert main(["analyze", str(SWERVE), *argv]) == 2
+    err = capsys.readouterr().err
+    assert err.startswith("wmr analyze: the overview (grid and twists) ") and words in err
+    assert time.perf_counter() - t0 < 5

@@ -30,6 +30,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..model import validation as V
+from ..model.limits import check
 from ..model.tolerance import TOL
 from .actuation import describe_twist, free_twists
 from .advice import advice, profile
@@ -101,6 +102,9 @@ def configurations(robot, grid=GRID_SIZE, twists=TWISTS, seed=0):
     twists = V.integer("twists", twists, minimum=0)
     seed = V.integer("seed", seed, minimum=0)
     w, steered = robot.w, np.array(robot.steered, dtype=bool)
+    most = 4 * grid + twists + w + 4                         # held in memory at once, with their analyses
+    check("configurations", most, "the overview (grid and twists)")
+    check("memory_mb", most * 8 * (3 * w + 3 * robot.n_rates + 16) / 2 ** 20, "the overview (grid and twists)")
     s = int(steered.sum())
     parts = []
     if s:

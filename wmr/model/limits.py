@@ -31,11 +31,11 @@ from .checks import number
 
 __all__ = ["LIMITS", "limit", "check"]
 
-#: name -> (default, environment variable, the unit counted)
+#: name -> (default, environment variable, what a request is said to have)
 LIMITS = {
-    "wheels": (100, "WMR_MAX_WHEELS", "wheel units"),
-    "configurations": (10 ** 9, "WMR_MAX_CONFIGURATIONS", "configurations"),
-    "memory_mb": (1024, "WMR_MAX_MEMORY_MB", "MB of working memory"),
+    "wheels": (100, "WMR_MAX_WHEELS", "has {} wheel units"),
+    "configurations": (10 ** 9, "WMR_MAX_CONFIGURATIONS", "has {} configurations"),
+    "memory_mb": (1024, "WMR_MAX_MEMORY_MB", "needs {} MB of working memory"),
 }
 
 
@@ -94,5 +94,5 @@ def check(name: str, amount: float, what: str) -> None:
     else:                                               # (an int may be beyond a float: its digits)
         digits = str(int(amount))
         shown = wanted = f"{digits[0]}.{digits[1:3]}e+{len(digits) - 1}"
-    raise LimitError(f"{what} has {shown} {unit}, more than the limit of {most:,} (set the environment variable "
+    raise LimitError(f"{what} {unit.format(shown)}, more than the limit of {most:,} (set the environment variable "
                      f"{env} to raise it, e.g. {env}={wanted})")
