@@ -3,7 +3,7 @@ r"""Chapter 4, equations (51)-(59): centred wheels -- kinematics, mobility, isot
 Two lines through each mount point :math:`P_i` organise the chapter: the **axle line** (along
 :math:`\mathbf i_i`) and the **wheel-plane line** (along :math:`\mathbf j_i`).  The robot can move
 iff the axle lines are concurrent or all parallel (rank F = 5, :func:`mobility_centred`);
-:math:`\mathbf J` is singular iff the wheel-plane lines are (:func:`singular`).
+:math:`\mathbf J` is singular iff the wheel-plane lines are (:func:`singular_configurations`).
 Matrices come from :class:`wmr.Robot` for general mount points :data:`edition.symbols.D` or the
 paper's placement, and are compared with the printed forms (:mod:`edition.transcription`).
 
@@ -20,12 +20,12 @@ from .singular import (
                        classify_lines,
                        planes_through,
                        printed_determinant,
-                       singular,
+                       singular_configurations,
                        singular_list,
                        singular_v,
 )
 
 __all__ = ["L_NUM", "R_NUM", "general_robot", "kinematics", "functional_matrix", "mobility_centred",
            "isotropic_kinematics",
-           "singular", "printed_determinant", "classify_lines", "singular_list", "singular_v",
+           "singular_configurations", "printed_determinant", "classify_lines", "singular_list", "singular_v",
            "planes_through", "LINE_CLASSES"]

@@ -24,11 +24,11 @@ from ...verify import SEED, max_residual, symbolic_equal
 from .. import Derivation, claim, equation, require
 from .mobility import L_NUM, R_NUM, general_robot, u_point, unit_axes
 
-__all__ = ["singular", "printed_determinant", "classify_lines", "singular_list", "singular_v",
+__all__ = ["singular_configurations", "printed_determinant", "classify_lines", "singular_list", "singular_v",
            "planes_through", "LINE_CLASSES"]
 
 
-def singular(n=20000, seed=SEED):
+def singular_configurations(n=20000, seed=SEED):
     r"""(58): :math:`\det\mathbf J = -\tfrac{r^3}{L}\det[\mathbf i_i^{\mathrm T}\ \ \mathbf i_i\cdot\mathbf d_i]`: zero
     iff the wheel-plane lines are concurrent or parallel.
 
