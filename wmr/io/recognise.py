@@ -213,6 +213,7 @@ def recognise(robot, names, where="this format"):
 
     Examples
     --------
+    >>> from wmr.io.layouts import differential
     >>> recognise(differential(0.4, 0.05), ["mecanum", "differential"]).numbers
     {'track': 0.4}
     """

@@ -11,7 +11,7 @@ Examples
 >>> import wmr
 >>> from wmr.io.layouts import differential
 >>> text = to_ros2(differential(0.4, 0.05, name="diffbot"))
->>> [line.strip() for line in text.splitlines() if "wheel_separation" in line or "type:" in line]
+>>> [line.strip() for line in text.splitlines() if "wheel_separation" in line or "DiffDrive" in line]
 ['type: diff_drive_controller/DiffDriveController', 'wheel_separation: 0.4']
 """
 from __future__ import annotations
@@ -184,7 +184,7 @@ def to_ros2(robot, path=None, controller=None):
         raise InputValueError(f"controller must be one of {', '.join(CONTROLLERS)}, got {V.show(controller)}")
     chosen = [CONTROLLERS[controller]] if controller else list(CONTROLLERS.values())
     layout = recognise(robot, [c.layout for c in chosen],
-                       where=controller or "no ROS 2 drive controller (" + ", ".join(CONTROLLERS) + ")")
+                       where=controller or "ROS 2's drive controllers (" + ", ".join(CONTROLLERS) + ")")
     ctrl = next(c for c in chosen if c.layout == layout.name)
     params, notes = ctrl.write(layout, robot)
     notes = notes + ([f"passive castors (wheel {', '.join(str(i + 1) for i in layout.dropped)}) are not joints of the "

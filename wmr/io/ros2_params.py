@@ -125,6 +125,18 @@ class Params:
         self.source, self.block = source, block
 
     def fail(self, key: str, reason: str) -> NoReturn:
+        """Raise the RobotFileError of ``key``: at its line, else its parent's, else the node's ``ros__parameters``.
+
+        Parameters
+        ----------
+        key : str
+            Dotted for nested parameters.
+        reason : str
+
+        Returns
+        -------
+        NoReturn
+        """
         path = tuple(key.split("."))
         line = self.block.lines.get(path)
         while line is None and len(path) > 1:
@@ -133,7 +145,16 @@ class Params:
         raise RobotFileError(self.source, line or self.block.line, f"{self.block.node}.{key}", reason)
 
     def has(self, key: str) -> bool:
-        """True when ``key`` (dotted for nested parameters) is in the block."""
+        """True when ``key`` (dotted for nested parameters) is in the block.
+
+        Parameters
+        ----------
+        key : str
+
+        Returns
+        -------
+        bool
+        """
         return self._raw(key) is not _MISSING
 
     def _raw(self, key):

@@ -162,7 +162,7 @@ def to_urdf(robot, path=None):
     --------
     >>> import wmr
     >>> text = to_urdf(wmr.Robot([wmr.CentredWheel((0.3, 0.0), r=0.05)], name="one"))
-    >>> [line.strip() for line in text.splitlines() if "<joint" in line]
+    >>> [line.strip() for line in text.splitlines() if "<joint" in line and "type=" in line]
     ['<joint name="base_joint" type="fixed">', '<joint name="wheel1_steer" type="continuous">', \
 '<joint name="wheel1_drive" type="continuous">']
     """
