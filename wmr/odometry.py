@@ -6,11 +6,12 @@ integrated over the step at the steering angles of its end, reads
 .. math:: \mathbf J_1\,\Delta\mathbf t = \mathbf J_2(\boldsymbol\beta_{k+1})\,\Delta\boldsymbol\theta,
           \qquad \Delta\mathbf t = [\Delta\psi\ \Delta x\ \Delta y]^T \text{ (body frame at the step's start)}.
 
-Not every joint has an encoder: the **measured** joints (default: the driven joints with a rate, i.e.
-the drive motors; :func:`measured_joints`) give their increments; an offset wheel's steering rate is
-its absolute :math:`\dot\phi_i = \dot\psi + \dot\beta_i` (7), so its column moves to the left with
-:math:`\Delta\psi` and takes :math:`\Delta\beta_i` from the steering angles; the other rates (free
-rollers, castors, unmeasured wheels) are unknowns solved with the twist.  The least-squares solution
+Not every joint has an encoder: the **measured** joints (default: the joints with a motor whose rate
+is a column of :math:`\mathbf J_2`; :func:`measured_joints`) give their increments, the others (free
+rollers, passive castors, wheels without an encoder) are unknowns solved with the twist.  A measured
+steering joint's rate is the unit's absolute :math:`\dot\phi_i = \dot\psi + \dot\beta_i` (7, an
+offset wheel): its column moves to the left with :math:`\Delta\psi` and its increment
+:math:`\Delta\beta_i` comes from the steering angles, not from ``angles``.  The least-squares solution
 (columns scaled as for :func:`wmr.rank`) gives :math:`\Delta\mathbf t`; the **residual**
 :math:`\mathbf J_1\Delta\mathbf t - \mathbf J_2\Delta\boldsymbol\theta` (metres, two entries per
 unit) is the wheel travel no rigid motion explains: slip, or a wrong model.
@@ -61,7 +62,8 @@ class Odometry:
     ----------
     robot : Robot
     measured : tuple of str
-        The rate names (:attr:`wmr.Robot.rate_names`) whose angles were given, in their order.
+        The rate names (:attr:`wmr.Robot.rate_names`) measured (from ``angles``, or from ``beta`` for
+        a steering joint's rate).
     pose : numpy.ndarray (T, 3)
         :math:`(\\psi, X, Y)` at each sample, fixed frame (the first is ``pose0``).
     increment : numpy.ndarray (T-1, 3)
@@ -72,8 +74,7 @@ class Odometry:
     slip : numpy.ndarray (T-1,)
         Its norm.
     unknown : numpy.ndarray (T-1, u)
-        The increments solved for the rates not measured (other than offset wheels' steering rates),
-        in the order of :attr:`wmr.Robot.rate_names`.
+        The increments solved for the rates not measured, in the order of :attr:`wmr.Robot.rate_names`.
     """
 
     robot: Robot
@@ -86,19 +87,21 @@ class Odometry:
 
 
 def _columns(robot):
-    """(measured-by-default, steering, other) rate columns: driven non-steering joints; steering joints' rates."""
-    drive: list[int] = []
-    steer: list[int] = []
-    other: list[int] = []
+    """The rate columns of driven joints (measured by default), and the set of steering joints' rate columns."""
+    driven: list[int] = []
+    steering: set[int] = set()
     for sl, u in zip(robot.rate_slices, robot.wheels):
         rated = [j for j in u.joints if j.rate is not None]
         for k, j in enumerate(rated):
-            (steer if j.steering else drive if j.driven else other).append(sl.start + k)
-    return drive, steer, other
+            if j.driven:
+                driven.append(sl.start + k)
+            if j.steering:
+                steering.add(sl.start + k)
+    return driven, steering
 
 
 def measured_joints(robot):
-    """The rates an encoder measures by default: those of the driven joints that do not steer (the drive motors).
+    r"""The rates an encoder measures by default: those of the joints with a motor (a column of J2 each).
 
     Parameters
     ----------
@@ -107,7 +110,8 @@ def measured_joints(robot):
     Returns
     -------
     tuple of str
-        Rate names (:attr:`wmr.Robot.rate_names`), in their order.
+        Rate names (:attr:`wmr.Robot.rate_names`), in their order; a steering joint's rate (an
+        offset wheel's :math:`\dot\phi_i`) is measured through the steering angles.
 
     Examples
     --------
@@ -138,14 +142,15 @@ def wheel_odometry(robot, beta, angles, heading=None, pose0=(0.0, 0.0, 0.0), mea
         Steering angles :math:`\beta_i` at each sample (radians; unsteered units' entries are ignored).
     angles : array (T, m)
         The measured joints' angles at each sample (radians, wmr's sign: :math:`\theta_i`; a WPILib
-        module distance is :math:`r_i\theta_i`), in the order of ``measured``.
+        module distance is :math:`r_i\theta_i`), in the order of ``measured``, steering joints left
+        out (their angles are in ``beta``).
     heading : array (T,), optional
         A gyro's heading (radians): replaces the wheels' :math:`\Delta\psi`, as WPILib does.
     pose0 : triple, optional
         :math:`(\psi, X, Y)` at the first sample.
     measured : sequence of str, optional
         Rate names (:attr:`wmr.Robot.rate_names`) of the measured joints; default
-        :func:`measured_joints`.  An offset wheel's steering rate is never one: it comes from ``beta``.
+        :func:`measured_joints`.  A steering joint's rate named here is measured through ``beta``.
 
     Returns
     -------
@@ -158,19 +163,19 @@ def wheel_odometry(robot, beta, angles, heading=None, pose0=(0.0, 0.0, 0.0), mea
         or when the measured joints do not determine the twist at a step (e.g. one wheel measured).
     """
     robot = V.numeric_robot(robot)
-    drive, steer, _ = _columns(robot)
+    driven, steering_rates = _columns(robot)
     names = list(robot.rate_names)
     if measured is None:
-        cols = drive
+        chosen = driven
     else:
         if isinstance(measured, str) or not all(isinstance(n, str) for n in measured):
             raise V.kind_error("measured", measured, "a sequence of rate names")
-        bad = [n for n in measured if n not in names or names.index(n) in steer]
-        if bad or len(set(measured)) != len(measured):
-            allowed = ", ".join(n for k, n in enumerate(names) if k not in steer)
-            raise InputValueError(f"measured must name distinct rates of the robot other than steering rates "
-                                  f"({allowed}), got {list(measured)}")
-        cols = [names.index(n) for n in measured]
+        if any(n not in names for n in measured) or len(set(measured)) != len(measured):
+            raise InputValueError(f"measured must name distinct rates of the robot ({', '.join(names)}), got "
+                                  f"{list(measured)}")
+        chosen = [names.index(n) for n in measured]
+    steer = [c for c in chosen if c in steering_rates]                 # through beta: phi = psi + beta (7)
+    cols = [c for c in chosen if c not in steering_rates]              # through angles
     beta = V.finite_array("beta", beta, last=robot.w)
     angles = V.finite_array("angles", angles, last=len(cols))
     T = beta.shape[0] if beta.ndim == 2 else 0
@@ -203,7 +208,7 @@ def wheel_odometry(robot, beta, angles, heading=None, pose0=(0.0, 0.0, 0.0), mea
         z[k], determined = _solve(A, b)
         if not determined.all():
             step = a + int(np.argmin(determined))
-            raise InputValueError(f"the measured joints {[names[c] for c in cols]} do not determine the platform's "
+            raise InputValueError(f"the measured joints {[names[c] for c in chosen]} do not determine the platform's "
                                   f"motion at step {step} (samples {step}..{step + 1}, beta = "
                                   f"{b_end[step].round(6).tolist()}): measure more joints")
         res[k] = np.einsum("kij,kj->ki", A, z[k]) - b
@@ -216,5 +221,5 @@ def wheel_odometry(robot, beta, angles, heading=None, pose0=(0.0, 0.0, 0.0), mea
     world = np.stack([c * d[:, 1] - s * d[:, 2], s * d[:, 1] + c * d[:, 2]], axis=-1)
     xy = pose0[1:] + np.concatenate([np.zeros((1, 2)), np.cumsum(world, axis=0)])
     pose = np.column_stack([psi, xy])
-    return Odometry(robot, tuple(names[c] for c in cols), pose, inc, res, np.linalg.norm(res, axis=-1),
+    return Odometry(robot, tuple(names[c] for c in chosen), pose, inc, res, np.linalg.norm(res, axis=-1),
                     z[:, 3:])

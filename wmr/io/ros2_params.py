@@ -83,6 +83,9 @@ def parse(raw, source):
         mark = getattr(exc, "problem_mark", None)
         line = mark.line + 1 if mark is not None else 1
         what = getattr(exc, "problem", None) or str(exc).splitlines()[0]
+        context, at = getattr(exc, "context", None), getattr(exc, "context_mark", None)
+        if context and at is not None:
+            what += f" ({context} started at line {at.line + 1})"
         raise RobotFileError(source, line, "yaml", f"YAML syntax error: {what}") from None
     lines: dict[tuple, int] = {}
     if tree is not None:
