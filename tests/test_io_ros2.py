@@ -212,6 +212,14 @@ def test_a_nested_key_names_its_line(tmp_path):
     assert err.value.line == text[:text.index("wheels_radius: 0")].count("\n") + 1
 
 
+def test_floats_without_a_dot_are_floats_as_in_ros2(tmp_path):
+    """ROS 2 reads 4e-1 as a double; PyYAML's YAML 1.1 would read it as a string."""
+    bot = from_ros2(_file(tmp_path, DIFF.replace("0.4", "4e-1").replace("0.08", "8E-2")))
+    np.testing.assert_allclose(bot.mount_points, [[0, 0.2], [0, -0.2]], atol=1e-15)
+    with pytest.raises(RobotFileError, match=r"bad.yaml:2: diff_drive_controller: FixedWheel has lengths too large"):
+        from_ros2(_file(tmp_path, DIFF.replace("0.4", "1e308")))
+
+
 def test_yaml_syntax_errors_and_a_byte_order_mark(tmp_path):
     with pytest.raises(RobotFileError, match=r"bad.yaml:5: yaml: YAML syntax error: .* started at line 4\)"):
         from_ros2(_file(tmp_path, DIFF.replace("right_wheel_names: [r]", "right_wheel_names: [r")))

@@ -176,6 +176,16 @@ def test_malformed_xml_names_its_line(tmp_path):
         load(path)
 
 
+def test_a_malformed_cylinder_names_its_line(tmp_path):
+    text = (ROOT / "examples" / "urdf" / "diffbot.urdf").read_text()
+    text = text.replace('<cylinder radius="0.08" length="0.04"/></geometry>\n    </collision>',
+                        '<cylinder radius="8 cm" length="0.04"/></geometry>\n    </collision>', 1)
+    (tmp_path / "c.urdf").write_text(text)
+    with pytest.raises(RobotFileError) as err:
+        load(tmp_path / "c.urdf")
+    assert (err.value.line, err.value.key) == (_line(text, '<cylinder radius="8 cm"'), "<cylinder radius>")
+
+
 def test_a_joint_naming_a_missing_link(tmp_path):
     body = LINKS + '\n<joint name="w" type="continuous">\n<parent link="base"/><child link="wheel"/>\n</joint>'
     path = _write(tmp_path, body)

@@ -95,6 +95,9 @@ def test_five_swerve_modules_and_non_wpilib_objects():
         from_wpilib(wmr.load(ROOT / "examples" / "swerve4.toml"), 0.05)
     with pytest.raises(InputTypeError, match="must be SwerveDrive"):
         from_wpilib(wk.ChassisSpeeds(1, 2, 3), 0.05)
+    kin = to_wpilib(wmr.load(ROOT / "examples" / "swerve4.toml"))
+    with pytest.raises(InputValueError, match=r"radius must be one radius or one per wheel \(4\), got 3"):
+        from_wpilib(kin, [0.05, 0.05, 0.05])
 
 
 def test_chassis_speeds_and_twists():

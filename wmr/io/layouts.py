@@ -50,6 +50,14 @@ _HALF_PI, _QUARTER_PI = np.pi / 2, np.pi / 4
 
 
 # ------------------------------------------------------------------------------------------ building
+def _radii(radius, n):
+    """One radius per wheel: ``radius`` given once or ``n`` times."""
+    r = V.finite_array("radius", radius)
+    if r.size not in (1, n):
+        raise InputValueError(f"radius must be one radius or one per wheel ({n}), got {r.size}: {r.tolist()}")
+    return np.broadcast_to(r.reshape(-1), (n,))
+
+
 def differential(track, radius, radius_right=None, name="differential drive"):
     """A differential drive: left and right fixed wheels at ``(0, +-track/2)``, rolling along x.
 
@@ -118,7 +126,7 @@ def mecanum(positions, radius, name="mecanum drive"):
     positions = V.finite_array("positions", positions, last=2).reshape(-1, 2)
     if positions.shape != (4, 2):
         raise InputValueError(f"positions must be the four mount points FL, FR, RL, RR, got shape {positions.shape}")
-    radii = np.broadcast_to(V.finite_array("radius", radius), (4,))
+    radii = _radii(radius, 4)
     rollers = (_QUARTER_PI, -_QUARTER_PI, -_QUARTER_PI, _QUARTER_PI)
     return Robot([SwedishWheel(tuple(p), r=float(r), angle=_HALF_PI, roller=g)
                   for p, r, g in zip(positions, radii, rollers)], name=name)
@@ -172,7 +180,7 @@ def swerve(positions, radius, name="swerve drive"):
     Robot
     """
     positions = V.finite_array("positions", positions, last=2).reshape(-1, 2)
-    radii = np.broadcast_to(V.finite_array("radius", radius), positions.shape[:1])
+    radii = _radii(radius, len(positions))
     return Robot([CentredWheel(tuple(p), r=float(r)) for p, r in zip(positions, radii)], name=name)
 
 

@@ -44,6 +44,22 @@ class Block:
     lines: dict = field(default_factory=dict)
 
 
+#: YAML 1.2's floats (``1e-3``, ``2E5`` without a dot): ROS 2's parameter parser reads them as doubles, PyYAML's
+#: YAML 1.1 resolver as strings
+_FLOAT = r"^[-+]?(?:[0-9][0-9_]*)?(?:\.[0-9_]*)?[eE][-+]?[0-9]+$"
+
+
+def _loader(yaml):
+    """PyYAML's SafeLoader, reading ``1e-3`` as a float as ROS 2 does."""
+    import re
+
+    class Loader(yaml.SafeLoader):
+        pass
+
+    Loader.add_implicit_resolver("tag:yaml.org,2002:float", re.compile(_FLOAT), list("-+0123456789."))
+    return Loader
+
+
 def _lines(node, prefix, out):
     """The line of every mapping key below a composed YAML node: ``{key path: line}``."""
     if node.id == "mapping":
@@ -78,7 +94,8 @@ def parse(raw, source):
     except UnicodeDecodeError as exc:
         raise RobotFileError(source, raw[:exc.start].count(b"\n") + 1, "file", "not UTF-8 text") from None
     try:
-        data, tree = yaml.safe_load(text), yaml.compose(text, Loader=yaml.SafeLoader)
+        loader = _loader(yaml)
+        data, tree = yaml.load(text, Loader=loader), yaml.compose(text, Loader=loader)
     except yaml.YAMLError as exc:
         mark = getattr(exc, "problem_mark", None)
         line = mark.line + 1 if mark is not None else 1

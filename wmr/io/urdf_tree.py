@@ -55,6 +55,18 @@ class UrdfTree:
             raise RobotFileError(source, exc.lineno or 1, "xml", f"not well-formed XML: {exc.msg}") from None
         if root.tag != "robot":
             self.fail(root.sourceline, root.tag, "a URDF file's root element must be <robot>")
+        if not root.get("name"):
+            self.fail(root.sourceline, "robot", "the <robot> element has no name attribute")
+        for shape in root.iter("cylinder", "sphere", "box"):
+            for attr in {"cylinder": ("radius", "length"), "sphere": ("radius",), "box": ("size",)}[shape.tag]:
+                try:
+                    values = [float(v) for v in (shape.get(attr) or "").split()]
+                except ValueError:
+                    values = []
+                if not values or not np.isfinite(values).all() or min(values) < 0:
+                    what = "numbers" if attr == "size" else "a number"
+                    self.fail(shape.sourceline, f"<{shape.tag} {attr}>", f"must be {what} >= 0, got "
+                              f"{shape.get(attr)!r}")
         self.lines = {("robot", ""): root.sourceline or 1}
         for tag in ("link", "joint"):
             for el in root.iter(tag):

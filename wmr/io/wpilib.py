@@ -90,7 +90,9 @@ def from_wpilib(kinematics, wheel_radius):
     k = _kinematics()
     radius = V.finite_array("wheel_radius", wheel_radius)
     if isinstance(kinematics, k.DifferentialDriveKinematics):
-        r = np.broadcast_to(radius, (2,))
+        if radius.size not in (1, 2):
+            raise InputValueError(f"wheel_radius must be one radius or two (left, right), got {radius.tolist()}")
+        r = np.broadcast_to(radius.reshape(-1), (2,))
         return differential(float(kinematics.trackWidth), float(r[0]), float(r[1]), name="WPILib differential drive")
     if isinstance(kinematics, k.MecanumDriveKinematics):
         corners = (kinematics.getFrontLeft(), kinematics.getFrontRight(), kinematics.getRearLeft(),
