@@ -9,6 +9,7 @@ import wmr
 from wmr.errors import InputTypeError, InputValueError
 from wmr.io import from_wpilib, to_wpilib
 from wmr.io import layouts as L
+from wmr.io.chassis import is_chassis_speeds
 from wmr.io.wpilib import chassis_speeds, from_module_states, module_positions, module_states, twist_of
 
 wk = pytest.importorskip("wpimath.kinematics")           # in environment.lock: runs here
@@ -110,6 +111,10 @@ def test_chassis_speeds_and_twists():
     assert (back.vx, back.vy, back.omega) == (1.0, 2.0, 3.0)
     with pytest.raises(InputTypeError, match="ChassisSpeeds"):
         twist_of(np.array([1.0, 2.0, 3.0]))                                   # an array's order would be a guess
+    # the trap: a ChassisSpeeds iterates as (vx, vy, omega), so as an array it is a twist in the wrong order
+    assert np.asarray(cs).tolist() == [1.0, 2.0, 3.0] != twist_of(cs).tolist()
+    assert is_chassis_speeds(cs) and is_chassis_speeds([cs, cs]) and is_chassis_speeds(Twist2d(1, 2, 3))
+    assert not is_chassis_speeds([3.0, 1.0, 2.0]) and not is_chassis_speeds(np.zeros(3)) and not is_chassis_speeds([])
 
 
 def test_module_states_are_wpilibs_toSwerveModuleStates():

@@ -20,30 +20,29 @@ module speed, distance     m/s, m along :math:`\alpha`           :math:`r\dot\th
 
 A ``ChassisSpeeds`` is ``(vx, vy, omega)``; wmr's twist puts :math:`\dot\psi` first.  Passing one
 where a twist is expected reads :math:`v_x` as the turning rate: :func:`twist_of` is the conversion
-(it accepts ``ChassisSpeeds`` and ``Twist2d`` objects, one or a sequence, without importing wpimath).
-
-Examples
---------
->>> from types import SimpleNamespace
->>> twist_of(SimpleNamespace(vx=1.0, vy=2.0, omega=3.0)).tolist()       # a ChassisSpeeds(1, 2, 3)
-[3.0, 1.0, 2.0]
+(:mod:`wmr.io.chassis`, re-exported here).
 """
 from __future__ import annotations
-
-from collections.abc import Sequence
 
 import numpy as np
 
 from ..errors import InputTypeError, InputValueError
 from ..model import validation as V
-from ..swerve.modules import from_wpilib as beta_of_alpha
-from ..swerve.modules import to_wpilib as alpha_of_beta
+from .chassis import chassis_speeds, twist_of
 from .extras import require
 from .layouts import differential, mecanum, swerve
 from .recognise import recognise
 
 __all__ = ["from_wpilib", "to_wpilib", "twist_of", "chassis_speeds", "module_states", "module_positions",
            "from_module_states"]
+
+
+def _angles():
+    """wmr.swerve's alpha = beta - pi/2 and its inverse, imported when used: wmr.swerve may import
+    :mod:`wmr.io.chassis` (and so this package) while it is being imported itself."""
+    from ..swerve.modules import from_wpilib as beta_of_alpha
+    from ..swerve.modules import to_wpilib as alpha_of_beta
+    return alpha_of_beta, beta_of_alpha
 
 _SWERVE_SIZES = (2, 3, 4, 6)
 
@@ -139,52 +138,6 @@ def to_wpilib(robot):
 
 
 # ------------------------------------------------------------------------------------------ values
-def _one_twist(obj):
-    if all(hasattr(obj, a) for a in ("vx", "vy", "omega")):
-        return [float(obj.omega), float(obj.vx), float(obj.vy)]
-    if all(hasattr(obj, a) for a in ("dx", "dy", "dtheta")):
-        return [float(obj.dtheta), float(obj.dx), float(obj.dy)]
-    raise InputTypeError(f"expected a WPILib ChassisSpeeds(vx, vy, omega) or Twist2d(dx, dy, dtheta), got "
-                         f"{V.show(obj)}")
-
-
-def twist_of(speeds):
-    r"""wmr's twist :math:`[\dot\psi, \dot x, \dot y]` of a ``ChassisSpeeds`` (or the increment of a ``Twist2d``).
-
-    Parameters
-    ----------
-    speeds : ChassisSpeeds, Twist2d, or a sequence of them
-        Any object with ``vx, vy, omega`` (or ``dx, dy, dtheta``) attributes: wpimath is not imported.
-
-    Returns
-    -------
-    numpy.ndarray (3,) or (n, 3)
-
-    Raises
-    ------
-    wmr.errors.InputTypeError
-        If ``speeds`` is neither (an array is not accepted: its order would be a guess).
-    """
-    if isinstance(speeds, Sequence) and not isinstance(speeds, str):
-        return V.finite_array("speeds", [_one_twist(s) for s in speeds]).reshape(-1, 3)
-    return V.finite_array("speeds", _one_twist(speeds))
-
-
-def chassis_speeds(twist):
-    r"""WPILib's ``ChassisSpeeds(vx, vy, omega)`` of a wmr twist :math:`[\dot\psi, \dot x, \dot y]`.
-
-    Parameters
-    ----------
-    twist : array (3,)
-
-    Returns
-    -------
-    wpimath.kinematics.ChassisSpeeds
-    """
-    psi_dot, vx, vy = V.finite_array("twist", twist, last=3).reshape(3)
-    return _kinematics().ChassisSpeeds(float(vx), float(vy), float(psi_dot))
-
-
 def module_states(beta, speed):
     r"""WPILib ``SwerveModuleState`` objects of wmr's angles :math:`\beta` and signed speeds :math:`r\dot\theta`.
 
@@ -197,7 +150,7 @@ def module_states(beta, speed):
     list of wpimath.kinematics.SwerveModuleState
         Angle :math:`\alpha = \beta - \pi/2`, the same speed.
     """
-    alpha, speed = alpha_of_beta(beta, speed)
+    alpha, speed = _angles()[0](beta, speed)
     geometry = require("wpilib", "WPILib module states", "wpimath.geometry")
     return [_kinematics().SwerveModuleState(float(s), geometry.Rotation2d(float(a)))
             for a, s in zip(np.atleast_1d(alpha), np.atleast_1d(speed))]
@@ -214,7 +167,7 @@ def module_positions(beta, distance):
     -------
     list of wpimath.kinematics.SwerveModulePosition
     """
-    alpha, distance = alpha_of_beta(beta, distance)
+    alpha, distance = _angles()[0](beta, distance)
     geometry = require("wpilib", "WPILib module positions", "wpimath.geometry")
     return [_kinematics().SwerveModulePosition(float(d), geometry.Rotation2d(float(a)))
             for a, d in zip(np.atleast_1d(alpha), np.atleast_1d(distance))]
@@ -238,4 +191,4 @@ def from_module_states(states):
             raise InputTypeError(f"states must be SwerveModuleState or SwerveModulePosition objects, got {V.show(s)}")
         alpha.append(float(s.angle.radians()))
         value.append(float(s.speed if hasattr(s, "speed") else s.distance))
-    return beta_of_alpha(np.array(alpha), np.array(value))
+    return _angles()[1](np.array(alpha), np.array(value))
