@@ -41,6 +41,19 @@ def test_convert_round_trip(capsys, tmp_path):
     assert code == 0 and "tricycle_steering_controller:" in out
 
 
+def test_convert_urdf_to_ros2_keeps_the_joint_names(capsys, tmp_path):
+    pytest.importorskip("yourdfpy")
+    yaml = pytest.importorskip("yaml")
+    out = tmp_path / "diffbot.yaml"
+    assert _run(capsys, "convert", ROOT / "examples" / "urdf" / "diffbot.urdf", out)[0] == 0
+    params = yaml.safe_load(out.read_text())["diff_drive_controller"]["ros__parameters"]
+    assert (params["left_wheel_names"], params["right_wheel_names"]) == (["left_wheel_joint"], ["right_wheel_joint"])
+    assert "passive castors (wheel 3) are not joints of the controller" in out.read_text()
+    assert wmr.campion_class(wmr.load(out)).label == "(2,0)"
+    code, text, _ = _run(capsys, "convert", ROOT / "examples" / "urdf" / "swerve.urdf", "--to", "ros2")
+    assert code == 0 and "front_left_axle_joint: front_left_steer_joint" in text
+
+
 def test_convert_refuses_what_a_format_cannot_express(capsys):
     code, out, err = _run(capsys, "convert", ROOT / "examples" / "paper_dual.toml", "--to", "ros2")
     assert (code, out) == (2, "") and len(err.splitlines()) == 1

@@ -145,6 +145,16 @@ def test_written_parameters_have_ros2s_types(tmp_path):
     assert p["steering_joints_names"] == ["wheel2_steer", "wheel1_steer"]
 
 
+def test_joint_names_given(tmp_path):
+    bot = L.differential(0.4, 0.08)
+    text = to_ros2(bot, joint_names=[{"drive": "left_wheel_joint"}, {"drive": "right_wheel_joint"}])
+    assert 'left_wheel_names: ["left_wheel_joint"]' in text and "joint names given" in text
+    with pytest.raises(wmr.errors.InputTypeError, match="one mapping {joint: name} per wheel unit"):
+        to_ros2(bot, joint_names=[{"drive": "left"}])
+    with pytest.raises(InputValueError, match="has no name for joint 'drive' of wheel 2"):
+        to_ros2(bot, joint_names=[{"drive": "left"}, {"steer": "right"}])
+
+
 def test_the_older_parameter_names(tmp_path):
     """humble's ackermann_steering_controller: rear/front_wheels_names, *_wheel_track, *_wheels_radius."""
     path = tmp_path / "humble.yaml"

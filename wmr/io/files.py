@@ -86,7 +86,7 @@ def load(path, wheel_joints=None, controller=None):
     return toml.load(path)
 
 
-def dump(robot, path=None, format=None):
+def dump(robot, path=None, format=None, joint_names=None):
     """The text of a robot file for ``robot`` (and write it to ``path`` if given), TOML unless told otherwise.
 
     Parameters
@@ -95,6 +95,8 @@ def dump(robot, path=None, format=None):
     path : str or os.PathLike, optional
         Where to write; its suffix chooses the format (:data:`FORMATS`) unless ``format`` is given.
     format : {"toml", "urdf", "ros2"}, optional
+    joint_names : sequence of mapping, optional
+        ROS 2 only: the joints' names (:func:`wmr.io.to_ros2`).
 
     Returns
     -------
@@ -116,5 +118,8 @@ def dump(robot, path=None, format=None):
         format = "toml" if path is None else format_of(path)
     if format not in FORMATS:
         raise InputValueError(f"format must be one of {', '.join(FORMATS)}, got {V.show(format)}")
-    writer = {"toml": toml.dump, "urdf": urdf_write.to_urdf, "ros2": ros2.to_ros2}[format]
-    return writer(robot, path)
+    if format == "ros2":
+        return ros2.to_ros2(robot, path, joint_names=joint_names)
+    if joint_names is not None:
+        raise InputValueError(f"joint_names applies to ROS 2 parameter files, not to format {format!r}")
+    return {"toml": toml.dump, "urdf": urdf_write.to_urdf}[format](robot, path)

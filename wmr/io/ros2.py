@@ -20,6 +20,7 @@ import difflib
 import json
 import os
 import re
+from collections.abc import Mapping
 from pathlib import Path
 
 from ..errors import InputError, InputTypeError, InputValueError, RobotFileError
@@ -28,6 +29,7 @@ from ..model.robot import Robot
 from .recognise import recognise
 from .ros2_controllers import CONTROLLERS
 from .ros2_params import Params, parse
+from .urdf_write import joint_name
 
 __all__ = ["from_ros2", "to_ros2"]
 
@@ -154,7 +156,23 @@ def _yaml(value, indent):
     return out
 
 
-def to_ros2(robot, path=None, controller=None):
+def _namer(robot, joint_names):
+    """``names(i, joint)``: the given names (checked), or wmr's URDF names."""
+    if joint_names is None:
+        return joint_name
+    if isinstance(joint_names, (str, bytes)) or len(joint_names) != robot.w or not all(
+            isinstance(m, Mapping) and all(isinstance(v, str) and v for v in m.values()) for m in joint_names):
+        raise InputTypeError(f"joint_names must be one mapping {{joint: name}} per wheel unit ({robot.w}), got "
+                             f"{V.show(joint_names)}")
+
+    def names(i, joint):
+        if joint not in joint_names[i - 1]:
+            raise InputValueError(f"joint_names[{i - 1}] has no name for joint {joint!r} of wheel {i}")
+        return joint_names[i - 1][joint]
+    return names
+
+
+def to_ros2(robot, path=None, controller=None, joint_names=None):
     """The ROS 2 parameters of the drive controller that fits ``robot`` (and write them to ``path`` if given).
 
     Parameters
@@ -165,6 +183,10 @@ def to_ros2(robot, path=None, controller=None):
     controller : str, optional
         The controller to write (a key of :data:`~wmr.io.ros2_controllers.CONTROLLERS`); default:
         the one whose layout the robot is.
+    joint_names : sequence of mapping, optional
+        ``joint_names[i][joint]``: the name of joint ``joint`` (``"steer"``, ``"drive"``, ...) of wheel
+        unit ``i + 1``, e.g. those :func:`wmr.io.urdf_read.read_urdf` reads; default
+        :func:`wmr.io.urdf_write.joint_name` (``wheel{i}_{joint}``, the names :func:`wmr.io.to_urdf` writes).
 
     Returns
     -------
@@ -186,12 +208,13 @@ def to_ros2(robot, path=None, controller=None):
     layout = recognise(robot, [c.layout for c in chosen],
                        where=controller or "ROS 2's drive controllers (" + ", ".join(CONTROLLERS) + ")")
     ctrl = next(c for c in chosen if c.layout == layout.name)
-    params, notes = ctrl.write(layout, robot)
+    params, notes = ctrl.write(layout, robot, _namer(robot, joint_names))
     notes = notes + ([f"passive castors (wheel {', '.join(str(i + 1) for i in layout.dropped)}) are not joints of the "
                       "controller"] if layout.dropped else [])
     params.update({"base_frame_id": "base_link", "odom_frame_id": "odom"})
+    origin = "given" if joint_names is not None else "as in wmr.io.to_urdf"
     head = [f"# ROS 2 parameters written by wmr (wmr.io.to_ros2) for the robot {json.dumps(robot.name)}",
-            f"# {ctrl.name}: layout {layout.name}; joint names as in wmr.io.to_urdf"] + [f"# {n}" for n in notes]
+            f"# {ctrl.name}: layout {layout.name}; joint names {origin}"] + [f"# {n}" for n in notes]
     manager = {"controller_manager": {"ros__parameters": {
         "update_rate": 100, "joint_state_broadcaster": {"type": "joint_state_broadcaster/JointStateBroadcaster"},
         ctrl.name: {"type": ctrl.plugin}}}}

@@ -1,7 +1,7 @@
 r"""The ROS 2 drive controllers wmr reads and writes: their parameters, and the layout each expresses.
 
 Parameter names are those of ros2_controllers (jazzy and later; the older names that
-steering controllers still accept are read too).  Joint names written are :func:`wmr.io.to_urdf`'s.
+steering controllers still accept are read too).  Joint names written are :func:`wmr.io.to_urdf`'s unless given.
 
 ==================================  ============  ================================================================
 controller (``type``)               layout        parameters (metres)
@@ -42,7 +42,6 @@ from ..model.tolerance import TOL
 from .layouts import car, differential, mecanum, omni, rectangle, swerve
 from .recognise import rectangle_of
 from .ros2_params import Params
-from .urdf_write import joint_name
 
 __all__ = ["CONTROLLERS", "Controller"]
 
@@ -65,7 +64,8 @@ class Controller:
     read : callable
         ``read(params: Params) -> Robot``.
     write : callable
-        ``write(layout, robot) -> (parameters: dict, notes: list of str)``.
+        ``write(layout, robot, names) -> (parameters: dict, notes: list of str)``; ``names(i, joint)`` is the
+        name of joint ``joint`` of wheel unit ``i`` (1-based).
     """
 
     name: str
@@ -83,11 +83,11 @@ def _one_radius(radii, what="the controller"):
     return float(r[0])
 
 
-def _joint(robot, layout, k, kind):
-    """The URDF name of the ``kind`` ("steering" or "drive") joint of the layout's k-th wheel."""
+def _joint(robot, layout, k, kind, names):
+    """The name of the ``kind`` ("steering" or "drive") joint of the layout's k-th wheel: ``names(i, joint)``."""
     i = layout.wheels[k]
     j = next(j for j in robot.wheels[i].joints if (j.steering if kind == "steering" else j.kind == "drive"))
-    return joint_name(i + 1, j.name)
+    return names(i + 1, j.name)
 
 
 # ------------------------------------------------------------------------------------------ diff drive
@@ -105,10 +105,10 @@ def _read_diff(p: Params):
                         r * p.get("right_wheel_radius_multiplier", "positive", "a factor on wheel_radius", 1.0))
 
 
-def _write_diff(layout, robot):
+def _write_diff(layout, robot, names):
     rl, rr = (float(x) for x in layout.radii)
-    out = {"left_wheel_names": [_joint(robot, layout, 0, "drive")],
-           "right_wheel_names": [_joint(robot, layout, 1, "drive")],
+    out = {"left_wheel_names": [_joint(robot, layout, 0, "drive", names)],
+           "right_wheel_names": [_joint(robot, layout, 1, "drive", names)],
            "wheel_separation": layout.numbers["track"], "wheel_radius": rl}
     if rr != rl:
         out["right_wheel_radius_multiplier"] = rr / rl
@@ -131,13 +131,13 @@ def _read_mecanum(p: Params):
     return mecanum(rectangle(k, k), r)
 
 
-def _write_mecanum(layout, robot):
+def _write_mecanum(layout, robot, names):
     r = _one_radius(layout.radii, "mecanum_drive_controller")
     order, length, width, centre = rectangle_of(layout.positions)
     if order != (0, 1, 2, 3) or np.abs(centre).max() > TOL * np.abs(layout.positions).max():
         raise InputValueError("mecanum_drive_controller needs the wheels on a rectangle about C, front-left and "
                               "rear-right rollers at +45 deg; the robot's are not")
-    out = {f"{c}_wheel_command_joint_name": _joint(robot, layout, k, "drive") for k, c in enumerate(_MECANUM)}
+    out = {f"{c}_wheel_command_joint_name": _joint(robot, layout, k, "drive", names) for k, c in enumerate(_MECANUM)}
     out["kinematics"] = {"base_frame_offset": {"x": 0.0, "y": 0.0, "theta": 0.0}, "wheels_radius": r,
                          "sum_of_robot_center_projection_on_X_Y_axis": length / 2 + width / 2}
     notes = [] if length == width else [f"lx = {length / 2!r}, ly = {width / 2!r}: the controller keeps their sum only "
@@ -155,8 +155,8 @@ def _read_omni(p: Params):
                 p.get("wheel_offset", "number", "the first wheel's angle from x in radians", 0.0))
 
 
-def _write_omni(layout, robot):
-    return {"wheel_names": [_joint(robot, layout, k, "drive") for k in range(len(layout.wheels))],
+def _write_omni(layout, robot, names):
+    return {"wheel_names": [_joint(robot, layout, k, "drive", names) for k in range(len(layout.wheels))],
             "robot_radius": layout.numbers["ring"], "wheel_radius": _one_radius(layout.radii),
             "wheel_offset": layout.numbers["offset"]}, []
 
@@ -173,14 +173,14 @@ def _read_swerve(p: Params):
                   p.get("wheel_radius", "positive", "the wheel radius in metres, > 0"))
 
 
-def _write_swerve(layout, robot):
+def _write_swerve(layout, robot, names):
     if len(layout.wheels) != 4:
         raise InputValueError(f"swerve_drive_controller has four modules, the robot {len(layout.wheels)}")
     order, length, width, centre = rectangle_of(layout.positions)
     out = {}
     for corner, k in zip(_MECANUM, order):
-        out[f"{corner}_wheel_joint"] = _joint(robot, layout, k, "drive")
-        out[f"{corner}_axle_joint"] = _joint(robot, layout, k, "steering")
+        out[f"{corner}_wheel_joint"] = _joint(robot, layout, k, "drive", names)
+        out[f"{corner}_axle_joint"] = _joint(robot, layout, k, "steering", names)
     out.update({"wheelbase": length, "trackwidth": width, "offset": [-float(centre[0]) + 0.0, -float(centre[1]) + 0.0],
                 "wheel_radius": _one_radius(layout.radii)})
     return out, []
@@ -221,10 +221,10 @@ def _steering_reader(layout):
 def _steering_writer(layout_name):
     n_steered = _STEERED[layout_name]
 
-    def write(layout, robot):
+    def write(layout, robot, names):
         steered, traction = range(n_steered), range(n_steered, len(layout.wheels))
-        out = {"traction_joints_names": [_joint(robot, layout, k, "drive") for k in reversed(traction)],
-               "steering_joints_names": [_joint(robot, layout, k, "steering") for k in reversed(steered)],
+        out = {"traction_joints_names": [_joint(robot, layout, k, "drive", names) for k in reversed(traction)],
+               "steering_joints_names": [_joint(robot, layout, k, "steering", names) for k in reversed(steered)],
                "wheelbase": layout.numbers["wheelbase"]}
         rt = _one_radius(layout.radii[n_steered:], "the controller's traction wheels")
         if layout_name != "bicycle":

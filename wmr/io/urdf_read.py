@@ -55,7 +55,7 @@ from ..model.robot import Robot
 from ..model.wheels import CentredWheel, DualWheel, FixedWheel, OffsetWheel, SwedishWheel
 from .urdf_tree import AXIS_SNAP, UrdfTree, is_horizontal, is_vertical, suggest
 
-__all__ = ["from_urdf", "parse_wheel_joints"]
+__all__ = ["from_urdf", "read_urdf", "parse_wheel_joints"]
 
 
 
@@ -162,9 +162,14 @@ def _wheel(rd: UrdfTree, name, radius):
     return rd.centre(name), axle, float(radius), steering, _rollers(rd, name, axle)
 
 
+def _below(rd: UrdfTree, wheel):
+    """The continuous joints below a wheel joint (its rollers), in the file's order."""
+    return [n for n, j in rd.joints.items() if j.type == "continuous" and wheel in {p.name for p in rd.path(n)}]
+
+
 def _rollers(rd: UrdfTree, wheel, axle):
     """The angle gamma of the rollers below a wheel (None: no rollers), checked to agree."""
-    below = [n for n, j in rd.joints.items() if j.type == "continuous" and wheel in {p.name for p in rd.path(n)}]
+    below = _below(rd, wheel)
     gammas = []
     for name in below:
         a = rd.axis(name)
@@ -189,20 +194,19 @@ def _rollers(rd: UrdfTree, wheel, axle):
     return g0
 
 
+def _joints_of(cls, steering, wheels, roller_joints):
+    """``{kind's joint name: [URDF joints]}``: the steering joint, the wheels in order, the rollers."""
+    drives = iter(wheels)
+    return {j.name: [steering] if j.steering else [next(drives)] if j.kind == "drive" else list(roller_joints)
+            for j in cls.JOINTS}
+
+
 def _driven(rd: UrdfTree, cls, steering, wheels, roller_joints):
     """The ``driven`` of a unit: its joints commanded in the file (None: no ros2_control, kind defaults)."""
     if rd.commanded is None:
         return None
-    drives = iter(wheels)
-    out = {}
-    for j in cls.JOINTS:
-        if j.steering:
-            out[j.name] = steering in rd.commanded
-        elif j.kind == "drive":
-            out[j.name] = next(drives) in rd.commanded
-        else:
-            out[j.name] = bool(set(roller_joints) & rd.commanded)
-    return out
+    return {name: bool(set(urdf) & rd.commanded) for name, urdf in _joints_of(cls, steering, wheels,
+                                                                             roller_joints).items()}
 
 
 def _unit(rd: UrdfTree, steering, wheels, info):
@@ -211,7 +215,7 @@ def _unit(rd: UrdfTree, steering, wheels, info):
     centre, axle, radius, _, gamma = info[first]
     key, line = f"joint {first!r}", rd.line("joint", first)
     a = axle[:2] / np.linalg.norm(axle[:2])
-    rollers = [n for n, j in rd.joints.items() if j.type == "continuous" and first in {p.name for p in rd.path(n)}]
+    rollers = _below(rd, first)
     if steering is None:
         angle = float(np.arctan2(a[1], a[0]))
         if gamma is None:
@@ -247,7 +251,7 @@ def _unit(rd: UrdfTree, steering, wheels, info):
 
 
 def from_urdf(path, wheel_joints=None):
-    """The robot a URDF file describes (rules: module notes).
+    """The robot a URDF file describes (rules: module notes); :func:`read_urdf` gives its joint names too.
 
     Parameters
     ----------
@@ -272,6 +276,37 @@ def from_urdf(path, wheel_joints=None):
     OSError
         If the file cannot be read.
     """
+    return read_urdf(path, wheel_joints)[0]
+
+
+def read_urdf(path, wheel_joints=None):
+    """The robot a URDF file describes, and the name in the file of each of its units' joints.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+    wheel_joints : optional
+        As for :func:`from_urdf`.
+
+    Returns
+    -------
+    tuple
+        ``(robot, names)``: ``names[i]`` is ``{joint of unit i+1 (its kind's name): URDF joint name}``
+        (a Swedish wheel's ``roller``: its first roller joint), for writing a controller's parameters
+        with the file's names (:func:`wmr.io.to_ros2`'s ``joint_names``).
+
+    Raises
+    ------
+    wmr.errors.RobotFileError
+        As :func:`from_urdf`.
+
+    Examples
+    --------
+    >>> robot, names = read_urdf("examples/urdf/diffbot.urdf")       # doctest: +SKIP
+    >>> names                                                       # doctest: +SKIP
+    [{'drive': 'left_wheel_joint'}, {'drive': 'right_wheel_joint'}, {'steer': 'caster_swivel_joint', \
+'drive': 'caster_wheel_joint'}]
+    """
     if not isinstance(path, (str, os.PathLike)):
         raise InputTypeError(f"path must be a file name (str or os.PathLike), got {V.show(path)}")
     if isinstance(wheel_joints, str):
@@ -294,7 +329,7 @@ def from_urdf(path, wheel_joints=None):
     for name, *_ in wheels:
         steering = info[name][3]
         groups.setdefault(name if steering is None else steering, []).append(name)
-    units = []
+    units, names = [], []
     for head, members in groups.items():
         steering = info[members[0]][3]
         try:
@@ -303,7 +338,10 @@ def from_urdf(path, wheel_joints=None):
             if isinstance(exc, RobotFileError):
                 raise
             rd.fail(rd.line("joint", head), f"joint {head!r}", str(exc))
+        rollers = _below(rd, members[0])
+        names.append({j: urdf[0] for j, urdf in _joints_of(type(units[-1]), steering, members, rollers).items()
+                      if urdf})
     try:
-        return Robot(units, name=rd.name)
+        return Robot(units, name=rd.name), names
     except InputError as exc:
         rd.fail(rd.line("robot", ""), "robot", str(exc))
