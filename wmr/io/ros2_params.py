@@ -53,9 +53,7 @@ def _loader(yaml):
     """PyYAML's SafeLoader, reading ``1e-3`` as a float as ROS 2 does."""
     import re
 
-    class Loader(yaml.SafeLoader):
-        pass
-
+    Loader: Any = type("Loader", (yaml.SafeLoader,), {})            # a subclass: SafeLoader itself stays as it is
     Loader.add_implicit_resolver("tag:yaml.org,2002:float", re.compile(_FLOAT), list("-+0123456789."))
     return Loader
 
