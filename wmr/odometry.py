@@ -51,7 +51,7 @@ __all__ = ["Odometry", "measured_joints", "wheel_odometry", "MAX_SAMPLES"]
 
 #: the most samples one call takes (about 100 MB of work arrays for a four-wheel robot)
 MAX_SAMPLES = 1_000_000
-_CHUNK = 4096
+_CHUNK = 16384
 
 
 @dataclass(frozen=True)
@@ -123,13 +123,13 @@ def measured_joints(robot):
     return tuple(robot.rate_names[c] for c in _columns(robot)[0])
 
 
-def _solve(A, b):
-    """Least squares ``A z = b`` per step, columns scaled, and whether the first three unknowns are determined."""
+def _solve(A):
+    """Pseudo-inverses of ``A`` (..., m, k), columns scaled, and whether its first three unknowns are determined."""
     scale = column_norms(A)
     Ah = A / scale[..., None, :]
-    z = np.einsum("kij,kj->ki", np.linalg.pinv(Ah, rcond=TOL), b) / scale
+    P = np.linalg.pinv(Ah, rcond=TOL) / scale[..., :, None]
     determined = rank(Ah) - (rank(Ah[..., 3:]) if A.shape[-1] > 3 else 0) == 3
-    return z, determined
+    return P, np.atleast_1d(determined)
 
 
 def wheel_odometry(robot, beta, angles, heading=None, pose0=(0.0, 0.0, 0.0), measured=None):
@@ -191,26 +191,39 @@ def wheel_odometry(robot, beta, angles, heading=None, pose0=(0.0, 0.0, 0.0), mea
         raise InputValueError(f"pose0 must be (psi, X, Y), got shape {pose0.shape}")
     unknown = [c for c in range(robot.n_rates) if c not in cols and c not in steer]
     J1 = robot.J1()
-    steering = [next(i for i, sl in enumerate(robot.rate_slices) if sl.start <= c < sl.stop) for c in steer]
+    unit_of = [i for i, sl in enumerate(robot.rate_slices) for _ in range(sl.start, sl.stop)]     # column -> unit
+    steering = [unit_of[c] for c in steer]
+    # A (the unknowns' matrix) changes with beta only through steered units' unknown or steering columns
+    constant = not any(robot.wheels[unit_of[c]].steered for c in unknown + steer)
     b_end = robot.effective_beta(beta[1:])
     d_theta = np.diff(angles, axis=0)
-    d_beta = wrap_angle(np.diff(beta, axis=0))
+    d_beta = wrap_angle(np.diff(beta[:, steering], axis=0))          # (T-1, 0) without measured steering
     z = np.empty((T - 1, 3 + len(unknown)))
     res = np.empty((T - 1, 2 * robot.w))
+    fixed = None
     for a in range(0, T - 1, _CHUNK):
         k = slice(a, min(a + _CHUNK, T - 1))
         J2 = robot.J2(b_end[k])                                        # (n, 2w, n_rates) at the steps' ends
-        A = np.concatenate([np.broadcast_to(J1, J2.shape[:1] + J1.shape), -J2[..., unknown]], axis=-1)
-        A[..., 0] -= J2[..., steer].sum(axis=-1)                        # phi_i = psi + beta_i (7): psi's column
         b = np.einsum("kij,kj->ki", J2[..., cols], d_theta[k])
         if steer:
-            b += np.einsum("kij,kj->ki", J2[..., steer], d_beta[k][:, steering])
-        z[k], determined = _solve(A, b)
+            b += np.einsum("kij,kj->ki", J2[..., steer], d_beta[k])
+        if constant and fixed is not None:
+            A, P = fixed
+            z[k] = b @ P.T
+            res[k] = z[k] @ A.T - b
+            continue
+        A = np.concatenate([np.broadcast_to(J1, J2.shape[:1] + J1.shape), -J2[..., unknown]], axis=-1)
+        A[..., 0] -= J2[..., steer].sum(axis=-1)                        # phi_i = psi + beta_i (7): psi's column
+        n = 1 if constant else len(b)                                   # a constant A: solved once
+        P, determined = _solve(A[:n])
         if not determined.all():
             step = a + int(np.argmin(determined))
             raise InputValueError(f"the measured joints {[names[c] for c in chosen]} do not determine the platform's "
                                   f"motion at step {step} (samples {step}..{step + 1}, beta = "
                                   f"{b_end[step].round(6).tolist()}): measure more joints")
+        if constant:
+            fixed = (A[0], P[0])
+        z[k] = np.einsum("kij,kj->ki", np.broadcast_to(P, (len(b),) + P.shape[1:]), b)
         res[k] = np.einsum("kij,kj->ki", A, z[k]) - b
     inc = z[:, :3].copy()
     if heading is not None:
