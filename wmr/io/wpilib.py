@@ -138,6 +138,14 @@ def to_wpilib(robot):
 
 
 # ------------------------------------------------------------------------------------------ values
+def _modules(kind, beta, values):
+    r"""WPILib objects ``kind(value, Rotation2d(alpha))`` with :math:`\alpha = \beta - \pi/2`."""
+    alpha, values = _angles()[0](beta, values)
+    geometry = require("wpilib", f"WPILib {kind} objects", "wpimath.geometry")
+    make = getattr(_kinematics(), kind)
+    return [make(float(v), geometry.Rotation2d(float(a))) for a, v in zip(np.atleast_1d(alpha), np.atleast_1d(values))]
+
+
 def module_states(beta, speed):
     r"""WPILib ``SwerveModuleState`` objects of wmr's angles :math:`\beta` and signed speeds :math:`r\dot\theta`.
 
@@ -150,10 +158,7 @@ def module_states(beta, speed):
     list of wpimath.kinematics.SwerveModuleState
         Angle :math:`\alpha = \beta - \pi/2`, the same speed.
     """
-    alpha, speed = _angles()[0](beta, speed)
-    geometry = require("wpilib", "WPILib module states", "wpimath.geometry")
-    return [_kinematics().SwerveModuleState(float(s), geometry.Rotation2d(float(a)))
-            for a, s in zip(np.atleast_1d(alpha), np.atleast_1d(speed))]
+    return _modules("SwerveModuleState", beta, speed)
 
 
 def module_positions(beta, distance):
@@ -167,10 +172,7 @@ def module_positions(beta, distance):
     -------
     list of wpimath.kinematics.SwerveModulePosition
     """
-    alpha, distance = _angles()[0](beta, distance)
-    geometry = require("wpilib", "WPILib module positions", "wpimath.geometry")
-    return [_kinematics().SwerveModulePosition(float(d), geometry.Rotation2d(float(a)))
-            for a, d in zip(np.atleast_1d(alpha), np.atleast_1d(distance))]
+    return _modules("SwerveModulePosition", beta, distance)
 
 
 def from_module_states(states):
