@@ -80,6 +80,18 @@ def test_differential_kinematics_gives_wpilibs_wheel_speeds():
     assert to_wpilib(wmr.Robot(list(bot.wheels) + [castor])).trackWidth == 0.6       # a passive castor is left out
 
 
+@pytest.mark.parametrize("robot", [L.differential(0.55, 0.0762), wmr.load(ROOT / "examples" / "swerve4.toml"),
+                                   wmr.load(ROOT / "examples" / "mecanum4.toml")],
+                         ids=["differential", "swerve", "mecanum"])
+def test_round_trip(robot):
+    """wmr -> WPILib -> wmr: the same kinds, mount points and Campion class (the radii given back: WPILib has none)."""
+    back = from_wpilib(to_wpilib(robot), wheel_radius=[float(u.r) for u in robot.wheels])
+    assert [type(u) for u in back.wheels] == [type(u) for u in robot.wheels]
+    np.testing.assert_allclose(back.mount_points, robot.mount_points, rtol=0, atol=0)
+    assert [u.parameters() for u in back.wheels] == [u.parameters() for u in robot.wheels]
+    assert wmr.campion_class(back).label == wmr.campion_class(robot).label
+
+
 @pytest.mark.parametrize("name, why", [("tricycle", "not differential: needs exactly two fixed wheels"),
                                        ("omni3", "not mecanum: needs exactly four Swedish wheels"),
                                        ("differential", "wheel 3 constrains nothing but has motors")])
