@@ -123,6 +123,16 @@ def measured_joints(robot):
     return tuple(robot.rate_names[c] for c in _columns(robot)[0])
 
 
+def _steps(name, values):
+    """The increments between successive samples, checked not to overflow."""
+    with np.errstate(over="ignore", invalid="ignore"):
+        out = np.diff(values, axis=0)
+    if not np.isfinite(out).all():
+        raise InputValueError(f"{name} are too large: the differences of successive samples overflow "
+                              f"(largest |{name}| = {np.abs(values).max():.3g})")
+    return out
+
+
 def _solve(A):
     """Pseudo-inverses of ``A`` (..., m, k), columns scaled, and whether its first three unknowns are determined."""
     scale = column_norms(A)
@@ -196,43 +206,51 @@ def wheel_odometry(robot, beta, angles, heading=None, pose0=(0.0, 0.0, 0.0), mea
     # A (the unknowns' matrix) changes with beta only through steered units' unknown or steering columns
     constant = not any(robot.wheels[unit_of[c]].steered for c in unknown + steer)
     b_end = robot.effective_beta(beta[1:])
-    d_theta = np.diff(angles, axis=0)
-    d_beta = wrap_angle(np.diff(beta[:, steering], axis=0))          # (T-1, 0) without measured steering
+    d_theta = _steps("angles", angles)
+    d_beta = wrap_angle(_steps("beta", beta[:, steering]))            # (T-1, 0) without measured steering
     z = np.empty((T - 1, 3 + len(unknown)))
     res = np.empty((T - 1, 2 * robot.w))
     fixed = None
-    for a in range(0, T - 1, _CHUNK):
-        k = slice(a, min(a + _CHUNK, T - 1))
-        J2 = robot.J2(b_end[k])                                        # (n, 2w, n_rates) at the steps' ends
-        b = np.einsum("kij,kj->ki", J2[..., cols], d_theta[k])
-        if steer:
-            b += np.einsum("kij,kj->ki", J2[..., steer], d_beta[k])
-        if constant and fixed is not None:
-            A, P = fixed
-            z[k] = b @ P.T
-            res[k] = z[k] @ A.T - b
-            continue
-        A = np.concatenate([np.broadcast_to(J1, J2.shape[:1] + J1.shape), -J2[..., unknown]], axis=-1)
-        A[..., 0] -= J2[..., steer].sum(axis=-1)                        # phi_i = psi + beta_i (7): psi's column
-        n = 1 if constant else len(b)                                   # a constant A: solved once
-        P, determined = _solve(A[:n])
-        if not determined.all():
-            step = a + int(np.argmin(determined))
-            raise InputValueError(f"the measured joints {[names[c] for c in chosen]} do not determine the platform's "
-                                  f"motion at step {step} (samples {step}..{step + 1}, beta = "
-                                  f"{b_end[step].round(6).tolist()}): measure more joints")
-        if constant:
-            fixed = (A[0], P[0])
-        z[k] = np.einsum("kij,kj->ki", np.broadcast_to(P, (len(b),) + P.shape[1:]), b)
-        res[k] = np.einsum("kij,kj->ki", A, z[k]) - b
+    with np.errstate(over="ignore", invalid="ignore"):          # an overflow is caught on the pose
+        for a in range(0, T - 1, _CHUNK):
+            k = slice(a, min(a + _CHUNK, T - 1))
+            J2 = robot.J2(b_end[k])                                        # (n, 2w, n_rates) at the steps' ends
+            b = np.einsum("kij,kj->ki", J2[..., cols], d_theta[k])
+            if steer:
+                b += np.einsum("kij,kj->ki", J2[..., steer], d_beta[k])
+            if constant and fixed is not None:
+                A, P = fixed
+                z[k] = b @ P.T
+                res[k] = z[k] @ A.T - b
+                continue
+            A = np.concatenate([np.broadcast_to(J1, J2.shape[:1] + J1.shape), -J2[..., unknown]], axis=-1)
+            A[..., 0] -= J2[..., steer].sum(axis=-1)                        # phi_i = psi + beta_i (7): psi's column
+            n = 1 if constant else len(b)                                   # a constant A: solved once
+            P, determined = _solve(A[:n])
+            if not determined.all():
+                step = a + int(np.argmin(determined))
+                raise InputValueError(f"the measured joints {[names[c] for c in chosen]} do not determine the "
+                                      f"platform's motion at step {step} (samples {step}..{step + 1}, beta = "
+                                      f"{b_end[step].round(6).tolist()}): measure more joints")
+            if constant:
+                fixed = (A[0], P[0])
+            z[k] = np.einsum("kij,kj->ki", np.broadcast_to(P, (len(b),) + P.shape[1:]), b)
+            res[k] = np.einsum("kij,kj->ki", A, z[k]) - b
     inc = z[:, :3].copy()
     if heading is not None:
-        inc[:, 0] = wrap_angle(np.diff(heading))                       # WPILib: the gyro's angle, wheels' dx, dy
-    psi = pose0[0] + np.concatenate([[0.0], np.cumsum(inc[:, 0])])
-    d = se2_exp(inc)                                                   # Pose2d.exp: body-frame displacement
-    c, s = np.cos(psi[:-1]), np.sin(psi[:-1])
-    world = np.stack([c * d[:, 1] - s * d[:, 2], s * d[:, 1] + c * d[:, 2]], axis=-1)
-    xy = pose0[1:] + np.concatenate([np.zeros((1, 2)), np.cumsum(world, axis=0)])
+        inc[:, 0] = wrap_angle(_steps("heading", heading))             # WPILib: the gyro's angle, wheels' dx, dy
+    with np.errstate(over="ignore", invalid="ignore"):
+        psi = pose0[0] + np.concatenate([[0.0], np.cumsum(inc[:, 0])])
+        ok = np.isfinite(inc).all() and np.isfinite(res).all() and np.isfinite(psi).all()
+        if ok:
+            d = se2_exp(inc)                                           # Pose2d.exp: body-frame displacement
+            c, s = np.cos(psi[:-1]), np.sin(psi[:-1])
+            world = np.stack([c * d[:, 1] - s * d[:, 2], s * d[:, 1] + c * d[:, 2]], axis=-1)
+            xy = pose0[1:] + np.concatenate([np.zeros((1, 2)), np.cumsum(world, axis=0)])
+            ok = np.isfinite(xy).all()
+    if not ok:
+        raise InputValueError(f"angles, heading or pose0 are too large: the pose overflows double precision "
+                              f"(largest |angles| = {np.abs(angles).max():.3g})")
     pose = np.column_stack([psi, xy])
     return Odometry(robot, tuple(names[c] for c in chosen), pose, inc, res, np.linalg.norm(res, axis=-1),
                     z[:, 3:])
