@@ -169,7 +169,8 @@ def test_the_older_parameter_names(tmp_path):
 
 # ------------------------------------------------------------------------------------------ refusals
 @pytest.mark.parametrize("name, why", [
-    ("steered_castors", "not tricycle: needs 1 centred and 2 fixed wheels"),
+    ("steered_castors", "passive castors [2, 3] left out): not differential: needs exactly two fixed wheels, has 0 "
+                        "of 1 units; not mecanum"),
     ("paper_dual", "not swerve: needs centred wheels only"),
     ("paper_offset", "wheel 1, 2, 3 constrains nothing but has motors"),
 ])

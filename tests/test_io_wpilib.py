@@ -94,11 +94,19 @@ def test_round_trip(robot):
 
 @pytest.mark.parametrize("name, why", [("tricycle", "not differential: needs exactly two fixed wheels"),
                                        ("omni3", "not mecanum: needs exactly four Swedish wheels"),
-                                       ("differential", "wheel 3 constrains nothing but has motors")])
+                                       ("steered_castors", "not swerve: needs two swerve modules or more, has 1")])
 def test_robots_wpilib_cannot_express(name, why):
     with pytest.raises(InputValueError, match="WPILib .* cannot express") as err:
         to_wpilib(wmr.load(ROOT / "examples" / f"{name}.toml"))
     assert why in str(err.value)
+
+
+def test_a_castor_with_motors_is_not_left_out():
+    bot = wmr.load(ROOT / "examples" / "differential.toml")          # its castor is passive: WPILib leaves it out
+    assert to_wpilib(bot).trackWidth == 0.4
+    active = wmr.Robot(list(bot.wheels[:2]) + [wmr.OffsetWheel((-0.3, 0.0), r=0.03, d=0.03)])
+    with pytest.raises(InputValueError, match="wheel 3 constrains nothing but has motors"):
+        to_wpilib(active)
 
 
 def test_five_swerve_modules_and_non_wpilib_objects():

@@ -157,6 +157,8 @@ def _swerve(units, scale):
     cw = _of(units, CentredWheel)
     if len(cw) != len(units):
         raise _NotIt(f"needs centred wheels only, has {len(units) - len(cw)} other units")
+    if len(cw) < 2:
+        raise _NotIt(f"needs two swerve modules or more, has {len(cw)}")
     return tuple(cw), {}
 
 

@@ -175,7 +175,8 @@ def _read_swerve(p: Params):
 
 def _write_swerve(layout, robot, names):
     if len(layout.wheels) != 4:
-        raise InputValueError(f"swerve_drive_controller has four modules, the robot {len(layout.wheels)}")
+        raise InputValueError(f"swerve_drive_controller has four modules; the robot has {len(layout.wheels)} swerve "
+                              "modules")
     order, length, width, centre = rectangle_of(layout.positions)
     out = {}
     for corner, k in zip(_MECANUM, order):

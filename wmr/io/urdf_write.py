@@ -1,24 +1,27 @@
 r"""A robot as a URDF file: the kinematic tree that :func:`wmr.io.from_urdf` reads back as the same robot.
 
-Every unit is written from what it answers (its joints, :meth:`~wmr.model.wheels.WheelUnit.points`
-and :meth:`~wmr.model.wheels.WheelUnit.parts`), so every wheel kind is written without a case of its own:
+Every unit is written from its **mechanism**, the tree of bodies on its joints that its kind describes
+(:meth:`~wmr.model.wheels.WheelUnit.mechanism`, :mod:`wmr.model.wheels.mechanism`, the description
+:mod:`wmr.sim` gives MuJoCo), so this module knows no wheel kind:
 
-* ``base_footprint`` on the ground at C, ``base_link`` above it at the height of the largest wheel
-  radius (the mount plane);
-* a steered unit: a ``continuous`` joint about z at :math:`P_i` (``wheel{i}_steer`` or
-  ``wheel{i}_swivel``, the unit's joint name; at zero :math:`\beta_i = 0`) carrying ``wheel{i}_body``;
-  a unit without one hangs its wheel from ``base_link`` at its own angle;
-* each wheel: a ``continuous`` joint ``wheel{i}_{joint}`` at the wheel's centre, turning about the
-  axle :math:`\mathbf i_i` (wmr's sign of :math:`\dot\theta`), and a link with a ``<cylinder>`` of
-  the wheel's radius along it;
-* a Swedish wheel's rollers: :data:`ROLLERS` ``continuous`` joints ``wheel{i}_roller{k}`` on the rim,
-  each about :math:`\cos\gamma\,\mathbf i + \sin\gamma\,\mathbf t_k` (:math:`\mathbf t_k` the rim's
-  direction of motion there), with a small visual cylinder;
+* ``base_footprint`` on the ground at C, ``base_link`` above it on the mount plane (at the height of
+  the largest wheel radius);
+* a body: a link ``wheel{i}_{body}_link``; its joint: ``wheel{i}_{joint}`` (the unit's joint names:
+  ``steer``, ``swivel``, ``drive``, ``drive1``, ...), ``continuous`` about the body's axis, or
+  ``fixed`` for a welded body; the joints at zero are :math:`\beta_i = 0`;
+* a wheel body: a ``<cylinder>`` of the wheel's radius along its axle (its x axis), which spins
+  with wmr's sign of :math:`\dot\theta`; an arm (a rod of the mechanism): a thin visual cylinder;
 * a ``<ros2_control>`` block (hardware ``mock_components/GenericSystem``) commanding the driven
-  joints: steering by position, wheels by velocity.  Passive joints are not listed.
+  joints: steering joints by position, wheels by velocity.  Passive joints are not listed.
 
-The file is kinematic: no inertias, no meshes; numbers are written as the shortest text that
-reads back as the same double, so writing a robot twice gives the same bytes.
+A Swedish wheel has no mechanism (a physics engine has no roller contact: its kind says why), but
+URDF can still say what it is: the wheel on its drive joint as a fixed wheel's, and :data:`ROLLERS`
+``continuous`` joints ``wheel{i}_roller{k}`` on the rim, each about :math:`\cos\gamma\,\mathbf i +
+\sin\gamma\,\mathbf t_k` (:math:`\mathbf t_k` the rim's direction of motion there, the unit's
+:class:`~wmr.model.wheels.parts.Rollers`).
+
+The file is kinematic (no inertias, no meshes); numbers are written as the shortest text that reads
+back as the same double, so writing a robot twice gives the same bytes.
 """
 from __future__ import annotations
 
@@ -30,6 +33,7 @@ import numpy as np
 
 from ..errors import InputTypeError, InputValueError
 from ..model import validation as V
+from ..model.wheels.mechanism import Mechanism, wheel
 from ..model.wheels.parts import Rollers
 
 __all__ = ["ROLLERS", "joint_name", "to_urdf"]
@@ -88,9 +92,19 @@ def _cylinder_link(name, radius, length, rpy, collision=True):
 
 
 def _joint(name, parent, child, xyz, axis, rpy=(0.0, 0.0, 0.0)):
-    return [f"  <joint name={quoteattr(name)} type=\"continuous\">",
-            f"    <parent link={quoteattr(parent)}/>", f"    <child link={quoteattr(child)}/>",
-            f"    {_origin(xyz, rpy)}", f'    <axis xyz="{_v(*axis)}"/>', "  </joint>"]
+    head = f"  <joint name={quoteattr(name)} type=\"{'fixed' if axis is None else 'continuous'}\">"
+    axis_line = [f'    <axis xyz="{_v(*axis)}"/>'] if axis is not None else []
+    return [head, f"    <parent link={quoteattr(parent)}/>", f"    <child link={quoteattr(child)}/>",
+            f"    {_origin(xyz, rpy)}", *axis_line, "  </joint>"]
+
+
+def _rod(a, b, radius):
+    """A thin visual cylinder from ``a`` to ``b`` (a link's frame): an arm of a mechanism."""
+    a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
+    length = float(np.linalg.norm(b - a))
+    rpy = _rpy_z_to((b - a) / length)
+    return (f'    <visual>{_origin((a + b) / 2, rpy)}<geometry><cylinder radius="{_f(radius)}" '
+            f'length="{_f(length)}"/></geometry></visual>')
 
 
 def _rollers(i, wheel_link, r, gamma):
@@ -108,40 +122,46 @@ def _rollers(i, wheel_link, r, gamma):
     return out
 
 
+def _mechanism(i, u, height):
+    """The unit's mechanism; a unit without one (a Swedish wheel) as a fixed wheel's, with its rollers."""
+    try:
+        return u.mechanism(height), None
+    except NotImplementedError as exc:
+        rollers = [p for p in u.parts(0.0) if isinstance(p, Rollers)]
+        drives = [j for j in u.joints if j.kind == "drive"]
+        if u.steered or len(drives) != 1 or not rollers:
+            raise InputValueError(f"URDF cannot describe wheel {i} ({u.kind}): {exc}") from None
+        x, y = (float(v) for v in u.position)
+        body = wheel("wheel", (x, y, float(u.r) - height), float(u.r), drives[0], angle=float(rollers[0].heading))
+        return Mechanism(body), float(rollers[0].angle)
+
+
 def _unit(i, u, height):
     """The URDF lines of wheel unit ``i`` (1-based) and its driven joints ``[(name, interface)]``."""
-    r = float(u.r)
-    pts = u.points(0.0)
-    P = np.asarray(pts["P"], dtype=float)
-    joints = u.joints
-    steer = [j for j in joints if j.steering]
-    drives = [j for j in joints if j.kind == "drive"]
-    rollers = [p for p in u.parts(0.0) if isinstance(p, Rollers)]
-    commanded, lines = [], []
-    parent, origin, yaw = "base_link", np.zeros(2), 0.0
-    if steer:
-        body = joint_name(i, "body")
-        lines += _joint(joint_name(i, steer[0].name), "base_link", body, (*P, 0.0), (0.0, 0.0, 1.0))
-        lines += [f"  <link name={quoteattr(body)}/>"]
-        commanded += [(joint_name(i, steer[0].name), "position")] if steer[0].driven else []
-        parent, origin = body, P
-    else:
-        yaw = float(np.arctan2(pts["i"][1], pts["i"][0]))
-    wheels = np.asarray(pts["wheels"], dtype=float).reshape(-1, 2)
-    if len(wheels) != len(drives):
-        raise InputValueError(f"wheel {i} ({u.kind}) has {len(wheels)} wheels and {len(drives)} drive joints: URDF "
-                              "needs one drive joint per wheel")
-    for c, j in zip(wheels, drives):
-        name = joint_name(i, j.name)
-        link = name + "_link"
-        lines += _joint(name, parent, link, (*(c - origin), r - height), (1.0, 0.0, 0.0), (0.0, 0.0, yaw))
-        lines += _cylinder_link(link, r, r / 2, (0.0, np.pi / 2, 0.0))
-        commanded += [(name, "velocity")] if j.driven else []
-        if rollers:
-            lines += _rollers(i, link, r, float(rollers[0].angle))
-    roller = [j for j in joints if j.kind == "roller" and j.driven]
-    if roller and rollers:
-        commanded += [(joint_name(i, f"roller{k}"), "velocity") for k in range(ROLLERS)]
+    mech, gamma = _mechanism(i, u, height)
+    lines, commanded = [], []
+
+    def body(b, parent):
+        link = joint_name(i, b.name) + "_link"
+        name = joint_name(i, b.joint.name if b.joint else b.name + "_weld")
+        lines.extend(_joint(name, parent, link, b.pos, b.axis if b.joint else None, (0.0, 0.0, float(b.angle))))
+        if b.joint is not None and b.joint.driven:
+            commanded.append((joint_name(i, b.joint.name), "velocity" if b.wheel is not None else "position"))
+        if b.wheel is not None:
+            lines.extend(_cylinder_link(link, b.wheel, b.wheel / 2, (0.0, np.pi / 2, 0.0)))
+            if gamma is not None:
+                lines.extend(_rollers(i, link, b.wheel, gamma))
+                roller = [j for j in u.joints if j.kind == "roller"]
+                if roller and roller[0].driven:
+                    commanded.extend((joint_name(i, f"roller{k}"), "velocity") for k in range(ROLLERS))
+        else:
+            rods = [_rod(a, c, float(u.r) / 8) for a, c in b.rods if np.linalg.norm(np.subtract(c, a)) > 0]
+            lines.extend([f"  <link name={quoteattr(link)}>", *rods, "  </link>"] if rods else
+                         [f"  <link name={quoteattr(link)}/>"])
+        for child in b.children:
+            body(child, link)
+
+    body(mech.root, "base_link")
     return lines, commanded
 
 
