@@ -8,7 +8,10 @@ caller expects (in the style of python-control's ``ControlArgument(TypeError)``)
 * :class:`InputValueError` (a ``ValueError``): the right kind with a bad *value* (a negative
   radius, NaN, infinity, a wrong shape, a number too large for double precision);
 * :class:`RobotFileError` (an :class:`InputValueError`): a malformed robot file, one line
-  ``FILE:LINE: key: what is wrong``.
+  ``FILE:LINE: key: what is wrong``;
+* :class:`MissingDependencyError` (an ``ImportError``): an optional package that a bridge needs
+  (yourdfpy for URDF, PyYAML for ROS 2 parameters, robotpy-wpimath for WPILib) is not installed;
+  the message names the extra to install (``pip install 'wmr[urdf]'``).
 
 So ``except ValueError`` still catches a bad value, and ``except wmr.errors.InputError`` catches
 bad input and nothing else: any other exception out of wmr is a bug in wmr.  The command line
@@ -26,7 +29,7 @@ InputValueError True r (wheel radius) must be positive, got -1.0
 """
 from __future__ import annotations
 
-__all__ = ["WmrError", "InputError", "InputTypeError", "InputValueError", "RobotFileError"]
+__all__ = ["WmrError", "InputError", "InputTypeError", "InputValueError", "RobotFileError", "MissingDependencyError"]
 
 
 class WmrError(Exception):
@@ -63,3 +66,7 @@ class RobotFileError(InputValueError):
     def __init__(self, file: str, line: int, key: str, reason: object) -> None:
         self.file, self.line, self.key, self.reason = file, line, key, " ".join(str(reason).split())
         super().__init__(f"{file}:{line}: {key}: {self.reason}")
+
+
+class MissingDependencyError(WmrError, ImportError):
+    """An optional package that this call needs is not installed; the message names the extra that installs it."""

@@ -39,12 +39,12 @@ from typing import NoReturn
 
 import numpy as np
 
-from .errors import InputError, InputTypeError, InputValueError, RobotFileError
-from .model import validation as V
-from .model.robot import Robot
-from .model.tolerance import near_zero
-from .model.wheels import wheel_kinds
-from .model.wheels.filekeys import toml_string, toml_text
+from ..errors import InputError, InputTypeError, InputValueError, RobotFileError
+from ..model import validation as V
+from ..model.robot import Robot
+from ..model.tolerance import near_zero
+from ..model.wheels import wheel_kinds
+from ..model.wheels.filekeys import toml_string, toml_text
 
 __all__ = ["RobotFileError", "wheel_keys", "load", "loads", "dump"]
 
