@@ -269,7 +269,7 @@ def main(argv=None):
             met = ratio <= 2
         else:
             m = min(int(args.peer_n), n)
-            peer_sec, _ = best_of(lambda: ref(twist[:m]), max(1, args.repeat // 2))
+            peer_sec, _ = best_of(lambda ref=ref, m=m: ref(twist[:m]), max(1, args.repeat // 2))
             per_wmr, per_peer = sec / n, peer_sec / m
             print(f"{name:34s} {per_wmr * 1e6:6.3f}us {cpu[0] / n * 1e6:5.3f}us  {'WPILib, one call per twist':28s} "
                   f"{per_peer * 1e6:6.3f}us {per_peer / per_wmr:6.1f}x  {'>= 5x':>7s}  "

@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# Time a warm `make test`: nothing changed since the last run, so every notebook, the report and
+# the student edition are cached and the time is pytest (two workers), ruff and mypy. Runs
+# `make test` once to warm up, then RUNS timed runs (default 2), each with the load average read
+# just before it (other users of the two cores slow it down), and the slowest tests of the last run.
+#   usage: tools/bench_test.sh [RUNS]            (from the repository root)
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+runs=${1:-2}
+mkdir -p build
+log=build/bench-test.log
+load() { cut -d' ' -f1 /proc/loadavg; }
+t0=$(date +%s.%N)
+make test > "$log" 2>&1 || { tail -60 "$log"; echo "[bench] make test failed (log: $log)"; exit 1; }
+printf '[bench] warm-up make test: %.1f s\n' "$(echo "$(date +%s.%N) - $t0" | bc)"
+echo "| run | warm make test (s) | load before |"
+echo "| --- | --- | --- |"
+for i in $(seq "$runs"); do
+  l=$(load); s=$(date +%s.%N)
+  make test PYTEST_ARGS="--durations=12" > "$log" 2>&1 || { tail -60 "$log"; echo "[bench] make test failed (log: $log)"; exit 1; }
+  printf '| %d | %.1f | %s |\n' "$i" "$(echo "$(date +%s.%N) - $s" | bc)" "$l"
+done
+echo
+echo "Slowest tests of the last run:"
+sed -n '/slowest .* durations/,/^[(=]/p' "$log" | sed '1d;$d' | sed 's/^/    /'
+echo "Cores: $(nproc); load average now: $(cut -d' ' -f1-3 /proc/loadavg)"
