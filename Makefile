@@ -174,7 +174,7 @@ test: venv tex browser ## build (cached), pytest -n 2, ruff, mypy; fail if the b
 	@mkdir -p $(B); $(GIT_STATE) > $(B)/git-before
 	@$(LOCK) exec $(SUB) $(TEST_BUILD)
 	@rc=0; \
-	cd $(WMR_ROOT) && $(PDEATH) $(VPY) -m pytest -n 2 $(PYTEST_ARGS) || rc=$$?; \
+	cd $(WMR_ROOT) && $(PDEATH) $(VPY) -m pytest -n 2 --dist worksteal $(PYTEST_ARGS) || rc=$$?; \
 	if [ -n "$(LINTED)" ]; then \
 	  echo "[lint] ruff check, mypy: $(notdir $(LINTED))"; \
 	  $(VPY) -m ruff check --quiet $(LINTED) || rc=1; \

@@ -25,6 +25,7 @@ import nbformat
 import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
+REPORT = ("report.html", "report.pdf") if shutil.which("xelatex") and shutil.which("pandoc") else ("report.html",)
 from edition.ledger import COLUMNS
 from tools.build.pdf import to_latex
 
@@ -104,13 +105,20 @@ def project(tmp_path_factory):
     svg = '<svg xmlns="http://www.w3.org/2000/svg" width="10" height="10"><rect width="10" height="10"/></svg>'
     for key, number, paper_cap in (("fig07", "7", "PAPER-CAPTION-7"), ("conventions", "", "")):
         (fig / f"{key}.svg").write_text(svg.replace("10\"/>", f"10\" id=\"{key}\"/>"))
+        shutil.copy(ROOT / "figures" / "conventions.pdf", fig / f"{key}.pdf")     # any vector figure will do
         (fig / f"{key}.json").write_text(json.dumps({"key": key, "number": number, "title": f"Title of {key}",
                                                      "paper_caption": paper_cap, "caption": f"OUR-CAPTION-{key} with $L = 1$",
                                                      "numbers": {}}))
-    p = subprocess.run(["make", "-s", "--no-print-directory", "-C", str(ROOT), f"WMR_ROOT={root}",
-                        f"{root}/build/report.html"], capture_output=True, text=True, check=False)
-    assert p.returncode == 0, p.stdout + p.stderr
+    make(root, root / "build", *REPORT)
     return root
+
+
+def make(root: Path, build: Path, *files: str) -> str:
+    """``make`` the given files of the report of ``root``, in the build directory ``build``."""
+    p = subprocess.run(["make", "-s", "--no-print-directory", "-j2", "-C", str(ROOT), f"WMR_ROOT={root}",
+                        f"WMR_BUILD={build}", *(str(build / f) for f in files)], capture_output=True, text=True, check=False)
+    assert p.returncode == 0, p.stdout + p.stderr
+    return p.stdout
 
 
 @pytest.fixture(scope="module")
@@ -182,3 +190,14 @@ def test_latex_has_no_escaped_raw_tex_and_links(project):
     assert r"\hypertarget{eq-3}{}" in tex and r"\hyperlink{eq-3}" in tex
     assert r"\wmrdisplay{\dot{\mathbf p}_i}{2}" in tex, "the paper's equation number becomes a tag"
     assert "PRINTED-OUTPUT" not in tex and "print(" not in tex, "code or program output in the PDF"
+
+
+def test_two_builds_are_byte_identical(project, tmp_path):
+    """A second build of the same tree in a copy of build/: the executed notebooks are reused (their
+    stamps hold), the report notebook, the HTML and the PDF are made again, and come out the same."""
+    copy = tmp_path / "second" / "build"
+    shutil.copytree(project / "build", copy, ignore=shutil.ignore_patterns("report.*", "tmp"))
+    log = make(project, copy, *REPORT)
+    assert "[execute]" not in log and "[assemble]" in log, log
+    for name in REPORT:
+        assert (project / "build" / name).read_bytes() == (copy / name).read_bytes(), f"two builds gave different {name}"
