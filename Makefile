@@ -10,8 +10,8 @@
 # executed again only when its key changes: the content hashes of the notebook, wmr/ and edition/
 # (the recipe compares them and leaves the executed copy untouched when they match, so that Make
 # sees nothing new). A second build of one tree waits for the first (flock on build/.lock).
-# Signals: Make passes SIGTERM to its children, nbclient stops the kernel; a build whose make is
-# killed outright gets SIGTERM from the kernel (setpriv --pdeathsig).
+# Signals: Make passes SIGTERM to its children and nbclient stops its kernel; when make itself is
+# killed outright, the operating system sends its steps SIGTERM (setpriv --pdeathsig).
 #
 # Everything Python comes from environment.lock (pinned + sha256-hashed); the TeX toolchain for
 # the PDF comes from Debian packages (installed here when possible).
@@ -48,7 +48,8 @@ PDEATH := $(shell command -v setpriv >/dev/null 2>&1 && echo setpriv --pdeathsig
 BUILD  := $(PDEATH) $(VPY) -m tools.build
 SUB    := $(PDEATH) $(MAKE) --no-print-directory -s -j2 -O
 # hold build/.lock for the rest of the recipe (a second build of this tree says so and waits)
-LOCK   = mkdir -p $(B); exec 9>$(B)/.lock; flock -n 9 || { echo "[lock] another build of $(WMR_ROOT) is running: waiting for it"; flock 9; };
+LOCK   = mkdir -p $(B); exec 9>$(B)/.lock; ! command -v flock >/dev/null || flock -n 9 || \
+  { echo "[lock] another build of $(WMR_ROOT) is running: waiting for it"; flock 9; };
 # git status with a hash of each changed file: make test compares the state before and after
 GIT_STATE = git -C $(WMR_ROOT) status --porcelain=v1 --untracked-files=all 2>/dev/null | while IFS= read -r l; do \
   echo "$$l $$(sha256sum < "$(WMR_ROOT)/$${l:3}" 2>/dev/null | cut -c1-16)"; done
