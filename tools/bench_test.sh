@@ -2,7 +2,9 @@
 # Time a warm `make test`: nothing changed since the last run, so every notebook, the report and
 # the student edition are cached and the time is pytest (two workers), ruff and mypy. Runs
 # `make test` once to warm up, then RUNS timed runs (default 2), each with the load average read
-# just before it (other users of the two cores slow it down), and the slowest tests of the last run.
+# just before it (other users of the two cores slow it down) and the CPU time it used (user + sys
+# of make and everything it started: on an idle 2-core machine the wall time is about half of it),
+# and the slowest tests of the last run.
 #   usage: tools/bench_test.sh [RUNS]            (from the repository root)
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -15,12 +17,13 @@ status() { grep -E "^[0-9]+ (passed|failed)|passed in|^\[git\]|^make: \*\*\*" "$
 t0=$(date +%s.%N)
 make test > "$log" 2>&1 || true
 printf '[bench] warm-up make test: %.1f s: %s\n' "$(echo "$(date +%s.%N) - $t0" | bc)" "$(status)"
-echo "| run | warm make test (s) | load before | result |"
-echo "| --- | --- | --- | --- |"
+echo "| run | warm make test, wall (s) | CPU, user + sys (s) | load before | result |"
+echo "| --- | --- | --- | --- | --- |"
 for i in $(seq "$runs"); do
-  l=$(load); s=$(date +%s.%N)
-  make test PYTEST_ARGS="--durations=12" > "$log" 2>&1 || true
-  printf '| %d | %.1f | %s | %s |\n' "$i" "$(echo "$(date +%s.%N) - $s" | bc)" "$l" "$(status)"
+  l=$(load)
+  /usr/bin/time -f "%e %U %S" -o build/bench-test.time make test PYTEST_ARGS="--durations=12" > "$log" 2>&1 || true
+  read -r wall user sys < <(tail -1 build/bench-test.time)
+  printf '| %d | %.1f | %.1f | %s | %s |\n' "$i" "$wall" "$(echo "$user + $sys" | bc)" "$l" "$(status)"
 done
 echo
 echo "Slowest tests of the last run:"
