@@ -5,6 +5,7 @@ changes) so that the tests compare :mod:`wmr` with the physics, not with itself.
 """
 from __future__ import annotations
 
+import sys
 from pathlib import Path
 
 import numpy as np
@@ -20,6 +21,12 @@ settings.register_profile(
     suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much,
                            HealthCheck.function_scoped_fixture])
 settings.load_profile("wmr")
+
+def pytest_configure(config):
+    """Before collection: nbformat imports jsonschema, which compiles the grammar of ``rfc3987_syntax``
+    when it is installed (3 s of every test process) for the "iri" format, which no notebook schema uses."""
+    sys.modules.setdefault("rfc3987_syntax", None)  # type: ignore[arg-type]
+
 
 #: the repository this test suite belongs to
 ROOT = Path(__file__).resolve().parents[1]

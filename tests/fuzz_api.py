@@ -479,6 +479,8 @@ CASES = [
          (R, ("twist", "twist_batch"), ("L", "positive")), allow="inf"),
     Case("bytes_per_configuration", lambda robot, analysis: sweep_execute.bytes_per_configuration(robot, analysis),
          (R, ("analysis", "analysis"))),
+    Case("wheel_odometry", lambda robot, beta, angles, heading: wmr.wheel_odometry(robot, beta, angles, heading),
+         (R, ("beta", "samples_beta"), ("angles", "samples_angles"), ("heading", "heading"))),
 ]
 
 #: public functions deliberately not fuzzed here, and why
@@ -554,6 +556,19 @@ def _more_roles(name, bot):
         return [0, 7, np.int64(3)], [2**40], [-1, 0.5, "1", None, True, np.nan]
     if name == "no_path":                                     # dump writes nothing when path is None
         return [None], [], [3, 1.5, b"x", object()]
+    if name in ("samples_beta", "samples_angles"):     # four samples of odometry: (4, w), (4, measured joints)
+        width = bot.w if name == "samples_beta" else sum(
+            1 for u in bot.wheels for j in u.joints if j.rate is not None and j.driven and not j.steering)
+        good = [np.zeros((4, width)), RNG.uniform(-3, 3, (4, width)), np.cumsum(RNG.uniform(0, 1, (4, width)), axis=0)]
+        odd = [np.full((4, width), BIG), np.array([[BIG] * width, [-BIG] * width] * 2), np.full((4, width), TINY),
+               np.ones((4, width), dtype=np.float32)]
+        bad = [np.zeros((1, width)), np.zeros(width), np.zeros((4, width + 1)), np.full((4, width), np.nan),
+               np.full((4, width), 1j), np.zeros((2, 4, width))] + BAD_ANY
+        return good, odd, bad
+    if name == "heading":                   # one gyro angle for each of the four samples
+        return ([None, np.zeros(4), RNG.uniform(-3, 3, 4)], [np.full(4, BIG), np.full(4, TINY)],
+                [np.zeros(3), np.zeros((4, 1)), np.full(4, np.nan), ["0"] * 4, np.full(4, 1j)]
+                + [b for b in BAD_ANY if b is not None])
     if name == "samples":
         return [1, 3, np.int64(2)], [], [0, -1, 1.5, True, "1", None]
     if name in ("pair1", "rates1", "opt_beta1"):

@@ -33,6 +33,7 @@ from .model.robot import Robot
 from .model.robots import equilateral_mounts, paper_robot
 from .model.tolerance import TOL
 from .model.wheels import CentredWheel, DualWheel, FixedWheel, OffsetWheel, SwedishWheel
+from .odometry import wheel_odometry
 
 __all__ = [
     "Robot", "OffsetWheel", "CentredWheel", "DualWheel", "FixedWheel", "SwedishWheel", "paper_robot",
@@ -41,6 +42,6 @@ __all__ = [
     "admissible_twists", "condition_number", "is_isotropic", "characteristic_length",
     "forward", "inverse", "instantaneous_centre", "steering_angles", "centre_to_wheels",
     "simulate", "sweep", "campion_class", "TOL", "NUMERIC", "SYMBOLIC", "conventions", "load", "dump",
-    "swerve", "errors",
+    "swerve", "errors", "wheel_odometry",
 ]
 __version__ = "0.1.0"

@@ -10,7 +10,10 @@ caller expects (in the style of python-control's ``ControlArgument(TypeError)``)
 * :class:`RobotFileError` (an :class:`InputValueError`): a malformed robot file, one line
   ``FILE:LINE: key: what is wrong``;
 * :class:`LimitError` (an :class:`InputValueError`): a request beyond a limit of :mod:`wmr.model.limits`
-  (wheels, configurations, memory), refused before the work starts.
+  (wheels, configurations, memory), refused before the work starts;
+* :class:`MissingDependencyError` (an ``ImportError``): an optional package that a bridge needs
+  (yourdfpy for URDF, PyYAML for ROS 2 parameters, robotpy-wpimath for WPILib) is not installed;
+  the message names the extra to install (``pip install 'wmr[urdf]'``).
 
 So ``except ValueError`` still catches a bad value, and ``except wmr.errors.InputError`` catches
 bad input and nothing else: any other exception out of wmr is a bug in wmr.  The command line
@@ -28,7 +31,8 @@ InputValueError True r (wheel radius) must be positive, got -1.0
 """
 from __future__ import annotations
 
-__all__ = ["WmrError", "InputError", "InputTypeError", "InputValueError", "RobotFileError", "LimitError"]
+__all__ = ["WmrError", "InputError", "InputTypeError", "InputValueError", "RobotFileError", "LimitError",
+           "MissingDependencyError"]
 
 
 class WmrError(Exception):
@@ -69,3 +73,7 @@ class RobotFileError(InputValueError):
 
 class LimitError(InputValueError):
     """A request beyond a limit (:mod:`wmr.model.limits`): its message names the limit and how to raise it."""
+
+
+class MissingDependencyError(WmrError, ImportError):
+    """An optional package that this call needs is not installed; the message names the extra that installs it."""

@@ -5,7 +5,8 @@ Each command lives in its own module of this package (one file per command) and 
 * ``HELP``: one line for ``wmr --help``;
 * ``add_arguments(parser)``: its options (an :class:`argparse.ArgumentParser`);
 * ``run(args) -> int``: the exit status (0 ok).  Bad input raises an :class:`~wmr.errors.InputError`
-  (a malformed robot file :class:`~wmr.errors.RobotFileError`, an unreadable file ``OSError``);
+  (a malformed robot file :class:`~wmr.errors.RobotFileError`, an unreadable file ``OSError``; an
+  optional package a file format needs and that is missing, :class:`~wmr.errors.MissingDependencyError`);
   :func:`main` turns it into one line on stderr, ``wmr COMMAND: message``, and exit status 2,
   without a traceback.  Any other exception is a bug in wmr: :func:`main` prints its traceback
   and a one-line request to report it, and returns 1.
@@ -19,7 +20,7 @@ import importlib
 import sys
 import traceback
 
-from ..errors import InputError
+from ..errors import InputError, MissingDependencyError
 
 __all__ = ["COMMANDS", "main"]
 
@@ -30,6 +31,7 @@ COMMANDS = {
     "fk": "fk",
     "sweep": "sweep",
     "simulate": "simulate",
+    "convert": "convert",
     "explain": "explain",
 }
 
@@ -64,7 +66,7 @@ def main(argv=None):
     except BrokenPipeError:                                       # the reader stopped (wmr ... | head): not an error
         sys.stderr.close()
         return 0
-    except (InputError, OSError) as exc:                          # bad input: one line, no traceback
+    except (InputError, MissingDependencyError, OSError) as exc:  # bad input, a missing extra: one line
         print(f"wmr {args.command}: {' '.join(str(exc).split())}", file=sys.stderr)
         return 2
     except Exception:                                             # a bug in wmr: show it, ask for a report

@@ -40,6 +40,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     from ..analysis.overview import GRID_SIZE, TWISTS
     from ._options import add_convention
     parser.add_argument("robot", help="robot file (TOML)")
+    parser.add_argument("--wheel-joints", metavar="NAMES", help="URDF only: the wheel joints, NAME[=RADIUS],...")
     parser.add_argument("--json", action="store_true", help="print JSON instead of a table")
     parser.add_argument("--grid", type=int, default=GRID_SIZE, metavar="N",
                         help=f"about N grid configurations of the steered angles (default {GRID_SIZE})")
@@ -188,7 +189,7 @@ def run(args: argparse.Namespace) -> int:
     import wmr
 
     from ..analysis.overview import overview
-    robot = wmr.load(args.robot)
+    robot = wmr.load(args.robot, wheel_joints=args.wheel_joints)
     ov = overview(robot, grid=args.grid, twists=args.twists, seed=args.seed)
     if args.json:
         print(json.dumps(as_json(ov, args.convention), indent=2))

@@ -104,9 +104,11 @@ The repository holds three things, and imports go one way (edition -> wmr, build
         this process or on Dask, ``result``); design searches (:mod:`~wmr.analysis.design`), a robot
         at a glance (:mod:`~wmr.analysis.overview`), and the dense reference the fast kernels are
         checked against (:mod:`~wmr.analysis.reference`).
-    :mod:`wmr.swerve`, :mod:`wmr.io`
-        Beside the analyses: swerve-drive practice (module states, limits, optimisation) and robot
-        files (TOML in, TOML out, each wheel kind's keys declared by the kind).
+    :mod:`wmr.swerve`, :mod:`wmr.io`, :mod:`wmr.odometry`
+        Beside the analyses: swerve-drive practice (module states, limits, optimisation); robots in
+        and out (TOML robot files, each wheel kind's keys declared by the kind; URDF, ROS 2 controller
+        parameters and WPILib kinematics objects, their optional packages imported only when used);
+        and wheel odometry.
     :mod:`wmr.plot`, :mod:`wmr.cli`
         Drawing with matplotlib (imported only there: the style, annotations, and the robot seen
         from above, drawn from the units' parts), and the ``wmr`` command line, one module per

@@ -40,13 +40,13 @@ from typing import NoReturn
 
 import numpy as np
 
-from .errors import InputError, InputTypeError, InputValueError, LimitError, RobotFileError
-from .model import validation as V
-from .model.limits import check, limit
-from .model.robot import Robot
-from .model.tolerance import near_zero
-from .model.wheels import wheel_kinds
-from .model.wheels.filekeys import toml_string, toml_text
+from ..errors import InputError, InputTypeError, InputValueError, LimitError, RobotFileError
+from ..model import validation as V
+from ..model.limits import check, limit
+from ..model.robot import Robot
+from ..model.tolerance import near_zero
+from ..model.wheels import wheel_kinds
+from ..model.wheels.filekeys import toml_string, toml_text
 
 __all__ = ["RobotFileError", "wheel_keys", "load", "loads", "dump"]
 
