@@ -105,7 +105,8 @@ def test_fk_in_wpilib_convention_matches_wpilib(capsys):
     bot = wmr.load(SWERVE)
     kin = SwerveDrive4Kinematics(*[Translation2d(*map(float, p)) for p in bot.mount_points])
     heading, speed = [10.0, 20.0, 30.0, 40.0], [1.0, 1.2, 0.8, 1.1]
-    cs = kin.toChassisSpeeds(tuple(SwerveModuleState(s, Rotation2d.fromDegrees(a)) for a, s in zip(heading, speed)))
+    states = [SwerveModuleState(s, Rotation2d.fromDegrees(a)) for a, s in zip(heading, speed)]
+    cs = kin.toChassisSpeeds((states[0], states[1], states[2], states[3]))
     rates = [s / 0.0508 for s in speed]
     code, out, _ = _run(capsys, "fk", SWERVE, "--angles", *heading, "--rates", *rates, "--convention", "wpilib",
                         "--json")
@@ -131,7 +132,7 @@ def test_draw_robot_arrows_point_where_the_robot_drives():
         tips = [p for p in ax.patches if isinstance(p, FancyArrowPatch) and p.get_facecolor()[:3] == (1.0, 1.0, 1.0)]
         assert len(tips) == 4
         for p in tips:
-            (x0, _), (x1, _) = p._posA_posB                                     # tail, head
+            (x0, _), (x1, _) = p._posA_posB                      # type: ignore[attr-defined]  # tail, head
             assert sign * (x1 - x0) > 0
         plt.close(fig)
 

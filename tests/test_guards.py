@@ -41,8 +41,8 @@ def _cli(*argv, env=None):
                          stderr=subprocess.PIPE, text=True, env=dict(os.environ, **(env or {})))
     out, err = p.communicate(timeout=120)
     usage = resource.getrusage(resource.RUSAGE_CHILDREN)                    # (children waited for so far)
-    *err, peak = err.rstrip("\n").split("\n")
-    return p.returncode, out, "\n".join(err), usage.ru_utime + usage.ru_stime, int(peak) / 1024
+    *lines, peak = err.rstrip("\n").split("\n")
+    return p.returncode, out, "\n".join(lines), usage.ru_utime + usage.ru_stime, int(peak) / 1024
 
 
 @pytest.mark.parametrize("command", [["analyze"], ["ik", "--vx", "1"], ["sweep", "kappa_J"]])
@@ -96,6 +96,7 @@ def test_ctrl_c_prints_the_partial_result():
                           "--progress"], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     try:
         seen = ""
+        assert p.stderr is not None
         while "[" not in seen:                                                 # the progress bar: it is running
             seen += p.stderr.read(1)
             assert p.poll() is None, seen

@@ -173,7 +173,7 @@ def test_counts_come_from_the_data(page):
     assert "§3 1 1 0 0 0 §4 0 0 0 0 1 all 1 1 0 0 1" in part1          # verdicts by section, and the totals
 
 
-def test_only_missed_singular_are_listed(page):
+def test_only_missed_singular_configurations_are_listed(page):
     sect = page.split('id="singular-configurations-the-paper-misses"', 1)[1].split("<h1", 1)[0]
     assert "MISSED-FAMILY" in sect and "LISTED-FAMILY" not in sect
 
