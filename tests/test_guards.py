@@ -3,6 +3,7 @@ get one line naming file, line and key.  Run from outside, as a user would (subp
 import json
 import math
 import os
+import re
 import resource
 import signal
 import subprocess
@@ -60,9 +61,11 @@ def test_ten_thousand_wheels_are_refused_at_once(tmp_path, command):
 
 def test_the_wheel_limit_is_raised_by_its_variable(tmp_path, monkeypatch):
     text = _wheels(120)
-    with pytest.raises(RobotFileError, match="limit of 100"):
+    with pytest.raises(RobotFileError, match="limit of 100") as refused:
         wmr.io.loads(text)
-    monkeypatch.setenv("WMR_MAX_WHEELS", "200")
+    suggested = re.search(r"e\.g\. WMR_MAX_WHEELS=(\d+)\)", str(refused.value))
+    assert suggested and suggested.group(1) == "120"                           # exactly enough
+    monkeypatch.setenv("WMR_MAX_WHEELS", suggested.group(1))
     assert wmr.io.loads(text).w == 120
     monkeypatch.setenv("WMR_MAX_WHEELS", "50")
     with pytest.raises(LimitError, match="WMR_MAX_WHEELS"):
@@ -88,6 +91,21 @@ def test_memory_limit(monkeypatch):
     assert wmr.sweep(bot, "kappa_J", Drivable(3000)).count == 3000
     with pytest.raises(LimitError, match="keep=True"):
         wmr.sweep(bot, "rank_F", Drivable(10 ** 8), keep=True)
+
+
+def test_memory_is_checked_before_the_robot_is_worked_on(monkeypatch):
+    """With the wheel limit raised, the memory limit still refuses before any work on the robot."""
+    from wmr.analysis.sweep import Drivable, motions
+    monkeypatch.setenv("WMR_MAX_WHEELS", "400")
+    bot = wmr.io.loads(_wheels(400))
+    monkeypatch.setenv("WMR_MAX_MEMORY_MB", "1")
+    monkeypatch.setattr(motions, "twist_constraints", None)                    # binding would fail here
+    fixed = wmr.io.loads(_wheels(400, "fixed").replace("radius = 0.05", "radius = 0.05\nangle_deg = 0"))
+    for robot in (bot, fixed):                                                 # steered; fixed (binding works)
+        with pytest.raises(LimitError, match=r"a sweep of kappa_J .* WMR_MAX_MEMORY_MB"):
+            wmr.sweep(robot, "kappa_J", Drivable(1000))
+    with pytest.raises(LimitError, match=r"the kinematics of this robot \(400 wheel units, 400 rates\) needs 7 MB"):
+        wmr.inverse(bot, np.zeros(400), [0.0, 1.0, 0.0])
 
 
 def test_ctrl_c_prints_the_partial_result():

@@ -25,6 +25,7 @@ import numpy as np
 from ..errors import InputValueError
 from ..model import validation as V
 from ..model.backend import NUMERIC
+from ..model.limits import check
 from ..model.platform import cos_sin, rotated
 from ..model.tolerance import TOL
 from ._batch import for_chunks
@@ -94,8 +95,9 @@ def _constants(robot):
     Their pseudo-inverses are remembered by value (:func:`_pinv_rank`), so a call on one
     configuration stays cheap (the simulation makes one per integration stage).
     """
-    J1 = robot.J1(backend=NUMERIC)
     w, n = robot.w, robot.n_rates
+    check("memory_mb", 3 * 8 * 2 * w * n / 2 ** 20, f"the kinematics of this robot ({w} wheel units, {n} rates)")
+    J1 = robot.J1(backend=NUMERIC)
     L, EL, Lp = np.zeros((2 * w, n)), np.zeros((2 * w, n)), np.zeros((n, 2 * w))
     steer = []
     for i, (u, sl) in enumerate(zip(robot.wheels, robot.rate_slices)):

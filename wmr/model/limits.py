@@ -24,6 +24,7 @@ wmr.errors.LimitError: the robot file bot.toml has 10,000 wheel units, more than
 """
 from __future__ import annotations
 
+import math
 import os
 
 from ..errors import InputValueError, LimitError
@@ -90,7 +91,7 @@ def check(name: str, amount: float, what: str) -> None:
         return
     _, env, unit = LIMITS[name]
     if amount < 1e15:
-        shown, wanted = f"{amount:,.0f}", f"{int(amount) + 1}"
+        shown, wanted = f"{amount:,.0f}", f"{math.ceil(amount)}"
     else:                                               # (an int may be beyond a float: its digits)
         digits = str(int(amount))
         shown = wanted = f"{digits[0]}.{digits[1:3]}e+{len(digits) - 1}"

@@ -139,14 +139,14 @@ def sweep(robot, analysis, angles, *, L=None, quantiles=QUANTILES, keep=False, c
     if an.square and robot.n_rates != 3:
         raise InputValueError(f"analysis 'det_J' needs a square J (n_rates = 3), got n_rates = {robot.n_rates} "
                          f"for {robot!r}; use 'kappa_J' for a non-square J")
-    L = J_length(robot, L) if an.uses_L else None
     w = robot.w
-    source = angles.bind(robot) if isinstance(angles, Drivable) else as_source(angles, w)
+    source = angles if isinstance(angles, Drivable) else as_source(angles, w)
     qs = tuple(float(V.real("quantiles", q)) for q in np.atleast_1d(np.asarray(quantiles, dtype=object)))
     if any(not 0.0 <= q <= 1.0 for q in qs):
         raise InputValueError(f"quantiles must lie in [0, 1], got {list(quantiles)}")
     chunk = count("chunk", chunk)
-    if isinstance(source, (Sample, Motions)):
+    blocks = isinstance(source, (Sample, Drivable))
+    if blocks:
         chunk = -(-chunk // BLOCK) * BLOCK
     if progress is not None and not callable(progress):
         raise InputTypeError(f"progress must be callable as progress(done, total), got {progress!r}")
@@ -154,9 +154,12 @@ def sweep(robot, analysis, angles, *, L=None, quantiles=QUANTILES, keep=False, c
         raise InputTypeError(f"client must be a dask.distributed.Client, got {client!r}")
     keep = bool(keep)
 
-    total = source.size(w)
+    total = source.size(w)                        # the limits, before any work on the robot
     check("configurations", total, "this sweep")
-    chunk = _fit_memory(chunk, total, robot, analysis, keep, isinstance(source, (Sample, Motions)))
+    chunk = _fit_memory(chunk, total, robot, analysis, keep, blocks)
+    if isinstance(source, Drivable):
+        source = source.bind(robot)
+    L = J_length(robot, L) if an.uses_L else None
     bounds = ((a, min(a + chunk, total)) for a in range(0, total, chunk))
     run = _run_local if client is None else _run_dask
     with _Interrupt(interruptible) as stop:
