@@ -83,18 +83,25 @@ class _Lines:
     def __init__(self, text):
         self.top: dict[str, int] = {}
         self.wheels: list[tuple[int, dict[str, int]]] = []          # [(header line, {key: line})]
-        where = self.top
+        self.owner: list[int | None] = [None]                       # line -> its wheel table (0-based) or None
+        where, wheel = self.top, None
         for n, line in enumerate(text.splitlines(), 1):
             if _WHEEL_HEADER.match(line):
                 self.wheels.append((n, {}))
-                where = self.wheels[-1][1]
+                where, wheel = self.wheels[-1][1], len(self.wheels) - 1
             elif _HEADER.match(line):
-                where = {}
+                where, wheel = {}, None
             else:
                 m = _KEY.match(line)
                 if m:
                     where.setdefault(m.group(1).strip("\"'"), n)
+            self.owner.append(wheel)
         self.end = max(1, len(text.splitlines()))
+
+    def key_at(self, line, key):
+        """``key`` as it is named in messages when it is on ``line``: ``wheel[k].key`` inside a wheel table."""
+        k = self.owner[line] if 0 < line < len(self.owner) else None
+        return key if k is None else f"wheel[{k + 1}].{key}"
 
     def of(self, k=None, key=None):
         """Line of ``key`` in wheel ``k`` (0-based; None: top level), else of the wheel's table, else 1."""
@@ -230,7 +237,8 @@ def loads(text, source="<string>"):
         head = re.sub(r"\s*\(at .*\)$", "", msg) + (" (a key given twice?)" if "overwrite" in msg else "")
         where = f" at column {m.group(2)}" if m else " at the end of the file"
         at = _KEY.match(text.splitlines()[line - 1]) if text.splitlines() else None
-        fail(line, at.group(1).strip("\"'") if at else "syntax", f"TOML syntax error: {head.lower()}{where}")
+        key = lines.key_at(line, at.group(1).strip("\"'")) if at else "syntax"
+        fail(line, key, f"TOML syntax error: {head.lower()}{where}")
     assert data is not None
     for key in data:
         if key not in _TOP_KEYS:
