@@ -3,7 +3,10 @@ from __future__ import annotations
 
 import argparse
 
-__all__ = ["add_convention", "twist_words"]
+__all__ = ["ROBOT_FILE", "add_convention", "twist_words"]
+
+#: the help of every command's ``robot`` argument (the formats of :func:`wmr.io.load`)
+ROBOT_FILE = "robot file: TOML (.toml), URDF (.urdf, .xml) or ROS 2 controller parameters (.yaml, .yml)"
 
 
 def add_convention(parser: argparse.ArgumentParser) -> None:

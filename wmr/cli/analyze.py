@@ -20,6 +20,8 @@ import math
 
 import numpy as np
 
+from ._options import ROBOT_FILE
+
 __all__ = ["HELP", "add_arguments", "run", "as_json", "table", "notes"]
 
 HELP = "class, actuated mobility, limitations, mobility (rank F), isotropy and singular configurations of a robot"
@@ -39,7 +41,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     """
     from ..analysis.overview import GRID_SIZE, TWISTS
     from ._options import add_convention
-    parser.add_argument("robot", help="robot file (TOML)")
+    parser.add_argument("robot", help=ROBOT_FILE)
     parser.add_argument("--wheel-joints", metavar="NAMES", help="URDF only: the wheel joints, NAME[=RADIUS],...")
     parser.add_argument("--json", action="store_true", help="print JSON instead of a table")
     parser.add_argument("--grid", type=int, default=GRID_SIZE, metavar="N",

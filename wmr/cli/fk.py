@@ -27,7 +27,7 @@ import math
 import numpy as np
 
 from ._numbers import clean, fmt, number, numbers
-from ._options import add_convention, twist_words
+from ._options import ROBOT_FILE, add_convention, twist_words
 
 __all__ = ["HELP", "add_arguments", "run", "ENCODER_COUNTS", "PERIOD", "default_slip_tolerance"]
 
@@ -51,7 +51,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     -------
     None
     """
-    parser.add_argument("robot", help="robot file (TOML)")
+    parser.add_argument("robot", help=ROBOT_FILE)
     parser.add_argument("--angles", nargs="+", metavar="DEG", required=True,
                         help="steering angles in degrees, one per unit (space- or comma-separated), in the "
                              "convention chosen")

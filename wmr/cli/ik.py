@@ -30,7 +30,7 @@ import math
 import numpy as np
 
 from ._numbers import clean, fmt, number, numbers
-from ._options import add_convention, twist_words
+from ._options import ROBOT_FILE, add_convention, twist_words
 
 __all__ = ["HELP", "add_arguments", "run"]
 
@@ -49,7 +49,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     -------
     None
     """
-    parser.add_argument("robot", help="robot file (TOML)")
+    parser.add_argument("robot", help=ROBOT_FILE)
     parser.add_argument("--vx", default="0", help="velocity of C along the body x axis (forward), m/s (default 0)")
     parser.add_argument("--vy", default="0", help="velocity of C along the body y axis (left), m/s (default 0)")
     parser.add_argument("--omega", default="0", help="turning rate, rad/s, counter-clockwise (default 0)")

@@ -31,7 +31,7 @@ import sys
 import time
 
 from ..errors import InputValueError
-from ._options import add_convention
+from ._options import ROBOT_FILE, add_convention
 
 HELP = ("evaluate rank F, mobility, actuated mobility, det J or a condition number over the drivable "
         "configurations (or all)")
@@ -50,7 +50,7 @@ def add_arguments(parser):
     None
     """
     from ..analysis.sweep import ANALYSES, CHUNK, QUANTILES
-    parser.add_argument("robot", help="robot file (TOML)")
+    parser.add_argument("robot", help=ROBOT_FILE)
     parser.add_argument("analysis", choices=sorted(ANALYSES), help="what to evaluate at each configuration")
     parser.add_argument("--angles", choices=("drivable", "any"), default=None,
                         help="drivable: the steering angles of sampled twists, where the robot can move (the "
