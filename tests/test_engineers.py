@@ -124,6 +124,15 @@ def test_mecanum_x_omni_advice_is_not_advised():
     assert omni[0].before["kappa_J2"] == pytest.approx(1 + np.sqrt(2))          # sqrt((1 + cos g) / (1 - cos g))
 
 
+def test_advice_that_gains_nothing_by_itself_says_so():
+    """AGV: equal radii alone leave kappa(J2) = 2.5 (the castors' blocks stay unequal); with d = r as well, 1."""
+    tips, _ = advice(_load("agv_two_steer"))
+    radius, both = [t for t in tips if "the radius" in t.text], [t for t in tips if "both changes" in t.text]
+    assert len(radius) == 1 and radius[0].text.endswith("no gain by itself") and not radius[0].advised
+    assert radius[0].after["kappa_J2"] == pytest.approx(radius[0].before["kappa_J2"]) == pytest.approx(2.5)
+    assert len(both) == 1 and both[0].advised and both[0].after["kappa_J2"] == pytest.approx(1.0)
+
+
 def test_castors_are_passive_by_default_in_files_and_rollers_are_passive():
     bot = _load("diff_drive_castors")
     assert driven_columns(bot).tolist() == [True, True, False, False, False, False]

@@ -54,7 +54,8 @@ class Advice:
     text : str
         The suggestion with the numbers that result (one sentence).
     advised : bool
-        False when the change would cost a motion (another class or a lower actuated mobility).
+        False when the change would cost a motion (another class or a lower actuated mobility) or, on
+        J2, would not lower its condition number.
     before : dict
         :func:`profile` of the robot.
     after : dict
@@ -217,8 +218,10 @@ def _change(robot, before, units, what):
     changed = _rebuilt(robot, units)
     after = profile(changed)
     lost = _lost(robot, changed, before, after)
-    text = f"J2: {what}: then kappa(J2) = {_g(after['kappa_J2'])} (now {_g(before['kappa_J2'])}){lost}"
-    return Advice("J2", text, not lost, before, after)
+    gain = after["kappa_J2"] < before["kappa_J2"] * (1 - TOL)
+    text = (f"J2: {what}: then kappa(J2) = {_g(after['kappa_J2'])} (now {_g(before['kappa_J2'])})"
+            f"{lost or ('' if gain else ': no gain by itself')}")
+    return Advice("J2", text, gain and not lost, before, after)
 
 
 def advice(robot, before=None) -> tuple[list[Advice], dict]:
