@@ -208,8 +208,10 @@ def citation(root=None):
         authors = " and ".join(n for n in names if n) or authors
         lic = str(meta.get("license", lic))
         version = str(meta.get("version", version))
-    bib = (f"@software{{wmr_edition,\n  title   = {{{title}}},\n  author  = {{{{{authors}}}}},\n"
-           f"  version = {{{version}}},\n  license = {{{lic}}},\n  note    = {{{name}; cite the commit printed on the "
-           "title page}\n}")
+    import textwrap
+    wrapped = "\n".join(textwrap.wrap(title, 72, subsequent_indent=" " * 13))
+    bib = (f"@software{{wmr_edition,\n  title   = {{{wrapped}}},\n  author  = {{{{{authors}}}}},\n"
+           f"  version = {{{version}}},\n  license = {{{lic}}},\n  note    = {{{name}; cite the commit printed on\n"
+           "             the title page}\n}")
     return {"name": name, "version": version, "licence": lic, "title": title, "authors": authors, "cff": cff,
             "bibtex": bib}
