@@ -138,7 +138,7 @@ def test_tagged_cells_and_program_output_are_dropped(page):
 
 def test_figure_cell_becomes_a_link_and_the_figure_is_shown_once(page):
     assert base64.b64encode(FIG_PNG).decode() not in page, "the chapter still embeds its figure"
-    assert 'href="#figure-fig07"' in page and "shown once, in the figures of Part I, with the paper" in page
+    assert 'href="#figure-fig07"' in page and "printed in the figures of Part I, with the paper" in page
     block = re.findall(r'<figure class="wmr-figure" id="figure-fig07">(.*?)</figure>', page, re.DOTALL)
     assert len(block) == 1
     assert "PAPER-CAPTION-7" in block[0] and "OUR-CAPTION-fig07" in block[0], "the paper's caption beside ours"

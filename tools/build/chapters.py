@@ -54,11 +54,11 @@ def _output(o) -> dict | None:
 
 def _figure_link(keys: list[str], figures: dict[str, dict[str, Any]]) -> str:
     """The line that replaces a figure cell of a chapter: a link to where the report shows it."""
-    return "*" + " ".join(f"[{f['label'] or f['title']}](#figure-{f['key']}): shown once, in "
+    return "*" + " ".join(f"This computation draws [{f['label'] or f['title']}](#figure-{f['key']}), printed in "
                           + FRONT_MATTER_FIGURES.get(f["key"], "the figures of Part I")
                           + (", with the paper's caption beside the computed one" if f["paper_caption"] else "") + "."
                           for f in (figures[k] for k in keys)) + "*" if keys else \
-        "*The figure computed here is shown once, in the [figures](#figures) of Part I.*"
+        "*The figure this computation draws is printed with the [figures](#figures) of Part I.*"
 
 
 def chapter_cells(nb, figures: dict[str, dict[str, Any]]) -> list:
