@@ -209,7 +209,7 @@ def citation(root=None):
         lic = str(meta.get("license", lic))
         version = str(meta.get("version", version))
     import textwrap
-    wrapped = "\n".join(textwrap.wrap(title, 72, subsequent_indent=" " * 13))
+    wrapped = "\n".join(textwrap.wrap(title, 58, subsequent_indent=" " * 13))
     bib = (f"@software{{wmr_edition,\n  title   = {{{wrapped}}},\n  author  = {{{{{authors}}}}},\n"
            f"  version = {{{version}}},\n  license = {{{lic}}},\n  note    = {{{name}; cite the commit printed on\n"
            "             the title page}\n}")
