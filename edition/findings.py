@@ -80,7 +80,7 @@ def locked_drive(robots=200, per=10, seed=None):
     conc = int(rank(locked_system(bot, concurrent_angles(bot, u))))
     jams = bool(d.proven) and d.ranks == {6} and generic == [6]
     text = claim("drift")
-    row = dict.fromkeys(COLUMNS, "")
+    row: dict[str, object] = dict.fromkeys(COLUMNS, "")
     row.update(
         id="drift", kind="claim", section=text.section, verdict="wrong" if jams else "ok", printed=text.text,
         corrected=(r"With the drives locked ($\dot\theta_i = 0$) three offset wheels can be steered only while their "
@@ -175,7 +175,7 @@ def _package():
     for name in DISTRIBUTIONS[:2]:
         if v := _version(name):
             meta = md.metadata(name)
-            lic = meta.get("License-Expression") or meta.get("License") or ""
+            lic = (meta.get_all("License-Expression") or meta.get_all("License") or [""])[0]
             return name, v, lic
     return "wmr", "", ""
 
@@ -200,7 +200,7 @@ def citation(root=None):
     path = Path(root if root is not None else Path(__file__).resolve().parents[1]) / "CITATION.cff"
     cff = path.exists()
     if cff:
-        import yaml
+        import yaml  # type: ignore[import-untyped]
         meta = yaml.safe_load(path.read_text(encoding="utf-8")) or {}
         title = " ".join(str(meta.get("title", title)).split())
         names = [a.get("name") or " ".join(filter(None, (a.get("given-names"), a.get("family-names"))))

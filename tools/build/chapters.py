@@ -117,8 +117,8 @@ def title(nb) -> dict[str, str]:
     """The title block from the findings chapter's cell tagged ``title`` (its Markdown, or the Markdown it
     displays): the heading, the line under it, the edition's line (version, licence); and the paper's full
     reference, the entry by Leow under its heading ``# References``."""
-    c = next((c for c in nb.cells if "title" in c.get("metadata", {}).get("tags", [])), {"source": ""})
-    head = c["source"] if c.get("cell_type") != "code" else "".join(o.get("data", {}).get("text/markdown", "") for o in c.outputs)
+    c: Any = next((c for c in nb.cells if "title" in c.get("metadata", {}).get("tags", [])), {"source": ""})
+    head = c["source"] if c.get("cell_type") != "code" else "".join(o.get("data", {}).get("text/markdown", "") for o in c.get("outputs", []))
     lines = [l.strip().strip("*") for l in head.strip().splitlines() if l.strip()] + ["", "", ""]
     refs = next((c.source for c in nb.cells if c.cell_type == "markdown" and c.source.startswith("# References")), "")
     paper = re.search(r"^(?:1\.|-)\s+(Y\. P\. Leow.+?)(?:\n\d+\.|\n-|\n\n|\Z)", refs, re.MULTILINE | re.DOTALL)
