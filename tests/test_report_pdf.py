@@ -114,17 +114,25 @@ def tex_titles(tex: str) -> list[str]:
     return out
 
 
+#: the paper numbers its figures 1-14: this edition's own must not reuse those numbers (E1, E2, ...)
+PAPER_FIGURES = 14
+
+
 def uncaptioned_figures(tex: str) -> list[str]:
     """Images of the report's LaTeX that have no numbered caption: a figure environment needs a title
-    ``Figure <number>.``; a chapter's image, a caption starting ``Figure <number>`` right after it."""
+    ``Figure <number>.``; a chapter's image, a caption starting ``Figure <number>`` right after it, with a
+    number that is not one of the paper's (``Figure 8.1`` would be read as part of the paper's Fig. 8)."""
     bad = []
     for m in re.finditer(r"\\begin\{wmrfigure\}\{([^}]*)\}(.*?)\\end\{wmrfigure\}", tex, re.DOTALL):
         if not re.search(r"\\wmrfigtitle\{\\textbf\{Figure [A-Z]?\d+\.\}", m.group(2)):
             bad.append(m.group(1))
     for m in re.finditer(r"\\wmrimage\{([^}]*)\}", tex):
         after = re.sub(r"\\[a-z]+\{|[{}\s]", " ", tex[m.end():m.end() + 400]).split()
-        if not (after[:1] == ["Figure"] and len(after) > 1 and re.match(r"[A-Z]?\d+(\.\d+)?\.?", after[1])):
+        number = re.match(r"([A-Z]?)(\d+)", after[1]) if after[:1] == ["Figure"] and len(after) > 1 else None
+        if not number:
             bad.append(m.group(1))
+        elif not number.group(1) and int(number.group(2)) <= PAPER_FIGURES:
+            bad.append(f"{m.group(1)} (Figure {after[1]} clashes with the paper's Figure {number.group(2)})")
     return bad
 
 
@@ -139,8 +147,10 @@ def test_the_rules_can_fail():
     assert not slugs_named("the dead-zone circle and the dead zone", ["dead-zone"])
     pages = ["Errata    head\nErrata\ntext", "Errata    head\ntext\nClaims\nmore", "Errata    head\nmore"]
     assert running_heads(pages, ["Errata", "Claims"]) == ["p. 3: head 'Errata', opens with 'Claims'"]
-    tex = r"\begin{wmrfigure}{figure-x}\wmrfigtitle{\textbf{Conventions.}}\end{wmrfigure} \wmrimage{a.png} text"
-    assert uncaptioned_figures(tex) == ["figure-x", "a.png"]
+    tex = (r"\begin{wmrfigure}{figure-x}\wmrfigtitle{\textbf{Conventions.}}\end{wmrfigure} \wmrimage{a.png} text"
+           r" \wmrimage{b.png} \emph{Figure 8.1. A plot.} \wmrimage{c.png} \emph{Figure D1. A plot.}")
+    assert uncaptioned_figures(tex) == ["figure-x", "a.png",
+                                        "b.png (Figure 8.1. clashes with the paper's Figure 8)"]
 
 
 # ----------------------------------------------------------------------------- the report
