@@ -228,10 +228,11 @@ def test_a_missing_answer_is_not_an_error(check):
 
 
 def test_offset_other_side_tells_the_sides_apart():
-    from edition.checks.wheels import disk_velocity, k, planar
-    disk = disk_velocity(S.theta_dot_i)
-    right = planar(disk.h_dot + (S.phi_dot_i * k).cross(-S.d * disk.j3))
-    printed_side = planar(disk.h_dot + (S.phi_dot_i * k).cross(S.d * disk.j3))
+    from edition.checks.wheels import k, planar
+    from edition.derivations import derived
+    d = derived("01_platform_and_wheels")
+    right = planar(d["h_dot"] + (S.phi_dot_i * k).cross(-S.d * d["j_i"]))
+    printed_side = planar(d["p_dot_9"])
     assert X.offset_other_side(right)
     assert "That is (9) itself" in X.offset_other_side(printed_side).message
     assert "rolling term" in X.offset_other_side(right + sp.Matrix([S.r * S.theta_dot_i, 0])).message

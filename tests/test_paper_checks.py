@@ -10,6 +10,7 @@ import sympy as sp
 
 from edition import symbols as S
 from edition.checks import assembly, centred, dual, isotropy, steering, wheels
+from edition.derivations import derived
 from edition.ledger import Ledger, grade
 from edition.transcription import printed, table
 
@@ -40,7 +41,8 @@ def test_a_corrected_transcription_regrades_typo_42_to_ok(transcribe):
 
 def test_a_corrected_transcription_regrades_wrong_15_to_ok(transcribe):
     transcribe(15, sp.Eq(S.beta_dot_i, -S.r / (2 * S.b) * (S.theta_dot_i1 - S.theta_dot_i2) - S.psi_dot))
-    assert verdicts(wheels.dual_steering(n=20))["15"] == "ok"
+    d = derived("01_platform_and_wheels")
+    assert verdicts(wheels.dual_steering(d["phi_dot"], d["rigid"], d["i_i"], n=20))["15"] == "ok"
 
 
 def test_a_corrected_transcription_regrades_59_to_ok(transcribe):
@@ -58,7 +60,8 @@ def test_a_corrected_transcription_regrades_60_to_ok(transcribe):
 
 @pytest.mark.parametrize("id, expr, check", [
     (63, lambda p: -p.expr, lambda: steering.instant_centre(n=20)),
-    (6, lambda p: sp.Eq(p.expr.lhs, -p.expr.rhs, evaluate=False), wheels.rolling_disk),
+    (6, lambda p: sp.Eq(p.expr.lhs, -p.expr.rhs, evaluate=False),
+     lambda: wheels.rolling_disk(*(derived("01_platform_and_wheels")[x] for x in ("h_dot", "i_i", "j_i")))),
     (38, None, None),
 ])
 def test_a_broken_transcription_of_a_true_equation_fails_loudly(transcribe, id, expr, check):
@@ -77,7 +80,8 @@ def test_a_broken_transcription_of_a_true_equation_fails_loudly(transcribe, id, 
 
 
 def test_every_row_names_what_it_proved():
-    for d in (wheels.platform_point(n=10), assembly.functional_matrix(), isotropy.J2_product()):
+    ch1 = derived("01_platform_and_wheels")
+    for d in (wheels.platform_point(ch1["p_dot"], n=10), assembly.functional_matrix(), isotropy.J2_product()):
         for f in d.findings:
             assert f.check.startswith("printed form proven" if f.printed_holds else "printed form refuted")
 

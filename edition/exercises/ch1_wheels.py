@@ -10,7 +10,7 @@ import sympy as sp
 from wmr.analysis.kinematics import inverse
 from wmr.model.robots import paper_robot
 from wmr.model.tolerance import TOL
-from wmr.model.wheels import DualWheel
+from wmr.model.wheels import DualWheel, OffsetWheel
 
 from .. import symbols as S
 from ..verify import symbolic_equal
@@ -33,16 +33,14 @@ def offset_other_side(answer):
     -------
     Feedback
     """
-    from ..checks.wheels import disk_velocity, k, planar
     M, fb = as_matrix(answer, (2, 1), r"the 2-vector $\dot{\mathbf p}_i$")
     if fb is not None:
         return fb
-    disk = disk_velocity(S.theta_dot_i)
-    truth = planar(disk.h_dot + (S.phi_dot_i * k).cross(-S.d * disk.j3))       # P - H = -d j
+    printed_side = _offset_velocity()                  # the model's (9): the centre at P - d j
+    truth = printed_side.subs(S.d, -S.d)               # the centre at P + d j
     if symbolic_equal(M, truth):
         return Feedback(True, r"With the centre ahead of the steering axis the steering term changes sign: "
                               r"$\dot{\mathbf p}_i = -r\dot\theta_i\mathbf j_i + d\dot\phi_i\mathbf i_i$.")
-    printed_side = planar(disk.h_dot + (S.phi_dot_i * k).cross(S.d * disk.j3))
     if symbolic_equal(M, printed_side):
         return Feedback(False, r"That is (9) itself, the centre at $P_i - d\,\mathbf j_i$. Here "
                                r"$P_i - H_i = -d\,\mathbf j_i$: redo the cross product "
@@ -53,6 +51,12 @@ def offset_other_side(answer):
                            r"with $\dot{\mathbf h}_i$ from (6) and $P_i - H_i = -d\,\mathbf j_i$; your answer differs "
                            r"by "
                            f"${sp.latex(sp.simplify(M - truth))}$.")
+
+
+def _offset_velocity():
+    r"""The model's velocity of :math:`P_i` of an offset wheel in fixed components (``OffsetWheel.block`` with the
+    platform at :math:`\psi = 0`, so that :math:`\beta_i = \phi_i`), in the symbols of the chapter."""
+    return OffsetWheel((0, 0), r=S.r, d=S.d).block(S.phi_i) * sp.Matrix([S.phi_dot_i, S.theta_dot_i])
 
 
 def dual_counterexample(beta, twist, robot=None):
