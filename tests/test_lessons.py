@@ -252,12 +252,13 @@ def test_dual_exercises():
 
 def test_chapter_2_exercises():
     from edition import printed
-    from edition.checks.assembly import concurrent_angles, drift_of_c
+    from edition.checks.assembly import concurrent_angles
+    from edition.derivations import derived
     bot = wmr.paper_robot("offset", L=0.3, r=0.1, d=0.05)
     assert X.locked_steering(concurrent_angles(bot, (0.2, -0.1)))
     assert "parallel" in X.locked_steering([0.3, 0.3, 0.3]).message
     assert "jams" in X.locked_steering([0.1, 0.7, -1.2]).message
-    assert X.drift_of_c_general(drift_of_c(n=1).c_dot)
+    assert X.drift_of_c_general(derived("02_offset_wheels_and_mobility")["c_dot"])
     assert "printed (28)" in X.drift_of_c_general(printed(28).expr.rhs).message
 
 

@@ -81,15 +81,19 @@ def test_a_broken_transcription_of_a_true_equation_fails_loudly(transcribe, id, 
 
 def test_every_row_names_what_it_proved():
     ch1 = derived("01_platform_and_wheels")
-    for d in (wheels.platform_point(ch1["p_dot"], n=10), assembly.functional_matrix(), isotropy.J2_product()):
+    ch2 = derived("02_offset_wheels_and_mobility")
+    for d in (wheels.platform_point(ch1["p_dot"], n=10), assembly.functional_matrix(*(ch2[x] for x in "F q_dot J1 J2".split())),
+              isotropy.J2_product()):
         for f in d.findings:
             assert f.check.startswith("printed form proven" if f.printed_holds else "printed form refuted")
 
 
 # ----------------------------------------------------------------------------------------------- claims
 def test_drift_is_a_conditional_that_holds_and_records_rows_28_29():
-    c, p = assembly.drift_of_c(n=5), assembly.drift_of_psi(n=5)
-    f = assembly.drift(c["28"], p["29"], assembly.locked_steering(robots=5, per=2))["drift"]
+    ch2 = derived("02_offset_wheels_and_mobility")
+    c, p = assembly.drift_of_c(ch2["c_dot"], n=5), assembly.drift_of_psi(*(ch2[x] for x in "a b c J1".split()), n=5)
+    locked = assembly.locked_steering(ch2["det_M"], ch2["plucker"], robots=5, per=2)
+    f = assembly.drift(c["28"], p["29"], locked, ch2["J2"])["drift"]
     assert grade(f) == "ok" and f.residual == max(c["28"].residual, p["29"].residual)
     assert r"\det\mathbf J_2 = d^3r^3" in f.check and "free steering" in f.note
 

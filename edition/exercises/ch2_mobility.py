@@ -11,6 +11,7 @@ from wmr.analysis.linalg import rank
 from wmr.model.robots import paper_robot
 from wmr.model.tolerance import TOL
 
+from .. import symbols as S
 from ..verify import symbolic_equal
 from .feedback import Feedback, as_matrix, missing
 
@@ -68,12 +69,16 @@ def drift_of_c_general(answer):
     -------
     Feedback
     """
-    from ..checks.assembly import drift_of_c
+    from ..checks.assembly import general_robot
     from ..transcription import printed
     M, fb = as_matrix(answer, (2, 1), r"the 2-vector $\dot{\mathbf c}$")
     if fb is not None:
         return fb
-    truth = drift_of_c(n=1).c_dot
+    bot = general_robot()                                       # the library's J1, J2 (not the chapter's)
+    locked = (bot.J1() * sp.Matrix(bot.twist_symbols) - bot.J2() * sp.Matrix(bot.rate_symbols)).subs(
+        {x: 0 for x in S.theta_dot})
+    sol = sp.solve(list(sum((locked[2 * k:2 * k + 2, :] for k in range(3)), sp.zeros(2, 1))), [S.x_dot, S.y_dot])
+    truth = sp.Matrix([sol[S.x_dot], sol[S.y_dot]])
     if symbolic_equal(M, truth):
         return Feedback(True, r"$\dot{\mathbf c} = \frac d3\sum_i\mathbf R_{bwi}[-\dot\phi_i\ \ 0]^{\mathrm T} - "
                               r"\frac{\dot\psi}{3}\mathbf E\sum_i\mathbf d_i$: the printed (28) is the case "
