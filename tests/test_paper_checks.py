@@ -28,15 +28,25 @@ def transcribe(monkeypatch):
     return set_
 
 
+def ch3_j2_product():
+    d = derived("03_kinetostatic_isotropy")
+    return isotropy.J2_product(d["JJ"], d["ptilde"], d["ptilde2"])
+
+
+def ch3_placement(n):
+    d = derived("03_kinetostatic_isotropy")
+    return isotropy.placement(d["pts"], d["G_ce"], d["L2"], n=n)
+
+
 def verdicts(derivation):
     return {f.id: grade(f) for f in derivation.findings}
 
 
 # ----------------------------------------------------------------------------------------------- re-grading
 def test_a_corrected_transcription_regrades_typo_42_to_ok(transcribe):
-    assert verdicts(isotropy.J2_product())["42"] == "typo"
+    assert verdicts(ch3_j2_product())["42"] == "typo"
     transcribe(42, sp.Eq(S.ptilde2, sp.diag(S.d**2, S.r**2), evaluate=False))
-    assert verdicts(isotropy.J2_product())["42"] == "ok"
+    assert verdicts(ch3_j2_product())["42"] == "ok"
 
 
 def test_a_corrected_transcription_regrades_wrong_15_to_ok(transcribe):
@@ -67,9 +77,9 @@ def test_a_corrected_transcription_regrades_60_to_ok(transcribe):
 def test_a_broken_transcription_of_a_true_equation_fails_loudly(transcribe, id, expr, check):
     if id == 38:          # (38) is judged wrong: transcribing the corrected condition re-grades it
         mean = sum((sp.Matrix(p).T * sp.Matrix(p))[0] for p in S.D) / 3
-        assert verdicts(isotropy.placement(n=10))["38"] == "wrong"
+        assert verdicts(ch3_placement(10))["38"] == "wrong"
         transcribe(38, (sp.Eq(mean, S.L**2),))
-        assert verdicts(isotropy.placement(n=10))["38"] == "ok"
+        assert verdicts(ch3_placement(10))["38"] == "ok"
         return
     transcribe(id, expr(printed(id)))
     derivation = check()
@@ -82,8 +92,8 @@ def test_a_broken_transcription_of_a_true_equation_fails_loudly(transcribe, id, 
 def test_every_row_names_what_it_proved():
     ch1 = derived("01_platform_and_wheels")
     ch2 = derived("02_offset_wheels_and_mobility")
-    for d in (wheels.platform_point(ch1["p_dot"], n=10), assembly.functional_matrix(*(ch2[x] for x in "F q_dot J1 J2".split())),
-              isotropy.J2_product()):
+    matrices = assembly.functional_matrix(*(ch2[x] for x in "F q_dot J1 J2".split()))
+    for d in (wheels.platform_point(ch1["p_dot"], n=10), matrices, ch3_j2_product()):
         for f in d.findings:
             assert f.check.startswith("printed form proven" if f.printed_holds else "printed form refuted")
 
@@ -108,7 +118,9 @@ def test_robust_control_bound_sqrt2_where_the_robot_moves():
 
 
 def test_isotropy_d_zero_records_its_own_simulation():
-    d = isotropy.dead_zone_of_isotropy(pairs=3, n=50)
+    ch3 = derived("03_kinetostatic_isotropy")
+    iso = isotropy.J2_isotropy(*(ch3[x] for x in "U1 frob2 d_sol J2".split()), pairs=3, n=50)
+    d = isotropy.dead_zone_of_isotropy(iso)
     f = d["isotropy-d-zero"]
     assert grade(f) == "ok" and "simulated full steering turn" in f.check
     assert abs(d.radius_min - 0.1) < 1e-6 and abs(d.radius_max - 0.1) < 1e-6 and d.d == 0.1
