@@ -101,7 +101,8 @@ def test_every_row_names_what_it_proved():
 # ----------------------------------------------------------------------------------------------- claims
 def test_drift_is_a_conditional_that_holds_and_records_rows_28_29():
     ch2 = derived("02_offset_wheels_and_mobility")
-    c, p = assembly.drift_of_c(ch2["c_dot"], n=5), assembly.drift_of_psi(*(ch2[x] for x in "a b c J1".split()), n=5)
+    c = assembly.drift_of_c(ch2["c_dot"], n=5)
+    p = assembly.drift_of_psi(ch2["a"], ch2["b"], ch2["c"], ch2["J1"], n=5)
     locked = assembly.locked_steering(ch2["det_M"], ch2["plucker"], robots=5, per=2)
     f = assembly.drift(c["28"], p["29"], locked, ch2["J2"])["drift"]
     assert grade(f) == "ok" and f.residual == max(c["28"].residual, p["29"].residual)
@@ -119,7 +120,7 @@ def test_robust_control_bound_sqrt2_where_the_robot_moves():
 
 def test_isotropy_d_zero_records_its_own_simulation():
     ch3 = derived("03_kinetostatic_isotropy")
-    iso = isotropy.J2_isotropy(*(ch3[x] for x in "U1 frob2 d_sol J2".split()), pairs=3, n=50)
+    iso = isotropy.J2_isotropy(ch3["U1"], ch3["frob2"], ch3["d_sol"], ch3["J2"], pairs=3, n=50)
     d = isotropy.dead_zone_of_isotropy(iso)
     f = d["isotropy-d-zero"]
     assert grade(f) == "ok" and "simulated full steering turn" in f.check
