@@ -326,8 +326,8 @@ def singular_v(thales, angles_deg=(10, 45, 100, 200, 290), n_inside=50, seed=SEE
     Returns
     -------
     Derivation
-        ``on_circle`` (mobilities), ``inside`` (set of mobilities), ``at_C`` (mobility), finding
-        ``singular-v-immobile``.
+        ``on_circle`` (mobilities), ``inside`` (set of mobilities), ``at_C`` (mobility), ``n_inside``,
+        finding ``singular-v-immobile``.
     """
     thales = len(thales) == 3 and all(symbolic_equal(e, 0) for e in thales)
     bot = paper_robot("centred", L=L_NUM, r=R_NUM)
@@ -337,7 +337,8 @@ def singular_v(thales, angles_deg=(10, 45, 100, 200, 290), n_inside=50, seed=SEE
     det_on = float(np.abs(np.linalg.det(bot.J(on, L=L_NUM))).max())
     at_C = int(mobility(bot, planes_through(bot, np.zeros(2))))
     holds = bool(np.all(mob_on == 0))
-    return Derivation(on_circle=mob_on.tolist(), inside=set(mob_in.tolist()), at_C=at_C, findings=[claim(
+    return Derivation(on_circle=mob_on.tolist(), inside=set(mob_in.tolist()), at_C=at_C, n_inside=n_inside,
+                      findings=[claim(
         "singular-v-immobile", holds, r"with $D_P$ on the circle through $P_1, P_2, P_3$, every axle passes through "
         rf"the antipode of $D_P$ (SymPy, Thales); numerically, $D_P$ at {len(angles_deg)} points of the circle gives "
         rf"$\det\mathbf J = 0$ and mobility 1, at {n_inside} random points inside it mobility 0", det_on,
