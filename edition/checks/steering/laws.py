@@ -190,6 +190,6 @@ def rotation_angles(g, beta, g65, beta_true, n=2000, seed=SEED, eps=1e-7):
         why=r"the printed formula gives the angle between $\overrightarrow{CU}$ and $\overrightarrow{P_iU}$; with "
             r"$\beta_i$ measured from the body axis $\mathbf i$ (11) the axle must be parallel to $\mathbf u_i$",
         convention=r"$\beta_i$ measured from the body axis $\mathbf i$ (11); the printed form holds only if $\beta_i$ "
-                   r"is measured from the line CU (U on the positive body $x$-axis), up to the sign that $\arccos$ "
+                   r"is measured from the line CU instead of the body axis, up to the sign that $\arccos$ "
                    r"loses",
         note="the printed form is undefined for a rotation about C, where the corrected rule makes every axle radial")])
