@@ -176,8 +176,8 @@ def test_5_3_the_printed_rule_works_along_the_whole_axis_and_nowhere_else():
         u = np.array([x, 0.0])
         assert inverse(PAPER, printed_65_angles(u, PAPER.mount_points), rotation_twist(u)).admissible
         assert X.printed_65_region(u).passed
-    for u in ([0.7, 0.05], [0.0, 0.7], [-0.5, -0.3]):
-        u = np.array(u)
+    for off in ([0.7, 0.05], [0.0, 0.7], [-0.5, -0.3]):
+        u = np.array(off)
         assert not inverse(PAPER, printed_65_angles(u, PAPER.mount_points), rotation_twist(u)).admissible
         assert not X.printed_65_region(u).passed
 

@@ -119,17 +119,17 @@ def test_chapter_has_exercises_with_checks_and_worked_solutions(path):
                    for c in own), f"{path.name}: no 'your own robot' cell"
         return
     # chapters still in the older convention: the check called in a cell tagged "exercise"
-    call = r"(?:exercises|study)\.(\w+)\("
-    own = {"describe_robot", "describe_design"}
+    called = r"(?:exercises|study)\.(\w+)\("
+    own_names = {"describe_robot", "describe_design"}
     ex = [c for c in cells(path, "code") if "exercise" in tags(c)]
     sol = [c for c in cells(path, "code") if "solution" in tags(c)]
-    checks = {m for c in ex for m in re.findall(call, c.source)} - own
+    checks = {m for c in ex for m in re.findall(called, c.source)} - own_names
     assert len(checks) >= 2, f"{path.name}: exercises {checks}"
-    assert {m for c in sol for m in re.findall(call, c.source)} == checks
-    assert any(any(o in c.source for o in own) or "my_robot" in c.source for c in ex), \
+    assert {m for c in sol for m in re.findall(called, c.source)} == checks
+    assert any(any(o in c.source for o in own_names) or "my_robot" in c.source for c in ex), \
         f"{path.name}: no 'your own robot' cell"
     for c in ex:
-        if re.search(call, c.source) and "my_robot" not in c.source:
+        if re.search(called, c.source) and "my_robot" not in c.source:
             assert "= None" in c.source, f"{path.name}: an exercise template without a placeholder:\n{c.source}"
 
 
