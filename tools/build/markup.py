@@ -110,11 +110,11 @@ class Batch:
         self._out = [self.post(o) for o in out] if self.post else out
 
     def fill(self, text: str) -> str:
-        if self._out is None:
+        if (out := self._out) is None:
             raise RuntimeError("convert() first")
 
         def one(m):                      # inline: without the paragraph around a one-paragraph result
-            s = self._out[int(m.group(1))]
+            s = out[int(m.group(1))]
             if m.group(2) == "b":
                 return s
             p = re.fullmatch(r"<p>(.*)</p>", s.strip(), re.DOTALL) if self.to == "html" else None
