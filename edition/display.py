@@ -30,7 +30,9 @@ __all__ = ["UNDEFINED", "latex", "show", "aligned_sum", "say", "table", "quote",
 RAW_E = re.compile(r"(?<![A-Za-z_\\])[-+]?\d(?:\.\d+)?e[-+]?\d+")
 #: a printed Python container: ``[6]`` (a list of one integer), ``{d3x: 1}`` (a dict), ``{'a', 'b'}`` (a set),
 #: ``array(...)``; a bracket after ``_``, ``^``, ``{`` or a word (an index) or before ``(`` (a link) is not one
-RAW_CONTAINER = re.compile(r"(?<![\w\\^_{])\[-?\d+\](?!\()|(?<!\\)\{\s*['\"]?[A-Za-z_]\w*['\"]?\s*:\s|(?<!\\)\{\s*'[^']*'\s*,|\barray\(")
+RAW_CONTAINER = re.compile(r"(?<![\w\\^_{])\[-?\d+\](?!\()"                   # [6]
+                           r"|(?<!\\)\{\s*['\"]?[A-Za-z_]\w*['\"]?\s*:\s"     # {d3x: 1}
+                           r"|(?<!\\)\{\s*'[^']*'\s*,|\barray\(")              # {'a', 'b'}, array(...)
 
 
 def _display(*objs):
@@ -237,7 +239,7 @@ def quote(id):
 
 # ------------------------------------------------------------------------------------- numbers for readers
 def tex(value, digits=3, scale=1.0, as_bound=False, resolution=RESOLUTION):
-    r"""LaTeX of a computed number for ``$...$``: round-off as ``0`` (or a bound), else ``digits`` digits, no e-notation.
+    r"""LaTeX of a computed number for ``$...$``: round-off as ``0`` (or a bound), else ``digits`` digits.
 
     Parameters
     ----------
