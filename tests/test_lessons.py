@@ -76,7 +76,7 @@ def test_equations_are_quoted_and_verdicts_are_generated(path):
 
 
 def test_exercise_chapters_include_the_design_study():
-    assert [p.name[:2] for p in EXERCISE_CHAPTERS] == ["01", "02", "03", "04", "05", "06", "08", "09"]
+    assert [p.name[:2] for p in EXERCISE_CHAPTERS] == ["01", "02", "03", "04", "05", "06", "08", "09", "10"]
 
 
 def exercise_cells(path):
