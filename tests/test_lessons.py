@@ -82,6 +82,8 @@ def test_exercise_chapters_include_the_design_study():
 @pytest.mark.parametrize("path", EXERCISE_CHAPTERS, ids=lambda p: p.name)
 def test_chapter_has_exercises_with_checks_and_worked_solutions(path):
     # checks live in edition.exercises (chapters 1-6) or edition.design_study (chapter 8, as `study`)
+    if any("check" in tags(c) for c in cells(path)):
+        return _exercises_in_four_cells(path)
     call = r"(?:exercises|study)\.(\w+)\("
     own = {"describe_robot", "describe_design"}
     ex = [c for c in cells(path, "code") if "exercise" in tags(c)]
@@ -94,6 +96,25 @@ def test_chapter_has_exercises_with_checks_and_worked_solutions(path):
     for c in ex:
         if re.search(call, c.source) and "my_robot" not in c.source:
             assert "= None" in c.source, f"{path.name}: an exercise template without a placeholder:\n{c.source}"
+
+
+def _exercises_in_four_cells(path):
+    """The convention of edition.exercises.framework: statement, answer (a None template), solution, check (one
+    call of a registered check with the answer's names), in this order; and a "your own robot" cell."""
+    from edition.exercises.framework import by_name
+    from tools.assignments import assignment, check_call
+    nb = nbformat.read(path, as_version=4)
+    assert assignment(nb, path.stem, lambda name: by_name(name).points) is not None     # order and roles
+    checks = [c for c in nb.cells if "check" in tags(c)]
+    assert len(checks) >= 2, f"{path.name}: {len(checks)} exercises"
+    for c in checks:
+        by_name(check_call(c.source, path.name))
+    for c in nb.cells:
+        if "answer" in tags(c):
+            assert re.fullmatch(r"\w+ = None +# .+", c.source.strip()), f"{path.name}: an answer template:\n{c.source}"
+    own = [c for c in nb.cells
+           if c.cell_type == "code" and tags(c) & {"explore", "exercise"} and "my_robot" in c.source]
+    assert own, f"{path.name}: no 'your own robot' cell"
 
 
 @pytest.mark.parametrize("path", CHAPTERS, ids=lambda p: p.name)
