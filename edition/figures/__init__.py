@@ -143,7 +143,7 @@ def show(key, data=None, *, outdir=None, width=None):
     files = _render(key, data, fig, (*output.formats(mod), "png") if outdir is not None else ("png",))
     if outdir is not None:
         output.write(outdir, key, {f: b for f, b in files.items() if f != "png"}, output.record(key, mod, data))
-    label = f"Figure {mod.NUMBER} (regenerated): " if mod.NUMBER else ""
+    label = f"Figure {mod.NUMBER}" + (" (regenerated)" if mod.NUMBER.isdigit() else "") + ": " if mod.NUMBER else ""
     # alt text: the module's alt(data) when it has one, else the figure's title (what it shows, in words)
     alt = mod.alt(data) if hasattr(mod, "alt") else f"{label}{mod.TITLE}."
     # marked, so that the report shows the figure once, from its files, instead of this picture

@@ -20,7 +20,7 @@ from .common import DEG, L_PAPER, R_CENTRED, drawing, snap
 
 __all__ = ["NUMBER", "TITLE", "PAPER_CAPTION", "ConventionsData", "data", "draw", "caption"]
 
-NUMBER = ""
+NUMBER = "E1"   # this edition's own figures: E1, E2 (the paper's are 1-14)
 TITLE = "Conventions"
 PAPER_CAPTION = ""
 
@@ -128,7 +128,7 @@ def draw(data, fig=None):
                       color=ROLE["fixed_frame"])
         an.label(ax, (0, 0), r"$\mathcal{F}$", offset=(-4, -4), ha="right", va="top", color=ROLE["fixed_frame"])
         g = rd.draw_robot(ax, bot, np.zeros(3), (psi, 1.55, 1.1), frame=False,
-                          label_offsets={"C": (-2, -7), 2: (-12, 6), 1: (-13, 0), 3: (13, 0)})
+                          label_offsets={"C": (-2, -7), 2: (-12, 6), 1: (-13, 0), 3: (13, 0)}, arrows="j")
         an.draw_frame(ax, g.C, psi, 0.6, zorder=8)
         ax.plot(*np.stack([g.C, g.C + [0.9, 0.0]]).T, color=PALETTE["grey"], lw=0.6, ls=(0, (2, 2)))
         an.draw_angle(ax, g.C, 0.82, 0.0, psi, r"$\psi$", text_radius=1.2)
@@ -144,7 +144,7 @@ def draw(data, fig=None):
             ax.plot(*np.stack([P, P + [0.8, 0.0]]).T, color=PALETTE["grey"], lw=0.6, ls=(0, (2, 2)))
             an.label(ax, P + [0.8, 0.0], r"$\mathbf{i}$", offset=(3, 0), ha="left", va="center",
                      color=PALETTE["grey"], fontsize=FONT_SMALL)
-            rd.draw_unit(ax, unit, beta, light=True, zorder=3)
+            rd.draw_unit(ax, unit, beta, light=True, zorder=3, arrows="j")
             an.draw_frame(ax, P, beta, 0.62, labels=(r"$\mathbf{i}_i$", r"$\mathbf{j}_i$"), color=PALETTE["blue"],
                           zorder=7)
             arc = 0.42 if unit is ow else 0.27                 # inside wheel 1 of the dual wheel
@@ -190,7 +190,8 @@ def caption(data):
     return (r"Conventions of the package. (a) Fixed frame $\mathcal{F}$ and body frame $\mathcal{B}$ "
             r"($\mathbf{i}$, $\mathbf{j}$) at the operation point $C$, turned by $\psi$ (counter-clockwise positive, "
             rf"here {data.psi:g}$^\circ$); $\mathbf{{c}}$ locates $C$ in $\mathcal{{F}}$ and "
-            r"$\mathbf{d}_i = \overrightarrow{CP_i}$ is resolved in $\mathcal{B}$; the paper's numbering "
+            r"$\mathbf{d}_i = \overrightarrow{CP_i}$ is resolved in $\mathcal{B}$; the numbering inferred from (59) (the "
+            r"paper does not state it; the only one of 24 for which (59) holds) "
             + ", ".join(rf"$\mathbf{{d}}_{k + 1} = {_exact(p)}$" for k, p in enumerate(data.mount_points)) + ". "
             rf"(b) Offset wheel: the intermediate body turns by $\beta_i$ (here {data.beta:g}$^\circ$) from "
             r"$\mathbf{i}$ to the axle $\mathbf{i}_i$; $\mathbf{j}_i$ is the rolling direction (arrows on the wheels) "
