@@ -35,6 +35,9 @@ FINDINGS := $(NB)/findings.ipynb
 CHAPTERS := $(filter-out $(FINDINGS),$(sort $(wildcard $(NB)/*.ipynb)))
 LESSONS  := $(sort $(wildcard $(NB)/[0-9][0-9]_*.ipynb))
 EXECUTED := $(CHAPTERS:$(NB)/%=$(B)/notebooks/%)
+# chapters beyond the paper: lessons (executed, student edition, assignments), not chapters of the paper's report
+BEYOND   := $(wildcard $(NB)/10_robot_classes.ipynb)
+REPORTED := $(filter-out $(BEYOND:$(NB)/%=$(B)/notebooks/%),$(EXECUTED))
 STUDENT  := $(LESSONS:$(NB)/%=$(B)/student/%)
 STUDENT_RUN := $(LESSONS:$(NB)/%=$(B)/student-run/notebooks/%)
 FIGURES  := $(wildcard $(WMR_ROOT)/figures/*)
@@ -155,8 +158,8 @@ $(B)/commit: FORCE
 	[ -z "$${SOURCE_DATE_EPOCH:-}" ] || c="$${c% *} $$SOURCE_DATE_EPOCH"; \
 	c="$$c$${d:+ +}"; [ "$$c" = "$$(cat $@ 2>/dev/null)" ] || echo "$$c" > $@
 
-$(B)/report.ipynb: $(B)/notebooks/findings.ipynb $(EXECUTED) $(B)/commit $(FIGURES) $(TOOL)
-	@$(BUILD) assemble $@ $(B)/commit $(WMR_ROOT)/figures $(B)/notebooks/findings.ipynb $(EXECUTED)
+$(B)/report.ipynb: $(B)/notebooks/findings.ipynb $(REPORTED) $(B)/commit $(FIGURES) $(TOOL)
+	@$(BUILD) assemble $@ $(B)/commit $(WMR_ROOT)/figures $(B)/notebooks/findings.ipynb $(REPORTED)
 
 $(B)/report.html: $(B)/report.ipynb $(TEMPLATES)
 	@$(BUILD) html $< $@
