@@ -16,6 +16,7 @@ Examples
 >>> int(wmr.mobility(bot, beta))
 1
 """
+from ._version import __version__ as __version__  # one source: wmr/_version.py
 from .model import conventions
 from .model.backend import NUMERIC, SYMBOLIC
 from .analysis.classes import campion_class
@@ -43,4 +44,3 @@ __all__ = [
     "simulate", "sweep", "campion_class", "TOL", "NUMERIC", "SYMBOLIC", "conventions", "load", "dump",
     "swerve",
 ]
-__version__ = "0.1.0"

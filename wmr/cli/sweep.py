@@ -108,7 +108,8 @@ def _client(spec):
     try:
         from dask.distributed import Client, LocalCluster
     except ImportError:
-        raise ValueError("--dask needs dask and distributed: pip install 'wmr[dask]'") from None
+        from .._version import DISTRIBUTION
+        raise ValueError(f"--dask needs dask and distributed: pip install '{DISTRIBUTION}[dask]'") from None
     if spec.startswith("local"):
         n = _number(spec.partition(":")[2] or "2", "dask local:N")
         cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True, dashboard_address=":0")
