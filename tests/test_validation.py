@@ -1,5 +1,5 @@
 """Input checks (wmr.model.validation), the numerical-zero policy (wmr.model.tolerance), the thread chunking
-(wmr.analysis._batch) and the comparison helpers (edition.verify).
+(wmr.analysis._batch).  The edition's comparison helpers (edition.verify): tests/edition/test_verify.py.
 
 Every bad input raises ``TypeError`` (wrong kind) or ``ValueError`` (bad value) whose message names
 the argument and shows the value.
@@ -9,13 +9,10 @@ import warnings
 import numpy as np
 import pytest
 import sympy as sp
-from hypothesis import given
-from hypothesis import strategies as st
 
 import wmr
 from wmr.analysis import _batch
 from wmr.model import validation as V
-from edition import verify
 from wmr.model.tolerance import TOL, near_zero
 
 x = sp.Symbol("x", real=True)
@@ -191,25 +188,6 @@ def test_map_matrices_keeps_order_and_shape(n, chunk):
     B = A.reshape((1, n, 2, 3))
     out = _batch.map_matrices(lambda X: X[:, 0, :], B, chunk=chunk)
     assert out.shape == (1, n, 3) and np.array_equal(out, B[..., 0, :])
-
-
-# --- comparison helpers -----------------------------------------------------------------------------
-def test_symbolic_equal():
-    assert verify.symbolic_equal(sp.sin(x) ** 2 + sp.cos(x) ** 2, 1)
-    assert verify.symbolic_equal(sp.Matrix([sp.sin(2 * x)]), sp.Matrix([2 * sp.sin(x) * sp.cos(x)]))
-    assert verify.symbolic_equal(sp.Eq(sp.cos(x) ** 2, 1 - sp.sin(x) ** 2))
-    assert not verify.symbolic_equal(sp.sin(x), sp.cos(x))
-    with pytest.raises(ValueError, match="shapes"):
-        verify.symbolic_equal(sp.Matrix([1, 2]), sp.Matrix([1, 2, 3]))
-
-
-@given(st.integers(1, 50))
-def test_max_residual(n):
-    assert verify.max_residual(sp.sin(x) ** 2 + sp.cos(x) ** 2 - 1, n=n) < 1e-14
-    assert verify.max_residual(sp.sin(x), sp.cos(x), n=n) > 0
-    r1 = verify.max_residual(sp.sin(x) - x / 2, n=n)
-    assert r1 == verify.max_residual(sp.sin(x) - x / 2, n=n)              # fixed seed: deterministic
-    assert verify.max_residual(p - 2, ranges={p: (2.0, 2.0)}, n=n) == 0.0
 
 
 # --- the failures quoted in issue 11, part 2 -----------------------------------------------------------

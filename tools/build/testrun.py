@@ -73,7 +73,7 @@ def _record(t: Tree, reports: list[Path]) -> None:
 
 def run_tests(t: Tree, args: list[str], jobs: int = 2) -> int:
     """Run pytest over ``tests/`` in ``jobs`` partitions at once; return the worse exit status."""
-    files = sorted((t.root / "tests").glob("test_*.py"))
+    files = sorted((t.root / "tests").rglob("test_*.py"))        # tests/ (library) and tests/edition/
     selective = any(not a.startswith("-") for a in args) or any(a in ("-k", "-x", "--lf", "--sw") for a in args)
     if jobs < 2 or selective or len(files) < 2:
         return procs.call([sys.executable, "-m", "pytest", *args], cwd=t.root, env=t.env())
