@@ -3,6 +3,8 @@
 #   make test      set up .venv + TeX, execute the notebooks (cached), run pytest, and fail if
 #                  the build modified files that git tracks
 #   make report    build/report.html (self-contained, offline math) + build/report.pdf
+#   make docs      build/docs/html: the API reference and the user guide
+#   make release   the sdist and the wheel, the wheel tested in a fresh venv outside the repository
 #
 # The build tool is the package tools/build (python -m tools.build --help). It takes a lock
 # (build/.lock: a second build of this tree waits), writes every output atomically, records in
@@ -27,7 +29,7 @@ TEX_DEBS := texlive-xetex texlive-fonts-recommended texlive-plain-generic \
             texlive-latex-extra lmodern fonts-lmodern pandoc poppler-utils
 TEX_CMDS := xelatex pandoc pdftotext pdfinfo
 
-.PHONY: help venv tex browser test report figures notebooks student bench clean lock
+.PHONY: help venv tex browser test report figures notebooks student bench clean lock docs release
 
 help: ## show this help
 	@echo "wmr — reproducible edition of Leow, Low & Loh (2002)"
@@ -35,7 +37,7 @@ help: ## show this help
 	@grep -E '^[a-z]+:.*## ' $(MAKEFILE_LIST) | sed -E 's/^([a-z]+):.*## (.*)/  make \1\t\2/' | expand -t 18
 
 venv: ## (internal) create/refresh .venv from environment.lock, editable install of wmr, the edition importable
-	@want="$$({ sha256sum environment.lock pyproject.toml; echo "edition on sys.path (.pth) v1"; } | sha256sum | cut -d' ' -f1)"; \
+	@want="$$({ sha256sum environment.lock pyproject.toml wmr/_version.py; echo "edition on sys.path (.pth) v1"; } | sha256sum | cut -d' ' -f1)"; \
 	have="$$(cat $(STAMP) 2>/dev/null || true)"; \
 	if [ -x $(VPY) ] && [ "$$want" = "$$have" ]; then exit 0; fi; \
 	if command -v flock >/dev/null 2>&1; then exec 9>.venv.lock; \
@@ -92,8 +94,16 @@ browser: ## (internal) make sure headless Chromium is present for the HTML test 
 report: venv tex ## build/report.html + build/report.pdf (cached: < 1 s when nothing changed)
 	@$(BUILD) report
 
-test: venv tex browser ## execute notebooks, pytest (two partitions at once), fail if the build modified tracked files
+test: venv tex browser ## execute notebooks, pytest (two partitions at once), fail if the build modified tracked files; then release, docs
 	@$(BUILD) test
+	@$(VPY) -m tools.release_check
+	@$(VPY) -m tools.docs
+
+release: venv ## sdist + wheel; the wheel in a fresh venv outside the repo runs the library tests, the CLI, the README (cached)
+	@$(VPY) -m tools.release_check
+
+docs: venv tex ## build/docs/html: API reference + user guide (Sphinx, numpydoc, MathJax from its release; warnings are errors)
+	@$(VPY) -m tools.docs
 
 student: venv ## build/student/*.ipynb: the chapters without worked solutions (RUN=1: also run them)
 	@$(VPY) tools/student.py $(if $(RUN),--run,)

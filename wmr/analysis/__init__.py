@@ -1,6 +1,6 @@
 r"""Analyses of any robot built with :mod:`wmr.model`.
 
-==========================  ==========================================================================
+==================================  ========================================================================================
 :mod:`~wmr.analysis.linalg`         rank, nullity, null space, singular values, condition number
 :mod:`~wmr.analysis.mobility`       rank and nullity of :math:`\mathbf F`, admissible twists (23)-(27)
 :mod:`~wmr.analysis.isotropy`       isotropy tests and the characteristic length (30)-(50)
@@ -13,7 +13,7 @@ r"""Analyses of any robot built with :mod:`wmr.model`.
 :mod:`~wmr.analysis.design`         worst-case :math:`\kappa(\mathbf J)` of a layout, search over three-offset-wheel designs
 :mod:`~wmr.analysis.motion_kappa`   :math:`\kappa(\mathbf J)` along the admissible motions (rotations about each centre)
 :mod:`~wmr.analysis.det_exact`      the exact :math:`\det\mathbf J`: SymPy derivation, polynomial, wheel-plane-line identity
-==========================  ==========================================================================
+==================================  ========================================================================================
 
 Every function takes a robot; none defaults to the paper's.
 """

@@ -106,7 +106,9 @@ class SymbolicBackend:
         return sp.eye(n)
 
 
+#: the NumPy backend: batched floating-point arrays
 NUMERIC = NumericBackend()
+#: the SymPy backend: exact matrices of symbols and rationals
 SYMBOLIC = SymbolicBackend()
 
 

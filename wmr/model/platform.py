@@ -134,7 +134,7 @@ def rotated(beta, M, EM, axes=2, backend=None):
     ----------
     beta : array (...), sympy.Expr, or pair (cos_beta, sin_beta) of arrays (...)
         The angle, or its cosine and sine when the caller already has them.
-    M, EM : array (..., *block) or sympy.Matrix
+    M, EM : array (..., \*block) or sympy.Matrix
         The block and its image :math:`\mathbf E\mathbf M` (or the same linear image of both);
         broadcast against ``beta``.
     axes : int, optional
@@ -144,7 +144,7 @@ def rotated(beta, M, EM, axes=2, backend=None):
 
     Returns
     -------
-    numpy.ndarray (..., *block) or sympy.Matrix
+    numpy.ndarray (..., \*block) or sympy.Matrix
 
     Examples
     --------

@@ -35,14 +35,14 @@ def trig_combination(beta, P, Q, const=None):
     ----------
     beta : numpy.ndarray (..., w)
         Finite angles.
-    P, Q : numpy.ndarray (w, *shape)
+    P, Q : numpy.ndarray (w, \*shape)
         The coefficients of :math:`\cos\beta_i` and :math:`\sin\beta_i`.
-    const : numpy.ndarray (*shape), optional
+    const : numpy.ndarray (\*shape), optional
         The constant term (default 0).
 
     Returns
     -------
-    numpy.ndarray (..., *shape)
+    numpy.ndarray (..., \*shape)
 
     Notes
     -----

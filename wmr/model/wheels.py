@@ -12,15 +12,15 @@ Each unit contributes the block of the no-slip equation
 :math:`[\mathbf E\mathbf d_i\ \mathbf 1]\,\mathbf t = \mathbf B_i(\beta_i)\,\dot{\boldsymbol\theta}_i`
 (the i-th block row of (21)), where :math:`\dot{\boldsymbol\theta}_i` are its rate variables:
 
-================  ======================================  =====================================================
-unit              rates :math:`\dot{\boldsymbol\theta}_i`   block :math:`\mathbf B_i` (a block of :math:`\mathbf J_2`)
-================  ======================================  =====================================================
-:class:`OffsetWheel`   :math:`\dot\phi_i,\ \dot\theta_i`        :math:`\mathbf R_{bwi}\,\mathrm{diag}(-d,-r)` (20)
-:class:`CentredWheel`  :math:`\dot\theta_i`                     :math:`\mathbf R_{bwi}[0\ \ -r]^T` (51)
+=====================  =========================================  ======================================================================================================
+unit                   rates :math:`\dot{\boldsymbol\theta}_i`    block :math:`\mathbf B_i` (a block of :math:`\mathbf J_2`)
+=====================  =========================================  ======================================================================================================
+:class:`OffsetWheel`   :math:`\dot\phi_i,\ \dot\theta_i`          :math:`\mathbf R_{bwi}\,\mathrm{diag}(-d,-r)` (20)
+:class:`CentredWheel`  :math:`\dot\theta_i`                       :math:`\mathbf R_{bwi}[0\ \ -r]^T` (51)
 :class:`DualWheel`     :math:`\dot\theta_{i1},\ \dot\theta_{i2}`  :math:`\mathbf R_{bwi}\begin{bmatrix}0&0\\-r/2&-r/2\end{bmatrix}` (17)
-:class:`FixedWheel`    :math:`\dot\theta_i`                     :math:`\mathbf R(\text{angle})[0\ \ -r]^T`, not steered (:mod:`~wmr.model.wheels_fixed`)
-:class:`SwedishWheel`  :math:`\dot\theta_i,\ \dot\sigma_i`      :math:`\mathbf R(\text{angle})\begin{bmatrix}0&r\sin\gamma\\-r&-r\cos\gamma\end{bmatrix}`, not steered
-================  ======================================  =====================================================
+:class:`FixedWheel`    :math:`\dot\theta_i`                       :math:`\mathbf R(\text{angle})[0\ \ -r]^T`, not steered (:mod:`~wmr.model.wheels_fixed`)
+:class:`SwedishWheel`  :math:`\dot\theta_i,\ \dot\sigma_i`        :math:`\mathbf R(\text{angle})\begin{bmatrix}0&r\sin\gamma\\-r&-r\cos\gamma\end{bmatrix}`, not steered
+=====================  =========================================  ======================================================================================================
 
 The shared behaviour of a unit (its block from the pair :math:`(\mathbf L_i, \mathbf E\mathbf L_i)`, its
 points, its rate names) is in :mod:`wmr.model.wheel_base`.

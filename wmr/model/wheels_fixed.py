@@ -11,12 +11,12 @@ package (:math:`\mathbf J_2`, :math:`\mathbf F`, :math:`\mathbf J`, mobility, ki
 unchanged.  A robot's configuration keeps one entry per unit; the entry of a unit without a
 steering joint is ignored and its own ``angle`` used (:meth:`wmr.Robot.effective_beta`).
 
-================  ======================================  ==========================================================
-unit              rates :math:`\dot{\boldsymbol\theta}_i`   local block :math:`\mathbf L_i` (:math:`\mathbf B_i = \mathbf R(\beta_i)\mathbf L_i`)
-================  ======================================  ==========================================================
+=====================  =======================================  =====================================================================================
+unit                   rates :math:`\dot{\boldsymbol\theta}_i`  local block :math:`\mathbf L_i` (:math:`\mathbf B_i = \mathbf R(\beta_i)\mathbf L_i`)
+=====================  =======================================  =====================================================================================
 :class:`FixedWheel`    :math:`\dot\theta_i`                     :math:`[0\ \ -r]^T` (the centred wheel's (51), not steered)
 :class:`SwedishWheel`  :math:`\dot\theta_i,\ \dot\sigma_i`      :math:`\begin{bmatrix}0 & r\sin\gamma\\ -r & -r\cos\gamma\end{bmatrix}`
-================  ======================================  ==========================================================
+=====================  =======================================  =====================================================================================
 
 Examples
 --------
