@@ -19,6 +19,7 @@ import argparse
 import hashlib
 import html.parser
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -71,7 +72,8 @@ class _Refs(html.parser.HTMLParser):
 
 
 def check_pages(html_dir: Path) -> list[str]:
-    """Problems of the built pages: anything loaded from the network, local links that resolve to no file.
+    """Problems of the built pages: anything loaded from the network, local links that resolve to no file,
+    reST markup shown as text.
 
     Examples
     --------
@@ -82,9 +84,13 @@ def check_pages(html_dir: Path) -> list[str]:
     """
     problems = []
     for page in sorted(html_dir.rglob("*.html")):
+        text = page.read_text(encoding="utf-8")
         refs = _Refs()
-        refs.feed(page.read_text(encoding="utf-8"))
+        refs.feed(text)
         rel = page.relative_to(html_dir).as_posix()
+        prose = re.sub(r"<(pre|script)\b.*?</\1>", "", text, flags=re.DOTALL)
+        if "``" in prose:                     # reST markup that was not converted (code inside bold, ...)
+            problems.append(f"{rel} shows raw markup: ...{prose[max(0, prose.index('``') - 60):prose.index('``') + 40]}...")
         for url in refs.loads:
             if urlsplit(url).scheme or url.startswith("//"):
                 problems.append(f"{rel} loads {url} from the network")

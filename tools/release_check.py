@@ -83,7 +83,7 @@ def _files(root: Path, names: Iterable[str]) -> list[Path]:
             out.append(p)
         elif p.is_dir():
             out += [f for f in p.rglob("*") if f.is_file() and "__pycache__" not in f.parts
-                    and not f.name.endswith((".pyc", ".pyo"))]
+                    and not f.name.endswith((".pyc", ".pyo")) and not f.is_relative_to(root / "tests" / "edition")]
     return sorted(out)
 
 
@@ -358,7 +358,6 @@ def in_venv(vdir: Path, src: Path, env: dict[str, str], version: str, dist: str)
     summary = next((ln.strip("= ") for ln in reversed(text.splitlines()) if re.search(r"\d+ (passed|failed)", ln)), "")
     if proc.returncode != 0 or "passed" not in summary:
         raise ReleaseError(f"the library's tests failed in the fresh venv (exit {proc.returncode}):\n{text[-6000:]}")
-    shutil.copy(log, OUT / "pytest.log")
     facts["library tests"] = f"{summary} ({time.monotonic() - t0:.0f} s)"
     return facts
 
@@ -404,9 +403,11 @@ def main(argv: list[str] | None = None) -> int:
     args = ap.parse_args(argv)
     python = shutil.which(args.python) or args.python
     digest = inputs_hash(ROOT, python)
-    stamp = OUT / ("stamp" if args.python == sys.executable else f"stamp-{Path(python).name}")
+    # this interpreter: build/release/stamp and report.txt; another one: stamp-<its version>, report-<its version>.txt
+    suffix = "" if args.python == sys.executable else "-" + re.sub(r"\W+", "-", _python_version(python).lower())
+    stamp, report_file = OUT / f"stamp{suffix}", OUT / f"report{suffix}.txt"
     if not args.force and stamp.exists() and stamp.read_text(encoding="utf-8").strip() == digest:
-        say(f"unchanged since the last pass ({digest[:12]}): nothing to do ({OUT.relative_to(ROOT)}/report.txt)")
+        say(f"unchanged since the last pass ({digest[:12]}): nothing to do ({report_file.relative_to(ROOT)})")
         return 0
     t0 = time.monotonic()
     try:
@@ -416,10 +417,10 @@ def main(argv: list[str] | None = None) -> int:
         stamp.unlink(missing_ok=True)
         return 1
     report = "\n\n".join(f"{k}:\n{v}" for k, v in facts.items()) + "\n"
-    (OUT / "report.txt").write_text(report, encoding="utf-8")
+    report_file.write_text(report, encoding="utf-8")
     print(report, end="")
     stamp.write_text(digest + "\n", encoding="utf-8")
-    say(f"passed in {time.monotonic() - t0:.0f} s ({OUT.relative_to(ROOT)}/report.txt)")
+    say(f"passed in {time.monotonic() - t0:.0f} s ({report_file.relative_to(ROOT)})")
     return 0
 
 

@@ -106,6 +106,9 @@ def test_inputs_hash_follows_the_sdist_contents(tmp_path):
     (tmp_path / "wmr" / "__pycache__").mkdir()
     (tmp_path / "wmr" / "__pycache__" / "x.pyc").write_bytes(b"\0")       # not an input
     assert rc.inputs_hash(tmp_path) == h1
+    (tmp_path / "tests" / "edition").mkdir(parents=True)
+    (tmp_path / "tests" / "edition" / "test_x.py").write_text("", encoding="utf-8")   # not in the sdist
+    assert rc.inputs_hash(tmp_path) == h1
     (tmp_path / "wmr" / "x.py").write_text("x = 2", encoding="utf-8")
     assert rc.inputs_hash(tmp_path) != h1
 
@@ -223,3 +226,7 @@ def test_the_pages_may_load_nothing_from_the_network(tmp_path):
     assert docs.check_pages(tmp_path) == []
     (tmp_path / "bad.html").write_text('<link rel="stylesheet" href="//cdn.example/x.css">', encoding="utf-8")
     assert docs.check_pages(tmp_path) == ["bad.html loads //cdn.example/x.css from the network"]
+    (tmp_path / "bad.html").write_text("<p><strong>``wmr-kinematics``</strong></p><pre>``ok in code``</pre>",
+                                       encoding="utf-8")
+    (problem,) = docs.check_pages(tmp_path)
+    assert problem.startswith("bad.html shows raw markup")
