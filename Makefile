@@ -1,17 +1,23 @@
 # wmr — executable edition of Leow, Low & Loh (2002).
 #
-#   make test      set up .venv + TeX, execute the notebooks (cached), run pytest, and fail if
-#                  the build modified files that git tracks
+#   make test      set up .venv + TeX, build the report and the student edition (cached), run pytest
+#                  (two workers; tests/ and tests/edition/), ruff and mypy, make release and make docs
+#                  (each cached), and fail if the build modified files that git tracks
 #   make report    build/report.html (self-contained, offline math) + build/report.pdf
 #   make docs      build/docs/html: the API reference and the user guide
 #   make release   the sdist and the wheel, the wheel tested in a fresh venv outside the repository
 #
-# The build tool is the package tools/build (python -m tools.build --help). It takes a lock
-# (build/.lock: a second build of this tree waits), writes every output atomically, records in
-# stamps the hashes of what each step produced, and stops every child process on SIGINT/SIGTERM.
+# This Makefile is the build: it knows every file, what it is made from, and runs two steps at a
+# time (-j2). Each step is one call of tools/build (python -m tools.build COMMAND), the glue around
+# nbclient (execute a notebook), pandoc and nbconvert (HTML, LaTeX) and xelatex (PDF). A notebook is
+# executed again only when its key changes: the content hashes of the notebook, wmr/ and edition/
+# (the recipe compares them and leaves the executed copy untouched when they match, so that Make
+# sees nothing new). A second build of one tree waits for the first (flock on build/.lock).
+# Signals: Make passes SIGTERM to its children and nbclient stops its kernel; when make itself is
+# killed outright, the operating system sends its steps SIGTERM (setpriv --pdeathsig).
 #
-# Everything Python comes from environment.lock (pinned + sha256-hashed); the TeX
-# toolchain for the PDF comes from Debian packages (installed here when possible).
+# Everything Python comes from environment.lock (pinned + sha256-hashed); the TeX toolchain for
+# the PDF comes from Debian packages (installed here when possible).
 
 SHELL        := /bin/bash
 .SHELLFLAGS  := -eu -o pipefail -c
@@ -19,9 +25,39 @@ SHELL        := /bin/bash
 
 PYTHON ?= python3
 VENV   := .venv
-VPY    := $(VENV)/bin/python
+VPY    := $(CURDIR)/$(VENV)/bin/python
 STAMP  := $(VENV)/.environment.lock.sha256
-BUILD  := $(VPY) -m tools.build
+
+# the tree to build (the tests build small trees of their own) and its build directory
+WMR_ROOT ?= $(CURDIR)
+export WMR_ROOT
+WMR_BUILD ?= $(WMR_ROOT)/build
+B        := $(WMR_BUILD)
+NB       := $(WMR_ROOT)/notebooks
+FINDINGS := $(NB)/findings.ipynb
+CHAPTERS := $(filter-out $(FINDINGS),$(sort $(wildcard $(NB)/*.ipynb)))
+LESSONS  := $(sort $(wildcard $(NB)/[0-9][0-9]_*.ipynb))
+EXECUTED := $(CHAPTERS:$(NB)/%=$(B)/notebooks/%)
+STUDENT  := $(LESSONS:$(NB)/%=$(B)/student/%)
+STUDENT_RUN := $(LESSONS:$(NB)/%=$(B)/student-run/notebooks/%)
+FIGURES  := $(wildcard $(WMR_ROOT)/figures/*)
+TOOL     := $(wildcard $(CURDIR)/tools/build/*.py)
+TEMPLATES := $(wildcard $(CURDIR)/tools/build/templates/*/*)
+LINTED   := $(wildcard $(addprefix $(WMR_ROOT)/,wmr edition tools tests))
+# make test also checks the release and the docs of this repository (not of another tree, WMR_ROOT=...)
+RELEASED := $(if $(filter $(CURDIR),$(WMR_ROOT)),yes)
+# what make test builds before pytest runs (the tests find it cached)
+TEST_BUILD = $(B)/report.html $(B)/report.pdf $(STUDENT_RUN)
+
+PDEATH := $(shell command -v setpriv >/dev/null 2>&1 && echo setpriv --pdeathsig TERM --)
+BUILD  := $(PDEATH) $(VPY) -m tools.build
+SUB    := $(PDEATH) $(MAKE) --no-print-directory -s -j2 -O
+# hold build/.lock for the rest of the recipe (a second build of this tree says so and waits)
+LOCK   = mkdir -p $(B); exec 9>$(B)/.lock; ! command -v flock >/dev/null || flock -n 9 || \
+  { echo "[lock] another build of $(WMR_ROOT) is running: waiting for it"; flock 9; };
+# git status with a hash of each changed file: make test compares the state before and after
+GIT_STATE = git -C $(WMR_ROOT) status --porcelain=v1 --untracked-files=all 2>/dev/null | while IFS= read -r l; do \
+  echo "$$l $$(sha256sum < "$(WMR_ROOT)/$${l:3}" 2>/dev/null | cut -c1-16)"; done
 
 # Debian packages for the PDF (xelatex + what nbconvert's LaTeX template \usepackage's),
 # pandoc (nbconvert's markdown -> LaTeX) and poppler-utils (pdftotext/pdfinfo in the tests).
@@ -29,7 +65,7 @@ TEX_DEBS := texlive-xetex texlive-fonts-recommended texlive-plain-generic \
             texlive-latex-extra lmodern fonts-lmodern pandoc poppler-utils
 TEX_CMDS := xelatex pandoc pdftotext pdfinfo
 
-.PHONY: help venv tex browser test report figures notebooks student bench clean lock docs release
+.PHONY: help venv tex browser test report figures notebooks publish student bench clean lock docs release FORCE
 
 help: ## show this help
 	@echo "wmr — reproducible edition of Leow, Low & Loh (2002)"
@@ -73,12 +109,6 @@ tex: ## (internal) make sure xelatex/pandoc/poppler are present (apt-get on Debi
 	  exit 1; \
 	fi
 
-notebooks: venv ## execute notebooks/*.ipynb into build/notebooks (only changed ones), merge the ledger
-	@$(BUILD) execute
-
-figures: venv ## regenerate figures/ outside the notebooks (python -m edition.figures figures/)
-	@$(BUILD) figures
-
 browser: ## (internal) make sure headless Chromium is present for the HTML test (apt-get on Debian as root)
 	@if command -v chromium >/dev/null 2>&1 || command -v chromium-browser >/dev/null 2>&1; then exit 0; fi; \
 	if command -v apt-get >/dev/null 2>&1 && [ "$$(id -u)" = 0 ]; then \
@@ -91,30 +121,96 @@ browser: ## (internal) make sure headless Chromium is present for the HTML test 
 	       "install it with: sudo apt-get install -y --no-install-recommends chromium"; \
 	fi
 
-report: venv tex ## build/report.html + build/report.pdf (cached: < 1 s when nothing changed)
-	@$(BUILD) report
+# ------------------------------------------------------------------------------------- the build
+notebooks: venv ## execute the chapters into build/notebooks (only changed ones), publish figures/ and the ledger
+	@$(LOCK) exec $(SUB) $(B)/notebooks/findings.ipynb
 
-test: venv tex browser ## execute notebooks, pytest (two partitions at once), fail if the build modified tracked files; then release, docs
-	@$(BUILD) test
-	@$(VPY) -m tools.release_check
-	@$(VPY) -m tools.docs
+report: venv tex ## build/report.html + build/report.pdf (cached: about a second when nothing changed)
+	@$(LOCK) exec $(SUB) $(B)/report.html $(B)/report.pdf
+
+student: venv ## build/student/*.ipynb: the chapters without worked solutions (RUN=1: also run them, cached)
+	@$(LOCK) exec $(SUB) $(STUDENT) $(if $(RUN),$(STUDENT_RUN))
+
+figures: venv ## regenerate figures/ outside the notebooks (python -m edition.figures figures/)
+	@cd $(WMR_ROOT) && $(VPY) -m edition.figures figures
+
+# a chapter, executed in a fresh kernel with WMR_OUT=build/out/<chapter> (see tools/build/execute.py)
+$(B)/notebooks/%.ipynb: $(NB)/%.ipynb FORCE
+	@$(BUILD) execute $< $@
+
+# what the chapters wrote -> figures/ (a file only when its bytes differ); their rows -> figures/ledger.csv
+publish: $(EXECUTED)
+	@$(BUILD) publish $(WMR_ROOT)/figures $(EXECUTED)
+	@if [ -d $(WMR_ROOT)/edition/ledger ]; then cd $(WMR_ROOT) && $(VPY) -m edition.ledger $(B)/out figures/ledger.csv; fi
+
+# Part I: the findings chapter reads figures/ (its key includes their hashes)
+$(B)/notebooks/findings.ipynb: $(FINDINGS) publish FORCE
+	@$(BUILD) execute $< $@ --reads $(WMR_ROOT)/figures
+
+# the commit and its date (the build date: two builds of one commit are byte-identical);
+# rewritten only when they change
+$(B)/commit: FORCE
+	@mkdir -p $(@D); \
+	c="$$(git -C $(WMR_ROOT) log -1 --format='%H %ct' 2>/dev/null || echo unknown 0)"; \
+	d="$$(git -C $(WMR_ROOT) status --porcelain --untracked-files=no -- wmr edition notebooks tools pyproject.toml 2>/dev/null | head -c1 || true)"; \
+	[ -z "$${SOURCE_DATE_EPOCH:-}" ] || c="$${c% *} $$SOURCE_DATE_EPOCH"; \
+	c="$$c$${d:+ +}"; [ "$$c" = "$$(cat $@ 2>/dev/null)" ] || echo "$$c" > $@
+
+$(B)/report.ipynb: $(B)/notebooks/findings.ipynb $(EXECUTED) $(B)/commit $(FIGURES) $(TOOL)
+	@$(BUILD) assemble $@ $(B)/commit $(WMR_ROOT)/figures $(B)/notebooks/findings.ipynb $(EXECUTED)
+
+$(B)/report.html: $(B)/report.ipynb $(TEMPLATES) $(CURDIR)/tools/mathjax.py
+	@$(BUILD) html $< $@
+
+$(B)/report.pdf: $(B)/report.ipynb $(TEMPLATES)
+	@$(BUILD) pdf $< $@
+
+# the student edition: nbconvert drops the cells tagged "solution" (one call for every chapter);
+# RUN=1 executes it like the chapters, to show that every exercise still runs without its solution
+$(STUDENT) &: $(LESSONS)
+	@$(VPY) -m jupyter nbconvert --log-level=WARN --to notebook --ClearOutputPreprocessor.enabled=True \
+	  --TagRemovePreprocessor.enabled=True --TagRemovePreprocessor.remove_cell_tags='["solution"]' \
+	  --output-dir $(B)/student $(LESSONS)
+
+$(B)/student-run/notebooks/%.ipynb: $(B)/student/%.ipynb FORCE
+	@$(BUILD) execute $< $@
+
+# ------------------------------------------------------------------------------------- the tests
+test: venv tex browser ## build (cached), pytest -n 2 (tests/ and tests/edition/), ruff, mypy, release, docs; fail if the build modified tracked files
+	@mkdir -p $(B); $(GIT_STATE) > $(B)/git-before
+	@$(LOCK) exec $(SUB) $(TEST_BUILD)
+	@rc=0; \
+	cd $(WMR_ROOT) && $(PDEATH) $(VPY) -m pytest -n 2 --dist worksteal $(PYTEST_ARGS) || rc=$$?; \
+	if [ -n "$(LINTED)" ]; then \
+	  echo "[lint] ruff check, mypy: $(notdir $(LINTED))"; \
+	  $(VPY) -m ruff check --quiet $(LINTED) || rc=1; \
+	  $(VPY) -m mypy --no-error-summary $(LINTED) || rc=1; \
+	fi; \
+	if [ -n "$(RELEASED)" ]; then \
+	  $(PDEATH) $(VPY) -m tools.release_check || rc=1; \
+	  $(PDEATH) $(VPY) -m tools.docs || rc=1; \
+	fi; \
+	if ! $(GIT_STATE) | diff $(B)/git-before - > $(B)/git-changed; then \
+	  echo "[git] FAILED: the build modified files that git tracks (or left new ones it does not ignore):"; \
+	  sed -n 's/^[<>] ...//p' $(B)/git-changed | cut -d' ' -f1 | sort -u | sed 's/^/  /'; rc=1; \
+	else echo "[git] the build left git status as it found it"; fi; \
+	exit $$rc
 
 release: venv ## sdist + wheel; the wheel in a fresh venv outside the repo runs the library tests, the CLI, the README (cached)
-	@$(VPY) -m tools.release_check
+	@$(PDEATH) $(VPY) -m tools.release_check
 
-docs: venv tex ## build/docs/html: API reference + user guide (Sphinx, numpydoc, MathJax from its release; warnings are errors)
-	@$(VPY) -m tools.docs
-
-student: venv ## build/student/*.ipynb: the chapters without worked solutions (RUN=1: also run them)
-	@$(VPY) tools/student.py $(if $(RUN),--run,)
+docs: venv ## build/docs/html: API reference + user guide (Sphinx, numpydoc, MathJax from its release; warnings are errors)
+	@$(PDEATH) $(VPY) -m tools.docs
 
 bench: venv ## time the batched kernels against floors and peers (tools/bench.py)
 	@$(VPY) tools/bench.py
 
 clean: ## remove build/ and caches (committed figures/ are kept)
-	rm -rf build .pytest_cache .hypothesis
+	rm -rf build .pytest_cache .hypothesis .mypy_cache .ruff_cache
 	find . -path ./.venv -prune -o -name __pycache__ -type d -print0 | xargs -0 rm -rf
 
 lock: ## regenerate environment.lock from requirements.in (uv, universal, hashed)
 	@[ -x $(VENV)/bin/uv ] || { [ -x $(VPY) ] || $(PYTHON) -m venv $(VENV); $(VPY) -m pip install --quiet uv; }
 	$(VENV)/bin/uv pip compile --universal --generate-hashes --python-version 3.11 requirements.in -o environment.lock
+
+FORCE:

@@ -23,6 +23,7 @@ from wmr.analysis.motion_kappa import motion_kappa, motion_map, mount_circle, ro
 from wmr.model import validation as V
 from wmr.model.robot import Robot
 from wmr.model.wheels import CentredWheel
+
 from .exercises import Feedback
 
 __all__ = ["swerve", "design_row", "offset_for_worst_case", "scalene_optimum", "singular_rotation", "describe_design"]
@@ -74,7 +75,8 @@ def _none(answer, what):
 
 
 def offset_for_worst_case(d, r=0.05, kappa=1.25, radius=0.3):
-    r"""Exercise 8.1: the offset :math:`d \le r` that gives the paper's placement a worst-case :math:`\kappa(\mathbf J)` of ``kappa``.
+    r"""Exercise 8.1: the offset :math:`d \le r` that gives the paper's placement a worst-case :math:`\kappa(\mathbf J)`
+    of ``kappa``.
 
     Parameters
     ----------
@@ -112,7 +114,8 @@ def offset_for_worst_case(d, r=0.05, kappa=1.25, radius=0.3):
 
 
 def scalene_optimum(points):
-    r"""Exercise 8.2: three mount points, no two sides equal, with worst-case :math:`\kappa(\mathbf J) = 1` at :math:`d = r`.
+    r"""Exercise 8.2: three mount points, no two sides equal, with worst-case :math:`\kappa(\mathbf J) = 1` at
+    :math:`d = r`.
 
     Parameters
     ----------
@@ -145,7 +148,8 @@ def scalene_optimum(points):
 
 
 def singular_rotation(U, length=0.6, width=0.4):
-    r"""Exercise 8.3: a centre of rotation U (not a module, not at infinity) at which the swerve's :math:`\mathbf J` is singular.
+    r"""Exercise 8.3: a centre of rotation U (not a module, not at infinity) at which the swerve's :math:`\mathbf J` is
+    singular.
 
     Parameters
     ----------
@@ -173,10 +177,11 @@ def singular_rotation(U, length=0.6, width=0.4):
         return Feedback(False, "U is a module's mount point: that module does not roll. Choose another point.")
     k = float(motion_kappa(bot, rotation_twists(U)))
     if np.isfinite(k):
-        return Feedback(False, f"About U = ({U[0]:g}, {U[1]:g}) the robot is well defined: $\\kappa(\\mathbf J) = {k:.3g}$.")
+        return Feedback(False, f"About U = ({U[0]:g}, {U[1]:g}) the robot is well defined: "
+                               f"$\\kappa(\\mathbf J) = {k:.3g}$.")
     c, R = mount_circle(bot)
-    return Feedback(True, f"$\\kappa(\\mathbf J) = \\infty$ about U: U is {np.linalg.norm(U - c):.4g} m from the centre, "
-                          f"on the circle of radius {R:.4g} m through the four modules.")
+    return Feedback(True, f"$\\kappa(\\mathbf J) = \\infty$ about U: U is {np.linalg.norm(U - c):.4g} m from the "
+                          f"centre, on the circle of radius {R:.4g} m through the four modules.")
 
 
 def describe_design(robot):

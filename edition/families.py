@@ -17,10 +17,10 @@ import sympy as sp
 
 from wmr.analysis.lines import axles_through, circumcircle, pair_line_angle, planes_through
 from wmr.analysis.mobility import rank_F
-from wmr.analysis.singularities import (_require_square, classify, det_J, det_J_polynomial, exact_robot,
-                                      exact_zero, numeric_robot)
+from wmr.analysis.singularities import classify, det_J, det_J_polynomial, exact_robot, exact_zero, numeric_robot
 from wmr.model.platform import wrap_angle
 from wmr.model.robots import paper_robot
+
 from .files import atomic_write, csv_text
 from .text import bound
 from .text import degrees as _deg
@@ -103,7 +103,7 @@ class Family:
     listed_in_paper: str
     paper_item: str
     note: str
-    samples: np.ndarray = None
+    samples: np.ndarray | None = None
     exact: object = None
     # computed
     det_J_max: float = float("nan")
@@ -160,8 +160,8 @@ def families(robot=None, n=72, exact=True):
     """
     if robot is None:
         robot = paper_robot("centred")
-    _require_square(robot)
     num = numeric_robot(robot)
+    det_J(num, np.zeros(3), L=1.0)              # wmr's own check: J must be square (three centred wheels)
     exact_bot = exact_robot(robot)
     P = num.mount_points
     t = np.linspace(-np.pi, np.pi, n, endpoint=False)
@@ -209,11 +209,12 @@ def families(robot=None, n=72, exact=True):
             if not prime:
                 conf = rf"$\beta_{i}=\beta_{j}={a1}^\circ$ or $\beta_{i}=\beta_{j}={a2}^\circ$, $\beta_{k}$ free"
                 fam = f"{item} planes {i}, {j} coincident"
-                listed, note = "yes", (rf"Fig. 11; line $P_{i}P_{j}$ carries both planes; axles {i} and {j} parallel, so "
-                                       r"$\operatorname{rank}\mathbf F = 6$ unless the third plane is parallel too "
-                                       "(then it is (i) or (i')).")
+                listed, note = "yes", (f"Fig. 11; line $P_{i}P_{j}$ carries both planes; axles {i} and {j} parallel, "
+                                       r"so $\operatorname{rank}\mathbf F = 6$ unless the third plane is parallel too "
+                                       r"(then it is (i) or (i')).")
             else:
-                conf = rf"$\beta_{i}={a1}^\circ,\ \beta_{j}={a2}^\circ$ or $\beta_{i}={a2}^\circ,\ \beta_{j}={a1}^\circ$, $\beta_{k}$ free"
+                conf = (rf"$\beta_{i}={a1}^\circ,\ \beta_{j}={a2}^\circ$ or "
+                        rf"$\beta_{i}={a2}^\circ,\ \beta_{j}={a1}^\circ$, $\beta_{k}$ free")
                 fam = f"{item}' planes {i}, {j} coincident, half a turn apart"
                 listed = "no"
                 note = (f"The printed {item} gives equal angles; one wheel of the pair turned by "
@@ -236,7 +237,7 @@ def families(robot=None, n=72, exact=True):
     def dirs_through(Dx, Dy, turn=(0, 0, 0)):
         # axle i_i = -E (D - P_i) direction: wheel plane along D - P_i, i = (v_y, -v_x)
         out_ = []
-        for (px, py), f in zip(Pex, turn):
+        for (px, py), f in zip(Pex, turn, strict=True):
             vx, vy = Dx - px, Dy - py
             sgn = -1 if f else 1
             out_.append((sgn * vy, -sgn * vx))
@@ -271,7 +272,8 @@ def families(robot=None, n=72, exact=True):
     a23 = _deg(pair_line_angle(num, 2, 3))
     out.append(Family(
         "v-P", "(v-b) planes through a mount point",
-        rf"e.g. $\beta_1\equiv{a13}^\circ$, $\beta_2\equiv{a23}^\circ$ (mod $180^\circ$), $\beta_3$ free ($D_P=P_3$); likewise at $P_1$, $P_2$",
+        rf"e.g. $\beta_1\equiv{a13}^\circ$, $\beta_2\equiv{a23}^\circ$ (mod $180^\circ$), $\beta_3$ free ($D_P=P_3$); "
+        r"likewise at $P_1$, $P_2$",
         r"$D_P=P_k$: the other two planes lie on the sides through $P_k$; wheel $k$ may take any angle",
         "partly", "(v)", "Implied by (v) but, unlike (ii)-(iv), not identified as a family with a free angle.",
         samples=np.concatenate(rows),

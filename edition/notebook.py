@@ -1,6 +1,4 @@
-r"""What the chapters (``notebooks/01..07``) share: where they write, how they show results, how they record verdicts.
-
-Written once here so that every chapter reads the same and none pastes its own helpers.
+r"""What a chapter (``notebooks/01..08``) is: where it writes, its ledger, its random generator, its figures.
 
 * :func:`project` -- where a notebook writes its figures and ledger rows: ``$WMR_OUT`` (set by the
   build), else a scratch folder under the project's ``build/`` found from the notebook's own location,
@@ -8,11 +6,9 @@ Written once here so that every chapter reads the same and none pastes its own h
 * :class:`Chapter` -- one per notebook: its ledger, its random generator (fixed seed), its
   figures (:meth:`Chapter.figure`) and its verdicts (:meth:`Chapter.record`, sentences generated
   from the ledger rows).
-* :func:`quote`, :func:`show`, :func:`say`, :func:`table` -- everything a reader sees goes out as
-  Markdown with ``$$...$$`` math (one path, one size of type); no ``print``, no raw data frames.
-* :func:`explicit`, :func:`numeric`, :func:`mod_pi` -- small algebra helpers of the derivations.
 
-IPython is imported only when something is displayed, so the path logic works anywhere.
+The chapters show their results with :mod:`edition.display` (:func:`quote`, :func:`show`,
+:func:`say`, :func:`table`, re-exported here, so that a chapter imports what it uses from one place).
 """
 from __future__ import annotations
 
@@ -21,23 +17,12 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
-import sympy as sp
 
+from .display import quote, say, show, table
 from .ledger import Finding, Ledger
 from .verify import SEED
 
-__all__ = ["Project", "project", "Chapter", "quote", "show", "say", "table", "explicit", "numeric", "mod_pi",
-           "latex", "aligned_sum"]
-
-
-def _display(*objs):
-    from IPython.display import display
-    display(*objs)
-
-
-def _markdown(text):
-    from IPython.display import Markdown
-    return Markdown(text)
+__all__ = ["OUT_VARIABLE", "Project", "project", "Chapter", "quote", "say", "show", "table"]
 
 
 # --------------------------------------------------------------------------------------- where files go
@@ -145,251 +130,6 @@ def project(where=None, chapter="scratch"):
     import tempfile
     return Project(root=None, out=Path(tempfile.mkdtemp(prefix=f"wmr-{chapter}-")), source="temporary")
 
-
-# --------------------------------------------------------------------------------------- showing
-#: how a quantity that does not exist (SymPy's ``nan``, NumPy's NaN from 0/0) is written for the reader
-UNDEFINED = "undefined"
-UNDEFINED_TEX = rf"\text{{{UNDEFINED}}}"
-
-def latex(obj):
-    r"""LaTeX of a SymPy object (matrices with square brackets), or a string unchanged.
-
-    SymPy's ``nan`` (what 0/0 evaluates to) is written as the word it means, *undefined*.
-
-    Parameters
-    ----------
-    obj : SymPy object or str
-
-    Returns
-    -------
-    str
-
-    Examples
-    --------
-    >>> latex(sp.Matrix([[1, 0]])), latex(r"\alpha"), latex(sp.Integer(0) / 0)
-    ('\\begin{bmatrix}1 & 0\\end{bmatrix}', '\\alpha', '\\text{undefined}')
-    """
-    if isinstance(obj, str):
-        return obj
-    if obj is sp.nan:
-        return UNDEFINED_TEX
-    return sp.latex(obj, mat_str="bmatrix", mat_delim="")
-
-
-def show(lhs, expr=None, tag=None, per_line=None):
-    r"""Typeset ``lhs = expr`` as display math (Markdown ``$$...$$``).
-
-    Parameters
-    ----------
-    lhs : str
-        LaTeX of the left side, or of the whole formula when ``expr`` is None.
-    expr : SymPy object or str, optional
-        The right side.
-    tag : str, optional
-        An equation tag, e.g. ``"59"`` for ``\tag{59}``.
-    per_line : int, optional
-        Break a SymPy sum into lines of this many terms (``aligned``), in SymPy's printing order:
-        a long sum then keeps the size of the text instead of being shrunk to the line.
-
-    Returns
-    -------
-    None
-    """
-    if per_line is not None:
-        _check_per_line(per_line)
-    if expr is None:
-        body = lhs
-    elif per_line is not None and isinstance(expr, sp.Add):
-        body = aligned_sum(lhs, expr, per_line)
-    else:
-        body = f"{lhs} = {latex(expr)}"
-    if tag is not None:
-        body += rf" \tag{{{tag}}}"
-    _display(_markdown(f"$$\n{body}\n$$"))
-
-
-def _check_per_line(per_line):
-    if isinstance(per_line, bool) or not isinstance(per_line, int):
-        raise TypeError(f"per_line must be an int, got {per_line!r}")
-    if per_line < 1:
-        raise ValueError(f"per_line must be at least 1, got {per_line}")
-
-
-def aligned_sum(lhs, expr, per_line):
-    r"""LaTeX of ``lhs = expr`` with the terms of the sum ``expr`` in lines of ``per_line`` (``aligned``).
-
-    Parameters
-    ----------
-    lhs : str
-        LaTeX of the left side.
-    expr : sympy.Add
-        The right side; its terms are taken in SymPy's printing order.
-    per_line : int
-        Terms per line, at least 1.
-
-    Returns
-    -------
-    str
-        A LaTeX body (no ``$``).
-
-    Examples
-    --------
-    >>> x, y, z = sp.symbols("x y z")
-    >>> aligned_sum("s", x - y + z, 2)
-    '\\begin{aligned}s = {}& x - y\\\\ &+ z\\end{aligned}'
-    """
-    _check_per_line(per_line)
-    parts = []
-    for k, term in enumerate(expr.as_ordered_terms()):
-        neg = term.could_extract_minus_sign()
-        text = latex(-term if neg else term)
-        parts.append(("- " if neg else ("+ " if k else "")) + text)
-    lines = [" ".join(parts[i:i + per_line]) for i in range(0, len(parts), per_line)]
-    return r"\begin{aligned}" + lhs + " = {}& " + r"\\ &".join(lines) + r"\end{aligned}"
-
-
-def say(text):
-    """Display a Markdown paragraph (for results: no ``print``).
-
-    Parameters
-    ----------
-    text : str
-        Markdown with ``$...$`` math.
-
-    Returns
-    -------
-    None
-    """
-    _display(_markdown(text))
-
-
-def _cell(v, in_array=False):
-    from .text import RESOLUTION, number
-    if isinstance(v, (bool, np.bool_)):
-        return "yes" if v else "no"
-    if isinstance(v, (float, np.floating)):
-        x = float(v)
-        if np.isnan(x):                                   # a quantity that does not exist here (0/0)
-            return UNDEFINED
-        if 0 < abs(x) < RESOLUTION:                       # round-off: no digits that differ between machines
-            return "$0$" if in_array else f"$< 10^{{{int(np.log10(RESOLUTION))}}}$"
-        return f"${number(x)}$"
-    if isinstance(v, (list, tuple, set, frozenset, np.ndarray)):
-        items = sorted(v) if isinstance(v, (set, frozenset)) else list(np.ravel(v) if isinstance(v, np.ndarray) else v)
-        cells = [_cell(x, in_array=True) for x in items]
-        return UNDEFINED if cells and all(c == UNDEFINED for c in cells) else ", ".join(cells)
-    if isinstance(v, (int, np.integer)):
-        return str(int(v))
-    return str(v).replace("|", r"\|").replace("\n", " ")
-
-
-def table(rows, columns=None):
-    r"""A Markdown table (no index column): the one way a chapter shows tabular results.
-
-    Parameters
-    ----------
-    rows : list of dict or list of sequence
-        One entry per row.  Booleans print as yes/no, NaN as "undefined", floats with 3 significant digits in
-        math (round-off below :data:`edition.text.RESOLUTION` as a bound, or 0 inside a
-        vector), lists as comma-separated values.
-    columns : sequence of str, optional
-        Headers; for dict rows also the keys, in order (default: the first row's keys).
-
-    Returns
-    -------
-    None
-
-    """
-    rows = list(rows)
-    if rows and isinstance(rows[0], dict):
-        columns = list(columns or rows[0].keys())
-        body = [[r.get(c, "") for c in columns] for r in rows]
-    else:
-        if columns is None:
-            raise ValueError("columns must be given for rows that are not dicts")
-        body = [list(r) for r in rows]
-    head = "| " + " | ".join(columns) + " |\n|" + "---|" * len(columns) + "\n"
-    text = head + "".join("| " + " | ".join(_cell(v) for v in r) + " |\n" for r in body)
-    _display(_markdown(text))
-
-
-def quote(id):
-    r"""Display what the paper says: equation ``id`` as printed (with ``\tag``), or the claim ``id``.
-
-    Parameters
-    ----------
-    id : int or str
-        An equation number, or a claim's slug.
-
-    Returns
-    -------
-    None
-        (Read the transcription itself with :func:`edition.printed` or :func:`edition.claim`.)
-    """
-    from . import claim, printed
-    if str(id).isdigit():
-        p = printed(id)
-        text = f"*As printed (Section {p.section}):*\n\n$$\n{p.latex} \\tag{{{p.id}}}\n$$"
-        if p.garbled:
-            text += f"\n\n*Transcription:* {p.garbled}"
-        _display(_markdown(text))
-        return None
-    c = claim(id)
-    _display(_markdown(f"> {c.text} (Section {c.section})"))
-    return None
-
-
-# --------------------------------------------------------------------------------------- algebra helpers
-def explicit(expr, mapping):
-    """Substitute explicit matrices for the named objects (MatrixSymbols) of a printed form.
-
-    Parameters
-    ----------
-    expr : SymPy expression or Matrix
-    mapping : dict
-        Named object -> SymPy matrix or expression.
-
-    Returns
-    -------
-    sympy.Matrix
-    """
-    return sp.Matrix(sp.sympify(expr).subs(mapping).doit())
-
-
-def numeric(expr, mapping):
-    """:func:`explicit` with NumPy matrices; returns a float array.
-
-    Parameters
-    ----------
-    expr : SymPy expression or Matrix
-    mapping : dict
-        Named object -> array.
-
-    Returns
-    -------
-    numpy.ndarray
-    """
-    return np.array(explicit(expr, {k: sp.Matrix(v) for k, v in mapping.items()}), dtype=float)
-
-
-def mod_pi(angle):
-    r"""An angle modulo :math:`\pi`, in :math:`[-\pi/2, \pi/2)`: a wheel rolls either way, so axle angles count mod :math:`\pi`.
-
-    Parameters
-    ----------
-    angle : array_like
-        Radians.
-
-    Returns
-    -------
-    numpy.ndarray
-
-    Examples
-    --------
-    >>> float(mod_pi(np.pi + 0.25))
-    0.25
-    """
-    return (np.asarray(angle, dtype=float) + np.pi / 2) % np.pi - np.pi / 2
 
 
 # --------------------------------------------------------------------------------------- a chapter

@@ -5,6 +5,7 @@ changes) so that the tests compare :mod:`wmr` with the physics, not with itself.
 """
 from __future__ import annotations
 
+import sys
 from pathlib import Path
 
 import numpy as np
@@ -20,6 +21,12 @@ settings.register_profile(
     suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much,
                            HealthCheck.function_scoped_fixture])
 settings.load_profile("wmr")
+
+def pytest_configure(config):
+    """Before collection: nbformat imports jsonschema, which compiles the grammar of ``rfc3987_syntax``
+    when it is installed (3 s of every test process) for the "iri" format, which no notebook schema uses."""
+    sys.modules.setdefault("rfc3987_syntax", None)  # type: ignore[arg-type]
+
 
 #: the repository this test suite belongs to
 ROOT = Path(__file__).resolve().parents[1]
@@ -62,6 +69,21 @@ def wheel_centre_velocity(theta_dot, phi_dot, beta, r):
     i3 = vec3(axle(beta))
     omega = np.asarray(theta_dot, float)[..., None] * i3 + np.asarray(phi_dot, float)[..., None] * K
     return np.cross(omega, r * K)[..., :2]
+
+
+def hub_velocity(kind, beta, r, rates, roller=None):
+    """Velocity of the hub of a wheel without a steering joint, from no slip at the contact point (3D, no wmr).
+
+    Fixed wheel: omega = theta_dot i, v_H = omega x (r k).  Swedish wheel: the roller (axis a,
+    horizontal) spins at sigma_dot about a; with a contact radius r the hub moves by
+    (theta_dot i + sigma_dot a) x (r k) (see SwedishWheel's docstring for a general roller radius).
+    """
+    i3 = vec3(axle(beta))
+    omega = rates[0] * i3
+    if kind == "swedish":
+        a3 = vec3(axle(beta + roller))                   # the roller axis: the axle turned by gamma
+        omega = omega + rates[1] * a3
+    return np.cross(omega, r * K)[:2]
 
 
 def unit_mount_velocity(unit, beta, rates, psi_dot=0.0):

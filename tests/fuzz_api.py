@@ -7,12 +7,14 @@ Each argument has a *role*; a role gives three kinds of values for a robot:
 
 * ``good``: ordinary valid values;
 * ``odd``: valid but awkward values (extreme magnitudes, Fractions, NumPy scalars, empty batches):
-  the call must return finite results or raise ``TypeError``/``ValueError`` (overflow detected);
+  the call must return finite results or raise an input error (overflow detected);
 * ``bad``: values the function cannot handle (wrong kind, wrong shape, NaN, infinity, SymPy
   ``oo``/``nan``/``zoo``/``I``, ``10**400``, ``np.longdouble('1e400')``, the class ``Robot``...):
-  the call must raise ``TypeError`` or ``ValueError``.
+  the call must raise an input error.
 
-A rejection's message must name the argument (as a word).  Outcomes: ``returned``, ``rejected``,
+An input error is the package's own :class:`wmr.errors.InputError` (an ``InputTypeError`` or
+``InputValueError``): a bare ``TypeError`` or ``ValueError`` (from inside NumPy, say) is a
+``wrong-exception``.  A rejection's message must name the argument (as a word).  Outcomes: ``returned``, ``rejected``,
 and the faults ``wrong-exception``, ``unnamed``, ``accepted-bad``, ``non-finite``, ``hang``.
 """
 from __future__ import annotations
@@ -28,10 +30,24 @@ import sympy as sp
 
 import wmr
 from wmr import swerve
-from wmr.analysis import design, linalg, lines, mobility, motion_kappa, overview, reference, singularities, steering
+from wmr.analysis import (
+    design,
+    linalg,
+    lines,
+    mobility,
+    motion_kappa,
+    overview,
+    reference,
+    singularities,
+    square,
+)
 from wmr.analysis.sweep import Grid
-from wmr.model import backend, platform, tolerance
+from wmr.analysis.sweep import analyses as sweep_analyses
+from wmr.analysis.sweep import configurations as sweep_configurations
+from wmr.errors import InputError
+from wmr.model import backend, platform, tolerance, wheels
 from wmr.model.backend import NUMERIC, SYMBOLIC
+from wmr.model.wheels import joints, unsteered
 
 x_sym = sp.Symbol("x", positive=True)
 RNG = np.random.default_rng(2002)
@@ -42,8 +58,8 @@ def _robots():
     mixed = wmr.Robot([wmr.OffsetWheel((1.0, 0.2), r=0.2, d=0.1), wmr.CentredWheel((-0.5, 0.9), r=0.3),
                        wmr.DualWheel((-0.4, -1.0), r=0.25, b=0.15), wmr.CentredWheel((0.6, -0.7), r=0.1)])
     unsteered = wmr.Robot([wmr.SwedishWheel((0.5, 0.3), r=0.1, angle=0.4, roller=np.pi / 4),
-                           wmr.FixedWheel((-0.6, 0.2), r=0.2, angle=1.2), wmr.SwedishWheel((0.1, -0.7), r=0.1, angle=-2.0,
-                                                                                         roller=-np.pi / 4)])
+                           wmr.FixedWheel((-0.6, 0.2), r=0.2, angle=1.2),
+                           wmr.SwedishWheel((0.1, -0.7), r=0.1, angle=-2.0, roller=-np.pi / 4)])
     return [wmr.paper_robot("centred", L=0.5, r=0.1), wmr.paper_robot("offset", L=2.0, r=0.3),
             wmr.paper_robot("dual", L=1.0, r=0.2), mixed, wmr.Robot([wmr.CentredWheel((0.0, 0.0), r=1.0)]), unsteered]
 
@@ -64,7 +80,8 @@ def _arrays(last, n=4):
             RNG.uniform(-1, 1, (2, 3, last))]
     odd = [np.full(last, BIG), np.full(last, -BIG), np.full(last, TINY), np.zeros((0, last)),
            [Fraction(1, 3)] * last, np.ones(last, dtype=np.float32), np.arange(last), np.full((2, last), 1e300)]
-    bad = [np.zeros(last + 1), np.zeros(max(last - 1, 0)), np.zeros((1, last + 1)), np.full(last, 1 + 1j), ["0.7"] * last,
+    bad = [np.zeros(last + 1), np.zeros(max(last - 1, 0)), np.zeros((1, last + 1)), np.full(last, 1 + 1j),
+           ["0.7"] * last,
            [True] * last, np.full(last, np.nan), [sp.oo] + [0] * (last - 1), [10**400] * last,
            np.array([np.longdouble("1e400")] * last), np.zeros((last, 0)), 0.5]
     return good, odd, bad + BAD_ANY
@@ -115,7 +132,8 @@ def _role(name, bot):
         return ([RNG.normal(size=(3, 3)), RNG.normal(size=(4, 6, 6)), RNG.normal(size=(2, 5)), np.eye(3), [[1.0, 2.0]]],
                 [np.full((3, 3), BIG), np.full((2, 2), TINY), np.zeros((3, 3)), np.empty((3, 0)), np.empty((0, 3)),
                  np.diag([1e300, 1e-300, 1.0]), [[Fraction(1, 3), 1], [2, 3]]],
-                [np.zeros(3), 2.0, np.full((2, 2), 1j), [["1", "2"]], np.full((2, 2), np.nan), [[True, False]]] + BAD_ANY)
+                [np.zeros(3), 2.0, np.full((2, 2), 1j), [["1", "2"]], np.full((2, 2), np.nan),
+                 [[True, False]]] + BAD_ANY)
     if name == "matrix1":
         good, odd, bad = _role("matrix", bot)
         return good[:1] + good[2:], odd, bad + [good[1]]
@@ -190,6 +208,9 @@ def _role(name, bot):
         return [Sample(50, seed=1), RNG.uniform(-3, 3, (20, w))], [], [None, "grid", np.zeros((5, w + 1)), 3]
     if name == "key":
         return ["P", "H", "wheels", "i", "j"], [], ["Q", 3, None]
+    if name == "driven":                    # the actuation of a dual wheel's three joints
+        return ([None, {"swivel": True}, {}, (False, True, True), [True, True, False], {"drive1": np.True_}], [],
+                [{"steer": True}, {"drive1": 1}, (True, True), "swivel", 3, {"swivel": None}, [True] * 4, [1, 0, 1]])
     if name == "index":
         return [0, w - 1], [], [w, -w - 1, 1.5, "0", None, True]
     raise KeyError(name)
@@ -206,6 +227,13 @@ class Case:
     robots: tuple = ()           # which robots the roles are drawn for (default: all)
 
 
+def _attr(module, name):
+    """A call of ``module.name`` with the arguments by name (for the cases built in a loop)."""
+    def call(**arguments):
+        return getattr(module, name)(**arguments)
+    return call
+
+
 def _traj():
     return wmr.simulate(ROBOTS[0], [-1.0, -1.0, -1.0], [0.0, 0.0, 0.0], t_end=0.2, dt=0.1)
 
@@ -218,7 +246,8 @@ CASES = [
     # --- construction
     Case("OffsetWheel", lambda position, r, d: wmr.OffsetWheel(position, r=r, d=d),
          (("position", "point_sym"), ("r", "length_sym"), ("d", "nonneg_sym"))),
-    Case("CentredWheel", lambda position, r: wmr.CentredWheel(position, r=r), (("position", "point_sym"), ("r", "length_sym"))),
+    Case("CentredWheel", lambda position, r: wmr.CentredWheel(position, r=r),
+         (("position", "point_sym"), ("r", "length_sym"))),
     Case("DualWheel", lambda position, r, b: wmr.DualWheel(position, r=r, b=b),
          (("position", "point_sym"), ("r", "length_sym"), ("b", "length_sym"))),
     Case("FixedWheel", lambda position, r, angle: wmr.FixedWheel(position, r=r, angle=angle),
@@ -229,14 +258,17 @@ CASES = [
     Case("paper_robot", lambda kind, L, r, d, b, exact: wmr.paper_robot(kind, L=L, r=r, d=d, b=b, exact=exact),
          (("kind", "kind"), ("L", "length_sym"), ("r", "length_sym"), ("d", "opt_nonneg"), ("b", "opt_length_sym"),
           ("exact", "flag"))),
-    Case("equilateral_mounts", lambda L, first_deg, clockwise, exact: wmr.equilateral_mounts(L, first_deg, clockwise, exact),
+    Case("equilateral_mounts",
+         lambda L, first_deg, clockwise, exact: wmr.equilateral_mounts(L, first_deg, clockwise, exact),
          (("L", "length_sym"), ("first_deg", "angle"), ("clockwise", "flag"), ("exact", "flag"))),
     # --- the robot's matrices (self is a valid robot)
-    Case("Robot.J1", lambda robot, L, backend: robot.J1(L=L, backend=backend), (S, ("L", "positive"), ("backend", "backend"))),
+    Case("Robot.J1", lambda robot, L, backend: robot.J1(L=L, backend=backend),
+         (S, ("L", "positive"), ("backend", "backend"))),
     Case("Robot.J2", lambda robot, beta: robot.J2(beta), (S, ("beta", "sbeta"))),
     Case("Robot.F", lambda robot, beta: robot.F(beta), (S, ("beta", "sbeta"))),
     Case("Robot.J", lambda robot, beta, L: robot.J(beta, L=L), (S, ("beta", "sbeta"), ("L", "positive"))),
-    Case("Robot.moved", lambda robot, origin, angle: robot.moved(origin, angle), (S, ("origin", "point"), ("angle", "angle"))),
+    Case("Robot.moved", lambda robot, origin, angle: robot.moved(origin, angle),
+         (S, ("origin", "point"), ("angle", "angle"))),
     Case("Robot.effective_beta", lambda robot, beta: robot.effective_beta(beta), (S, B)),
     Case("unit.block", lambda robot, beta: robot.wheels[0].block(beta), (S, ("beta", "angles"))),
     Case("unit.points", lambda robot, beta: robot.wheels[0].points(beta), (S, ("beta", "angles"))),
@@ -251,14 +283,17 @@ CASES = [
     Case("wrap_angle", lambda angle: platform.wrap_angle(angle), (("angle", "angles"),)),
     Case("point_row", lambda d, L: platform.point_row(d, L), (("d", "point"), ("L", "positive"))),
     Case("point_velocity", lambda twist, d: wmr.point_velocity(twist, d), (T, ("d", "pair"))),
-    Case("choose", lambda value, backend: backend_choose(value, backend), (("value", "anything"), ("backend", "backend_any"))),
+    Case("choose", lambda value, backend: backend_choose(value, backend),
+         (("value", "anything"), ("backend", "backend_any"))),
     Case("near_zero", lambda x, scale: tolerance.near_zero(x, scale), (("x", "angles"), ("scale", "nonneg_any"))),
     # --- linear algebra
-    *[Case(f"linalg.{f}", (lambda f: lambda A: getattr(linalg, f)(A))(f), (("A", "matrix"),),
-           allow="inf" if f == "condition_number" else "") for f in ("singular_values", "column_norms", "rank", "nullity",
+    *[Case(f"linalg.{f}", _attr(linalg, f), (("A", "matrix"),),
+           allow="inf" if f == "condition_number" else "") for f in ("singular_values", "column_norms", "rank",
+                                                                     "nullity",
                                                             "condition_number", "gram")],
     Case("linalg.det", lambda A: linalg.det(A), (("A", "square"),)),
     Case("linalg.null_space", lambda A: linalg.null_space(A), (("A", "matrix1"),)),
+    Case("linalg.left_null_space", lambda A: linalg.left_null_space(A), (("A", "matrix1"),)),
     Case("linalg.pinv_columns", lambda A: linalg.pinv_columns(A), (("A", "matrix1"),)),
     Case("is_isotropic", lambda A: wmr.is_isotropic(A), (("A", "matrix"),)),
     # --- analyses
@@ -286,6 +321,15 @@ CASES = [
          robots=(0,)),
     Case("sweep", lambda robot, analysis, angles: wmr.sweep(robot, analysis, angles), (R, ("analysis", "analysis"),
                                                                                        ("angles", "angles"))),
+    Case("as_source", lambda robot, angles: sweep_configurations.as_source(angles, robot.w), (S, ("angles", "angles"))),
+    Case("count", lambda value: sweep_configurations.count("value", value), (("value", "count"),)),
+    Case("J_length", lambda robot, L: sweep_analyses.J_length(robot, L), (R, ("L", "L_opt"))),
+    Case("require_square", lambda robot: square.require_square(robot), (R,)),
+    Case("default_L", lambda robot, L: square.default_L(robot, L), (("robot", "any_robot"), ("L", "L_opt"))),
+    Case("wheel_kind", lambda kind: wheels.wheel_kind(kind), (("kind", "kind"),)),
+    Case("constant", lambda angle: unsteered.constant("angle", angle), (("angle", "angle"),)),
+    Case("actuation", lambda driven: joints.actuation(wmr.DualWheel.JOINTS, driven, "DualWheel"),
+         (("driven", "driven"),)),
     # --- design study
     Case("worst_kappa", lambda robot, L: design.worst_kappa(robot, angles=Grid(3, 0.0, np.pi), L=L),
          (R, ("L", "L_opt")), allow="inf"),
@@ -315,15 +359,16 @@ CASES = [
     Case("lines_concurrency", lambda points, directions: lines.lines_concurrency(points, directions),
          (("points", "pairs"), ("directions", "pairs"))),
     Case("circumcircle", lambda points: lines.circumcircle(points), (("points", "pairs"),)),
-    *[Case(f"lines.{f}", (lambda f: lambda robot, beta: getattr(lines, f)(robot, beta))(f), (R, B))
+    *[Case(f"lines.{f}", _attr(lines, f), (R, B))
       for f in ("wheel_plane_lines", "axle_lines")],
-    *[Case(f"lines.{f}", (lambda f: lambda robot, beta: getattr(lines, f)(robot, beta))(f), (R, ("beta", "beta1")))
+    *[Case(f"lines.{f}", _attr(lines, f), (R, ("beta", "beta1")))
       for f in ("concurrency_point", "axles_concurrency")],
     Case("planes_through", lambda robot, D: lines.planes_through(robot, D), (R, ("D", "pair"))),
     Case("axles_through", lambda robot, U: lines.axles_through(robot, U), (R, ("U", "pair"))),
-    Case("pair_line_angle", lambda robot, i, j: lines.pair_line_angle(robot, i, j), (R, ("i", "wheel"), ("j", "wheel"))),
+    Case("pair_line_angle", lambda robot, i, j: lines.pair_line_angle(robot, i, j),
+         (R, ("i", "wheel"), ("j", "wheel"))),
     Case("line_angle", lambda beta: lines.line_angle(beta), (("beta", "angles"),)),
-    *[Case(f"singularities.{f}", (lambda f: lambda robot, beta, L: getattr(singularities, f)(robot, beta, L))(f),
+    *[Case(f"singularities.{f}", _attr(singularities, f),
            (("robot", "robot3"), ("beta", "beta"), ("L", "L_opt")), robots=(0,))
       for f in ("det_J", "det_J_scale", "is_singular")],
     Case("classify", lambda robot, beta, L: singularities.classify(robot, beta, L),
@@ -335,12 +380,13 @@ CASES = [
     Case("exact_robot", lambda robot: singularities.exact_robot(robot), (("robot", "any_robot"),)),
     Case("numeric_robot", lambda robot: singularities.numeric_robot(robot), (R,)),
     # --- the dense reference
-    *[Case(f"reference.{f}", (lambda f: lambda robot, beta: getattr(reference, f)(robot, beta))(f), (R, B))
+    *[Case(f"reference.{f}", _attr(reference, f), (R, B))
       for f in ("J2", "F", "rank_F")],
-    Case("reference.forward", lambda robot, beta, rates: reference.forward(robot, beta, rates), (R, B, ("rates", "rates"))),
+    Case("reference.forward", lambda robot, beta, rates: reference.forward(robot, beta, rates),
+         (R, B, ("rates", "rates"))),
     Case("reference.inverse", lambda robot, beta, twist: reference.inverse(robot, beta, twist), (R, B, T)),
     Case("reference.det", lambda A: reference.det(A), (("A", "square"),)),
-    *[Case(f"reference.{f}", (lambda f: lambda A: getattr(reference, f)(A))(f), (("A", "matrix"),),
+    *[Case(f"reference.{f}", _attr(reference, f), (("A", "matrix"),),
            allow="inf" if f == "condition_number" else "") for f in ("rank", "condition_number")],
     # --- swerve practice (wmr.swerve): centred-wheel robots
     *[Case(f"swerve.{c.name}", c.call, c.roles, robots=(0, 4)) for c in (
@@ -353,7 +399,8 @@ CASES = [
         Case("swerve_robot", lambda robot: swerve.swerve_robot(robot), (R,)),
         Case("optimize_modules", lambda robot, twist, current: swerve.optimize_modules(robot, twist, current),
              (R, T, ("current", "beta"))),
-        Case("optimize_robot", lambda robot, twist, current, samples: swerve.optimize_robot(robot, twist, current, samples),
+        Case("optimize_robot", lambda robot, twist, current, samples: swerve.optimize_robot(robot, twist, current,
+                                                                                            samples),
              (R, T, ("current", "beta"), ("samples", "samples"))),
         Case("transition_slip", lambda robot, current, beta, speed: swerve.transition_slip(robot, current, beta, speed),
              (R, ("current", "beta"), B, ("speed", "beta"))),
@@ -369,7 +416,8 @@ CASES = [
     Case("swerve.discretize", lambda twist, dt: swerve.discretize(twist, dt), (T, ("dt", "dt"))),
     Case("swerve.direction_change", lambda speed, angle, spin, t_change, t_end, dt:
          swerve.direction_change(speed, angle, spin, t_change, t_end, dt),
-         (("speed", "positive"), ("angle", "angle"), ("spin", "angle"), ("t_change", "dt"), ("t_end", "dt"), ("dt", "dt"))),
+         (("speed", "positive"), ("angle", "angle"), ("spin", "angle"), ("t_change", "dt"), ("t_end", "dt"),
+          ("dt", "dt"))),
     Case("swerve.spin_and_translate", lambda speed, rate, t_start, t_end, dt:
          swerve.spin_and_translate(speed, rate, t_start, t_end, dt),
          (("speed", "positive"), ("rate", "angle"), ("t_start", "dt"), ("t_end", "dt"), ("dt", "dt"))),
@@ -379,10 +427,13 @@ CASES = [
          robots=(0,)),
     Case("swerve.resteer_study", lambda robot, profile, steer_rate: swerve.resteer_study(robot, profile, steer_rate),
          (R, ("profile", "profile"), ("steer_rate", "positive")), robots=(0,)),
-    Case("swerve.to_wpilib", lambda beta, speed: swerve.to_wpilib(beta, speed), (("beta", "angles"), ("speed", "anything"))),
+    Case("swerve.to_wpilib", lambda beta, speed: swerve.to_wpilib(beta, speed),
+         (("beta", "angles"), ("speed", "anything"))),
     Case("swerve.from_wpilib", lambda alpha: swerve.from_wpilib(alpha), (("alpha", "angles"),)),
     Case("swerve.to_chassis", lambda twist: swerve.to_chassis(twist), (T,)),
     Case("swerve.from_chassis", lambda chassis: swerve.from_chassis(chassis), (("chassis", "twist"),)),
+    Case("wheel_odometry", lambda robot, beta, angles, heading: wmr.wheel_odometry(robot, beta, angles, heading),
+         (R, ("beta", "samples_beta"), ("angles", "samples_angles"), ("heading", "heading"))),
 ]
 
 #: public functions deliberately not fuzzed here, and why
@@ -399,6 +450,26 @@ NOT_FUZZED = {
     "Landscape": "result type of landscape", "MotionMap": "result type of motion_map",
     "load": "reads a file: every malformed case (one-line RobotFileError FILE:LINE: key) is tested in test_io.py",
     "Overview": "the result type of overview, fuzzed through it",
+    # the wheel kinds' declarations (what a kind's author writes), checked in tests/test_wheel_kinds.py
+    "WheelUnit": "the base of the wheel kinds, fuzzed through the five kinds (OffsetWheel, ...)",
+    "UnsteeredUnit": "as WheelUnit (FixedWheel, SwedishWheel)", "Joint": "a kind's declaration (test_wheel_kinds)",
+    "UnitGeometry": "a base of WheelUnit: points and parts, fuzzed through unit.points",
+    "register": "called when a kind's class is defined (test_wheel_kinds defines one)",
+    "FileKey": "a kind's declaration; reading robot files is tested in test_io.py",
+    "Disc": "drawing data of WheelUnit.parts", "Link": "as Disc", "Rollers": "as Disc", "Pivot": "as Disc",
+    "Body": "a kind's mechanism as data (WheelUnit.root_body), checked per kind by wheel_contract.check_mechanism",
+    "Mechanism": "as Body; the height WheelUnit.mechanism takes is checked in test_wheel_kinds",
+    "UnitMechanism": "a base of WheelUnit: mechanism and root_body, checked per kind (wheel_contract)",
+    "mount": "a helper of the kinds' root_body (the unit's checked position)", "wheel": "as mount",
+    "rate_columns": "read from a kind's JOINTS (a kind's declaration, test_wheel_kinds)",
+    "wheel_kinds": "no arguments", "kinds_table": "no arguments",
+    "toml_string": "formatting of robot files, tested through dump and load in test_io.py",
+    "toml_text": "as toml_string",
+    "kind_error": "builds the error every check raises (the checks are fuzzed)",
+    "finite_float": "the conversion under real and number (fuzzed through every check); callers check the kind first",
+    "rank_from_singular_values": "the rule rank applies to singular_values' output, fuzzed through rank",
+    "kappa_from_singular_values": "the rule condition_number applies, fuzzed through it",
+    "Partial": "the sweep's reduction, fuzzed through sweep", "finish": "as Partial",
 }
 
 
@@ -418,17 +489,33 @@ def _more_roles(name, bot):
         return ([np.pi / 2, np.pi / 4, -np.pi / 4, 1, sp.pi / 3, np.float32(0.5)], [TINY, 1e-9, -np.pi / 2 + 1e-12],
                 [0, 0.0, -np.pi / 2, 2.0, np.pi, -3.0, [0.5]] + BAD_ANY)
     if name == "profile":                   # short twist profiles (a simulation per call)
-        return ([swerve.direction_change(t_change=0.02, t_end=0.05, dt=0.01), swerve.spin_and_translate(t_start=0.01, t_end=0.03, dt=0.01),
+        return ([swerve.direction_change(t_change=0.02, t_end=0.05, dt=0.01),
+                 swerve.spin_and_translate(t_start=0.01, t_end=0.03, dt=0.01),
                  swerve.TwistProfile("arc", 0.02, np.tile([1.0, 0.5, 0.0], (3, 1)))],
-                [swerve.TwistProfile("big", 0.01, np.full((2, 3), 1e300)), swerve.TwistProfile("tiny", 1e-300, np.full((2, 3), TINY))],
+                [swerve.TwistProfile("big", 0.01, np.full((2, 3), 1e300)),
+                 swerve.TwistProfile("tiny", 1e-300, np.full((2, 3), TINY))],
                 ["profile", None, 3, np.zeros((5, 3)), swerve.TwistProfile("nan", 0.01, np.full((2, 3), np.nan)),
-                 swerve.TwistProfile("empty", 0.01, np.zeros((0, 3))), swerve.TwistProfile("dt", -1.0, np.zeros((2, 3)))])
+                 swerve.TwistProfile("empty", 0.01, np.zeros((0, 3))),
+                 swerve.TwistProfile("dt", -1.0, np.zeros((2, 3)))])
     if name == "strategy":
         return ["plain", "module", "robot"], [], ["wpilib", 3, None, ["robot"]]
     if name == "seed":
         return [0, 7, np.int64(3)], [2**40], [-1, 0.5, "1", None, True, np.nan]
     if name == "no_path":                                     # dump writes nothing when path is None
         return [None], [], [3, 1.5, b"x", object()]
+    if name in ("samples_beta", "samples_angles"):     # four samples of odometry: (4, w), (4, measured joints)
+        width = bot.w if name == "samples_beta" else sum(
+            1 for u in bot.wheels for j in u.joints if j.rate is not None and j.driven and not j.steering)
+        good = [np.zeros((4, width)), RNG.uniform(-3, 3, (4, width)), np.cumsum(RNG.uniform(0, 1, (4, width)), axis=0)]
+        odd = [np.full((4, width), BIG), np.array([[BIG] * width, [-BIG] * width] * 2), np.full((4, width), TINY),
+               np.ones((4, width), dtype=np.float32)]
+        bad = [np.zeros((1, width)), np.zeros(width), np.zeros((4, width + 1)), np.full((4, width), np.nan),
+               np.full((4, width), 1j), np.zeros((2, 4, width))] + BAD_ANY
+        return good, odd, bad
+    if name == "heading":                   # one gyro angle for each of the four samples
+        return ([None, np.zeros(4), RNG.uniform(-3, 3, 4)], [np.full(4, BIG), np.full(4, TINY)],
+                [np.zeros(3), np.zeros((4, 1)), np.full(4, np.nan), ["0"] * 4, np.full(4, 1j)]
+                + [b for b in BAD_ANY if b is not None])
     if name == "samples":
         return [1, 3, np.int64(2)], [], [0, -1, 1.5, True, "1", None]
     if name in ("pair1", "rates1", "opt_beta1"):
@@ -487,12 +574,12 @@ def outcome(case, args, bad, seconds=5):
         result = case.call(**args)
     except _Timeout:
         return "hang", ""
-    except (TypeError, ValueError) as e:
+    except InputError as e:                                 # the package's own input errors, nothing else
         msg = str(e)
         if not any(re.search(rf"(?<![A-Za-z_]){re.escape(a)}(?![A-Za-z_])", msg) for a in args):
             return "unnamed", f"{type(e).__name__}: {msg[:160]}"
         return "rejected", ""
-    except Exception as e:                                  # noqa: BLE001 - this is what we count
+    except Exception as e:
         if isinstance(e, AttributeError) and str(e).startswith("module 'wmr"):
             return "missing", str(e)                        # (measuring an older tree)
         return "wrong-exception", f"{type(e).__name__}: {str(e)[:160]}"

@@ -15,17 +15,18 @@ PI = np.pi
 
 
 def _robots():
-    F, S, C, O = wmr.FixedWheel, wmr.SwedishWheel, wmr.CentredWheel, wmr.OffsetWheel
+    F, S, C, Off = wmr.FixedWheel, wmr.SwedishWheel, wmr.CentredWheel, wmr.OffsetWheel
     rect = [(0.3, 0.25), (0.3, -0.25), (-0.3, 0.25), (-0.3, -0.25)]
     return {
         "three omni wheels": (wmr.Robot([S(tuple(p), r=0.05, angle=float(np.arctan2(p[1], p[0])), roller=PI / 2)
                                          for p in wmr.equilateral_mounts(0.25)]), (3, 0)),
         "four mecanum wheels": (wmr.Robot([S(p, r=0.05, angle=PI / 2, roller=PI / 4 if p[0] * p[1] > 0 else -PI / 4)
                                            for p in rect]), (3, 0)),
-        "differential drive + castor": (wmr.Robot([F((0.0, 0.2), r=0.05, angle=PI / 2), F((0.0, -0.2), r=0.05, angle=PI / 2),
-                                                   O((-0.3, 0.0), r=0.03, d=0.04)]), (2, 0)),
-        "steered wheel + two castors": (wmr.Robot([C((0.35, 0.0), r=0.05), O((-0.2, 0.2), r=0.03, d=0.04),
-                                                   O((-0.2, -0.2), r=0.03, d=0.04)]), (2, 1)),
+        "differential drive + castor": (wmr.Robot([F((0.0, 0.2), r=0.05, angle=PI / 2),
+                                                   F((0.0, -0.2), r=0.05, angle=PI / 2),
+                                                   Off((-0.3, 0.0), r=0.03, d=0.04)]), (2, 0)),
+        "steered wheel + two castors": (wmr.Robot([C((0.35, 0.0), r=0.05), Off((-0.2, 0.2), r=0.03, d=0.04),
+                                                   Off((-0.2, -0.2), r=0.03, d=0.04)]), (2, 1)),
         "tricycle": (wmr.Robot([F((0.0, 0.2), r=0.05, angle=PI / 2), F((0.0, -0.2), r=0.05, angle=PI / 2),
                                 C((0.5, 0.0), r=0.05)]), (1, 1)),
         "car (front axle of two steered wheels)": (wmr.Robot([F((0.0, 0.2), r=0.05, angle=PI / 2),
@@ -38,7 +39,7 @@ def _robots():
         "one omni wheel + one fixed wheel": (wmr.Robot([S((0.3, 0.0), r=0.05, angle=0.0, roller=PI / 2),
                                                        F((-0.3, 0.0), r=0.05, angle=0.0)]), (2, 0)),
         "two steered + one castor": (wmr.Robot([C((0.3, 0.0), r=0.05), C((-0.3, 0.0), r=0.05),
-                                                O((0.0, 0.3), r=0.03, d=0.03)]), (1, 2)),
+                                                Off((0.0, 0.3), r=0.03, d=0.03)]), (1, 2)),
     }
 
 
@@ -58,7 +59,7 @@ def test_class(name):
 
 @pytest.mark.parametrize("name", NAMES)
 def test_example_configuration_attains_the_class(name):
-    """At the returned configuration the generic twist is admissible and the admissible twists have dimension delta_m."""
+    """At the returned configuration the generic twist is admissible; the admissible twists have dimension delta_m."""
     bot, (dm, ds) = ROBOTS[name]
     c = campion_class(bot)
     assert bool(wmr.inverse(bot, c.beta, c.twist).admissible)
@@ -94,7 +95,8 @@ def test_class_is_frame_invariant_and_deterministic(name):
 
 def test_degenerate_robots_are_named():
     F, C = wmr.FixedWheel, wmr.CentredWheel
-    stuck = wmr.Robot([F((1.0, 0.0), r=0.1, angle=0.0), F((-0.5, 0.8), r=0.1, angle=0.3), F((-0.5, -0.8), r=0.1, angle=2.0)])
+    stuck = wmr.Robot([F((1.0, 0.0), r=0.1, angle=0.0), F((-0.5, 0.8), r=0.1, angle=0.3),
+                       F((-0.5, -0.8), r=0.1, angle=2.0)])
     c = campion_class(stuck)
     assert (c.delta_m, c.standard) == (0, False) and "no motion" in c.name and c.twist == (0.0, 0.0, 0.0)
     pivot = wmr.Robot([F((1.0, 0.0), r=0.1, angle=0.0), F((0.0, 1.0), r=0.1, angle=PI / 2), C((-1.0, -1.0), r=0.1)])
@@ -151,10 +153,17 @@ def mixed_robots(draw):
     for p in pts:
         kind = draw(st.sampled_from(["fixed", "swedish", "centred", "offset", "dual"]))
         angle = draw(_ANGLES)
-        units.append({"fixed": lambda: wmr.FixedWheel(p, r=0.1, angle=angle),
-                      "swedish": lambda: wmr.SwedishWheel(p, r=0.1, angle=angle, roller=draw(st.sampled_from([PI / 2, PI / 4, -PI / 4]))),
-                      "centred": lambda: wmr.CentredWheel(p, r=0.1), "offset": lambda: wmr.OffsetWheel(p, r=0.1, d=0.05),
-                      "dual": lambda: wmr.DualWheel(p, r=0.1, b=0.05)}[kind]())
+        if kind == "fixed":
+            units.append(wmr.FixedWheel(p, r=0.1, angle=angle))
+        elif kind == "swedish":
+            units.append(wmr.SwedishWheel(p, r=0.1, angle=angle,
+                                          roller=draw(st.sampled_from([PI / 2, PI / 4, -PI / 4]))))
+        elif kind == "centred":
+            units.append(wmr.CentredWheel(p, r=0.1))
+        elif kind == "offset":
+            units.append(wmr.OffsetWheel(p, r=0.1, d=0.05))
+        else:
+            units.append(wmr.DualWheel(p, r=0.1, b=0.05))
     return wmr.Robot(units)
 
 

@@ -33,7 +33,8 @@ def test_analyze_json_matches_the_library(capsys):
     assert code == 0 and err == ""
     data = json.loads(out)
     ov = overview(wmr.load(SWERVE), grid=500, twists=50)
-    assert data["rank_F"] == {"generic": 7, "min": 6, "max": 7} and data["nullity"] == {"generic": 0, "min": 0, "max": 1}
+    assert data["rank_F"] == {"generic": 7, "min": 6, "max": 7}
+    assert data["nullity"] == {"generic": 0, "min": 0, "max": 1}
     assert data["configurations"] == ov.configurations and data["L"] == ov.L
     assert data["kappa_J_L1"] == pytest.approx(1.0) and data["kappa_J2"] == 1.0 and data["kappa_J"]["max"] == "inf"
     assert [f["family"] for f in data["singular"]] == [f["family"] for f in ov.singular]
@@ -80,7 +81,8 @@ def test_fk_json_matches_the_library(capsys):
     bot = wmr.load(OFFSET)
     beta = np.radians([10, 20, 30])
     rates = wmr.inverse(bot, beta, [0.3, -1.0, 0.5]).value                     # compatible rates
-    code, out, _ = _run(capsys, "fk", OFFSET, "--angles", "10", "20", "30", "--rates=" + ",".join(map(repr, rates.tolist())), "--json")
+    code, out, _ = _run(capsys, "fk", OFFSET, "--angles", "10", "20", "30",
+                        "--rates=" + ",".join(map(repr, rates.tolist())), "--json")
     data = json.loads(out)
     assert code == 0 and np.allclose([data["omega"], data["vx"], data["vy"]], [0.3, -1.0, 0.5]) and data["admissible"]
     code, out, _ = _run(capsys, "fk", OFFSET, "--angles", "10", "20", "30", "--rates", "1,2,1,2,1,2", "--json")
@@ -91,7 +93,8 @@ def test_fk_json_matches_the_library(capsys):
 
 
 def test_fk_slip(capsys):
-    code, out, _ = _run(capsys, "fk", SWERVE, "--angles", "0", "0", "0", "90", "--rates", "-10", "-10", "-10", "-10", "--json")
+    code, out, _ = _run(capsys, "fk", SWERVE, "--angles", "0", "0", "0", "90", "--rates", "-10", "-10", "-10", "-10",
+                        "--json")
     data = json.loads(out)
     assert code == 0 and not data["admissible"] and data["slip"] == pytest.approx(0.622, abs=1e-3)
     code, out, _ = _run(capsys, "fk", SWERVE, "--angles", "0", "0", "0", "0", "--rates", "-10", "-10", "-10", "-10")
@@ -128,12 +131,38 @@ def test_bad_input_is_one_line(capsys, bad_file, argv, words):
     assert err.startswith(f"wmr {argv[0]}: ") and words in err and err.count("\n") == 1, err
 
 
+@pytest.mark.parametrize("error", [ValueError("a bug"), TypeError("another bug"), IndexError("and another")])
+def test_a_library_bug_is_not_called_bad_input(capsys, monkeypatch, error):
+    """A builtin exception from inside wmr (here a planted one) is a bug: traceback, a request to report, exit 1."""
+    def broken(*args, **kwargs):
+        raise error
+    monkeypatch.setattr(wmr, "steering_angles", broken)
+    code, out, err = _run(capsys, "ik", SWERVE, "--vx", "1")
+    assert code == 1 and out == ""
+    assert "Traceback (most recent call last)" in err and f"{type(error).__name__}: {error}" in err
+    assert err.rstrip().splitlines()[-1].startswith("wmr ik: internal error: this is a bug in wmr") and "report" in err
+
+
+def test_input_errors_are_the_package_s_own(capsys, monkeypatch):
+    """What the command line reports as bad input is an InputError (which is also a ValueError or TypeError)."""
+    from wmr.errors import InputError
+    with pytest.raises(InputError) as info:
+        wmr.load(ROOT / "examples" / "swerve4.toml").J1(L=-1.0)
+    assert isinstance(info.value, ValueError)
+    def bad(*args, **kwargs):
+        raise info.value
+    monkeypatch.setattr(wmr, "steering_angles", bad)
+    code, _, err = _run(capsys, "ik", SWERVE, "--vx", "1")
+    assert code == 2 and err == f"wmr ik: {info.value}\n"
+
+
 def test_ik_fixed_wheels(capsys):
     diff = str(ROOT / "examples" / "differential.toml")
     code, out, _ = _run(capsys, "ik", diff, "--vx", "0.5", "--omega", "1", "--json")
     data = json.loads(out)
     assert code == 0 and data["admissible"] and data["admissible_without_resteering"]
     assert data["angles_deg"][:2] == [90.0, 90.0] and data["resteer_deg"][:2] == [0.0, 0.0]
-    assert np.allclose([data["rates"]["theta_dot_1"], data["rates"]["theta_dot_2"]], [(0.5 - 0.2) / 0.08, (0.5 + 0.2) / 0.08])
+    assert np.allclose([data["rates"]["theta_dot_1"], data["rates"]["theta_dot_2"]],
+                       [(0.5 - 0.2) / 0.08, (0.5 + 0.2) / 0.08])
     code, out, _ = _run(capsys, "ik", diff, "--vy", "0.5")                     # sideways: impossible
     assert code == 0 and "admissible: no" in out and "without re-steering: no" in out

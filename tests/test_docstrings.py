@@ -10,12 +10,12 @@ import importlib
 import inspect
 import pkgutil
 import re
-
 from pathlib import Path
 
 import pytest
 
 import wmr
+
 
 def _walk():
     """Every module of the package (walked, not listed by hand), except the ``__main__`` scripts."""
@@ -181,7 +181,8 @@ def test_parser_catches_an_undocumented_parameter():
 
 def test_the_walk_finds_every_module():
     """The module lists are walked from the package: a new module is checked without editing this file."""
-    files = {p.relative_to(Path(wmr.__file__).parent.parent).with_suffix("") for p in Path(wmr.__file__).parent.rglob("*.py")}
+    package = Path(wmr.__file__).parent
+    files = {p.relative_to(package.parent).with_suffix("") for p in package.rglob("*.py")}
     names = {".".join(f.parts[:-1] if f.name == "__init__" else f.parts) for f in files}
     assert names - {n for n in names if n.endswith("__main__")} == set(ALL_MODULES)
     assert "wmr.model.validation" in PUBLIC_MODULES and "wmr.analysis._closed" not in PUBLIC_MODULES

@@ -20,8 +20,10 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-import fuzz_api as F
 import wmr
+from wmr.errors import InputValueError
+
+import fuzz_api as F
 
 EXAMPLES = 8
 
@@ -75,9 +77,10 @@ def test_every_public_function_is_fuzzed_or_excused():
     """A new public function must get a fuzz case (or a stated reason in fuzz_api.NOT_FUZZED)."""
     covered = {c.name.split(".")[-1].split("(")[0] for c in F.CASES}
     covered |= {"Robot", "Solution", "Trajectory", "InstantCentre", "Concurrency", "Classification", "Meet",
-                "NumericBackend", "SymbolicBackend", "Grid", "Sample", "Sweep"}      # result types, fuzzed via the calls
-    covered |= {"real", "number", "positive", "nonnegative", "point", "finite_array", "symbolic_vector", "symbolic_matrix", "robot",
-                "numeric_robot", "free_symbols", "batch_shape", "flag", "optional_text", "integer", "show"}  # the checks
+                "NumericBackend", "SymbolicBackend", "Grid", "Sample", "Sweep"}    # result types, fuzzed via the calls
+    covered |= {"real", "number", "positive", "nonnegative", "point", "finite_array", "symbolic_vector",  # the checks
+                "symbolic_matrix", "robot", "numeric_robot", "free_symbols", "batch_shape", "flag", "optional_text",
+                "integer", "show"}
     missing = sorted(_public_functions() - covered - set(F.NOT_FUZZED))
     assert not missing, f"public functions without a fuzz case: {missing}"
 
@@ -89,8 +92,11 @@ def test_the_fuzzer_catches_faults(monkeypatch):
     assert F.outcome(case, {"x": 1.0}, ["x"])[0] == "accepted-bad"
     boom = F.Case("g", lambda x: [][1], (("x", "angle"),))
     assert F.outcome(boom, {"x": 1.0}, [])[0] == "wrong-exception"
-    vague = F.Case("h", lambda x: (_ for _ in ()).throw(ValueError("something is wrong")), (("x", "angle"),))
+    vague = F.Case("h", lambda x: (_ for _ in ()).throw(InputValueError("something is wrong")), (("x", "angle"),))
     assert F.outcome(vague, {"x": 1.0}, [])[0] == "unnamed"
+    builtin = F.Case("k", lambda x: (_ for _ in ()).throw(ValueError(f"x = {x} is bad")), (("x", "angle"),))
+    assert F.outcome(builtin, {"x": 1.0}, ["x"])[0] == "wrong-exception"        # not the package's own error
     monkeypatch.setattr(wmr.analysis.mobility, "rank_F", lambda robot, beta: float("nan"))
-    assert F.outcome(F.CASES[[c.name for c in F.CASES].index("mobility")], {"robot": F.ROBOTS[0], "beta": [0.0] * 3}, [])[0] \
+    mobility_case = F.CASES[[c.name for c in F.CASES].index("mobility")]
+    assert F.outcome(mobility_case, {"robot": F.ROBOTS[0], "beta": [0.0] * 3}, [])[0] \
         == "non-finite"

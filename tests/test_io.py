@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 
 import wmr
-from wmr.io import KEYS, RobotFileError, dump, load, loads
+from wmr.io import RobotFileError, dump, load, loads, wheel_keys
 
 EXAMPLES = Path(__file__).resolve().parent.parent / "examples"
 
@@ -23,8 +23,8 @@ radius = 0.05
 '''
 
 
-def _same_matrices(a, b, rng=np.random.default_rng(3)):
-    beta = rng.uniform(-np.pi, np.pi, (20, a.w))
+def _same_matrices(a, b):
+    beta = np.random.default_rng(3).uniform(-np.pi, np.pi, (20, a.w))
     assert a.w == b.w and a.qdot_names == b.qdot_names and [u.kind for u in a.wheels] == [u.kind for u in b.wheels]
     assert np.allclose(a.F(beta), b.F(beta), rtol=1e-14, atol=1e-14)
     assert np.allclose(a.J1(L=0.7), b.J1(L=0.7), rtol=1e-14, atol=1e-14)
@@ -53,7 +53,8 @@ def test_integers_are_numbers():
     assert bot.wheels[0].position == (1.0, 0.0) and bot.wheels[0].d == 0.0
 
 
-@pytest.mark.parametrize("robot", [wmr.paper_robot("centred", L=0.3, r=0.05), wmr.paper_robot("offset", L=2.0, r=0.3, d=0.1),
+@pytest.mark.parametrize("robot", [wmr.paper_robot("centred", L=0.3, r=0.05),
+                                   wmr.paper_robot("offset", L=2.0, r=0.3, d=0.1),
                                    wmr.paper_robot("dual", L=1.0, r=0.2, b=0.4), wmr.paper_robot("centred", exact=True),
                                    _mixed()], ids=["centred", "offset", "dual", "exact", "mixed"])
 def test_round_trip(robot, tmp_path):
@@ -107,11 +108,13 @@ MALFORMED = {
     "position a number": (BASE.replace("[-0.3, 0.1]", "0.3"), 9, "wheel[2].position", ["two numbers"]),
     "infinite position": (BASE.replace("[-0.3, 0.1]", "[inf, 0.1]"), 9, "wheel[2].position", ["finite"]),
     "radius a string": (BASE.replace("radius = 0.05\n\n", 'radius = "5 cm"\n\n'), 5, "wheel[1].radius", ["number"]),
-    "radius a boolean": (BASE.replace("radius = 0.05\n\n", "radius = true\n\n"), 5, "wheel[1].radius", ["number", "true"]),
+    "radius a boolean": (BASE.replace("radius = 0.05\n\n", "radius = true\n\n"), 5, "wheel[1].radius",
+                         ["number", "true"]),
     "zero radius": (BASE.replace("radius = 0.05\n\n", "radius = 0\n\n"), 5, "wheel[1].radius", ["positive"]),
     "negative offset": (BASE.replace("offset = 0.02", "offset = -0.02"), 11, "wheel[2].offset", ["negative"]),
     "missing offset": (BASE.replace("offset = 0.02\n", ""), 7, "wheel[2].offset", ["missing"]),
-    "duplicate mount point": (BASE.replace("[-0.3, 0.1]", "[0.3, 0]"), 9, "wheel[2].position", ["same mount point", "wheel[1]"]),
+    "duplicate mount point": (BASE.replace("[-0.3, 0.1]", "[0.3, 0]"), 9, "wheel[2].position",
+                              ["same mount point", "wheel[1]"]),
     "zero wheels": ('name = "nothing"\n', 1, "wheel", ["no wheels"]),
     "empty file": ("", 1, "wheel", ["no wheels"]),
     "unknown wheel key": (BASE.replace("offset = 0.02", "offset = 0.02\nradious = 3"), 12, "wheel[2].radious",
@@ -126,11 +129,13 @@ MALFORMED = {
     "TOML unterminated": (BASE + "x = [1,\n", 12, "x", ["TOML syntax error", "end of the file"]),
     "roller on a centred wheel": (BASE.replace("radius = 0.05\n\n", "radius = 0.05\nroller_deg = 45\n\n"), 6,
                                   "wheel[1].roller_deg", ["not a key of a centred wheel"]),
-    "offset on a dual wheel": (BASE.replace('"offset"', '"dual"').replace("offset = 0.02", "half_separation = 0.1\noffset = 0.1"),
+    "offset on a dual wheel": (BASE.replace('"offset"', '"dual"')
+                               .replace("offset = 0.02", "half_separation = 0.1\noffset = 0.1"),
                                12, "wheel[2].offset", ["not a key of a dual wheel", "half_separation"]),
     "zero half separation": (BASE.replace('"offset"', '"dual"').replace("offset = 0.02", "half_separation = 0"),
                              11, "wheel[2].half_separation", ["positive"]),
-    "angle on an offset wheel": (BASE.replace("offset = 0.02", "offset = 0.02\nangle_deg = 3"), 12, "wheel[2].angle_deg",
+    "angle on an offset wheel": (BASE.replace("offset = 0.02", "offset = 0.02\nangle_deg = 3"), 12,
+                                 "wheel[2].angle_deg",
                                  ["not a key of an offset wheel"]),
 }
 
@@ -151,11 +156,11 @@ def test_malformed_file_gives_one_line(case, tmp_path):
 
 
 def test_missing_key_names_each_key_of_each_type():
-    for kind, keys in KEYS.items():
+    assert {"offset", "centred", "dual", "fixed", "swedish"} <= set(wheel_keys())
+    for kind, keys in wheel_keys().items():
         for key in keys[1:]:
-            lines = [f'type = "{kind}"', "position = [0.0, 0.0]", "radius = 0.1", "offset = 0.1", "half_separation = 0.1",
-                     "angle_deg = 10.0", "roller_deg = 45.0"]
-            lines = [s for s in lines if s.split(" = ")[0] in keys and not s.startswith(key + " ")]
+            lines = [f'type = "{kind}"'] + [f"{k} = " + ("[0.0, 0.0]" if k == "position" else "0.1") for k in keys[1:]]
+            lines = [s for s in lines if not s.startswith(key + " ")]
             with pytest.raises(RobotFileError, match=rf"^f\.toml:1: wheel\[1\]\.{key}: missing"):
                 loads("[[wheel]]\n" + "\n".join(lines) + "\n", "f.toml")
 

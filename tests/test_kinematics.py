@@ -6,8 +6,16 @@ from hypothesis import strategies as st
 
 import wmr
 
-from conftest import (check_round_trip, rigid_velocity, robots, rolling_dir, seeds, steered_beta,
-                      transform_twist, unit_mount_velocity)
+from conftest import (
+    check_round_trip,
+    rigid_velocity,
+    robots,
+    rolling_dir,
+    seeds,
+    steered_beta,
+    transform_twist,
+    unit_mount_velocity,
+)
 
 
 @given(robots(w_min=2), seeds)

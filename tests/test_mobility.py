@@ -9,11 +9,10 @@ from hypothesis import strategies as st
 import wmr
 from wmr.model.tolerance import TOL
 
+from conftest import random_twist, robots, same_subspace, seeds, steered_beta, transform_twist, twist_map, with_kind
+
 M = importlib.import_module("wmr.analysis.mobility")   # the module (wmr.mobility is the function)
 LA = importlib.import_module("wmr.analysis.linalg")
-
-from conftest import (random_twist, robots, same_subspace, seeds, steered_beta, transform_twist,
-                      twist_map, with_kind)
 
 
 # --- linear algebra ---------------------------------------------------------------------------
@@ -156,7 +155,6 @@ def test_dual_adds_one_per_unit_and_same_twists(bot, seed):
 
 @given(robots(), seeds)
 def test_admissible_twists_are_realisable(bot, seed):
-    rng = np.random.default_rng(seed)
     beta = steered_beta(bot, random_twist(seed), seed)
     basis = M.admissible_twists(bot, beta)
     A, base = M.twist_constraints(bot, beta)

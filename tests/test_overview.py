@@ -35,7 +35,10 @@ def test_characteristic_length_minimises_kappa_JL1_anywhere():
     """The module's claim: L^2 = mean |d_i|^2 minimises kappa(J_L1) even with C off the centroid."""
     bot = wmr.paper_robot("centred", L=0.4).moved(origin=(0.1, -0.05))
     L = wmr.characteristic_length(bot)
-    k = lambda s: float(wmr.condition_number(bot.J1(L=L * s)))
+
+    def k(s):
+        return float(wmr.condition_number(bot.J1(L=L * s)))
+
     assert k(1.0) < min(k(0.99), k(1.01)) and k(1.0) > 1.0001
     d = bot.mount_points
     c = np.linalg.norm(d.sum(0)) * np.sqrt(3 / (d ** 2).sum())

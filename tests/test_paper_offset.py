@@ -126,7 +126,8 @@ def test_dead_zone_circle():
     d = 0.05
     bot = wmr.paper_robot("offset", L=0.3, r=0.1, d=d)
     T = 2 * np.pi
-    rates = np.zeros(6); rates[0::2] = 2 * np.pi / T
+    rates = np.zeros(6)
+    rates[0::2] = 2 * np.pi / T
     run = wmr.simulate(bot, rates, np.full(3, 0.4), t_end=T, dt=T / 100)
     C = run.pose[:, 1:]
     G = np.stack([run.unit_points(i, "H") for i in range(3)], axis=1)

@@ -13,8 +13,15 @@ from hypothesis import strategies as st
 
 import wmr
 
-from conftest import (check_J1_first_principles, check_J2_first_principles, check_offset_steer_only,
-                      check_positive_rolling, check_round_trip, robots, seeds)
+from conftest import (
+    check_J1_first_principles,
+    check_J2_first_principles,
+    check_offset_steer_only,
+    check_positive_rolling,
+    check_round_trip,
+    robots,
+    seeds,
+)
 
 # the symbols of the paper's robot (edition.symbols defines the same ones for the chapters)
 S = SimpleNamespace(L=sp.Symbol("L", positive=True), r=sp.Symbol("r", positive=True),
@@ -175,11 +182,11 @@ CHECKS = {
     "offset steer-only circle": lambda: check_offset_steer_only(OFFSET_PAIR),
 }
 MUTATIONS = {   # mutation -> the checks that must catch it
-    "offset d sign": (("OffsetWheel", "_local_block", _flip_offset),
+    "offset d sign": (("OffsetWheel", "local_block", _flip_offset),
                       ["J2 first principles", "offset steer-only circle"]),
-    "centred r sign": (("CentredWheel", "_local_block", _flip_centred),
+    "centred r sign": (("CentredWheel", "local_block", _flip_centred),
                        ["J2 first principles", "steering rolls forward"]),
-    "dual wheel sign": (("DualWheel", "_local_block", _flip_dual), ["J2 first principles"]),
+    "dual wheel sign": (("DualWheel", "local_block", _flip_dual), ["J2 first principles"]),
     "E sign in J1": (("robot", "point_row", _flip_E),
                      ["J1 first principles", "forward(inverse(t)) = t"]),
 }

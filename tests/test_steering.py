@@ -7,8 +7,16 @@ from hypothesis import strategies as st
 import wmr
 from wmr.analysis import steering as Sg
 
-from conftest import (angle_close, axle, check_positive_rolling, rigid_velocity, robots, rolling_dir,
-                      seeds, transform_twist)
+from conftest import (
+    angle_close,
+    axle,
+    check_positive_rolling,
+    rigid_velocity,
+    robots,
+    rolling_dir,
+    seeds,
+    transform_twist,
+)
 
 
 @given(seeds)

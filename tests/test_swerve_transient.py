@@ -3,7 +3,6 @@ import numpy as np
 import pytest
 
 import wmr
-from wmr import swerve
 from wmr.swerve import transient as T
 
 SQUARE = [(0.3, 0.3), (0.3, -0.3), (-0.3, 0.3), (-0.3, -0.3)]
@@ -60,7 +59,8 @@ def test_cosine_compensation_cuts_the_scrub_of_fighting_modules_and_the_lag_of_p
 
 
 @pytest.mark.parametrize("w", sorted(LAYOUTS))
-@pytest.mark.parametrize("make", [lambda: T.direction_change(spin=0.5), lambda: T.direction_change(spin=-0.3, angle=1.75),
+@pytest.mark.parametrize("make", [lambda: T.direction_change(spin=0.5),
+                                  lambda: T.direction_change(spin=-0.3, angle=1.75),
                                   T.spin_and_translate], ids=["turn", "turn100", "spin"])
 def test_robot_level_never_slips_more_than_per_module(w, make):
     study = T.resteer_study(_bot(LAYOUTS[w]), make(), strategies=[("module", False), ("robot", False)])
@@ -69,7 +69,8 @@ def test_robot_level_never_slips_more_than_per_module(w, make):
 
 def test_slower_steering_slips_longer():
     bot, prof = _bot(), T.spin_and_translate()
-    slips = [T.resteer_transient(bot, prof, "robot", steer_rate=rate).slip_distance for rate in (np.pi, 2 * np.pi, 4 * np.pi)]
+    slips = [T.resteer_transient(bot, prof, "robot", steer_rate=rate).slip_distance
+             for rate in (np.pi, 2 * np.pi, 4 * np.pi)]
     assert slips[0] > slips[1] > slips[2] > 0
 
 

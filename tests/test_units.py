@@ -15,7 +15,6 @@ import wmr
 from wmr.analysis import linalg as LA
 from wmr.analysis import reference as R
 from wmr.analysis import singularities as S
-from wmr.model.tolerance import TOL
 
 KS = range(-6, 7)
 SPIN = np.radians([0.0, -120.0, 120.0])                 # axles through C: spin about C (mobility 1)

@@ -1,8 +1,9 @@
 """Input checks (wmr.model.validation), the numerical-zero policy (wmr.model.tolerance), the thread chunking
 (wmr.analysis._batch).  The edition's comparison helpers (edition.verify): tests/edition/test_verify.py.
 
-Every bad input raises ``TypeError`` (wrong kind) or ``ValueError`` (bad value) whose message names
-the argument and shows the value.
+Every bad input raises the package's own ``InputTypeError`` (wrong kind, a ``TypeError``) or
+``InputValueError`` (bad value, a ``ValueError``) of :mod:`wmr.errors`, whose message names the argument
+and shows the value.
 """
 import warnings
 
@@ -12,11 +13,15 @@ import sympy as sp
 
 import wmr
 from wmr.analysis import _batch
+from wmr.errors import InputTypeError, InputValueError
 from wmr.model import validation as V
 from wmr.model.tolerance import TOL, near_zero
 
 x = sp.Symbol("x", real=True)
 p = sp.Symbol("p", positive=True)
+
+#: the package's own type of each kind of input error
+OWN = {ValueError: InputValueError, TypeError: InputTypeError}
 
 
 # --- scalars ------------------------------------------------------------------------------------
@@ -51,7 +56,7 @@ def test_scalar_accepted(check, value, expected):
 def test_scalar_rejected_with_name_and_value(check, value, shown, kind):
     with pytest.raises(Exception) as exc:
         check("the_arg", value)
-    assert exc.type is kind, (exc.type, str(exc.value))
+    assert exc.type is OWN[kind], (exc.type, str(exc.value))
     msg = str(exc.value)
     assert "the_arg" in msg and shown in msg, msg
 
@@ -160,7 +165,7 @@ TYPE_ERRORS = {"None robot", "the class Robot", "name not a string", "clockwise 
 def test_entry_points_reject_bad_input(case, call, name, value):
     with pytest.raises((TypeError, ValueError)) as exc:
         call()
-    assert exc.type is (TypeError if case in TYPE_ERRORS else ValueError), (exc.type, str(exc.value))
+    assert exc.type is (InputTypeError if case in TYPE_ERRORS else InputValueError), (exc.type, str(exc.value))
     msg = str(exc.value)
     assert name in msg and value in msg, msg
 
@@ -191,8 +196,9 @@ def test_map_matrices_keeps_order_and_shape(n, chunk):
 
 
 # --- the failures quoted in issue 11, part 2 -----------------------------------------------------------
-import sympy as _sp  # noqa: E402  (kept local to this section)
 from fractions import Fraction  # noqa: E402
+
+import sympy as _sp  # noqa: E402  (kept local to this section)
 
 _BOT = wmr.paper_robot("centred", L=0.5, r=0.1)
 QUOTED = [   # (case, call, exception type, words the message must hold)
@@ -230,7 +236,7 @@ def test_quoted_bad_input_is_rejected(case, call, kind, words):
     with pytest.raises(Exception) as exc, warnings.catch_warnings():
         warnings.simplefilter("error", RuntimeWarning)          # no NumPy warning on the way to the error
         call()
-    assert exc.type is kind, (exc.type, str(exc.value))
+    assert exc.type is OWN[kind], (exc.type, str(exc.value))
     assert all(w in str(exc.value) for w in words), str(exc.value)
 
 

@@ -1,17 +1,15 @@
-"""wmr.model.wheels_fixed: the fixed and Swedish wheels against first principles, and every analysis on robots with them."""
+"""Robots that mix wheel kinds (fixed, Swedish, centred, offset): every analysis on them, the entries of units
+without a steering joint ignored everywhere, and the line helpers."""
 import dataclasses
 
 import numpy as np
 import pytest
-import sympy as sp
-from hypothesis import given
-from hypothesis import strategies as st
 
 import wmr
 from wmr.analysis import lines, reference
-from wmr.model.wheels import UNIT_TYPES
+from wmr.model.wheels import wheel_kinds
 
-from conftest import K, angles, axle, coords, lengths, rolling_dir, seeds, transform_twist, vec3
+from conftest import transform_twist
 
 PI = np.pi
 
@@ -40,70 +38,10 @@ def mixed():
                       wmr.OffsetWheel((0.1, -0.6), r=0.03, d=0.02)])
 
 
-# --------------------------------------------------------------------------- first principles
-def hub_velocity(kind, beta, r, rates, roller=None):
-    """Velocity of the hub from no slip at the contact point (3D cross products, no wmr).
-
-    Fixed wheel: omega = theta_dot i, v_H = omega x (r k).  Swedish wheel: the roller (axis a,
-    horizontal) spins at sigma_dot about a; with a contact radius r the hub moves by
-    (theta_dot i + sigma_dot a) x (r k) (see SwedishWheel's docstring for a general roller radius).
-    """
-    i3 = vec3(axle(beta))
-    omega = rates[0] * i3
-    if kind == "swedish":
-        a3 = vec3(axle(beta + roller))                   # the roller axis: the axle turned by gamma
-        omega = omega + rates[1] * a3
-    return np.cross(omega, r * K)[:2]
-
-
-@given(coords, coords, lengths, angles, angles, seeds)
-def test_fixed_wheel_block_is_no_slip_and_ignores_beta(x, y, r, angle, beta, seed):
-    unit = wmr.FixedWheel((x, y), r=r, angle=angle)
-    rate = np.random.default_rng(seed).normal(size=1)
-    want = hub_velocity("fixed", angle, r, rate)
-    assert np.allclose(unit.block(beta) @ rate, want, atol=1e-12 * max(1.0, r))
-    assert np.allclose(unit.block(beta), wmr.CentredWheel((x, y), r=r).block(angle), rtol=0, atol=1e-15 * max(1, r))
-    pts = unit.points(np.full(3, beta))
-    assert np.allclose(pts["i"], axle(angle)) and np.allclose(pts["j"], rolling_dir(angle))
-    assert np.allclose(pts["H"], (x, y))
-
-
-@given(coords, coords, lengths, angles, st.floats(-1.5, 1.5).filter(lambda g: abs(g) > 0.05), angles, seeds)
-def test_swedish_block_is_no_slip(x, y, r, angle, roller, beta, seed):
-    unit = wmr.SwedishWheel((x, y), r=r, angle=angle, roller=roller)
-    rates = np.random.default_rng(seed).normal(size=2)
-    assert np.allclose(unit.block(beta) @ rates, hub_velocity("swedish", angle, r, rates, roller), atol=1e-12 * max(1, r))
-
-
-@given(coords, coords, lengths, angles, st.floats(-1.5, 1.5).filter(lambda g: abs(g) > 0.05), seeds)
-def test_swedish_wheel_constraint_is_along_the_roller_axis(x, y, r, angle, roller, seed):
-    """Any twist is realised (det L = r^2 sin g), and a^T v_P = -r sin(g) theta_dot is the only relation."""
-    bot = wmr.Robot([wmr.SwedishWheel((x, y), r=r, angle=angle, roller=roller)])
-    t = np.random.default_rng(seed).normal(size=3)
-    sol = wmr.inverse(bot, [0.0], t)
-    assert bool(sol.admissible)
-    v = np.array([t[1] - t[0] * y, t[2] + t[0] * x])            # hub velocity c_dot + psi_dot k x d, by hand
-    a = np.array([np.cos(angle + roller), np.sin(angle + roller)])
-    assert np.allclose(a @ v, -r * np.sin(roller) * sol.value[0], rtol=1e-9, atol=1e-12)
-    assert np.allclose(hub_velocity("swedish", angle, r, sol.value, roller), v, rtol=1e-9, atol=1e-12)
-    assert np.allclose(bot.wheels[0].roller_axis(), a)
-
-
-def test_omni_and_mecanum_blocks_by_hand():
-    omni = wmr.SwedishWheel((0.0, 0.0), r=2.0, angle=0.0, roller=PI / 2)
-    assert np.allclose(omni.block(0.7), [[0.0, 2.0], [-2.0, 0.0]])   # rolls along j, free along the axle i
-    s = np.sqrt(0.5)
-    mec = wmr.SwedishWheel((0.0, 0.0), r=1.0, angle=PI / 2, roller=-PI / 4)
-    # R(pi/2) [[0, r sin g], [-r, -r cos g]] with g = -pi/4
-    assert np.allclose(mec.block(0.0), [[1.0, s], [0.0, -s]])
-    exact = wmr.SwedishWheel((0, 0), r=1, angle=sp.pi / 2, roller=sp.pi / 4).block(sp.Symbol("b"))
-    assert exact == sp.Matrix([[1, sp.sqrt(2) / 2], [0, sp.sqrt(2) / 2]])
-    assert mec.rate_names(3) == ("theta_dot_3", "sigma_dot_3") and len(mec.rate_symbols(3)) == 2
-
-
 def test_unit_types_and_steered():
-    assert {t.kind for t in UNIT_TYPES} == {"offset", "centred", "dual", "fixed", "swedish"}
-    assert wmr.FixedWheel in UNIT_TYPES and wmr.SwedishWheel in UNIT_TYPES
+    kinds = wheel_kinds()
+    assert {"offset", "centred", "dual", "fixed", "swedish"} <= set(kinds)
+    assert kinds["fixed"] is wmr.FixedWheel and kinds["swedish"] is wmr.SwedishWheel
     assert mixed().steered == (False, False, True, True)
     assert wmr.paper_robot("dual").steered == (True, True, True)
     bot = mixed()
@@ -127,7 +65,8 @@ def test_unsteered_entries_are_ignored_everywhere(make):
     t = rng.normal(size=(7, 3))
     rates = rng.normal(size=(7, bot.n_rates))
     same = [lambda b: bot.J2(b), lambda b: bot.F(b), lambda b: bot.J(b, L=0.5), lambda b: wmr.rank_F(bot, b),
-            lambda b: wmr.mobility(bot, b), lambda b: wmr.inverse(bot, b, t).value, lambda b: wmr.forward(bot, b, rates).value,
+            lambda b: wmr.mobility(bot, b), lambda b: wmr.inverse(bot, b, t).value,
+            lambda b: wmr.forward(bot, b, rates).value,
             lambda b: reference.J2(bot, b), lambda b: lines.axle_lines(bot, b)[1],
             lambda b: wmr.admissible_twists(bot, b[0])]
     for f in same:
@@ -170,7 +109,8 @@ def test_swedish_robots_realise_every_twist():
         # the driven wheel rates alone determine the twist: a^T [E d 1] t = -r sin(g) theta_dot, rank 3
         rows = np.array([u.roller_axis() @ bot.J1()[2 * i:2 * i + 2] for i, u in enumerate(bot.wheels)])
         assert wmr.rank(rows) == 3
-        assert np.allclose(rows @ t[0], [-u.r * np.sin(u.roller) * inv.value[0, 2 * i] for i, u in enumerate(bot.wheels)])
+        assert np.allclose(rows @ t[0], [-u.r * np.sin(u.roller) * inv.value[0, 2 * i]
+                                         for i, u in enumerate(bot.wheels)])
 
 
 def test_same_handed_mecanum_cannot_be_driven_sideways_by_its_wheels():
@@ -223,6 +163,7 @@ def test_sweep_and_drawing():
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
+
     from wmr.plot.robot import draw_robot
     fig, ax = plt.subplots()
     for b in (omni3(), mecanum4(), diff_castor(), bot):
@@ -231,28 +172,6 @@ def test_sweep_and_drawing():
 
 
 # --------------------------------------------------------------------------- bad input
-@pytest.mark.parametrize("kwargs, exc, word", [
-    (dict(roller=0.0), ValueError, "roller"), (dict(roller=1e-12), ValueError, "roller"),
-    (dict(roller=2.0), ValueError, "roller"), (dict(roller=-PI / 2), ValueError, "roller"),
-    (dict(roller="45"), TypeError, "roller"), (dict(roller=sp.Symbol("g")), TypeError, "roller"),
-    (dict(roller=np.nan), ValueError, "roller"), (dict(angle=None), TypeError, "angle"),
-    (dict(angle=np.inf), ValueError, "angle"), (dict(angle=[0.1]), TypeError, "angle"),
-    (dict(r=-1.0), ValueError, "r"), (dict(position=(1.0,)), ValueError, "position"),
-])
-def test_bad_swedish_wheel(kwargs, exc, word):
-    args = dict(position=(0.0, 0.0), r=0.1, angle=0.0, roller=PI / 4) | kwargs
-    with pytest.raises(exc, match=rf"\b{word}\b"):
-        wmr.SwedishWheel(**args)
-
-
-@pytest.mark.parametrize("kwargs, exc", [(dict(angle="0"), TypeError), (dict(angle=10**400), ValueError),
-                                         (dict(angle=True), TypeError), (dict(r=0), ValueError)])
-def test_bad_fixed_wheel(kwargs, exc):
-    args = dict(position=(0.0, 0.0), r=0.1, angle=0.0) | kwargs
-    with pytest.raises(exc, match=rf"\b{next(iter(kwargs))}\b"):
-        wmr.FixedWheel(**args)
-
-
 def test_bad_beta_is_still_rejected_for_unsteered_units():
     bot = mixed()
     with pytest.raises(ValueError, match=r"\bbeta\b"):

@@ -9,7 +9,8 @@ wall-clock runs, and compares it with
 * a **floor**: the same arithmetic written as plain NumPy over the whole batch, with what is
   constant per robot computed once (e.g. :math:`\\mathbf J_1^+`); goal: ``wmr`` within 2x of it, or
 * a **peer**: WPILib's ``SwerveDrive4Kinematics.toSwerveModuleStates`` (robotpy-wpimath) called
-  once per twist, timed in the same run; goal: ``wmr`` at least 5x faster per twist.
+  once per twist, and ``SwerveDrive4Odometry.update`` once per sample (:func:`wmr.wheel_odometry`
+  takes the whole run at once), timed in the same run; goal: ``wmr`` at least 5x faster per item.
 
 The ratio column is wmr / (target or floor) -- smaller is better -- and peer / wmr for the peer
 (larger is better); both use wall-clock times.  The cpu column is the smallest process CPU time
@@ -135,6 +136,34 @@ def wmr_swerve(robot):
     return run
 
 
+def odometry_run(robot, n):
+    """Module angles and travels of a noisy (slipping) swerve run of ``n`` samples."""
+    rng = np.random.default_rng(SEED)
+    twist = np.cumsum(rng.normal(0, 0.05, (n, 3)), axis=0)
+    beta = wmr.steering_angles(robot, twist) + rng.normal(0, 0.01, (n, robot.w))
+    travel = np.cumsum(rng.normal(0.01, 0.005, (n, robot.w)), axis=0)
+    return beta, travel
+
+
+def wpilib_odometry(robot, beta, travel, m):
+    """WPILib's SwerveDrive4Odometry, one update per sample; the module positions of the first ``m`` samples are
+    built here, untimed (a robot program gets them from its encoders)."""
+    from wpimath.geometry import Pose2d, Rotation2d
+    from wpimath.kinematics import SwerveDrive4Odometry
+
+    from wmr.io import to_wpilib
+    from wmr.io.wpilib import module_positions
+    kin = to_wpilib(robot)
+    cache = [tuple(module_positions(b, t)) for b, t in zip(beta[:m], travel[:m])]
+
+    def run(twist):
+        odo = SwerveDrive4Odometry(kin, Rotation2d(0.0), cache[0], Pose2d())
+        for p in cache[1:len(twist)]:
+            odo.update(Rotation2d(0.0), p)
+    run.label = "WPILib, one update per sample"
+    return run
+
+
 # ----------------------------------------------------------------------------------- checks
 def same_kappa(got, want):
     fin = np.isfinite(want)
@@ -147,7 +176,7 @@ def angle_gap(a, b):
 
 
 # ------------------------------------------------------------------------------------ rows
-def kernel_rows(n, repeat, k):
+def kernel_rows(n, repeat, k, peer=200_000):
     rng = np.random.default_rng(SEED)
     centred, dual, swerve = wmr.paper_robot("centred"), wmr.paper_robot("dual"), swerve_robot()
     L = wmr.characteristic_length(centred)
@@ -166,8 +195,8 @@ def kernel_rows(n, repeat, k):
 
     def check_inverse(sol):
         th_ref, res, adm = R.inverse(centred, b, tw)
-        return (np.allclose(sol.value[:k], th_ref, rtol=1e-12, atol=1e-12) and np.allclose(sol.residual[:k], res, atol=1e-12)
-                and np.array_equal(sol.admissible[:k], adm))
+        return (np.allclose(sol.value[:k], th_ref, rtol=1e-12, atol=1e-12)
+                and np.allclose(sol.residual[:k], res, atol=1e-12) and np.array_equal(sol.admissible[:k], adm))
 
     def check_swerve(out):
         beta_s, sol = out
@@ -179,6 +208,25 @@ def kernel_rows(n, repeat, k):
         return (np.all(angle_gap(beta_s[:k], fl_beta) < 1e-12) and np.allclose(sol.value[:k], fl_rate, rtol=1e-12)
                 and np.all(sol.admissible[:k]) and np.all(angle_gap(beta_s[:1000] - np.pi / 2, ang) < 1e-9)
                 and np.allclose(sol.value[:1000] * r, spd, rtol=1e-9))
+
+    from wmr.odometry import wheel_odometry
+    o_beta, o_travel = odometry_run(swerve, n)
+    radii = np.array([u.r for u in swerve.wheels])
+    wp_odometry = wpilib_odometry(swerve, o_beta, o_travel, min(n, peer))
+
+    def check_odometry(odo):                                # WPILib with the wheels' heading as its gyro
+        from wpimath.geometry import Pose2d, Rotation2d
+        from wpimath.kinematics import SwerveDrive4Odometry
+
+        from wmr.io import to_wpilib
+        from wmr.io.wpilib import module_positions
+        m = min(k, 2000)
+        ref = SwerveDrive4Odometry(to_wpilib(swerve), Rotation2d(0.0), module_positions(o_beta[0], o_travel[0]),
+                                   Pose2d())
+        poses = (ref.update(Rotation2d(float(odo.pose[j, 0])), module_positions(o_beta[j], o_travel[j]))
+                 for j in range(1, m))
+        xy = [(0.0, 0.0)] + [(p.X(), p.Y()) for p in poses]
+        return np.abs(np.array(xy) - odo.pose[:m, 1:]).max() <= 1e-12 * max(1.0, np.abs(odo.pose[:m, 1:]).max())
 
     J_ref = R.J(centred, b, L)
     return [
@@ -197,6 +245,8 @@ def kernel_rows(n, repeat, k):
          ("floor", lambda: inv_floor(beta, twist)), check_inverse),
         ("swerve IK + steering, 4 modules", lambda: sw_wmr(twist), ("floor", lambda: sw_floor(twist)), check_swerve),
         ("swerve IK + steering, 4 modules", lambda: sw_wmr(twist), ("peer", wpilib_swerve(swerve)), check_swerve),
+        ("swerve odometry, 4 modules", lambda: wheel_odometry(swerve, o_beta, o_travel / radii),
+         ("peer", wp_odometry), check_odometry),
     ], twist
 
 
@@ -250,7 +300,7 @@ def main(argv=None):
           f"{os.cpu_count()} cores, WMR_THREADS={os.environ.get('WMR_THREADS', '(all)')}, N = {n:,}, "
           f"best of {args.repeat}, seed {SEED}")
     print(f"before: {load()}")
-    rows, twist = kernel_rows(n, args.repeat, k)
+    rows, twist = kernel_rows(n, args.repeat, k, int(args.peer_n))
     head = (f"{'kernel':34s} {'wmr s':>8s} {'cpu s':>7s}  {'compared with':28s} {'its s':>8s} {'ratio':>7s}  "
             f"{'goal':>7s}  check")
     print(head)
@@ -269,9 +319,10 @@ def main(argv=None):
             met = ratio <= 2
         else:
             m = min(int(args.peer_n), n)
-            peer_sec, _ = best_of(lambda: ref(twist[:m]), max(1, args.repeat // 2))
+            peer_sec, _ = best_of(lambda ref=ref, m=m: ref(twist[:m]), max(1, args.repeat // 2))
             per_wmr, per_peer = sec / n, peer_sec / m
-            print(f"{name:34s} {per_wmr * 1e6:6.3f}us {cpu[0] / n * 1e6:5.3f}us  {'WPILib, one call per twist':28s} "
+            what = getattr(ref, "label", "WPILib, one call per twist")
+            print(f"{name:34s} {per_wmr * 1e6:6.3f}us {cpu[0] / n * 1e6:5.3f}us  {what:28s} "
                   f"{per_peer * 1e6:6.3f}us {per_peer / per_wmr:6.1f}x  {'>= 5x':>7s}  "
                   f"{'ok' if ok else 'FAIL'}{'' if per_peer / per_wmr >= 5 else ' (goal missed)'}")
             fails += not ok

@@ -11,26 +11,26 @@ PY=$PWD/.venv/bin/python
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 mkdir -p "$tmp/root"
-cp -r wmr notebooks tools "$tmp/root/"
+cp -r wmr edition notebooks "$tmp/root/"
 [ -d figures ] && cp -r figures "$tmp/root/" || mkdir "$tmp/root/figures"
 git -C "$tmp/root" init -q && git -C "$tmp/root" add -A >/dev/null && \
   git -C "$tmp/root" -c user.name=bench -c user.email=bench@localhost commit -qm bench
-B=("$PY" -m tools.build --root "$tmp/root")
+B=(make --no-print-directory -C "$PWD" WMR_ROOT="$tmp/root" report)
 load() { cut -d' ' -f1 /proc/loadavg; }
-t() { local s e; s=$(date +%s.%N); (cd "$tmp/root" && "$@") > "$tmp/log" 2>&1 || { cat "$tmp/log"; exit 1; }; \
+t() { local s e; s=$(date +%s.%N); "$@" > "$tmp/log" 2>&1 || { cat "$tmp/log"; exit 1; }; \
       e=$(date +%s.%N); printf '%.1f' "$(echo "$e - $s" | bc)"; }
-nb=$(ls "$tmp/root"/notebooks/*.ipynb | head -1)
-l1=$(load); t1=$(t "${B[@]}" report); n1=$(grep -c '^\[execute\] .*ipynb (' "$tmp/log" || true)
-steps=$(grep -E '^\[(execute|report|ledger)\] .*\([0-9.]+ s\)$' "$tmp/log" | grep -v 'ipynb (' || true)
-l2=$(load); t2=$(t "${B[@]}" report)
-touch "$nb"; l3=$(load); t3=$(t "${B[@]}" report)
+nb=$(ls "$tmp/root"/notebooks/[0-9]*.ipynb | head -1)
+l1=$(load); t1=$(t "${B[@]}"); n1=$(grep -c '^\[execute\] .*ipynb (' "$tmp/log" || true)
+steps=$(grep -E '^\[(execute|publish|assemble|html|pdf)\] ' "$tmp/log" || true)
+l2=$(load); t2=$(t "${B[@]}")
+touch "$nb"; l3=$(load); t3=$(t "${B[@]}")
 "$PY" - "$nb" <<'PY'
 import sys, nbformat
 nb = nbformat.read(sys.argv[1], as_version=4)
 nb.cells.append(nbformat.v4.new_markdown_cell("Benchmark edit."))
 nbformat.write(nb, sys.argv[1])
 PY
-l4=$(load); t4=$(t "${B[@]}" report); n4=$(grep -c '^\[execute\] .*ipynb (' "$tmp/log" || true)
+l4=$(load); t4=$(t "${B[@]}"); n4=$(grep -c '^\[execute\] .*ipynb (' "$tmp/log" || true)
 echo "| scenario | wall time (s) | load before |"
 echo "| --- | --- | --- |"
 echo "| cold: empty build/, .venv present; $n1 notebooks executed, ledger, HTML + PDF | $t1 | $l1 |"

@@ -90,7 +90,8 @@ def check_pages(html_dir: Path) -> list[str]:
         rel = page.relative_to(html_dir).as_posix()
         prose = re.sub(r"<(pre|script)\b.*?</\1>", "", text, flags=re.DOTALL)
         if "``" in prose:                     # reST markup that was not converted (code inside bold, ...)
-            problems.append(f"{rel} shows raw markup: ...{prose[max(0, prose.index('``') - 60):prose.index('``') + 40]}...")
+            at = prose.index("``")
+            problems.append(f"{rel} shows raw markup: ...{prose[max(0, at - 60):at + 40]}...")
         for url in refs.loads:
             if urlsplit(url).scheme or url.startswith("//"):
                 problems.append(f"{rel} loads {url} from the network")

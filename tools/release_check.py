@@ -15,13 +15,14 @@ Steps, each of which fails the check with a message saying what is wrong:
    ``tests/edition/``; no shipped test imports ``edition`` or ``tools``. The wheel holds ``wmr/``
    (with ``py.typed``) and its metadata: name, version (``wmr/_version.py``), ``License-Expression: MIT``,
    the licence file, the ``wmr`` command.
-3. A fresh venv in a temporary folder (no system site-packages) gets the wheel with the extras
-   ``test`` and ``dask``, offline, from a wheelhouse in ``build/release/wheelhouse/<key>/``: filled
-   once from the package index with the versions pinned in ``environment.lock``, keyed by the
-   lock, the wheel's requirements and the interpreter.
+3. A fresh venv in a temporary folder (no system site-packages) gets the wheel with the extras the
+   library's tests use (:data:`EXTRAS`), offline, from a wheelhouse in
+   ``build/release/wheelhouse/<key>/``: filled once from the package index with the versions pinned in
+   ``environment.lock``, keyed by the lock, the wheel's requirements and the interpreter.
 4. In that venv, from the unpacked sdist with its ``wmr/`` removed (so only the installed wheel can
    be imported): ``pip check``, ``pip show``, ``wmr --version``, the README's Python examples, the
-   ``wmr`` commands on the example robots (and a bad file: one line, exit status 2), the library's tests.
+   ``wmr`` commands on the example robots (and a bad file: one line, exit status 2), the library's
+   tests, none of which may be skipped for want of a module.
 
 A pass is recorded in ``build/release/stamp`` with the hash of everything that goes into the sdist,
 the lock and this script; the next run with the same hash stops at once. ``build/release/`` keeps the
@@ -51,8 +52,9 @@ OUT = ROOT / "build" / "release"
 #: what goes into the sdist besides wmr/ (MANIFEST.in): the inputs of the check, with this script
 INPUTS = ("pyproject.toml", "MANIFEST.in", "README.md", "LICENSE", "CITATION.cff", "CHANGELOG.md",
           "environment.lock", "wmr", "tests", "examples", "tools/release_check.py")
-#: extras installed in the fresh venv: the library's tests, and the Dask path they test
-EXTRAS = "test,dask"
+#: extras installed in the fresh venv: the library's tests, and what they test beyond numpy and sympy (Dask
+#: sweeps, wmr.sim in MuJoCo, the URDF, ROS 2 and WPILib bridges), so that none of them is skipped
+EXTRAS = "test,dask,sim,urdf,ros,wpilib"
 #: in the sdist: the metadata files (besides wmr/, tests/*.py and examples/)
 SDIST_FILES = ("PKG-INFO", "pyproject.toml", "MANIFEST.in", "README.md", "LICENSE", "CITATION.cff",
                "CHANGELOG.md", "wmr/py.typed", "wmr/_version.py", "tests/conftest.py", "tests/fuzz_api.py")
@@ -139,8 +141,8 @@ def build(outdir: Path) -> tuple[Path, Path]:
 def check_sdist(names: Sequence[str], tree: Path = ROOT) -> list[str]:
     """Problems of an sdist whose members (without the leading ``name-version/``) are ``names``.
 
-    Every ``tests/*.py`` and ``examples/*`` file of ``tree`` must be in it, with :data:`SDIST_FILES`;
-    nothing under :data:`SDIST_FORBIDDEN`.
+    Every ``tests/*.py`` file and every file under ``examples/`` of ``tree`` must be in it, with
+    :data:`SDIST_FILES`; nothing under :data:`SDIST_FORBIDDEN`.
 
     Examples
     --------
@@ -154,7 +156,7 @@ def check_sdist(names: Sequence[str], tree: Path = ROOT) -> list[str]:
     have = set(names)
     want = list(SDIST_FILES)
     want += [p.relative_to(tree).as_posix() for p in sorted((tree / "tests").glob("*.py"))]
-    want += [p.relative_to(tree).as_posix() for p in sorted((tree / "examples").iterdir()) if p.is_file()]
+    want += [p.relative_to(tree).as_posix() for p in sorted((tree / "examples").rglob("*")) if p.is_file()]
     problems = [f"missing from the sdist: {w}" for w in dict.fromkeys(want) if w not in have]
     compiled = sorted(n for n in have if n.endswith((".pyc", ".pyo")) or "__pycache__/" in n)
     if compiled:
@@ -245,7 +247,9 @@ def constraints(lock: str) -> str:
 
     Examples
     --------
-    >>> print(constraints("numpy==2.4.6 \\\\\\n    --hash=sha256:ab \\\\\\n    # via x\\nsphinx==9 ; python_version < '3.12' \\\\\\n"), end="")
+    >>> lock = ("numpy==2.4.6 \\\\\\n    --hash=sha256:ab \\\\\\n    # via x\\n"
+    ...         "sphinx==9 ; python_version < '3.12' \\\\\\n")
+    >>> print(constraints(lock), end="")
     numpy==2.4.6
     sphinx==9 ; python_version < '3.12'
     """
@@ -311,6 +315,19 @@ def python_blocks(markdown: str) -> list[str]:
     return [m.group(1) for m in re.finditer(r"^```python\n(.*?)^```\s*$", markdown, flags=re.MULTILINE | re.DOTALL)]
 
 
+def missing_modules(pytest_output: str) -> list[str]:
+    """The skip reasons of a ``pytest -rs`` run that say a module could not be imported.
+
+    Examples
+    --------
+    >>> missing_modules("SKIPPED [1] tests/test_a.py:3: could not import 'yaml': No module named 'yaml'\\n"
+    ...                 "SKIPPED [2] tests/test_b.py:9: chromium not installed\\n")
+    ["tests/test_a.py:3: could not import 'yaml'"]
+    """
+    return [m.group(1) for m in re.finditer(r"^SKIPPED \[\d+\] (\S+: could not import '[^']+')", pytest_output,
+                                           re.MULTILINE)]
+
+
 def in_venv(vdir: Path, src: Path, env: dict[str, str], version: str, dist: str) -> dict[str, str]:
     """Check the installed wheel from the unpacked sdist ``src`` (its ``wmr/`` removed); return facts."""
     vpy, wmr_cmd = vdir / "bin" / "python", vdir / "bin" / "wmr"
@@ -338,7 +355,8 @@ def in_venv(vdir: Path, src: Path, env: dict[str, str], version: str, dist: str)
     if (analyzed["delta_m"], analyzed["delta_s"]) != (1, 2):
         raise ReleaseError(f"wmr analyze examples/swerve4.toml: class ({analyzed['delta_m']},{analyzed['delta_s']}), "
                            "expected (1,2) (tests/test_cli_robot.py has the same robot)")
-    _run([wmr_cmd, "ik", "examples/swerve4.toml", "--vx", "1", "--vy", "0.5", "--omega", "0.8", "--json"], src, env, "wmr ik")
+    _run([wmr_cmd, "ik", "examples/swerve4.toml", "--vx", "1", "--vy", "0.5", "--omega", "0.8", "--json"], src, env,
+         "wmr ik")
     _run([wmr_cmd, "fk", "examples/paper_centred.toml", "--angles", "0", "0", "0", "--rates", "1", "1", "1", "--json"],
          src, env, "wmr fk")
     _run([wmr_cmd, "sweep", "examples/paper_centred.toml", "kappa_J", "--grid", "12", "--json"], src, env, "wmr sweep")
@@ -347,17 +365,25 @@ def in_venv(vdir: Path, src: Path, env: dict[str, str], version: str, dist: str)
     if bad.returncode != 2 or len(bad.stderr.strip().splitlines()) != 1 or "no-such-robot.toml" not in bad.stderr:
         raise ReleaseError(f"wmr analyze on a missing file: exit {bad.returncode}, stderr {bad.stderr!r} "
                            "(expected exit 2 and one line naming the file)")
-    facts["wmr commands"] = "analyze, ik, fk, sweep on examples/; a missing file: exit 2, one line"
+    ros2 = _run([wmr_cmd, "convert", "examples/urdf/diffbot.urdf", "--to", "ros2"], src, env, "wmr convert")
+    if "diff_drive_controller" not in ros2:
+        raise ReleaseError(f"wmr convert examples/urdf/diffbot.urdf --to ros2: no diff_drive_controller in\n{ros2}")
+    facts["wmr commands"] = ("analyze, ik, fk, sweep, convert (URDF -> ROS 2) on examples/; a missing file: exit 2, "
+                             "one line")
     # the library's tests, as shipped
     log = vdir.parent / "pytest.log"
     t0 = time.monotonic()
     with open(log, "w", encoding="utf-8") as fh:
-        proc = subprocess.run([str(vpy), "-P", "-m", "pytest", "-q", "-p", "no:cacheprovider", "tests"],
+        proc = subprocess.run([str(vpy), "-P", "-m", "pytest", "-q", "-rs", "-p", "no:cacheprovider", "tests"],
                               cwd=src, env=env, stdout=fh, stderr=subprocess.STDOUT, check=False)
     text = log.read_text(encoding="utf-8", errors="replace")
     summary = next((ln.strip("= ") for ln in reversed(text.splitlines()) if re.search(r"\d+ (passed|failed)", ln)), "")
     if proc.returncode != 0 or "passed" not in summary:
         raise ReleaseError(f"the library's tests failed in the fresh venv (exit {proc.returncode}):\n{text[-6000:]}")
+    unimported = missing_modules(text)
+    if unimported:
+        raise ReleaseError("library tests were skipped in the fresh venv for want of a module (an extra missing "
+                           f"from EXTRAS, or from pyproject's extras): {'; '.join(unimported)}")
     facts["library tests"] = f"{summary} ({time.monotonic() - t0:.0f} s)"
     return facts
 
@@ -396,7 +422,8 @@ def check(python: str, keep: bool) -> dict[str, str]:
 
 
 def main(argv: list[str] | None = None) -> int:
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0], formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap = argparse.ArgumentParser(description=(__doc__ or "").split("\n\n")[0],
+                                 formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--force", action="store_true", help="check even when nothing changed since the last pass")
     ap.add_argument("--python", default=sys.executable, help="interpreter of the fresh venv (default: this one)")
     ap.add_argument("--keep", action="store_true", help="keep the temporary folder with the venv and the sdist")

@@ -1,6 +1,6 @@
 r"""wmr: kinematics of wheeled mobile robots, after Leow, Low & Loh (2002).
 
-A robot is a platform carried by wheel units (offset, centred or dual wheels) mounted at
+A robot is a platform carried by wheel units (offset, centred, dual, fixed or Swedish wheels) mounted at
 points :math:`P_i`.  The package builds the paper's matrices once, for SymPy (exact derivations)
 and NumPy (batched numbers): :math:`\mathbf J_1`, :math:`\mathbf J_{L1}`, :math:`\mathbf J_2`,
 :math:`\mathbf F = [\mathbf J_1\ -\mathbf J_2]`, :math:`\mathbf J = \mathbf J_{L1}^T\mathbf J_2`, and
@@ -16,31 +16,32 @@ Examples
 >>> int(wmr.mobility(bot, beta))
 1
 """
+from . import errors, swerve
 from ._version import __version__ as __version__  # one source: wmr/_version.py
-from .model import conventions
-from .model.backend import NUMERIC, SYMBOLIC
 from .analysis.classes import campion_class
 from .analysis.isotropy import characteristic_length, is_isotropic
-from .analysis.linalg import condition_number
 from .analysis.kinematics import forward, inverse
-from .analysis.linalg import null_space, nullity, rank
+from .analysis.linalg import condition_number, null_space, nullity, rank
 from .analysis.mobility import admissible_twists, mobility, rank_F
-from .model.platform import E, point_velocity, rotation
-from .model.robot import Robot
-from .model.robots import equilateral_mounts, paper_robot
 from .analysis.simulation import simulate
 from .analysis.steering import centre_to_wheels, instantaneous_centre, steering_angles
 from .analysis.sweep import sweep
+from .io import dump, load
+from .model import conventions
+from .model.backend import NUMERIC, SYMBOLIC
+from .model.platform import E, point_velocity, rotation
+from .model.robot import Robot
+from .model.robots import equilateral_mounts, paper_robot
 from .model.tolerance import TOL
 from .model.wheels import CentredWheel, DualWheel, FixedWheel, OffsetWheel, SwedishWheel
-from .io import dump, load
-from . import swerve
+from .odometry import wheel_odometry
 
 __all__ = [
-    "Robot", "OffsetWheel", "CentredWheel", "DualWheel", "FixedWheel", "SwedishWheel", "paper_robot", "equilateral_mounts",
+    "Robot", "OffsetWheel", "CentredWheel", "DualWheel", "FixedWheel", "SwedishWheel", "paper_robot",
+    "equilateral_mounts",
     "E", "rotation", "point_velocity", "rank", "nullity", "null_space", "rank_F", "mobility",
     "admissible_twists", "condition_number", "is_isotropic", "characteristic_length",
     "forward", "inverse", "instantaneous_centre", "steering_angles", "centre_to_wheels",
     "simulate", "sweep", "campion_class", "TOL", "NUMERIC", "SYMBOLIC", "conventions", "load", "dump",
-    "swerve",
+    "swerve", "errors", "wheel_odometry",
 ]

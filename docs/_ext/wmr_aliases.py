@@ -130,7 +130,8 @@ def _defined_in(module: Any, name: str) -> bool:
     except (OSError, TypeError):
         return True
     for node in tree.body:
-        targets = node.targets if isinstance(node, ast.Assign) else [node.target] if isinstance(node, ast.AnnAssign) else []
+        targets = (node.targets if isinstance(node, ast.Assign)
+                   else [node.target] if isinstance(node, ast.AnnAssign) else [])
         for t in targets:
             names = [t] if isinstance(t, ast.Name) else list(t.elts) if isinstance(t, ast.Tuple) else []
             if any(isinstance(n, ast.Name) and n.id == name for n in names):

@@ -171,8 +171,8 @@ class MarkdownSection(SphinxDirective):
             buf = io.StringIO()
             try:
                 with contextlib.chdir(root), contextlib.redirect_stdout(buf):
-                    exec(compile(code, f"<{where}>", "exec"), ns)       # noqa: S102 (the README's own example)
-            except Exception as exc:                                  # noqa: BLE001 (reported, fails -W)
+                    exec(compile(code, f"<{where}>", "exec"), ns)       # the README's own example
+            except Exception as exc:                                  # reported: fails -W
                 logger.warning(f"{where}: the Python example raised {type(exc).__name__}: {exc}",
                                location=self.get_location())
             for value in unmet_claims(code, buf.getvalue()):

@@ -21,8 +21,9 @@ from wmr.model.robot import Robot
 from wmr.model.robots import paper_robot
 from wmr.model.tolerance import TOL
 from wmr.model.wheels import CentredWheel, DualWheel
+
 from .. import symbols as S
-from ..notebook import mod_pi
+from ..algebra import mod_pi
 from ..text import bound
 from ..verify import SEED, symbolic_equal
 from . import Derivation, claim, require
@@ -51,7 +52,8 @@ def _averaging(w=3):
 
 
 def equivalence(n=300, n_paper=100, t_end=4.0, dt=0.01, seed=SEED):
-    r"""Claim ``dual-wheel-equivalence``: :math:`\mathbf J_2^{\text{dual}} = \mathbf J_2^{\text{centred}}[\tfrac12\ \tfrac12]` and the same admissible twists.
+    r"""Claim ``dual-wheel-equivalence``:
+    :math:`\mathbf J_2^{\text{dual}} = \mathbf J_2^{\text{centred}}[\tfrac12\ \tfrac12]` and the same admissible twists.
 
     Parameters
     ----------
@@ -110,32 +112,38 @@ def equivalence(n=300, n_paper=100, t_end=4.0, dt=0.01, seed=SEED):
     tw = np.array([0.5, 0.2, -0.1])
     beta0 = steering_angles(dual, tw)
     ok_rates = inverse(dual, beta0, tw).value
-    printed_rates = np.repeat(ok_rates.reshape(3, 2).mean(axis=1), 2)  # the printed (15): no difference when beta_dot = 0
+    # the printed (15): no difference when beta_dot = 0
+    printed_rates = np.repeat(ok_rates.reshape(3, 2).mean(axis=1), 2)
     runs = []
     for name, rates in (("corrected (15)", ok_rates), ("printed (15)", printed_rates)):
         tr = simulate(dual, rates, beta0, t_end=t_end, dt=dt)
         U = tr.world(instantaneous_centre(tw).point)
         runs.append({"steering law": name, "wheel-rate difference": float(np.ptp(rates.reshape(3, 2), axis=1).max()),
-                     "largest slip": float(tr.slip.max()), r"largest $|\beta - \beta_0|$": float(np.abs(tr.beta - beta0).max()),
+                     "largest "
+                     "slip": float(tr.slip.max()), r"largest $|\beta - \beta_0|$": float(np.abs(tr.beta - beta0).max()),
                      "drift of U": float(np.ptp(U, axis=0).max())})
-    require(res_spin < TOL and abs(steer_rate + ROBOT["r"] / ROBOT["b"]) < TOL, "counter-rotating wheels steer a dual unit in place")
+    require(res_spin < TOL and abs(steer_rate + ROBOT["r"] / ROBOT["b"]) < TOL, "counter-rotating wheels steer a dual "
+                                                                                "unit in place")
     require(runs[1]["largest slip"] > TOL, "the printed (15) makes the dual robot slip")
-    holds = (ok_block and ok_J1 and ok_axle and ok_F and worst < TOL and all(r["twists (centred)"] == r["twists (dual)"] for r in rows)
+    holds = (ok_block and ok_J1 and ok_axle and ok_F and worst < TOL
+             and all(r["twists (centred)"] == r["twists (dual)"] for r in rows)
              and all(r[r"nullity $\mathbf F$ dual"] - r[r"nullity $\mathbf F$ centred"] == 3 for r in rows)
              and runs[0]["largest slip"] < TOL and runs[0]["drift of U"] < TOL)
     return Derivation(B_dual=du.J2(), B_centred=cu.J2(), counts=rows, worst=worst, spin=res_spin, steer_rate=steer_rate,
                       runs=runs, n=n, findings=[claim(
         "dual-wheel-equivalence", holds,
         r"$\mathbf J_2^{\text{dual}} = \mathbf J_2^{\text{centred}}[\tfrac12\ \ \tfrac12]$ for one unit and "
-        r"$\mathbf F^{\text{dual}} = \mathbf F^{\text{centred}}\mathbf T$ for the paper's robots (SymPy): the same admissible "
-        rf"platform twists at every $\boldsymbol\beta$, confirmed at {n} configurations of the paper's and random robots; "
-        r"the dual robot steered by the corrected (15) turns about a fixed U without slip (`wmr.simulate`)",
+        r"$\mathbf F^{\text{dual}} = \mathbf F^{\text{centred}}\mathbf T$ for the paper's robots (SymPy): the same "
+        r"admissible "
+        rf"platform twists at every $\boldsymbol\beta$, confirmed at {n} configurations of the paper's and random "
+        r"robots; the dual robot steered by the corrected (15) turns about a fixed U without slip (`wmr.simulate`)",
         max(worst, runs[0]["largest slip"]),
-        convention=r"equivalent = the same admissible platform twists at every $\boldsymbol\beta$, with the average rate (18); "
-                   r"the wheel-rate difference is the unit's steering rate, by the corrected (15) "
+        convention=r"equivalent = the same admissible platform twists at every $\boldsymbol\beta$, with the average "
+                   r"rate (18); the wheel-rate difference is the unit's steering rate, by the corrected (15) "
                    r"$\dot\phi_i = \dot\psi + \dot\beta_i$",
-        note=r"the nullity of $\mathbf F^{\text{dual}}$ is larger by $w = 3$: the extra rates steer the units; with the "
-             r"printed (15) the same robot slips (up to " f"${runs[1]['largest slip']:.2g}$)")])
+        note=r"the nullity of $\mathbf F^{\text{dual}}$ is larger by $w = 3$: the extra rates steer the units; with "
+             r"the printed (15) the same robot slips (up to "
+             f"${runs[1]['largest slip']:.2g}$)")])
 
 
 def mobility_dual(n=2000, seed=SEED):
@@ -156,7 +164,8 @@ def mobility_dual(n=2000, seed=SEED):
     rng = np.random.default_rng(seed)
     be_c = steering_angles(dual, rng.normal(size=(n, 3)))
     be_r = rng.uniform(-np.pi, np.pi, (n, 3))
-    count = lambda f: (sorted(set(f(be_c).tolist())), sorted(set(f(be_r).tolist())))
+    def count(f):
+        return sorted(set(f(be_c).tolist())), sorted(set(f(be_r).tolist()))
     rows = [("nullity of $\\mathbf F$ with the averaged rates (the paper)", count(lambda b: mobility(cen, b))),
             ("nullity of $\\mathbf F^{\\text{dual}}$ with both wheel rates", count(lambda b: mobility(dual, b))),
             ("dimension of the admissible platform twists", count(lambda b: 3 - (rank_F(dual, b) - 3)))]
@@ -166,14 +175,15 @@ def mobility_dual(n=2000, seed=SEED):
     require(rows[1][1] == ([4], [3]), "the dual robot's F has three more null directions")
     return Derivation(rows=[{"counting": a, "coordinated steering": b[0], "arbitrary steering": b[1]} for a, b in rows],
                       findings=[claim(
-        "mobility-dual", holds, rf"at the steering angles of {n} random twists the nullity of $\mathbf F$ with the averaged "
-                                rf"rates and the dimension of the admissible twists are 1; at {n} arbitrary configurations 0; "
+        "mobility-dual", holds, rf"at the steering angles of {n} random twists the nullity of $\mathbf F$ with the "
+                                rf"averaged rates and the dimension of the admissible twists are 1; at {n} arbitrary "
+                                r"configurations 0; "
                                 r"$\mathbf F^{\text{dual}} = \mathbf F^{\text{centred}}\mathbf T$ numerically", res,
-        convention=r"mobility = nullity of $\mathbf F$ with the averaged rates (18) = dimension of the admissible platform "
-                   r"twists, at coordinated steering angles (0 otherwise)",
-        note=r"the nullity of the $6\times9$ matrix $\mathbf F^{\text{dual}}$ with both wheel rates is $1 + w = 4$; the extra "
-             r"3 are the steering rates, which also let a jammed dual-wheel robot re-steer (nullity 3 at arbitrary "
-             r"$\boldsymbol\beta$)")])
+        convention=r"mobility = nullity of $\mathbf F$ with the averaged rates (18) = dimension of the admissible "
+                   r"platform twists, at coordinated steering angles (0 otherwise)",
+        note=r"the nullity of the $6\times9$ matrix $\mathbf F^{\text{dual}}$ with both wheel rates is $1 + w = 4$; "
+             r"the extra 3 are the steering rates, which also let a jammed dual-wheel robot re-steer (nullity 3 at "
+             r"arbitrary $\boldsymbol\beta$)")])
 
 
 def corner(v=0.2, w_max=np.pi / 2, dt=0.01):
@@ -212,9 +222,10 @@ def corner(v=0.2, w_max=np.pi / 2, dt=0.01):
         return inverse(dual, s[1], tw_y).value
     run_d = simulate(dual, dual_rates, bx, t_end=2 + Ts, dt=dt)
     inside_d = (run_d.t > 1 + 1e-9) & (run_d.t < 1 + Ts - 1e-9)
-    off_rates = lambda t, s: inverse(off, s[1], tw_x if t < 1 else tw_y).value
+    def off_rates(t, s):
+        return inverse(off, s[1], tw_x if t < 1 else tw_y).value
     run_o = simulate(off, off_rates, np.zeros(3), t_end=2.0, dt=dt)
-    top = float(np.abs([off_rates(t, (p, b)) for t, p, b in zip(run_o.t, run_o.pose, run_o.beta)]).max())
+    top = float(np.abs([off_rates(t, (p, b)) for t, p, b in zip(run_o.t, run_o.pose, run_o.beta, strict=True)]).max())
     return {"Ts": Ts, "v": v,
             "centred": {"moved": float(np.ptp(run.pose[inside], axis=0).max()), "slip": float(run.slip.max()),
                         "final": run.pose[-1], "at_once": float(np.abs(at_once.residual).max()),
@@ -245,7 +256,8 @@ def curved_translation(v=0.2, omega=0.5, t_end=np.pi, dt=0.01):
         ``parallel`` (largest spread of the steering angles).
     """
     cen, _, _ = robots()
-    twist = lambda t: np.array([0.0, v * np.cos(omega * t), v * np.sin(omega * t)])
+    def twist(t):
+        return np.array([0.0, v * np.cos(omega * t), v * np.sin(omega * t)])
     beta0 = steering_angles(cen, twist(0.0))
     run = simulate(cen, lambda t, s: inverse(cen, s[1], twist(t)).value, beta0, t_end=t_end, dt=dt,
                    steer=np.full(3, omega))
@@ -253,12 +265,14 @@ def curved_translation(v=0.2, omega=0.5, t_end=np.pi, dt=0.01):
     heading = np.unwrap(np.arctan2(vel[:, 1], vel[:, 0]))
     miss = float(np.max(np.abs(run.twist - np.array([twist(t) for t in run.t]))))
     return {"slip": float(run.slip.max()), "miss": miss, "psi": float(np.abs(run.pose[:, 0]).max()),
-            "turned": float(heading[-1] - heading[0]), "parallel": float(np.ptp(mod_pi(run.beta - run.beta[:, :1]), axis=0).max()),
+            "turned": float(heading[-1] - heading[0]), "parallel": float(np.ptp(mod_pi(run.beta - run.beta[:, :1]),
+                                                                                axis=0).max()),
             "omega": omega, "t_end": t_end}
 
 
 def omnidirectional(n=2000, seed=SEED):
-    r"""Claim ``omnidirectional``: three centred wheels are not omnidirectional; they must stop only to turn a sharp corner exactly.
+    r"""Claim ``omnidirectional``: three centred wheels are not omnidirectional; they must stop only to turn a sharp
+    corner exactly.
 
     Parameters
     ----------
@@ -283,32 +297,34 @@ def omnidirectional(n=2000, seed=SEED):
     proven = (dims == [0, 1] and dims_off == [3] and c["centred"]["slip"] < TOL and c["centred"]["moved"] == 0.0
               and not c["centred"]["admissible_at_once"] and abs(c["centred"]["at_once"] - c["v"]) < TOL
               and c["dual"]["slip"] < TOL and c["dual"]["moved"] < TOL and curve["psi"] < TOL
-              and curve["slip"] < 1e-6 and curve["miss"] < 1e-9 and abs(curve["turned"] - curve["omega"] * curve["t_end"]) < 0.05)
+              and curve["slip"] < 1e-6 and curve["miss"] < 1e-9 and abs(curve["turned"] - curve["omega"]
+                                                                        * curve["t_end"]) < 0.05)
     return Derivation(dims=dims, dims_offset=dims_off, corner=c, curve=curve, n=2 * n, findings=[claim(
         "omnidirectional", holds,
-        rf"the admissible twists of three centred wheels form a space of dimension at most 1 at all {2 * n} configurations "
-        r"(3 for offset wheels); a 90-degree corner followed exactly needs the wheels re-steered with the platform at rest "
-        r"(commanding the new twist at once slips at the full speed), while a curvilinear translation whose direction "
-        rf"turns by ${np.degrees(curve['turned']):.0f}^\circ$ is followed without stopping: the twist executed differs from "
-        rf"the one commanded by ${bound(curve['miss'], latex=True)}$, slip ${bound(curve['slip'], latex=True)}$ "
-        r"(`wmr.simulate`)", max(curve["slip"], curve["miss"]),
-        refuted=rf"the admissible twists have dimension {dims} (never 3): a twist in another direction than the current "
-                r"one cannot be executed without re-steering",
-        corrected=r"A WMR with three centred (or dual) wheels has mobility $\nu = 1$ ($0$ at uncoordinated steering angles): it is not "
-                  r"omnidirectional. It can travel in any direction, and change direction while moving when the wheels are "
-                  r"re-steered together (they stay parallel, as in the curvilinear translation of Fig. 8b); it must stop only "
-                  r"to follow a sharp corner exactly, re-steering with the platform at rest (type $(1, 2)$ in the "
-                  r"classification of Campion et al.)",
+        rf"the admissible twists of three centred wheels form a space of dimension at most 1 at all {2 * n} "
+        r"configurations (3 for offset wheels); a 90-degree corner followed exactly needs the wheels re-steered with "
+        r"the platform at rest (commanding the new twist at once slips at the full speed), while a curvilinear "
+        rf"translation whose direction turns by ${np.degrees(curve['turned']):.0f}^\circ$ is followed without "
+        rf"stopping: the twist executed differs from the one commanded by ${bound(curve['miss'], latex=True)}$, slip "
+        rf"${bound(curve['slip'], latex=True)}$ (`wmr.simulate`)", max(curve["slip"], curve["miss"]),
+        refuted=f"the admissible twists have dimension {dims} (never 3): a twist in another direction than the current "
+                "one cannot be executed without re-steering",
+        corrected=r"A WMR with three centred (or dual) wheels has mobility $\nu = 1$ ($0$ at uncoordinated steering "
+                  r"angles): it is not omnidirectional. It can travel in any direction, and change direction while "
+                  r"moving when the wheels are re-steered together (they stay parallel, as in the curvilinear "
+                  r"translation of Fig. 8b); it must stop only to follow a sharp corner exactly, re-steering with the "
+                  r"platform at rest (type $(1, 2)$ in the classification of Campion et al.)",
         corrected_holds=proven, severity="wrong",
-        why=r"omnidirectional means every twist executable at once, the paper's own use in Section 4.2; decoupled steering "
-            r"only lets the wheels turn, one direction of motion at a time",
+        why="omnidirectional means every twist executable at once, the paper's own use in Section 4.2; decoupled "
+            "steering only lets the wheels turn, one direction of motion at a time",
         convention="omnidirectional = every platform twist executable at once from any configuration (Section 4.2)",
-        note=r"the earlier reading that the platform must stop to re-steer is too strong: wheels re-steered together stay "
-             r"parallel, and a translation steers while it moves")])
+        note="the earlier reading that the platform must stop to re-steer is too strong: wheels re-steered together "
+             "stay parallel, and a translation steers while it moves")])
 
 
 def discontinuous_heading(n=2000, seed=SEED):
-    r"""Claim ``discontinuous-heading``: with mobility 1 a jump in the direction of travel needs re-steering; offset wheels need none.
+    r"""Claim ``discontinuous-heading``: with mobility 1 a jump in the direction of travel needs re-steering; offset
+    wheels need none.
 
     Parameters
     ----------
@@ -336,19 +352,24 @@ def discontinuous_heading(n=2000, seed=SEED):
     c = corner()
     rows = [{"case": r"centred: $\mathbf t^-$ to a random $\mathbf t^+$", "executable": float(jump.admissible.mean()),
              "largest residual": float(np.abs(jump.residual).max())},
-            {"case": r"centred: $\mathbf t^-$ to $\lambda\mathbf t^-$ (incl. reversal)", "executable": float(scaled.admissible.mean()),
+            {"case": r"centred: $\mathbf t^-$ to $\lambda\mathbf t^-$ (incl. "
+                     r"reversal)", "executable": float(scaled.admissible.mean()),
              "largest residual": float(np.abs(scaled.residual).max())},
-            {"case": r"offset ($d = r$): any $\boldsymbol\beta$, random $\mathbf t^+$", "executable": float(sol_off.admissible.mean()),
+            {"case": r"offset ($d = r$): any $\boldsymbol\beta$, random "
+                     r"$\mathbf t^+$", "executable": float(sol_off.admissible.mean()),
              "largest residual": float(np.abs(sol_off.residual).max())}]
     res = rows[2]["largest residual"]
-    holds = (not jump.admissible.any() and bool(scaled.admissible.all()) and bool(sol_off.admissible.all()) and res < TOL
+    holds = (not jump.admissible.any() and bool(scaled.admissible.all()) and bool(sol_off.admissible.all())
+             and res < TOL
              and bool(np.all(gain <= bound_ * (1 + 1e-12))) and c["offset"]["slip"] < TOL
              and bool(np.allclose(c["offset"]["final"], [0.0, c["v"], c["v"]], atol=0.01 * c["v"])))
     return Derivation(rows=rows, gain=float(gain.max()), bound=float(bound_.max()), corner=c, findings=[claim(
         "discontinuous-heading", holds,
         rf"of {n} random jumps of the twist, none is executable by the centred robot without re-steering, all jumps "
-        r"$\mathbf t \to \lambda\mathbf t$ are; the offset robot executes all of them at once, with joint rates bounded by "
+        r"$\mathbf t \to \lambda\mathbf t$ are; the offset robot executes all of them at once, with joint rates "
+        r"bounded by "
         r"$\sigma_{\max}(\mathbf J_1)/\sigma_{\min}(\mathbf J_2)\,\|\mathbf t\|$, and turns a 90-degree corner without "
         r"stopping and without slip (`wmr.simulate`)", res,
-        convention=r"heading = the direction of the platform twist; a jump $\mathbf t \to \lambda\mathbf t$ (same instantaneous "
-                   r"centre, a reversal for $\lambda < 0$) needs no delay; offset wheels ($d > 0$) realise any twist at once")])
+        convention=r"heading = the direction of the platform twist; a jump $\mathbf t \to \lambda\mathbf t$ (same "
+                   r"instantaneous centre, a reversal for $\lambda < 0$) needs no delay; offset wheels ($d > 0$) "
+                   r"realise any twist at once")])

@@ -20,7 +20,7 @@ ch.    check                           the exercise
 1      :func:`dual_counterexample`     a slip-free motion that refutes the printed (15)
 1      :func:`dual_spin_in_place`      wheel rates that turn a dual wheel on the spot
 2      :func:`locked_steering`         steering angles at which the locked robot can still steer
-2      :func:`drift_of_c_general`      (28) with C anywhere, not only at the centroid   
+2      :func:`drift_of_c_general`      (28) with C anywhere, not only at the centroid
 3      :func:`isotropic_placement`     move wheel 2 and find the L that makes :math:`\mathbf J_{L1}` isotropic
 3      :func:`printed_42_signs`        show that the printed (42) has the wrong signs
 3      :func:`offset_for_kappa`        the offset that gives :math:`\kappa(\mathbf J_2) = 2`
@@ -39,14 +39,14 @@ The checks live one module per chapter (:mod:`~edition.exercises.ch1_wheels` ...
 :mod:`~edition.exercises.ch6_motion`), the verdict type in :mod:`~edition.exercises.feedback`
 and the "your own robot" summary in :mod:`~edition.exercises.own_robot`.
 """
-from .feedback import Feedback
-from .ch1_wheels import offset_other_side, dual_counterexample, dual_spin_in_place
-from .own_robot import describe_robot
-from .ch2_mobility import locked_steering, drift_of_c_general
-from .ch3_isotropy import isotropic_placement, printed_42_signs, offset_for_kappa
-from .ch4_singularities import unlisted_singularity, mobile_and_singular
-from .ch5_steering import translation_angles, rotation_angles, printed_65_region
+from .ch1_wheels import dual_counterexample, dual_spin_in_place, offset_other_side
+from .ch2_mobility import drift_of_c_general, locked_steering
+from .ch3_isotropy import isotropic_placement, offset_for_kappa, printed_42_signs
+from .ch4_singularities import mobile_and_singular, unlisted_singularity
+from .ch5_steering import printed_65_region, rotation_angles, translation_angles
 from .ch6_motion import curved_translation, reversal
+from .feedback import Feedback
+from .own_robot import describe_robot
 
 __all__ = ["Feedback", "offset_other_side", "dual_counterexample", "dual_spin_in_place", "locked_steering",
            "drift_of_c_general", "isotropic_placement", "printed_42_signs", "offset_for_kappa",

@@ -10,8 +10,9 @@ import sympy as sp
 from wmr.analysis.linalg import rank
 from wmr.model.robots import paper_robot
 from wmr.model.tolerance import TOL
+
 from ..verify import symbolic_equal
-from .feedback import Feedback, _matrix, _none
+from .feedback import Feedback, as_matrix, missing
 
 __all__ = ["locked_steering", "drift_of_c_general"]
 
@@ -31,7 +32,7 @@ def locked_steering(beta, robot=None):
     Feedback
     """
     from ..checks.assembly import PAPER, locked_system
-    fb = _none(beta, "three steering angles")
+    fb = missing(beta, "three steering angles")
     if fb is not None:
         return fb
     robot = robot or paper_robot("offset", **PAPER)
@@ -57,7 +58,7 @@ def drift_of_c_general(answer):
     r"""Exercise 2.2: :math:`\dot{\mathbf c}` of the locked robot for general mount points (C anywhere).
 
     The answer is a SymPy 2-vector in :data:`edition.symbols` (``d``, ``beta``, ``phi_dot``, ``psi_dot``)
-    and the mount points :data:`edition.offset.D`.
+    and the mount points :data:`edition.symbols.D`.
 
     Parameters
     ----------
@@ -67,9 +68,9 @@ def drift_of_c_general(answer):
     -------
     Feedback
     """
-    from .. import printed
     from ..checks.assembly import drift_of_c
-    M, fb = _matrix(answer, (2, 1), r"the 2-vector $\dot{\mathbf c}$")
+    from ..transcription import printed
+    M, fb = as_matrix(answer, (2, 1), r"the 2-vector $\dot{\mathbf c}$")
     if fb is not None:
         return fb
     truth = drift_of_c(n=1).c_dot
@@ -80,6 +81,6 @@ def drift_of_c_general(answer):
     if symbolic_equal(M, printed(28).expr.rhs):
         return Feedback(False, r"That is the printed (28), which assumes $\sum_i\mathbf d_i = \mathbf 0$. Keep the "
                                r"platform rows $\dot\psi\mathbf E\mathbf d_i$ when you sum.")
-    return Feedback(False, r"Sum the three block rows of $\mathbf J_1\mathbf t = \mathbf J_2\dot{\boldsymbol\theta}$ with "
-                           r"$\dot\theta_i = 0$ and solve for $\dot x, \dot y$; your answer differs from it by "
+    return Feedback(False, r"Sum the three block rows of $\mathbf J_1\mathbf t = \mathbf J_2\dot{\boldsymbol\theta}$ "
+                           r"with $\dot\theta_i = 0$ and solve for $\dot x, \dot y$; your answer differs from it by "
                            f"${sp.latex(sp.simplify(M - truth).T)}^{{\\mathrm T}}$.")

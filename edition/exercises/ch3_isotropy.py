@@ -11,9 +11,10 @@ from wmr.analysis.linalg import condition_number
 from wmr.model.robot import Robot
 from wmr.model.robots import paper_robot
 from wmr.model.wheels import OffsetWheel
+
 from .. import symbols as S
 from ..verify import symbolic_equal
-from .feedback import Feedback, _matrix, _none
+from .feedback import Feedback, as_matrix, missing
 
 __all__ = ["isotropic_placement", "printed_42_signs", "offset_for_kappa"]
 
@@ -34,7 +35,7 @@ def isotropic_placement(points, L, fixed=((-0.4, 0.0), (0.1, 0.5))):
     -------
     Feedback
     """
-    fb = _none(None if points is None or L is None else 0, "the three mount points and $L$")
+    fb = missing(None if points is None or L is None else 0, "the three mount points and $L$")
     if fb is not None:
         return fb
     pts = np.asarray(points, dtype=float)
@@ -49,19 +50,21 @@ def isotropic_placement(points, L, fixed=((-0.4, 0.0), (0.1, 0.5))):
     s = pts.sum(axis=0)
     if np.abs(s).max() > 1e-9:
         return Feedback(False, rf"$\kappa(\mathbf J_{{L1}}) = {k:.4g}$. The off-diagonal blocks (35) are "
-                               rf"$\tfrac1L\mathbf E\sum_i\mathbf d_i \neq \mathbf 0$: $\sum_i\mathbf d_i = ({s[0]:.3g}, {s[1]:.3g})$. "
-                               "Put C at the centroid of the three mount points (37).")
+                               r"$\tfrac1L\mathbf E\sum_i\mathbf d_i \neq \mathbf 0$: "
+                               rf"$\sum_i\mathbf d_i = ({s[0]:.3g}, {s[1]:.3g})$. Put C at the centroid of the three "
+                               r"mount points (37).")
     L_iso = float(np.sqrt(np.mean(np.sum(pts**2, axis=1))))
     if abs(k - 1) > 1e-9:
         return Feedback(False, rf"The centroid is right, but $\kappa(\mathbf J_{{L1}}) = {k:.4g}$: (36) asks for "
-                               rf"$L^2 = \tfrac13\sum_i\|\mathbf d_i\|^2$, the mean squared distance.")
-    return Feedback(True, rf"$\kappa(\mathbf J_{{L1}}) = 1$ with $L = {L_iso:.4g}$, although the triangle is not equilateral "
-                          rf"(distances ${', '.join(f'{v:.3g}' for v in np.linalg.norm(pts, axis=1))}$): (38) is sufficient, "
-                          "not necessary.")
+                               r"$L^2 = \tfrac13\sum_i\|\mathbf d_i\|^2$, the mean squared distance.")
+    return Feedback(True, rf"$\kappa(\mathbf J_{{L1}}) = 1$ with $L = {L_iso:.4g}$, although the triangle is not "
+                          rf"equilateral (distances ${', '.join(f'{v:.3g}' for v in np.linalg.norm(pts, axis=1))}$): "
+                          r"(38) is sufficient, not necessary.")
 
 
 def printed_42_signs(answer):
-    r"""Exercise 3.2: the square :math:`\tilde{\mathbf p}^2` of the model's :math:`\tilde{\mathbf p}` -- and why the printed (42) cannot be it.
+    r"""Exercise 3.2: the square :math:`\tilde{\mathbf p}^2` of the model's :math:`\tilde{\mathbf p}` -- and why the
+    printed (42) cannot be it.
 
     Parameters
     ----------
@@ -72,21 +75,23 @@ def printed_42_signs(answer):
     -------
     Feedback
     """
-    from .. import printed
-    M, fb = _matrix(answer, (2, 2), r"the $2\times2$ matrix $\tilde{\mathbf p}^2$")
+    from ..transcription import printed
+    M, fb = as_matrix(answer, (2, 2), r"the $2\times2$ matrix $\tilde{\mathbf p}^2$")
     if fb is not None:
         return fb
     ptilde = OffsetWheel((0, 0), r=S.r, d=S.d).block(sp.Integer(0))        # R(0) p~ = p~
     truth = ptilde * ptilde
     if symbolic_equal(M, truth):
-        return Feedback(True, r"$\tilde{\mathbf p}^2 = \mathrm{diag}(d^2, r^2)$. With the printed $\mathrm{diag}(-d^2, -r^2)$, "
-                              r"$\Upsilon_i = \mathbf R\tilde{\mathbf p}^2\mathbf R^{\mathrm T}$ would be negative definite, "
-                              r"impossible for a block of $\mathbf J_2\mathbf J_2^{\mathrm T}$, whose quadratic form is "
-                              r"$\|\mathbf J_2^{\mathrm T}\mathbf x\|^2 \geq 0$.")
+        return Feedback(True, r"$\tilde{\mathbf p}^2 = \mathrm{diag}(d^2, r^2)$. With the printed "
+                              r"$\mathrm{diag}(-d^2, -r^2)$, "
+                              r"$\Upsilon_i = \mathbf R\tilde{\mathbf p}^2\mathbf R^{\mathrm T}$ would be negative "
+                              r"definite, impossible for a block of $\mathbf J_2\mathbf J_2^{\mathrm T}$, whose "
+                              r"quadratic form is $\|\mathbf J_2^{\mathrm T}\mathbf x\|^2 \geq 0$.")
     if symbolic_equal(M, printed(42).expr.rhs):
         return Feedback(False, r"That is the printed (42). Square $\tilde{\mathbf p} = \mathrm{diag}(-d, -r)$ yourself "
                                r"(`OffsetWheel((0, 0), r=S.r, d=S.d).block(0)` is $\tilde{\mathbf p}$).")
-    return Feedback(False, rf"Not $\tilde{{\mathbf p}}\tilde{{\mathbf p}}$: the model's $\tilde{{\mathbf p}}$ is ${sp.latex(ptilde)}$.")
+    return Feedback(False, rf"Not $\tilde{{\mathbf p}}\tilde{{\mathbf p}}$: the model's $\tilde{{\mathbf p}}$ is "
+                           rf"${sp.latex(ptilde)}$.")
 
 
 def offset_for_kappa(offsets, r=0.1, kappa=2.0, n=200):
@@ -104,7 +109,7 @@ def offset_for_kappa(offsets, r=0.1, kappa=2.0, n=200):
     -------
     Feedback
     """
-    fb = _none(offsets, "a list of offsets $d$")
+    fb = missing(offsets, "a list of offsets $d$")
     if fb is not None:
         return fb
     ds = sorted(float(d) for d in np.atleast_1d(offsets))

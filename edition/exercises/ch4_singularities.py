@@ -5,7 +5,8 @@ See :mod:`edition.exercises` for how the checks are used.
 from __future__ import annotations
 
 from wmr.model.robots import paper_robot
-from .feedback import Feedback, _angles
+
+from .feedback import Feedback, as_angles
 
 __all__ = ["unlisted_singularity", "mobile_and_singular"]
 
@@ -14,7 +15,7 @@ def _classified(beta_deg):
     """The answer's configuration of the paper's centred-wheel robot, classified
     (:func:`wmr.analysis.singularities.classify`), or the feedback on an answer that is not three angles."""
     from wmr.analysis.singularities import classify
-    beta, fb = _angles(beta_deg, degrees=True)
+    beta, fb = as_angles(beta_deg, degrees=True)
     if fb is not None:
         return fb
     if beta.shape != (3,):
@@ -45,8 +46,8 @@ def unlisted_singularity(beta_deg):
     if item:
         return Feedback(False, f"Singular, but the paper lists it: item {item} (family `{c.family}`). Look for one the "
                                "literal list misses.")
-    return Feedback(True, rf"$\det\mathbf J = 0$ (family `{c.family}`, rank $\mathbf F = {c.rank_F}$), and no item of the "
-                          r"printed list states it: a wheel turned by $180^\circ$ keeps its wheel-plane line.")
+    return Feedback(True, rf"$\det\mathbf J = 0$ (family `{c.family}`, rank $\mathbf F = {c.rank_F}$), and no item of "
+                          r"the printed list states it: a wheel turned by $180^\circ$ keeps its wheel-plane line.")
 
 
 def mobile_and_singular(beta_deg):
@@ -67,7 +68,7 @@ def mobile_and_singular(beta_deg):
     if not c.singular:
         return Feedback(False, rf"$\det\mathbf J = {c.det_J:.3g}$: $\mathbf J$ is not singular here.")
     if c.rank_F != 5:
-        return Feedback(False, rf"$\mathbf J$ is singular, but rank $\mathbf F = {c.rank_F}$: the robot cannot move. The "
-                               "axle lines must be concurrent too.")
-    return Feedback(True, r"$\det\mathbf J = 0$ and rank $\mathbf F = 5$: the robot can move although $\mathbf J$ is singular "
-                          r"(all planes parallel, or the planes meet on the circle through the $P_i$).")
+        return Feedback(False, rf"$\mathbf J$ is singular, but rank $\mathbf F = {c.rank_F}$: the robot cannot move. "
+                               r"The axle lines must be concurrent too.")
+    return Feedback(True, r"$\det\mathbf J = 0$ and rank $\mathbf F = 5$: the robot can move although $\mathbf J$ is "
+                          r"singular (all planes parallel, or the planes meet on the circle through the $P_i$).")

@@ -7,13 +7,15 @@ from __future__ import annotations
 import numpy as np
 
 from wmr.analysis.kinematics import inverse
-from .feedback import Feedback, _angles, _none
+
+from .feedback import Feedback, as_angles, missing
 
 __all__ = ["translation_angles", "rotation_angles", "printed_65_region"]
 
 
 def translation_angles(beta, velocity=(0.3, 0.4), psi_deg=30.0):
-    r"""Exercise 5.1: steering angles :math:`\beta_i` for a translation with fixed-frame velocity ``velocity`` at heading ``psi_deg``.
+    r"""Exercise 5.1: steering angles :math:`\beta_i` for a translation with fixed-frame velocity ``velocity`` at
+    heading ``psi_deg``.
 
     Parameters
     ----------
@@ -29,7 +31,7 @@ def translation_angles(beta, velocity=(0.3, 0.4), psi_deg=30.0):
     Feedback
     """
     from ..checks.steering import robot
-    beta, fb = _angles(beta)
+    beta, fb = as_angles(beta)
     if fb is not None:
         return fb
     psi = np.radians(psi_deg)
@@ -40,13 +42,14 @@ def translation_angles(beta, velocity=(0.3, 0.4), psi_deg=30.0):
     if bool(sol.admissible):
         return Feedback(True, r"Every axle is perpendicular to the velocity and the wheels roll along it: "
                               r"$\phi_i = \psi + \beta_i = \operatorname{atan2}(\dot Y, \dot X) + \pi/2$ (mod $\pi$).")
-    from ..notebook import mod_pi
+    from ..algebra import mod_pi
     if np.allclose(mod_pi(beta + psi - np.arctan2(v[1], v[0])), 0.0, atol=1e-9):
-        return Feedback(False, r"These are the angles of the printed (60): the *axles* point along the velocity and the "
-                               rf"wheels would slide sideways at the full speed (${np.linalg.norm(v):.3g}$ m/s).")
-    return Feedback(False, rf"The wheels would slip (residual ${np.abs(sol.residual).max():.3g}$ m/s). In translation every "
-                           r"point moves with $\dot{\mathbf c}$: each axle $\mathbf i_i$ (absolute angle $\psi + \beta_i$) must "
-                           "be perpendicular to it.")
+        return Feedback(False, "These are the angles of the printed (60): the *axles* point along the velocity and "
+                               f"the wheels would slide sideways at the full speed (${np.linalg.norm(v):.3g}$ m/s).")
+    return Feedback(False, f"The wheels would slip (residual ${np.abs(sol.residual).max():.3g}$ m/s). In translation "
+                           "every "
+                           r"point moves with $\dot{\mathbf c}$: each axle $\mathbf i_i$ (absolute angle "
+                           r"$\psi + \beta_i$) must be perpendicular to it.")
 
 
 def rotation_angles(beta, U=(0.5, 0.3)):
@@ -64,22 +67,25 @@ def rotation_angles(beta, U=(0.5, 0.3)):
     Feedback
     """
     from ..checks.steering import robot
-    beta, fb = _angles(beta)
+    beta, fb = as_angles(beta)
     if fb is not None:
         return fb
     u = np.asarray(U, dtype=float)
     twist = np.r_[1.0, np.array([u[1], -u[0]])]          # c_dot = -psi_dot E u
     sol = inverse(robot(), beta, twist)
     if bool(sol.admissible):
-        return Feedback(True, r"Every axle points at U: $\beta_i = \operatorname{atan2}(u_{iy}, u_{ix})$ (mod $\pi$) with "
-                              r"$\mathbf u_i = \mathbf u_c - \mathbf d_i$ (64).")
-    return Feedback(False, rf"The wheels would slip (residual ${np.abs(sol.residual).max():.3g}$ m/s at $\dot\psi = 1$): each "
-                           r"axle $\mathbf i_i$ must be parallel to $\mathbf u_i = \overrightarrow{P_iU}$, the angle measured "
-                           r"from the body axis $\mathbf i$, not from $\overrightarrow{CU}$ as the printed (65) does.")
+        return Feedback(True, r"Every axle points at U: $\beta_i = \operatorname{atan2}(u_{iy}, u_{ix})$ (mod $\pi$) "
+                              r"with $\mathbf u_i = \mathbf u_c - \mathbf d_i$ (64).")
+    return Feedback(False, rf"The wheels would slip (residual ${np.abs(sol.residual).max():.3g}$ m/s at "
+                           r"$\dot\psi = 1$): each "
+                           r"axle $\mathbf i_i$ must be parallel to $\mathbf u_i = \overrightarrow{P_iU}$, the angle "
+                           r"measured from the body axis $\mathbf i$, not from $\overrightarrow{CU}$ as the printed "
+                           r"(65) does.")
 
 
 def printed_65_region(U):
-    r"""Exercise 5.3: a centre U (not C) at which the printed (65), with the better sign of arccos per wheel, steers correctly.
+    r"""Exercise 5.3: a centre U (not C) at which the printed (65), with the better sign of arccos per wheel, steers
+    correctly.
 
     Parameters
     ----------
@@ -91,7 +97,7 @@ def printed_65_region(U):
     Feedback
     """
     from ..checks.steering import robot
-    fb = _none(U, "a point $U = (u_x, u_y)$")
+    fb = missing(U, "a point $U = (u_x, u_y)$")
     if fb is not None:
         return fb
     u = np.asarray(U, dtype=float)
@@ -101,12 +107,14 @@ def printed_65_region(U):
     ui = u - bot.mount_points
     cos_pr = (ui @ u) / (np.linalg.norm(ui, axis=1) * np.linalg.norm(u))
     b = np.arccos(np.clip(cos_pr, -1, 1))
-    lateral = lambda x: np.abs(ui[:, 1] * np.cos(x) - ui[:, 0] * np.sin(x))
+    def lateral(x):
+        return np.abs(ui[:, 1] * np.cos(x) - ui[:, 0] * np.sin(x))
     b = np.where(lateral(b) <= lateral(-b), b, -b)
     twist = np.r_[1.0, np.array([u[1], -u[0]])]
     if bool(inverse(bot, b, twist).admissible):
-        return Feedback(True, r"Here the printed angle between $\overrightarrow{CU}$ and $\overrightarrow{P_iU}$ is the angle "
-                              r"from the body axis $\mathbf i$: U lies on the positive body $x$-axis, the only place where "
-                              "the printed (65) works.")
-    return Feedback(False, r"At this U the printed angles leave the axles off U: the robot is jammed. The printed angle "
-                           r"is measured from $\overrightarrow{CU}$; where does that line coincide with the body axis $\mathbf i$?")
+        return Feedback(True, r"Here the printed angle between $\overrightarrow{CU}$ and $\overrightarrow{P_iU}$ is "
+                              r"the angle from the body axis $\mathbf i$: U lies on the positive body $x$-axis, the "
+                              r"only place where the printed (65) works.")
+    return Feedback(False, r"At this U the printed angles leave the axles off U: the robot is jammed. The printed "
+                           r"angle is measured from $\overrightarrow{CU}$; where does that line coincide with the body "
+                           r"axis $\mathbf i$?")

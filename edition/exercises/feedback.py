@@ -6,7 +6,7 @@ from dataclasses import dataclass
 import numpy as np
 import sympy as sp
 
-__all__ = ["Feedback"]
+__all__ = ["Feedback", "missing", "as_matrix", "as_angles"]
 
 
 @dataclass(frozen=True)
@@ -33,15 +33,44 @@ class Feedback:
         return f"Feedback(correct={self.correct}, message={self.message!r})"
 
 
-def _none(answer, what):
+def missing(answer, what):
+    """The feedback for an exercise not yet answered (``answer is None``), else None.
+
+    Parameters
+    ----------
+    answer : object
+        The student's answer.
+    what : str
+        What the answer should be, in words (Markdown).
+
+    Returns
+    -------
+    Feedback or None
+    """
     if answer is None:
         return Feedback(False, f"No answer yet: replace `None` by {what}.")
     return None
 
 
-def _matrix(answer, shape, wanted):
-    """``(M, None)``: the answer as a SymPy matrix of ``shape``; or ``(None, Feedback)``: none yet (``wanted``) or not one."""
-    fb = _none(answer, wanted)
+def as_matrix(answer, shape, wanted):
+    """The answer as a SymPy matrix of ``shape``, or the feedback why it is not one.
+
+    Parameters
+    ----------
+    answer : object
+        The student's answer: a SymPy matrix, or a list of lists.
+    shape : tuple of int
+        The shape the answer must have.
+    wanted : str
+        What the answer should be, in words (for an exercise not yet answered).
+
+    Returns
+    -------
+    matrix : sympy.Matrix or None
+    feedback : Feedback or None
+        Exactly one of the two is None.
+    """
+    fb = missing(answer, wanted)
     if fb is not None:
         return None, fb
     try:
@@ -53,9 +82,24 @@ def _matrix(answer, shape, wanted):
     return M, None
 
 
-def _angles(answer, degrees=False):
-    """``(beta, None)``: the answer as steering angles in radians, array (k,); or ``(None, Feedback)``: none yet."""
-    fb = _none(answer, "three steering angles in degrees" if degrees else "three steering angles (radians)")
+def as_angles(answer, degrees=False):
+    """The answer as steering angles in radians, or the feedback for an exercise not yet answered.
+
+    Parameters
+    ----------
+    answer : array_like or None
+        Steering angles.
+    degrees : bool, optional
+        The answer is in degrees.
+
+    Returns
+    -------
+    beta : numpy.ndarray (k,) or None
+        Radians.
+    feedback : Feedback or None
+        Exactly one of the two is None.
+    """
+    fb = missing(answer, "three steering angles in degrees" if degrees else "three steering angles (radians)")
     if fb is not None:
         return None, fb
     beta = np.asarray(answer, dtype=float)

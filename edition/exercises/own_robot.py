@@ -12,7 +12,8 @@ __all__ = ["describe_robot"]
 
 
 def describe_robot(robot, beta=None, twist=None):
-    r"""A Markdown summary of any robot: its units, the sizes of its matrices, rank F and mobility, and a twist's feasibility.
+    r"""A Markdown summary of any robot: its units, the sizes of its matrices, rank F and mobility, and a twist's
+    feasibility.
 
     For the "your own robot" cells of the chapters.
 

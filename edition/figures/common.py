@@ -1,4 +1,5 @@
-r"""What the figures share, without matplotlib: robots, exact det J, circle fit, snapping, JSON, singular configurations.
+r"""What the figures share, without matplotlib: robots, exact det J, circle fit, snapping, JSON, singular
+configurations.
 
 The robots drawn (:func:`centred_robot`), exact :math:`\det\mathbf J` (:func:`exact_det_J`), circle
 fitting and how a figure's data becomes JSON (:func:`numbers`).  The numbers of one configuration
@@ -15,13 +16,14 @@ from __future__ import annotations
 
 import dataclasses
 from dataclasses import field
-from functools import lru_cache
+from functools import cache
 
 import numpy as np
 
 from wmr.analysis import singularities as sg
 from wmr.model.robots import paper_robot
 from wmr.plot.snapping import snap
+
 from ..text import bound, rounded
 
 __all__ = ["L_PAPER", "R_CENTRED", "R_OFFSET", "DEG", "ABS_DET_J", "MAX_PSI", "centred_robot",
@@ -47,7 +49,7 @@ def centred_robot():
     return paper_robot("centred", L=L_PAPER, r=R_CENTRED)
 
 
-@lru_cache(maxsize=None)
+@cache
 def _exact_poly():
     return sg.det_J_polynomial(sg.exact_robot(paper_robot("centred", L=L_PAPER, r=1.0)))
 

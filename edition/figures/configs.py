@@ -15,7 +15,9 @@ from wmr.analysis import lines as ln
 from wmr.analysis import singularities as sg
 from wmr.analysis.linalg import condition_number
 from wmr.analysis.mobility import rank_F
-from ..text import degrees, residual as residual_text
+
+from ..text import degrees
+from ..text import residual as residual_text
 from .common import ABS_DET_J, L_PAPER, drawing, exact_det_J, residual, snap
 
 __all__ = ["AxleMeet", "axles_meet", "SingularConfig", "singular_config", "beta_text", "config_lines"]
@@ -110,7 +112,7 @@ class SingularConfig:
     kappa_J: float = float("inf")
     singular: bool = True
     planes_meet: str = ""
-    D_P: tuple = None
+    D_P: tuple | None = None
     axles_meet: str = ""
     axle_crossings: tuple = ()
     coincident: tuple = ()
@@ -195,7 +197,8 @@ def beta_text(beta_deg, digits=6):
 
 
 def config_lines(cfg, kappa=True):
-    r"""Lines of text stating :math:`\det\mathbf J` (58) (exact and float), rank F, mobility and :math:`\kappa(\mathbf J)` (30).
+    r"""Lines of text stating :math:`\det\mathbf J` (58) (exact and float), rank F, mobility and
+    :math:`\kappa(\mathbf J)` (30).
 
     Parameters
     ----------

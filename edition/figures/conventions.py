@@ -15,6 +15,7 @@ import numpy as np
 
 from wmr.model.robots import paper_robot
 from wmr.model.wheels import DualWheel, OffsetWheel
+
 from .common import DEG, L_PAPER, R_CENTRED, drawing, snap
 
 __all__ = ["NUMBER", "TITLE", "PAPER_CAPTION", "ConventionsData", "data", "draw", "caption"]

@@ -22,7 +22,9 @@ from wmr.analysis.linalg import condition_number
 from wmr.analysis.mobility import rank_F, twist_constraints
 from wmr.analysis.steering import steering_angles
 from wmr.model.platform import wrap_angle
-from ..text import degrees, residual as residual_text
+
+from ..text import degrees
+from ..text import residual as residual_text
 from .common import ABS_DET_J, DEG, L_PAPER, centred_robot, drawing, residual, snap
 
 __all__ = ["NUMBER", "TITLE", "PAPER_CAPTION", "MOBILE_TWISTS", "MOBILE_SEED", "DetSlice", "DetMapData",
@@ -147,7 +149,7 @@ def _slice(bot, beta1, g):
         beta1=float(beta1), det_min=float(D.min()), det_max=float(D.max()), kappa_min=float(finite.min()),
         kappa_min_refined=refine_kappa_min(bot, beta1, B2.flat[k], B3.flat[k], g[1] - g[0]),
         singular_fraction=float(np.mean(~np.isfinite(kap))),
-        singular_motions=tuple((float(a), float(b), f) for (_, a, b), f in zip(mdeg, fams)),
+        singular_motions=tuple((float(a), float(b), f) for (_, a, b), f in zip(mdeg, fams, strict=True)),
         singular_motion_det_max=float(np.abs(sg.det_J(bot, mb)).max()),
         singular_motion_ranks=tuple(sorted(set(int(v) for v in rank_F(bot, mb)))),
         det=snap(D), log_kappa=snap(np.log10(np.clip(np.where(np.isfinite(kap), kap, 1e16), 1, 1e16))),
@@ -209,7 +211,8 @@ def _kappa_mobile_min(bot, n=MOBILE_TWISTS, seed=MOBILE_SEED):
 
 
 def data(beta1s=(60.0, 20.0), n=400):
-    r"""Evaluate :math:`\det\mathbf J` (58) and :math:`\kappa(\mathbf J)` (30) on slices ``beta1s`` (degrees), ``n`` x ``n`` each.
+    r"""Evaluate :math:`\det\mathbf J` (58) and :math:`\kappa(\mathbf J)` (30) on slices ``beta1s`` (degrees), ``n`` x
+    ``n`` each.
 
     Parameters
     ----------
@@ -322,17 +325,18 @@ def caption(data):
             rf"{LOG_KAPPA_MAX:g}) of the WMR with three centred wheels over $(\beta_2, \beta_3)$ for "
             rf"$\beta_1 = {b1[0]:g}^\circ$ (left) and ${b1[1]:g}^\circ$ (right), each on a {data.n}$\times${data.n} "
             r"grid evaluated in one batch. Black: the singular curves $\det\mathbf{J} = 0$. For $\beta_1 = "
-            rf"{b1[0]:g}^\circ$ plane 1 lies on the side $P_1P_3$, and the singular set is the straight lines "
-            rf"$\beta_3 \equiv {degrees(np.radians(data.a13))}^\circ$ (item (ii) and its half-turn variant) and "
-            rf"$\beta_2 \equiv {degrees(np.radians(data.a23))}^\circ$ (mod $180^\circ$; planes 1 and 2 through $P_3$, "
-            r"$\beta_3$ free); for a generic $\beta_1$ it is a curve. Dashed: configurations with concurrent axles, the "
-            r"only ones in which the robot can move (rank $\mathbf{F} = 5$). Markers: where the robot can move although "
+            rf"{b1[0]:g}^\circ$ plane 1 lies on the side $P_1P_3$, and the singular set is the straight lines $\beta_3 "
+            rf"\equiv {degrees(np.radians(data.a13))}^\circ$ (item (ii) and its half-turn variant) and $\beta_2 \equiv "
+            rf"{degrees(np.radians(data.a23))}^\circ$ (mod $180^\circ$; planes 1 and 2 through $P_3$, $\beta_3$ free); "
+            r"for a generic $\beta_1$ it is a curve. Dashed: configurations with concurrent axles, the "
+            r"only ones in which the robot can move (rank $\mathbf{F} = 5$). Markers: where the robot can move "
+            r"although "
             rf"$\mathbf{{J}}$ is singular (computed ${residual_text(ABS_DET_J, det_max)}$, rank "
             r"$\mathbf{F} = 5$): all planes parallel ((i), (i')) and rotations about a point of the circle through the "
             rf"$P_i$. On these slices the smallest $\kappa(\mathbf{{J}})$ is {kmin:.4f} (the grid minimum, "
             r"refined): although $\mathbf{J}_{L1}$ and $\mathbf{J}_2$ are isotropic, $\mathbf{J}$ is isotropic only at "
             r"special configurations, e.g. with every wheel turned by the same $45^\circ$ from its radial line $CP_i$ "
-            rf"(computed ${residual_text(KAPPA_ERROR, data.vortex_error)}$ at $\beta = ({vortex})^\circ$), where "
-            rf"rank $\mathbf{{F}} = {data.vortex_rank_F}$ and the robot cannot move. Where it can move (dashed), "
+            rf"(computed ${residual_text(KAPPA_ERROR, data.vortex_error)}$ at $\beta = ({vortex})^\circ$), where rank "
+            rf"$\mathbf{{F}} = {data.vortex_rank_F}$ and the robot cannot move. Where it can move (dashed), "
             rf"$\kappa(\mathbf{{J}}) \geq \sqrt2$: the smallest value at the steering angles of {data.mobile_twists} "
             rf"random twists and of a spin about $C$ is {data.kappa_mobile_min:.4f}.")

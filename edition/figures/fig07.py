@@ -15,7 +15,9 @@ import numpy as np
 
 from wmr.analysis.simulation import simulate
 from wmr.model.robots import paper_robot
-from ..text import degrees, number, residual as residual_text
+
+from ..text import degrees, number
+from ..text import residual as residual_text
 from .common import DEG, L_PAPER, MAX_PSI, R_OFFSET, drawing, fit_circle, residual, small, snap
 
 __all__ = ["NUMBER", "TITLE", "PAPER_CAPTION", "Fig07Data", "data", "draw", "caption"]

@@ -13,8 +13,10 @@ import numpy as np
 
 from wmr.analysis.mobility import rank_F
 from wmr.analysis.simulation import simulate
-from ..text import bound, residual as residual_text
-from .common import MAX_PSI, DEG, L_PAPER, centred_robot, drawing, residual, snap
+
+from ..text import bound
+from ..text import residual as residual_text
+from .common import DEG, L_PAPER, MAX_PSI, centred_robot, drawing, residual, snap
 
 __all__ = ["NUMBER", "TITLE", "PAPER_CAPTION", "TranslationRun", "Fig08Data", "data", "draw", "caption"]
 
@@ -167,7 +169,7 @@ def draw(data, fig=None):
     with style():
         fig, axes = new_figure(2, 1, width=7.0, height=6.0, fig=fig)
         views = []
-        for ax, (letter, run) in zip(axes, runs.items()):
+        for ax, (letter, run) in zip(axes, runs.items(), strict=True):
             n = len(run.pose)
             idx = [0, n // 3, 2 * n // 3, n - 1]
             ext = []
@@ -176,7 +178,7 @@ def draw(data, fig=None):
                                   labels=q == 0, frame=q in (0, len(idx) - 1),
                                   label_offsets={2: (-16, 4)} if letter == "b" else None)
                 ext.append(rd.robot_extent(g, R))
-            for xy, col in zip([run.pose[:, 1:]] + [run.pivots[:, k] for k in range(bot.w)], cols):
+            for xy, col in zip([run.pose[:, 1:]] + [run.pivots[:, k] for k in range(bot.w)], cols, strict=False):
                 an.draw_path(ax, xy, color=col, lw=1.5, zorder=7)
             views.append(np.vstack(ext))
             title = (rf"rectilinear: constant $\beta_i = {data.beta_rect:g}^\circ$" if letter == "a" else
@@ -208,10 +210,10 @@ def caption(data):
     a, b = data.rectilinear, data.curvilinear
     ranks = sorted(set(a.rank_F) | set(b.rank_F))
     return (r"Rectilinear (a) and curvilinear (b) translation of the WMR with three centred wheels, simulated: all "
-            rf"wheels parallel and driven at $r\dot\theta_i = {data.speed:g}\,L/\mathrm{{s}}$ for $T = {data.t_end:g}$ s; "
-            r"in (b) they are steered together. Paths of $C$ and the $P_i$; platform at the start and end (solid) and "
-            r"two intermediate poses (dashed). The platform does not turn "
-            rf"(${residual_text(MAX_PSI, max(a.psi_max, b.psi_max))}$), the paths are congruent (translates "
-            rf"of one another: largest deviation ${bound(max(a.congruence_error, b.congruence_error), latex=True)}$), "
-            rf"rank $\mathbf{{F}} = {', '.join(map(str, ranks))}$ (mobility 1) throughout, and no slip is needed "
-            rf"(residual of (21): ${bound(max(a.slip_max, b.slip_max), latex=True)}$).")
+            rf"wheels parallel and driven at $r\dot\theta_i = {data.speed:g}\,L/\mathrm{{s}}$ for $T = {data.t_end:g}$ "
+            r"s; in (b) they are steered together. Paths of $C$ and the $P_i$; platform at the start and end (solid) "
+            r"and two intermediate poses (dashed). The platform does not turn "
+            rf"(${residual_text(MAX_PSI, max(a.psi_max, b.psi_max))}$), the paths are congruent (translates of one "
+            rf"another: largest deviation ${bound(max(a.congruence_error, b.congruence_error), latex=True)}$), rank "
+            rf"$\mathbf{{F}} = {', '.join(map(str, ranks))}$ (mobility 1) throughout, and no slip is needed (residual "
+            rf"of (21): ${bound(max(a.slip_max, b.slip_max), latex=True)}$).")

@@ -14,6 +14,7 @@ from wmr.analysis.kinematics import inverse
 from wmr.analysis.mobility import rank_F
 from wmr.analysis.simulation import simulate
 from wmr.analysis.steering import steering_angles
+
 from ..text import bound
 from .common import DEG, L_PAPER, centred_robot, drawing, fit_circle, residual, snap
 from .configs import AxleMeet, axles_meet
@@ -166,7 +167,7 @@ def draw(data, fig=None):
     with style():
         fig, axes = new_figure(1, 2, width=7.2, height=3.9, fig=fig)
         views = []
-        for ax, name, letter in zip(axes, ("C", "U"), "ab"):
+        for ax, name, letter in zip(axes, ("C", "U"), "ab", strict=True):
             run = getattr(data, name)
             U = snap(run.u_c)
             g0 = rd.draw_robot(ax, bot, run.beta[0], run.pose[0], zorder=4)
@@ -212,9 +213,9 @@ def caption(data):
     a, b = data.C, data.U
     return (r"Rotation of the WMR with three centred wheels (simulated, $\dot\psi = 1$, turned "
             rf"{a.turn_deg:.4g}$^\circ$; dashed: final pose): (a) IC at the operation point $C$, which stays fixed; "
-            rf"(b) IC at $U$, $\mathbf{{u}}_c = ({data.uc_U[0]:g}, {data.uc_U[1]:g})L$, about which $C$ moves on a circle "
-            rf"of radius $\|\mathbf{{u}}_c\| = {b.radius_expected:.4f}$ (the fitted radius differs by "
-            rf"${bound(abs(b.radius - b.radius_expected), latex=True)}$). Steering angles from "
-            r"`wmr.steering_angles`: the axles (dashed) all pass through the IC (distance of their computed "
-            rf"intersection from the IC ${bound(max(a.axles.error, b.axles.error), latex=True)}$); rank $\mathbf{{F}} = {a.rank_F}$ "
-            r"(mobility 1) in both cases.")
+            rf"(b) IC at $U$, $\mathbf{{u}}_c = ({data.uc_U[0]:g}, {data.uc_U[1]:g})L$, about which $C$ moves on a "
+            rf"circle of radius $\|\mathbf{{u}}_c\| = {b.radius_expected:.4f}$ (the fitted radius differs by "
+            rf"${bound(abs(b.radius - b.radius_expected), latex=True)}$). Steering angles from `wmr.steering_angles`: "
+            r"the axles (dashed) all pass through the IC (distance of their computed intersection from the IC "
+            rf"${bound(max(a.axles.error, b.axles.error), latex=True)}$); rank $\mathbf{{F}} = {a.rank_F}$ (mobility "
+            r"1) in both cases.")

@@ -10,6 +10,7 @@ import numpy as np
 
 from wmr.analysis.mobility import admissible_twists
 from wmr.model.platform import E
+
 from ..text import residual as residual_text
 from .common import ABS_DET_J, DEG, L_PAPER, centred_robot, drawing, snap
 from .configs import SingularConfig, beta_text, config_lines, singular_config
@@ -92,6 +93,7 @@ def draw(data, fig=None):
     """
     from wmr.plot import annotate as an
     from wmr.plot.style import PALETTE, fit_view, new_figure, style
+
     from .sketch import LINES_LEGEND, draw_singular
     cfg = data.config
     with style():

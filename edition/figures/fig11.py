@@ -87,11 +87,12 @@ def draw(data, fig=None):
     """
     from wmr.plot import annotate as an
     from wmr.plot.style import ROLE, common_view, new_figure, panel_title, style
+
     from .sketch import LINES_LEGEND, draw_singular
     with style():
         fig, axes = new_figure(1, 3, width=7.4, height=3.5, fig=fig)
         views = []
-        for ax, (letter, cfg) in zip(axes, data.panels.items()):
+        for ax, (letter, cfg) in zip(axes, data.panels.items(), strict=True):
             i, j, k = _pair(cfg)
             lab = rf"$D_{{{min(i, k)}{max(i, k)}}} = D_{{{min(j, k)}{max(j, k)}}}$"
             g, ext = draw_singular(ax, data.robot, cfg, dp_label=lab, frame=False, dp_offset=(0, -9))

@@ -10,7 +10,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from wmr.analysis import lines as ln
-from ..text import bound, residual as residual_text
+
+from ..text import bound
+from ..text import residual as residual_text
 from .common import ABS_DET_J, centred_robot, drawing, residual
 from .configs import beta_text, config_lines, singular_config
 
@@ -88,11 +90,12 @@ def draw(data, fig=None):
     """
     from wmr.plot import annotate as an
     from wmr.plot.style import ROLE, common_view, new_figure, panel_title, style
+
     from .sketch import LINES_LEGEND, draw_singular
     with style():
         fig, axes = new_figure(1, 2, width=7.2, height=4.1, fig=fig)
         views = []
-        for ax, (letter, cfg) in zip(axes, data.panels.items()):
+        for ax, (letter, cfg) in zip(axes, data.panels.items(), strict=True):
             at_C = letter == "a"
             g, ext = draw_singular(ax, data.robot, cfg, dp_label="$D_P = C$" if at_C else "$D_P$",
                                    dp_offset=(8, 6) if at_C else (8, 2), frame=not at_C)

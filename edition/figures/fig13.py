@@ -13,6 +13,7 @@ import numpy as np
 from wmr.analysis.kinematics import inverse
 from wmr.analysis.mobility import rank_F
 from wmr.analysis.steering import centre_to_wheels, instantaneous_centre, steering_angles
+
 from ..text import bound, degrees
 from .common import L_PAPER, centred_robot, drawing, residual, snap
 from .configs import AxleMeet, axles_meet

@@ -6,6 +6,7 @@ import numpy as np
 from wmr.plot import annotate as an
 from wmr.plot import robot as rd
 from wmr.plot.style import ROLE
+
 from .common import snap
 
 __all__ = ["draw_singular", "LINES_LEGEND"]

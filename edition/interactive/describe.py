@@ -7,6 +7,7 @@ from __future__ import annotations
 import numpy as np
 
 from wmr.analysis.lines import AT_INFINITY, FINITE
+
 from ..text import number
 
 __all__ = ["describe_steering", "describe_mounts"]
@@ -27,9 +28,10 @@ def describe_steering(state):
     axles = kind.get(state.axles.kind, "do not meet in one point")
     planes = kind.get(state.planes.kind, "do not meet in one point")
     k = "\\infty" if not np.isfinite(state.kappa_J) else number(state.kappa_J, 4)
-    lines = [f"| $\\det\\mathbf J$ | $\\operatorname{{rank}}\\mathbf F$ | mobility | $\\kappa(\\mathbf J)$ |",
+    lines = ["| $\\det\\mathbf J$ | $\\operatorname{rank}\\mathbf F$ | mobility | $\\kappa(\\mathbf J)$ |",
              "|---|---|---|---|",
-             f"| ${number(state.det_J, 3) if abs(state.det_J) > 1e-12 else '0'}$ | {state.rank_F} | {state.mobility} | ${k}$ |",
+             f"| ${number(state.det_J, 3) if abs(state.det_J) > 1e-12 else '0'}$ | {state.rank_F} | {state.mobility} | "
+             f"${k}$ |",
              "", f"The axle lines {axles}; the wheel-plane lines {planes}."]
     if state.mobility:
         m = state.motion

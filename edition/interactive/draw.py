@@ -9,6 +9,7 @@ import io
 import numpy as np
 
 from wmr.analysis.lines import AT_INFINITY, FINITE
+
 from ..text import number
 
 __all__ = ["draw_steering", "draw_mounts", "png"]
@@ -30,16 +31,16 @@ def draw_steering(state, fig=None):
     -------
     matplotlib.figure.Figure
     """
+    from matplotlib.lines import Line2D
+
     from wmr.plot.annotate import draw_line, draw_point, label
     from wmr.plot.robot import draw_robot, platform_radius, robot_geometry
-    from matplotlib.lines import Line2D
     from wmr.plot.style import DASHES, ROLE, fit_view, new_figure, style
     with style():
         fig, (ax,) = new_figure(1, 1, width=5.6, height=5.0, fig=fig)
         g = robot_geometry(state.robot, state.beta)
         R = platform_radius(state.robot)
         view = 2.6 * R
-        include = [() for _ in range(3)]
         U = state.axles.point if state.axles.kind == FINITE and np.linalg.norm(state.axles.point) < view else None
         D = state.planes.point if state.planes.kind == FINITE and np.linalg.norm(state.planes.point) < view else None
         for k in range(3):
@@ -83,6 +84,7 @@ def draw_mounts(state, fig=None):
     """
     from matplotlib.lines import Line2D
     from matplotlib.patches import Circle, Polygon
+
     from wmr.plot.annotate import draw_point, label
     from wmr.plot.style import PALETTE, fit_view, new_figure, style
     with style():

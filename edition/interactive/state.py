@@ -11,8 +11,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from wmr.analysis.isotropy import characteristic_length
-from wmr.analysis.lines import axles_concurrency, concurrency_point
 from wmr.analysis.linalg import condition_number
+from wmr.analysis.lines import axles_concurrency, concurrency_point
 from wmr.analysis.mobility import admissible_twists, rank_F
 from wmr.analysis.steering import steering_angles
 from wmr.model import validation as V

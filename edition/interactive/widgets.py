@@ -4,9 +4,13 @@ Part of the interactive chapter: :mod:`edition.interactive`.
 """
 from __future__ import annotations
 
+from collections.abc import Callable
+from typing import Any
+
 import numpy as np
 
 from wmr.model.robots import paper_robot
+
 from .describe import describe_mounts, describe_steering
 from .draw import draw_mounts, draw_steering, png
 from .state import mount_state, steering_state
@@ -17,7 +21,8 @@ __all__ = ["SteeringExplorer", "MountExplorer"]
 class _Explorer:
     """What both explorers share: the state drawn and described, shown below the controls and redrawn in place."""
 
-    _draw = _describe = None          # state -> Figure, state -> Markdown text (set by each explorer)
+    _draw: Callable[[Any], Any]       # state -> Figure (set by each explorer)
+    _describe: Callable[[Any], str]   # state -> Markdown text (set by each explorer)
     _width = 500                      # width of the picture (pixels)
 
     def _render(self):
@@ -73,7 +78,7 @@ class SteeringExplorer(_Explorer):
                                     continuous_update=False) for k, b in enumerate(beta_deg, 1)]
         names = ("ψ̇ (rad/s)", "ẋ (m/s)", "ẏ (m/s)")
         self.twist = [W.FloatSlider(value=v, min=-1, max=1, step=0.05, description=n, layout=lay,
-                                    continuous_update=False) for n, v in zip(names, twist)]
+                                    continuous_update=False) for n, v in zip(names, twist, strict=True)]
         for w in self.betas + self.twist + [self.mode]:
             w.observe(self._changed, names="value")
         self.controls = W.VBox([self.mode, W.HBox([W.VBox(self.betas), W.VBox(self.twist)])])
@@ -96,7 +101,7 @@ class SteeringExplorer(_Explorer):
     def _sync(self):
         if self.mode.value == "commanded twist":           # show the angles the twist needs
             s = self.state()
-            for b, v in zip(self.betas, np.degrees(s.beta)):
+            for b, v in zip(self.betas, np.degrees(s.beta), strict=True):
                 b.unobserve(self._changed, names="value")
                 b.value = float(np.round(v))
                 b.observe(self._changed, names="value")

@@ -8,9 +8,10 @@ proven; ``typo`` or ``wrong`` (the class of error the check names) only when the
 refuted *and* a corrected form is proven, otherwise it fails loudly with the reason.  A changed
 transcription therefore re-grades its row, or stops the chapter.
 
-Each notebook writes its rows to ``<figures>/ledger/<notebook>.csv`` (:meth:`Ledger.write`);
-``python -m edition.ledger DIR`` merges the fragments into ``DIR/ledger.csv`` (equations in
-numeric order, then claims) and reports what is missing.  Columns (:data:`COLUMNS`):
+Each chapter writes its rows to ``$WMR_OUT/ledger.csv`` (:meth:`Ledger.write`); :func:`assemble`
+validates the chapters' rows and concatenates them into the published ledger (equations in numeric
+order, then claims); ``python -m edition.ledger CHAPTERS... DEST`` does the same from a shell.
+Columns (:data:`COLUMNS`):
 
 ``id``, ``kind``, ``section``, ``verdict``
     Equation number or claim slug; ``equation`` or ``claim``; the paper's section; the verdict.
@@ -26,18 +27,17 @@ numeric order, then claims) and reports what is missing.  Columns (:data:`COLUMN
     The notebook that derives the row, and the HTML id it puts before the derivation
     (``eq-59``, ``claim-drift``).
 
-No field may carry ASCII pseudo-math (``psi_dot``, ``!=``, ``<=>``, ``^T``, ``3*1``): math is
-written in ``$...$`` (:func:`ascii_math` finds offenders; :meth:`Ledger.add` rejects them).
+No field carries ASCII pseudo-math (``psi_dot``, ``!=``, ``<=>``, ``^T``, ``3*1``): math is
+written in ``$...$``.  That is a rule of the text, checked by the tests over the published ledger
+and the transcription, not at run time.
 
-The parts: :mod:`~edition.ledger.verdict` (findings and their grading),
-:mod:`~edition.ledger.markup` (the text rules of a row), :mod:`~edition.ledger.rows` (a
-notebook's rows and their fragment) and :mod:`~edition.ledger.store` (reading, checking and
-merging the fragments; ``python -m edition.ledger``).
+The parts: :mod:`~edition.ledger.verdict` (findings, their grading, the columns),
+:mod:`~edition.ledger.rows` (a chapter's rows and its file) and :mod:`~edition.ledger.store`
+(validating and concatenating the chapters' files; ``python -m edition.ledger``).
 """
-from .verdict import COLUMNS, KINDS, VERDICTS, SEVERITIES, EQUATIONS, Finding, grade
-from .markup import ascii_math, anchor
-from .rows import Row, Ledger
-from .store import read, problems, merge, main
+from .rows import Ledger, Row
+from .store import LedgerError, assemble, fragments, main, problems, read
+from .verdict import COLUMNS, EQUATIONS, KINDS, SEVERITIES, VERDICTS, Finding, anchor, grade
 
 __all__ = ["COLUMNS", "KINDS", "VERDICTS", "SEVERITIES", "EQUATIONS", "Finding", "Row", "Ledger", "grade",
-           "ascii_math", "anchor", "read", "problems", "merge", "main"]
+           "anchor", "LedgerError", "read", "fragments", "problems", "assemble", "main"]

@@ -1,4 +1,4 @@
-"""``python -m edition.ledger CHAPTERS DEST``: merge the chapters' ledger rows (:func:`edition.ledger.main`)."""
+"""``python -m edition.ledger CHAPTERS... DEST``: the chapters' rows in one ledger (:func:`edition.ledger.main`)."""
 from .store import main
 
 raise SystemExit(main())

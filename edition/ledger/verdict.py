@@ -1,4 +1,4 @@
-r"""What a check establishes (:class:`Finding`) and the verdict computed from it (:func:`grade`).
+r"""What a check establishes (:class:`Finding`), the verdict computed from it (:func:`grade`), a row's columns.
 
 Part of the ledger: :mod:`edition.ledger`.
 """
@@ -6,8 +6,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-
-__all__ = ["COLUMNS", "KINDS", "VERDICTS", "SEVERITIES", "EQUATIONS", "Finding", "grade"]
+__all__ = ["COLUMNS", "KINDS", "VERDICTS", "SEVERITIES", "EQUATIONS", "Finding", "grade", "anchor"]
 
 
 COLUMNS = ("id", "kind", "section", "verdict", "printed", "corrected", "why", "convention", "check",
@@ -18,6 +17,7 @@ VERDICTS = ("ok", "typo", "wrong")
 #: size) that the surrounding argument does not rest on, or a false statement.
 SEVERITIES = ("typo", "wrong")
 EQUATIONS = tuple(str(n) for n in range(2, 66))
+
 
 @dataclass(frozen=True)
 class Finding:
@@ -105,3 +105,23 @@ def grade(finding):
 
 def _label(id):
     return f"({id})" if str(id).isdigit() else f"claim {id!r}"
+
+
+def anchor(id):
+    """The HTML id a notebook puts before the derivation of row ``id``: ``eq-59`` or ``claim-drift``.
+
+    Parameters
+    ----------
+    id : str or int
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> anchor(59), anchor("drift")
+    ('eq-59', 'claim-drift')
+    """
+    id = str(id)
+    return f"eq-{id}" if id.isdigit() else f"claim-{id}"

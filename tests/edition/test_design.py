@@ -1,14 +1,14 @@
-"""The design study: worst-case kappa(J) of a layout, the search over three-offset-wheel designs, kappa along motions."""
+"""The design study: worst-case kappa(J) of a layout, the search over offset-wheel designs, kappa along motions."""
 from __future__ import annotations
 
 import numpy as np
 import pytest
 
 import wmr
+from edition import design_study as study
 from wmr.analysis import design as D
 from wmr.analysis import motion_kappa as MK
 from wmr.analysis.sweep import Grid
-from edition import design_study as study
 
 
 @pytest.fixture(scope="module")
@@ -172,5 +172,6 @@ def test_exercise_checks_can_say_no():
 
 def test_describe_design():
     assert "not concyclic" in study.describe_design(wmr.Robot([wmr.CentredWheel(p, r=0.05) for p in
-                                                               [(0.35, 0.2), (-0.3, 0.25), (-0.3, -0.25), (0.3, -0.2)]]))
+                                                               [(0.35, 0.2), (-0.3, 0.25), (-0.3, -0.25),
+                                                                (0.3, -0.2)]]))
     assert "worst-case" in study.describe_design(wmr.paper_robot("offset", L=0.3, r=0.05))

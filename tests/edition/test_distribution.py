@@ -9,11 +9,12 @@ import sys
 import tarfile
 
 import pytest
-from conftest import ROOT
 
 import wmr
 from tools import docs, mathjax
 from tools import release_check as rc
+
+from conftest import ROOT
 
 sys.path.insert(0, str(ROOT / "docs" / "_ext"))       # the Sphinx extensions, imported by name below
 
@@ -41,11 +42,13 @@ def test_version_and_name_read_without_importing():
 
 def test_sdist_check_sees_what_is_missing_or_extra():
     tree = {*rc.SDIST_FILES, *(f"tests/{p.name}" for p in (ROOT / "tests").glob("*.py")),
-            *(f"examples/{p.name}" for p in (ROOT / "examples").iterdir())}
+            *(p.relative_to(ROOT).as_posix() for p in (ROOT / "examples").rglob("*") if p.is_file())}
     assert rc.check_sdist(sorted(tree)) == []
-    missing = rc.check_sdist(sorted(tree - {"tests/conftest.py", "examples/swerve4.toml", "LICENSE"}))
+    missing = rc.check_sdist(sorted(tree - {"tests/conftest.py", "examples/swerve4.toml", "examples/urdf/swerve.urdf",
+                                            "LICENSE"}))
     assert missing == ["missing from the sdist: LICENSE", "missing from the sdist: tests/conftest.py",
-                       "missing from the sdist: examples/swerve4.toml"]
+                       "missing from the sdist: examples/swerve4.toml",
+                       "missing from the sdist: examples/urdf/swerve.urdf"]
     extra = rc.check_sdist(sorted(tree | {"tests/edition/test_x.py", "notebooks/01.ipynb", "tests/__pycache__/a.pyc"}))
     assert any("tests/edition/" in p for p in extra) and any("notebooks/" in p for p in extra)
     assert any("compiled files" in p for p in extra)
@@ -158,7 +161,7 @@ def test_the_pinned_release_is_extracted_and_kept_equal(tmp_path, monkeypatch):
 
 # ------------------------------------------------------------------------------------------ the docs
 def test_every_guide_page_names_a_readme_section_that_exists():
-    import wmr_markdown
+    wmr_markdown = importlib.import_module("wmr_markdown")         # docs/_ext (on sys.path above)
     pages = sorted((ROOT / "docs").rglob("*.rst"))
     used = 0
     for page in pages:
@@ -178,7 +181,8 @@ def _guide(tmp_path, readme):
     src = tmp_path / "src"
     src.mkdir()
     (src / "conf.py").write_text(f"import sys; sys.path.insert(0, {str(ROOT / 'docs' / '_ext')!r})\n"
-                                 f"extensions = ['wmr_markdown']\nwmr_repository = {str(tmp_path)!r}\n", encoding="utf-8")
+                                 f"extensions = ['wmr_markdown']\nwmr_repository = {str(tmp_path)!r}\n",
+                                 encoding="utf-8")
     (src / "index.rst").write_text("Guide\n=====\n\n.. markdown:: README.md\n   :section: Use\n", encoding="utf-8")
     proc = subprocess.run([sys.executable, "-m", "sphinx", "-W", "-q", "-b", "html", str(src), str(tmp_path / "out")],
                           capture_output=True, text=True, check=False)

@@ -5,10 +5,11 @@ import re
 
 import numpy as np
 import pytest
-from conftest import axle, rolling_dir
 
 import wmr
 from edition import families as fam
+
+from conftest import axle, rolling_dir
 
 DEG = np.pi / 180
 P = wmr.paper_robot("centred").mount_points                      # L = 1: the circumcircle has radius 1

@@ -8,12 +8,13 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from conftest import ROOT, axle, rolling_dir
 
 import wmr
-from wmr.model.tolerance import TOL
 from edition import figures as F
 from edition.figures import common
+from wmr.model.tolerance import TOL
+
+from conftest import ROOT, axle, rolling_dir
 
 DEG = np.pi / 180
 P = wmr.paper_robot("centred", L=1.0, r=0.25).mount_points      # the paper's d_i, L = 1

@@ -1,11 +1,15 @@
-"""edition.ledger: verdicts computed from findings, fragments, merging, problems, Markdown fields."""
+"""edition.ledger: verdicts computed from findings, a chapter's rows, assembling the ledger, the text of its rows."""
 import csv
 import math
+from pathlib import Path
 
 import pytest
+from prose import ascii_math, row_problems
 
 from edition import ledger as LG
 from edition.ledger import Finding
+
+LEDGER = Path(__file__).resolve().parents[2] / "figures" / "ledger.csv"
 
 
 def ok(id, **kw):
@@ -53,7 +57,7 @@ def test_printed_holds_must_be_a_bool():
 
 
 def test_row_has_the_contract_columns_and_the_transcribed_text():
-    from edition import claim, printed
+    from edition.transcription import claim, printed
     led = LG.Ledger("01_x")
     row = led.add(refuted(15, severity="wrong"))
     assert tuple(row) == LG.COLUMNS
@@ -72,10 +76,6 @@ def test_ok_rows_drop_a_stale_correction():
 
 
 @pytest.mark.parametrize("finding, words", [
-    (Finding("2", True, "holds for psi_dot != 0", 0.0), ["check", "psi_dot", "!="]),
-    (Finding("2", True, "J^T J = 3*1", 0.0), ["check", "^T", "*"]),
-    (Finding("2", True, "ok", 0.0, convention="kappa <= 2"), ["convention", "Greek", "<="]),
-    (refuted(15, corrected=r"$x$"), ["corrected", "'$'"]),
     (Finding("2", True, "ok", math.nan), ["residual", "nan"]),
     (Finding("2", True, "ok", -1.0), ["residual", "-1.0"]),
     (Finding("99", True, "ok", 0.0), ["(99)", "not transcribed"]),
@@ -87,10 +87,25 @@ def test_bad_rows_are_rejected_with_the_reason(finding, words):
     assert all(w in str(exc.value) for w in words), str(exc.value)
 
 
+@pytest.mark.parametrize("finding, words", [
+    (Finding("2", True, "holds for psi_dot != 0", 0.0), ["check", "psi_dot", "!="]),
+    (Finding("2", True, "J^T J = 3*1", 0.0), ["check", "^T", "*"]),
+    (Finding("2", True, "ok", 0.0, convention="kappa <= 2"), ["convention", "Greek", "<="]),
+    (Finding("15", False, "refuted", 0.0, corrected=r"$x$", corrected_holds=True, severity="typo", why="slip"),
+     ["corrected", "'$'"]),
+])
+def test_the_text_rules_find_pseudo_math_in_a_row(finding, words):
+    """The rule the tests apply to the published ledger: each offence is named with its field."""
+    row = LG.Ledger("nb").add(finding)
+    found = "; ".join(row_problems(row))
+    assert all(w in found for w in words), found
+    assert row_problems(LG.Ledger("nb").add(ok(2))) == []
+
+
 def test_math_in_dollars_is_not_ascii_math():
-    assert LG.ascii_math(r"holds for $\dot\psi \neq 0$ and $\mathbf J^{\mathrm T}$ with `psi_dot` in code") == []
-    assert LG.ascii_math("the numeric check and a nucleus") == []            # words that start like Greek names
-    assert LG.ascii_math("beta_1 and kappa") and LG.ascii_math("a <=> b")
+    assert ascii_math(r"holds for $\dot\psi \neq 0$ and $\mathbf J^{\mathrm T}$ with `psi_dot` in code") == []
+    assert ascii_math("the numeric check and a nucleus") == []            # words that start like Greek names
+    assert ascii_math("beta_1 and kappa") and ascii_math("a <=> b")
 
 
 def test_duplicate_id_rejected():
@@ -120,21 +135,43 @@ def test_write_read_round_trip(tmp_path):
         led.write(None)
 
 
-def test_merge_orders_and_reports(tmp_path):
+def test_assemble_orders_the_rows_of_all_chapters(tmp_path):
+    a, b = LG.Ledger("a"), LG.Ledger("b")
+    for e in LG.EQUATIONS[::2]:
+        a.add(ok(e))
+    a.add(Finding("drift", True, "ok", 0.0))
+    for e in LG.EQUATIONS[1::2]:
+        b.add(ok(e))
+    b.add(Finding("omnidirectional", True, "ok", 0.0))
+    pa, pb = a.write(tmp_path / "out" / "a"), b.write(tmp_path / "out" / "b")
+    dest = tmp_path / "ledger.csv"
+    rows = LG.assemble(tmp_path / "out", dest)                     # a folder of chapter folders (the build's)
+    assert LG.read(dest) == rows
+    assert [r["id"] for r in rows] == list(LG.EQUATIONS) + ["drift", "omnidirectional"]
+    assert [r["notebook"] for r in rows[:3]] == ["a", "b", "a"]
+    assert LG.assemble([pb, tmp_path / "out" / "a"], dest) == rows   # files or chapter folders, any order
+    assert LG.fragments([pa, tmp_path / "out"]) == [pa, pb]          # each file once
+
+
+def test_assemble_reports_every_problem_and_writes_nothing(tmp_path):
     a, b = LG.Ledger("a"), LG.Ledger("b")
     for e in ("10", "2"):
         a.add(ok(e))
-    a.add(Finding("drift", True, "ok", 0.0))
     b.add(ok(3))
-    b.add(Finding("omnidirectional", True, "ok", 0.0))
     b.add(ok(10))
     a.write(tmp_path / "out" / "a")
     b.write(tmp_path / "out" / "b")
-    path, rows, probs = LG.merge(tmp_path / "out", tmp_path / "ledger.csv")
-    assert path == tmp_path / "ledger.csv" and LG.read(path) == rows
-    assert [r["id"] for r in rows] == ["2", "3", "10", "10", "drift", "omnidirectional"]
-    text = "\n".join(probs)
+    (tmp_path / "out" / "c").mkdir()
+    (tmp_path / "out" / "c" / "ledger.csv").write_text("id,verdict\n2,ok\n", encoding="utf-8")
+    dest = tmp_path / "ledger.csv"
+    with pytest.raises(LG.LedgerError) as exc:
+        LG.assemble(tmp_path / "out", dest)
+    text = str(exc.value)
     assert "missing equations: 4 5" in text and "duplicated rows: 10" in text
+    assert "c/ledger.csv: columns ['id', 'verdict']" in text
+    assert not dest.exists()
+    with pytest.raises(FileNotFoundError, match="no-such"):
+        LG.assemble(tmp_path / "no-such", dest)
 
 
 def test_problems_on_hand_edited_rows():
@@ -168,19 +205,24 @@ def test_main_needs_the_chapters_and_the_destination(tmp_path, capsys):
     dest = tmp_path / "ledger.csv"
     assert LG.main([str(tmp_path / "out"), str(dest)]) == 0 and dest.exists()
     before = dest.stat().st_mtime_ns
-    assert LG.main([str(tmp_path / "out"), str(dest)]) == 0 and dest.stat().st_mtime_ns == before  # same bytes: untouched
+    # the same bytes: the file is left untouched
+    assert LG.main([str(tmp_path / "out"), str(dest)]) == 0 and dest.stat().st_mtime_ns == before
+    assert LG.main([str(tmp_path / "out" / "01" / "ledger.csv"), str(dest)]) == 0      # a chapter's file
 
 
 def test_committed_ledger_is_complete_and_clean():
-    """figures/ledger.csv (regenerated by the notebooks) has every equation, the contract's columns, computed verdicts."""
-    from pathlib import Path
-    path = Path(__file__).resolve().parents[2] / "figures" / "ledger.csv"
-    with open(path, newline="", encoding="utf-8") as f:
+    """figures/ledger.csv (written by the build) has every equation, the contract's columns, computed verdicts."""
+    with open(LEDGER, newline="", encoding="utf-8") as f:
         rows = list(csv.DictReader(f))
     assert list(rows[0]) == list(LG.COLUMNS)
     assert LG.problems(rows) == []
     for r in rows:
-        fields = ("why", "convention", "check", "note") + (("printed", "corrected") if r["kind"] == "claim" else ())
-        assert not [LG.ascii_math(r[f]) for f in fields if LG.ascii_math(r[f])], r["id"]
         if r["kind"] == "claim":
             assert "$" in r["printed"] and (r["verdict"] == "ok" or "$" in r["corrected"]), r["id"]
+
+
+def test_committed_ledger_follows_the_text_rules():
+    """No ASCII pseudo-math in the prose of the published ledger; no ``$`` in its LaTeX bodies."""
+    with open(LEDGER, newline="", encoding="utf-8") as f:
+        bad = {r["id"]: row_problems(r) for r in csv.DictReader(f)}
+    assert not {k: v for k, v in bad.items() if v}

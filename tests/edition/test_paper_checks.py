@@ -8,23 +8,21 @@ import numpy as np
 import pytest
 import sympy as sp
 
-import edition as paper
-from edition import isotropy as PI
-from edition import platform_wheels as PW
 from edition import symbols as S
 from edition.checks import assembly, centred, dual, isotropy, steering, wheels
 from edition.ledger import Ledger, grade
+from edition.transcription import printed, table
 
 
 @pytest.fixture
 def transcribe(monkeypatch):
-    """Replace the SymPy form of a printed equation for one test."""
-    paper._load()
+    """Replace the SymPy form of a printed equation for one test (as an edit of its line in the table would)."""
+    equations = table().equations
 
     def set_(id, expr=None, **extra):
-        old = paper.PRINTED[str(id)]
+        old = equations[str(id)]
         new = dataclasses.replace(old, expr=old.expr if expr is None else expr, extra={**old.extra, **extra})
-        monkeypatch.setitem(paper.PRINTED, str(id), new)
+        monkeypatch.setitem(equations, str(id), new)
         return new
     return set_
 
@@ -36,23 +34,23 @@ def verdicts(derivation):
 # ----------------------------------------------------------------------------------------------- re-grading
 def test_a_corrected_transcription_regrades_typo_42_to_ok(transcribe):
     assert verdicts(isotropy.J2_product())["42"] == "typo"
-    transcribe(42, sp.Eq(PI.ptilde2, sp.diag(S.d**2, S.r**2), evaluate=False))
+    transcribe(42, sp.Eq(S.ptilde2, sp.diag(S.d**2, S.r**2), evaluate=False))
     assert verdicts(isotropy.J2_product())["42"] == "ok"
 
 
 def test_a_corrected_transcription_regrades_wrong_15_to_ok(transcribe):
-    transcribe(15, sp.Eq(PW.beta_dot_i, -S.r / (2 * S.b) * (PW.theta_dot_i1 - PW.theta_dot_i2) - S.psi_dot))
+    transcribe(15, sp.Eq(S.beta_dot_i, -S.r / (2 * S.b) * (S.theta_dot_i1 - S.theta_dot_i2) - S.psi_dot))
     assert verdicts(wheels.dual_steering(n=20))["15"] == "ok"
 
 
 def test_a_corrected_transcription_regrades_59_to_ok(transcribe):
-    p = paper.printed(59)
+    p = printed(59)
     transcribe(59, sp.Eq(p.expr.lhs, S.r**3 * p.expr.rhs))
     assert verdicts(centred.printed_determinant(n=20))["59"] == "ok"
 
 
 def test_a_corrected_transcription_regrades_60_to_ok(transcribe):
-    p = paper.printed(60)
+    p = printed(60)
     transcribe(60, sp.Eq(p.expr.lhs, sp.atan2(S.Y_dot, S.X_dot) + sp.pi / 2))
     with pytest.raises(AssertionError):          # the evidence that the printed angles slip no longer holds
         steering.translation(n=50)
@@ -65,12 +63,12 @@ def test_a_corrected_transcription_regrades_60_to_ok(transcribe):
 ])
 def test_a_broken_transcription_of_a_true_equation_fails_loudly(transcribe, id, expr, check):
     if id == 38:          # (38) is judged wrong: transcribing the corrected condition re-grades it
-        mean = sum((sp.Matrix(p).T * sp.Matrix(p))[0] for p in PI.D) / 3
+        mean = sum((sp.Matrix(p).T * sp.Matrix(p))[0] for p in S.D) / 3
         assert verdicts(isotropy.placement(n=10))["38"] == "wrong"
         transcribe(38, (sp.Eq(mean, S.L**2),))
         assert verdicts(isotropy.placement(n=10))["38"] == "ok"
         return
-    transcribe(id, expr(paper.printed(id)))
+    transcribe(id, expr(printed(id)))
     derivation = check()
     row = next(f for f in derivation.findings if f.id == str(id))
     assert row.printed_holds is False

@@ -11,9 +11,9 @@ import sympy as sp
 
 import edition.symbols
 import wmr
+from edition import printed
 from wmr.analysis.isotropy import condition_number
 from wmr.analysis.mobility import rank_F, twist_constraints
-from edition import printed
 from wmr.model.tolerance import TOL
 
 SEED = 20020101

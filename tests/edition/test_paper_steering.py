@@ -9,13 +9,12 @@ import pytest
 import sympy as sp
 
 import wmr
-from edition import symbols as S
-from wmr.analysis.mobility import admissible_twists, mobility, rank_F
 from edition import printed
-from edition import steering as P
+from edition import symbols as S
+from edition.verify import SEED, symbolic_equal
+from wmr.analysis.mobility import admissible_twists, mobility, rank_F
 from wmr.analysis.steering import AT_INFINITY, FINITE, STILL
 from wmr.model.tolerance import TOL
-from edition.verify import SEED, symbolic_equal
 
 N = 500
 
@@ -70,7 +69,7 @@ def test_centre_to_wheels_is_printed_64(rng):
 
 def test_point_velocity_is_printed_62(rng):
     tw, uc = rng.normal(size=(N, 3)), rng.normal(size=(N, 2))
-    v = evaluate(printed(62).expr, (S.psi_dot, S.x_dot, S.y_dot, *P.u_c), *tw.T, *uc.T)
+    v = evaluate(printed(62).expr, (S.psi_dot, S.x_dot, S.y_dot, *S.u_c), *tw.T, *uc.T)
     assert np.max(np.abs(v - wmr.point_velocity(tw, uc))) < TOL
 
 
@@ -109,7 +108,7 @@ def test_printed_65_jams_derived_does_not(rng):
     tw = rotations(rng)
     uc = wmr.instantaneous_centre(tw).point
     ui = wmr.centre_to_wheels(tw, bot.mount_points)
-    cos_p = evaluate(printed(65).expr.rhs, (*P.u_c, *P.u_i), uc[:, None, 0], uc[:, None, 1], ui[..., 0], ui[..., 1])
+    cos_p = evaluate(printed(65).expr.rhs, (*S.u_c, *S.u_i), uc[:, None, 0], uc[:, None, 1], ui[..., 0], ui[..., 1])
     b = np.arccos(np.clip(cos_p, -1, 1))
     for sign in (1, -1):
         assert np.all(rank_F(bot, sign * b) == 6)
@@ -120,8 +119,8 @@ def test_printed_65_jams_derived_does_not(rng):
 
 def test_printed_65_holds_when_centre_on_positive_x_axis():
     a = sp.Symbol("a", positive=True)
-    rhs = printed(65).expr.rhs.subs({P.u_c[0]: a, P.u_c[1]: 0})
-    assert symbolic_equal(rhs, sp.cos(sp.atan2(P.u_i[1], P.u_i[0])))
+    rhs = printed(65).expr.rhs.subs({S.u_c[0]: a, S.u_c[1]: 0})
+    assert symbolic_equal(rhs, sp.cos(sp.atan2(S.u_i[1], S.u_i[0])))
 
 
 def test_dual_equivalent_to_centred(rng):

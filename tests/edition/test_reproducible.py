@@ -14,11 +14,12 @@ import json
 
 import numpy as np
 import pytest
-from conftest import ROOT
 
 import wmr
 from edition import figures as F
 from edition.figures import output
+
+from conftest import ROOT
 
 FIGURES = ROOT / "figures"
 #: the NumPy functions whose last bit differs between CPUs (vectorised implementations and libm)
@@ -31,7 +32,8 @@ def nudge(x, direction, magnitude=False):
     if isinstance(x, wmr.Robot):
         return wmr.Robot([nudge(u, direction) for u in x.wheels], name=x.name)
     if dataclasses.is_dataclass(x) and not isinstance(x, type):
-        return dataclasses.replace(x, **{f.name: nudge(getattr(x, f.name), direction, f.metadata.get("json") == "residual")
+        return dataclasses.replace(x, **{f.name: nudge(getattr(x, f.name), direction,
+                                                       f.metadata.get("json") == "residual")
                                          for f in dataclasses.fields(x) if f.init})
     if isinstance(x, np.ndarray) and x.dtype.kind == "f":
         y = np.where(np.isfinite(x), np.nextafter(x, direction), x)

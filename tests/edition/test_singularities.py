@@ -11,12 +11,12 @@ import sympy as sp
 
 import edition.symbols
 import wmr
+from edition import families as catalogue
+from edition.verify import symbolic_equal
 from wmr.analysis import lines as ln
 from wmr.analysis import singularities as sg
-from edition import families as catalogue
 from wmr.model.platform import rotation
 from wmr.model.tolerance import TOL
-from edition.verify import symbolic_equal
 from wmr.model.wheels import CentredWheel
 
 DEG = np.pi / 180
@@ -190,15 +190,15 @@ class _MirroredWheel(CentredWheel):
     def block(self, beta, backend=None):
         from wmr.model.backend import choose
         bk = choose(beta, self.r, *self.position, backend=backend)
-        return rotation(-beta, bk) @ self._local_block(bk)
+        return rotation(-beta, bk) @ self.local_block(bk)
 
 
 @dataclasses.dataclass(frozen=True)
 class _FlippedWheel(CentredWheel):
     """A wrong model: h_dot = +r theta_dot j (sign of J2 flipped)."""
 
-    def _local_block(self, bk):
-        return bk.matrix([[0], [self.r]])
+    def local_block(self, backend=None):
+        return backend.matrix([[0], [self.r]])
 
 
 def _mutant(cls):

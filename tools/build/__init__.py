@@ -1,26 +1,33 @@
-"""The build of the wmr edition: notebooks executed (cached, in parallel), the report assembled
-and exported to one self-contained HTML file and one PDF.
+"""The build of the wmr edition: glue between the Makefile and the tools that do the work.
 
-Modules, one responsibility each:
+The Makefile is the task runner: it knows every file and what it is made from, runs two steps at
+once, and calls one command of this package per step (``python -m tools.build``). What each hands on:
 
-- :mod:`~tools.build.paths` every path; :mod:`~tools.build.files` atomic writes, hashes, temporary
-  directories; :mod:`~tools.build.stamps` what a step consumed and produced;
-  :mod:`~tools.build.gitinfo` every git call; :mod:`~tools.build.procs` child processes, signals,
-  the build lock; :mod:`~tools.build.log` messages and errors;
-- :mod:`~tools.build.execute` (+ :mod:`~tools.build.worker`) notebooks and the ledger merge;
-- :mod:`~tools.build.inputs` the data the report shows; :mod:`~tools.build.frontmatter`,
-  :mod:`~tools.build.findings`, :mod:`~tools.build.closing`, :mod:`~tools.build.chapters` its parts;
-  :mod:`~tools.build.assemble` the report notebook; :mod:`~tools.build.typeset` tables and figures;
-- :mod:`~tools.build.markup` Markdown through pandoc; :mod:`~tools.build.html`,
-  :mod:`~tools.build.pdf` the exports; :mod:`~tools.build.report` the report step;
-- :mod:`~tools.build.guard` the clean-work-tree check of ``make test``; :mod:`~tools.build.cli`.
+- :mod:`~tools.build.execute`: a notebook to **nbclient** (a fresh kernel), cached by content hash;
+  what the chapters wrote into ``figures/`` (the ledger rows to ``python -m edition.ledger``);
+- :mod:`~tools.build.assemble` (+ :mod:`~tools.build.chapters`): the findings chapter (Part I,
+  ``notebooks/findings.ipynb``) and the derivation chapters (Part II) into one report notebook;
+- :mod:`~tools.build.markup`: all Markdown of the report to **pandoc**, in one call per format;
+- :mod:`~tools.build.html`: the page to **nbconvert** (template ``wmr_html``), MathJax inlined;
+- :mod:`~tools.build.pdf`: the document to **nbconvert** (template ``wmr_latex``) and **xelatex**,
+  the PDF's ``/ID`` fixed and its date the commit's (byte-identical builds);
+- :mod:`~tools.build.typeset`: figures and part headings, the two cells Markdown cannot say.
 
-Only the standard library is imported up front (an up-to-date ``make report`` answers at once);
-nbformat, nbclient and nbconvert are imported when a step needs them.
+The tests run under **pytest-xdist**, the student edition is **nbconvert**'s TagRemovePreprocessor
+(``make student``). Only the standard library is imported up front; nbformat, nbclient and nbconvert
+are imported by the step that needs them.
 """
-from .execute import execute, publish
-from .log import BuildError
-from .paths import Tree
-from .report import report
+from __future__ import annotations
 
-__all__ = ["Tree", "BuildError", "execute", "publish", "report"]
+import time
+
+__all__ = ["BuildError", "say"]
+
+
+class BuildError(RuntimeError):
+    """A build step failed; the message says which and why (for a notebook: the failing cell and its traceback)."""
+
+
+def say(step: str, msg: str, t0: float | None = None) -> None:
+    """Print ``[step] msg``, and the seconds since ``t0`` when given: a build log reads as a timeline."""
+    print(f"[{step}] {msg}" + (f" ({time.perf_counter() - t0:.1f} s)" if t0 is not None else ""), flush=True)

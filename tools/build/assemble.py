@@ -1,55 +1,46 @@
-"""Assemble the report notebook ``build/report.ipynb`` from the executed chapters and the data.
+"""Assemble the report notebook ``build/report.ipynb`` from the executed chapters.
 
-Order: abstract and how to read (front matter); Part I, the findings (errata, claims that fail,
-missed singular configurations, verdicts by section, the figures, conclusions, references);
-Part II, the derivation chapters. The exporters (:mod:`tools.build.html`, :mod:`tools.build.pdf`)
-render the same notebook; cell ids are deterministic.
+``assemble REPORT COMMIT FIGURES FINDINGS CHAPTER...``: the title block (from the findings chapter;
+the commit and its date from ``COMMIT``, written by the Makefile), the findings chapter (abstract, how
+to read, Part I), the derivation chapters (Part II). Cell ids are deterministic and the date is the
+commit's: two builds of one commit are byte-identical.
 """
 from __future__ import annotations
 
-from . import closing, findings, frontmatter
-from . import typeset as ts
-from .chapters import chapter_cells
-from .inputs import Inputs
+import datetime as dt
+from pathlib import Path
 
-__all__ = ["report_notebook"]
+from .chapters import chapter_cells, findings_cells, title
+from .typeset import read_figures
+
+__all__ = ["commit_info", "report_notebook"]
 
 
-def report_notebook(inp: Inputs, commit: str, epoch: int):
+def commit_info(path: Path) -> tuple[str, int]:
+    """``("0a7f9ffb1647 + uncommitted changes", epoch)`` from the Makefile's ``build/commit``
+    (``HASH EPOCH [+]``); ``("unknown", 0)`` outside git."""
+    parts = (Path(path).read_text(encoding="utf-8").split() if Path(path).exists() else []) + ["unknown", "0"]
+    commit = parts[0] if parts[0] == "unknown" else parts[0][:12] + (" + uncommitted changes" if "+" in parts[2:] else "")
+    return commit, int(parts[1]) if parts[1].isdigit() else 0
+
+
+def report_notebook(commit_file: Path, figures_dir: Path, findings: Path, chapters: list[Path]):
     """The report as one notebook (``nbformat`` node)."""
     import nbformat
-
+    figures = read_figures(figures_dir)
+    commit, epoch = commit_info(commit_file)
+    part1 = nbformat.read(findings, as_version=4)
     nb = nbformat.v4.new_notebook()
-    nb.metadata["wmr"] = frontmatter.title_metadata(commit, epoch)
-    nb.metadata["title"] = frontmatter.TITLE
-    cells = nb.cells
-    cells.append(ts.markdown(frontmatter.abstract(inp)))
-    cells += frontmatter.how_to_read(inp)
-
-    cells.append(ts.part("Part I. Findings"))
-    cells += findings.errata(inp)
-    cells += findings.failed_claims(inp)
-    cells += findings.singularities(inp)
-    if inp.ledger is not None:
-        cells += findings.by_section(inp)
-    cells += findings.figures(inp)
-    cells += closing.conclusions(inp)
-    cells += closing.references()
-
-    cells.append(ts.part("Part II. Derivations",
-                         "The chapters below are the notebooks of this edition, executed for this report; "
-                         "the code is collapsed in the HTML version and left out of the PDF, exercises are "
-                         "left out of both. Each equation carries the paper's number."))
-    for path, src in zip(inp.chapters, inp.sources):
-        if not path.exists():
-            cells.append(ts.markdown(f"# {src.stem.replace('_', ' ')}\n\n*Not executed: `{src.name}`.*"))
-            continue
-        chap = nbformat.read(path, as_version=4)
-        if len(cells) and "language_info" in chap.metadata and "language_info" not in nb.metadata:
-            nb.metadata["language_info"] = chap.metadata["language_info"]
-        cells += chapter_cells(chap, inp.figures)
-
-    for j, c in enumerate(cells):
+    nb.metadata["wmr"] = {**title(part1), "commit": commit, "epoch": epoch,
+                          "date": dt.datetime.fromtimestamp(epoch, dt.UTC).strftime("%Y-%m-%d") if epoch else "unknown"}
+    nb.metadata["title"] = nb.metadata["wmr"]["title"]
+    nb.cells = findings_cells(part1, figures)
+    for path in chapters:
+        chapter = nbformat.read(path, as_version=4)
+        if "language_info" in chapter.metadata:
+            nb.metadata.setdefault("language_info", chapter.metadata["language_info"])
+        nb.cells += chapter_cells(chapter, figures)
+    for j, c in enumerate(nb.cells):
         c["id"] = f"r{j:04d}"
     nb.nbformat, nb.nbformat_minor = 4, 5
     return nb

@@ -1,86 +1,86 @@
-"""The derivation chapters (Part II): the executed notebooks as a reader should see them.
+"""The executed chapters as a reader sees them in the report (new cell objects).
 
-Cell tags (set by the notebooks, see ``CONTRACTS.md``) say what to drop: ``exercise``,
-``solution`` and ``ledger`` cells are not in the report; a ``figure`` cell becomes a one-line
-reference to the figure, which the report shows once, in its figures section; a ``widget`` cell
-keeps its saved static output. Code stays (collapsed in the HTML, absent from the PDF); of the
-outputs only Markdown, LaTeX and images reach the reader: no printed text, no HTML tables, no
-error output, no widget state.
+Cells tagged ``exercise``, ``solution`` or ``ledger`` are dropped. In a derivation chapter (Part II)
+a ``figure`` cell, or an output marked ``wmr_figure``, becomes a link to the figure, shown once in
+Part I; code stays (collapsed in the HTML, absent from the PDF); of the outputs only Markdown, LaTeX
+and images reach the reader (no printed text, HTML tables, errors or widget state). The findings
+chapter (Part I, ``notebooks/findings.ipynb``) is prose: its Markdown and its outputs, not its code;
+an output marked ``wmr_figure`` is the figure itself, a Markdown cell tagged ``part`` starts a part of
+the report, the cell tagged ``title`` gives the title block (:func:`title`).
 """
 from __future__ import annotations
 
 import re
-from pathlib import Path
+from typing import Any
 
-from .inputs import FigureMeta
+from . import typeset as ts
 
-__all__ = ["DROP_TAGS", "KEEP_MIMES", "chapter_cells"]
+__all__ = ["DROP_TAGS", "FIGURE_METADATA", "KEEP_MIMES", "chapter_cells", "findings_cells", "title"]
 
 DROP_TAGS = frozenset({"exercise", "solution", "ledger", "remove-cell", "remove_cell"})
-FIGURE_TAG = "figure"
 #: output types a reader sees, in order of preference (one per output)
 KEEP_MIMES = ("text/markdown", "text/latex", "image/svg+xml", "image/png")
-
-
-def _output(o) -> dict | None:
-    if o.get("output_type") not in ("display_data", "execute_result"):
-        return None                          # stream, error: program output, not for the reader
-    data = o.get("data", {})
-    for mime in KEEP_MIMES:
-        if mime in data:
-            return {"output_type": "display_data", "data": {mime: data[mime]},
-                    "metadata": {mime: o.get("metadata", {}).get(mime, {})} if mime in o.get("metadata", {}) else {}}
-    return None
-
-
+#: output metadata key with which a notebook marks the display of one of the figures
+FIGURE_METADATA = "wmr_figure"
 #: figures the report shows outside its figures section: key -> where (the conventions drawing)
 FRONT_MATTER_FIGURES = {"conventions": "How to read this edition"}
 
 
-def _figure_reference(source: str, figures: list[FigureMeta]) -> str:
-    """The line that replaces a figure cell: a link to where the report shows the figure."""
-    found = [f for f in figures if re.search(r"[\"']%s[\"']" % re.escape(f.key), source)]
-    if not found:
-        return "*The figure computed here is shown once, in the [figures](#figures) of Part I.*"
-    out = []
-    for f in found:
-        where = FRONT_MATTER_FIGURES.get(f.key, "the figures of Part I")
-        both = ", with the paper's caption beside the computed one" if f.paper_caption else ""
-        out.append(f"[{f.label or f.title}](#figure-{f.key}): shown once, in {where}{both}.")
-    return "*" + " ".join(out) + "*"
+_MATH_ONLY = re.compile(r"^\s*(\$\$|\$|\\\[)(.*?)(\$\$|\$|\\\])\s*$", re.DOTALL)
 
 
-#: output metadata key with which a notebook marks the display of one of the paper's figures
-FIGURE_METADATA = "wmr_figure"
+def _output(o) -> dict | None:
+    r"""One output as the reader sees it (Markdown or an image), or ``None``; a LaTeX output becomes
+    Markdown, a formula of its own (SymPy's ``$\displaystyle ...$``) displayed.
 
-
-def chapter_cells(nb, figures: list[FigureMeta]) -> list:
-    """The cells of one executed notebook, as the report shows them (new cell objects).
-
-    An output marked as one of the figures (output metadata ``wmr_figure``) is replaced by a link to
-    the figure as well (a figure cell that was not tagged).
+    Examples
+    --------
+    >>> _output({"output_type": "execute_result", "data": {"text/latex": r"$\displaystyle x^2$"}})["data"]
+    {'text/markdown': '$$\nx^2\n$$'}
     """
+    if o.get("output_type") not in ("display_data", "execute_result"):
+        return None                          # stream, error: program output, not for the reader
+    data, meta = o.get("data", {}), o.get("metadata", {})
+    mime = next((m for m in KEEP_MIMES if m in data), None)
+    if mime == "text/latex":
+        m = _MATH_ONLY.match(data[mime])
+        if m and {m.group(1), m.group(3)} in ({"$"}, {"$$"}, {"\\[", "\\]"}) and "$" not in m.group(2):
+            body = re.sub(r"^\\displaystyle\s*", "", m.group(2).strip())
+            return {"output_type": "display_data", "metadata": {}, "data": {"text/markdown": f"$$\n{body}\n$$"}}
+        mime, data = "text/markdown", {"text/markdown": data[mime]}
+    return None if mime is None else {"output_type": "display_data", "data": {mime: data[mime]},
+                                      "metadata": {mime: meta[mime]} if mime in meta else {}}
+
+
+def _figure_link(keys: list[str], figures: dict[str, dict[str, Any]]) -> str:
+    """The line that replaces a figure cell of a chapter: a link to where the report shows it."""
+    return "*" + " ".join(f"[{f['label'] or f['title']}](#figure-{f['key']}): shown once, in "
+                          + FRONT_MATTER_FIGURES.get(f["key"], "the figures of Part I")
+                          + (", with the paper's caption beside the computed one" if f["paper_caption"] else "") + "."
+                          for f in (figures[k] for k in keys)) + "*" if keys else \
+        "*The figure computed here is shown once, in the [figures](#figures) of Part I.*"
+
+
+def chapter_cells(nb, figures: dict[str, dict[str, Any]]) -> list:
+    """The cells of one executed derivation chapter, as the report shows them."""
     import nbformat
-    shown = {f.key: f for f in figures}
     out = []
     for c in nb.cells:
         tags = set(c.get("metadata", {}).get("tags", []))
         if tags & DROP_TAGS:
             continue
-        if FIGURE_TAG in tags:
-            out.append(nbformat.v4.new_markdown_cell(_figure_reference(c.source, figures)))
-            continue
-        if c.cell_type == "markdown":
+        if "figure" in tags:
+            keys = [k for k in figures if re.search(r"[\"']" + re.escape(k) + r"[\"']", c.source)]
+            out.append(nbformat.v4.new_markdown_cell(_figure_link(keys, figures)))
+        elif c.cell_type == "markdown":
             out.append(nbformat.v4.new_markdown_cell(c.source))
         elif c.cell_type == "code":
             n = nbformat.v4.new_code_cell(c.source)
             for raw in c.get("outputs", []):
-                o = _output(raw)
-                key = raw.get("metadata", {}).get(FIGURE_METADATA)
-                if o and key in shown:
-                    f = shown[key]
+                o, key = _output(raw), raw.get("metadata", {}).get(FIGURE_METADATA)
+                if o and key in figures:
                     o = {"output_type": "display_data", "metadata": {},
-                         "data": {"text/markdown": _figure_reference(f'"{f.key}"', [f])}}
+                         "data": {"text/markdown": _figure_link([key], figures)}}
                 if o:
                     n.outputs.append(nbformat.from_dict(o))
             if tags:
@@ -89,11 +89,36 @@ def chapter_cells(nb, figures: list[FigureMeta]) -> list:
     return out
 
 
-def chapter_title(nb, path: Path) -> str:
-    """The chapter's first heading (``# 4. WMR with centred wheels ...``), else its file name."""
+def findings_cells(nb, figures: dict[str, dict[str, Any]]) -> list:
+    """The cells of the executed findings chapter: its prose, its computed outputs, its figures, its parts."""
+    import nbformat
+    out = []
     for c in nb.cells:
-        if c.cell_type == "markdown":
-            m = re.match(r"\s*#\s+(.+)", c.source)
-            if m:
-                return m.group(1).strip()
-    return path.stem.replace("_", " ")
+        tags = set(c.get("metadata", {}).get("tags", []))
+        if tags & (DROP_TAGS | {"title"}):
+            continue
+        if c.cell_type == "markdown" and "part" in tags:
+            head, _, intro = c.source.strip().partition("\n")
+            out.append(ts.part(head.lstrip("# ").strip(), intro.strip()))
+        elif c.cell_type == "markdown":
+            out.append(nbformat.v4.new_markdown_cell(c.source))
+        for raw in c.get("outputs", []) if c.cell_type == "code" else []:
+            key = raw.get("metadata", {}).get(FIGURE_METADATA)
+            if key in figures:
+                out.append(ts.figure(figures[key]))
+            elif (o := _output(raw)) and "text/markdown" in o["data"]:
+                out.append(nbformat.v4.new_markdown_cell("".join(o["data"]["text/markdown"])))
+            elif o:
+                out.append(nbformat.v4.new_code_cell("", outputs=[nbformat.from_dict(o)]))
+    return out
+
+
+def title(nb) -> dict[str, str]:
+    """The title block from the findings chapter: the heading and the line under it of its cell tagged
+    ``title``, and the paper's full reference, the first entry under its heading ``# References``."""
+    head = next((c.source for c in nb.cells if "title" in c.get("metadata", {}).get("tags", [])), "")
+    lines = [l.strip() for l in head.strip().splitlines() if l.strip()]
+    refs = next((c.source for c in nb.cells if c.cell_type == "markdown" and c.source.startswith("# References")), "")
+    paper = re.search(r"^1\.\s+(.+?)(?:\n\d+\.|\n\n|\Z)", refs, re.MULTILINE | re.DOTALL)
+    return {"title": lines[0].lstrip("# ").strip() if lines else "", "subtitle": " ".join(lines[1:]).strip("*"),
+            "paper": " ".join(paper.group(1).split()) if paper else ""}

@@ -1,199 +1,152 @@
-"""Execute the notebooks (cached by content hash, two at a time), then publish what they wrote.
+"""Execute one notebook in a fresh kernel (nbclient), cached by content hash; publish what the chapters wrote.
 
-A notebook is re-executed when its bytes, any ``wmr/**/*.py``, the Python version or this
-executor change, or when its executed copy or a file it wrote no longer has the hash its stamp
-recorded (a truncated or deleted output heals itself). Each runs in a fresh kernel
-(:mod:`tools.build.worker`) with its own directory as working directory and ``WMR_OUT`` set to
-``build/out/<notebook>``: a chapter writes nothing tracked. :func:`publish` then copies the
-chapters' figures and tables into ``figures/`` (only files whose bytes changed) and
-``python -m edition.ledger build/out figures/ledger.csv`` concatenates their ledger rows.
+``execute NOTEBOOK OUT [--reads DIR]`` (Make runs one per chapter, two at a time): the notebook runs in
+its own folder with ``WMR_OUT=<build>/out/<chapter>`` (where a chapter writes figures and ledger rows,
+nothing tracked); its executed copy is ``OUT``. Its key hashes the notebook, every file of ``wmr/`` and
+``edition/``, the files under ``DIR`` (the findings chapter reads ``figures/``), Python and this file;
+the stamp ``OUT.stamp`` records the key and the hash of every output. While both hold nothing is
+written (Make sees nothing new); a changed input, a damaged output or a garbage stamp runs it again,
+and the report is removed first. :func:`publish` copies what the chapters wrote into ``figures/``,
+a file only when its bytes differ: the build is the only writer there, ``git status`` stays clean.
 """
 from __future__ import annotations
 
 import hashlib
+import json
+import os
+import re
+import shutil
 import sys
 import time
-from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
-from . import procs
-from .files import atomic_write, hash_files, remove_temp_dirs
-from .log import BuildError, say, strip_ansi
-from .paths import TOOL_ROOT, Tree
-from .stamps import Stamp
+from . import BuildError, say
 
-__all__ = ["execute", "stale_notebooks", "wmr_hash", "notebook_key", "publish", "merge_ledger", "invalidate_report",
-           "WORKERS"]
+__all__ = ["CELL_TIMEOUT", "ROOT", "execute", "kernel_env", "key", "outputs", "publish", "up_to_date"]
 
-WORKERS = 2
-_EXECUTOR = [Path(__file__).resolve().parent / "worker.py"]   # a change re-executes everything
+#: the project tree whose ``wmr/`` and ``edition/`` the notebooks import (``$WMR_ROOT``, set by the Makefile)
+ROOT = Path(os.environ.get("WMR_ROOT") or Path(__file__).resolve().parents[2])
+CELL_TIMEOUT = 600  # seconds per cell
 
 
-def wmr_hash(t: Tree) -> str:
-    return hash_files(t.wmr_files(), t.root).hexdigest()
+def _files(d: Path) -> list[Path]:
+    return sorted(p for p in d.rglob("*") if p.is_file() and "__pycache__" not in p.parts
+                  and not p.name.startswith(".")) if d.is_dir() else []
 
 
-def notebook_key(t: Tree, nb: Path, whash: str | None = None) -> str:
-    """What an executed notebook depends on: its bytes, the package, Python, the executor."""
+def _sha(p: Path) -> str | None:
+    return hashlib.sha256(p.read_bytes()).hexdigest() if p.is_file() else None
+
+
+def key(nb: Path, root: Path = ROOT, reads: tuple[Path, ...] = ()) -> str:
+    """What an executed notebook depends on: its bytes, ``root/wmr/``, ``root/edition/``, ``reads``, Python, this file."""
     h = hashlib.sha256(nb.read_bytes())
-    h.update((whash if whash is not None else wmr_hash(t)).encode())
-    h.update(sys.version.encode())
-    hash_files(_EXECUTOR, TOOL_ROOT, h)
+    for d in (root / "wmr", root / "edition", *reads):
+        for p in _files(d):
+            h.update(str(p.relative_to(d.parent)).encode() + b"\0" + p.read_bytes() + b"\0")
+    h.update(sys.version.encode() + Path(__file__).read_bytes())
     return h.hexdigest()
 
 
-def stale_notebooks(t: Tree, nbs: list[Path] | None = None) -> list[Path]:
-    """The notebooks whose executed copy is missing, damaged or older than their inputs."""
-    wh = wmr_hash(t)
-    nbs = t.notebook_files() if nbs is None else nbs
-    return [nb for nb in nbs if not Stamp(t.notebook_stamp(nb)).valid(notebook_key(t, nb, wh), _outputs(t, nb))]
+def outputs(out: Path) -> list[Path]:
+    """The executed copy and the files its chapter wrote (``<build>/out/<chapter>/``)."""
+    return [out, *_files(out.parent.parent / "out" / out.stem)]
 
 
-def _outputs(t: Tree, nb: Path) -> list[Path]:
-    """What executing ``nb`` produces: its executed copy and the files it wrote."""
-    return [t.executed_notebook(nb), *t.chapter_files(nb)]
+def _hashes(out: Path) -> dict[str, str | None]:
+    """``{path relative to the build directory: SHA-256}`` of the outputs (a copied build stays valid)."""
+    return {p.relative_to(out.parent.parent).as_posix(): _sha(p) for p in outputs(out)}
 
 
-def invalidate_report(t: Tree) -> None:
-    """Remove the report and its stamp: once its inputs change it must not look current."""
-    for p in (t.report_stamp, t.report_html, t.report_pdf, t.report_notebook):
-        p.unlink(missing_ok=True)
+def up_to_date(stamp: Path, k: str, out: Path) -> bool:
+    """True when ``stamp`` records key ``k`` and the current hash of each output of ``out``."""
+    try:
+        data = json.loads(stamp.read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return False
+    return isinstance(data, dict) and data.get("key") == k and data.get("outputs") == _hashes(out)
 
 
-def _execute_one(t: Tree, nb: Path, key: str) -> str | None:
-    """Execute ``nb`` in a fresh worker process; ``None`` on success, else the error text."""
-    out, stamp = t.executed_notebook(nb), Stamp(t.notebook_stamp(nb))
-    stamp.clear()                         # nothing stale may look valid while we run
-    out.unlink(missing_ok=True)
-    for f in t.chapter_files(nb):         # what it wrote last time
-        f.unlink()
-    t0 = time.perf_counter()
-    p = procs.run([sys.executable, "-m", "tools.build.worker", str(nb), str(out), str(nb.parent)],
-                  cwd=nb.parent, env=t.env(out=t.chapter_out(nb)), pdeathsig=False)
-    if p.returncode != 0 or not out.exists():
-        out.unlink(missing_ok=True)
-        say("execute", f"FAILED {nb.name}", t0)
-        err = "\n".join(l for l in p.stderr.splitlines() if not l.startswith("[IPKernelApp] WARNING"))
-        return strip_ansi(err.strip() or p.stdout.strip() or f"exit code {p.returncode}")
-    stamp.write(key, _outputs(t, nb), info={"seconds": round(time.perf_counter() - t0, 1)})
-    say("execute", nb.name, t0)
-    return None
+def kernel_env(root: Path, chapter_out: Path) -> dict[str, str]:
+    """The kernel's environment: the venv's Python first on ``PATH``, the project importable,
+    ``WMR_OUT``, no plot windows, one BLAS thread (two notebooks share two cores), a fixed hash seed."""
+    env = dict(os.environ, WMR_OUT=str(chapter_out), MPLBACKEND="Agg", PYTHONHASHSEED="0",
+               JUPYTER_PREFER_ENV_PATH="1", PYDEVD_DISABLE_FILE_VALIDATION="1")
+    env["PATH"] = str(Path(sys.executable).parent) + os.pathsep + env.get("PATH", "")
+    env["PYTHONPATH"] = os.pathsep.join(filter(None, [str(root), env.get("PYTHONPATH")]))
+    for var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
+        env.setdefault(var, "1")
+    return env
 
 
-def execute(t: Tree | None = None, workers: int = WORKERS, merge: bool = True,
-            only: list[str] | None = None) -> list[str]:
-    """Execute every stale notebook (``workers`` at a time), then merge the ledger.
-
-    Parameters
-    ----------
-    t : Tree, optional
-    workers : int
-    merge : bool
-        Run ``python -m edition.ledger`` afterwards (when its inputs changed).
-    only : list of str, optional
-        Restrict to these notebook file names.
-
-    Returns
-    -------
-    list of str
-        The names of the notebooks executed.
+def execute(nb: Path, out: Path, reads: tuple[Path, ...] = (), root: Path = ROOT) -> bool:
+    """Execute ``nb`` into ``out`` unless its stamp is current; True when it ran (``root``: the
+    project whose ``wmr/`` and ``edition/`` it imports).
 
     Raises
     ------
     BuildError
-        When a notebook fails (its executed copy and stamp are removed, and so is the report).
+        A cell raised: the message holds the notebook's name, the cell's source and the traceback;
+        the executed copy, the stamp and the report are left removed.
     """
-    t = t or Tree()
-    with procs.BuildLock(t.lock):
-        t0 = time.perf_counter()
-        remove_temp_dirs(t.tmp)
-        every = t.notebook_files()
-        nbs = [nb for nb in every if only is None or nb.name in only]
-        if not nbs:
-            say("execute", f"no notebooks in {t.notebooks}")
-        t.executed.mkdir(parents=True, exist_ok=True)
-        todo = stale_notebooks(t, nbs)
-        for nb in nbs:
-            if nb not in todo:
-                say("execute", f"{nb.name} up to date (cached)")
-        if todo:
-            invalidate_report(t)
-        wh = wmr_hash(t)
-        failures: dict[str, str] = {}
-        if todo:
-            # longest first (as long as the last run took; unknown first): the last to finish
-            # is then a short one, and the two workers end together
-            last = {nb: Stamp(t.notebook_stamp(nb)).info().get("seconds", float("inf")) for nb in todo}
-            todo = sorted(todo, key=lambda nb: -last[nb])
-            with ThreadPoolExecutor(max_workers=max(1, workers)) as pool:
-                futs = {nb.name: pool.submit(_execute_one, t, nb, notebook_key(t, nb, wh)) for nb in todo}
-                for name, f in futs.items():
-                    err = f.result()
-                    if err:
-                        failures[name] = err
-        if failures:
-            invalidate_report(t)
-            msg = "\n\n".join(f"=== notebook {t.rel(t.notebooks)}/{n} failed ===\n{e}" for n, e in failures.items())
-            raise BuildError(msg)
-        say("execute", f"{len(todo)} executed, {len(nbs) - len(todo)} cached", t0)
-        if merge and only is None:
-            publish(t, every)
-            merge_ledger(t, force=bool(todo))
-        return sorted(nb.name for nb in todo)
+    from edition.files import atomic_write
+    nb, out = Path(nb).resolve(), Path(out).resolve()
+    stamp, k = out.with_suffix(".stamp"), key(nb, Path(root), tuple(Path(r).resolve() for r in reads))
+    if up_to_date(stamp, k, out):
+        return False
+    build, chapter_out = out.parent.parent, out.parent.parent / "out" / out.stem
+    for p in (stamp, out, *(build / f"report.{ext}" for ext in ("ipynb", "html", "pdf"))):
+        p.unlink(missing_ok=True)
+    shutil.rmtree(chapter_out, ignore_errors=True)
+    t0 = time.perf_counter()
+    import nbformat
+    from nbclient import NotebookClient
+    from nbclient.exceptions import CellExecutionError
+    from traitlets.config import Config
+    book = nbformat.read(nb, as_version=4)
+    if any(c.cell_type == "code" and c.source.strip() for c in book.cells):    # else: no kernel to start
+        client = NotebookClient(book, timeout=CELL_TIMEOUT, kernel_name="python3", record_timing=False,
+                                resources={"metadata": {"path": str(nb.parent)}},   # CurveZMQ, as the kernel offers
+                                config=Config({"KernelManager": {"transport_encryption": "auto"}}))
+        try:
+            client.execute(env=kernel_env(Path(root), chapter_out))
+        except CellExecutionError as e:
+            text = re.sub(r"\x1b\[[0-9;]*[A-Za-z]", "", str(e))      # the traceback, without terminal colours
+            raise BuildError(f"=== notebook {nb.name} failed ===\n{text}") from None
+        except Exception as e:  # noqa: BLE001 - the kernel died or was stopped (a signal: nbclient shut it down)
+            raise BuildError(f"=== notebook {nb.name}: execution stopped ({type(e).__name__}) ===") from None
+    atomic_write(out, nbformat.writes(book))
+    atomic_write(stamp, json.dumps({"key": k, "outputs": _hashes(out)}, indent=1) + "\n")
+    say("execute", nb.name, t0)
+    return True
 
 
-def publish(t: Tree, nbs: list[Path]) -> list[Path]:
-    """Copy what the chapters wrote (all but their ledger rows) into ``figures/``: the build's only writer there.
-
-    A file is written only when its bytes differ from the tracked one, so an unchanged figure keeps
-    its timestamp and ``git status`` stays clean.  Two chapters may not write the same file.
+def publish(figures: Path, executed: list[Path]) -> list[Path]:
+    """Copy the files each chapter wrote, but its ledger rows, into ``figures/`` when their bytes differ.
 
     Returns
     -------
     list of Path
-        The files of ``figures/`` that changed.
+        The files of ``figures/`` that were written.
+
+    Raises
+    ------
+    BuildError
+        Two chapters write a file of one name.
     """
-    owner: dict[str, Path] = {}
+    from edition.files import atomic_write
+    owner: dict[str, str] = {}
     changed = []
-    for nb in nbs:
-        for f in t.chapter_files(nb):
+    for out in executed:
+        for f in outputs(Path(out))[1:]:
             if f.name == "ledger.csv":
                 continue
             if f.name in owner:
-                raise BuildError(f"{nb.name} and {owner[f.name].name} both write {f.name}")
-            owner[f.name] = nb
-            dest = t.figures / f.name
-            blob = f.read_bytes()
-            if not dest.exists() or dest.read_bytes() != blob:
-                atomic_write(dest, blob)
+                raise BuildError(f"{out.stem} and {owner[f.name]} both write {f.name}")
+            owner[f.name] = out.stem
+            dest = Path(figures) / f.name
+            if not dest.is_file() or dest.read_bytes() != f.read_bytes():
+                atomic_write(dest, f.read_bytes())
                 changed.append(dest)
-    stray = sorted(p.name for p in t.figure_files() if p.name not in owner and p != t.ledger)
-    if stray:
-        say("publish", f"files in {t.rel(t.figures)}/ that no chapter writes (left alone): {' '.join(stray)}")
-    say("publish", f"{len(owner)} files of the chapters in {t.rel(t.figures)}/, {len(changed)} changed")
+    say("publish", f"{len(owner)} files of the chapters in figures/, {len(changed)} changed")
     return changed
-
-
-def _module_present(t: Tree, mod: str) -> bool:
-    return (t.edition / (mod + ".py")).exists() or (t.edition / mod / "__init__.py").exists()
-
-
-def merge_ledger(t: Tree, force: bool = False) -> None:
-    """``python -m edition.ledger build/out figures/ledger.csv``: the chapters' rows in one ledger."""
-    t0 = time.perf_counter()
-    if not _module_present(t, "ledger"):
-        say("ledger", "skipped: edition/ledger.py not found")
-        return
-    frags = sorted(t.out.glob("*/ledger.csv"))
-    key = hash_files(frags, t.root, hashlib.sha256(wmr_hash(t).encode())).hexdigest()
-    stamp = Stamp(t.ledger_stamp)
-    if not force and stamp.valid(key, [t.ledger]):
-        say("ledger", f"{t.rel(t.ledger)} up to date (cached)")
-        return
-    stamp.clear()
-    p = procs.run([sys.executable, "-m", "edition.ledger", str(t.out), str(t.ledger)], cwd=t.root, env=t.env())
-    if p.returncode != 0:
-        raise BuildError(f"python -m edition.ledger failed (exit {p.returncode}):\n{p.stdout}\n{p.stderr}")
-    stamp.write(key, [t.ledger])
-    last = (p.stdout.strip().splitlines() or [""])[-1]
-    say("ledger", f"python -m edition.ledger: {last or t.rel(t.ledger)} ({len(frags)} fragments)", t0)

@@ -1,51 +1,42 @@
 """The HTML report: one self-contained file, nothing fetched from the network.
 
-Markdown (cells, outputs, table cells, captions) is converted by one pandoc call
-(:class:`~tools.build.markup.Batch`); nbconvert renders the page with the ``wmr_html`` template
-(code collapsed); then the contents sidebar is built from the headings, ids are
-made unique and every internal link is checked. MathJax is the pinned ``django-static-mathjax``
-bundle, inlined gzip-compressed (the page stays under 4 MB).
+Markdown goes to pandoc in one call (:class:`~tools.build.markup.Batch`), the page to nbconvert
+(template ``wmr_html``, code collapsed); then the contents sidebar is built from the headings, ids
+made unique and internal links checked. MathJax is the official release's bundle (:mod:`tools.mathjax`:
+the npm tarball checked against its sha512), inlined gzip-compressed (the page stays under 4 MB).
 """
 from __future__ import annotations
 
 import base64
 import functools
 import gzip
-import html
 import re
 from pathlib import Path
+from typing import Any
 
+from . import BuildError, say
 from . import typeset as ts
-from .files import atomic_write
-from .log import BuildError, say
-from .markup import Batch, math_body, text_of
-from .paths import TEMPLATES
+from .markup import TEMPLATES, Batch
 
-__all__ = ["export_html", "mathjax_gz", "navigation", "unique_ids", "broken_links", "keep_punctuation"]
+__all__ = ["broken_links", "export_html", "keep_punctuation", "mathjax_gz", "navigation", "unique_ids"]
 
 
 @functools.lru_cache(maxsize=1)
 def mathjax_gz() -> str:
-    """MathJax 3 ``tex-svg-full.js`` (every TeX extension, SVG glyphs: no font files), gzip
-    (fixed mtime, so the bytes never change) and base64."""
-    import importlib.util
-    spec = importlib.util.find_spec("mathjax")        # the PyPI package django-static-mathjax
-    if spec is None or not spec.submodule_search_locations:
-        raise BuildError("MathJax bundle not found: `make venv` installs django-static-mathjax from environment.lock")
-    js = Path(list(spec.submodule_search_locations)[0]) / "static" / "mathjax" / "es5" / "tex-svg-full.js"
-    if not js.exists():
-        raise BuildError(f"MathJax bundle not found at {js}")
-    return base64.b64encode(gzip.compress(js.read_bytes(), compresslevel=9, mtime=0)).decode()
-
-
-def _css() -> str:
-    return (TEMPLATES / "wmr_html" / "report.css").read_text(encoding="utf-8")
+    """MathJax 3 ``tex-svg-full.js`` (every TeX extension, SVG glyphs: no font files) of the official
+    release (:func:`tools.mathjax.bundle`), gzip (fixed mtime, so the bytes never change) and base64."""
+    from tools import mathjax
+    try:
+        js = mathjax.bundle("tex-svg-full.js").read_bytes()
+    except mathjax.MathJaxError as e:
+        raise BuildError(f"MathJax: {e}") from None
+    return base64.b64encode(gzip.compress(js, compresslevel=9, mtime=0)).decode()
 
 
 def _prepare(nb, batch: Batch):
     """A copy of the report notebook in which every cell is ready for the template: Markdown and
-    special cells become raw HTML (with placeholders that the pandoc batch fills), outputs become
-    HTML or images."""
+    special cells become raw HTML, Markdown outputs HTML (placeholders that the pandoc batch fills
+    in the finished page), images stay."""
     import nbformat
     out = nbformat.v4.new_notebook(metadata=nb.metadata)
     for c in nb.cells:
@@ -57,42 +48,21 @@ def _prepare(nb, batch: Batch):
         elif c.cell_type == "code":
             n = nbformat.v4.new_code_cell(c.source, metadata=c.metadata)
             for o in c.outputs:
-                data = o.get("data", {})
-                if "text/markdown" in data:
-                    h = batch.add(text_of(data["text/markdown"]))
-                elif "text/latex" in data:
-                    tex = text_of(data["text/latex"])
-                    body = math_body(tex)
-                    h = (f'<div class="math display">\\[{html.escape(body, quote=False)}\\]</div>' if body is not None
-                         else batch.add(tex))
-                else:
-                    n.outputs.append(o)
-                    continue
-                n.outputs.append(nbformat.v4.new_output("display_data", data={"text/html": h}))
+                md = o.get("data", {}).get("text/markdown")
+                n.outputs.append(o if md is None else nbformat.v4.new_output("display_data", data={"text/html": batch.add(md)}))
             out.cells.append(n)
     return out
 
 
-def _fill(nb, batch: Batch) -> None:
-    for c in nb.cells:
-        if c.cell_type == "raw":
-            c.source = batch.fill(c.source)
-        elif c.cell_type == "code":
-            for o in c.outputs:
-                if "text/html" in o.get("data", {}):
-                    o["data"]["text/html"] = batch.fill(o["data"]["text/html"])
-
-
-_HEADING = re.compile(r'<h([12])((?:\s+[a-z-]+="[^"]*")*)>(.*?)</h\1>', re.S)
+_HEADING = re.compile(r'<h([12])((?:\s+[a-z-]+="[^"]*")*)>(.*?)</h\1>', re.DOTALL)
 
 
 _MATH_PUNCT = re.compile(r'([(\[]?)(<span class="math inline">[^<]*</span>)([,.;:!?)\]]*)')
 
 
 def keep_punctuation(page: str) -> str:
-    r"""Bind the brackets and punctuation around inline math to it (``<span class="nobr">``): a
-    browser may break a line before or after the typeset formula, an inline box, which in a narrow
-    table cell leaves a ``(`` at the end of a line or a comma at the start of the next.
+    r"""Bind brackets and punctuation to the inline math they touch (``<span class="nobr">``): else a
+    narrow table cell may break between a formula and its comma, or a ``(`` and its formula.
 
     Examples
     --------
@@ -112,12 +82,11 @@ def unique_ids(page: str) -> tuple[str, list[str]]:
 
     def one(m):
         i = m.group(1)
-        if i in seen:
-            seen[i] += 1
-            dups.append(i)
-            return f'id="{i}-{seen[i]}"'
-        seen[i] = 1
-        return m.group(0)
+        seen[i] = seen.get(i, 0) + 1
+        if seen[i] == 1:
+            return m.group(0)
+        dups.append(i)
+        return f'id="{i}-{seen[i]}"'
     return re.sub(r'(?<![\w-])id="([^"]+)"', one, page), dups
 
 
@@ -130,14 +99,15 @@ def broken_links(page: str) -> list[str]:
 def navigation(page: str) -> str:
     """The contents sidebar: the parts, every top-level heading, and under each the second-level
     headings (the sections of a chapter)."""
-    top: list[dict] = []
-    part = h1 = None
+    top: list[dict[str, Any]] = []
+    part: dict[str, Any] | None = None
+    h1: dict[str, Any] | None = None
     for m in _HEADING.finditer(page):
         attrs, inner = m.group(2), m.group(3).strip()
         hid = re.search(r'\bid="([^"]+)"', attrs)
         if not hid:
             continue
-        node = {"link": f'<a href="#{hid.group(1)}">{inner}</a>', "kids": [], "part": 'class="part"' in attrs}
+        node: dict[str, Any] = {"link": f'<a href="#{hid.group(1)}">{inner}</a>', "kids": [], "part": 'class="part"' in attrs}
         if node["part"]:
             top.append(node)
             part, h1 = node, None
@@ -148,15 +118,8 @@ def navigation(page: str) -> str:
             h1["kids"].append(node)
 
     def ul(nodes):
-        if not nodes:
-            return ""
-        li = []
-        for n in nodes:
-            if n["part"]:
-                li.append(f'<li class="part"><span>{n["link"]}</span>{ul(n["kids"])}</li>')
-            else:
-                li.append(f'<li>{n["link"]}{ul(n["kids"])}</li>')
-        return "<ul>" + "".join(li) + "</ul>"
+        return "<ul>" + "".join(f'<li class="part"><span>{n["link"]}</span>{ul(n["kids"])}</li>' if n["part"]
+                                else f'<li>{n["link"]}{ul(n["kids"])}</li>' for n in nodes) + "</ul>" if nodes else ""
     return f'<nav class="toc" aria-label="Contents"><p class="toc-title">Contents</p>{ul(top)}</nav>'
 
 
@@ -180,15 +143,15 @@ def _exporter():
 
 def export_html(nb, out: Path) -> None:
     """Render the report notebook ``nb`` into ``out`` (atomically)."""
+    from edition.files import atomic_write
     batch = Batch("html")
     prepared = _prepare(nb, batch)
     ref = batch.add(nb.metadata["wmr"]["paper"], inline=True)   # the title block's reference
     batch.convert()
-    _fill(prepared, batch)
-    exp = _exporter()
-    body, _ = exp.from_notebook_node(prepared, resources={
-        "wmr_css": _css(), "wmr_mathjax_gz": mathjax_gz(), "wmr_paper_html": batch.fill(ref)})
-    body, dups = unique_ids(keep_punctuation(body))
+    body, _ = _exporter().from_notebook_node(prepared, resources={
+        "wmr_css": (TEMPLATES / "wmr_html" / "report.css").read_text(encoding="utf-8"), "wmr_mathjax_gz": mathjax_gz(),
+        "wmr_paper_html": ref})
+    body, dups = unique_ids(keep_punctuation(batch.fill(body)))
     if dups:
         say("html", f"WARNING: ids defined more than once, renamed: {', '.join(sorted(set(dups)))}")
     body = body.replace("<!--WMR-NAV-->", navigation(body), 1)

@@ -1,32 +1,32 @@
-"""Markdown to HTML and to LaTeX, through one reader: pandoc's GitHub-flavoured Markdown with
-``$...$`` math and typographic quotes and dashes (``gfm+tex_math_dollars+smart``: "drifts" is set
-with opening and closing quotes, ``--`` as an en dash), the closest to what Jupyter shows.
+"""Markdown to HTML and to LaTeX through one reader, pandoc's ``gfm+tex_math_dollars+smart``
+(GitHub-flavoured Markdown, ``$...$`` math, typographic quotes and dashes: the closest to Jupyter).
 
-Every Markdown fragment of the report (cells, Markdown outputs, table cells, captions) is
-converted in **one** pandoc call per format (:class:`Batch`), so the HTML and the PDF read the
-same text the same way, heading ids are unique across the whole report, and a build starts two
-pandoc processes, not hundreds. The text is taken as it is: ledger fields and notebooks write
-their math as ``$...$`` at the source, nothing here guesses which words are TeX.
+Every Markdown fragment of the report is converted in **one** pandoc call per format (:class:`Batch`):
+the HTML and the PDF read the text the same way, heading ids are unique across the report, and a
+build starts two pandoc processes, not hundreds. Math is written ``$...$`` at the source; nothing here
+guesses which words are TeX.
 """
 from __future__ import annotations
 
 import re
 import shutil
+import subprocess
+from collections.abc import Callable
+from pathlib import Path
 
-from . import procs
-from .log import BuildError
+from . import BuildError
 
-__all__ = ["READER", "Batch", "math_body", "text_of", "table_math_pipes", "tex_anchor_tokens", "tex_anchor_targets"]
+__all__ = ["READER", "TEMPLATES", "Batch", "table_math_pipes", "tex_anchor_targets", "tex_anchor_tokens"]
 
+#: nbconvert templates of the report (HTML page, LaTeX document)
+TEMPLATES = Path(__file__).resolve().parent / "templates"
 READER = "gfm+tex_math_dollars+smart"
 _SEP = "WMRFRAGMENT{:05d}"
 _SEP_RE = {"html": re.compile(r"\n*<p>WMRFRAGMENT(\d{5})</p>\n*"),
-           "latex": re.compile(r"\n*^WMRFRAGMENT(\d{5})$\n*", re.M)}
+           "latex": re.compile(r"\n*^WMRFRAGMENT(\d{5})$\n*", re.MULTILINE)}
 _ANCHOR = re.compile(r'<a\s+(?:id|name)="([^"]+)"\s*>\s*</a>')
 _TOKEN = re.compile(r"WMRANCHOR([0-9a-f]+)Z")
-
-
-_TABLE_ROW = re.compile(r"^\s*\|.*\|\s*$", re.M)
+_TABLE_ROW = re.compile(r"^\s*\|.*\|\s*$", re.MULTILINE)
 _INLINE_MATH = re.compile(r"(?<!\\)\$(?!\$)(.+?)(?<!\\)\$")
 
 
@@ -68,12 +68,14 @@ class Batch:
     Parameters
     ----------
     to : {"html", "latex"}
+    post : callable, optional
+        Applied to each converted fragment (the PDF's rewriting of displays, tables and code).
     """
 
-    def __init__(self, to: str):
+    def __init__(self, to: str, post: Callable[[str], str] | None = None):
         if to not in _SEP_RE:
             raise ValueError(f"to must be 'html' or 'latex', got {to!r}")
-        self.to = to
+        self.to, self.post = to, post
         self._src: list[str] = []
         self._out: list[str] | None = None
 
@@ -87,16 +89,13 @@ class Batch:
         return f"\x00WMR{len(self._src) - 1}{'i' if inline else 'b'}\x00"
 
     def convert(self) -> None:
-        if not self._src:
-            self._out = []
-            return
         if not shutil.which("pandoc"):
             raise BuildError("pandoc not found: run `make report` (it installs it) or apt-get install pandoc")
         src = "".join(f"{_SEP.format(i)}\n\n{s.strip()}\n\n" for i, s in enumerate(self._src))
         args = ["pandoc", "-f", READER, "-t", "html5" if self.to == "html" else "latex", "--wrap=none"]
         if self.to == "html":
             args.append("--mathjax")
-        p = procs.run(args, input=src, timeout=600)
+        p = subprocess.run(args, input=src, capture_output=True, text=True, timeout=600, check=False)
         if p.returncode != 0:
             raise BuildError(f"pandoc failed (exit {p.returncode}): {p.stderr[-3000:]}")
         parts = _SEP_RE[self.to].split("\n" + p.stdout)
@@ -108,42 +107,16 @@ class Batch:
             raise BuildError(f"pandoc output could not be split back into {len(self._src)} fragments")
         if self.to == "latex":
             out = [tex_anchor_targets(o) for o in out]
-        self._out = out
+        self._out = [self.post(o) for o in out] if self.post else out
 
     def fill(self, text: str) -> str:
         if self._out is None:
             raise RuntimeError("convert() first")
 
-        def one(m):
+        def one(m):                      # inline: without the paragraph around a one-paragraph result
             s = self._out[int(m.group(1))]
-            if m.group(2) == "i":
-                s = _unwrap(s, self.to)
-            return s
+            if m.group(2) == "b":
+                return s
+            p = re.fullmatch(r"<p>(.*)</p>", s.strip(), re.DOTALL) if self.to == "html" else None
+            return s.strip() if self.to == "latex" else p.group(1) if p and "<p>" not in p.group(1) else s
         return re.sub(r"\x00WMR(\d+)([ib])\x00", one, text)
-
-
-def _unwrap(s: str, to: str) -> str:
-    if to == "html":
-        m = re.fullmatch(r"<p>(.*)</p>", s.strip(), re.S)
-        return m.group(1) if m and "<p>" not in m.group(1) else s
-    return s.strip()
-
-
-def text_of(value) -> str:
-    """A notebook's multi-line string field (a str, or a list of lines) as one string."""
-    return value if isinstance(value, str) else "".join(value)
-
-
-_MATH_ONLY = re.compile(r"^\s*(\$\$|\$|\\\[)(.*?)(\$\$|\$|\\\])\s*$", re.S)
-
-
-def math_body(latex_output: str) -> str | None:
-    """The body of a ``text/latex`` output that is one formula (SymPy's ``$\\displaystyle ...$``,
-    ``$$...$$`` or ``\\[...\\]``), without delimiters and ``\\displaystyle``; ``None`` otherwise."""
-    m = _MATH_ONLY.match(latex_output)
-    if not m or {m.group(1), m.group(3)} not in ({"$"}, {"$$"}, {"\\[", "\\]"}):
-        return None
-    body = m.group(2).strip()
-    if "$" in body:
-        return None
-    return re.sub(r"^\\displaystyle\s*", "", body)

@@ -1,13 +1,10 @@
-"""The PDF report: the report notebook as LaTeX, typeset by xelatex in a temporary directory.
+"""The PDF report: the report notebook as LaTeX (pandoc for the Markdown, nbconvert's template
+``wmr_latex``), typeset by xelatex in a temporary directory under ``build/tmp``, removed however it ends.
 
-All Markdown is converted by one pandoc call (:class:`~tools.build.markup.Batch`); nbconvert's
-LaTeX exporter fills the ``wmr_latex`` template. Display math is set by ``\\wmrdisplay``, which
-scales a formula wider than the line down to it and writes the factor to the log (see
-:func:`scaled_formulas`): no formula runs past the margin and none is shrunk silently. xelatex runs
-until the table of contents and the cross-references are stable (at most four times), with
-``SOURCE_DATE_EPOCH`` from the commit so that two builds of one commit are byte-identical
-(:func:`fix_id` makes the trailer ``/ID`` a hash of the document). The LaTeX directory lives
-under ``build/tmp`` and is removed however the build ends.
+``\\wmrdisplay`` scales a formula wider than the line down to it and logs the factor
+(:func:`scaled_formulas`): none runs past the margin, none is shrunk silently. xelatex runs until
+the contents and cross-references are stable, with ``SOURCE_DATE_EPOCH`` from the commit, and
+:func:`fix_id` makes the trailer ``/ID`` a hash of the document: builds of one commit are byte-identical.
 """
 from __future__ import annotations
 
@@ -16,38 +13,29 @@ import hashlib
 import os
 import re
 import shutil
+import subprocess
+import tempfile
 from pathlib import Path
 
-from . import procs
+from . import BuildError, say
 from . import typeset as ts
-from .files import atomic_write, temp_dir
-from .log import BuildError, say
-from .markup import Batch, math_body, text_of
-from .paths import TEMPLATES, Tree
+from .markup import TEMPLATES, Batch
 
-__all__ = ["export_pdf", "to_latex", "display_math", "wrap_tables", "breakable_code", "scaled_formulas", "fix_id", "UNICODE",
-           "MIN_FORMULA_SCALE"]
+__all__ = ["MIN_FORMULA_SCALE", "UNICODE", "breakable_code", "display_math", "export_pdf", "fix_id",
+           "scaled_formulas", "to_latex", "wrap_tables"]
 
 MAX_RUNS = 4
 #: a formula wider than the line is shrunk to fit it; below this scale it counts as unreadable
 MIN_FORMULA_SCALE = 0.8
 #: characters of the text that Latin Modern lacks, set from the math fonts instead
-UNICODE = {
-    "→": r"\ensuremath{\rightarrow}", "←": r"\ensuremath{\leftarrow}", "↔": r"\ensuremath{\leftrightarrow}",
-    "⇒": r"\ensuremath{\Rightarrow}", "⇔": r"\ensuremath{\Leftrightarrow}", "≤": r"\ensuremath{\le}",
-    "≥": r"\ensuremath{\ge}", "≠": r"\ensuremath{\ne}", "≈": r"\ensuremath{\approx}", "≡": r"\ensuremath{\equiv}",
-    "−": r"\ensuremath{-}", "∞": r"\ensuremath{\infty}", "±": r"\ensuremath{\pm}", "∈": r"\ensuremath{\in}",
-    "∑": r"\ensuremath{\sum}", "√": r"\ensuremath{\surd}", "∂": r"\ensuremath{\partial}", "⊥": r"\ensuremath{\perp}",
-    "‖": r"\ensuremath{\|}", "·": r"\ensuremath{\cdot}", "∘": r"\ensuremath{\circ}",
-    "α": r"\ensuremath{\alpha}", "β": r"\ensuremath{\beta}", "γ": r"\ensuremath{\gamma}", "δ": r"\ensuremath{\delta}",
-    "ε": r"\ensuremath{\varepsilon}", "θ": r"\ensuremath{\theta}", "κ": r"\ensuremath{\kappa}", "λ": r"\ensuremath{\lambda}",
-    "μ": r"\ensuremath{\mu}", "ν": r"\ensuremath{\nu}", "π": r"\ensuremath{\pi}", "σ": r"\ensuremath{\sigma}",
-    "φ": r"\ensuremath{\varphi}", "ϕ": r"\ensuremath{\phi}", "ψ": r"\ensuremath{\psi}", "ω": r"\ensuremath{\omega}",
-    "Δ": r"\ensuremath{\Delta}", "Σ": r"\ensuremath{\Sigma}", "Φ": r"\ensuremath{\Phi}", "Ψ": r"\ensuremath{\Psi}",
-    "Ω": r"\ensuremath{\Omega}", "✓": r"\ensuremath{\checkmark}", "✗": r"\ensuremath{\times}",
-}
+UNICODE = dict(zip("→←↔⇒⇔≤≥≠≈≡−∞±∈∑√∂⊥‖·∘αβγδεθκλμνπσφϕψωΔΣΦΨΩ✓✗", (rf"\ensuremath{{{c}}}" for c in (
+    r"\rightarrow", r"\leftarrow", r"\leftrightarrow", r"\Rightarrow", r"\Leftrightarrow", r"\le", r"\ge", r"\ne",
+    r"\approx", r"\equiv", "-", r"\infty", r"\pm", r"\in", r"\sum", r"\surd", r"\partial", r"\perp", r"\|", r"\cdot",
+    r"\circ", r"\alpha", r"\beta", r"\gamma", r"\delta", r"\varepsilon", r"\theta", r"\kappa", r"\lambda", r"\mu",
+    r"\nu", r"\pi", r"\sigma", r"\varphi", r"\phi", r"\psi", r"\omega", r"\Delta", r"\Sigma", r"\Phi", r"\Psi",
+    r"\Omega", r"\checkmark", r"\times")), strict=True))
 _ENVS = ("align", "align*", "gather", "gather*", "multline", "multline*", "equation", "equation*", "eqnarray", "eqnarray*")
-_DISPLAY = re.compile(r"(?<!\\)\\\[(.*?)(?<!\\)\\\]", re.S)
+_DISPLAY = re.compile(r"(?<!\\)\\\[(.*?)(?<!\\)\\\]", re.DOTALL)
 _TAG = re.compile(r"\\tag\*?\{([^{}]*)\}")
 
 
@@ -55,15 +43,10 @@ def display_math(body: str) -> str:
     """LaTeX for one displayed formula: ``\\wmrdisplay{body}{tag}``, or the body itself when it is
     a numbered environment of its own (``align``, ``multline``, ...), which cannot be boxed."""
     body = body.strip()
-    if re.match(r"\\begin\{(%s)\}" % "|".join(re.escape(e) for e in _ENVS), body):
+    if re.match(r"\\begin\{(" + "|".join(re.escape(e) for e in _ENVS) + r")\}", body):
         return body
     tags = _TAG.findall(body)
     return r"\wmrdisplay{" + _TAG.sub("", body).strip() + "}{" + (tags[0] if tags else "") + "}"
-
-
-def _displays(tex: str) -> str:
-    """Every ``\\[...\\]`` that pandoc wrote becomes :func:`display_math`."""
-    return _DISPLAY.sub(lambda m: display_math(m.group(1)), tex)
 
 
 _NATURAL_TABLE = re.compile(r"\\begin\{longtable\}\[\]\{@\{\}([lcr]+)@\{\}\}")
@@ -92,52 +75,39 @@ def to_latex(nb) -> tuple[str, dict]:
     """The report notebook as a LaTeX document, and the image files it includes (name -> bytes)."""
     import nbformat
     from nbconvert import LatexExporter
-    batch = Batch("latex")
+    # each converted fragment: pandoc's \[...\] becomes \wmrdisplay, tables wrap, code breaks
+    batch = Batch("latex", post=lambda tex: breakable_code(wrap_tables(_DISPLAY.sub(lambda m: display_math(m.group(1)), tex))))
     files: dict[str, bytes] = {}
     prepared = nbformat.v4.new_notebook(metadata=nb.metadata)
     for c in nb.cells:
-        s = ts.spec(c)
+        s, parts = ts.spec(c), []
         if s is not None:
-            src = ts.render_latex(s, batch.add)
+            parts.append(ts.render_latex(s, batch.add))
         elif c.cell_type == "markdown":
-            src = batch.add(c.source)
-        elif c.cell_type == "code":
-            parts = []
-            for o in c.outputs:
-                data = o.get("data", {})
-                if "text/markdown" in data:
-                    parts.append(batch.add(text_of(data["text/markdown"])))
-                elif "text/latex" in data:
-                    tex = text_of(data["text/latex"])
-                    body = math_body(tex)
-                    parts.append(display_math(body) if body is not None else batch.add(tex))
-                elif "image/png" in data:
-                    name = f"output-{len(files):04d}.png"
-                    files[name] = base64.b64decode(text_of(data["image/png"]))
-                    parts.append(rf"\wmrimage{{{name}}}")
-                elif "image/svg+xml" in data:
-                    parts.append(r"\emph{(an SVG image of the HTML report, not converted for the PDF)}")
-            src = "\n\n".join(parts)
-        else:
-            continue
-        prepared.cells.append(nbformat.v4.new_raw_cell(src))
+            parts.append(batch.add(c.source))
+        for o in c.get("outputs", []) if c.cell_type == "code" else []:
+            data = o.get("data", {})
+            if "text/markdown" in data:
+                parts.append(batch.add(data["text/markdown"]))
+            elif "image/png" in data:
+                name = f"output-{len(files):04d}.png"
+                files[name] = base64.b64decode(data["image/png"])
+                parts.append(rf"\wmrimage{{{name}}}")
+            elif "image/svg+xml" in data:
+                parts.append(r"\emph{(an SVG image of the HTML report, not converted for the PDF)}")
+        if parts:
+            prepared.cells.append(nbformat.v4.new_raw_cell("\n\n".join(parts)))
     paper = batch.add(nb.metadata["wmr"]["paper"], inline=True)
     batch.convert()
-    for c in prepared.cells:
-        c.source = breakable_code(wrap_tables(_displays(batch.fill(c.source))))
     unicode = "\n".join(rf"\newunicodechar{{{k}}}{{{v}}}" for k, v in UNICODE.items())
     exp = LatexExporter(template_name="wmr_latex", extra_template_basedirs=[str(TEMPLATES)])
-    body, _ = exp.from_notebook_node(prepared, resources={"wmr_paper_latex": batch.fill(paper),
-                                                           "wmr_unicode": unicode})
-    return body, files
+    body, _ = exp.from_notebook_node(prepared, resources={"wmr_paper_latex": paper, "wmr_unicode": unicode})
+    return batch.fill(body), files
 
 
 def scaled_formulas(log: str) -> list[tuple[float, str]]:
     """(scale, page) of every formula ``\\wmrdisplay`` had to shrink, from the xelatex log."""
-    out = []
-    for wd, avail, page in re.findall(r"WMR-SCALE:([\d.]+)pt:([\d.]+)pt:(\S+)", log):
-        out.append((float(avail) / float(wd), page))
-    return out
+    return [(float(avail) / float(wd), page) for wd, avail, page in re.findall(r"WMR-SCALE:([\d.]+)pt:([\d.]+)pt:(\S+)", log)]
 
 
 def fix_id(pdf: bytes) -> bytes:
@@ -159,8 +129,8 @@ def _run_xelatex(d: Path, epoch: int) -> str:
     env = dict(os.environ, SOURCE_DATE_EPOCH=str(epoch), FORCE_SOURCE_DATE="1", TZ="UTC")
     prev = None
     for run in range(1, MAX_RUNS + 1):
-        p = procs.run(["xelatex", "-interaction=nonstopmode", "-halt-on-error", "-file-line-error", "report.tex"],
-                      cwd=d, env=env, timeout=900)
+        p = subprocess.run(["xelatex", "-interaction=nonstopmode", "-halt-on-error", "-file-line-error", "report.tex"],
+                           cwd=d, env=env, capture_output=True, text=True, timeout=900, check=False)
         log = (d / "report.log").read_text(encoding="utf-8", errors="replace") if (d / "report.log").exists() else p.stdout
         if p.returncode != 0 or not (d / "report.pdf").exists():
             lines = log.splitlines()
@@ -174,32 +144,36 @@ def _run_xelatex(d: Path, epoch: int) -> str:
     return log
 
 
-def export_pdf(nb, t: Tree, out: Path, epoch: int) -> list[str]:
-    """Typeset the report notebook into ``out`` (atomically); return warnings for the reader of
-    the build log (missing glyphs, shrunk formulas, lines past the margin)."""
+def export_pdf(nb, out: Path) -> list[str]:
+    """Typeset the report notebook into ``out`` (atomically), beside it ``report.tex`` (the source the
+    xelatex log refers to) and ``report.log``; return warnings for the reader of the build log
+    (missing glyphs, shrunk formulas, lines past the margin). xelatex runs in a temporary directory
+    under ``<build>/tmp``, removed however the step ends (what a killed build left is removed first)."""
+    from edition.files import atomic_write
     if not shutil.which("xelatex"):
         raise BuildError("xelatex not found: run `make report` (it installs the TeX toolchain) or "
                          "apt-get install texlive-xetex texlive-latex-extra texlive-fonts-recommended lmodern pandoc")
+    out = Path(out)
     tex, files = to_latex(nb)
-    atomic_write(t.report_tex, tex)              # to read the log's line numbers against
-    with temp_dir(t.tmp, "pdf-") as d:
+    atomic_write(out.with_suffix(".tex"), tex)
+    tmp = out.parent / "tmp" / "pdf"
+    shutil.rmtree(tmp, ignore_errors=True)            # one PDF step at a time per tree (build/.lock)
+    tmp.mkdir(parents=True)
+    with tempfile.TemporaryDirectory(dir=tmp) as name:
+        d = Path(name)
         (d / "report.tex").write_text(tex, encoding="utf-8")
-        for name, data in files.items():
-            (d / name).write_bytes(data)
-        log = _run_xelatex(d, epoch)
+        for fname, data in files.items():
+            (d / fname).write_bytes(data)
+        log = _run_xelatex(d, int(nb.metadata["wmr"]["epoch"]))
         atomic_write(out, fix_id((d / "report.pdf").read_bytes()))
-    atomic_write(t.report_log, log)
-    warnings = []
+    atomic_write(out.with_suffix(".log"), log)
     missing = sorted(set(re.findall(r"Missing character: There is no (\S+)", log)))
-    if missing:
-        warnings.append(f"characters missing from the fonts: {' '.join(missing)}")
     small = [f"{s:.2f} (p. {p})" for s, p in scaled_formulas(log) if s < MIN_FORMULA_SCALE]
-    if small:
-        warnings.append(f"formulas shrunk below {MIN_FORMULA_SCALE:.0%} to fit the line: {', '.join(small)}")
-    over = re.findall(r"Overfull \\hbox \((\d+\.\d+)pt too wide\)[^\n]*lines? (\d+)", log)
-    wide = [f"{float(w):.0f}pt (report.tex line {l})" for w, l in over if float(w) > 2]
-    if wide:
-        warnings.append(f"{len(wide)} lines wider than the text: {', '.join(wide[:8])}")
+    wide = [f"{float(w):.0f}pt (report.tex line {line})" for w, line in
+            re.findall(r"Overfull \\hbox \((\d+\.\d+)pt too wide\)[^\n]*lines? (\d+)", log) if float(w) > 2]
+    warnings = [w for w, bad in ((f"characters missing from the fonts: {' '.join(missing)}", missing),
+                                 (f"formulas shrunk below {MIN_FORMULA_SCALE:.0%} to fit the line: {', '.join(small)}", small),
+                                 (f"{len(wide)} lines wider than the text: {', '.join(wide[:8])}", wide)) if bad]
     for w in warnings:
         say("pdf", "WARNING: " + w)
     return warnings

@@ -1,6 +1,6 @@
 r"""Analyses of any robot built with :mod:`wmr.model`.
 
-==================================  ========================================================================================
+==================================  ==============================================================================
 :mod:`~wmr.analysis.linalg`         rank, nullity, null space, singular values, condition number
 :mod:`~wmr.analysis.mobility`       rank and nullity of :math:`\mathbf F`, admissible twists (23)-(27)
 :mod:`~wmr.analysis.isotropy`       isotropy tests and the characteristic length (30)-(50)
@@ -8,16 +8,19 @@ r"""Analyses of any robot built with :mod:`wmr.model`.
 :mod:`~wmr.analysis.steering`       instantaneous centre and compatible steering angles (60)-(65)
 :mod:`~wmr.analysis.simulation`     time integration of the kinematics
 :mod:`~wmr.analysis.lines`          2-D line geometry: intersections, concurrency, circumcircle
+:mod:`~wmr.analysis.square`         the square :math:`\mathbf J` of three centred wheels: check, default L, exact robot
 :mod:`~wmr.analysis.singularities`  :math:`\det\mathbf J` and the classification of singular configurations (58)-(59)
+:mod:`~wmr.analysis.det_exact`      the exact :math:`\det\mathbf J`: SymPy derivation, polynomial, plane-line identity
 :mod:`~wmr.analysis.classes`        Campion's classes: degrees of mobility and steerability
-:mod:`~wmr.analysis.design`         worst-case :math:`\kappa(\mathbf J)` of a layout, search over three-offset-wheel designs
+:mod:`~wmr.analysis.design`         worst-case :math:`\kappa(\mathbf J)` of a layout, search over offset-wheel designs
 :mod:`~wmr.analysis.motion_kappa`   :math:`\kappa(\mathbf J)` along the admissible motions (rotations about each centre)
-:mod:`~wmr.analysis.det_exact`      the exact :math:`\det\mathbf J`: SymPy derivation, polynomial, wheel-plane-line identity
-==================================  ========================================================================================
+:mod:`~wmr.analysis.sweep`          one analysis over millions of configurations, in chunks
+:mod:`~wmr.analysis.overview`       a robot at a glance (what ``wmr analyze`` reports)
+:mod:`~wmr.analysis.reference`      the dense reference the fast kernels are checked against
+==================================  ==============================================================================
 
 Every function takes a robot; none defaults to the paper's.
 """
 
-__all__ = ["linalg", "mobility", "isotropy", "kinematics", "steering", "simulation", "lines", "singularities", "det_exact",
-           "sweep", "reference", "classes",
-           "design", "motion_kappa"]
+__all__ = ["linalg", "mobility", "isotropy", "kinematics", "steering", "simulation", "lines", "square", "singularities",
+           "det_exact", "sweep", "reference", "classes", "design", "motion_kappa", "overview"]

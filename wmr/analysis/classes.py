@@ -11,7 +11,7 @@ wheels with a fixed wheel plane through the wheel centre:
   ``wmr``: centred and dual units), at its steering angle;
 * :math:`\mathbf C_1^* = [\mathbf C_{1f};\ \mathbf C_{1s}(\boldsymbol\beta_s)]`.  Offset (castor) and
   Swedish wheels add no row: their hubs can move in every direction (their local blocks are
-  invertible, :mod:`wmr.model.wheels_fixed`); an offset wheel with :math:`d = 0` is a centred
+  invertible, :mod:`wmr.model.wheels.swedish`); an offset wheel with :math:`d = 0` is a centred
   wheel and counts as one.
 
 These rows are exactly the twist constraints of :func:`wmr.analysis.mobility.twist_constraints`
@@ -169,7 +169,7 @@ def campion_class(robot):
     # admissible twists of the fixed wheels, in dimensionless coordinates t_hat = t * scale
     N = null_space(Cf / scale, scale=np.ones(3)) if Cf.shape[0] else np.eye(3)
     rf = _rank(Cf, scale)
-    best = None
+    best: tuple | None = None
     for _ in range(_DRAWS):
         g, current = rng.normal(size=3), rng.uniform(-np.pi, np.pi, w)
         t = (N @ (N.T @ g)) / scale                      # projection onto N(C1f): any basis gives the same t
@@ -179,6 +179,7 @@ def campion_class(robot):
         dm, ds, rs = 3 - r_star, r_star - rf, _rank(Cs, scale)
         if best is None or (dm, -ds) < (best[0], -best[1]):
             best = (dm, ds, rs, t, beta)
+    assert best is not None                              # (_DRAWS >= 1)
     dm, ds, rs, t, beta = best
     standard = (dm, ds) in CLASS_NAMES and rf <= 1
     if standard:

@@ -9,9 +9,12 @@ from __future__ import annotations
 import numpy as np
 import sympy as sp
 
+from ..errors import InputValueError
 from ..model import validation as V
 from ..model.backend import NUMERIC, SYMBOLIC, choose
-from .singularities import _default_L, _require_square, exact_robot
+from ..model.robot import Robot
+from ..model.wheels import CentredWheel
+from .square import default_L, exact_robot, require_square
 
 __all__ = ["det_J_symbolic", "det_J_polynomial", "exact_zero", "plane_line_matrix", "characterisation"]
 
@@ -32,9 +35,9 @@ def det_J_symbolic(robot, L=None):
     -------
     sympy.Expr
     """
-    _require_square(robot)
+    require_square(robot)
     robot = exact_robot(robot)
-    L = _default_L(robot, L, numeric=False)
+    L = default_L(robot, L, numeric=False)
     if isinstance(L, float):
         L = sp.nsimplify(L, [sp.sqrt(2), sp.sqrt(3)])
     J = robot.J(None, L=L)
@@ -42,7 +45,9 @@ def det_J_symbolic(robot, L=None):
 
 
 def plane_line_matrix(robot, beta, L=1, backend=None):
-    r"""The matrix :math:`\mathbf W` whose columns are the Plücker vectors :math:`[m_i/L,\ \mathbf j_i^T]^T` of the wheel-plane lines.
+    r"""The matrix :math:`\mathbf W` whose columns are the Plücker vectors of the wheel-plane lines.
+
+    Column i is :math:`[m_i/L,\ \mathbf j_i^T]^T`.
 
     :math:`m_i = \mathbf d_i^T\mathbf i_i = \mathbf d_i\times\mathbf j_i` is the moment of the line
     about C.  For three centred wheels :math:`\mathbf J = -\mathbf W\,\mathrm{diag}(r_i)`.
@@ -63,7 +68,7 @@ def plane_line_matrix(robot, beta, L=1, backend=None):
         isinstance(b, sp.Basic) for b in np.ravel(np.asarray(beta, dtype=object)))
     bk = choose(backend=backend) if backend is not None else (SYMBOLIC if symbolic else NUMERIC)
     if symbolic and bk is NUMERIC:
-        raise ValueError(f"backend NUMERIC needs numeric beta and a numeric robot, got beta = {V.show(beta)}, "
+        raise InputValueError(f"backend NUMERIC needs numeric beta and a numeric robot, got beta = {V.show(beta)}, "
                          f"robot = {V.show(robot)}")
     symbolic = bk is SYMBOLIC
     if symbolic:
@@ -81,7 +86,7 @@ def plane_line_matrix(robot, beta, L=1, backend=None):
             columns.append([(px * jy - py * jx) / L, jx, jy])      # [m_i / L, j_i], m_i = d_i x j_i
         W = bk.matrix([list(row) for row in zip(*columns)])
     if bk is NUMERIC and not np.isfinite(W).all():
-        raise ValueError(f"L = {L!r} is too small for the mount points: the moments m_i / L overflow")
+        raise InputValueError(f"L = {L!r} is too small for the mount points: the moments m_i / L overflow")
     return W
 
 
@@ -107,12 +112,10 @@ def characterisation(robot, L=None):
         ``"independent_of_L"``: True when ``det_J`` does not contain the symbol L;
         ``"irreducible"``: True when the trilinear form has no factor other than constants.
     """
-    from ..model.robot import Robot
-    from ..model.wheels import CentredWheel
-    _require_square(robot)
+    require_square(robot)
     Ls = sp.Symbol("L", positive=True)
     if L is None:
-        L = Ls if robot.is_symbolic else _default_L(robot, None)
+        L = Ls if robot.is_symbolic else default_L(robot, None)
 
     def lines_form(bot, L):
         b = bot.beta_symbols
@@ -142,7 +145,9 @@ def characterisation(robot, L=None):
 
 
 def det_J_polynomial(robot, L=None):
-    r""":math:`\det\mathbf J` as a polynomial in :math:`c_i = \cos\beta_i`, :math:`s_i = \sin\beta_i` (degree 1 in each pair).
+    r""":math:`\det\mathbf J` as a polynomial in :math:`c_i = \cos\beta_i`, :math:`s_i = \sin\beta_i`.
+
+    Of degree 1 in each pair :math:`(c_i, s_i)`.
 
     Parameters
     ----------

@@ -9,9 +9,10 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..errors import InputValueError
 from ..model import validation as V
-from .linalg import condition_number
 from ..model.tolerance import TOL
+from .linalg import condition_number
 
 __all__ = ["is_isotropic", "characteristic_length"]
 
@@ -67,5 +68,6 @@ def characteristic_length(robot):
     big = float(np.abs(d).max())                      # scaled first: no overflow at 1e300, no underflow at 1e-300
     L = big * float(np.sqrt(np.mean(np.sum((d / big) ** 2, axis=1)))) if big > 0 else 0.0
     if L == 0:
-        raise ValueError(f"robot has all its mount points at C: no characteristic length exists (got L = 0): {V.show(robot)}")
+        raise InputValueError(f"robot has all its mount points at C: no characteristic length exists (got L = 0): "
+                              f"{V.show(robot)}")
     return L

@@ -22,6 +22,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..errors import InputValueError
 from ..model import validation as V
 from ..model.backend import NUMERIC
 from ..model.platform import cos_sin, rotated
@@ -59,8 +60,10 @@ class _Constants:
     ``L``, ``EL`` (2w, n_rates): the block diagonals of the units' :math:`\mathbf L_i` and
     :math:`\mathbf E\mathbf L_i`, so that :math:`\mathbf J_2(\boldsymbol\beta)\dot{\boldsymbol\theta}` is
     ``rotated((cos, sin), L @ theta, EL @ theta)`` with each unit's cosine and sine repeated over
-    its two rows; ``Lp`` (n_rates, 2w), the block diagonal of the :math:`\mathbf L_i^+`; ``dual``,
-    (unit, first rate, :math:`2b/r`) of each dual wheel; ``chunk``, configurations per chunk.
+    its two rows; ``Lp`` (n_rates, 2w), the block diagonal of the :math:`\mathbf L_i^+`; ``steer``,
+    (unit, its rates' slice, :math:`\mathbf c_i`, :math:`\mathbf c_i^T/\mathbf c_i\mathbf c_i^T`) of each unit
+    with a steering row (:meth:`~wmr.model.wheels.WheelUnit.steering_row`: a dual wheel); ``chunk``,
+    configurations per chunk.
     """
 
     J1: np.ndarray
@@ -69,7 +72,7 @@ class _Constants:
     L: np.ndarray
     EL: np.ndarray
     Lp: np.ndarray
-    dual: tuple
+    steer: tuple
     chunk: int
 
 
@@ -82,18 +85,19 @@ def _constants(robot):
     J1 = robot.J1(backend=NUMERIC)
     w, n = robot.w, robot.n_rates
     L, EL, Lp = np.zeros((2 * w, n)), np.zeros((2 * w, n)), np.zeros((n, 2 * w))
-    dual = []
+    steer = []
     for i, (u, sl) in enumerate(zip(robot.wheels, robot.rate_slices)):
         L[2 * i:2 * i + 2, sl], EL[2 * i:2 * i + 2, sl] = u.block_terms(NUMERIC)   # B = cos L + sin E L
         Lp[sl, 2 * i:2 * i + 2] = _pinv_rank(L[2 * i:2 * i + 2, sl])[0]
-        if u.kind == "dual":
-            dual.append((i, sl.start, 2 * u.b / u.r))
+        c = u.steering_row()                                # c theta_i = psi_dot + beta_dot_i, L_i c^T = 0
+        if c is not None:
+            steer.append((i, sl, c, c / (c @ c)))
     # J1's psi_dot column is a length, the others pure numbers: rank and pseudo-inverse with the
     # columns scaled (wmr.model.tolerance), so a robot 1e300 or 1e-300 in size is still determined
     pinv_J1, rank_J1 = _pinv_rank(J1)
     # chunks small enough that the (2w x n) @ (n x chunk) products stay single-threaded in BLAS
     chunk = int(max(256, min(8192, 2 ** 18 // max(1, 2 * w * max(n, 3)))))
-    return _Constants(J1, pinv_J1, rank_J1 == 3, L, EL, Lp, tuple(dual), chunk)
+    return _Constants(J1, pinv_J1, rank_J1 == 3, L, EL, Lp, tuple(steer), chunk)
 
 
 def _pinv_rank(M):
@@ -127,7 +131,7 @@ def _admissible(res, terms):
 def _finite(name, given, *results):
     """Overflow is detected, not propagated: finite input must give finite results."""
     if not all(np.isfinite(r).all() for r in results):
-        raise ValueError(f"{name} is too large: the kinematics overflow double precision "
+        raise InputValueError(f"{name} is too large: the kinematics overflow double precision "
                          f"(largest |{name}| = {np.abs(given).max():.3g})")
 
 
@@ -162,7 +166,8 @@ def forward(robot, beta, rates):
     -----
     :math:`\mathbf J_1^+` is computed once per robot; the batch is processed in chunks on all
     cores, and :math:`\mathbf J_2` is never formed: unit :math:`i` contributes
-    :math:`\cos\beta_i\,\mathbf L_i\dot{\boldsymbol\theta}_i + \sin\beta_i\,\mathbf E\mathbf L_i\dot{\boldsymbol\theta}_i`.
+    :math:`\cos\beta_i\,\mathbf L_i\dot{\boldsymbol\theta}_i +
+    \sin\beta_i\,\mathbf E\mathbf L_i\dot{\boldsymbol\theta}_i`.
 
     Examples
     --------
@@ -177,7 +182,7 @@ def forward(robot, beta, rates):
     rates = V.finite_array("rates", rates, last=robot.n_rates)
     K = _constants(robot)
     if not K.full_rank:
-        raise ValueError(
+        raise InputValueError(
             f"robot has J1 of rank < 3 (fewer than two distinct mount points: {robot.mount_points.tolist()}): "
             "the twist is not determined")
     batch = V.batch_shape({"beta": beta, "rates": rates})
@@ -212,10 +217,10 @@ def inverse(robot, beta, twist, beta_dot=None):
     twist : array (..., 3)
         :math:`[\dot\psi, \dot x, \dot y]`, body frame.
     beta_dot : array (..., w), optional
-        Wanted steering rates of dual-wheel units (their wheel-rate difference steers them, the
-        corrected (15)); default 0, i.e. the unit keeps its angle on the platform.  Ignored
-        for other units (offset wheels' steering rate follows from the twist; centred wheels
-        steer independently).
+        Wanted steering rates of the units whose rates steer them (a dual wheel: its wheel-rate
+        difference, the corrected (15); :meth:`~wmr.model.wheels.WheelUnit.steering_row`); default 0,
+        i.e. the unit keeps its angle on the platform.  Ignored for other units (offset wheels' steering
+        rate follows from the twist; centred wheels steer independently).
 
     Returns
     -------
@@ -261,12 +266,11 @@ def inverse(robot, beta, twist, beta_dot=None):
         Ev[0::2], Ev[1::2] = -v[1::2], v[0::2]
         local = rotated((c, -s), v, Ev, axes=0)             # R(beta_i)^T v_i = R(-beta_i) v_i (11)
         th = K.Lp @ local                                   # theta_i = L_i^+ R^T v_i
-        for i, j, ratio in K.dual:
-            # free differential rate fixed by the steering wanted: phi_dot = psi_dot + beta_dot,
-            # theta_1 - theta_2 = -(2b/r) phi_dot
-            half = 0.5 * ratio * (tw[a:z, 0] if bd is None else tw[a:z, 0] + bd[a:z, i])
-            th[j] -= half
-            th[j + 1] += half
+        for i, sl, row, gain in K.steer:
+            # the rates the block leaves free (L_i c^T = 0) set by the steering wanted: c theta_i = phi_dot_i,
+            # phi_dot_i = psi_dot + beta_dot_i (a dual wheel: theta_1 - theta_2 = -(2b/r) phi_dot, corrected (15))
+            phi = tw[a:z, 0] if bd is None else tw[a:z, 0] + bd[a:z, i]
+            th[sl] += gain[:, None] * (phi - row @ th[sl])
         r_k = v - rotated((c, s), K.L @ th, K.EL @ th, axes=0)   # J1 t - J2 theta_dot
         rates[a:z], res[a:z], adm[a:z] = th.T, r_k.T, _admissible(r_k, v)
 

@@ -13,20 +13,21 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..errors import InputValueError
 from ..model import validation as V
-from ..model.tolerance import TOL
+from ..model.tolerance import TOL, column_norms
 from . import _closed
 from ._batch import map_matrices
 
-__all__ = ["singular_values", "column_norms", "rank", "nullity", "null_space", "pinv_columns", "condition_number", "gram",
-           "det"]
+__all__ = ["singular_values", "column_norms", "rank", "nullity", "null_space", "left_null_space", "pinv_columns",
+           "condition_number", "gram", "det", "rank_from_singular_values", "kappa_from_singular_values"]
 
 
 def _as_stack(A):
     """Validate a stack of matrices ``(..., m, n)`` of finite reals."""
     A = V.finite_array("A", A)
     if A.ndim < 2:
-        raise ValueError(f"A must have shape (..., m, n), got shape {A.shape}")
+        raise InputValueError(f"A must have shape (..., m, n), got shape {A.shape}")
     return A
 
 
@@ -62,40 +63,14 @@ def singular_values(A):
 def _finite(name, result, what):
     """Overflow is detected, not propagated: a result from finite input is finite or the call raises."""
     if not np.isfinite(result).all():
-        raise ValueError(f"{name} is too large: {what} overflow double precision")
+        raise InputValueError(f"{name} is too large: {what} overflow double precision")
     return result
-
-
-def column_norms(A):
-    r"""Euclidean length of every column, :math:`\|\mathbf A\mathbf e_j\|`, without overflow or underflow.
-
-    Zero columns get 1 (dividing by it leaves them zero).
-
-    Parameters
-    ----------
-    A : array_like (..., m, n)
-
-    Returns
-    -------
-    numpy.ndarray (..., n)
-
-    Examples
-    --------
-    >>> column_norms([[3e300, 0.0], [4e300, 0.0]]).tolist()
-    [5e+300, 1.0]
-    """
-    A = _as_stack(A)
-    big = np.max(np.abs(A), axis=-2) if A.shape[-2] else np.zeros(A.shape[:-2] + A.shape[-1:])
-    safe = np.where(big > 0, big, 1.0)
-    with np.errstate(over="ignore"):
-        norms = np.where(big > 0, safe * np.sqrt(np.sum((A / safe[..., None, :]) ** 2, axis=-2)), 1.0)
-    return _finite("A", norms, "its column lengths")
 
 
 def _check_scale(scale, n):
     scale = V.finite_array("scale", scale, last=n)
     if np.any(scale <= 0):
-        raise ValueError(f"scale must hold positive column sizes, got {V.show(scale)}")
+        raise InputValueError(f"scale must hold positive column sizes, got {V.show(scale)}")
     return scale
 
 
@@ -105,12 +80,27 @@ def _scaled(A, scale):
     with np.errstate(over="ignore", under="ignore"):
         out = A / scale[..., None, :]
     if not np.isfinite(out).all():
-        raise ValueError(f"scale is too small for A: A / scale overflows (scale = {V.show(scale)})")
+        raise InputValueError(f"scale is too small for A: A / scale overflows (scale = {V.show(scale)})")
     return out
 
 
-def _rank_from_sv(s):
-    """The rule: singular values above ``TOL`` times the largest one (a zero matrix has rank 0)."""
+def rank_from_singular_values(s):
+    """The rule of :func:`rank`: the singular values above ``TOL`` times the largest one (a zero matrix has rank 0).
+
+    Parameters
+    ----------
+    s : numpy.ndarray (..., k)
+        Singular values, descending (:func:`singular_values`).
+
+    Returns
+    -------
+    numpy.ndarray of int (...)
+
+    Examples
+    --------
+    >>> rank_from_singular_values(np.array([[2.0, 1e-12], [2.0, 1.0]])).tolist()
+    [1, 2]
+    """
     if s.shape[-1] == 0:
         return np.zeros(s.shape[:-1], dtype=int)
     return np.sum(s > TOL * s[..., :1], axis=-1)
@@ -156,13 +146,13 @@ def rank(A, scale=None):
     else:
         scale = _check_scale(scale, A.shape[-1])     # one size per column: applied chunk by chunk
     if p == 0 or p > 3:
-        return _rank_from_sv(singular_values(A))
+        return rank_from_singular_values(singular_values(A))
     flat = A.reshape((-1,) + A.shape[-2:])
     out = np.full(flat.shape[0], p, dtype=int)
     todo = np.flatnonzero(~_closed.certified_full_rank(flat, scale))
     if todo.size:
         rest = flat[todo] if scale is None else _scaled(flat[todo], scale)
-        out[todo] = _rank_from_sv(singular_values(rest))
+        out[todo] = rank_from_singular_values(singular_values(rest))
     return out.reshape(A.shape[:-2])
 
 
@@ -213,7 +203,7 @@ def null_space(A, scale=None):
     """
     A = V.finite_array("A", A)
     if A.ndim != 2:
-        raise ValueError(f"A must be one matrix (m, n) for null_space, got shape {A.shape} (loop over a batch)")
+        raise InputValueError(f"A must be one matrix (m, n) for null_space, got shape {A.shape} (loop over a batch)")
     r = int(rank(A, scale))
     if A.shape[0] == 0:
         return np.eye(A.shape[1])                        # no equations: every vector
@@ -223,7 +213,7 @@ def null_space(A, scale=None):
 
 
 def pinv_columns(A):
-    r"""Pseudo-inverse of one matrix, with its columns scaled as in :func:`rank`: :math:`\mathbf D^{-1}(\mathbf A\mathbf D^{-1})^+`.
+    r"""Pseudo-inverse with the columns scaled as in :func:`rank`: :math:`\mathbf D^{-1}(\mathbf A\mathbf D^{-1})^+`.
 
     Singular values of :math:`\mathbf A\mathbf D^{-1}` at most ``TOL`` times the largest are
     dropped (the rank rule).  For full column rank this is :math:`\mathbf A^+` whatever the units
@@ -245,17 +235,35 @@ def pinv_columns(A):
     """
     A = V.finite_array("A", A)
     if A.ndim != 2:
-        raise ValueError(f"A must be one matrix (m, n), got shape {A.shape}")
+        raise InputValueError(f"A must be one matrix (m, n), got shape {A.shape}")
     scale = column_norms(A)
     with np.errstate(over="ignore", invalid="ignore"):
         return _finite("A", np.linalg.pinv(A / scale, rcond=TOL) / scale[:, None], "the entries of its pseudo-inverse")
 
 
-def _left_null(L):
-    """Orthonormal basis (2, k) of the left null space of a constant 2 x n block (columns scaled as in :func:`rank`)."""
-    L = _scaled(np.asarray(L, dtype=float), None)
-    U, s, _ = np.linalg.svd(L)
-    r = int(_rank_from_sv(s[None, :])[0]) if s.size else 0
+def left_null_space(A):
+    r"""Orthonormal basis of the left null space of one matrix, columns scaled as in :func:`rank`.
+
+    Parameters
+    ----------
+    A : array_like (m, n)
+        E.g. a wheel unit's local block (2 x n_rates).
+
+    Returns
+    -------
+    numpy.ndarray (m, k)
+        Orthonormal columns :math:`\mathbf u` with :math:`\mathbf u^T\mathbf A = \mathbf 0`, ``k = m - rank(A)``.
+
+    Examples
+    --------
+    >>> left_null_space([[0.0], [-2.0]]).round(12).tolist()       # a centred wheel: no slip along i
+    [[1.0], [0.0]]
+    """
+    A = _as_stack(A)
+    if A.ndim != 2:
+        raise InputValueError(f"A must be one matrix (m, n) for left_null_space, got shape {A.shape}")
+    U, s, _ = np.linalg.svd(_scaled(A, None))
+    r = int(rank_from_singular_values(s[None, :])[0]) if s.size else 0
     return U[:, r:]
 
 
@@ -264,7 +272,8 @@ def condition_number(A):
 
     Rank-deficient matrices (smallest singular value at most ``TOL * sigma_l``, i.e.
     :math:`\kappa \ge 1/\mathrm{TOL}`) get ``inf``, as (31) prescribes; the matrix is taken as
-    given (no column scaling: :math:`\kappa` is the paper's measure, made homogeneous by L).  Stacks of 3x3 matrices use the closed form of
+    given (no column scaling: :math:`\kappa` is the paper's measure, made homogeneous by L).  Stacks of 3x3
+    matrices use the closed form of
     :func:`wmr.analysis._closed.condition_number_3x3` (singular values from the eigenvalues of
     :math:`\mathbf A^T\mathbf A` and :math:`\det\mathbf A`) wherever its computed error bound is
     within ``16 eps kappa``, and the SVD for the other members; other sizes use the SVD.
@@ -286,18 +295,35 @@ def condition_number(A):
     """
     A = _as_stack(A)
     if min(A.shape[-2:]) == 0:
-        raise ValueError(f"A must have at least one row and one column for a condition number, got shape {A.shape}")
+        raise InputValueError(f"A must have at least one row and one column for a condition number, "
+                              f"got shape {A.shape}")
     if A.shape[-2:] != (3, 3):
-        return _kappa_from_sv(singular_values(A))
+        return kappa_from_singular_values(singular_values(A))
     flat = A.reshape(-1, 3, 3)
     kappa, accepted = _closed.condition_number_3x3(flat)
     todo = np.flatnonzero(~accepted)
     if todo.size:
-        kappa[todo] = _kappa_from_sv(singular_values(flat[todo]))
+        kappa[todo] = kappa_from_singular_values(singular_values(flat[todo]))
     return kappa.reshape(A.shape[:-2])
 
 
-def _kappa_from_sv(s):
+def kappa_from_singular_values(s):
+    """The rule of :func:`condition_number`: largest over smallest singular value, ``inf`` at most ``TOL`` apart (31).
+
+    Parameters
+    ----------
+    s : numpy.ndarray (..., k)
+        Singular values, descending (:func:`singular_values`).
+
+    Returns
+    -------
+    numpy.ndarray (...)
+
+    Examples
+    --------
+    >>> kappa_from_singular_values(np.array([[2.0, 1.0], [1.0, 1e-12]])).tolist()
+    [2.0, inf]
+    """
     smax, smin = s[..., 0], s[..., -1]
     singular = smin <= TOL * smax
     with np.errstate(divide="ignore", invalid="ignore"):
@@ -355,7 +381,7 @@ def det(A):
     A = _as_stack(A)
     n = A.shape[-1]
     if A.shape[-2] != n:
-        raise ValueError(f"A must be a stack of square matrices (..., n, n), got shape {A.shape}")
+        raise InputValueError(f"A must be a stack of square matrices (..., n, n), got shape {A.shape}")
     if n == 0:
         return np.ones(A.shape[:-2])
     with np.errstate(over="ignore", invalid="ignore"):

@@ -27,11 +27,12 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..errors import InputValueError
 from ..model import validation as V
 from ..model.backend import NUMERIC
 from ..model.platform import E
 from ..model.trig import trig_combination
-from .linalg import _left_null, null_space, rank
+from .linalg import left_null_space, null_space, rank
 
 __all__ = ["twist_constraints", "rank_F", "mobility", "admissible_twists"]
 
@@ -68,7 +69,7 @@ def twist_constraints(robot, beta):
     Et = E(NUMERIC).T
     parts, base_rank = [], 0
     for i, u in enumerate(robot.wheels):
-        N = _left_null(u._local_block(NUMERIC))  # (2, k_i), constant
+        N = left_null_space(u.local_block(NUMERIC))  # (2, k_i), constant
         base_rank += 2 - N.shape[1]             # rank L_i
         if N.shape[1] == 0:
             continue
@@ -157,7 +158,7 @@ def admissible_twists(robot, beta):
     robot = V.numeric_robot(robot)
     beta = robot.effective_beta(beta)
     if beta.ndim != 1:
-        raise ValueError(f"beta must be one configuration of shape ({robot.w},) for admissible_twists, "
+        raise InputValueError(f"beta must be one configuration of shape ({robot.w},) for admissible_twists, "
                          f"got shape {beta.shape}")
     A, _ = twist_constraints(robot, beta)
     if A.shape[0] == 0:

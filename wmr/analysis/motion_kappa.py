@@ -1,4 +1,4 @@
-r"""Conditioning along the motions a robot with steered wheels can make: :math:`\kappa(\mathbf J)` per instantaneous centre.
+r"""Conditioning along the motions a robot with steered wheels can make: :math:`\kappa(\mathbf J)` per centre.
 
 A robot with centred (or dual) wheels moves only in the configurations that make some twist
 admissible: every axle points at the instantaneous centre U (:func:`wmr.steering_angles`).  Over
@@ -7,7 +7,8 @@ translation makes :math:`\mathbf J` singular, Chapter 3), so the informative mea
 :math:`\kappa(\mathbf J)` (30), (56) along the admissible motions: a rotation about each point U,
 
 .. math:: \mathbf t = (\dot\psi, \dot{\mathbf c}) = (1,\ \mathbf E(\mathbf c - \mathbf U)),\qquad
-          \boldsymbol\beta = \boldsymbol\beta(\mathbf t),\qquad \kappa_U = \kappa\big(\mathbf J(\boldsymbol\beta, L)\big),
+          \boldsymbol\beta = \boldsymbol\beta(\mathbf t),\qquad
+          \kappa_U = \kappa\big(\mathbf J(\boldsymbol\beta, L)\big),
 
 with :math:`\mathbf c = \mathbf 0` (C is the origin of the body frame) and the characteristic length
 :math:`L` of :func:`wmr.characteristic_length`.  Translations are rotations about a point at
@@ -27,8 +28,8 @@ import numpy as np
 from ..model import validation as V
 from ..model.tolerance import near_zero
 from .isotropy import characteristic_length
-from .lines import circumcircle
 from .linalg import condition_number
+from .lines import circumcircle
 from .steering import steering_angles
 
 __all__ = ["rotation_twists", "motion_kappa", "mount_circle", "MotionMap", "motion_map"]

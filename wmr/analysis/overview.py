@@ -12,7 +12,8 @@ kind, which a grid or a random sample would almost surely miss, so the minimum o
 found; its maximum is the generic value.
 
 Characteristic length.  With :math:`a = \sum_i\|\mathbf d_i\|^2`, :math:`\mathbf b = \sum_i\mathbf E\mathbf d_i`,
-(34) reads :math:`\mathbf J_{L1}^T\mathbf J_{L1} = \begin{bmatrix}a/L^2 & \mathbf b^T/L\\ \mathbf b/L & w\mathbf 1\end{bmatrix}`,
+(34) reads
+:math:`\mathbf J_{L1}^T\mathbf J_{L1} = \begin{bmatrix}a/L^2 & \mathbf b^T/L\\ \mathbf b/L & w\mathbf 1\end{bmatrix}`,
 whose eigenvalues are :math:`w` and :math:`\mu_\pm` with :math:`\mu_+ + \mu_- = a/L^2 + w`,
 :math:`\mu_+\mu_- = (a/L^2)(w - \|\mathbf b\|^2/a)`; :math:`\kappa^2 = \mu_+/\mu_-` is smallest at
 :math:`a/L^2 = w`, i.e. at :func:`wmr.characteristic_length` :math:`L^2 = a/w` wherever C is, where
@@ -34,6 +35,7 @@ from .isotropy import characteristic_length
 from .linalg import condition_number, rank
 from .lines import AT_INFINITY, FINITE, lines_concurrency, planes_through, wheel_plane_lines
 from .mobility import rank_F
+from .singularities import classify
 from .steering import steering_angles
 from .sweep import Grid, Sample, sweep
 
@@ -115,8 +117,9 @@ def dead_zone_radius(robot):
     Returns
     -------
     float or None
-        d; None when some unit is not an offset wheel or the offsets differ (the locked units
-        then cannot be steered together).
+        d; None when some unit has no dead zone (it is not an offset wheel:
+        :meth:`~wmr.model.wheels.WheelUnit.dead_zone`) or the offsets differ (the locked units then
+        cannot be steered together).
 
     Examples
     --------
@@ -127,9 +130,10 @@ def dead_zone_radius(robot):
     True
     """
     robot = V.numeric_robot(robot)
-    if any(u.kind != "offset" for u in robot.wheels):
+    zones = [u.dead_zone() for u in robot.wheels]
+    if any(z is None for z in zones):
         return None
-    d = np.array([u.d for u in robot.wheels])
+    d = np.array(zones, dtype=float)
     return float(d[0]) if np.all(np.abs(d - d[0]) <= TOL * d.max()) else None
 
 
@@ -152,11 +156,10 @@ FAMILIES = {
 
 def _family(robot, beta):
     """Short name of the family of a singular configuration, from where its wheel-plane lines meet."""
-    if robot.w == 3 and robot.n_rates == 3 and all(u.kind == "centred" for u in robot.wheels):
-        from .singularities import classify
-        return classify(robot, beta).family
+    if robot.w == 3 and robot.n_rates == 3 and all(u.steered and u.rolls_in_plane for u in robot.wheels):
+        return classify(robot, beta).family                     # three centred wheels: the paper's families
     P, u = wheel_plane_lines(robot, beta)
-    lined = [k for k, unit in enumerate(robot.wheels) if unit.kind in ("centred", "dual", "fixed")]
+    lined = [k for k, unit in enumerate(robot.wheels) if unit.rolls_in_plane]     # their planes constrain
     if len(lined) < 2:
         return "other"
     meet = lines_concurrency(P[lined], u[lined])
@@ -199,7 +202,8 @@ def singular_families(robot, L=None):
     Returns
     -------
     list of dict
-        ``family`` (a short name), ``description`` (plain words), ``beta`` (w angles, radians), ``rank_J``, ``rank_F`` (ints); empty when
+        ``family`` (a short name), ``description`` (plain words), ``beta`` (w angles, radians), ``rank_J``,
+        ``rank_F`` (ints); empty when
         no candidate is singular (e.g. offset wheels, d > 0: J2 is invertible).
 
     Examples
@@ -215,7 +219,8 @@ def singular_families(robot, L=None):
     steered = np.array(robot.steered, dtype=bool)
     pts = robot.mount_points
     size = float(np.abs(pts).max()) or 1.0
-    fixed_dirs = [[-np.sin(u.angle), np.cos(u.angle)] for u, st in zip(robot.wheels, steered) if not st]
+    fixed_dirs = [[-np.sin(float(u.constant_angle)), np.cos(float(u.constant_angle))] for u in robot.wheels
+                  if u.constant_angle is not None]
     dirs = np.array([[1.0, 0.0], [0.0, 1.0], [0.6, 0.8]] + fixed_dirs)
     finite = np.array([[0.0, 0.0], *pts, [0.37 * size, 0.61 * size]])
     beta_inf = np.arctan2(-dirs[:, :1], dirs[:, 1:]) * np.ones(robot.w)      # j_i || direction, every unit
@@ -281,6 +286,10 @@ class Overview:
         :func:`dead_zone_radius`.
     singular : list of dict
         :func:`singular_families`.
+    steered : tuple of bool
+        :attr:`wmr.Robot.steered`: which units have a steering joint.
+    dead_zones : tuple of float or None
+        Each unit's :meth:`~wmr.model.wheels.WheelUnit.dead_zone`.
     """
 
     name: str
@@ -299,6 +308,8 @@ class Overview:
     advice: list = field(default_factory=list)
     dead_zone: float | None = None
     singular: list = field(default_factory=list)
+    steered: tuple = ()
+    dead_zones: tuple = ()
 
 
 def _campion(robot):
@@ -326,17 +337,15 @@ def _advice(robot, L):
                    f"{', '.join(map(str, rank_deficient))} drive their mount point through one direction only); "
                    "no choice of lengths makes it isotropic")
     elif not j2:
-        offs = [k for k, u in enumerate(robot.wheels, 1) if u.kind == "offset" and abs(u.d - u.r) > TOL * top]
-        if offs:
-            out.append(f"J2: set offset = radius on wheel {', '.join(map(str, offs))} (d = r, the paper's (46))")
+        hints: dict[str, list[str]] = {}                    # each unit's own advice, wheels grouped by it
+        for k, u in enumerate(robot.wheels, 1):
+            if u.isotropy_advice() is not None:
+                hints.setdefault(u.isotropy_advice(), []).append(str(k))
+        out += ["J2: " + hint.format(wheels=", ".join(ks)) for hint, ks in hints.items()]
         radii = sorted({float(u.r) for u in robot.wheels})
         if len(radii) > 1:
             out.append(f"J2: give every wheel the same radius (now {', '.join(f'{r:.4g}' for r in radii)})")
-        mec = [k for k, u in enumerate(robot.wheels, 1) if u.kind == "swedish" and abs(np.cos(float(u.roller))) > TOL]
-        if mec:
-            out.append(f"J2: use omni wheels (rollers at 90 deg) on wheel {', '.join(map(str, mec))}: a Swedish "
-                       "wheel's block r[[0, sin g], [-1, -cos g]] has singular values r sqrt(1 +- cos g)")
-        if not offs and not mec and len(radii) == 1:
+        if not hints and len(radii) == 1:
             out.append("J2: make the singular values of every unit's block equal ("
                        + "; ".join(f"wheel {k}: {', '.join(f'{x:.4g}' for x in s)}" for k, s in enumerate(sv, 1)) + ")")
     return out, {"J_L1": jl1, "J2": bool(j2)}
@@ -379,4 +388,5 @@ def overview(robot, grid=GRID_SIZE, twists=TWISTS, seed=0):
         rank_F_range=(int(ranks.min), int(ranks.max)), nullity_range=(n - int(ranks.max), n - int(ranks.min)),
         configurations=int(beta.shape[0]), L=float(L), kappa_JL1=float(condition_number(robot.J1(L=L))),
         kappa_J2=float(condition_number(robot.J2(np.zeros(robot.w)))), kappa_J_range=(float(kj.min), float(kj.max)),
-        isotropic=iso, advice=advice, dead_zone=dead_zone_radius(robot), singular=singular_families(robot, L))
+        isotropic=iso, advice=advice, dead_zone=dead_zone_radius(robot), singular=singular_families(robot, L),
+        steered=robot.steered, dead_zones=tuple(u.dead_zone() for u in robot.wheels))

@@ -5,8 +5,10 @@ model's definitions, :math:`\mathbf J_2 = \mathrm{blockdiag}(\mathbf R(\beta_i)\
 :math:`\mathbf R(\beta)` of (11) written out with ``np.cos`` and ``np.sin`` and multiplied by the
 unit's local block, :math:`\mathbf F = [\mathbf J_1\ -\mathbf J_2]` (24),
 :math:`\mathbf J = \mathbf J_{L1}^T\mathbf J_2` (56); every rank and condition number comes from a
-full SVD with the rule of :mod:`wmr.model.tolerance` (ranks of the matrix with unit-length columns) (the same two lines of
-:mod:`wmr.analysis.linalg` that turn singular values into a rank or a condition number); kinematics are pseudo-inverse solutions
+full SVD with the rule of :mod:`wmr.model.tolerance` (ranks of the matrix with unit-length columns) (the same
+two lines of :mod:`wmr.analysis.linalg` that turn singular values into a rank or a condition number:
+:func:`~wmr.analysis.linalg.rank_from_singular_values`, :func:`~wmr.analysis.linalg.kappa_from_singular_values`);
+kinematics are pseudo-inverse solutions
 of the whole system (21).  The tests and ``make bench`` compare the batched kernels
 (:meth:`wmr.Robot.J`, :func:`wmr.rank_F`, :func:`wmr.analysis.linalg.det`,
 :func:`wmr.condition_number`, :func:`wmr.forward`, :func:`wmr.inverse`) with these on random,
@@ -16,10 +18,11 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..errors import InputValueError
 from ..model import validation as V
 from ..model.backend import NUMERIC
 from ..model.tolerance import near_zero
-from .linalg import _kappa_from_sv, _rank_from_sv, column_norms
+from .linalg import column_norms, kappa_from_singular_values, rank_from_singular_values
 
 __all__ = ["J2", "F", "J", "rank", "rank_F", "det", "condition_number", "forward", "inverse"]
 
@@ -42,10 +45,11 @@ def J2(robot, beta):
     beta = V.finite_array("beta", beta, last=robot.w)
     out = np.zeros(beta.shape[:-1] + (2 * robot.w, robot.n_rates))
     for i, (u, sl) in enumerate(zip(robot.wheels, robot.rate_slices)):
-        b = beta[..., i] if u.steered else np.full(beta.shape[:-1], float(u.angle))    # unsteered: own angle
+        own = u.constant_angle                                                 # unsteered: own angle
+        b = beta[..., i] if own is None else np.full(beta.shape[:-1], float(own))
         c, s = np.cos(b), np.sin(b)
         R = np.stack([np.stack([c, -s], -1), np.stack([s, c], -1)], -2)        # (11)
-        out[..., 2 * i:2 * i + 2, sl] = R @ np.asarray(u._local_block(NUMERIC), dtype=float)
+        out[..., 2 * i:2 * i + 2, sl] = R @ np.asarray(u.local_block(NUMERIC), dtype=float)
     return out
 
 
@@ -88,14 +92,15 @@ def J(robot, beta, L=1.0):
 def _matrices(A, square=False):
     A = V.finite_array("A", A)
     if A.ndim < 2 or min(A.shape[-2:]) == 0 or (square and A.shape[-1] != A.shape[-2]):
-        raise ValueError(f"A must have shape (..., m, n) with m, n >= 1{' and m = n' if square else ''}, got {A.shape}")
+        raise InputValueError(f"A must have shape (..., m, n) with m, n >= 1{' and m = n' if square else ''}, "
+                              f"got {A.shape}")
     return A
 
 
 @np.errstate(over="ignore", invalid="ignore")
 def _finite(name, *results):
     if not all(np.isfinite(r).all() for r in results):
-        raise ValueError(f"{name} is too large: the result overflows double precision")
+        raise InputValueError(f"{name} is too large: the result overflows double precision")
     return results[0] if len(results) == 1 else results
 
 
@@ -107,7 +112,9 @@ def _sv(A):
 
 
 def rank(A):
-    """Rank from a full SVD by the package's rule (columns divided by their lengths, then singular values above ``TOL * s_max``).
+    """Rank from a full SVD by the package's rule.
+
+    The columns are divided by their lengths, then the singular values above ``TOL * s_max`` counted.
 
     Parameters
     ----------
@@ -118,7 +125,7 @@ def rank(A):
     numpy.ndarray of int (...)
     """
     A = _matrices(A)
-    return _rank_from_sv(_sv(A / column_norms(A)[..., None, :]))
+    return rank_from_singular_values(_sv(A / column_norms(A)[..., None, :]))
 
 
 def rank_F(robot, beta):
@@ -162,7 +169,7 @@ def condition_number(A):
     -------
     numpy.ndarray (...)
     """
-    return _kappa_from_sv(_sv(A))
+    return kappa_from_singular_values(_sv(A))
 
 
 @np.errstate(over="ignore", invalid="ignore")       # overflow is checked on the results
@@ -196,11 +203,12 @@ def forward(robot, beta, rates):
 
 @np.errstate(over="ignore", invalid="ignore")
 def inverse(robot, beta, twist, beta_dot=None):
-    r"""Joint rates from the pseudo-inverse of the whole system, dual-wheel steering rows appended.
+    r"""Joint rates from the pseudo-inverse of the whole system, the units' steering rows appended.
 
     Solves, in the least-squares sense, :math:`\mathbf J_2\dot{\boldsymbol\theta} = \mathbf J_1\mathbf t`
-    together with one row per dual-wheel unit, the corrected (15):
-    :math:`-\tfrac{r}{2b}(\dot\theta_{i1} - \dot\theta_{i2}) = \dot\psi + \dot\beta_i`.
+    together with one row :math:`\mathbf c_i\dot{\boldsymbol\theta}_i = \dot\psi + \dot\beta_i` per unit
+    whose rates steer it (:meth:`~wmr.model.wheels.WheelUnit.steering_row`): for a dual wheel the
+    corrected (15), :math:`-\tfrac{r}{2b}(\dot\theta_{i1} - \dot\theta_{i2}) = \dot\psi + \dot\beta_i`.
 
     Parameters
     ----------
@@ -208,7 +216,7 @@ def inverse(robot, beta, twist, beta_dot=None):
     beta : array_like (..., w)
     twist : array_like (..., 3)
     beta_dot : array_like (..., w), optional
-        Steering rates wanted of dual-wheel units (default 0).
+        Steering rates wanted of the units with a steering row (dual wheels; default 0).
 
     Returns
     -------
@@ -227,9 +235,10 @@ def inverse(robot, beta, twist, beta_dot=None):
     rows, rhs = [np.broadcast_to(B, batch + B.shape[-2:])], [np.broadcast_to(v, batch + v.shape[-1:])]
     bd = np.zeros(robot.w) if beta_dot is None else beta_dot
     for i, (u, sl) in enumerate(zip(robot.wheels, robot.rate_slices)):
-        if u.kind == "dual":
+        c = u.steering_row()                                # c theta_i = psi_dot + beta_dot_i, e.g. (15)
+        if c is not None:
             row = np.zeros(robot.n_rates)
-            row[sl] = [-u.r / (2 * u.b), u.r / (2 * u.b)]
+            row[sl] = c
             rows.append(np.broadcast_to(row, batch + (1, robot.n_rates)))
             rhs.append(np.broadcast_to(twist[..., :1] + bd[..., i:i + 1], batch + (1,)))
     A, y = np.concatenate(rows, axis=-2), np.concatenate(rhs, axis=-1)

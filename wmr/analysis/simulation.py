@@ -14,7 +14,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..errors import InputTypeError, InputValueError
 from ..model import validation as V
+from ..model.robot import Robot
 from .kinematics import forward
 
 __all__ = ["Trajectory", "simulate", "MAX_STEPS"]
@@ -38,7 +40,7 @@ class Trajectory:
         Norm of the residual of (21): zero when the commanded rates were compatible.
     """
 
-    robot: object
+    robot: Robot
     t: np.ndarray
     pose: np.ndarray
     beta: np.ndarray
@@ -70,7 +72,7 @@ class Trajectory:
             X = c * p[..., 0] - s * p[..., 1] + XY[:, 0].reshape(shape)
             Y = s * p[..., 0] + c * p[..., 1] + XY[:, 1].reshape(shape)
         if not (np.isfinite(X).all() and np.isfinite(Y).all()):
-            raise ValueError(f"body_points are too large: their fixed-frame positions overflow "
+            raise InputValueError(f"body_points are too large: their fixed-frame positions overflow "
                              f"(largest |body_points| = {np.abs(p).max():.3g})")
         return np.stack([X, Y], axis=-1)
 
@@ -90,10 +92,10 @@ class Trajectory:
         """
         i = V.integer("i", i)
         if not -self.robot.w <= i < self.robot.w:
-            raise ValueError(f"i must be a unit index in 0..{self.robot.w - 1}, got {i}")
+            raise InputValueError(f"i must be a unit index in 0..{self.robot.w - 1}, got {i}")
         pts = self.robot.wheels[i].points(self.beta[:, i])
         if not isinstance(key, str) or key not in pts:
-            raise (TypeError if not isinstance(key, str) else ValueError)(
+            raise (InputTypeError if not isinstance(key, str) else InputValueError)(
                 f"key must be one of {sorted(pts)}, got {V.show(key)}")
         return self.world(pts[key])
 
@@ -101,7 +103,7 @@ class Trajectory:
 def _one(name, value, size):
     arr = V.finite_array(name, value, last=size)
     if arr.ndim != 1:
-        raise ValueError(f"{name} must be one vector of shape ({size},), got shape {arr.shape}")
+        raise InputValueError(f"{name} must be one vector of shape ({size},), got shape {arr.shape}")
     return arr
 
 
@@ -163,13 +165,13 @@ def simulate(robot, rates, beta0, t_end, dt, steer=None, pose0=(0.0, 0.0, 0.0), 
     with np.errstate(over="ignore"):
         steps = np.ceil(t_end / dt - 1e-9)
     if not steps <= max_steps:
-        raise ValueError(f"dt = {dt!r} needs {steps:.3g} steps to reach t_end = {t_end!r}, more than "
+        raise InputValueError(f"dt = {dt!r} needs {steps:.3g} steps to reach t_end = {t_end!r}, more than "
                          f"max_steps = {max_steps}: take a larger dt (or raise max_steps)")
     rate_fn = _as_input(rates, robot.n_rates, "rates")
     steer_fn = _as_input(np.zeros(robot.w) if steer is None else steer, robot.w, "steer")
 
     def overflow(t):
-        return ValueError(f"rates or steer are too large for this run: the pose or the steering angles overflow "
+        return InputValueError(f"rates or steer are too large for this run: the pose or the steering angles overflow "
                           f"at t = {t:.6g}")
 
     def deriv(t, pose, beta):
@@ -190,8 +192,8 @@ def simulate(robot, rates, beta0, t_end, dt, steer=None, pose0=(0.0, 0.0, 0.0), 
     n = max(1, int(steps))                          # steps of t_end / n <= dt: the run ends at t_end
     dt = t_end / n
     ts = np.arange(n + 1) * dt
-    pose = np.empty((n + 1, 3)); beta = np.empty((n + 1, robot.w))
-    twist = np.empty((n + 1, 3)); slip = np.empty(n + 1)
+    pose, beta = np.empty((n + 1, 3)), np.empty((n + 1, robot.w))
+    twist, slip = np.empty((n + 1, 3)), np.empty(n + 1)
     pose[0], beta[0] = pose0, beta0
     with np.errstate(over="ignore", invalid="ignore"):     # an overflow is detected and reported by deriv
         for k in range(n):
@@ -205,5 +207,5 @@ def simulate(robot, rates, beta0, t_end, dt, steer=None, pose0=(0.0, 0.0, 0.0), 
             beta[k + 1] = b + dt / 6 * (k1b + 2 * k2b + 2 * k3b + k4b)
         _, _, twist[n], slip[n] = deriv(ts[n], pose[n], beta[n])
     if not (np.isfinite(pose).all() and np.isfinite(beta).all() and np.isfinite(slip).all()):
-        raise ValueError(f"rates are too large for t_end = {t_end!r}: the pose overflows double precision")
+        raise InputValueError(f"rates are too large for t_end = {t_end!r}: the pose overflows double precision")
     return Trajectory(robot, ts, pose, beta, twist, slip)

@@ -39,69 +39,33 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
-import sympy as sp
 
+from ..errors import InputValueError
 from ..model import validation as V
 from ..model.platform import wrap_angle
 from ..model.tolerance import TOL, near_zero
-from .lines import (AT_INFINITY, COINCIDENT, FINITE, NONE, Concurrency, axles_concurrency, axles_through,
-                    circumcircle, concurrency_point, pair_intersections, wheel_plane_lines)
+from .det_exact import characterisation, det_J_polynomial, det_J_symbolic, exact_zero, plane_line_matrix
 from .linalg import det
+from .lines import (
+    AT_INFINITY,
+    COINCIDENT,
+    FINITE,
+    NONE,
+    Concurrency,
+    axles_concurrency,
+    axles_through,
+    circumcircle,
+    concurrency_point,
+    pair_intersections,
+    wheel_plane_lines,
+)
 from .mobility import rank_F
+from .square import default_L, exact_robot, require_square
 
 __all__ = ["det_J", "det_J_scale", "is_singular", "Classification", "classify", "singular_motions",
-           "exact_robot", "numeric_robot"]
-
-#: the exact (SymPy) side of det J lives in wmr.analysis.det_exact; these names are reached from here too
-_EXACT = ("det_J_symbolic", "det_J_polynomial", "exact_zero", "plane_line_matrix", "characterisation")
-
-
-def __getattr__(name):
-    if name in _EXACT:
-        from . import det_exact
-        return getattr(det_exact, name)
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-
-
-def _require_square(robot):
-    V.robot(robot)
-    if robot.n_rates != 3 or robot.w != 3:
-        raise ValueError(
-            f"det J needs a square J (three centred wheels, n_rates = 3); got a robot with w = {robot.w}, "
-            f"n_rates = {robot.n_rates} (for dual wheels analyse the kinematically equivalent centred robot)")
-
-
-def _default_L(robot, L, numeric=True):
-    if L is not None:
-        L = V.positive("L", L)
-        return V.number("L", L) if numeric else L
-    from .isotropy import characteristic_length
-    if V.free_symbols(V.robot(robot)):
-        raise ValueError(f"L must be given explicitly for a robot with symbolic mount points, got L = None for {V.show(robot)}")
-    return characteristic_length(robot)
-
-
-def exact_robot(robot):
-    r"""The same robot with exact (SymPy) mount coordinates and radii, for symbolic checks.
-
-    Parameters
-    ----------
-    robot : Robot
-        Numeric (floats are made exact with ``nsimplify`` over :math:`\sqrt2, \sqrt3`) or symbolic (returned as is).
-
-    Returns
-    -------
-    Robot
-    """
-    import dataclasses
-    from ..model.robot import Robot
-    if V.robot(robot).is_symbolic:
-        return robot
-    ns = [sp.sqrt(2), sp.sqrt(3)]
-    units = [dataclasses.replace(u, position=tuple(sp.nsimplify(v, ns) for v in u.position),
-                                 r=sp.nsimplify(u.r, ns)) for u in robot.wheels]
-    return Robot(units, name=robot.name)
-
+           "exact_robot", "numeric_robot", "require_square",
+           # the exact side of det J, from wmr.analysis.det_exact
+           "det_J_symbolic", "det_J_polynomial", "exact_zero", "plane_line_matrix", "characterisation"]
 
 def numeric_robot(robot):
     """The same robot with float coordinates and radii (from an exact one).
@@ -143,8 +107,8 @@ def det_J(robot, beta, L=None):
     True
     """
     robot = V.numeric_robot(robot)
-    _require_square(robot)
-    return det(robot.J(beta, L=_default_L(robot, L)))                 # closed form, batched
+    require_square(robot)
+    return det(robot.J(beta, L=default_L(robot, L)))                 # closed form, batched
 
 
 def det_J_scale(robot, beta, L=None):
@@ -163,8 +127,8 @@ def det_J_scale(robot, beta, L=None):
     numpy.ndarray (...)
     """
     robot = V.numeric_robot(robot)
-    _require_square(robot)
-    J = robot.J(beta, L=_default_L(robot, L))
+    require_square(robot)
+    J = robot.J(beta, L=default_L(robot, L))
     return np.prod(np.linalg.norm(J, axis=-2), axis=-1)
 
 
@@ -246,11 +210,11 @@ def classify(robot, beta, L=None):
     -------
     Classification
     """
-    _require_square(robot)
+    require_square(robot)
     robot = V.numeric_robot(robot)
     beta = robot.effective_beta(beta)
     if beta.ndim != 1:
-        raise ValueError(f"beta must be one configuration of shape (3,) for classify, got shape {beta.shape}")
+        raise InputValueError(f"beta must be one configuration of shape (3,) for classify, got shape {beta.shape}")
     dj = float(det_J(robot, beta, L))
     sing = bool(is_singular(robot, beta, L))
     rk = int(rank_F(robot, beta))
@@ -301,7 +265,7 @@ def singular_motions(robot, beta1):
     family : list of str
         From :func:`classify`.
     """
-    _require_square(robot)
+    require_square(robot)
     robot = V.numeric_robot(robot)
     beta1 = V.number("beta1", beta1)
     rows = []

@@ -14,13 +14,15 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..errors import InputValueError
 from ..model import validation as V
 from ..model.platform import point_velocity
 from ..model.tolerance import TOL
 from ._batch import for_chunks
 from .lines import AT_INFINITY, FINITE, STILL
 
-__all__ = ["InstantCentre", "instantaneous_centre", "steering_angles", "centre_to_wheels", "FINITE", "AT_INFINITY", "STILL"]
+__all__ = ["InstantCentre", "instantaneous_centre", "steering_angles", "centre_to_wheels", "FINITE", "AT_INFINITY",
+           "STILL"]
 
 
 @dataclass(frozen=True)
@@ -94,7 +96,8 @@ def instantaneous_centre(twist, length=None):
         sign = np.where(kind == FINITE, np.sign(psi), 1.0)
         direction = (sign / np.where(speed == 0, 1.0, speed))[..., None] * (Ec / m[..., None])
     if not np.isfinite(point[kind == FINITE]).all():
-        raise ValueError("twist has a centre |c_dot| / |psi_dot| beyond double precision: give length (the robot's "
+        raise InputValueError("twist has a centre |c_dot| / |psi_dot| beyond double precision: give length (the "
+                              "robot's "
                          "size) to call it at infinity")
     point = np.where((kind == AT_INFINITY)[..., None], np.inf, point)
     point = np.where((kind == STILL)[..., None], np.nan, point)
@@ -146,8 +149,8 @@ def steering_angles(robot, twist, current=None):
     cur = None if current is None else np.broadcast_to(current, batch + (w,)).reshape(-1, w)
     d = robot.mount_points                                             # (w, 2)
     dmax = float(np.abs(d).max())
-    keep = np.array([u.kind not in ("centred", "dual") for u in robot.wheels])
-    own = [(i, float(u.angle)) for i, u in enumerate(robot.wheels) if not u.steered]
+    keep = np.array([not (u.steered and u.rolls_in_plane) for u in robot.wheels])    # free, or their own angle
+    own = [(i, float(u.constant_angle)) for i, u in enumerate(robot.wheels) if u.constant_angle is not None]
     N = tw.shape[0]
     beta = np.empty((N, w))
 
@@ -171,7 +174,7 @@ def steering_angles(robot, twist, current=None):
 
 
 def centre_to_wheels(twist, d):
-    r""":math:`\mathbf u_i = \tfrac1{\dot\psi}\mathbf E\dot{\mathbf c} - \mathbf d_i` (64): vectors from the mount points to U.
+    r"""Vectors from the mount points to U, :math:`\mathbf u_i = \mathbf E\dot{\mathbf c}/\dot\psi - \mathbf d_i` (64).
 
     Parameters
     ----------
@@ -192,5 +195,5 @@ def centre_to_wheels(twist, d):
     ic = instantaneous_centre(twist, length=float(np.abs(d).max()) or None)
     if np.any(ic.kind != FINITE):
         bad = np.asarray(twist)[ic.kind != FINITE][:1].tolist()
-        raise ValueError(f"u_i needs a finite instantaneous centre (psi_dot != 0); got twist {bad}")
+        raise InputValueError(f"u_i needs a finite instantaneous centre (psi_dot != 0); got twist {bad}")
     return ic.point[..., None, :] - d

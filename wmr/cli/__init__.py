@@ -4,9 +4,12 @@ Each command lives in its own module of this package (one file per command) and 
 
 * ``HELP``: one line for ``wmr --help``;
 * ``add_arguments(parser)``: its options (an :class:`argparse.ArgumentParser`);
-* ``run(args) -> int``: the exit status (0 ok).  Bad input raises ``ValueError`` or ``TypeError``
-  (an unreadable file ``OSError``); :func:`main` turns it into one line on stderr,
-  ``wmr COMMAND: message``, and exit status 2, without a traceback.
+* ``run(args) -> int``: the exit status (0 ok).  Bad input raises an :class:`~wmr.errors.InputError`
+  (a malformed robot file :class:`~wmr.errors.RobotFileError`, an unreadable file ``OSError``; an
+  optional package a file format needs and that is missing, :class:`~wmr.errors.MissingDependencyError`);
+  :func:`main` turns it into one line on stderr, ``wmr COMMAND: message``, and exit status 2,
+  without a traceback.  Any other exception is a bug in wmr: :func:`main` prints its traceback
+  and a one-line request to report it, and returns 1.
 
 :data:`COMMANDS` lists them in the order ``wmr --help`` shows.
 """
@@ -15,6 +18,9 @@ from __future__ import annotations
 import argparse
 import importlib
 import sys
+import traceback
+
+from ..errors import InputError, MissingDependencyError
 
 __all__ = ["COMMANDS", "main"]
 
@@ -24,6 +30,8 @@ COMMANDS = {
     "ik": "ik",
     "fk": "fk",
     "sweep": "sweep",
+    "simulate": "simulate",
+    "convert": "convert",
 }
 
 
@@ -71,12 +79,17 @@ def main(argv=None):
     Returns
     -------
     int
-        Exit status.
+        Exit status: 0 ok, 2 bad input (one line on stderr), 1 a bug in wmr (its traceback on stderr).
     """
     args = _parser().parse_args(sys.argv[1:] if argv is None else argv)
     mod = importlib.import_module(f"{__name__}.{COMMANDS[args.command]}")
     try:
         return mod.run(args)
-    except (ValueError, TypeError, OSError) as exc:               # bad input: one line, no traceback
+    except (InputError, MissingDependencyError, OSError) as exc:  # bad input, a missing extra: one line
         print(f"wmr {args.command}: {' '.join(str(exc).split())}", file=sys.stderr)
         return 2
+    except Exception:                                             # a bug in wmr: show it, ask for a report
+        traceback.print_exc()
+        print(f"wmr {args.command}: internal error: this is a bug in wmr, not a problem with your input; please "
+              f"report it with the command line and the robot file", file=sys.stderr)
+        return 1

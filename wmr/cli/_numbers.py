@@ -3,17 +3,19 @@ from __future__ import annotations
 
 import math
 
+from ..errors import InputValueError
+
 __all__ = ["number", "numbers", "fmt", "clean"]
 
 
 def number(text, option):
-    """``text`` as a finite float, or ValueError naming ``option``."""
+    """``text`` as a finite float, or an input error naming ``option``."""
     try:
         x = float(text)
     except (TypeError, ValueError):
-        raise ValueError(f"{option} must be a number, got {text!r}") from None
+        raise InputValueError(f"{option} must be a number, got {text!r}") from None
     if not math.isfinite(x):
-        raise ValueError(f"{option} must be a finite number, got {text!r}")
+        raise InputValueError(f"{option} must be a finite number, got {text!r}")
     return x
 
 
@@ -22,7 +24,7 @@ def numbers(items, option, count, what):
     parts = [p for item in items for p in str(item).replace(",", " ").split()]
     values = [number(p, option) for p in parts]
     if len(values) != count:
-        raise ValueError(f"{option} needs {count} values ({what}), got {len(values)}: {' '.join(parts)!r}")
+        raise InputValueError(f"{option} needs {count} values ({what}), got {len(values)}: {' '.join(parts)!r}")
     return values
 
 
@@ -34,6 +36,7 @@ def fmt(x, digits=6):
 def clean(values, scale):
     """``values`` with the entries at most ``TOL * scale`` set to 0 (rounding noise, for display)."""
     import numpy as np
+
     from ..model.tolerance import near_zero
     values = np.asarray(values, dtype=float)
     return np.where(near_zero(values, scale), 0.0, values)

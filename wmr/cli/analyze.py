@@ -33,12 +33,14 @@ def add_arguments(parser):
     """
     from ..analysis.overview import GRID_SIZE, TWISTS
     parser.add_argument("robot", help="robot file (TOML)")
+    parser.add_argument("--wheel-joints", metavar="NAMES", help="URDF only: the wheel joints, NAME[=RADIUS],...")
     parser.add_argument("--json", action="store_true", help="print JSON instead of a table")
     parser.add_argument("--grid", type=int, default=GRID_SIZE, metavar="N",
                         help=f"about N grid configurations of the steered angles (default {GRID_SIZE})")
     parser.add_argument("--twists", type=int, default=TWISTS, metavar="N",
                         help=f"add the steering angles of N random twists (default {TWISTS})")
-    parser.add_argument("--seed", type=int, default=0, help="seed of the random twists and of the generic configuration")
+    parser.add_argument("--seed", type=int, default=0,
+                        help="seed of the random twists and of the generic configuration")
 
 
 def _num(x):
@@ -65,7 +67,8 @@ def as_json(ov):
             "class": c["label"],
             "rank_F": {"generic": ov.rank_F, "min": ov.rank_F_range[0], "max": ov.rank_F_range[1]},
             "nullity": {"generic": ov.nullity, "min": ov.nullity_range[0], "max": ov.nullity_range[1]},
-            "configurations": ov.configurations, "L": ov.L, "kappa_J_L1": _num(ov.kappa_JL1), "kappa_J2": _num(ov.kappa_J2),
+            "configurations": ov.configurations, "L": ov.L, "kappa_J_L1": _num(ov.kappa_JL1),
+            "kappa_J2": _num(ov.kappa_J2),
             "kappa_J": {"min": _num(ov.kappa_J_range[0]), "max": _num(ov.kappa_J_range[1])},
             "isotropic": dict(ov.isotropic), "advice": list(ov.advice), "dead_zone": ov.dead_zone,
             "singular": [{"family": f["family"], "description": f["description"],
@@ -84,7 +87,7 @@ def table(ov):
     -------
     str
     """
-    counts = {}
+    counts: dict[str, int] = {}
     for k in ov.kinds:
         counts[k] = counts.get(k, 0) + 1
     c = ov.campion
@@ -100,10 +103,9 @@ def table(ov):
     if ov.dead_zone is not None:
         rows.append(("dead zone", f"radius {ov.dead_zone:.4g}: C's circle when the units are steered without driving "
                                   "(drift-free only for offset 0)"))
-    if any(k == "offset" for k in ov.kinds) and ov.dead_zone is None and all(k == "offset" for k in ov.kinds):
+    if ov.dead_zone is None and ov.dead_zones and all(z is not None for z in ov.dead_zones):
         rows.append(("dead zone", "none: the offsets differ, the locked units cannot be steered together"))
-    steered = any(k in ("centred", "dual", "offset") for k in ov.kinds)
-    if steered and not ov.singular:
+    if any(ov.steered) and not ov.singular:
         rows.append(("singular", "none found: rank J = 3 at every candidate"))
     for n, f in enumerate(ov.singular):
         beta = ", ".join(f"{math.degrees(b):.4g}" for b in f["beta"])
@@ -127,11 +129,12 @@ def run(args):
     Returns
     -------
     int
-        0; bad input raises ValueError or TypeError (:func:`wmr.cli.main` reports it in one line, status 2).
+        0; bad input raises an input error (:mod:`wmr.errors`; :func:`wmr.cli.main` reports it in one line, status 2).
     """
     import wmr
+
     from ..analysis.overview import overview
-    robot = wmr.load(args.robot)
+    robot = wmr.load(args.robot, wheel_joints=args.wheel_joints)
     ov = overview(robot, grid=args.grid, twists=args.twists, seed=args.seed)
     print(json.dumps(as_json(ov), indent=2) if args.json else table(ov))
     return 0

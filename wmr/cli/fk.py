@@ -1,4 +1,5 @@
-"""``wmr fk ROBOT.toml --angles DEG [DEG ...] --rates RATE [RATE ...]``: the platform twist from steering angles and wheel rates.
+"""``wmr fk ROBOT.toml --angles DEG [DEG ...] --rates RATE [RATE ...]``: the platform twist from steering angles and
+wheel rates.
 
 Examples::
 
@@ -55,7 +56,7 @@ def run(args):
     Returns
     -------
     int
-        0; bad input raises ValueError or TypeError (:func:`wmr.cli.main` reports it in one line, status 2).
+        0; bad input raises an input error (:mod:`wmr.errors`; :func:`wmr.cli.main` reports it in one line, status 2).
     """
     import wmr
     robot = wmr.load(args.robot)

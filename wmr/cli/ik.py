@@ -57,8 +57,12 @@ def _wrap(a):
 
 
 def _nearest(robot, beta, current):
-    """Per unit, beta or beta + pi (the rate reversed), whichever is nearer the current angle (centred, dual units)."""
-    turnable = np.array([u.kind in ("centred", "dual") for u in robot.wheels])
+    """Per unit, beta or beta + pi (the rate reversed), whichever is nearer the current angle.
+
+    For steered units that roll in their wheel plane (centred and dual wheels): both angles put the
+    plane along the mount point's velocity.
+    """
+    turnable = np.array([u.steered and u.rolls_in_plane for u in robot.wheels])
     flip = turnable & (np.abs(_wrap(beta + np.pi - current)) < np.abs(_wrap(beta - current)))
     return _wrap(np.where(flip, beta + np.pi, beta))
 
@@ -77,7 +81,7 @@ def run(args):
     Returns
     -------
     int
-        0; bad input raises ValueError or TypeError (:func:`wmr.cli.main` reports it in one line, status 2).
+        0; bad input raises an input error (:mod:`wmr.errors`; :func:`wmr.cli.main` reports it in one line, status 2).
     """
     import wmr
     robot = wmr.load(args.robot)

@@ -18,6 +18,8 @@ import math
 import sys
 import time
 
+from ..errors import InputValueError
+
 HELP = "evaluate rank F, mobility, det J or a condition number over a grid or a sample of steering angles"
 
 
@@ -59,9 +61,9 @@ def _number(text, name):
     try:
         value = float(text)
     except ValueError:
-        raise ValueError(f"--{name} must be a number, got {text!r}") from None
+        raise InputValueError(f"--{name} must be a number, got {text!r}") from None
     if not value.is_integer() or value < 1:
-        raise ValueError(f"--{name} must be a positive whole number, got {text!r}")
+        raise InputValueError(f"--{name} must be a positive whole number, got {text!r}")
     return int(value)
 
 
@@ -69,7 +71,7 @@ def _level(text):
     try:
         return float(text)
     except ValueError:
-        raise ValueError(f"--quantiles must be numbers in [0, 1] separated by commas, got {text!r}") from None
+        raise InputValueError(f"--quantiles must be numbers in [0, 1] separated by commas, got {text!r}") from None
 
 
 def _angles(args, w):
@@ -109,7 +111,7 @@ def _client(spec):
         from dask.distributed import Client, LocalCluster
     except ImportError:
         from .._version import DISTRIBUTION
-        raise ValueError(f"--dask needs dask and distributed: pip install '{DISTRIBUTION}[dask]'") from None
+        raise InputValueError(f"--dask needs dask and distributed: pip install '{DISTRIBUTION}[dask]'") from None
     if spec.startswith("local"):
         n = _number(spec.partition(":")[2] or "2", "dask local:N")
         cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True, dashboard_address=":0")
@@ -139,9 +141,10 @@ def run(args):
     Returns
     -------
     int
-        0; bad input raises ValueError or TypeError (:func:`wmr.cli.main` reports it in one line, status 2).
+        0; bad input raises an input error (:mod:`wmr.errors`; :func:`wmr.cli.main` reports it in one line, status 2).
     """
     import wmr
+
     from ..analysis.sweep import sweep
     client = cluster = None
     try:

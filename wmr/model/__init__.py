@@ -1,18 +1,20 @@
 r"""The model: what a wheeled mobile robot *is* (no analysis here).
 
-==============================  ===================================================================================================
+==============================  ==================================================================================
 :mod:`~wmr.model.backend`       the two backends (NumPy numbers, SymPy symbols) every matrix is built with
-:mod:`~wmr.model.tolerance`     the one numerical tolerance
-:mod:`~wmr.model.validation`    input checks: ``TypeError`` for the wrong kind, ``ValueError`` for a bad value
+:mod:`~wmr.model.tolerance`     the one numerical tolerance, and the column scaling ranks are decided with
+:mod:`~wmr.model.checks`        input checks of scalars, points and flags (:mod:`wmr.errors`: wrong kind, bad value)
 :mod:`~wmr.model.arrays`        the same for arrays (finite batches, SymPy vectors and matrices)
-:mod:`~wmr.model.platform`      the rigid platform: :math:`\mathbf E`, rotations, :math:`[\mathbf E\mathbf d_i\ \mathbf 1]` (2)-(5)
-:mod:`~wmr.model.wheels`        wheel units, each a block of :math:`\mathbf J_2`
-:mod:`~wmr.model.wheels_fixed`  wheels without a steering joint: fixed and Swedish (omni, mecanum)
-:mod:`~wmr.model.wheel_base`    what every wheel unit shares
-:mod:`~wmr.model.robot`         the assembled robot: :math:`\mathbf J_1`, :math:`\mathbf J_2`, :math:`\mathbf F`, :math:`\mathbf J`
+:mod:`~wmr.model.robot_checks`  the same for robots
+:mod:`~wmr.model.validation`    every input check under one name (what the analyses import)
+:mod:`~wmr.model.platform`      the platform: :math:`\mathbf E`, rotations, :math:`[\mathbf E\mathbf d_i\ \mathbf 1]`
+:mod:`~wmr.model.trig`          batched sums of :math:`\cos\beta_i` and :math:`\sin\beta_i` terms
+:mod:`~wmr.model.wheels`        wheel units, each a block of :math:`\mathbf J_2`; a module per kind, answering for it
+:mod:`~wmr.model.robot`         the assembled robot: :math:`\mathbf J_1, \mathbf J_2, \mathbf F, \mathbf J`
 :mod:`~wmr.model.robots`        ready-made robots (the paper's three-wheel robots among them)
-:mod:`~wmr.model.conventions`   frames, signs and numbering, stated once
-==============================  ===================================================================================================
+:mod:`~wmr.model.conventions`   frames, signs, numbering and the layout of the project, stated once
+==============================  ==================================================================================
 """
 
-__all__ = ["backend", "tolerance", "validation", "arrays", "platform", "wheel_base", "wheels", "wheels_fixed", "robot", "robots", "conventions"]
+__all__ = ["backend", "tolerance", "checks", "arrays", "robot_checks", "validation", "platform", "trig", "wheels",
+           "robot", "robots", "conventions"]

@@ -8,7 +8,7 @@ Examples
 >>> finite_array("beta", ["0.7", "0.1"])
 Traceback (most recent call last):
     ...
-TypeError: beta must be an array of real numbers, got strings: ['0.7', '0.1']
+wmr.errors.InputTypeError: beta must be an array of real numbers, got strings: ['0.7', '0.1']
 """
 from __future__ import annotations
 
@@ -17,7 +17,8 @@ import numbers
 import numpy as np
 import sympy as sp
 
-from .validation import _kind_error, _to_float, real, show
+from ..errors import InputTypeError, InputValueError
+from .checks import finite_float, kind_error, real, show
 
 __all__ = ["finite_array", "batch_shape", "symbolic_vector", "symbolic_matrix"]
 
@@ -28,11 +29,11 @@ def _object_array(name, raw, value):
     flat = out.reshape(-1)
     for k, v in enumerate(raw.flat):
         if isinstance(v, sp.Basic):
-            raise TypeError(f"{name} must be an array of numbers, got SymPy entries in {show(value)} "
+            raise InputTypeError(f"{name} must be an array of numbers, got SymPy entries in {show(value)} "
                             "(use the SymPy backend for symbolic work)")
         if isinstance(v, (bool, np.bool_)) or not isinstance(v, numbers.Real):
-            raise _kind_error(name, value, "an array of real numbers") from None
-        flat[k] = _to_float(name, v)
+            raise kind_error(name, value, "an array of real numbers") from None
+        flat[k] = finite_float(name, v)
     return out
 
 
@@ -66,27 +67,28 @@ def finite_array(name, value, last=None):
         arr = value
     else:
         if value is None or isinstance(value, (str, bytes)):
-            raise _kind_error(name, value, "an array of real numbers")
+            raise kind_error(name, value, "an array of real numbers")
         try:
             raw = np.asarray(value)
         except (ValueError, TypeError):
-            raise ValueError(f"{name} must be a regular (not ragged) array of real numbers, got {show(value)}") from None
+            raise InputValueError(f"{name} must be a regular (not ragged) array of real numbers, "
+                                  f"got {show(value)}") from None
         kind = raw.dtype.kind
         if kind in "iuf":
             with np.errstate(over="ignore"):
                 arr = raw.astype(np.float64)
             if kind == "f" and raw.dtype.itemsize > 8 and not np.all(np.isfinite(arr)) and np.all(np.isfinite(raw)):
-                raise ValueError(f"{name} has entries too large for double precision: {show(raw)}")
+                raise InputValueError(f"{name} has entries too large for double precision: {show(raw)}")
         elif kind == "O":
             arr = _object_array(name, raw, value)
         else:
             what = {"b": "booleans", "c": "complex numbers", "U": "strings", "S": "strings"}.get(kind, raw.dtype.name)
-            raise TypeError(f"{name} must be an array of real numbers, got {what}: {show(value)}")
+            raise InputTypeError(f"{name} must be an array of real numbers, got {what}: {show(value)}")
     if last is not None and (arr.ndim == 0 or arr.shape[-1] != last):
-        raise ValueError(f"{name} must have shape (..., {last}), got shape {arr.shape}: {show(arr)}")
+        raise InputValueError(f"{name} must have shape (..., {last}), got shape {arr.shape}: {show(arr)}")
     if not np.isfinite(arr).all():
         bad = arr[~np.isfinite(arr)].ravel()[:3]
-        raise ValueError(f"{name} must be finite, got non-finite values {bad.tolist()}")
+        raise InputValueError(f"{name} must be finite, got non-finite values {bad.tolist()}")
     return arr
 
 
@@ -111,7 +113,7 @@ def batch_shape(arrays, core=1):
     >>> batch_shape({"beta": np.zeros((2, 3)), "rates": np.zeros((4, 3))})
     Traceback (most recent call last):
         ...
-    ValueError: beta and rates must have broadcastable batch shapes, got beta (2,) and rates (4,)
+    wmr.errors.InputValueError: beta and rates must have broadcastable batch shapes, got beta (2,) and rates (4,)
     """
     given = {k: v for k, v in arrays.items() if v is not None}
     try:
@@ -119,7 +121,7 @@ def batch_shape(arrays, core=1):
     except ValueError:
         names = list(given)
         shapes = " and ".join(f"{k} {np.shape(v)[:np.ndim(v) - core]}" for k, v in given.items())
-        raise ValueError(f"{', '.join(names[:-1])} and {names[-1]} must have broadcastable batch shapes, "
+        raise InputValueError(f"{', '.join(names[:-1])} and {names[-1]} must have broadcastable batch shapes, "
                          f"got {shapes}") from None
 
 
@@ -146,14 +148,14 @@ def symbolic_vector(name, value, size):
         shape = value.shape
     else:
         if isinstance(value, (str, bytes)) or isinstance(value, sp.Basic):
-            raise _kind_error(name, value, f"a sequence of {size} entries")
+            raise kind_error(name, value, f"a sequence of {size} entries")
         try:
             entries = list(value)
         except TypeError:
-            raise _kind_error(name, value, f"a sequence of {size} entries") from None
+            raise kind_error(name, value, f"a sequence of {size} entries") from None
         shape = (len(entries), 1)
     if shape not in ((size, 1), (1, size)):
-        raise ValueError(f"{name} must have {size} entries, got shape {shape}")
+        raise InputValueError(f"{name} must have {size} entries, got shape {shape}")
     return sp.Matrix([real(f"{name}[{k}]", v) for k, v in enumerate(entries)])
 
 
@@ -175,14 +177,14 @@ def symbolic_matrix(name, value):
     (1, 2)
     """
     if isinstance(value, (str, bytes)) or value is None:
-        raise _kind_error(name, value, "a matrix")
+        raise kind_error(name, value, "a matrix")
     try:
         if not isinstance(value, sp.MatrixBase) and any(
                 isinstance(e, (str, bytes)) for e in np.asarray(value, dtype=object).ravel()):
-            raise _kind_error(name, value, "a matrix of numbers or SymPy expressions")
+            raise kind_error(name, value, "a matrix of numbers or SymPy expressions")
         M = sp.Matrix(value)
     except (TypeError, ValueError, NotImplementedError, sp.SympifyError):
-        raise _kind_error(name, value, "a matrix (m, n)") from None
+        raise kind_error(name, value, "a matrix (m, n)") from None
     for k, e in enumerate(M):
         real(f"{name} entry {k}", e)
     return M

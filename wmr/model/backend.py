@@ -11,6 +11,8 @@ from __future__ import annotations
 import numpy as np
 import sympy as sp
 
+from ..errors import InputTypeError
+
 __all__ = ["NumericBackend", "SymbolicBackend", "NUMERIC", "SYMBOLIC", "is_symbolic", "choose"]
 
 
@@ -30,8 +32,7 @@ class NumericBackend:
     @staticmethod
     def matrix(rows):
         """Build a ``(..., m, n)`` array from nested rows of broadcastable entries."""
-        flat = [np.asarray(e, dtype=float) for row in rows for e in row]
-        flat = np.broadcast_arrays(*flat)
+        flat = np.broadcast_arrays(*[np.asarray(e, dtype=float) for row in rows for e in row])
         m, n = len(rows), len(rows[0])
         return np.stack(flat, axis=-1).reshape(flat[0].shape + (m, n))
 
@@ -48,10 +49,9 @@ class NumericBackend:
     @staticmethod
     def broadcast_hstack(*Ms):
         """Concatenate along columns after broadcasting the batch axes (not the matrix axes)."""
-        Ms = [np.asarray(M, dtype=float) for M in Ms]
-        batch = np.broadcast_shapes(*[M.shape[:-2] for M in Ms])
-        Ms = [np.broadcast_to(M, batch + M.shape[-2:]) for M in Ms]
-        return np.concatenate(Ms, axis=-1)
+        arrays = [np.asarray(M, dtype=float) for M in Ms]
+        batch = np.broadcast_shapes(*[M.shape[:-2] for M in arrays])
+        return np.concatenate([np.broadcast_to(M, batch + M.shape[-2:]) for M in arrays], axis=-1)
 
     hstack = broadcast_hstack
 
@@ -160,6 +160,6 @@ def choose(*values, backend=None):
     """
     if backend is not None:
         if backend not in (NUMERIC, SYMBOLIC):
-            raise TypeError(f"backend must be wmr.model.backend.NUMERIC or SYMBOLIC, got {backend!r}")
+            raise InputTypeError(f"backend must be wmr.model.backend.NUMERIC or SYMBOLIC, got {backend!r}")
         return backend
     return SYMBOLIC if is_symbolic(*values) else NUMERIC

@@ -42,53 +42,55 @@ Tolerance
     One numerical zero, :data:`wmr.model.tolerance.TOL`, always relative: every decision is the same
     in every unit of length and time (how: :mod:`wmr.model.tolerance`).
 Errors
-    ``TypeError`` for the wrong kind of argument, ``ValueError`` for a bad value; the message
-    names the argument and shows the value (:mod:`wmr.model.validation`).
+    Bad input raises :class:`~wmr.errors.InputTypeError` (the wrong kind of argument, a
+    ``TypeError``) or :class:`~wmr.errors.InputValueError` (a bad value, a ``ValueError``); the
+    message names the argument and shows the value (:mod:`wmr.model.validation`).  A malformed
+    robot file raises :class:`~wmr.errors.RobotFileError`.  Any other exception is a bug.
 
 Where things live
 -----------------
-Four layers, each importing only from the ones above it; ``import wmr`` loads the first two (no
-matplotlib, pandas or IPython).
+The repository holds three things, and imports go one way (edition -> wmr, build -> both):
 
-:mod:`wmr.model`
-    What a robot *is*: the backends (NumPy numbers, SymPy symbols; :mod:`~wmr.model.backend`), the
-    tolerance, the input checks (:mod:`~wmr.model.validation` for numbers and points,
-    :mod:`~wmr.model.arrays`, :mod:`~wmr.model.robot_checks`), the platform (:math:`\mathbf E`,
-    :math:`\mathbf R(\beta)` and the wheel block :math:`\mathbf R(\beta)\mathbf M = \cos\beta\,\mathbf M +
-    \sin\beta\,\mathbf E\mathbf M` of (11), :func:`wmr.model.platform.rotated`), batched trigonometry
-    (:mod:`~wmr.model.trig`), the wheel units, the assembled :class:`wmr.Robot` (:math:`\mathbf J_1,
-    \mathbf J_2, \mathbf F, \mathbf J`), ready-made robots (:mod:`~wmr.model.robots`), and these
-    conventions.
-:mod:`wmr.analysis`
-    What can be computed for *any* robot (every function takes one; none defaults to the
-    paper's): linear algebra, mobility, Campion's classes (:mod:`~wmr.analysis.classes`), isotropy,
-    kinematics, steering, simulation, singularities and the exact :math:`\det\mathbf J`; the packages :mod:`~wmr.analysis.lines` (``geometry``: 2-D
-    lines, concurrency, circumcircle; ``robot``: a robot's axle and wheel-plane lines) and
-    :mod:`~wmr.analysis.sweep` (``configurations``, ``analyses``, ``reduction``, ``execute`` in this
-    process or on Dask, ``result``); design searches (:mod:`~wmr.analysis.design`), a robot at a
-    glance (:mod:`~wmr.analysis.overview`), and the dense reference the fast kernels are checked
-    against (:mod:`~wmr.analysis.reference`).
-:mod:`wmr.swerve`, :mod:`wmr.io`
-    Beside the analyses: swerve-drive practice (module states, limits, optimisation) and robot
-    files (TOML in, TOML out).
-:mod:`wmr.plot`
-    Drawing with matplotlib (imported only there): the style, annotations and the robot seen
-    from above (its world geometry, computed without matplotlib, in :mod:`~wmr.plot.geometry`).
-:mod:`edition`
-    The edition of the paper: its printed forms (one module per chapter, ``register``/``printed``),
-    symbols, the ledger of verdicts (:mod:`~edition.ledger`: ``verdict``, ``markup``, ``rows``,
-    ``store``), the checks (:mod:`~edition.checks`: one package per chapter, one module per
-    equation group), the exercises (one module per chapter), the singular families, the figures
-    (:mod:`~edition.figures`: one module per figure, each a ``data`` function returning a data
-    class and a ``draw`` function taking it), the interactive chapter (``state``, ``draw``,
-    ``describe``, ``widgets``) and the notebook helpers (:mod:`~edition.notebook`).  Where its
-    files are written is always passed in.
-:mod:`wmr.cli`
-    The ``wmr`` command line: one module per command (:data:`wmr.cli.COMMANDS`).
-``tools/build`` (in the repository, not in the installed package)
-    The build of the edition: paths and stamps, cached parallel execution of the notebooks, the
-    ledger merge, report assembly and export (HTML, PDF), and its command line
-    (``python -m tools.build``).
+``wmr/``, the library (this package, the only one installed)
+    Four layers, each importing only from the ones above it; ``import wmr`` loads the first two
+    (no matplotlib, pandas or IPython).
+
+    :mod:`wmr.errors`, :mod:`wmr.model`
+        What a robot *is*: the exceptions; the backends (NumPy numbers, SymPy symbols;
+        :mod:`~wmr.model.backend`), the tolerance, the input checks (:mod:`~wmr.model.checks`,
+        :mod:`~wmr.model.arrays`, :mod:`~wmr.model.robot_checks`, gathered in
+        :mod:`~wmr.model.validation`), the platform (:math:`\mathbf E`, :math:`\mathbf R(\beta)` and
+        the wheel block :math:`\mathbf R(\beta)\mathbf M = \cos\beta\,\mathbf M + \sin\beta\,\mathbf E\mathbf M`
+        of (11), :func:`wmr.model.platform.rotated`), batched trigonometry (:mod:`~wmr.model.trig`),
+        the wheel units (:mod:`~wmr.model.wheels`: one module per kind, each answering for its block,
+        joints, drawing and robot-file keys), the assembled :class:`wmr.Robot` (:math:`\mathbf J_1,
+        \mathbf J_2, \mathbf F, \mathbf J`), ready-made robots (:mod:`~wmr.model.robots`), and these
+        conventions.
+    :mod:`wmr.analysis`
+        What can be computed for *any* robot (every function takes one; none defaults to the
+        paper's): linear algebra, mobility, Campion's classes, isotropy, kinematics, steering,
+        simulation, singularities and the exact :math:`\det\mathbf J`; the packages
+        :mod:`~wmr.analysis.lines` (2-D lines; a robot's axle and wheel-plane lines) and
+        :mod:`~wmr.analysis.sweep` (``configurations``, ``analyses``, ``reduction``, ``execute`` in
+        this process or on Dask, ``result``); design searches (:mod:`~wmr.analysis.design`), a robot
+        at a glance (:mod:`~wmr.analysis.overview`), and the dense reference the fast kernels are
+        checked against (:mod:`~wmr.analysis.reference`).
+    :mod:`wmr.swerve`, :mod:`wmr.io`, :mod:`wmr.odometry`
+        Beside the analyses: swerve-drive practice (module states, limits, optimisation); robots in
+        and out (TOML robot files, each wheel kind's keys declared by the kind; URDF, ROS 2 controller
+        parameters and WPILib kinematics objects, their optional packages imported only when used);
+        and wheel odometry.
+    :mod:`wmr.plot`, :mod:`wmr.cli`
+        Drawing with matplotlib (imported only there: the style, annotations, and the robot seen
+        from above, drawn from the units' parts), and the ``wmr`` command line, one module per
+        command (:data:`wmr.cli.COMMANDS`).
+``edition/``, the paper's edition (beside the library, importable in the project's environment, not installed)
+    Its printed forms, the ledger of verdicts, the checks of each equation, the exercises, the
+    singular families, the figures (one module per figure: ``data``, ``draw``, ``caption``), the
+    interactive chapter and the notebook helpers.  It imports :mod:`wmr`; :mod:`wmr` never imports it.
+``tools/build``, the build (``python -m tools.build``, in the repository only)
+    Glue around the tools that do the work: it executes the chapters in ``notebooks/`` (cached),
+    merges the ledger, assembles and exports the report (HTML, PDF) and publishes ``figures/``.
 """
 
 __all__ = []

@@ -16,13 +16,17 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..errors import InputTypeError, InputValueError
+from .arrays import batch_shape, finite_array, symbolic_matrix
 from .backend import NUMERIC, choose
+from .checks import integer, point, positive, real, show
+from .tolerance import TOL
 
 __all__ = ["E", "rotation", "cos_sin", "rotated", "wrap_angle", "line_angle", "point_row", "point_velocity"]
 
 
 def E(backend=NUMERIC):
-    r"""The 90-degree counter-clockwise rotation :math:`\mathbf E` of (3): :math:`\mathbf E\mathbf v = \mathbf k\times\mathbf v`.
+    r"""The counter-clockwise quarter turn :math:`\mathbf E` (3): :math:`\mathbf E\mathbf v = \mathbf k\times\mathbf v`.
 
     Parameters
     ----------
@@ -60,9 +64,8 @@ def rotation(angle, backend=NUMERIC):
     >>> rotation(np.zeros(5)).shape
     (5, 2, 2)
     """
-    from . import validation as V
     backend = choose(backend=backend)
-    angle = V.finite_array("angle", angle) if backend is NUMERIC else V.real("angle", angle)
+    angle = finite_array("angle", angle) if backend is NUMERIC else real("angle", angle)
     c, s = backend.cos(angle), backend.sin(angle)
     return backend.matrix([[c, -s], [s, c]])
 
@@ -98,11 +101,10 @@ def cos_sin(beta, out=None):
     >>> bool(np.allclose(s, np.sin([0.0, np.pi / 3, -np.pi]), rtol=0, atol=3e-16))
     True
     """
-    from .validation import finite_array
     beta = finite_array("beta", beta)
     if out is not None and not (isinstance(out, tuple) and len(out) == 2 and all(
             isinstance(o, np.ndarray) and o.dtype == np.float64 and o.shape == beta.shape for o in out)):
-        raise TypeError(f"out must be a pair of float arrays of shape {beta.shape}, got {type(out).__name__}")
+        raise InputTypeError(f"out must be a pair of float arrays of shape {beta.shape}, got {type(out).__name__}")
     t = np.multiply(beta, 0.5, out=np.empty(np.shape(beta)))     # arrays even when 0-d
     np.tan(t, out=t)
     h = np.multiply(t, t, out=np.empty_like(t))
@@ -117,7 +119,7 @@ def cos_sin(beta, out=None):
 
 
 def rotated(beta, M, EM, axes=2, backend=None):
-    r""":math:`\mathbf R(\beta)\mathbf M = \cos\beta\,\mathbf M + \sin\beta\,\mathbf E\mathbf M`, batched over :math:`\beta`.
+    r"""A block rotated by :math:`\beta`: :math:`\cos\beta\,\mathbf M + \sin\beta\,\mathbf E\mathbf M`, batched.
 
     The rotation (11) is linear in :math:`(\cos\beta, \sin\beta)`:
     :math:`\mathbf R(\beta) = \cos\beta\,\mathbf 1 + \sin\beta\,\mathbf E`.  So a block turned by
@@ -158,18 +160,17 @@ def rotated(beta, M, EM, axes=2, backend=None):
     if isinstance(beta, tuple):                    # (cos, sin) from the caller: the kernels' inner loops
         c, s = beta
     else:
-        from . import validation as V
         bk = choose(beta, backend=backend)
         if bk is NUMERIC:
-            beta, M, EM = (V.finite_array(n, a) for n, a in (("beta", beta), ("M", M), ("EM", EM)))
-            if np.shape(M) != np.shape(EM) or np.ndim(M) < V.integer("axes", axes, minimum=0):
-                raise ValueError(f"M and EM must be blocks of one shape with at least axes = {axes} axes, "
+            beta, M, EM = (finite_array(n, a) for n, a in (("beta", beta), ("M", M), ("EM", EM)))
+            if np.shape(M) != np.shape(EM) or np.ndim(M) < integer("axes", axes, minimum=0):
+                raise InputValueError(f"M and EM must be blocks of one shape with at least axes = {axes} axes, "
                                  f"got shapes {np.shape(M)} and {np.shape(EM)}")
             c, s = cos_sin(beta)
             checked = True
         else:
-            beta = V.real("beta", beta)
-            M, EM = (V.symbolic_matrix(n, a) for n, a in (("M", M), ("EM", EM)))
+            beta = real("beta", beta)
+            M, EM = (symbolic_matrix(n, a) for n, a in (("M", M), ("EM", EM)))
             c, s = bk.cos(beta), bk.sin(beta)
     if isinstance(c, np.ndarray):
         index = (Ellipsis,) + (None,) * axes
@@ -180,10 +181,10 @@ def rotated(beta, M, EM, axes=2, backend=None):
         try:
             out = _combination(c, s, M, EM)
         except ValueError:
-            raise ValueError(f"beta {np.shape(beta)} and the blocks M, EM {np.shape(M)} must broadcast "
+            raise InputValueError(f"beta {np.shape(beta)} and the blocks M, EM {np.shape(M)} must broadcast "
                              f"(beta's axes, then {axes} block axes)") from None
     if not np.isfinite(out).all():
-        raise ValueError(f"M and EM are too large: R(beta) M overflows (largest |M| = {np.abs(M).max():.3g})")
+        raise InputValueError(f"M and EM are too large: R(beta) M overflows (largest |M| = {np.abs(M).max():.3g})")
     return out
 
 
@@ -212,7 +213,7 @@ def wrap_angle(angle):
 
 
 def line_angle(beta):
-    r"""The angle of a line through the origin, in :math:`(-\pi/2, \pi/2]`: ``beta`` and ``beta + pi`` give the same line.
+    r"""The angle of a line through the origin, in :math:`(-\pi/2, \pi/2]` (``beta`` and ``beta + pi``: one line).
 
     Parameters
     ----------
@@ -233,8 +234,6 @@ def line_angle(beta):
 
 def _wrap(name, angle, period):
     """Angles mapped to (-period/2, period/2] (within TOL of -period/2 counts as +period/2)."""
-    from .tolerance import TOL
-    from .validation import finite_array
     w = np.mod(finite_array(name, angle) + period / 2, period) - period / 2
     return np.where(np.isclose(w, -period / 2, atol=TOL, rtol=0), period / 2, w)
 
@@ -263,16 +262,15 @@ def point_row(d, L=1, backend=None):
     >>> point_row((2.0, 0.0)).tolist()
     [[-0.0, 1.0, 0.0], [2.0, 0.0, 1.0]]
     """
-    from . import validation as V
-    d = V.point("d", d)
-    L = V.positive("L", L)
+    d = point("d", d)
+    L = positive("L", L)
     bk = choose(*d, L, backend=backend)
     dx, dy = d
     # (5): p_dot = [E d  1] t ;  E d = [-dy, dx]
     with np.errstate(over="ignore", invalid="ignore"):
         M = bk.matrix([[-dy / L, 1, 0], [dx / L, 0, 1]])
     if bk is NUMERIC and not np.isfinite(M).all():
-        raise ValueError(f"L = {L!r} is too small for d = {V.show(d)}: d / L overflows")
+        raise InputValueError(f"L = {L!r} is too small for d = {show(d)}: d / L overflows")
     return M
 
 
@@ -295,13 +293,13 @@ def point_velocity(twist, d):
     >>> point_velocity([1.0, 0.0, 0.0], [2.0, 0.0]).tolist()     # spin: (psi_dot k) x d
     [0.0, 2.0]
     """
-    from . import validation as V
-    t = V.finite_array("twist", twist, last=3)
-    d = V.finite_array("d", d, last=2)
-    V.batch_shape({"twist": t, "d": d})
+    t = finite_array("twist", twist, last=3)
+    d = finite_array("d", d, last=2)
+    batch_shape({"twist": t, "d": d})
     with np.errstate(over="ignore", invalid="ignore"):
         v = np.stack([t[..., 1] - t[..., 0] * d[..., 1], t[..., 2] + t[..., 0] * d[..., 0]], axis=-1)
     if not np.isfinite(v).all():
-        raise ValueError(f"twist and d are too large: the velocity overflows (largest |twist| = {np.abs(t).max():.3g}, "
+        raise InputValueError(f"twist and d are too large: the velocity overflows "
+                              f"(largest |twist| = {np.abs(t).max():.3g}, "
                          f"|d| = {np.abs(d).max():.3g})")
     return v

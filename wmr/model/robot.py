@@ -10,16 +10,17 @@ of :math:`\mathbf F` is which rate.
 """
 from __future__ import annotations
 
-import dataclasses
-
 import numpy as np
 import sympy as sp
 
-from . import validation as V
-from .backend import NUMERIC, SYMBOLIC, choose, is_symbolic
+from ..errors import InputTypeError, InputValueError
+from . import arrays as A
+from . import checks as C
+from .backend import NUMERIC, SYMBOLIC, choose
 from .platform import point_row
+from .tolerance import column_norms
 from .trig import trig_combination
-from .wheels import UNIT_TYPES
+from .wheels import WheelUnit, wheel_kinds
 
 __all__ = ["Robot", "TWIST_NAMES"]
 
@@ -31,9 +32,10 @@ class Robot:
 
     Parameters
     ----------
-    wheels : sequence of OffsetWheel, CentredWheel, DualWheel, FixedWheel or SwedishWheel
-        The wheel units in their numbering order (wheel 1 first); any number >= 1, any mount
-        points, mixed types; a configuration has one entry per unit (:meth:`effective_beta`).
+    wheels : sequence of wheel units
+        The units (:mod:`wmr.model.wheels`: offset, centred, dual, fixed, Swedish, ...) in their
+        numbering order (wheel 1 first); any number >= 1, any mount points, mixed kinds; a
+        configuration has one entry per unit (:meth:`effective_beta`).
     name : str, optional
 
     Examples
@@ -47,27 +49,20 @@ class Robot:
     """
 
     def __init__(self, wheels, name=None):
-        if isinstance(wheels, (str, bytes)) or isinstance(wheels, UNIT_TYPES):
-            raise TypeError(f"wheels must be a sequence of wheel units, got {V.show(wheels)}")
+        if isinstance(wheels, (str, bytes, WheelUnit)):
+            raise InputTypeError(f"wheels must be a sequence of wheel units, got {C.show(wheels)}")
         try:
             wheels = tuple(wheels)
         except TypeError:
-            raise TypeError(f"wheels must be a sequence of wheel units, got {V.show(wheels)}") from None
+            raise InputTypeError(f"wheels must be a sequence of wheel units, got {C.show(wheels)}") from None
         if len(wheels) == 0:
-            raise ValueError("wheels must contain at least one wheel unit, got 0")
+            raise InputValueError("wheels must contain at least one wheel unit, got 0")
         for k, u in enumerate(wheels):
-            if not isinstance(u, UNIT_TYPES):
-                raise TypeError(f"wheels[{k}] must be a wheel unit ({', '.join(t.__name__ for t in UNIT_TYPES)}), "
-                                f"got {V.show(u)}")
-        self.wheels = wheels
-        self.name = V.optional_text("name", name) or "robot"
-        if not self.is_symbolic:
-            with np.errstate(over="ignore", invalid="ignore"):
-                for k, u in enumerate(wheels):
-                    L, EL = (np.asarray(m, dtype=float) for m in u.block_terms(NUMERIC))
-                    if not np.isfinite(2 * np.abs(L) + 2 * np.abs(EL)).all() or not np.isfinite(4 * np.abs(u.position)).all():
-                        raise ValueError(f"wheels[{k}] has lengths too large for double-precision kinematics "
-                                         f"(R(beta) L_i would overflow): {V.show(u)}")
+            if not isinstance(u, WheelUnit):
+                kinds = ", ".join(t.__name__ for t in wheel_kinds().values())
+                raise InputTypeError(f"wheels[{k}] must be a wheel unit ({kinds}, ...), got {C.show(u)}")
+        self.wheels: tuple[WheelUnit, ...] = wheels
+        self.name = C.optional_text("name", name) or "robot"
         starts = np.cumsum([0] + [u.n_rates for u in wheels])
         #: slice of each unit's rates inside the joint-rate vector theta_dot
         self.rate_slices = tuple(slice(int(a), int(b)) for a, b in zip(starts[:-1], starts[1:]))
@@ -84,7 +79,7 @@ class Robot:
 
     @property
     def steered(self):
-        """Tuple of w bools: True for units with a steering joint (offset, centred, dual); see :meth:`effective_beta`."""
+        """Tuple of w bools: True for units with a steering joint (offset, centred, dual); :meth:`effective_beta`."""
         return tuple(bool(u.steered) for u in self.wheels)
 
     @property
@@ -134,7 +129,7 @@ class Robot:
 
     @property
     def F_column_norms(self):
-        r"""Lengths of the columns of :math:`\mathbf F` (22)-(24), the same at every :math:`\boldsymbol\beta`: array (3 + n_rates,).
+        r"""Lengths of the columns of :math:`\mathbf F` (22)-(24), the same at every configuration: (3 + n_rates,).
 
         :math:`\sqrt{\sum_i\|\mathbf d_i\|^2}` (the :math:`\dot\psi` column, a length), :math:`\sqrt w`,
         :math:`\sqrt w` (:math:`\dot x, \dot y`), then the lengths of the units' local blocks'
@@ -142,11 +137,9 @@ class Robot:
         :math:`\mathbf F` by them gives the dimensionless matrix whose rank decides mobility
         (:mod:`wmr.model.tolerance`).  Zero columns get 1.  Numeric robots only.
         """
-        from ..analysis.linalg import column_norms
         bot = self.numeric()
-        blocks = [np.asarray(u.block_terms(NUMERIC)[0], dtype=float) for u in bot.wheels]
-        rates = np.concatenate([column_norms(b) for b in blocks])
-        return np.concatenate([column_norms(bot.J1(backend=NUMERIC)), rates])
+        rates = [column_norms(np.asarray(u.local_block(NUMERIC), dtype=float)) for u in bot.wheels]
+        return np.concatenate([column_norms(bot.J1(backend=NUMERIC)), *rates])
 
     # --- matrices -------------------------------------------------------------------------------
     def effective_beta(self, beta):
@@ -171,17 +164,18 @@ class Robot:
         >>> bot.effective_beta([[0.1, 0.2], [0.3, 0.4]]).tolist()
         [[0.1, 0.5], [0.3, 0.5]]
         """
-        beta = V.finite_array("beta", beta, last=self.w)
-        own = [i for i, u in enumerate(self.wheels) if not u.steered]
+        beta = A.finite_array("beta", beta, last=self.w)
+        own = [i for i, u in enumerate(self.wheels) if u.constant_angle is not None]
         if own:                                             # (a copy: the caller's array is not changed)
             beta = beta.copy()
-            beta[..., own] = [V.number("angle", self.wheels[i].angle) for i in own]
+            beta[..., own] = [C.number("angle", self.wheels[i].constant_angle) for i in own]
         return beta
 
     def _beta(self, beta, bk):
         if bk is SYMBOLIC:
-            b = list(self.beta_symbols) if beta is None else list(V.symbolic_vector("beta", beta, self.w))
-            return [b[i] if u.steered else sp.sympify(u.angle) for i, u in enumerate(self.wheels)]
+            b = list(self.beta_symbols) if beta is None else list(A.symbolic_vector("beta", beta, self.w))
+            return [b[i] if u.constant_angle is None else sp.sympify(u.constant_angle)
+                    for i, u in enumerate(self.wheels)]
         return self.effective_beta(beta)
 
     def J1(self, L=1, backend=None):
@@ -207,17 +201,17 @@ class Robot:
         >>> Robot([CentredWheel((2.0, 0.0), r=1.0)]).J1(L=2.0).tolist()
         [[-0.0, 1.0, 0.0], [1.0, 0.0, 1.0]]
         """
-        L = V.positive("L (characteristic length)", L)
+        L = C.positive("L (characteristic length)", L)
         bk = choose(L, backend=backend) if not self.is_symbolic else SYMBOLIC
         if bk is NUMERIC:
-            L = V.number("L (characteristic length)", L)
+            L = C.number("L (characteristic length)", L)
         M = bk.zeros(2 * self.w, 3)
         with np.errstate(over="ignore"):
             for i, u in enumerate(self.wheels):
                 bk.set_block(M, 2 * i, 0, point_row(u.position, L, backend=bk))  # (32): [E d_i / L, 1]
         if bk is NUMERIC and not np.isfinite(M).all():
-            raise ValueError(f"L (characteristic length) = {L!r} is too small for mount points of size "
-                             f"{np.abs(self.mount_points).max():.3g}: d_i / L overflows")
+            raise InputValueError(f"L (characteristic length) = {L!r} is too small for mount points of size "
+                                  f"{np.abs(self.mount_points).max():.3g}: d_i / L overflows")
         return M
 
     def _backend(self, beta, backend):
@@ -249,7 +243,7 @@ class Robot:
     def _wheel_terms(self):
         r"""The pair :math:`(\mathbf P, \mathbf Q)`, each (w, 2w, n_rates), with
         :math:`\mathbf J_2(\boldsymbol\beta) = \sum_i(\cos\beta_i\,\mathbf P_i + \sin\beta_i\,\mathbf Q_i)`:
-        unit i's :math:`\mathbf L_i` and :math:`\mathbf E\mathbf L_i` (:meth:`OffsetWheel.block_terms`) placed
+        unit i's :math:`\mathbf L_i` and :math:`\mathbf E\mathbf L_i` (:meth:`WheelUnit.block_terms`) placed
         at its block of :math:`\mathbf J_2` (numeric robots)."""
         P = np.zeros((self.w, 2 * self.w, self.n_rates))
         Q = np.zeros_like(P)
@@ -316,7 +310,7 @@ class Robot:
             P, Q = JL1T @ P, JL1T @ Q
             ok = np.isfinite(2 * np.abs(P).sum(0) + 2 * np.abs(Q).sum(0)).all()   # |entry| <= sum |P_i| + |Q_i|
         if not ok:
-            raise ValueError(f"J overflows for this robot and L = {L!r}: the wheel radii times d_i / L exceed "
+            raise InputValueError(f"J overflows for this robot and L = {L!r}: the wheel radii times d_i / L exceed "
                              "the double-precision range")
         return trig_combination(b, P, Q)
 
@@ -343,16 +337,15 @@ class Robot:
         """
         if not self.is_symbolic:
             return self
-        if V.free_symbols(self):
-            raise ValueError(f"robot has free symbols {sorted(map(str, V.free_symbols(self)))}: it has no numeric "
-                             f"counterpart ({V.show(self)})")
+        if self.free_symbols:
+            raise InputValueError(f"robot has free symbols {sorted(map(str, self.free_symbols))}: it has no numeric "
+                                  f"counterpart ({C.show(self)})")
+        return Robot([u.numeric() for u in self.wheels], name=self.name)
 
-        def num(v):
-            return tuple(num(e) for e in v) if isinstance(v, tuple) else (float(v) if isinstance(v, sp.Basic) else v)
-
-        units = [dataclasses.replace(u, **{f.name: num(getattr(u, f.name)) for f in dataclasses.fields(u)})
-                 for u in self.wheels]
-        return Robot(units, name=self.name)
+    @property
+    def free_symbols(self):
+        """The SymPy symbols in the mount points and lengths (an empty set for numeric and exact robots)."""
+        return set().union(*(u.free_symbols for u in self.wheels))
 
     # --- frames ---------------------------------------------------------------------------------
     def moved(self, origin=(0.0, 0.0), angle=0.0):
@@ -384,8 +377,8 @@ class Robot:
         >>> (bot.moved(origin=(1.0, 0.0), angle=np.pi / 2).mount_points.round(12) + 0.0).tolist()
         [[0.0, 0.0], [0.0, 2.0]]
         """
-        ox, oy = V.point("origin", origin)
-        angle = V.number("angle", angle)
+        ox, oy = C.point("origin", origin)
+        angle = C.number("angle", angle)
         c, s = np.cos(angle), np.sin(angle)
         moved = []
         with np.errstate(over="ignore", invalid="ignore"):
@@ -394,8 +387,7 @@ class Robot:
                 moved.append((c * x + s * y, -s * x + c * y))
         try:
             if not all(np.isfinite(float(v)) for p in moved for v in p if not isinstance(v, sp.Basic)):
-                raise ValueError("their coordinates overflow")
-            return Robot([dataclasses.replace(u, position=p, **({} if u.steered else {"angle": u.angle - angle}))
-                          for u, p in zip(self.wheels, moved)], name=self.name)
-        except ValueError as e:
-            raise ValueError(f"origin = {V.show(origin)} is too far from the mount points ({e})") from None
+                raise InputValueError("their coordinates overflow")
+            return Robot([u.remounted(p, angle) for u, p in zip(self.wheels, moved, strict=True)], name=self.name)
+        except InputValueError as e:
+            raise InputValueError(f"origin = {C.show(origin)} is too far from the mount points ({e})") from None

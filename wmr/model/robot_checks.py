@@ -1,15 +1,13 @@
 r"""Input checks for robots: a :class:`wmr.Robot` instance, a numeric one, and the symbols in one.
 
-The rule of the two exception types and the scalar checks are in :mod:`wmr.model.validation`
-(which also gives access to these: ``validation.robot``).
+The rule of the two exception types and the scalar checks are in :mod:`wmr.model.checks`;
+:mod:`wmr.model.validation` gathers these with them (``validation.numeric_robot``).
 """
 from __future__ import annotations
 
-import dataclasses
-
-import sympy as sp
-
-from .validation import _kind_error, show
+from ..errors import InputTypeError, InputValueError
+from .checks import kind_error, show
+from .robot import Robot
 
 __all__ = ["robot", "numeric_robot", "free_symbols"]
 
@@ -32,15 +30,14 @@ def robot(value, name="robot"):
     >>> robot(Robot)
     Traceback (most recent call last):
         ...
-    TypeError: robot must be a wmr.Robot instance, got the class Robot itself (build one, e.g. wmr.Robot([...]) or wmr.paper_robot())
+    wmr.errors.InputTypeError: robot must be a wmr.Robot instance, got the class Robot itself (build one, ...)
     """
-    from .robot import Robot
     if isinstance(value, Robot):
         return value
     if isinstance(value, type) and issubclass(value, Robot):
-        raise TypeError(f"{name} must be a wmr.Robot instance, got the class {value.__name__} itself "
+        raise InputTypeError(f"{name} must be a wmr.Robot instance, got the class {value.__name__} itself "
                         "(build one, e.g. wmr.Robot([...]) or wmr.paper_robot())")
-    raise _kind_error(name, value, "a wmr.Robot")
+    raise kind_error(name, value, "a wmr.Robot")
 
 
 def numeric_robot(value, name="robot"):
@@ -58,7 +55,7 @@ def numeric_robot(value, name="robot"):
     """
     value = robot(value, name)
     if free_symbols(value):
-        raise ValueError(f"{name} must have numeric mount points and lengths here, got a robot with the symbols "
+        raise InputValueError(f"{name} must have numeric mount points and lengths here, got a robot with the symbols "
                          f"{sorted(map(str, free_symbols(value)))}: {show(value)}")
     return value.numeric() if value.is_symbolic else value
 
@@ -73,12 +70,6 @@ def free_symbols(robot):
     Returns
     -------
     set of sympy.Symbol
+        :attr:`wmr.Robot.free_symbols`.
     """
-    out = set()
-    for u in robot.wheels:
-        for f in dataclasses.fields(u):
-            v = getattr(u, f.name)
-            for e in (v if isinstance(v, tuple) else (v,)):
-                if isinstance(e, sp.Basic):
-                    out |= e.free_symbols
-    return out
+    return robot.free_symbols

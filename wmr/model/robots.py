@@ -9,14 +9,19 @@ exactly): the three mount points are the vertices of an equilateral triangle cen
 """
 from __future__ import annotations
 
-import numpy as np
+import dataclasses
+
 import sympy as sp
 
+from ..errors import InputValueError
 from . import validation as V
 from .robot import Robot
-from .wheels import CentredWheel, DualWheel, OffsetWheel
+from .wheels import wheel_kind
 
-__all__ = ["PAPER_MOUNT_ANGLES_DEG", "equilateral_mounts", "paper_robot"]
+__all__ = ["PAPER_MOUNT_ANGLES_DEG", "PAPER_KINDS", "equilateral_mounts", "paper_robot"]
+
+#: The wheel kinds of the paper's three robots (sections 3, 5 and 6).
+PAPER_KINDS = ("centred", "offset", "dual")
 
 #: Angles of the paper's mount points, wheel 1 first (clockwise from the negative x-axis).
 PAPER_MOUNT_ANGLES_DEG = (180.0, 60.0, -60.0)
@@ -77,9 +82,9 @@ def paper_robot(kind="centred", L=1.0, r=1.0, d=None, b=None, exact=False):
     r : float or sympy.Expr
         Wheel radius.
     d : float, optional
-        Offset of offset wheels (default ``r``, the isotropic choice (46)).
+        Offset of offset wheels (default ``r``, the isotropic choice (46)); checked, unused by the others.
     b : float, optional
-        Half separation of dual wheels (default ``r``).
+        Half separation of dual wheels (default ``r``); checked, unused by the others.
     exact : bool
         Use exact (SymPy) mount coordinates.
 
@@ -93,16 +98,14 @@ def paper_robot(kind="centred", L=1.0, r=1.0, d=None, b=None, exact=False):
     Robot('paper-offset': offset@(-0.5, 0.0), offset@(0.25, 0.4330127018922193), offset@(0.25, -0.4330127018922193))
     """
     if not isinstance(kind, str):
-        raise TypeError(f"kind must be 'centred', 'offset' or 'dual', got {V.show(kind)} ({type(kind).__name__})")
-    d = None if d is None else V.nonnegative("d (offset)", d)        # checked even where unused
-    b = None if b is None else V.positive("b (half wheel separation)", b)
+        raise V.kind_error("kind", kind, "'centred', 'offset' or 'dual'")
+    if kind not in PAPER_KINDS:
+        raise InputValueError(f"kind must be 'centred', 'offset' or 'dual', got {kind!r}")
+    lengths = {"d": None if d is None else V.nonnegative("d (offset)", d),       # checked even where unused
+               "b": None if b is None else V.positive("b (half wheel separation)", b)}
     pts = equilateral_mounts(L, exact=V.flag("exact", exact))
-    if kind == "centred":
-        units = [CentredWheel(p, r=r) for p in pts]
-    elif kind == "offset":
-        units = [OffsetWheel(p, r=r, d=r if d is None else d) for p in pts]
-    elif kind == "dual":
-        units = [DualWheel(p, r=r, b=r if b is None else b) for p in pts]
-    else:
-        raise ValueError(f"kind must be 'centred', 'offset' or 'dual', got {kind!r}")
+    cls = wheel_kind(kind)
+    fields = {f.name for f in dataclasses.fields(cls)}
+    own = {f: (r if v is None else v) for f, v in lengths.items() if f in fields}     # default r, as (46)
+    units = [cls(p, r=r, **own) for p in pts]
     return Robot(units, name=f"paper-{kind}")

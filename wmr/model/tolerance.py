@@ -68,7 +68,10 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["TOL", "ANGULAR_TOLERANCE", "near_zero"]
+from ..errors import InputValueError
+from .arrays import finite_array
+
+__all__ = ["TOL", "ANGULAR_TOLERANCE", "near_zero", "column_norms"]
 
 #: The package-wide tolerance for numerical zero, relative (see module docstring).
 TOL: float = 1e-9
@@ -100,12 +103,43 @@ def near_zero(x, scale=1.0):
     >>> near_zero([1e-12, 1e-3], scale=[1.0, 1e7]).tolist()
     [True, True]
     """
-    from .validation import finite_array
     x = np.abs(finite_array("x", x))
     scale = finite_array("scale", scale)
     if np.any(scale < 0):
-        raise ValueError(f"scale must be a size (>= 0), got negative values {scale[scale < 0].ravel()[:3].tolist()}")
+        raise InputValueError(f"scale must be a size (>= 0), got negative values "
+                              f"{scale[scale < 0].ravel()[:3].tolist()}")
     try:
         return x <= TOL * scale
     except ValueError:
-        raise ValueError(f"x and scale must broadcast, got shapes {x.shape} and {scale.shape}") from None
+        raise InputValueError(f"x and scale must broadcast, got shapes {x.shape} and {scale.shape}") from None
+
+
+def column_norms(A):
+    r"""Euclidean length of every column, :math:`\|\mathbf A\mathbf e_j\|`, without overflow or underflow.
+
+    Zero columns get 1 (dividing by it leaves them zero).  Ranks are decided on the matrix divided by
+    these (see the module notes), so they do not depend on the units of the unknowns.
+
+    Parameters
+    ----------
+    A : array_like (..., m, n)
+
+    Returns
+    -------
+    numpy.ndarray (..., n)
+
+    Examples
+    --------
+    >>> column_norms([[3e300, 0.0], [4e300, 0.0]]).tolist()
+    [5e+300, 1.0]
+    """
+    A = finite_array("A", A)
+    if A.ndim < 2:
+        raise InputValueError(f"A must have shape (..., m, n), got shape {A.shape}")
+    big = np.max(np.abs(A), axis=-2) if A.shape[-2] else np.zeros(A.shape[:-2] + A.shape[-1:])
+    safe = np.where(big > 0, big, 1.0)
+    with np.errstate(over="ignore"):
+        norms = np.where(big > 0, safe * np.sqrt(np.sum((A / safe[..., None, :]) ** 2, axis=-2)), 1.0)
+    if not np.isfinite(norms).all():
+        raise InputValueError("A is too large: its column lengths overflow double precision")
+    return norms

@@ -20,7 +20,9 @@ CHUNK = 8192
 
 
 def trig_combination(beta, P, Q, const=None):
-    r"""Matrices linear in the cosines and sines of the angles: :math:`\mathbf C + \sum_i(\cos\beta_i\,\mathbf P_i + \sin\beta_i\,\mathbf Q_i)`.
+    r"""Matrices linear in the cosines and sines of the angles.
+
+    :math:`\mathbf C + \sum_i(\cos\beta_i\,\mathbf P_i + \sin\beta_i\,\mathbf Q_i)`.
 
     Every steering-dependent matrix of the model has this form, because each unit's block is
     :math:`\mathbf B_i(\beta_i) = \cos\beta_i\,\mathbf L_i + \sin\beta_i\,\mathbf E\mathbf L_i` (11):

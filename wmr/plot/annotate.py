@@ -9,6 +9,7 @@ import numpy as np
 from matplotlib.lines import Line2D
 from matplotlib.patches import Arc, FancyArrowPatch
 
+from ..errors import InputValueError
 from ..model.backend import NUMERIC
 from ..model.platform import rotation
 from .style import DASHES, FONT_LABEL, FONT_SMALL, HALO, PALETTE, ROLE
@@ -110,7 +111,8 @@ def draw_arrow(ax, start, vec, *, color=None, lw=1.1, zorder=6.0, head=7.0, styl
     matplotlib.patches.FancyArrowPatch
     """
     s = np.asarray(start, dtype=float)
-    a = FancyArrowPatch(s, s + np.asarray(vec, dtype=float), arrowstyle=style, mutation_scale=head,
+    e = s + np.asarray(vec, dtype=float)
+    a = FancyArrowPatch((float(s[0]), float(s[1])), (float(e[0]), float(e[1])), arrowstyle=style, mutation_scale=head,
                         color=color or ROLE["frame"], linewidth=lw, linestyle=ls, shrinkA=0, shrinkB=0,
                         zorder=zorder)
     ax.add_patch(a)
@@ -373,5 +375,6 @@ def legend_handles(items):
             hs.append(Line2D([], [], color=c, marker=m, markersize=5, linestyle="none", label=text,
                              markerfacecolor="white" if how == "open" else c))
         else:
-            raise ValueError(f"legend item kind must be axle, plane, thin, path:, point:, marker: or open:, got {kind!r}")
+            raise InputValueError(f"legend item kind must be axle, plane, thin, path:, point:, marker: or open:, "
+                                  f"got {kind!r}")
     return hs

@@ -37,7 +37,7 @@ def _colorbar(fig, im, ax, label, vmax):
 
 
 def draw_landscape(data, fig=None):
-    r"""Two panels: :math:`\bar\kappa` against :math:`d/r`, and :math:`\bar\kappa` over wheel 2's position at :math:`d = r`.
+    r"""Two panels: :math:`\bar\kappa` against :math:`d/r`, and over wheel 2's position at :math:`d = r`.
 
     Parameters
     ----------
@@ -114,7 +114,7 @@ def draw_motion_maps(maps, titles, fig=None):
     return fig
 
 
-def show_figure(fig, caption, width=None):
+def show_figure(fig, caption, width=None, dpi=150, colours=None):
     """Display a figure in a notebook as a PNG, with its caption below (Markdown).
 
     Parameters
@@ -124,6 +124,11 @@ def show_figure(fig, caption, width=None):
         Markdown.
     width : int, optional
         Display width in pixels (default 110 per inch of the figure).
+    dpi : int, optional
+        Resolution of the PNG (default 150).
+    colours : int, optional
+        Reduce the PNG to a palette of this many colours (a third of the bytes for line charts;
+        default: full colour).
 
     Returns
     -------
@@ -134,5 +139,12 @@ def show_figure(fig, caption, width=None):
     from IPython.display import Image, Markdown, display
     buf = io.BytesIO()
     with style():
-        fig.savefig(buf, format="png", dpi=150)
-    display(Image(buf.getvalue(), width=width or int(round(fig.get_figwidth() * 110))), Markdown(caption))
+        fig.savefig(buf, format="png", dpi=dpi)
+    png = buf.getvalue()
+    if colours:
+        from PIL import Image as Picture
+        small = io.BytesIO()
+        picture = Picture.open(io.BytesIO(png)).convert("RGB").quantize(colors=int(colours))
+        picture.save(small, format="PNG", optimize=True)
+        png = small.getvalue()
+    display(Image(png, width=width or round(fig.get_figwidth() * 110)), Markdown(caption))

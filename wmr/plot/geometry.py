@@ -1,7 +1,7 @@
 r"""Where a robot drawn from above is: world coordinates of its points and axes, the platform disc, the extent.
 
 No matplotlib: :func:`robot_geometry` computes what :func:`wmr.plot.robot.draw_robot` draws (a
-:class:`RobotDrawing`), from :meth:`wmr.model.wheels.OffsetWheel.points` and its siblings, so the
+:class:`RobotDrawing`), from the units' :meth:`~wmr.model.wheels.WheelUnit.points`, so the
 labels and construction lines of a figure can be placed before anything is drawn.
 """
 from __future__ import annotations
@@ -101,7 +101,7 @@ def robot_geometry(robot, beta, pose=(0.0, 0.0, 0.0)):
 
 
 def platform_radius(robot):
-    r"""Radius of the platform disc: a little beyond the farthest mount point, :math:`\max_i\|\mathbf d_i\| + 0.9\max_i r_i`.
+    r"""Radius of the platform disc, beyond the farthest mount point: :math:`\max_i\|\mathbf d_i\| + 0.9\max_i r_i`.
 
     Parameters
     ----------

@@ -6,9 +6,10 @@ A robot is drawn as the platform disc, the operation point C with the body frame
 carrying wheel discs, which from above are rounded rectangles of length :math:`2r` along the
 rolling direction :math:`\mathbf j_i` (marked by an arrow).  Axles (dashed, along
 :math:`\mathbf i_i`) and wheel-plane lines (along :math:`\mathbf j_i`) can be drawn and extended to
-where they meet.  The geometry comes from :meth:`wmr.model.wheels.OffsetWheel.points` (and its
-siblings), so the pictures obey :mod:`wmr.conventions` by construction; it is computed without
-matplotlib in :mod:`wmr.plot.geometry` (:func:`robot_geometry` and its companions are re-exported here).
+where they meet.  The geometry comes from the units themselves (:meth:`~wmr.model.wheels.WheelUnit.points`
+and :meth:`~wmr.model.wheels.WheelUnit.parts`), so the pictures obey :mod:`wmr.conventions` by
+construction and any wheel kind is drawn; it is computed without matplotlib in :mod:`wmr.plot.geometry`
+(:func:`robot_geometry` and its companions are re-exported here).
 """
 from __future__ import annotations
 
@@ -16,6 +17,8 @@ import numpy as np
 from matplotlib.patches import Circle, FancyArrowPatch, FancyBboxPatch
 from matplotlib.transforms import Affine2D
 
+from ..errors import InputTypeError
+from ..model.wheels.parts import Disc, Link, Pivot, Rollers
 from .annotate import draw_frame, draw_line, draw_point, label
 from .geometry import RobotDrawing, platform_radius, robot_extent, robot_geometry, to_world
 from .snapping import snap
@@ -118,7 +121,13 @@ def draw_pivot(ax, p, size, *, ghost=False, zorder=5.0):
 
 
 def draw_unit(ax, unit, beta, pose=(0.0, 0.0, 0.0), *, ghost=False, zorder=4.0, show_j=True, light=False):
-    r"""One wheel unit: intermediate body, wheel disc(s) and pivot (world coordinates from ``pose``).
+    r"""One wheel unit: its parts (:meth:`wmr.model.wheels.WheelUnit.parts`) in world coordinates from ``pose``.
+
+    Each part is drawn by its type, whatever the unit's kind: a :class:`~wmr.model.wheels.parts.Link`
+    as a bar of the intermediate body (over the wheels, an arm; under them, a bar between wheels), a
+    :class:`~wmr.model.wheels.parts.Disc` as a wheel, :class:`~wmr.model.wheels.parts.Rollers` as
+    strokes across the disc along the roller axes, a :class:`~wmr.model.wheels.parts.Pivot` as the
+    steering axis.
 
     Parameters
     ----------
@@ -127,7 +136,7 @@ def draw_unit(ax, unit, beta, pose=(0.0, 0.0, 0.0), *, ghost=False, zorder=4.0, 
         One of ``robot.wheels``.
     beta : float
         Its steering angle (radians); a unit without a steering joint (fixed, Swedish) is drawn
-        at its own angle, without a pivot, and a Swedish wheel's disc is crossed along its rollers.
+        at its own angle.
     pose : sequence (3,), optional
         :math:`(\psi, X, Y)`.
     ghost : bool, optional
@@ -143,33 +152,40 @@ def draw_unit(ax, unit, beta, pose=(0.0, 0.0, 0.0), *, ghost=False, zorder=4.0, 
     P, H : numpy.ndarray (2,)
         The unit's steering-axis point and centre (world).
     """
-    beta = float(beta) if unit.steered else float(unit.angle)
+    beta = unit.drawn_angle(beta)
     pts = unit.points(beta)
-    P = to_world(pose, pts["P"])
-    H = to_world(pose, pts["H"])
-    heading = pose[0] + float(beta)
-    r = float(unit.r)
     lw = 2.2 if not ghost else 1.0
     ls = "-" if not ghost else (0, (3, 2))
-    if unit.kind == "offset":
-        ax.plot(*np.stack([P, H]).T, color=ROLE["body"] if not light else PALETTE["dark"], linewidth=lw,
-                linestyle=ls, solid_capstyle="round", zorder=zorder + 0.5)
-    if unit.kind == "dual":
-        wh = to_world(pose, pts["wheels"])
-        ax.plot(*wh.T, color=ROLE["body"], linewidth=lw, linestyle=ls, zorder=zorder - 0.1)
-    for c in to_world(pose, pts["wheels"]):
-        draw_wheel(ax, c, heading, r, ghost=ghost, arrow=show_j and unit.kind != "swedish", zorder=zorder, light=light)
-    if unit.kind == "swedish":
-        a = heading + float(unit.roller)                     # the roller axes, across the disc
-        half = min(0.21 * r / max(abs(np.cos(float(unit.roller))), 1e-3), 0.25 * r)   # across the tyre
-        ends = half * np.array([np.cos(a), np.sin(a)])
-        jdir = np.array([-np.sin(heading), np.cos(heading)])
-        for k in (-0.6, 0.0, 0.6):
-            m = H + k * r * jdir
-            ax.plot(*np.stack([m - ends, m + ends]).T, color="white", linewidth=0.8, zorder=zorder + 0.1)
-    if unit.steered:
-        draw_pivot(ax, P, 0.16 * r, ghost=ghost, zorder=zorder + 1)
-    return P, H
+    for part in unit.parts(beta):
+        if isinstance(part, Link):
+            ends = to_world(pose, part.ends)
+            if part.over:                                   # an arm, over the wheel
+                ax.plot(*ends.T, color=ROLE["body"] if not light else PALETTE["dark"], linewidth=lw,
+                        linestyle=ls, solid_capstyle="round", zorder=zorder + 0.5)
+            else:                                           # a bar between wheels, under them
+                ax.plot(*ends.T, color=ROLE["body"], linewidth=lw, linestyle=ls, zorder=zorder - 0.1)
+        elif isinstance(part, Disc):
+            draw_wheel(ax, to_world(pose, part.centre), pose[0] + part.heading, part.r, ghost=ghost,
+                       arrow=show_j and part.arrow, zorder=zorder, light=light)
+        elif isinstance(part, Rollers):
+            _draw_rollers(ax, to_world(pose, part.centre), pose[0] + part.heading, part.r, part.angle, zorder + 0.1)
+        elif isinstance(part, Pivot):
+            draw_pivot(ax, to_world(pose, part.point), 0.16 * part.r, ghost=ghost, zorder=zorder + 1)
+        else:
+            raise InputTypeError(f"unit.parts() must give Disc, Link, Rollers or Pivot parts, "
+                                 f"got {type(part).__name__}")
+    return to_world(pose, pts["P"]), to_world(pose, pts["H"])
+
+
+def _draw_rollers(ax, centre, heading, r, angle, zorder):
+    """Three white strokes across a wheel disc along its roller axes (world angle ``heading + angle``)."""
+    a = heading + angle
+    half = min(0.21 * r / max(abs(np.cos(angle)), 1e-3), 0.25 * r)     # across the tyre
+    ends = half * np.array([np.cos(a), np.sin(a)])
+    jdir = np.array([-np.sin(heading), np.cos(heading)])
+    for k in (-0.6, 0.0, 0.6):
+        m = centre + k * r * jdir
+        ax.plot(*np.stack([m - ends, m + ends]).T, color="white", linewidth=0.8, zorder=zorder)
 
 
 # ----------------------------------------------------------------------------- the robot

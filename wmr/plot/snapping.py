@@ -105,6 +105,7 @@ def snap_figure(fig):
         elif isinstance(art, FancyBboxPatch):
             art.set_bounds(*snap(art.get_bbox().bounds).tolist())
         elif isinstance(art, FancyArrowPatch):
-            if art._posA_posB is not None:      # noqa: SLF001 (set_positions is the public setter)
-                art.set_positions(*(_snap_xy(p) for p in art._posA_posB))
+            ends = art._posA_posB          # type: ignore[attr-defined]  # matplotlib has no public getter
+            if ends is not None:
+                art.set_positions(*(_snap_xy(p) for p in ends))
     return fig

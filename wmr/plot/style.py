@@ -11,6 +11,7 @@ what makes saved files deterministic (a fixed SVG hash salt, text as paths).
 from __future__ import annotations
 
 from contextlib import contextmanager
+from typing import Any
 
 import matplotlib
 import matplotlib.patheffects as pe
@@ -27,7 +28,7 @@ PALETTE = {
     "grey": "#7F7F7F", "light": "#EDEDED", "dark": "#2B2B2B",
 }
 #: Colours by what they show.
-ROLE = {
+ROLE: dict[str, Any] = {
     "platform_face": "#EEEEEE", "platform_edge": "#8C8C8C", "wheel": PALETTE["dark"],
     "body": "#6E6E6E", "axle": PALETTE["blue"], "plane": PALETTE["vermillion"],
     "frame": PALETTE["black"], "fixed_frame": PALETTE["grey"], "point": PALETTE["black"],
@@ -35,14 +36,14 @@ ROLE = {
     "ic": PALETTE["blue"], "dp": PALETTE["vermillion"], "annotation": PALETTE["dark"],
 }
 #: Construction lines: kind -> (colour, dash pattern, line width).
-DASHES = {
+DASHES: dict[str, tuple[str, Any, float]] = {
     "axle": (ROLE["axle"], (0, (5, 3)), 0.9),                    # along i_i
     "plane": (ROLE["plane"], (0, (8, 2, 1.5, 2)), 0.9),          # along j_i
     "thin": (PALETTE["grey"], (0, (2, 2)), 0.6),
 }
 
 #: Matplotlib settings of every figure (also what makes the output files deterministic).
-RC = {
+RC: dict[Any, Any] = {
     "font.family": "DejaVu Sans",
     "font.size": 9.0,
     "mathtext.fontset": "dejavusans",

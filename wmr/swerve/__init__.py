@@ -49,11 +49,29 @@ and the figure (paths, slip, path error): ``from wmr.swerve.plot import transien
 fig = transient_figure(study)``.
 """
 from .limits import cosine_compensate, desaturate, desaturation_scale, discretize, se2_exp, se2_log
-from .modules import (ModuleCommand, chassis_twist, from_chassis, from_wpilib, module_commands, module_speeds,
-                      radii, swerve_robot, to_chassis, to_wpilib)
+from .modules import (
+                      ModuleCommand,
+                      chassis_twist,
+                      from_chassis,
+                      from_wpilib,
+                      module_commands,
+                      module_speeds,
+                      radii,
+                      swerve_robot,
+                      to_chassis,
+                      to_wpilib,
+)
 from .optimize import MAX_MODULES, SteeringChoice, optimize_modules, optimize_robot, transition_slip
-from .transient import (STRATEGIES, Transient, TransientStudy, TwistProfile, direction_change, resteer_study,
-                        resteer_transient, spin_and_translate)
+from .transient import (
+                      STRATEGIES,
+                      Transient,
+                      TransientStudy,
+                      TwistProfile,
+                      direction_change,
+                      resteer_study,
+                      resteer_transient,
+                      spin_and_translate,
+)
 
 __all__ = ["ModuleCommand", "swerve_robot", "radii", "module_commands", "module_speeds", "chassis_twist",
            "to_wpilib", "from_wpilib", "to_chassis", "from_chassis",

@@ -29,6 +29,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..errors import InputValueError
 from ..model import validation as V
 from .modules import swerve_robot
 
@@ -66,7 +67,8 @@ def desaturation_scale(robot, twist, max_speed):
         peak = np.hypot(px, py).max(axis=-1) * m[..., 0]
         k = np.where(peak > max_speed, max_speed / np.where(peak > 0, peak, 1.0), 1.0)
     if not np.isfinite(k).all():
-        raise ValueError(f"twist is too large: the module speeds overflow (largest |twist| = {np.abs(t).max():.3g})")
+        raise InputValueError(f"twist is too large: the module speeds overflow "
+                              f"(largest |twist| = {np.abs(t).max():.3g})")
     return k
 
 
@@ -130,7 +132,10 @@ def cosine_compensate(speed, beta, target):
 
 
 def _coefficients(theta):
-    r""":math:`A = \sin\theta/\theta`, :math:`B = (1-\cos\theta)/\theta = \sin(\theta/2)\,\mathrm{sinc}(\theta/2)`: exact at 0."""
+    r""":math:`A = \sin\theta/\theta` and :math:`B = (1-\cos\theta)/\theta = \sin(\theta/2)\,\mathrm{sinc}(\theta/2)`.
+
+    Exact at 0.
+    """
     return np.sinc(theta / np.pi), np.sin(theta / 2) * np.sinc(theta / (2 * np.pi))
 
 
@@ -148,7 +153,8 @@ def se2_exp(twist, dt=1.0):
     -------
     numpy.ndarray (..., 3)
         :math:`[\Delta\psi, \Delta x, \Delta y]` in the body frame at the start:
-        :math:`\Delta\psi = \dot\psi\,\Delta t`, :math:`\Delta\mathbf c = \mathbf V(\Delta\psi)\dot{\mathbf c}\,\Delta t`.
+        :math:`\Delta\psi = \dot\psi\,\Delta t`,
+        :math:`\Delta\mathbf c = \mathbf V(\Delta\psi)\dot{\mathbf c}\,\Delta t`.
 
     Examples
     --------
@@ -162,7 +168,8 @@ def se2_exp(twist, dt=1.0):
         A, B = _coefficients(g[..., 0])
         out = np.stack([g[..., 0], A * g[..., 1] - B * g[..., 2], B * g[..., 1] + A * g[..., 2]], axis=-1)
     if not np.isfinite(out).all():
-        raise ValueError(f"twist and dt are too large: the pose overflows (largest |twist| = {np.abs(t).max():.3g}, "
+        raise InputValueError(f"twist and dt are too large: the pose overflows "
+                              f"(largest |twist| = {np.abs(t).max():.3g}, "
                          f"dt = {dt!r})")
     return out
 
@@ -195,7 +202,7 @@ def se2_log(delta, dt=1.0):
     g = V.finite_array("delta", delta, last=3)
     dt = V.number("dt", V.positive("dt", dt))
     if np.any(np.abs(g[..., 0]) >= 2 * np.pi):
-        raise ValueError(f"delta must turn by less than 2 pi (the logarithm is not unique), got "
+        raise InputValueError(f"delta must turn by less than 2 pi (the logarithm is not unique), got "
                          f"|delta psi| up to {np.abs(g[..., 0]).max():.6g}")
     A, B = _coefficients(g[..., 0])
     n = A * A + B * B
@@ -203,7 +210,7 @@ def se2_log(delta, dt=1.0):
         out = np.stack([g[..., 0], (A * g[..., 1] + B * g[..., 2]) / n, (A * g[..., 2] - B * g[..., 1]) / n],
                        axis=-1) / dt
     if not np.isfinite(out).all():
-        raise ValueError(f"delta and dt give a twist beyond double precision (dt = {dt!r})")
+        raise InputValueError(f"delta and dt give a twist beyond double precision (dt = {dt!r})")
     return out
 
 
@@ -235,7 +242,7 @@ def discretize(twist, dt):
     with np.errstate(over="ignore"):
         g = t * dt
     if not np.isfinite(g).all():
-        raise ValueError(f"twist and dt are too large: twist * dt overflows (dt = {dt!r})")
+        raise InputValueError(f"twist and dt are too large: twist * dt overflows (dt = {dt!r})")
     if np.any(np.abs(g[..., 0]) >= 2 * np.pi):
-        raise ValueError(f"twist turns by 2 pi or more in one period dt = {dt!r}: |psi_dot| dt must be < 2 pi")
+        raise InputValueError(f"twist turns by 2 pi or more in one period dt = {dt!r}: |psi_dot| dt must be < 2 pi")
     return se2_log(g, dt)

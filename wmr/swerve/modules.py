@@ -37,8 +37,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..analysis.kinematics import Solution, forward, inverse
+from ..analysis.kinematics import forward, inverse
 from ..analysis.steering import steering_angles
+from ..errors import InputValueError
 from ..model import validation as V
 from ..model.platform import wrap_angle
 
@@ -64,7 +65,10 @@ class ModuleCommand:
 
 
 def swerve_robot(robot):
-    """Return ``robot`` (as numbers) if every unit is a centred wheel (a swerve module).
+    r"""Return ``robot`` (as numbers) if every unit is a swerve module: a steered wheel with one rolling rate.
+
+    A swerve module steers to any angle and rolls in its wheel plane with one rate :math:`\dot\theta_i`,
+    its speed :math:`r_i\dot\theta_i` (a :class:`wmr.CentredWheel`).
 
     Parameters
     ----------
@@ -76,8 +80,8 @@ def swerve_robot(robot):
 
     Raises
     ------
-    ValueError
-        If a unit is not a :class:`wmr.CentredWheel`.
+    wmr.errors.InputValueError
+        If a unit is not a swerve module (an offset, dual, fixed or Swedish wheel).
 
     Examples
     --------
@@ -85,12 +89,12 @@ def swerve_robot(robot):
     >>> swerve_robot(wmr.paper_robot("offset")).w
     Traceback (most recent call last):
         ...
-    ValueError: robot must have centred wheels only (swerve modules), got units ['offset', 'offset', 'offset']
+    wmr.errors.InputValueError: robot must have centred wheels only (swerve modules), got units ['offset', ...]
     """
     robot = V.numeric_robot(robot)
-    kinds = [u.kind for u in robot.wheels]
-    if any(k != "centred" for k in kinds):
-        raise ValueError(f"robot must have centred wheels only (swerve modules), got units {kinds}")
+    if not all(u.steered and u.rolls_in_plane and u.n_rates == 1 for u in robot.wheels):
+        kinds = [u.kind for u in robot.wheels]
+        raise InputValueError(f"robot must have centred wheels only (swerve modules), got units {kinds}")
     return robot
 
 
@@ -193,7 +197,7 @@ def chassis_twist(robot, beta, speed):
     with np.errstate(over="ignore"):
         rates = speed / radii(robot)
     if not np.isfinite(rates).all():
-        raise ValueError(f"speed is too large for these wheel radii: the rolling rates overflow "
+        raise InputValueError(f"speed is too large for these wheel radii: the rolling rates overflow "
                          f"(largest |speed| = {np.abs(speed).max():.3g})")
     return forward(robot, beta, rates)
 

@@ -29,6 +29,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..errors import InputValueError
 from ..model import validation as V
 from ..model.platform import wrap_angle
 from .modules import chassis_twist, module_commands, swerve_robot
@@ -209,7 +210,7 @@ def optimize_robot(robot, twist, current, samples=8):
     robot, cmd, cur = _targets(robot, twist, current)
     w = robot.w
     if w > MAX_MODULES:
-        raise ValueError(f"robot has {w} modules: optimize_robot enumerates 2^w patterns, at most "
+        raise InputValueError(f"robot has {w} modules: optimize_robot enumerates 2^w patterns, at most "
                          f"{MAX_MODULES} modules")
     samples = V.integer("samples", samples, minimum=1)
     flips = ((np.arange(2 ** w)[:, None] >> np.arange(w)) & 1).astype(bool)           # (P, w), P = 2^w
@@ -219,7 +220,12 @@ def optimize_robot(robot, twist, current, samples=8):
     resteer = np.abs(wrap_angle(beta - cur[..., None, :])).sum(axis=-1)             # (..., P)
     slip = transition_slip(robot, cur[..., None, :], beta, speed, samples)
     best = np.argmin(resteer + w * slip, axis=-1)                                    # J(f), first minimum
-    take = (lambda a: np.take_along_axis(a, best[..., None, None], axis=-2)[..., 0, :])
-    pick = (lambda a: np.take_along_axis(a, best[..., None], axis=-1)[..., 0])
+
+    def take(a):                                           # the best pattern's row of a (..., P, w) array
+        return np.take_along_axis(a, best[..., None, None], axis=-2)[..., 0, :]
+
+    def pick(a):                                           # its entry of a (..., P) array
+        return np.take_along_axis(a, best[..., None], axis=-1)[..., 0]
+
     flip = np.broadcast_to(flips, beta.shape)
     return SteeringChoice(take(beta), take(speed) + 0.0, take(flip), pick(resteer), pick(slip))

@@ -6,6 +6,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..errors import InputTypeError
+
 __all__ = ["transient_figure"]
 
 
@@ -29,7 +31,7 @@ def transient_figure(study, fig=None):
     from ..plot.style import PALETTE, ROLE, new_figure, panel_title, style
     from .transient import TransientStudy
     if not isinstance(study, TransientStudy):
-        raise TypeError(f"study must be a TransientStudy (wmr.swerve.resteer_study), got {type(study).__name__}")
+        raise InputTypeError(f"study must be a TransientStudy (wmr.swerve.resteer_study), got {type(study).__name__}")
     colours = list(ROLE["path"]) + [PALETTE["blue"], PALETTE["grey"]]
     with style():
         fig, (ax_p, ax_s, ax_e) = new_figure(1, 3, width=10.0, height=3.3, fig=fig, drawing=False)

@@ -31,6 +31,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..errors import InputTypeError, InputValueError
 from ..model import validation as V
 from ..model.platform import wrap_angle
 from .limits import cosine_compensate, se2_exp
@@ -74,10 +75,10 @@ def _times(t_change, t_end, dt, first="t_change"):
     t_end = V.number("t_end", V.positive("t_end", t_end))
     dt = V.number("dt", V.positive("dt", dt))
     if not t_change < t_end:
-        raise ValueError(f"{first} must be before t_end, got {first} = {t_change!r}, t_end = {t_end!r}")
+        raise InputValueError(f"{first} must be before t_end, got {first} = {t_change!r}, t_end = {t_end!r}")
     n = np.ceil(t_end / dt - 1e-9)
     if not n <= MAX_STEPS:
-        raise ValueError(f"dt = {dt!r} needs {n:.3g} periods to reach t_end = {t_end!r}, more than {MAX_STEPS}")
+        raise InputValueError(f"dt = {dt!r} needs {n:.3g} periods to reach t_end = {t_end!r}, more than {MAX_STEPS}")
     return t_change, dt, np.arange(int(n)) * dt
 
 
@@ -89,7 +90,7 @@ def _body(field_velocity, psi_dot, t, names):
         vx, vy = field_velocity[:, 0], field_velocity[:, 1]
         out = np.column_stack([psi_dot, c * vx + s * vy, -s * vx + c * vy])        # R(-psi) v
     if not np.isfinite(out).all():
-        raise ValueError(f"{names} are too large: the commanded twist or heading overflows double precision")
+        raise InputValueError(f"{names} are too large: the commanded twist or heading overflows double precision")
     return out
 
 
@@ -178,6 +179,8 @@ class Transient:
         :math:`\sigma_k`, norm of the residual of (21), m/s.
     path_error : numpy.ndarray (N+1,)
         Distance between the robot's C and the reference's, m.
+    speed : numpy.ndarray (N, w)
+        The module speeds commanded in each period (after cosine compensation), m/s.
     """
 
     label: str
@@ -188,6 +191,7 @@ class Transient:
     twist: np.ndarray
     slip: np.ndarray
     path_error: np.ndarray
+    speed: np.ndarray
 
     @property
     def slip_distance(self):
@@ -260,20 +264,20 @@ def resteer_transient(robot, profile, strategy="robot", cosine=False, steer_rate
     """
     robot = swerve_robot(robot)
     if not isinstance(profile, TwistProfile):
-        raise TypeError(f"profile must be a TwistProfile (direction_change(), spin_and_translate()), "
+        raise InputTypeError(f"profile must be a TwistProfile (direction_change(), spin_and_translate()), "
                         f"got {V.show(profile)}")
     if not isinstance(strategy, str) or strategy not in ("plain", "module", "robot"):
-        raise ValueError(f"strategy must be 'plain', 'module' or 'robot', got {V.show(strategy)}")
+        raise InputValueError(f"strategy must be 'plain', 'module' or 'robot', got {V.show(strategy)}")
     cosine = V.flag("cosine", cosine)
     rate = V.number("steer_rate", V.positive("steer_rate", steer_rate))
     tw = V.finite_array("profile.twist", profile.twist, last=3).reshape(-1, 3)
     dt, w = V.number("profile.dt", V.positive("profile.dt", profile.dt)), robot.w
     if len(tw) == 0:
-        raise ValueError("profile must command at least one period, got no twists")
+        raise InputValueError("profile must command at least one period, got no twists")
     beta = np.empty((len(tw) + 1, w))
     beta[0] = module_commands(robot, tw[0]).beta if beta0 is None else V.finite_array("beta0", beta0, last=w)
     pose, ref = np.zeros((len(tw) + 1, 3)), np.zeros((len(tw) + 1, 3))
-    twist, slip = np.empty((len(tw), 3)), np.empty(len(tw))
+    twist, slip, speeds = np.empty((len(tw), 3)), np.empty(len(tw)), np.empty((len(tw), w))
     step = rate * dt
     k = 0
     try:
@@ -283,18 +287,19 @@ def resteer_transient(robot, profile, strategy="robot", cosine=False, steer_rate
                 beta[k + 1] = beta[k] + np.clip(wrap_angle(target - beta[k]), -step, step)   # |beta_dot| <= omega_s
                 if cosine:
                     speed = cosine_compensate(speed, beta[k + 1], target)
+                speeds[k] = speed
                 sol = chassis_twist(robot, beta[k + 1], speed)   # (21): least squares; residual = slip
                 twist[k], slip[k] = sol.value, np.hypot.reduce(sol.residual)
                 pose[k + 1] = _compose(pose[k], se2_exp(sol.value, dt))
                 ref[k + 1] = _compose(ref[k], se2_exp(t_k, dt))
             err = np.hypot(*(pose[:, 1:] - ref[:, 1:]).T)
     except ValueError as e:                                       # a kernel's check, said of the profile
-        raise ValueError(f"profile commands a twist this simulation cannot follow (period {k}): {e}") from None
+        raise InputValueError(f"profile commands a twist this simulation cannot follow (period {k}): {e}") from None
     if not all(np.isfinite(a).all() for a in (pose, ref, slip, err)):
-        raise ValueError("profile commands twists too large: the simulated poses overflow double precision")
+        raise InputValueError("profile commands twists too large: the simulated poses overflow double precision")
     label = strategy + (" + cos" if cosine else "")
     t = np.arange(len(tw) + 1) * dt
-    return Transient(label, t, pose, ref, beta, twist, slip, err)
+    return Transient(label, t, pose, ref, beta, twist, slip, err, speeds)
 
 
 @dataclass(frozen=True)
@@ -341,7 +346,7 @@ class TransientStudy:
         for r in self.runs:
             if r.label == label:
                 return r
-        raise ValueError(f"label must be one of {[r.label for r in self.runs]}, got {V.show(label)}")
+        raise InputValueError(f"label must be one of {[r.label for r in self.runs]}, got {V.show(label)}")
 
 
 def resteer_study(robot, profile, steer_rate=2 * np.pi, strategies=STRATEGIES):
@@ -373,8 +378,8 @@ def resteer_study(robot, profile, steer_rate=2 * np.pi, strategies=STRATEGIES):
     try:
         pairs = [(s, c) for s, c in strategies]
     except (TypeError, ValueError):
-        raise TypeError(f"strategies must be (strategy, cosine) pairs, got {V.show(strategies)}") from None
+        raise InputTypeError(f"strategies must be (strategy, cosine) pairs, got {V.show(strategies)}") from None
     if not pairs:
-        raise ValueError("strategies must name at least one (strategy, cosine) pair, got none")
+        raise InputValueError("strategies must name at least one (strategy, cosine) pair, got none")
     runs = tuple(resteer_transient(robot, profile, s, c, rate) for s, c in pairs)
     return TransientStudy(profile, rate, runs)

@@ -9,6 +9,7 @@ import numpy as np
 from wmr.analysis.simulation import simulate
 from wmr.model.robots import paper_robot
 from wmr.model.tolerance import TOL
+
 from .. import Derivation, claim, require
 from .matrices import PAPER
 
@@ -46,7 +47,8 @@ def dead_zone(robot, beta0=0.4, T=2 * np.pi, steps=200):
     Cf = G.mean(axis=1)
     return {"radius": radius, "circle_fit": float(np.abs(np.linalg.norm(C - centre, axis=1) - radius).max()),
             "contact_drift": float(np.ptp(G, axis=0).max()), "centre_minus_Cf": float(np.linalg.norm(centre - Cf[0])),
-            "CCf_min": float(np.linalg.norm(C - Cf, axis=1).min()), "CCf_max": float(np.linalg.norm(C - Cf, axis=1).max()),
+            "CCf_min": float(np.linalg.norm(C - Cf, axis=1).min()), "CCf_max": float(np.linalg.norm(C - Cf,
+                                                                                                    axis=1).max()),
             "psi_drift": float(np.ptp(run.pose[:, 0])), "max_slip": float(run.slip.max())}
 
 
@@ -81,9 +83,10 @@ def dead_zone_claim(origin=(0.06, -0.04), steps=200):
             "with C off the centroid: radius d, centre shifted by |C - centroid|")
     res = max(abs(on["radius"] - d), on["centre_minus_Cf"], on["contact_drift"])
     return Derivation(on=on, off=off, shift=shift, findings=[claim(
-        "dead-zone", holds, rf"`wmr.simulate` ({steps} RK4 steps), all units steered one full turn with the drives "
-                            rf"locked: the contact points stay fixed, the platform does not turn, and C runs once around "
-                            rf"a circle of radius $d$ about their centroid $C_f$, so $|CC_f| = d$ throughout", res,
+        "dead-zone", holds, f"`wmr.simulate` ({steps} RK4 steps), all units steered one full turn with the drives "
+                            "locked: the contact points stay fixed, the platform does not turn, and C runs once "
+                            "around a circle of radius $d$ about their centroid $C_f$, so $|CC_f| = d$ "
+                            "throughout", res,
         convention=r"all $\beta_i$ equal (parallel arms), C at the centroid of the $P_i$",
         note=rf"with C moved off the centroid by ${shift:.3f}$ the radius is still $d$, but the centre is "
              r"$C_f + (C - \bar P)$ and $|CC_f|$ runs from "

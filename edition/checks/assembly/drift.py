@@ -7,18 +7,20 @@ from __future__ import annotations
 import numpy as np
 import sympy as sp
 
-from wmr.model.platform import rotation
+from wmr.model.backend import SYMBOLIC
+from wmr.model.platform import E, rotation
 from wmr.model.robot import Robot
 from wmr.model.robots import paper_robot
 from wmr.model.tolerance import TOL
 from wmr.model.wheels import OffsetWheel
-from ... import offset as PO
-from ... import printed
+
 from ... import symbols as S
+from ...algebra import exact_matrix
+from ...transcription import printed
 from ...verify import SEED, symbolic_equal
 from .. import Derivation, claim, equation, require
 from .locked import concurrent_angles, locked_motion, locked_steering
-from .matrices import PAPER, general_robot, _exact
+from .matrices import PAPER, general_robot
 
 __all__ = ["drift_of_c", "drift_of_psi", "drift"]
 
@@ -47,14 +49,14 @@ def drift_of_c(n=100, origin=(0.06, -0.04), seed=SEED):
     """
     P = printed(28)
     bot = general_robot()
-    J1, J2 = _exact(bot.J1()), bot.J2()
+    J1, J2 = exact_matrix(bot.J1()), bot.J2()
     t, th = sp.Matrix(bot.twist_symbols), sp.Matrix(bot.rate_symbols)
     locked = {s: 0 for s in S.theta_dot}
     rows = sum(((J1 * t - J2 * th).subs(locked)[2 * k:2 * k + 2, :] for k in range(3)), sp.zeros(2, 1))
     sol = sp.solve(list(rows), [S.x_dot, S.y_dot], dict=True)[0]
     c_dot = sp.Matrix([sol[S.x_dot], sol[S.y_dot]])
     extra = (c_dot - P.expr.rhs).applyfunc(sp.simplify)
-    centroid = {PO.D[2][0]: -PO.D[0][0] - PO.D[1][0], PO.D[2][1]: -PO.D[0][1] - PO.D[1][1]}
+    centroid = {S.D[2][0]: -S.D[0][0] - S.D[1][0], S.D[2][1]: -S.D[0][1] - S.D[1][1]}
     holds = symbolic_equal(c_dot.subs(centroid), P.expr.rhs)
     needs_centroid = not symbolic_equal(c_dot, P.expr.rhs)
     f28 = sp.lambdify([*S.beta, *S.phi_dot, S.d], P.expr.rhs, "numpy")
@@ -75,13 +77,15 @@ def drift_of_c(n=100, origin=(0.06, -0.04), seed=SEED):
                 res_off = max(res_off, e)
     require(needs_centroid and res_off > 1e-3, "the printed (28) fails with C off the centroid")
     return Derivation(c_dot=c_dot.applyfunc(sp.factor), extra=extra, off_centroid=res_off, findings=[equation(
-        28, holds, r"the sum of the block rows of (21) with $\dot\theta_i = 0$, solved for $\dot{\mathbf c}$, is the printed "
-                   r"form when $\sum_i\mathbf d_i = \mathbf 0$ (SymPy); it holds on "
-                   rf"{n} simulated drift motions of the paper's robot", res,
-        convention=r"$\sum_i\mathbf d_i = \mathbf 0$ (C at the centroid of the $P_i$); $\dot{\mathbf c}$ in body components",
-        note=r"in general $\dot{\mathbf c}$ gains $-\tfrac{\dot\psi}{3}\mathbf E\sum_i\mathbf d_i$: with C moved off the "
-             rf"centroid the printed form is off by up to ${res_off:.2f}$ on the same motions. It holds on every solution, "
-             r"but solutions exist only for concurrent or parallel arms (see the claim `drift`)")])
+        28, holds, r"the sum of the block rows of (21) with $\dot\theta_i = 0$, solved for $\dot{\mathbf c}$, is the "
+                   r"printed form when $\sum_i\mathbf d_i = \mathbf 0$ (SymPy); it holds on "
+                   f"{n} simulated drift motions of the paper's robot", res,
+        convention=r"$\sum_i\mathbf d_i = \mathbf 0$ (C at the centroid of the $P_i$); $\dot{\mathbf c}$ in body "
+                   r"components",
+        note=r"in general $\dot{\mathbf c}$ gains $-\tfrac{\dot\psi}{3}\mathbf E\sum_i\mathbf d_i$: with C moved off "
+             r"the "
+             f"centroid the printed form is off by up to ${res_off:.2f}$ on the same motions. It holds on every "
+             "solution, but solutions exist only for concurrent or parallel arms (see the claim `drift`)")])
 
 
 def drift_of_psi(n=100, seed=SEED):
@@ -111,20 +115,21 @@ def drift_of_psi(n=100, seed=SEED):
     except TypeError as e:
         error = f"{type(e).__name__}: {e}"
     bot = general_robot()
-    J1, J2 = _exact(bot.J1()), bot.J2()
+    J1, J2 = exact_matrix(bot.J1()), bot.J2()
     t, th = sp.Matrix(bot.twist_symbols), sp.Matrix(bot.rate_symbols)
     cdot = sp.Matrix([S.x_dot, S.y_dot])
     locked = {s: 0 for s in S.theta_dot}
-    proj = sp.expand(sum(((PO.E * sp.Matrix(p)).T * (J1 * t - J2 * th).subs(locked)[2 * k:2 * k + 2, :]
-                          for k, p in enumerate(PO.D)), sp.zeros(1, 1))[0])
+    proj = sp.expand(sum(((E(SYMBOLIC) * sp.Matrix(p)).T * (J1 * t - J2 * th).subs(locked)[2 * k:2 * k + 2, :]
+                          for k, p in enumerate(S.D)), sp.zeros(1, 1))[0])
     a = sp.factor(proj.coeff(S.psi_dot))
     b = sp.Matrix([proj.coeff(S.x_dot), proj.coeff(S.y_dot)]).applyfunc(sp.factor)
     c = sp.collect(sp.expand(proj - a * S.psi_dot - (b.T * cdot)[0]), S.phi_dot)
-    centroid = {PO.D[2][0]: -PO.D[0][0] - PO.D[1][0], PO.D[2][1]: -PO.D[0][1] - PO.D[1][1]}
+    centroid = {S.D[2][0]: -S.D[0][0] - S.D[1][0], S.D[2][1]: -S.D[0][1] - S.D[1][1]}
     b_vanishes = symbolic_equal(b.subs(centroid), sp.zeros(2, 1))
     psi_dot = sp.expand((-(b.T * cdot)[0] - c).subs(centroid)) / sp.expand(a.subs(centroid))
-    paper_route = symbolic_equal((cdot.T * PO.E * (J1 * t)[0:2, :])[0], -S.psi_dot * (cdot.T * sp.Matrix(PO.D[0]))[0])
-    f = sp.lambdify([*sum(PO.D, ()), *S.beta, *S.phi_dot, S.d], psi_dot, "numpy")
+    paper_route = symbolic_equal((cdot.T * E(SYMBOLIC) * (J1 * t)[0:2, :])[0],
+                                 -S.psi_dot * (cdot.T * sp.Matrix(S.D[0]))[0])
+    f = sp.lambdify([*sum(S.D, ()), *S.beta, *S.phi_dot, S.d], psi_dot, "numpy")
     rng = np.random.default_rng(seed)
     res, gap = 0.0, 0.0
     for _ in range(n):
@@ -135,24 +140,27 @@ def drift_of_psi(n=100, seed=SEED):
         x = locked_motion(robot, bc)
         x = x / x[0]
         D = robot.mount_points
-        terms = [rotation(bb) @ np.array([-p, 0.0]) for bb, p in zip(bc, x[3:])]
-        reading = robot.wheels[0].d / 3 * sum(Dk @ tk / (Dk @ Dk) for Dk, tk in zip(D, terms))
+        terms = [rotation(bb) @ np.array([-p, 0.0]) for bb, p in zip(bc, x[3:], strict=True)]
+        reading = robot.wheels[0].d / 3 * sum(Dk @ tk / (Dk @ Dk) for Dk, tk in zip(D, terms, strict=True))
         res = max(res, abs(x[0] - f(*D.ravel(), *bc, *x[3:], robot.wheels[0].d)))
         gap = max(gap, abs(x[0] - reading))
     corrected = (r"\dot\psi = \frac{d\sum_{i=1}^{3}(\mathbf E\mathbf d_i)^{\mathrm T}\mathbf R_{bwi}"
                  r"\begin{bmatrix}-\dot\phi_i\\ 0\end{bmatrix}}{\sum_{i=1}^{3}\mathbf d_i^{\mathrm T}\mathbf d_i}")
     return Derivation(error=error, a=a, b=b, c=c, psi_dot=psi_dot, gap=gap, findings=[equation(
-        29, error is None, r"projecting (20) on $(\mathbf E\mathbf d_i)^{\mathrm T}$ and summing with $\dot\theta_i = 0$ "
-                           r"gives the corrected form when $\sum_i\mathbf d_i = \mathbf 0$ (SymPy); it equals the true "
+        29, error is None, r"projecting (20) on $(\mathbf E\mathbf d_i)^{\mathrm T}$ and summing with "
+                           r"$\dot\theta_i = 0$ gives the corrected form when $\sum_i\mathbf d_i = \mathbf 0$ (SymPy); "
+                           r"it equals the true "
                            rf"$\dot\psi$ on {n} simulated drift motions of random triangles", res,
         refuted=r"the right side divides the 2-vector $\mathbf R_{bwi}[-\dot\phi_i\ \ 0]^{\mathrm T}$ by the 2-vector "
-                r"$\mathbf d_i$, which SymPy rejects; read with $\mathbf d_i^{\mathrm T}/\|\mathbf d_i\|^2$ it is off by up "
+                r"$\mathbf d_i$, which SymPy rejects; read with $\mathbf d_i^{\mathrm T}/\|\mathbf d_i\|^2$ it is off "
+                r"by up "
                 rf"to ${gap:.2f}$ rad/s when $\dot\psi = 1$",
         corrected=corrected, corrected_holds=b_vanishes and paper_route and res < TOL, severity="wrong",
-        why=r"the printed form divides a vector by a vector; multiplying (20) by $\dot{\mathbf c}^{\mathrm T}\mathbf E$ "
-            r"eliminates $\dot{\mathbf c}$, not $\dot\theta_i$",
+        why=r"the printed form divides a vector by a vector; multiplying (20) by "
+            r"$\dot{\mathbf c}^{\mathrm T}\mathbf E$ eliminates $\dot{\mathbf c}$, not $\dot\theta_i$",
         convention=r"$\dot\theta_i = 0$, $\sum_i\mathbf d_i = \mathbf 0$",
-        note=r"for the paper's equilateral placement ($\mathbf d_i^{\mathrm T}\mathbf d_i = L^2$) the denominator is $3L^2$")])
+        note=r"for the paper's equilateral placement ($\mathbf d_i^{\mathrm T}\mathbf d_i = L^2$) the denominator is "
+             r"$3L^2$")])
 
 
 def drift(row28, row29, n_locked=None):
@@ -187,9 +195,10 @@ def drift(row28, row29, n_locked=None):
     holds = forced and symbolic_equal(det_J2, S.d**3 * S.r**3)
     return Derivation(findings=[claim(
         "drift", holds, r"with $\dot\theta_i = 0$ and $\mathbf t = \mathbf 0$, (21) leaves "
-                        r"$\mathbf J_2[\dot\phi_1\ 0\ \dot\phi_2\ 0\ \dot\phi_3\ 0]^{\mathrm T} = \mathbf 0$, whose only "
-                        r"solution is $\dot\phi_i = 0$ since $\det\mathbf J_2 = d^3r^3 \neq 0$ (SymPy): any steering "
-                        r"without driving moves the platform, as (28) and (29) describe", max(row28.residual, row29.residual),
+                        r"$\mathbf J_2[\dot\phi_1\ 0\ \dot\phi_2\ 0\ \dot\phi_3\ 0]^{\mathrm T} = \mathbf 0$, whose "
+                        r"only solution is $\dot\phi_i = 0$ since $\det\mathbf J_2 = d^3r^3 \neq 0$ (SymPy): any "
+                        r"steering without driving moves the platform, as (28) and (29) "
+                        r"describe", max(row28.residual, row29.residual),
         convention=r"offset $d > 0$, non-collinear $P_i$; residual of rows (28) and (29)",
         note=r"what fails is free steering: with the drives locked the $6\times6$ system "
              r"$\mathbf M(\boldsymbol\beta)[\mathbf t;\dot{\boldsymbol\phi}] = \mathbf 0$ has "

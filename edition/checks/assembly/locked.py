@@ -15,7 +15,7 @@ from wmr.model.robot import Robot
 from wmr.model.robots import paper_robot
 from wmr.model.tolerance import TOL
 from wmr.model.wheels import OffsetWheel
-from ... import offset as PO
+
 from ... import symbols as S
 from ...verify import SEED, symbolic_equal
 from .. import Derivation, require
@@ -25,7 +25,8 @@ __all__ = ["locked_system", "locked_motion", "concurrent_angles", "locked_steeri
 
 
 def locked_system(robot, beta):
-    r"""The columns of :math:`\mathbf F` for the twist and the steering rates: :math:`\mathbf M(\boldsymbol\beta)` (drives locked).
+    r"""The columns of :math:`\mathbf F` for the twist and the steering rates: :math:`\mathbf M(\boldsymbol\beta)`
+    (drives locked).
 
     Parameters
     ----------
@@ -43,7 +44,8 @@ def locked_system(robot, beta):
 
 
 def locked_motion(robot, beta):
-    r"""The motion of a robot with locked drives: the null vector :math:`(\mathbf t, \dot\phi_1, \dots)` of :math:`\mathbf M`.
+    r"""The motion of a robot with locked drives: the null vector :math:`(\mathbf t, \dot\phi_1, \dots)` of
+    :math:`\mathbf M`.
 
     Parameters
     ----------
@@ -66,7 +68,8 @@ def locked_motion(robot, beta):
 
 
 def concurrent_angles(robot, u):
-    r"""Steering angles whose arm lines (through :math:`P_i` along :math:`\mathbf j_i`) all pass through the body point ``u``.
+    r"""Steering angles whose arm lines (through :math:`P_i` along :math:`\mathbf j_i`) all pass through the body point
+    ``u``.
 
     Parameters
     ----------
@@ -82,7 +85,9 @@ def concurrent_angles(robot, u):
 
 
 def locked_steering(robots=200, per=10, seed=SEED):
-    r"""Can the robot steer with the drives locked?  :math:`\det\mathbf M = d^3\det[\mathbf d_i\times\mathbf j_i\ \ \mathbf j_i^{\mathrm T}]`.
+    r"""Can the robot steer with the drives locked?
+
+    :math:`\det\mathbf M = d^3\det[\mathbf d_i\times\mathbf j_i\ \ \mathbf j_i^{\mathrm T}]`.
 
     The rows :math:`(\mathbf d_i\times\mathbf j_i, \mathbf j_i^{\mathrm T})` are the Plücker coordinates of
     the arm lines; the determinant vanishes exactly when they are concurrent or all parallel.
@@ -103,13 +108,14 @@ def locked_steering(robots=200, per=10, seed=SEED):
     bot = general_robot()
     M = locked_system(bot, None).applyfunc(sp.nsimplify)
     det_M = sp.factor(sp.expand(M.det(method="berkowitz")))
-    A = sp.Matrix.vstack(*[rotation(b, SYMBOLIC)[:, 1].T * point_row(p, backend=SYMBOLIC) for p, b in zip(PO.D, S.beta)])
+    A = sp.Matrix.vstack(*[rotation(b, SYMBOLIC)[:, 1].T * point_row(p, backend=SYMBOLIC) for p, b in zip(S.D, S.beta,
+                                                                                                          strict=True)])
     plucker = symbolic_equal(det_M, S.d**3 * A.det())
     ux, uy, l1, l2, s3, n3 = sp.symbols("u_x u_y lambda_1 lambda_2 s_3 n_3", real=True)
     u = sp.Matrix([ux, uy])
     Rb = [rotation(b, SYMBOLIC) for b in S.beta]
     lines = [u + l1 * Rb[0][:, 1], u + l2 * Rb[1][:, 1], u + s3 * Rb[2][:, 1] + n3 * Rb[2][:, 0]]
-    sub = dict(zip(sum(PO.D, ()), sum((tuple(v) for v in lines), ())))
+    sub = dict(zip(sum(S.D, ()), sum((tuple(v) for v in lines), ()), strict=True))
     det_conc = sp.factor(sp.trigsimp(sp.expand(det_M.subs(sub))))
     det_par = sp.simplify(det_M.subs({S.beta[1]: S.beta[0], S.beta[2]: S.beta[0]}))
     geometry = symbolic_equal(det_conc, -S.d**3 * n3 * sp.sin(S.beta[0] - S.beta[1])) and det_par == 0

@@ -4,7 +4,7 @@ Chapter 2's checks live in :mod:`edition.checks.assembly`; this module holds one
 """
 from __future__ import annotations
 
-from functools import lru_cache
+from functools import cache
 
 import numpy as np
 import sympy as sp
@@ -16,10 +16,10 @@ from wmr.model.robot import Robot
 from wmr.model.robots import paper_robot
 from wmr.model.tolerance import TOL
 from wmr.model.wheels import OffsetWheel
-from ... import offset as PO
-from ... import platform_wheels as PW
-from ... import printed
+
 from ... import symbols as S
+from ...algebra import exact_matrix
+from ...transcription import printed
 from ...verify import SEED, max_residual, symbolic_equal
 from .. import Derivation, claim, equation, require
 
@@ -30,11 +30,7 @@ __all__ = ["general_robot", "one_unit", "stacking", "functional_matrix", "null_s
 PAPER = dict(L=0.3, r=0.1, d=0.05)
 
 
-def _exact(M):
-    return M.applyfunc(sp.nsimplify)
-
-
-@lru_cache(maxsize=None)
+@cache
 def general_robot():
     """Three offset wheels at general (symbolic) mount points, symbolic r and d.
 
@@ -42,7 +38,7 @@ def general_robot():
     -------
     wmr.Robot
     """
-    return Robot([OffsetWheel(p, r=S.r, d=S.d) for p in PO.D])
+    return Robot([OffsetWheel(p, r=S.r, d=S.d) for p in S.D])
 
 
 def one_unit():
@@ -54,14 +50,15 @@ def one_unit():
         ``lhs`` (:math:`\mathbf J_1\mathbf t`), ``rhs`` (:math:`\mathbf J_2\dot{\boldsymbol\theta}`), finding (20).
     """
     P = printed(20)
-    one = Robot([OffsetWheel(PW.d_i, r=S.r, d=S.d)])
-    lhs = _exact(one.J1()) * sp.Matrix(one.twist_symbols)
-    rhs = one.J2([PW.beta_i]) * sp.Matrix([PW.phi_dot_i, PW.theta_dot_i])
+    one = Robot([OffsetWheel(S.d_i, r=S.r, d=S.d)])
+    lhs = exact_matrix(one.J1()) * sp.Matrix(one.twist_symbols)
+    rhs = one.J2([S.beta_i]) * sp.Matrix([S.phi_dot_i, S.theta_dot_i])
     holds = symbolic_equal(lhs, P.expr.lhs) and symbolic_equal(rhs, P.expr.rhs)
     res = max(max_residual(lhs, P.expr.lhs), max_residual(rhs, P.expr.rhs))
     return Derivation(lhs=lhs, rhs=rhs, findings=[equation(
-        20, holds, r"both sides equal the one-unit robot's $\mathbf J_1\mathbf t$ and $\mathbf J_2\dot{\boldsymbol\theta}$ "
-                   r"(SymPy): the velocity of $P_i$ through the platform and through the wheel", res,
+        20, holds, r"both sides equal the one-unit robot's $\mathbf J_1\mathbf t$ and "
+                   r"$\mathbf J_2\dot{\boldsymbol\theta}$ (SymPy): the velocity of $P_i$ through the platform and "
+                   r"through the wheel", res,
         convention=r"as (5) and (10): $H_i = P_i - d\,\mathbf j_i$, $\dot\phi_i$ absolute")])
 
 
@@ -81,7 +78,7 @@ def stacking(ws=(1, 2, 3, 4, 5), seed=SEED):
     """
     P = printed(21)
     bot = general_robot()
-    J1, J2 = _exact(bot.J1()), bot.J2()
+    J1, J2 = exact_matrix(bot.J1()), bot.J2()
     t, th = sp.Matrix(bot.twist_symbols), sp.Matrix(bot.rate_symbols)
     holds = (symbolic_equal(J1, P.extra["J1"]) and symbolic_equal(J2, P.extra["J2"])
              and list(th) == list(P.extra["theta_dot"]) and symbolic_equal(J1 * t - J2 * th, P.expr.lhs - P.expr.rhs))
@@ -99,7 +96,8 @@ def stacking(ws=(1, 2, 3, 4, 5), seed=SEED):
 
 
 def functional_matrix(ws=(1, 2, 3, 4, 5)):
-    r"""(22)-(25): :math:`\mathbf F = [\mathbf J_1\ -\mathbf J_2]`, its columns, and the size of the zero vector of (22).
+    r"""(22)-(25): :math:`\mathbf F = [\mathbf J_1\ -\mathbf J_2]`, its columns, and the size of the zero vector of
+    (22).
 
     Parameters
     ----------
@@ -113,17 +111,18 @@ def functional_matrix(ws=(1, 2, 3, 4, 5)):
     """
     P22, P23, P24, P25 = (printed(i) for i in (22, 23, 24, 25))
     bot = general_robot()
-    J1, J2 = _exact(bot.J1()), bot.J2()
+    J1, J2 = exact_matrix(bot.J1()), bot.J2()
     t, th = sp.Matrix(bot.twist_symbols), sp.Matrix(bot.rate_symbols)
-    F = _exact(bot.F())
+    F = exact_matrix(bot.F())
     q = sp.Matrix(bot.qdot_symbols)
     Fq = F * q
     sizes = []
     for w in ws:
         b = Robot([OffsetWheel((float(w), 0.0), r=0.1, d=0.05)] * w)
         Fw = b.F(np.zeros(w))
-        sizes.append({"w": w, "F": f"${Fw.shape[0]}\\times{Fw.shape[1]}$", "entries": int((Fw @ np.ones(Fw.shape[1])).shape[0]),
-                      "printed": int(P22.extra["zero_dim"].subs(PO.w_sym, w)), "shape_ok": Fw.shape == (2 * w, 3 + 2 * w)})
+        sizes.append({"w": w, "F": f"${Fw.shape[0]}\\times{Fw.shape[1]}$",
+                      "entries": int((Fw @ np.ones(Fw.shape[1])).shape[0]),
+                      "printed": int(P22.extra["zero_dim"].subs(S.w, w)), "shape_ok": Fw.shape == (2 * w, 3 + 2 * w)})
     dim_as_printed = all(s["entries"] == s["printed"] for s in sizes)
     dim_2w = all(s["entries"] == 2 * s["w"] for s in sizes)
     shapes = all(s["shape_ok"] for s in sizes)
@@ -131,27 +130,31 @@ def functional_matrix(ws=(1, 2, 3, 4, 5)):
     res22 = max_residual(Fq, P22.expr.lhs)
     wlist = rf"$w = {min(ws)}, \dots, {max(ws)}$"
     return Derivation(F=F, qdot_names=bot.qdot_names, sizes=sizes, findings=[
-        equation(22, holds22, r"$[\mathbf J_1\ \ -\mathbf J_2]\,\dot{\mathbf q}$ is the left side of (21) (SymPy) and has "
-                              rf"$2w$ entries ({wlist})", res22,
-                 refuted=r"the text calls the zero vector $(3+2w)$-dimensional; $\mathbf F\dot{\mathbf q}$ has $2w$ entries",
-                 corrected=r"[\mathbf J_1\ \ -\mathbf J_2]\begin{bmatrix}\mathbf t\\ \dot{\boldsymbol\theta}\end{bmatrix} "
-                           r"= \mathbf 0, \quad \mathbf 0 \in \mathbb R^{2w}",
+        equation(22, holds22, r"$[\mathbf J_1\ \ -\mathbf J_2]\,\dot{\mathbf q}$ is the left side of (21) (SymPy) and "
+                              r"has "
+                              f"$2w$ entries ({wlist})", res22,
+                 refuted=r"the text calls the zero vector $(3+2w)$-dimensional; $\mathbf F\dot{\mathbf q}$ has $2w$ "
+                         r"entries",
+                 corrected=r"[\mathbf J_1\ \ -\mathbf J_2]\begin{bmatrix}\mathbf t\\ "
+                           r"\dot{\boldsymbol\theta}\end{bmatrix} = \mathbf 0, \quad \mathbf 0 \in \mathbb R^{2w}",
                  corrected_holds=symbolic_equal(Fq, P22.expr.lhs) and dim_2w, severity="typo",
-                 why=r"the equation holds, but the sentence after it gives the zero vector $3+2w$ entries instead of $2w$ "
-                     r"(one pair of no-slip equations per unit)",
+                 why="the equation holds, but the sentence after it gives the zero vector $3+2w$ entries instead of "
+                     "$2w$ (one pair of no-slip equations per unit)",
                  convention=r"$\mathbf F$ is $2w\times(3+2w)$"),
         equation(23, symbolic_equal(Fq, J1 * t - J2 * th), r"`Robot.F` times `Robot.qdot_symbols` equals "
-                 r"$\mathbf J_1\mathbf t - \mathbf J_2\dot{\boldsymbol\theta}$ (SymPy)", max_residual(Fq, J1 * t - J2 * th),
+                 r"$\mathbf J_1\mathbf t - \mathbf J_2\dot{\boldsymbol\theta}$ "
+                 r"(SymPy)", max_residual(Fq, J1 * t - J2 * th),
                  convention=r"$\dot{\mathbf q}$ ordered as (25)"),
         equation(24, symbolic_equal(F, P24.expr.rhs) and F.shape == (6, 9) and shapes,
-                 rf"`Robot.F` equals the printed block matrix for three units at general mount points (SymPy); shape "
+                 r"`Robot.F` equals the printed block matrix for three units at general mount points (SymPy); shape "
                  rf"$2w\times(3+2w)$ for {wlist}", max_residual(F, P24.expr.rhs), convention="columns ordered as (25)"),
         equation(25, list(q) == list(P25.expr.rhs), r"`Robot.qdot_symbols` is the printed vector, the column order of "
                  r"$\mathbf F$", 0.0, convention="definition")])
 
 
 def null_space_of_F(n=300, seed=SEED):
-    r"""(26)-(27): :math:`\mathbf N = [\mathbf 1_3;\ \mathbf J_2^{-1}\mathbf J_1]` spans :math:`\mathcal N(\mathbf F)` exactly (d > 0).
+    r"""(26)-(27): :math:`\mathbf N = [\mathbf 1_3;\ \mathbf J_2^{-1}\mathbf J_1]` spans :math:`\mathcal N(\mathbf F)`
+    exactly (d > 0).
 
     Parameters
     ----------
@@ -164,9 +167,9 @@ def null_space_of_F(n=300, seed=SEED):
     Derivation
         ``det_J2``, ``N``, findings (26) and (27).
     """
-    P26, P27 = printed(26), printed(27)
+    P27 = printed(27)                              # (26) is a statement: checked through its consequences
     bot = general_robot()
-    J1, J2, F = _exact(bot.J1()), bot.J2(), _exact(bot.F())
+    J1, J2, F = exact_matrix(bot.J1()), bot.J2(), exact_matrix(bot.F())
     blocks = [J2[2 * k:2 * k + 2, 2 * k:2 * k + 2] for k in range(3)]
     J2_inv = sp.diag(*[B.inv().applyfunc(sp.trigsimp) for B in blocks])
     det_J2 = sp.trigsimp(sp.prod([B.det() for B in blocks]))
@@ -184,10 +187,14 @@ def null_space_of_F(n=300, seed=SEED):
         mob.add(int(mobility(b, beta)))
     require(res < TOL, "the numeric null vectors satisfy (21)")
     return Derivation(det_J2=det_J2, N=N, nullities=nullities, findings=[
-        equation(26, exact, r"$\mathbf N = [\mathbf 1_3;\ \mathbf J_2^{-1}\mathbf J_1]$ satisfies $\mathbf F\mathbf N = \mathbf 0$ "
-                            rf"with $\det\mathbf J_2 = {sp.latex(det_J2)} \neq 0$ (SymPy); the SVD null vectors at {n} random "
-                            r"configurations satisfy (21)", res, convention=r"$\dot{\mathbf q}$ ordered as (25); $d > 0$"),
-        equation(27, exact and nullities == mob == {P27.extra["claim"]["nullity"]} and F.shape[1] == P27.extra["claim"]["q_dim"]
+        equation(26, exact, r"$\mathbf N = [\mathbf 1_3;\ \mathbf J_2^{-1}\mathbf J_1]$ satisfies "
+                            r"$\mathbf F\mathbf N = \mathbf 0$ "
+                            rf"with $\det\mathbf J_2 = {sp.latex(det_J2)} \neq 0$ (SymPy); the SVD null vectors at {n} "
+                            r"random configurations satisfy "
+                            r"(21)", res, convention=r"$\dot{\mathbf q}$ ordered as (25); $d > 0$"),
+        equation(27,
+                 exact and nullities == mob == {P27.extra["claim"]["nullity"]}
+                 and F.shape[1] == P27.extra["claim"]["q_dim"]
                  and F.shape[1] - P27.extra["claim"]["nullity"] == P27.extra["claim"]["rank_F"],
                  rf"the nullity from the SVD is 3 at all {n} random "
                  r"configurations and equals `wmr.mobility` (structured rank)", 0.0,
@@ -226,7 +233,8 @@ def mobility_offset(n=200, seed=SEED):
                       "admissible twists (dim)": sorted({admissible_twists(b, x).shape[1] for x in betas})})
     holds = (exact.printed_holds and cases[0]["nullity"] == [3] and cases[0]["admissible twists (dim)"] == [3])
     require(cases[1]["nullity"] == [3] and cases[1]["admissible twists (dim)"] == [0], "d = 0: nullity 3, immobile")
-    require(cases[2]["nullity"] == [4] and cases[2]["admissible twists (dim)"] == [1], "d = 0, concurrent axles: nullity 4")
+    require(cases[2]["nullity"] == [4] and cases[2]["admissible twists "
+                                                    "(dim)"] == [1], "d = 0, concurrent axles: nullity 4")
     return Derivation(cases=cases, findings=[claim(
         "mobility-offset", holds, r"for $d > 0$, $\mathbf N = [\mathbf 1_3;\ \mathbf J_2^{-1}\mathbf J_1]$ spans "
         r"$\mathcal N(\mathbf F)$ at every configuration (SymPy), so rank 6, nullity 3 and every twist admissible "

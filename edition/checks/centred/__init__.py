@@ -4,8 +4,8 @@ Two lines through each mount point :math:`P_i` organise the chapter: the **axle 
 :math:`\mathbf i_i`) and the **wheel-plane line** (along :math:`\mathbf j_i`).  The robot can move
 iff the axle lines are concurrent or all parallel (rank F = 5, :func:`mobility_centred`);
 :math:`\mathbf J` is singular iff the wheel-plane lines are (:func:`singular_configurations`).
-Matrices come from :class:`wmr.Robot` for general mount points :data:`edition.isotropy.D` or the
-paper's placement, and are compared with :mod:`edition.centred`.
+Matrices come from :class:`wmr.Robot` for general mount points :data:`edition.symbols.D` or the
+paper's placement, and are compared with the printed forms (:mod:`edition.transcription`).
 
 The checks, by equation group:
 
@@ -14,9 +14,18 @@ The checks, by equation group:
 :mod:`.singular`  singular configurations, (58)-(59): det J, the printed determinant, line classes, the paper's list
 ================  ==================================================================================================
 """
-from .mobility import L_NUM, R_NUM, general_robot, kinematics, functional_matrix, mobility_centred, isotropic_kinematics
-from .singular import singular_configurations, printed_determinant, classify_lines, singular_list, singular_v, planes_through, LINE_CLASSES
+from .mobility import L_NUM, R_NUM, functional_matrix, general_robot, isotropic_kinematics, kinematics, mobility_centred
+from .singular import (
+                       LINE_CLASSES,
+                       classify_lines,
+                       planes_through,
+                       printed_determinant,
+                       singular_configurations,
+                       singular_list,
+                       singular_v,
+)
 
-__all__ = ["general_robot", "kinematics", "functional_matrix", "mobility_centred", "isotropic_kinematics",
+__all__ = ["L_NUM", "R_NUM", "general_robot", "kinematics", "functional_matrix", "mobility_centred",
+           "isotropic_kinematics",
            "singular_configurations", "printed_determinant", "classify_lines", "singular_list", "singular_v",
            "planes_through", "LINE_CLASSES"]

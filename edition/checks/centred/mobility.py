@@ -4,7 +4,7 @@ Chapter 4's checks live in :mod:`edition.checks.centred`; this module holds one 
 """
 from __future__ import annotations
 
-from functools import lru_cache
+from functools import cache
 
 import numpy as np
 import sympy as sp
@@ -18,11 +18,10 @@ from wmr.model.platform import E, rotation
 from wmr.model.robot import Robot
 from wmr.model.robots import paper_robot
 from wmr.model.wheels import CentredWheel, OffsetWheel
-from ... import centred as C
-from ... import printed
+
 from ... import symbols as S
-from ...isotropy import D
-from ...notebook import explicit, numeric
+from ...algebra import explicit, numeric
+from ...transcription import printed
 from ...verify import SEED, max_residual, symbolic_equal
 from .. import Derivation, claim, equation, require
 
@@ -31,10 +30,11 @@ __all__ = ["general_robot", "kinematics", "functional_matrix", "mobility_centred
 
 #: the numeric robot of this chapter (metres)
 L_NUM, R_NUM = 0.4, 0.1
-_u = sp.Matrix(sp.symbols("u_x u_y", real=True))
+#: a general point U of the plane (body frame): the centre of a rotation
+u_point = sp.Matrix(sp.symbols("u_x u_y", real=True))
 
 
-@lru_cache(maxsize=None)
+@cache
 def general_robot():
     """Three centred wheels at general (symbolic) mount points, radius r.
 
@@ -42,10 +42,22 @@ def general_robot():
     -------
     wmr.Robot
     """
-    return Robot([CentredWheel(d, r=S.r) for d in D])
+    return Robot([CentredWheel(d, r=S.r) for d in S.D])
 
 
-def _axes():
+def unit_axes():
+    r"""The axes of the three units of :func:`general_robot`, from its :math:`\mathbf J_2`.
+
+    Returns
+    -------
+    axle : list of 3 Matrix (2, 1)
+        :math:`\mathbf i_k = \mathbf E\mathbf b_k / r` (the column :math:`\mathbf b_k` of unit k is
+        :math:`-r\mathbf j_k`).
+    rolling : list of 3 Matrix (2, 1)
+        :math:`\mathbf j_k`.
+    columns : list of 3 Matrix (2, 1)
+        The nonzero blocks :math:`\mathbf b_k = \mathbf R_{bwk}[0\ \ -r]^{\mathrm T}` of :math:`\mathbf J_2`.
+    """
     gen = general_robot()
     J2 = gen.J2()
     cols = [J2[2 * k:2 * k + 2, k] for k in range(3)]          # b_i = R_bwi [0, -r]^T = -r j_i
@@ -61,20 +73,21 @@ def kinematics():
         ``lhs``, ``rhs``, finding (51).
     """
     p51 = printed(51)
-    one = Robot([CentredWheel(C.d_i, r=S.r)])
+    one = Robot([CentredWheel(S.d_i, r=S.r)])
     lhs = one.J1(sp.Integer(1)) * sp.Matrix(one.twist_symbols)
-    rhs = one.J2([C.beta_i]) * sp.Matrix([C.theta_dot_i])
+    rhs = one.J2([S.beta_i]) * sp.Matrix([S.theta_dot_i])
     J2 = general_robot().J2()
-    off0 = OffsetWheel(C.d_i, r=S.r, d=sp.Integer(0))
+    off0 = OffsetWheel(S.d_i, r=S.r, d=sp.Integer(0))
     holds = (symbolic_equal(lhs - rhs, p51.expr.lhs - p51.expr.rhs) and symbolic_equal(J2, p51.extra["J2"])
-             and symbolic_equal(off0.block(C.beta_i)[:, 1], one.wheels[0].block(C.beta_i))
-             and symbolic_equal(off0.block(C.beta_i)[:, 0], sp.zeros(2, 1)))
+             and symbolic_equal(off0.block(S.beta_i)[:, 1], one.wheels[0].block(S.beta_i))
+             and symbolic_equal(off0.block(S.beta_i)[:, 0], sp.zeros(2, 1)))
     res = max(max_residual(lhs - rhs, p51.expr.lhs - p51.expr.rhs), max_residual(J2, p51.extra["J2"]))
     return Derivation(lhs=lhs, rhs=rhs, findings=[equation(
-        51, holds, r"the one-wheel robot's $\mathbf J_1\mathbf t = \mathbf J_2\dot\theta_i$ is the printed equation, and "
-                   r"`Robot.J2` of three wheels is the block-diagonal $\mathbf J_2$ that follows it (SymPy); the "
+        51, holds, r"the one-wheel robot's $\mathbf J_1\mathbf t = \mathbf J_2\dot\theta_i$ is the printed equation, "
+                   r"and `Robot.J2` of three wheels is the block-diagonal $\mathbf J_2$ that follows it (SymPy); the "
                    r"offset-wheel block at $d = 0$ has a zero steering column", res,
-        convention=r"$\dot{\mathbf h}_i = -r\dot\theta_i\mathbf j_i$, $\mathbf R_{bwi} = \mathbf R(\beta_i)$; contact point at $P_i$")])
+        convention=r"$\dot{\mathbf h}_i = -r\dot\theta_i\mathbf j_i$, $\mathbf R_{bwi} = \mathbf R(\beta_i)$; contact "
+                   r"point at $P_i$")])
 
 
 def functional_matrix():
@@ -90,10 +103,13 @@ def functional_matrix():
     F = gen.F()
     q = sp.Matrix(gen.qdot_symbols)
     t = sp.Matrix(gen.twist_symbols)
-    holds53 = list(q) == list(p53.expr.rhs) and symbolic_equal(F * q, gen.J1(sp.Integer(1)) * t - gen.J2() * sp.Matrix(gen.rate_symbols))
+    holds53 = list(q) == list(p53.expr.rhs) and symbolic_equal(F * q,
+                                                               gen.J1(sp.Integer(1)) * t - gen.J2()
+                                                               * sp.Matrix(gen.rate_symbols))
     return Derivation(F=F.applyfunc(sp.nsimplify), qdot_names=gen.qdot_names, findings=[
         equation(52, symbolic_equal(F, p52.expr.rhs), r"`Robot.F` for general mount points equals the printed matrix "
-                 r"(SymPy): the wheel blocks are $-\mathbf R_{bwi}[0\ \ -r]^{\mathrm T} = \mathbf R_{bwi}[0\ \ r]^{\mathrm T}$",
+                 r"(SymPy): the wheel blocks are "
+                 r"$-\mathbf R_{bwi}[0\ \ -r]^{\mathrm T} = \mathbf R_{bwi}[0\ \ r]^{\mathrm T}$",
                  max_residual(F, p52.expr.rhs), convention=r"$\mathbf F = [\mathbf J_1\ \ -\mathbf J_2]$"),
         equation(53, holds53, r"`Robot.qdot_symbols` is the printed vector, and $\mathbf F\dot{\mathbf q} = "
                  r"\mathbf J_1\mathbf t - \mathbf J_2\dot{\boldsymbol\theta}$ (SymPy)", 0.0,
@@ -101,7 +117,8 @@ def functional_matrix():
 
 
 def mobility_centred(n=20000, n_coord=300, grid=36, seed=SEED):
-    r"""Claim ``mobility-centred``: rank F = 3 + rank A(β); 5 (mobility 1) iff the axle lines are concurrent or parallel.
+    r"""Claim ``mobility-centred``: rank F = 3 + rank A(β); 5 (mobility 1) iff the axle lines are concurrent or
+    parallel.
 
     The wheel column of block row i is :math:`-r\mathbf j_i`; multiplying the row by
     :math:`[\mathbf j_i\ \mathbf i_i]^{\mathrm T}` splits :math:`\mathbf F` into three pivot rows and the
@@ -124,15 +141,17 @@ def mobility_centred(n=20000, n_coord=300, grid=36, seed=SEED):
         ``A`` (3, 3), ``minor`` (a 2x2 minor), ``summary`` (rows for a table), finding ``mobility-centred``.
     """
     gen = general_robot()
-    axle, jdir, cols = _axes()
+    axle, jdir, cols = unit_axes()
     J1 = gen.J1(sp.Integer(1))
     beta = gen.beta_symbols
-    require(all((a.T * b)[0] == 0 for a, b in zip(axle, cols)), "the axle annihilates the wheel column")
-    require(all(symbolic_equal(a, rotation(bk, SYMBOLIC)[:, 0]) for a, bk in zip(axle, beta)), "E b_i / r is the axle")
+    require(all((a.T * b)[0] == 0 for a, b in zip(axle, cols, strict=True)), "the axle annihilates the wheel column")
+    require(all(symbolic_equal(a, rotation(bk, SYMBOLIC)[:, 0]) for a, bk in zip(axle, beta, strict=True)),
+            "E b_i / r is the axle")
     A = sp.Matrix.vstack(*[axle[k].T * J1[2 * k:2 * k + 2, :] for k in range(3)])
-    t_rot = sp.Matrix([S.psi_dot, *(-S.psi_dot * E(SYMBOLIC) * _u)])
+    t_rot = sp.Matrix([S.psi_dot, *(-S.psi_dot * E(SYMBOLIC) * u_point)])
     t_tra = sp.Matrix([0, S.x_dot, S.y_dot])
-    rot = symbolic_equal(A * t_rot, sp.Matrix([-S.psi_dot * (jdir[k].T * (sp.Matrix(D[k]) - _u))[0] for k in range(3)]))
+    rot = symbolic_equal(A * t_rot,
+                         sp.Matrix([-S.psi_dot * (jdir[k].T * (sp.Matrix(S.D[k]) - u_point))[0] for k in range(3)]))
     tra = symbolic_equal(A * t_tra, sp.Matrix([(axle[k].T * t_tra[1:, :])[0] for k in range(3)]))
     m23 = sp.trigsimp(A[[0, 1], 1:].det())
     b_ = sp.Symbol("b", real=True)
@@ -140,15 +159,16 @@ def mobility_centred(n=20000, n_coord=300, grid=36, seed=SEED):
     for k in (0, 1):                                          # beta_2 = beta_1 + k pi
         A12 = A[:2, :].subs({beta[0]: b_, beta[1]: b_ + k * sp.pi})
         m2 = sum(A12[:, list(c)].det()**2 for c in ((0, 1), (0, 2), (1, 2)))
-        minors &= symbolic_equal(m2, ((jdir[0].subs(beta[0], b_).T * (sp.Matrix(D[0]) - sp.Matrix(D[1])))[0])**2)
+        minors &= symbolic_equal(m2, ((jdir[0].subs(beta[0], b_).T * (sp.Matrix(S.D[0]) - sp.Matrix(S.D[1])))[0])**2)
     bot = paper_robot("centred", L=L_NUM, r=R_NUM)
     rng = np.random.default_rng(seed)
     B = rng.uniform(-np.pi, np.pi, (n, 3))
-    A_fun = sp.lambdify([*beta, *[s for d in D for s in d]], A, "numpy")
+    A_fun = sp.lambdify([*beta, *[s for d in S.D for s in d]], A, "numpy")
     A_num, _ = twist_constraints(bot, B[:300])
     res = max(float(np.max(np.abs(np.abs(np.array(A_fun(*b, *bot.mount_points.ravel()), dtype=float)) - np.abs(An))))
-              for b, An in zip(B[:300], A_num))
-    tw = np.vstack([rng.normal(size=(n_coord * 2 // 3, 3)), np.c_[np.zeros(n_coord // 3), rng.normal(size=(n_coord // 3, 2))]])
+              for b, An in zip(B[:300], A_num, strict=True))
+    tw = np.vstack([rng.normal(size=(n_coord * 2 // 3, 3)), np.c_[np.zeros(n_coord // 3), rng.normal(size=(n_coord // 3,
+                                                                                                           2))]])
     Bc = steering_angles(bot, tw)
     require(np.array_equal(rank(bot.F(np.vstack([B[:300], Bc]))), rank_F(bot, np.vstack([B[:300], Bc]))),
             "the SVD rank of F equals wmr.rank_F")
@@ -157,24 +177,30 @@ def mobility_centred(n=20000, n_coord=300, grid=36, seed=SEED):
     line = Robot([CentredWheel((x, 0.0), r=R_NUM) for x in (-0.4, 0.1, 0.4)])
     r_rand, r_coord, r_grid = (set(rank_F(bot, x).tolist()) for x in (B, Bc, G))
     r_line = int(rank_F(line, [0.0, np.pi, 0.0]))
-    summary = [{"configurations": f"random $\\boldsymbol\\beta$ ({n})", r"rank $\mathbf F$": r_rand, "mobility": {6 - x for x in r_rand}},
-               {"configurations": f"axles through the IC of random twists ({len(tw)})", r"rank $\mathbf F$": r_coord, "mobility": {6 - x for x in r_coord}},
-               {"configurations": f"grid of ${grid}^3$ angles", r"rank $\mathbf F$": r_grid, "mobility": {6 - x for x in r_grid}},
-               {"configurations": r"collinear $P_i$, axles on their line", r"rank $\mathbf F$": {r_line}, "mobility": {6 - r_line}}]
+    summary = [{"configurations": "random $\\boldsymbol\\beta$ "
+                                  f"({n})", r"rank $\mathbf F$": r_rand, "mobility": {6 - x for x in r_rand}},
+               {"configurations": "axles through the IC of random twists "
+                                  f"({len(tw)})", r"rank $\mathbf F$": r_coord, "mobility": {6 - x for x in r_coord}},
+               {"configurations": f"grid of ${grid}^3$ "
+                                  "angles", r"rank $\mathbf F$": r_grid, "mobility": {6 - x for x in r_grid}},
+               {"configurations": "collinear $P_i$, axles on their "
+                                  "line", r"rank $\mathbf F$": {r_line}, "mobility": {6 - r_line}}]
     holds = rot and tra and minors and r_rand == {6} and r_coord == {5} and r_grid == {5, 6} and r_line == 4
     return Derivation(A=A, minor=m23, summary=summary, findings=[claim(
-        "mobility-centred", holds, r"$\operatorname{rank}\mathbf F = 3 + \operatorname{rank}\mathbf A(\boldsymbol\beta)$; "
-        r"$\mathbf A\mathbf t = \mathbf 0$ for the rotation about $U$ iff $U$ is on every axle line, for a translation iff "
-        r"the axles are parallel; the $2\times2$ minors of $\mathbf A$ vanish only for parallel axles through collinear "
-        r"mount points (SymPy). Numerically: rank 6 at " rf"{n} random configurations, 5 at the steering angles of "
-        rf"{len(tw)} random twists, 5 or 6 on a ${grid}^3$ grid, 4 only for collinear mount points", res,
+        "mobility-centred", holds, r"$\operatorname{rank}\mathbf F = 3 + \operatorname{rank}\mathbf "
+        r"A(\boldsymbol\beta)$; $\mathbf A\mathbf t = \mathbf 0$ for the rotation about $U$ iff $U$ is on every axle "
+        r"line, for a translation iff the axles are parallel; the $2\times2$ minors of $\mathbf A$ vanish only for "
+        r"parallel axles through collinear mount points (SymPy). Numerically: rank 6 at "
+        f"{n} random configurations, 5 at the steering angles of {len(tw)} random twists, 5 or 6 on a ${grid}^3$ grid, "
+        "4 only for collinear mount points", res,
         convention="three centred wheels at non-collinear mount points",
         note=r"the residual compares $\mathbf A(\boldsymbol\beta)$ derived here with "
              r"`twist_constraints` (rows up to sign)")])
 
 
 def isotropic_kinematics(n=25, seed=SEED):
-    r"""(54)-(57): :math:`\mathbf J_2^{\mathrm T}\mathbf J_2 = r^2\mathbf 1`; (55), (57) are least-squares maps through :math:`\mathbf J = \mathbf J_{L1}^{\mathrm T}\mathbf J_2`.
+    r"""(54)-(57): :math:`\mathbf J_2^{\mathrm T}\mathbf J_2 = r^2\mathbf 1`; (55), (57) are least-squares maps through
+    :math:`\mathbf J = \mathbf J_{L1}^{\mathrm T}\mathbf J_2`.
 
     Parameters
     ----------
@@ -196,12 +222,13 @@ def isotropic_kinematics(n=25, seed=SEED):
     JL1p, J2p, Jp = paper.J1(S.L), paper.J2(), paper.J(L=S.L)
     th = sp.Matrix(paper.rate_symbols)
     tLs = sp.Matrix(sp.symbols("t_L1:4", real=True))
-    holds56 = symbolic_equal(Jp, explicit(p56.expr.rhs, {C.JL1: JL1p, C.J2: J2p}))
+    holds56 = symbolic_equal(Jp, explicit(p56.expr.rhs, {S.JL1: JL1p, S.J2_centred: J2p}))
     pinv_JL1 = (JL1p.T * JL1p).inv() * JL1p.T
-    holds55 = symbolic_equal(pinv_JL1, JL1p.T / 3) and symbolic_equal(explicit(p55.expr.rhs, {C.J: Jp, C.theta_dot: th}),
+    holds55 = symbolic_equal(pinv_JL1, JL1p.T / 3) and symbolic_equal(explicit(p55.expr.rhs, {S.J: Jp,
+                                                                                              S.theta_dot_centred: th}),
                                                                         pinv_JL1 * J2p * th)
     pinv_J2 = (J2p.T * J2p).inv() * J2p.T
-    holds57 = symbolic_equal(explicit(p57.expr.rhs, {C.J: Jp, C.tL: tLs}), pinv_J2 * JL1p * tLs)
+    holds57 = symbolic_equal(explicit(p57.expr.rhs, {S.J: Jp, S.tL: tLs}), pinv_J2 * JL1p * tLs)
     bot = paper_robot("centred", L=L_NUM, r=R_NUM)
     scale = np.diag([L_NUM, 1.0, 1.0])
     rng = np.random.default_rng(seed)
@@ -212,37 +239,44 @@ def isotropic_kinematics(n=25, seed=SEED):
         Jn = bot.J(b, L=L_NUM)
         thr = rng.normal(size=3)
         fw = forward(bot, b, thr)
-        t55 = np.linalg.solve(scale, numeric(p55.expr.rhs, {C.J: Jn, C.theta_dot: thr[:, None]})[:, 0])
+        t55 = np.linalg.solve(scale, numeric(p55.expr.rhs, {S.J: Jn, S.theta_dot_centred: thr[:, None]})[:, 0])
         tw = rng.normal(size=3)
         inv = inverse(bot, b, tw)
-        th57 = numeric(p57.expr.rhs.subs(S.r, R_NUM), {C.J: Jn, C.tL: (scale @ tw)[:, None]})[:, 0]
+        th57 = numeric(p57.expr.rhs.subs(S.r, R_NUM), {S.J: Jn, S.tL: (scale @ tw)[:, None]})[:, 0]
         res55 = max(res55, float(np.max(np.abs(t55 - fw.value))))
         res57 = max(res57, float(np.max(np.abs(th57 - inv.value))))
         fw_ok, inv_ok = fw_ok + int(fw.admissible), inv_ok + int(inv.admissible)
         bc = steering_angles(bot, tw)
         Jc = bot.J(bc, L=L_NUM)
-        thc = numeric(p57.expr.rhs.subs(S.r, R_NUM), {C.J: Jc, C.tL: (scale @ tw)[:, None]})[:, 0]
-        back = np.linalg.solve(scale, numeric(p55.expr.rhs, {C.J: Jc, C.theta_dot: thc[:, None]})[:, 0])
+        thc = numeric(p57.expr.rhs.subs(S.r, R_NUM), {S.J: Jc, S.tL: (scale @ tw)[:, None]})[:, 0]
+        back = np.linalg.solve(scale, numeric(p55.expr.rhs, {S.J: Jc, S.theta_dot_centred: thc[:, None]})[:, 0])
         ic = inverse(bot, bc, tw)
         coord_ok += int(ic.admissible and forward(bot, bc, thc).admissible)
         res_exact = max(res_exact, float(np.max(np.abs(back - tw))), float(np.max(np.abs(ic.residual))))
     require(fw_ok == inv_ok == 0 and coord_ok == n, "random data need slip; coordinated data are exact")
     return Derivation(J2tJ2=sp.trigsimp(J2tJ2), J=Jp, exact_random=(fw_ok, inv_ok), exact_coordinated=coord_ok, n=n,
                       findings=[
-        equation(54, symbolic_equal(J2tJ2, p54.expr.rhs), r"$\mathbf J_2$ has orthogonal columns $-r\mathbf j_i$ in disjoint "
-                 r"rows, so $\mathbf J_2^{\mathrm T}\mathbf J_2 = r^2\mathbf 1$ for every $\boldsymbol\beta$ and placement (SymPy)",
+        equation(54, symbolic_equal(J2tJ2, p54.expr.rhs), r"$\mathbf J_2$ has orthogonal columns $-r\mathbf j_i$ in "
+                 r"disjoint rows, so $\mathbf J_2^{\mathrm T}\mathbf J_2 = r^2\mathbf 1$ for every $\boldsymbol\beta$ "
+                 r"and placement (SymPy)",
                  max_residual(J2tJ2, p54.expr.rhs),
                  convention=r"any $\boldsymbol\beta$, any mount points ($\mathbf J_2$ is $6\times3$, so "
                             r"$\mathbf J_2^{\mathrm T}\mathbf J_2$ is the right product)"),
-        equation(55, holds55 and res55 < 1e-9 and res_exact < 1e-9, r"$\mathbf J_{L1}^{+} = \tfrac13\mathbf J_{L1}^{\mathrm T}$ "
-                 r"(SymPy), so (55) is the least-squares twist: it equals `wmr.forward` at " rf"{n} random configurations, "
-                 r"and is exact for the rates of an admissible motion at coordinated angles", max(res55, res_exact),
-                 convention=r"least-squares twist ($\mathbf J_{L1}^{+} = \mathbf J_{L1}^{\mathrm T}/3$, isotropic placement); "
-                            "exact only for compatible rates at coordinated angles",
+        equation(55, holds55 and res55 < 1e-9 and res_exact < 1e-9,
+                 r"$\mathbf J_{L1}^{+} = \tfrac13\mathbf J_{L1}^{\mathrm T}$ (SymPy), so (55) is the least-squares "
+                 r"twist: it equals `wmr.forward` at "
+                 f"{n} random configurations, and is exact for the rates of an admissible motion at coordinated "
+                 "angles", max(res55, res_exact),
+                 convention=r"least-squares twist ($\mathbf J_{L1}^{+} = \mathbf J_{L1}^{\mathrm T}/3$, isotropic "
+                            r"placement); exact only for compatible rates at coordinated angles",
                  note="at generic angles the mobility is 0 and random rates always need slip"),
-        equation(56, holds56, r"`Robot.J` equals $\mathbf J_{L1}^{\mathrm T}\mathbf J_2$ of the paper's placement (SymPy)", 0.0,
+        equation(56, holds56, r"`Robot.J` equals $\mathbf J_{L1}^{\mathrm T}\mathbf J_2$ of the paper's placement "
+                              r"(SymPy)", 0.0,
                  convention=r"$\mathbf J_{L1}$ of (32) with the isotropic $L$"),
-        equation(57, holds57 and res57 < 1e-9, r"$\mathbf J_2^{+} = \mathbf J_2^{\mathrm T}/r^2$ by (54) (SymPy), so (57) is "
-                 r"the least-squares joint rate: it equals `wmr.inverse` at " rf"{n} random configurations, and is exact "
-                 r"with the steering angles of `wmr.steering_angles`", max(res57, res_exact),
-                 convention=r"least-squares rates; exact iff the twist is admissible ($\mathbf A\mathbf t = \mathbf 0$)")])
+        equation(57, holds57 and res57 < 1e-9,
+                 r"$\mathbf J_2^{+} = \mathbf J_2^{\mathrm T}/r^2$ by (54) (SymPy), so (57) is the least-squares joint "
+                 r"rate: it equals `wmr.inverse` at "
+                 f"{n} random configurations, and is exact with the steering angles of "
+                 "`wmr.steering_angles`", max(res57, res_exact),
+                 convention=r"least-squares rates; exact iff the twist is admissible "
+                            r"($\mathbf A\mathbf t = \mathbf 0$)")])

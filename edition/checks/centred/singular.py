@@ -4,6 +4,8 @@ Chapter 4's checks live in :mod:`edition.checks.centred`; this module holds one 
 """
 from __future__ import annotations
 
+import re
+
 import numpy as np
 import sympy as sp
 
@@ -15,20 +17,20 @@ from wmr.model.robot import Robot
 from wmr.model.robots import equilateral_mounts, paper_robot
 from wmr.model.tolerance import TOL, near_zero
 from wmr.model.wheels import CentredWheel
-from ... import centred as C
-from ... import printed
+
 from ... import symbols as S
-from ...isotropy import D
+from ...transcription import printed
 from ...verify import SEED, max_residual, symbolic_equal
 from .. import Derivation, claim, equation, require
-from .mobility import L_NUM, R_NUM, general_robot, _axes, _u
+from .mobility import L_NUM, R_NUM, general_robot, u_point, unit_axes
 
 __all__ = ["singular_configurations", "printed_determinant", "classify_lines", "singular_list", "singular_v",
            "planes_through", "LINE_CLASSES"]
 
 
 def singular_configurations(n=20000, seed=SEED):
-    r"""(58): :math:`\det\mathbf J = -\tfrac{r^3}{L}\det[\mathbf i_i^{\mathrm T}\ \ \mathbf i_i\cdot\mathbf d_i]`: zero iff the wheel-plane lines are concurrent or parallel.
+    r"""(58): :math:`\det\mathbf J = -\tfrac{r^3}{L}\det[\mathbf i_i^{\mathrm T}\ \ \mathbf i_i\cdot\mathbf d_i]`: zero
+    iff the wheel-plane lines are concurrent or parallel.
 
     Parameters
     ----------
@@ -41,13 +43,14 @@ def singular_configurations(n=20000, seed=SEED):
     Derivation
         ``lines`` (the 3x3 matrix of the wheel-plane lines), finding (58).
     """
-    p58 = printed(58)
     gen = general_robot()
-    axle, _, _ = _axes()
+    axle, _, _ = unit_axes()
     Jg = gen.J(L=S.L)
-    tL_rot = sp.Matrix([S.L * S.psi_dot, *(-S.psi_dot * E(SYMBOLIC) * _u)])
-    rows = symbolic_equal(Jg.T * tL_rot, sp.Matrix([-S.r * S.psi_dot * (axle[k].T * (sp.Matrix(D[k]) - _u))[0] for k in range(3)]))
-    lines = sp.Matrix([[axle[k][0], axle[k][1], (axle[k].T * sp.Matrix(D[k]))[0]] for k in range(3)])
+    tL_rot = sp.Matrix([S.L * S.psi_dot, *(-S.psi_dot * E(SYMBOLIC) * u_point)])
+    rows = symbolic_equal(Jg.T * tL_rot,
+                          sp.Matrix([-S.r * S.psi_dot * (axle[k].T * (sp.Matrix(S.D[k]) - u_point))[0]
+                                     for k in range(3)]))
+    lines = sp.Matrix([[axle[k][0], axle[k][1], (axle[k].T * sp.Matrix(S.D[k]))[0]] for k in range(3)])
     det_g = Jg.det()
     holds = rows and symbolic_equal(det_g, -S.r**3 / S.L * lines.det())
     bot = paper_robot("centred", L=L_NUM, r=R_NUM)
@@ -56,12 +59,13 @@ def singular_configurations(n=20000, seed=SEED):
     k_gen = condition_number(bot.J(B, L=L_NUM))
     require(np.all(np.isinf(k_par)) and np.all(np.isfinite(k_gen)), "kappa is infinite exactly on the singular set")
     return Derivation(lines=lines, findings=[equation(
-        58, holds, r"$\mathbf J^{\mathrm T}\mathbf t_L$ of the rotation about $U$ has rows $-r\dot\psi\,\mathbf i_i\cdot(\mathbf d_i - \mathbf u)$, "
-                   r"and $\det\mathbf J = -\tfrac{r^3}{L}\det[\mathbf i_i^{\mathrm T}\ \ \mathbf i_i\cdot\mathbf d_i]$ for general "
-                   r"mount points (SymPy): zero iff the wheel-plane lines are concurrent or all parallel; "
+        58, holds, r"$\mathbf J^{\mathrm T}\mathbf t_L$ of the rotation about $U$ has rows "
+                   r"$-r\dot\psi\,\mathbf i_i\cdot(\mathbf d_i - \mathbf u)$, and "
+                   r"$\det\mathbf J = -\tfrac{r^3}{L}\det[\mathbf i_i^{\mathrm T}\ \ \mathbf i_i\cdot\mathbf d_i]$ for "
+                   r"general mount points (SymPy): zero iff the wheel-plane lines are concurrent or all parallel; "
                    rf"$\kappa(\mathbf J)$ is infinite on {n} parallel configurations and finite on {n} random ones",
-        max_residual(det_g, -S.r**3 / S.L * lines.det()), convention=r"$\mathbf J = \mathbf J_{L1}^{\mathrm T}\mathbf J_2$ (56), "
-                                                                       "three centred wheels")])
+        max_residual(det_g, -S.r**3 / S.L * lines.det()), convention=r"$\mathbf J = \mathbf J_{L1}^{\mathrm T}\mathbf "
+                                                                       r"J_2$ (56), three centred wheels")])
 
 
 def printed_determinant(n=200, seed=SEED):
@@ -102,14 +106,49 @@ def printed_determinant(n=200, seed=SEED):
     r3 = (symbolic_equal(det_paper, S.r**3 * p59.expr.rhs) and S.L not in det_paper.free_symbols
           and symbolic_equal(det_paper.subs(S.r, 1), p59.expr.rhs))
     return Derivation(placements=rows, matches=matches, det_J=det_paper, findings=[equation(
-        59, holds, r"for the paper's placement, $\det\mathbf J$ with symbolic $L$ and $r$ is $r^3$ times the printed form "
-                   r"and does not depend on $L$ (SymPy)", max_residual(det_paper, S.r**3 * p59.expr.rhs),
+        59, holds, r"for the paper's placement, $\det\mathbf J$ with symbolic $L$ and $r$ is $r^3$ times the printed "
+                   r"form and does not depend on $L$ (SymPy)", max_residual(det_paper, S.r**3 * p59.expr.rhs),
         refuted=r"the printed form is $\det\mathbf J$ at $r = 1$ only",
-        corrected=C.det_J_59_latex(r"\det(\mathbf J)", factor="r^3", per_line=2), corrected_holds=r3 and len(matches) == 1,
+        corrected=factored_sum(p59.latex, r"\det(\mathbf "
+                                          r"J)", "r^3", per_line=2), corrected_holds=r3 and len(matches) == 1,
         severity="typo", why=r"the factor $r^3$ is missing: the printed form is the determinant for $r = 1$",
         convention=rf"wheel 1 at $L(-1, 0)$, numbered clockwise: $\mathbf d_2 = L(\tfrac12, \tfrac{{\sqrt3}}{{2}})$, "
-                   rf"$\mathbf d_3 = L(\tfrac12, -\tfrac{{\sqrt3}}{{2}})$, the only one of the {len(rows)} placements tried "
-                   r"that gives the printed sign; $\det\mathbf J$ does not depend on $L$")])
+                   rf"$\mathbf d_3 = L(\tfrac12, -\tfrac{{\sqrt3}}{{2}})$, the only one of the {len(rows)} placements "
+                   r"tried that gives the printed sign; $\det\mathbf J$ does not depend on $L$")])
+
+
+def factored_sum(latex, lhs, factor, per_line):
+    r"""A printed sum ``\begin{aligned}lhs = &t_1 + t_2 ...\end{aligned}`` as ``lhs = factor(...)``, ``per_line`` terms
+    a line.
+
+    The terms are taken from the printed LaTeX as they are (split before each top-level `` + ``
+    or `` - ``), so the corrected form shows the printed terms, in the printed order.
+
+    Parameters
+    ----------
+    latex : str
+        The printed form, an ``aligned`` body whose right side is a sum.
+    lhs : str
+        LaTeX of the left side to print.
+    factor : str
+        LaTeX of the factor, e.g. ``"r^3"``.
+    per_line : int
+        Terms per line.
+
+    Returns
+    -------
+    str
+        A LaTeX body (no ``$``).
+
+    Examples
+    --------
+    >>> factored_sum(r"\begin{aligned}y = &- a + b\\ &- c\end{aligned}", "y", "k", 2)
+    '\\begin{aligned}y = k\\Big(&- a + b\\\\ &- c\\Big)\\end{aligned}'
+    """
+    body = latex.removeprefix(r"\begin{aligned}").removesuffix(r"\end{aligned}")
+    terms = re.split(r" (?=[+-] )", body.split(" = &", 1)[1].replace(r"\\ &", " "))
+    lines = [" ".join(terms[i:i + per_line]) for i in range(0, len(terms), per_line)]
+    return rf"\begin{{aligned}}{lhs} = {factor}\Big(&" + r"\\ &".join(lines) + r"\Big)\end{aligned}"
 
 
 #: classes of three wheel-plane lines (see :func:`classify_lines`)
@@ -118,7 +157,8 @@ LINE_CLASSES = ("(i) all parallel, equal angles", "all parallel, some angles dif
 
 
 def classify_lines(beta, points):
-    r"""The geometric class of the three wheel-plane lines :math:`\{\mathbf x : \mathbf i_k\cdot\mathbf x = \mathbf i_k\cdot\mathbf d_k\}`.
+    r"""The geometric class of the three wheel-plane lines
+    :math:`\{\mathbf x : \mathbf i_k\cdot\mathbf x = \mathbf i_k\cdot\mathbf d_k\}`.
 
     Independent of :mod:`wmr.analysis.singularities`: plain line geometry.
 
@@ -163,7 +203,8 @@ def planes_through(robot, U):
 
 
 def singular_list(n=1000, n_family=200, n_item=100, seed=SEED):
-    r"""Claim ``singular-list-complete``: every printed item is singular, and the zero set is exactly concurrent or parallel wheel planes.
+    r"""Claim ``singular-list-complete``: every printed item is singular, and the zero set is exactly concurrent or
+    parallel wheel planes.
 
     Each item (i)-(iv) (and (i) turned by :math:`\pi`) is checked exactly for every value of its free
     angle, (v) for planes concurrent at a symbolic point; then the zero set is sampled
@@ -201,7 +242,7 @@ def singular_list(n=1000, n_family=200, n_item=100, seed=SEED):
     paper = paper_robot("centred", L=S.L, r=S.r, exact=True)
     dets, rhos = det_paper, []
     for k, q in enumerate(paper.wheels):
-        w = _u - sp.Matrix(q.position)
+        w = u_point - sp.Matrix(q.position)
         rhos.append(sp.sqrt(w[0]**2 + w[1]**2))
         dets = dets.subs({sp.sin(S.beta[k]): -w[0] / rhos[k], sp.cos(S.beta[k]): w[1] / rhos[k]})
     fams["(v) planes concurrent at $U = (u_x, u_y)$"] = sp.expand(dets * sp.prod(rhos))
@@ -214,8 +255,9 @@ def singular_list(n=1000, n_family=200, n_item=100, seed=SEED):
     c_ = np.linalg.det(unit.J(np.c_[b12, np.full(n, np.pi / 2)], L=1.0))
     zeros = [np.c_[b12, np.arctan2(-a_, c_)]]
     bb = rng.uniform(-np.pi, np.pi, (n_family, 1))
-    zeros.append(np.c_[bb, bb + np.pi * rng.integers(0, 2, (n_family, 1)), bb + np.pi * rng.integers(0, 2, (n_family, 1))])
-    for item, ((i, k), vals) in p59.extra["singular_sets"].items():
+    zeros.append(np.c_[bb, bb + np.pi * rng.integers(0, 2, (n_family, 1)), bb + np.pi * rng.integers(0, 2, (n_family,
+                                                                                                            1))])
+    for _item, ((i, k), vals) in p59.extra["singular_sets"].items():
         z = rng.uniform(-np.pi, np.pi, (n_item, 3))
         z[:, i - 1], z[:, k - 1] = np.deg2rad(rng.choice(vals, n_item)), np.deg2rad(rng.choice(vals, n_item))
         zeros.append(z)
@@ -235,24 +277,28 @@ def singular_list(n=1000, n_family=200, n_item=100, seed=SEED):
     complete = all(families.values()) and res < 1e-9 and classes[LINE_CLASSES[4]] == 0 and control[LINE_CLASSES[4]] == n
     # as printed, (i) is "all angles equal" and (v) a finite point: the half-turned parallel family is outside both
     items_as_printed = complete and classes[LINE_CLASSES[1]] == 0
-    return Derivation(families=families, classes=classes, control=control, missed=missed, n_zero=len(Z), findings=[claim(
+    return Derivation(families=families, classes=classes, control=control, missed=missed, n_zero=len(Z),
+                      findings=[claim(
         "singular-list-complete", items_as_printed,
         r"every item vanishes for every value of its free angle, and so does each $\pi$-turned variant of (i) (SymPy); "
         rf"all {len(Z)} samples of the zero set are concurrent or parallel wheel planes, none of {n} random "
         r"configurations is", res,
-        refuted=r"item (i) as printed, $\beta_1 = \beta_2 = \beta_3$, misses the parallel configurations with a wheel turned "
-                rf"by $180^\circ$, e.g. $\boldsymbol\beta = ({missed['beta'][0]:.1f}^\circ, {missed['beta'][1]:.1f}^\circ, "
+        refuted=r"item (i) as printed, $\beta_1 = \beta_2 = \beta_3$, misses the parallel configurations with a wheel "
+                r"turned by $180^\circ$, e.g. "
+                rf"$\boldsymbol\beta = ({missed['beta'][0]:.1f}^\circ, {missed['beta'][1]:.1f}^\circ, "
                 rf"{missed['beta'][2]:.1f}^\circ)$ where $\kappa(\mathbf J) = \infty$",
-        corrected=r"$\det\mathbf J = 0$ if and only if the three wheel-plane lines are concurrent or all parallel; item (i) "
-                  r"must read $\beta_1 \equiv \beta_2 \equiv \beta_3 \pmod{\pi}$, and (ii)-(iv) are special cases of (v)",
+        corrected=r"$\det\mathbf J = 0$ if and only if the three wheel-plane lines are concurrent or all parallel; "
+                  r"item (i) must read $\beta_1 \equiv \beta_2 \equiv \beta_3 \pmod{\pi}$, and (ii)-(iv) are special "
+                  r"cases of (v)",
         corrected_holds=complete, severity="typo",
-        why=r"the list is right up to item (i), which omits the wheels turned by $180^\circ$ (unless parallel planes count "
-            r"as meeting at infinity in (v))",
+        why=r"the list is right up to item (i), which omits the wheels turned by $180^\circ$ (unless parallel planes "
+            r"count as meeting at infinity in (v))",
         convention=r"the paper's numbering of (59); 'intersect' read as meeting in one finite point")])
 
 
 def singular_v(angles_deg=(10, 45, 100, 200, 290), n_inside=50, seed=SEED):
-    r"""Claim ``singular-v-immobile``: concurrent wheel planes cost all mobility -- unless :math:`D_P` is on the circle through the :math:`P_i`.
+    r"""Claim ``singular-v-immobile``: concurrent wheel planes cost all mobility -- unless :math:`D_P` is on the circle
+    through the :math:`P_i`.
 
     Thales: each axle is perpendicular to :math:`P_iD_P` at :math:`P_i`, so when :math:`D_P` is on the
     circumcircle every axle passes through its antipode V and the rotation about V is admissible.
@@ -268,12 +314,14 @@ def singular_v(angles_deg=(10, 45, 100, 200, 290), n_inside=50, seed=SEED):
     Returns
     -------
     Derivation
-        ``on_circle`` (mobilities), ``inside`` (set of mobilities), ``at_C`` (mobility), finding ``singular-v-immobile``.
+        ``on_circle`` (mobilities), ``inside`` (set of mobilities), ``at_C`` (mobility), finding
+        ``singular-v-immobile``.
     """
     alpha = sp.Symbol("alpha", real=True)
     uc = S.L * sp.Matrix([sp.cos(alpha), sp.sin(alpha)])
     paper = paper_robot("centred", L=S.L, r=S.r, exact=True)
-    thales = all(symbolic_equal(((uc - sp.Matrix(q.position)).T * (sp.Matrix(q.position) + uc))[0], 0) for q in paper.wheels)
+    thales = all(symbolic_equal(((uc - sp.Matrix(q.position)).T * (sp.Matrix(q.position) + uc))[0],
+                                0) for q in paper.wheels)
     bot = paper_robot("centred", L=L_NUM, r=R_NUM)
     on = planes_through(bot, L_NUM * np.stack([np.cos(np.radians(angles_deg)), np.sin(np.radians(angles_deg))], -1))
     inside = planes_through(bot, np.random.default_rng(seed).uniform(-0.25, 0.25, (n_inside, 2)))
@@ -282,13 +330,14 @@ def singular_v(angles_deg=(10, 45, 100, 200, 290), n_inside=50, seed=SEED):
     at_C = int(mobility(bot, planes_through(bot, np.zeros(2))))
     holds = bool(np.all(mob_on == 0))
     return Derivation(on_circle=mob_on.tolist(), inside=set(mob_in.tolist()), at_C=at_C, findings=[claim(
-        "singular-v-immobile", holds, r"with $D_P$ on the circle through $P_1, P_2, P_3$, every axle passes through the "
-        r"antipode of $D_P$ (SymPy, Thales); numerically, $D_P$ at " rf"{len(angles_deg)} points of the circle gives "
+        "singular-v-immobile", holds, r"with $D_P$ on the circle through $P_1, P_2, P_3$, every axle passes through "
+        rf"the antipode of $D_P$ (SymPy, Thales); numerically, $D_P$ at {len(angles_deg)} points of the circle gives "
         rf"$\det\mathbf J = 0$ and mobility 1, at {n_inside} random points inside it mobility 0", det_on,
         refuted=rf"$D_P$ on the circumcircle: $\det\mathbf J = 0$ yet mobility {sorted(set(mob_on.tolist()))}",
-        corrected=r"Concurrent wheel planes cost all mobility unless $D_P$ lies on the circle through $P_1, P_2, P_3$: then "
-                  r"the axles meet at the antipode of $D_P$ and the robot can turn about it (mobility 1)",
+        corrected="Concurrent wheel planes cost all mobility unless $D_P$ lies on the circle through $P_1, P_2, P_3$: "
+                  "then the axles meet at the antipode of $D_P$ and the robot can turn about it (mobility 1)",
         corrected_holds=thales and bool(np.all(mob_on == 1)) and set(mob_in.tolist()) == {0} and det_on < 1e-12,
-        severity="wrong", why="mobility needs concurrent axle lines, and concurrent wheel-plane lines do not exclude them",
+        severity="wrong", why="mobility needs concurrent axle lines, and concurrent wheel-plane lines do not exclude "
+                              "them",
         convention="paper placement (mount points on a circle of radius $L$ about C)",
         note=rf"$D_P$ at C (Fig. 12a, braking) indeed gives mobility {at_C}")])

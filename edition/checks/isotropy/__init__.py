@@ -1,8 +1,9 @@
-r"""Chapter 3, equations (30)-(50): the condition number, isotropy of :math:`\mathbf J_{L1}` and :math:`\mathbf J_2`, robustness.
+r"""Chapter 3, equations (30)-(50): the condition number, isotropy of :math:`\mathbf J_{L1}` and :math:`\mathbf J_2`,
+robustness.
 
 The Jacobians come from :class:`wmr.Robot` (``J1(L)`` is :math:`\mathbf J_{L1}`, ``J2``, ``J``) for
 general (symbolic) mount points or the paper's placement, and are compared with the printed forms
-of :mod:`edition.isotropy`.  The last check, :func:`robust_control`, asks whether isotropic
+of the transcription (:mod:`edition.transcription`).  The last check, :func:`robust_control`, asks whether isotropic
 factors make the composite map :math:`\mathbf J = \mathbf J_{L1}^{\mathrm T}\mathbf J_2` (56) well
 conditioned, and proves a bound: for three centred wheels, wherever the robot can move,
 :math:`\kappa(\mathbf J) \ge \sqrt 2`.
@@ -15,8 +16,17 @@ The checks, by equation group:
 :mod:`.robust`  robust control: a bound on the condition number of J = J_L1^T J2 for centred wheels
 ==============  ==================================================================================================
 """
-from .jl1 import general_robot, condition_number_def, homogeneous_jacobian, gram, isotropy_conditions, placement, isotropic_gram, RHO
-from .j2 import J2_product, J2_isotropy, dead_zone_of_isotropy, isotropic_kinematics
+from .j2 import J2_isotropy, J2_product, dead_zone_of_isotropy, isotropic_kinematics
+from .jl1 import (
+           RHO,
+           condition_number_def,
+           general_robot,
+           gram,
+           homogeneous_jacobian,
+           isotropic_gram,
+           isotropy_conditions,
+           placement,
+)
 from .robust import robust_control
 
 __all__ = ["general_robot", "condition_number_def", "homogeneous_jacobian", "gram", "isotropy_conditions",

@@ -12,10 +12,10 @@ from wmr.analysis.linalg import condition_number
 from wmr.analysis.simulation import simulate
 from wmr.model.robots import paper_robot
 from wmr.model.tolerance import TOL
-from ... import isotropy as P
-from ... import printed
+
 from ... import symbols as S
-from ...notebook import explicit, numeric
+from ...algebra import explicit, numeric
+from ...transcription import printed
 from ...verify import SEED, max_residual, symbolic_equal
 from .. import Derivation, claim, equation, require
 from .jl1 import general_robot
@@ -24,7 +24,8 @@ __all__ = ["J2_product", "J2_isotropy", "dead_zone_of_isotropy", "isotropic_kine
 
 
 def J2_product():
-    r"""(40)-(43): :math:`\mathbf J_2\mathbf J_2^{\mathrm T}` is block-diagonal with :math:`\Upsilon_i = \mathbf R\tilde{\mathbf p}^2\mathbf R^{\mathrm T}`; the printed (42) has the wrong signs.
+    r"""(40)-(43): :math:`\mathbf J_2\mathbf J_2^{\mathrm T}` is block-diagonal with
+    :math:`\Upsilon_i = \mathbf R\tilde{\mathbf p}^2\mathbf R^{\mathrm T}`; the printed (42) has the wrong signs.
 
     Returns
     -------
@@ -40,37 +41,43 @@ def J2_product():
     ptilde = gen.wheels[0].block(sp.Integer(0))                  # R(0) p~ = p~
     ptilde2 = ptilde * ptilde
     beta = gen.beta_symbols
-    ups = [explicit(p41.expr.rhs, {P.ptilde2: ptilde2, P.beta_i: b}) for b in beta]
-    holds41 = all(symbolic_equal(u, blk) for u, blk in zip(ups, blocks))
-    full = explicit(p40.expr.rhs, dict(zip(P.Upsilon, ups)))
-    neg = explicit(p41.expr.rhs, {P.ptilde2: p42.expr.rhs, P.beta_i: 0}).subs({S.d: 1, S.r: 1})
+    ups = [explicit(p41.expr.rhs, {S.ptilde2: ptilde2, S.beta_i: b}) for b in beta]
+    holds41 = all(symbolic_equal(u, blk) for u, blk in zip(ups, blocks, strict=True))
+    full = explicit(p40.expr.rhs, dict(zip(S.Upsilon, ups, strict=True)))
+    neg = explicit(p41.expr.rhs, {S.ptilde2: p42.expr.rhs, S.beta_i: 0}).subs({S.d: 1, S.r: 1})
     pos = blocks[0].subs({beta[0]: 0, S.d: 1, S.r: 1})
     holds42 = symbolic_equal(ptilde2, p42.expr.rhs)
     corrected42 = symbolic_equal(ptilde2, sp.diag(S.d**2, S.r**2)) and symbolic_equal(neg, -pos)
-    holds43 = all(symbolic_equal(p43.expr.rhs.subs(P.beta_i, b), blk) for b, blk in zip(beta, blocks))
-    res43 = max(max_residual(p43.expr.rhs.subs(P.beta_i, b), blk) for b, blk in zip(beta, blocks))
+    holds43 = all(symbolic_equal(p43.expr.rhs.subs(S.beta_i, b), blk) for b, blk in zip(beta, blocks, strict=True))
+    res43 = max(max_residual(p43.expr.rhs.subs(S.beta_i, b), blk) for b, blk in zip(beta, blocks, strict=True))
     return Derivation(ptilde=ptilde, ptilde2=ptilde2, Upsilon1=blocks[0].applyfunc(sp.trigsimp), with_printed_42=neg,
                       with_model=pos, findings=[
-        equation(40, symbolic_equal(JJ, full), r"$\mathbf J_2\mathbf J_2^{\mathrm T}$ of the model is block-diagonal with the "
-                 "blocks (41) (SymPy)", max_residual(JJ, full)),
-        equation(41, holds41, r"each diagonal block is $\mathbf R_{bwi}\tilde{\mathbf p}^2\mathbf R_{bwi}^{\mathrm T}$ with the "
-                 r"model's $\tilde{\mathbf p}^2 = \tilde{\mathbf p}\tilde{\mathbf p}$ (SymPy)",
-                 max(max_residual(u, blk) for u, blk in zip(ups, blocks)),
-                 convention=r"$\tilde{\mathbf p}^2 = \tilde{\mathbf p}\tilde{\mathbf p}$, $\tilde{\mathbf p} = \mathrm{diag}(-d, -r)$"),
-        equation(42, holds42, r"the square of $\tilde{\mathbf p} = \mathrm{diag}(-d, -r)$ is $\mathrm{diag}(d^2, r^2)$ (SymPy)",
+        equation(40, symbolic_equal(JJ, full), r"$\mathbf J_2\mathbf J_2^{\mathrm T}$ of the model is block-diagonal "
+                 r"with the blocks (41) (SymPy)", max_residual(JJ, full)),
+        equation(41, holds41, r"each diagonal block is $\mathbf R_{bwi}\tilde{\mathbf p}^2\mathbf R_{bwi}^{\mathrm T}$ "
+                 r"with the model's $\tilde{\mathbf p}^2 = \tilde{\mathbf p}\tilde{\mathbf p}$ (SymPy)",
+                 max(max_residual(u, blk) for u, blk in zip(ups, blocks, strict=True)),
+                 convention=r"$\tilde{\mathbf p}^2 = \tilde{\mathbf p}\tilde{\mathbf p}$, "
+                            r"$\tilde{\mathbf p} = \mathrm{diag}(-d, -r)$"),
+        equation(42, holds42, r"the square of $\tilde{\mathbf p} = \mathrm{diag}(-d, -r)$ is $\mathrm{diag}(d^2, r^2)$ "
+                              r"(SymPy)",
                  max_residual(ptilde * ptilde.T, sp.diag(S.d**2, S.r**2)),
-                 refuted=r"with the printed signs $\Upsilon_1 = -\mathbf 1$ at $\beta_1 = 0$, $d = r = 1$, where the model "
-                         r"gives $+\mathbf 1$: a negative definite block of the positive semidefinite $\mathbf J_2\mathbf J_2^{\mathrm T}$",
-                 corrected=r"[\tilde{\mathbf p}^2] = \begin{bmatrix} d^2 & 0\\ 0 & r^2\end{bmatrix}", corrected_holds=corrected42,
-                 severity="typo", why=r"a sign slip: the square of $\mathrm{diag}(-d, -r)$ has positive entries, as (43) has",
+                 refuted=r"with the printed signs $\Upsilon_1 = -\mathbf 1$ at $\beta_1 = 0$, $d = r = 1$, where the "
+                         r"model gives $+\mathbf 1$: a negative definite block of the positive semidefinite "
+                         r"$\mathbf J_2\mathbf J_2^{\mathrm T}$",
+                 corrected=r"[\tilde{\mathbf p}^2] = \begin{bmatrix} d^2 & 0\\ 0 & "
+                           r"r^2\end{bmatrix}", corrected_holds=corrected42,
+                 severity="typo", why=r"a sign slip: the square of $\mathrm{diag}(-d, -r)$ has positive entries, as "
+                                      r"(43) has",
                  convention=r"$\tilde{\mathbf p} = \mathrm{diag}(-d, -r)$ as in (21)"),
-        equation(43, holds43, r"the blocks of the model's $\mathbf J_2\mathbf J_2^{\mathrm T}$ equal the printed matrix for each "
-                 "wheel (SymPy); consistent with the corrected (42)", res43,
+        equation(43, holds43, r"the blocks of the model's $\mathbf J_2\mathbf J_2^{\mathrm T}$ equal the printed "
+                 r"matrix for each wheel (SymPy); consistent with the corrected (42)", res43,
                  convention=r"$\mathbf R_{bwi} = \mathbf R(\beta_i)$ of (11)")])
 
 
 def J2_isotropy(pairs=20, n=2000, seed=SEED):
-    r"""(44)-(48) and claim ``isotropy-d-equals-r``: :math:`\Upsilon_i` is a multiple of :math:`\mathbf 1` iff d = r, at every angle.
+    r"""(44)-(48) and claim ``isotropy-d-equals-r``: :math:`\Upsilon_i` is a multiple of :math:`\mathbf 1` iff d = r, at
+    every angle.
 
     The deviatoric part of :math:`\Upsilon_i` has squared Frobenius norm :math:`(d^2 - r^2)^2/2`
     whatever :math:`\beta_i`; :math:`\mathbf J_2^{\mathrm T}\mathbf J_2 = \mathrm{diag}(d^2, r^2, \dots)`, so the
@@ -92,7 +99,7 @@ def J2_isotropy(pairs=20, n=2000, seed=SEED):
     p44, p45, p46, p47, p48 = (printed(i) for i in (44, 45, 46, 47, 48))
     gen = general_robot()
     J2 = gen.J2()
-    U1 = (J2 * J2.T)[0:2, 0:2].subs(gen.beta_symbols[0], P.beta_i)
+    U1 = (J2 * J2.T)[0:2, 0:2].subs(gen.beta_symbols[0], S.beta_i)
     dev = U1 - sp.trace(U1) / 2 * sp.eye(2)
     frob2 = sum(e**2 for e in dev)
     dev_ok = symbolic_equal(frob2, (S.d**2 - S.r**2)**2 / 2) and symbolic_equal(sp.trace(U1), S.d**2 + S.r**2)
@@ -112,16 +119,19 @@ def J2_isotropy(pairs=20, n=2000, seed=SEED):
     return Derivation(deviator=sp.factor(sp.trigsimp(frob2)), d_solutions=d_sol, JtJ=sp.trigsimp(JtJ), findings=[
         equation(44, symbolic_equal(U1[0, 1], p44.expr.lhs), "the off-diagonal entry of (43) (SymPy)",
                  max_residual(U1[0, 1], p44.expr.lhs)),
-        equation(45, symbolic_equal(U1[0, 0] - U1[1, 1], p45.expr.lhs - p45.expr.rhs), "the diagonal entries of (43) (SymPy)",
+        equation(45, symbolic_equal(U1[0, 0] - U1[1, 1], p45.expr.lhs - p45.expr.rhs), "the diagonal entries of (43) "
+                                                                                       "(SymPy)",
                  max_residual(U1[0, 0] - U1[1, 1], p45.expr.lhs - p45.expr.rhs)),
-        equation(46, holds46, r"(44)-(45) hold iff $\|\Upsilon_i - \tfrac12\mathrm{tr}\,\Upsilon_i\mathbf 1\|_F^2 = "
-                              r"\tfrac12(d^2 - r^2)^2$ vanishes, at every $\beta_i$ (SymPy): $d = r$ is necessary and sufficient",
+        equation(46, holds46, r"(44)-(45) hold iff "
+                              r"$\|\Upsilon_i - \tfrac12\mathrm{tr}\,\Upsilon_i\mathbf 1\|_F^2 = \tfrac12(d^2 - "
+                              r"r^2)^2$ vanishes, at every $\beta_i$ (SymPy): $d = r$ is necessary and sufficient",
                  max_residual(frob2, (S.d**2 - S.r**2)**2 / 2), convention=r"$d > 0$, $r > 0$"),
         equation(47, symbolic_equal(U1.subs(S.d, S.r), p47.expr.rhs), r"$\Upsilon_i$ at $d = r$ (SymPy)",
                  max_residual(U1.subs(S.d, S.r), p47.expr.rhs), convention="$d = r$"),
-        equation(48, symbolic_equal(JJr, p48.expr.rhs) and jtj_ok, r"$\mathbf J_2\mathbf J_2^{\mathrm T} = r^2\mathbf 1$ at "
-                 r"$d = r$ for every $\boldsymbol\beta$; also $\mathbf J_2^{\mathrm T}\mathbf J_2 = \mathrm{diag}(d^2, r^2, \dots)$, "
-                 r"equal to $\mathbf J_2\mathbf J_2^{\mathrm T}$ iff $d = r$ (SymPy)", max_residual(JJr, p48.expr.rhs),
+        equation(48, symbolic_equal(JJr, p48.expr.rhs) and jtj_ok, r"$\mathbf J_2\mathbf J_2^{\mathrm T} = r^2\mathbf "
+                 r"1$ at $d = r$ for every $\boldsymbol\beta$; also "
+                 r"$\mathbf J_2^{\mathrm T}\mathbf J_2 = \mathrm{diag}(d^2, r^2, \dots)$, equal to "
+                 r"$\mathbf J_2\mathbf J_2^{\mathrm T}$ iff $d = r$ (SymPy)", max_residual(JJr, p48.expr.rhs),
                  convention=r"$d = r$, any $\boldsymbol\beta$"),
         claim("isotropy-d-equals-r", holds46 and jtj_ok and res_k < 1e-9 and bool(np.all(np.abs(k_eq - 1) <= TOL)),
               r"the singular values of $\mathbf J_2$ are $d$ and $r$ at every $\boldsymbol\beta$ (SymPy: "
@@ -133,7 +143,8 @@ def J2_isotropy(pairs=20, n=2000, seed=SEED):
 
 
 def dead_zone_of_isotropy(steps=200, omega=2.0, pairs=20, n=2000, seed=SEED):
-    r"""Claim ``isotropy-d-zero``: the isotropic offset d = r is the largest practical offset, hence the largest dead zone.
+    r"""Claim ``isotropy-d-zero``: the isotropic offset d = r is the largest practical offset, hence the largest dead
+    zone.
 
     A full steering turn without driving at d = r (``wmr.simulate``): C stays at distance d from the
     fixed centroid of the contact points; :math:`\kappa(\mathbf J_2)` is 1 only at d = r and infinite
@@ -168,12 +179,12 @@ def dead_zone_of_isotropy(steps=200, omega=2.0, pairs=20, n=2000, seed=SEED):
     return Derivation(d=float(d), radius_min=float(radius.min()), radius_max=float(radius.max()),
                       radius_error=radius_error, contact_drift=drift,
                       slip=float(run.slip.max()), findings=[claim(
-        "isotropy-d-zero", holds, r"$\kappa(\mathbf J_2) = \max(d,r)/\min(d,r)$ is 1 only at $d = r$ and infinite at the "
-                                  r"drift-free $d = 0$; a simulated full steering turn without driving at $d = r$ "
-                                  rf"(`wmr.simulate`, {steps} steps) keeps C at distance $d$ from the fixed centroid of the "
-                                  r"contact points: the dead zone grows with $d$", res,
-        convention=r"practical offsets $0 \le d \le r$; dead zone = the circle of radius $d$ traced by C when the units "
-                   r"are steered together without driving")])
+        "isotropy-d-zero", holds, r"$\kappa(\mathbf J_2) = \max(d,r)/\min(d,r)$ is 1 only at $d = r$ and infinite at "
+                                  r"the drift-free $d = 0$; a simulated full steering turn without driving at $d = r$ "
+                                  rf"(`wmr.simulate`, {steps} steps) keeps C at distance $d$ from the fixed centroid "
+                                  r"of the contact points: the dead zone grows with $d$", res,
+        convention=r"practical offsets $0 \le d \le r$; dead zone = the circle of radius $d$ traced by C when the "
+                   r"units are steered together without driving")])
 
 
 def isotropic_kinematics(L=0.4, r=0.1, n=25, seed=SEED):
@@ -207,24 +218,27 @@ def isotropic_kinematics(L=0.4, r=0.1, n=25, seed=SEED):
         b = rng.uniform(-np.pi, np.pi, 3)
         JL1n, J2n = bot.J1(L), bot.J2(b)
         th = rng.normal(size=6)
-        tL = numeric(p49.expr.rhs, {P.JL1: JL1n, P.J2: J2n, P.theta_dot: th[:, None]})[:, 0]
+        tL = numeric(p49.expr.rhs, {S.JL1: JL1n, S.J2_offset: J2n, S.theta_dot_offset: th[:, None]})[:, 0]
         fw = forward(bot, b, th)
         res49 = max(res49, float(np.max(np.abs(np.linalg.solve(scale, tL) - fw.value))))
         slip += int(not fw.admissible)
         tw = rng.normal(size=3)
         inv = inverse(bot, b, tw)
-        th50 = numeric(p50.expr.rhs.subs(S.r, r), {P.JL1: JL1n, P.J2: J2n, P.tL: (scale @ tw)[:, None]})[:, 0]
+        th50 = numeric(p50.expr.rhs.subs(S.r, r), {S.JL1: JL1n, S.J2_offset: J2n, S.tL: (scale @ tw)[:, None]})[:, 0]
         res50 = max(res50, float(np.max(np.abs(th50 - inv.value))), float(np.max(np.abs(inv.residual))))
-        back = numeric(p49.expr.rhs, {P.JL1: JL1n, P.J2: J2n, P.theta_dot: th50[:, None]})[:, 0]
+        back = numeric(p49.expr.rhs, {S.JL1: JL1n, S.J2_offset: J2n, S.theta_dot_offset: th50[:, None]})[:, 0]
         res49_exact = max(res49_exact, float(np.max(np.abs(np.linalg.solve(scale, back) - tw))))
     require(slip == n, "random joint rates of three offset wheels need slip")
     return Derivation(needs_slip=slip, n=n, findings=[
         equation(49, holds49 and res49 < 1e-9 and res49_exact < 1e-9,
-                 r"$\mathbf J_{L1}^{+} = \tfrac13\mathbf J_{L1}^{\mathrm T}$ under (39) (SymPy), so (49) is the least-squares "
-                 rf"twist: it equals `wmr.forward` at {n} random configurations and rates, and recovers the twist exactly "
-                 "from compatible rates", max(res49, res49_exact),
+                 r"$\mathbf J_{L1}^{+} = \tfrac13\mathbf J_{L1}^{\mathrm T}$ under (39) (SymPy), so (49) is the "
+                 r"least-squares "
+                 f"twist: it equals `wmr.forward` at {n} random configurations and rates, and recovers the twist "
+                 "exactly from compatible rates", max(res49, res49_exact),
                  convention=r"least-squares twist; exact iff the joint rates are compatible (no slip)",
                  note=f"random rates always need slip ({slip} of {n})"),
-        equation(50, holds50 and res50 < 1e-9, r"$\mathbf J_2^{-1} = \mathbf J_2^{\mathrm T}/r^2$ at $d = r$ (SymPy), so (50) "
-                 rf"is exact for every twist: it equals `wmr.inverse` (zero residual) at {n} random configurations", res50,
+        equation(50, holds50 and res50 < 1e-9, r"$\mathbf J_2^{-1} = \mathbf J_2^{\mathrm T}/r^2$ at $d = r$ (SymPy), "
+                 r"so (50) "
+                 f"is exact for every twist: it equals `wmr.inverse` (zero residual) at {n} random "
+                 "configurations", res50,
                  convention=r"$d = r$")])

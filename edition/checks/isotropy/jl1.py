@@ -4,7 +4,7 @@ Chapter 3's checks live in :mod:`edition.checks.isotropy`; this module holds one
 """
 from __future__ import annotations
 
-from functools import lru_cache
+from functools import cache
 
 import numpy as np
 import sympy as sp
@@ -15,9 +15,9 @@ from wmr.model.robot import Robot
 from wmr.model.robots import paper_robot
 from wmr.model.tolerance import TOL
 from wmr.model.wheels import CentredWheel, OffsetWheel
-from ... import isotropy as P
-from ... import printed
+
 from ... import symbols as S
+from ...transcription import printed
 from ...verify import SEED, max_residual, symbolic_equal
 from .. import Derivation, claim, equation, require
 
@@ -29,15 +29,15 @@ __all__ = ["general_robot", "condition_number_def", "homogeneous_jacobian", "gra
 RHO = sp.Symbol("rho", positive=True)
 
 
-@lru_cache(maxsize=None)
+@cache
 def general_robot():
-    """Three offset wheels at general (symbolic) mount points :data:`edition.isotropy.D`.
+    """Three offset wheels at general (symbolic) mount points :data:`edition.symbols.D`.
 
     Returns
     -------
     wmr.Robot
     """
-    return Robot([OffsetWheel(d, r=S.r, d=S.d) for d in P.D])
+    return Robot([OffsetWheel(d, r=S.r, d=S.d) for d in S.D])
 
 
 def condition_number_def(n_pairs=50, n_random=2000, seed=SEED):
@@ -63,7 +63,7 @@ def condition_number_def(n_pairs=50, n_random=2000, seed=SEED):
     p30, p31 = printed(30), printed(31)
     JL1 = paper_robot("offset", L=RHO, r=S.r, exact=True).J1(S.L)
     sv = JL1.singular_values()
-    kappa = p30.expr.rhs.subs({P.sigma_l: sp.Max(*sv), P.sigma_s: sp.Min(*sv)})
+    kappa = p30.expr.rhs.subs({S.sigma_l: sp.Max(*sv), S.sigma_s: sp.Min(*sv)})
     key = sp.default_sort_key
     holds30 = symbolic_equal(sp.Matrix(sorted([s**2 for s in sv], key=key)),
                              sp.Matrix(sorted((JL1.T * JL1).eigenvals(multiple=True), key=key)))
@@ -81,18 +81,21 @@ def condition_number_def(n_pairs=50, n_random=2000, seed=SEED):
     holds31 = (min(sv0) == 0 and upper == sp.oo and sp.simplify(kappa.subs(S.L, RHO)) == lower
                and bool(np.all(k_rand >= lower)) and abs(k_iso - 1) <= TOL)
     return Derivation(singular_values=sv, kappa=kappa, k_min=float(k_rand.min()), findings=[
-        equation(30, holds30, r"the squared singular values of $\mathbf J_{L1}$ (paper placement, radius $\rho$, $L$ free) are "
-                              r"the eigenvalues of $\mathbf J_{L1}^{\mathrm T}\mathbf J_{L1}$ (SymPy), giving "
-                              r"$\kappa = \max(\rho/L, L/\rho)$; `wmr.condition_number` agrees at "
-                              rf"{n_pairs} random $(\rho, L)$ and with `numpy.linalg.cond` on {n_random} random matrices",
+        equation(30, holds30, r"the squared singular values of $\mathbf J_{L1}$ (paper placement, radius $\rho$, $L$ "
+                              r"free) are the eigenvalues of $\mathbf J_{L1}^{\mathrm T}\mathbf J_{L1}$ (SymPy), "
+                              r"giving $\kappa = \max(\rho/L, L/\rho)$; `wmr.condition_number` agrees at "
+                              rf"{n_pairs} random $(\rho, L)$ and with `numpy.linalg.cond` on {n_random} random "
+                              r"matrices",
                  res, convention=r"$\sigma_l$, $\sigma_s$ the largest and smallest singular values",
                  note=r"`wmr.condition_number` returns $\infty$ when $\sigma_s \le 10^{-9}\sigma_l$"),
-        equation(31, holds31, r"$\kappa = 1$ is attained ($\mathbf J_{L1}$ at $L = \rho$) and $\kappa = \infty$ too (all "
-                              r"mount points at C: $\sigma_s = 0$ exactly); every random matrix has $\kappa \geq 1$", 0.0)])
+        equation(31, holds31, r"$\kappa = 1$ is attained ($\mathbf J_{L1}$ at $L = \rho$) and $\kappa = \infty$ too "
+                              r"(all mount points at C: $\sigma_s = 0$ exactly); every random matrix has "
+                              r"$\kappa \geq 1$", 0.0)])
 
 
 def homogeneous_jacobian():
-    r"""(32)-(33): ``Robot.J1(L)`` for general mount points, and :math:`\mathbf J_1\mathbf t = \mathbf J_{L1}\mathbf t_L`.
+    r"""(32)-(33): ``Robot.J1(L)`` for general mount points, and
+    :math:`\mathbf J_1\mathbf t = \mathbf J_{L1}\mathbf t_L`.
 
     Returns
     -------
@@ -106,10 +109,13 @@ def homogeneous_jacobian():
     return Derivation(JL1=JL1, difference=sp.expand(J1 * t - JL1 * tL), findings=[
         equation(32, symbolic_equal(JL1, p32.expr.rhs), r"`Robot.J1(L)` for three general mount points equals the "
                  r"printed matrix (SymPy)", max_residual(JL1, p32.expr.rhs),
-                 convention=r"rows $[\mathbf E\mathbf d_i/L\ \ \mathbf 1]$ in the wheel numbering; $\mathbf d_i = \overrightarrow{CP_i}$ in the body frame"),
+                 convention=r"rows $[\mathbf E\mathbf d_i/L\ \ \mathbf 1]$ in the wheel numbering; "
+                            r"$\mathbf d_i = \overrightarrow{CP_i}$ in the body frame"),
         equation(33, symbolic_equal(J1 * t, JL1 * tL), r"$\mathbf J_1\mathbf t = \mathbf J_{L1}\mathbf t_L$ for every "
-                 r"twist, placement and $L$ (SymPy), so (21) reads $\mathbf J_{L1}\mathbf t_L = \mathbf J_2\dot{\boldsymbol\theta}$",
-                 max_residual(J1 * t, JL1 * tL), convention=r"$\mathbf t = [\dot\psi\ \dot x\ \dot y]^{\mathrm T}$, body frame")])
+                 r"twist, placement and $L$ (SymPy), so (21) reads "
+                 r"$\mathbf J_{L1}\mathbf t_L = \mathbf J_2\dot{\boldsymbol\theta}$",
+                 max_residual(J1 * t, JL1 * tL), convention=r"$\mathbf t = [\dot\psi\ \dot x\ \dot y]^{\mathrm T}$, "
+                                                            r"body frame")])
 
 
 def gram():
@@ -142,7 +148,7 @@ def isotropy_conditions():
     lam = G[1, 1]
     require(G[1:, 1:] == lam * sp.eye(2) and lam == 3, "the lower block of (34) is 3 1 for every placement")
     off_col, off_row, corner = G[1:, 0], G[0, 1:], sp.Eq(G[0, 0], lam)
-    d3 = list(P.D[2])
+    d3 = list(S.D[2])
     sol35 = sp.solve(list(off_col), d3, dict=True)
     sol37 = sp.solve(list(p37.expr.lhs - p37.expr.rhs), d3, dict=True)
     res37 = max_residual((p37.expr.lhs - p37.expr.rhs).subs(sol35[0]))
@@ -151,17 +157,19 @@ def isotropy_conditions():
                  r"the off-diagonal blocks of (34) are the printed expressions (SymPy); with (36), necessary and "
                  r"sufficient for isotropy", max_residual(off_col, p35.expr.lhs)),
         equation(36, symbolic_equal(corner.lhs - corner.rhs, p36.expr.lhs - p36.expr.rhs),
-                 r"the corner entry of (34) equal to the 3 of its lower block (SymPy); with (35), necessary and sufficient",
+                 "the corner entry of (34) equal to the 3 of its lower block (SymPy); with (35), necessary and "
+                 "sufficient",
                  max_residual(corner.lhs - corner.rhs, p36.expr.lhs - p36.expr.rhs)),
-        equation(37, sol35 == sol37, r"(35) and (37) have the same solution for $\mathbf d_3$ given $\mathbf d_1, \mathbf d_2$ "
-                 r"(SymPy): equivalent since $\mathbf E$ is invertible and $L > 0$", res37,
+        equation(37, sol35 == sol37, r"(35) and (37) have the same solution for $\mathbf d_3$ given "
+                 r"$\mathbf d_1, \mathbf d_2$ (SymPy): equivalent since $\mathbf E$ is invertible and $L > 0$", res37,
                  convention=r"C at the centroid of $P_1P_2P_3$")])
 
 
 def placement(counterexample=((2, 0), (-1, 1), (-1, -1)), n=200, seed=SEED):
     r"""(38) and claim ``isotropy-placement``: equal distances are sufficient, not necessary.
 
-    Given (37), (36) fixes only the *mean* squared distance :math:`L^2 = \tfrac13\sum_i\mathbf d_i^{\mathrm T}\mathbf d_i`.
+    Given (37), (36) fixes only the *mean* squared distance
+    :math:`L^2 = \tfrac13\sum_i\mathbf d_i^{\mathrm T}\mathbf d_i`.
     The counterexample (an isosceles triangle with centroid C) is isotropic exactly.
 
     Parameters
@@ -182,12 +190,13 @@ def placement(counterexample=((2, 0), (-1, 1), (-1, -1)), n=200, seed=SEED):
     L2 = sp.Rational(sum(norms), 3)
     ce = Robot([OffsetWheel(q, r=S.r, d=S.d) for q in pts])
     G = ce.J1(sp.sqrt(L2)).T * ce.J1(sp.sqrt(L2))
-    sides = [sp.sqrt(sum((a - b)**2 for a, b in zip(pts[i], pts[j]))) for i, j in ((0, 1), (1, 2), (2, 0))]
+    sides = [sp.sqrt(sum((a - b)**2 for a, b in zip(pts[i], pts[j], strict=True))) for i, j in ((0, 1), (1, 2), (2, 0))]
     num = Robot([OffsetWheel(tuple(map(float, q)), r=0.1, d=0.1) for q in counterexample])
     L_num = characteristic_length(num)
     k_ce = float(condition_number(num.J1(L_num)))
-    at = {s_: v for p_, q in zip(P.D, pts) for s_, v in zip(p_, q)} | {S.L: sp.sqrt(L2)}
-    printed_holds = all(bool(sp.simplify((e.lhs - e.rhs).subs(at)) == 0) for e in p38.expr)   # (38) at the isotropic example
+    at = {s_: v for p_, q in zip(S.D, pts, strict=True) for s_, v in zip(p_, q, strict=True)} | {S.L: sp.sqrt(L2)}
+    # (38) at the isotropic example
+    printed_holds = all(bool(sp.simplify((e.lhs - e.rhs).subs(at)) == 0) for e in p38.expr)
     rng = np.random.default_rng(seed)
     res = 0.0
     for _ in range(n):
@@ -197,11 +206,13 @@ def placement(counterexample=((2, 0), (-1, 1), (-1, -1)), n=200, seed=SEED):
         res = max(res, abs(float(condition_number(bot.J1(np.sqrt(np.mean(np.sum(tri**2, axis=1)))))) - 1.0))
     proven = G == 3 * sp.eye(3) and abs(k_ce - 1) <= TOL and res < 1e-9 and abs(L_num**2 - float(L2)) < 1e-12
     ce_text = ", ".join(f"$({a}, {b})$" for a, b in counterexample)
-    refuted = (rf"$P_i$ = {ce_text}, an isosceles triangle with sides ${', '.join(sp.latex(s) for s in sides)}$ and centroid C, "
-               rf"has $\mathbf J_{{L1}}^{{\mathrm T}}\mathbf J_{{L1}} = 3\cdot\mathbf 1$ exactly at $L^2 = {sp.latex(L2)}$ "
-               rf"while $\mathbf d_i^{{\mathrm T}}\mathbf d_i = {', '.join(map(str, norms))}$")
-    proof = (r"with (37), $\mathbf J_{L1}$ is isotropic iff $L^2 = \tfrac13\sum_i\mathbf d_i^{\mathrm T}\mathbf d_i$ (SymPy on the "
-             rf"counterexample); $\kappa(\mathbf J_{{L1}}) = 1$ at {n} random triangles with centroid C and $L$ their RMS distance")
+    refuted = (rf"$P_i$ = {ce_text}, an isosceles triangle with sides ${', '.join(sp.latex(s) for s in sides)}$ and "
+               rf"centroid C, has $\mathbf J_{{L1}}^{{\mathrm T}}\mathbf J_{{L1}} = 3\cdot\mathbf 1$ exactly at "
+               rf"$L^2 = {sp.latex(L2)}$ while $\mathbf d_i^{{\mathrm T}}\mathbf d_i = {', '.join(map(str, norms))}$")
+    proof = (r"with (37), $\mathbf J_{L1}$ is isotropic iff $L^2 = \tfrac13\sum_i\mathbf d_i^{\mathrm T}\mathbf d_i$ "
+             r"(SymPy on the "
+             rf"counterexample); $\kappa(\mathbf J_{{L1}}) = 1$ at {n} random triangles with centroid C and $L$ their "
+             r"RMS distance")
     return Derivation(G=G, norms=norms, sides=sides, L2=L2, kappa=k_ce, findings=[
         equation(38, printed_holds, proof, res, refuted=refuted,
                  corrected=r"L^2 = \frac13\sum_{i=1}^{3}\mathbf d_i^{\mathrm T}\mathbf d_i",
@@ -218,7 +229,8 @@ def placement(counterexample=((2, 0), (-1, 1), (-1, -1)), n=200, seed=SEED):
 
 
 def isotropic_gram(rho=0.4, n=20, seed=SEED):
-    r"""(39) and claim ``isotropy-L``: the paper's placement gives :math:`3\cdot\mathbf 1` at L = mount radius, and only there.
+    r"""(39) and claim ``isotropy-L``: the paper's placement gives :math:`3\cdot\mathbf 1` at L = mount radius, and only
+    there.
 
     Parameters
     ----------
@@ -248,12 +260,15 @@ def isotropic_gram(rho=0.4, n=20, seed=SEED):
     resL = abs(characteristic_length(bot) - rho)
     at = float(grid[kap.argmin()])
     return Derivation(G=G, L_iso=L_iso, L_grid=grid, kappa_grid=kap, findings=[
-        equation(39, symbolic_equal(G, p39.expr.rhs), r"$\mathbf J_{L1}^{\mathrm T}\mathbf J_{L1}$ of the paper's placement "
+        equation(39, symbolic_equal(G, p39.expr.rhs),
+                 r"$\mathbf J_{L1}^{\mathrm T}\mathbf J_{L1}$ of the paper's placement "
                  r"with symbolic $L$ equals $3\cdot\mathbf 1$ (SymPy); numerically at " rf"{n} random $L$", res39,
-                 convention=r"paper placement $\mathbf d_1 = L(-1, 0)$, $\mathbf d_{2,3} = L(\tfrac12, \pm\tfrac{\sqrt3}{2})$; "
-                            "holds for every placement satisfying (35)-(36)"),
+                 convention=r"paper placement $\mathbf d_1 = L(-1, 0)$, "
+                            r"$\mathbf d_{2,3} = L(\tfrac12, \pm\tfrac{\sqrt3}{2})$; holds for every placement "
+                            r"satisfying (35)-(36)"),
         claim("isotropy-L", L_iso == [RHO] and abs(at - rho) < 1e-12 and resL < 1e-12,
               r"$\kappa(\mathbf J_{L1}) = \max(\rho/L, L/\rho)$ exactly, which is 1 only at $L = \rho$; on a grid of "
-              rf"{len(grid)} values of $L$ the minimum is at $L = {at:g} = \rho$; `wmr.characteristic_length` returns it", resL,
+              rf"{len(grid)} values of $L$ the minimum is at $L = {at:g} = \rho$; `wmr.characteristic_length` returns "
+              r"it", resL,
               convention=r"equilateral placement with centroid C; in general $L$ is the RMS distance "
                          r"$\sqrt{\tfrac13\sum_i\|\mathbf d_i\|^2}$")])

@@ -13,7 +13,7 @@ from wmr.analysis.steering import steering_angles
 from wmr.model.robot import Robot
 from wmr.model.robots import paper_robot
 from wmr.model.wheels import CentredWheel
-from ... import isotropy as P
+
 from ... import symbols as S
 from ...verify import SEED, symbolic_equal
 from .. import Derivation, claim, require
@@ -22,7 +22,10 @@ __all__ = ["robust_control"]
 
 
 def _mobile_configurations(bot, n, seed):
-    """Steering angles of n random rotations (about random U) and n random translations: every motion the robot can make."""
+    """Steering angles of n random rotations (about random U) and n random translations.
+
+    Every motion the robot can make.
+    """
     rng = np.random.default_rng(seed)
     tw = rng.normal(size=(2 * n, 3))
     tw[n:, 0] = 0.0                                             # translations
@@ -30,13 +33,15 @@ def _mobile_configurations(bot, n, seed):
 
 
 def robust_control(n=100000, grid=400, seed=SEED):
-    r"""Claim ``robust-control``: isotropic factors do not make :math:`\mathbf J = \mathbf J_{L1}^{\mathrm T}\mathbf J_2` robust for centred wheels.
+    r"""Claim ``robust-control``: isotropic factors do not make
+    :math:`\mathbf J = \mathbf J_{L1}^{\mathrm T}\mathbf J_2` robust for centred wheels.
 
     Offset wheels, d = r: :math:`\mathbf J\mathbf J^{\mathrm T} = 3r^2\mathbf 1` at every configuration.
     Centred wheels, isotropic placement: with :math:`\mathbf A` the axle constraints
     (``twist_constraints``, rows :math:`\mathbf i_i^{\mathrm T}[\mathbf E\mathbf d_i/L\ \ \mathbf 1]`),
 
-    .. math:: \mathbf J\mathbf J^{\mathrm T} = r^2\,(\mathbf J_{L1}^{\mathrm T}\mathbf J_{L1} - \mathbf A^{\mathrm T}\mathbf A)
+    .. math:: \mathbf J\mathbf J^{\mathrm T}
+              = r^2\,(\mathbf J_{L1}^{\mathrm T}\mathbf J_{L1} - \mathbf A^{\mathrm T}\mathbf A)
               = r^2\,(3\cdot\mathbf 1 - \mathbf A^{\mathrm T}\mathbf A),
 
     because the rows of :math:`\mathbf J^{\mathrm T}/(-r)` and of :math:`\mathbf A` are the components of
@@ -68,7 +73,7 @@ def robust_control(n=100000, grid=400, seed=SEED):
     Jo = off.J(L=S.L)
     offset_robust = symbolic_equal(Jo * Jo.T, 3 * S.r**2 * sp.eye(3))
     # centred wheels: J J^T = r^2 (J_L1^T J_L1 - A^T A) for general mount points
-    gen = Robot([CentredWheel(d, r=S.r) for d in P.D])
+    gen = Robot([CentredWheel(d, r=S.r) for d in S.D])
     J, JL1 = gen.J(L=S.L), gen.J1(S.L)
     beta = gen.beta_symbols
     axle = [sp.Matrix([sp.cos(b), sp.sin(b)]) for b in beta]
@@ -97,30 +102,38 @@ def robust_control(n=100000, grid=400, seed=SEED):
     ex = np.radians([-135.0, 105.0, -15.0])
     example = {"kappa": float(condition_number(bot.J(ex, L=1.0))), "rank_F": int(rank_F(bot, ex))}
     bound_holds = bool(rot.min() >= np.sqrt(2) - 1e-9) and bool(np.all(np.isinf(tra)))
-    require(mobile and bool(np.all(np.abs(smax - np.sqrt(3)) < 1e-9)), "at mobile configurations sigma_max(J) = sqrt(3) r")
+    require(mobile and bool(np.all(np.abs(smax - np.sqrt(3)) < 1e-9)), "at mobile configurations sigma_max(J) = "
+                                                                       "sqrt(3) r")
     return Derivation(identity=identity, kappa_mobile_min=float(rot.min()), at=np.degrees(B[i]),
                       kappa_about_C=k_about_C, translations_infinite=bool(np.all(np.isinf(tra))),
                       kappa_random_min=float(k_rand[np.isfinite(k_rand)].min()), example=example, n=n, findings=[claim(
         "robust-control", False,
-        r"offset wheels, $d = r$: $\mathbf J\mathbf J^{\mathrm T} = 3r^2\mathbf 1$ at every $\boldsymbol\beta$ (SymPy). "
-        r"Centred wheels: $\mathbf J\mathbf J^{\mathrm T} = r^2(\mathbf J_{L1}^{\mathrm T}\mathbf J_{L1} - \mathbf A^{\mathrm T}\mathbf A)$ "
-        r"for general mount points (SymPy), hence $\kappa(\mathbf J) \geq \sqrt2$ wherever the robot can move; "
+        r"offset wheels, $d = r$: $\mathbf J\mathbf J^{\mathrm T} = 3r^2\mathbf 1$ at every $\boldsymbol\beta$ "
+        r"(SymPy). Centred wheels: "
+        r"$\mathbf J\mathbf J^{\mathrm T} = r^2(\mathbf J_{L1}^{\mathrm T}\mathbf J_{L1} - \mathbf A^{\mathrm "
+        r"T}\mathbf A)$ for general mount points (SymPy), hence $\kappa(\mathbf J) \geq \sqrt2$ wherever the robot can "
+        r"move; "
         rf"$\kappa(\mathbf J) = {sp.latex(k_about_C)}$ exactly for the rotation about C; over {n} random rotations the "
         rf"smallest $\kappa$ is ${rot.min():.4f}$ and all {n} random translations give $\kappa = \infty$",
         res,
-        refuted=r"three centred wheels with isotropic $\mathbf J_{L1}$ and $\mathbf J_2$ have $\kappa(\mathbf J) \geq \sqrt2$ "
-                r"at every configuration where they can move, and $\kappa(\mathbf J) = \infty$ in every translation",
-        corrected=r"Offset wheels with $d = r$: $\mathbf J\mathbf J^{\mathrm T} = 3r^2\mathbf 1$ for every $\boldsymbol\beta$, "
-                  r"robust as claimed. Centred wheels: $\mathbf J\mathbf J^{\mathrm T} = r^2(3\cdot\mathbf 1 - "
-                  r"\mathbf A^{\mathrm T}\mathbf A)$ with $\mathbf A$ the axle constraints, so wherever the robot can move "
-                  r"(axles concurrent, $\operatorname{rank}\mathbf F = 5$) $\kappa(\mathbf J) \geq \sqrt2$, with equality "
-                  r"only for the rotation about C, and $\kappa(\mathbf J) = \infty$ in every translation (all wheel planes "
+        refuted=r"three centred wheels with isotropic $\mathbf J_{L1}$ and $\mathbf J_2$ have "
+                r"$\kappa(\mathbf J) \geq \sqrt2$ at every configuration where they can move, and "
+                r"$\kappa(\mathbf J) = \infty$ in every translation",
+        corrected=r"Offset wheels with $d = r$: $\mathbf J\mathbf J^{\mathrm T} = 3r^2\mathbf 1$ for every "
+                  r"$\boldsymbol\beta$, robust as claimed. Centred wheels: "
+                  r"$\mathbf J\mathbf J^{\mathrm T} = r^2(3\cdot\mathbf 1 - \mathbf A^{\mathrm T}\mathbf A)$ with "
+                  r"$\mathbf A$ the axle constraints, so wherever the robot can move (axles concurrent, "
+                  r"$\operatorname{rank}\mathbf F = 5$) $\kappa(\mathbf J) \geq \sqrt2$, with equality only for the "
+                  r"rotation about C, and $\kappa(\mathbf J) = \infty$ in every translation (all wheel planes "
                   r"parallel); $\mathbf J$ is isotropic only at configurations where the robot cannot move",
         corrected_holds=offset_robust and identity and bound_holds and k_about_C == sp.sqrt(2), severity="wrong",
-        why=r"isotropy of the factors $\mathbf J_{L1}$ and $\mathbf J_2$ does not make the composite $\mathbf J$ isotropic "
-            r"for centred wheels: it depends on $\boldsymbol\beta$ and is never better than $\sqrt2$ where the robot moves",
-        convention=r"robustness read as the condition number of the composite $\mathbf J = \mathbf J_{L1}^{\mathrm T}\mathbf J_2$ "
-                   r"(56) used by (49) and (55); paper placement, $L$ the mount radius",
-        note=rf"over all steering angles (mostly immobile ones) the smallest $\kappa$ found is ${k_rand[np.isfinite(k_rand)].min():.3f}$, "
-             rf"and $(-135^\circ, 105^\circ, -15^\circ)$ even gives $\kappa = {example['kappa']:.3f}$, but with "
-             rf"$\operatorname{{rank}}\mathbf F = {example['rank_F']}$: the robot cannot move there")])
+        why=r"isotropy of the factors $\mathbf J_{L1}$ and $\mathbf J_2$ does not make the composite $\mathbf J$ "
+            r"isotropic for centred wheels: it depends on $\boldsymbol\beta$ and is never better than $\sqrt2$ where "
+            r"the robot moves",
+        convention=r"robustness read as the condition number of the composite "
+                   r"$\mathbf J = \mathbf J_{L1}^{\mathrm T}\mathbf J_2$ (56) used by (49) and (55); paper placement, "
+                   r"$L$ the mount radius",
+        note=r"over all steering angles (mostly immobile ones) the smallest $\kappa$ found is "
+             rf"${k_rand[np.isfinite(k_rand)].min():.3f}$, and $(-135^\circ, 105^\circ, -15^\circ)$ even gives "
+             rf"$\kappa = {example['kappa']:.3f}$, but with $\operatorname{{rank}}\mathbf F = {example['rank_F']}$: "
+             r"the robot cannot move there")])

@@ -15,9 +15,9 @@ The checks, by equation group:
 :mod:`.centre`      the instantaneous centre, (61)-(64)
 ==================  =========================================================================
 """
-from .constraint import robot, no_slip, no_slip_matches_constraints, feasibility, evaluate, KIND_NAMES
-from .laws import translation, rotation_angles
-from .centre import instant_centre_velocity, instant_centre, centre_to_wheel
+from .centre import centre_to_wheel, instant_centre, instant_centre_velocity
+from .constraint import KIND_NAMES, evaluate, feasibility, no_slip, no_slip_matches_constraints, robot
+from .laws import rotation_angles, translation
 
 __all__ = ["robot", "no_slip", "no_slip_matches_constraints", "feasibility", "evaluate", "translation",
            "instant_centre_velocity", "instant_centre", "centre_to_wheel", "rotation_angles", "KIND_NAMES"]

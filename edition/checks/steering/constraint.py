@@ -4,7 +4,7 @@ Chapter 5's checks live in :mod:`edition.checks.steering`; this module holds one
 """
 from __future__ import annotations
 
-from functools import lru_cache
+from functools import cache
 
 import numpy as np
 import sympy as sp
@@ -19,6 +19,7 @@ from wmr.model.robot import Robot
 from wmr.model.robots import paper_robot
 from wmr.model.tolerance import TOL
 from wmr.model.wheels import CentredWheel
+
 from ... import symbols as S
 from ...verify import SEED, symbolic_equal
 from .. import Derivation, require
@@ -60,7 +61,7 @@ def evaluate(expr, syms, *cols):
     return out if isinstance(expr, sp.MatrixBase) else out[..., 0]
 
 
-@lru_cache(maxsize=None)
+@cache
 def no_slip():
     r"""The axle component :math:`g_i` of the velocity of a centred wheel's mount point, symbolic.
 

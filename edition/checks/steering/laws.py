@@ -9,13 +9,13 @@ import sympy as sp
 
 from wmr.analysis.steering import centre_to_wheels, instantaneous_centre, steering_angles
 from wmr.model.backend import SYMBOLIC
-from wmr.model.platform import rotation
+from wmr.model.platform import E, rotation
 from wmr.model.robots import paper_robot
 from wmr.model.tolerance import TOL
-from ... import printed
-from ... import steering as P
+
 from ... import symbols as S
-from ...notebook import mod_pi
+from ...algebra import mod_pi
+from ...transcription import printed
 from ...verify import SEED, symbolic_equal
 from .. import Derivation, equation, require
 from .constraint import evaluate, feasibility, no_slip, robot
@@ -24,7 +24,8 @@ __all__ = ["translation", "rotation_angles"]
 
 
 def translation(n=2000, seed=SEED):
-    r"""(60): in translation the **axle** must be perpendicular to the velocity; the printed angle is the velocity's own.
+    r"""(60): in translation the **axle** must be perpendicular to the velocity; the printed angle is the velocity's
+    own.
 
     :math:`g_i = 0` with :math:`\dot\psi = 0` reads :math:`\dot X\cos\phi_i + \dot Y\sin\phi_i = 0`, so
     :math:`\phi_i = \operatorname{atan2}(\dot Y, \dot X) + \pi/2` (mod :math:`\pi`).
@@ -60,7 +61,8 @@ def translation(n=2000, seed=SEED):
     tw = np.column_stack([np.zeros(n), np.einsum("nji,nj->ni", rotation(psi), V)])
     ph_pr = evaluate(p60.expr.rhs, (S.X_dot, S.Y_dot), V[:, 0], V[:, 1])
     ph_tr = evaluate(phi_true, (S.X_dot, S.Y_dot), V[:, 0], V[:, 1])
-    beta_of = lambda ph: np.repeat((ph - psi)[:, None], 3, axis=1)        # (8): beta_i = phi_i - psi
+    def beta_of(ph):                                                      # (8): beta_i = phi_i - psi
+        return np.repeat((ph - psi)[:, None], 3, axis=1)
     rep_pr, rep_tr = feasibility(beta_of(ph_pr), tw), feasibility(beta_of(ph_tr), tw)
     dev = float(np.max(np.abs(mod_pi(steering_angles(robot(), tw) - beta_of(ph_tr)))))
     alt = float(np.max(np.abs(mod_pi(ph_tr + np.pi / 2 - ph_pr))))
@@ -76,21 +78,23 @@ def translation(n=2000, seed=SEED):
                    rf"{n} random translations are executable with zero residual, as at `wmr.steering_angles`",
         rep_tr["max_residual"],
         refuted=r"with the printed angle the axle lies along the velocity: $g_i^2 = \dot X^2 + \dot Y^2$ (SymPy), and "
-                rf"none of the {n} random translations is executable (rank $[\mathbf J_2\ \ \mathbf J_1\mathbf t] = 4$, "
-                r"slip equal to the full speed)",
+                rf"none of the {n} random translations is executable (rank "
+                r"$[\mathbf J_2\ \ \mathbf J_1\mathbf t] = 4$, slip equal to the full speed)",
         corrected=r"\phi_i = \operatorname{atan2}(\dot Y, \dot X) + \frac{\pi}{2} \pmod{\pi}, \quad "
                   r"\text{i.e.}\quad \tan\phi_i = -\frac{\dot X}{\dot Y}",
         corrected_holds=proven, severity="wrong",
-        why=r"the printed angle is the direction of the velocity, but by (6), (8) and (11) $\phi_i$ is the angle of the "
-            r"axle $\mathbf i_i$, which must be perpendicular to it",
-        convention=r"$\phi_i = \psi + \beta_i$ is the angle of the axle $\mathbf i_i$ ((6), (8), (11)); the printed form "
-                   r"holds if $\phi_i$ is measured to the rolling direction $\mathbf j_i$ (the wheel's heading) instead",
+        why=r"the printed angle is the direction of the velocity, but by (6), (8) and (11) $\phi_i$ is the angle of "
+            r"the axle $\mathbf i_i$, which must be perpendicular to it",
+        convention=r"$\phi_i = \psi + \beta_i$ is the angle of the axle $\mathbf i_i$ ((6), (8), (11)); the printed "
+                   r"form holds if $\phi_i$ is measured to the rolling direction $\mathbf j_i$ (the wheel's heading) "
+                   r"instead",
         note=r"the printed $\tan^{-1}$ also needs $\dot X \neq 0$; with `atan2` the formula holds for every nonzero "
              r"velocity. Rank $\mathbf F = 5$ with either angles: the axles are parallel in both cases")])
 
 
 def rotation_angles(n=2000, seed=SEED, eps=1e-7):
-    r"""(65): in rotation about U each axle must point at U, :math:`\beta_i = \operatorname{atan2}(u_{iy}, u_{ix})` (mod :math:`\pi`).
+    r"""(65): in rotation about U each axle must point at U, :math:`\beta_i = \operatorname{atan2}(u_{iy}, u_{ix})` (mod
+    :math:`\pi`).
 
     The printed formula measures the angle between :math:`\overrightarrow{CU}` and :math:`\overrightarrow{P_iU}`
     instead; it agrees only when U lies on the positive body x-axis.
@@ -113,23 +117,24 @@ def rotation_angles(n=2000, seed=SEED, eps=1e-7):
     """
     p64, p65 = printed(64), printed(65)
     ns = no_slip()
-    ui = P.u_i
+    ui = S.u_i
     d = sp.Matrix([S.dx, S.dy])
-    c_dot = -S.psi_dot * S.E * (ui + d)                       # from u_dot = 0 with u_c = u_i + d_i
+    c_dot = -S.psi_dot * E(SYMBOLIC) * (ui + d)                       # from u_dot = 0 with u_c = u_i + d_i
     g65 = sp.factor(sp.expand(ns.g.subs({S.x_dot: c_dot[0], S.y_dot: c_dot[1]}, simultaneous=True)))
     beta_true = sp.atan2(ui[1], ui[0])
     true_ok = symbolic_equal(g65.subs(ns.beta, beta_true), 0)
     a = sp.Symbol("a", positive=True)
-    on_axis = symbolic_equal(p65.expr.rhs.subs({P.u_c[0]: a, P.u_c[1]: 0}), sp.cos(beta_true))
+    on_axis = symbolic_equal(p65.expr.rhs.subs({S.u_c[0]: a, S.u_c[1]: 0}), sp.cos(beta_true))
     exact = paper_robot("centred", L=1, r=1, exact=True)
     U = sp.Matrix([0, 1])
     rows = []
     for i, unit in enumerate(exact.wheels, 1):
         u_i = U - sp.Matrix(unit.position)
-        sub = {P.u_c[0]: U[0], P.u_c[1]: U[1], P.u_i[0]: u_i[0], P.u_i[1]: u_i[1]}
+        sub = {S.u_c[0]: U[0], S.u_c[1]: U[1], S.u_i[0]: u_i[0], S.u_i[1]: u_i[1]}
         b_pr = sp.acos(sp.nsimplify(p65.expr.rhs.subs(sub)))
         slips = [float(g65.subs(sub).subs({ns.beta: s * b_pr, S.psi_dot: 1})) for s in (1, -1)]
-        rows.append({"wheel": i, "printed": float(b_pr * 180 / sp.pi), "derived": float(beta_true.subs(sub) * 180 / sp.pi),
+        rows.append({"wheel": i, "printed": float(b_pr * 180 / sp.pi),
+                     "derived": float(beta_true.subs(sub) * 180 / sp.pi),
                      "slip_plus": slips[0], "slip_minus": slips[1]})
     cex = any(min(abs(x["slip_plus"]), abs(x["slip_minus"])) > TOL for x in rows)
     bot = robot()
@@ -138,8 +143,9 @@ def rotation_angles(n=2000, seed=SEED, eps=1e-7):
     Tw = rng.normal(size=(n, 3))
     Tw[:, 0] = np.sign(Tw[:, 0]) * rng.uniform(0.2, 2.0, n)
     uc_n, ui_n = instantaneous_centre(Tw).point, centre_to_wheels(Tw, D)
-    cos_pr = evaluate(p65.expr.rhs, (*P.u_c, *P.u_i), uc_n[:, None, 0], uc_n[:, None, 1], ui_n[..., 0], ui_n[..., 1])
-    lateral = lambda b: np.abs(ui_n[..., 1] * np.cos(b) - ui_n[..., 0] * np.sin(b))
+    cos_pr = evaluate(p65.expr.rhs, (*S.u_c, *S.u_i), uc_n[:, None, 0], uc_n[:, None, 1], ui_n[..., 0], ui_n[..., 1])
+    def lateral(b):
+        return np.abs(ui_n[..., 1] * np.cos(b) - ui_n[..., 0] * np.sin(b))
     b_pr = np.arccos(np.clip(cos_pr, -1, 1))
     b_pr = np.where(lateral(b_pr) <= lateral(-b_pr), b_pr, -b_pr)        # the better sign, wheel by wheel
     b_tr = np.arctan2(ui_n[..., 1], ui_n[..., 0])
@@ -147,7 +153,7 @@ def rotation_angles(n=2000, seed=SEED, eps=1e-7):
     Tx[:, 1] = 0.0
     Tx[:, 2] = -np.abs(Tx[:, 2]) * Tx[:, 0]                             # u_c = (-y_dot/psi_dot, 0) on the +x axis
     ui_x, uc_x = centre_to_wheels(Tx, D), instantaneous_centre(Tx).point
-    cos_x = evaluate(p65.expr.rhs, (*P.u_c, *P.u_i), uc_x[:, None, 0], uc_x[:, None, 1], ui_x[..., 0], ui_x[..., 1])
+    cos_x = evaluate(p65.expr.rhs, (*S.u_c, *S.u_i), uc_x[:, None, 0], uc_x[:, None, 1], ui_x[..., 0], ui_x[..., 1])
     b_x = np.sign(ui_x[..., 1]) * np.arccos(np.clip(cos_x, -1, 1))
     reports = {"printed (65)": feasibility(b_pr, Tw), "derived": feasibility(b_tr, Tw),
                "printed, U on the positive x-axis": feasibility(b_x, Tx)}
@@ -169,20 +175,21 @@ def rotation_angles(n=2000, seed=SEED, eps=1e-7):
     proven = (true_ok and reports["derived"]["rank_F"] == {5} and reports["derived"]["admissible"] == 1.0
               and res < TOL and limit_ok)
     return Derivation(g=g65, counterexample=rows, reports=reports, limit=lim, dev_lim=dev_lim, radial=radial,
-                      at_C=p65.expr.rhs.subs({P.u_c[0]: 0, P.u_c[1]: 0}), n=n, findings=[equation(
+                      at_C=p65.expr.rhs.subs({S.u_c[0]: 0, S.u_c[1]: 0}), n=n, findings=[equation(
         65, holds, r"$g_i = \dot\psi(u_{iy}\cos\beta_i - u_{ix}\sin\beta_i)$ in rotation about U, zero for "
-                   r"$\beta_i = \operatorname{atan2}(u_{iy}, u_{ix})$ (SymPy); at these angles all " rf"{n} random rotations "
-                   r"are executable (rank $\mathbf F = 5$, zero residual), they equal `wmr.steering_angles` mod $\pi$, and "
-                   r"they tend to the corrected (60) as $\dot\psi \to 0$", res,
-        refuted=r"the paper's robot rotating about $U = (0, 1)$: for wheels 2 and 3 neither sign of the printed angle points "
-                rf"the axle at U (exact); at the printed angles none of {n} random rotations is executable "
+                   r"$\beta_i = \operatorname{atan2}(u_{iy}, u_{ix})$ (SymPy); at these angles all "
+                   rf"{n} random rotations are executable (rank $\mathbf F = 5$, zero residual), they equal "
+                   r"`wmr.steering_angles` mod $\pi$, and they tend to the corrected (60) as $\dot\psi \to 0$", res,
+        refuted=r"the paper's robot rotating about $U = (0, 1)$: for wheels 2 and 3 neither sign of the printed angle "
+                rf"points the axle at U (exact); at the printed angles none of {n} random rotations is executable "
                 r"(rank $\mathbf F = 6$: jammed)" if cex else "the printed angles fail",
         corrected=r"\beta_i = \operatorname{atan2}(u_{iy}, u_{ix}) \pmod{\pi}, \quad \text{i.e.}\quad "
                   r"\cos\beta_i = \pm\frac{\mathbf i^{\mathrm T}\mathbf u_i}{\|\mathbf u_i\|},\ "
                   r"\sin\beta_i = \pm\frac{\mathbf j^{\mathrm T}\mathbf u_i}{\|\mathbf u_i\|}",
         corrected_holds=proven, severity="wrong",
-        why=r"the printed formula gives the angle between $\overrightarrow{CU}$ and $\overrightarrow{P_iU}$; with $\beta_i$ "
-            r"measured from the body axis $\mathbf i$ (11) the axle must be parallel to $\mathbf u_i$",
-        convention=r"$\beta_i$ measured from the body axis $\mathbf i$ (11); the printed form holds only if $\beta_i$ is "
-                   r"measured from the line CU (U on the positive body $x$-axis), up to the sign that $\arccos$ loses",
+        why=r"the printed formula gives the angle between $\overrightarrow{CU}$ and $\overrightarrow{P_iU}$; with "
+            r"$\beta_i$ measured from the body axis $\mathbf i$ (11) the axle must be parallel to $\mathbf u_i$",
+        convention=r"$\beta_i$ measured from the body axis $\mathbf i$ (11); the printed form holds only if $\beta_i$ "
+                   r"is measured from the line CU (U on the positive body $x$-axis), up to the sign that $\arccos$ "
+                   r"loses",
         note="the printed form is undefined for a rotation about C, where the corrected rule makes every axle radial")])

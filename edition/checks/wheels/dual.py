@@ -4,7 +4,7 @@ Chapter 1's checks live in :mod:`edition.checks.wheels`; this module holds one g
 """
 from __future__ import annotations
 
-from functools import lru_cache
+from functools import cache
 
 import numpy as np
 import sympy as sp
@@ -16,13 +16,14 @@ from wmr.model.platform import point_velocity, rotation
 from wmr.model.robots import paper_robot
 from wmr.model.tolerance import TOL
 from wmr.model.wheels import CentredWheel, DualWheel
-from ... import platform_wheels as PW
-from ... import printed
+
 from ... import symbols as S
+from ...algebra import explicit
 from ...text import bound
+from ...transcription import printed
 from ...verify import SEED, max_residual, symbolic_equal
 from .. import Derivation, equation, require
-from .frames import disk_velocity, k, planar, _axes, _explicit, _t
+from .frames import disk_velocity, k, planar, time, unit_axes
 
 __all__ = ["dual_no_slip", "dual_steering", "dual_integrated", "dual_average", "dual_average_angle"]
 
@@ -36,9 +37,9 @@ def dual_no_slip():
         ``h_dot_1``, ``h_dot_2`` (3, 1), findings (13) and (14).
     """
     out, found = {}, []
-    for P, th, name in ((printed(13), PW.theta_dot_i1, "h_dot_1"), (printed(14), PW.theta_dot_i2, "h_dot_2")):
+    for P, th, name in ((printed(13), S.theta_dot_i1, "h_dot_1"), (printed(14), S.theta_dot_i2, "h_dot_2")):
         h = disk_velocity(th).h_dot
-        rhs = _explicit(P.expr.rhs, _axes())
+        rhs = explicit(P.expr.rhs, unit_axes())
         out[name] = h
         found.append(equation(P.id, symbolic_equal(planar(h), rhs),
                               r"the derivation of (6) for this wheel's rolling rate gives the printed form (SymPy)",
@@ -48,10 +49,10 @@ def dual_no_slip():
     return Derivation(**out, findings=found)
 
 
-@lru_cache(maxsize=None)
+@cache
 def _turning_rate():
     """omega_z of the intermediate body from the two wheel velocities (rigid body): the derivation of (15)."""
-    d1, d2 = disk_velocity(PW.theta_dot_i1), disk_velocity(PW.theta_dot_i2)
+    d1, d2 = disk_velocity(S.theta_dot_i1), disk_velocity(S.theta_dot_i2)
     omega_z = sp.Symbol(r"\omega_z", real=True)
     rigid = d1.h_dot - d2.h_dot - (omega_z * k).cross(2 * S.b * d1.i3)      # H_i1 - H_i2 = 2 b i_i
     require(sp.trigsimp(d1.i3.dot(rigid)) == 0, "the axle component of the rigid-body relation vanishes")
@@ -94,42 +95,48 @@ def dual_steering(n=500, seed=SEED, r=0.1, b=0.08, L=0.5):
     sol = inverse(dual, beta, spin)
     require(bool(sol.admissible), "the spin about C with axles through C is admissible")
     rows = []
-    for i, (dp, bt) in enumerate(zip(dual.mount_points, beta)):
+    for i, (dp, bt) in enumerate(zip(dual.mount_points, beta, strict=True)):
         ii, jj = np.array([np.cos(bt), np.sin(bt)]), np.array([-np.sin(bt), np.cos(bt)])
         v1, v2 = point_velocity(spin, dp + b * ii), point_velocity(spin, dp - b * ii)
         th1, th2 = -jj @ v1 / r, -jj @ v2 / r
         rows.append({"unit": i + 1, "sideways slip": max(abs(ii @ v1), abs(ii @ v2)), "theta1": th1, "theta2": th2,
                      "printed": -r / (2 * b) * (th1 - th2), "true": 0.0})
     require(max(x["sideways slip"] for x in rows) < TOL, "the spin needs no sideways slip")
-    require(np.allclose(sol.value, [v for x in rows for v in (x["theta1"], x["theta2"])]), "wmr.inverse finds the rates")
+    require(np.allclose(sol.value, [v for x in rows for v in (x["theta1"], x["theta2"])]), "wmr.inverse finds the "
+                                                                                           "rates")
     printed_gap = max(abs(x["printed"] - x["true"]) for x in rows)
     # the corrected law at random unit states
     rng = np.random.default_rng(seed)
-    bt, psid, betad, s = rng.uniform(-np.pi, np.pi, n), rng.uniform(-3, 3, n), rng.uniform(-3, 3, n), rng.uniform(-2, 2, n)
+    bt, psid, betad, s = rng.uniform(-np.pi, np.pi, n), rng.uniform(-3, 3, n), rng.uniform(-3, 3, n), rng.uniform(-2, 2,
+                                                                                                                  n)
     rr, bb = rng.uniform(0.05, 0.5, n), rng.uniform(0.05, 0.5, n)
     jj = np.stack([-np.sin(bt), np.cos(bt)], -1)
     phid = psid + betad
     v1 = (s + phid * bb)[:, None] * jj                                      # p_dot + phi_dot k x (+b i)
     v2 = (s - phid * bb)[:, None] * jj
     th1, th2 = -(v1 * jj).sum(-1) / rr, -(v2 * jj).sum(-1) / rr
-    f = sp.lambdify([PW.theta_dot_i1, PW.theta_dot_i2, S.r, S.b], phi_dot)
+    f = sp.lambdify([S.theta_dot_i1, S.theta_dot_i2, S.r, S.b], phi_dot)
     res = float(np.abs(f(th1, th2, rr, bb) - phid).max())
     m = min(n, 50)
     res_wmr = max(abs(DualWheel((0.0, 0.0), r=float(a), b=float(c)).beta_rate(p, np.array([x, y])) - q)
-                  for a, c, p, x, y, q in zip(rr[:m], bb[:m], psid, th1, th2, betad))
+                  for a, c, p, x, y, q in zip(rr[:m], bb[:m], psid, th1, th2, betad, strict=False))
     corrected = (r"\dot\phi_i = \dot\psi + \dot\beta_i = " + sp.latex(phi_dot))
     return Derivation(rigid=rigid.applyfunc(sp.factor), phi_dot=phi_dot, beta_dot=beta_dot, difference=diff,
                       spin=rows, findings=[equation(
         15, holds, r"$\dot\phi_i = -\frac{r}{2b}(\dot\theta_{i1} - \dot\theta_{i2})$ from "
-                   r"$\dot{\mathbf h}_{i1} - \dot{\mathbf h}_{i2} = \dot\phi_i\mathbf k\times 2b\,\mathbf i_i$ (SymPy); "
+                   r"$\dot{\mathbf h}_{i1} - \dot{\mathbf h}_{i2} = \dot\phi_i\mathbf k\times 2b\,\mathbf i_i$ "
+                   r"(SymPy); "
                    rf"at {n} random unit states the rates give $\dot\psi + \dot\beta_i$ (and `DualWheel.beta_rate` "
                    rf"gives $\dot\beta_i$ at {m})", max(res, res_wmr),
-        refuted=(r"printed minus derived is exactly $\dot\psi$" if off_by_psi_dot else "printed differs from the derivation")
-                + rf"; a spin about C at $\dot\psi = 1$ with locked units: printed $\dot\beta_i = {printed_gap:.3g}$, true 0",
+        refuted=(r"printed minus derived is exactly "
+                 r"$\dot\psi$" if off_by_psi_dot else "printed differs from the derivation")
+                + rf"; a spin about C at $\dot\psi = 1$ with locked units: printed $\dot\beta_i = {printed_gap:.3g}$, "
+                  r"true 0",
         corrected=corrected, corrected_holds=res < TOL and res_wmr < TOL, severity="wrong",
         why=r"the wheel-rate difference fixes the absolute turning rate $\dot\phi_i$ of the unit, not its rate "
             r"$\dot\beta_i$ relative to the platform; the printed form is off by $\dot\psi$",
-        convention=r"wheel 1 at $P_i + b\,\mathbf i_i$, wheel 2 at $P_i - b\,\mathbf i_i$; $\beta_i$ relative to the platform")])
+        convention=r"wheel 1 at $P_i + b\,\mathbf i_i$, wheel 2 at $P_i - b\,\mathbf i_i$; $\beta_i$ relative to the "
+                   r"platform")])
 
 
 def dual_integrated(r=0.1, b=0.08, L=0.5, steps=100):
@@ -153,29 +160,31 @@ def dual_integrated(r=0.1, b=0.08, L=0.5, steps=100):
     """
     P15, P16 = printed(15), printed(16)
     _, phi_dot = _turning_rate()
-    th1_t, th2_t = sp.Function("theta_1")(_t), sp.Function("theta_2")(_t)
-    phi = phi_dot.subs({PW.theta_dot_i1: th1_t, PW.theta_dot_i2: th2_t})       # same linear form in the angles
-    shown = phi.subs({th1_t: PW.theta_i1, th2_t: PW.theta_i2})
-    rates_t = {PW.theta_dot_i1: th1_t.diff(_t), PW.theta_dot_i2: th2_t.diff(_t)}
-    corrected_ok = symbolic_equal(phi.diff(_t), phi_dot.subs(rates_t))
-    inherits = symbolic_equal(P16.expr.rhs.subs({PW.theta_i1: th1_t, PW.theta_i2: th2_t}).diff(_t), P15.expr.rhs.subs(rates_t))
+    th1_t, th2_t = sp.Function("theta_1")(time), sp.Function("theta_2")(time)
+    phi = phi_dot.subs({S.theta_dot_i1: th1_t, S.theta_dot_i2: th2_t})       # same linear form in the angles
+    shown = phi.subs({th1_t: S.theta_i1, th2_t: S.theta_i2})
+    rates_t = {S.theta_dot_i1: th1_t.diff(time), S.theta_dot_i2: th2_t.diff(time)}
+    corrected_ok = symbolic_equal(phi.diff(time), phi_dot.subs(rates_t))
+    inherits = symbolic_equal(P16.expr.rhs.subs({S.theta_i1: th1_t, S.theta_i2: th2_t}).diff(time),
+                              P15.expr.rhs.subs(rates_t))
     dual = paper_robot("dual", L=L, r=r, b=b)
     beta0 = np.arctan2(dual.mount_points[:, 1], dual.mount_points[:, 0])
     sol = inverse(dual, beta0, np.array([1.0, 0.0, 0.0]))
     T = np.pi / 2
     run = simulate(dual, sol.value, beta0, t_end=T, dt=T / steps)
     dth = (sol.value * T).reshape(3, 2)                                  # wheel angles after the turn (from zero)
-    f16 = sp.lambdify([PW.theta_i1, PW.theta_i2, S.r, S.b], P16.expr.rhs, "numpy")
+    f16 = sp.lambdify([S.theta_i1, S.theta_i2, S.r, S.b], P16.expr.rhs, "numpy")
     printed_change = np.asarray(f16(dth[:, 0], dth[:, 1], r, b), dtype=float) * np.ones(3)
     true_change = run.beta[-1] - beta0
     jam = inverse(dual, beta0 + printed_change, np.array([1.0, 0.0, 0.0]))
-    corrected_change = -r / (2 * b) * (dth[:, 0] - dth[:, 1])            # the corrected (16): the change of psi + beta_i
+    # the corrected (16): the change of psi + beta_i
+    corrected_change = -r / (2 * b) * (dth[:, 0] - dth[:, 1])
     res = float(np.abs(corrected_change - (run.pose[-1, 0] + true_change)).max())
     holds = bool(np.allclose(printed_change, true_change, atol=1e-6))
     return Derivation(phi=shown, printed_change=printed_change, true_change=true_change, findings=[equation(
         16, holds, r"$\phi_i = \psi + \beta_i = -\frac{r}{2b}(\theta_{i1} - \theta_{i2})$ differentiates into the "
-                   rf"corrected (15) (SymPy); in a simulated quarter turn (`wmr.simulate`, {steps} steps) the change of "
-                   r"$\psi + \beta_i$ equals it", res,
+                   rf"corrected (15) (SymPy); in a simulated quarter turn (`wmr.simulate`, {steps} steps) the change "
+                   r"of $\psi + \beta_i$ equals it", res,
         refuted=(r"it differentiates into the printed (15)" if inherits else "it is not the integral of (15)")
                 + rf"; a quarter turn with locked units: printed $\Delta\beta_i = {printed_change[0]:.4g}$, simulated "
                   rf"${bound(abs(true_change).max(), latex=True)}$ with slip ${bound(run.slip.max(), latex=True)}$, "
@@ -199,17 +208,18 @@ def dual_average():
     """
     P17, P18 = printed(17), printed(18)
     _, phi_dot = _turning_rate()
-    d1, d2 = disk_velocity(PW.theta_dot_i1), disk_velocity(PW.theta_dot_i2)
+    d1, d2 = disk_velocity(S.theta_dot_i1), disk_velocity(S.theta_dot_i2)
     h = planar(d1.h_dot + (phi_dot * k).cross(-S.b * d1.i3))
-    axes = _axes()
-    members = (_explicit(P17.extra["definition"], {PW.h_dot_i1: planar(d1.h_dot), PW.h_dot_i2: planar(d2.h_dot)}),
-               _explicit(P17.expr.rhs, axes), _explicit(P17.extra["average_form"], axes).subs(PW.theta_dot_i, P18.expr.rhs))
+    axes = unit_axes()
+    members = (explicit(P17.extra["definition"], {S.h_dot_i1: planar(d1.h_dot), S.h_dot_i2: planar(d2.h_dot)}),
+               explicit(P17.expr.rhs, axes), explicit(P17.extra["average_form"], axes).subs(S.theta_dot_i,
+                                                                                            P18.expr.rhs))
     holds17 = all(symbolic_equal(h, x) for x in members)
     res17 = max(max_residual(h, x) for x in members)
-    dual_unit, centred_unit = DualWheel(PW.d_i, r=S.r, b=S.b), CentredWheel(PW.d_i, r=S.r)
-    lhs = dual_unit.block(PW.beta_i) * sp.Matrix([PW.theta_dot_i1, PW.theta_dot_i2])
-    rhs = centred_unit.block(PW.beta_i) * sp.Matrix([P18.expr.rhs])
-    h_B = rotation(S.psi, SYMBOLIC).T * h.subs(PW.phi_i, S.psi + PW.beta_i)
+    dual_unit, centred_unit = DualWheel(S.d_i, r=S.r, b=S.b), CentredWheel(S.d_i, r=S.r)
+    lhs = dual_unit.block(S.beta_i) * sp.Matrix([S.theta_dot_i1, S.theta_dot_i2])
+    rhs = centred_unit.block(S.beta_i) * sp.Matrix([P18.expr.rhs])
+    h_B = rotation(S.psi, SYMBOLIC).T * h.subs(S.phi_i, S.psi + S.beta_i)
     holds18 = symbolic_equal(lhs, rhs) and symbolic_equal(lhs, h_B)
     res18 = max(max_residual(lhs, rhs), max_residual(lhs, h_B))
     return Derivation(h_dot=h, findings=[
@@ -230,9 +240,9 @@ def dual_average_angle():
         finding (19).
     """
     P18, P19 = printed(18), printed(19)
-    th1_t, th2_t = sp.Function("theta_1")(_t), sp.Function("theta_2")(_t)
-    avg = P19.expr.rhs.subs({PW.theta_i1: th1_t, PW.theta_i2: th2_t})
-    rates_t = {PW.theta_dot_i1: th1_t.diff(_t), PW.theta_dot_i2: th2_t.diff(_t)}
-    holds = symbolic_equal(avg.diff(_t), P18.expr.rhs.subs(rates_t))
+    th1_t, th2_t = sp.Function("theta_1")(time), sp.Function("theta_2")(time)
+    avg = P19.expr.rhs.subs({S.theta_i1: th1_t, S.theta_i2: th2_t})
+    rates_t = {S.theta_dot_i1: th1_t.diff(time), S.theta_dot_i2: th2_t.diff(time)}
+    holds = symbolic_equal(avg.diff(time), P18.expr.rhs.subs(rates_t))
     return Derivation(findings=[equation(19, holds, r"its time derivative is (18) (SymPy)", 0.0,
                                          convention="all angles zero together")])

@@ -4,20 +4,20 @@ Chapter 1's checks live in :mod:`edition.checks.wheels`; this module holds one g
 """
 from __future__ import annotations
 
-from functools import lru_cache
+from functools import cache
 
 import sympy as sp
 
-from ... import platform_wheels as PW
 from ... import symbols as S
 from .. import Derivation, require
 
-__all__ = ["k", "lift", "planar", "disk_velocity"]
+__all__ = ["k", "time", "lift", "planar", "disk_velocity", "unit_axes"]
 
 
 #: the vertical unit vector (3D)
 k = sp.Matrix([0, 0, 1])
-_t = sp.Symbol("t", real=True)
+#: time, the variable of the angle histories whose derivatives are the rates
+time = sp.Symbol("t", real=True)
 
 
 def lift(v):
@@ -49,8 +49,8 @@ def planar(v):
     return sp.Matrix(v[:2])
 
 
-@lru_cache(maxsize=None)
-def disk_velocity(theta_dot, phi=PW.phi_i, phi_dot=PW.phi_dot_i, r=S.r):
+@cache
+def disk_velocity(theta_dot, phi=S.phi_i, phi_dot=S.phi_dot_i, r=S.r):
     r"""Velocity of the centre of a thin disk rolling without slip, and its axes (derivation of (6)).
 
     The disk spins about its axle :math:`\mathbf i_i` at ``theta_dot`` and is steered about
@@ -77,10 +77,15 @@ def disk_velocity(theta_dot, phi=PW.phi_i, phi_dot=PW.phi_dot_i, r=S.r):
     return Derivation(h_dot=v.subs(sol), Omega=Omega, i3=i3, j3=j3)
 
 
-def _axes():
-    d = disk_velocity(PW.theta_dot_i)
-    return {PW.i_i: planar(d.i3), PW.j_i: planar(d.j3)}
+def unit_axes():
+    r"""The axes :math:`\mathbf i_i, \mathbf j_i` of unit *i* in the fixed frame, from the rolling disk
+    (:func:`disk_velocity`).
 
-
-def _explicit(expr, mapping):
-    return sp.Matrix(expr.subs(mapping).doit())
+    Returns
+    -------
+    dict
+        ``{S.i_i: Matrix (2, 1), S.j_i: Matrix (2, 1)}``: the named axes of the printed forms and
+        their components, functions of the absolute steering angle :math:`\phi_i`.
+    """
+    d = disk_velocity(S.theta_dot_i)
+    return {S.i_i: planar(d.i3), S.j_i: planar(d.j3)}

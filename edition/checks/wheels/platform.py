@@ -12,9 +12,9 @@ from wmr.model.platform import E, point_row, point_velocity, rotation
 from wmr.model.robot import Robot
 from wmr.model.tolerance import TOL
 from wmr.model.wheels import CentredWheel
-from ... import platform_wheels as PW
-from ... import printed
+
 from ... import symbols as S
+from ...transcription import printed
 from ...verify import SEED, max_residual, symbolic_equal
 from .. import Derivation, equation, require
 from .frames import k, lift, planar
@@ -23,7 +23,8 @@ __all__ = ["platform_point", "skew_matrix", "twist_layout", "platform_row"]
 
 
 def platform_point(n=500, seed=SEED):
-    r"""(2): velocity of a platform point, :math:`\dot{\mathbf c} + \dot\psi\mathbf k\times\mathbf d_i` (3D cross product).
+    r"""(2): velocity of a platform point, :math:`\dot{\mathbf c} + \dot\psi\mathbf k\times\mathbf d_i` (3D cross
+    product).
 
     Parameters
     ----------
@@ -37,13 +38,13 @@ def platform_point(n=500, seed=SEED):
         ``p_dot`` (the derived velocity), finding (2).
     """
     P = printed(2)
-    d_i = sp.Matrix(PW.d_i)
-    p_dot = PW.c_dot + planar((S.psi_dot * k).cross(lift(d_i)))
+    d_i = sp.Matrix(S.d_i)
+    p_dot = S.c_dot + planar((S.psi_dot * k).cross(lift(d_i)))
     holds = symbolic_equal(p_dot, P.expr.rhs)
     res = max_residual(p_dot, P.expr.rhs)
     rng = np.random.default_rng(seed)
     tw, dd = rng.uniform(-2, 2, (n, 3)), rng.uniform(-2, 2, (n, 2))
-    f = sp.lambdify([S.psi_dot, S.x_dot, S.y_dot, *PW.d_i], p_dot, "numpy")
+    f = sp.lambdify([S.psi_dot, S.x_dot, S.y_dot, *S.d_i], p_dot, "numpy")
     num = float(np.abs(point_velocity(tw, dd) - np.moveaxis(f(*tw.T, *dd.T)[:, 0], 0, -1)).max())
     require(num < TOL, "wmr.point_velocity equals the rigid-body velocity")
     return Derivation(p_dot=p_dot, findings=[equation(
@@ -65,7 +66,8 @@ def skew_matrix():
     P = printed(3)
     E_derived = sp.Matrix.hstack(planar(k.cross(lift([1, 0]))), planar(k.cross(lift([0, 1]))))
     M = P.expr.rhs
-    holds = (symbolic_equal(E_derived, M) and symbolic_equal(M.T, -M) and symbolic_equal(rotation(sp.pi / 2, SYMBOLIC), M))
+    holds = (symbolic_equal(E_derived, M) and symbolic_equal(M.T, -M) and symbolic_equal(rotation(sp.pi / 2, SYMBOLIC),
+                                                                                         M))
     require(symbolic_equal(E(SYMBOLIC), E_derived), "wmr.E is the derived matrix")
     res = float(np.abs(E() - np.array(E_derived, dtype=float)).max())
     return Derivation(E=E_derived, findings=[equation(
@@ -83,7 +85,7 @@ def twist_layout():
         ``names`` (the package's first three rate names), finding (4).
     """
     P = printed(4)
-    bot = Robot([CentredWheel(PW.d_i, r=S.r)])
+    bot = Robot([CentredWheel(S.d_i, r=S.r)])
     holds = list(bot.twist_symbols) == list(P.expr.rhs)
     return Derivation(names=bot.qdot_names[:3], findings=[equation(
         4, holds, r"`Robot.twist_symbols` is $[\dot\psi\ \dot x\ \dot y]$, the order used by "
@@ -108,8 +110,8 @@ def platform_row(n=5, samples=500, seed=SEED):
         ``row`` (2, 3), finding (5).
     """
     P = printed(5)
-    row = point_row(PW.d_i, backend=SYMBOLIC)
-    bot = Robot([CentredWheel(PW.d_i, r=S.r)])
+    row = point_row(S.d_i, backend=SYMBOLIC)
+    bot = Robot([CentredWheel(S.d_i, r=S.r)])
     t = sp.Matrix(bot.twist_symbols)
     p_dot = platform_point(n=1).p_dot
     holds = (symbolic_equal(row, P.extra["matrix"]) and symbolic_equal(row * t, p_dot)

@@ -11,12 +11,13 @@ from wmr.model.backend import SYMBOLIC
 from wmr.model.platform import E, rotation
 from wmr.model.tolerance import TOL
 from wmr.model.wheels import CentredWheel, OffsetWheel
-from ... import platform_wheels as PW
-from ... import printed
+
 from ... import symbols as S
+from ...algebra import explicit
+from ...transcription import printed
 from ...verify import SEED, max_residual, symbolic_equal
 from .. import Derivation, equation, require
-from .frames import disk_velocity, k, planar, _axes, _explicit, _t
+from .frames import disk_velocity, k, planar, time, unit_axes
 
 __all__ = ["rolling_disk", "steering_composition", "offset_wheel", "wheel_frame", "offset_in_body", "centred_wheel"]
 
@@ -30,19 +31,22 @@ def rolling_disk():
         ``h_dot`` (3, 1), ``Omega``, ``along`` (components along :math:`\mathbf i_i, \mathbf j_i`), finding (6).
     """
     P = printed(6)
-    d = disk_velocity(PW.theta_dot_i)
+    d = disk_velocity(S.theta_dot_i)
     along = sp.Matrix([sp.trigsimp(d.i3.dot(d.h_dot)), sp.trigsimp(d.j3.dot(d.h_dot))])
-    rhs = _explicit(P.expr.rhs, _axes())
+    rhs = explicit(P.expr.rhs, unit_axes())
     holds = symbolic_equal(planar(d.h_dot), rhs)
     res = max_residual(planar(d.h_dot), rhs)
     return Derivation(h_dot=d.h_dot, Omega=d.Omega, along=along, findings=[equation(
         6, holds, r"solving $\dot{\mathbf h}_i + \boldsymbol\Omega\times(-r\mathbf k) = \mathbf 0$ with "
-                  r"$\boldsymbol\Omega = \dot\theta_i\mathbf i_i + \dot\phi_i\mathbf k$ gives the printed form (SymPy)", res,
-        convention=r"$\dot\theta_i$ positive about $+\mathbf i_i$ (right-hand rule); $\mathbf j_i = \mathbf k\times\mathbf i_i$")])
+                  r"$\boldsymbol\Omega = \dot\theta_i\mathbf i_i + \dot\phi_i\mathbf k$ gives the printed form "
+                  r"(SymPy)", res,
+        convention=r"$\dot\theta_i$ positive about $+\mathbf i_i$ (right-hand rule); "
+                   r"$\mathbf j_i = \mathbf k\times\mathbf i_i$")])
 
 
 def steering_composition(n=200, seed=SEED):
-    r"""(7)-(8): :math:`\mathbf R(\psi)\mathbf R(\beta_i) = \mathbf R(\psi+\beta_i)`, and its rate from :math:`\dot{\mathbf R}\mathbf R^{\mathrm T}`.
+    r"""(7)-(8): :math:`\mathbf R(\psi)\mathbf R(\beta_i) = \mathbf R(\psi+\beta_i)`, and its rate from
+    :math:`\dot{\mathbf R}\mathbf R^{\mathrm T}`.
 
     Parameters
     ----------
@@ -56,15 +60,15 @@ def steering_composition(n=200, seed=SEED):
         ``W`` (:math:`\dot{\mathbf R}\mathbf R^{\mathrm T}`), findings (7) and (8).
     """
     P7, P8 = printed(7), printed(8)
-    R_wheel = rotation(S.psi, SYMBOLIC) * rotation(PW.beta_i, SYMBOLIC)
+    R_wheel = rotation(S.psi, SYMBOLIC) * rotation(S.beta_i, SYMBOLIC)
     holds8 = symbolic_equal(R_wheel, rotation(P8.expr.rhs, SYMBOLIC))
     res8 = max_residual(R_wheel, rotation(P8.expr.rhs, SYMBOLIC))
-    psi_t, beta_t = sp.Function("psi")(_t), sp.Function("beta")(_t)
+    psi_t, beta_t = sp.Function("psi")(time), sp.Function("beta")(time)
     R_t = rotation(psi_t, SYMBOLIC) * rotation(beta_t, SYMBOLIC)
-    W = (R_t.diff(_t) * R_t.T).applyfunc(lambda e: sp.trigsimp(sp.expand(e)))
+    W = (R_t.diff(time) * R_t.T).applyfunc(lambda e: sp.trigsimp(sp.expand(e)))
     omega = W[1, 0]
-    dots = {psi_t.diff(_t): sp.Symbol(r"\dot\psi"), beta_t.diff(_t): sp.Symbol(r"\dot\beta_i")}
-    to_t = {S.psi_dot: psi_t.diff(_t), PW.beta_dot_i: beta_t.diff(_t)}
+    dots = {psi_t.diff(time): sp.Symbol(r"\dot\psi"), beta_t.diff(time): sp.Symbol(r"\dot\beta_i")}
+    to_t = {S.psi_dot: psi_t.diff(time), S.beta_dot_i: beta_t.diff(time)}
     holds7 = symbolic_equal(W, omega * E(SYMBOLIC)) and symbolic_equal(omega, P7.expr.rhs.subs(to_t))
     rng = np.random.default_rng(seed)
     psi_d, phi_d = rng.uniform(-3, 3, (2, n))
@@ -98,12 +102,12 @@ def offset_wheel(n=50):
         ``p_dot`` (3, 1), ``other_side`` (printed minus the velocity with the centre on the other side), finding (9).
     """
     P = printed(9)
-    d = disk_velocity(PW.theta_dot_i)
-    p_dot = d.h_dot + (PW.phi_dot_i * k).cross(S.d * d.j3)
-    rhs = _explicit(P.expr.rhs, _axes())
+    d = disk_velocity(S.theta_dot_i)
+    p_dot = d.h_dot + (S.phi_dot_i * k).cross(S.d * d.j3)
+    rhs = explicit(P.expr.rhs, unit_axes())
     holds = symbolic_equal(planar(p_dot), rhs)
     res = max_residual(planar(p_dot), rhs)
-    other = planar(d.h_dot + (PW.phi_dot_i * k).cross(-S.d * d.j3))
+    other = planar(d.h_dot + (S.phi_dot_i * k).cross(-S.d * d.j3))
     other_fails = not symbolic_equal(other, rhs)
     betas = np.random.default_rng(SEED).uniform(-np.pi, np.pi, n)
     pts = OffsetWheel((0.4, -0.2), r=0.1, d=0.07).points(betas)
@@ -127,11 +131,11 @@ def wheel_frame():
         ``R`` (the axes :math:`[\mathbf i_i\ \mathbf j_i]` in the body frame), finding (11).
     """
     P = printed(11)
-    d = disk_velocity(PW.theta_dot_i)
-    axes_F = sp.Matrix.hstack(planar(d.i3), planar(d.j3)).subs(PW.phi_i, S.psi + PW.beta_i)
+    d = disk_velocity(S.theta_dot_i)
+    axes_F = sp.Matrix.hstack(planar(d.i3), planar(d.j3)).subs(S.phi_i, S.psi + S.beta_i)
     R = (rotation(S.psi, SYMBOLIC).T * axes_F).applyfunc(lambda e: sp.trigsimp(sp.expand_trig(e)))
     M = P.expr.rhs
-    holds = (symbolic_equal(R, M) and symbolic_equal(rotation(PW.beta_i, SYMBOLIC), M)
+    holds = (symbolic_equal(R, M) and symbolic_equal(rotation(S.beta_i, SYMBOLIC), M)
              and symbolic_equal(M.T * M, sp.eye(2)) and symbolic_equal(M.det(), 1))
     return Derivation(R=R, findings=[equation(
         11, holds, r"the wheel axes at $\phi_i = \psi + \beta_i$ rotated back by $\psi$ are the printed columns "
@@ -145,23 +149,25 @@ def offset_in_body():
     Returns
     -------
     Derivation
-        ``p_dot_B`` (body components), ``in_wheel_frame`` (components along :math:`\mathbf i_i, \mathbf j_i`), finding (10).
+        ``p_dot_B`` (body components), ``in_wheel_frame`` (components along :math:`\mathbf i_i, \mathbf j_i`), finding
+        (10).
     """
     P = printed(10)
-    d = disk_velocity(PW.theta_dot_i)
+    d = disk_velocity(S.theta_dot_i)
     p9 = planar(offset_wheel(n=1).p_dot)
-    p_B = (rotation(S.psi, SYMBOLIC).T * p9.subs(PW.phi_i, S.psi + PW.beta_i)).applyfunc(
+    p_B = (rotation(S.psi, SYMBOLIC).T * p9.subs(S.phi_i, S.psi + S.beta_i)).applyfunc(
         lambda e: sp.trigsimp(sp.expand(sp.expand_trig(e))))
     in_wheel = sp.Matrix([planar(d.i3).dot(p9), planar(d.j3).dot(p9)]).applyfunc(sp.trigsimp)
-    unit = OffsetWheel(PW.d_i, r=S.r, d=S.d)
+    unit = OffsetWheel(S.d_i, r=S.r, d=S.d)
     require(unit.rate_names(1) == ("phi_dot_1", "theta_dot_1"), "the offset unit's rates are (phi_dot, theta_dot)")
-    p_wmr = unit.block(PW.beta_i) * sp.Matrix([PW.phi_dot_i, PW.theta_dot_i])
+    p_wmr = unit.block(S.beta_i) * sp.Matrix([S.phi_dot_i, S.theta_dot_i])
     holds = (symbolic_equal(p_B, P.expr.rhs) and symbolic_equal(p_wmr, P.expr.rhs)
-             and symbolic_equal(in_wheel, sp.Matrix([-S.d * PW.phi_dot_i, -S.r * PW.theta_dot_i])))
+             and symbolic_equal(in_wheel, sp.Matrix([-S.d * S.phi_dot_i, -S.r * S.theta_dot_i])))
     res = max(max_residual(p_B, P.expr.rhs), max_residual(p_wmr, P.expr.rhs))
     return Derivation(p_dot_B=p_B, in_wheel_frame=in_wheel, findings=[equation(
-        10, holds, r"(9) rotated into the body frame equals $\mathbf R_{bwi}[-d\dot\phi_i\ \ -r\dot\theta_i]^{\mathrm T}$ "
-                   r"and `OffsetWheel.block` times the rates (SymPy)", res,
+        10, holds, r"(9) rotated into the body frame equals "
+                   r"$\mathbf R_{bwi}[-d\dot\phi_i\ \ -r\dot\theta_i]^{\mathrm T}$ and `OffsetWheel.block` times the "
+                   r"rates (SymPy)", res,
         convention=r"$H_i = P_i - d\,\mathbf j_i$; $[\dot{\mathbf p}_i]$ in wheel-frame components")])
 
 
@@ -175,7 +181,7 @@ def centred_wheel():
     """
     P = printed(12)
     p_B = offset_in_body().p_dot_B.subs(S.d, 0)
-    p_wmr = CentredWheel(PW.d_i, r=S.r).block(PW.beta_i) * sp.Matrix([PW.theta_dot_i])
+    p_wmr = CentredWheel(S.d_i, r=S.r).block(S.beta_i) * sp.Matrix([S.theta_dot_i])
     holds = symbolic_equal(p_B, P.expr.rhs) and symbolic_equal(p_wmr, P.expr.rhs)
     res = max(max_residual(p_B, P.expr.rhs), max_residual(p_wmr, P.expr.rhs))
     return Derivation(p_dot_B=p_B, findings=[equation(

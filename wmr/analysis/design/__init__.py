@@ -37,8 +37,15 @@ Modules: :mod:`~wmr.analysis.design.worst_case` (the measure, designs, the scree
 :mod:`~wmr.analysis.design.space` (the search, slices of the design space).
 """
 from .space import DesignSearch, Landscape, landscape, search
-from .worst_case import (COARSE_STEPS, FINE_STEPS, WheelDesign, WorstCase, equilateral_design, worst_kappa,
-                         worst_kappa_designs)
+from .worst_case import (
+                         COARSE_STEPS,
+                         FINE_STEPS,
+                         WheelDesign,
+                         WorstCase,
+                         equilateral_design,
+                         worst_kappa,
+                         worst_kappa_designs,
+)
 
 __all__ = ["WorstCase", "worst_kappa", "WheelDesign", "equilateral_design", "worst_kappa_designs", "DesignSearch",
            "search", "Landscape", "landscape", "COARSE_STEPS", "FINE_STEPS"]

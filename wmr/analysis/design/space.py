@@ -10,7 +10,7 @@ import numpy as np
 
 from ...model import validation as V
 from ..sweep import Grid
-from .worst_case import COARSE_STEPS, WheelDesign, _compass, equilateral_design, worst_kappa, worst_kappa_designs
+from .worst_case import COARSE_STEPS, WheelDesign, compass_search, equilateral_design, worst_kappa, worst_kappa_designs
 
 __all__ = ["DesignSearch", "search", "Landscape", "landscape"]
 
@@ -120,7 +120,7 @@ def search(ratio=None, n=600, starts=3, seed=0, rtol=1e-3):
 
     P = np.random.default_rng(seed).uniform(-2.0, 2.0, (n, dim))
     order = np.argsort(f(P), kind="stable")[:starts]
-    refined = [_compass(f, P[k], 0.25, -2.0, 2.0, 1e-4) for k in order]
+    refined = [compass_search(f, P[k], 0.25, -2.0, 2.0, 1e-4) for k in order]
     p_best = min(refined, key=lambda xf: xf[1])[0]
     best = _design(p_best, ratio)
     paper, reference = equilateral_design(1.0), equilateral_design(best.ratio)
@@ -195,7 +195,8 @@ def landscape(n=41, m=41, moved=(0.2, 1.2)):
     km = worst_kappa_designs([WheelDesign(shifted, q) for q in ratios], beta)
     x, y = np.linspace(-1.4, 2.0, m), np.linspace(-1.2, 2.2, m)
     X, Y = np.meshgrid(x, y)
-    designs = [WheelDesign(np.array([paper.mounts[0], (a, b), paper.mounts[2]]), 1.0) for a, b in zip(X.ravel(), Y.ravel())]
+    designs = [WheelDesign(np.array([paper.mounts[0], (a, b), paper.mounts[2]]), 1.0)
+               for a, b in zip(X.ravel(), Y.ravel())]
     K = worst_kappa_designs(designs, beta).reshape(m, m)
     return Landscape(ratios=ratios, kappa_paper=kp, kappa_moved=km, moved=moved, x=x, y=y, kappa_map=K,
                      mounts=paper.mounts)

@@ -8,6 +8,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ...errors import InputTypeError, InputValueError
 from ...model import validation as V
 from ...model.robot import Robot
 from ...model.wheels import OffsetWheel
@@ -45,9 +46,30 @@ class WorstCase:
     count: int
 
 
-def _compass(f, x0, step, lo, hi, tol, max_iter=400):
-    """Minimise ``f`` (batched: (k, n) -> (k,)) from ``x0`` by compass search: the 2n axis moves of the
-    current step are evaluated at once; the best improving move is taken, else the step is halved."""
+def compass_search(f, x0, step, lo, hi, tol, max_iter=400):
+    """Minimise ``f`` from ``x0`` by compass search: the 2n axis moves of the current step are evaluated at
+    once; the best improving move is taken, else the step is halved.
+
+    Parameters
+    ----------
+    f : callable
+        Batched: an array (k, n) of points to an array (k,) of values.
+    x0 : array_like (n,)
+        The start.
+    step : float or array_like (n,)
+        The first step along each axis.
+    lo, hi : float or array_like (n,)
+        Bounds the points are clipped to.
+    tol : float
+        Stop when every step is at most this.
+    max_iter : int, optional
+
+    Returns
+    -------
+    x : numpy.ndarray (n,)
+    fx : float
+        ``f`` at ``x``.
+    """
     x = np.array(x0, dtype=float)
     fx = float(f(x[None])[0])
     n = x.size
@@ -107,7 +129,7 @@ def worst_kappa(robot, angles=None, L=None, refine=True):
         def f(b):
             k = condition_number(robot.J(b, L=L))
             return -np.where(np.isfinite(k), k, 1.0 / np.finfo(float).eps)
-        beta, neg = _compass(f, beta, np.pi / 24, -np.inf, np.inf, 1e-7)
+        beta, neg = compass_search(f, beta, np.pi / 24, -np.inf, np.inf, 1e-7)
         kappa = max(kappa, -neg)
     return WorstCase(kappa=kappa, beta=np.mod(beta, np.pi), grid_kappa=float(res.worst), count=res.count)
 
@@ -134,7 +156,7 @@ class WheelDesign:
     def __post_init__(self):
         m = V.finite_array("mounts", self.mounts, last=2)
         if m.ndim != 2 or m.shape[0] < 1:
-            raise ValueError(f"mounts must have shape (w, 2) with w >= 1, got shape {m.shape}")
+            raise InputValueError(f"mounts must have shape (w, 2) with w >= 1, got shape {m.shape}")
         object.__setattr__(self, "mounts", m)
         object.__setattr__(self, "d", float(V.number("d (offset)", V.nonnegative("d (offset)", self.d))))
         object.__setattr__(self, "r", float(V.number("r (radius)", V.positive("r (radius)", self.r))))
@@ -193,7 +215,9 @@ class WheelDesign:
 
 
 def equilateral_design(ratio=1.0):
-    r"""Three offset wheels at the vertices of an equilateral triangle centred at C, :math:`|\mathbf d_i| = r = 1`, :math:`d/r` = ``ratio``.
+    r"""Three offset wheels at the vertices of an equilateral triangle centred at C.
+
+    :math:`|\mathbf d_i| = r = 1` and :math:`d/r` = ``ratio``.
 
     With ``ratio = 1`` this is the answer of the paper ((37), (38) and (46)), in its numbering
     (:func:`wmr.equilateral_mounts`).
@@ -233,10 +257,10 @@ def worst_kappa_designs(designs, beta):
     """
     designs = list(designs)
     if not designs or not all(isinstance(x, WheelDesign) for x in designs):
-        raise TypeError(f"designs must be a non-empty sequence of WheelDesign, got {V.show(designs)}")
+        raise InputTypeError(f"designs must be a non-empty sequence of WheelDesign, got {V.show(designs)}")
     beta = V.finite_array("beta", beta, last=designs[0].mounts.shape[0]).reshape(-1, designs[0].mounts.shape[0])
     if beta.shape[0] == 0:
-        raise ValueError(f"beta must hold at least one configuration, got shape {np.shape(beta)}")
+        raise InputValueError(f"beta must hold at least one configuration, got shape {np.shape(beta)}")
     out = np.empty(len(designs))
     step = max(1, (1 << 17) // beta.shape[0])                      # designs per chunk: bounded memory
     for a in range(0, len(designs), step):

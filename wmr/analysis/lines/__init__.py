@@ -19,10 +19,29 @@ The parts: :mod:`~wmr.analysis.lines.geometry` (lines in the plane, whoever drew
 that make them pass through a point).
 """
 from ...model.platform import line_angle
-from .geometry import (AT_INFINITY, COINCIDENT, FINITE, NONE, PARALLEL, STILL, Concurrency, Meet, circumcircle,
-                       line_intersection, lines_concurrency, pair_intersections)
-from .robot import (axle_lines, axles_concurrency, axles_through, concurrency_point, pair_line_angle, planes_through,
-                    wheel_plane_lines)
+from .geometry import (
+                       AT_INFINITY,
+                       COINCIDENT,
+                       FINITE,
+                       NONE,
+                       PARALLEL,
+                       STILL,
+                       Concurrency,
+                       Meet,
+                       circumcircle,
+                       line_intersection,
+                       lines_concurrency,
+                       pair_intersections,
+)
+from .robot import (
+                       axle_lines,
+                       axles_concurrency,
+                       axles_through,
+                       concurrency_point,
+                       pair_line_angle,
+                       planes_through,
+                       wheel_plane_lines,
+)
 
 __all__ = ["Meet", "FINITE", "AT_INFINITY", "STILL", "NONE", "COINCIDENT", "PARALLEL", "Concurrency",
            "line_intersection", "pair_intersections", "lines_concurrency", "circumcircle", "wheel_plane_lines",

@@ -9,6 +9,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ...errors import InputTypeError, InputValueError
 from ...model import validation as V
 from ...model.tolerance import near_zero
 
@@ -59,10 +60,10 @@ def line_intersection(p1, u1, p2, u2):
     p1, u1, p2, u2 = (V.finite_array(n, a, last=2) for n, a in (("p1", p1), ("u1", u1), ("p2", p2), ("u2", u2)))
     for name, v in (("p1", p1), ("p2", p2), ("u1", u1), ("u2", u2)):
         if v.ndim != 1:
-            raise ValueError(f"{name} must be one point or direction of shape (2,), got shape {v.shape}")
+            raise InputValueError(f"{name} must be one point or direction of shape (2,), got shape {v.shape}")
     for name, u in (("u1", u1), ("u2", u2)):
         if not np.any(u):
-            raise ValueError(f"{name} must be a non-zero direction, got {V.show(u)}")
+            raise InputValueError(f"{name} must be a non-zero direction, got {V.show(u)}")
     n1, n2 = u1 / np.hypot(*u1), u2 / np.hypot(*u2)
     cross = n1[0] * n2[1] - n1[1] * n2[0]                     # sine of the angle between the lines
     w = p2 - p1
@@ -74,7 +75,7 @@ def line_intersection(p1, u1, p2, u2):
         s = (w[0] * n2[1] - w[1] * n2[0]) / cross
         point = p1 + s * n1
     if not np.isfinite(point).all():
-        raise ValueError(f"p1, u1, p2, u2: the intersection is beyond double precision (p1 = {V.show(p1)}, "
+        raise InputValueError(f"p1, u1, p2, u2: the intersection is beyond double precision (p1 = {V.show(p1)}, "
                          f"p2 = {V.show(p2)})")
     return FINITE, point
 
@@ -94,9 +95,10 @@ def pair_intersections(points, directions):
     points = V.finite_array("points", points, last=2)
     directions = V.finite_array("directions", directions, last=2)
     if points.ndim != 2 or points.shape != directions.shape:
-        raise ValueError(f"points and directions must both have shape (w, 2), got {points.shape} and {directions.shape}")
+        raise InputValueError(f"points and directions must both have shape (w, 2), got {points.shape} and "
+                              f"{directions.shape}")
     if not np.all(np.any(directions != 0, axis=-1)):
-        raise ValueError(f"directions must be non-zero vectors, got {V.show(directions)}")
+        raise InputValueError(f"directions must be non-zero vectors, got {V.show(directions)}")
     out = {}
     n = len(points)
     for i in range(n):
@@ -150,11 +152,11 @@ def lines_concurrency(points, directions):
     p = V.finite_array("points", points, last=2)
     u = V.finite_array("directions", directions, last=2)
     if p.ndim != 2 or p.shape != u.shape or len(p) < 2:
-        raise ValueError(f"points and directions must both have shape (n, 2) with n >= 2, "
+        raise InputValueError(f"points and directions must both have shape (n, 2) with n >= 2, "
                          f"got {p.shape} and {u.shape}")
     big = np.abs(u).max(axis=-1, keepdims=True)
     if np.any(big == 0):
-        raise ValueError(f"directions must be non-zero vectors, got {u.tolist()}")
+        raise InputValueError(f"directions must be non-zero vectors, got {u.tolist()}")
     u = u / big                                         # (scaled first: no overflow for huge directions)
     u = u / np.linalg.norm(u, axis=-1, keepdims=True)
     scale = float(np.abs(p).max()) or 1.0              # the size of the figure, in its own unit
@@ -204,16 +206,16 @@ def circumcircle(points):
     """
     import sympy as sp
     if isinstance(points, (str, bytes)) or not hasattr(points, "__len__") or isinstance(points, sp.Basic):
-        raise TypeError(f"points must be three points (pairs), got {V.show(points)}")
+        raise InputTypeError(f"points must be three points (pairs), got {V.show(points)}")
     pts = [V.point(f"points[{k}]", q) for k, q in enumerate(points)]
     if len(pts) != 3:
-        raise ValueError(f"points must be three points, got {len(pts)}")
+        raise InputValueError(f"points must be three points, got {len(pts)}")
     if not any(isinstance(v, sp.Basic) for q in pts for v in q):
         size = float(np.abs(pts).max()) or 1.0         # scaled to the figure's size: no overflow, any unit
         (ux, uy), R2 = _circle([(x / size, y / size) for x, y in pts], near_zero, pts)
         centre, radius = np.array([ux, uy]) * size, float(np.sqrt(R2)) * size
         if not (np.isfinite(centre).all() and np.isfinite(radius)):
-            raise ValueError(f"points are too large: their circumcircle overflows, got {pts}")
+            raise InputValueError(f"points are too large: their circumcircle overflows, got {pts}")
         return centre, radius
     exact = [tuple(sp.sympify(v) for v in q) for q in points]                 # ints stay exact
     (ux, uy), R2 = _circle(exact, lambda dd: sp.simplify(dd) == 0, pts)
@@ -226,7 +228,7 @@ def _circle(pts, is_zero, shown):
     (ax, ay), (bx, by), (cx, cy) = pts
     dd = 2 * (ax * (by - cy) + bx * (cy - ay) + cx * (ay - by))
     if is_zero(dd):
-        raise ValueError(f"points are collinear: no circumcircle, got {shown}")
+        raise InputValueError(f"points are collinear: no circumcircle, got {shown}")
     a2, b2, c2 = ax**2 + ay**2, bx**2 + by**2, cx**2 + cy**2
     ux = (a2 * (by - cy) + b2 * (cy - ay) + c2 * (ay - by)) / dd
     uy = (a2 * (cx - bx) + b2 * (ax - cx) + c2 * (bx - ax)) / dd

@@ -1,4 +1,4 @@
-r"""A robot's lines: the axle and wheel-plane lines at steering angles, where they meet, and the angles that put them through a point.
+r"""A robot's lines: axle and wheel-plane lines, where they meet, and the angles that put them through a point.
 
 Part of :mod:`wmr.analysis.lines`.
 """
@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ...errors import InputTypeError, InputValueError
 from ...model import validation as V
 from ...model.platform import line_angle
 from ...model.tolerance import TOL
@@ -64,10 +65,12 @@ def axle_lines(robot, beta):
 def _one(robot, beta, what):
     robot = V.numeric_robot(robot)
     if robot.w < 2:
-        raise ValueError(f"robot must have at least two wheel units for {what} (lines to meet), got {V.show(robot)}")
+        raise InputValueError(f"robot must have at least two wheel units for {what} (lines to meet), "
+                              f"got {V.show(robot)}")
     beta = robot.effective_beta(beta)
     if beta.ndim != 1:
-        raise ValueError(f"beta must be one configuration of shape ({robot.w},) for {what}, got shape {beta.shape}")
+        raise InputValueError(f"beta must be one configuration of shape ({robot.w},) for {what}, "
+                              f"got shape {beta.shape}")
     return beta
 
 
@@ -155,7 +158,9 @@ def _at(v, robot, X):
 
 
 def pair_line_angle(robot, i, j):
-    r"""The steering angle (in :math:`(-\pi/2,\pi/2]`) that puts the plane of wheel i on the line :math:`P_iP_j` (1-based).
+    r"""The steering angle in :math:`(-\pi/2,\pi/2]` that puts the plane of wheel i on the line :math:`P_iP_j`.
+
+    Wheels are numbered from 1.
 
     Parameters
     ----------
@@ -170,9 +175,9 @@ def pair_line_angle(robot, i, j):
     robot = V.numeric_robot(robot)
     for name, k in (("i", i), ("j", j)):
         if isinstance(k, bool) or not isinstance(k, (int, np.integer)):
-            raise TypeError(f"{name} must be a wheel number (int), got {k!r}")
+            raise InputTypeError(f"{name} must be a wheel number (int), got {k!r}")
         if not 1 <= k <= robot.w:
-            raise ValueError(f"{name} must be a wheel number in 1..{robot.w}, got {k!r}")
+            raise InputValueError(f"{name} must be a wheel number in 1..{robot.w}, got {k!r}")
     if i == j:
-        raise ValueError(f"i and j must be two different wheels, got i = j = {i}")
+        raise InputValueError(f"i and j must be two different wheels, got i = j = {i}")
     return float(planes_through(robot, robot.mount_points[j - 1])[i - 1])

@@ -5,17 +5,33 @@ one value per configuration (shape ``(k,)``) with the batched kernels.
 """
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
 from ...model import validation as V
 
-__all__ = ["ANALYSES"]
+__all__ = ["ANALYSES", "J_length"]
 
 
-def _J_length(robot, L):
+def J_length(robot, L):
+    r"""The characteristic length of the analyses of :math:`\mathbf J_{L1}`.
+
+    ``L`` checked, or :func:`wmr.characteristic_length` when None.
+
+    Parameters
+    ----------
+    robot : Robot
+    L : float or None
+
+    Returns
+    -------
+    float
+    """
     from ..isotropy import characteristic_length
+    V.numeric_robot(robot)
     return characteristic_length(robot) if L is None else V.number("L", V.positive("L", L))
 
 
@@ -47,7 +63,7 @@ def _kappa_JL1(robot, beta, L):
 @dataclass(frozen=True)
 class _Analysis:
     title: str
-    evaluate: object          # (robot, beta (k, w), L) -> (k,)
+    evaluate: Callable[..., Any]      # (robot, beta (k, w), L) -> (k,)
     integer: bool
     worst: str                # "min", "max" or "min_abs"
     uses_L: bool = False

@@ -12,28 +12,48 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ...errors import InputTypeError, InputValueError
 from ...model import validation as V
 
-__all__ = ["Grid", "Sample"]
+__all__ = ["Grid", "Sample", "BLOCK", "count", "as_source"]
 
-_BLOCK = 1 << 16                     # random samples are drawn in blocks of this size (see Sample)
+#: random samples are drawn in blocks of this size (see Sample): a chunk is a whole number of blocks
+BLOCK = 1 << 16
 
 
 def _bounds(lo, hi):
     lo, hi = V.real("lo", lo), V.real("hi", hi)
     if not hi > lo:
-        raise ValueError(f"hi must be greater than lo, got lo = {lo!r}, hi = {hi!r}")
+        raise InputValueError(f"hi must be greater than lo, got lo = {lo!r}, hi = {hi!r}")
     return float(lo), float(hi)
 
 
-def _count(name, value, minimum=1):
+def count(name, value, minimum=1):
+    """``value`` as an ``int`` of at least ``minimum``: an integer, or a float with an integral value (``1e6``).
+
+    Parameters
+    ----------
+    name : str
+        The argument's name, for messages.
+    value : int or float
+    minimum : int, optional
+
+    Returns
+    -------
+    int
+
+    Examples
+    --------
+    >>> count("n", 1e6)
+    1000000
+    """
     if isinstance(value, bool) or not isinstance(value, numbers.Integral):
         if isinstance(value, float) and value.is_integer():
             value = int(value)
         else:
-            raise TypeError(f"{name} must be an integer, got {value!r}")
+            raise InputTypeError(f"{name} must be an integer, got {value!r}")
     if value < minimum:
-        raise ValueError(f"{name} must be at least {minimum}, got {value!r}")
+        raise InputValueError(f"{name} must be at least {minimum}, got {value!r}")
     return int(value)
 
 
@@ -67,11 +87,11 @@ class Grid:
     def __post_init__(self):
         steps = self.steps
         if isinstance(steps, (list, tuple, np.ndarray)):
-            steps = tuple(_count("steps", s) for s in steps)
+            steps = tuple(count("steps", s) for s in steps)
             if not steps:
-                raise ValueError("steps must not be empty")
+                raise InputValueError("steps must not be empty")
         else:
-            steps = _count("steps", steps)
+            steps = count("steps", steps)
         object.__setattr__(self, "steps", steps)
         lo, hi = _bounds(self.lo, self.hi)
         object.__setattr__(self, "lo", lo)
@@ -91,7 +111,7 @@ class Grid:
         """
         if isinstance(self.steps, tuple):
             if len(self.steps) != w:
-                raise ValueError(f"Grid.steps has {len(self.steps)} entries, the robot has w = {w} angles")
+                raise InputValueError(f"Grid.steps has {len(self.steps)} entries, the robot has w = {w} angles")
             return self.steps
         return (self.steps,) * w
 
@@ -163,8 +183,8 @@ class Sample:
     hi: float = math.pi
 
     def __post_init__(self):
-        object.__setattr__(self, "n", _count("n", self.n))
-        object.__setattr__(self, "seed", _count("seed", self.seed, minimum=0))
+        object.__setattr__(self, "n", count("n", self.n))
+        object.__setattr__(self, "seed", count("seed", self.seed, minimum=0))
         lo, hi = _bounds(self.lo, self.hi)
         object.__setattr__(self, "lo", lo)
         object.__setattr__(self, "hi", hi)
@@ -197,10 +217,10 @@ class Sample:
         -------
         numpy.ndarray (stop - start, w)
         """
-        first, last = start // _BLOCK, (stop - 1) // _BLOCK
-        blocks = [np.random.default_rng([self.seed, j]).uniform(self.lo, self.hi, (_BLOCK, w))
+        first, last = start // BLOCK, (stop - 1) // BLOCK
+        blocks = [np.random.default_rng([self.seed, j]).uniform(self.lo, self.hi, (BLOCK, w))
                   for j in range(first, last + 1)]
-        return np.concatenate(blocks)[start - first * _BLOCK: stop - first * _BLOCK]
+        return np.concatenate(blocks)[start - first * BLOCK: stop - first * BLOCK]
 
 
 @dataclass(frozen=True)
@@ -214,15 +234,28 @@ class _Explicit:
         return self.beta[start:stop]
 
 
-def _source(angles, w):
+def as_source(angles, w):
+    """The configurations of a sweep: a :class:`Grid` or :class:`Sample` as given, or explicit angles (N, w).
+
+    Parameters
+    ----------
+    angles : Grid, Sample or array_like (..., w)
+    w : int
+        Number of wheel units.
+
+    Returns
+    -------
+    Grid, Sample or an explicit source
+        With ``size(w)`` and ``configurations(w, start, stop)``.
+    """
     if isinstance(angles, (Grid, Sample)):
         if angles.size(w) < 1:
-            raise ValueError(f"angles has no configurations: {angles!r}")
+            raise InputValueError(f"angles has no configurations: {angles!r}")
         return angles
     if isinstance(angles, (str, bytes)) or angles is None:
-        raise TypeError(f"angles must be a Grid, a Sample or an array (N, {w}) of steering angles, got {angles!r}")
+        raise InputTypeError(f"angles must be a Grid, a Sample or an array (N, {w}) of steering angles, got {angles!r}")
     beta = V.finite_array("angles", angles, last=w)
     beta = beta.reshape(-1, w)
     if beta.shape[0] == 0:
-        raise ValueError(f"angles must hold at least one configuration, got shape {np.shape(angles)}")
+        raise InputValueError(f"angles must hold at least one configuration, got shape {np.shape(angles)}")
     return _Explicit(beta)

@@ -8,11 +8,12 @@ from __future__ import annotations
 
 import numpy as np
 
+from ...errors import InputTypeError, InputValueError
 from ...model import validation as V
-from .analyses import ANALYSES, _J_length
-from .configurations import _BLOCK, Grid, Sample, _count, _source
-from .reduction import _Partial
-from .result import _finish
+from .analyses import ANALYSES, J_length
+from .configurations import BLOCK, Sample, as_source, count
+from .reduction import Partial
+from .result import finish
 
 __all__ = ["sweep", "QUANTILES", "CHUNK"]
 
@@ -22,17 +23,20 @@ QUANTILES = (0.0, 0.01, 0.05, 0.5, 0.95, 0.99, 1.0)
 CHUNK = 1 << 18
 
 
-def _evaluate(robot, name, source, w, L, keep, start, stop, threads):
-    """Evaluate analysis ``name`` on configurations ``start .. stop-1``: a :class:`_Partial`.
+def _evaluate(task, start, stop, threads):
+    """Evaluate the analysis of ``task`` on configurations ``start .. stop-1``: a :class:`Partial`.
+
+    ``task`` is ``(robot, analysis name, source, w, L, keep)``.
 
     Runs in this process or on a Dask worker; ``threads`` limits the kernels' threads.
     """
     from .._batch import limit_threads
+    robot, name, source, w, L, keep = task
     an = ANALYSES[name]
     beta = source.configurations(w, start, stop)
     with limit_threads(threads):
         x = np.asarray(an.evaluate(robot, beta, L))
-    part = _Partial()
+    part = Partial()
     part.add(start, x.astype(np.int64) if an.integer else x.astype(float), an.integer, keep)
     return part
 
@@ -88,6 +92,7 @@ def sweep(robot, analysis, angles, *, L=None, quantiles=QUANTILES, keep=False, c
     Examples
     --------
     >>> import wmr
+    >>> from wmr.analysis.sweep import Grid
     >>> bot = wmr.paper_robot("centred")
     >>> res = wmr.sweep(bot, "mobility", Grid(12))
     >>> res.count, res.counts                    # mobility 1 where the axles meet (or are parallel)
@@ -97,45 +102,45 @@ def sweep(robot, analysis, angles, *, L=None, quantiles=QUANTILES, keep=False, c
     """
     from ...model.robot import Robot
     if not isinstance(robot, Robot):
-        raise TypeError(f"robot must be a wmr.Robot, got {robot!r}")
+        raise InputTypeError(f"robot must be a wmr.Robot, got {robot!r}")
     if robot.is_symbolic:
-        raise ValueError(f"robot must be numeric for a sweep, got a symbolic robot {robot!r}")
+        raise InputValueError(f"robot must be numeric for a sweep, got a symbolic robot {robot!r}")
     if not isinstance(analysis, str):
-        raise TypeError(f"analysis must be a string, one of {sorted(ANALYSES)}, got {analysis!r}")
+        raise InputTypeError(f"analysis must be a string, one of {sorted(ANALYSES)}, got {analysis!r}")
     if analysis not in ANALYSES:
-        raise ValueError(f"analysis must be one of {sorted(ANALYSES)}, got {analysis!r}")
+        raise InputValueError(f"analysis must be one of {sorted(ANALYSES)}, got {analysis!r}")
     an = ANALYSES[analysis]
     if an.square and robot.n_rates != 3:
-        raise ValueError(f"analysis 'det_J' needs a square J (n_rates = 3), got n_rates = {robot.n_rates} "
+        raise InputValueError(f"analysis 'det_J' needs a square J (n_rates = 3), got n_rates = {robot.n_rates} "
                          f"for {robot!r}; use 'kappa_J' for a non-square J")
-    L = _J_length(robot, L) if an.uses_L else None
+    L = J_length(robot, L) if an.uses_L else None
     w = robot.w
-    source = _source(angles, w)
+    source = as_source(angles, w)
     qs = tuple(float(V.real("quantiles", q)) for q in np.atleast_1d(np.asarray(quantiles, dtype=object)))
     if any(not 0.0 <= q <= 1.0 for q in qs):
-        raise ValueError(f"quantiles must lie in [0, 1], got {list(quantiles)}")
-    chunk = _count("chunk", chunk)
+        raise InputValueError(f"quantiles must lie in [0, 1], got {list(quantiles)}")
+    chunk = count("chunk", chunk)
     if isinstance(source, Sample):
-        chunk = -(-chunk // _BLOCK) * _BLOCK
+        chunk = -(-chunk // BLOCK) * BLOCK
     if progress is not None and not callable(progress):
-        raise TypeError(f"progress must be callable as progress(done, total), got {progress!r}")
+        raise InputTypeError(f"progress must be callable as progress(done, total), got {progress!r}")
     if client is not None and not callable(getattr(client, "map", None)):
-        raise TypeError(f"client must be a dask.distributed.Client, got {client!r}")
+        raise InputTypeError(f"client must be a dask.distributed.Client, got {client!r}")
     keep = bool(keep)
 
     total = source.size(w)
     bounds = [(a, min(a + chunk, total)) for a in range(0, total, chunk)]
     run = _run_local if client is None else _run_dask
     result = run(bounds, total, progress, client, robot, analysis, source, w, L, keep)
-    return _finish(result, analysis, an, source, w, qs, keep)
+    return finish(result, analysis, an, source, w, qs, keep)
 
 
 
 def _run_local(bounds, total, progress, client, *task):
-    """Evaluate the chunks ``bounds`` one after the other in this process; the merged :class:`_Partial`."""
-    result, done = _Partial(), 0
+    """Evaluate the chunks ``bounds`` one after the other in this process; the merged :class:`Partial`."""
+    result, done = Partial(), 0
     for a, b in bounds:
-        result.merge(_evaluate(*task, a, b, None))
+        result.merge(_evaluate(task, a, b, None))
         done += b - a
         if progress is not None:
             progress(done, total)
@@ -146,9 +151,9 @@ def _run_dask(bounds, total, progress, client, *task):
     """Evaluate the chunks on a Dask cluster (one kernel thread per task), merged as they finish."""
     from dask.distributed import as_completed
     n = len(bounds)
-    futures = client.map(_evaluate, *[[arg] * n for arg in task], [a for a, _ in bounds], [b for _, b in bounds],
+    futures = client.map(_evaluate, [task] * n, [a for a, _ in bounds], [b for _, b in bounds],
                          [1] * n, pure=False)
-    result, done = _Partial(), 0
+    result, done = Partial(), 0
     for fut in as_completed(futures):
         part = fut.result()
         result.merge(part)

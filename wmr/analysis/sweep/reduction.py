@@ -12,7 +12,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-__all__ = ["SKETCH_ACCURACY"]
+__all__ = ["SKETCH_ACCURACY", "Partial"]
 
 #: Relative accuracy of the quantiles of real-valued analyses (see :class:`~wmr.analysis.sweep.Sweep`).
 SKETCH_ACCURACY = 1e-4
@@ -78,8 +78,38 @@ def _bucket_value(k):
 
 
 @dataclass
-class _Partial:
-    """The reduction of a set of configurations (associative: see :meth:`merge`)."""
+class Partial:
+    """The reduction of a set of configurations (associative: see :meth:`merge`).
+
+    Attributes
+    ----------
+    count : int
+        Configurations reduced.
+    lo : float
+        Minimum (nan: nothing yet).
+    lo_at : int
+        Its configuration index (-1: nothing yet).
+    hi : float
+        Maximum.
+    hi_at : int
+        Its configuration index.
+    small : float
+        Minimum magnitude.
+    small_at : int
+        Its configuration index.
+    integers : counts
+        Integer analyses: value -> count.
+    positive : counts
+        Real analyses: sketch bucket of the positive values -> count.
+    negative : counts
+        The same for the negative values.
+    zeros : int
+        Zero values.
+    infinite : int
+        ``+inf`` values (a condition number at a singular configuration).
+    values : list
+        ``(start, array)`` pieces, when the values are kept.
+    """
 
     count: int = 0
     lo: float = math.nan           # minimum and its configuration index (nan: nothing yet)
@@ -96,6 +126,23 @@ class _Partial:
     values: list = field(default_factory=list)             # (start, array) when kept
 
     def add(self, start, x, integer, keep):
+        """Fold in the values of the configurations ``start .. start + len(x) - 1``.
+
+        Parameters
+        ----------
+        start : int
+            Index of the first configuration.
+        x : numpy.ndarray (k,)
+            The analysis's values there.
+        integer : bool
+            Integer values (counted exactly) or real ones (sketched).
+        keep : bool
+            Keep the values.
+
+        Returns
+        -------
+        None
+        """
         self.count += x.size
         i = int(np.argmin(x))
         self._lo(float(x[i]), start + i)
@@ -135,6 +182,17 @@ class _Partial:
         self.small, self.small_at = self._first(v, at, self.small, self.small_at, 1)
 
     def merge(self, other):
+        """Fold in another reduction (associative: the result does not depend on the order of the chunks).
+
+        Parameters
+        ----------
+        other : Partial
+
+        Returns
+        -------
+        Partial
+            This one, merged.
+        """
         self.count += other.count
         if other.count:
             self._lo(other.lo, other.lo_at)
@@ -149,7 +207,19 @@ class _Partial:
         return self
 
     def quantile(self, q, integer):
-        """The order statistic of rank floor(q (count - 1)) (exact for integers, else from the sketch)."""
+        """The order statistic of rank floor(q (count - 1)) (exact for integers, else from the sketch).
+
+        Parameters
+        ----------
+        q : float
+            In [0, 1].
+        integer : bool
+            Integer values (exact) or real ones (within :data:`SKETCH_ACCURACY`).
+
+        Returns
+        -------
+        float
+        """
         return min(max(self._quantile(q, integer), self.lo), self.hi)
 
     def _quantile(self, q, integer):

@@ -7,7 +7,7 @@ import numpy as np
 
 from .analyses import ANALYSES
 
-__all__ = ["Sweep"]
+__all__ = ["Sweep", "finish"]
 
 
 @dataclass(frozen=True)
@@ -85,7 +85,30 @@ class Sweep:
 
 
 
-def _finish(part, name, an, source, w, qs, keep):
+def finish(part, name, an, source, w, qs, keep):
+    """The :class:`Sweep` of a finished reduction.
+
+    Parameters
+    ----------
+    part : Partial
+        The reduction of every configuration.
+    name : str
+        The analysis.
+    an : Analysis
+        Its entry of :data:`~wmr.analysis.sweep.analyses.ANALYSES`.
+    source : Grid, Sample or explicit source
+        The configurations (:func:`~wmr.analysis.sweep.configurations.as_source`).
+    w : int
+        Number of wheel units.
+    qs : tuple of float
+        Quantiles to report.
+    keep : bool
+        Keep every value.
+
+    Returns
+    -------
+    Sweep
+    """
     def angles_at(k):
         return source.configurations(w, k, k + 1)[0]
 

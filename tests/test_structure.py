@@ -1,0 +1,176 @@
+"""The shape of the code, read from its syntax trees: no import cycles, no private names across modules,
+the package's own exceptions, no dispatch on a wheel's kind, modules of at most 400 lines.
+
+Every import counts, also one inside a function (a lazy import is still a dependency); ``from .x import y``
+is an import of the module ``x.y`` when that is a module, else of ``x``.  The checks run on the ``wmr``
+that is imported (the repository's, or an installed wheel's: this test ships in the sdist); the same
+reader checks ``edition/``, which may import ``wmr`` and never the other way round, in
+tests/edition/test_structure_edition.py.
+"""
+import ast
+from pathlib import Path
+
+import pytest
+
+import wmr
+
+#: the folder that holds the package ``wmr`` being tested (the repository, or site-packages)
+ROOT = Path(wmr.__file__).resolve().parent.parent
+MAX_LINES = 400
+
+
+# ------------------------------------------------------------------------------------------ the reader
+def modules(*packages, root=ROOT):
+    """``{dotted name: path}`` of every module of the packages (a package is its ``__init__``)."""
+    out = {}
+    for pkg in packages:
+        for path in sorted((root / pkg).rglob("*.py")):
+            parts = list(path.relative_to(root).with_suffix("").parts)
+            if parts[-1] == "__init__":
+                parts = parts[:-1]
+            out[".".join(parts)] = path
+    return out
+
+
+def imports(name, path, known):
+    """``[(module imported, name imported from it or None, line)]`` of one module, every import in it."""
+    is_package = path.name == "__init__.py"
+    out = []
+    for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+        if isinstance(node, ast.Import):
+            out += [(a.name, None, node.lineno) for a in node.names]
+        elif isinstance(node, ast.ImportFrom):
+            if node.level:
+                base = name.split(".") if is_package else name.split(".")[:-1]
+                base = base[:len(base) - (node.level - 1)]
+                target = ".".join(base + ([node.module] if node.module else []))
+            else:
+                target = node.module
+            for a in node.names:
+                sub = f"{target}.{a.name}"
+                out.append((sub, None, node.lineno) if sub in known else (target, a.name, node.lineno))
+    return out
+
+
+def nearest(module, known):
+    """The module itself, or the package it is in, among the known modules (None: outside them)."""
+    while module and module not in known:
+        module = module.rpartition(".")[0]
+    return module or None
+
+
+def graph(known):
+    """``{module: {modules it imports}}`` among the known modules."""
+    return {m: {t for t in (nearest(i, known) for i, _, _ in imports(m, p, known)) if t and t != m}
+            for m, p in known.items()}
+
+
+def cycles(edges):
+    """The strongly connected components of more than one module (Tarjan), each sorted."""
+    index, low, stack, on, out = {}, {}, [], set(), []
+
+    def visit(v):
+        index[v] = low[v] = len(index)
+        stack.append(v)
+        on.add(v)
+        for w in sorted(edges[v]):
+            if w not in index:
+                visit(w)
+                low[v] = min(low[v], low[w])
+            elif w in on:
+                low[v] = min(low[v], index[w])
+        if low[v] == index[v]:
+            comp = []
+            while True:
+                w = stack.pop()
+                on.discard(w)
+                comp.append(w)
+                if w == v:
+                    break
+            if len(comp) > 1:
+                out.append(sorted(comp))
+
+    for v in sorted(edges):
+        if v not in index:
+            visit(v)
+    return sorted(out)
+
+
+def private_imports(known):
+    """``{(importer, module, name)}``: a name starting with ``_`` imported from another module."""
+    return {(m, nearest(t, known), n) for m, p in known.items() for t, n, _ in imports(m, p, known)
+            if n and n.startswith("_") and not n.startswith("__") and nearest(t, known) not in (None, m)}
+
+
+WMR = modules("wmr")
+
+
+# ------------------------------------------------------------------------------------------ the checks
+def test_the_reader_sees_a_cycle_and_a_private_import(tmp_path):
+    """The checks can fail: a lazy import back, and ``from .b import _c``, are found."""
+    pkg = tmp_path / "pkg"
+    pkg.mkdir()
+    (pkg / "__init__.py").write_text("")
+    (pkg / "a.py").write_text("from .b import _c\n")
+    (pkg / "b.py").write_text("def f():\n    from . import a\n_c = 1\n")
+    known = modules("pkg", root=tmp_path)
+    assert cycles(graph(known)) == [["pkg.a", "pkg.b"]]
+    assert private_imports(known) == {("pkg.a", "pkg.b", "_c")}
+
+
+def test_the_reader_knows_the_package():
+    assert {"wmr.model.wheels.unit", "wmr.model.wheels.offset", "wmr.analysis.sweep.execute"} <= set(WMR)
+    edges = graph(WMR)
+    assert "wmr.model.wheels.unit" in edges["wmr.model.wheels.offset"]
+    assert "wmr.analysis.det_exact" in edges["wmr.analysis.singularities"]
+
+
+def test_no_import_cycles_in_wmr():
+    assert cycles(graph(WMR)) == []
+
+
+def test_no_private_names_imported_across_modules_of_wmr():
+    assert private_imports(WMR) == set()
+
+
+def test_imports_go_one_way():
+    """The library never imports the edition or the build."""
+    wrong = [(m, i, line) for m, p in WMR.items() for i, _, line in imports(m, p, WMR)
+             if i.split(".")[0] in ("edition", "tools")]
+    assert wrong == []
+
+
+@pytest.mark.parametrize("name", sorted(WMR))
+def test_module_size(name):
+    n = len(WMR[name].read_text(encoding="utf-8").splitlines())
+    assert n <= MAX_LINES, f"{name} has {n} lines (at most {MAX_LINES}: split it by responsibility)"
+
+
+def test_bad_input_raises_the_package_s_own_errors():
+    """No ``raise ValueError(...)`` or ``raise TypeError(...)`` in wmr: input errors come from :mod:`wmr.errors`."""
+    wrong = []
+    for name, path in WMR.items():
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            value = node.exc if isinstance(node, ast.Raise) else node.value if isinstance(node, ast.Return) else None
+            call = value.func if isinstance(value, ast.Call) else value
+            if isinstance(call, ast.Name) and call.id in ("ValueError", "TypeError"):
+                wrong.append(f"{name}:{node.lineno}")
+    assert wrong == []
+
+
+def test_no_dispatch_on_the_kind_of_a_wheel():
+    """Outside the wheel kinds' own package, nothing compares ``something.kind`` with a kind's name."""
+    from wmr.model.wheels import wheel_kinds
+    names = set(wheel_kinds())
+    wrong = []
+    for name, path in WMR.items():
+        if name.startswith("wmr.model.wheels"):
+            continue
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            left = getattr(node, "left", None)
+            if not (isinstance(node, ast.Compare) and isinstance(left, ast.Attribute) and left.attr == "kind"):
+                continue
+            consts = [c for c in ast.walk(node) if isinstance(c, ast.Constant) and c.value in names]
+            if consts:
+                wrong.append(f"{name}:{node.lineno}")
+    assert wrong == []

@@ -1,0 +1,72 @@
+"""The exceptions wmr raises on purpose: one base class, and bad input told apart from a bug.
+
+Every check of wmr's input raises an :class:`InputError`, which is also the built-in exception a
+caller expects (in the style of python-control's ``ControlArgument(TypeError)``):
+
+* :class:`InputTypeError` (a ``TypeError``): the wrong *kind* of thing (a string, a bool, a complex
+  number, ``None``, a SymPy symbol where numbers are needed, the class ``Robot`` instead of a robot);
+* :class:`InputValueError` (a ``ValueError``): the right kind with a bad *value* (a negative
+  radius, NaN, infinity, a wrong shape, a number too large for double precision);
+* :class:`RobotFileError` (an :class:`InputValueError`): a malformed robot file, one line
+  ``FILE:LINE: key: what is wrong``;
+* :class:`MissingDependencyError` (an ``ImportError``): an optional package that a bridge needs
+  (yourdfpy for URDF, PyYAML for ROS 2 parameters, robotpy-wpimath for WPILib) is not installed;
+  the message names the extra to install (``pip install 'wmr-kinematics[urdf]'``).
+
+So ``except ValueError`` still catches a bad value, and ``except wmr.errors.InputError`` catches
+bad input and nothing else: any other exception out of wmr is a bug in wmr.  The command line
+(:func:`wmr.cli.main`) relies on this: input errors become one line and exit status 2, anything
+else shows its traceback and asks for a report.
+
+Examples
+--------
+>>> import wmr
+>>> try:
+...     wmr.CentredWheel((0.0, 0.0), r=-1.0)
+... except InputError as exc:
+...     print(type(exc).__name__, isinstance(exc, ValueError), exc)
+InputValueError True r (wheel radius) must be positive, got -1.0
+"""
+from __future__ import annotations
+
+__all__ = ["WmrError", "InputError", "InputTypeError", "InputValueError", "RobotFileError", "MissingDependencyError"]
+
+
+class WmrError(Exception):
+    """Base class of every exception wmr raises on purpose."""
+
+
+class InputError(WmrError):
+    """Bad input to wmr (an argument, an option or a file); its message names what is wrong and shows the value."""
+
+
+class InputTypeError(InputError, TypeError):
+    """An argument of the wrong kind (a string, a bool, ``None``, a symbol where a number is needed, ...)."""
+
+
+class InputValueError(InputError, ValueError):
+    """An argument of the right kind with a bad value (negative radius, NaN, wrong shape, too large, ...)."""
+
+
+class RobotFileError(InputValueError):
+    """A malformed robot file; ``str(error)`` is one line: ``FILE:LINE: key: what is wrong``.
+
+    Parameters
+    ----------
+    file : str
+        The file's name as given.
+    line : int
+        The line (from 1) of the offending key or table.
+    key : str
+        The offending key, e.g. ``wheel[2].radius``.
+    reason : str
+        What is wrong.
+    """
+
+    def __init__(self, file: str, line: int, key: str, reason: object) -> None:
+        self.file, self.line, self.key, self.reason = file, line, key, " ".join(str(reason).split())
+        super().__init__(f"{file}:{line}: {key}: {self.reason}")
+
+
+class MissingDependencyError(WmrError, ImportError):
+    """An optional package that this call needs is not installed; the message names the extra that installs it."""

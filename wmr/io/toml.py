@@ -1,0 +1,343 @@
+r"""Robot files: a robot is a small TOML file; :func:`load` reads one, :func:`dump` writes one.
+
+The schema (lengths in metres, or any one unit: every decision of :mod:`wmr` is the same in every
+unit; angles in degrees)::
+
+    name = "paper, three centred wheels"     # optional (default: the file's name)
+
+    [[wheel]]                 # one table per wheel unit, wheel 1 first (the numbering of wmr.Robot)
+    type = "centred"          # the wheel kind: offset, centred, dual, fixed, swedish, ... (wheel_keys())
+    position = [-0.3, 0.0]    # the mount point d_i = CP_i, body frame, from the operation point C
+    radius = 0.05             # the wheel radius r, > 0
+    # ...                     # the kind's own keys, e.g. offset = 0.03 for an offset wheel
+    # driven = {steer = false, drive = false}   # optional: joints whose actuation differs from the kind's default
+
+Each kind takes exactly its keys, declared by the kind itself (its ``FILE_KEYS``,
+:mod:`wmr.model.wheels.filekeys`; :func:`wheel_keys` lists them); ``driven`` is optional for every
+kind.  A malformed file raises :class:`~wmr.errors.RobotFileError`, whose message is one line,
+``FILE:LINE: key: what is wrong``; wheels are named ``wheel[k]`` with ``k`` counted from 1, as the
+paper numbers them.
+
+Examples
+--------
+>>> import wmr
+>>> text = wmr.dump(wmr.paper_robot("offset", L=0.5, r=0.1))
+>>> print(text.splitlines()[3:8])
+['[[wheel]]', 'type = "offset"', 'position = [-0.5, 0.0]', 'radius = 0.1', 'offset = 0.1']
+>>> bot = loads(text)
+>>> bool(np.allclose(bot.F([0.1, 0.2, 0.3]), wmr.paper_robot("offset", L=0.5, r=0.1).F([0.1, 0.2, 0.3])))
+True
+"""
+from __future__ import annotations
+
+import difflib
+import os
+import re
+import tomllib
+from pathlib import Path
+from typing import NoReturn
+
+import numpy as np
+
+from ..errors import InputError, InputTypeError, InputValueError, RobotFileError
+from ..model import validation as V
+from ..model.robot import Robot
+from ..model.tolerance import near_zero
+from ..model.wheels import wheel_kinds
+from ..model.wheels.filekeys import toml_string, toml_text
+
+__all__ = ["RobotFileError", "wheel_keys", "load", "loads", "dump"]
+
+_TOP_KEYS = ("name", "wheel")
+#: the optional key of every wheel table: the joints whose actuation differs from the kind's default
+_DRIVEN = "driven"
+
+
+def wheel_keys():
+    """The keys of each wheel kind's table, as the kinds declare them (all required; ``driven`` is optional).
+
+    Returns
+    -------
+    dict of str to tuple of str
+        ``{kind: ("type", "position", "radius", its own keys...)}``, every registered kind.
+
+    Examples
+    --------
+    >>> wheel_keys()["dual"]
+    ('type', 'position', 'radius', 'half_separation')
+    """
+    return {kind: ("type",) + tuple(k.name for k in cls.file_keys()) for kind, cls in wheel_kinds().items()}
+
+
+# ------------------------------------------------------------------------------------- lines
+_WHEEL_HEADER = re.compile(r"""^\s*\[\[\s*(wheel|"wheel"|'wheel')\s*\]\]""")
+_HEADER = re.compile(r"^\s*\[")
+_KEY = re.compile(r"""^\s*("[^"]*"|'[^']*'|[A-Za-z0-9_-]+)\s*[=.]""")
+
+
+class _Lines:
+    """Where the keys are in the text: the line of each top-level key, wheel table and wheel key."""
+
+    def __init__(self, text):
+        self.top: dict[str, int] = {}
+        self.wheels: list[tuple[int, dict[str, int]]] = []          # [(header line, {key: line})]
+        where = self.top
+        for n, line in enumerate(text.splitlines(), 1):
+            if _WHEEL_HEADER.match(line):
+                self.wheels.append((n, {}))
+                where = self.wheels[-1][1]
+            elif _HEADER.match(line):
+                where = {}
+            else:
+                m = _KEY.match(line)
+                if m:
+                    where.setdefault(m.group(1).strip("\"'"), n)
+        self.end = max(1, len(text.splitlines()))
+
+    def of(self, k=None, key=None):
+        """Line of ``key`` in wheel ``k`` (0-based; None: top level), else of the wheel's table, else 1."""
+        if k is None:
+            return self.top.get(key, 1)
+        if k < len(self.wheels):
+            head, keys = self.wheels[k]
+            return keys.get(key, head)
+        return self.top.get("wheel", 1)             # an inline array of tables: the line of `wheel =`
+
+
+# ------------------------------------------------------------------------------------ values
+def _a(kind):
+    return ("an " if kind[0] in "aeiou" else "a ") + kind
+
+
+def _suggest(word, choices):
+    close = difflib.get_close_matches(word, choices, n=1)
+    return f" (did you mean {close[0]!r}?)" if close else ""
+
+
+# ------------------------------------------------------------------------------------ reading
+def _driven(value, cls, where, fail):
+    """The ``driven`` table of a wheel: {joint name: bool}, joints of the kind only."""
+    names = [j.name for j in cls.JOINTS]
+    if not isinstance(value, dict):
+        fail(*where, f"must be a table {{joint = true or false}} (joints of {_a(cls.kind)} wheel: "
+             f"{', '.join(names)}), got {toml_text(value)}")
+    for name, flag in value.items():
+        if name not in names:
+            fail(*where, f"{_a(cls.kind)} wheel has no joint {name!r} (its joints: {', '.join(names)})"
+                 + _suggest(name, names))
+        if not isinstance(flag, bool):
+            fail(*where, f"{name} must be true or false, got {toml_text(flag)}")
+    return value
+
+
+def _wheel(k, table, lines, fail):
+    """The wheel unit of the k-th ``[[wheel]]`` table (0-based ``k``)."""
+    name = f"wheel[{k + 1}]"
+    kinds = wheel_kinds()
+    if not isinstance(table, dict):
+        fail(lines.of(k), name, f"must be a table ([[wheel]]), got {toml_text(table)}")
+    if "type" not in table:
+        fail(lines.of(k), f"{name}.type", f"missing (one of {', '.join(kinds)})")
+    kind = table["type"]
+    if not isinstance(kind, str) or kind not in kinds:
+        fail(lines.of(k, "type"), f"{name}.type", f"must be one of {', '.join(kinds)}, got {toml_text(kind)}"
+             + (_suggest(kind, list(kinds)) if isinstance(kind, str) else ""))
+    cls = kinds[kind]
+    keys = {key.name: key for key in cls.file_keys()}
+    every = ["type", *dict.fromkeys(key.name for c in kinds.values() for key in c.file_keys()), _DRIVEN]
+    for key in table:
+        if key not in every:
+            fail(lines.of(k, key), f"{name}.{key}", "unknown key" + _suggest(key, every))
+        if key not in keys and key not in ("type", _DRIVEN):
+            fail(lines.of(k, key), f"{name}.{key}",
+                 f"not a key of {_a(kind)} wheel ({_a(kind)} wheel takes {', '.join(['type', *keys])})")
+    fields = {}
+    for key in keys.values():
+        if key.name not in table:
+            fail(lines.of(k), f"{name}.{key.name}", f"missing ({key.meaning})")
+        try:
+            fields[key.field] = key.read(table[key.name])
+        except InputError as exc:
+            fail(lines.of(k, key.name), f"{name}.{key.name}", str(exc))
+    if _DRIVEN in table:
+        fields["driven"] = _driven(table[_DRIVEN], cls, (lines.of(k, _DRIVEN), f"{name}.{_DRIVEN}"), fail)
+    try:
+        return cls(**fields)
+    except InputError as exc:
+        fail(lines.of(k), name, str(exc))
+
+
+def loads(text, source="<string>"):
+    """The robot described by the TOML text of a robot file.
+
+    Parameters
+    ----------
+    text : str
+        The file's contents (schema: module notes).
+    source : str, optional
+        The name used in error messages.
+
+    Returns
+    -------
+    Robot
+
+    Raises
+    ------
+    RobotFileError
+        If the text is not TOML or does not describe a robot (one line: ``FILE:LINE: key: what``).
+    TypeError
+        If ``text`` or ``source`` is not a string.
+
+    Examples
+    --------
+    >>> loads('[[wheel]]\\ntype = "centred"\\nposition = [0, 0]\\nradius = 0.1\\n')
+    Robot('robot': centred@(0.0, 0.0))
+    >>> loads('[[wheel]]\\ntype = "centred"\\nposition = [0, 0]\\n', "bot.toml")
+    Traceback (most recent call last):
+    ...
+    wmr.errors.RobotFileError: bot.toml:1: wheel[1].radius: missing (the wheel radius in metres, > 0)
+    """
+    if not isinstance(text, str):
+        raise InputTypeError(f"text must be the TOML text of a robot file (str), got {V.show(text)}")
+    if not isinstance(source, str):
+        raise InputTypeError(f"source must be a file name (str), got {V.show(source)}")
+    lines = _Lines(text)
+
+    def fail(line: int, key: str, reason: str) -> NoReturn:
+        raise RobotFileError(source, line, key, reason)
+
+    try:
+        data, msg = tomllib.loads(text), None
+    except tomllib.TOMLDecodeError as exc:
+        data, msg = None, str(exc)
+    if msg is not None:                                   # outside the except: no chained traceback
+        m = re.search(r"\(at line (\d+), column (\d+)\)", msg)
+        line = int(m.group(1)) if m else lines.end
+        head = re.sub(r"\s*\(at .*\)$", "", msg) + (" (a key given twice?)" if "overwrite" in msg else "")
+        where = f" at column {m.group(2)}" if m else " at the end of the file"
+        at = _KEY.match(text.splitlines()[line - 1]) if text.splitlines() else None
+        fail(line, at.group(1).strip("\"'") if at else "syntax", f"TOML syntax error: {head.lower()}{where}")
+    assert data is not None
+    for key in data:
+        if key not in _TOP_KEYS:
+            fail(lines.of(None, key), key, "unknown key" + _suggest(key, _TOP_KEYS)
+                 + " (a robot file holds name and [[wheel]] tables)")
+    name = data.get("name", "robot" if source.startswith("<") else Path(source).stem or "robot")
+    if not isinstance(name, str):
+        fail(lines.of(None, "name"), "name", f"must be a string, got {toml_text(name)}")
+    tables = data.get("wheel", [])
+    if not isinstance(tables, list):
+        fail(lines.of(None, "wheel"), "wheel", f"must be [[wheel]] tables, got {toml_text(tables)}")
+    if not tables:
+        fail(lines.of(None, "wheel"), "wheel", "no wheels: a robot needs at least one [[wheel]] table")
+    units = [_wheel(k, t, lines, fail) for k, t in enumerate(tables)]
+    points = np.array([u.position for u in units], dtype=float)
+    size = float(np.abs(points).max())
+    for k in range(1, len(units)):
+        same = np.flatnonzero(near_zero(np.abs(points[:k] - points[k]).max(axis=1), size))
+        if same.size:
+            fail(lines.of(k, "position"), f"wheel[{k + 1}].position", f"the same mount point as wheel[{same[0] + 1}] "
+                 f"({points[k, 0]:g}, {points[k, 1]:g}): two units cannot share a steering axis")
+    try:
+        return Robot(units, name=name)
+    except InputError as exc:
+        fail(lines.of(None, "wheel"), "wheel", str(exc))
+
+
+def load(path):
+    """The robot described by a robot file (TOML).
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The file (schema: module notes).
+
+    Returns
+    -------
+    Robot
+        Named by the file's ``name`` (default: the file's name without its suffix).
+
+    Raises
+    ------
+    RobotFileError
+        If the file is malformed; one line, ``FILE:LINE: key: what is wrong``.
+    OSError
+        If the file cannot be read.
+    TypeError
+        If ``path`` is not a path.
+    """
+    if not isinstance(path, (str, os.PathLike)):
+        raise InputTypeError(f"path must be a file name (str or os.PathLike), got {V.show(path)}")
+    raw = Path(path).read_bytes()
+    try:
+        text = raw.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        line = raw[:exc.start].count(b"\n") + 1
+        raise RobotFileError(os.fspath(path), line, "file", "not UTF-8 text (TOML files are UTF-8)") from None
+    return loads(text, os.fspath(path))
+
+
+# ------------------------------------------------------------------------------------ writing
+def _float(x):
+    """The shortest text that reads back as the same double (TOML floats need a '.' or an exponent)."""
+    text = repr(float(x))
+    return text if any(c in text for c in ".eE") else text + ".0"
+
+
+def _value(v):
+    """The TOML text of a number or a list of numbers."""
+    return "[" + ", ".join(_float(x) for x in v) + "]" if isinstance(v, list) else _float(v)
+
+
+def dump(robot, path=None):
+    """The TOML text of a robot file for ``robot`` (and write it to ``path`` if given).
+
+    ``load(path)`` of the result builds the same matrices (angles go through degrees, within a
+    rounding error).  Symbolic robots are written with their float values.
+
+    Parameters
+    ----------
+    robot : Robot
+        Any robot: every wheel kind declares its keys (:func:`wheel_keys`).
+    path : str or os.PathLike, optional
+        Where to write the text (UTF-8).
+
+    Returns
+    -------
+    str
+        The TOML text.
+
+    Examples
+    --------
+    >>> import wmr
+    >>> print(dump(wmr.Robot([wmr.CentredWheel((0.3, 0.0), r=0.05)], name="one wheel")))
+    # wmr robot file: lengths in metres, angles in degrees (schema: wmr.io)
+    name = "one wheel"
+    <BLANKLINE>
+    [[wheel]]
+    type = "centred"
+    position = [0.3, 0.0]
+    radius = 0.05
+    <BLANKLINE>
+    """
+    robot = V.robot(robot)
+    if path is not None and not isinstance(path, (str, os.PathLike)):
+        raise InputTypeError(f"path must be a file name (str or os.PathLike) or None, got {V.show(path)}")
+    robot = robot.numeric()
+    out = ["# wmr robot file: lengths in metres, angles in degrees (schema: wmr.io)",
+           f"name = {toml_string(robot.name)}"]
+    kinds = wheel_kinds()
+    for k, u in enumerate(robot.wheels, 1):
+        if kinds.get(u.kind) is not type(u):
+            raise InputValueError(f"robot has wheel {k} of kind {u.kind!r} ({type(u).__name__}), which is not a "
+                                  f"registered wheel kind: robot files cannot describe it (kinds: {', '.join(kinds)})")
+        out += ["", "[[wheel]]", f"type = {toml_string(u.kind)}"]
+        out += [f"{key.name} = {_value(key.write(u))}" for key in u.file_keys()]
+        changed = [(j.name, j.driven) for j, default in zip(u.joints, u.JOINTS, strict=True)
+                   if j.driven != default.driven]
+        if changed:
+            out.append(f"{_DRIVEN} = {{" + ", ".join(f"{n} = {'true' if d else 'false'}" for n, d in changed) + "}")
+    text = "\n".join(out) + "\n"
+    if path is not None:
+        Path(path).write_text(text, encoding="utf-8")
+    return text

@@ -1,0 +1,105 @@
+r"""A wheel unit seen from above: its points (batched) and its parts (data for drawing), in the body frame.
+
+What every kind shares (:class:`UnitGeometry`, a base of :class:`~wmr.model.wheels.unit.WheelUnit`):
+the axle and rolling directions :math:`\mathbf i_i = \mathbf R(\beta_i)[1\ 0]^T`,
+:math:`\mathbf j_i = \mathbf R(\beta_i)[0\ 1]^T` (11) at the steering axis :math:`P_i`; a kind with other
+points (an offset wheel's centre :math:`H_i`, a dual wheel's two wheels) or other parts (an arm,
+rollers) extends :meth:`UnitGeometry._points` and :meth:`UnitGeometry.parts`.
+"""
+from __future__ import annotations
+
+from typing import Any, ClassVar
+
+import numpy as np
+
+from .. import arrays as A
+from .. import checks as C
+from .parts import Disc, Pivot
+
+__all__ = ["UnitGeometry"]
+
+
+class UnitGeometry:
+    """The points and parts of a wheel unit (a base of every kind; see :class:`~wmr.model.wheels.unit.WheelUnit`)."""
+
+    # what a unit provides (the dataclass fields and class attributes of WheelUnit)
+    position: Any
+    r: Any
+    steered: ClassVar[bool] = False
+
+    @property
+    def constant_angle(self) -> Any:
+        """The constant angle of a unit without a steering joint; None for a steered unit."""
+        return None
+
+    def points(self, beta):
+        r"""Points of the unit in the body frame (for drawing and for checks).
+
+        Parameters
+        ----------
+        beta : float or array (...)
+            Steering angle(s) :math:`\beta_i` (a unit with a constant angle uses its own).
+
+        Returns
+        -------
+        dict of numpy.ndarray
+            ``"P"`` (steering axis, (..., 2)), ``"H"`` (centre of the wheel, or of the pair,
+            (..., 2)), ``"wheels"`` ((..., k, 2): wheel centres = ground contact points seen from
+            above), ``"i"`` and ``"j"`` (unit axle and rolling directions, (..., 2)).
+
+        Examples
+        --------
+        >>> from wmr import OffsetWheel
+        >>> OffsetWheel((1.0, 0.0), r=0.1, d=0.2).points(0.0)["H"].tolist()    # H = P - d j
+        [1.0, -0.2]
+        """
+        beta = A.finite_array("beta", beta)
+        c, s = np.cos(beta), np.sin(beta)
+        i_dir = np.stack([c, s], axis=-1)
+        j_dir = np.stack([-s, c], axis=-1)
+        P = np.broadcast_to(np.asarray(self.position, dtype=float), i_dir.shape)
+        return self._points(P, i_dir, j_dir)
+
+    def _points(self, P, i_dir, j_dir):
+        """The unit's points from :math:`P_i` and its axle and rolling directions (kinds with others override this)."""
+        return {"P": P, "H": P, "wheels": P[..., None, :], "i": i_dir, "j": j_dir}
+
+    def parts(self, beta):
+        r"""The unit's parts seen from above at one steering angle, body frame (:mod:`~wmr.model.wheels.parts`).
+
+        Parameters
+        ----------
+        beta : float
+            The unit's steering angle :math:`\beta_i` (a unit with a constant angle uses its own).
+
+        Returns
+        -------
+        tuple of Disc, Link, Rollers or Pivot
+            In drawing order: a disc per wheel, and a pivot at :math:`P_i` for a steered unit.
+
+        Examples
+        --------
+        >>> from wmr import CentredWheel
+        >>> [type(p).__name__ for p in CentredWheel((1.0, 0.0), r=0.1).parts(0.3)]
+        ['Disc', 'Pivot']
+        """
+        beta = C.number("beta", beta)
+        pts = self.points(beta)
+        return self._discs(pts, beta) + ((Pivot(pts["P"], float(self.r)),) if self.steered else ())
+
+    def _discs(self, pts, beta, arrow=True):
+        return tuple(Disc(c, float(self.drawn_angle(beta)), float(self.r), arrow) for c in pts["wheels"])
+
+    def drawn_angle(self, beta):
+        """The angle the unit is drawn at: ``beta``, or a unit's own constant angle.
+
+        Parameters
+        ----------
+        beta : float
+            The unit's configuration entry.
+
+        Returns
+        -------
+        float
+        """
+        return C.number("beta", beta) if self.constant_angle is None else C.number("angle", self.constant_angle)

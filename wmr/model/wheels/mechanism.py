@@ -1,0 +1,249 @@
+r"""A wheel unit as bodies and joints, as data: what a physics engine needs to know of it.
+
+wmr's model of a unit is a block of :math:`\mathbf J_2`; a physics engine needs the unit's
+**mechanism**: the intermediate body on its steering joint at :math:`P_i`, the arm to the wheel centre,
+the wheels on their drive joints.  Each kind describes its own as a tree of :class:`Body`
+(:meth:`UnitMechanism.root_body`; :meth:`UnitMechanism.mechanism` checks and assembles it), plain data
+with no engine in it; :mod:`wmr.sim` writes any such tree as a MuJoCo
+model (adding masses, friction and servos) without knowing which kind it came from.
+
+Frames (those of :mod:`wmr.model.conventions`): the root body's origin is given in the platform frame,
+on the mount plane (at height ``height`` above the ground), a child's in its parent's frame.  A
+steering joint turns its body about :math:`\mathbf k` (:data:`VERTICAL`) by :math:`\beta_i`, so that at
+joint angle :math:`\beta_i` the body's x axis is the axle :math:`\mathbf i_i` and its y axis the rolling
+direction :math:`\mathbf j_i`.  A wheel body spins about its own x axis (:data:`AXLE`) with wmr's sign,
+:math:`\dot\theta_i > 0` moving the wheel centre along :math:`-\mathbf j_i` (6), and touches the ground at
+one point directly below its origin (the paper's thin disk).
+
+The joints of the tree are the unit's own (:attr:`~wmr.model.wheels.unit.WheelUnit.joints`, with the
+unit's actuation): a physics engine puts a motor on the driven ones only, so a castor
+(``OffsetWheel(..., driven={"steer": False, "drive": False})``) is exported with none.
+
+=======  ===================================================================================================
+kind     mechanism (bodies on the unit's joints)
+=======  ===================================================================================================
+offset   steer body at :math:`P_i` on ``steer``; the arm to the wheel at :math:`H_i = P_i - d\,\mathbf j_i` on
+         ``drive``
+centred  steer body at :math:`P_i` on ``steer``; the wheel at :math:`P_i` on ``drive``
+dual     swivel body at :math:`P_i` on ``swivel``; wheels at :math:`P_i \pm b\,\mathbf i_i` on ``drive1``,
+         ``drive2``
+fixed    the wheel at :math:`P_i`, turned by its ``angle``, on ``drive``
+swedish  none: refused (``NotImplementedError``, the reason in :mod:`~wmr.model.wheels.swedish`)
+=======  ===================================================================================================
+
+Examples
+--------
+>>> from wmr import OffsetWheel
+>>> m = OffsetWheel((0.3, 0.0), r=0.05, d=0.02).mechanism(height=0.05)
+>>> [(b.name, b.joint.name, b.axis) for b in m.bodies]
+[('steer', 'steer', (0.0, 0.0, 1.0)), ('wheel', 'drive', (1.0, 0.0, 0.0))]
+>>> m.wheels[0].pos                        # H = P - d j, at the wheel's height (the mount plane's)
+(0.0, -0.02, 0.0)
+"""
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import Any
+
+from ...errors import InputValueError
+from ..checks import number, show
+from .joints import Joint
+
+__all__ = ["AXLE", "VERTICAL", "Body", "Mechanism", "UnitMechanism", "mount", "wheel"]
+
+#: the axis of a steering joint, in its body's frame: the vertical :math:`\mathbf k`
+VERTICAL = (0.0, 0.0, 1.0)
+#: the axis of a drive joint, in the wheel body's frame: its x axis, the axle :math:`\mathbf i_i`
+AXLE = (1.0, 0.0, 0.0)
+
+Point = tuple[float, float, float]
+
+
+@dataclass(frozen=True)
+class Body:
+    """A rigid body of a unit's mechanism.
+
+    Parameters
+    ----------
+    name : str
+        Its name in the unit (unique there), e.g. ``"steer"``, ``"wheel1"``.
+    pos : tuple of 3 floats
+        Its origin in the parent's frame (the root's: the platform frame, z = 0 on the mount plane).
+    angle : float, optional
+        A constant turn about z relative to the parent, radians (a fixed wheel's own angle).
+    joint : Joint or None, optional
+        The unit's joint between it and its parent (None: welded to the parent).
+    axis : tuple of 3 floats or None, optional
+        The joint's unit axis in this body's frame (:data:`VERTICAL`, :data:`AXLE`).
+    wheel : float or None, optional
+        The radius of the wheel this body is (it spins about its x axis and touches the ground below
+        its origin); None for an intermediate body.
+    size : float, optional
+        A length for the inertia of an intermediate body (that of a small cube of this side).
+    rods : tuple of pairs of points, optional
+        Bars to draw between points of this body (an offset wheel's arm); they have no mass and do
+        not touch anything.
+    children : tuple of Body, optional
+    """
+
+    name: str
+    pos: Point
+    angle: float = 0.0
+    joint: Joint | None = None
+    axis: Point | None = None
+    wheel: float | None = None
+    size: float = 0.0
+    rods: tuple[tuple[Point, Point], ...] = ()
+    children: tuple[Body, ...] = ()
+
+    def walk(self) -> list[Body]:
+        """This body and its descendants, depth first (the order in which a physics engine numbers their joints).
+
+        Returns
+        -------
+        list of Body
+        """
+        out = [self]
+        for c in self.children:
+            out.extend(c.walk())
+        return out
+
+
+@dataclass(frozen=True)
+class Mechanism:
+    """A wheel unit as a tree of bodies and joints.
+
+    Parameters
+    ----------
+    root : Body
+        The body mounted on the platform, at :math:`P_i` (or the wheel itself, for a unit without
+        an intermediate body).
+    """
+
+    root: Body
+
+    def __post_init__(self) -> None:
+        names = [b.name for b in self.bodies]
+        joints = [j.name for j in self.joints]
+        if len(set(names)) != len(names) or len(set(joints)) != len(joints):
+            raise InputValueError(f"a mechanism's bodies and joints must have distinct names, got bodies {names}, "
+                                  f"joints {joints}")
+        for b in self.bodies:
+            if b.joint is not None and (b.axis is None or len(b.axis) != 3):
+                raise InputValueError(f"body {b.name!r} turns on joint {b.joint.name!r} about no axis: {show(b.axis)}")
+            if b.wheel is not None and not b.wheel > 0:
+                raise InputValueError(f"body {b.name!r} is a wheel of radius {show(b.wheel)} (must be > 0)")
+
+    @property
+    def bodies(self) -> list[Body]:
+        """Every body, depth first: list of Body."""
+        return self.root.walk()
+
+    @property
+    def joints(self) -> list[Joint]:
+        """Every joint, depth first (a physics engine's order): list of Joint."""
+        return [b.joint for b in self.bodies if b.joint is not None]
+
+    @property
+    def wheels(self) -> list[Body]:
+        """The bodies that touch the ground: list of Body."""
+        return [b for b in self.bodies if b.wheel is not None]
+
+
+def mount(position: Any) -> Point:
+    r"""The mount point :math:`P_i` on the mount plane, as a root body's origin: ``(x, y, 0.0)``.
+
+    Parameters
+    ----------
+    position : pair
+        The unit's ``position`` (numbers).
+
+    Returns
+    -------
+    tuple of 3 floats
+    """
+    x, y = (float(v) for v in position)
+    return (x, y, 0.0)
+
+
+def wheel(name: str, pos: Point, r: float, joint: Joint, angle: float = 0.0) -> Body:
+    """A wheel body of radius ``r`` at ``pos`` on its drive joint ``joint`` (about its x axis, the axle).
+
+    Parameters
+    ----------
+    name : str
+    pos : tuple of 3 floats
+        The wheel centre in the parent's frame.
+    r : float
+        Wheel radius.
+    joint : Joint
+        The unit's drive joint of this wheel.
+    angle : float, optional
+        A constant turn about z (a wheel without a steering joint: its own angle).
+
+    Returns
+    -------
+    Body
+    """
+    return Body(name, pos, angle, joint, AXLE, wheel=float(r))
+
+
+class UnitMechanism:
+    """What a wheel unit tells a physics engine (a base of every kind, :class:`~wmr.model.wheels.unit.WheelUnit`).
+
+    A kind defines :meth:`root_body`; :meth:`mechanism` checks the height, takes the unit's numbers
+    and assembles the tree.
+    """
+
+    # what a unit provides (WheelUnit's field and method)
+    r: Any
+    numeric: Callable[[], Any]
+
+    def mechanism(self, height: float) -> Mechanism:
+        """The unit's bodies and joints (this module's docstring), at joint angles 0.
+
+        Parameters
+        ----------
+        height : float
+            Height of the mount plane (the root's origin) above the ground, at least the unit's
+            wheel radius.
+
+        Returns
+        -------
+        Mechanism
+
+        Raises
+        ------
+        NotImplementedError
+            For a unit that a physics engine of rigid bodies and point contacts cannot represent
+            faithfully (the message says why), or a kind that does not describe its mechanism.
+        wmr.errors.InputError
+            If ``height`` is not a number at least the wheel radius, or the unit has free symbols.
+        """
+        unit = self.numeric()
+        height = number("height", height)
+        if not height >= unit.r:
+            raise InputValueError(f"height (of the mount plane above the ground) must be at least the wheel radius "
+                                  f"r = {unit.r!r}, got {show(height)}")
+        return Mechanism(unit.root_body(height))
+
+    def root_body(self, height: float) -> Body:
+        """The body mounted on the platform, with the rest of the unit under it (see :meth:`mechanism`).
+
+        Parameters
+        ----------
+        height : float
+            Height of the mount plane above the ground (checked: at least the wheel radius).
+
+        Returns
+        -------
+        Body
+
+        Raises
+        ------
+        NotImplementedError
+            Unless the kind describes its mechanism (or says why it cannot).
+        """
+        raise NotImplementedError(f"{type(self).__name__} does not describe its mechanism (its bodies and joints: "
+                                  "WheelUnit.root_body), so no physics engine can take it")

@@ -1,0 +1,206 @@
+r"""The Swedish wheel (omni or mecanum): a fixed wheel whose rim carries free rollers at an angle to the axle.
+
+Its rates are the wheel spin :math:`\dot\theta_i` (driven) and the roller spin :math:`\dot\sigma_i`
+(passive); its local block :math:`\mathbf L_i = \begin{bmatrix}0 & r\sin\gamma\\ -r & -r\cos\gamma\end{bmatrix}`
+is invertible, so a Swedish wheel puts no constraint on the platform twist
+(:class:`SwedishWheel`).  Like the fixed wheel it has no steering joint
+(:mod:`~wmr.model.wheels.unsteered`).
+
+In a robot file::
+
+    [[wheel]]
+    type = "swedish"
+    position = [0.3, 0.2]     # d_i, metres
+    radius = 0.05             # r > 0
+    angle_deg = 90.0          # the constant angle beta_i
+    roller_deg = 45.0         # the rollers' angle to the axle (90: omni wheel, +-45: mecanum wheel)
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ...errors import InputValueError
+from .. import checks as C
+from ..backend import NUMERIC
+from ..tolerance import TOL
+from .filekeys import FileKey
+from .joints import Joint
+from .parts import Rollers
+from .unsteered import UnsteeredUnit, constant
+
+__all__ = ["NO_FAITHFUL_MECHANISM", "SwedishWheel"]
+
+#: why a Swedish wheel has no mechanism a physics engine could take (:meth:`SwedishWheel.root_body`)
+NO_FAITHFUL_MECHANISM = (
+    "a Swedish (omni/mecanum) wheel rolls on a ring of free rollers, and a physics engine of rigid bodies and point "
+    "contacts (MuJoCo) has no roller contact: a faithful model needs every roller as a body on its own hinge, shaped "
+    "(a convex barrel mesh) so that the rollers' envelope is the wheel's circle, with the contact passing from roller "
+    "to roller and no encoder for the roller rate sigma_dot. wmr does not build that, and a sphere with anisotropic "
+    "friction would not be a roller at all: the wheel is refused rather than simulated as something else under its "
+    "name")
+
+
+@dataclass(frozen=True)
+class SwedishWheel(UnsteeredUnit):
+    r"""Swedish wheel (omni or mecanum): a fixed wheel whose rim carries free rollers at ``roller`` to the axle.
+
+    **Model.**  The wheel frame is at the constant angle :math:`\beta_i` = ``angle`` (axle
+    :math:`\mathbf i_i`, rolling direction :math:`\mathbf j_i = \mathbf E\mathbf i_i`); the axis of the
+    roller in contact with the ground makes the angle :math:`\gamma` = ``roller`` with the axle,
+    counter-clockwise seen from above:
+
+    .. math:: \mathbf a_i = \cos\gamma\,\mathbf i_i + \sin\gamma\,\mathbf j_i .
+
+    The contact point of the roller does not slip, so the wheel spin :math:`\dot\theta_i` (about
+    :math:`\mathbf i_i`) moves the hub by :math:`-r\dot\theta_i\mathbf j_i`, as for any wheel (6), and
+    the roller spin about :math:`\mathbf a_i` moves it along the roller's own rolling direction
+    :math:`\mathbf E\mathbf a_i` by :math:`-r\dot\sigma_i\mathbf E\mathbf a_i`:
+
+    .. math:: \dot{\mathbf p}_i = -r\dot\theta_i\,\mathbf j_i - r\dot\sigma_i\,\mathbf E\mathbf a_i ,
+              \qquad
+              \mathbf L_i = \begin{bmatrix}0 & r\sin\gamma\\ -r & -r\cos\gamma\end{bmatrix},
+              \quad \mathbf B_i = \mathbf R(\beta_i)\mathbf L_i .
+
+    :math:`\dot\sigma_i` is the free roller rate expressed at the wheel radius (a roller of contact
+    radius :math:`\rho` spinning at :math:`\omega` gives :math:`\dot\sigma_i = \rho\omega/r`), so that both
+    columns of :math:`\mathbf B_i` are lengths like every column of :math:`\mathbf J_2` and its
+    condition number does not depend on the unit of length.
+
+    **The constraint.**  Projected on the roller axis (:math:`\mathbf a_i^T\mathbf E\mathbf a_i = 0`,
+    :math:`\mathbf a_i^T\mathbf j_i = \sin\gamma`), the no-slip equation leaves one relation, which
+    involves the wheel rate only (Campion, Bastin & d'Andrea-Novel 1996, with their angle
+    :math:`\pi/2 - \gamma` measured from the wheel plane):
+
+    .. math:: \mathbf a_i^T[\mathbf E\mathbf d_i\ \ \mathbf 1]\,\mathbf t = -r\sin\gamma\,\dot\theta_i .
+
+    :math:`\det\mathbf L_i = r^2\sin\gamma \ne 0`: every hub velocity is realised by some
+    :math:`(\dot\theta_i, \dot\sigma_i)`, so a Swedish wheel puts **no** constraint on the platform
+    twist (it adds nothing to Campion's :math:`\mathbf C_1^*`), and inverse kinematics is exact.
+    :math:`\gamma \to 0` makes the rollers parallel to the axle: the two columns become parallel and
+    the wheel a conventional one (use :class:`~wmr.FixedWheel`), so ``roller`` = 0 is rejected.
+
+    Parameters
+    ----------
+    position : pair
+        :math:`\mathbf d_i = \overrightarrow{CP_i}`, body frame.
+    r : float
+        Wheel radius, > 0.
+    angle : float
+        The constant wheel-frame angle :math:`\beta_i` (radians; 0: axle along body x; an exact
+        SymPy number is kept exact).
+    roller : float
+        :math:`\gamma`, the angle from the axle to the roller axes (radians), in
+        :math:`(-\pi/2, \pi/2]` and not 0: :math:`\pi/2` is an omni wheel, :math:`\pm\pi/4` the two
+        hands of a mecanum wheel (a mecanum robot mixes both).
+    driven : mapping or sequence of bool, optional
+        Actuation of the joints ``drive`` (default driven) and ``roller`` (default passive).
+
+    Examples
+    --------
+    >>> mec = SwedishWheel((0.3, 0.2), r=0.05, angle=0.0, roller=np.pi / 4)
+    >>> mec.rate_names(1)
+    ('theta_dot_1', 'sigma_dot_1')
+    >>> (mec.block(0.0) / 0.05).round(6).tolist()
+    [[0.0, 0.707107], [-1.0, -0.707107]]
+    >>> omni = SwedishWheel((0.0, 0.0), r=0.5, angle=0.0, roller=np.pi / 2)
+    >>> (omni.block(0.0).round(12) + 0.0).tolist()      # rolls along j (theta) and along i (free roller)
+    [[0.0, 0.5], [-0.5, 0.0]]
+    """
+
+    roller: float
+
+    kind = "swedish"
+    JOINTS = (Joint("drive", "drive", driven=True, rate=("theta", r"\theta", "")),
+              Joint("roller", "roller", driven=False, rate=("sigma", r"\sigma", "")))
+    FILE_KEYS = UnsteeredUnit.FILE_KEYS + (
+        FileKey("roller_deg", "roller", "the roller angle in degrees (90 omni, 45 mecanum)", degrees=True),)
+
+    def _validate(self):
+        super()._validate()
+        name = "roller (angle of the rollers to the axle)"
+        g = constant(name, self.roller)
+        if not -np.pi / 2 < float(g) <= np.pi / 2 or abs(float(g)) <= TOL:
+            raise InputValueError(f"{name} must be in (-pi/2, pi/2] and not 0 (0: rollers parallel to the axle, "
+                                  f"a conventional wheel: use FixedWheel), got {C.show(self.roller)}")
+        object.__setattr__(self, "roller", g)
+
+    def local_block(self, backend=NUMERIC):
+        r"""The local block :math:`\mathbf L_i = \begin{bmatrix}0 & r\sin\gamma\\ -r & -r\cos\gamma\end{bmatrix}`.
+
+        Its columns are those of :math:`\dot\theta_i` and :math:`\dot\sigma_i`.
+
+        Parameters
+        ----------
+        backend : NUMERIC or SYMBOLIC, optional
+
+        Returns
+        -------
+        numpy.ndarray (2, 2) or sympy.Matrix (2, 2)
+        """
+        # p_dot = -r theta_dot j - r sigma_dot E a, a = (cos g, sin g), E a = (-sin g, cos g)
+        r, g = self.r, self.roller
+        return backend.matrix([[0, r * backend.sin(g)], [-r, -r * backend.cos(g)]])
+
+    def roller_axis(self):
+        r"""The roller axis :math:`\mathbf a_i = \mathbf R(\beta_i)[\cos\gamma\ \ \sin\gamma]^T`, body frame (numbers).
+
+        Returns
+        -------
+        numpy.ndarray (2,)
+
+        Examples
+        --------
+        >>> SwedishWheel((0, 0), r=1, angle=np.pi / 2, roller=np.pi / 2).roller_axis().round(12).tolist()
+        [-1.0, 0.0]
+        """
+        t = C.number("angle", self.angle) + C.number("roller", self.roller)
+        return np.array([np.cos(t), np.sin(t)])
+
+    def parts(self, beta):
+        """The wheel without a rolling arrow (it rolls every way), and its rollers (see :meth:`WheelUnit.parts`).
+
+        Parameters
+        ----------
+        beta : float
+            The configuration entry (ignored: the wheel is drawn at its own angle).
+
+        Returns
+        -------
+        tuple of Disc, Rollers
+        """
+        angle = self.drawn_angle(beta)
+        pts = self.points(angle)
+        return self._discs(pts, angle, arrow=False) + (Rollers(pts["H"], angle, float(self.r), float(self.roller)),)
+
+    def root_body(self, height):
+        """None a physics engine could take faithfully: refused (:data:`NO_FAITHFUL_MECHANISM`).
+
+        Parameters
+        ----------
+        height : float
+
+        Returns
+        -------
+        Body
+            Never.
+
+        Raises
+        ------
+        NotImplementedError
+            Always, with :data:`NO_FAITHFUL_MECHANISM`.
+        """
+        raise NotImplementedError(f"Swedish wheel at {tuple(float(v) for v in self.position)}: {NO_FAITHFUL_MECHANISM}")
+
+    def isotropy_advice(self):
+        """Omni rollers (:math:`\\gamma = \\pi/2`) make the block :math:`r\\,\\mathbf R`, isotropic; None if they are.
+
+        Returns
+        -------
+        str or None
+        """
+        if abs(np.cos(float(self.roller))) <= TOL:
+            return None
+        return ("use omni wheels (rollers at 90 deg) on wheel {wheels}: a Swedish wheel's block "
+                "r[[0, sin g], [-1, -cos g]] has singular values r sqrt(1 +- cos g)")

@@ -1,0 +1,390 @@
+r"""The wheel unit in general: what every kind of :mod:`wmr.model.wheels` shares and answers.
+
+A unit mounted at :math:`P_i` (``position`` = :math:`\mathbf d_i`) contributes the block
+:math:`\mathbf B_i(\beta_i) = \mathbf R_{bwi}\mathbf L_i` of :math:`\mathbf J_2` (21), where
+:math:`\mathbf L_i` (2 x ``n_rates``) is its constant local block and :math:`\mathbf R_{bwi}` the
+rotation (11) by the angle :math:`\beta_i` of its wheel frame.  Steered units take :math:`\beta_i` from
+the robot's configuration; units without a steering joint (``steered = False``) have a constant
+angle of their own.
+
+A kind is a subclass of :class:`WheelUnit` (a frozen dataclass) that answers for itself:
+
+=======================  ===========================================================================
+what                     declared by the kind as
+=======================  ===========================================================================
+its name                 ``kind``, the ``type`` of its table in a robot file (registers the class)
+its block of J2          :meth:`~WheelUnit.local_block` :math:`\mathbf L_i`; its twist constraints are
+                         the left null space of that block (:func:`wmr.analysis.mobility.twist_constraints`)
+its joints               ``JOINTS`` (:mod:`~wmr.model.wheels.joints`): steer, swivel, drive, roller,
+                         each driven or passive by default; the rates are those of the joints
+                         in :math:`\mathbf J_2`; ``steered`` follows from them
+its steering             :meth:`~WheelUnit.beta_rate`; :meth:`~WheelUnit.steering_row` if its rates
+                         turn it in a way the block leaves free (a dual wheel); ``rolls_in_plane``
+its geometry, drawing    :meth:`~WheelUnit.points` (batched) and :meth:`~WheelUnit.parts`
+                         (:mod:`~wmr.model.wheels.geometry`; :mod:`~wmr.model.wheels.parts`, data that
+                         :mod:`wmr.plot` draws)
+its mechanism            :meth:`~WheelUnit.mechanism`: bodies and joints as data, which :mod:`wmr.sim`
+                         puts in a physics engine (:mod:`~wmr.model.wheels.mechanism`)
+its robot-file keys      ``FILE_KEYS`` (:mod:`~wmr.model.wheels.filekeys`), after ``position`` and ``radius``
+its design hints         :meth:`~WheelUnit.dead_zone`, :meth:`~WheelUnit.isotropy_advice`
+=======================  ===========================================================================
+
+Defining the subclass registers the kind (:mod:`~wmr.model.wheels.registry`); the robot, the analyses,
+the robot files and the drawings then take it without a change.
+"""
+from __future__ import annotations
+
+import dataclasses
+from dataclasses import dataclass
+from typing import Any, ClassVar
+
+import numpy as np
+import sympy as sp
+
+from ...errors import InputValueError
+from .. import arrays as A
+from .. import checks as C
+from ..backend import NUMERIC, choose, is_symbolic
+from ..platform import E, rotated
+from .filekeys import COMMON_KEYS, FileKey
+from .geometry import UnitGeometry
+from .joints import Joint, actuation
+from .mechanism import UnitMechanism
+from .registry import register
+
+__all__ = ["WheelUnit"]
+
+
+@dataclass(frozen=True)
+class WheelUnit(UnitGeometry, UnitMechanism):
+    r"""A wheel unit at :math:`P_i`: the base of every wheel kind.
+
+    Parameters
+    ----------
+    position : pair
+        :math:`\mathbf d_i = \overrightarrow{CP_i}`, body frame.
+    r : float
+        Wheel radius, > 0.
+    driven : mapping of str to bool, or sequence of bool, optional
+        Which joints a motor drives (keyword only): ``{joint name: bool}`` for the joints that
+        differ from the kind's defaults (``JOINTS``), or one bool per joint; stored as a tuple of
+        bools in the order of ``JOINTS`` (:attr:`joints`).
+    """
+
+    position: tuple
+    r: float
+    driven: Any = dataclasses.field(default=None, kw_only=True)
+
+    #: the kind's name, the ``type`` of its table in a robot file; a class that sets it is registered
+    kind: ClassVar[str] = ""
+    #: the joints, with their default actuation (:mod:`~wmr.model.wheels.joints`)
+    JOINTS: ClassVar[tuple[Joint, ...]] = ()
+    #: the keys of its table in a robot file after position and radius (:mod:`~wmr.model.wheels.filekeys`)
+    FILE_KEYS: ClassVar[tuple[FileKey, ...]] = ()
+    #: True when no slip holds the mount point to the wheel plane: :math:`P_i` moves only along
+    #: :math:`\mathbf j_i` (a steered unit of this sort is steered to its mount point's velocity)
+    rolls_in_plane: ClassVar[bool] = False
+    # set from JOINTS for every subclass:
+    #: the rate variables, in the order of the unit's columns of J2: (plain name, TeX letter, suffix)
+    RATES: ClassVar[tuple[tuple[str, str, str], ...]] = ()
+    n_rates: ClassVar[int] = 0
+    #: True when the unit has a steering joint (its angle is an entry of the robot's configuration)
+    steered: ClassVar[bool] = False
+
+    def __init_subclass__(cls, **kwargs: Any) -> None:
+        super().__init_subclass__(**kwargs)
+        names = [j.name for j in cls.JOINTS]
+        if len(set(names)) != len(names):
+            raise InputValueError(f"{cls.__name__}.JOINTS must have distinct names, got {names}")
+        cls.RATES = tuple(j.rate for j in cls.JOINTS if j.rate is not None)
+        cls.n_rates = len(cls.RATES)
+        cls.steered = any(j.steering for j in cls.JOINTS)
+        if "kind" in vars(cls) and cls.kind:
+            register(cls)
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "position", C.point("position", self.position))
+        object.__setattr__(self, "r", C.positive("r (wheel radius)", self.r))
+        object.__setattr__(self, "driven", actuation(self.JOINTS, self.driven, type(self).__name__))
+        self._validate()
+        if not self.is_symbolic:
+            with np.errstate(over="ignore", invalid="ignore"):
+                L, EL = (np.asarray(m, dtype=float) for m in self.block_terms(NUMERIC))
+                ok = np.isfinite(2 * np.abs(L) + 2 * np.abs(EL)).all() and np.isfinite(4 * np.abs(self.position)).all()
+            if not ok:
+                raise InputValueError(f"{type(self).__name__} has lengths too large for double-precision "
+                                      f"kinematics (R(beta) L_i would overflow): {C.show(self)}")
+
+    def _validate(self) -> None:
+        """Check and convert the kind's own fields (a kind with fields of its own extends this)."""
+
+    # --- joints and rates ----------------------------------------------------------------------
+    @property
+    def joints(self) -> tuple[Joint, ...]:
+        """The unit's joints, with its own actuation (``driven``), in the order of ``JOINTS``."""
+        return tuple(dataclasses.replace(j, driven=d) for j, d in zip(self.JOINTS, self.driven, strict=True))
+
+    def rate_names(self, i):
+        """Plain names of this unit's rate variables when it is wheel ``i``.
+
+        Parameters
+        ----------
+        i : int
+            The unit's number in the robot (1-based, the paper's numbering).
+
+        Returns
+        -------
+        tuple of str
+            ``n_rates`` names, in the order of the unit's columns of :math:`\\mathbf J_2`.
+
+        Examples
+        --------
+        >>> from wmr import OffsetWheel, DualWheel
+        >>> OffsetWheel((0, 0), r=1, d=0.5).rate_names(2)
+        ('phi_dot_2', 'theta_dot_2')
+        >>> DualWheel((0, 0), r=1, b=0.5).rate_names(3)
+        ('theta_dot_31', 'theta_dot_32')
+        """
+        i = C.integer("i", i, minimum=1)
+        return tuple(f"{name}_dot_{i}{suffix}" for name, _, suffix in self.RATES)
+
+    def rate_symbols(self, i):
+        """SymPy symbols of the rate variables of wheel ``i``, typeset as in the paper.
+
+        Parameters
+        ----------
+        i : int
+            The unit's number in the robot (1-based).
+
+        Returns
+        -------
+        tuple of sympy.Symbol
+            ``n_rates`` real symbols, in the order of :meth:`rate_names`.
+
+        Examples
+        --------
+        >>> from wmr import CentredWheel
+        >>> CentredWheel((0, 0), r=1).rate_symbols(1)
+        (\\dot{\\theta}_{1},)
+        """
+        i = C.integer("i", i, minimum=1)
+        return tuple(sp.Symbol(rf"\dot{{{tex}}}_{{{i}{suffix}}}", real=True) for _, tex, suffix in self.RATES)
+
+    # --- steering --------------------------------------------------------------------------------
+    def beta_rate(self, psi_dot, rates, steer=None):
+        """Steering rate :math:`\\dot\\beta_i` of the unit on the platform (used by the simulation).
+
+        Parameters
+        ----------
+        psi_dot : float or array (...)
+            Platform turning rate.
+        rates : array (..., n_rates)
+            The unit's joint rates.
+        steer : float or array (...), optional
+            Steering-rate input (for units steered independently of their rates).
+
+        Returns
+        -------
+        numpy.ndarray (...)
+        """
+        raise NotImplementedError(f"{type(self).__name__} does not say how it steers (beta_rate)")
+
+    def steering_row(self):
+        r"""How the unit's rates turn it where its block leaves them free, or None.
+
+        A row :math:`\mathbf c` with :math:`\mathbf c\,\dot{\boldsymbol\theta}_i = \dot\psi + \dot\beta_i`
+        whose rates move nothing the no-slip block sees (:math:`\mathbf L_i\mathbf c^T = \mathbf 0`): a
+        dual wheel's rate difference, the corrected (15).  Inverse kinematics adds it to the unit's
+        least-squares rates, for the steering rate wanted (:func:`wmr.inverse`'s ``beta_dot``).
+
+        Returns
+        -------
+        numpy.ndarray (n_rates,) or None
+            None for the other kinds (their steering is one of their rates, an independent input,
+            or absent).
+        """
+        return None
+
+    def _rates_in(self, psi_dot, rates, steer):
+        """``psi_dot`` (...), ``rates`` (..., n_rates) and ``steer`` (... or None), checked, and their batch shape."""
+        psi_dot = A.finite_array("psi_dot", psi_dot)
+        rates = A.finite_array("rates", rates, last=self.n_rates)
+        steer = None if steer is None else A.finite_array("steer", steer)
+        shape = A.batch_shape({"psi_dot": psi_dot, "rates": rates[..., 0], "steer": steer}, core=0)
+        return psi_dot, rates, steer, shape
+
+    @staticmethod
+    def _finite_rate(out, rates):
+        if not np.isfinite(out).all():
+            raise InputValueError(f"rates or psi_dot are too large: the steering rate overflows "
+                                  f"(largest |rates| = {np.abs(rates).max():.3g})")
+        return out
+
+    # --- parameters --------------------------------------------------------------------------------
+    def parameters(self):
+        """The unit's lengths and angles by field name (its dataclass fields but ``position`` and ``driven``).
+
+        Returns
+        -------
+        dict of str to float or sympy.Expr
+
+        Examples
+        --------
+        >>> from wmr import OffsetWheel
+        >>> OffsetWheel((0, 0), r=0.1, d=0.02).parameters()
+        {'r': 0.1, 'd': 0.02}
+        """
+        return {f.name: getattr(self, f.name) for f in dataclasses.fields(self) if f.name not in ("position", "driven")}
+
+    @property
+    def free_symbols(self):
+        """The SymPy symbols in the unit's position and parameters (an empty set for numbers and exact numbers)."""
+        return set().union(*(v.free_symbols for v in self._values() if isinstance(v, sp.Basic)))
+
+    def numeric(self):
+        """The same unit with float position and parameters (SymPy numbers such as :math:`\\sqrt3/2` evaluated).
+
+        Returns
+        -------
+        WheelUnit
+            Of the same kind (itself when it holds no SymPy values).
+
+        Raises
+        ------
+        wmr.errors.InputValueError
+            If a value has a free symbol.
+        """
+        if not self.is_symbolic:
+            return self
+        if self.free_symbols:
+            raise InputValueError(f"{type(self).__name__} has free symbols {sorted(map(str, self.free_symbols))}: it "
+                                  f"has no numeric counterpart ({C.show(self)})")
+
+        def num(v):
+            return float(v) if isinstance(v, sp.Basic) else v
+
+        return dataclasses.replace(self, position=tuple(map(num, self.position)),
+                                   **{k: num(v) for k, v in self.parameters().items()})
+
+    @property
+    def is_symbolic(self):
+        """True when the position or a length of the unit is a SymPy expression."""
+        return is_symbolic(*self._values())
+
+    def _values(self):
+        """The unit's parameters as a flat tuple (position coordinates, lengths, angles)."""
+        return (*self.position, *self.parameters().values())
+
+    def remounted(self, position, turn):
+        """The same unit described from a body frame turned by ``turn``, with its mount point at ``position``.
+
+        Parameters
+        ----------
+        position : pair
+            :math:`\\mathbf d_i` in the new body frame.
+        turn : float
+            The rotation of the new body frame relative to the old (radians).
+
+        Returns
+        -------
+        WheelUnit
+            Of the same kind (a unit with a constant angle has it shifted by ``-turn``).
+        """
+        return dataclasses.replace(self, position=position)
+
+    # --- the block of J2 -------------------------------------------------------------------------
+    def local_block(self, backend=NUMERIC):
+        r"""The unit's constant local block :math:`\mathbf L_i` (its block of :math:`\mathbf J_2` at :math:`\beta = 0`).
+
+        Parameters
+        ----------
+        backend : NUMERIC or SYMBOLIC, optional
+
+        Returns
+        -------
+        numpy.ndarray (2, n_rates) or sympy.Matrix (2, n_rates)
+        """
+        raise NotImplementedError(f"{type(self).__name__} does not give its block (local_block)")
+
+    def block(self, beta, backend=None):
+        r"""This unit's block :math:`\mathbf B_i(\beta_i) = \mathbf R_{bwi}\mathbf L_i` of :math:`\mathbf J_2`.
+
+        Evaluated as :math:`\cos\beta_i\,\mathbf L_i + \sin\beta_i\,\mathbf E\mathbf L_i` by
+        :func:`wmr.model.platform.rotated` (the same matrix, since :math:`\mathbf R(\beta) =
+        \cos\beta\,\mathbf 1 + \sin\beta\,\mathbf E` (11)); see :meth:`block_terms`.
+
+        Parameters
+        ----------
+        beta : float, array (...) or sympy.Expr
+            Steering angle :math:`\beta_i` of the intermediate body.
+        backend : NUMERIC or SYMBOLIC, optional
+            Default: SymPy if ``beta`` or the unit's parameters are symbolic, else NumPy.
+
+        Returns
+        -------
+        numpy.ndarray (..., 2, n_rates) or sympy.Matrix (2, n_rates)
+
+        Examples
+        --------
+        >>> from wmr import CentredWheel
+        >>> CentredWheel((0.0, 0.0), r=2.0).block(0.0).tolist()     # (51): R(0) [0, -r]^T
+        [[0.0], [-2.0]]
+        """
+        bk = choose(beta, *self._values(), backend=backend)
+        if bk is NUMERIC:
+            beta = A.finite_array("beta", beta)
+        L, EL = self.block_terms(bk)
+        return rotated(beta, L, EL, backend=bk)                     # (11): R(beta) L = cos L + sin E L
+
+    def block_terms(self, backend=NUMERIC):
+        r"""The constant pair :math:`(\mathbf L_i, \mathbf E\mathbf L_i)` with
+        :math:`\mathbf B_i(\beta) = \cos\beta\,\mathbf L_i + \sin\beta\,\mathbf E\mathbf L_i`.
+
+        :math:`\mathbf L_i` is the unit's local block (:meth:`local_block`): every batched kernel of
+        the package (J2, F, J, the mobility constraints, forward and inverse kinematics) is
+        assembled from this pair, so the model is still written once.
+
+        Parameters
+        ----------
+        backend : NUMERIC or SYMBOLIC, optional
+
+        Returns
+        -------
+        tuple of two numpy.ndarray (2, n_rates) or sympy.Matrix (2, n_rates)
+        """
+        L = self.local_block(backend)
+        return L, E(backend) @ L
+
+    # --- design hints ---------------------------------------------------------------------------------
+    def dead_zone(self):
+        """The radius of C's circle when every unit is steered with its drives locked, if this unit has one.
+
+        The paper's dead zone of a robot on offset wheels (:func:`wmr.analysis.overview.dead_zone_radius`).
+
+        Returns
+        -------
+        float or None
+            None: steering the unit does not move the platform (or the unit is not steered).
+        """
+        return None
+
+    def isotropy_advice(self):
+        """What would make this unit's block isotropic (equal singular values), as a sentence about ``{wheels}``.
+
+        Returns
+        -------
+        str or None
+            A format string with the field ``{wheels}`` (the wheel numbers), or None when the
+            block is isotropic already or no choice of this kind's parameters makes it so.
+        """
+        return None
+
+    @classmethod
+    def file_keys(cls):
+        """Every key of this kind's table in a robot file: :data:`~wmr.model.wheels.filekeys.COMMON_KEYS`, then its own.
+
+        Returns
+        -------
+        tuple of FileKey
+        """
+        return COMMON_KEYS + cls.FILE_KEYS

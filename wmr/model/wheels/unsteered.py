@@ -1,0 +1,196 @@
+r"""Wheel units without a steering joint: the wheel frame is at a constant angle of the unit's own.
+
+The paper models steered units only (offset, centred and dual wheels).  A unit without a steering
+joint (the fixed wheel, the Swedish wheel) is mounted at :math:`P_i` (``position`` =
+:math:`\mathbf d_i`) with a **constant** wheel-frame angle :math:`\beta_i` = ``angle``: the axle is
+:math:`\mathbf i_i = \mathbf R(\beta_i)[1\ 0]^T` and the rolling direction
+:math:`\mathbf j_i = \mathbf R(\beta_i)[0\ 1]^T = \mathbf E\mathbf i_i`, as for every unit
+(:mod:`wmr.model.conventions`).  It enters the no-slip equation in the same form,
+:math:`[\mathbf E\mathbf d_i\ \mathbf 1]\,\mathbf t = \mathbf B_i\dot{\boldsymbol\theta}_i` with
+:math:`\mathbf B_i = \mathbf R(\beta_i)\mathbf L_i` (the i-th block row of (21)), so every kernel of the
+package (:math:`\mathbf J_2`, :math:`\mathbf F`, :math:`\mathbf J`, mobility, kinematics) handles it
+unchanged.  A robot's configuration keeps one entry per unit; the entry of a unit without a
+steering joint is ignored and its own ``angle`` used (:meth:`wmr.Robot.effective_beta`).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+from typing import ClassVar
+
+import numpy as np
+import sympy as sp
+
+from .. import arrays as A
+from .. import checks as C
+from ..backend import NUMERIC, choose
+from ..platform import rotated
+from .filekeys import FileKey
+from .unit import WheelUnit
+
+__all__ = ["UnsteeredUnit", "constant"]
+
+
+def constant(name, value):
+    """A constant angle: a finite real number (float), or an exact SymPy number kept exact (no free symbols).
+
+    Parameters
+    ----------
+    name : str
+        The argument's name, for messages.
+    value : float or sympy.Expr
+
+    Returns
+    -------
+    float or sympy.Expr
+
+    Examples
+    --------
+    >>> constant("angle", sp.pi / 2), constant("angle", 1)
+    (pi/2, 1.0)
+    """
+    f = C.number(name, value)                       # an input error for symbols, NaN, inf, 10**400
+    value = C.real(name, value)
+    return value if isinstance(value, sp.Basic) else f
+
+
+@dataclass(frozen=True)
+class UnsteeredUnit(WheelUnit):
+    """A unit without a steering joint: its wheel frame is at the constant angle ``angle`` (radians).
+
+    Parameters
+    ----------
+    position : pair
+        :math:`\\mathbf d_i`, body frame.
+    r : float
+        Wheel radius, > 0.
+    angle : float
+        The constant wheel-frame angle :math:`\\beta_i` (radians; an exact SymPy number is kept exact).
+    driven : mapping or sequence of bool, optional
+        Actuation of the joints.
+    """
+
+    angle: float
+    #: the angle, written in degrees in a robot file
+    FILE_KEYS: ClassVar[tuple[FileKey, ...]] = (FileKey("angle_deg", "angle", "the steering angle in degrees",
+                                                        degrees=True),)
+
+    def _validate(self):
+        super()._validate()
+        object.__setattr__(self, "angle", constant("angle", self.angle))
+
+    @property
+    def constant_angle(self):
+        """The unit's own angle (``angle``), which replaces its configuration entry."""
+        return self.angle
+
+    def remounted(self, position, turn):
+        """The same unit seen from a body frame turned by ``turn``: at ``position``, ``angle`` shifted by ``-turn``.
+
+        Parameters
+        ----------
+        position : pair
+        turn : float
+
+        Returns
+        -------
+        UnsteeredUnit
+        """
+        return replace(self, position=position, angle=self.angle - turn)
+
+    def own_angle(self, beta):
+        r"""The unit's constant angle, in the shape of ``beta`` (whose values are ignored, only checked).
+
+        Parameters
+        ----------
+        beta : float or array (...)
+            A configuration entry for this unit (validated, then ignored).
+
+        Returns
+        -------
+        numpy.ndarray (...)
+            ``angle`` everywhere.
+
+        Examples
+        --------
+        >>> from wmr import FixedWheel
+        >>> FixedWheel((0, 0), r=1, angle=0.5).own_angle([0.0, 3.0]).tolist()
+        [0.5, 0.5]
+        """
+        beta = A.finite_array("beta", beta)
+        return np.full(beta.shape, C.number("angle", self.angle))
+
+    def block(self, beta, backend=None):
+        r"""This unit's block :math:`\mathbf B_i = \mathbf R(\text{angle})\mathbf L_i` of :math:`\mathbf J_2`.
+
+        Parameters
+        ----------
+        beta : float, array (...) or sympy.Expr
+            The configuration entry of this unit: checked, then ignored (the wheel is not steered;
+            its own ``angle`` is used).  Sets the batch shape of a NumPy result.
+        backend : NUMERIC or SYMBOLIC, optional
+            Default: SymPy if ``beta`` or the unit's parameters are symbolic, else NumPy.
+
+        Returns
+        -------
+        numpy.ndarray (..., 2, n_rates) or sympy.Matrix (2, n_rates)
+
+        Examples
+        --------
+        >>> from wmr import FixedWheel
+        >>> FixedWheel((0.0, 0.0), r=2.0, angle=0.0).block(1.0).tolist()     # beta = 1 ignored
+        [[0.0], [-2.0]]
+        """
+        bk = choose(beta, *self._values(), backend=backend)
+        if bk is NUMERIC:
+            angle = self.own_angle(beta)
+        else:
+            C.real("beta", beta)
+            angle = self.angle
+        L, EL = self.block_terms(bk)
+        return rotated(angle, L, EL, backend=bk)
+
+    def points(self, beta):
+        r"""Points of the unit in the body frame, at its own angle (``beta`` sets the batch shape only).
+
+        Parameters
+        ----------
+        beta : float or array (...)
+            The configuration entry of this unit (ignored but for its shape).
+
+        Returns
+        -------
+        dict of numpy.ndarray
+            As :meth:`wmr.OffsetWheel.points`: ``"P"``, ``"H"`` (both :math:`P_i`), ``"wheels"``,
+            ``"i"``, ``"j"``.
+
+        Examples
+        --------
+        >>> from wmr import FixedWheel
+        >>> FixedWheel((1.0, 0.0), r=0.1, angle=np.pi / 2).points(0.0)["i"].round(12).tolist()
+        [0.0, 1.0]
+        """
+        return super().points(self.own_angle(beta))
+
+    def beta_rate(self, psi_dot, rates, steer=None):
+        """The wheel frame does not turn on the platform: :math:`\\dot\\beta_i = 0`.
+
+        Parameters
+        ----------
+        psi_dot : float or array (...)
+            Platform turning rate (sets the shape).
+        rates : array (..., n_rates)
+            The unit's joint rates.
+        steer : float or array (...), optional
+            Ignored (there is no steering joint); checked.
+
+        Returns
+        -------
+        numpy.ndarray (...)
+
+        Examples
+        --------
+        >>> from wmr import FixedWheel
+        >>> FixedWheel((0, 0), r=1, angle=0.0).beta_rate(0.3, [2.0]).tolist()
+        0.0
+        """
+        return np.zeros(self._rates_in(psi_dot, rates, steer)[3])

@@ -1,0 +1,199 @@
+r"""A wheel unit's mechanism in MuJoCo's terms: servos, masses, inertias and geoms of its bodies.
+
+Each wheel kind describes its own bodies and joints as plain data
+(:meth:`wmr.model.wheels.WheelUnit.mechanism`, :mod:`wmr.model.wheels.mechanism`); this module turns
+any such tree into MJCF bodies, knowing no wheel kind:
+
+* a joint gets a servo if the unit's joint is driven (``unit.joints``): a steering joint
+  (``steer`` or ``swivel``) a position servo (:data:`POSITION`), a drive joint a velocity servo
+  (:data:`VELOCITY`); a passive joint (a castor's, a dual wheel's swivel) none;
+* a wheel body has the mass ``params.wheel_mass`` of a thin disk of its radius, an intermediate body
+  ``params.body_mass`` of a small cube of its ``size`` (:class:`~wmr.sim.params.Params`);
+* a wheel touches the ground through one sphere of its radius centred on the wheel centre: a single
+  contact point directly below the centre, the paper's thin disk (:mod:`wmr.sim.params` for its
+  friction); a drawn disk (no contact) shows the wheel and drawn rods the intermediate bodies.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from ..model.wheels.joints import Joint
+from ..model.wheels.mechanism import Body, Mechanism
+from .params import Params
+
+__all__ = ["POSITION", "VELOCITY", "body_xml", "height_of", "mechanisms", "num", "nums", "servo"]
+
+#: the servo of a driven steering joint: MuJoCo's ``position`` actuator
+POSITION = "position"
+#: the servo of a driven drive joint: MuJoCo's ``velocity`` actuator
+VELOCITY = "velocity"
+
+
+def servo(joint: Joint) -> str | None:
+    """The servo a joint of a unit gets: :data:`POSITION`, :data:`VELOCITY`, or None for a passive joint.
+
+    Parameters
+    ----------
+    joint : Joint
+        A joint of a unit, with the unit's actuation (``unit.joints``).
+
+    Returns
+    -------
+    str or None
+
+    Raises
+    ------
+    NotImplementedError
+        For a driven joint of another kind (a driven roller).
+
+    Examples
+    --------
+    >>> from wmr import OffsetWheel
+    >>> castor = OffsetWheel((0, 0), r=0.1, d=0.05, driven={"steer": False, "drive": False})
+    >>> [servo(j) for j in OffsetWheel((0, 0), r=0.1, d=0.05).joints], [servo(j) for j in castor.joints]
+    (['position', 'velocity'], [None, None])
+    """
+    if not joint.driven:
+        return None
+    if joint.steering:
+        return POSITION
+    if joint.kind == "drive":
+        return VELOCITY
+    raise NotImplementedError(f"wmr.sim has no servo for a driven {joint.kind} joint ({joint.name!r})")
+
+
+def height_of(robot) -> float:
+    """Height of the mount plane: the largest wheel radius (every wheel centre at or below it).
+
+    Parameters
+    ----------
+    robot : Robot
+
+    Returns
+    -------
+    float
+    """
+    return float(np.max([float(u.r) for u in robot.wheels]))
+
+
+def mechanisms(robot, height: float) -> tuple[Mechanism, ...]:
+    """Every unit's mechanism, each checked for a servo on its driven joints.
+
+    Parameters
+    ----------
+    robot : Robot
+        Numbers, not symbols.
+    height : float
+        Height of the mount plane (:func:`height_of`).
+
+    Returns
+    -------
+    tuple of Mechanism
+        One per unit, in the robot's order.
+
+    Raises
+    ------
+    NotImplementedError
+        If a unit has no mechanism a physics engine can take (its kind says why: a Swedish wheel's
+        rollers), naming the wheel.
+    """
+    out = []
+    for i, u in enumerate(robot.wheels):
+        try:
+            m = u.mechanism(height)
+            for j in m.joints:
+                servo(j)
+        except NotImplementedError as e:
+            raise NotImplementedError(f"wheel {i + 1} ({type(u).__name__}): {e}") from None
+        out.append(m)
+    return tuple(out)
+
+
+def num(x) -> str:
+    """A float as MJCF text, 12 significant digits (no negative zero).
+
+    Parameters
+    ----------
+    x : float
+
+    Returns
+    -------
+    str
+    """
+    return format(float(x) + 0.0, ".12g")
+
+
+def nums(*xs) -> str:
+    """Floats as MJCF text, separated by spaces (:func:`num`).
+
+    Parameters
+    ----------
+    *xs : float
+
+    Returns
+    -------
+    str
+    """
+    return " ".join(num(x) for x in xs)
+
+
+def _disk(mass, r):
+    """Principal moments of a thin disk of radius ``r`` turning about x: (m r^2/2, m r^2/4, m r^2/4)."""
+    return (mass * r * r / 2, mass * r * r / 4, mass * r * r / 4)
+
+
+def _block(mass, size):
+    """Principal moments of a small cube of side ``size``: m size^2 / 6 about each axis."""
+    m = mass * size * size / 6
+    return (m, m, m)
+
+
+def _geoms(body, name, r_unit, params, pad):
+    """The geoms of a body: a wheel's contact sphere and drawn disk, then its rods (those of length zero left out)."""
+    out = []
+    if body.wheel is not None:
+        r = body.wheel
+        mu_t, mu_r = params.torsional * r, params.rolling * r
+        out.append(f'{pad}<geom name="{name}" type="sphere" size="{num(r)}" condim="6" '
+                   f'friction="{nums(params.sliding, mu_t, mu_r)}" solref="{nums(params.contact_time, 1.0)}" '
+                   f'contype="1" conaffinity="0" group="3"/>')
+        out.append(f'{pad}<geom type="cylinder" size="{num(r)}" fromto="{nums(-r / 4, 0.0, 0.0, r / 4, 0.0, 0.0)}" '
+                   f'contype="0" conaffinity="0" group="1"/>')
+    for a, b in body.rods:
+        if np.hypot.reduce(np.subtract(a, b)) > 1e-6 * r_unit:
+            out.append(f'{pad}<geom type="capsule" size="{num(r_unit / 8)}" fromto="{nums(*a, *b)}" '
+                       f'contype="0" conaffinity="0" group="1"/>')
+    return out
+
+
+def body_xml(body: Body, name, r_unit: float, params: Params, depth: int) -> list[str]:
+    """The MJCF lines of a body and its descendants.
+
+    Parameters
+    ----------
+    body : Body
+    name : callable
+        ``name(part)``: the MuJoCo name of a body or joint of this unit (``u<i>_<part>``).
+    r_unit : float
+        The unit's wheel radius (the scale of the drawn rods).
+    params : Params
+    depth : int
+        Indentation level.
+
+    Returns
+    -------
+    list of str
+    """
+    pad = "  " * depth
+    quat = f' quat="{nums(np.cos(body.angle / 2), 0.0, 0.0, np.sin(body.angle / 2))}"' if body.angle else ""
+    lines = [f'{pad}<body name="{name(body.name)}" pos="{nums(*body.pos)}"{quat}>']
+    if body.joint is not None:
+        lines.append(f'{pad}  <joint name="{name(body.joint.name)}" type="hinge" axis="{nums(*body.axis or ())}"/>')
+    mass = params.body_mass if body.wheel is None else params.wheel_mass
+    inertia = _block(mass, body.size) if body.wheel is None else _disk(mass, body.wheel)
+    lines.append(f'{pad}  <inertial pos="0 0 0" mass="{num(mass)}" diaginertia="{nums(*inertia)}"/>')
+    lines += _geoms(body, name(body.name), r_unit, params, pad + "  ")
+    for c in body.children:
+        lines += body_xml(c, name, r_unit, params, depth + 1)
+    lines.append(f"{pad}</body>")
+    return lines

@@ -1,0 +1,85 @@
+r"""Joint commands from wmr's inverse kinematics: what the servos must do for a commanded twist.
+
+For a constant body twist :math:`\mathbf t`, :func:`twist_schedule` integrates the paper's model
+(:func:`wmr.simulate`) with the joint rates of :func:`wmr.inverse` at every instant: centred and
+dual wheels keep the steering angles of :func:`wmr.steering_angles`; an offset wheel steers at the
+rate its inverse kinematics gives, :math:`\dot\beta_i = \dot\phi_i - \dot\psi` (7).  The steering
+angles along that run are the targets of the steering servos, the rates those of the drive servos.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from ..analysis.kinematics import inverse
+from ..analysis.simulation import simulate
+from ..analysis.steering import steering_angles
+from ..model import validation as V
+from ..model.platform import point_velocity
+from .recording import Schedule
+
+__all__ = ["start_angles", "twist_schedule"]
+
+
+def start_angles(robot, twist):
+    r"""Steering angles to start a constant twist from.
+
+    Units that roll in their plane (centred and dual wheels): :func:`wmr.steering_angles` (wheel planes
+    along the velocities of their mount points).  Steered units whose steering the twist leaves free
+    (steered, not rolling in their plane: offset wheels): trailing, :math:`\mathbf j_i` along
+    :math:`\dot{\mathbf p}_i` (an offset wheel's arm behind :math:`P_i`, as a castor settles); a still
+    mount point keeps 0.  Units without a steering joint: their own angle.
+
+    Parameters
+    ----------
+    robot : Robot
+    twist : array (3,)
+        :math:`[\dot\psi, \dot x, \dot y]`, body frame.
+
+    Returns
+    -------
+    numpy.ndarray (w,)
+    """
+    robot = V.numeric_robot(robot)
+    twist = V.finite_array("twist", twist, last=3).reshape(3)
+    beta = np.array(steering_angles(robot, twist), dtype=float)
+    pdot = point_velocity(twist, robot.mount_points)                    # (2): c_dot + psi_dot E d_i
+    for i, u in enumerate(robot.wheels):
+        if u.steered and not u.rolls_in_plane and np.hypot(*pdot[i]) > 0:
+            beta[i] = np.arctan2(-pdot[i, 0], pdot[i, 1])               # j_i = (-sin, cos) along p_dot_i
+    return beta
+
+
+def twist_schedule(robot, twist, seconds, beta0=None, dt=0.05):
+    r"""The joint commands of a constant body twist, from wmr's inverse kinematics.
+
+    Parameters
+    ----------
+    robot : Robot
+    twist : array (3,)
+        :math:`[\dot\psi, \dot x, \dot y]`, body frame.
+    seconds : float
+        Duration, > 0.
+    beta0 : array (w,), optional
+        Initial steering angles (default :func:`start_angles`).
+    dt : float
+        Knot spacing, s.
+
+    Returns
+    -------
+    Schedule
+        Steering angles and joint rates along the model's run.
+
+    Examples
+    --------
+    >>> import wmr
+    >>> bot = wmr.paper_robot("centred", L=0.3, r=0.05)
+    >>> s = twist_schedule(bot, [0.0, 0.5, 0.0], 1.0)
+    >>> s.rates[0].round(9).tolist()                        # v = r theta_dot: 0.5 / 0.05
+    [10.0, 10.0, 10.0]
+    """
+    robot = V.numeric_robot(robot)
+    twist = V.finite_array("twist", twist, last=3).reshape(3)
+    b0 = start_angles(robot, twist) if beta0 is None else V.finite_array("beta0", beta0, last=robot.w).reshape(robot.w)
+    traj = simulate(robot, lambda t, state: inverse(robot, state[1], twist).value, b0, seconds, dt)
+    rates = inverse(robot, traj.beta, twist).value
+    return Schedule(traj.t, traj.beta, rates)

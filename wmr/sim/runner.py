@@ -1,0 +1,74 @@
+r"""Driving a :class:`~wmr.sim.Simulation` along a :class:`~wmr.sim.Schedule`: :func:`run`, and what it records."""
+from __future__ import annotations
+
+import numpy as np
+
+from ..errors import InputTypeError, InputValueError
+from ..model import validation as V
+from .recording import Recording, Schedule
+from .simulation import MAX_STEPS, Simulation
+
+__all__ = ["run"]
+
+
+def run(sim, schedule, seconds, control_dt=0.001, every=10, on_step=None):
+    """Drive a simulation along a schedule and record it.
+
+    Each control period the servos get the schedule's command at the period's start (as
+    :meth:`Simulation.command` gives it), then the physics advances one period.  A sample is taken
+    at the start of every ``every``-th period, after its commands are set (so that the servo torques
+    sampled are those applied), and one at the end.
+
+    Parameters
+    ----------
+    sim : Simulation
+    schedule : Schedule or None
+        None: keep the present commands.
+    seconds : float
+        Duration, > 0.
+    control_dt : float
+        Control period, s (rounded to whole integration steps; default 0.001, a 1 kHz controller).
+    every : int
+        Record every ``every``-th period (and the end; default 10).
+    on_step : callable, optional
+        ``on_step(sim)`` called at each period before the command (e.g. to push).
+
+    Returns
+    -------
+    Recording
+    """
+    seconds = V.number("seconds", V.positive("seconds", seconds))
+    control_dt = V.number("control_dt", V.positive("control_dt", control_dt))
+    every = V.integer("every", every, minimum=1)
+    if not isinstance(sim, Simulation):
+        raise InputTypeError(f"sim must be a wmr.sim.Simulation, got {V.show(sim)}")
+    if schedule is not None and not isinstance(schedule, Schedule):
+        raise InputTypeError(f"schedule must be a wmr.sim.Schedule or None, got {V.show(schedule)}")
+    n = int(np.ceil(seconds / control_dt - 1e-9))
+    if n * max(1, round(control_dt / sim.model.opt.timestep)) > MAX_STEPS:
+        raise InputValueError(f"seconds = {seconds!r} needs more than {MAX_STEPS} steps")
+    steps = max(1, round(control_dt / sim.model.opt.timestep))
+    times = np.arange(n) * steps * sim.model.opt.timestep
+    if schedule is not None:
+        beta, rates = schedule.at(times)
+        turning = schedule.beta_rate(times)
+        ctrl = sim.targets(beta, rates, turning)                 # every servo's target, every period
+    samples = []
+    for k in range(n):
+        if on_step is not None:
+            on_step(sim)
+        if schedule is not None:
+            sim.data.ctrl[:] = ctrl[k]
+        if k % every == 0:
+            samples.append(sim.sample())                 # the state at the period's start, with its commands
+        sim.step(steps)
+    if schedule is not None:
+        sim.command(beta[-1], rates[-1], turning[-1])    # the last command stays (as command() would have set it)
+    samples.append(sim.sample())
+    return _stack(sim.export, samples)
+
+
+def _stack(ex, samples):
+    fields = ("t", "pose", "twist", "beta", "rates", "torque", "joint_pos", "joint_vel", "point", "force", "moment",
+              "slip", "dissipation")
+    return Recording(ex, *(np.array([getattr(s, f) for s in samples]) for f in fields))

@@ -1,0 +1,387 @@
+r"""A robot in MuJoCo, commanded and measured in wmr's variables: :class:`Simulation`.
+
+A :class:`Simulation` holds a compiled model and its state.  It takes commands in wmr's own terms,
+steering angles :math:`\boldsymbol\beta` and joint rates :math:`\dot{\boldsymbol\theta}` (the rate vector
+of :attr:`wmr.Robot.rate_names`), and gives each servo its target through the unit's joints
+(:meth:`wmr.sim.Export.hinges`): a steering servo tracks :math:`\beta_i`, a drive servo the rate its hinge
+measures.  Servos can be switched off (a free drive), drive hinges locked (the paper's locked
+drives), and a force and torque can be applied to the platform at C (a push).
+
+:meth:`Simulation.sample` measures, in wmr's variables: the platform pose :math:`(\psi, X, Y)` and
+body twist :math:`[\dot\psi, \dot x, \dot y]`; the steering angles and the encoders' joint rates
+(an offset wheel's :math:`\dot\phi_i = \dot\psi + \dot\beta_i` (7) from its steering encoder and the
+platform's turning rate); the servo torques; and per wheel the contact point, the contact force
+(world frame, on the wheel), its friction torques, and the **slip**, the velocity
+of the wheel's material point at the contact relative to the ground (zero for rolling without
+slipping, (6)), and the power the contact takes from it (:class:`~wmr.sim.recording.Sample`).
+:func:`wmr.sim.runner.run` drives a simulation along a :class:`~wmr.sim.recording.Schedule`.
+
+MuJoCo is imported here only (``pip install 'wmr-kinematics[sim]'``); ``import wmr`` does not import it.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from .._version import DISTRIBUTION
+from ..errors import InputValueError, MissingDependencyError
+from ..model import validation as V
+from .bodies import POSITION, VELOCITY, servo
+from .mjcf import Export, export
+from .recording import Sample
+
+__all__ = ["MAX_STEPS", "Simulation"]
+
+#: the most integration steps a run may take (a run of 10^7 steps takes minutes)
+MAX_STEPS = 5_000_000
+
+
+def _mujoco():
+    try:
+        import mujoco
+    except ImportError as e:                        # pragma: no cover - the edition's venv has it
+        raise MissingDependencyError(f"wmr.sim needs MuJoCo: pip install '{DISTRIBUTION}[sim]' "
+                                     "(or pip install mujoco)") from e
+    return mujoco
+
+
+def _yaw(q):
+    """Heading of a quaternion (w, x, y, z) about the vertical."""
+    w, x, y, z = q
+    return float(np.arctan2(2 * (w * z + x * y), 1 - 2 * (y * y + z * z)))
+
+
+class Simulation:
+    r"""A robot in MuJoCo, commanded and measured in wmr's variables.
+
+    Parameters
+    ----------
+    robot : Robot or Export
+        The robot (exported here with the other arguments), or an :class:`~wmr.sim.mjcf.Export`.
+    beta : array (w,), optional
+        Initial steering angles (default 0), also the first target of the steering servos.
+    params : Params, optional
+    settle : float, optional
+        Seconds to let the robot settle on its wheels with every servo holding still before
+        time 0 (default 0.2; the clock then restarts at 0 with the pose at the origin).
+    **changes
+        Parameters to change by name.
+
+    Attributes
+    ----------
+    export : Export
+    model, data : mujoco.MjModel, mujoco.MjData
+    servo_names : tuple of str
+    joint_names : tuple of str
+        Every hinge of the units (``u<i>_<name>``), in MuJoCo's order.
+    wheel_names : tuple of str
+        The contact geoms, one per wheel (``u<i>_wheel``...).
+    wheel_unit : numpy.ndarray of int (n_wheels,)
+        The unit (0-based) of each wheel.
+    """
+
+    def __init__(self, robot, beta=None, params=None, settle=0.2, **changes):
+        mj = _mujoco()
+        self._mj = mj
+        self.export = robot if isinstance(robot, Export) else export(robot, beta, params, **changes)
+        ex = self.export
+        self.model = mj.MjModel.from_xml_string(ex.xml)
+        self.data = mj.MjData(self.model)
+        self.robot = ex.robot
+        m = self.model
+        self._id = lambda kind, name: mj.mj_name2id(m, kind, name)
+        # every hinge: (unit, joint, rate column or None, qpos address, dof address), in MuJoCo's order
+        self._hinges = []
+        for i, j, col in ex.hinges():
+            jid = self._id(mj.mjtObj.mjOBJ_JOINT, ex.name(i, j.name))
+            self._hinges.append((i, j, col, int(m.jnt_qposadr[jid]), int(m.jnt_dofadr[jid])))
+        self.servo_names = tuple(m.actuator(a).name for a in range(m.nu))
+        self.joint_names = tuple(ex.name(i, j.name) for i, j, *_ in self._hinges)
+        self._qa = np.array([h[3] for h in self._hinges], dtype=int)
+        self._da = np.array([h[4] for h in self._hinges], dtype=int)
+        self._servo = {n: a for a, n in enumerate(self.servo_names)}
+        wheels = [(i, ex.name(i, b.name)) for i, mech in enumerate(ex.mechanisms) for b in mech.wheels]
+        self.wheel_names = tuple(n for _, n in wheels)
+        self.wheel_unit = np.array([i for i, _ in wheels], dtype=int)
+        self._geom = {self._id(mj.mjtObj.mjOBJ_GEOM, n): k for k, (_, n) in enumerate(wheels)}
+        self._wheel_body = [int(m.geom_bodyid[g]) for g in sorted(self._geom, key=lambda g: self._geom[g])]
+        self._platform = self._id(mj.mjtObj.mjOBJ_BODY, "platform")
+        self._gains = (m.actuator_gainprm.copy(), m.actuator_biasprm.copy())
+        self._jacp, self._jacr = np.zeros((3, m.nv)), np.zeros((3, m.nv))
+        self._f6 = np.zeros(6)
+        # each servo's target as a linear map of (beta, rates): a steering servo takes beta_i, a drive servo its rate
+        self._from_beta, self._from_rates = np.zeros((m.nu, self.robot.w)), np.zeros((m.nu, self.robot.n_rates))
+        for i, j, col, _, _ in self._hinges:
+            a, kind = self._servo.get(ex.name(i, j.name)), servo(j)
+            if a is not None and kind == POSITION:                  # a driven steering joint
+                self._from_beta[a, i] = 1.0
+            elif a is not None and kind == VELOCITY and col is not None:
+                self._from_rates[a, col] = 1.0
+        # a position servo pushes kp (target - q) - kv q_dot: fed target + (kv / kp) target_dot, it is a PD law
+        # on the error and follows a turning target without lag
+        kp, kv = m.actuator_gainprm[:, 0], -m.actuator_biasprm[:, 2]
+        self._lead = np.where(self._from_beta.any(axis=1) & (kp > 0), kv / np.where(kp > 0, kp, 1.0), 0.0)
+        mj.mj_resetDataKeyframe(m, self.data, 0)
+        self._beta = np.array(ex.beta0, dtype=float)
+        self._rates = np.zeros(self.robot.n_rates)
+        self.command(self._beta, self._rates)
+        settle = V.number("settle", V.nonnegative("settle", settle))
+        if settle > 0:
+            self.advance(settle)
+            self.data.time = 0.0
+            self.data.qpos[0:2] = 0.0                                  # C back at the origin, heading kept
+        mj.mj_forward(m, self.data)
+
+    # --- commands --------------------------------------------------------------------------
+    def command(self, beta=None, rates=None, beta_rate=None):
+        r"""Set the servos' targets from steering angles and joint rates (wmr's variables).
+
+        Parameters
+        ----------
+        beta : array (w,), optional
+            Targets of the steering servos (entries of unsteered or passive units are ignored);
+            default: keep the last.
+        rates : array (n_rates,), optional
+            Joint rates; each drive servo takes the rate its hinge measures (an offset wheel's
+            steering is a position servo: it takes ``beta``).  Default: keep the last.
+        beta_rate : array (w,), optional
+            The rate at which the steering targets turn (default 0): a steering servo is fed
+            ``beta + (kv / kp) beta_rate``, so that it follows a turning target without lag.
+
+        Returns
+        -------
+        None
+        """
+        if beta is not None:
+            self._beta = V.finite_array("beta", beta, last=self.robot.w).reshape(self.robot.w).copy()
+        if rates is not None:
+            self._rates = V.finite_array("rates", rates, last=self.robot.n_rates).reshape(self.robot.n_rates).copy()
+        self.data.ctrl[:] = self.targets(self._beta, self._rates, beta_rate)
+
+    def targets(self, beta, rates, beta_rate=None):
+        r"""The servos' targets for commands in wmr's variables (batched; :meth:`command` sets one of them).
+
+        A steering servo takes :math:`\beta_i + (k_v/k_p)\dot\beta_i` (its target turning without lag), a
+        drive servo the rate its hinge measures.
+
+        Parameters
+        ----------
+        beta : array (..., w)
+        rates : array (..., n_rates)
+        beta_rate : array (..., w), optional
+            Default 0.
+
+        Returns
+        -------
+        numpy.ndarray (..., n_servos)
+            In the order of :attr:`servo_names` (MuJoCo's ``ctrl``).
+        """
+        beta = V.finite_array("beta", beta, last=self.robot.w)
+        rates = V.finite_array("rates", rates, last=self.robot.n_rates)
+        out = beta @ self._from_beta.T + rates @ self._from_rates.T
+        if beta_rate is not None:
+            out = out + self._lead * (V.finite_array("beta_rate", beta_rate, last=self.robot.w) @ self._from_beta.T)
+        return out
+
+    def release(self, names):
+        """Switch servos off (their hinges turn freely), e.g. ``["u1_drive"]``; :meth:`engage` switches them on.
+
+        Parameters
+        ----------
+        names : iterable of str
+            Servo names (:attr:`servo_names`).
+
+        Returns
+        -------
+        None
+        """
+        for n in names:
+            a = self._servo_index(n)
+            self.model.actuator_gainprm[a] = 0.0
+            self.model.actuator_biasprm[a] = 0.0
+
+    def engage(self, names):
+        """Switch servos back on (undo :meth:`release`).
+
+        Parameters
+        ----------
+        names : iterable of str
+
+        Returns
+        -------
+        None
+        """
+        for n in names:
+            a = self._servo_index(n)
+            self.model.actuator_gainprm[a] = self._gains[0][a]
+            self.model.actuator_biasprm[a] = self._gains[1][a]
+
+    def lock(self, names):
+        """Lock drive hinges where they are (their servos off): the paper's "driving actuators locked".
+
+        A lock is a joint equality of the model (``<name>_lock``), as stiff as MuJoCo's constraints,
+        with no torque limit; :meth:`unlock` frees the hinges and switches their servos back on.
+
+        Parameters
+        ----------
+        names : iterable of str
+            Drive hinges (= their servos' names), e.g. ``["u1_drive"]``.
+
+        Returns
+        -------
+        None
+        """
+        mj, m, d = self._mj, self.model, self.data
+        for n in names:
+            eq = self._id(mj.mjtObj.mjOBJ_EQUALITY, f"{n}_lock")
+            if eq < 0:
+                raise InputValueError(f"no lockable drive hinge named {V.show(n)}; drives: "
+                                      f"{list(self.export.drive_names)}")
+            m.eq_data[eq, 0] = d.qpos[m.jnt_qposadr[m.eq_obj1id[eq]]]
+            d.eq_active[eq] = 1
+            if n in self._servo:
+                self.release([n])
+
+    def unlock(self, names):
+        """Undo :meth:`lock`.
+
+        Parameters
+        ----------
+        names : iterable of str
+
+        Returns
+        -------
+        None
+        """
+        mj = self._mj
+        for n in names:
+            eq = self._id(mj.mjtObj.mjOBJ_EQUALITY, f"{n}_lock")
+            if eq < 0:
+                raise InputValueError(f"no lockable drive hinge named {V.show(n)}")
+            self.data.eq_active[eq] = 0
+            if n in self._servo:
+                self.engage([n])
+
+    def _servo_index(self, name):
+        if name not in self._servo:
+            raise InputValueError(f"no servo named {V.show(name)}; servos: {list(self.servo_names)}")
+        return self._servo[name]
+
+    def push(self, force=(0.0, 0.0), torque=0.0):
+        """Apply a horizontal force at C and a torque about the vertical to the platform (until changed).
+
+        Parameters
+        ----------
+        force : pair
+            N, fixed frame.
+        torque : float
+            N m.
+
+        Returns
+        -------
+        None
+        """
+        f = V.finite_array("force", force, last=2).reshape(2)
+        tau = V.number("torque", torque)
+        self.data.xfrc_applied[:] = 0.0
+        # xfrc_applied acts at the body's centre of mass: move the force to C by adding its moment
+        com = self.data.xipos[self._platform]
+        C = self.data.xpos[self._platform]
+        arm = C[:2] - com[:2]
+        self.data.xfrc_applied[self._platform, 0:2] = f
+        self.data.xfrc_applied[self._platform, 5] = tau + arm[0] * f[1] - arm[1] * f[0]
+
+    # --- time ------------------------------------------------------------------------------
+    def advance(self, seconds):
+        """Integrate ``seconds`` (rounded to whole steps) with the present commands.
+
+        Parameters
+        ----------
+        seconds : float
+            >= 0.
+
+        Returns
+        -------
+        None
+        """
+        seconds = V.number("seconds", V.nonnegative("seconds", seconds))
+        n = round(seconds / self.model.opt.timestep)
+        if n > MAX_STEPS:
+            raise InputValueError(f"seconds = {seconds!r} needs {n} steps, more than {MAX_STEPS}")
+        if n:
+            self.step(n)
+
+    def step(self, n=1):
+        """Integrate ``n`` steps with the present servo targets (``data.ctrl``), as fast as MuJoCo goes.
+
+        Parameters
+        ----------
+        n : int
+            >= 1.
+
+        Returns
+        -------
+        None
+
+        Raises
+        ------
+        FloatingPointError
+            If the state is no longer finite (the simulation diverged).
+        """
+        self._mj.mj_step(self.model, self.data, nstep=n)
+        if not np.isfinite(self.data.qpos).all():
+            raise FloatingPointError(f"the simulation diverged at t = {self.data.time:.6g} s")
+
+    @property
+    def t(self):
+        """Simulated time, s."""
+        return float(self.data.time)
+
+    # --- measurements ----------------------------------------------------------------------
+    def sample(self):
+        """Measure the present state (module docstring).
+
+        Returns
+        -------
+        Sample
+        """
+        mj, m, d = self._mj, self.model, self.data
+        mj.mj_forward(m, d)                                      # positions, contacts and forces of this state
+        q = d.qpos
+        psi = _yaw(q[3:7])
+        c, s = np.cos(psi), np.sin(psi)
+        v = d.qvel[0:3]                                          # world-frame velocity of C
+        wz = float(d.xmat[self._platform].reshape(3, 3)[:, 2] @ d.qvel[3:6])   # turning rate (body -> world z)
+        twist = np.array([wz, c * v[0] + s * v[1], -s * v[0] + c * v[1]])
+        beta = np.array(self.robot.effective_beta(np.zeros(self.robot.w)), dtype=float)
+        rates = np.zeros(self.robot.n_rates)
+        for i, j, col, qa, da in self._hinges:
+            if j.steering:
+                beta[i] = q[qa]
+            if col is not None:
+                rates[col] = d.qvel[da] + (wz if j.absolute else 0.0)
+        nw = len(self.wheel_names)
+        point = np.full((nw, 3), np.nan)
+        force, moment = np.zeros((nw, 3)), np.zeros((nw, 3))
+        slip, power = np.zeros((nw, 2)), np.zeros(nw)
+        for k in range(d.ncon):
+            con = d.contact[k]
+            g1, g2 = int(con.geom[0]), int(con.geom[1])
+            w = self._geom.get(g2, self._geom.get(g1))
+            if w is None:
+                continue
+            mj.mj_contactForce(m, d, k, self._f6)
+            frame = con.frame.reshape(3, 3)                      # rows: normal (geom1 -> geom2), tangents
+            sign = 1.0 if g2 in self._geom else -1.0             # the force on geom2 is +, on geom1 -
+            f = sign * (frame.T @ self._f6[:3])
+            tq = sign * (frame.T @ self._f6[3:6])
+            p = np.array(con.pos)
+            mj.mj_jac(m, d, self._jacp, self._jacr, p, self._wheel_body[w])
+            u, om = self._jacp @ d.qvel, self._jacr @ d.qvel         # the wheel's point at p, the wheel's spin
+            force[w] += f
+            moment[w] += tq
+            point[w] = p
+            slip[w] = u[:2]
+            power[w] -= f @ u + tq @ om
+        torque = np.array(d.actuator_force, dtype=float)
+        return Sample(float(d.time), np.array([psi, q[0], q[1]]), twist, beta, rates, torque, q[self._qa].copy(),
+                      d.qvel[self._da].copy(), point, force, moment, slip, power)
