@@ -6,19 +6,19 @@ from those numbers (wheels in the layout's order); :mod:`wmr.io.recognise` finds
 when a robot is not one.  Frames are wmr's
 (:mod:`wmr.model.conventions`), which are REP-103's and WPILib's: x forward, y left, C the origin.
 
-==============  =========================================================================  =====================
-layout          wheels, in the layout's order                                              numbers
-==============  =========================================================================  =====================
-``differential``  left and right fixed wheels at :math:`(0, \pm t/2)`, angle 90 deg             track t
-``mecanum``     Swedish wheels FL, FR, RL, RR, angle 90 deg, rollers +45, -45, -45, +45 deg  4 mount points
-``omni``        n >= 3 Swedish wheels, rollers 90 deg, at :math:`R(\cos a_k, \sin a_k)`,      n, R, :math:`a_0`
-                :math:`a_k = a_0 + 2\pi k/n`, axle radial (angle :math:`a_k`)
-``swerve``      centred (swerve) wheels anywhere                                           mount points
-``bicycle``     steered centred wheel at :math:`(l, 0)`, fixed wheel at C (angle 90 deg)       wheelbase l
-``tricycle``    steered centred wheel at :math:`(l, 0)`, fixed wheels at :math:`(0, \pm t/2)`  l, t
-``ackermann``   steered centred wheels at :math:`(l, \pm s/2)`, fixed wheels at              l, t, s
-                :math:`(0, \pm t/2)` (left before right)
-==============  =========================================================================  =====================
+================  =============================================================================  =================
+layout            wheels, in the layout's order                                                  numbers
+================  =============================================================================  =================
+``differential``  left and right fixed wheels at :math:`(0, \pm t/2)`, angle 90 deg              track t
+``mecanum``       Swedish wheels FL, FR, RL, RR, angle 90 deg, rollers +45, -45, -45, +45 deg    4 mount points
+``omni``          n >= 3 Swedish wheels, rollers 90 deg, at :math:`R(\cos a_k, \sin a_k)`,       n, R, :math:`a_0`
+                  :math:`a_k = a_0 + 2\pi k/n`, axle radial (angle :math:`a_k`)
+``swerve``        centred (swerve) wheels anywhere                                               mount points
+``bicycle``       steered centred wheel at :math:`(l, 0)`, fixed wheel at C (angle 90 deg)       wheelbase l
+``tricycle``      steered centred wheel at :math:`(l, 0)`, fixed wheels at :math:`(0, \pm t/2)`  l, t
+``ackermann``     steered centred wheels at :math:`(l, \pm s/2)`, fixed wheels at                l, t, s
+                  :math:`(0, \pm t/2)` (left before right)
+================  =============================================================================  =================
 
 The mecanum rollers are those whose wheel speeds WPILib's ``MecanumDriveKinematics`` and ROS 2's
 ``mecanum_drive_controller`` compute (FL: :math:`v_x - v_y - (l_x + l_y)\omega`, ...): an X seen from

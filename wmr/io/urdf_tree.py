@@ -269,7 +269,7 @@ def snap(v):
 
 
 def suggest(word, choices):
-    """`` (did you mean 'x'?)`` for the closest of ``choices``, or an empty string.
+    """The hint ``" (did you mean 'x'?)"`` naming the closest of ``choices`` to ``word``, or an empty string.
 
     Parameters
     ----------
