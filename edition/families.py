@@ -10,7 +10,9 @@ paper's catalogue is here.
 """
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 import sympy as sp
@@ -104,7 +106,7 @@ class Family:
     paper_item: str
     note: str
     samples: np.ndarray | None = None
-    exact: object = None
+    exact: Callable[[], Any] | None = None
     # computed
     det_J_max: float = float("nan")
     det_J_exact_zero: bool | None = None
@@ -125,7 +127,7 @@ class Family:
             "det_J": bound(self.det_J_max),
             "det_J_exact": ("0 identically" if self.det_J_exact_zero else
                             ("NOT zero" if self.det_J_exact_zero is False else "not checked")),
-            "rank_F": self.rank_F, "samples": len(self.samples),
+            "rank_F": self.rank_F, "samples": 0 if self.samples is None else len(self.samples),
             "listed_in_paper": self.listed_in_paper, "paper_item": self.paper_item, "note": self.note,
         }
 
@@ -223,7 +225,7 @@ def families(robot=None, n=72, exact=True):
                 f"pair-{i}{j}" + ("'" if prime else ""), fam, conf,
                 rf"planes of wheels {i} and {j} coincide with the line $P_{i}P_{j}$; $D_P$ is where plane {k} "
                 "crosses it", listed, item, note, samples=np.concatenate(rows),
-                exact=(lambda i=i, j=j, k=k, ai=ai, prime=prime: _exact_dirs_angles(
+                exact=(lambda i=i, j=j, k=k, ai=ai, prime=prime: _exact_dirs_angles(  # type: ignore[misc]
                     [ai if w == i else (ai + (sp.pi if prime else 0) if w == j else th) for w in (1, 2, 3)]))))
 
     # (v): concurrent at a finite point D_P
@@ -307,7 +309,8 @@ def families(robot=None, n=72, exact=True):
         vals, counts = np.unique(ranks, return_counts=True)
         order = np.argsort(-counts)
         f.rank_F = ", ".join(f"{int(vals[o])} ({int(counts[o])}/{len(ranks)})" for o in order)
-        kinds = {}
+        kinds: dict[str, int] = {}
+        assert f.samples is not None
         for b in f.samples[:: max(1, len(f.samples) // 24)]:
             k = classify(num, b).family
             kinds[k] = kinds.get(k, 0) + 1

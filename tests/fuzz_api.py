@@ -619,7 +619,8 @@ def _show(v):
 def tally(n=12000, seed=0):
     """Outcome counts of ``n`` random calls spread over all cases (and a few examples of each fault)."""
     rng = np.random.default_rng(seed)
-    counts, examples = {}, {}
+    counts: dict = {}
+    examples: dict = {}
     for k in range(n):
         case = CASES[k % len(CASES)]
         args, bad = draw(case, rng)

@@ -118,7 +118,7 @@ def test_exact_robot_and_result_type():
     c = campion_class(wmr.paper_robot("centred", L=1, r=sp.Rational(1, 10), exact=True))
     assert isinstance(c, CampionClass) and c.label == "(1,2)"
     with pytest.raises(dataclasses.FrozenInstanceError):
-        c.delta_m = 3
+        c.delta_m = 3  # type: ignore[misc]
     assert wmr.campion_class is campion_class
 
 
@@ -149,7 +149,7 @@ def mixed_robots(draw):
     """Random robots of every wheel type (two to five units, distinct mount points)."""
     w = draw(st.integers(2, 5))
     pts = draw(st.lists(_POINTS, min_size=w, max_size=w, unique=True))
-    units = []
+    units: list = []
     for p in pts:
         kind = draw(st.sampled_from(["fixed", "swedish", "centred", "offset", "dual"]))
         angle = draw(_ANGLES)

@@ -45,7 +45,7 @@ def _public_callables():
 
 def _module_callables():
     """Public functions and classes (and their public methods) defined in the public modules."""
-    out = []
+    out: list = []
     for module in PUBLIC_MODULES:
         mod = importlib.import_module(module)
         for name, obj in vars(mod).items():
@@ -69,7 +69,8 @@ PROPERTIES = [(f"{n}.{m}", p) for n, c in PUBLIC if inspect.isclass(c)
 def sections(doc):
     """numpydoc sections: {title: [lines]} (a title is a line followed by a line of dashes)."""
     lines = inspect.cleandoc(doc).splitlines()
-    out, current = {"_summary": []}, "_summary"
+    out: dict[str, list] = {"_summary": []}
+    current = "_summary"
     i = 0
     while i < len(lines):
         if i + 1 < len(lines) and lines[i].strip() and re.fullmatch(r"-{3,}", lines[i + 1].strip()):

@@ -130,11 +130,11 @@ def test_locked_drives_hold():
 
 
 def test_schedule_checks_and_interpolates():
-    s = Schedule([0.0, 1.0], [[0.0], [1.0]], [[2.0], [4.0]])
+    s = Schedule([0.0, 1.0], [[0.0], [1.0]], [[2.0], [4.0]])  # type: ignore[arg-type]
     beta, rates = s.at(0.25)
     assert beta.tolist() == [0.25] and rates.tolist() == [2.5]
     assert s.at([2.0])[0].tolist() == [[1.0]] and s.beta_rate([0.5, 2.0]).tolist() == [[1.0], [0.0]]
     with pytest.raises(ValueError, match="increasing"):
-        Schedule([1.0, 0.0], [[0.0], [1.0]], [[0.0], [0.0]])
+        Schedule([1.0, 0.0], [[0.0], [1.0]], [[0.0], [0.0]])  # type: ignore[arg-type]
     with pytest.raises(ValueError, match="one row per knot"):
-        Schedule([0.0, 1.0], [[0.0]], [[0.0], [0.0]])
+        Schedule([0.0, 1.0], [[0.0]], [[0.0], [0.0]])  # type: ignore[arg-type]

@@ -45,10 +45,10 @@ def imports(name, path, known):
                 base = base[:len(base) - (node.level - 1)]
                 target = ".".join(base + ([node.module] if node.module else []))
             else:
-                target = node.module
+                target = node.module or ""
             for a in node.names:
                 sub = f"{target}.{a.name}"
-                out.append((sub, None, node.lineno) if sub in known else (target, a.name, node.lineno))
+                out.append((sub, None, node.lineno) if sub in known else (target, a.name, node.lineno))  # type: ignore[arg-type]
     return out
 
 
@@ -67,7 +67,11 @@ def graph(known):
 
 def cycles(edges):
     """The strongly connected components of more than one module (Tarjan), each sorted."""
-    index, low, stack, on, out = {}, {}, [], set(), []
+    index: dict = {}
+    low: dict = {}
+    stack: list = []
+    on: set = set()
+    out: list = []
 
     def visit(v):
         index[v] = low[v] = len(index)
@@ -154,7 +158,7 @@ def test_bad_input_raises_the_package_s_own_errors():
             value = node.exc if isinstance(node, ast.Raise) else node.value if isinstance(node, ast.Return) else None
             call = value.func if isinstance(value, ast.Call) else value
             if isinstance(call, ast.Name) and call.id in ("ValueError", "TypeError"):
-                wrong.append(f"{name}:{node.lineno}")
+                wrong.append(f"{name}:{getattr(node, 'lineno', '?')}")
     assert wrong == []
 
 

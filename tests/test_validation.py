@@ -209,7 +209,7 @@ QUOTED = [   # (case, call, exception type, words the message must hold)
     ("SymPy nan length", lambda: wmr.CentredWheel((0, 0), r=_sp.nan), ValueError, ["r", "nan"]),
     ("SymPy zoo length", lambda: wmr.DualWheel((0, 0), r=0.1, b=_sp.zoo), ValueError, ["b", "zoo"]),
     ("SymPy I position", lambda: wmr.CentredWheel((_sp.I, 0), r=0.1), ValueError, ["position", "I"]),
-    ("long double 1e400", lambda: wmr.CentredWheel((0, 0), r=np.longdouble("1e400")), ValueError, ["r", "e+400"]),
+    ("long double 1e400", lambda: wmr.CentredWheel((0, 0), r=np.longdouble("1e400")), ValueError, ["r", "e+400"]),  # type: ignore[arg-type]
     ("None robot", lambda: wmr.mobility(None, [0.0] * 3), TypeError, ["robot", "None"]),
     ("the class Robot", lambda: wmr.rank_F(wmr.Robot, [0.0] * 3), TypeError, ["robot", "class Robot"]),
     ("empty matrix", lambda: wmr.condition_number(np.empty((3, 0))), ValueError, ["A", "(3, 0)"]),
@@ -244,7 +244,7 @@ def test_quoted_inputs_that_are_valid_give_right_finite_answers():
     pts = wmr.equilateral_mounts(1.0, first_deg=1e300)                  # three distinct vertices
     assert len({tuple(np.round(p, 12)) for p in pts}) == 3
     assert np.allclose([np.hypot(*p) for p in pts], 1.0)
-    assert wmr.CentredWheel((0, 0), r=Fraction(1, 4)).r == 0.25         # Fractions are real numbers
+    assert wmr.CentredWheel((0, 0), r=Fraction(1, 4)).r == 0.25  # type: ignore[arg-type]  # Fractions are real numbers
     assert np.isfinite(wmr.characteristic_length(wmr.paper_robot("centred", L=1e300, r=1e299)))
     sol = wmr.forward(wmr.paper_robot("centred", L=1e300, r=1e299), [0.1, 0.2, 0.3], [1.0, 2.0, 3.0])
     assert np.all(np.isfinite(sol.value))                                # (was: "fewer than two mount points")

@@ -76,7 +76,7 @@ def test_a_mechanism_takes_a_height_and_numbers():
     with pytest.raises(InputValueError, match=r"height .* at least the wheel radius r = 0.05, got 0.04"):
         unit.mechanism(0.04)
     with pytest.raises(InputTypeError, match="height"):
-        unit.mechanism("tall")
+        unit.mechanism("tall")  # type: ignore[arg-type]
     with pytest.raises(InputValueError, match="free symbols"):
         wmr.OffsetWheel((0.3, 0.0), r=0.05, d=sp.Symbol("d")).mechanism(0.05)
     exact = wmr.OffsetWheel((sp.sqrt(3) / 10, 0), r=sp.Rational(1, 20), d=sp.Rational(1, 50)).mechanism(0.05)
@@ -88,7 +88,7 @@ def test_wheel_kind_names_and_suggests():
     with pytest.raises(InputValueError, match=r"kind must be one of centred, dual, fixed, offset, swedish.*'centred'"):
         wheel_kind("centered")
     with pytest.raises(InputTypeError, match=r"\bkind\b"):
-        wheel_kind(3)
+        wheel_kind(3)  # type: ignore[arg-type]
 
 
 def test_a_kind_name_is_taken_once():
@@ -112,7 +112,7 @@ def test_joints_and_file_keys_check_themselves():
     with pytest.raises(InputValueError, match="kind must be one of steer, swivel, drive, roller"):
         Joint("x", "motor", True)
     with pytest.raises(InputTypeError, match="driven"):
-        Joint("x", "drive", 1)
+        Joint("x", "drive", 1)  # type: ignore[arg-type]
     with pytest.raises(InputTypeError, match="name"):
         Joint("two words", "drive", True)
     with pytest.raises(InputValueError, match="check"):

@@ -32,7 +32,7 @@ def test_swedish_wheel_constraint_is_along_the_roller_axis(x, y, r, angle, rolle
     a = np.array([np.cos(angle + roller), np.sin(angle + roller)])
     assert np.allclose(a @ v, -r * np.sin(roller) * sol.value[0], rtol=1e-9, atol=1e-12)
     assert np.allclose(hub_velocity("swedish", angle, r, sol.value, roller), v, rtol=1e-9, atol=1e-12)
-    assert np.allclose(bot.wheels[0].roller_axis(), a)
+    assert np.allclose(bot.wheels[0].roller_axis(), a)  # type: ignore[attr-defined]
 
 
 def test_omni_and_mecanum_blocks_by_hand():

@@ -117,7 +117,8 @@ def test_same_handed_mecanum_cannot_be_driven_sideways_by_its_wheels():
     """All rollers of one hand: the wheel-rate map loses rank (why SwedishWheel accepts negative roller angles)."""
     pts = [(0.3, 0.2), (0.3, -0.2), (-0.3, 0.2), (-0.3, -0.2)]
     bot = wmr.Robot([wmr.SwedishWheel(p, r=0.05, angle=0.0, roller=PI / 4) for p in pts])
-    rows = np.array([u.roller_axis() @ bot.J1()[2 * i:2 * i + 2] for i, u in enumerate(bot.wheels)])
+    units: list = list(bot.wheels)
+    rows = np.array([u.roller_axis() @ bot.J1()[2 * i:2 * i + 2] for i, u in enumerate(units)])
     assert wmr.rank(rows) == 2
 
 

@@ -160,7 +160,7 @@ def wpilib_odometry(robot, beta, travel, m):
         odo = SwerveDrive4Odometry(kin, Rotation2d(0.0), cache[0], Pose2d())
         for p in cache[1:len(twist)]:
             odo.update(Rotation2d(0.0), p)
-    run.label = "WPILib, one update per sample"
+    run.label = "WPILib, one update per sample"  # type: ignore[attr-defined]
     return run
 
 
@@ -307,7 +307,7 @@ def main(argv=None):
     print("-" * len(head))
     fails = 0
     for name, fn, (kind, ref), check in rows:
-        cpu = []
+        cpu: list[float] = []
         sec, out = best_of(fn, args.repeat, cpu)
         ok = bool(check(out))
         if kind == "target":                                # the targets are for 10**6 configurations
@@ -334,7 +334,7 @@ def main(argv=None):
         ns = int(args.sweep)
         print(f"\nsweeps of {ns:,} random configurations of the paper's centred robot ({load()})")
         srows = sweep_rows(ns, dask=not args.no_dask)
-        base = {}
+        base: dict = {}
         for name, sec, count, rss in srows:
             an = name.split(",")[0]
             extra = f"peak RSS {rss:.0f} MB" if rss is not None else f"speed-up {base[an] / sec:.2f}x vs in process"

@@ -52,12 +52,12 @@ def main(argv=None):
           f"{platform.machine()}; load average before: {_load()}")
     rows, wall, cpu = [], 0.0, 0.0
     for f in physics.EXPERIMENTS:
-        best = None
+        best = (float("inf"), float("inf"))
         for _ in range(max(1, args.repeat)):
             w0, c0 = time.perf_counter(), time.process_time()
             outcome = f()
             t = (time.perf_counter() - w0, time.process_time() - c0)
-            best = t if best is None or t[0] < best[0] else best
+            best = t if t[0] < best[0] else best
         rows.append((f.__name__, outcome.verdict, *best))
         wall, cpu = wall + best[0], cpu + best[1]
     width = max(len(r[0]) for r in rows)

@@ -86,7 +86,8 @@ def equivalence(n=300, n_paper=100, t_end=4.0, dt=0.01, seed=SEED):
     ok_F = symbolic_equal(dual_s.F(), cen_s.F() * T)
     cen, dual, _ = robots()
     rng = np.random.default_rng(seed)
-    counts, worst = {}, 0.0
+    counts: dict = {}
+    worst = 0.0
     for case in range(n):
         if case < n_paper:
             rc, rd = cen, dual
@@ -114,7 +115,7 @@ def equivalence(n=300, n_paper=100, t_end=4.0, dt=0.01, seed=SEED):
     ok_rates = inverse(dual, beta0, tw).value
     # the printed (15): no difference when beta_dot = 0
     printed_rates = np.repeat(ok_rates.reshape(3, 2).mean(axis=1), 2)
-    runs = []
+    runs: list[dict] = []
     for name, rates in (("corrected (15)", ok_rates), ("printed (15)", printed_rates)):
         tr = simulate(dual, rates, beta0, t_end=t_end, dt=dt)
         U = tr.world(instantaneous_centre(tw).point)
@@ -350,7 +351,9 @@ def discontinuous_heading(n=2000, seed=SEED):
     gain = np.linalg.norm(sol_off.value, axis=-1) / np.linalg.norm(t_plus, axis=-1)
     bound_ = np.linalg.svd(off.J1(), compute_uv=False)[0] / np.linalg.svd(off.J2(be_off), compute_uv=False)[..., -1]
     c = corner()
-    rows = [{"case": r"centred: $\mathbf t^-$ to a random $\mathbf t^+$", "executable": float(jump.admissible.mean()),
+    rows: list[dict] = [
+            {"case": r"centred: $\mathbf t^-$ to a random $\mathbf t^+$",
+             "executable": float(jump.admissible.mean()),
              "largest residual": float(np.abs(jump.residual).max())},
             {"case": r"centred: $\mathbf t^-$ to $\lambda\mathbf t^-$ (incl. "
                      r"reversal)", "executable": float(scaled.admissible.mean()),

@@ -203,7 +203,7 @@ def main(argv=None):
     """
     argv = sys.argv[1:] if argv is None else list(argv)
     if not argv or argv[0] in ("-h", "--help"):
-        print(main.__doc__ + "\nkeys: " + " ".join(KEYS))
+        print((main.__doc__ or "") + "\nkeys: " + " ".join(KEYS))
         return 0 if argv else 2
     outdir, keys = argv[0], (argv[1:] or None)
     bad = [k for k in keys or [] if k not in KEYS]

@@ -38,7 +38,7 @@ class AxleMeet:
     """
 
     kind: str
-    point: tuple
+    point: tuple | None
     error: float = residual()
 
 
@@ -151,7 +151,7 @@ def singular_config(robot, beta, exact_deg=None, reach=3.2):
         if kind == ln.COINCIDENT:                       # a coincident pair: each line reaches the other's P
             plane_reach[i - 1].append(P[j - 1])
             plane_reach[j - 1].append(P[i - 1])
-    axle_reach = [[] for _ in range(3)]
+    axle_reach: list[list] = [[] for _ in range(3)]
     crossings = []
     for (i, j), (kind, pt) in axles.items():
         if kind == ln.FINITE and np.linalg.norm(pt) < reach:

@@ -56,7 +56,7 @@ class TranslationRun:
     slip_max: float = residual()
     rank_F: tuple = ()
     distance: float = 0.0
-    straightness: float = residual(default=None)
+    straightness: float | None = residual(default=None)
     beta: np.ndarray = drawing(default=None)       # (N, 3)
     pose: np.ndarray = drawing(default=None)       # (N, 3)
     pivots: np.ndarray = drawing(default=None)     # (N, 3, 2)

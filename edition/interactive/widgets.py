@@ -22,6 +22,8 @@ class _Explorer:
     """What both explorers share: the state drawn and described, shown below the controls and redrawn in place."""
 
     _draw: Callable[[Any], Any]       # state -> Figure (set by each explorer)
+    state: Callable[[], Any]          # the current state (set by each explorer)
+    controls: Any                     # the ipywidgets box shown above the picture
     _describe: Callable[[Any], str]   # state -> Markdown text (set by each explorer)
     _width = 500                      # width of the picture (pixels)
 

@@ -141,15 +141,15 @@ def weakest_push(robot, beta, direction, mu=1.0, crr=0.01, load=None):
         ii, jj = np.array([np.cos(beta[i]), np.sin(beta[i])]), np.array([-np.sin(beta[i]), np.cos(beta[i])])
         rows += [ii @ P, jj @ P]
         cost += [mu * N[i], crr * N[i]]
-    rows, cost = np.array(rows), np.array(cost)
+    R, weights = np.array(rows), np.array(cost)
     move = np.r_[0.0, u]                                                  # u . c_dot = 1
     best = np.inf
-    for k, m in itertools.combinations(range(len(rows)), 2):
-        A = np.array([rows[k], rows[m], move])
+    for k, m in itertools.combinations(range(len(R)), 2):
+        A = np.array([R[k], R[m], move])
         if abs(np.linalg.det(A)) < 1e-12 * np.abs(A).max() ** 3:
             continue
         t = np.linalg.solve(A, [0.0, 0.0, 1.0])
-        best = min(best, float(cost @ np.abs(rows @ t)))
+        best = min(best, float(weights @ np.abs(R @ t)))
     return best
 
 

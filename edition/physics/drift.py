@@ -59,7 +59,7 @@ def turn_locked(robot, beta0, seconds=TURN, params=None):
     Recording
     """
     beta0 = np.asarray(beta0, dtype=float)
-    s = Schedule([0.0, seconds], np.array([beta0, beta0 + 2 * np.pi]), np.zeros((2, robot.n_rates)))
+    s = Schedule(np.array([0.0, seconds]), np.array([beta0, beta0 + 2 * np.pi]), np.zeros((2, robot.n_rates)))
     sim = Simulation(robot, beta=beta0, params=params)
     sim.lock(sim.export.drive_names)
     return run(sim, s, seconds + 0.25)

@@ -68,7 +68,7 @@ def reorient(kind, params=None, rate=RATE, seconds=3.0):
         rates = np.zeros(robot.n_rates)
     else:
         rates = wmr.inverse(robot, beta0, [0.0, 0.0, 0.0], beta_dot=np.full(robot.w, rate)).value
-    s = Schedule([0.0, seconds], np.array([beta0, beta0 + rate * seconds]), np.array([rates, rates]))
+    s = Schedule(np.array([0.0, seconds]), np.array([beta0, beta0 + rate * seconds]), np.array([rates, rates]))
     sim = Simulation(robot, beta=beta0, params=params)
     if kind == "centred":
         sim.lock(sim.export.drive_names)                           # rolling disabled

@@ -150,9 +150,9 @@ def draw_friction_noise(reorient, noise, fig=None):
         panel_title(a, "a", "reorienting in place")
         _grid(a)
         runs = noise.data["runs"]
-        k = np.array([v["kappa"] for v in runs.values()])
+        kap = np.array([v["kappa"] for v in runs.values()])
         s = np.array([v["spread"] for v in runs.values()])
-        top = 1.1 * max(k.max(), s.max())
+        top = 1.1 * max(float(kap.max()), float(s.max()))
         b.plot([1, top], [1, top], color=PALETTE["grey"], ls="--", lw=0.8, label="spread = kappa")
         for (name, v), colour in zip(runs.items(), ROLE["path"]):
             b.plot(v["kappa"], v["spread"], "o", color=colour, ms=6, label=name)

@@ -2,6 +2,7 @@
 against independent line geometry; the prose is Markdown with $...$ math; the CSV is deterministic."""
 import csv
 import re
+from typing import Any
 
 import numpy as np
 import pytest
@@ -59,7 +60,8 @@ def test_rotation_about_a_point_of_the_circumcircle(families):
     assert np.all(np.abs(line_det(axle(b))) <= 1e-9)
 
 
-PRINTED = {"(i)": None, "(ii)": ((1, 3), (60, -120)), "(iii)": ((1, 2), (-60, 120)), "(iv)": ((2, 3), (0, 180))}
+PRINTED: dict[str, Any] = {"(i)": None, "(ii)": ((1, 3), (60, -120)), "(iii)": ((1, 2), (-60, 120)),
+                           "(iv)": ((2, 3), (0, 180))}
 
 
 def printed_holds(item, b):

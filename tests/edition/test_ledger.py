@@ -19,7 +19,7 @@ def ok(id, **kw):
 def refuted(id, **kw):
     args = dict(corrected=r"\dot\phi_i = x", corrected_holds=True, severity="wrong", why="it is off by $\\dot\\psi$")
     args.update(kw)
-    return Finding(str(id), False, "printed refuted; corrected proven", 1e-15, **args)
+    return Finding(str(id), False, "printed refuted; corrected proven", 1e-15, **args)  # type: ignore[arg-type]
 
 
 def full_ledger(notebook="nb"):
@@ -51,7 +51,7 @@ def test_refuted_without_proof_fails_loudly(kw, words):
 
 def test_printed_holds_must_be_a_bool():
     with pytest.raises(TypeError, match="printed_holds"):
-        LG.grade(Finding("2", "yes", "x", 0.0))
+        LG.grade(Finding("2", "yes", "x", 0.0))  # type: ignore[arg-type]
     with pytest.raises(TypeError, match="Finding"):
         LG.grade({"id": "2"})
 

@@ -55,7 +55,7 @@ def test_chapter_is_thin_and_prints_nothing(path):
 def test_every_ledger_row_is_anchored_in_its_notebook():
     with open(ROOT / "figures" / "ledger.csv", newline="", encoding="utf-8") as f:
         rows = list(csv.DictReader(f))
-    anchors = {}
+    anchors: dict = {}
     for path in PAPER_CHAPTERS:
         for c in cells(path, "markdown"):
             for a in re.findall(r'<a id="([^"]+)"></a>', c.source):
@@ -120,9 +120,10 @@ def test_student_edition_has_no_solutions_and_still_runs():
     """``make student RUN=1`` (nbconvert's TagRemovePreprocessor, then the chapters' cached executor):
     every chapter without its solutions, its exercises kept, and every one still runs."""
     import subprocess
-    p = subprocess.run(["make", "-s", "--no-print-directory", "-C", str(ROOT), f"WMR_ROOT={ROOT}", "student", "RUN=1"],
-                       capture_output=True, text=True, check=False)
-    assert p.returncode == 0, "student notebooks fail:\n" + (p.stdout + p.stderr)[-4000:]
+    run = subprocess.run(["make", "-s", "--no-print-directory", "-C", str(ROOT), f"WMR_ROOT={ROOT}",
+                          "student", "RUN=1"],
+                         capture_output=True, text=True, check=False)
+    assert run.returncode == 0, "student notebooks fail:\n" + (run.stdout + run.stderr)[-4000:]
     out = ROOT / "build" / "student"
     paths = sorted(out.glob("*.ipynb"))
     assert [p.name for p in paths] == [p.name for p in CHAPTERS]

@@ -24,11 +24,12 @@ from pathlib import Path
 import nbformat
 import pytest
 
-ROOT = Path(__file__).resolve().parents[2]
 from edition.ledger import read as read_ledger
 from tools.build import html as html_export
 from tools.build.pdf import MIN_FORMULA_SCALE, scaled_formulas
 from tools.build.typeset import read_figures
+
+ROOT = Path(__file__).resolve().parents[2]
 
 TREE = Path(os.environ.get("WMR_ROOT") or ROOT)  # WMR_ROOT: test another tree
 BUILD = Path(os.environ.get("WMR_BUILD") or TREE / "build")
@@ -54,7 +55,8 @@ def commit_epoch() -> int:
     env = os.environ.get("SOURCE_DATE_EPOCH", "")
     if env.isdigit():
         return int(env)
-    p = subprocess.run(["git", "-C", str(TREE), "log", "-1", "--format=%ct"], capture_output=True, text=True, check=False)
+    p = subprocess.run(["git", "-C", str(TREE), "log", "-1", "--format=%ct"],
+                       capture_output=True, text=True, check=False)
     return int(p.stdout.strip()) if p.returncode == 0 else 0
 
 
@@ -197,7 +199,8 @@ def test_each_figure_embedded_once(html_text):
     dup = len(srcs) - len(set(srcs))
     assert dup == 0, f"{dup} images embedded more than once"
     for key in figs:
-        block = re.findall(r'<figure class="wmr-figure" id="figure-' + re.escape(key) + r'">(.*?)</figure>', html_text, re.DOTALL)
+        block = re.findall(r'<figure class="wmr-figure" id="figure-' + re.escape(key) + r'">(.*?)</figure>',
+                           html_text, re.DOTALL)
         assert len(block) == 1, f"figure {key} shown {len(block)} times in the figures section"
         assert "data:image/svg+xml" in block[0], f"{key}: not shown from its SVG"
 
@@ -268,7 +271,7 @@ def test_html_typesets_offline_in_browser(html_text):
     """Open the page in headless Chromium with the network disabled; math is typeset, none in error."""
     with tempfile.TemporaryDirectory() as prof:
         p = subprocess.run(
-            [CHROMIUM, "--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
+            [str(CHROMIUM), "--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
              "--disable-background-networking", "--disable-component-update", "--disable-sync",
              f"--user-data-dir={prof}", "--proxy-server=http://127.0.0.1:9", "--proxy-bypass-list=<-loopback>",
              "--virtual-time-budget=30000", "--dump-dom", (BUILD / "report.html").as_uri()],
@@ -296,10 +299,13 @@ def test_pdf_is_a4_and_dated_from_the_commit(pdf_path):
     if not HAVE_POPPLER:
         pytest.skip("poppler-utils not installed")
     info = subprocess.run(["pdfinfo", str(pdf_path)], capture_output=True, text=True, check=True).stdout
-    w, h = map(float, re.search(r"Page size:\s+([\d.]+) x ([\d.]+) pts", info).groups())
+    size = re.search(r"Page size:\s+([\d.]+) x ([\d.]+) pts", info)
+    created = re.search(r"CreationDate:\s+(.*)", info)
+    assert size and created, info
+    w, h = map(float, size.groups())
     assert abs(w - 595.28) < 1 and abs(h - 841.89) < 1, f"not A4: {w} x {h} pt"
     epoch = commit_epoch()
-    assert time.strftime("%Y", time.gmtime(epoch)) in re.search(r"CreationDate:\s+(.*)", info).group(1)
+    assert time.strftime("%Y", time.gmtime(epoch)) in created.group(1)
 
 
 def test_pdf_words_inside_the_margins(pdf_path):
@@ -309,7 +315,8 @@ def test_pdf_words_inside_the_margins(pdf_path):
     bbox = _pdftext(pdf_path, "-bbox")
     out = []
     for page, body in enumerate(re.findall(r"<page[^>]*>(.*?)</page>", bbox, re.DOTALL), 1):
-        for x0, x1, word in re.findall(r'<word xMin="([\d.]+)" yMin="[\d.]+" xMax="([\d.]+)" yMax="[\d.]+">([^<]*)</word>', body):
+        words = r'<word xMin="([\d.]+)" yMin="[\d.]+" xMax="([\d.]+)" yMax="[\d.]+">([^<]*)</word>'
+        for x0, x1, word in re.findall(words, body):
             if float(x1) > page_w - margin + 3 or float(x0) < margin - 3:
                 out.append(f"p. {page}: {word!r} at x = {float(x0):.0f}..{float(x1):.0f}")
     assert not out, f"{len(out)} words past the margins: {out[:10]}"

@@ -24,10 +24,11 @@ from pathlib import Path
 import nbformat
 import pytest
 
-ROOT = Path(__file__).resolve().parents[2]
-REPORT = ("report.html", "report.pdf") if shutil.which("xelatex") and shutil.which("pandoc") else ("report.html",)
 from edition.ledger import COLUMNS
 from tools.build.pdf import to_latex
+
+ROOT = Path(__file__).resolve().parents[2]
+REPORT = ("report.html", "report.pdf") if shutil.which("xelatex") and shutil.which("pandoc") else ("report.html",)
 
 
 def png(rgb=(200, 30, 30)) -> bytes:
@@ -41,17 +42,22 @@ def png(rgb=(200, 30, 30)) -> bytes:
 
 FIG_PNG = png()
 LEDGER = [
-    {"id": "2", "kind": "equation", "section": "3.1", "verdict": "ok", "printed": r"\dot{\mathbf p}_i = \dot{\mathbf c} + \dot\psi\,\mathbf E\mathbf d_i",
-         "corrected": "", "why": "", "convention": r"$\dot\psi\times\mathbf d_i$ read as $(\dot\psi\mathbf k)\times\mathbf d_i$",
+    {"id": "2", "kind": "equation", "section": "3.1", "verdict": "ok",
+         "printed": r"\dot{\mathbf p}_i = \dot{\mathbf c} + \dot\psi\,\mathbf E\mathbf d_i",
+         "corrected": "", "why": "",
+         "convention": r"$\dot\psi\times\mathbf d_i$ read as $(\dot\psi\mathbf k)\times\mathbf d_i$",
          "check": "printed form proven equal to the derivation (SymPy)", "printed_holds": "yes", "residual": "< 1e-12",
          "notebook": "01_first", "anchor": "eq-2", "note": ""},
-    {"id": "3", "kind": "equation", "section": "3.2", "verdict": "typo", "printed": r"\det\mathbf J = -\tfrac{\sqrt3}{2}\cos\beta",
+    {"id": "3", "kind": "equation", "section": "3.2", "verdict": "typo",
+         "printed": r"\det\mathbf J = -\tfrac{\sqrt3}{2}\cos\beta",
          "corrected": r"\det\mathbf J = -r^3\tfrac{\sqrt3}{2}\cos\beta", "why": "the factor $r^3$ is missing",
-         "convention": "", "check": "printed form refuted ($r = 2$); corrected form proven equal to the derivation (SymPy)",
+         "convention": "",
+         "check": "printed form refuted ($r = 2$); corrected form proven equal to the derivation (SymPy)",
          "printed_holds": "no", "residual": "0", "notebook": "01_first", "anchor": "eq-3", "note": "FIXTURE-NOTE"},
     {"id": "drift", "kind": "claim", "section": "4.2", "verdict": "wrong",
          "printed": "“the WMR drifts when $\\dot\\theta_i = 0$” (FIXTURE-CLAIM)",
-         "corrected": r"with locked drives ($\dot\theta_i = 0$) the platform stands still: $\mathbf t = \mathbf 0$", "why": "$\\det\\mathbf M \\ne 0$ at 2000 configurations",
+         "corrected": r"with locked drives ($\dot\theta_i = 0$) the platform stands still: $\mathbf t = \mathbf 0$",
+         "why": "$\\det\\mathbf M \\ne 0$ at 2000 configurations",
          "convention": "", "check": "refuted by counterexample", "printed_holds": "no", "residual": "0",
          "notebook": "01_first", "anchor": "claim-drift", "note": ""},
 ]
@@ -76,13 +82,16 @@ def project(tmp_path_factory):
     nb = nbformat.v4.new_notebook()
     nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3", "language": "python"}
     nb.cells = [
-        _cell("md", "# 1. First chapter\n\nProse with $x^2$.\n\n<a id=\"eq-2\"></a>\n\n## 1.1 Equation (2)\n\n$$\\dot{\\mathbf p}_i \\tag{2}$$"),
+        _cell("md", "# 1. First chapter\n\nProse with $x^2$.\n\n<a id=\"eq-2\"></a>\n\n"
+                    "## 1.1 Equation (2)\n\n$$\\dot{\\mathbf p}_i \\tag{2}$$"),
         _cell("code", "from IPython.display import Image, Markdown, Math, display\nimport base64"),
-        _cell("code", f"key = 'fig07'\nImage(data=base64.b64decode({base64.b64encode(FIG_PNG).decode()!r}))", ["figure"]),
+        _cell("code", f"key = 'fig07'\nImage(data=base64.b64decode({base64.b64encode(FIG_PNG).decode()!r}))",
+              ["figure"]),
         _cell("md", "<a id=\"eq-3\"></a>\n\n## 1.2 Equation (3)\n\nDerivation of (3)."),
         _cell("code", "print('PRINTED-OUTPUT')\ndisplay(Markdown('Shown: $\\\\kappa = 1$ (MARKDOWN-OUTPUT)'))"),
         _cell("code", "Math(r'\\mathbf J = \\mathbf 1 \\quad (LATEX-OUTPUT)')"),
-        _cell("code", "class T:\n    def _repr_html_(self):\n        return '<table><tr><td>HTML-TABLE-OUTPUT</td></tr></table>'\nT()"),
+        _cell("code", "class T:\n    def _repr_html_(self):\n"
+                      "        return '<table><tr><td>HTML-TABLE-OUTPUT</td></tr></table>'\nT()"),
         _cell("md", "**Exercise.** EXERCISE-TEXT", ["exercise"]),
         _cell("code", "'SOLUTION-TEXT'", ["solution"]),
         _cell("code", "display(Markdown('LEDGER-CELL-OUTPUT'))", ["ledger"]),
@@ -107,7 +116,8 @@ def project(tmp_path_factory):
         (fig / f"{key}.svg").write_text(svg.replace("10\"/>", f"10\" id=\"{key}\"/>"))
         shutil.copy(ROOT / "figures" / "conventions.pdf", fig / f"{key}.pdf")     # any vector figure will do
         (fig / f"{key}.json").write_text(json.dumps({"key": key, "number": number, "title": f"Title of {key}",
-                                                     "paper_caption": paper_cap, "caption": f"OUR-CAPTION-{key} with $L = 1$",
+                                                     "paper_caption": paper_cap,
+                                                     "caption": f"OUR-CAPTION-{key} with $L = 1$",
                                                      "numbers": {}}))
     make(root, root / "build", *REPORT)
     return root
@@ -116,7 +126,8 @@ def project(tmp_path_factory):
 def make(root: Path, build: Path, *files: str) -> str:
     """``make`` the given files of the report of ``root``, in the build directory ``build``."""
     p = subprocess.run(["make", "-s", "--no-print-directory", "-j2", "-C", str(ROOT), f"WMR_ROOT={root}",
-                        f"WMR_BUILD={build}", *(str(build / f) for f in files)], capture_output=True, text=True, check=False)
+                        f"WMR_BUILD={build}", *(str(build / f) for f in files)],
+                       capture_output=True, text=True, check=False)
     assert p.returncode == 0, p.stdout + p.stderr
     return p.stdout
 
@@ -164,7 +175,8 @@ def test_counts_come_from_the_data(page):
     abstract = text(page.split('id="abstract"', 1)[1].split("<h1", 1)[0])
     assert ("Of the paper's 2 numbered equations, (2)–(3), 1 holds as printed, one carries a typo and none are "
             "wrong") in abstract
-    assert "Of the one claim of its text that this edition checks by computation, none hold and one does not" in abstract
+    assert ("Of the one claim of its text that this edition checks by computation, none hold and one does not"
+            in abstract)
     assert "finds two families of singular configurations; the paper's list does not state one of them" in abstract
     assert "Figure 7 of the paper is recomputed from the model, with one figure of this edition's own" in abstract
     part1 = text(page.split('id="part-i-findings"', 1)[1].split('id="part-ii-derivations"', 1)[0])
@@ -200,4 +212,5 @@ def test_two_builds_are_byte_identical(project, tmp_path):
     log = make(project, copy, *REPORT)
     assert "[execute]" not in log and "[assemble]" in log, log
     for name in REPORT:
-        assert (project / "build" / name).read_bytes() == (copy / name).read_bytes(), f"two builds gave different {name}"
+        same = (project / "build" / name).read_bytes() == (copy / name).read_bytes()
+        assert same, f"two builds gave different {name}"

@@ -39,8 +39,8 @@ def nudge(x, direction, magnitude=False):
         y = np.where(np.isfinite(x), np.nextafter(x, direction), x)
         return np.abs(y) if magnitude else y
     if isinstance(x, (float, np.floating)):
-        y = float(np.nextafter(x, direction)) if np.isfinite(x) else float(x)
-        return abs(y) if magnitude else y
+        z = float(np.nextafter(x, direction)) if np.isfinite(x) else float(x)
+        return abs(z) if magnitude else z
     if isinstance(x, (tuple, list)):
         return type(x)(nudge(v, direction, magnitude) for v in x)
     if isinstance(x, dict):

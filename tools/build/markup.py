@@ -112,9 +112,10 @@ class Batch:
     def fill(self, text: str) -> str:
         if self._out is None:
             raise RuntimeError("convert() first")
+        out = self._out
 
         def one(m):                      # inline: without the paragraph around a one-paragraph result
-            s = self._out[int(m.group(1))]
+            s = out[int(m.group(1))]
             if m.group(2) == "b":
                 return s
             p = re.fullmatch(r"<p>(.*)</p>", s.strip(), re.DOTALL) if self.to == "html" else None

@@ -135,14 +135,15 @@ def drift_of_psi(n=100, seed=SEED):
     for _ in range(n):
         pts = rng.uniform(-1, 1, (3, 2))
         pts -= pts.mean(0)
-        robot = Robot([OffsetWheel(tuple(p), r=0.1, d=0.05) for p in pts])
+        arms = [OffsetWheel(tuple(p), r=0.1, d=0.05) for p in pts]
+        robot, d = Robot(arms), arms[0].d
         bc = concurrent_angles(robot, rng.uniform(-0.5, 0.5, 2))
         x = locked_motion(robot, bc)
         x = x / x[0]
         D = robot.mount_points
         terms = [rotation(bb) @ np.array([-p, 0.0]) for bb, p in zip(bc, x[3:], strict=True)]
-        reading = robot.wheels[0].d / 3 * sum(Dk @ tk / (Dk @ Dk) for Dk, tk in zip(D, terms, strict=True))
-        res = max(res, abs(x[0] - f(*D.ravel(), *bc, *x[3:], robot.wheels[0].d)))
+        reading = d / 3 * sum(Dk @ tk / (Dk @ Dk) for Dk, tk in zip(D, terms, strict=True))
+        res = max(res, abs(x[0] - f(*D.ravel(), *bc, *x[3:], d)))
         gap = max(gap, abs(x[0] - reading))
     corrected = (r"\dot\psi = \frac{d\sum_{i=1}^{3}(\mathbf E\mathbf d_i)^{\mathrm T}\mathbf R_{bwi}"
                  r"\begin{bmatrix}-\dot\phi_i\\ 0\end{bmatrix}}{\sum_{i=1}^{3}\mathbf d_i^{\mathrm T}\mathbf d_i}")

@@ -91,7 +91,7 @@ def printed_determinant(n=200, seed=SEED):
     f59 = sp.lambdify(S.beta, p59.expr.rhs.subs(S.r, 1), "numpy")          # the search robots have r = 1
     Bs = np.random.default_rng(seed).uniform(-np.pi, np.pi, (n, 3))
     P59 = f59(*Bs.T)
-    rows = []
+    rows: list[dict] = []
     for first in range(0, 360, 30):
         for cw in (True, False):
             rb = Robot([CentredWheel(q, r=1.0) for q in equilateral_mounts(1.0, first, cw)])

@@ -7,6 +7,7 @@ from __future__ import annotations
 import numpy as np
 import sympy as sp
 
+from wmr.analysis.lines import Meet
 from wmr.analysis.steering import AT_INFINITY, FINITE, STILL, centre_to_wheels, instantaneous_centre
 from wmr.model.backend import SYMBOLIC
 from wmr.model.platform import E, point_row, point_velocity, rotation
@@ -109,7 +110,7 @@ def instant_centre(n=2000, seed=SEED):
     require(int(ics["translation"].kind) == AT_INFINITY and int(ics["no motion"].kind) == STILL
             and np.allclose(ics["translation"].direction, ics["nearly a translation"].direction, atol=1e-6)
             and np.allclose(ics["rotation about C"].point, 0.0), "the limits of (63)")
-    limits = [{"twist": k, "centre": KIND_NAMES[int(c.kind)], r"$\mathbf u_c$": np.round(c.point, 3),
+    limits = [{"twist": k, "centre": KIND_NAMES[Meet(int(c.kind))], r"$\mathbf u_c$": np.round(c.point, 3),
                "direction of U": np.round(c.direction, 6)} for k, c in ics.items()]
     return Derivation(det=coeffs.det(), u_c=uc, limits=limits, findings=[equation(
         63, holds and norm_ok, r"the velocity field is affine in the point with determinant $\dot\psi^2$, so for "
