@@ -303,6 +303,7 @@ def families(robot=None, n=72, exact=True):
 
     poly, c, s = det_J_polynomial(exact_bot)
     for f in out:
+        assert f.samples is not None                                 # every family above is sampled
         dj = np.abs(det_J(num, f.samples))
         f.det_J_max = float(dj.max())
         ranks = rank_F(num, f.samples)

@@ -73,14 +73,14 @@ def test_round_trip_fixed_and_swedish(tmp_path):
     dump(bot, tmp_path / "b.toml")
     back = load(tmp_path / "b.toml")
     _same_matrices(bot, back)
-    assert np.isclose(back.wheels[2].roller, np.pi / 4) and np.isclose(back.wheels[1].angle, 0.3)
+    assert np.isclose(back.wheels[2].roller, np.pi / 4) and np.isclose(back.wheels[1].angle, 0.3)  # type: ignore[attr-defined]
 
 
 def test_dump_rejects_what_is_not_a_robot():
     with pytest.raises(TypeError, match="robot"):
-        dump("robot")
+        dump("robot")  # type: ignore[arg-type]
     with pytest.raises(TypeError, match="path"):
-        dump(wmr.paper_robot(), path=3)
+        dump(wmr.paper_robot(), path=3)  # type: ignore[arg-type]
 
 
 # ------------------------------------------------------------------------------ malformed files
@@ -174,7 +174,7 @@ def test_not_utf8(tmp_path):
 
 def test_bad_arguments_are_type_errors(tmp_path):
     with pytest.raises(TypeError, match="path"):
-        load(3)
+        load(3)  # type: ignore[arg-type]
     with pytest.raises(TypeError, match="text"):
         loads(b"x")
     with pytest.raises(FileNotFoundError):

@@ -121,8 +121,8 @@ def test_repr_and_names():
 
 BAD = [
     (lambda: wmr.Robot([]), "wheels", "0"),
-    (lambda: wmr.Robot(3), "wheels", "3"),
-    (lambda: wmr.Robot([wmr.CentredWheel((0, 0), r=1), "wheel"]), "wheels[1]", "'wheel'"),
+    (lambda: wmr.Robot(3), "wheels", "3"),  # type: ignore[arg-type]
+    (lambda: wmr.Robot([wmr.CentredWheel((0, 0), r=1), "wheel"]), "wheels[1]", "'wheel'"),  # type: ignore[list-item]
     (lambda: wmr.paper_robot().J2([0.0, 0.0]), "beta", "(2,)"),
     (lambda: wmr.paper_robot().F(np.zeros((5, 4))), "beta", "(5, 4)"),
     (lambda: wmr.paper_robot().J([0.0, np.nan, 0.0]), "beta", "nan"),

@@ -26,7 +26,9 @@ from ..errors import InputValueError
 from ..model import validation as V
 from ..model.backend import NUMERIC
 from ..model.platform import cos_sin, rotated
+from ..model.robot import Robot
 from ..model.tolerance import TOL
+from ..model.types import ArrayLike
 from ._batch import for_chunks
 from .linalg import pinv_columns, rank
 
@@ -141,7 +143,7 @@ def _flat(batch, *arrays):
 
 
 @np.errstate(over="ignore", invalid="ignore")        # overflow is checked on the results (_finite)
-def forward(robot, beta, rates):
+def forward(robot: Robot, beta: ArrayLike, rates: ArrayLike) -> Solution:
     r"""Platform twist from joint rates (least squares on (21)).
 
     Parameters
@@ -206,7 +208,7 @@ def forward(robot, beta, rates):
 
 
 @np.errstate(over="ignore", invalid="ignore")
-def inverse(robot, beta, twist, beta_dot=None):
+def inverse(robot: Robot, beta: ArrayLike, twist: ArrayLike, beta_dot: ArrayLike | None = None) -> Solution:
     r"""Joint rates that realise a platform twist (unit by unit, exact or least squares).
 
     Parameters

@@ -217,4 +217,4 @@ def car(wheelbase, traction_track, steering_track, traction_radius, steering_rad
     rs = traction_radius if steering_radius is None else steering_radius
     steered = [CentredWheel((base, y), r=rs, driven={"drive": False}) for y in ((s, -s) if s else (0.0,))]
     traction = [FixedWheel((0.0, y), r=traction_radius, angle=_HALF_PI) for y in ((t, -t) if t else (0.0,))]
-    return Robot(steered + traction, name=name)
+    return Robot([*steered, *traction], name=name)

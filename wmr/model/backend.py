@@ -8,12 +8,14 @@ derivation notebooks and the numeric kernels cannot drift apart.
 """
 from __future__ import annotations
 
+from typing import TypeAlias
+
 import numpy as np
 import sympy as sp
 
 from ..errors import InputTypeError
 
-__all__ = ["NumericBackend", "SymbolicBackend", "NUMERIC", "SYMBOLIC", "is_symbolic", "choose"]
+__all__ = ["NumericBackend", "SymbolicBackend", "Backend", "NUMERIC", "SYMBOLIC", "is_symbolic", "choose"]
 
 
 class NumericBackend:
@@ -106,6 +108,8 @@ class SymbolicBackend:
         return sp.eye(n)
 
 
+#: either backend (the type of a ``backend`` argument)
+Backend: TypeAlias = NumericBackend | SymbolicBackend
 #: the NumPy backend: batched floating-point arrays
 NUMERIC = NumericBackend()
 #: the SymPy backend: exact matrices of symbols and rationals

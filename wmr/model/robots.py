@@ -16,6 +16,7 @@ import sympy as sp
 from ..errors import InputValueError
 from . import validation as V
 from .robot import Robot
+from .types import Numbers
 from .wheels import wheel_kind
 
 __all__ = ["PAPER_MOUNT_ANGLES_DEG", "PAPER_KINDS", "equilateral_mounts", "paper_robot"]
@@ -27,7 +28,8 @@ PAPER_KINDS = ("centred", "offset", "dual")
 PAPER_MOUNT_ANGLES_DEG = (180.0, 60.0, -60.0)
 
 
-def equilateral_mounts(L=1.0, first_deg=180.0, clockwise=True, exact=False):
+def equilateral_mounts(L: Numbers = 1.0, first_deg: float = 180.0, clockwise: bool = True,
+                       exact: bool = False) -> list[tuple[Numbers, Numbers]]:
     r"""Mount points at the vertices of an equilateral triangle with centroid C and circumradius L.
 
     Parameters
@@ -71,7 +73,8 @@ def equilateral_mounts(L=1.0, first_deg=180.0, clockwise=True, exact=False):
     return out
 
 
-def paper_robot(kind="centred", L=1.0, r=1.0, d=None, b=None, exact=False):
+def paper_robot(kind: str = "centred", L: Numbers = 1.0, r: Numbers = 1.0, d: Numbers | None = None,
+                b: Numbers | None = None, exact: bool = False) -> Robot:
     """The paper's three-wheel robot with its wheel numbering (see module docstring).
 
     Parameters

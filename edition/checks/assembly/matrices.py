@@ -5,6 +5,7 @@ Chapter 2's checks live in :mod:`edition.checks.assembly`; this module holds one
 from __future__ import annotations
 
 from functools import cache
+from typing import TypedDict
 
 import numpy as np
 import sympy as sp
@@ -26,8 +27,16 @@ from .. import Derivation, claim, equation, require
 __all__ = ["general_robot", "one_unit", "stacking", "functional_matrix", "null_space_of_F", "mobility_offset"]
 
 
+class Dimensions(TypedDict):
+    """The keyword arguments of :func:`wmr.model.robots.paper_robot` that size a robot."""
+
+    L: float
+    r: float
+    d: float
+
+
 #: the paper's offset-wheel robot used for numbers in this chapter (metres)
-PAPER = dict(L=0.3, r=0.1, d=0.05)
+PAPER = Dimensions(L=0.3, r=0.1, d=0.05)
 
 
 @cache

@@ -9,13 +9,15 @@ from __future__ import annotations
 import math
 import numbers
 from dataclasses import dataclass
+from typing import TypeAlias, cast
 
 import numpy as np
 
 from ...errors import InputTypeError, InputValueError
 from ...model import validation as V
+from ...model.types import ArrayLike, FloatArray
 
-__all__ = ["Grid", "Sample", "BLOCK", "count", "as_source"]
+__all__ = ["Grid", "Sample", "Angles", "BLOCK", "count", "as_source"]
 
 #: random samples are drawn in blocks of this size (see Sample): a chunk is a whole number of blocks
 BLOCK = 1 << 16
@@ -28,7 +30,7 @@ def _bounds(lo, hi):
     return float(lo), float(hi)
 
 
-def count(name, value, minimum=1):
+def count(name: str, value: object, minimum: int = 1) -> int:
     """``value`` as an ``int`` of at least ``minimum``: an integer, or a float with an integral value (``1e6``).
 
     Parameters
@@ -97,7 +99,7 @@ class Grid:
         object.__setattr__(self, "lo", lo)
         object.__setattr__(self, "hi", hi)
 
-    def shape(self, w):
+    def shape(self, w: int) -> tuple[int, ...]:
         """Values per angle.
 
         Parameters
@@ -112,10 +114,10 @@ class Grid:
         if isinstance(self.steps, tuple):
             if len(self.steps) != w:
                 raise InputValueError(f"Grid.steps has {len(self.steps)} entries, the robot has w = {w} angles")
-            return self.steps
-        return (self.steps,) * w
+            return cast(tuple[int, ...], self.steps)      # (ints: checked when the grid was made)
+        return (cast(int, self.steps),) * w
 
-    def size(self, w):
+    def size(self, w: int) -> int:
         """Number of configurations, :math:`\\prod_i steps_i`.
 
         Parameters
@@ -129,7 +131,7 @@ class Grid:
         """
         return math.prod(self.shape(w))
 
-    def configurations(self, w, start, stop):
+    def configurations(self, w: int, start: int, stop: int) -> FloatArray:
         """Configurations ``start .. stop-1`` of the grid's numbering.
 
         Parameters
@@ -189,7 +191,7 @@ class Sample:
         object.__setattr__(self, "lo", lo)
         object.__setattr__(self, "hi", hi)
 
-    def size(self, w):
+    def size(self, w: int) -> int:
         """Number of configurations (``n``, whatever ``w``).
 
         Parameters
@@ -203,7 +205,7 @@ class Sample:
         """
         return self.n
 
-    def configurations(self, w, start, stop):
+    def configurations(self, w: int, start: int, stop: int) -> FloatArray:
         """Configurations ``start .. stop-1`` of the sample.
 
         Parameters
@@ -234,7 +236,7 @@ class _Explicit:
         return self.beta[start:stop]
 
 
-def as_source(angles, w):
+def as_source(angles: Angles, w: int) -> Grid | Sample | _Explicit:
     """The configurations of a sweep: a :class:`Grid` or :class:`Sample` as given, or explicit angles (N, w).
 
     Parameters
@@ -259,3 +261,7 @@ def as_source(angles, w):
     if beta.shape[0] == 0:
         raise InputValueError(f"angles must hold at least one configuration, got shape {np.shape(angles)}")
     return _Explicit(beta)
+
+
+#: what a sweep runs over: a :class:`Grid`, a :class:`Sample`, or explicit configurations (N, w)
+Angles: TypeAlias = Grid | Sample | ArrayLike

@@ -6,14 +6,18 @@ Dask worker runs), and the partial reductions are merged as they arrive.
 """
 from __future__ import annotations
 
+from collections.abc import Callable, Sequence
+from typing import Any
+
 import numpy as np
 
 from ...errors import InputTypeError, InputValueError
 from ...model import validation as V
+from ...model.robot import Robot
 from .analyses import ANALYSES, J_length
-from .configurations import BLOCK, Sample, as_source, count
+from .configurations import BLOCK, Angles, Sample, as_source, count
 from .reduction import Partial
-from .result import finish
+from .result import Sweep, finish
 
 __all__ = ["sweep", "QUANTILES", "CHUNK"]
 
@@ -41,8 +45,9 @@ def _evaluate(task, start, stop, threads):
     return part
 
 
-def sweep(robot, analysis, angles, *, L=None, quantiles=QUANTILES, keep=False, chunk=CHUNK,
-          progress=None, client=None):
+def sweep(robot: Robot, analysis: str, angles: Angles, *, L: float | None = None,
+          quantiles: Sequence[float] = QUANTILES, keep: bool = False, chunk: int = CHUNK,
+          progress: Callable[[int, int], object] | None = None, client: Any = None) -> Sweep:
     r"""Evaluate an analysis over a grid or sample of configurations, chunk by chunk.
 
     Each chunk of configurations :math:`\boldsymbol\beta_k\in\mathbb R^w` is evaluated with the

@@ -63,7 +63,7 @@ class Sweep:
     infinite: int
     values: np.ndarray | None = None
 
-    def summary(self):
+    def summary(self) -> str:
         """A few lines of text that state the result (used by ``wmr sweep``).
 
         Returns

@@ -23,10 +23,11 @@ Examples
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TypeAlias
 
 import numpy as np
 
-__all__ = ["Disc", "Link", "Rollers", "Pivot"]
+__all__ = ["Disc", "Link", "Rollers", "Pivot", "Part"]
 
 
 @dataclass(frozen=True)
@@ -108,3 +109,7 @@ class Pivot:
 
     point: np.ndarray
     r: float
+
+
+#: any of the parts (what :meth:`wmr.model.wheels.WheelUnit.parts` returns a tuple of)
+Part: TypeAlias = Disc | Link | Rollers | Pivot

@@ -23,11 +23,13 @@ import numpy as np
 
 from ...errors import InputValueError
 from .. import checks as C
-from ..backend import NUMERIC
+from ..backend import NUMERIC, Backend
 from ..tolerance import TOL
+from ..types import FloatArray, Matrix
 from .filekeys import FileKey
 from .joints import Joint
-from .parts import Rollers
+from .mechanism import Body
+from .parts import Part, Rollers
 from .unsteered import UnsteeredUnit, constant
 
 __all__ = ["NO_FAITHFUL_MECHANISM", "SwedishWheel"]
@@ -126,7 +128,7 @@ class SwedishWheel(UnsteeredUnit):
                                   f"a conventional wheel: use FixedWheel), got {C.show(self.roller)}")
         object.__setattr__(self, "roller", g)
 
-    def local_block(self, backend=NUMERIC):
+    def local_block(self, backend: Backend = NUMERIC) -> Matrix:
         r"""The local block :math:`\mathbf L_i = \begin{bmatrix}0 & r\sin\gamma\\ -r & -r\cos\gamma\end{bmatrix}`.
 
         Its columns are those of :math:`\dot\theta_i` and :math:`\dot\sigma_i`.
@@ -143,7 +145,7 @@ class SwedishWheel(UnsteeredUnit):
         r, g = self.r, self.roller
         return backend.matrix([[0, r * backend.sin(g)], [-r, -r * backend.cos(g)]])
 
-    def roller_axis(self):
+    def roller_axis(self) -> FloatArray:
         r"""The roller axis :math:`\mathbf a_i = \mathbf R(\beta_i)[\cos\gamma\ \ \sin\gamma]^T`, body frame (numbers).
 
         Returns
@@ -158,7 +160,7 @@ class SwedishWheel(UnsteeredUnit):
         t = C.number("angle", self.angle) + C.number("roller", self.roller)
         return np.array([np.cos(t), np.sin(t)])
 
-    def parts(self, beta):
+    def parts(self, beta: float) -> tuple[Part, ...]:
         """The wheel without a rolling arrow (it rolls every way), and its rollers (see :meth:`WheelUnit.parts`).
 
         Parameters
@@ -174,7 +176,7 @@ class SwedishWheel(UnsteeredUnit):
         pts = self.points(angle)
         return self._discs(pts, angle, arrow=False) + (Rollers(pts["H"], angle, float(self.r), float(self.roller)),)
 
-    def root_body(self, height):
+    def root_body(self, height: float) -> Body:
         """None a physics engine could take faithfully: refused (:data:`NO_FAITHFUL_MECHANISM`).
 
         Parameters
@@ -193,7 +195,7 @@ class SwedishWheel(UnsteeredUnit):
         """
         raise NotImplementedError(f"Swedish wheel at {tuple(float(v) for v in self.position)}: {NO_FAITHFUL_MECHANISM}")
 
-    def isotropy_advice(self):
+    def isotropy_advice(self) -> str | None:
         """Omni rollers (:math:`\\gamma = \\pi/2`) make the block :math:`r\\,\\mathbf R`, isotropic; None if they are.
 
         Returns
