@@ -50,7 +50,7 @@ def test_load_reads_the_schema(tmp_path):
 
 def test_integers_are_numbers():
     bot = loads('[[wheel]]\ntype = "offset"\nposition = [1, 0]\nradius = 1\noffset = 0\n')
-    assert bot.wheels[0].position == (1.0, 0.0) and bot.wheels[0].d == 0.0
+    assert bot.wheels[0].position == (1.0, 0.0) and bot.wheels[0].d == 0.0  # type: ignore[attr-defined]
 
 
 @pytest.mark.parametrize("robot", [wmr.paper_robot("centred", L=0.3, r=0.05),
@@ -176,7 +176,7 @@ def test_bad_arguments_are_type_errors(tmp_path):
     with pytest.raises(TypeError, match="path"):
         load(3)  # type: ignore[arg-type]
     with pytest.raises(TypeError, match="text"):
-        loads(b"x")
+        loads(b"x")  # type: ignore[arg-type]
     with pytest.raises(FileNotFoundError):
         load(tmp_path / "nowhere.toml")
 

@@ -19,6 +19,7 @@ import argparse
 import importlib
 import sys
 import traceback
+from collections.abc import Sequence
 
 from ..errors import InputError, MissingDependencyError
 
@@ -68,7 +69,7 @@ def _parser():
     return p
 
 
-def main(argv=None):
+def main(argv: Sequence[str] | None = None) -> int:
     """Run the command line.
 
     Parameters

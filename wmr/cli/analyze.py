@@ -13,13 +13,19 @@ from __future__ import annotations
 
 import json
 import math
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:                                   # (the command imports the library when it runs)
+    import argparse
+
+    from ..analysis.overview import Overview
 
 __all__ = ["HELP", "add_arguments", "run", "as_json", "table"]
 
 HELP = "Campion class, mobility (rank F), isotropy, dead zone and singular configurations of a robot file"
 
 
-def add_arguments(parser):
+def add_arguments(parser: argparse.ArgumentParser) -> None:
     """Options of ``wmr analyze``.
 
     Parameters
@@ -51,7 +57,7 @@ def _g(x):
     return f"{x:.4g}" if math.isfinite(x) else "inf"
 
 
-def as_json(ov):
+def as_json(ov: Overview) -> dict[str, Any]:
     """The JSON object of an overview.
 
     Parameters
@@ -76,7 +82,7 @@ def as_json(ov):
                           "rank_F": f["rank_F"]} for f in ov.singular]}
 
 
-def table(ov):
+def table(ov: Overview) -> str:
     """The overview as a short aligned table (one fact per row).
 
     Parameters
@@ -119,7 +125,7 @@ def table(ov):
     return "\n".join(f"{k:<{width}}  {v}" for k, v in rows)
 
 
-def run(args):
+def run(args: argparse.Namespace) -> int:
     """Run ``wmr analyze``.
 
     Parameters

@@ -16,17 +16,21 @@ exactly when the rates are compatible.
 from __future__ import annotations
 
 import json
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from ._numbers import clean, fmt, numbers
+
+if TYPE_CHECKING:
+    import argparse
 
 __all__ = ["HELP", "add_arguments", "run"]
 
 HELP = "the platform twist (least squares) and the slip residual for steering angles and wheel rates"
 
 
-def add_arguments(parser):
+def add_arguments(parser: argparse.ArgumentParser) -> None:
     """Options of ``wmr fk``.
 
     Parameters
@@ -46,7 +50,7 @@ def add_arguments(parser):
     parser.add_argument("--json", action="store_true", help="print JSON instead of a table")
 
 
-def run(args):
+def run(args: argparse.Namespace) -> int:
     """Run ``wmr fk``.
 
     Parameters

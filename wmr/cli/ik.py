@@ -21,17 +21,21 @@ from __future__ import annotations
 
 import json
 import math
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from ._numbers import clean, fmt, number, numbers
+
+if TYPE_CHECKING:
+    import argparse
 
 __all__ = ["HELP", "add_arguments", "run"]
 
 HELP = "steering angles and wheel rates for a commanded twist (inverse kinematics)"
 
 
-def add_arguments(parser):
+def add_arguments(parser: argparse.ArgumentParser) -> None:
     """Options of ``wmr ik``.
 
     Parameters
@@ -71,7 +75,7 @@ def _slip(sol):
     return float(np.max(np.abs(sol.residual))) if sol.residual.size else 0.0
 
 
-def run(args):
+def run(args: argparse.Namespace) -> int:
     """Run ``wmr ik``.
 
     Parameters

@@ -18,18 +18,22 @@ from __future__ import annotations
 
 import json
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from ..errors import InputValueError
 from ._numbers import fmt, number
 
+if TYPE_CHECKING:
+    import argparse
+
 __all__ = ["HELP", "add_arguments", "run"]
 
 HELP = "the robot in MuJoCo following a commanded twist (needs mujoco); --mjcf writes the model"
 
 
-def add_arguments(parser):
+def add_arguments(parser: argparse.ArgumentParser) -> None:
     """Options of ``wmr simulate``.
 
     Parameters
@@ -64,7 +68,7 @@ def _params(items):
     return Params(**out)
 
 
-def run(args):
+def run(args: argparse.Namespace) -> int:
     """Run ``wmr simulate``.
 
     Parameters

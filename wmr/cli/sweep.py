@@ -23,7 +23,7 @@ from ..errors import InputValueError
 HELP = "evaluate rank F, mobility, det J or a condition number over a grid or a sample of steering angles"
 
 
-def add_arguments(parser):
+def add_arguments(parser: argparse.ArgumentParser) -> None:
     """Options of ``wmr sweep``.
 
     Parameters
@@ -131,7 +131,7 @@ def _as_json(res):
             "counts": {str(k): n for k, n in res.counts.items()}, "infinite": res.infinite}
 
 
-def run(args):
+def run(args: argparse.Namespace) -> int:
     """Run ``wmr sweep``.
 
     Parameters

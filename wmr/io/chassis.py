@@ -17,15 +17,17 @@ Examples
 from __future__ import annotations
 
 from collections.abc import Sequence
+from typing import Any
 
 from ..errors import InputTypeError
 from ..model import validation as V
+from ..model.types import ArrayLike, FloatArray
 from .extras import require
 
 __all__ = ["twist_of", "chassis_speeds", "is_chassis_speeds"]
 
 
-def is_chassis_speeds(obj):
+def is_chassis_speeds(obj: object) -> bool:
     """True for a WPILib ``ChassisSpeeds`` or ``Twist2d`` (any object with their attributes), or a sequence of them.
 
     Parameters
@@ -52,7 +54,7 @@ def _one_twist(obj):
                          f"{V.show(obj)}")
 
 
-def twist_of(speeds):
+def twist_of(speeds: Any) -> FloatArray:
     r"""wmr's twist :math:`[\dot\psi, \dot x, \dot y]` of a ``ChassisSpeeds`` (or the increment of a ``Twist2d``).
 
     Parameters
@@ -74,7 +76,7 @@ def twist_of(speeds):
     return V.finite_array("speeds", _one_twist(speeds))
 
 
-def chassis_speeds(twist):
+def chassis_speeds(twist: ArrayLike) -> Any:
     r"""WPILib's ``ChassisSpeeds(vx, vy, omega)`` of a wmr twist :math:`[\dot\psi, \dot x, \dot y]`.
 
     Parameters

@@ -43,6 +43,7 @@ from ..errors import InputError, InputTypeError, InputValueError, RobotFileError
 from ..model import validation as V
 from ..model.robot import Robot
 from ..model.tolerance import near_zero
+from ..model.types import PathLike
 from ..model.wheels import wheel_kinds
 from ..model.wheels.filekeys import toml_string, toml_text
 
@@ -53,7 +54,7 @@ _TOP_KEYS = ("name", "wheel")
 _DRIVEN = "driven"
 
 
-def wheel_keys():
+def wheel_keys() -> dict[str, tuple[str, ...]]:
     """The keys of each wheel kind's table, as the kinds declare them (all required; ``driven`` is optional).
 
     Returns
@@ -167,7 +168,7 @@ def _wheel(k, table, lines, fail):
         fail(lines.of(k), name, str(exc))
 
 
-def loads(text, source="<string>"):
+def loads(text: str, source: str = "<string>") -> Robot:
     """The robot described by the TOML text of a robot file.
 
     Parameters
@@ -244,7 +245,7 @@ def loads(text, source="<string>"):
         fail(lines.of(None, "wheel"), "wheel", str(exc))
 
 
-def load(path):
+def load(path: PathLike) -> Robot:
     """The robot described by a robot file (TOML).
 
     Parameters
@@ -289,7 +290,7 @@ def _value(v):
     return "[" + ", ".join(_float(x) for x in v) + "]" if isinstance(v, list) else _float(v)
 
 
-def dump(robot, path=None):
+def dump(robot: Robot, path: PathLike | None = None) -> str:
     """The TOML text of a robot file for ``robot`` (and write it to ``path`` if given).
 
     ``load(path)`` of the result builds the same matrices (angles go through degrees, within a
