@@ -110,9 +110,8 @@ class Batch:
         self._out = [self.post(o) for o in out] if self.post else out
 
     def fill(self, text: str) -> str:
-        if self._out is None:
+        if (out := self._out) is None:
             raise RuntimeError("convert() first")
-        out = self._out
 
         def one(m):                      # inline: without the paragraph around a one-paragraph result
             s = out[int(m.group(1))]
