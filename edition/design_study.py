@@ -179,7 +179,9 @@ def singular_rotation(U, length=0.6, width=0.4):
     if np.isfinite(k):
         return Feedback(False, f"About U = ({U[0]:g}, {U[1]:g}) the robot is well defined: "
                                f"$\\kappa(\\mathbf J) = {k:.3g}$.")
-    c, R = mount_circle(bot)
+    circle = mount_circle(bot)
+    assert circle is not None                      # kappa = inf about U: the mount points are concyclic
+    c, R = circle
     return Feedback(True, f"$\\kappa(\\mathbf J) = \\infty$ about U: U is {np.linalg.norm(U - c):.4g} m from the "
                           f"centre, on the circle of radius {R:.4g} m through the four modules.")
 

@@ -56,7 +56,7 @@ def test_paper_robots(scale):
     assert {"i", "i'", "v-C", "v-P", "v"} <= {f["family"] for f in c.singular}
     o = overview(wmr.paper_robot("offset", L=0.3 * scale, r=0.05 * scale), grid=3000, twists=200)
     assert (o.rank_F, o.nullity, o.rank_F_range) == (6, 3, (6, 6)) and o.singular == []
-    assert np.allclose(o.kappa_J_range, 1.0) and np.isclose(o.dead_zone, 0.05 * scale)
+    assert np.allclose(o.kappa_J_range, 1.0) and o.dead_zone is not None and np.isclose(o.dead_zone, 0.05 * scale)
     d = overview(wmr.paper_robot("dual", L=0.3 * scale, r=0.05 * scale), grid=3000, twists=200)
     assert (d.rank_F, d.nullity_range) == (6, (3, 4)) and d.kappa_J2 == np.inf and "no choice" in d.advice[0]
 
@@ -85,7 +85,7 @@ def test_singular_families_are_singular_and_the_others_are_not():
 
 def test_bad_arguments():
     with pytest.raises(TypeError, match="robot"):
-        overview("robot")
+        overview("robot")  # type: ignore[arg-type]
     with pytest.raises(ValueError, match="grid"):
         configurations(wmr.paper_robot(), grid=0)
     with pytest.raises(ValueError, match="L"):

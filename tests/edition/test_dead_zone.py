@@ -9,4 +9,5 @@ from wmr.analysis.overview import dead_zone_radius
 def test_dead_zone_agrees_with_the_simulation():
     bot = wmr.paper_robot("offset", L=0.4, r=0.1, d=0.04)
     sim = dead_zone(bot)
-    assert np.isclose(sim["radius"], dead_zone_radius(bot), rtol=1e-6)
+    radius = dead_zone_radius(bot)
+    assert radius is not None and np.isclose(sim["radius"], radius, rtol=1e-6)

@@ -23,13 +23,16 @@ isotropic exactly when C is the centroid of the mount points.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 
 from ..model import validation as V
 from ..model.backend import NUMERIC
 from ..model.platform import wrap_angle
+from ..model.robot import Robot
 from ..model.tolerance import TOL
+from ..model.types import FloatArray
 from .classes import campion_class
 from .isotropy import characteristic_length
 from .linalg import condition_number, rank
@@ -47,7 +50,7 @@ GRID_SIZE = 20000
 TWISTS = 2000
 
 
-def configurations(robot, grid=GRID_SIZE, twists=TWISTS, seed=0):
+def configurations(robot: Robot, grid: int = GRID_SIZE, twists: int = TWISTS, seed: int = 0) -> FloatArray:
     """The configurations :func:`overview` examines: a grid over the steered angles and motion configurations.
 
     Parameters
@@ -81,7 +84,7 @@ def configurations(robot, grid=GRID_SIZE, twists=TWISTS, seed=0):
     seed = V.integer("seed", seed, minimum=0)
     w, steered = robot.w, np.array(robot.steered, dtype=bool)
     s = int(steered.sum())
-    parts = []
+    parts: list[FloatArray] = []
     if s:
         steps = max(4, int(np.floor(grid ** (1.0 / s) + 1e-9)))
         if steps ** s <= 4 * grid:
@@ -102,7 +105,7 @@ def configurations(robot, grid=GRID_SIZE, twists=TWISTS, seed=0):
     return np.concatenate(parts)
 
 
-def dead_zone_radius(robot):
+def dead_zone_radius(robot: Robot) -> float | None:
     r"""Radius of the dead zone of a robot on offset wheels: C's circle when the units are steered without driving.
 
     With every unit an offset wheel of the same offset d, steering all units together with the
@@ -165,7 +168,7 @@ def _family(robot, beta):
     meet = lines_concurrency(P[lined], u[lined])
     if meet.kind == AT_INFINITY:
         return "parallel"
-    if meet.kind != FINITE:
+    if meet.kind != FINITE or meet.point is None:
         return "other"
     scale = float(np.abs(robot.mount_points).max())
     if np.linalg.norm(meet.point) <= TOL * scale:
@@ -183,7 +186,7 @@ def _describe(family):
     return FAMILIES.get(family, family)
 
 
-def singular_families(robot, L=None):
+def singular_families(robot: Robot, L: float | None = None) -> list[dict[str, Any]]:
     r"""Families of singular configurations, :math:`\operatorname{rank}\mathbf J < 3` (56), with one example each.
 
     :math:`\mathbf J = \mathbf J_{L1}^T\mathbf J_2` loses rank where the wheel rates no longer
@@ -351,7 +354,7 @@ def _advice(robot, L):
     return out, {"J_L1": jl1, "J2": bool(j2)}
 
 
-def overview(robot, grid=GRID_SIZE, twists=TWISTS, seed=0):
+def overview(robot: Robot, grid: int = GRID_SIZE, twists: int = TWISTS, seed: int = 0) -> Overview:
     """Class, mobility, isotropy, dead zone and singular families of a robot (see module notes).
 
     Parameters
