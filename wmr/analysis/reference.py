@@ -23,7 +23,7 @@ from ..model import validation as V
 from ..model.backend import NUMERIC
 from ..model.robot import Robot
 from ..model.tolerance import near_zero
-from ..model.types import ArrayLike, BoolArray, FloatArray, IntArray
+from ..model.types import ArrayLike, BoolArray, FloatArray, IntArray, Twist
 from .linalg import column_norms, kappa_from_singular_values, rank_from_singular_values
 
 __all__ = ["J2", "F", "J", "rank", "rank_F", "det", "condition_number", "forward", "inverse"]
@@ -204,7 +204,7 @@ def forward(robot: Robot, beta: ArrayLike, rates: ArrayLike) -> tuple[FloatArray
 
 
 @np.errstate(over="ignore", invalid="ignore")
-def inverse(robot: Robot, beta: ArrayLike, twist: ArrayLike,
+def inverse(robot: Robot, beta: ArrayLike, twist: Twist,
             beta_dot: ArrayLike | None = None) -> tuple[FloatArray, FloatArray, BoolArray]:
     r"""Joint rates from the pseudo-inverse of the whole system, the units' steering rows appended.
 
@@ -229,7 +229,7 @@ def inverse(robot: Robot, beta: ArrayLike, twist: ArrayLike,
     admissible : numpy.ndarray of bool (...)
     """
     robot = V.numeric_robot(robot)
-    twist = V.finite_array("twist", twist, last=3)
+    twist = V.twist_array("twist", twist)
     beta_dot = None if beta_dot is None else V.finite_array("beta_dot", beta_dot, last=robot.w)
     V.batch_shape({"beta": V.finite_array("beta", beta, last=robot.w), "twist": twist, "beta_dot": beta_dot})
     B = J2(robot, beta)

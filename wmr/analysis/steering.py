@@ -19,7 +19,7 @@ from ..model import validation as V
 from ..model.platform import point_velocity
 from ..model.robot import Robot
 from ..model.tolerance import TOL
-from ..model.types import ArrayLike, FloatArray
+from ..model.types import ArrayLike, FloatArray, Twist
 from ._batch import for_chunks
 from .lines import AT_INFINITY, FINITE, STILL
 
@@ -52,7 +52,7 @@ class InstantCentre:
     direction: np.ndarray
 
 
-def instantaneous_centre(twist: ArrayLike, length: float | None = None) -> InstantCentre:
+def instantaneous_centre(twist: Twist, length: float | None = None) -> InstantCentre:
     r"""Instantaneous centre of rotation (63) of platform twists.
 
     The centre is **at infinity** (a translation) when :math:`|\dot\psi|\,\ell \le \mathrm{TOL}\,
@@ -79,7 +79,7 @@ def instantaneous_centre(twist: ArrayLike, length: float | None = None) -> Insta
     >>> ic.point.tolist()
     [-2.0, 0.0]
     """
-    t = V.finite_array("twist", twist, last=3)
+    t = V.twist_array("twist", twist)
     length = None if length is None else V.number("length", V.positive("length", length))
     psi, c = t[..., 0], t[..., 1:]
     big = np.max(np.abs(c), axis=-1)                                 # speeds up to 2.4e308: scaled first
@@ -107,7 +107,7 @@ def instantaneous_centre(twist: ArrayLike, length: float | None = None) -> Insta
     return InstantCentre(kind, point, direction)
 
 
-def steering_angles(robot: Robot, twist: ArrayLike, current: ArrayLike | None = None) -> FloatArray:
+def steering_angles(robot: Robot, twist: Twist, current: ArrayLike | None = None) -> FloatArray:
     r"""Steering angles :math:`\beta_i` that make ``twist`` admissible for centred and dual wheels.
 
     Each wheel plane is set parallel to the velocity :math:`\dot{\mathbf p}_i = \dot{\mathbf c} +
@@ -142,7 +142,7 @@ def steering_angles(robot: Robot, twist: ArrayLike, current: ArrayLike | None = 
     [0.0, -120.0, 120.0]
     """
     robot = V.numeric_robot(robot)
-    t = V.finite_array("twist", twist, last=3)
+    t = V.twist_array("twist", twist)
     w = robot.w
     if current is not None:
         current = V.finite_array("current", current, last=w)
@@ -175,7 +175,7 @@ def steering_angles(robot: Robot, twist: ArrayLike, current: ArrayLike | None = 
     return beta.reshape(batch + (w,))
 
 
-def centre_to_wheels(twist: ArrayLike, d: ArrayLike) -> FloatArray:
+def centre_to_wheels(twist: Twist, d: ArrayLike) -> FloatArray:
     r"""Vectors from the mount points to U, :math:`\mathbf u_i = \mathbf E\dot{\mathbf c}/\dot\psi - \mathbf d_i` (64).
 
     Parameters

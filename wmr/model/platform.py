@@ -17,11 +17,11 @@ from __future__ import annotations
 import numpy as np
 
 from ..errors import InputTypeError, InputValueError
-from .arrays import batch_shape, finite_array, symbolic_matrix
+from .arrays import batch_shape, finite_array, symbolic_matrix, twist_array
 from .backend import NUMERIC, Backend, choose
 from .checks import integer, point, positive, real, show
 from .tolerance import TOL
-from .types import ArrayLike, FloatArray, Matrix, Numbers, Point
+from .types import ArrayLike, FloatArray, Matrix, Numbers, Point, Twist
 
 __all__ = ["E", "rotation", "cos_sin", "rotated", "wrap_angle", "line_angle", "point_row", "point_velocity"]
 
@@ -137,7 +137,7 @@ def rotated(beta: Numbers, M: Matrix, EM: Matrix, axes: int = 2, backend: Backen
     ----------
     beta : array (...), sympy.Expr, or pair (cos_beta, sin_beta) of arrays (...)
         The angle, or its cosine and sine when the caller already has them.
-    M, EM : array (..., \*block) or sympy.Matrix
+    M, EM : array (..., *block) or sympy.Matrix
         The block and its image :math:`\mathbf E\mathbf M` (or the same linear image of both);
         broadcast against ``beta``.
     axes : int, optional
@@ -147,7 +147,7 @@ def rotated(beta: Numbers, M: Matrix, EM: Matrix, axes: int = 2, backend: Backen
 
     Returns
     -------
-    numpy.ndarray (..., \*block) or sympy.Matrix
+    numpy.ndarray (..., *block) or sympy.Matrix
 
     Examples
     --------
@@ -275,7 +275,7 @@ def point_row(d: Point, L: Numbers = 1, backend: Backend | None = None) -> Matri
     return M
 
 
-def point_velocity(twist: ArrayLike, d: ArrayLike) -> FloatArray:
+def point_velocity(twist: Twist, d: ArrayLike) -> FloatArray:
     r"""Velocity :math:`\dot{\mathbf p} = \dot{\mathbf c} + \dot\psi\mathbf E\mathbf d` (2) of platform points.
 
     Parameters
@@ -294,7 +294,7 @@ def point_velocity(twist: ArrayLike, d: ArrayLike) -> FloatArray:
     >>> point_velocity([1.0, 0.0, 0.0], [2.0, 0.0]).tolist()     # spin: (psi_dot k) x d
     [0.0, 2.0]
     """
-    t = finite_array("twist", twist, last=3)
+    t = twist_array("twist", twist)
     d = finite_array("d", d, last=2)
     batch_shape({"twist": t, "d": d})
     with np.errstate(over="ignore", invalid="ignore"):

@@ -16,13 +16,13 @@ from ..analysis.steering import steering_angles
 from ..model import validation as V
 from ..model.platform import point_velocity
 from ..model.robot import Robot
-from ..model.types import ArrayLike, FloatArray
+from ..model.types import ArrayLike, FloatArray, Twist
 from .recording import Schedule
 
 __all__ = ["start_angles", "twist_schedule"]
 
 
-def start_angles(robot: Robot, twist: ArrayLike) -> FloatArray:
+def start_angles(robot: Robot, twist: Twist) -> FloatArray:
     r"""Steering angles to start a constant twist from.
 
     Units that roll in their plane (centred and dual wheels): :func:`wmr.steering_angles` (wheel planes
@@ -51,7 +51,7 @@ def start_angles(robot: Robot, twist: ArrayLike) -> FloatArray:
     return beta
 
 
-def twist_schedule(robot: Robot, twist: ArrayLike, seconds: float, beta0: ArrayLike | None = None,
+def twist_schedule(robot: Robot, twist: Twist, seconds: float, beta0: ArrayLike | None = None,
                    dt: float = 0.05) -> Schedule:
     r"""The joint commands of a constant body twist, from wmr's inverse kinematics.
 

@@ -32,13 +32,13 @@ import numpy as np
 from ..errors import InputValueError
 from ..model import validation as V
 from ..model.robot import Robot
-from ..model.types import ArrayLike, FloatArray
+from ..model.types import ArrayLike, FloatArray, Twist
 from .modules import swerve_robot
 
 __all__ = ["desaturate", "desaturation_scale", "cosine_compensate", "se2_exp", "se2_log", "discretize"]
 
 
-def desaturation_scale(robot: Robot, twist: ArrayLike, max_speed: float) -> FloatArray:
+def desaturation_scale(robot: Robot, twist: Twist, max_speed: float) -> FloatArray:
     r"""The factor :math:`k = \min(1, s_{\max}/\max_i s_i)` that brings the fastest module to ``max_speed``.
 
     Parameters
@@ -56,7 +56,7 @@ def desaturation_scale(robot: Robot, twist: ArrayLike, max_speed: float) -> Floa
         In :math:`(0, 1]`; 1 for the zero twist.
     """
     robot = swerve_robot(robot)
-    t = V.finite_array("twist", twist, last=3)
+    t = V.twist_array("twist", twist)
     max_speed = V.number("max_speed", V.positive("max_speed", max_speed))
     d = np.asarray(robot.mount_points, dtype=float)
     with np.errstate(over="ignore", invalid="ignore"):
@@ -74,7 +74,7 @@ def desaturation_scale(robot: Robot, twist: ArrayLike, max_speed: float) -> Floa
     return k
 
 
-def desaturate(robot: Robot, twist: ArrayLike, max_speed: float) -> FloatArray:
+def desaturate(robot: Robot, twist: Twist, max_speed: float) -> FloatArray:
     r"""Scale the twist so that no module exceeds ``max_speed``, keeping the instantaneous centre.
 
     :math:`k\,\mathbf t` with :math:`k` of :func:`desaturation_scale`: the angles do not change, the
@@ -100,7 +100,7 @@ def desaturate(robot: Robot, twist: ArrayLike, max_speed: float) -> FloatArray:
     >>> desaturate(bot, [0.0, 3.0, 4.0], max_speed=2.0).round(12).tolist()   # modules at 5 m/s
     [0.0, 1.2, 1.6]
     """
-    t = V.finite_array("twist", twist, last=3)
+    t = V.twist_array("twist", twist)
     return t * desaturation_scale(robot, t, max_speed)[..., None]
 
 
@@ -141,7 +141,7 @@ def _coefficients(theta):
     return np.sinc(theta / np.pi), np.sin(theta / 2) * np.sinc(theta / (2 * np.pi))
 
 
-def se2_exp(twist: ArrayLike, dt: float = 1.0) -> FloatArray:
+def se2_exp(twist: Twist, dt: float = 1.0) -> FloatArray:
     r"""The pose reached by holding a body twist for ``dt``: the SE(2) exponential.
 
     Parameters
@@ -163,7 +163,7 @@ def se2_exp(twist: ArrayLike, dt: float = 1.0) -> FloatArray:
     >>> se2_exp([np.pi, np.pi, 0.0], dt=1.0).round(12).tolist()    # half a turn about (0, 1)
     [3.14159265359, 0.0, 2.0]
     """
-    t = V.finite_array("twist", twist, last=3)
+    t = V.twist_array("twist", twist)
     dt = V.number("dt", V.positive("dt", dt))
     with np.errstate(over="ignore", invalid="ignore"):
         g = t * dt
@@ -216,7 +216,7 @@ def se2_log(delta: ArrayLike, dt: float = 1.0) -> FloatArray:
     return out
 
 
-def discretize(twist: ArrayLike, dt: float) -> FloatArray:
+def discretize(twist: Twist, dt: float) -> FloatArray:
     r"""The twist that, held for ``dt``, ends where the components of ``twist`` would if independent.
 
     :func:`se2_log` of :math:`(\dot\psi\Delta t, \dot x\Delta t, \dot y\Delta t)` over :math:`\Delta t`:
@@ -239,7 +239,7 @@ def discretize(twist: ArrayLike, dt: float) -> FloatArray:
     >>> (se2_exp(tw, 0.5) / 0.5).round(12).tolist()                   # ends at (psi, x, y) = t dt
     [1.0, 1.0, ...0.0]
     """
-    t = V.finite_array("twist", twist, last=3)
+    t = V.twist_array("twist", twist)
     dt = V.number("dt", V.positive("dt", dt))
     with np.errstate(over="ignore"):
         g = t * dt

@@ -41,9 +41,9 @@ from ..analysis.kinematics import Solution, forward, inverse
 from ..analysis.steering import steering_angles
 from ..errors import InputValueError
 from ..model import validation as V
-from ..model.platform import wrap_angle
+from ..model.conventions import angle_from, angle_to
 from ..model.robot import Robot
-from ..model.types import ArrayLike, FloatArray
+from ..model.types import ArrayLike, FloatArray, Twist
 
 __all__ = ["ModuleCommand", "swerve_robot", "radii", "module_commands", "module_speeds", "chassis_twist",
            "to_wpilib", "from_wpilib", "to_chassis", "from_chassis"]
@@ -116,7 +116,7 @@ def radii(robot: Robot) -> FloatArray:
     return np.array([float(u.r) for u in robot.wheels])
 
 
-def module_speeds(robot: Robot, beta: ArrayLike, twist: ArrayLike) -> FloatArray:
+def module_speeds(robot: Robot, beta: ArrayLike, twist: Twist) -> FloatArray:
     r"""Module speeds :math:`s_i = r_i\dot\theta_i` that realise ``twist`` at the angles ``beta``.
 
     The least-squares rolling rates of :func:`wmr.inverse`: :math:`s_i` is the component of the
@@ -140,7 +140,7 @@ def module_speeds(robot: Robot, beta: ArrayLike, twist: ArrayLike) -> FloatArray
     return inverse(robot, beta, twist).value * radii(robot)
 
 
-def module_commands(robot: Robot, twist: ArrayLike, current: ArrayLike | None = None) -> ModuleCommand:
+def module_commands(robot: Robot, twist: Twist, current: ArrayLike | None = None) -> ModuleCommand:
     r"""Inverse kinematics of a swerve robot: the angles and speeds of ``twist`` (WPILib's ``toSwerveModuleStates``).
 
     :math:`\beta_i` from :func:`wmr.steering_angles` (the wheel plane parallel to
@@ -150,8 +150,9 @@ def module_commands(robot: Robot, twist: ArrayLike, current: ArrayLike | None = 
     ----------
     robot : Robot
         Centred wheels only.
-    twist : array (..., 3)
-        :math:`[\dot\psi, \dot x, \dot y]`, body frame.
+    twist : array (..., 3) or ChassisSpeeds
+        :math:`[\dot\psi, \dot x, \dot y]`, body frame; a WPILib ``ChassisSpeeds`` (or a list of them)
+        is read by its fields as ``[omega, vx, vy]`` (:func:`wmr.model.arrays.twist_array`).
     current : array (..., w), optional
         Angles kept by modules whose mount point is still (default 0), as WPILib keeps the last heading.
 
@@ -168,7 +169,7 @@ def module_commands(robot: Robot, twist: ArrayLike, current: ArrayLike | None = 
     ([90.0, 90.0, 90.0, 90.0], [1.0, 1.0, 1.0, 1.0])
     """
     robot = swerve_robot(robot)
-    twist = V.finite_array("twist", twist, last=3)
+    twist = V.twist_array("twist", twist)
     m = np.abs(twist).max(axis=-1, keepdims=True)
     beta = steering_angles(robot, twist / np.where(m > 0, m, 1.0), current)   # angles: scale-free, no overflow
     return ModuleCommand(beta, module_speeds(robot, beta, twist))
@@ -224,7 +225,7 @@ def to_wpilib(beta: ArrayLike, speed: ArrayLike | None = None) -> FloatArray | t
     >>> float(np.degrees(to_wpilib(np.pi / 2)))                 # axle along y: rolls forward
     0.0
     """
-    alpha = wrap_angle(V.finite_array("beta", beta) - np.pi / 2)
+    alpha = angle_to(beta, "wpilib")
     return alpha if speed is None else (alpha, V.finite_array("speed", speed))
 
 
@@ -243,11 +244,11 @@ def from_wpilib(alpha: ArrayLike, speed: ArrayLike | None = None) -> FloatArray 
     numpy.ndarray or tuple
         ``beta`` (...), or ``(beta, speed)`` when ``speed`` is given.
     """
-    beta = wrap_angle(V.finite_array("alpha", alpha) + np.pi / 2)
+    beta = angle_from(alpha, "wpilib", "alpha")
     return beta if speed is None else (beta, V.finite_array("speed", speed))
 
 
-def to_chassis(twist: ArrayLike) -> FloatArray:
+def to_chassis(twist: Twist) -> FloatArray:
     r"""WPILib's ``ChassisSpeeds`` order :math:`(v_x, v_y, \omega)` of a wmr twist :math:`[\dot\psi, \dot x, \dot y]`.
 
     Parameters
@@ -263,18 +264,26 @@ def to_chassis(twist: ArrayLike) -> FloatArray:
     >>> to_chassis([3.0, 1.0, 2.0]).tolist()
     [1.0, 2.0, 3.0]
     """
-    return np.roll(V.finite_array("twist", twist, last=3), -1, axis=-1)
+    return np.roll(V.twist_array("twist", twist), -1, axis=-1)
 
 
-def from_chassis(chassis: ArrayLike) -> FloatArray:
+def from_chassis(chassis: Twist) -> FloatArray:
     r"""wmr's twist :math:`[\dot\psi, \dot x, \dot y]` from WPILib's :math:`(v_x, v_y, \omega)`.
 
     Parameters
     ----------
-    chassis : array (..., 3)
+    chassis : array (..., 3) or ChassisSpeeds
+        Numbers in WPILib's order, or a WPILib ``ChassisSpeeds`` itself (read by its fields).
 
     Returns
     -------
     numpy.ndarray (..., 3)
+
+    Examples
+    --------
+    >>> from_chassis([1.0, 2.0, 3.0]).tolist()
+    [3.0, 1.0, 2.0]
     """
+    if V.twist_kind(chassis) is not None:
+        return V.twist_array("chassis", chassis)
     return np.roll(V.finite_array("chassis", chassis, last=3), 1, axis=-1)

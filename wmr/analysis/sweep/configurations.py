@@ -9,13 +9,16 @@ from __future__ import annotations
 import math
 import numbers
 from dataclasses import dataclass
-from typing import TypeAlias, cast
+from typing import TYPE_CHECKING, TypeAlias, cast
 
 import numpy as np
 
 from ...errors import InputTypeError, InputValueError
 from ...model import validation as V
 from ...model.types import ArrayLike, FloatArray
+
+if TYPE_CHECKING:                                   # (motions.py imports this module)
+    from .motions import Drivable
 
 __all__ = ["Grid", "Sample", "Angles", "BLOCK", "count", "as_source"]
 
@@ -98,6 +101,13 @@ class Grid:
         lo, hi = _bounds(self.lo, self.hi)
         object.__setattr__(self, "lo", lo)
         object.__setattr__(self, "hi", hi)
+
+    @property
+    def covers(self):
+        """The set of configurations, in words (for the reductions)."""
+        steps = "x".join(map(str, self.steps)) if isinstance(self.steps, tuple) else f"{self.steps} per angle"
+        return (f"all steering angles (drivable or not): a grid of {steps} over "
+                f"[{math.degrees(self.lo):g}, {math.degrees(self.hi):g}) deg")
 
     def shape(self, w: int) -> tuple[int, ...]:
         """Values per angle.
@@ -191,6 +201,12 @@ class Sample:
         object.__setattr__(self, "lo", lo)
         object.__setattr__(self, "hi", hi)
 
+    @property
+    def covers(self):
+        """The set of configurations, in words (for the reductions)."""
+        return (f"all steering angles (drivable or not): {self.n:,} configurations drawn uniformly from "
+                f"[{math.degrees(self.lo):g}, {math.degrees(self.hi):g}) deg per angle (seed {self.seed})")
+
     def size(self, w: int) -> int:
         """Number of configurations (``n``, whatever ``w``).
 
@@ -229,6 +245,10 @@ class Sample:
 class _Explicit:
     beta: np.ndarray
 
+    @property
+    def covers(self):
+        return f"the {self.beta.shape[0]:,} configurations given"
+
     def size(self, w):
         return self.beta.shape[0]
 
@@ -236,7 +256,7 @@ class _Explicit:
         return self.beta[start:stop]
 
 
-def as_source(angles: Angles, w: int) -> Grid | Sample | _Explicit:
+def as_source(angles: Grid | Sample | ArrayLike, w: int) -> Grid | Sample | _Explicit:
     """The configurations of a sweep: a :class:`Grid` or :class:`Sample` as given, or explicit angles (N, w).
 
     Parameters
@@ -263,5 +283,6 @@ def as_source(angles: Angles, w: int) -> Grid | Sample | _Explicit:
     return _Explicit(beta)
 
 
-#: what a sweep runs over: a :class:`Grid`, a :class:`Sample`, or explicit configurations (N, w)
-Angles: TypeAlias = Grid | Sample | ArrayLike
+#: what a sweep runs over: a :class:`Grid`, a :class:`Sample`, the configurations a robot can drive in
+#: (:mod:`wmr.analysis.sweep.motions`), or explicit configurations (N, w)
+Angles: TypeAlias = "Grid | Sample | Drivable | ArrayLike"
