@@ -17,7 +17,7 @@ from ...model.wheels import OffsetWheel
 from ..isotropy import characteristic_length
 from ..linalg import condition_number
 from ..sweep import Grid, sweep
-from ..sweep.configurations import Angles
+from ..sweep.execute import Angles
 
 __all__ = ["WorstCase", "worst_kappa", "WheelDesign", "equilateral_design", "worst_kappa_designs", "COARSE_STEPS",
            "FINE_STEPS"]

@@ -9,7 +9,7 @@ from __future__ import annotations
 import math
 import numbers
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, TypeAlias, cast
+from typing import cast
 
 import numpy as np
 
@@ -17,10 +17,7 @@ from ...errors import InputTypeError, InputValueError
 from ...model import validation as V
 from ...model.types import ArrayLike, FloatArray
 
-if TYPE_CHECKING:                                   # (motions.py imports this module)
-    from .motions import Drivable
-
-__all__ = ["Grid", "Sample", "Angles", "BLOCK", "count", "as_source"]
+__all__ = ["Grid", "Sample", "BLOCK", "count", "as_source"]
 
 #: random samples are drawn in blocks of this size (see Sample): a chunk is a whole number of blocks
 BLOCK = 1 << 16
@@ -281,8 +278,3 @@ def as_source(angles: Grid | Sample | ArrayLike, w: int) -> Grid | Sample | _Exp
     if beta.shape[0] == 0:
         raise InputValueError(f"angles must hold at least one configuration, got shape {np.shape(angles)}")
     return _Explicit(beta)
-
-
-#: what a sweep runs over: a :class:`Grid`, a :class:`Sample`, the configurations a robot can drive in
-#: (:mod:`wmr.analysis.sweep.motions`), or explicit configurations (N, w)
-Angles: TypeAlias = "Grid | Sample | Drivable | ArrayLike"

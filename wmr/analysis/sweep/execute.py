@@ -9,7 +9,7 @@ from __future__ import annotations
 import signal
 import threading
 from collections.abc import Callable, Sequence
-from typing import Any
+from typing import Any, TypeAlias
 
 import numpy as np
 
@@ -17,13 +17,19 @@ from ...errors import InputTypeError, InputValueError
 from ...model import validation as V
 from ...model.limits import check, limit
 from ...model.robot import Robot
+from ...model.types import ArrayLike
 from .analyses import ANALYSES, J_length
-from .configurations import BLOCK, Angles, Sample, as_source, count
+from .configurations import BLOCK, Grid, Sample, as_source, count
 from .motions import Drivable, Motions
 from .reduction import Partial
 from .result import Sweep, finish
 
-__all__ = ["sweep", "bytes_per_configuration", "QUANTILES", "CHUNK"]
+__all__ = ["Angles", "sweep", "bytes_per_configuration", "QUANTILES", "CHUNK"]
+
+#: what a sweep runs over: a :class:`~wmr.analysis.sweep.configurations.Grid`, a
+#: :class:`~wmr.analysis.sweep.configurations.Sample`, the configurations a robot can drive in
+#: (:class:`~wmr.analysis.sweep.motions.Drivable`), or explicit configurations (N, w)
+Angles: TypeAlias = Grid | Sample | Drivable | ArrayLike
 
 #: Quantiles reported by default.
 QUANTILES = (0.0, 0.01, 0.05, 0.5, 0.95, 0.99, 1.0)
