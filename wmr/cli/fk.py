@@ -1,4 +1,5 @@
-"""``wmr fk ROBOT.toml --angles ... --rates ...``: the platform twist from steering angles and wheel rates.
+"""``wmr fk ROBOT.toml --angles DEG [DEG ...] --rates RATE [RATE ...]``: the platform twist from steering angles and
+wheel rates.
 
 Examples::
 

@@ -137,7 +137,7 @@ def rotated(beta: Numbers, M: Matrix, EM: Matrix, axes: int = 2, backend: Backen
     ----------
     beta : array (...), sympy.Expr, or pair (cos_beta, sin_beta) of arrays (...)
         The angle, or its cosine and sine when the caller already has them.
-    M, EM : array (..., *block) or sympy.Matrix
+    M, EM : array (..., \*block) or sympy.Matrix
         The block and its image :math:`\mathbf E\mathbf M` (or the same linear image of both);
         broadcast against ``beta``.
     axes : int, optional
@@ -147,7 +147,7 @@ def rotated(beta: Numbers, M: Matrix, EM: Matrix, axes: int = 2, backend: Backen
 
     Returns
     -------
-    numpy.ndarray (..., *block) or sympy.Matrix
+    numpy.ndarray (..., \*block) or sympy.Matrix
 
     Examples
     --------

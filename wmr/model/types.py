@@ -38,11 +38,11 @@ __all__ = ["ArrayLike", "BoolArray", "FloatArray", "IntArray", "JointNames", "Ma
 #: what NumPy converts to an array: numbers, nested sequences, arrays (``numpy.typing.ArrayLike``)
 ArrayLike: TypeAlias = _ArrayLike
 #: a NumPy array of floats
-FloatArray: TypeAlias = NDArray[np.floating[Any]]
+FloatArray: TypeAlias = "NDArray[np.floating[Any]]"       # (a string: Sphinx documents it as data)
 #: a NumPy array of integers
-IntArray: TypeAlias = NDArray[np.integer[Any]]
+IntArray: TypeAlias = "NDArray[np.integer[Any]]"
 #: a NumPy array of bools
-BoolArray: TypeAlias = NDArray[np.bool_]
+BoolArray: TypeAlias = "NDArray[np.bool_]"
 #: a SymPy expression or matrix (to mypy: ``Any``)
 Symbolic: TypeAlias = Any
 #: numbers (``ArrayLike``) or SymPy expressions (to mypy: ``Any``)
