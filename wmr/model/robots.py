@@ -10,6 +10,7 @@ exactly): the three mount points are the vertices of an equilateral triangle cen
 from __future__ import annotations
 
 import dataclasses
+from typing import TypedDict
 
 import sympy as sp
 
@@ -19,13 +20,22 @@ from .robot import Robot
 from .types import Numbers
 from .wheels import wheel_kind
 
-__all__ = ["PAPER_MOUNT_ANGLES_DEG", "PAPER_KINDS", "equilateral_mounts", "paper_robot"]
+__all__ = ["PAPER_MOUNT_ANGLES_DEG", "PAPER_KINDS", "Dimensions", "equilateral_mounts", "paper_robot"]
 
 #: The wheel kinds of the paper's three robots (sections 3, 5 and 6).
 PAPER_KINDS = ("centred", "offset", "dual")
 
 #: Angles of the paper's mount points, wheel 1 first (clockwise from the negative x-axis).
 PAPER_MOUNT_ANGLES_DEG = (180.0, 60.0, -60.0)
+
+
+class Dimensions(TypedDict, total=False):
+    """The lengths of :func:`paper_robot` by keyword (``paper_robot("offset", **dims)``): L, r, d, b."""
+
+    L: float
+    r: float
+    d: float
+    b: float
 
 
 def equilateral_mounts(L: Numbers = 1.0, first_deg: float = 180.0, clockwise: bool = True,
