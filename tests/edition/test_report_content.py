@@ -27,7 +27,7 @@ import pytest
 from edition.ledger import COLUMNS
 from tools.build.pdf import to_latex
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 REPORT = ("report.html", "report.pdf") if shutil.which("xelatex") and shutil.which("pandoc") else ("report.html",)
 
 

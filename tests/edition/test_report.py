@@ -29,7 +29,7 @@ from tools.build import html as html_export
 from tools.build.pdf import MIN_FORMULA_SCALE, scaled_formulas
 from tools.build.typeset import read_figures
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 
 TREE = Path(os.environ.get("WMR_ROOT") or ROOT)  # WMR_ROOT: test another tree
 BUILD = Path(os.environ.get("WMR_BUILD") or TREE / "build")
