@@ -31,7 +31,11 @@ import sympy as sp
 import wmr
 from wmr import swerve
 from wmr.analysis import (
+    actuation,
+    advice,
     design,
+    glossary,
+    limitations,
     linalg,
     lines,
     mobility,
@@ -41,11 +45,13 @@ from wmr.analysis import (
     singularities,
     square,
 )
-from wmr.analysis.sweep import Grid
+from wmr.analysis.sweep import Drivable, Grid
 from wmr.analysis.sweep import analyses as sweep_analyses
 from wmr.analysis.sweep import configurations as sweep_configurations
+from wmr.analysis.sweep import execute as sweep_execute
+from wmr.analysis.sweep import motions as sweep_motions
 from wmr.errors import InputError
-from wmr.model import backend, platform, tolerance, wheels
+from wmr.model import arrays, backend, conventions, limits, platform, tolerance, wheels
 from wmr.model.backend import NUMERIC, SYMBOLIC
 from wmr.model.wheels import joints, unsteered
 
@@ -213,6 +219,16 @@ def _role(name, bot):
                 [{"steer": True}, {"drive1": 1}, (True, True), "swivel", 3, {"swivel": None}, [True] * 4, [1, 0, 1]])
     if name == "index":
         return [0, w - 1], [], [w, -w - 1, 1.5, "0", None, True]
+    if name == "convention":
+        return ["wmr", "wpilib", "ros"], [], ["WPILib", 3, None, ["ros"]]
+    if name == "term":
+        return ["rank-F", "kappa(J_L1)", "through P", "nullity"], [], ["nonsense", 3, None, ""]
+    if name == "limit":
+        return ["wheels", "configurations", "memory_mb"], [], ["cpu", None, 3, ["wheels"]]
+    if name == "amount":
+        return [1, 50.0, np.int64(7)], [], [1e30, 10 ** 400, np.nan, None, "1", True]
+    if name == "twist_batch":
+        return [RNG.normal(size=(6, 3)), np.zeros((1, 3))], [], []
     raise KeyError(name)
 
 
@@ -432,6 +448,37 @@ CASES = [
     Case("swerve.from_wpilib", lambda alpha: swerve.from_wpilib(alpha), (("alpha", "angles"),)),
     Case("swerve.to_chassis", lambda twist: swerve.to_chassis(twist), (T,)),
     Case("swerve.from_chassis", lambda chassis: swerve.from_chassis(chassis), (("chassis", "twist"),)),
+    # --- actuation, limitations, checked advice, glossary (issue 24)
+    Case("actuated_mobility", lambda robot, beta: actuation.actuated_mobility(robot, beta), (R, B)),
+    Case("driven_columns", lambda robot: actuation.driven_columns(robot), (R,)),
+    Case("free_twists", lambda robot, beta: actuation.free_twists(robot, beta), (R, ("beta", "beta1"))),
+    Case("uncontrolled", lambda robot, beta, twist: actuation.uncontrolled(robot, beta, twist), (R, B, T),
+         allow="inf"),
+    Case("describe_twist", lambda robot, twist: actuation.describe_twist(robot, twist), (R, ("twist", "twist1"))),
+    Case("limitations", lambda robot: limitations.limitations(robot), (R,)),
+    Case("steering_limitations", lambda robot: limitations.steering_limitations(robot), (R,)),
+    Case("profile", lambda robot: advice.profile(robot), (R,), allow="inf"),
+    Case("advice", lambda robot: advice.advice(robot), (R,), allow="inf"),
+    Case("actuation_advice", lambda robot: advice.actuation_advice(robot), (R,), allow="inf"),
+    Case("motor_conditioning", lambda robot, beta: advice.motor_conditioning(robot, beta), (R, ("beta", "beta1")),
+         allow="inf"),
+    Case("special_twists", lambda robot: overview.special_twists(robot), (R,)),
+    Case("lookup", lambda term: glossary.lookup(term), (("term", "term"),)),
+    Case("checked", lambda convention: conventions.checked(convention), (("convention", "convention"),)),
+    Case("angle_to", lambda beta, convention: conventions.angle_to(beta, convention),
+         (("beta", "angles"), ("convention", "convention"))),
+    Case("angle_from", lambda angle, convention: conventions.angle_from(angle, convention),
+         (("angle", "angles"), ("convention", "convention"))),
+    Case("twist_array", lambda twist: arrays.twist_array("twist", twist), (T,)),
+    Case("limit", lambda name: limits.limit(name), (("name", "limit"),)),
+    Case("check", lambda name, amount: limits.check(name, amount, "amount"), (("name", "limit"), ("amount", "amount"))),
+    Case("radians", lambda angle: unsteered.radians("angle", angle), (("angle", "angle"),)),
+    Case("Drivable", lambda n, seed: Drivable(n, seed), (("n", "count"), ("seed", "seed"))),
+    Case("Drivable.bind", lambda robot: Drivable(100, seed=1).bind(robot).configurations(robot.w, 0, 100), (R,)),
+    Case("kappa_J_of_twists", lambda robot, twist, L: sweep_motions.kappa_J_of_twists(robot, twist, L),
+         (R, ("twist", "twist_batch"), ("L", "positive")), allow="inf"),
+    Case("bytes_per_configuration", lambda robot, analysis: sweep_execute.bytes_per_configuration(robot, analysis),
+         (R, ("analysis", "analysis"))),
     Case("wheel_odometry", lambda robot, beta, angles, heading: wmr.wheel_odometry(robot, beta, angles, heading),
          (R, ("beta", "samples_beta"), ("angles", "samples_angles"), ("heading", "heading"))),
 ]
@@ -470,6 +517,12 @@ NOT_FUZZED = {
     "rank_from_singular_values": "the rule rank applies to singular_values' output, fuzzed through rank",
     "kappa_from_singular_values": "the rule condition_number applies, fuzzed through it",
     "Partial": "the sweep's reduction, fuzzed through sweep", "finish": "as Partial",
+    "Advice": "the result type of advice", "Entry": "the result type of lookup", "terms": "no arguments",
+    "DesignHints": "a base of WheelUnit: the design hints, fuzzed through advice on every robot",
+    "Motions": "Drivable bound to a robot (Drivable.bind)",
+    "kappa_J_drivable": "the fused kernel of a drivable sweep, fuzzed through kappa_J_of_twists and sweep",
+    "in_degrees": "a helper of the kinds' constructors (angle or angle_deg), fuzzed through FixedWheel, SwedishWheel",
+    "twist_kind": "a predicate: any value is a valid question",
 }
 
 

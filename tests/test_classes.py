@@ -175,7 +175,7 @@ def test_class_of_random_robots(bot, k):
     assert 0 <= c.delta_m <= 3 and 0 <= c.delta_s and c.delta_m + c.delta_s <= 3
     assert wmr.admissible_twists(bot, c.beta).shape[1] == c.delta_m
     if c.delta_m:
-        assert bool(wmr.inverse(bot, c.beta, c.twist).admissible)
+        assert bool(wmr.inverse(bot, c.beta, c.twist).no_slip)
     for other in (_scaled(bot, 10.0 ** k), bot.moved(origin=(0.3, -0.1), angle=1.0)):
         d = campion_class(other)
         assert (d.delta_m, d.delta_s, d.standard) == (c.delta_m, c.delta_s, c.standard)

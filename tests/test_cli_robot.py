@@ -38,12 +38,12 @@ def test_analyze_json_matches_the_library(capsys):
     assert data["configurations"] == ov.configurations and data["L"] == ov.L
     assert data["kappa_J_L1"] == pytest.approx(1.0) and data["kappa_J2"] == 1.0 and data["kappa_J"]["max"] == "inf"
     assert [f["family"] for f in data["singular"]] == [f["family"] for f in ov.singular]
-    assert np.allclose(data["singular"][1]["beta_deg"], [-45, 45, 45, -45])
+    assert np.allclose(data["singular"][1]["angles_deg"], [-45, 45, 45, -45])
     assert (data["delta_m"], data["delta_s"], data["class"]) == (1, 2, "(1,2)")
 
 
 def test_analyze_table(capsys):
-    code, out, _ = _run(capsys, "analyze", OFFSET, "--grid", "200", "--twists", "20")
+    code, out, _ = _run(capsys, "analyze", OFFSET, "--grid", "200", "--twists", "20", "--brief")
     assert code == 0
     rows = dict((line[:11].strip(), line[13:]) for line in out.splitlines() if line[:11].strip())
     assert rows["rank F"].startswith("6 generic, 6..6 over 152 configurations")
@@ -60,9 +60,9 @@ def test_ik_json_matches_the_library(capsys):
     data = json.loads(out)
     bot = wmr.load(SWERVE)
     twist = [0.8, 1.0, 0.5]                                                     # wmr's order: psi_dot, x_dot, y_dot
-    beta = wmr.steering_angles(bot, twist)
-    assert np.allclose(data["angles_deg"], np.degrees(beta))
-    assert np.allclose(list(data["rates"].values()), wmr.inverse(bot, beta, twist).value)
+    beta = wmr.steering_angles(bot, twist)                  # rates >= 0; nearer the current 0: beta - 180, rates < 0
+    assert np.allclose(data["angles_deg"], np.degrees(beta) - 180.0)
+    assert np.allclose(list(data["rates"].values()), -wmr.inverse(bot, beta, twist).value)
     assert list(data["rates"]) == list(bot.rate_names)
     assert data["admissible"] and not data["admissible_without_resteering"] and data["slip_without_resteering"] > 0.1
 

@@ -28,9 +28,10 @@ def test_table_and_json_match_the_library(robot_file, capsys):
     path, bot = robot_file
     assert main(["sweep", path, "mobility", "--grid", "12", "--no-progress"]) == 0
     table = capsys.readouterr().out
-    res = wmr.sweep(bot, "mobility", Grid(12))
+    res = wmr.sweep(bot, "mobility", Grid((12, 12, 12)))
     assert table.strip() == res.summary()
-    assert main(["sweep", path, "kappa_J", "--sample", "2e4", "--seed", "5", "--json", "--quantiles", "0.5,1"]) == 0
+    assert main(["sweep", path, "kappa_J", "--angles", "any", "--sample", "2e4", "--seed", "5", "--json",
+                 "--quantiles", "0.5,1"]) == 0
     out = json.loads(capsys.readouterr().out)
     res = wmr.sweep(bot, "kappa_J", Sample(20000, seed=5), quantiles=[0.5, 1.0])
     assert out["count"] == 20000 and out["quantiles"]["0.5"] == res.quantiles[0.5]

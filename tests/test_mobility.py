@@ -160,7 +160,7 @@ def test_admissible_twists_are_realisable(bot, seed):
     A, base = M.twist_constraints(bot, beta)
     assert np.allclose(A @ basis, 0.0, atol=1e-10)
     for t in basis.T:
-        assert bool(wmr.inverse(bot, beta, t).admissible)
+        assert bool(wmr.inverse(bot, beta, t).no_slip)
     # mobility = dim of admissible twists + dim of joint-rate motions with the platform still
     null = LA.null_space(bot.F(beta))
     assert int(M.mobility(bot, beta)) == null.shape[1]

@@ -52,11 +52,12 @@ def test_paper_robots(scale):
     c = overview(wmr.paper_robot("centred", L=0.3 * scale, r=0.05 * scale), grid=3000, twists=200)
     assert (c.rank_F, c.nullity, c.rank_F_range, c.nullity_range) == (6, 0, (5, 6), (0, 1))
     assert np.isclose(c.L, 0.3 * scale) and np.isclose(c.kappa_JL1, 1) and c.kappa_J2 == 1.0
-    assert c.kappa_J_range[1] == np.inf and 1 <= c.kappa_J_range[0] < 1.5 and c.dead_zone is None and not c.advice
+    assert c.kappa_J["max"] == np.inf and 1 <= c.kappa_J["min"] < 1.5 and c.dead_zone is None and not c.advice
     assert {"i", "i'", "v-C", "v-P", "v"} <= {f["family"] for f in c.singular}
     o = overview(wmr.paper_robot("offset", L=0.3 * scale, r=0.05 * scale), grid=3000, twists=200)
     assert (o.rank_F, o.nullity, o.rank_F_range) == (6, 3, (6, 6)) and o.singular == []
-    assert np.allclose(o.kappa_J_range, 1.0) and np.isclose(o.dead_zone, 0.05 * scale)
+    assert np.allclose([o.kappa_J[k] for k in ("min", "median", "p95", "max")], 1.0)
+    assert np.isclose(o.dead_zone, 0.05 * scale)
     d = overview(wmr.paper_robot("dual", L=0.3 * scale, r=0.05 * scale), grid=3000, twists=200)
     assert (d.rank_F, d.nullity_range) == (6, (3, 4)) and d.kappa_J2 == np.inf and "no choice" in d.advice[0]
 

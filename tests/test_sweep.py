@@ -21,7 +21,29 @@ def _direct(robot, name, beta, L):
         return R.det(R.J(robot, beta, L))
     if name == "kappa_J":
         return R.condition_number(R.J(robot, beta, L))
+    if name == "actuated_mobility":
+        return np.array([_actuated_dense(robot, b) for b in beta], dtype=float)
     return np.full(len(beta), float(R.condition_number(robot.J1(L))))
+
+
+def _twist_dim(F, cols):
+    """dim of the twist part of N(F[:, cols]) by SVDs of the column-scaled dense matrix (cols include the twist)."""
+    A = F[:, cols] / np.linalg.norm(F[:, cols], axis=0).clip(1e-300)
+    _, s, Vt = np.linalg.svd(A)
+    r = int((s > wmr.TOL * s[0]).sum())
+    N = Vt[r:].T                                       # null space, scaled coordinates
+    if N.shape[1] == 0:
+        return 0
+    sv = np.linalg.svd(N[:3], compute_uv=False)
+    return int((sv > 1e-6).sum())
+
+
+def _actuated_dense(robot, beta):
+    """dim T - dim U from the dense F: every rate column free, then only the passive ones."""
+    from wmr.analysis.actuation import driven_columns
+    F = robot.F(beta)
+    passive = np.flatnonzero(~driven_columns(robot)) + 3
+    return _twist_dim(F, list(range(F.shape[1]))) - _twist_dim(F, [0, 1, 2, *passive])
 
 
 def test_det_J_of_a_non_square_J_is_refused():

@@ -19,7 +19,9 @@ the cores to itself.  The check column compares a slice of every result with the
 definitions of :mod:`wmr.analysis.reference` (full matrices, SVD, pseudo-inverse), with the floor
 and with WPILib, so a fast kernel that returned wrong numbers would say FAIL here.  The sweep rows
 time :func:`wmr.sweep` in this process and on a local Dask cluster of 2 single-thread workers, and
-measure the peak resident memory of an in-process sweep in a fresh child process.  The load
+measure the peak resident memory of an in-process sweep in a fresh child process; the last rows time
+the default sweep of issue 24, kappa(J) of the four-module swerve over its drivable configurations
+(goal: 5 M configurations per second in process), beside the same over random angles.  The load
 average is printed before and after: timings on a shared machine are only as quiet as it was.
 """
 from __future__ import annotations
@@ -30,6 +32,7 @@ import platform
 import subprocess
 import sys
 import time
+from pathlib import Path
 
 import numpy as np
 
@@ -250,21 +253,28 @@ def kernel_rows(n, repeat, k, peer=200_000):
     ], twist
 
 
-def sweep_child(analysis, n, chunk, threads=None):
-    """Run one in-process sweep in a fresh interpreter; return (seconds, peak RSS in MB, count)."""
+def sweep_child(analysis, n, chunk, threads=None, robot="paper_centred", source="Sample"):
+    """Run one in-process sweep in a fresh interpreter; return (seconds, cpu seconds, peak RSS in MB, count).
+
+    ``robot`` is ``"paper_centred"`` (the paper's three centred wheels) or ``"swerve4"`` (examples/swerve4.toml);
+    ``source`` is ``"Sample"`` (random angles) or ``"Drivable"`` (the steering angles of sampled twists).
+    """
     # VmHWM, not ru_maxrss: Linux carries the parent's peak over fork + exec into ru_maxrss
+    make = ("wmr.paper_robot('centred')" if robot == "paper_centred"
+            else f"wmr.load({str(Path(__file__).resolve().parent.parent / 'examples' / 'swerve4.toml')!r})")
     code = (
         "import sys, time, wmr\n"
-        "from wmr.analysis.sweep import Sample\n"
-        f"bot = wmr.paper_robot('centred')\n"
-        f"t0 = time.perf_counter(); res = wmr.sweep(bot, {analysis!r}, Sample({n}, seed=1), chunk={chunk})\n"
-        "dt = time.perf_counter() - t0\n"
+        f"from wmr.analysis.sweep import {source}\n"
+        f"bot = {make}\n"
+        f"t0, c0 = time.perf_counter(), time.process_time(); res = wmr.sweep(bot, {analysis!r}, "
+        f"{source}({n}, seed=1), chunk={chunk})\n"
+        "dt, dc = time.perf_counter() - t0, time.process_time() - c0\n"
         "hwm = [l for l in open('/proc/self/status') if l.startswith('VmHWM')][0].split()[1]\n"
-        "print(dt, int(hwm) / 1024, res.count, res.max)\n")
+        "print(dt, dc, int(hwm) / 1024, res.count, res.max)\n")
     env = dict(os.environ, **({} if threads is None else {"WMR_THREADS": str(threads)}))
     out = subprocess.run([sys.executable, "-c", code], check=True, capture_output=True, text=True,
                          env=env).stdout.split()
-    return float(out[0]), float(out[1]), int(out[2])
+    return float(out[0]), float(out[1]), float(out[2]), int(out[3])
 
 
 def sweep_rows(n, dask):
@@ -272,9 +282,9 @@ def sweep_rows(n, dask):
     rows = []
     for analysis in ("rank_F", "kappa_J"):
         for threads in (None, 1):
-            sec, rss, count = sweep_child(analysis, n, CHUNK, threads)
+            sec, cpu, rss, count = sweep_child(analysis, n, CHUNK, threads)
             where = "in process" if threads is None else "in process, 1 thread"
-            rows.append((f"sweep {analysis}, {where}", sec, count, rss))
+            rows.append((f"sweep {analysis}, {where}", sec, cpu, count, rss))
         if dask:
             from dask.distributed import Client, LocalCluster
             bot = wmr.paper_robot("centred")
@@ -283,7 +293,20 @@ def sweep_rows(n, dask):
                 wmr.sweep(bot, analysis, Sample(4 * CHUNK, seed=2), client=client)       # warm the workers
                 t0 = time.perf_counter()
                 res = wmr.sweep(bot, analysis, Sample(n, seed=1), client=client)
-                rows.append((f"sweep {analysis}, dask 2 workers", time.perf_counter() - t0, res.count, None))
+                rows.append((f"sweep {analysis}, dask 2 workers", time.perf_counter() - t0, None, res.count, None))
+    return rows
+
+
+def drivable_rows(n):
+    """The default sweep of issue 24: kappa(J) of the four-module swerve over drivable configurations (goal 5 M/s)."""
+    from wmr.analysis.sweep import CHUNK
+    rows = []
+    for threads in (None, 1):
+        sec, cpu, rss, count = sweep_child("kappa_J", n, CHUNK, threads, robot="swerve4", source="Drivable")
+        where = "in process" if threads is None else "in process, 1 thread"
+        rows.append((f"swerve4 kappa_J drivable, {where}", sec, cpu, count, rss))
+    sec, cpu, rss, count = sweep_child("kappa_J", n, CHUNK, None, robot="swerve4", source="Sample")
+    rows.append(("swerve4 kappa_J random angles", sec, cpu, count, rss))
     return rows
 
 
@@ -335,11 +358,18 @@ def main(argv=None):
         print(f"\nsweeps of {ns:,} random configurations of the paper's centred robot ({load()})")
         srows = sweep_rows(ns, dask=not args.no_dask)
         base: dict = {}
-        for name, sec, count, rss in srows:
+        for name, sec, _cpu, count, rss in srows:
             an = name.split(",")[0]
             extra = f"peak RSS {rss:.0f} MB" if rss is not None else f"speed-up {base[an] / sec:.2f}x vs in process"
             base.setdefault(an, sec)
             print(f"{name:34s} {sec:8.2f} s  {count / sec / 1e6:6.2f} M configurations/s  {extra}")
+        print(f"\nthe default (drivable) sweep of issue 24, {ns:,} configurations; goal >= 5 M/s in process "
+              f"({load()}); the cpu rate is per second of CPU time of all threads together")
+        for name, sec, cpu, count, rss in drivable_rows(ns):
+            goal = "" if "random" in name or "1 thread" in name else (
+                "  goal met" if count / sec >= 5e6 else "  (goal missed: see the load average)")
+            print(f"{name:34s} {sec:8.2f} s  {count / sec / 1e6:6.2f} M/s wall  {count / cpu / 1e6:6.2f} M/s cpu  "
+                  f"peak RSS {rss:.0f} MB{goal}")
     print(f"after: {load()}")
     return 1 if fails else 0
 

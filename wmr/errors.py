@@ -9,6 +9,8 @@ caller expects (in the style of python-control's ``ControlArgument(TypeError)``)
   radius, NaN, infinity, a wrong shape, a number too large for double precision);
 * :class:`RobotFileError` (an :class:`InputValueError`): a malformed robot file, one line
   ``FILE:LINE: key: what is wrong``;
+* :class:`LimitError` (an :class:`InputValueError`): a request beyond a limit of :mod:`wmr.model.limits`
+  (wheels, configurations, memory), refused before the work starts;
 * :class:`MissingDependencyError` (an ``ImportError``): an optional package that a bridge needs
   (yourdfpy for URDF, PyYAML for ROS 2 parameters, robotpy-wpimath for WPILib) is not installed;
   the message names the extra to install (``pip install 'wmr[urdf]'``).
@@ -29,7 +31,8 @@ InputValueError True r (wheel radius) must be positive, got -1.0
 """
 from __future__ import annotations
 
-__all__ = ["WmrError", "InputError", "InputTypeError", "InputValueError", "RobotFileError", "MissingDependencyError"]
+__all__ = ["WmrError", "InputError", "InputTypeError", "InputValueError", "RobotFileError", "LimitError",
+           "MissingDependencyError"]
 
 
 class WmrError(Exception):
@@ -66,6 +69,10 @@ class RobotFileError(InputValueError):
     def __init__(self, file: str, line: int, key: str, reason: object) -> None:
         self.file, self.line, self.key, self.reason = file, line, key, " ".join(str(reason).split())
         super().__init__(f"{file}:{line}: {key}: {self.reason}")
+
+
+class LimitError(InputValueError):
+    """A request beyond a limit (:mod:`wmr.model.limits`): its message names the limit and how to raise it."""
 
 
 class MissingDependencyError(WmrError, ImportError):

@@ -128,7 +128,7 @@ def draw(data, fig=None):
                       color=ROLE["fixed_frame"])
         an.label(ax, (0, 0), r"$\mathcal{F}$", offset=(-4, -4), ha="right", va="top", color=ROLE["fixed_frame"])
         g = rd.draw_robot(ax, bot, np.zeros(3), (psi, 1.55, 1.1), frame=False,
-                          label_offsets={"C": (-2, -7), 2: (-12, 6), 1: (-13, 0), 3: (13, 0)})
+                          label_offsets={"C": (-2, -7), 2: (-12, 6), 1: (-13, 0), 3: (13, 0)}, arrows="j")
         an.draw_frame(ax, g.C, psi, 0.6, zorder=8)
         ax.plot(*np.stack([g.C, g.C + [0.9, 0.0]]).T, color=PALETTE["grey"], lw=0.6, ls=(0, (2, 2)))
         an.draw_angle(ax, g.C, 0.82, 0.0, psi, r"$\psi$", text_radius=1.2)
@@ -144,7 +144,7 @@ def draw(data, fig=None):
             ax.plot(*np.stack([P, P + [0.8, 0.0]]).T, color=PALETTE["grey"], lw=0.6, ls=(0, (2, 2)))
             an.label(ax, P + [0.8, 0.0], r"$\mathbf{i}$", offset=(3, 0), ha="left", va="center",
                      color=PALETTE["grey"], fontsize=FONT_SMALL)
-            rd.draw_unit(ax, unit, beta, light=True, zorder=3)
+            rd.draw_unit(ax, unit, beta, light=True, zorder=3, arrows="j")
             an.draw_frame(ax, P, beta, 0.62, labels=(r"$\mathbf{i}_i$", r"$\mathbf{j}_i$"), color=PALETTE["blue"],
                           zorder=7)
             arc = 0.42 if unit is ow else 0.27                 # inside wheel 1 of the dual wheel

@@ -167,8 +167,9 @@ def draw(data, fig=None):
     G, Cf = data.contacts, snap(data.C_f)
     with style():
         fig, (ax,) = new_figure(1, 1, width=7.0, height=3.9, fig=fig)
-        g0 = rd.draw_robot(ax, bot, data.beta[0], data.pose[0], wheel_labels=False, label_offsets={"C": (-6, 6)})
-        g1 = rd.draw_robot(ax, bot, data.beta[k1], data.pose[k1], ghost=True, labels=False)
+        g0 = rd.draw_robot(ax, bot, data.beta[0], data.pose[0], wheel_labels=False, label_offsets={"C": (-6, 6)},
+                           arrows="j")
+        g1 = rd.draw_robot(ax, bot, data.beta[k1], data.pose[k1], ghost=True, labels=False, arrows="j")
         an.label(ax, g1.C, "$C'$", offset=(-7, -3), ha="right", va="top")
         an.label(ax, g0.P[0], "$P$", offset=(-9, 0), ha="right", va="center")
         an.label(ax, g1.P[0], "$P'$", offset=(-8, -5), ha="right", va="top")
@@ -192,7 +193,7 @@ def draw(data, fig=None):
         plain_axes(axi)
         Pp = data.pivots[:, 0]
         for kk, ghost in ((0, False), (k1, True)):
-            rd.draw_unit(axi, bot.wheels[0], data.beta[kk, 0], data.pose[kk], ghost=ghost, light=True)
+            rd.draw_unit(axi, bot.wheels[0], data.beta[kk, 0], data.pose[kk], ghost=ghost, light=True, arrows="j")
         an.draw_path(axi, Pp, color=ROLE["path"][1], lw=1.1)
         an.draw_point(axi, G[0], "$G$", marker="D", color=PALETTE["green"], size=5, offset=(8, -2),
                       ha="left", va="center", zorder=9)

@@ -176,7 +176,7 @@ def draw(data, fig=None):
             for q, kk in enumerate(idx):
                 g = rd.draw_robot(ax, bot, run.beta[kk], run.pose[kk], ghost=0 < q < len(idx) - 1,
                                   labels=q == 0, frame=q in (0, len(idx) - 1),
-                                  label_offsets={2: (-16, 4)} if letter == "b" else None)
+                                  label_offsets={2: (-16, 4)} if letter == "b" else None, arrows="j")
                 ext.append(rd.robot_extent(g, R))
             for xy, col in zip([run.pose[:, 1:]] + [run.pivots[:, k] for k in range(bot.w)], cols, strict=False):
                 an.draw_path(ax, xy, color=col, lw=1.5, zorder=7)

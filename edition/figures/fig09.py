@@ -170,8 +170,8 @@ def draw(data, fig=None):
         for ax, name, letter in zip(axes, ("C", "U"), "ab", strict=True):
             run = getattr(data, name)
             U = snap(run.u_c)
-            g0 = rd.draw_robot(ax, bot, run.beta[0], run.pose[0], zorder=4)
-            g1 = rd.draw_robot(ax, bot, run.beta[-1], run.pose[-1], ghost=True, labels=False)
+            g0 = rd.draw_robot(ax, bot, run.beta[0], run.pose[0], zorder=4, arrows="j")
+            g1 = rd.draw_robot(ax, bot, run.beta[-1], run.pose[-1], ghost=True, labels=False, arrows="j")
             rd.draw_axles(ax, g0, include=[[U]] * bot.w, margin=0.25)
             for k in range(bot.w):
                 an.draw_path(ax, run.pivots[:, k], color=ROLE["path"][1], lw=1.1, zorder=2.7)

@@ -126,7 +126,7 @@ def draw(data, fig=None):
     ui = snap(data.u_i)
     with style():
         fig, (ax,) = new_figure(1, 1, width=5.6, height=4.9, fig=fig)
-        g = rd.draw_robot(ax, bot, data.beta)
+        g = rd.draw_robot(ax, bot, data.beta, arrows="j")
         rd.draw_axles(ax, g, include=[[U]] * bot.w, margin=0.3)
         an.draw_point(ax, U, "$U$", marker="*", color=ROLE["ic"], size=11, offset=(0, 9), ha="center", zorder=9.5)
         an.draw_arrow(ax, g.C, U, color=PALETTE["dark"], lw=1.3, head=9, zorder=8)

@@ -38,7 +38,7 @@ def draw_singular(ax, robot, cfg, *, dp_label=None, dp_offset=(7, 3), frame=True
     extent : numpy.ndarray (n, 2)
         Points the view must contain.
     """
-    g = rd.draw_robot(ax, robot, cfg.beta, frame=frame, label_offsets=label_offsets)
+    g = rd.draw_robot(ax, robot, cfg.beta, frame=frame, label_offsets=label_offsets, arrows="j")
     rd.draw_planes(ax, g, include=cfg.plane_reach, margin=0.3, min_half=0.6)
     rd.draw_axles(ax, g, include=cfg.axle_reach, margin=0.3, min_half=0.6)
     ext = [rd.robot_extent(g, rd.platform_radius(robot))]

@@ -48,7 +48,7 @@ def draw_steering(state, fig=None):
             draw_line(ax, g.P[k], g.i[k], pts, kind="axle", margin=0.35 * R, min_half=1.2 * R)
             pts = [p for p in (D,) if p is not None]
             draw_line(ax, g.P[k], g.j[k], pts, kind="plane", margin=0.35 * R, min_half=1.2 * R)
-        draw_robot(ax, state.robot, state.beta)
+        draw_robot(ax, state.robot, state.beta, arrows="j")
         if U is not None and state.mobility > 0:
             draw_point(ax, U, None, color=ROLE["ic"], size=6, zorder=9)
             label(ax, U, "$U$", offset=(6, 6), color=ROLE["ic"])

@@ -1,6 +1,6 @@
 r"""Analyses of any robot built with :mod:`wmr.model`.
 
-==================================  ==============================================================================
+==================================  ====================================================================================
 :mod:`~wmr.analysis.linalg`         rank, nullity, null space, singular values, condition number
 :mod:`~wmr.analysis.mobility`       rank and nullity of :math:`\mathbf F`, admissible twists (23)-(27)
 :mod:`~wmr.analysis.isotropy`       isotropy tests and the characteristic length (30)-(50)
@@ -12,15 +12,21 @@ r"""Analyses of any robot built with :mod:`wmr.model`.
 :mod:`~wmr.analysis.singularities`  :math:`\det\mathbf J` and the classification of singular configurations (58)-(59)
 :mod:`~wmr.analysis.det_exact`      the exact :math:`\det\mathbf J`: SymPy derivation, polynomial, plane-line identity
 :mod:`~wmr.analysis.classes`        Campion's classes: degrees of mobility and steerability
+:mod:`~wmr.analysis.actuation`      driven and passive joints: actuated mobility, motions with every motor stopped
+:mod:`~wmr.analysis.limitations`    what a robot cannot do, in plain sentences (class, actuation, steering joints)
+:mod:`~wmr.analysis.advice`         design advice checked on the changed robot (move C, choose L, change a wheel)
+:mod:`~wmr.analysis.singular`       families of singular configurations, and what they mean to a driver
+:mod:`~wmr.analysis.glossary`       the words of the output explained (``wmr explain``)
 :mod:`~wmr.analysis.design`         worst-case :math:`\kappa(\mathbf J)` of a layout, search over offset-wheel designs
 :mod:`~wmr.analysis.motion_kappa`   :math:`\kappa(\mathbf J)` along the admissible motions (rotations about each centre)
 :mod:`~wmr.analysis.sweep`          one analysis over millions of configurations, in chunks
 :mod:`~wmr.analysis.overview`       a robot at a glance (what ``wmr analyze`` reports)
 :mod:`~wmr.analysis.reference`      the dense reference the fast kernels are checked against
-==================================  ==============================================================================
+==================================  ====================================================================================
 
 Every function takes a robot; none defaults to the paper's.
 """
 
 __all__ = ["linalg", "mobility", "isotropy", "kinematics", "steering", "simulation", "lines", "square", "singularities",
-           "det_exact", "sweep", "reference", "classes", "design", "motion_kappa", "overview"]
+           "det_exact", "sweep", "reference", "classes", "design", "motion_kappa", "overview", "actuation",
+           "limitations", "advice", "singular", "glossary"]

@@ -54,6 +54,7 @@ import numpy as np
 
 from ..model import validation as V
 from ..model.robot import Robot
+from ..model.tolerance import TOL
 from .linalg import null_space, rank
 from .mobility import twist_constraints
 from .steering import steering_angles
@@ -127,6 +128,12 @@ def _rows(robot, keep, beta):
     return A
 
 
+def _translation(t, scale):
+    """The twist is a translation: its dimensionless rotation part is zero (the rule of near_zero)."""
+    th = np.abs(np.asarray(t) * scale)
+    return bool(th[0] <= TOL * th.max())
+
+
 def _rank(A, scale):
     return int(rank(A, scale=scale)) if A.shape[0] else 0
 
@@ -158,6 +165,10 @@ def campion_class(robot):
     >>> c = campion_class(car)
     >>> c.delta_m, c.delta_s, c.name
     (1, 1, 'car-like')
+    >>> skid = wmr.Robot([wmr.FixedWheel((x, y), r=0.1, angle=np.pi / 2) for x in (0.4, -0.4) for y in (0.3, -0.3)])
+    >>> campion_class(skid).name
+    'degenerate: the fixed wheels allow only a translation along one direction (no turning)'
+
     """
     robot = V.numeric_robot(robot)
     w = robot.w
@@ -186,8 +197,10 @@ def campion_class(robot):
         name = CLASS_NAMES[(dm, ds)]
     elif dm == 0:
         name = "degenerate: the wheels admit no motion"
-    elif rf >= 2:
-        name = "degenerate: the fixed wheels allow only a rotation about one point"
+    elif rf >= 2:                                        # one twist left: a translation or a rotation
+        name = "degenerate: the fixed wheels allow only " + (
+            "a translation along one direction (no turning)" if _translation(t, scale)
+            else "a rotation about one point")
     else:
         name = "outside Campion's five classes"
     return CampionClass(delta_m=int(dm), delta_s=int(ds), label=f"({dm},{ds})", name=name, standard=standard,

@@ -26,9 +26,11 @@ import numpy as np
 from ..errors import InputValueError
 from ..model import validation as V
 from ..model.backend import NUMERIC
+from ..model.limits import check
 from ..model.platform import cos_sin, rotated
 from ..model.tolerance import TOL
 from ._batch import for_chunks
+from .actuation import driven_columns, uncontrolled
 from .linalg import pinv_columns, rank
 
 __all__ = ["Solution", "forward", "inverse"]
@@ -45,12 +47,21 @@ class Solution:
     residual : numpy.ndarray (..., 2w)
         :math:`\\mathbf J_1\\mathbf t - \\mathbf J_2\\dot{\\boldsymbol\\theta}` at the solution.
     admissible : numpy.ndarray of bool (...)
-        Residual is zero within :data:`~wmr.model.tolerance.TOL` (relative to the size of the terms).
+        ``no_slip`` and ``actuated``: no wheel slips and the motors command the motion.
+    no_slip : numpy.ndarray of bool (...)
+        The residual is zero within :data:`~wmr.model.tolerance.TOL` (forward: or within the
+        ``slip_tolerance`` given): no wheel slips.
+    actuated : numpy.ndarray of bool (...)
+        Inverse: no part of the twist is a motion the robot makes with every motor stopped, i.e.
+        none needs a passive joint to move by itself (:func:`wmr.analysis.actuation.uncontrolled`).
+        Forward: True (every joint rate is given).
     """
 
     value: np.ndarray
     residual: np.ndarray
     admissible: np.ndarray
+    no_slip: np.ndarray
+    actuated: np.ndarray
 
 
 @dataclass(frozen=True)
@@ -64,7 +75,8 @@ class _Constants:
     its two rows; ``Lp`` (n_rates, 2w), the block diagonal of the :math:`\mathbf L_i^+`; ``steer``,
     (unit, its rates' slice, :math:`\mathbf c_i`, :math:`\mathbf c_i^T/\mathbf c_i\mathbf c_i^T`) of each unit
     with a steering row (:meth:`~wmr.model.wheels.WheelUnit.steering_row`: a dual wheel); ``chunk``,
-    configurations per chunk.
+    configurations per chunk; ``passive``, some twist may need no motor (a passive joint, or
+    :math:`\mathbf J_1` of rank < 3: :func:`~wmr.analysis.actuation.uncontrolled` decides).
     """
 
     J1: np.ndarray
@@ -75,6 +87,7 @@ class _Constants:
     Lp: np.ndarray
     steer: tuple
     chunk: int
+    passive: bool
 
 
 #: robot id -> (robot, its units, its constants) while :func:`constants_kept` runs
@@ -116,8 +129,9 @@ def _constants(robot):
 
 
 def _from_model(robot):
-    J1 = robot.J1(backend=NUMERIC)
     w, n = robot.w, robot.n_rates
+    check("memory_mb", 3 * 8 * 2 * w * n / 2 ** 20, f"the kinematics of this robot ({w} wheel units, {n} rates)")
+    J1 = robot.J1(backend=NUMERIC)
     L, EL, Lp = np.zeros((2 * w, n)), np.zeros((2 * w, n)), np.zeros((n, 2 * w))
     steer = []
     for i, (u, sl) in enumerate(zip(robot.wheels, robot.rate_slices)):
@@ -131,7 +145,8 @@ def _from_model(robot):
     pinv_J1, rank_J1 = _pinv_rank(J1)
     # chunks small enough that the (2w x n) @ (n x chunk) products stay single-threaded in BLAS
     chunk = int(max(256, min(8192, 2 ** 18 // max(1, 2 * w * max(n, 3)))))
-    return _Constants(J1, pinv_J1, rank_J1 == 3, L, EL, Lp, tuple(steer), chunk)
+    passive = bool((~driven_columns(robot)).any()) or rank_J1 < 3      # some motion may need no motor
+    return _Constants(J1, pinv_J1, rank_J1 == 3, L, EL, Lp, tuple(steer), chunk, passive)
 
 
 def _pinv_rank(M):
@@ -175,16 +190,22 @@ def _flat(batch, *arrays):
 
 
 @np.errstate(over="ignore", invalid="ignore")        # overflow is checked on the results (_finite)
-def forward(robot, beta, rates):
+def forward(robot, beta, rates, slip_tolerance=None):
     r"""Platform twist from joint rates (least squares on (21)).
 
     Parameters
     ----------
     robot : Robot
     beta : array (..., w)
-        Steering angles.
+        Steering angles (radians).
     rates : array (..., n_rates)
-        Joint rates :math:`\dot{\boldsymbol\theta}` in the order of :attr:`Robot.rate_names`.
+        Joint rates :math:`\dot{\boldsymbol\theta}` (rad/s) in the order of :attr:`Robot.rate_names`.
+    slip_tolerance : float, optional
+        A slip speed (in the unit of length per unit of time of the robot, e.g. m/s) below which
+        a wheel counts as not slipping: measured rates are never exactly compatible (encoder
+        resolution, rounding).  ``admissible`` is then: every unit's residual
+        :math:`\|(\mathbf J_1\mathbf t - \mathbf J_2\dot{\boldsymbol\theta})_i\|` at most this.
+        Default: the round-off rule of :data:`~wmr.model.tolerance.TOL` (exactly compatible rates).
 
     Returns
     -------
@@ -214,6 +235,8 @@ def forward(robot, beta, rates):
     robot = V.numeric_robot(robot)
     beta = robot.effective_beta(beta)
     rates = V.finite_array("rates", rates, last=robot.n_rates)
+    if slip_tolerance is not None:
+        slip_tolerance = V.number("slip_tolerance", V.nonnegative("slip_tolerance", slip_tolerance))
     K = _constants(robot)
     if not K.full_rank:
         raise InputValueError(
@@ -236,7 +259,10 @@ def forward(robot, beta, rates):
 
     for_chunks(chunk, N, K.chunk)
     _finite("rates", rates, t, res)
-    return Solution(t.reshape(batch + (3,)), res.reshape(batch + (2 * w,)), adm.reshape(batch))
+    if slip_tolerance is not None:                          # each unit's slip speed against the user's bound
+        adm = np.hypot(res[:, 0::2], res[:, 1::2]).max(axis=1, initial=0.0) <= slip_tolerance
+    return Solution(t.reshape(batch + (3,)), res.reshape(batch + (2 * w,)), adm.reshape(batch), adm.reshape(batch),
+                    np.ones(batch, dtype=bool))
 
 
 @np.errstate(over="ignore", invalid="ignore")
@@ -277,10 +303,22 @@ def inverse(robot, beta, twist, beta_dot=None):
     ([-2.0, -2.0, -2.0], True)
     >>> bool(inverse(bot, [0.0, 0.0, 0.0], [0.0, 1.0, 0.0]).admissible)   # sideways: the wheels slip
     False
+
+    Four omni wheels with parallel axles roll sideways with every motor stopped: no slip, but the
+    motors do not command that motion, so it is not admissible for them.
+
+    >>> import wmr
+    >>> omni = wmr.Robot([wmr.SwedishWheel(p, r=0.05, angle=np.pi / 2, roller=np.pi / 2)
+    ...                   for p in [(0.25, 0.2), (0.25, -0.2), (-0.25, 0.2), (-0.25, -0.2)]])
+    >>> sol = inverse(omni, np.zeros(4), [0.0, 0.0, 1.0])
+    >>> bool(sol.admissible), bool(sol.no_slip), bool(sol.actuated)
+    (False, True, False)
+    >>> (sol.value.round(12) + 0.0).tolist()        # every motor at zero, the rollers turn
+    [0.0, 20.0, 0.0, 20.0, 0.0, 20.0, 0.0, 20.0]
     """
     robot = V.numeric_robot(robot)
     beta = robot.effective_beta(beta)
-    twist = V.finite_array("twist", twist, last=3)
+    twist = V.twist_array("twist", twist)
     arrays = [beta, twist]
     if beta_dot is not None:
         arrays.append(V.finite_array("beta_dot", beta_dot, last=robot.w))
@@ -310,4 +348,9 @@ def inverse(robot, beta, twist, beta_dot=None):
 
     for_chunks(chunk, N, K.chunk)
     _finite("twist", twist, rates, res)
-    return Solution(rates.reshape(batch + (robot.n_rates,)), res.reshape(batch + (2 * w,)), adm.reshape(batch))
+    if K.passive:                                           # a motion with every motor stopped is not commanded
+        actuated = uncontrolled(robot, b, tw)[1]
+    else:                                                   # every joint driven, J1 of rank 3: no such motion
+        actuated = np.ones(N, dtype=bool)
+    return Solution(rates.reshape(batch + (robot.n_rates,)), res.reshape(batch + (2 * w,)),
+                    (adm & actuated).reshape(batch), adm.reshape(batch), actuated.reshape(batch))

@@ -37,16 +37,23 @@ from .linalg import left_null_space, null_space, rank
 __all__ = ["twist_constraints", "rank_F", "mobility", "admissible_twists"]
 
 
-def twist_constraints(robot, beta):
+def twist_constraints(robot, beta, free=None):
     r"""The constraint rows :math:`\mathbf A(\boldsymbol\beta)` on the platform twist (see module notes).
 
     A twist :math:`\mathbf t` is admissible (some joint rates realise it without slip) exactly when
-    :math:`\mathbf A\mathbf t = \mathbf 0`.
+    :math:`\mathbf A\mathbf t = \mathbf 0`.  With ``free``, only the rate columns it marks may take
+    any value and the others are held at zero: unit i then contributes the left null space of its
+    free columns :math:`\mathbf L_i^{f}` (both rows, :math:`\mathbf N_i = \mathbf 1`, when it has none),
+    and :math:`\mathbf A\mathbf t = \mathbf 0` says that the free joints alone realise
+    :math:`\mathbf t` (with ``free`` = the passive joints: a motion the robot makes with every motor
+    stopped, :mod:`wmr.analysis.actuation`).
 
     Parameters
     ----------
     robot : Robot
     beta : array (..., w)
+    free : array of bool (n_rates,), optional
+        Which columns of :math:`\mathbf J_2` may move (default: all).
 
     Returns
     -------
@@ -68,9 +75,11 @@ def twist_constraints(robot, beta):
     # cos(beta_i) P_i + sin(beta_i) Q_i with constant P_i = N_i^T J1_i, Q_i = N_i^T E^T J1_i.
     Et = E(NUMERIC).T
     parts, base_rank = [], 0
-    for i, u in enumerate(robot.wheels):
-        N = left_null_space(u.local_block(NUMERIC))  # (2, k_i), constant
-        base_rank += 2 - N.shape[1]             # rank L_i
+    free = np.ones(robot.n_rates, dtype=bool) if free is None else np.asarray(free, dtype=bool)
+    for i, (u, sl) in enumerate(zip(robot.wheels, robot.rate_slices)):
+        Lf = np.asarray(u.local_block(NUMERIC), dtype=float)[:, free[sl]]
+        N = left_null_space(Lf) if Lf.shape[1] else np.eye(2)       # (2, k_i), constant
+        base_rank += 2 - N.shape[1]             # rank L_i (of its free columns)
         if N.shape[1] == 0:
             continue
         Ji = J1[2 * i:2 * i + 2]

@@ -226,7 +226,7 @@ def inverse(robot, beta, twist, beta_dot=None):
     admissible : numpy.ndarray of bool (...)
     """
     robot = V.numeric_robot(robot)
-    twist = V.finite_array("twist", twist, last=3)
+    twist = V.twist_array("twist", twist)
     beta_dot = None if beta_dot is None else V.finite_array("beta_dot", beta_dot, last=robot.w)
     V.batch_shape({"beta": V.finite_array("beta", beta, last=robot.w), "twist": twist, "beta_dot": beta_dot})
     B = J2(robot, beta)

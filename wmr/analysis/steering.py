@@ -77,7 +77,7 @@ def instantaneous_centre(twist, length=None):
     >>> ic.point.tolist()
     [-2.0, 0.0]
     """
-    t = V.finite_array("twist", twist, last=3)
+    t = V.twist_array("twist", twist)
     length = None if length is None else V.number("length", V.positive("length", length))
     psi, c = t[..., 0], t[..., 1:]
     big = np.max(np.abs(c), axis=-1)                                 # speeds up to 2.4e308: scaled first
@@ -140,7 +140,7 @@ def steering_angles(robot, twist, current=None):
     [0.0, -120.0, 120.0]
     """
     robot = V.numeric_robot(robot)
-    t = V.finite_array("twist", twist, last=3)
+    t = V.twist_array("twist", twist)
     w = robot.w
     if current is not None:
         current = V.finite_array("current", current, last=w)

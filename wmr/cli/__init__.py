@@ -32,6 +32,7 @@ COMMANDS = {
     "sweep": "sweep",
     "simulate": "simulate",
     "convert": "convert",
+    "explain": "explain",
 }
 
 
@@ -62,6 +63,9 @@ def main(argv=None):
     mod = importlib.import_module(f"{__name__}.{COMMANDS[args.command]}")
     try:
         return mod.run(args)
+    except BrokenPipeError:                                       # the reader stopped (wmr ... | head): not an error
+        sys.stderr.close()
+        return 0
     except (InputError, MissingDependencyError, OSError) as exc:  # bad input, a missing extra: one line
         print(f"wmr {args.command}: {' '.join(str(exc).split())}", file=sys.stderr)
         return 2

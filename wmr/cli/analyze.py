@@ -1,25 +1,33 @@
-"""``wmr analyze ROBOT.toml``: class, mobility, isotropy, dead zone and singular configurations of a robot.
+"""``wmr analyze ROBOT.toml``: class, actuation, limitations, mobility, isotropy, singular configurations of a robot.
 
 Examples::
 
     wmr analyze examples/swerve4.toml
-    wmr analyze examples/paper_offset.toml --json
+    wmr analyze examples/engineers/mecanum_same_hand.toml --json
+    wmr analyze examples/engineers/car.toml --convention wpilib
 
-A short aligned table for people; ``--json`` prints the same numbers for programs (keys
-``delta_m``, ``delta_s``, ``class``, ``rank_F``, ``nullity``, ``kappa_J_L1``, ...; infinities as the
-string ``"inf"``; angles in degrees).  The computation is :func:`wmr.analysis.overview.overview`.
+A short aligned table for people, with notes under it that say what its rows mean (``--brief``
+leaves them out; ``wmr explain TERM`` says more); ``--json`` prints the same numbers for programs
+(keys ``delta_m``, ``delta_s``, ``class``, ``actuated_mobility``, ``limitations``, ``rank_F``,
+``nullity``, ``kappa_J_L1``, ...; infinities as the string ``"inf"``; angles in degrees, in the
+convention chosen).  The computation is :func:`wmr.analysis.overview.overview`.
 """
 from __future__ import annotations
 
+import argparse
 import json
 import math
 
-__all__ = ["HELP", "add_arguments", "run", "as_json", "table"]
+import numpy as np
 
-HELP = "Campion class, mobility (rank F), isotropy, dead zone and singular configurations of a robot file"
+from ._options import ROBOT_FILE
+
+__all__ = ["HELP", "add_arguments", "run", "as_json", "table", "notes"]
+
+HELP = "class, actuated mobility, limitations, mobility (rank F), isotropy and singular configurations of a robot"
 
 
-def add_arguments(parser):
+def add_arguments(parser: argparse.ArgumentParser) -> None:
     """Options of ``wmr analyze``.
 
     Parameters
@@ -32,15 +40,18 @@ def add_arguments(parser):
     None
     """
     from ..analysis.overview import GRID_SIZE, TWISTS
-    parser.add_argument("robot", help="robot file (TOML)")
+    from ._options import add_convention
+    parser.add_argument("robot", help=ROBOT_FILE)
     parser.add_argument("--wheel-joints", metavar="NAMES", help="URDF only: the wheel joints, NAME[=RADIUS],...")
     parser.add_argument("--json", action="store_true", help="print JSON instead of a table")
     parser.add_argument("--grid", type=int, default=GRID_SIZE, metavar="N",
                         help=f"about N grid configurations of the steered angles (default {GRID_SIZE})")
     parser.add_argument("--twists", type=int, default=TWISTS, metavar="N",
-                        help=f"add the steering angles of N random twists (default {TWISTS})")
+                        help=f"sample N twists for the drivable configurations (default {TWISTS})")
     parser.add_argument("--seed", type=int, default=0,
                         help="seed of the random twists and of the generic configuration")
+    parser.add_argument("--brief", action="store_true", help="the table without the notes under it")
+    add_convention(parser)
 
 
 def _num(x):
@@ -51,12 +62,19 @@ def _g(x):
     return f"{x:.4g}" if math.isfinite(x) else "inf"
 
 
-def as_json(ov):
+def _angles(beta, convention):
+    from ..model.conventions import angle_to
+    return [round(math.degrees(b), 6) + 0.0 for b in angle_to(np.asarray(beta, dtype=float), convention)]
+
+
+def as_json(ov, convention: str = "wmr") -> dict:
     """The JSON object of an overview.
 
     Parameters
     ----------
     ov : wmr.analysis.overview.Overview
+    convention : str, optional
+        How the singular configurations' angles are written (:data:`wmr.model.conventions.CONVENTIONS`).
 
     Returns
     -------
@@ -64,24 +82,28 @@ def as_json(ov):
     """
     c = ov.campion
     return {"name": ov.name, "wheels": list(ov.kinds), "delta_m": c["delta_m"], "delta_s": c["delta_s"],
-            "class": c["label"],
+            "class": c["label"], "class_name": c["name"], "actuated_mobility": ov.actuated_mobility,
+            "uncontrolled": list(ov.uncontrolled), "limitations": list(ov.limitations),
             "rank_F": {"generic": ov.rank_F, "min": ov.rank_F_range[0], "max": ov.rank_F_range[1]},
             "nullity": {"generic": ov.nullity, "min": ov.nullity_range[0], "max": ov.nullity_range[1]},
             "configurations": ov.configurations, "L": ov.L, "kappa_J_L1": _num(ov.kappa_JL1),
             "kappa_J2": _num(ov.kappa_J2),
-            "kappa_J": {"min": _num(ov.kappa_J_range[0]), "max": _num(ov.kappa_J_range[1])},
-            "isotropic": dict(ov.isotropic), "advice": list(ov.advice), "dead_zone": ov.dead_zone,
-            "singular": [{"family": f["family"], "description": f["description"],
-                          "beta_deg": [round(math.degrees(b), 6) for b in f["beta"]], "rank_J": f["rank_J"],
+            "kappa_J": {**{k: _num(v) for k, v in ov.kappa_J.items()}, "drivable_configurations": ov.drivable},
+            "isotropic": dict(ov.isotropic), "advice": list(ov.advice), "advised": list(ov.advised),
+            "dead_zone": ov.dead_zone, "convention": convention,
+            "singular": [{"family": f["family"], "description": f["description"], "meaning": f["meaning"],
+                          "angles_deg": _angles(f["beta"], convention), "rank_J": f["rank_J"],
                           "rank_F": f["rank_F"]} for f in ov.singular]}
 
 
-def table(ov):
+def table(ov, convention: str = "wmr") -> str:
     """The overview as a short aligned table (one fact per row).
 
     Parameters
     ----------
     ov : wmr.analysis.overview.Overview
+    convention : str, optional
+        How angles are written.
 
     Returns
     -------
@@ -91,15 +113,26 @@ def table(ov):
     for k in ov.kinds:
         counts[k] = counts.get(k, 0) + 1
     c = ov.campion
+    kj = ov.kappa_J
+    if ov.actuated_mobility < c["delta_m"]:
+        actuated = (f"{ov.actuated_mobility} of delta_m = {c['delta_m']}: the motors cannot move it "
+                    + " or ".join(ov.uncontrolled))
+    else:
+        actuated = f"{ov.actuated_mobility}: the motors command every motion it can make"
     rows = [("robot", ov.name), ("wheels", ", ".join(f"{n} {k}" for k, n in counts.items())),
-            ("class", f"{c['label']}: delta_m = {c['delta_m']}, delta_s = {c['delta_s']} (Campion et al. 1996)"),
-            ("rank F", f"{ov.rank_F} generic, {ov.rank_F_range[0]}..{ov.rank_F_range[1]} over "
-                       f"{ov.configurations:,} configurations"),
-            ("nullity F", f"{ov.nullity} generic, {ov.nullity_range[0]}..{ov.nullity_range[1]}"),
-            ("L", f"{ov.L:.4g} (the characteristic length minimising kappa(J_L1))"),
-            ("kappa(J_L1)", _g(ov.kappa_JL1) + (" isotropic" if ov.isotropic["J_L1"] else "")),
-            ("kappa(J2)", _g(ov.kappa_J2) + (" isotropic" if ov.isotropic["J2"] else "") + ", at every configuration"),
-            ("kappa(J)", f"{_g(ov.kappa_J_range[0])} .. {_g(ov.kappa_J_range[1])} over the configurations")]
+            ("class", f"{c['label']}: delta_m = {c['delta_m']}, delta_s = {c['delta_s']}, {c['name']} "
+                      "(Campion et al. 1996)"),
+            ("actuated", actuated)]
+    rows += [("limitation" if n == 0 else "", s) for n, s in enumerate(ov.limitations)]
+    rows += [("rank F", f"{ov.rank_F} generic, {ov.rank_F_range[0]}..{ov.rank_F_range[1]} over "
+                        f"{ov.configurations:,} configurations"),
+             ("nullity F", f"{ov.nullity} generic, {ov.nullity_range[0]}..{ov.nullity_range[1]}"),
+             ("L", f"{ov.L:.4g} (the characteristic length minimising kappa(J_L1) with C where it is)"),
+             ("kappa(J_L1)", _g(ov.kappa_JL1) + (" isotropic" if ov.isotropic["J_L1"] else "")),
+             ("kappa(J2)", _g(ov.kappa_J2) + (" isotropic" if ov.isotropic["J2"] else "")
+              + ", at every configuration"),
+             ("kappa(J)", f"{_g(kj['min'])} .. {_g(kj['max'])}, median {_g(kj['median'])}, 95% below "
+                          f"{_g(kj['p95'])}, over {ov.drivable:,} drivable configurations")]
     if ov.dead_zone is not None:
         rows.append(("dead zone", f"radius {ov.dead_zone:.4g}: C's circle when the units are steered without driving "
                                   "(drift-free only for offset 0)"))
@@ -107,19 +140,43 @@ def table(ov):
         rows.append(("dead zone", "none: the offsets differ, the locked units cannot be steered together"))
     if any(ov.steered) and not ov.singular:
         rows.append(("singular", "none found: rank J = 3 at every candidate"))
+    unit = "axle angles" if convention == "wmr" else f"{convention} module angles"
     for n, f in enumerate(ov.singular):
-        beta = ", ".join(f"{math.degrees(b):.4g}" for b in f["beta"])
-        rows.append(("singular" if n == 0 else "", f"{f['family']}: {f['description']}; e.g. beta = ({beta}) deg, "
-                                                   f"rank J = {f['rank_J']}, rank F = {f['rank_F']}"))
+        beta = ", ".join(f"{a:.4g}" for a in _angles(f["beta"], convention))
+        rows.append(("singular" if n == 0 else "", f"{f['family']}: {f['description']}; e.g. ({beta}) deg "
+                                                   f"{unit}, rank J = {f['rank_J']}"))
+        rows.append(("", f"  means: {f['meaning']}"))
     if not ov.advice:
         rows.append(("isotropy", "J_L1 and J2 are isotropic as designed"))
     for n, a in enumerate(ov.advice):
-        rows.append(("to isotropy" if n == 0 else "", a))
+        rows.append(("advice" if n == 0 else "", a))
     width = max(len(k) for k, _ in rows)
     return "\n".join(f"{k:<{width}}  {v}" for k, v in rows)
 
 
-def run(args):
+#: the glossary terms the table uses, in its order
+TERMS = ("class", "actuated-mobility", "rank-F", "nullity", "L", "J_L1", "J2", "J", "singular", "isotropic")
+
+
+def notes(ov) -> str:
+    """The notes under the table: one line per term it uses (:mod:`wmr.analysis.glossary`).
+
+    Parameters
+    ----------
+    ov : wmr.analysis.overview.Overview
+
+    Returns
+    -------
+    str
+    """
+    from ..analysis.glossary import lookup
+    used = [t for t in TERMS if t != "singular" or ov.singular]
+    lines = ["", "What the rows mean (wmr explain TERM for more):"]
+    lines += [f"  {lookup(t).term:<18} {lookup(t).short}" for t in used]
+    return "\n".join(lines)
+
+
+def run(args: argparse.Namespace) -> int:
     """Run ``wmr analyze``.
 
     Parameters
@@ -136,5 +193,8 @@ def run(args):
     from ..analysis.overview import overview
     robot = wmr.load(args.robot, wheel_joints=args.wheel_joints)
     ov = overview(robot, grid=args.grid, twists=args.twists, seed=args.seed)
-    print(json.dumps(as_json(ov), indent=2) if args.json else table(ov))
+    if args.json:
+        print(json.dumps(as_json(ov, args.convention), indent=2))
+    else:
+        print(table(ov, args.convention) + ("" if args.brief else "\n" + notes(ov)))
     return 0

@@ -3,29 +3,43 @@
 Examples::
 
     wmr fk examples/swerve4.toml --angles 0 0 0 0 --rates -10 -10 -10 -10
+    wmr fk examples/swerve4.toml --angles 0 0 0 0 --rates 10 10 10 10 --convention wpilib
     wmr fk examples/paper_offset.toml --angles 10 20 30 --rates 1 2 1 2 1 2 --json
 
-``--angles`` in degrees, one per unit; ``--rates`` in rad/s in the order of
+``--angles`` in degrees, one per unit, in the convention of ``--convention`` (wmr: axle angles;
+wpilib, ros: the direction of travel); ``--rates`` in rad/s in the order of
 :attr:`wmr.Robot.rate_names` (``theta_dot_i`` for a centred wheel, ``phi_dot_i theta_dot_i`` for an
 offset wheel, ``theta_dot_i1 theta_dot_i2`` for a dual wheel).  The twist is the least-squares
 solution of (21) (:func:`wmr.forward`), printed as ``omega`` (rad/s), ``vx``, ``vy`` (m/s, body
-frame); the slip residual :math:`\\mathbf J_1\\mathbf t - \\mathbf J_2\\dot{\\boldsymbol\\theta}` is zero
-exactly when the rates are compatible.
+frame).  The slip residual :math:`\\mathbf J_1\\mathbf t - \\mathbf J_2\\dot{\\boldsymbol\\theta}` is the
+velocity each wheel would slide at; measured rates never make it exactly zero, so a wheel counts as
+not slipping when its slip speed is at most ``--slip-tolerance`` (m/s).  Its default is one count of
+the encoder per control period at the largest wheel's rim, :math:`r\\,2\\pi/(N\\,T)` with ``N`` =
+``--encoder-counts`` (default 2048 per revolution) and ``T`` = ``--period`` (default 0.02 s): about
+7.8 mm/s for a 4-inch swerve wheel.  ``--slip-tolerance 0`` asks for exactly compatible rates.
 """
 from __future__ import annotations
 
+import argparse
 import json
+import math
 
 import numpy as np
 
-from ._numbers import clean, fmt, numbers
+from ._numbers import clean, fmt, number, numbers
+from ._options import ROBOT_FILE, add_convention, twist_words
 
-__all__ = ["HELP", "add_arguments", "run"]
+__all__ = ["HELP", "add_arguments", "run", "ENCODER_COUNTS", "PERIOD", "default_slip_tolerance"]
 
 HELP = "the platform twist (least squares) and the slip residual for steering angles and wheel rates"
 
+#: encoder counts per wheel revolution assumed by the default slip tolerance (a common FRC motor's encoder)
+ENCODER_COUNTS = 2048
+#: control period in seconds assumed by the default slip tolerance (WPILib's 20 ms loop)
+PERIOD = 0.02
 
-def add_arguments(parser):
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
     """Options of ``wmr fk``.
 
     Parameters
@@ -37,15 +51,49 @@ def add_arguments(parser):
     -------
     None
     """
-    parser.add_argument("robot", help="robot file (TOML)")
+    parser.add_argument("robot", help=ROBOT_FILE)
     parser.add_argument("--angles", nargs="+", metavar="DEG", required=True,
-                        help="steering angles in degrees, one per unit (space- or comma-separated)")
+                        help="steering angles in degrees, one per unit (space- or comma-separated), in the "
+                             "convention chosen")
     parser.add_argument("--rates", nargs="+", metavar="RATE", required=True,
                         help="joint rates in rad/s, in the order of the robot's rate names")
+    parser.add_argument("--slip-tolerance", metavar="M_PER_S", default=None,
+                        help="slip speed (m/s) below which a wheel counts as not slipping (default: one encoder "
+                             "count per control period at the largest wheel's rim, see --encoder-counts, --period)")
+    parser.add_argument("--encoder-counts", metavar="N", default=str(ENCODER_COUNTS),
+                        help=f"encoder counts per wheel revolution for the default slip tolerance "
+                             f"(default {ENCODER_COUNTS})")
+    parser.add_argument("--period", metavar="S", default=str(PERIOD),
+                        help=f"control period in seconds for the default slip tolerance (default {PERIOD})")
     parser.add_argument("--json", action="store_true", help="print JSON instead of a table")
+    add_convention(parser)
 
 
-def run(args):
+def default_slip_tolerance(robot, counts: float = ENCODER_COUNTS, period: float = PERIOD) -> float:
+    """One encoder count per control period at the largest wheel's rim: ``r 2 pi / (counts period)`` (m/s).
+
+    Parameters
+    ----------
+    robot : Robot
+    counts : float, optional
+        Encoder counts per wheel revolution.
+    period : float, optional
+        Control period, s.
+
+    Returns
+    -------
+    float
+
+    Examples
+    --------
+    >>> import wmr
+    >>> round(default_slip_tolerance(wmr.load("examples/swerve4.toml")), 5)       # 4-inch wheels
+    0.00779
+    """
+    return max(float(u.r) for u in robot.wheels) * 2 * math.pi / (counts * period)
+
+
+def run(args: argparse.Namespace) -> int:
     """Run ``wmr fk``.
 
     Parameters
@@ -58,21 +106,42 @@ def run(args):
         0; bad input raises an input error (:mod:`wmr.errors`; :func:`wmr.cli.main` reports it in one line, status 2).
     """
     import wmr
+
+    from ..errors import InputValueError
+    from ..model.conventions import angle_from
     robot = wmr.load(args.robot)
-    beta = np.radians(numbers(args.angles, "--angles", robot.w, "one angle in degrees per wheel unit"))
+    given = np.radians(numbers(args.angles, "--angles", robot.w, "one angle in degrees per wheel unit"))
+    beta = angle_from(given, args.convention)
     rates = np.array(numbers(args.rates, "--rates", robot.n_rates, " ".join(robot.rate_names)))
-    sol = wmr.forward(robot, beta, rates)
+    counts, period = number(args.encoder_counts, "--encoder-counts"), number(args.period, "--period")
+    if counts <= 0 or period <= 0:
+        raise InputValueError(f"--encoder-counts and --period must be positive, got {args.encoder_counts!r} "
+                              f"and {args.period!r}")
+    if args.slip_tolerance is None:
+        tol, why = default_slip_tolerance(robot, counts, period), (f"one count of a {counts:g}-count encoder per "
+                                                                   f"{period:g} s at the wheel rim")
+    else:
+        tol, why = number(args.slip_tolerance, "--slip-tolerance"), "--slip-tolerance"
+        if tol < 0:
+            raise InputValueError(f"--slip-tolerance must be >= 0 (m/s), got {args.slip_tolerance!r}")
+    sol = wmr.forward(robot, beta, rates, slip_tolerance=tol if tol > 0 else None)
     size = float(np.abs(robot.mount_points).max())
     t = clean(sol.value, max(abs(sol.value[0]) * size, *np.abs(sol.value[1:])))      # rounding noise shown as 0
     res = clean(sol.residual, float(np.abs(robot.J2(beta) @ rates).max()))
-    out = {"omega": float(t[0]), "vx": float(t[1]), "vy": float(t[2]), "admissible": bool(sol.admissible),
-           "slip": float(np.linalg.norm(sol.residual)), "residual": sol.residual.tolist()}
+    per_wheel = np.hypot(sol.residual[0::2], sol.residual[1::2])
+    out = {**twist_words(t, args.convention), "convention": args.convention, "admissible": bool(sol.admissible),
+           "slip": float(np.linalg.norm(sol.residual)), "slip_max_wheel": float(per_wheel.max()),
+           "slip_tolerance": tol, "residual": sol.residual.tolist()}
     if args.json:
         print(json.dumps(out, indent=2))
         return 0
-    rows = [("omega", f"{fmt(t[0])} rad/s"), ("vx", f"{fmt(t[1])} m/s"), ("vy", f"{fmt(t[2])} m/s"),
-            ("slip", f"{fmt(float(np.linalg.norm(res)), 3)} m/s (norm of J1 t - J2 theta_dot)"),
-            ("admissible", "yes: the rates are compatible" if sol.admissible else "no: the wheels would slip")]
+    units = {"omega": "rad/s", "vx": "m/s", "vy": "m/s"}
+    rows = [(k, f"{fmt(out[k])} {units[k]}") for k in twist_words(t, args.convention)]
+    rows += [("slip", f"{fmt(float(np.linalg.norm(res)), 3)} m/s (norm of J1 t - J2 theta_dot); largest wheel "
+                      f"{fmt(float(per_wheel.max()), 3)} m/s"),
+             ("tolerance", f"{fmt(tol, 3)} m/s ({why})"),
+             ("admissible", "yes: no wheel slips more than the tolerance" if sol.admissible
+              else "no: the wheels would slip")]
     for k, _ in enumerate(robot.wheels):
         rows.append((f"residual {k + 1}", f"({fmt(res[2 * k], 3)}, {fmt(res[2 * k + 1], 3)}) m/s"))
     width = max(len(k) for k, _ in rows)

@@ -23,6 +23,7 @@ import numpy as np
 
 from ..errors import InputValueError
 from ._numbers import fmt, number
+from ._options import ROBOT_FILE
 
 __all__ = ["HELP", "add_arguments", "run"]
 
@@ -41,7 +42,7 @@ def add_arguments(parser):
     -------
     None
     """
-    parser.add_argument("robot", help="robot file (TOML)")
+    parser.add_argument("robot", help=ROBOT_FILE)
     parser.add_argument("--vx", default="0", help="velocity of C along the body x axis, m/s (default 0)")
     parser.add_argument("--vy", default="0", help="velocity of C along the body y axis, m/s (default 0)")
     parser.add_argument("--omega", default="0", help="turning rate, rad/s, counter-clockwise (default 0)")

@@ -1,14 +1,26 @@
-"""``wmr sweep ROBOT.toml ANALYSIS``: an analysis over a grid or a random sample of steering angles.
+"""``wmr sweep ROBOT.toml ANALYSIS``: an analysis over the configurations a robot can drive in, or over all of them.
 
 Examples::
 
-    wmr sweep examples/paper_centred.toml kappa_J --grid 72
-    wmr sweep examples/swerve.toml rank_F --sample 1e8 --seed 1 --json
-    wmr sweep examples/swerve.toml mobility --grid 36 --dask local:2
+    wmr sweep examples/swerve4.toml kappa_J                      # 1e6 drivable configurations
+    wmr sweep examples/swerve4.toml mobility --sample 1e7 --json
+    wmr sweep examples/paper_centred.toml kappa_J --angles any --grid 72
+    wmr sweep examples/swerve4.toml rank_F --angles any --sample 1e8 --dask local:2
 
-The reduction (count, min, max, quantiles, the worst configuration) is printed as a short table,
-or as JSON with ``--json``; a progress bar goes to stderr while the sweep runs (``--no-progress``
-turns it off).  Angles on the command line are in degrees.
+By default (``--angles drivable``) the configurations are those a steered robot can drive in: the
+steering angles of sampled twists (:class:`wmr.analysis.sweep.Drivable`); ``--sample N`` sets how
+many (default 1e6).  ``--angles any`` covers every steering angle, drivable or not: a grid
+(``--grid``, the default with ``--angles any``) or ``--sample N`` random configurations, in
+``--range``.  The reduction (count, min, max, quantiles, the worst configuration: the minimum for
+rank F and the mobilities, the maximum for a condition number) says which set it covers; it is
+printed as a short table, or as JSON with ``--json``; a progress bar goes to stderr while the sweep
+runs (``--no-progress`` turns it off).  Angles on the command line are in degrees, in the convention
+of ``--convention``.
+
+Limits (:mod:`wmr.model.limits`) are checked before the sweep starts: at most 1e9 configurations
+(``WMR_MAX_CONFIGURATIONS``) and 1024 MB of working memory (``WMR_MAX_MEMORY_MB``).  Ctrl-C stops the
+sweep after the chunk in progress and prints the result over the configurations done so far
+(marked INTERRUPTED), with exit status 130; a second Ctrl-C stops at once.
 """
 from __future__ import annotations
 
@@ -19,8 +31,10 @@ import sys
 import time
 
 from ..errors import InputValueError
+from ._options import ROBOT_FILE, add_convention
 
-HELP = "evaluate rank F, mobility, det J or a condition number over a grid or a sample of steering angles"
+HELP = ("evaluate rank F, mobility, actuated mobility, det J or a condition number over the drivable "
+        "configurations (or all)")
 
 
 def add_arguments(parser):
@@ -36,15 +50,20 @@ def add_arguments(parser):
     None
     """
     from ..analysis.sweep import ANALYSES, CHUNK, QUANTILES
-    parser.add_argument("robot", help="robot file (TOML)")
+    parser.add_argument("robot", help=ROBOT_FILE)
     parser.add_argument("analysis", choices=sorted(ANALYSES), help="what to evaluate at each configuration")
+    parser.add_argument("--angles", choices=("drivable", "any"), default=None,
+                        help="drivable: the steering angles of sampled twists, where the robot can move (the "
+                             "default); any: every steering angle, drivable or not (the default with --grid)")
     which = parser.add_mutually_exclusive_group()
-    which.add_argument("--grid", metavar="STEPS", help="regular grid: STEPS values per angle (default 36), "
-                       "or one count per wheel separated by commas")
-    which.add_argument("--sample", metavar="N", help="N random configurations (e.g. 1e6)")
+    which.add_argument("--grid", metavar="STEPS", help="with --angles any: a regular grid of STEPS values per "
+                       "steered angle (default 36), or one count per wheel separated by commas")
+    which.add_argument("--sample", metavar="N", help="N sampled twists (drivable, default 1e6) or N random "
+                       "configurations (any), e.g. 1e6")
     parser.add_argument("--seed", type=int, default=0, help="seed of --sample (default 0)")
-    parser.add_argument("--range", nargs=2, type=float, metavar=("LO", "HI"), default=(-180.0, 180.0),
-                        help="range of every steering angle in degrees (default -180 180)")
+    parser.add_argument("--range", nargs=2, type=float, metavar=("LO", "HI"), default=None,
+                        help="with --angles any: range of every steering angle in degrees, in the convention "
+                             "chosen (default -180 180)")
     parser.add_argument("--length", type=float, default=None, metavar="L",
                         help="characteristic length of J_L1 (default: the robot's characteristic length)")
     parser.add_argument("--quantiles", default=",".join(f"{q:g}" for q in QUANTILES),
@@ -55,6 +74,7 @@ def add_arguments(parser):
     parser.add_argument("--json", action="store_true", help="print JSON instead of a table")
     parser.add_argument("--progress", action=argparse.BooleanOptionalAction, default=None,
                         help="show a progress bar on stderr (default: when stderr is a terminal)")
+    add_convention(parser)
 
 
 def _number(text, name):
@@ -74,14 +94,24 @@ def _level(text):
         raise InputValueError(f"--quantiles must be numbers in [0, 1] separated by commas, got {text!r}") from None
 
 
-def _angles(args, w):
-    from ..analysis.sweep import Grid, Sample
-    lo, hi = (math.radians(a) for a in args.range)
+def _angles(args, robot):
+    from ..analysis.sweep import Drivable, Grid, Sample
+    from ..model.conventions import angle_from
+    mode = args.angles or ("any" if args.grid is not None or args.range is not None else "drivable")
+    if mode == "drivable":
+        if args.grid is not None or args.range is not None:
+            raise InputValueError("--grid and --range cover every steering angle: give --angles any with them "
+                                  "(the drivable configurations are sampled: --sample N)")
+        return Drivable(_number(args.sample or "1e6", "sample"), seed=args.seed)
+    lo_deg, hi_deg = args.range or (-180.0, 180.0)
+    lo = math.radians(lo_deg) + float(angle_from(0.0, args.convention))      # the convention's 0 in wmr's angles
+    hi = lo + math.radians(hi_deg - lo_deg)
     if args.sample is not None:
         return Sample(_number(args.sample, "sample"), seed=args.seed, lo=lo, hi=hi)
-    steps = (args.grid or "36").split(",")
-    steps = [_number(s, "grid") for s in steps]
-    return Grid(steps[0] if len(steps) == 1 else tuple(steps), lo=lo, hi=hi)
+    steps = [_number(s, "grid") for s in (args.grid or "36").split(",")]
+    if len(steps) == 1:                          # unsteered units keep their own angle: one value is enough
+        steps = [steps[0] if steered else 1 for steered in robot.steered]
+    return Grid(tuple(steps), lo=lo, hi=hi)
 
 
 class _Bar:
@@ -118,14 +148,20 @@ def _client(spec):
     return Client(spec), None
 
 
-def _as_json(res):
+def _as_json(res, convention="wmr"):
+    from ..analysis.sweep import ANALYSES
+    from ..model.conventions import angle_to
+
     def num(x):
         return x if math.isfinite(x) else ("inf" if x > 0 else "-inf")
-    return {"analysis": res.analysis, "count": res.count, "min": num(res.min), "max": num(res.max),
-            "argmin_deg": [math.degrees(a) for a in res.argmin],
-            "argmax_deg": [math.degrees(a) for a in res.argmax],
-            "worst": num(res.worst), "worst_index": res.worst_index,
-            "worst_deg": [math.degrees(a) for a in res.worst_angles],
+
+    def deg(beta):
+        return [math.degrees(a) for a in angle_to(beta, convention)]
+    return {"analysis": res.analysis, "covers": res.covers, "complete": res.complete, "count": res.count,
+            "convention": convention, "min": num(res.min), "max": num(res.max),
+            "argmin_deg": deg(res.argmin), "argmax_deg": deg(res.argmax),
+            "worst": num(res.worst), "worst_is": ANALYSES[res.analysis].worst, "worst_index": res.worst_index,
+            "worst_deg": deg(res.worst_angles),
             "quantiles": {f"{q:g}": num(v) for q, v in res.quantiles.items()},
             "counts": {str(k): n for k, n in res.counts.items()}, "infinite": res.infinite}
 
@@ -148,17 +184,24 @@ def run(args):
     client = cluster = None
     try:
         robot = wmr.load(args.robot)
-        angles = _angles(args, robot.w)
+        angles = _angles(args, robot)
         qs = [_level(q) for q in args.quantiles.split(",") if q.strip()]
         show = sys.stderr.isatty() if args.progress is None else args.progress
         if args.dask:
             client, cluster = _client(args.dask)
         res = sweep(robot, args.analysis, angles, L=args.length, quantiles=qs, chunk=args.chunk,
-                    progress=_Bar(sys.stderr) if show else None, client=client)
+                    progress=_Bar(sys.stderr) if show else None, client=client, interruptible=True)
     finally:
         if client is not None:
             client.close()
         if cluster is not None:
             cluster.close()
-    print(json.dumps(_as_json(res), indent=2) if args.json else res.summary())
+    if res.count == 0:
+        print("wmr sweep: interrupted (Ctrl-C) before any configuration was evaluated", file=sys.stderr)
+        return 130
+    print(json.dumps(_as_json(res, args.convention), indent=2) if args.json else res.summary(args.convention))
+    if not res.complete:
+        print(f"wmr sweep: interrupted (Ctrl-C) after {res.count:,} configurations: the result above covers "
+              "those only", file=sys.stderr)
+        return 130
     return 0

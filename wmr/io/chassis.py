@@ -28,6 +28,8 @@ __all__ = ["twist_of", "chassis_speeds", "is_chassis_speeds"]
 def is_chassis_speeds(obj):
     """True for a WPILib ``ChassisSpeeds`` or ``Twist2d`` (any object with their attributes), or a sequence of them.
 
+    The objects are those of :data:`wmr.model.arrays.TWIST_OBJECTS` (a ROS ``Twist`` too).
+
     Parameters
     ----------
     obj : object
@@ -36,24 +38,16 @@ def is_chassis_speeds(obj):
     -------
     bool
     """
-    def one(x):
-        return all(hasattr(x, a) for a in ("vx", "vy", "omega")) or all(hasattr(x, a) for a in ("dx", "dy", "dtheta"))
     if isinstance(obj, Sequence) and not isinstance(obj, str):
-        return bool(obj) and all(one(x) for x in obj)
-    return one(obj)
-
-
-def _one_twist(obj):
-    if all(hasattr(obj, a) for a in ("vx", "vy", "omega")):
-        return [float(obj.omega), float(obj.vx), float(obj.vy)]
-    if all(hasattr(obj, a) for a in ("dx", "dy", "dtheta")):
-        return [float(obj.dtheta), float(obj.dx), float(obj.dy)]
-    raise InputTypeError(f"expected a WPILib ChassisSpeeds(vx, vy, omega) or Twist2d(dx, dy, dtheta), got "
-                         f"{V.show(obj)}")
+        return bool(obj) and all(V.twist_kind(x) is not None for x in obj)
+    return V.twist_kind(obj) is not None
 
 
 def twist_of(speeds):
     r"""wmr's twist :math:`[\dot\psi, \dot x, \dot y]` of a ``ChassisSpeeds`` (or the increment of a ``Twist2d``).
+
+    Read by field names (:func:`wmr.model.arrays.twist_array`, the one conversion every function that
+    takes a twist uses).
 
     Parameters
     ----------
@@ -69,9 +63,10 @@ def twist_of(speeds):
     wmr.errors.InputTypeError
         If ``speeds`` is neither (an array is not accepted: its order would be a guess).
     """
-    if isinstance(speeds, Sequence) and not isinstance(speeds, str):
-        return V.finite_array("speeds", [_one_twist(s) for s in speeds]).reshape(-1, 3)
-    return V.finite_array("speeds", _one_twist(speeds))
+    if not is_chassis_speeds(speeds):
+        raise InputTypeError(f"speeds must be a WPILib ChassisSpeeds(vx, vy, omega) or Twist2d(dx, dy, dtheta), "
+                             f"or a sequence of them, got {V.show(speeds)}")
+    return V.twist_array("speeds", speeds)
 
 
 def chassis_speeds(twist):

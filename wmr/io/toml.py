@@ -15,8 +15,9 @@ unit; angles in degrees)::
 Each kind takes exactly its keys, declared by the kind itself (its ``FILE_KEYS``,
 :mod:`wmr.model.wheels.filekeys`; :func:`wheel_keys` lists them); ``driven`` is optional for every
 kind.  A malformed file raises :class:`~wmr.errors.RobotFileError`, whose message is one line,
-``FILE:LINE: key: what is wrong``; wheels are named ``wheel[k]`` with ``k`` counted from 1, as the
-paper numbers them.
+``FILE:LINE: key: what is wrong`` (also for a file of more wheels than :mod:`wmr.model.limits`
+allows, refused before it is parsed); a byte-order mark at the start is accepted; wheels are named
+``wheel[k]`` with ``k`` counted from 1, as the paper numbers them.
 
 Examples
 --------
@@ -39,8 +40,9 @@ from typing import NoReturn
 
 import numpy as np
 
-from ..errors import InputError, InputTypeError, InputValueError, RobotFileError
+from ..errors import InputError, InputTypeError, InputValueError, LimitError, RobotFileError
 from ..model import validation as V
+from ..model.limits import check, limit
 from ..model.robot import Robot
 from ..model.tolerance import near_zero
 from ..model.wheels import wheel_kinds
@@ -81,18 +83,25 @@ class _Lines:
     def __init__(self, text):
         self.top: dict[str, int] = {}
         self.wheels: list[tuple[int, dict[str, int]]] = []          # [(header line, {key: line})]
-        where = self.top
+        self.owner: list[int | None] = [None]                       # line -> its wheel table (0-based) or None
+        where, wheel = self.top, None
         for n, line in enumerate(text.splitlines(), 1):
             if _WHEEL_HEADER.match(line):
                 self.wheels.append((n, {}))
-                where = self.wheels[-1][1]
+                where, wheel = self.wheels[-1][1], len(self.wheels) - 1
             elif _HEADER.match(line):
-                where = {}
+                where, wheel = {}, None
             else:
                 m = _KEY.match(line)
                 if m:
                     where.setdefault(m.group(1).strip("\"'"), n)
+            self.owner.append(wheel)
         self.end = max(1, len(text.splitlines()))
+
+    def key_at(self, line, key):
+        """``key`` as it is named in messages when it is on ``line``: ``wheel[k].key`` inside a wheel table."""
+        k = self.owner[line] if 0 < line < len(self.owner) else None
+        return key if k is None else f"wheel[{k + 1}].{key}"
 
     def of(self, k=None, key=None):
         """Line of ``key`` in wheel ``k`` (0-based; None: top level), else of the wheel's table, else 1."""
@@ -163,8 +172,10 @@ def _wheel(k, table, lines, fail):
         fields["driven"] = _driven(table[_DRIVEN], cls, (lines.of(k, _DRIVEN), f"{name}.{_DRIVEN}"), fail)
     try:
         return cls(**fields)
-    except InputError as exc:
-        fail(lines.of(k), name, str(exc))
+    except InputError as exc:                  # the key whose field the message names first, else the table
+        first = str(exc).split(" ", 1)[0]
+        at = next((key.name for key in keys.values() if key.field == first), None)
+        fail(lines.of(k, at), f"{name}.{at}" if at else name, str(exc))
 
 
 def loads(text, source="<string>"):
@@ -201,10 +212,20 @@ def loads(text, source="<string>"):
         raise InputTypeError(f"text must be the TOML text of a robot file (str), got {V.show(text)}")
     if not isinstance(source, str):
         raise InputTypeError(f"source must be a file name (str), got {V.show(source)}")
+    text = text.removeprefix("\ufeff")                     # a byte-order mark (some editors write one)
     lines = _Lines(text)
 
     def fail(line: int, key: str, reason: str) -> NoReturn:
         raise RobotFileError(source, line, key, reason)
+
+    def too_many(count: int, line: int) -> None:          # before any work: parsing, units, the robot
+        try:
+            check("wheels", count, "the file")
+        except LimitError as exc:
+            fail(line, "wheel", str(exc))
+
+    most = limit("wheels")
+    too_many(len(lines.wheels), lines.wheels[most][0] if len(lines.wheels) > most else 1)
 
     try:
         data, msg = tomllib.loads(text), None
@@ -216,7 +237,8 @@ def loads(text, source="<string>"):
         head = re.sub(r"\s*\(at .*\)$", "", msg) + (" (a key given twice?)" if "overwrite" in msg else "")
         where = f" at column {m.group(2)}" if m else " at the end of the file"
         at = _KEY.match(text.splitlines()[line - 1]) if text.splitlines() else None
-        fail(line, at.group(1).strip("\"'") if at else "syntax", f"TOML syntax error: {head.lower()}{where}")
+        key = lines.key_at(line, at.group(1).strip("\"'")) if at else "syntax"
+        fail(line, key, f"TOML syntax error: {head.lower()}{where}")
     assert data is not None
     for key in data:
         if key not in _TOP_KEYS:
@@ -230,6 +252,7 @@ def loads(text, source="<string>"):
         fail(lines.of(None, "wheel"), "wheel", f"must be [[wheel]] tables, got {toml_text(tables)}")
     if not tables:
         fail(lines.of(None, "wheel"), "wheel", "no wheels: a robot needs at least one [[wheel]] table")
+    too_many(len(tables), lines.of(None, "wheel"))
     units = [_wheel(k, t, lines, fail) for k, t in enumerate(tables)]
     points = np.array([u.position for u in units], dtype=float)
     size = float(np.abs(points).max())

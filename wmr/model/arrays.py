@@ -20,7 +20,36 @@ import sympy as sp
 from ..errors import InputTypeError, InputValueError
 from .checks import finite_float, kind_error, real, show
 
-__all__ = ["finite_array", "batch_shape", "symbolic_vector", "symbolic_matrix"]
+__all__ = ["finite_array", "twist_array", "twist_kind", "TWIST_OBJECTS", "batch_shape", "symbolic_vector",
+           "symbolic_matrix"]
+
+#: twist objects of other libraries, read by their fields into wmr's order [psi_dot, x_dot, y_dot]:
+#: name -> (the fields that identify it, how to read it)
+TWIST_OBJECTS = {
+    "WPILib ChassisSpeeds(vx, vy, omega)": (("vx", "vy", "omega"), lambda o: (o.omega, o.vx, o.vy)),
+    "WPILib Twist2d(dx, dy, dtheta)": (("dx", "dy", "dtheta"), lambda o: (o.dtheta, o.dx, o.dy)),
+    "ROS geometry_msgs/Twist (linear, angular)": (("linear", "angular"),
+                                                  lambda o: (o.angular.z, o.linear.x, o.linear.y)),
+}
+
+
+def twist_kind(value):
+    """The entry of :data:`TWIST_OBJECTS` that ``value`` is, or None (arrays, numbers and sequences are none).
+
+    Parameters
+    ----------
+    value : object
+
+    Returns
+    -------
+    str or None
+    """
+    if isinstance(value, (np.ndarray, numbers.Number, str, bytes, list, tuple)) or value is None:
+        return None
+    for kind, (fields, _) in TWIST_OBJECTS.items():
+        if all(hasattr(value, f) for f in fields):
+            return kind
+    return None
 
 
 def _object_array(name, raw, value):
@@ -68,6 +97,10 @@ def finite_array(name, value, last=None):
     else:
         if value is None or isinstance(value, (str, bytes)):
             raise kind_error(name, value, "an array of real numbers")
+        kind = twist_kind(value)
+        if kind is not None:                # never read a twist object's fields in an order of its own
+            raise InputTypeError(f"{name} must be an array of real numbers, got a {kind.split('(')[0].strip()} "
+                                 f"(twist objects are accepted where a twist is expected): {show(value)}")
         try:
             raw = np.asarray(value)
         except (ValueError, TypeError):
@@ -90,6 +123,37 @@ def finite_array(name, value, last=None):
         bad = arr[~np.isfinite(arr)].ravel()[:3]
         raise InputValueError(f"{name} must be finite, got non-finite values {bad.tolist()}")
     return arr
+
+
+def twist_array(name, value):
+    r"""A twist :math:`[\dot\psi, \dot x, \dot y]` (..., 3): numbers in wmr's order, or twist objects read by field.
+
+    A WPILib ``ChassisSpeeds(vx, vy, omega)`` becomes ``[omega, vx, vy]``, a WPILib ``Twist2d`` ``[dtheta, dx,
+    dy]``, a ROS ``geometry_msgs/Twist`` ``[angular.z, linear.x, linear.y]`` (:data:`TWIST_OBJECTS`), also
+    in a list; everything else goes through :func:`finite_array` with a last axis of 3.
+
+    Parameters
+    ----------
+    name : str
+    value : array_like (..., 3), a twist object, or a sequence of twist objects
+
+    Returns
+    -------
+    numpy.ndarray (..., 3)
+
+    Examples
+    --------
+    >>> class ChassisSpeeds:                      # what WPILib's looks like to wmr
+    ...     vx, vy, omega = 1.0, 2.0, 0.5
+    >>> twist_array("twist", ChassisSpeeds()).tolist(), twist_array("twist", [0.5, 1.0, 2.0]).tolist()
+    ([0.5, 1.0, 2.0], [0.5, 1.0, 2.0])
+    """
+    kind = twist_kind(value)
+    if kind is not None:
+        return finite_array(name, [float(x) for x in TWIST_OBJECTS[kind][1](value)], last=3)
+    if isinstance(value, (list, tuple)) and value and twist_kind(value[0]) is not None:
+        return np.stack([twist_array(f"{name}[{k}]", v) for k, v in enumerate(value)])
+    return finite_array(name, value, last=3)
 
 
 def batch_shape(arrays, core=1):

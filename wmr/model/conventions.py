@@ -33,6 +33,16 @@ Fixed and Swedish wheels
     :math:`\gamma` from the axle, counter-clockwise (:math:`\pi/2` omni, :math:`\pm\pi/4` mecanum);
     its second rate :math:`\dot\sigma_i` moves the hub along the rollers' rolling direction
     (:class:`wmr.SwedishWheel`).
+Units
+    Python takes radians (every signature says so) and, where a name ends in ``_deg`` (a robot
+    file's ``angle_deg``, ``roller_deg``, and the same keywords of :class:`wmr.FixedWheel` and
+    :class:`wmr.SwedishWheel`), degrees; the command line takes and prints degrees (every option
+    says so).  A constant angle beyond :math:`\pm 2\pi` rad is refused (it is almost surely in degrees).
+Actuation
+    Every joint of a unit is driven (a motor) or passive (:mod:`wmr.model.wheels.joints`), with a
+    default per kind: Swedish rollers, castor swivels and dual-wheel swivels passive, steering and
+    wheel drives driven (``driven=`` and a robot file's ``driven`` table change it).  A motion that
+    needs a passive joint to move by itself is not admissible for the motors (:mod:`wmr.analysis.actuation`).
 Numbering
     Wheels are numbered in the order given to :class:`wmr.Robot`.  The paper's three-wheel robot
     (:func:`wmr.paper_robot`) has :math:`\mathbf d_1 = L(-1,0)`, :math:`\mathbf d_2 = L(\tfrac12,
@@ -46,6 +56,24 @@ Errors
     ``TypeError``) or :class:`~wmr.errors.InputValueError` (a bad value, a ``ValueError``); the
     message names the argument and shows the value (:mod:`wmr.model.validation`).  A malformed
     robot file raises :class:`~wmr.errors.RobotFileError`.  Any other exception is a bug.
+
+Other libraries' conventions (:data:`CONVENTIONS`)
+--------------------------------------------------
+The frames agree: WPILib's robot frame and ROS's ``base_link`` (REP-103) are x forward, y left,
+counter-clockwise positive, as wmr's body frame.  Two things differ, and are translated at the
+edges only (``--convention`` on the command line; :func:`angle_to`, :func:`angle_from`,
+:data:`TWIST_ORDER`; :func:`wmr.model.arrays.twist_array` reads their twist objects by field):
+
+``wmr``
+    Angles are the axle's, :math:`\beta_i` (0: axle along x, the wheel rolls along y); twists
+    :math:`[\dot\psi, \dot x, \dot y]` (the paper's order).
+``wpilib``
+    A module's angle is its direction of travel at positive speed, :math:`\alpha_i = \beta_i - \pi/2`
+    (0: rolls forward); twists ``ChassisSpeeds(vx, vy, omega)``.
+``ros``
+    REP-103: a wheel's steering angle is its heading from x (as WPILib), twists
+    ``geometry_msgs/Twist`` ``(linear.x, linear.y, angular.z)``, in SI units (the command line still
+    writes angles in degrees).
 
 Where things live
 -----------------
@@ -64,11 +92,12 @@ The repository holds three things, and imports go one way (edition -> wmr, build
         of (11), :func:`wmr.model.platform.rotated`), batched trigonometry (:mod:`~wmr.model.trig`),
         the wheel units (:mod:`~wmr.model.wheels`: one module per kind, each answering for its block,
         joints, drawing and robot-file keys), the assembled :class:`wmr.Robot` (:math:`\mathbf J_1,
-        \mathbf J_2, \mathbf F, \mathbf J`), ready-made robots (:mod:`~wmr.model.robots`), and these
-        conventions.
+        \mathbf J_2, \mathbf F, \mathbf J`), ready-made robots (:mod:`~wmr.model.robots`), the limits
+        checked before work starts (:mod:`~wmr.model.limits`), and these conventions.
     :mod:`wmr.analysis`
         What can be computed for *any* robot (every function takes one; none defaults to the
-        paper's): linear algebra, mobility, Campion's classes, isotropy, kinematics, steering,
+        paper's): linear algebra, mobility, Campion's classes, actuation (driven and passive joints,
+        :mod:`~wmr.analysis.actuation`), limitations in words, checked design advice, isotropy, kinematics, steering,
         simulation, singularities and the exact :math:`\det\mathbf J`; the packages
         :mod:`~wmr.analysis.lines` (2-D lines; a robot's axle and wheel-plane lines) and
         :mod:`~wmr.analysis.sweep` (``configurations``, ``analyses``, ``reduction``, ``execute`` in
@@ -93,4 +122,87 @@ The repository holds three things, and imports go one way (edition -> wmr, build
     merges the ledger, assembles and exports the report (HTML, PDF) and publishes ``figures/``.
 """
 
-__all__ = []
+from __future__ import annotations
+
+import numpy as np
+
+from .arrays import finite_array
+from .checks import kind_error
+from .platform import wrap_angle
+
+__all__ = ["CONVENTIONS", "TWIST_ORDER", "checked", "angle_to", "angle_from"]
+
+#: the conventions a user can bring, in one line each (see the module notes)
+CONVENTIONS = {
+    "wmr": "angles of the axles (0: the wheel rolls along y), twist (omega, vx, vy)",
+    "wpilib": "module angles = direction of travel (0: forward), twist ChassisSpeeds(vx, vy, omega)",
+    "ros": "REP-103: wheel headings from x (0: forward), twist (linear.x, linear.y, angular.z)",
+}
+#: the order a convention writes a twist in, by wmr's names of its components
+TWIST_ORDER = {"wmr": ("omega", "vx", "vy"), "wpilib": ("vx", "vy", "omega"), "ros": ("vx", "vy", "omega")}
+#: what a convention's angle is, added to wmr's axle angle beta (radians)
+_OFFSET = {"wmr": 0.0, "wpilib": -np.pi / 2, "ros": -np.pi / 2}
+
+
+def checked(convention: object) -> str:
+    """``convention`` checked: one of :data:`CONVENTIONS`.
+
+    Parameters
+    ----------
+    convention : str
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> checked("wpilib")
+    'wpilib'
+    """
+    if not isinstance(convention, str) or convention not in CONVENTIONS:
+        raise kind_error("convention", convention, f"one of {', '.join(CONVENTIONS)}")
+    return convention
+
+
+def angle_to(beta, convention: str) -> np.ndarray:
+    r"""wmr's steering angles :math:`\beta` (radians) in the ``convention`` (radians, in :math:`(-\pi, \pi]`).
+
+    Parameters
+    ----------
+    beta : array (...)
+    convention : str
+        A key of :data:`CONVENTIONS`.
+
+    Returns
+    -------
+    numpy.ndarray (...)
+
+    Examples
+    --------
+    >>> float(np.degrees(angle_to(np.pi / 2, "wpilib")))       # axle along y: the module rolls forward
+    0.0
+    """
+    return wrap_angle(finite_array("beta", beta) + _OFFSET[checked(convention)])
+
+
+def angle_from(angle, convention: str, argument: str = "angle") -> np.ndarray:
+    r"""wmr's steering angles :math:`\beta` (radians) from angles in the ``convention`` (radians).
+
+    Parameters
+    ----------
+    angle : array (...)
+    convention : str
+    argument : str, optional
+        The name of ``angle`` in messages (the caller's argument).
+
+    Returns
+    -------
+    numpy.ndarray (...)
+
+    Examples
+    --------
+    >>> float(np.degrees(angle_from(0.0, "ros")))
+    90.0
+    """
+    return wrap_angle(finite_array(argument, angle) - _OFFSET[checked(convention)])

@@ -17,7 +17,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..errors import InputTypeError, InputValueError
-from .arrays import batch_shape, finite_array, symbolic_matrix
+from .arrays import batch_shape, finite_array, symbolic_matrix, twist_array
 from .backend import NUMERIC, choose
 from .checks import integer, point, positive, real, show
 from .tolerance import TOL
@@ -293,7 +293,7 @@ def point_velocity(twist, d):
     >>> point_velocity([1.0, 0.0, 0.0], [2.0, 0.0]).tolist()     # spin: (psi_dot k) x d
     [0.0, 2.0]
     """
-    t = finite_array("twist", twist, last=3)
+    t = twist_array("twist", twist)
     d = finite_array("d", d, last=2)
     batch_shape({"twist": t, "d": d})
     with np.errstate(over="ignore", invalid="ignore"):

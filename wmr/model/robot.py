@@ -17,6 +17,7 @@ from ..errors import InputTypeError, InputValueError
 from . import arrays as A
 from . import checks as C
 from .backend import NUMERIC, SYMBOLIC, choose
+from .limits import check
 from .platform import point_row
 from .tolerance import column_norms
 from .trig import trig_combination
@@ -57,6 +58,7 @@ class Robot:
             raise InputTypeError(f"wheels must be a sequence of wheel units, got {C.show(wheels)}") from None
         if len(wheels) == 0:
             raise InputValueError("wheels must contain at least one wheel unit, got 0")
+        check("wheels", len(wheels), "wheels")
         for k, u in enumerate(wheels):
             if not isinstance(u, WheelUnit):
                 kinds = ", ".join(t.__name__ for t in wheel_kinds().values())

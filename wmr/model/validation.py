@@ -21,7 +21,7 @@ Examples
 """
 from __future__ import annotations
 
-from .arrays import batch_shape, finite_array, symbolic_matrix, symbolic_vector
+from .arrays import batch_shape, finite_array, symbolic_matrix, symbolic_vector, twist_array, twist_kind
 from .checks import (
                      finite_float,
                      flag,
@@ -38,5 +38,6 @@ from .checks import (
 from .robot_checks import free_symbols, numeric_robot, robot
 
 __all__ = ["real", "number", "positive", "nonnegative", "point", "flag", "optional_text", "integer", "show",
-           "kind_error", "finite_float", "finite_array", "batch_shape", "symbolic_vector", "symbolic_matrix",
+           "kind_error", "finite_float", "finite_array", "twist_array", "twist_kind", "batch_shape",
+           "symbolic_vector", "symbolic_matrix",
            "robot", "numeric_robot", "free_symbols"]

@@ -4,7 +4,8 @@ A robot is drawn as the platform disc, the operation point C with the body frame
 :math:`(\mathbf i, \mathbf j)`, and each wheel unit as its intermediate body (a pivot at
 :math:`P_i` on the steering axis, an arm to :math:`H_i` for an offset wheel, a bar for a dual wheel)
 carrying wheel discs, which from above are rounded rectangles of length :math:`2r` along the
-rolling direction :math:`\mathbf j_i` (marked by an arrow).  Axles (dashed, along
+rolling direction :math:`\mathbf j_i` (marked by an arrow: by default the way the wheel moves at a
+positive rolling rate, :math:`-\mathbf j_i`).  Axles (dashed, along
 :math:`\mathbf i_i`) and wheel-plane lines (along :math:`\mathbf j_i`) can be drawn and extended to
 where they meet.  The geometry comes from the units themselves (:meth:`~wmr.model.wheels.WheelUnit.points`
 and :meth:`~wmr.model.wheels.WheelUnit.parts`), so the pictures obey :mod:`wmr.conventions` by
@@ -17,7 +18,7 @@ import numpy as np
 from matplotlib.patches import Circle, FancyArrowPatch, FancyBboxPatch
 from matplotlib.transforms import Affine2D
 
-from ..errors import InputTypeError
+from ..errors import InputTypeError, InputValueError
 from ..model.wheels.parts import Disc, Link, Pivot, Rollers
 from .annotate import draw_frame, draw_line, draw_point, label
 from .geometry import RobotDrawing, platform_radius, robot_extent, robot_geometry, to_world
@@ -53,7 +54,8 @@ def draw_platform(ax, centre, radius, *, ghost=False, zorder=1.0):
                             linewidth=0.9, zorder=zorder))
 
 
-def draw_wheel(ax, centre, heading, r, width=None, *, ghost=False, arrow=True, zorder=4.0, color=None, light=False):
+def draw_wheel(ax, centre, heading, r, width=None, *, ghost=False, arrow=True, zorder=4.0, color=None, light=False,
+               towards="travel"):
     r"""A wheel disc seen from above: a rounded rectangle, length 2r along ``heading`` (:math:`\mathbf j_i`).
 
     Parameters
@@ -69,7 +71,12 @@ def draw_wheel(ax, centre, heading, r, width=None, *, ghost=False, arrow=True, z
     ghost : bool, optional
         Dashed outline only.
     arrow : bool
-        Mark the rolling direction :math:`+\mathbf j_i` with a white arrow.
+        Mark the wheel with a white arrow along its plane.
+    towards : {"travel", "j"}, optional
+        Where the arrow points: ``"travel"`` (default), the way the wheel moves at a positive rolling
+        rate, :math:`-\mathbf j_i` (no slip: :math:`\dot{\mathbf h}_i = -r\dot\theta_i\mathbf j_i`, (6)), so a
+        robot driving forward has its arrows forward; ``"j"``, the paper's rolling direction
+        :math:`+\mathbf j_i` of the wheel frame.
     zorder : float, optional
     color : str, optional
         Default: the wheel colour of :data:`wmr.plot.style.ROLE`.
@@ -90,7 +97,9 @@ def draw_wheel(ax, centre, heading, r, width=None, *, ghost=False, arrow=True, z
     box.set_transform(Affine2D().rotate(float(snap(heading))).translate(*snap(centre).tolist()) + ax.transData)
     ax.add_patch(box)
     if arrow and not ghost:
-        jdir = np.array([-np.sin(heading), np.cos(heading)])
+        if towards not in ("travel", "j"):
+            raise InputValueError(f"towards must be 'travel' or 'j', got {towards!r}")
+        jdir = np.array([-np.sin(heading), np.cos(heading)]) * (1.0 if towards == "j" else -1.0)
         c = np.asarray(centre, dtype=float)
         ax.add_patch(FancyArrowPatch(c - 0.62 * r * jdir, c + 0.72 * r * jdir, arrowstyle="-|>",
                                      mutation_scale=5.5, color=PALETTE["dark"] if light else "white", linewidth=0.8,
@@ -120,7 +129,8 @@ def draw_pivot(ax, p, size, *, ghost=False, zorder=5.0):
         ax.add_patch(Circle(p, 0.28 * size, facecolor=PALETTE["dark"], edgecolor="none", zorder=zorder + 0.1))
 
 
-def draw_unit(ax, unit, beta, pose=(0.0, 0.0, 0.0), *, ghost=False, zorder=4.0, show_j=True, light=False):
+def draw_unit(ax, unit, beta, pose=(0.0, 0.0, 0.0), *, ghost=False, zorder=4.0, show_j=True, light=False,
+              arrows="travel"):
     r"""One wheel unit: its parts (:meth:`wmr.model.wheels.WheelUnit.parts`) in world coordinates from ``pose``.
 
     Each part is drawn by its type, whatever the unit's kind: a :class:`~wmr.model.wheels.parts.Link`
@@ -146,6 +156,9 @@ def draw_unit(ax, unit, beta, pose=(0.0, 0.0, 0.0), *, ghost=False, zorder=4.0, 
         Mark the rolling direction on each wheel.
     light : bool, optional
         Draw the wheels light grey (close-ups, so that the arm and labels stay visible).
+    arrows : {"travel", "j"}, optional
+        Where the wheels' arrows point (:func:`draw_wheel`'s ``towards``): the way each wheel moves at
+        a positive rolling rate (default), or the paper's :math:`+\mathbf j_i`.
 
     Returns
     -------
@@ -166,7 +179,7 @@ def draw_unit(ax, unit, beta, pose=(0.0, 0.0, 0.0), *, ghost=False, zorder=4.0, 
                 ax.plot(*ends.T, color=ROLE["body"], linewidth=lw, linestyle=ls, zorder=zorder - 0.1)
         elif isinstance(part, Disc):
             draw_wheel(ax, to_world(pose, part.centre), pose[0] + part.heading, part.r, ghost=ghost,
-                       arrow=show_j and part.arrow, zorder=zorder, light=light)
+                       arrow=show_j and part.arrow, zorder=zorder, light=light, towards=arrows)
         elif isinstance(part, Rollers):
             _draw_rollers(ax, to_world(pose, part.centre), pose[0] + part.heading, part.r, part.angle, zorder + 0.1)
         elif isinstance(part, Pivot):
@@ -190,7 +203,7 @@ def _draw_rollers(ax, centre, heading, r, angle, zorder):
 
 # ----------------------------------------------------------------------------- the robot
 def draw_robot(ax, robot, beta, pose=(0.0, 0.0, 0.0), *, ghost=False, labels=True, suffix="", frame=True,
-               frame_length=None, platform=True, radius=None, show_C=True, show_j=True, zorder=4.0,
+               frame_length=None, platform=True, radius=None, show_C=True, show_j=True, arrows="travel", zorder=4.0,
                wheel_labels=True, label_offsets=None):
     r"""Draw a whole robot: platform disc, operation point C, body frame, wheel units, labels.
 
@@ -223,6 +236,10 @@ def draw_robot(ax, robot, beta, pose=(0.0, 0.0, 0.0), *, ghost=False, labels=Tru
         Mark the operation point.
     show_j : bool, optional
         Mark the rolling direction on each wheel.
+    arrows : {"travel", "j"}, optional
+        Where the wheels' arrows point: the way each wheel moves at a positive rolling rate
+        (default: a robot driving forward with positive rates has its arrows forward), or the
+        paper's :math:`+\mathbf j_i`.
     zorder : float, optional
     wheel_labels : bool, optional
         Label the :math:`P_i` (with ``labels``).
@@ -238,7 +255,7 @@ def draw_robot(ax, robot, beta, pose=(0.0, 0.0, 0.0), *, ghost=False, labels=Tru
     if platform:
         draw_platform(ax, g.C, R, ghost=ghost, zorder=zorder - 3)
     for k, u in enumerate(robot.wheels):
-        draw_unit(ax, u, beta[k], pose, ghost=ghost, zorder=zorder + 0.01 * k, show_j=show_j)
+        draw_unit(ax, u, beta[k], pose, ghost=ghost, zorder=zorder + 0.01 * k, show_j=show_j, arrows=arrows)
     if show_C:
         draw_point(ax, g.C, None, size=4.5 if not ghost else 3.5, face="white" if ghost else None, zorder=zorder + 3)
     if frame and not ghost:

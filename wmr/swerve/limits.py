@@ -54,7 +54,7 @@ def desaturation_scale(robot, twist, max_speed):
         In :math:`(0, 1]`; 1 for the zero twist.
     """
     robot = swerve_robot(robot)
-    t = V.finite_array("twist", twist, last=3)
+    t = V.twist_array("twist", twist)
     max_speed = V.number("max_speed", V.positive("max_speed", max_speed))
     d = np.asarray(robot.mount_points, dtype=float)
     with np.errstate(over="ignore", invalid="ignore"):
@@ -98,7 +98,7 @@ def desaturate(robot, twist, max_speed):
     >>> desaturate(bot, [0.0, 3.0, 4.0], max_speed=2.0).round(12).tolist()   # modules at 5 m/s
     [0.0, 1.2, 1.6]
     """
-    t = V.finite_array("twist", twist, last=3)
+    t = V.twist_array("twist", twist)
     return t * desaturation_scale(robot, t, max_speed)[..., None]
 
 
@@ -161,7 +161,7 @@ def se2_exp(twist, dt=1.0):
     >>> se2_exp([np.pi, np.pi, 0.0], dt=1.0).round(12).tolist()    # half a turn about (0, 1)
     [3.14159265359, 0.0, 2.0]
     """
-    t = V.finite_array("twist", twist, last=3)
+    t = V.twist_array("twist", twist)
     dt = V.number("dt", V.positive("dt", dt))
     with np.errstate(over="ignore", invalid="ignore"):
         g = t * dt
@@ -237,7 +237,7 @@ def discretize(twist, dt):
     >>> (se2_exp(tw, 0.5) / 0.5).round(12).tolist()                   # ends at (psi, x, y) = t dt
     [1.0, 1.0, ...0.0]
     """
-    t = V.finite_array("twist", twist, last=3)
+    t = V.twist_array("twist", twist)
     dt = V.number("dt", V.positive("dt", dt))
     with np.errstate(over="ignore"):
         g = t * dt

@@ -41,7 +41,7 @@ from ..analysis.kinematics import forward, inverse
 from ..analysis.steering import steering_angles
 from ..errors import InputValueError
 from ..model import validation as V
-from ..model.platform import wrap_angle
+from ..model.conventions import angle_from, angle_to
 
 __all__ = ["ModuleCommand", "swerve_robot", "radii", "module_commands", "module_speeds", "chassis_twist",
            "to_wpilib", "from_wpilib", "to_chassis", "from_chassis"]
@@ -148,8 +148,9 @@ def module_commands(robot, twist, current=None):
     ----------
     robot : Robot
         Centred wheels only.
-    twist : array (..., 3)
-        :math:`[\dot\psi, \dot x, \dot y]`, body frame.
+    twist : array (..., 3) or ChassisSpeeds
+        :math:`[\dot\psi, \dot x, \dot y]`, body frame; a WPILib ``ChassisSpeeds`` (or a list of them)
+        is read by its fields as ``[omega, vx, vy]`` (:func:`wmr.model.arrays.twist_array`).
     current : array (..., w), optional
         Angles kept by modules whose mount point is still (default 0), as WPILib keeps the last heading.
 
@@ -166,7 +167,7 @@ def module_commands(robot, twist, current=None):
     ([90.0, 90.0, 90.0, 90.0], [1.0, 1.0, 1.0, 1.0])
     """
     robot = swerve_robot(robot)
-    twist = V.finite_array("twist", twist, last=3)
+    twist = V.twist_array("twist", twist)
     m = np.abs(twist).max(axis=-1, keepdims=True)
     beta = steering_angles(robot, twist / np.where(m > 0, m, 1.0), current)   # angles: scale-free, no overflow
     return ModuleCommand(beta, module_speeds(robot, beta, twist))
@@ -222,7 +223,7 @@ def to_wpilib(beta, speed=None):
     >>> float(np.degrees(to_wpilib(np.pi / 2)))                 # axle along y: rolls forward
     0.0
     """
-    alpha = wrap_angle(V.finite_array("beta", beta) - np.pi / 2)
+    alpha = angle_to(beta, "wpilib")
     return alpha if speed is None else (alpha, V.finite_array("speed", speed))
 
 
@@ -241,7 +242,7 @@ def from_wpilib(alpha, speed=None):
     numpy.ndarray or tuple
         ``beta`` (...), or ``(beta, speed)`` when ``speed`` is given.
     """
-    beta = wrap_angle(V.finite_array("alpha", alpha) + np.pi / 2)
+    beta = angle_from(alpha, "wpilib", "alpha")
     return beta if speed is None else (beta, V.finite_array("speed", speed))
 
 
@@ -261,7 +262,7 @@ def to_chassis(twist):
     >>> to_chassis([3.0, 1.0, 2.0]).tolist()
     [1.0, 2.0, 3.0]
     """
-    return np.roll(V.finite_array("twist", twist, last=3), -1, axis=-1)
+    return np.roll(V.twist_array("twist", twist), -1, axis=-1)
 
 
 def from_chassis(chassis):
@@ -269,10 +270,18 @@ def from_chassis(chassis):
 
     Parameters
     ----------
-    chassis : array (..., 3)
+    chassis : array (..., 3) or ChassisSpeeds
+        Numbers in WPILib's order, or a WPILib ``ChassisSpeeds`` itself (read by its fields).
 
     Returns
     -------
     numpy.ndarray (..., 3)
+
+    Examples
+    --------
+    >>> from_chassis([1.0, 2.0, 3.0]).tolist()
+    [3.0, 1.0, 2.0]
     """
+    if V.twist_kind(chassis) is not None:
+        return V.twist_array("chassis", chassis)
     return np.roll(V.finite_array("chassis", chassis, last=3), 1, axis=-1)

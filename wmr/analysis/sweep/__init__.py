@@ -41,7 +41,8 @@ Where the parts live:
 from .analyses import ANALYSES
 from .configurations import Grid, Sample
 from .execute import CHUNK, QUANTILES, sweep
+from .motions import Drivable
 from .reduction import SKETCH_ACCURACY
 from .result import Sweep
 
-__all__ = ["ANALYSES", "Grid", "Sample", "Sweep", "sweep", "QUANTILES", "SKETCH_ACCURACY", "CHUNK"]
+__all__ = ["ANALYSES", "Drivable", "Grid", "Sample", "Sweep", "sweep", "QUANTILES", "SKETCH_ACCURACY", "CHUNK"]

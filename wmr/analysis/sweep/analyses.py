@@ -55,6 +55,16 @@ def _kappa_J(robot, beta, L):
     return condition_number(robot.J(beta, L=L))
 
 
+def _kappa_J_drivable(source, start, stop, L, fold):
+    from .motions import kappa_J_drivable
+    return kappa_J_drivable(source, start, stop, L, fold)
+
+
+def _actuated(robot, beta, L):
+    from ..actuation import actuated_mobility
+    return actuated_mobility(robot, beta)
+
+
 def _kappa_JL1(robot, beta, L):
     from ..linalg import condition_number
     return np.full(beta.shape[:-1], float(condition_number(robot.J1(L))))
@@ -68,13 +78,15 @@ class _Analysis:
     worst: str                # "min", "max" or "min_abs"
     uses_L: bool = False
     square: bool = False
+    drivable: Callable[..., Any] | None = None      # (source, start, stop, L, fold) -> bool: a fused kernel
 
 
 #: The analyses :func:`sweep` knows, by name.
 ANALYSES = {
     "rank_F": _Analysis("rank F", _rank_F, True, "min"),
-    "mobility": _Analysis("mobility", _mobility, True, "max"),
+    "mobility": _Analysis("mobility", _mobility, True, "min"),
+    "actuated_mobility": _Analysis("actuated mobility", _actuated, True, "min"),
     "det_J": _Analysis("det J", _det_J, False, "min_abs", uses_L=True, square=True),
-    "kappa_J": _Analysis("kappa(J)", _kappa_J, False, "max", uses_L=True),
+    "kappa_J": _Analysis("kappa(J)", _kappa_J, False, "max", uses_L=True, drivable=_kappa_J_drivable),
     "kappa_JL1": _Analysis("kappa(J_L1)", _kappa_JL1, False, "max", uses_L=True),
 }

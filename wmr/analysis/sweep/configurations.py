@@ -97,6 +97,13 @@ class Grid:
         object.__setattr__(self, "lo", lo)
         object.__setattr__(self, "hi", hi)
 
+    @property
+    def covers(self):
+        """The set of configurations, in words (for the reductions)."""
+        steps = "x".join(map(str, self.steps)) if isinstance(self.steps, tuple) else f"{self.steps} per angle"
+        return (f"all steering angles (drivable or not): a grid of {steps} over "
+                f"[{math.degrees(self.lo):g}, {math.degrees(self.hi):g}) deg")
+
     def shape(self, w):
         """Values per angle.
 
@@ -189,6 +196,12 @@ class Sample:
         object.__setattr__(self, "lo", lo)
         object.__setattr__(self, "hi", hi)
 
+    @property
+    def covers(self):
+        """The set of configurations, in words (for the reductions)."""
+        return (f"all steering angles (drivable or not): {self.n:,} configurations drawn uniformly from "
+                f"[{math.degrees(self.lo):g}, {math.degrees(self.hi):g}) deg per angle (seed {self.seed})")
+
     def size(self, w):
         """Number of configurations (``n``, whatever ``w``).
 
@@ -226,6 +239,10 @@ class Sample:
 @dataclass(frozen=True)
 class _Explicit:
     beta: np.ndarray
+
+    @property
+    def covers(self):
+        return f"the {self.beta.shape[0]:,} configurations given"
 
     def size(self, w):
         return self.beta.shape[0]

@@ -6,16 +6,21 @@ Dask worker runs), and the partial reductions are merged as they arrive.
 """
 from __future__ import annotations
 
+import signal
+import threading
+
 import numpy as np
 
 from ...errors import InputTypeError, InputValueError
 from ...model import validation as V
+from ...model.limits import check, limit
 from .analyses import ANALYSES, J_length
 from .configurations import BLOCK, Sample, as_source, count
+from .motions import Drivable, Motions
 from .reduction import Partial
 from .result import finish
 
-__all__ = ["sweep", "QUANTILES", "CHUNK"]
+__all__ = ["sweep", "bytes_per_configuration", "QUANTILES", "CHUNK"]
 
 #: Quantiles reported by default.
 QUANTILES = (0.0, 0.01, 0.05, 0.5, 0.95, 0.99, 1.0)
@@ -33,16 +38,28 @@ def _evaluate(task, start, stop, threads):
     from .._batch import limit_threads
     robot, name, source, w, L, keep = task
     an = ANALYSES[name]
-    beta = source.configurations(w, start, stop)
+
+    def reduced(first, x):
+        part = Partial()
+        part.add(first, x.astype(np.int64) if an.integer else x.astype(float), an.integer, keep)
+        return part
     with limit_threads(threads):
-        x = np.asarray(an.evaluate(robot, beta, L))
-    part = Partial()
-    part.add(start, x.astype(np.int64) if an.integer else x.astype(float), an.integer, keep)
-    return part
+        if an.drivable is not None and isinstance(source, Motions):      # a fused kernel from the twists,
+            parts: dict[int, Partial] = {}                                # reduced block by block on any core
+
+            def fold(first, x):
+                parts[first] = reduced(first, x)
+            if an.drivable(source, start, stop, L, fold):
+                whole = Partial()
+                for first in sorted(parts):
+                    whole.merge(parts[first])
+                return whole
+        x = np.asarray(an.evaluate(robot, source.configurations(w, start, stop), L))
+    return reduced(start, x)
 
 
 def sweep(robot, analysis, angles, *, L=None, quantiles=QUANTILES, keep=False, chunk=CHUNK,
-          progress=None, client=None):
+          progress=None, client=None, interruptible=False):
     r"""Evaluate an analysis over a grid or sample of configurations, chunk by chunk.
 
     Each chunk of configurations :math:`\boldsymbol\beta_k\in\mathbb R^w` is evaluated with the
@@ -59,8 +76,9 @@ def sweep(robot, analysis, angles, *, L=None, quantiles=QUANTILES, keep=False, c
     analysis : str
         A key of :data:`ANALYSES`: ``"rank_F"``, ``"mobility"``, ``"det_J"`` (square
         :math:`\mathbf J` only, i.e. ``robot.n_rates == 3``), ``"kappa_J"`` or ``"kappa_JL1"``.
-    angles : Grid, Sample or array_like (N, w)
-        The configurations: a :class:`Grid`, a :class:`Sample`, or explicit steering angles.
+    angles : Drivable, Grid, Sample or array_like (N, w)
+        The configurations: those the robot can drive in (:class:`Drivable`: the steering angles of
+        sampled twists), a :class:`Grid` or a :class:`Sample` of all steering angles, or explicit ones.
     L : float, optional
         Characteristic length of :math:`\mathbf J_{L1}` for ``det_J``, ``kappa_J`` and
         ``kappa_JL1`` (default :func:`wmr.characteristic_length`).
@@ -75,6 +93,10 @@ def sweep(robot, analysis, angles, *, L=None, quantiles=QUANTILES, keep=False, c
     client : dask.distributed.Client, optional
         Evaluate the chunks on this Dask cluster (one kernel thread per task) instead of in
         this process; the result is the same.
+    interruptible : bool, optional
+        A Ctrl-C (SIGINT) stops the sweep after the chunk in progress and the result covers the
+        configurations evaluated so far (``Sweep.complete`` is False); a second Ctrl-C interrupts
+        at once.  Only in the main thread.
 
     Returns
     -------
@@ -88,6 +110,10 @@ def sweep(robot, analysis, angles, *, L=None, quantiles=QUANTILES, keep=False, c
     ValueError
         If ``analysis`` is unknown, ``det_J`` is asked of a non-square :math:`\mathbf J`, the
         robot is symbolic, or a number is out of range.
+    wmr.errors.LimitError
+        Limits (:mod:`wmr.model.limits`) are checked before any work: the number of
+        configurations, and the working memory (the chunk is made smaller to fit; ``keep`` needs
+        ``8 N`` bytes more).
 
     Examples
     --------
@@ -113,14 +139,14 @@ def sweep(robot, analysis, angles, *, L=None, quantiles=QUANTILES, keep=False, c
     if an.square and robot.n_rates != 3:
         raise InputValueError(f"analysis 'det_J' needs a square J (n_rates = 3), got n_rates = {robot.n_rates} "
                          f"for {robot!r}; use 'kappa_J' for a non-square J")
-    L = J_length(robot, L) if an.uses_L else None
     w = robot.w
-    source = as_source(angles, w)
+    source = angles if isinstance(angles, Drivable) else as_source(angles, w)
     qs = tuple(float(V.real("quantiles", q)) for q in np.atleast_1d(np.asarray(quantiles, dtype=object)))
     if any(not 0.0 <= q <= 1.0 for q in qs):
         raise InputValueError(f"quantiles must lie in [0, 1], got {list(quantiles)}")
     chunk = count("chunk", chunk)
-    if isinstance(source, Sample):
+    blocks = isinstance(source, (Sample, Drivable))
+    if blocks:
         chunk = -(-chunk // BLOCK) * BLOCK
     if progress is not None and not callable(progress):
         raise InputTypeError(f"progress must be callable as progress(done, total), got {progress!r}")
@@ -128,18 +154,87 @@ def sweep(robot, analysis, angles, *, L=None, quantiles=QUANTILES, keep=False, c
         raise InputTypeError(f"client must be a dask.distributed.Client, got {client!r}")
     keep = bool(keep)
 
-    total = source.size(w)
-    bounds = [(a, min(a + chunk, total)) for a in range(0, total, chunk)]
+    total = source.size(w)                        # the limits, before any work on the robot
+    check("configurations", total, "this sweep")
+    chunk = _fit_memory(chunk, total, robot, analysis, keep, blocks)
+    if isinstance(source, Drivable):
+        source = source.bind(robot)
+    L = J_length(robot, L) if an.uses_L else None
+    bounds = ((a, min(a + chunk, total)) for a in range(0, total, chunk))
     run = _run_local if client is None else _run_dask
-    result = run(bounds, total, progress, client, robot, analysis, source, w, L, keep)
-    return finish(result, analysis, an, source, w, qs, keep)
+    with _Interrupt(interruptible) as stop:
+        result = run(bounds, total, progress, client, stop, robot, analysis, source, w, L, keep)
+    return finish(result, analysis, an, source, w, qs, keep, complete=not stop.requested)
 
 
+def bytes_per_configuration(robot, analysis) -> int:
+    """An upper estimate of the working memory of one configuration in a chunk of ``analysis`` (bytes).
 
-def _run_local(bounds, total, progress, client, *task):
+    Parameters
+    ----------
+    robot : Robot
+    analysis : str
+
+    Returns
+    -------
+    int
+    """
+    robot = V.numeric_robot(robot)
+    if analysis not in ANALYSES:
+        raise InputValueError(f"analysis must be one of {sorted(ANALYSES)}, got {analysis!r}")
+    w, n = robot.w, robot.n_rates
+    own = {"rank_F": 40 * w, "mobility": 40 * w, "actuated_mobility": 80 * w, "det_J": 24 * n + 32,
+           "kappa_J": 24 * n + 64, "kappa_JL1": 8}[analysis]
+    return 8 * (6 * w + 48 + own)
+
+
+def _fit_memory(chunk, total, robot, analysis, keep, blocks):
+    """The chunk, made small enough for the memory limit (:mod:`wmr.model.limits`), or a LimitError."""
+    budget = limit("memory_mb") * 2 ** 20
+    if keep:
+        check("memory_mb", (8 * total + 64 * 2 ** 20) / 2 ** 20, "the sweep's kept values (keep=True)")
+        budget -= 8 * total
+    per = bytes_per_configuration(robot, analysis) + (3 * 8 * BLOCK * robot.w // chunk if blocks else 0)
+    fits = int(budget // 2 // per)                # half the budget: the reduction, Python and NumPy themselves
+    if fits < 256:
+        check("memory_mb", 512 * per / 2 ** 20, f"a sweep of {analysis} for this robot ({robot.w} wheel units)")
+    chunk = max(256, min(chunk, fits))
+    if blocks and chunk >= BLOCK:
+        chunk = chunk // BLOCK * BLOCK            # whole blocks of a sample, none drawn twice
+    return chunk
+
+
+class _Interrupt:
+    """Within the ``with`` block, a first Ctrl-C (SIGINT) asks the sweep to stop after the chunk in progress.
+
+    Only when ``enabled`` and in the main thread (where Python delivers signals); a second Ctrl-C
+    interrupts at once (the default handler is back).
+    """
+
+    def __init__(self, enabled):
+        self.enabled, self.requested, self._old = bool(enabled), False, None
+
+    def _handler(self, signum, frame):
+        self.requested = True
+        signal.signal(signal.SIGINT, self._old)
+
+    def __enter__(self):
+        if self.enabled and threading.current_thread() is threading.main_thread():
+            self._old = signal.signal(signal.SIGINT, self._handler)
+        return self
+
+    def __exit__(self, *exc):
+        if self._old is not None and signal.getsignal(signal.SIGINT) == self._handler:
+            signal.signal(signal.SIGINT, self._old)
+        return False
+
+
+def _run_local(bounds, total, progress, client, stop, *task):
     """Evaluate the chunks ``bounds`` one after the other in this process; the merged :class:`Partial`."""
     result, done = Partial(), 0
     for a, b in bounds:
+        if stop.requested:
+            break
         result.merge(_evaluate(task, a, b, None))
         done += b - a
         if progress is not None:
@@ -147,14 +242,18 @@ def _run_local(bounds, total, progress, client, *task):
     return result
 
 
-def _run_dask(bounds, total, progress, client, *task):
+def _run_dask(bounds, total, progress, client, stop, *task):
     """Evaluate the chunks on a Dask cluster (one kernel thread per task), merged as they finish."""
     from dask.distributed import as_completed
+    bounds = list(bounds)
     n = len(bounds)
     futures = client.map(_evaluate, [task] * n, [a for a, _ in bounds], [b for _, b in bounds],
                          [1] * n, pure=False)
     result, done = Partial(), 0
     for fut in as_completed(futures):
+        if stop.requested:
+            client.cancel(futures)
+            break
         part = fut.result()
         result.merge(part)
         done += part.count

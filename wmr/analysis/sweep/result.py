@@ -47,6 +47,12 @@ class Sweep:
         Configurations where the value is ``inf`` (a singular matrix's condition number).
     values : numpy.ndarray (count,) or None
         Every value, in the sweep's numbering, when ``keep=True``.
+    covers : str
+        Which configurations the reduction covers, in words: the drivable ones
+        (:class:`~wmr.analysis.sweep.Drivable`) or all steering angles (a grid or a sample).
+    complete : bool
+        False when the sweep was interrupted: the reduction covers the configurations evaluated
+        so far (``count``) only.
     """
 
     analysis: str
@@ -62,30 +68,41 @@ class Sweep:
     counts: dict
     infinite: int
     values: np.ndarray | None = None
+    covers: str = ""
+    complete: bool = True
 
-    def summary(self):
+    def summary(self, convention="wmr"):
         """A few lines of text that state the result (used by ``wmr sweep``).
+
+        Parameters
+        ----------
+        convention : str, optional
+            How the worst configuration's angles are written (:data:`wmr.model.conventions.CONVENTIONS`).
 
         Returns
         -------
         str
         """
+        from ...model.conventions import angle_to
         an = ANALYSES[self.analysis]
-        deg = np.degrees(self.worst_angles)
-        lines = [f"{an.title} over {self.count:,} configurations",
+        deg = np.degrees(angle_to(self.worst_angles, convention))
+        head = f"{an.title} over {self.count:,} configurations" + ("" if self.complete else " (INTERRUPTED: partial)")
+        lines = [head + (f": {self.covers}" if self.covers else ""),
                  f"  min {self.min:.6g}   max {self.max:.6g}",
                  "  quantiles  " + "   ".join(f"{q:g}: {v:.6g}" for q, v in self.quantiles.items())]
         if self.counts:
             lines.append("  counts     " + "   ".join(f"{k}: {n:,}" for k, n in self.counts.items()))
         if self.infinite:
             lines.append(f"  singular (inf) at {self.infinite:,} configurations")
-        lines.append(f"  worst {self.worst:.6g} at configuration {self.worst_index}: beta = ("
+        end = {"min": "the minimum", "max": "the maximum", "min_abs": "the smallest magnitude"}[an.worst]
+        what = "axle angles" if convention == "wmr" else f"{convention} angles"
+        lines.append(f"  worst {self.worst:.6g} ({end}) at configuration {self.worst_index}: {what} ("
                      + ", ".join(f"{a:.4f}" for a in deg) + ") deg")
         return "\n".join(lines)
 
 
 
-def finish(part, name, an, source, w, qs, keep):
+def finish(part, name, an, source, w, qs, keep, complete=True):
     """The :class:`Sweep` of a finished reduction.
 
     Parameters
@@ -104,6 +121,8 @@ def finish(part, name, an, source, w, qs, keep):
         Quantiles to report.
     keep : bool
         Keep every value.
+    complete : bool, optional
+        False: the reduction covers only the configurations evaluated before an interruption.
 
     Returns
     -------
@@ -125,4 +144,4 @@ def finish(part, name, an, source, w, qs, keep):
         worst=worst, worst_angles=angles_at(at), worst_index=at,
         quantiles={q: part.quantile(q, an.integer) for q in qs},
         counts=dict(part.integers.items()) if an.integer else {},
-        infinite=part.infinite, values=values)
+        infinite=part.infinite, values=values, covers=str(getattr(source, "covers", "")), complete=complete)

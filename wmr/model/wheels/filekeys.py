@@ -148,6 +148,8 @@ class FileKey:
             raise InputValueError(f"must be positive ({self.meaning}), got {toml_text(value)}")
         if self.check == "nonnegative" and x < 0:
             raise InputValueError(f"must not be negative ({self.meaning}), got {toml_text(value)}")
+        if self.degrees and abs(x) > 360:
+            raise InputValueError(f"must be within -360 .. 360 ({self.meaning}), got {toml_text(value)}")
         return math.radians(x) if self.degrees else x
 
     def write(self, unit: Any) -> float | list[float]:

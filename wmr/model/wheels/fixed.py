@@ -43,9 +43,11 @@ class FixedWheel(UnsteeredUnit):
     r : float
         Wheel radius, > 0.
     angle : float
-        The constant wheel-frame angle :math:`\beta_i` (radians; an exact SymPy number such as
-        ``sympy.pi / 2`` is kept exact): 0 puts the axle along the body x axis (the wheel rolls
-        along body y).
+        The constant wheel-frame angle :math:`\beta_i` (radians, within :math:`\pm 2\pi`; an exact
+        SymPy number such as ``sympy.pi / 2`` is kept exact): 0 puts the axle along the body x axis
+        (the wheel rolls along body y).
+    angle_deg : float, optional
+        The same in degrees (keyword only, as the robot file's key): give ``angle`` or ``angle_deg``.
     driven : mapping or sequence of bool, optional
         Actuation of the joint ``drive`` (default: driven; ``{"drive": False}`` for an idler).
 

@@ -17,7 +17,7 @@ In a robot file::
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -168,3 +168,17 @@ class OffsetWheel(WheelUnit):
         if abs(d - r) <= TOL * max(d, r):
             return None
         return "set offset = radius on wheel {wheels} (d = r, the paper's (46))"
+
+    def isotropic_variant(self):
+        """The same unit with ``d = r`` (see :meth:`isotropy_advice`); None when it holds already.
+
+        Returns
+        -------
+        OffsetWheel or None
+
+        Examples
+        --------
+        >>> OffsetWheel((0, 0), r=0.05, d=0.03).isotropic_variant().d
+        0.05
+        """
+        return None if self.isotropy_advice() is None else replace(self, d=self.r)

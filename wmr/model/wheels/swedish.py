@@ -17,7 +17,7 @@ In a robot file::
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import InitVar, dataclass, field, replace
 
 import numpy as np
 
@@ -28,7 +28,7 @@ from ..tolerance import TOL
 from .filekeys import FileKey
 from .joints import Joint
 from .parts import Rollers
-from .unsteered import UnsteeredUnit, constant
+from .unsteered import UnsteeredUnit, in_degrees, radians
 
 __all__ = ["NO_FAITHFUL_MECHANISM", "SwedishWheel"]
 
@@ -94,6 +94,8 @@ class SwedishWheel(UnsteeredUnit):
         :math:`\gamma`, the angle from the axle to the roller axes (radians), in
         :math:`(-\pi/2, \pi/2]` and not 0: :math:`\pi/2` is an omni wheel, :math:`\pm\pi/4` the two
         hands of a mecanum wheel (a mecanum robot mixes both).
+    angle_deg, roller_deg : float, optional
+        ``angle`` and ``roller`` in degrees instead (keywords, as the robot file's keys).
     driven : mapping or sequence of bool, optional
         Actuation of the joints ``drive`` (default driven) and ``roller`` (default passive).
 
@@ -109,7 +111,8 @@ class SwedishWheel(UnsteeredUnit):
     [[0.0, 0.5], [-0.5, 0.0]]
     """
 
-    roller: float
+    roller: float = None  # type: ignore[assignment]
+    roller_deg: InitVar[float | None] = field(default=None, kw_only=True)
 
     kind = "swedish"
     JOINTS = (Joint("drive", "drive", driven=True, rate=("theta", r"\theta", "")),
@@ -117,10 +120,14 @@ class SwedishWheel(UnsteeredUnit):
     FILE_KEYS = UnsteeredUnit.FILE_KEYS + (
         FileKey("roller_deg", "roller", "the roller angle in degrees (90 omni, 45 mecanum)", degrees=True),)
 
+    def _init_degrees(self, roller_deg=None, *more):
+        super()._init_degrees(*more)
+        object.__setattr__(self, "roller", in_degrees(type(self).__name__, "roller", self.roller, roller_deg))
+
     def _validate(self):
         super()._validate()
-        name = "roller (angle of the rollers to the axle)"
-        g = constant(name, self.roller)
+        name = "roller (angle of the rollers to the axle, radians)"
+        g = radians("roller", self.roller)
         if not -np.pi / 2 < float(g) <= np.pi / 2 or abs(float(g)) <= TOL:
             raise InputValueError(f"{name} must be in (-pi/2, pi/2] and not 0 (0: rollers parallel to the axle, "
                                   f"a conventional wheel: use FixedWheel), got {C.show(self.roller)}")
@@ -204,3 +211,29 @@ class SwedishWheel(UnsteeredUnit):
             return None
         return ("use omni wheels (rollers at 90 deg) on wheel {wheels}: a Swedish wheel's block "
                 "r[[0, sin g], [-1, -cos g]] has singular values r sqrt(1 +- cos g)")
+
+    def isotropic_variant(self):
+        """The same wheel with omni rollers (:math:`\\gamma = \\pi/2`); None when it has them already.
+
+        Returns
+        -------
+        SwedishWheel or None
+        """
+        return None if self.isotropy_advice() is None else replace(self, roller=np.pi / 2)
+
+    def other_builds(self):
+        """The wheel of the other hand (rollers at :math:`-\\gamma`), unless it is an omni wheel.
+
+        Returns
+        -------
+        tuple of (str, SwedishWheel)
+
+        Examples
+        --------
+        >>> [words for words, _ in SwedishWheel((0, 0), r=0.05, angle=0.0, roller=np.pi / 4).other_builds()]
+        ['of the other hand (rollers at -45 deg)']
+        """
+        if abs(np.cos(float(self.roller))) <= TOL:
+            return ()
+        return ((f"of the other hand (rollers at {np.degrees(-float(self.roller)):.0f} deg)",
+                 replace(self, roller=-self.roller)),)

@@ -26,7 +26,9 @@ its geometry, drawing    :meth:`~WheelUnit.points` (batched) and :meth:`~WheelUn
 its mechanism            :meth:`~WheelUnit.mechanism`: bodies and joints as data, which :mod:`wmr.sim`
                          puts in a physics engine (:mod:`~wmr.model.wheels.mechanism`)
 its robot-file keys      ``FILE_KEYS`` (:mod:`~wmr.model.wheels.filekeys`), after ``position`` and ``radius``
-its design hints         :meth:`~WheelUnit.dead_zone`, :meth:`~WheelUnit.isotropy_advice`
+its design hints         :meth:`~WheelUnit.dead_zone`, :meth:`~WheelUnit.isotropy_advice`,
+                         :meth:`~WheelUnit.isotropic_variant`, :meth:`~WheelUnit.other_builds`
+                         (:mod:`~wmr.model.wheels.design`)
 =======================  ===========================================================================
 
 Defining the subclass registers the kind (:mod:`~wmr.model.wheels.registry`); the robot, the analyses,
@@ -46,6 +48,7 @@ from .. import arrays as A
 from .. import checks as C
 from ..backend import NUMERIC, choose, is_symbolic
 from ..platform import E, rotated
+from .design import DesignHints
 from .filekeys import COMMON_KEYS, FileKey
 from .geometry import UnitGeometry
 from .joints import Joint, actuation
@@ -56,7 +59,7 @@ __all__ = ["WheelUnit"]
 
 
 @dataclass(frozen=True)
-class WheelUnit(UnitGeometry, UnitMechanism):
+class WheelUnit(UnitGeometry, UnitMechanism, DesignHints):
     r"""A wheel unit at :math:`P_i`: the base of every wheel kind.
 
     Parameters
@@ -109,8 +112,16 @@ class WheelUnit(UnitGeometry, UnitMechanism):
         self._validate()
         if not self.is_symbolic:
             with np.errstate(over="ignore", invalid="ignore"):
+                if not np.isfinite(4 * np.abs(np.asarray(self.position, dtype=float))).all():
+                    raise InputValueError(f"position is too large for double-precision kinematics (4 |d_i| "
+                                          f"overflows): {C.show(self.position)}")
+                for key in self.file_keys():          # a length whose reciprocal overflows (a subnormal)
+                    v = getattr(self, key.field)
+                    if key.check != "pair" and not key.degrees and v != 0 and not np.isfinite(1.0 / abs(float(v))):
+                        raise InputValueError(f"{key.field} is too small for double-precision kinematics "
+                                              f"(1/{key.field} overflows): {C.show(v)}")
                 L, EL = (np.asarray(m, dtype=float) for m in self.block_terms(NUMERIC))
-                ok = np.isfinite(2 * np.abs(L) + 2 * np.abs(EL)).all() and np.isfinite(4 * np.abs(self.position)).all()
+                ok = np.isfinite(2 * np.abs(L) + 2 * np.abs(EL)).all()
             if not ok:
                 raise InputValueError(f"{type(self).__name__} has lengths too large for double-precision "
                                       f"kinematics (R(beta) L_i would overflow): {C.show(self)}")
@@ -354,30 +365,6 @@ class WheelUnit(UnitGeometry, UnitMechanism):
         """
         L = self.local_block(backend)
         return L, E(backend) @ L
-
-    # --- design hints ---------------------------------------------------------------------------------
-    def dead_zone(self):
-        """The radius of C's circle when every unit is steered with its drives locked, if this unit has one.
-
-        The paper's dead zone of a robot on offset wheels (:func:`wmr.analysis.overview.dead_zone_radius`).
-
-        Returns
-        -------
-        float or None
-            None: steering the unit does not move the platform (or the unit is not steered).
-        """
-        return None
-
-    def isotropy_advice(self):
-        """What would make this unit's block isotropic (equal singular values), as a sentence about ``{wheels}``.
-
-        Returns
-        -------
-        str or None
-            A format string with the field ``{wheels}`` (the wheel numbers), or None when the
-            block is isotropic already or no choice of this kind's parameters makes it so.
-        """
-        return None
 
     @classmethod
     def file_keys(cls):

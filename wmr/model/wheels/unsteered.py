@@ -14,12 +14,14 @@ steering joint is ignored and its own ``angle`` used (:meth:`wmr.Robot.effective
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+import math
+from dataclasses import InitVar, dataclass, field, replace
 from typing import ClassVar
 
 import numpy as np
 import sympy as sp
 
+from ...errors import InputValueError
 from .. import arrays as A
 from .. import checks as C
 from ..backend import NUMERIC, choose
@@ -27,7 +29,7 @@ from ..platform import rotated
 from .filekeys import FileKey
 from .unit import WheelUnit
 
-__all__ = ["UnsteeredUnit", "constant"]
+__all__ = ["UnsteeredUnit", "constant", "radians", "in_degrees"]
 
 
 def constant(name, value):
@@ -53,6 +55,49 @@ def constant(name, value):
     return value if isinstance(value, sp.Basic) else f
 
 
+def in_degrees(owner, name, value, degrees):
+    """The angle of field ``name`` in radians, from radians (``value``) or degrees (``degrees``): one of them.
+
+    Parameters
+    ----------
+    owner : str
+        The class, for messages.
+    name : str
+        The field (radians); ``name + "_deg"`` is the keyword in degrees.
+    value, degrees : float or None
+
+    Returns
+    -------
+    float or sympy.Expr
+    """
+    if degrees is not None:
+        if value is not None:
+            raise InputValueError(f"{name}_deg: give {owner} {name} (radians) or {name}_deg (degrees), not both")
+        return math.radians(C.number(f"{name}_deg (degrees)", degrees))
+    if value is None:
+        raise C.kind_error(name, value, f"an angle in radians (or give {owner} {name}_deg in degrees)")
+    return value
+
+
+def radians(name, value):
+    """A constant angle in radians, refused beyond +-2 pi (almost surely degrees given by mistake).
+
+    Parameters
+    ----------
+    name : str
+    value : float or sympy.Expr
+
+    Returns
+    -------
+    float or sympy.Expr
+    """
+    value = constant(name, value)
+    if abs(float(value)) > 2 * np.pi + 1e-9:
+        raise InputValueError(f"{name} is in radians and must be within +-2 pi, got {C.show(value)} (degrees? write "
+                              f"{name}=math.radians({C.show(value)}) or {name}_deg={C.show(value)})")
+    return value
+
+
 @dataclass(frozen=True)
 class UnsteeredUnit(WheelUnit):
     """A unit without a steering joint: its wheel frame is at the constant angle ``angle`` (radians).
@@ -64,19 +109,31 @@ class UnsteeredUnit(WheelUnit):
     r : float
         Wheel radius, > 0.
     angle : float
-        The constant wheel-frame angle :math:`\\beta_i` (radians; an exact SymPy number is kept exact).
+        The constant wheel-frame angle :math:`\\beta_i` in radians (an exact SymPy number is kept
+        exact), within :math:`\\pm 2\\pi`.
+    angle_deg : float, optional
+        The same in degrees (keyword only), as the robot file's key: give ``angle`` or ``angle_deg``.
     driven : mapping or sequence of bool, optional
         Actuation of the joints.
     """
 
-    angle: float
+    angle: float = None  # type: ignore[assignment]
+    angle_deg: InitVar[float | None] = field(default=None, kw_only=True)
     #: the angle, written in degrees in a robot file
     FILE_KEYS: ClassVar[tuple[FileKey, ...]] = (FileKey("angle_deg", "angle", "the steering angle in degrees",
                                                         degrees=True),)
 
+    def __post_init__(self, angle_deg=None, *more) -> None:
+        object.__setattr__(self, "angle", in_degrees(type(self).__name__, "angle", self.angle, angle_deg))
+        self._init_degrees(*more)
+        super().__post_init__()
+
+    def _init_degrees(self, *more) -> None:
+        """Angles of a kind's own given in degrees (a kind with more extends this)."""
+
     def _validate(self):
         super()._validate()
-        object.__setattr__(self, "angle", constant("angle", self.angle))
+        object.__setattr__(self, "angle", radians("angle", self.angle))
 
     @property
     def constant_angle(self):

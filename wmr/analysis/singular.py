@@ -1,0 +1,151 @@
+r"""The families of singular configurations a robot has, with one example each and what they mean to a driver.
+
+A configuration is singular when :math:`\operatorname{rank}\mathbf J < 3` (56),
+:math:`\mathbf J = \mathbf J_{L1}^T\mathbf J_2`: some change of the platform twist cannot be made
+by the wheel rates alone.  For a driver this means the wheels must be **re-steered** before the
+robot can move that way (a robot without steering cannot move that way at all without
+skidding).  :func:`singular_families` finds one example of each family; :data:`FAMILIES` names
+them in geometric words and :data:`MEANINGS` says what they mean for driving.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from ..model import validation as V
+from ..model.platform import wrap_angle
+from ..model.tolerance import TOL
+from .isotropy import characteristic_length
+from .linalg import rank
+from .lines import AT_INFINITY, FINITE, lines_concurrency, planes_through, wheel_plane_lines
+from .mobility import rank_F
+from .singularities import classify
+
+__all__ = ["FAMILIES", "MEANINGS", "singular_families"]
+
+
+#: plain words for the families of :func:`wmr.analysis.singularities.classify` and of :func:`_family`
+FAMILIES = {
+    "i": "all wheel planes parallel, equal angles",
+    "i'": "all wheel planes parallel, a wheel turned by 180 deg",
+    "pair": "the planes of two wheels on the line through their mount points",
+    "v-C": "wheel planes concurrent at C",
+    "v-P": "wheel planes concurrent at a mount point",
+    "v-circle": "wheel planes concurrent and axles concurrent (rotation about a point of the circle through the P_i)",
+    "v": "wheel planes concurrent at another point",
+    "parallel": "all wheel planes parallel",
+    "through-C": "wheel planes concurrent at C",
+    "through-P": "wheel planes concurrent at a mount point",
+    "through-point": "wheel planes concurrent at another point",
+    "other": "rank J < 3",
+}
+
+
+_PARALLEL = ("the wheels all point the same way: it drives along them, but to turn or move any other way it must "
+             "steer first (a car driving straight ahead is here; without steering it cannot leave without skidding)")
+_CENTRE = ("the axles meet at one point and the robot turns about it: to move its turning centre (or to drive "
+           "straight) it must re-steer first")
+#: what each family means to a driver (keys as in :data:`FAMILIES`)
+MEANINGS = {
+    "i": _PARALLEL, "i'": _PARALLEL, "parallel": _PARALLEL,
+    "pair": "two wheels pull along the line joining them: the rates cannot turn the robot about a point of that line "
+            "without re-steering",
+    "v-C": _CENTRE, "through-C": _CENTRE, "v": _CENTRE, "through-point": _CENTRE, "v-circle": _CENTRE,
+    "v-P": _CENTRE + "; the wheel at that mount point stands still", "through-P": _CENTRE + "; the wheel at that "
+    "mount point stands still",
+    "other": "the wheel rates cannot make every change of motion here: some need the wheels re-steered first",
+}
+
+
+def _family(robot, beta):
+    """Short name of the family of a singular configuration, from where its wheel-plane lines meet."""
+    if robot.w == 3 and robot.n_rates == 3 and all(u.steered and u.rolls_in_plane for u in robot.wheels):
+        return classify(robot, beta).family                     # three centred wheels: the paper's families
+    P, u = wheel_plane_lines(robot, beta)
+    lined = [k for k, unit in enumerate(robot.wheels) if unit.rolls_in_plane]     # their planes constrain
+    if len(lined) < 2:
+        return "other"
+    meet = lines_concurrency(P[lined], u[lined])
+    if meet.kind == AT_INFINITY:
+        return "parallel"
+    if meet.kind != FINITE:
+        return "other"
+    scale = float(np.abs(robot.mount_points).max())
+    if np.hypot(*meet.point) <= TOL * scale:                   # hypot: no overflow of the squares
+        return "through-C"
+    gap = robot.mount_points - meet.point
+    if np.any(np.hypot(gap[:, 0], gap[:, 1]) <= TOL * scale):
+        return "through-P"
+    return "through-point"
+
+
+def _describe(family):
+    if family.startswith("pair-"):
+        i, j = family[5], family[6]
+        turned = ", one turned by 180 deg" if family.endswith("'") else ""
+        return f"the planes of wheels {i} and {j} on the line P{i}P{j}{turned}"
+    return FAMILIES.get(family, family)
+
+
+def singular_families(robot, L=None):
+    r"""Families of singular configurations, :math:`\operatorname{rank}\mathbf J < 3` (56), with one example each.
+
+    :math:`\mathbf J = \mathbf J_{L1}^T\mathbf J_2` loses rank where the wheel rates no longer
+    control every twist: for centred and dual units, where the wheel-plane lines are concurrent
+    or all parallel (:mod:`wmr.analysis.singularities`).  Candidates: the wheel planes of the
+    steered units through C, through each mount point, through a point off the robot and parallel
+    to a few directions (those of the fixed wheels included); those of rank J < 3 are kept, one per
+    family (named by :func:`wmr.analysis.singularities.classify` for three centred wheels).
+
+    Parameters
+    ----------
+    robot : Robot
+    L : float, optional
+        Characteristic length of :math:`\mathbf J_{L1}` (default :func:`wmr.characteristic_length`).
+
+    Returns
+    -------
+    list of dict
+        ``family`` (a short name), ``description`` (plain words), ``meaning`` (for a driver,
+        :data:`MEANINGS`), ``beta`` (w angles, radians), ``rank_J``, ``rank_F`` (ints); empty when
+        no candidate is singular (e.g. offset wheels, d > 0: J2 is invertible).
+
+    Examples
+    --------
+    >>> import wmr
+    >>> [f["family"] for f in singular_families(wmr.paper_robot("centred"))]
+    ['i', 'v-C', 'v-P', 'v', "i'"]
+    >>> singular_families(wmr.paper_robot("offset", d=0.5))
+    []
+    """
+    robot = V.numeric_robot(robot)
+    L = characteristic_length(robot) if L is None else V.number("L", V.positive("L", L))
+    steered = np.array(robot.steered, dtype=bool)
+    pts = robot.mount_points
+    size = float(np.abs(pts).max()) or 1.0
+    fixed_dirs = [[-np.sin(float(u.constant_angle)), np.cos(float(u.constant_angle))] for u in robot.wheels
+                  if u.constant_angle is not None]
+    dirs = np.array([[1.0, 0.0], [0.0, 1.0], [0.6, 0.8]] + fixed_dirs)
+    finite = np.array([[0.0, 0.0], *pts, [0.37 * size, 0.61 * size]])
+    beta_inf = np.arctan2(-dirs[:, :1], dirs[:, 1:]) * np.ones(robot.w)      # j_i || direction, every unit
+    beta_fin = planes_through(robot, finite)
+    for k in range(len(pts)):                                                 # D = P_k: wheel k's angle is free;
+        beta_fin[1 + k, k] = 0.4                                              # a generic value, not 0
+    cands = np.concatenate([beta_inf, beta_fin])
+    flip = cands.copy()
+    flip[:, np.flatnonzero(steered)[:1]] += np.pi                             # one wheel turned by pi: the "'" families
+    cands = np.concatenate([cands, flip])
+    cands = robot.effective_beta(cands)                                      # unsteered units at their own angle
+    rk = rank(robot.J(cands, L=L))
+    rf = rank_F(robot, cands)
+    out, seen = [], set()
+    for b, r, f in zip(cands, rk, rf):
+        if r >= 3:
+            continue
+        fam = _family(robot, b)
+        if fam in seen:
+            continue
+        seen.add(fam)
+        out.append({"family": fam, "description": _describe(fam), "meaning": MEANINGS[fam.split("-")[0]
+                    if fam.startswith("pair-") else fam], "beta": wrap_angle(b).tolist(), "rank_J": int(r),
+                    "rank_F": int(f)})
+    return out

@@ -1,0 +1,312 @@
+r"""The configurations a robot can drive in: the steering angles of sampled twists (:class:`Drivable`).
+
+A steered robot moves only where its wheels are coordinated: every centred or dual wheel rolls in
+the direction of its mount point's velocity (:func:`wmr.steering_angles`).  Those configurations
+have measure zero on the torus of all steering angles, so a :class:`~wmr.analysis.sweep.Grid` or a
+:class:`~wmr.analysis.sweep.Sample` essentially never visits one (0 of 20,000 random swerve
+configurations can move).  :class:`Drivable` samples **twists** instead and takes the steering
+angles that make each admissible:
+
+* twist k is drawn in the dimensionless coordinates :math:`\hat{\mathbf t} = \mathbf t\circ\mathbf s`
+  (``s`` the twist columns of :attr:`wmr.Robot.F_column_norms`: :math:`\dot\psi` times the
+  characteristic length, :math:`\dot x`, :math:`\dot y`), uniformly over the directions the fixed
+  wheels allow (a standard normal vector in :math:`\mathcal N(\mathbf C_{1f})`; every direction when
+  there is no fixed wheel), so the result does not depend on the unit of length or of time;
+* the steered units that roll in their plane get :func:`wmr.steering_angles`; the others, whose
+  angle any twist admits (castors, offset wheels), get a uniform random angle.
+
+Twist k depends only on the seed and k (blocks of :data:`~wmr.analysis.sweep.configurations.BLOCK`
+drawn by ``numpy.random.default_rng([seed, block, 24])``), never on the chunking.
+
+For robots of 3 to 6 swerve-like units (steered, rolling in their plane, one rate) ``kappa_J``
+over drivable configurations has a fused kernel (:func:`kappa_J_drivable`, :func:`kappa_J_of_twists`):
+the columns of :math:`\mathbf J` come straight from the mount-point velocities,
+:math:`\cos\beta_i = -\dot p_{iy}/\|\dot{\mathbf p}_i\|`, :math:`\sin\beta_i = \dot p_{ix}/\|\dot{\mathbf p}_i\|`,
+so no angle is formed, and the condition number is the closed form of
+:func:`wmr.analysis._closed.kappa_from_columns`; a member it cannot certify, or one with a wheel at
+the centre of rotation, goes through the general kernels.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ...model import validation as V
+from ...model.backend import NUMERIC
+from ...model.tolerance import TOL
+from .._batch import for_chunks
+from .._closed import kappa_from_columns
+from ..linalg import condition_number, null_space
+from ..mobility import twist_constraints
+from ..steering import steering_angles
+from .configurations import BLOCK, count
+
+__all__ = ["Drivable", "Motions", "kappa_J_drivable", "kappa_J_of_twists"]
+
+
+@dataclass(frozen=True)
+class Drivable:
+    """``n`` configurations in which the robot can move: the steering angles of ``n`` sampled twists.
+
+    See the module notes.  Bound to a robot by :meth:`bind` (:func:`wmr.sweep` does it).
+
+    Parameters
+    ----------
+    n : int
+        Number of twists (configurations), >= 1.
+    seed : int, optional
+        Non-negative seed.
+
+    Examples
+    --------
+    >>> import wmr
+    >>> src = Drivable(1000, seed=1).bind(wmr.paper_robot("centred"))
+    >>> beta = src.configurations(3, 0, 1000)
+    >>> int(wmr.mobility(wmr.paper_robot("centred"), beta).min())       # every one can move
+    1
+    """
+
+    n: int
+    seed: int = 0
+
+    def __post_init__(self):
+        object.__setattr__(self, "n", count("n", self.n))
+        object.__setattr__(self, "seed", count("seed", self.seed, minimum=0))
+
+    def size(self, w):
+        """Number of configurations (``n``).
+
+        Parameters
+        ----------
+        w : int
+
+        Returns
+        -------
+        int
+        """
+        return self.n
+
+    def bind(self, robot):
+        """The source of these configurations for ``robot``.
+
+        Parameters
+        ----------
+        robot : Robot
+            A numeric robot.
+
+        Returns
+        -------
+        Motions
+        """
+        return Motions(robot, self.n, self.seed)
+
+
+class Motions:
+    """:class:`Drivable` bound to a robot: twist k and its configuration, for any range of k.
+
+    Parameters
+    ----------
+    robot : Robot
+    n, seed : int
+    """
+
+    def __init__(self, robot, n, seed):
+        robot = V.numeric_robot(robot)
+        self.robot, self.n, self.seed = robot, count("n", n), count("seed", seed, minimum=0)
+        self.scale = robot.F_column_norms[:3]
+        fixed = [i for i, u in enumerate(robot.wheels) if not u.steered]
+        if fixed:                                   # the directions the fixed wheels allow: N(C1f), dimensionless
+            sub = type(robot)([robot.wheels[i] for i in fixed], name="fixed")
+            Cf, _ = twist_constraints(sub, np.zeros(len(fixed)))
+            self.basis = null_space(Cf / self.scale, scale=np.ones(3)) if Cf.shape[0] else np.eye(3)
+        else:
+            self.basis = np.eye(3)
+        self.free = [i for i, u in enumerate(robot.wheels) if u.steered and not u.rolls_in_plane]
+
+    @property
+    def covers(self):
+        """The set of configurations, in words (for the reductions)."""
+        return (f"drivable configurations: the steering angles of {self.n:,} twists sampled over the directions "
+                f"the robot can move in (seed {self.seed})")
+
+    def size(self, w):
+        """Number of configurations (``n``).
+
+        Parameters
+        ----------
+        w : int
+
+        Returns
+        -------
+        int
+        """
+        return self.n
+
+    def twists(self, start, stop):
+        """Twists ``start .. stop-1`` (k, 3) and the angles of the freely steered units (k, w) or None.
+
+        Parameters
+        ----------
+        start, stop : int
+
+        Returns
+        -------
+        twist : numpy.ndarray (k, 3)
+        current : numpy.ndarray (k, w) or None
+        """
+        first, last = start // BLOCK, (stop - 1) // BLOCK
+        m = self.basis.shape[1]
+        tws, curs = [], []
+        for j in range(first, last + 1):
+            rng = np.random.default_rng([self.seed, j, 24])
+            tws.append(rng.standard_normal((m, BLOCK)))
+            if self.free:
+                curs.append(rng.uniform(-math.pi, math.pi, (BLOCK, len(self.free))))
+        a, b = start - first * BLOCK, stop - first * BLOCK
+        g = np.concatenate(tws, axis=1)[:, a:b] if len(tws) > 1 else tws[0][:, a:b]
+        # t = (N g) / s, written out (a BLAS product of (m, k) by (3, m) would start threads for nothing);
+        # entry-major: each component of the twists is one contiguous vector
+        M = self.basis / self.scale[:, None]                       # (3, m)
+        if m == 3 and not np.any(M - np.diag(np.diag(M))):        # no fixed wheel: a diagonal map, in place
+            g *= np.diag(M)[:, None]                               # (g is a fresh draw: changed in place)
+            return g.T, None if not self.free else self._current(curs, a, b)
+        tw = np.zeros((3, b - a))
+        for c in range(3):
+            for j in range(m):
+                if M[c, j] != 0.0:
+                    tw[c] += g[j] * M[c, j]
+        tw = tw.T
+        return tw, None if not self.free else self._current(curs, a, b)
+
+    def _current(self, curs, a, b):
+        current = np.zeros((b - a, self.robot.w))
+        current[:, self.free] = np.concatenate(curs)[a:b]
+        return current
+
+    def configurations(self, w, start, stop):
+        """Configurations ``start .. stop-1``: the steering angles of the twists (k, w).
+
+        Parameters
+        ----------
+        w : int
+        start, stop : int
+
+        Returns
+        -------
+        numpy.ndarray (k, w)
+        """
+        tw, current = self.twists(start, stop)
+        return steering_angles(self.robot, tw, current)
+
+
+def _swerve_like(robot):
+    return 3 <= robot.w <= 6 and all(u.steered and u.rolls_in_plane and u.n_rates == 1 and u.steering_row() is None
+                                      for u in robot.wheels)
+
+
+def kappa_J_drivable(source, start, stop, L, fold):
+    r""":math:`\kappa(\mathbf J)` over configurations ``start .. stop-1`` of a drivable source, block by block.
+
+    Each block of twists is drawn, evaluated (:func:`kappa_J_of_twists`) and handed to ``fold`` in
+    one task, so that the drawing and the reduction run on every core too.
+
+    Parameters
+    ----------
+    source : Motions
+    start, stop : int
+        A range of configuration numbers; ``start`` a multiple of
+        :data:`~wmr.analysis.sweep.configurations.BLOCK`.
+    L : float
+    fold : callable
+        ``fold(first, values)``: the values of configurations ``first .. first + len(values) - 1``;
+        called from the task that computed them (any thread).
+
+    Returns
+    -------
+    bool
+        False when no fused kernel applies (nothing was evaluated).
+    """
+    if not _swerve_like(source.robot):
+        return False
+
+    def block(a, b):
+        fold(start + a, kappa_J_of_twists(source.robot, source.twists(start + a, start + b)[0], L))
+
+    for_chunks(block, stop - start, BLOCK)
+    return True
+
+
+def kappa_J_of_twists(robot, twist, L):
+    r""":math:`\kappa(\mathbf J)` at the steering angles that make each twist admissible (None: no fused kernel).
+
+    See the module notes.  Equal to ``condition_number(robot.J(steering_angles(robot, twist), L=L))``
+    within a relative :data:`~wmr.analysis._closed.ACCURACY` (every member the closed form cannot
+    certify is computed that way).
+
+    Parameters
+    ----------
+    robot : Robot
+        A numeric robot.
+    twist : numpy.ndarray (k, 3)
+    L : float
+        Characteristic length of :math:`\mathbf J_{L1}`.
+
+    Returns
+    -------
+    numpy.ndarray (k,) or None
+        None unless every unit is steered, rolls in its plane and has one rate, and 3 <= w <= 6.
+
+    Examples
+    --------
+    >>> import wmr
+    >>> bot = wmr.paper_robot("centred", L=0.4, r=0.1)
+    >>> tw = np.random.default_rng(0).normal(size=(5, 3))
+    >>> want = wmr.condition_number(bot.J(wmr.steering_angles(bot, tw), L=0.4))
+    >>> bool(np.allclose(kappa_J_of_twists(bot, tw, 0.4), want, rtol=1e-12))
+    True
+    """
+    robot = V.numeric_robot(robot)
+    twist = V.finite_array("twist", twist, last=3).reshape(-1, 3)
+    L = V.number("L", V.positive("L", L))
+    if not _swerve_like(robot):
+        return None
+    JL1 = robot.J1(L=L)
+    d = robot.mount_points
+    dmax = float(np.abs(d).max())
+    # column i of J = cos(beta_i) a_i + sin(beta_i) b_i, a_i = J_L1,i^T L_i, b_i = J_L1,i^T E L_i (3,)
+    ab = [(JL1[2 * i:2 * i + 2].T @ np.asarray(Li, dtype=float)[:, 0], JL1[2 * i:2 * i + 2].T @ np.asarray(ELi,
+          dtype=float)[:, 0]) for i, (Li, ELi) in enumerate(u.block_terms(NUMERIC) for u in robot.wheels)]
+    a = np.array([x for x, _ in ab]).T[:, :, None]            # (3, w, 1)
+    b = np.array([y for _, y in ab]).T[:, :, None]
+    dx, dy = d[:, :1], d[:, 1:]                                 # (w, 1)
+    out = np.empty(twist.shape[0])
+    redo = np.zeros(twist.shape[0], dtype=bool)
+
+    def chunk(lo, hi):
+        psi, vx, vy = twist[lo:hi, 0], twist[lo:hi, 1], twist[lo:hi, 2]
+        scale = np.maximum(np.abs(vx), np.abs(vy))
+        scale += np.abs(psi) * dmax
+        scale *= TOL                                # a wheel at the centre: |p_dot| <= TOL scale (steering_angles)
+        s = vx - dy * psi                           # (w, k): p_dot = c_dot + psi_dot E d_i (2), then
+        c = -vy - dx * psi                          # sin(beta_i) = p_x / |p|, cos(beta_i) = -p_y / |p|
+        n = s * s
+        n += c * c
+        np.sqrt(n, out=n)
+        slowest = n.min(axis=0)
+        np.divide(1.0, n, out=n)
+        s *= n
+        c *= n
+        C = c * a                                   # (3, w, k): the columns of J
+        C += s * b
+        k, ok = kappa_from_columns(C)
+        out[lo:hi] = k
+        redo[lo:hi] = ~ok | ~(slowest > scale)
+
+    with np.errstate(all="ignore"):
+        for_chunks(chunk, twist.shape[0])
+    if redo.any():
+        rows = np.flatnonzero(redo)
+        out[rows] = condition_number(robot.J(steering_angles(robot, twist[rows]), L=L))
+    return out
