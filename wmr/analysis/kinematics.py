@@ -96,10 +96,19 @@ _KEPT: dict = {}
 
 @contextlib.contextmanager
 def constants_kept(robot):
-    """Within the block, :func:`_constants` of ``robot`` come from the model once (a simulation's steps).
+    r"""Within the block, the kinematic constants of ``robot`` come from the model once (a simulation's steps).
 
     Outside it they come from the model at every call; inside, a robot given other units computes
     them again.
+
+    Parameters
+    ----------
+    robot : Robot
+        The robot whose constants (:math:`\mathbf J_1`, the units' blocks) are kept.
+
+    Yields
+    ------
+    None
     """
     key = id(robot)
     before = _KEPT.get(key)
