@@ -60,7 +60,7 @@ TEX_DEBS := texlive-xetex texlive-fonts-recommended texlive-plain-generic \
             texlive-latex-extra lmodern fonts-lmodern pandoc poppler-utils
 TEX_CMDS := xelatex pandoc pdftotext pdfinfo
 
-.PHONY: help venv tex browser test report figures notebooks publish student bench clean lock FORCE
+.PHONY: help venv tex browser test report figures notebooks publish student assignments bench clean lock FORCE
 
 help: ## show this help
 	@echo "wmr — reproducible edition of Leow, Low & Loh (2002)"
@@ -125,6 +125,9 @@ report: venv tex ## build/report.html + build/report.pdf (cached: about a second
 
 student: venv ## build/student/*.ipynb: the chapters without worked solutions (RUN=1: also run them, cached)
 	@$(LOCK) exec $(SUB) $(STUDENT) $(if $(RUN),$(STUDENT_RUN))
+
+assignments: venv ## build/assignments: nbgrader source notebooks from the exercise cells (tools/assignments.py)
+	@$(VPY) -m tools.assignments $(B)/assignments $(LESSONS)
 
 figures: venv ## regenerate figures/ outside the notebooks (python -m edition.figures figures/)
 	@cd $(WMR_ROOT) && $(VPY) -m edition.figures figures

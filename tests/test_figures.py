@@ -67,8 +67,12 @@ def J_first_principles(beta, r=0.25, L=1.0):
 def test_every_figure_module_has_the_interface(key, data):
     mod = F.FIGURES[key]
     assert mod.TITLE and mod.__doc__ and mod.data.__doc__ and mod.draw.__doc__ and mod.caption.__doc__
-    assert mod.NUMBER == (key[3:].lstrip("0") if key.startswith("fig") else "")
-    assert bool(mod.PAPER_CAPTION) == bool(mod.NUMBER)
+    if key.startswith("fig"):                                   # the paper's number; this edition's own: E1, E2, ...
+        assert mod.NUMBER == key[3:].lstrip("0")
+    else:
+        assert mod.NUMBER[:1] == "E" and mod.NUMBER[1:].isdigit()
+    assert [F.FIGURES[k].NUMBER for k in F.KEYS].count(mod.NUMBER) == 1, "two figures with one number"
+    assert bool(mod.PAPER_CAPTION) == mod.NUMBER.isdigit()
     d = data(key)
     with pytest.raises(dataclasses.FrozenInstanceError):
         setattr(d, next(iter(d.__dataclass_fields__)), None)
@@ -309,7 +313,7 @@ def test_write_all_and_the_command_line(tmp_path, capsys):
     F.write_all(tmp_path, keys=["conventions"], csv=False)
     F.write_all(tmp_path, keys=["fig13"], csv=False)
     caps = {k: json.loads((tmp_path / f"{k}.json").read_text(encoding="utf-8")) for k in ("fig13", "conventions")}
-    assert caps["fig13"]["number"] == "13" and caps["conventions"]["number"] == ""
+    assert caps["fig13"]["number"] == "13" and caps["conventions"]["number"] == "E1"
     assert caps["fig13"]["caption"] and not (tmp_path / "captions.json").exists()
     assert F.main([str(tmp_path), "nope"]) == 2
     assert F.main([]) == 2

@@ -10,6 +10,7 @@ import sympy as sp
 
 from edition import symbols as S
 from edition.checks import assembly, centred, dual, isotropy, steering, wheels
+from edition.derivations import derived
 from edition.ledger import Ledger, grade
 from edition.transcription import printed, table
 
@@ -27,20 +28,31 @@ def transcribe(monkeypatch):
     return set_
 
 
+def ch3_j2_product():
+    d = derived("03_kinetostatic_isotropy")
+    return isotropy.J2_product(d["JJ"], d["ptilde"], d["ptilde2"])
+
+
+def ch3_placement(n):
+    d = derived("03_kinetostatic_isotropy")
+    return isotropy.placement(d["pts"], d["G_ce"], d["L2"], n=n)
+
+
 def verdicts(derivation):
     return {f.id: grade(f) for f in derivation.findings}
 
 
 # ----------------------------------------------------------------------------------------------- re-grading
 def test_a_corrected_transcription_regrades_typo_42_to_ok(transcribe):
-    assert verdicts(isotropy.J2_product())["42"] == "typo"
+    assert verdicts(ch3_j2_product())["42"] == "typo"
     transcribe(42, sp.Eq(S.ptilde2, sp.diag(S.d**2, S.r**2), evaluate=False))
-    assert verdicts(isotropy.J2_product())["42"] == "ok"
+    assert verdicts(ch3_j2_product())["42"] == "ok"
 
 
 def test_a_corrected_transcription_regrades_wrong_15_to_ok(transcribe):
     transcribe(15, sp.Eq(S.beta_dot_i, -S.r / (2 * S.b) * (S.theta_dot_i1 - S.theta_dot_i2) - S.psi_dot))
-    assert verdicts(wheels.dual_steering(n=20))["15"] == "ok"
+    d = derived("01_platform_and_wheels")
+    assert verdicts(wheels.dual_steering(d["phi_dot"], d["rigid"], d["i_i"], n=20))["15"] == "ok"
 
 
 def test_a_corrected_transcription_regrades_59_to_ok(transcribe):
@@ -58,15 +70,16 @@ def test_a_corrected_transcription_regrades_60_to_ok(transcribe):
 
 @pytest.mark.parametrize("id, expr, check", [
     (63, lambda p: -p.expr, lambda: steering.instant_centre(n=20)),
-    (6, lambda p: sp.Eq(p.expr.lhs, -p.expr.rhs, evaluate=False), wheels.rolling_disk),
+    (6, lambda p: sp.Eq(p.expr.lhs, -p.expr.rhs, evaluate=False),
+     lambda: wheels.rolling_disk(*(derived("01_platform_and_wheels")[x] for x in ("h_dot", "i_i", "j_i")))),
     (38, None, None),
 ])
 def test_a_broken_transcription_of_a_true_equation_fails_loudly(transcribe, id, expr, check):
     if id == 38:          # (38) is judged wrong: transcribing the corrected condition re-grades it
         mean = sum((sp.Matrix(p).T * sp.Matrix(p))[0] for p in S.D) / 3
-        assert verdicts(isotropy.placement(n=10))["38"] == "wrong"
+        assert verdicts(ch3_placement(10))["38"] == "wrong"
         transcribe(38, (sp.Eq(mean, S.L**2),))
-        assert verdicts(isotropy.placement(n=10))["38"] == "ok"
+        assert verdicts(ch3_placement(10))["38"] == "ok"
         return
     transcribe(id, expr(printed(id)))
     derivation = check()
@@ -77,15 +90,21 @@ def test_a_broken_transcription_of_a_true_equation_fails_loudly(transcribe, id, 
 
 
 def test_every_row_names_what_it_proved():
-    for d in (wheels.platform_point(n=10), assembly.functional_matrix(), isotropy.J2_product()):
+    ch1 = derived("01_platform_and_wheels")
+    ch2 = derived("02_offset_wheels_and_mobility")
+    matrices = assembly.functional_matrix(*(ch2[x] for x in "F q_dot J1 J2".split()))
+    for d in (wheels.platform_point(ch1["p_dot"], n=10), matrices, ch3_j2_product()):
         for f in d.findings:
             assert f.check.startswith("printed form proven" if f.printed_holds else "printed form refuted")
 
 
 # ----------------------------------------------------------------------------------------------- claims
 def test_drift_is_a_conditional_that_holds_and_records_rows_28_29():
-    c, p = assembly.drift_of_c(n=5), assembly.drift_of_psi(n=5)
-    f = assembly.drift(c["28"], p["29"], assembly.locked_steering(robots=5, per=2))["drift"]
+    ch2 = derived("02_offset_wheels_and_mobility")
+    c = assembly.drift_of_c(ch2["c_dot"], n=5)
+    p = assembly.drift_of_psi(ch2["a"], ch2["b"], ch2["c"], ch2["J1"], n=5)
+    locked = assembly.locked_steering(ch2["det_M"], ch2["plucker"], robots=5, per=2)
+    f = assembly.drift(c["28"], p["29"], locked, ch2["J2"])["drift"]
     assert grade(f) == "ok" and f.residual == max(c["28"].residual, p["29"].residual)
     assert r"\det\mathbf J_2 = d^3r^3" in f.check and "free steering" in f.note
 
@@ -100,7 +119,9 @@ def test_robust_control_bound_sqrt2_where_the_robot_moves():
 
 
 def test_isotropy_d_zero_records_its_own_simulation():
-    d = isotropy.dead_zone_of_isotropy(pairs=3, n=50)
+    ch3 = derived("03_kinetostatic_isotropy")
+    iso = isotropy.J2_isotropy(ch3["U1"], ch3["frob2"], ch3["d_sol"], ch3["J2"], pairs=3, n=50)
+    d = isotropy.dead_zone_of_isotropy(iso)
     f = d["isotropy-d-zero"]
     assert grade(f) == "ok" and "simulated full steering turn" in f.check
     assert abs(d.radius_min - 0.1) < 1e-6 and abs(d.radius_max - 0.1) < 1e-6 and d.d == 0.1

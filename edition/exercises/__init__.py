@@ -17,12 +17,12 @@ Chapter by chapter:
 ch.    check                           the exercise
 =====  ==============================  =====================================================================
 1      :func:`offset_other_side`       the velocity of :math:`P_i` with the wheel centre on the other side
-1      :func:`dual_counterexample`     a slip-free motion that refutes the printed (15)
+1      :func:`dual_counterexample`     a slip-free motion about a point other than C that refutes (15)
 1      :func:`dual_spin_in_place`      wheel rates that turn a dual wheel on the spot
 2      :func:`locked_steering`         steering angles at which the locked robot can still steer
-2      :func:`drift_of_c_general`      (28) with C anywhere, not only at the centroid
+2      :func:`drift_of_c_general`      (28) for four wheels with C anywhere
 3      :func:`isotropic_placement`     move wheel 2 and find the L that makes :math:`\mathbf J_{L1}` isotropic
-3      :func:`printed_42_signs`        show that the printed (42) has the wrong signs
+3      :func:`dual_upsilon`            :math:`\Upsilon_i` of a dual-wheel unit: is its J2 ever isotropic?
 3      :func:`offset_for_kappa`        the offset that gives :math:`\kappa(\mathbf J_2) = 2`
 4      :func:`unlisted_singularity`    a singular configuration the paper does not list
 4      :func:`mobile_and_singular`     steering angles where the robot moves although :math:`\mathbf J` is singular
@@ -40,8 +40,8 @@ The checks live one module per chapter (:mod:`~edition.exercises.ch1_wheels` ...
 and the "your own robot" summary in :mod:`~edition.exercises.own_robot`.
 """
 from .ch1_wheels import dual_counterexample, dual_spin_in_place, offset_other_side
-from .ch2_mobility import drift_of_c_general, locked_steering
-from .ch3_isotropy import isotropic_placement, offset_for_kappa, printed_42_signs
+from .ch2_mobility import BETA4, D4, PHI_DOT4, drift_of_c_general, locked_steering
+from .ch3_isotropy import dual_upsilon, isotropic_placement, offset_for_kappa
 from .ch4_singularities import mobile_and_singular, unlisted_singularity
 from .ch5_steering import printed_65_region, rotation_angles, translation_angles
 from .ch6_motion import curved_translation, reversal
@@ -49,6 +49,6 @@ from .feedback import Feedback
 from .own_robot import describe_robot
 
 __all__ = ["Feedback", "offset_other_side", "dual_counterexample", "dual_spin_in_place", "locked_steering",
-           "drift_of_c_general", "isotropic_placement", "printed_42_signs", "offset_for_kappa",
+           "drift_of_c_general", "D4", "BETA4", "PHI_DOT4", "isotropic_placement", "dual_upsilon", "offset_for_kappa",
            "unlisted_singularity", "mobile_and_singular", "translation_angles", "rotation_angles",
            "printed_65_region", "curved_translation", "reversal", "describe_robot"]

@@ -138,7 +138,7 @@ def show(key, data=None, *, outdir=None, width=None):
     files = _render(key, data, fig, (*output.formats(mod), "png") if outdir is not None else ("png",))
     if outdir is not None:
         output.write(outdir, key, {f: b for f, b in files.items() if f != "png"}, output.record(key, mod, data))
-    label = f"Figure {mod.NUMBER} (regenerated): " if mod.NUMBER else ""
+    label = f"Figure {mod.NUMBER}" + (" (regenerated)" if mod.NUMBER.isdigit() else "") + ": " if mod.NUMBER else ""
     # marked, so that the report shows the figure once, from its files, instead of this picture
     display(Image(files["png"], width=width or int(round(fig.get_figwidth() * 110))), metadata={"wmr_figure": key})
     display(Markdown(f"*{label}{mod.TITLE}.* {mod.caption(data)}"))

@@ -20,7 +20,7 @@ from .common import DEG, L_PAPER, R_CENTRED, drawing, snap
 
 __all__ = ["NUMBER", "TITLE", "PAPER_CAPTION", "ConventionsData", "data", "draw", "caption"]
 
-NUMBER = ""
+NUMBER = "E1"   # this edition's own figures: E1, E2 (the paper's are 1-14)
 TITLE = "Conventions"
 PAPER_CAPTION = ""
 
@@ -190,7 +190,8 @@ def caption(data):
     return (r"Conventions of the package. (a) Fixed frame $\mathcal{F}$ and body frame $\mathcal{B}$ "
             r"($\mathbf{i}$, $\mathbf{j}$) at the operation point $C$, turned by $\psi$ (counter-clockwise positive, "
             rf"here {data.psi:g}$^\circ$); $\mathbf{{c}}$ locates $C$ in $\mathcal{{F}}$ and "
-            r"$\mathbf{d}_i = \overrightarrow{CP_i}$ is resolved in $\mathcal{B}$; the paper's numbering "
+            r"$\mathbf{d}_i = \overrightarrow{CP_i}$ is resolved in $\mathcal{B}$; the numbering inferred from (59) (the "
+            r"paper does not state it; the only one of 24 for which (59) holds) "
             + ", ".join(rf"$\mathbf{{d}}_{k + 1} = {_exact(p)}$" for k, p in enumerate(data.mount_points)) + ". "
             rf"(b) Offset wheel: the intermediate body turns by $\beta_i$ (here {data.beta:g}$^\circ$) from "
             r"$\mathbf{i}$ to the axle $\mathbf{i}_i$; $\mathbf{j}_i$ is the rolling direction (arrows on the wheels) "

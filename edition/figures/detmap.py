@@ -30,7 +30,7 @@ from .common import ABS_DET_J, DEG, L_PAPER, centred_robot, drawing, residual, s
 __all__ = ["NUMBER", "TITLE", "PAPER_CAPTION", "MOBILE_TWISTS", "MOBILE_SEED", "DetSlice", "DetMapData",
            "refine_kappa_min", "data", "draw", "caption"]
 
-NUMBER = ""
+NUMBER = "E2"   # this edition's own figures: E1, E2 (the paper's are 1-14)
 TITLE = "Singular configurations and conditioning of J"
 PAPER_CAPTION = ""
 #: Largest :math:`\log_{10}\kappa` shown (the colour scale is clipped there).

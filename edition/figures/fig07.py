@@ -65,6 +65,11 @@ class Fig07Data:
         Largest :math:`|\psi|` along the run.
     slip_max : float
         Largest residual of (21) along the run.
+    rank_M_equal, rank_M_generic : int
+        Rank of the locked-drive matrix :math:`\mathbf M(\boldsymbol\beta)` (6 x 6,
+        :func:`edition.checks.assembly.locked.locked_system`) with all :math:`\beta_i` equal and at ``generic_deg``.
+    generic_deg : tuple (3,)
+        Steering angles (degrees) at which the arm lines are neither concurrent nor parallel.
     robot : wmr.Robot
         Drawing only: the robot simulated.
     beta : numpy.ndarray (N, 3)
@@ -95,6 +100,9 @@ class Fig07Data:
     contact_drift: float = small(default=0.0)
     psi_max: float = residual(default=0.0)
     slip_max: float = residual(default=0.0)
+    rank_M_equal: int = 0
+    rank_M_generic: int = 0
+    generic_deg: tuple = ()
     robot: object = drawing(default=None)
     beta: np.ndarray = drawing(default=None)          # (N, 3) radians
     pose: np.ndarray = drawing(default=None)          # (N, 3)
@@ -103,7 +111,7 @@ class Fig07Data:
     later_index: int = drawing(default=0)
 
 
-def data(r=R_OFFSET, d=None, beta0=0.0, T=1.0, steps=240, later=3 / 8):
+def data(r=R_OFFSET, d=None, beta0=0.0, T=1.0, steps=240, later=3 / 8, generic=(20.0, 75.0, 140.0)):
     r"""Simulate one full turn of steering without driving and fit the path of C.
 
     Parameters
@@ -120,11 +128,16 @@ def data(r=R_OFFSET, d=None, beta0=0.0, T=1.0, steps=240, later=3 / 8):
         RK4 steps.
     later : float
         Fraction of the turn for the dashed pose.
+    generic : tuple (3,)
+        Steering angles (degrees) where the locked-drive matrix is evaluated for comparison.
 
     Returns
     -------
     Fig07Data
     """
+    from wmr.analysis.linalg import rank
+
+    from ..checks.assembly.locked import locked_system
     d = r if d is None else d
     bot = paper_robot("offset", L=L_PAPER, r=r, d=d)
     dt = T / steps
@@ -141,6 +154,8 @@ def data(r=R_OFFSET, d=None, beta0=0.0, T=1.0, steps=240, later=3 / 8):
         centre_error=float(np.linalg.norm(centre - Cf)),
         contact_drift=float(np.max(np.linalg.norm(G - G[0], axis=-1))),
         psi_max=float(np.abs(tr.pose[:, 0]).max()), slip_max=float(tr.slip.max()),
+        rank_M_equal=int(rank(locked_system(bot, np.full(bot.w, beta0 * DEG)))),
+        rank_M_generic=int(rank(locked_system(bot, np.asarray(generic) * DEG))), generic_deg=tuple(generic),
         robot=bot, beta=snap(tr.beta), pose=snap(tr.pose),
         pivots=snap(np.stack([tr.unit_points(k, "P") for k in range(bot.w)], axis=1)), contacts=snap(G[0]),
         later_index=int(round(later * steps)))
@@ -214,12 +229,6 @@ def draw(data, fig=None):
         zoom = ax.indicate_inset_zoom(axi, edgecolor="#999999", linewidth=0.6, alpha=1.0)
         for line in zoom.connectors:                    # they would cross the drawing; the box and title say it
             line.set_visible(False)
-        an.info_box(ax, [r"path of $C$: a circle of fitted radius $R$",
-                         rf"offset $d = {data.d:g}$:  $|R-d| = {number(data.radius_error, 2)}$ "
-                         rf"$\leq d(\omega\Delta t)^4 = {number(data.tolerance, 2)}$",
-                         rf"contact points $G_i$ moved $\leq {number(data.contact_drift, 2)}$;  "
-                         rf"${residual_text(MAX_PSI, data.psi_max)}$"],
-                    loc=(0.985, 0.015), ha="right", va="bottom")
         an.scale_bar(ax, L_PAPER, "$L$", loc=(0.03, 0.04))
     return fig
 
@@ -246,4 +255,9 @@ def caption(data):
             rf"${number(data.contact_drift, 2)}$) and the platform does not turn "
             rf"(${residual_text(MAX_PSI, data.psi_max)}$). Solid: start; dashed: after {data.later:g} of the "
             r"turn ($C'$, $P'$). Blue: paths of the pivots $P_i$, circles of radius $d$ about the $G_i$. Inset: the "
-            r"pivot $P$ of wheel 1 circles its fixed contact point $G$ at distance $d$.")
+            r"pivot $P$ of wheel 1 circles its fixed contact point $G$ at distance $d$. The dead zone needs all "
+            r"$\beta_i$ equal: with the drives locked the wheels can be steered only while their arm lines (through "
+            r"$P_i$ along $\mathbf j_i$) are parallel, or concurrent for an instant; the $6\times6$ locked-drive "
+            rf"matrix $\mathbf M(\boldsymbol\beta)$ has rank {data.rank_M_equal} here, but rank "
+            rf"{data.rank_M_generic} at $\boldsymbol\beta = ({', '.join(f'{b:g}' for b in data.generic_deg)})^\circ$, "
+            r"where the wheels cannot be steered at all without driving.")

@@ -139,12 +139,6 @@ def data(speed=1.0, t_end=6.0, dt=0.02, beta_rect=100.0, amplitude=45.0):
                      curvilinear=_run(bot, 90 * DEG, steer, speed, t_end, dt, False), robot=bot)
 
 
-def _box(run):
-    return [rf"${residual_text(MAX_PSI, run.psi_max)}$;  paths congruent "
-            rf"(deviation ${bound(run.congruence_error, latex=True)}$);  rank $\mathbf{{F}}$ = "
-            f"{', '.join(map(str, run.rank_F))} along the run"]
-
-
 def draw(data, fig=None):
     """Draw Fig. 8 from its data.
 
@@ -184,7 +178,6 @@ def draw(data, fig=None):
             title = (rf"rectilinear: constant $\beta_i = {data.beta_rect:g}^\circ$" if letter == "a" else
                      rf"curvilinear: $\beta_i(t) = 90^\circ + {data.amplitude:g}^\circ\sin(2\pi t/T)$")
             panel_title(ax, letter, title)
-            an.info_box(ax, _box(run), loc=(0.99, 0.015), ha="right", va="bottom")
         common_view(axes, [np.vstack([v, v.min(axis=0) - [0, 0.45]]) for v in views], pad=0.02)
         for ax in axes:
             an.scale_bar(ax, L_PAPER, "$L$", loc=(0.02, 0.04))

@@ -138,13 +138,6 @@ def data(uc_U=(-0.7, 1.8), turn=60.0):
                      U=_run(bot, uc_U, turn * DEG), robot=bot)
 
 
-def _box(run, name):
-    psi = r"\dot\psi_\mathrm{c}" if name == "C" else r"\dot\psi_\mathrm{u}"
-    return [rf"${psi} = {run.psi_rate:.3g}$, turned ${run.turn_deg:.4g}^\circ$;  "
-            rf"rank $\mathbf{{F}}$ = {run.rank_F}, mobility {run.mobility}",
-            rf"axles meet at the IC (computed: distance ${bound(run.axles.error, latex=True)}$)"]
-
-
 def draw(data, fig=None):
     """Draw Fig. 9 from its data.
 
@@ -188,7 +181,6 @@ def draw(data, fig=None):
                               color=PALETTE["grey"])
             views.append(np.vstack([rd.robot_extent(g0, R), rd.robot_extent(g1, R), U[None]]))
             panel_title(ax, letter, "IC at the operation point $C$" if name == "C" else "IC at a point $U$")
-            an.info_box(ax, _box(run, name), below=True)
         common_view(axes, views, pad=0.03)
         an.scale_bar(axes[0], L_PAPER, "$L$", loc=(0.03, 0.03))
         fig.legend(handles=an.legend_handles([("axle", "axle"), ("paths of the $P_i$", f"path:{ROLE['path'][1]}"),

@@ -13,7 +13,7 @@ from wmr.model.platform import E
 
 from ..text import residual as residual_text
 from .common import ABS_DET_J, DEG, L_PAPER, centred_robot, drawing, snap
-from .configs import SingularConfig, beta_text, config_lines, singular_config
+from .configs import SingularConfig, singular_config
 
 __all__ = ["NUMBER", "TITLE", "PAPER_CAPTION", "Fig10Data", "data", "draw", "caption"]
 
@@ -106,8 +106,6 @@ def draw(data, fig=None):
         an.label(ax, g.C + 0.5 * v, r"$\dot{\mathbf{c}}$", offset=(-7, 0), ha="right", va="center",
                  color=PALETTE["green"])
         fit_view(ax, ext, pad=0.06)
-        an.info_box(ax, [beta_text(cfg.beta_deg) + ": wheel planes and axles parallel, IC at infinity"]
-                    + config_lines(cfg), below=True)
         fig.legend(handles=an.legend_handles(LINES_LEGEND[:2] + [("admissible motion", f"path:{PALETTE['green']}")]),
                    loc="outside upper center", ncols=3)
         an.scale_bar(ax, L_PAPER, "$L$", loc=(0.03, 0.03))

@@ -13,7 +13,7 @@ import numpy as np
 
 from ..text import residual as residual_text
 from .common import ABS_DET_J, DEG, centred_robot, drawing
-from .configs import beta_text, config_lines, singular_config
+from .configs import beta_text, singular_config
 
 __all__ = ["NUMBER", "TITLE", "PAPER_CAPTION", "CONFIGS", "Fig11Data", "data", "draw", "caption"]
 
@@ -99,7 +99,6 @@ def draw(data, fig=None):
             views.append(ext)
             b = data.configs[letter]
             panel_title(ax, letter, rf"$\beta_{i} = \beta_{j} = {b[i - 1]:g}^\circ$, $\beta_{k} = {b[k - 1]:g}^\circ$")
-            an.info_box(ax, config_lines(cfg, kappa=False), below=True)
         common_view(axes, views, pad=0.08)
         fig.legend(handles=an.legend_handles(LINES_LEGEND + [("planes meet", f"marker:D:{ROLE['dp']}")]),
                    loc="outside lower center", ncols=4)

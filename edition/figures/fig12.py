@@ -14,7 +14,7 @@ from wmr.analysis import lines as ln
 from ..text import bound
 from ..text import residual as residual_text
 from .common import ABS_DET_J, centred_robot, drawing, residual
-from .configs import beta_text, config_lines, singular_config
+from .configs import beta_text, singular_config
 
 __all__ = ["NUMBER", "TITLE", "PAPER_CAPTION", "Fig12Data", "data", "draw", "caption"]
 
@@ -102,7 +102,6 @@ def draw(data, fig=None):
             views.append(ext)
             panel_title(ax, letter, "planes meet at the operation point $C$" if at_C
                         else "planes meet at an arbitrary point $D_P$")
-            an.info_box(ax, [beta_text(cfg.beta_deg, 4)] + config_lines(cfg, kappa=False), below=True)
         common_view(axes, views, pad=0.1)
         fig.legend(handles=an.legend_handles(LINES_LEGEND + [("$D_P$", f"marker:D:{ROLE['dp']}")]),
                    loc="outside lower center", ncols=4)

@@ -142,10 +142,6 @@ def draw(data, fig=None):
             an.draw_angle(ax, g.P[k], 0.48, 0.0, float(data.beta[k]), rf"$\beta_{k + 1}$", color=PALETTE["purple"],
                           text_radius=1.3)
         fit_view(ax, np.vstack([rd.robot_extent(g, rd.platform_radius(bot)), U[None] + 0.3]), pad=0.04)
-        an.info_box(ax, [_angles(data.beta_deg) + ";  printed (65): " + ", ".join(
-                             rf"${degrees(np.radians(v), 3)}^\circ$" for v in data.printed65_deg),
-                         rf"axles meet at $U$ (computed: distance ${bound(data.axles.error, latex=True)}$);  "
-                         f"rank $\\mathbf{{F}}$ = {data.rank_F}, mobility {data.mobility}"], below=True)
         an.scale_bar(ax, L_PAPER, "$L$", loc=(0.03, 0.03))
     return fig
 

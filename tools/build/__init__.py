@@ -5,17 +5,14 @@ once, and calls one command of this package per step (``python -m tools.build``)
 
 - :mod:`~tools.build.execute`: a notebook to **nbclient** (a fresh kernel), cached by content hash;
   what the chapters wrote into ``figures/`` (the ledger rows to ``python -m edition.ledger``);
-- :mod:`~tools.build.assemble` (+ :mod:`~tools.build.chapters`): the findings chapter (Part I,
-  ``notebooks/findings.ipynb``) and the derivation chapters (Part II) into one report notebook;
+- :mod:`~tools.build.assemble` (+ :mod:`~tools.build.chapters`): Part I and Part II into one notebook;
 - :mod:`~tools.build.markup`: all Markdown of the report to **pandoc**, in one call per format;
 - :mod:`~tools.build.html`: the page to **nbconvert** (template ``wmr_html``), MathJax inlined;
 - :mod:`~tools.build.pdf`: the document to **nbconvert** (template ``wmr_latex``) and **xelatex**,
   the PDF's ``/ID`` fixed and its date the commit's (byte-identical builds);
 - :mod:`~tools.build.typeset`: figures and part headings, the two cells Markdown cannot say.
 
-The tests run under **pytest-xdist**, the student edition is **nbconvert**'s TagRemovePreprocessor
-(``make student``). Only the standard library is imported up front; nbformat, nbclient and nbconvert
-are imported by the step that needs them.
+Only the standard library is imported up front; nbformat, nbclient, nbconvert when a step needs them.
 """
 from __future__ import annotations
 

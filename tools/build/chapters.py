@@ -54,11 +54,11 @@ def _output(o) -> dict | None:
 
 def _figure_link(keys: list[str], figures: dict[str, dict[str, Any]]) -> str:
     """The line that replaces a figure cell of a chapter: a link to where the report shows it."""
-    return "*" + " ".join(f"[{f['label'] or f['title']}](#figure-{f['key']}): shown once, in "
+    return "*" + " ".join(f"This computation draws [{f['label'] or f['title']}](#figure-{f['key']}), printed in "
                           + FRONT_MATTER_FIGURES.get(f["key"], "the figures of Part I")
                           + (", with the paper's caption beside the computed one" if f["paper_caption"] else "") + "."
                           for f in (figures[k] for k in keys)) + "*" if keys else \
-        "*The figure computed here is shown once, in the [figures](#figures) of Part I.*"
+        "*The figure this computation draws is printed with the [figures](#figures) of Part I.*"
 
 
 def chapter_cells(nb, figures: dict[str, dict[str, Any]]) -> list:
@@ -114,11 +114,13 @@ def findings_cells(nb, figures: dict[str, dict[str, Any]]) -> list:
 
 
 def title(nb) -> dict[str, str]:
-    """The title block from the findings chapter: the heading and the line under it of its cell tagged
-    ``title``, and the paper's full reference, the first entry under its heading ``# References``."""
-    head = next((c.source for c in nb.cells if "title" in c.get("metadata", {}).get("tags", [])), "")
-    lines = [l.strip() for l in head.strip().splitlines() if l.strip()]
+    """The title block from the findings chapter's cell tagged ``title`` (its Markdown, or the Markdown it
+    displays): the heading, the line under it, the edition's line (version, licence); and the paper's full
+    reference, the entry by Leow under its heading ``# References``."""
+    c: Any = next((c for c in nb.cells if "title" in c.get("metadata", {}).get("tags", [])), {"source": ""})
+    head = c["source"] if c.get("cell_type") != "code" else "".join(o.get("data", {}).get("text/markdown", "") for o in c.get("outputs", []))
+    lines = [l.strip().strip("*") for l in head.strip().splitlines() if l.strip()] + ["", "", ""]
     refs = next((c.source for c in nb.cells if c.cell_type == "markdown" and c.source.startswith("# References")), "")
-    paper = re.search(r"^1\.\s+(.+?)(?:\n\d+\.|\n\n|\Z)", refs, re.MULTILINE | re.DOTALL)
-    return {"title": lines[0].lstrip("# ").strip() if lines else "", "subtitle": " ".join(lines[1:]).strip("*"),
+    paper = re.search(r"^(?:1\.|-)\s+(Y\. P\. Leow.+?)(?:\n\d+\.|\n-|\n\n|\Z)", refs, re.MULTILINE | re.DOTALL)
+    return {"title": lines[0].lstrip("# ").strip(), "subtitle": lines[1], "edition": lines[2],
             "paper": " ".join(paper.group(1).split()) if paper else ""}

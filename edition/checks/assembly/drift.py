@@ -15,17 +15,16 @@ from wmr.model.tolerance import TOL
 from wmr.model.wheels import OffsetWheel
 
 from ... import symbols as S
-from ...algebra import exact_matrix
 from ...transcription import printed
 from ...verify import SEED, symbolic_equal
 from .. import Derivation, claim, equation, require
-from .locked import concurrent_angles, locked_motion, locked_steering
-from .matrices import PAPER, general_robot
+from .locked import concurrent_angles, locked_motion
+from .matrices import PAPER
 
 __all__ = ["drift_of_c", "drift_of_psi", "drift"]
 
 
-def drift_of_c(n=100, origin=(0.06, -0.04), seed=SEED):
+def drift_of_c(c_dot, n=100, origin=(0.06, -0.04), seed=SEED):
     r"""(28): sum the three block rows of (21) with :math:`\dot\theta_i = 0` and solve for :math:`\dot{\mathbf c}`.
 
     The printed form needs :math:`\sum_i\mathbf d_i = \mathbf 0` (C at the centroid of the mount
@@ -35,6 +34,8 @@ def drift_of_c(n=100, origin=(0.06, -0.04), seed=SEED):
 
     Parameters
     ----------
+    c_dot : sympy.Matrix (2, 1)
+        The derived :math:`\dot{\mathbf c}` of three units at the mount points ``S.D`` (drives locked).
     n : int
         Random centres of rotation.
     origin : pair
@@ -44,17 +45,11 @@ def drift_of_c(n=100, origin=(0.06, -0.04), seed=SEED):
     Returns
     -------
     Derivation
-        ``c_dot`` (derived), ``extra`` (derived minus printed), ``off_centroid`` (the printed form's
+        ``extra`` (derived minus printed), ``off_centroid`` (the printed form's
         error with C moved), finding (28).
     """
     P = printed(28)
-    bot = general_robot()
-    J1, J2 = exact_matrix(bot.J1()), bot.J2()
-    t, th = sp.Matrix(bot.twist_symbols), sp.Matrix(bot.rate_symbols)
-    locked = {s: 0 for s in S.theta_dot}
-    rows = sum(((J1 * t - J2 * th).subs(locked)[2 * k:2 * k + 2, :] for k in range(3)), sp.zeros(2, 1))
-    sol = sp.solve(list(rows), [S.x_dot, S.y_dot], dict=True)[0]
-    c_dot = sp.Matrix([sol[S.x_dot], sol[S.y_dot]])
+    c_dot = sp.Matrix(c_dot)
     extra = (c_dot - P.expr.rhs).applyfunc(sp.simplify)
     centroid = {S.D[2][0]: -S.D[0][0] - S.D[1][0], S.D[2][1]: -S.D[0][1] - S.D[1][1]}
     holds = symbolic_equal(c_dot.subs(centroid), P.expr.rhs)
@@ -76,7 +71,7 @@ def drift_of_c(n=100, origin=(0.06, -0.04), seed=SEED):
             else:
                 res_off = max(res_off, e)
     require(needs_centroid and res_off > 1e-3, "the printed (28) fails with C off the centroid")
-    return Derivation(c_dot=c_dot.applyfunc(sp.factor), extra=extra, off_centroid=res_off, findings=[equation(
+    return Derivation(extra=extra, off_centroid=res_off, findings=[equation(
         28, holds, r"the sum of the block rows of (21) with $\dot\theta_i = 0$, solved for $\dot{\mathbf c}$, is the "
                    r"printed form when $\sum_i\mathbf d_i = \mathbf 0$ (SymPy); it holds on "
                    f"{n} simulated drift motions of the paper's robot", res,
@@ -88,7 +83,7 @@ def drift_of_c(n=100, origin=(0.06, -0.04), seed=SEED):
              "solution, but solutions exist only for concurrent or parallel arms (see the claim `drift`)")])
 
 
-def drift_of_psi(n=100, seed=SEED):
+def drift_of_psi(a, b, c, J1, n=100, seed=SEED):
     r"""(29): the printed quotient of two vectors, where it comes from, and the true drift rate of :math:`\psi`.
 
     Projecting (20) onto :math:`(\mathbf E\mathbf d_i)^{\mathrm T}` and summing with :math:`\dot\theta_i = 0`
@@ -97,6 +92,11 @@ def drift_of_psi(n=100, seed=SEED):
 
     Parameters
     ----------
+    a, b, c : SymPy expressions
+        The derived coefficients of the projected sum :math:`a\dot\psi + \mathbf b^{\mathrm T}\dot{\mathbf c} + c = 0`
+        (``b`` a (2, 1) matrix).
+    J1 : sympy.Matrix (6, 3)
+        The derived :math:`\mathbf J_1` (for the paper's route).
     n : int
         Random triangles (centroid at C) with random centres of rotation.
     seed : int
@@ -104,9 +104,8 @@ def drift_of_psi(n=100, seed=SEED):
     Returns
     -------
     Derivation
-        ``error`` (SymPy's message for vector / vector), ``a``, ``b``, ``c`` (coefficients of the
-        projected sum), ``psi_dot`` (corrected), ``gap`` (error of the pseudo-inverse reading of the
-        printed quotient), finding (29).
+        ``error`` (SymPy's message for vector / vector), ``psi_dot`` (corrected), ``gap`` (error of the
+        pseudo-inverse reading of the printed quotient), finding (29).
     """
     P = printed(29)
     try:
@@ -114,16 +113,8 @@ def drift_of_psi(n=100, seed=SEED):
         error = None
     except TypeError as e:
         error = f"{type(e).__name__}: {e}"
-    bot = general_robot()
-    J1, J2 = exact_matrix(bot.J1()), bot.J2()
-    t, th = sp.Matrix(bot.twist_symbols), sp.Matrix(bot.rate_symbols)
-    cdot = sp.Matrix([S.x_dot, S.y_dot])
-    locked = {s: 0 for s in S.theta_dot}
-    proj = sp.expand(sum(((E(SYMBOLIC) * sp.Matrix(p)).T * (J1 * t - J2 * th).subs(locked)[2 * k:2 * k + 2, :]
-                          for k, p in enumerate(S.D)), sp.zeros(1, 1))[0])
-    a = sp.factor(proj.coeff(S.psi_dot))
-    b = sp.Matrix([proj.coeff(S.x_dot), proj.coeff(S.y_dot)]).applyfunc(sp.factor)
-    c = sp.collect(sp.expand(proj - a * S.psi_dot - (b.T * cdot)[0]), S.phi_dot)
+    t, cdot = sp.Matrix([S.psi_dot, S.x_dot, S.y_dot]), sp.Matrix([S.x_dot, S.y_dot])
+    b = sp.Matrix(b)
     centroid = {S.D[2][0]: -S.D[0][0] - S.D[1][0], S.D[2][1]: -S.D[0][1] - S.D[1][1]}
     b_vanishes = symbolic_equal(b.subs(centroid), sp.zeros(2, 1))
     psi_dot = sp.expand((-(b.T * cdot)[0] - c).subs(centroid)) / sp.expand(a.subs(centroid))
@@ -147,7 +138,7 @@ def drift_of_psi(n=100, seed=SEED):
         gap = max(gap, abs(x[0] - reading))
     corrected = (r"\dot\psi = \frac{d\sum_{i=1}^{3}(\mathbf E\mathbf d_i)^{\mathrm T}\mathbf R_{bwi}"
                  r"\begin{bmatrix}-\dot\phi_i\\ 0\end{bmatrix}}{\sum_{i=1}^{3}\mathbf d_i^{\mathrm T}\mathbf d_i}")
-    return Derivation(error=error, a=a, b=b, c=c, psi_dot=psi_dot, gap=gap, findings=[equation(
+    return Derivation(error=error, psi_dot=psi_dot, gap=gap, findings=[equation(
         29, error is None, r"projecting (20) on $(\mathbf E\mathbf d_i)^{\mathrm T}$ and summing with "
                            r"$\dot\theta_i = 0$ gives the corrected form when $\sum_i\mathbf d_i = \mathbf 0$ (SymPy); "
                            r"it equals the true "
@@ -164,7 +155,7 @@ def drift_of_psi(n=100, seed=SEED):
              r"$3L^2$")])
 
 
-def drift(row28, row29, n_locked=None):
+def drift(row28, row29, n_locked, J2):
     r"""Claim ``drift``: steering with the drives locked moves the platform -- a conditional that holds.
 
     With :math:`\dot\theta_i = 0` and :math:`\mathbf t = \mathbf 0`, (21) leaves
@@ -177,17 +168,17 @@ def drift(row28, row29, n_locked=None):
     ----------
     row28, row29 : edition.ledger.Finding
         The findings of :func:`drift_of_c` and :func:`drift_of_psi`.
-    n_locked : Derivation, optional
-        :func:`locked_steering` (computed if not given).
+    n_locked : Derivation
+        :func:`locked_steering`.
+    J2 : sympy.Matrix (6, 6)
+        The derived :math:`\mathbf J_2` of three units.
 
     Returns
     -------
     Derivation
         finding ``drift``.
     """
-    locked = n_locked or locked_steering()
-    bot = general_robot()
-    J2 = bot.J2()
+    locked = n_locked
     steer_only = sp.Matrix([S.phi_dot[0], 0, S.phi_dot[1], 0, S.phi_dot[2], 0])
     moved = J2 * steer_only                                   # = J1 t must vanish if t = 0
     sol = sp.solve(list(moved), list(S.phi_dot), dict=True)

@@ -10,7 +10,7 @@ import sympy as sp
 from wmr.analysis.linalg import null_space, rank
 from wmr.analysis.simulation import simulate
 from wmr.model.backend import SYMBOLIC
-from wmr.model.platform import E, point_row, rotation
+from wmr.model.platform import E, rotation
 from wmr.model.robot import Robot
 from wmr.model.robots import paper_robot
 from wmr.model.tolerance import TOL
@@ -84,7 +84,7 @@ def concurrent_angles(robot, u):
     return np.arctan2(-v[:, 0], v[:, 1])               # j_i = (-sin b, cos b) parallel to d_i - u
 
 
-def locked_steering(robots=200, per=10, seed=SEED):
+def locked_steering(det_M, plucker, robots=200, per=10, seed=SEED):
     r"""Can the robot steer with the drives locked?
 
     :math:`\det\mathbf M = d^3\det[\mathbf d_i\times\mathbf j_i\ \ \mathbf j_i^{\mathrm T}]`.
@@ -94,6 +94,10 @@ def locked_steering(robots=200, per=10, seed=SEED):
 
     Parameters
     ----------
+    det_M : SymPy expression
+        The derived :math:`\det\mathbf M` of three units at the mount points ``S.D`` and angles ``S.beta``.
+    plucker : sympy.Matrix (3, 3)
+        The derived rows :math:`\mathbf j_i^{\mathrm T}[\mathbf E\mathbf d_i\ \ \mathbf 1]`.
     robots, per : int
         Random robots, and random configurations of each, for the numeric rank of :math:`\mathbf M`.
     seed : int
@@ -101,16 +105,12 @@ def locked_steering(robots=200, per=10, seed=SEED):
     Returns
     -------
     Derivation
-        ``det_M``, ``plucker`` (the rows :math:`(\mathbf d_i\times\mathbf j_i, \mathbf j_i^{\mathrm T})`),
         ``det_concurrent`` (lines 1, 2 through U, line 3 displaced by :math:`n_3`),
         ``det_parallel``, ``ranks`` (set), ``n`` (configurations), ``proven`` (bool).
     """
-    bot = general_robot()
-    M = locked_system(bot, None).applyfunc(sp.nsimplify)
-    det_M = sp.factor(sp.expand(M.det(method="berkowitz")))
-    A = sp.Matrix.vstack(*[rotation(b, SYMBOLIC)[:, 1].T * point_row(p, backend=SYMBOLIC) for p, b in zip(S.D, S.beta,
-                                                                                                          strict=True)])
-    plucker = symbolic_equal(det_M, S.d**3 * A.det())
+    M = locked_system(general_robot(), None).applyfunc(sp.nsimplify)
+    require(symbolic_equal(M.det(method="berkowitz"), det_M), "det M of wmr's F is the derived determinant")
+    plucker_ok = symbolic_equal(det_M, S.d**3 * plucker.det())
     ux, uy, l1, l2, s3, n3 = sp.symbols("u_x u_y lambda_1 lambda_2 s_3 n_3", real=True)
     u = sp.Matrix([ux, uy])
     Rb = [rotation(b, SYMBOLIC) for b in S.beta]
@@ -124,8 +124,8 @@ def locked_steering(robots=200, per=10, seed=SEED):
     for _ in range(robots):
         b = Robot([OffsetWheel(tuple(p), r=0.1, d=0.05) for p in rng.uniform(-1, 1, (3, 2))])
         ranks |= set(rank(locked_system(b, rng.uniform(-np.pi, np.pi, (per, 3)))).tolist())
-    return Derivation(det_M=det_M, plucker=A.applyfunc(sp.factor), det_concurrent=det_conc, det_parallel=det_par,
-                      ranks=ranks, n=robots * per, proven=plucker and geometry)
+    return Derivation(det_concurrent=det_conc, det_parallel=det_par, ranks=ranks, n=robots * per,
+                      proven=plucker_ok and geometry)
 
 
 def drift_motions(u=(0.1, 0.05), beta_parallel=0.4, t_end=0.2, dt=0.002):

@@ -1,6 +1,8 @@
 r"""Isotropy of J2, (40)-(50): its product, d = r, the dead zone of isotropy, the isotropic kinematics.
 
-Chapter 3's checks live in :mod:`edition.checks.isotropy`; this module holds one group of them.
+Chapter 3's checks live in :mod:`edition.checks.isotropy`; this module holds one group of them.  The chapter
+derives :math:`\mathbf J_2\mathbf J_2^{\mathrm T}`, its blocks and the deviator; the checks compare and add the
+numerical and simulated evidence.
 """
 from __future__ import annotations
 
@@ -23,23 +25,28 @@ from .jl1 import general_robot
 __all__ = ["J2_product", "J2_isotropy", "dead_zone_of_isotropy", "isotropic_kinematics"]
 
 
-def J2_product():
+def J2_product(JJ, ptilde, ptilde2):
     r"""(40)-(43): :math:`\mathbf J_2\mathbf J_2^{\mathrm T}` is block-diagonal with
     :math:`\Upsilon_i = \mathbf R\tilde{\mathbf p}^2\mathbf R^{\mathrm T}`; the printed (42) has the wrong signs.
+
+    Parameters
+    ----------
+    JJ : sympy.Matrix (6, 6)
+        The derived :math:`\mathbf J_2\mathbf J_2^{\mathrm T}` of three units at the angles ``S.beta``.
+    ptilde, ptilde2 : sympy.Matrix (2, 2)
+        The derived local block and its square.
 
     Returns
     -------
     Derivation
-        ``ptilde``, ``ptilde2``, ``Upsilon1``, ``with_printed_42`` and ``with_model`` (:math:`\Upsilon_1`
+        ``with_printed_42`` and ``with_model`` (:math:`\Upsilon_1`
         at :math:`\beta_1 = 0`, d = r = 1), findings (40)-(43).
     """
     p40, p41, p42, p43 = (printed(i) for i in (40, 41, 42, 43))
     gen = general_robot()
-    J2 = gen.J2()
-    JJ = J2 * J2.T
+    require(symbolic_equal(gen.J2() * gen.J2().T, JJ) and symbolic_equal(gen.wheels[0].block(sp.Integer(0)), ptilde),
+            "wmr's J2 and offset block give the derived product and local block")
     blocks = [JJ[2 * k:2 * k + 2, 2 * k:2 * k + 2] for k in range(3)]
-    ptilde = gen.wheels[0].block(sp.Integer(0))                  # R(0) p~ = p~
-    ptilde2 = ptilde * ptilde
     beta = gen.beta_symbols
     ups = [explicit(p41.expr.rhs, {S.ptilde2: ptilde2, S.beta_i: b}) for b in beta]
     holds41 = all(symbolic_equal(u, blk) for u, blk in zip(ups, blocks, strict=True))
@@ -50,7 +57,7 @@ def J2_product():
     corrected42 = symbolic_equal(ptilde2, sp.diag(S.d**2, S.r**2)) and symbolic_equal(neg, -pos)
     holds43 = all(symbolic_equal(p43.expr.rhs.subs(S.beta_i, b), blk) for b, blk in zip(beta, blocks, strict=True))
     res43 = max(max_residual(p43.expr.rhs.subs(S.beta_i, b), blk) for b, blk in zip(beta, blocks, strict=True))
-    return Derivation(ptilde=ptilde, ptilde2=ptilde2, Upsilon1=blocks[0].applyfunc(sp.trigsimp), with_printed_42=neg,
+    return Derivation(with_printed_42=neg,
                       with_model=pos, findings=[
         equation(40, symbolic_equal(JJ, full), r"$\mathbf J_2\mathbf J_2^{\mathrm T}$ of the model is block-diagonal "
                  r"with the blocks (41) (SymPy)", max_residual(JJ, full)),
@@ -75,7 +82,7 @@ def J2_product():
                  convention=r"$\mathbf R_{bwi} = \mathbf R(\beta_i)$ of (11)")])
 
 
-def J2_isotropy(pairs=20, n=2000, seed=SEED):
+def J2_isotropy(U1, frob2, d_sol, J2, pairs=20, n=2000, seed=SEED):
     r"""(44)-(48) and claim ``isotropy-d-equals-r``: :math:`\Upsilon_i` is a multiple of :math:`\mathbf 1` iff d = r, at
     every angle.
 
@@ -85,6 +92,14 @@ def J2_isotropy(pairs=20, n=2000, seed=SEED):
 
     Parameters
     ----------
+    U1 : sympy.Matrix (2, 2)
+        The derived :math:`\Upsilon_i` at the angle ``S.beta_i``.
+    frob2 : SymPy expression
+        The derived squared Frobenius norm of its deviatoric part.
+    d_sol : list
+        The derived offsets :math:`d` at which it vanishes.
+    J2 : sympy.Matrix (6, 6)
+        The derived :math:`\mathbf J_2` of three units.
     pairs : int
         Random (d, r) pairs for the numeric condition numbers.
     n : int
@@ -94,16 +109,14 @@ def J2_isotropy(pairs=20, n=2000, seed=SEED):
     Returns
     -------
     Derivation
-        ``deviator`` (its squared norm), ``d_solutions``, ``JtJ``, findings (44)-(48) and ``isotropy-d-equals-r``.
+        ``kappa_d0_infinite``, findings (44)-(48) and ``isotropy-d-equals-r``.
     """
     p44, p45, p46, p47, p48 = (printed(i) for i in (44, 45, 46, 47, 48))
     gen = general_robot()
-    J2 = gen.J2()
-    U1 = (J2 * J2.T)[0:2, 0:2].subs(gen.beta_symbols[0], S.beta_i)
+    require(symbolic_equal(gen.J2(), J2), "Robot.J2 is the derived J2")
     dev = U1 - sp.trace(U1) / 2 * sp.eye(2)
-    frob2 = sum(e**2 for e in dev)
+    require(symbolic_equal(sum(e**2 for e in dev), frob2), "frob2 is the squared norm of the deviator of U1")
     dev_ok = symbolic_equal(frob2, (S.d**2 - S.r**2)**2 / 2) and symbolic_equal(sp.trace(U1), S.d**2 + S.r**2)
-    d_sol = sp.solve(sp.Eq((S.d**2 - S.r**2)**2 / 2, 0), S.d)
     JJr = (J2 * J2.T).subs(S.d, S.r)
     JtJ = J2.T * J2
     jtj_ok = symbolic_equal(JtJ, sp.diag(*[S.d**2, S.r**2] * 3)) and symbolic_equal(JtJ.subs(S.d, S.r), JJr)
@@ -116,7 +129,7 @@ def J2_isotropy(pairs=20, n=2000, seed=SEED):
     k_eq = condition_number(paper_robot("offset", L=0.4, r=0.1, d=0.1).J2(B))
     k_0 = condition_number(paper_robot("offset", L=0.4, r=0.1, d=0.0).J2(B))
     holds46 = dev_ok and d_sol == [p46.expr.rhs]
-    return Derivation(deviator=sp.factor(sp.trigsimp(frob2)), d_solutions=d_sol, JtJ=sp.trigsimp(JtJ), findings=[
+    return Derivation(findings=[
         equation(44, symbolic_equal(U1[0, 1], p44.expr.lhs), "the off-diagonal entry of (43) (SymPy)",
                  max_residual(U1[0, 1], p44.expr.lhs)),
         equation(45, symbolic_equal(U1[0, 0] - U1[1, 1], p45.expr.lhs - p45.expr.rhs), "the diagonal entries of (43) "
@@ -142,7 +155,7 @@ def J2_isotropy(pairs=20, n=2000, seed=SEED):
         kappa_d0_infinite=bool(np.all(np.isinf(k_0))))
 
 
-def dead_zone_of_isotropy(steps=200, omega=2.0, pairs=20, n=2000, seed=SEED):
+def dead_zone_of_isotropy(iso, steps=200, omega=2.0):
     r"""Claim ``isotropy-d-zero``: the isotropic offset d = r is the largest practical offset, hence the largest dead
     zone.
 
@@ -152,12 +165,12 @@ def dead_zone_of_isotropy(steps=200, omega=2.0, pairs=20, n=2000, seed=SEED):
 
     Parameters
     ----------
+    iso : Derivation
+        The result of :func:`J2_isotropy`.
     steps : int
         Integration steps of the turn.
     omega : float
         Steering rate (rad/s).
-    pairs, n, seed
-        As in :func:`J2_isotropy`.
 
     Returns
     -------
@@ -165,7 +178,6 @@ def dead_zone_of_isotropy(steps=200, omega=2.0, pairs=20, n=2000, seed=SEED):
         ``d`` (the offset), ``radius_min``, ``radius_max`` (range of :math:`|CC_f|`), ``radius_error``
         (:math:`\max\,\big||CC_f| - d\big|`), ``contact_drift``, ``slip``, finding ``isotropy-d-zero``.
     """
-    iso = J2_isotropy(pairs=pairs, n=n, seed=seed)
     off = paper_robot("offset", L=0.4, r=0.1)                       # d = r = 0.1
     T = 2 * np.pi / omega
     run = simulate(off, [omega, 0.0] * 3, [0.3] * 3, T, T / steps)

@@ -1,6 +1,8 @@
 r"""Isotropy of J_L1, (30)-(39): condition number, homogeneous Jacobian, Gram matrix, placement, L.
 
-Chapter 3's checks live in :mod:`edition.checks.isotropy`; this module holds one group of them.
+Chapter 3's checks live in :mod:`edition.checks.isotropy`; this module holds one group of them.  The chapter
+derives :math:`\mathbf J_{L1}`, its Gram matrix and the isotropy conditions; each check compares them with the
+printed forms and the package, and adds the numerical evidence.
 """
 from __future__ import annotations
 
@@ -40,7 +42,7 @@ def general_robot():
     return Robot([OffsetWheel(d, r=S.r, d=S.d) for d in S.D])
 
 
-def condition_number_def(n_pairs=50, n_random=2000, seed=SEED):
+def condition_number_def(JL1, sv, kappa, n_pairs=50, n_random=2000, seed=SEED):
     r"""(30)-(31): the definition applied exactly to :math:`\mathbf J_{L1}` of the paper's placement with L free.
 
     :math:`\kappa(\mathbf J_{L1}) = \max(\rho/L, L/\rho)` for mount radius :math:`\rho`; both ends of
@@ -48,6 +50,12 @@ def condition_number_def(n_pairs=50, n_random=2000, seed=SEED):
 
     Parameters
     ----------
+    JL1 : sympy.Matrix (6, 3)
+        The derived :math:`\mathbf J_{L1}` of the paper's placement with mount radius :data:`RHO`, ``S.L`` free.
+    sv : list
+        Its derived singular values.
+    kappa : SymPy expression
+        The derived condition number :math:`\max(\sigma)/\min(\sigma)`.
     n_pairs : int
         Random :math:`(\rho, L)` for the comparison with ``wmr.condition_number``.
     n_random : int
@@ -57,13 +65,14 @@ def condition_number_def(n_pairs=50, n_random=2000, seed=SEED):
     Returns
     -------
     Derivation
-        ``singular_values``, ``kappa`` (exact), ``k_min`` (smallest kappa of the random matrices),
+        ``k_min`` (smallest kappa of the random matrices),
         findings (30) and (31).
     """
     p30, p31 = printed(30), printed(31)
-    JL1 = paper_robot("offset", L=RHO, r=S.r, exact=True).J1(S.L)
-    sv = JL1.singular_values()
-    kappa = p30.expr.rhs.subs({S.sigma_l: sp.Max(*sv), S.sigma_s: sp.Min(*sv)})
+    require(symbolic_equal(paper_robot("offset", L=RHO, r=S.r, exact=True).J1(S.L), JL1),
+            "wmr's J1(L) of the paper's placement is the derived J_L1")
+    require(symbolic_equal(p30.expr.rhs.subs({S.sigma_l: sp.Max(*sv), S.sigma_s: sp.Min(*sv)}), kappa),
+            "the derived kappa is (30) applied to the derived singular values")
     key = sp.default_sort_key
     holds30 = symbolic_equal(sp.Matrix(sorted([s**2 for s in sv], key=key)),
                              sp.Matrix(sorted((JL1.T * JL1).eigenvals(multiple=True), key=key)))
@@ -80,7 +89,7 @@ def condition_number_def(n_pairs=50, n_random=2000, seed=SEED):
     lower, upper = p31.expr
     holds31 = (min(sv0) == 0 and upper == sp.oo and sp.simplify(kappa.subs(S.L, RHO)) == lower
                and bool(np.all(k_rand >= lower)) and abs(k_iso - 1) <= TOL)
-    return Derivation(singular_values=sv, kappa=kappa, k_min=float(k_rand.min()), findings=[
+    return Derivation(k_min=float(k_rand.min()), findings=[
         equation(30, holds30, r"the squared singular values of $\mathbf J_{L1}$ (paper placement, radius $\rho$, $L$ "
                               r"free) are the eigenvalues of $\mathbf J_{L1}^{\mathrm T}\mathbf J_{L1}$ (SymPy), "
                               r"giving $\kappa = \max(\rho/L, L/\rho)$; `wmr.condition_number` agrees at "
@@ -93,66 +102,87 @@ def condition_number_def(n_pairs=50, n_random=2000, seed=SEED):
                               r"$\kappa \geq 1$", 0.0)])
 
 
-def homogeneous_jacobian():
-    r"""(32)-(33): ``Robot.J1(L)`` for general mount points, and
+def homogeneous_jacobian(JL1, tL):
+    r"""(32)-(33): the derived :math:`\mathbf J_{L1}` for general mount points (and ``Robot.J1(L)``), and
     :math:`\mathbf J_1\mathbf t = \mathbf J_{L1}\mathbf t_L`.
+
+    Parameters
+    ----------
+    JL1 : sympy.Matrix (6, 3)
+        The derived :math:`\mathbf J_{L1}` of three units at ``S.D``.
+    tL : sympy.Matrix (3, 1)
+        The derived :math:`\mathbf t_L`.
 
     Returns
     -------
     Derivation
-        ``JL1``, ``difference`` (:math:`\mathbf J_1\mathbf t - \mathbf J_{L1}\mathbf t_L`), findings (32) and (33).
+        findings (32) and (33).
     """
     p32, p33 = printed(32), printed(33)
     gen = general_robot()
-    JL1, J1 = gen.J1(S.L), gen.J1(sp.Integer(1))
-    t, tL = sp.Matrix(gen.twist_symbols), p33.expr.rhs
-    return Derivation(JL1=JL1, difference=sp.expand(J1 * t - JL1 * tL), findings=[
-        equation(32, symbolic_equal(JL1, p32.expr.rhs), r"`Robot.J1(L)` for three general mount points equals the "
-                 r"printed matrix (SymPy)", max_residual(JL1, p32.expr.rhs),
+    require(symbolic_equal(gen.J1(S.L), JL1), "Robot.J1(L) is the derived J_L1")
+    J1 = JL1.subs(S.L, 1)
+    t = sp.Matrix(gen.twist_symbols)
+    return Derivation(findings=[
+        equation(32, symbolic_equal(JL1, p32.expr.rhs), r"the derived $\mathbf J_{L1}$ and `Robot.J1(L)` for three "
+                 r"general mount points equal the printed matrix (SymPy)", max_residual(JL1, p32.expr.rhs),
                  convention=r"rows $[\mathbf E\mathbf d_i/L\ \ \mathbf 1]$ in the wheel numbering; "
                             r"$\mathbf d_i = \overrightarrow{CP_i}$ in the body frame"),
-        equation(33, symbolic_equal(J1 * t, JL1 * tL), r"$\mathbf J_1\mathbf t = \mathbf J_{L1}\mathbf t_L$ for every "
+        equation(33, symbolic_equal(J1 * t, JL1 * tL) and symbolic_equal(tL, p33.expr.rhs),
+                 r"$\mathbf J_1\mathbf t = \mathbf J_{L1}\mathbf t_L$ for every "
                  r"twist, placement and $L$ (SymPy), so (21) reads "
                  r"$\mathbf J_{L1}\mathbf t_L = \mathbf J_2\dot{\boldsymbol\theta}$",
                  max_residual(J1 * t, JL1 * tL), convention=r"$\mathbf t = [\dot\psi\ \dot x\ \dot y]^{\mathrm T}$, "
                                                             r"body frame")])
 
 
-def gram():
+def gram(G):
     r"""(34): :math:`\mathbf J_{L1}^{\mathrm T}\mathbf J_{L1}` for general mount points.
+
+    Parameters
+    ----------
+    G : sympy.Matrix (3, 3)
+        The derived Gram matrix.
 
     Returns
     -------
     Derivation
-        ``G``, finding (34).
+        finding (34).
     """
     p34 = printed(34)
     JL1 = general_robot().J1(S.L)
-    G = JL1.T * JL1
-    return Derivation(G=G, findings=[equation(34, symbolic_equal(G, p34.expr.rhs), r"the product of the model's "
+    require(symbolic_equal(JL1.T * JL1, G), "the Gram matrix of Robot.J1(L) is the derived one")
+    return Derivation(findings=[equation(34, symbolic_equal(G, p34.expr.rhs), r"the product of the model's "
                                               r"$\mathbf J_{L1}$ (general mount points) with its transpose equals the "
                                               r"printed blocks (SymPy)", max_residual(G, p34.expr.rhs),
                                               convention="general mount points, three wheels")])
 
 
-def isotropy_conditions():
+def isotropy_conditions(G, solution):
     r"""(35)-(37): the off-diagonal blocks of (34) vanish and its corner equals 3; (35) is equivalent to (37).
+
+    Parameters
+    ----------
+    G : sympy.Matrix (3, 3)
+        The derived Gram matrix.
+    solution : dict
+        The derived solution of (35) for :math:`\mathbf d_3`.
 
     Returns
     -------
     Derivation
-        ``solution`` (:math:`\mathbf d_3` from (35)), findings (35), (36), (37).
+        findings (35), (36), (37).
     """
     p35, p36, p37 = printed(35), printed(36), printed(37)
-    G = gram().G
     lam = G[1, 1]
     require(G[1:, 1:] == lam * sp.eye(2) and lam == 3, "the lower block of (34) is 3 1 for every placement")
     off_col, off_row, corner = G[1:, 0], G[0, 1:], sp.Eq(G[0, 0], lam)
     d3 = list(S.D[2])
-    sol35 = sp.solve(list(off_col), d3, dict=True)
+    sol35 = [solution]
+    require(symbolic_equal(off_col.subs(solution), sp.zeros(2, 1)), "the derived d_3 solves (35)")
     sol37 = sp.solve(list(p37.expr.lhs - p37.expr.rhs), d3, dict=True)
     res37 = max_residual((p37.expr.lhs - p37.expr.rhs).subs(sol35[0]))
-    return Derivation(solution=sol35[0], findings=[
+    return Derivation(findings=[
         equation(35, symbolic_equal(off_col, p35.expr.lhs) and symbolic_equal(off_row, p35.extra["row_form"].lhs),
                  r"the off-diagonal blocks of (34) are the printed expressions (SymPy); with (36), necessary and "
                  r"sufficient for isotropy", max_residual(off_col, p35.expr.lhs)),
@@ -165,7 +195,7 @@ def isotropy_conditions():
                  convention=r"C at the centroid of $P_1P_2P_3$")])
 
 
-def placement(counterexample=((2, 0), (-1, 1), (-1, -1)), n=200, seed=SEED):
+def placement(counterexample, G, L2, n=200, seed=SEED):
     r"""(38) and claim ``isotropy-placement``: equal distances are sufficient, not necessary.
 
     Given (37), (36) fixes only the *mean* squared distance
@@ -175,6 +205,10 @@ def placement(counterexample=((2, 0), (-1, 1), (-1, -1)), n=200, seed=SEED):
     Parameters
     ----------
     counterexample : three integer points
+    G : sympy.Matrix (3, 3)
+        The derived Gram matrix at the counterexample with :math:`L^2` = ``L2``.
+    L2 : sympy.Rational
+        The derived :math:`L^2`, the mean squared distance.
     n : int
         Random triangles with centroid C and L the RMS distance, checked numerically.
     seed : int
@@ -182,14 +216,14 @@ def placement(counterexample=((2, 0), (-1, 1), (-1, -1)), n=200, seed=SEED):
     Returns
     -------
     Derivation
-        ``G``, ``norms``, ``sides``, ``L2``, ``kappa`` (numeric), findings (38) and ``isotropy-placement``.
+        ``norms``, ``sides``, ``kappa`` (numeric), findings (38) and ``isotropy-placement``.
     """
     p38 = printed(38)
     pts = [tuple(map(sp.Integer, q)) for q in counterexample]
     norms = [sum(c**2 for c in q) for q in pts]
-    L2 = sp.Rational(sum(norms), 3)
+    require(L2 == sp.Rational(sum(norms), 3), "L^2 is the mean squared distance")
     ce = Robot([OffsetWheel(q, r=S.r, d=S.d) for q in pts])
-    G = ce.J1(sp.sqrt(L2)).T * ce.J1(sp.sqrt(L2))
+    require(symbolic_equal(ce.J1(sp.sqrt(L2)).T * ce.J1(sp.sqrt(L2)), G), "wmr gives the derived Gram matrix")
     sides = [sp.sqrt(sum((a - b)**2 for a, b in zip(pts[i], pts[j], strict=True))) for i, j in ((0, 1), (1, 2), (2, 0))]
     num = Robot([OffsetWheel(tuple(map(float, q)), r=0.1, d=0.1) for q in counterexample])
     L_num = characteristic_length(num)
@@ -213,7 +247,7 @@ def placement(counterexample=((2, 0), (-1, 1), (-1, -1)), n=200, seed=SEED):
              r"(SymPy on the "
              rf"counterexample); $\kappa(\mathbf J_{{L1}}) = 1$ at {n} random triangles with centroid C and $L$ their "
              r"RMS distance")
-    return Derivation(G=G, norms=norms, sides=sides, L2=L2, kappa=k_ce, findings=[
+    return Derivation(norms=norms, sides=sides, kappa=k_ce, findings=[
         equation(38, printed_holds, proof, res, refuted=refuted,
                  corrected=r"L^2 = \frac13\sum_{i=1}^{3}\mathbf d_i^{\mathrm T}\mathbf d_i",
                  corrected_holds=proven, severity="wrong",
@@ -228,12 +262,16 @@ def placement(counterexample=((2, 0), (-1, 1), (-1, -1)), n=200, seed=SEED):
               convention=r"isotropy of $\mathbf J_{L1}$ with the characteristic length $L$ free")])
 
 
-def isotropic_gram(rho=0.4, n=20, seed=SEED):
+def isotropic_gram(G, L_iso, rho=0.4, n=20, seed=SEED):
     r"""(39) and claim ``isotropy-L``: the paper's placement gives :math:`3\cdot\mathbf 1` at L = mount radius, and only
     there.
 
     Parameters
     ----------
+    G : sympy.Matrix (3, 3)
+        The derived Gram matrix of the paper's placement at mount radius ``S.L``.
+    L_iso : list
+        The derived solutions :math:`L` of :math:`\kappa(\mathbf J_{L1}) = 1` (mount radius :data:`RHO`).
     rho : float
         Mount radius of the numeric robot.
     n : int
@@ -243,23 +281,22 @@ def isotropic_gram(rho=0.4, n=20, seed=SEED):
     Returns
     -------
     Derivation
-        ``G``, ``L_iso`` (solutions of kappa = 1), ``L_grid``, ``kappa_grid``, findings (39) and ``isotropy-L``.
+        ``L_grid``, ``kappa_grid``, findings (39) and ``isotropy-L``.
     """
     p39 = printed(39)
     paper = paper_robot("offset", L=S.L, r=S.r, exact=True)
-    G = paper.J1(S.L).T * paper.J1(S.L)
+    require(symbolic_equal(paper.J1(S.L).T * paper.J1(S.L), G), "wmr gives the derived Gram matrix")
     rng = np.random.default_rng(seed)
     res39 = 0.0
     for L in rng.uniform(0.1, 3.0, n):
         J = paper_robot("offset", L=L, r=0.1).J1(L)
         res39 = max(res39, float(np.max(np.abs(J.T @ J - 3 * np.eye(3)))))
-    L_iso = sp.solve(sp.Eq(RHO / S.L, S.L / RHO), S.L)
     grid = np.round(np.linspace(0.1, 1.0, 91), 12)
     bot = paper_robot("offset", L=rho, r=0.1)
     kap = np.array([condition_number(bot.J1(L)) for L in grid])
     resL = abs(characteristic_length(bot) - rho)
     at = float(grid[kap.argmin()])
-    return Derivation(G=G, L_iso=L_iso, L_grid=grid, kappa_grid=kap, findings=[
+    return Derivation(L_grid=grid, kappa_grid=kap, findings=[
         equation(39, symbolic_equal(G, p39.expr.rhs),
                  r"$\mathbf J_{L1}^{\mathrm T}\mathbf J_{L1}$ of the paper's placement "
                  r"with symbolic $L$ equals $3\cdot\mathbf 1$ (SymPy); numerically at " rf"{n} random $L$", res39,

@@ -1,10 +1,10 @@
 r"""The dual wheel, (13)-(19): no slip, the turning rate, its integral and the average.
 
-Chapter 1's checks live in :mod:`edition.checks.wheels`; this module holds one group of them.
+Chapter 1's checks live in :mod:`edition.checks.wheels`; this module holds one group of them.  Each check
+takes what the chapter derived (the wheel centres' velocities, the turning rate, ...) and compares it with
+the printed form, the package and simulations.
 """
 from __future__ import annotations
-
-from functools import cache
 
 import numpy as np
 import sympy as sp
@@ -23,43 +23,38 @@ from ...text import bound
 from ...transcription import printed
 from ...verify import SEED, max_residual, symbolic_equal
 from .. import Derivation, equation, require
-from .frames import disk_velocity, k, planar, time, unit_axes
+from .frames import planar, time, unit_axes
 
 __all__ = ["dual_no_slip", "dual_steering", "dual_integrated", "dual_average", "dual_average_angle"]
 
 
-def dual_no_slip():
+def dual_no_slip(h_dot_1, h_dot_2, i3, j3):
     r"""(13)-(14): each wheel of a dual-wheel unit is a rolling disk on the common axle.
+
+    Parameters
+    ----------
+    h_dot_1, h_dot_2 : sympy.Matrix (3, 1)
+        The derived centre velocities of wheels 1 and 2 (rolling rates ``S.theta_dot_i1``, ``S.theta_dot_i2``).
+    i3, j3 : sympy.Matrix (3, 1)
+        The common axle and rolling direction.
 
     Returns
     -------
     Derivation
-        ``h_dot_1``, ``h_dot_2`` (3, 1), findings (13) and (14).
+        findings (13) and (14).
     """
-    out, found = {}, []
-    for P, th, name in ((printed(13), S.theta_dot_i1, "h_dot_1"), (printed(14), S.theta_dot_i2, "h_dot_2")):
-        h = disk_velocity(th).h_dot
-        rhs = explicit(P.expr.rhs, unit_axes())
-        out[name] = h
+    found = []
+    for P, h in ((printed(13), h_dot_1), (printed(14), h_dot_2)):
+        rhs = explicit(P.expr.rhs, unit_axes(i3, j3))
         found.append(equation(P.id, symbolic_equal(planar(h), rhs),
                               r"the derivation of (6) for this wheel's rolling rate gives the printed form (SymPy)",
                               max_residual(planar(h), rhs), convention=r"as (6), common axle $\mathbf i_i$",
                               note=("the extraction's dotted $\\dot{\\mathbf j}_i$ read as the unit vector "
                                     "$\\mathbf j_i$" if P.id == "13" else "")))
-    return Derivation(**out, findings=found)
+    return Derivation(findings=found)
 
 
-@cache
-def _turning_rate():
-    """omega_z of the intermediate body from the two wheel velocities (rigid body): the derivation of (15)."""
-    d1, d2 = disk_velocity(S.theta_dot_i1), disk_velocity(S.theta_dot_i2)
-    omega_z = sp.Symbol(r"\omega_z", real=True)
-    rigid = d1.h_dot - d2.h_dot - (omega_z * k).cross(2 * S.b * d1.i3)      # H_i1 - H_i2 = 2 b i_i
-    require(sp.trigsimp(d1.i3.dot(rigid)) == 0, "the axle component of the rigid-body relation vanishes")
-    return rigid, sp.solve(sp.trigsimp(d1.j3.dot(rigid)), omega_z)[0]
-
-
-def dual_steering(n=500, seed=SEED, r=0.1, b=0.08, L=0.5):
+def dual_steering(phi_dot, rigid, i3, n=500, seed=SEED, r=0.1, b=0.08, L=0.5):
     r"""(15): the wheel-rate difference fixes the *absolute* turning rate :math:`\dot\phi_i`, not :math:`\dot\beta_i`.
 
     Derivation: the two wheel centres belong to the intermediate body, which turns at
@@ -70,6 +65,12 @@ def dual_steering(n=500, seed=SEED, r=0.1, b=0.08, L=0.5):
 
     Parameters
     ----------
+    phi_dot : SymPy expression
+        The derived turning rate of the unit, in ``S.theta_dot_i1``, ``S.theta_dot_i2``, ``S.r``, ``S.b``.
+    rigid : sympy.Matrix (3, 1)
+        The rigid-body relation it was solved from (its axle component must vanish).
+    i3 : sympy.Matrix (3, 1)
+        The common axle.
     n : int
         Random unit states for the numeric check of the corrected law.
     seed : int
@@ -79,11 +80,10 @@ def dual_steering(n=500, seed=SEED, r=0.1, b=0.08, L=0.5):
     Returns
     -------
     Derivation
-        ``rigid`` (the rigid-body relation), ``phi_dot`` (the derived turning rate), ``beta_dot``,
-        ``difference`` (printed minus derived), ``spin`` (rows of the counterexample), finding (15).
+        ``beta_dot``, ``difference`` (printed minus derived), ``spin`` (rows of the counterexample), finding (15).
     """
     P = printed(15)
-    rigid, phi_dot = _turning_rate()
+    require(sp.trigsimp(i3.dot(rigid)) == 0, "the axle component of the rigid-body relation vanishes")
     beta_dot = phi_dot - S.psi_dot                                        # (7)
     holds = symbolic_equal(P.expr.rhs, beta_dot)
     diff = sp.simplify(P.expr.rhs - beta_dot)
@@ -121,7 +121,7 @@ def dual_steering(n=500, seed=SEED, r=0.1, b=0.08, L=0.5):
     res_wmr = max(abs(DualWheel((0.0, 0.0), r=float(a), b=float(c)).beta_rate(p, np.array([x, y])) - q)
                   for a, c, p, x, y, q in zip(rr[:m], bb[:m], psid, th1, th2, betad, strict=False))
     corrected = (r"\dot\phi_i = \dot\psi + \dot\beta_i = " + sp.latex(phi_dot))
-    return Derivation(rigid=rigid.applyfunc(sp.factor), phi_dot=phi_dot, beta_dot=beta_dot, difference=diff,
+    return Derivation(beta_dot=beta_dot, difference=diff,
                       spin=rows, findings=[equation(
         15, holds, r"$\dot\phi_i = -\frac{r}{2b}(\dot\theta_{i1} - \dot\theta_{i2})$ from "
                    r"$\dot{\mathbf h}_{i1} - \dot{\mathbf h}_{i2} = \dot\phi_i\mathbf k\times 2b\,\mathbf i_i$ "
@@ -139,7 +139,7 @@ def dual_steering(n=500, seed=SEED, r=0.1, b=0.08, L=0.5):
                    r"platform")])
 
 
-def dual_integrated(r=0.1, b=0.08, L=0.5, steps=100):
+def dual_integrated(phi, phi_dot, r=0.1, b=0.08, L=0.5, steps=100):
     r"""(16): the integral of the corrected (15), and a finite counterexample to the printed one.
 
     A quarter turn of the platform about C with the units locked (``wmr.simulate``): the printed
@@ -148,6 +148,10 @@ def dual_integrated(r=0.1, b=0.08, L=0.5, steps=100):
 
     Parameters
     ----------
+    phi : SymPy expression
+        The derived heading :math:`\phi_i`, in ``S.theta_i1``, ``S.theta_i2``, ``S.r``, ``S.b``.
+    phi_dot : SymPy expression
+        The derived rate (15) it must integrate.
     r, b, L : float
         The counterexample robot.
     steps : int
@@ -156,15 +160,14 @@ def dual_integrated(r=0.1, b=0.08, L=0.5, steps=100):
     Returns
     -------
     Derivation
-        ``phi`` (the corrected integral), ``printed_change``, ``true_change`` (arrays, rad), finding (16).
+        ``printed_change``, ``true_change`` (arrays, rad), finding (16).
     """
     P15, P16 = printed(15), printed(16)
-    _, phi_dot = _turning_rate()
     th1_t, th2_t = sp.Function("theta_1")(time), sp.Function("theta_2")(time)
-    phi = phi_dot.subs({S.theta_dot_i1: th1_t, S.theta_dot_i2: th2_t})       # same linear form in the angles
-    shown = phi.subs({th1_t: S.theta_i1, th2_t: S.theta_i2})
     rates_t = {S.theta_dot_i1: th1_t.diff(time), S.theta_dot_i2: th2_t.diff(time)}
-    corrected_ok = symbolic_equal(phi.diff(time), phi_dot.subs(rates_t))
+    phi_t = phi.subs({S.theta_i1: th1_t, S.theta_i2: th2_t})
+    corrected_ok = symbolic_equal(phi_t.diff(time), phi_dot.subs(rates_t)) and symbolic_equal(
+        phi.subs({S.theta_i1: 0, S.theta_i2: 0}), 0)
     inherits = symbolic_equal(P16.expr.rhs.subs({S.theta_i1: th1_t, S.theta_i2: th2_t}).diff(time),
                               P15.expr.rhs.subs(rates_t))
     dual = paper_robot("dual", L=L, r=r, b=b)
@@ -181,7 +184,7 @@ def dual_integrated(r=0.1, b=0.08, L=0.5, steps=100):
     corrected_change = -r / (2 * b) * (dth[:, 0] - dth[:, 1])
     res = float(np.abs(corrected_change - (run.pose[-1, 0] + true_change)).max())
     holds = bool(np.allclose(printed_change, true_change, atol=1e-6))
-    return Derivation(phi=shown, printed_change=printed_change, true_change=true_change, findings=[equation(
+    return Derivation(printed_change=printed_change, true_change=true_change, findings=[equation(
         16, holds, r"$\phi_i = \psi + \beta_i = -\frac{r}{2b}(\theta_{i1} - \theta_{i2})$ differentiates into the "
                    rf"corrected (15) (SymPy); in a simulated quarter turn (`wmr.simulate`, {steps} steps) the change "
                    r"of $\psi + \beta_i$ equals it", res,
@@ -198,20 +201,27 @@ def dual_integrated(r=0.1, b=0.08, L=0.5, steps=100):
         note="the residual is the integration error of the simulated turn (RK4)")])
 
 
-def dual_average():
+def dual_average(h, h_dot_1, h_dot_2, i3, j3):
     r"""(17)-(18): the midpoint of a dual wheel moves like a centred wheel rolling at the average rate.
+
+    Parameters
+    ----------
+    h : sympy.Matrix (2, 1)
+        The derived velocity of the midpoint :math:`H_i = P_i` (fixed frame).
+    h_dot_1, h_dot_2 : sympy.Matrix (3, 1)
+        The derived velocities of the two wheel centres.
+    i3, j3 : sympy.Matrix (3, 1)
+        The common axle and rolling direction.
 
     Returns
     -------
     Derivation
-        ``h_dot`` (3, 1), findings (17) and (18).
+        findings (17) and (18).
     """
     P17, P18 = printed(17), printed(18)
-    _, phi_dot = _turning_rate()
-    d1, d2 = disk_velocity(S.theta_dot_i1), disk_velocity(S.theta_dot_i2)
-    h = planar(d1.h_dot + (phi_dot * k).cross(-S.b * d1.i3))
-    axes = unit_axes()
-    members = (explicit(P17.extra["definition"], {S.h_dot_i1: planar(d1.h_dot), S.h_dot_i2: planar(d2.h_dot)}),
+    h = sp.Matrix(h)
+    axes = unit_axes(i3, j3)
+    members = (explicit(P17.extra["definition"], {S.h_dot_i1: planar(h_dot_1), S.h_dot_i2: planar(h_dot_2)}),
                explicit(P17.expr.rhs, axes), explicit(P17.extra["average_form"], axes).subs(S.theta_dot_i,
                                                                                             P18.expr.rhs))
     holds17 = all(symbolic_equal(h, x) for x in members)
@@ -222,7 +232,7 @@ def dual_average():
     h_B = rotation(S.psi, SYMBOLIC).T * h.subs(S.phi_i, S.psi + S.beta_i)
     holds18 = symbolic_equal(lhs, rhs) and symbolic_equal(lhs, h_B)
     res18 = max(max_residual(lhs, rhs), max_residual(lhs, h_B))
-    return Derivation(h_dot=h, findings=[
+    return Derivation(findings=[
         equation(17, holds17, "the midpoint's velocity from wheel 1 with the derived turning rate equals all three "
                               "members of the printed chain (SymPy)", res17,
                  convention=r"$H_i = P_i$, midway between the wheels"),

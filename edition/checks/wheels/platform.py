@@ -1,6 +1,7 @@
 r"""The platform, (2)-(5): point velocities, E, the twist layout, the row of a point.
 
-Chapter 1's checks live in :mod:`edition.checks.wheels`; this module holds one group of them.
+Chapter 1's checks live in :mod:`edition.checks.wheels`; this module holds one group of them.  Each check
+takes what the chapter derived and compares it with the printed form and the package.
 """
 from __future__ import annotations
 
@@ -17,17 +18,18 @@ from ... import symbols as S
 from ...transcription import printed
 from ...verify import SEED, max_residual, symbolic_equal
 from .. import Derivation, equation, require
-from .frames import k, lift, planar
 
 __all__ = ["platform_point", "skew_matrix", "twist_layout", "platform_row"]
 
 
-def platform_point(n=500, seed=SEED):
+def platform_point(p_dot, n=500, seed=SEED):
     r"""(2): velocity of a platform point, :math:`\dot{\mathbf c} + \dot\psi\mathbf k\times\mathbf d_i` (3D cross
     product).
 
     Parameters
     ----------
+    p_dot : sympy.Matrix (2, 1)
+        The derived velocity, in ``S.psi_dot``, ``S.c_dot`` and ``S.d_i``.
     n : int
         Random twists and points for the check of :func:`wmr.point_velocity`.
     seed : int
@@ -38,8 +40,7 @@ def platform_point(n=500, seed=SEED):
         ``p_dot`` (the derived velocity), finding (2).
     """
     P = printed(2)
-    d_i = sp.Matrix(S.d_i)
-    p_dot = S.c_dot + planar((S.psi_dot * k).cross(lift(d_i)))
+    p_dot = sp.Matrix(p_dot)
     holds = symbolic_equal(p_dot, P.expr.rhs)
     res = max_residual(p_dot, P.expr.rhs)
     rng = np.random.default_rng(seed)
@@ -55,8 +56,13 @@ def platform_point(n=500, seed=SEED):
              r"because $\mathbf E$ commutes with rotations")])
 
 
-def skew_matrix():
+def skew_matrix(E_derived):
     r"""(3): :math:`\mathbf E` has columns :math:`\mathbf k\times\mathbf e_1, \mathbf k\times\mathbf e_2`.
+
+    Parameters
+    ----------
+    E_derived : sympy.Matrix (2, 2)
+        The matrix derived from the cross products.
 
     Returns
     -------
@@ -64,7 +70,7 @@ def skew_matrix():
         ``E`` (derived), finding (3).
     """
     P = printed(3)
-    E_derived = sp.Matrix.hstack(planar(k.cross(lift([1, 0]))), planar(k.cross(lift([0, 1]))))
+    E_derived = sp.Matrix(E_derived)
     M = P.expr.rhs
     holds = (symbolic_equal(E_derived, M) and symbolic_equal(M.T, -M) and symbolic_equal(rotation(sp.pi / 2, SYMBOLIC),
                                                                                          M))
@@ -93,11 +99,15 @@ def twist_layout():
         convention=r"$\mathbf t = [\dot\psi\ \dot x\ \dot y]^{\mathrm T}$, $\dot{\mathbf c}$ in body components")])
 
 
-def platform_row(n=5, samples=500, seed=SEED):
-    r"""(5): the row :math:`[\mathbf E\mathbf d_i\ \ \mathbf 1]` (``point_row``) against the printed matrix and (2).
+def platform_row(row, p_dot, n=5, samples=500, seed=SEED):
+    r"""(5): the row :math:`[\mathbf E\mathbf d_i\ \ \mathbf 1]` against the printed matrix, (2) and ``point_row``.
 
     Parameters
     ----------
+    row : sympy.Matrix (2, 3)
+        The derived row.
+    p_dot : sympy.Matrix (2, 1)
+        The derived (2), which the row times the twist must equal.
     n : int
         Units of the numeric robot whose :math:`\mathbf J_1` is checked.
     samples : int
@@ -110,10 +120,10 @@ def platform_row(n=5, samples=500, seed=SEED):
         ``row`` (2, 3), finding (5).
     """
     P = printed(5)
-    row = point_row(S.d_i, backend=SYMBOLIC)
+    row = sp.Matrix(row)
     bot = Robot([CentredWheel(S.d_i, r=S.r)])
     t = sp.Matrix(bot.twist_symbols)
-    p_dot = platform_point(n=1).p_dot
+    require(symbolic_equal(point_row(S.d_i, backend=SYMBOLIC), row), "wmr's point_row is the derived row")
     holds = (symbolic_equal(row, P.extra["matrix"]) and symbolic_equal(row * t, p_dot)
              and symbolic_equal(sp.nsimplify(bot.J1()), P.extra["matrix"]))
     res = max_residual(row * t, P.expr.rhs)
@@ -123,7 +133,7 @@ def platform_row(n=5, samples=500, seed=SEED):
     num = float(np.abs((tw[:, None, :] @ J1.T)[:, 0].reshape(-1, n, 2) - point_velocity(tw[:, None, :], dd)).max())
     require(num < TOL, "the numeric J1 times a twist equals wmr.point_velocity")
     return Derivation(row=row, findings=[equation(
-        5, holds, r"`point_row` and the blocks of `Robot.J1` equal the printed row, and the row times $\mathbf t$ "
-                  rf"equals the derived (2) (SymPy); the numeric $\mathbf J_1$ of a {n}-unit robot agrees with "
-                  rf"`wmr.point_velocity` at {samples} random twists", max(res, num),
+        5, holds, r"the derived row, `point_row` and the blocks of `Robot.J1` equal the printed row, and the row "
+                  rf"times $\mathbf t$ equals the derived (2) (SymPy); the numeric $\mathbf J_1$ of a {n}-unit robot "
+                  rf"agrees with `wmr.point_velocity` at {samples} random twists", max(res, num),
         convention=r"$\mathbf t$ ordered as (4)")])

@@ -1,0 +1,217 @@
+r"""What Part I of the report states that no chapter's ledger row says: computed here, shown by the findings chapter.
+
+The findings chapter (``notebooks/findings.ipynb``) reads the ledger and the figures the chapters wrote
+into ``figures/``; this module adds what it computes itself:
+
+- :func:`locked_drive`: the claim ``drift`` of paper section 4.2 judged on its word *whenever*: with the
+  drives locked the :math:`6\times6` system :math:`\mathbf M(\boldsymbol\beta)[\mathbf t;\dot{\boldsymbol\phi}]
+  = \mathbf 0` is nonsingular unless the arm lines are concurrent or parallel
+  (:func:`edition.checks.assembly.locked.locked_steering`);
+- :func:`equation_count`: how many equations the paper numbers, from the transcription
+  (``edition/printed.toml``), and which of them the ledger judges;
+- :func:`readings`: the verdicts that rest on a reading of the extracted text (the transcription's ``doubt``);
+- :data:`INFERRED`: the verdicts that rest on a convention the paper's text does not state;
+- :func:`environment` and :func:`citation`: the apparatus (versions, licence, BibTeX).
+"""
+from __future__ import annotations
+
+import importlib.metadata as md
+import platform
+from pathlib import Path
+
+import numpy as np
+
+__all__ = ["INFERRED", "DISTRIBUTIONS", "locked_drive", "equation_count", "readings", "environment", "citation"]
+
+#: Equations whose verdict holds under a convention the paper's text leaves open, and what was inferred
+#: (the ledger's ``convention`` column states the convention itself).  Facts about the text, not verdicts.
+INFERRED = {
+    "9": "the side of the wheel centre $H_i$ relative to the pivot $P_i$ (the text does not state it; Fig. 4 is "
+         "missing from the extraction): inferred from the printed signs",
+    "59": "the numbering and placement of the wheels: inferred from the printed determinant, which holds for one "
+          "of the 24 numberings tried (wheel 1 at $180^\\circ$, numbered clockwise)",
+    "60": "what $\\phi_i$ measures: the axle by (6), (8) and (11), the rolling direction if (60) is to hold",
+    "65": "where $\\beta_i$ is measured from: the body axis $\\mathbf i$ by (11); the line $CU$ if (65) is to hold",
+}
+
+#: Distributions whose versions the report states, in this order (the first two are the edition's package).
+DISTRIBUTIONS = ("wmr-kinematics", "wmr", "numpy", "sympy", "matplotlib", "nbclient", "nbconvert", "mujoco")
+
+
+def locked_drive(robots=200, per=10, seed=None):
+    r"""The claim ``drift`` (paper section 4.2) on its word *whenever*: can three offset wheels be steered with the
+    drives locked?
+
+    With :math:`\dot\theta_i = 0` the six no-slip equations leave six unknowns, :math:`\mathbf t` and
+    :math:`\dot{\boldsymbol\phi}`: :math:`\mathbf M(\boldsymbol\beta)[\mathbf t;\dot{\boldsymbol\phi}] = \mathbf 0`
+    with :math:`\det\mathbf M = d^3\det[\mathbf d_i\times\mathbf j_i\ \ \mathbf j_i^{\mathrm T}]`, the Plücker
+    coordinates of the arm lines (through :math:`P_i` along :math:`\mathbf j_i`): zero exactly when they are
+    concurrent or all parallel (SymPy, :func:`edition.checks.assembly.locked.locked_steering`).
+
+    Parameters
+    ----------
+    robots, per : int
+        Random robots and configurations of each for the numeric rank of :math:`\mathbf M`.
+    seed : int, optional
+        Default :data:`edition.verify.SEED`.
+
+    Returns
+    -------
+    dict
+        A row with the ledger's columns (:data:`edition.ledger.COLUMNS`): ``verdict`` ``"wrong"`` when the
+        determinant is proven and :math:`\mathbf M` has full rank at every random configuration, and the numbers
+        behind it: ``ranks`` (the paper's robot at random angles), ``equal_rank`` (all :math:`\beta_i` equal),
+        ``concurrent_rank`` (arms through one point), ``n`` (configurations tried).
+    """
+    from wmr.analysis.linalg import rank
+    from wmr.model.robots import paper_robot
+
+    from .checks.assembly.locked import concurrent_angles, locked_steering, locked_system
+    from .ledger import COLUMNS
+    from .transcription import claim
+    from .verify import SEED
+    d = locked_steering(robots=robots, per=per, seed=SEED if seed is None else seed)
+    bot = paper_robot("offset")
+    rng = np.random.default_rng(SEED if seed is None else seed)
+    generic = sorted(set(rank(locked_system(bot, rng.uniform(-np.pi, np.pi, (per * robots, 3)))).tolist()))
+    b = rng.uniform(-np.pi, np.pi)
+    equal = int(rank(locked_system(bot, np.full(3, b))))
+    u = rng.uniform(-0.5, 0.5, 2) * np.abs(bot.mount_points).max()          # a point inside the platform
+    conc = int(rank(locked_system(bot, concurrent_angles(bot, u))))
+    jams = bool(d.proven) and d.ranks == {6} and generic == [6]
+    text = claim("drift")
+    row: dict[str, object] = dict.fromkeys(COLUMNS, "")
+    row.update(
+        id="drift", kind="claim", section=text.section, verdict="wrong" if jams else "ok", printed=text.text,
+        corrected=(r"With the drives locked ($\dot\theta_i = 0$) three offset wheels can be steered only while their "
+                   r"arm lines (through $P_i$ along $\mathbf j_i$) are concurrent or all parallel; at any other "
+                   r"steering angles the robot jams: no twist and no steering rate satisfy the no-slip equations. The "
+                   r"dead-zone circle of (28)-(29) and Fig. 7 needs all $\beta_i$ equal (parallel arms, a "
+                   r"translation); concurrent arms allow a rotation for an instant only"),
+        why=(r"the locked-drive system $\mathbf M(\boldsymbol\beta)[\mathbf t;\dot{\boldsymbol\phi}] = \mathbf 0$ is "
+             r"$6\times6$ with $\det\mathbf M = d^3\det[\mathbf d_i\times\mathbf j_i\ \ \mathbf j_i^{\mathrm T}]$ "
+             r"(SymPy), which vanishes exactly when the arm lines are concurrent or parallel; $\mathbf M$ has rank "
+             rf"{'/'.join(map(str, generic))} at all {per * robots} random configurations of the paper's robot and "
+             rf"{'/'.join(map(str, sorted(d.ranks)))} at {d.n} configurations of random robots, rank {equal} with "
+             rf"all $\beta_i$ equal and {conc} with concurrent arms"),
+        convention=r"steering without driving read as $\dot\theta_i = 0$ with the steering servos commanding "
+                   r"$\dot\phi_i \neq 0$; offset $d > 0$",
+        check="refuted by counterexample (SymPy determinant, numeric ranks)", printed_holds="no" if jams else "yes",
+        residual="0", notebook="02_offset_wheels_and_mobility", anchor="claim-drift")
+    row.update(ranks=generic, equal_rank=equal, concurrent_rank=conc, n=per * robots)
+    return row
+
+
+def equation_count(ledger, transcription=None):
+    """How many equations the paper numbers, and which the ledger judges.
+
+    The paper numbers its equations from (1) on; the highest number transcribed in ``printed.toml`` is
+    the last.
+
+    Parameters
+    ----------
+    ledger : list of dict
+        Rows of ``figures/ledger.csv``.
+    transcription : Transcription, optional
+        Default :func:`edition.transcription.table`.
+
+    Returns
+    -------
+    dict
+        ``numbered`` (int), ``transcribed``, ``judged``, ``not_judged``, ``not_transcribed`` (sorted lists of int).
+    """
+    from .transcription import table
+    tr = table() if transcription is None else transcription
+    transcribed = sorted(int(k) for k in tr.equations)
+    judged = sorted(int(r["id"]) for r in ledger if r["kind"] == "equation")
+    numbered = max(transcribed + judged)
+    return {"numbered": numbered, "transcribed": transcribed, "judged": judged,
+            "not_judged": sorted(set(range(1, numbered + 1)) - set(judged)),
+            "not_transcribed": sorted(set(range(1, numbered + 1)) - set(transcribed))}
+
+
+def readings(transcription=None):
+    """The equations whose verdict rests on a reading of the extracted text, and the reading.
+
+    Parameters
+    ----------
+    transcription : Transcription, optional
+        Default :func:`edition.transcription.table`.
+
+    Returns
+    -------
+    dict str -> str
+        Equation number -> the transcription's ``doubt`` (what the extraction shows and how it is read).
+    """
+    from .transcription import table
+    tr = table() if transcription is None else transcription
+    return {k: e.doubt for k, e in sorted(tr.equations.items(), key=lambda kv: int(kv[0])) if e.doubt}
+
+
+def _version(name):
+    try:
+        return md.version(name)
+    except md.PackageNotFoundError:
+        return ""
+
+
+def environment():
+    """The versions the report was computed with (pinned by ``environment.lock``: the same on every build).
+
+    Returns
+    -------
+    dict str -> str
+        ``Python`` and each installed distribution of :data:`DISTRIBUTIONS`.
+    """
+    out = {"Python": platform.python_version()}
+    for name in DISTRIBUTIONS:
+        if (v := _version(name)) and not (name == "wmr" and "wmr-kinematics" in out):
+            out[name] = v
+    return out
+
+
+def _package():
+    """(distribution name, version, licence) of the edition's package."""
+    for name in DISTRIBUTIONS[:2]:
+        if v := _version(name):
+            meta = md.metadata(name)
+            lic = (meta.get_all("License-Expression") or meta.get_all("License") or [""])[0]
+            return name, v, lic
+    return "wmr", "", ""
+
+
+def citation(root=None):
+    """How to cite this edition: a BibTeX entry, from ``CITATION.cff`` when the repository has one.
+
+    Parameters
+    ----------
+    root : path-like, optional
+        The repository (default: the parent of this package).
+
+    Returns
+    -------
+    dict
+        ``name``, ``version``, ``licence``, ``title``, ``authors``, ``cff`` (bool: read from CITATION.cff),
+        ``bibtex`` (str).
+    """
+    name, version, lic = _package()
+    title = "wmr: kinematics of wheeled mobile robots, and an executable edition of Leow, Low & Loh (2002)"
+    authors = "the wmr contributors"
+    path = Path(root if root is not None else Path(__file__).resolve().parents[1]) / "CITATION.cff"
+    cff = path.exists()
+    if cff:
+        import yaml  # type: ignore[import-untyped]
+        meta = yaml.safe_load(path.read_text(encoding="utf-8")) or {}
+        title = " ".join(str(meta.get("title", title)).split())
+        names = [a.get("name") or " ".join(filter(None, (a.get("given-names"), a.get("family-names"))))
+                 for a in meta.get("authors", [])]
+        authors = " and ".join(n for n in names if n) or authors
+        lic = str(meta.get("license", lic))
+        version = str(meta.get("version", version))
+    import textwrap
+    wrapped = "\n".join(textwrap.wrap(title, 58, subsequent_indent=" " * 13))
+    bib = (f"@software{{wmr_edition,\n  title   = {{{wrapped}}},\n  author  = {{{{{authors}}}}},\n"
+           f"  version = {{{version}}},\n  license = {{{lic}}},\n  note    = {{{name}; cite the commit printed on\n"
+           "             the title page}\n}")
+    return {"name": name, "version": version, "licence": lic, "title": title, "authors": authors, "cff": cff,
+            "bibtex": bib}

@@ -1,0 +1,70 @@
+"""What Part I computes itself (issue 19): the singular families counted under a stated reading, the
+locked-drive claim, the number of equations the paper numbers, the apparatus."""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from edition import findings as F
+from edition.families import ITEMS, READINGS, accounting, covering_items
+from wmr.model.robots import paper_robot
+
+
+@pytest.fixture(scope="module")
+def fams():
+    return {f.key: f for f in accounting(n=24)}
+
+
+def test_families_modulo_a_half_turn_each_singular_exactly(fams):
+    assert len(fams) == 10 and not [k for k in fams if k.endswith("'")], "a half-turned family counted apart"
+    assert all(f.det_J_exact_zero for f in fams.values())
+    assert all(f.det_J_max < 1e-9 for f in fams.values())
+
+
+def test_the_mount_point_families_are_the_ones_missed(fams):
+    missed = sorted(k for k, f in fams.items() if f.listed_in_paper == "no")
+    assert missed == ["v-P1", "v-P2", "v-P3"]
+    assert all(fams[k].note == "(v)" for k in missed), "read with D_P at a mount point, (v) covers them"
+    assert fams["v-circle"].paper_item == "(v)", "(v-c) lies inside (v): not missed, not counted twice"
+    assert fams["i"].paper_item == "(i)" and fams["pair-13"].paper_item == "(ii)"
+
+
+def test_covering_items_can_say_no():
+    bot = paper_robot("centred")
+    rng = np.random.default_rng(3)
+    for reading in READINGS:
+        held = covering_items(bot, rng.uniform(-np.pi, np.pi, (200, 3)), reading)
+        assert set(held) == set(ITEMS) and not any(h.any() for h in held.values()), "a regular configuration covered"
+    turned = np.array([[0.4, 0.4 + np.pi, 0.4]])                # (i) with wheel 2 turned half a turn
+    assert covering_items(bot, turned)["(i)"].all()
+    with pytest.raises(ValueError, match="reading"):
+        covering_items(bot, turned, "literal")
+
+
+def test_locked_drive_claim_is_judged_on_whenever():
+    row = F.locked_drive(robots=20, per=5)
+    assert row["verdict"] == "wrong" and row["printed_holds"] == "no"
+    assert row["ranks"] == [6] and row["equal_rank"] == 5 and row["concurrent_rank"] == 5
+    assert "all $\\beta_i$ equal" in row["corrected"] and row["anchor"] == "claim-drift"
+
+
+def test_equation_count_from_the_transcription():
+    ledger = [{"kind": "equation", "id": str(n)} for n in (2, 3, 65)] + [{"kind": "claim", "id": "drift"}]
+    c = F.equation_count(ledger)
+    assert c["numbered"] == 65 and c["judged"] == [2, 3, 65]
+    assert c["not_judged"][:3] == [1, 4, 5] and 1 in c["not_transcribed"]
+
+
+def test_readings_and_inferred_conventions_name_real_equations():
+    from edition.transcription import table
+    eqs = table().equations
+    assert set(F.readings()) <= set(eqs) and {"13", "15", "21"} <= set(F.readings())
+    assert set(F.INFERRED) <= set(eqs)
+
+
+def test_environment_and_citation():
+    env = F.environment()
+    assert env["Python"] and env["numpy"] == np.__version__
+    cite = F.citation()
+    assert cite["bibtex"].startswith("@software{") and cite["version"] and cite["licence"]
+    assert max(len(line) for line in cite["bibtex"].splitlines()) <= 72, "BibTeX wider than the page"
