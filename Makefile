@@ -132,9 +132,10 @@ assignments: venv ## build/assignments: nbgrader source notebooks from the exerc
 figures: venv ## regenerate figures/ outside the notebooks (python -m edition.figures figures/)
 	@cd $(WMR_ROOT) && $(VPY) -m edition.figures figures
 
-# a chapter, executed in a fresh kernel with WMR_OUT=build/out/<chapter> (see tools/build/execute.py)
+# a chapter, executed in a fresh kernel with WMR_OUT=build/out/<chapter> (see tools/build/execute.py); its key
+# includes notebooks/, since a chapter builds on the derivations of earlier ones (edition.derivations.derived)
 $(B)/notebooks/%.ipynb: $(NB)/%.ipynb FORCE
-	@$(BUILD) execute $< $@
+	@$(BUILD) execute $< $@ --reads $(NB)
 
 # what the chapters wrote -> figures/ (a file only when its bytes differ); their rows -> figures/ledger.csv
 publish: $(EXECUTED)
@@ -143,7 +144,7 @@ publish: $(EXECUTED)
 
 # Part I: the findings chapter reads figures/ (its key includes their hashes)
 $(B)/notebooks/findings.ipynb: $(FINDINGS) publish FORCE
-	@$(BUILD) execute $< $@ --reads $(WMR_ROOT)/figures
+	@$(BUILD) execute $< $@ --reads $(WMR_ROOT)/figures --reads $(NB)
 
 # the commit and its date (the build date: two builds of one commit are byte-identical);
 # rewritten only when they change

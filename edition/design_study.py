@@ -1,8 +1,8 @@
 r"""The exercises of the design study (``notebooks/08_design_study``): one check function each.
 
 As in :mod:`edition.exercises`: the student writes an answer and calls the check, which returns a
-:class:`~edition.exercises.Feedback` computed from the model (never compared with a typed-in
-answer); ``None`` gives "no answer yet" without failing.
+:class:`~edition.exercises.feedback.Result` computed from the model (never compared with a typed-in
+answer), made fair by :func:`edition.exercises.framework.exercise`; ``None`` gives "no answer yet".
 
 ==================================  ========================================================================
 check                               the exercise
@@ -24,9 +24,14 @@ from wmr.model import validation as V
 from wmr.model.robot import Robot
 from wmr.model.wheels import CentredWheel
 
-from .exercises import Feedback
+from .exercises import answers
+from .exercises.feedback import right, wrong
+from .exercises.framework import exercise
+from .exercises.tolerance import decimals, sig_figs, within
+from .text import number
 
-__all__ = ["swerve", "design_row", "offset_for_worst_case", "scalene_optimum", "singular_rotation", "describe_design"]
+__all__ = ["TOL_8_1", "TOL_8_2", "TOL_8_3", "swerve", "design_row", "offset_for_worst_case", "scalene_optimum",
+           "singular_rotation", "describe_design"]
 
 
 def swerve(length=0.6, width=0.4, r=0.05):
@@ -70,17 +75,25 @@ def design_row(name, design, kappa):
             r"$\bar\kappa - 1$": kappa - 1}
 
 
-def _none(answer, what):
-    return Feedback(False, f"No answer yet: replace `None` by {what}.") if answer is None else None
+#: exercise 8.1: the offset to 3 significant figures; 8.2: the worst case equal to 1 to 2 decimal places;
+#: 8.3: the centre to the millimetre
+TOL_8_1 = sig_figs(3)
+TOL_8_2 = decimals(2)
+TOL_8_3 = within("to the millimetre", abs=1e-3)
 
 
+@exercise("8.1", answer="an offset in metres", tolerance=TOL_8_1)
 def offset_for_worst_case(d, r=0.05, kappa=1.25, radius=0.3):
     r"""Exercise 8.1: the offset :math:`d \le r` that gives the paper's placement a worst-case :math:`\kappa(\mathbf J)`
     of ``kappa``.
 
+    The worst case of the student's offset is computed (:func:`wmr.analysis.design.worst_kappa`) and
+    compared with ``kappa`` to the relative tolerance of 3 significant figures of ``d``
+    (:math:`\bar\kappa = r/d` for :math:`d \le r`, so the relative errors are the same).
+
     Parameters
     ----------
-    d : float or None
+    d : float
         The student's offset (m).
     r : float, optional
         Wheel radius (m).
@@ -91,69 +104,72 @@ def offset_for_worst_case(d, r=0.05, kappa=1.25, radius=0.3):
 
     Returns
     -------
-    Feedback
+    Result
     """
-    fb = _none(d, "an offset in metres")
-    if fb is not None:
-        return fb
-    try:
-        d = float(V.number("d", V.nonnegative("d", d)))
-    except (TypeError, ValueError) as e:
-        return Feedback(False, f"The offset must be a number >= 0: {e}.")
+    d = answers.number(d, "an offset in metres")
+    if d < 0:
+        return wrong("An offset is a distance: it cannot be negative.")
     if d == 0:
-        return Feedback(False, r"With $d = 0$ the units are centred wheels: $\mathbf J_2$ and $\mathbf J$ are singular "
-                               r"in every configuration ($\kappa = \infty$).")
+        return wrong(r"With $d = 0$ the units are centred wheels: $\mathbf J_2$ and $\mathbf J$ are singular in every "
+                     r"configuration ($\kappa = \infty$).")
     design = equilateral_design(d / r).scaled(radius)
     got = worst_kappa(WheelDesign(design.mounts, d, r).robot()).kappa
-    if abs(got - kappa) > 1e-3 * kappa:
-        return Feedback(False, f"With $d = {d:g}$ m the worst case is $\\bar\\kappa = {got:.4f}$, not ${kappa:g}$.")
+    if not TOL_8_1.accepts(got, kappa):
+        return wrong(f"With $d = {number(d, 4)}$ m the worst case is $\\bar\\kappa = {number(got, 4)}$, not "
+                     f"${number(kappa)}$.")
     if d > r:
-        return Feedback(False, f"$d = {d:g}$ m gives $\\bar\\kappa = {got:.4f}$ too, but it is larger than $r$: "
-                               "find the smaller offset (a smaller dead zone).")
-    return Feedback(True, f"$d = {d:g}$ m: $\\bar\\kappa = {got:.4f} = r/d$, whatever the mount radius.")
+        return wrong(f"$d = {number(d, 4)}$ m gives $\\bar\\kappa = {number(got, 4)}$ too, but it is larger than $r$: "
+                     "find the smaller offset (a smaller dead zone).")
+    return right(f"$d = {number(d, 4)}$ m: $\\bar\\kappa = {number(got, 4)} = r/d$, whatever the mount radius.")
 
 
+@exercise("8.2", answer="three mount points, e.g. `[(x1, y1), (x2, y2), (x3, y3)]`", tolerance=TOL_8_2)
 def scalene_optimum(points):
     r"""Exercise 8.2: three mount points, no two sides equal, with worst-case :math:`\kappa(\mathbf J) = 1` at
-    :math:`d = r`.
+    :math:`d = r` (to 2 decimal places).
 
     Parameters
     ----------
-    points : array_like (3, 2) or None
+    points : array_like (3, 2)
 
     Returns
     -------
-    Feedback
+    Result
     """
-    fb = _none(points, "three mount points, e.g. `[(x1, y1), (x2, y2), (x3, y3)]`")
-    if fb is not None:
-        return fb
-    try:
-        design = WheelDesign(np.asarray(points, dtype=float), 1.0, 1.0)
-    except (TypeError, ValueError) as e:
-        return Feedback(False, f"The points must be three pairs of numbers: {e}.")
-    if design.mounts.shape != (3, 2):
-        return Feedback(False, f"Give exactly three points, got {design.mounts.shape[0]}.")
-    scale = float(np.abs(design.mounts).max()) or 1.0
-    design = design.scaled(1.0 / scale)                             # any unit: r = 1 on the points' scale
+    pts = answers.array(points, (3, 2), "three mount points, an array of shape (3, 2)")
+    scale = float(np.abs(pts).max())
+    if scale == 0:
+        return wrong("All three points are C itself: there is no triangle.")
+    pts = pts / scale                                               # any unit: r = 1 on the points' scale
+    e1, e2 = pts[1] - pts[0], pts[2] - pts[0]
+    if abs(e1[0] * e2[1] - e1[1] * e2[0]) <= 1e-6:
+        return wrong("The three points are collinear: the wheels cannot steer the platform's rotation well. Make a "
+                     "triangle.")
+    design = WheelDesign(pts, 1.0, 1.0)
     s = np.sort(design.sides())
     if np.min(np.diff(s)) <= 1e-3 * s[-1]:
-        return Feedback(False, "Two sides of your triangle are equal: make it scalene.")
+        return wrong("Two sides of your triangle are equal: make it scalene.")
     got = worst_kappa(design.robot()).kappa
-    if got > 1 + 1e-6:
-        return Feedback(False, f"Worst case $\\bar\\kappa = {got:.4f}$: the centroid of your points is "
-                               f"{design.centroid_offset():.3g} RMS radii away from C.")
-    return Feedback(True, f"Sides {', '.join(f'{x:.3g}' for x in s)}: $\\bar\\kappa = {got:.4g}$. Only the centroid "
-                          "matters (37); the equal distances of (38) are not needed.")
+    if not TOL_8_2.accepts(got, 1.0):
+        return wrong(f"Worst case $\\bar\\kappa = {number(got, 4)}$: the centroid of your points is "
+                     f"${number(design.centroid_offset())}$ RMS radii away from C.")
+    return right(f"Sides ${', '.join(number(x) for x in s * scale)}$: $\\bar\\kappa = {number(got, 4)}$. Only the "
+                 "centroid matters (37); the equal distances of (38) are not needed.")
 
 
+@exercise("8.3", answer="a point `(x, y)` in metres", tolerance=TOL_8_3)
 def singular_rotation(U, length=0.6, width=0.4):
     r"""Exercise 8.3: a centre of rotation U (not a module, not at infinity) at which the swerve's :math:`\mathbf J` is
-    singular.
+    singular, to the millimetre.
+
+    :math:`\kappa(\mathbf J) = \infty` exactly on the circle through the four modules and grows without bound
+    towards it, so the check measures the distance of U from that circle
+    (:func:`wmr.analysis.motion_kappa.mount_circle`), and gives :math:`\kappa(\mathbf J)` only for a
+    point outside the tolerance.
 
     Parameters
     ----------
-    U : pair or None
+    U : array_like (2,)
         The centre, body frame (m).
     length : float, optional
         The swerve's side along body x (m).
@@ -162,26 +178,19 @@ def singular_rotation(U, length=0.6, width=0.4):
 
     Returns
     -------
-    Feedback
+    Result
     """
-    fb = _none(U, "a point `(x, y)` in metres")
-    if fb is not None:
-        return fb
-    try:
-        U = np.array(V.point("U", U), dtype=float)
-    except (TypeError, ValueError) as e:
-        return Feedback(False, f"U must be a pair of numbers: {e}.")
+    U = answers.vector(U, 2, "a point `(x, y)` in metres")
     bot = swerve(length, width)
-    size = float(np.abs(bot.mount_points).max())
-    if np.min(np.linalg.norm(bot.mount_points - U, axis=1)) <= 1e-6 * size:
-        return Feedback(False, "U is a module's mount point: that module does not roll. Choose another point.")
-    k = float(motion_kappa(bot, rotation_twists(U)))
-    if np.isfinite(k):
-        return Feedback(False, f"About U = ({U[0]:g}, {U[1]:g}) the robot is well defined: "
-                               f"$\\kappa(\\mathbf J) = {k:.3g}$.")
+    if np.min(np.linalg.norm(bot.mount_points - U, axis=1)) <= TOL_8_3.abs:
+        return wrong("U is a module's mount point: that module does not roll. Choose another point.")
     c, R = mount_circle(bot)
-    return Feedback(True, f"$\\kappa(\\mathbf J) = \\infty$ about U: U is {np.linalg.norm(U - c):.4g} m from the "
-                          f"centre, on the circle of radius {R:.4g} m through the four modules.")
+    gap = abs(float(np.linalg.norm(U - c)) - R)
+    if gap <= TOL_8_3.allowed(R):
+        return right(r"U lies on the circle through the four modules (to the millimetre), where "
+                     r"$\kappa(\mathbf J) = \infty$: the robot turns about U, yet $\mathbf J$ is singular.")
+    k = float(motion_kappa(bot, rotation_twists(U)))
+    return wrong(f"About this U, $\\kappa(\\mathbf J) = {number(k)}$: $\\mathbf J$ is not singular here.")
 
 
 def describe_design(robot):

@@ -2,18 +2,37 @@ r"""How a chapter shows results: everything a reader sees goes out as Markdown w
 
 One path, one size of type: :func:`show` (a formula), :func:`say` (a paragraph), :func:`table`
 (a Markdown table), :func:`quote` (what the paper prints, from the transcription), :func:`latex`
-and :func:`aligned_sum` (LaTeX of SymPy objects).  No ``print``, no raw data frames.  IPython is
-imported only when something is displayed.
+and :func:`aligned_sum` (LaTeX of SymPy objects), :func:`image` and :func:`figure` (a picture with
+its alt text).  No ``print``, no raw data frames.  IPython is imported only when something is displayed.
+
+Numbers in math go through :func:`tex`: a computed value that is zero up to round-off is written
+``0`` (or, with ``bound=True``, as a bound such as :math:`< 10^{-12}`), a small or large one as
+:math:`a\times10^{k}` -- never Python's ``2.88e-16``.  :func:`raw_output` finds what must not reach a
+reader (raw e-notation, printed Python lists, dicts and sets); the answer-table harness
+(:mod:`edition.exercises.table`) applies it to every verdict.
 """
 from __future__ import annotations
+
+import base64
+import html
+import re
 
 import numpy as np
 import sympy as sp
 
-from .text import RESOLUTION, number
+from .text import RESOLUTION, bound, number
 from .transcription import claim, printed
 
-__all__ = ["UNDEFINED", "latex", "show", "aligned_sum", "say", "table", "quote"]
+__all__ = ["UNDEFINED", "latex", "show", "aligned_sum", "say", "table", "quote", "tex", "raw_output", "image",
+           "figure", "png"]
+
+#: raw e-notation as Python prints it (``2.88e-16``, ``1.21e+04``), not inside a word or a LaTeX command
+RAW_E = re.compile(r"(?<![A-Za-z_\\])[-+]?\d(?:\.\d+)?e[-+]?\d+")
+#: a printed Python container: ``[6]`` (a list of one integer), ``{d3x: 1}`` (a dict), ``{'a', 'b'}`` (a set),
+#: ``array(...)``; a bracket after ``_``, ``^``, ``{`` or a word (an index) or before ``(`` (a link) is not one
+RAW_CONTAINER = re.compile(r"(?<![\w\\^_{])\[-?\d+\](?!\()"                   # [6]
+                           r"|(?<!\\)\{\s*['\"]?[A-Za-z_]\w*['\"]?\s*:\s"     # {d3x: 1}
+                           r"|(?<!\\)\{\s*'[^']*'\s*,|\barray\(")              # {'a', 'b'}, array(...)
 
 
 def _display(*objs):
@@ -216,3 +235,133 @@ def quote(id):
     _display(_markdown(f"> {c.text} (Section {c.section})"))
     return None
 
+
+
+# ------------------------------------------------------------------------------------- numbers for readers
+def tex(value, digits=3, scale=1.0, as_bound=False, resolution=RESOLUTION):
+    r"""LaTeX of a computed number for ``$...$``: round-off as ``0`` (or a bound), else ``digits`` digits.
+
+    Parameters
+    ----------
+    value : float
+    digits : int, optional
+        Significant digits of a value that is not round-off.
+    scale : float, optional
+        The size of the quantities it was computed from: :math:`|x| <` ``resolution * scale`` is round-off.
+    as_bound : bool, optional
+        Write round-off as :math:`< 10^{-12}` (relative to ``scale``) instead of ``0``.
+    resolution : float, optional
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> tex(2.88e-16), tex(2.88e-16, as_bound=True), tex(-0.0), tex(4.93e-7), tex(12098.4), tex(0.50332)
+    ('0', '< 10^{-12}', '0', '4.93\\times10^{-7}', '1.21\\times10^{4}', '0.503')
+    """
+    x, s = float(value), abs(float(scale))
+    if not np.isfinite(s) or s <= 0:
+        raise ValueError(f"scale must be a positive finite number, got {scale!r}")
+    if np.isfinite(x) and abs(x) < resolution * s:
+        return bound(abs(x) / s, resolution, latex=True) if as_bound else "0"
+    return number(x, digits)
+
+
+def raw_output(text):
+    r"""The fragments of ``text`` a reader must not see: raw e-notation and printed Python containers.
+
+    Parameters
+    ----------
+    text : str
+
+    Returns
+    -------
+    list of str
+        Empty when the text is clean.
+
+    Examples
+    --------
+    >>> raw_output("$|det J| = 2.88e-16$ and rank [6]"), raw_output(r"$4.9\\times10^{-11}$, see [Figure 7](#f7)")
+    (['2.88e-16', '[6]'], [])
+    """
+    return [m.group(0) for m in RAW_E.finditer(text)] + [m.group(0) for m in RAW_CONTAINER.finditer(text)]
+
+
+# ------------------------------------------------------------------------------------- pictures
+def png(fig, dpi=150):
+    """The figure as PNG bytes, drawn with the package's style (:func:`wmr.plot.style.style`).
+
+    Parameters
+    ----------
+    fig : matplotlib.figure.Figure
+    dpi : int, optional
+
+    Returns
+    -------
+    bytes
+    """
+    import io
+
+    from wmr.plot.style import style
+    buf = io.BytesIO()
+    with style():
+        fig.savefig(buf, format="png", dpi=dpi)
+    return buf.getvalue()
+
+
+def image(data, alt, width=None, metadata=None):
+    """Display PNG bytes with alt text: an ``<img alt=...>`` for JupyterLab and HTML, the PNG for PDF.
+
+    JupyterLab's PNG renderer drops alt text, so the output carries ``text/html`` (an image with ``alt``,
+    preferred by JupyterLab and nbconvert's HTML), ``image/png`` (used by LaTeX/PDF) and ``text/plain``
+    (the alt text, for a reader without images).
+
+    Parameters
+    ----------
+    data : bytes
+        A PNG.
+    alt : str
+        What the picture shows, in words (plain text; no Markdown or LaTeX).
+    width : int, optional
+        Display width in pixels (the picture shrinks to fit a narrower notebook).
+    metadata : dict, optional
+        Output metadata (e.g. ``{"wmr_figure": key}``, which the report build reads).
+
+    Returns
+    -------
+    None
+    """
+    if not isinstance(alt, str) or not alt.strip():
+        raise ValueError(f"alt must be a non-empty description of the picture, got {alt!r}")
+    from IPython.display import display
+    b64 = base64.b64encode(data).decode("ascii")
+    size = f' width="{int(width)}"' if width else ""
+    tag = f'<img src="data:image/png;base64,{b64}" alt="{html.escape(alt.strip())}"{size} style="max-width:100%">'
+    meta = dict(metadata or {})
+    if width:
+        meta["image/png"] = {"width": int(width)}
+    display({"text/html": tag, "image/png": b64, "text/plain": alt.strip()}, raw=True, metadata=meta)
+
+
+def figure(fig, caption, alt, width=None, dpi=150):
+    """Display a matplotlib figure with its alt text and, below it, its caption (Markdown).
+
+    Parameters
+    ----------
+    fig : matplotlib.figure.Figure
+    caption : str
+        Markdown.
+    alt : str
+        What the figure shows, in words (see :func:`image`).
+    width : int, optional
+        Display width in pixels (default 110 per inch of the figure).
+    dpi : int, optional
+
+    Returns
+    -------
+    None
+    """
+    image(png(fig, dpi), alt, width or round(fig.get_figwidth() * 110))
+    _display(_markdown(caption))

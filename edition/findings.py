@@ -38,7 +38,7 @@ INFERRED = {
 DISTRIBUTIONS = ("wmr-kinematics", "wmr", "numpy", "sympy", "matplotlib", "nbclient", "nbconvert", "mujoco")
 
 
-def locked_drive(robots=200, per=10, seed=None):
+def locked_drive(det_M, plucker, robots=200, per=10, seed=None):
     r"""The claim ``drift`` (paper section 4.2) on its word *whenever*: can three offset wheels be steered with the
     drives locked?
 
@@ -50,6 +50,9 @@ def locked_drive(robots=200, per=10, seed=None):
 
     Parameters
     ----------
+    det_M, plucker : SymPy expression, sympy.Matrix (3, 3)
+        Chapter 2's derived :math:`\det\mathbf M` and Plücker rows (``edition.derivations.derived``), checked
+        by :func:`edition.checks.assembly.locked.locked_steering`.
     robots, per : int
         Random robots and configurations of each for the numeric rank of :math:`\mathbf M`.
     seed : int, optional
@@ -70,7 +73,7 @@ def locked_drive(robots=200, per=10, seed=None):
     from .ledger import COLUMNS
     from .transcription import claim
     from .verify import SEED
-    d = locked_steering(robots=robots, per=per, seed=SEED if seed is None else seed)
+    d = locked_steering(det_M, plucker, robots=robots, per=per, seed=SEED if seed is None else seed)
     bot = paper_robot("offset")
     rng = np.random.default_rng(SEED if seed is None else seed)
     generic = sorted(set(rank(locked_system(bot, rng.uniform(-np.pi, np.pi, (per * robots, 3)))).tolist()))

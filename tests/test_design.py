@@ -155,23 +155,28 @@ def test_motion_kappa_is_unit_invariant():
 
 
 # ------------------------------------------------------------------------------------------- exercises
-def test_exercise_checks_can_say_no():
-    for check in (study.offset_for_worst_case, study.scalene_optimum, study.singular_rotation):
-        fb = check(None)
-        assert not fb and fb.message.startswith("No answer yet")
-    assert study.offset_for_worst_case(0.04)
-    assert "larger than" in study.offset_for_worst_case(0.0625).message
-    assert not study.offset_for_worst_case(0.03)
-    assert study.scalene_optimum([(-0.5, 0.0), (0.1, 0.4), (0.4, -0.4)])
-    assert "scalene" in study.scalene_optimum(np.array(wmr.equilateral_mounts(1.0))).message
-    assert "centroid" in study.scalene_optimum([(-0.5, 0.0), (0.1, 0.4), (0.5, -0.4)]).message
-    assert study.singular_rotation((0.0, np.hypot(0.3, 0.2)))
-    assert not study.singular_rotation((0.0, 0.3))
-    assert "mount point" in study.singular_rotation((0.3, 0.2)).message
-
-
 def test_describe_design():
     assert "not concyclic" in study.describe_design(wmr.Robot([wmr.CentredWheel(p, r=0.05) for p in
                                                                [(0.35, 0.2), (-0.3, 0.25), (-0.3, -0.25),
                                                                 (0.3, -0.2)]]))
     assert "worst-case" in study.describe_design(wmr.paper_robot("offset", L=0.3, r=0.05))
+
+
+# ------------------------------------------------------------------------------------------ Figure 8.3
+def test_figure_8_3_tells_every_strategy_apart():
+    """plain and robot move alike here: the figure gives every run its own marker and names the coincident one."""
+    import matplotlib
+    matplotlib.use("Agg")
+    from edition.transient_plot import coincident_runs, distinguished_transient_figure
+    from wmr.swerve import direction_change, resteer_study
+    tr = resteer_study(study.swerve(0.6, 0.4, r=0.05), direction_change(spin=0.5, dt=0.05), steer_rate=2 * np.pi)
+    labels = [run.label for run in tr.runs]
+    same = coincident_runs(tr)
+    assert same[labels.index("robot")] == "plain" and same[labels.index("module")] is None
+    assert same.count(None) == len(labels) - 1
+    fig = distinguished_transient_figure(tr)
+    for ax in fig.axes:
+        markers = [ln.get_marker() for ln in ax.get_lines() if ln.get_label() != "commanded"]
+        assert len(markers) == len(labels) and len(set(markers)) == len(labels)
+    legend = [t.get_text() for t in fig.legends[0].get_texts()]
+    assert "robot (same motion as plain)" in legend and "plain" in legend

@@ -78,45 +78,10 @@ def test_exercise_chapters_include_the_design_study():
     assert [p.name[:2] for p in EXERCISE_CHAPTERS] == ["01", "02", "03", "04", "05", "06", "08", "09", "10"]
 
 
-def exercise_cells(path):
-    """The exercises of a chapter in the cell convention: (statement, answer, solution, check) cells, in order."""
-    cs = cells(path)
-    groups = []
-    for i, c in enumerate(cs):
-        if "answer" in tags(c):
-            statement, rest = cs[i - 1], cs[i + 1:i + 3]
-            assert "exercise" in tags(statement) and statement.cell_type == "markdown", \
-                f"{path.name}: an answer cell not preceded by its statement:\n{c.source}"
-            assert [t for x in rest for t in ("solution", "check") if t in tags(x)] == ["solution", "check"], \
-                f"{path.name}: the answer cell must be followed by its solution and its check:\n{c.source}"
-            groups.append((statement, c, *rest))
-    return groups
-
-
 @pytest.mark.parametrize("path", EXERCISE_CHAPTERS, ids=lambda p: p.name)
 def test_chapter_has_exercises_with_checks_and_worked_solutions(path):
-    from edition.exercises.framework import by_name
-    groups = exercise_cells(path)
-    if groups:                  # the cell convention: statement, answer, solution, check (edition.exercises.framework)
-        assert len(groups) >= 2, f"{path.name}: {len(groups)} exercise(s)"
-        for statement, answer, solution, check in groups:
-            m = re.fullmatch(r"(\w+) = None(  # .+)?", answer.source.strip())
-            assert m, f"{path.name}: an answer template must be `name = None  # what`:\n{answer.source}"
-            name = m.group(1)
-            assert re.search(rf"^{name} = ", solution.source, flags=re.M), f"{path.name}: {solution.source}"
-            call = re.fullmatch(rf"(?:exercises|study)\.(\w+)\({name}\)", check.source.strip())
-            assert call, f"{path.name}: a check cell must be one call of the check on {name}:\n{check.source}"
-            ex = by_name(call.group(1))
-            assert re.search(rf"\*\*{re.escape(ex.number)}\b", statement.source), \
-                f"{path.name}: the statement of {ex.number} does not carry its number:\n{statement.source}"
-            if ex.tolerance is not None:
-                stated = ex.tolerance.statement.replace("to ", "").replace("within ", "")
-                assert stated.split(" (")[0] in " ".join(statement.source.replace("**", "").split()), \
-                    f"{path.name}: exercise {ex.number} does not state its tolerance ({ex.tolerance.statement!r})"
-        own = [c for c in cells(path, "code") if "exercise" in tags(c)]
-        assert any("describe_robot" in c.source or "describe_design" in c.source or "my_robot" in c.source
-                   for c in own), f"{path.name}: no 'your own robot' cell"
-        return
+    if any("check" in tags(c) for c in cells(path)):       # the cell convention (edition.exercises.framework)
+        return _exercises_in_four_cells(path)
     # chapters still in the older convention: the check called in a cell tagged "exercise"
     pattern = r"(?:exercises|study)\.(\w+)\("
     named = {"describe_robot", "describe_design"}
@@ -130,6 +95,44 @@ def test_chapter_has_exercises_with_checks_and_worked_solutions(path):
     for c in tagged:
         if re.search(pattern, c.source) and "my_robot" not in c.source:
             assert "= None" in c.source, f"{path.name}: an exercise template without a placeholder:\n{c.source}"
+
+
+def _exercises_in_four_cells(path):
+    """The convention of edition.exercises.framework: statement, answer (a None template), solution, check (one
+    call of a registered check with the answer's names), in this order; and a "your own robot" cell."""
+    from edition.exercises.framework import by_name
+    from tools.assignments import assignment, check_call
+    nb = nbformat.read(path, as_version=4)
+    assert assignment(nb, path.stem, lambda name: by_name(name).points) is not None     # order and roles
+    checks = [c for c in nb.cells if "check" in tags(c)]
+    assert len(checks) >= 2, f"{path.name}: {len(checks)} exercises"
+    for c in checks:
+        by_name(check_call(c.source, path.name))
+    for c in nb.cells:
+        if "answer" in tags(c):
+            assert re.fullmatch(r"\w+ = None +# .+", c.source.strip()), f"{path.name}: an answer template:\n{c.source}"
+    own = [c for c in nb.cells
+           if c.cell_type == "code" and tags(c) & {"explore", "exercise"} and "my_robot" in c.source]
+    assert own, f"{path.name}: no 'your own robot' cell"
+
+
+@pytest.mark.parametrize("path", EXERCISE_CHAPTERS, ids=lambda p: p.name)
+def test_exercise_statements_carry_their_number_and_tolerance(path):
+    """The statement cell before each answer names its exercise and the tolerance its check applies (the answer
+    tables of the checks test that the tolerance is the one applied)."""
+    from edition.exercises.framework import by_name
+    from tools.assignments import check_call
+    cs = cells(path)
+    for i, c in enumerate(cs):
+        if "check" not in tags(c):
+            continue
+        statement = next(x for x in reversed(cs[:i]) if "exercise" in tags(x) and x.cell_type == "markdown")
+        ex = by_name(check_call(c.source, path.name))
+        text = " ".join(statement.source.replace("**", "").split())
+        assert re.search(rf"(?<![\d.]){re.escape(ex.number)}(?!\d)", text), f"{path.name}: {ex.number} not named"
+        if ex.tolerance is not None and ex.tolerance.statement.startswith(("to ", "within ")):
+            stated = ex.tolerance.statement.removeprefix("to ").removeprefix("within ")
+            assert stated in text, f"{path.name}: exercise {ex.number} does not state {ex.tolerance.statement!r}"
 
 
 @pytest.mark.parametrize("path", CHAPTERS, ids=lambda p: p.name)
@@ -264,26 +267,6 @@ def test_a_missing_answer_is_not_an_error(check):
     assert not fb and fb.message.startswith("No answer yet") and fb._repr_markdown_().startswith("**Not yet.**")
 
 
-def test_chapter_4_exercises():
-    assert X.unlisted_singularity([20, 200, 20]) and X.unlisted_singularity([60, 0, -120])
-    assert "item (i)" in X.unlisted_singularity([20, 20, 20]).message
-    assert "not singular" in X.unlisted_singularity([20, 30, 40]).message
-    assert X.mobile_and_singular([20, 20, 20])
-    assert "cannot move" in X.mobile_and_singular([60, 37, 60]).message
-
-
-def test_chapter_5_and_6_exercises():
-    bot = wmr.paper_robot("centred", L=0.4, r=0.1)
-    phi = np.arctan2(0.4, 0.3) + np.pi / 2
-    assert X.translation_angles(np.full(3, phi - np.radians(30)))
-    assert "printed (60)" in X.translation_angles(np.full(3, np.arctan2(0.4, 0.3) - np.radians(30))).message
-    ui = np.array([0.5, 0.3]) - bot.mount_points
-    assert X.rotation_angles(np.arctan2(ui[:, 1], ui[:, 0])) and not X.rotation_angles([0, 0, 0])
-    assert X.printed_65_region((0.7, 0.0)) and not X.printed_65_region((0.0, 0.7))
-    assert "undefined" in X.printed_65_region((0, 0)).message
-    assert X.curved_translation([0.5, 0.5, 0.5]) and "misses" in X.curved_translation([0.5, 0.5, 0.4]).message
-    assert X.reversal([0, -0.4, -0.2]) and "same heading" in X.reversal([0, 0.4, 0.2]).message
-    assert "slip" in X.reversal([1, 0, 0]).message
 
 
 def test_describe_robot():

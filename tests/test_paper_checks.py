@@ -42,6 +42,12 @@ def verdicts(derivation):
     return {f.id: grade(f) for f in derivation.findings}
 
 
+def det_J_paper():
+    """det J of the paper's centred-wheel robot (symbolic L, r): what Chapter 4 derives and hands to its checks."""
+    import wmr
+    return wmr.paper_robot("centred", L=S.L, r=S.r, exact=True).J(L=S.L).det()
+
+
 # ----------------------------------------------------------------------------------------------- re-grading
 def test_a_corrected_transcription_regrades_typo_42_to_ok(transcribe):
     assert verdicts(ch3_j2_product())["42"] == "typo"
@@ -58,18 +64,20 @@ def test_a_corrected_transcription_regrades_wrong_15_to_ok(transcribe):
 def test_a_corrected_transcription_regrades_59_to_ok(transcribe):
     p = printed(59)
     transcribe(59, sp.Eq(p.expr.lhs, S.r**3 * p.expr.rhs))
-    assert verdicts(centred.printed_determinant(n=20))["59"] == "ok"
+    assert verdicts(centred.printed_determinant(det_J_paper(), n=20))["59"] == "ok"
 
 
 def test_a_corrected_transcription_regrades_60_to_ok(transcribe):
     p = printed(60)
     transcribe(60, sp.Eq(p.expr.lhs, sp.atan2(S.Y_dot, S.X_dot) + sp.pi / 2))
     with pytest.raises(AssertionError):          # the evidence that the printed angles slip no longer holds
-        steering.translation(n=50)
+        steering.translation(S.X_dot * sp.cos(S.phi_i) + S.Y_dot * sp.sin(S.phi_i),
+                             sp.atan2(S.Y_dot, S.X_dot) + sp.pi / 2, n=50)
 
 
 @pytest.mark.parametrize("id, expr, check", [
-    (63, lambda p: -p.expr, lambda: steering.instant_centre(n=20)),
+    (63, lambda p: -p.expr, lambda: steering.instant_centre(sp.Matrix([-S.y_dot, S.x_dot]) / S.psi_dot,
+                                                           S.psi_dot**2, n=20)),
     (6, lambda p: sp.Eq(p.expr.lhs, -p.expr.rhs, evaluate=False),
      lambda: wheels.rolling_disk(*(derived("01_platform_and_wheels")[x] for x in ("h_dot", "i_i", "j_i")))),
     (38, None, None),
@@ -142,7 +150,7 @@ def test_discontinuous_heading_records_its_own_jumps():
 
 
 def test_singular_list_finds_the_half_turned_family():
-    d = centred.singular_list(n=100, n_family=40, n_item=10)
+    d = centred.singular_list(det_J_paper(), n=100, n_family=40, n_item=10)
     assert d.classes[centred.LINE_CLASSES[1]] > 0 and d.classes[centred.LINE_CLASSES[4]] == 0
     assert d.control[centred.LINE_CLASSES[4]] == 100 and np.isinf(d.missed["kappa"])
     assert grade(d["singular-list-complete"]) == "typo"
@@ -158,3 +166,12 @@ def test_classify_lines_by_plain_geometry():
 def wmr_paper_points():
     import wmr
     return wmr.paper_robot("centred", L=1.0, r=1.0).mount_points
+
+
+def test_a_derivation_that_is_not_the_models_is_refused():
+    """The chapters hand their derived objects to the checks: a wrong one stops the check instead of being graded."""
+    from edition.checks import CheckError
+    with pytest.raises(CheckError, match="determinant of the paper's J"):
+        centred.printed_determinant(2 * det_J_paper(), n=5)
+    with pytest.raises(CheckError, match="velocity vanishes"):
+        steering.instant_centre(sp.Matrix([S.y_dot, S.x_dot]) / S.psi_dot, S.psi_dot**2, n=5)

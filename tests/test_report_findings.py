@@ -42,7 +42,9 @@ def test_covering_items_can_say_no():
 
 
 def test_locked_drive_claim_is_judged_on_whenever():
-    row = F.locked_drive(robots=20, per=5)
+    from edition.derivations import derived
+    ch2 = derived("02_offset_wheels_and_mobility")
+    row = F.locked_drive(ch2["det_M"], ch2["plucker"], robots=20, per=5)
     assert row["verdict"] == "wrong" and row["printed_holds"] == "no"
     assert row["ranks"] == [6] and row["equal_rank"] == 5 and row["concurrent_rank"] == 5
     assert "all $\\beta_i$ equal" in row["corrected"] and row["anchor"] == "claim-drift"

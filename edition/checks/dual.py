@@ -46,17 +46,20 @@ def robots():
     return paper_robot("centred", L=L, r=r), paper_robot("dual", L=L, r=r, b=b), paper_robot("offset", L=L, r=r, d=r)
 
 
-def _averaging(w=3):
-    avg = sp.Matrix([[sp.Rational(1, 2), sp.Rational(1, 2)]])
-    return avg, sp.diag(sp.eye(3), *([avg] * w))
-
-
-def equivalence(n=300, n_paper=100, t_end=4.0, dt=0.01, seed=SEED):
-    r"""Claim ``dual-wheel-equivalence``:
+def equivalence(B_dual, B_centred, avg, F_dual, F_centred, T, n=300, n_paper=100, t_end=4.0, dt=0.01, seed=SEED):
+    r"""Judge claim ``dual-wheel-equivalence``:
     :math:`\mathbf J_2^{\text{dual}} = \mathbf J_2^{\text{centred}}[\tfrac12\ \tfrac12]` and the same admissible twists.
 
     Parameters
     ----------
+    B_dual, B_centred : sympy.Matrix (2, 2), (2, 1)
+        One unit's blocks of :math:`\mathbf J_2` at :math:`(d_x, d_y)`, derived in Chapter 6.
+    avg : sympy.Matrix (1, 2)
+        The averaging row :math:`[\tfrac12\ \tfrac12]` of (18).
+    F_dual, F_centred : sympy.Matrix (6, 9), (6, 6)
+        :math:`\mathbf F` of the paper's dual and centred robots (symbolic L, r, b).
+    T : sympy.Matrix (6, 9)
+        :math:`\operatorname{diag}(\mathbf 1_3, [\tfrac12\ \tfrac12], [\tfrac12\ \tfrac12], [\tfrac12\ \tfrac12])`.
     n : int
         Configurations compared (the first ``n_paper`` on the paper's robots, the rest on random robots;
         every other one with coordinated steering).
@@ -68,22 +71,23 @@ def equivalence(n=300, n_paper=100, t_end=4.0, dt=0.01, seed=SEED):
     Returns
     -------
     Derivation
-        ``B_dual``, ``B_centred`` (one unit's blocks), ``counts`` (rows: dims and nullities and how
-        often), ``worst`` (largest difference of the projectors), ``spin`` (residual of the steer-in-place
-        null vectors), ``steer_rate`` (per unit of wheel-rate difference), ``runs`` (rows of the
-        simulation), finding ``dual-wheel-equivalence``.
+        ``counts`` (rows: dims and nullities and how often), ``worst`` (largest difference of the
+        projectors), ``spin`` (residual of the steer-in-place null vectors), ``steer_rate`` (per unit of
+        wheel-rate difference), ``runs`` (rows of the simulation), finding ``dual-wheel-equivalence``.
     """
     du = Robot([DualWheel((S.dx, S.dy), r=S.r, b=S.b)])
     cu = Robot([CentredWheel((S.dx, S.dy), r=S.r)])
+    require(symbolic_equal(B_dual, du.J2()) and symbolic_equal(B_centred, cu.J2()), "the blocks are Robot.J2's")
+    require(symbolic_equal(F_dual, paper_robot("dual", L=S.L, r=S.r, b=S.b, exact=True).F())
+            and symbolic_equal(F_centred, paper_robot("centred", L=S.L, r=S.r, exact=True).F()),
+            "the functional matrices are the paper robots'")
+    require(symbolic_equal(avg, sp.Matrix([[sp.Rational(1, 2), sp.Rational(1, 2)]])), "avg is the mean of (18)")
     beta = du.beta_symbols[0]
-    avg, T = _averaging()
-    ok_block = symbolic_equal(du.J2(), cu.J2() * avg)
+    ok_block = symbolic_equal(B_dual, B_centred * avg)
     ok_J1 = symbolic_equal(du.J1(L=sp.S.One), cu.J1(L=sp.S.One))
     axle = rotation(beta, SYMBOLIC) * sp.Matrix([1, 0])
-    ok_axle = symbolic_equal(axle.T * du.J2(), sp.zeros(1, 2)) and symbolic_equal(axle.T * cu.J2(), sp.zeros(1, 1))
-    cen_s = paper_robot("centred", L=S.L, r=S.r, exact=True)
-    dual_s = paper_robot("dual", L=S.L, r=S.r, b=S.b, exact=True)
-    ok_F = symbolic_equal(dual_s.F(), cen_s.F() * T)
+    ok_axle = symbolic_equal(axle.T * B_dual, sp.zeros(1, 2)) and symbolic_equal(axle.T * B_centred, sp.zeros(1, 1))
+    ok_F = symbolic_equal(F_dual, F_centred * T)
     cen, dual, _ = robots()
     rng = np.random.default_rng(seed)
     counts: dict = {}
@@ -130,7 +134,7 @@ def equivalence(n=300, n_paper=100, t_end=4.0, dt=0.01, seed=SEED):
              and all(r["twists (centred)"] == r["twists (dual)"] for r in rows)
              and all(r[r"nullity $\mathbf F$ dual"] - r[r"nullity $\mathbf F$ centred"] == 3 for r in rows)
              and runs[0]["largest slip"] < TOL and runs[0]["drift of U"] < TOL)
-    return Derivation(B_dual=du.J2(), B_centred=cu.J2(), counts=rows, worst=worst, spin=res_spin, steer_rate=steer_rate,
+    return Derivation(counts=rows, worst=worst, spin=res_spin, steer_rate=steer_rate,
                       runs=runs, n=n, findings=[claim(
         "dual-wheel-equivalence", holds,
         r"$\mathbf J_2^{\text{dual}} = \mathbf J_2^{\text{centred}}[\tfrac12\ \ \tfrac12]$ for one unit and "
@@ -147,11 +151,14 @@ def equivalence(n=300, n_paper=100, t_end=4.0, dt=0.01, seed=SEED):
              f"${runs[1]['largest slip']:.2g}$)")])
 
 
-def mobility_dual(n=2000, seed=SEED):
+def mobility_dual(T, n=2000, seed=SEED):
     r"""Claim ``mobility-dual``: mobility 1 at coordinated steering (the paper's counting, averaged rates), 0 otherwise.
 
     Parameters
     ----------
+    T : sympy.Matrix (6, 9)
+        The averaging map of :func:`equivalence` (Chapter 6), :math:`\mathbf F^{\text{dual}} =
+        \mathbf F^{\text{centred}}\mathbf T`.
     n : int
         Coordinated and arbitrary configurations.
     seed : int
@@ -170,7 +177,6 @@ def mobility_dual(n=2000, seed=SEED):
     rows = [("nullity of $\\mathbf F$ with the averaged rates (the paper)", count(lambda b: mobility(cen, b))),
             ("nullity of $\\mathbf F^{\\text{dual}}$ with both wheel rates", count(lambda b: mobility(dual, b))),
             ("dimension of the admissible platform twists", count(lambda b: 3 - (rank_F(dual, b) - 3)))]
-    _, T = _averaging()
     res = float(np.max(np.abs(dual.F(be_r) - cen.F(be_r) @ np.array(T, dtype=float))))
     holds = rows[0][1] == ([1], [0]) and rows[2][1] == ([1], [0]) and res < TOL
     require(rows[1][1] == ([4], [3]), "the dual robot's F has three more null directions")
@@ -308,8 +314,8 @@ def omnidirectional(n=2000, seed=SEED):
         rf"translation whose direction turns by ${np.degrees(curve['turned']):.0f}^\circ$ is followed without "
         rf"stopping: the twist executed differs from the one commanded by ${bound(curve['miss'], latex=True)}$, slip "
         rf"${bound(curve['slip'], latex=True)}$ (`wmr.simulate`)", max(curve["slip"], curve["miss"]),
-        refuted=f"the admissible twists have dimension {dims} (never 3): a twist in another direction than the current "
-                "one cannot be executed without re-steering",
+        refuted=f"the admissible twists have dimension {' or '.join(map(str, dims))} (never 3): a twist in another "
+                "direction than the current one cannot be executed without re-steering",
         corrected=r"A WMR with three centred (or dual) wheels has mobility $\nu = 1$ ($0$ at uncoordinated steering "
                   r"angles): it is not omnidirectional. It can travel in any direction, and change direction while "
                   r"moving when the wheels are re-steered together (they stay parallel, as in the curvilinear "

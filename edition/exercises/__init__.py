@@ -24,8 +24,8 @@ ch.    check                           the exercise
 3      :func:`isotropic_placement`     move wheel 2 and find the L that makes :math:`\mathbf J_{L1}` isotropic
 3      :func:`dual_upsilon`            :math:`\Upsilon_i` of a dual-wheel unit: is its J2 ever isotropic?
 3      :func:`offset_for_kappa`        the offset that gives :math:`\kappa(\mathbf J_2) = 2`
-4      :func:`unlisted_singularity`    a singular configuration the paper does not list
-4      :func:`mobile_and_singular`     steering angles where the robot moves although :math:`\mathbf J` is singular
+4      :func:`unlisted_singularity`    a singular translation the paper's list does not state
+4      :func:`mobile_and_singular`     angles where another robot turns although :math:`\mathbf J` is singular
 5      :func:`translation_angles`      steering angles for a translation, and the slip of the printed (60)
 5      :func:`rotation_angles`         steering angles for a rotation about a given point
 5      :func:`printed_65_region`       where the centre must lie for the printed (65) to hold
@@ -42,7 +42,7 @@ and the "your own robot" summary in :mod:`~edition.exercises.own_robot`.
 from .ch1_wheels import dual_counterexample, dual_spin_in_place, offset_other_side
 from .ch2_mobility import BETA4, D4, PHI_DOT4, drift_of_c_general, locked_steering
 from .ch3_isotropy import dual_upsilon, isotropic_placement, offset_for_kappa
-from .ch4_singularities import mobile_and_singular, unlisted_singularity
+from .ch4_singularities import mobile_and_singular, robot_4_2, unlisted_singularity
 from .ch5_steering import printed_65_region, rotation_angles, translation_angles
 from .ch6_motion import curved_translation, reversal
 from .feedback import Feedback
@@ -50,5 +50,5 @@ from .own_robot import describe_robot
 
 __all__ = ["Feedback", "offset_other_side", "dual_counterexample", "dual_spin_in_place", "locked_steering",
            "drift_of_c_general", "D4", "BETA4", "PHI_DOT4", "isotropic_placement", "dual_upsilon", "offset_for_kappa",
-           "unlisted_singularity", "mobile_and_singular", "translation_angles", "rotation_angles",
+           "unlisted_singularity", "mobile_and_singular", "robot_4_2", "translation_angles", "rotation_angles",
            "printed_65_region", "curved_translation", "reversal", "describe_robot"]

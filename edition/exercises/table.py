@@ -31,13 +31,12 @@ from dataclasses import dataclass
 import numpy as np
 import sympy as sp
 
+from ..display import raw_output
 from .feedback import Result
 
 __all__ = ["Case", "right_case", "wrong_case", "malformed_case", "missing_case", "rounded", "problems", "verify",
            "JUNK", "junk_cases"]
 
-#: raw e-notation as Python prints it (``2.88e-16``, ``1.21e+04``): the reader should see :math:`a\times10^k`
-RAW_E = re.compile(r"(?<![A-Za-z_\\])\d(?:\.\d+)?e[-+]?\d")
 
 
 @dataclass(frozen=True)
@@ -142,9 +141,9 @@ def problems(result, case=None):
         out.append(f"points {result.points} disagree with passed={result.passed}")
     if "\n\n" in md.strip() or "Traceback" in md:
         out.append(f"the verdict is not one Markdown paragraph: {md!r}")
-    raw = RAW_E.search(md)
+    raw = raw_output(md)
     if raw:
-        out.append(f"raw e-notation in the verdict: {raw.group(0)!r} in {md!r}")
+        out.append(f"raw output in the verdict (e-notation or a Python container): {raw} in {md!r}")
     if result.status == "malformed" and "\n" in result.message.strip():
         out.append(f"a malformed answer gets more than one line: {result.message!r}")
     if case is None:

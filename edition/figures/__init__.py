@@ -113,7 +113,10 @@ def save(key, data, outdir, *, fig=None):
 
 
 def show(key, data=None, *, outdir=None, width=None):
-    """Compute (unless ``data`` is given), draw and display a figure with its caption; save it to ``outdir`` if given.
+    """Compute (unless ``data`` is given), draw and display a figure with its alt text and caption; save it if asked.
+
+    The alt text is the figure module's ``alt(data)`` (plain text: what the figure shows) when it defines one,
+    else its title; it is shown by :func:`edition.display.image`.
 
     Parameters
     ----------
@@ -131,7 +134,9 @@ def show(key, data=None, *, outdir=None, width=None):
     data class
         The figure's numbers.
     """
-    from IPython.display import Image, Markdown, display
+    from IPython.display import Markdown, display
+
+    from ..display import image
     mod = module(key)
     data = mod.data() if data is None else data
     fig = _draw(key, data)
@@ -139,8 +144,10 @@ def show(key, data=None, *, outdir=None, width=None):
     if outdir is not None:
         output.write(outdir, key, {f: b for f, b in files.items() if f != "png"}, output.record(key, mod, data))
     label = f"Figure {mod.NUMBER}" + (" (regenerated)" if mod.NUMBER.isdigit() else "") + ": " if mod.NUMBER else ""
+    # alt text: the module's alt(data) when it has one, else the figure's title (what it shows, in words)
+    alt = mod.alt(data) if hasattr(mod, "alt") else f"{label}{mod.TITLE}."
     # marked, so that the report shows the figure once, from its files, instead of this picture
-    display(Image(files["png"], width=width or int(round(fig.get_figwidth() * 110))), metadata={"wmr_figure": key})
+    image(files["png"], alt, width or int(round(fig.get_figwidth() * 110)), metadata={"wmr_figure": key})
     display(Markdown(f"*{label}{mod.TITLE}.* {mod.caption(data)}"))
     return data
 

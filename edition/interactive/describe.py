@@ -56,7 +56,7 @@ def describe_mounts(state):
     -------
     str
     """
-    c = state.centroid
+    c = np.round(state.centroid, 3) + 0.0                # no "-0.000"
     iso = abs(state.kappa - 1) < 1e-9
     text = (rf"$\kappa(\mathbf J_{{L1}}) = {number(state.kappa, 4)}$ at $L = {state.L:.3g}$; centroid of the "
             rf"$P_i$ at $({c[0]:.3f}, {c[1]:.3f})$; RMS distance ${state.L_rms:.3f}$, where "

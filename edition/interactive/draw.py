@@ -12,7 +12,13 @@ from wmr.analysis.lines import AT_INFINITY, FINITE
 
 from ..text import number
 
-__all__ = ["draw_steering", "draw_mounts", "png"]
+__all__ = ["draw_steering", "draw_mounts", "png", "DPI", "LEGEND_PT", "TITLE_PT"]
+
+#: the pictures are small in inches and rendered at 120 dpi, so that their text (legend 9 pt, title 10.5 pt,
+#: labels 9 pt) stays at least 14 px high when JupyterLab shrinks the picture to a narrow notebook (820 px window)
+DPI = 120
+LEGEND_PT = 9.0
+TITLE_PT = 10.5
 
 
 def _deg(x):
@@ -37,7 +43,7 @@ def draw_steering(state, fig=None):
     from wmr.plot.robot import draw_robot, platform_radius, robot_geometry
     from wmr.plot.style import DASHES, ROLE, fit_view, new_figure, style
     with style():
-        fig, (ax,) = new_figure(1, 1, width=5.6, height=5.0, fig=fig)
+        fig, (ax,) = new_figure(1, 1, width=4.2, height=4.0, fig=fig)
         g = robot_geometry(state.robot, state.beta)
         R = platform_radius(state.robot)
         view = 2.6 * R
@@ -64,9 +70,9 @@ def draw_steering(state, fig=None):
                    Line2D([], [], color=DASHES["plane"][0], ls=DASHES["plane"][1], lw=1.2, label="wheel-plane lines"),
                    Line2D([], [], color=ROLE["ic"], marker="o", ls="none", label="$U$: centre of rotation"),
                    Line2D([], [], color=ROLE["dp"], marker="s", ls="none", label="$D_P$: planes meet")]
-        ax.legend(handles=handles, loc="lower left", fontsize=7.5, frameon=True, framealpha=0.9)
+        ax.legend(handles=handles, loc="lower left", fontsize=LEGEND_PT, frameon=True, framealpha=0.9)
         verdict = ("can move" if state.mobility > 0 else "cannot move")
-        ax.set_title(rf"$\beta = ({', '.join(_deg(b) for b in state.beta)})$: the robot {verdict}", fontsize=9)
+        ax.set_title(rf"$\beta = ({', '.join(_deg(b) for b in state.beta)})$: the robot {verdict}", fontsize=TITLE_PT)
     return fig
 
 
@@ -88,7 +94,7 @@ def draw_mounts(state, fig=None):
     from wmr.plot.annotate import draw_point, label
     from wmr.plot.style import PALETTE, fit_view, new_figure, style
     with style():
-        fig, (ax,) = new_figure(1, 1, width=4.6, height=4.4, fig=fig)
+        fig, (ax,) = new_figure(1, 1, width=4.0, height=3.9, fig=fig)
         p = state.points
         ax.add_patch(Polygon(p, closed=True, facecolor=PALETTE["light"], edgecolor=PALETTE["grey"], lw=0.9))
         ax.add_patch(Circle((0, 0), state.L, facecolor="none", edgecolor=PALETTE["blue"], lw=0.9, ls=(0, (5, 3))))
@@ -100,17 +106,18 @@ def draw_mounts(state, fig=None):
         handles = [Line2D([], [], color=PALETTE["blue"], ls=(0, (5, 3)), label=f"radius $L = {state.L:.3g}$"),
                    Line2D([], [], color=PALETTE["green"], ls=(0, (1, 2)), label=f"RMS distance ${state.L_rms:.3g}$"),
                    Line2D([], [], color=PALETTE["vermillion"], marker="x", ls="none", label=r"centroid $\bar P$")]
-        ax.legend(handles=handles, loc="lower left", fontsize=7.5, frameon=True, framealpha=0.9)
+        ax.legend(handles=handles, loc="lower left", fontsize=LEGEND_PT, frameon=True, framealpha=0.9)
         for k, q in enumerate(p, 1):
             draw_point(ax, q, None, size=5, color=PALETTE["dark"])
             label(ax, q, f"$P_{k}$", offset=(6, 6))
         m = max(float(np.abs(p).max()), state.L, state.L_rms) * 1.25
         fit_view(ax, np.array([[-m, -m], [m, m]]), pad=0.02)
-        ax.set_title(rf"$\kappa(\mathbf{{J}}_{{L1}}) = {number(state.kappa, 4)}$ at $L = {state.L:.3g}$", fontsize=9)
+        ax.set_title(rf"$\kappa(\mathbf{{J}}_{{L1}}) = {number(state.kappa, 4)}$ at $L = {state.L:.3g}$",
+                     fontsize=TITLE_PT)
     return fig
 
 
-def png(fig, dpi=100):
+def png(fig, dpi=DPI):
     """The figure as PNG bytes (Agg), without registering it anywhere.
 
     Parameters

@@ -14,7 +14,7 @@ The checks, by equation group:
 :mod:`.singular`  singular configurations, (58)-(59): det J, the printed determinant, line classes, the paper's list
 ================  ==================================================================================================
 """
-from .mobility import L_NUM, R_NUM, functional_matrix, general_robot, isotropic_kinematics, kinematics, mobility_centred
+from .mobility import L_NUM, R_NUM, functional_matrix, isotropic_kinematics, kinematics, mobility_centred
 from .singular import (
                        LINE_CLASSES,
                        classify_lines,
@@ -25,7 +25,7 @@ from .singular import (
                        singular_v,
 )
 
-__all__ = ["L_NUM", "R_NUM", "general_robot", "kinematics", "functional_matrix", "mobility_centred",
+__all__ = ["L_NUM", "R_NUM", "kinematics", "functional_matrix", "mobility_centred",
            "isotropic_kinematics",
            "singular_configurations", "printed_determinant", "classify_lines", "singular_list", "singular_v",
            "planes_through", "LINE_CLASSES"]

@@ -4,8 +4,6 @@ Chapter 4's checks live in :mod:`edition.checks.centred`; this module holds one 
 """
 from __future__ import annotations
 
-from functools import cache
-
 import numpy as np
 import sympy as sp
 
@@ -14,7 +12,7 @@ from wmr.analysis.linalg import rank
 from wmr.analysis.mobility import rank_F, twist_constraints
 from wmr.analysis.steering import steering_angles
 from wmr.model.backend import SYMBOLIC
-from wmr.model.platform import E, rotation
+from wmr.model.platform import E
 from wmr.model.robot import Robot
 from wmr.model.robots import paper_robot
 from wmr.model.wheels import CentredWheel, OffsetWheel
@@ -25,7 +23,7 @@ from ...transcription import printed
 from ...verify import SEED, max_residual, symbolic_equal
 from .. import Derivation, claim, equation, require
 
-__all__ = ["general_robot", "kinematics", "functional_matrix", "mobility_centred", "isotropic_kinematics"]
+__all__ = ["kinematics", "functional_matrix", "mobility_centred", "isotropic_kinematics"]
 
 
 #: the numeric robot of this chapter (metres)
@@ -34,55 +32,37 @@ L_NUM, R_NUM = 0.4, 0.1
 u_point = sp.Matrix(sp.symbols("u_x u_y", real=True))
 
 
-@cache
-def general_robot():
-    """Three centred wheels at general (symbolic) mount points, radius r.
-
-    Returns
-    -------
-    wmr.Robot
-    """
-    return Robot([CentredWheel(d, r=S.r) for d in S.D])
+def _blocks(robot):
+    """The nonzero 2x1 blocks of a centred-wheel robot's J2 (one column per wheel)."""
+    J2 = robot.J2()
+    return [J2[2 * k:2 * k + 2, k] for k in range(len(robot.wheels))]
 
 
-def unit_axes():
-    r"""The axes of the three units of :func:`general_robot`, from its :math:`\mathbf J_2`.
+def kinematics(lhs, rhs, robot):
+    r"""Judge (51): the chapter's one-wheel no-slip equation against the printed one.
 
-    Returns
-    -------
-    axle : list of 3 Matrix (2, 1)
-        :math:`\mathbf i_k = \mathbf E\mathbf b_k / r` (the column :math:`\mathbf b_k` of unit k is
-        :math:`-r\mathbf j_k`).
-    rolling : list of 3 Matrix (2, 1)
-        :math:`\mathbf j_k`.
-    columns : list of 3 Matrix (2, 1)
-        The nonzero blocks :math:`\mathbf b_k = \mathbf R_{bwk}[0\ \ -r]^{\mathrm T}` of :math:`\mathbf J_2`.
-    """
-    gen = general_robot()
-    J2 = gen.J2()
-    cols = [J2[2 * k:2 * k + 2, k] for k in range(3)]          # b_i = R_bwi [0, -r]^T = -r j_i
-    return [E(SYMBOLIC) * b / S.r for b in cols], [-b / S.r for b in cols], cols
-
-
-def kinematics():
-    r"""(51): one centred wheel's no-slip equation, and the block-diagonal :math:`\mathbf J_2` of three.
+    Parameters
+    ----------
+    lhs, rhs : sympy.Matrix (2, 1)
+        :math:`\mathbf J_1\mathbf t` and :math:`\mathbf J_2\dot\theta_i` of one centred wheel at
+        :data:`edition.symbols.d_i`, derived in Chapter 4.
+    robot : wmr.Robot
+        The chapter's three centred wheels at general mount points: its ``J2`` must be the printed
+        block-diagonal :math:`\mathbf J_2` (6, 3).
 
     Returns
     -------
     Derivation
-        ``lhs``, ``rhs``, finding (51).
+        finding (51).
     """
     p51 = printed(51)
-    one = Robot([CentredWheel(S.d_i, r=S.r)])
-    lhs = one.J1(sp.Integer(1)) * sp.Matrix(one.twist_symbols)
-    rhs = one.J2([S.beta_i]) * sp.Matrix([S.theta_dot_i])
-    J2 = general_robot().J2()
+    J2 = robot.J2()
     off0 = OffsetWheel(S.d_i, r=S.r, d=sp.Integer(0))
     holds = (symbolic_equal(lhs - rhs, p51.expr.lhs - p51.expr.rhs) and symbolic_equal(J2, p51.extra["J2"])
-             and symbolic_equal(off0.block(S.beta_i)[:, 1], one.wheels[0].block(S.beta_i))
+             and symbolic_equal(off0.block(S.beta_i)[:, 1], CentredWheel(S.d_i, r=S.r).block(S.beta_i))
              and symbolic_equal(off0.block(S.beta_i)[:, 0], sp.zeros(2, 1)))
     res = max(max_residual(lhs - rhs, p51.expr.lhs - p51.expr.rhs), max_residual(J2, p51.extra["J2"]))
-    return Derivation(lhs=lhs, rhs=rhs, findings=[equation(
+    return Derivation(findings=[equation(
         51, holds, r"the one-wheel robot's $\mathbf J_1\mathbf t = \mathbf J_2\dot\theta_i$ is the printed equation, "
                    r"and `Robot.J2` of three wheels is the block-diagonal $\mathbf J_2$ that follows it (SymPy); the "
                    r"offset-wheel block at $d = 0$ has a zero steering column", res,
@@ -90,23 +70,27 @@ def kinematics():
                    r"point at $P_i$")])
 
 
-def functional_matrix():
-    r"""(52)-(53): :math:`\mathbf F = [\mathbf J_1\ -\mathbf J_2]` of three centred wheels and its columns.
+def functional_matrix(F, robot):
+    r"""Judge (52)-(53): the chapter's :math:`\mathbf F = [\mathbf J_1\ -\mathbf J_2]` against the printed matrix.
+
+    Parameters
+    ----------
+    F : sympy.Matrix (6, 6)
+        Derived in Chapter 4 (``robot.F()``).
+    robot : wmr.Robot
+        Three centred wheels at general mount points.
 
     Returns
     -------
     Derivation
-        ``F``, ``qdot_names``, findings (52) and (53).
+        findings (52) and (53).
     """
     p52, p53 = printed(52), printed(53)
-    gen = general_robot()
-    F = gen.F()
-    q = sp.Matrix(gen.qdot_symbols)
-    t = sp.Matrix(gen.twist_symbols)
-    holds53 = list(q) == list(p53.expr.rhs) and symbolic_equal(F * q,
-                                                               gen.J1(sp.Integer(1)) * t - gen.J2()
-                                                               * sp.Matrix(gen.rate_symbols))
-    return Derivation(F=F.applyfunc(sp.nsimplify), qdot_names=gen.qdot_names, findings=[
+    q = sp.Matrix(robot.qdot_symbols)
+    t = sp.Matrix(robot.twist_symbols)
+    holds53 = list(q) == list(p53.expr.rhs) and symbolic_equal(F * q, robot.J1(sp.Integer(1)) * t - robot.J2()
+                                                               * sp.Matrix(robot.rate_symbols))
+    return Derivation(findings=[
         equation(52, symbolic_equal(F, p52.expr.rhs), r"`Robot.F` for general mount points equals the printed matrix "
                  r"(SymPy): the wheel blocks are "
                  r"$-\mathbf R_{bwi}[0\ \ -r]^{\mathrm T} = \mathbf R_{bwi}[0\ \ r]^{\mathrm T}$",
@@ -116,17 +100,23 @@ def functional_matrix():
                  convention=r"the column order of $\mathbf F$")])
 
 
-def mobility_centred(n=20000, n_coord=300, grid=36, seed=SEED):
-    r"""Claim ``mobility-centred``: rank F = 3 + rank A(β); 5 (mobility 1) iff the axle lines are concurrent or
+def mobility_centred(A, axle, robot, n=20000, n_coord=300, grid=36, seed=SEED):
+    r"""Judge claim ``mobility-centred``: rank F = 3 + rank A(β); 5 (mobility 1) iff the axle lines are concurrent or
     parallel.
 
-    The wheel column of block row i is :math:`-r\mathbf j_i`; multiplying the row by
-    :math:`[\mathbf j_i\ \mathbf i_i]^{\mathrm T}` splits :math:`\mathbf F` into three pivot rows and the
-    rows :math:`\mathbf i_i^{\mathrm T}[\mathbf E\mathbf d_i\ \mathbf 1]` of :math:`\mathbf A`.  Rank A = 1 needs
-    collinear mount points, so for a triangle rank F is 5 or 6.
+    The chapter derives :math:`\mathbf A` by multiplying block row i of :math:`\mathbf F` by the axle
+    :math:`\mathbf i_i`, which annihilates the wheel column :math:`-r\mathbf j_i`.  This function checks that
+    step, the rows of :math:`\mathbf A\mathbf t` for a rotation and a translation, the :math:`2\times2` minors
+    (rank A = 1 needs collinear mount points), and the ranks numerically.
 
     Parameters
     ----------
+    A : sympy.Matrix (3, 3)
+        Rows :math:`\mathbf i_i^{\mathrm T}[\mathbf E\mathbf d_i\ \mathbf 1]`, derived in Chapter 4.
+    axle : list of 3 sympy.Matrix (2, 1)
+        :math:`\mathbf i_i = \mathbf R(\beta_i)[1\ 0]^{\mathrm T}`.
+    robot : wmr.Robot
+        Three centred wheels at the general mount points :data:`edition.symbols.D`.
     n : int
         Random steering configurations.
     n_coord : int
@@ -138,16 +128,18 @@ def mobility_centred(n=20000, n_coord=300, grid=36, seed=SEED):
     Returns
     -------
     Derivation
-        ``A`` (3, 3), ``minor`` (a 2x2 minor), ``summary`` (rows for a table), finding ``mobility-centred``.
+        ``summary`` (rows for a table), finding ``mobility-centred``.
     """
-    gen = general_robot()
-    axle, jdir, cols = unit_axes()
-    J1 = gen.J1(sp.Integer(1))
-    beta = gen.beta_symbols
-    require(all((a.T * b)[0] == 0 for a, b in zip(axle, cols, strict=True)), "the axle annihilates the wheel column")
-    require(all(symbolic_equal(a, rotation(bk, SYMBOLIC)[:, 0]) for a, bk in zip(axle, beta, strict=True)),
+    cols = _blocks(robot)
+    jdir = [-b / S.r for b in cols]
+    beta = robot.beta_symbols
+    require(all(symbolic_equal(a.T * b, sp.zeros(1, 1)) for a, b in zip(axle, cols, strict=True)),
+            "the axle annihilates the wheel column")
+    require(all(symbolic_equal(a, E(SYMBOLIC) * b / S.r) for a, b in zip(axle, cols, strict=True)),
             "E b_i / r is the axle")
-    A = sp.Matrix.vstack(*[axle[k].T * J1[2 * k:2 * k + 2, :] for k in range(3)])
+    J1 = robot.J1(sp.Integer(1))
+    require(symbolic_equal(A, sp.Matrix.vstack(*[axle[k].T * J1[2 * k:2 * k + 2, :] for k in range(3)])),
+            "A stacks the axle components of the rows of J1")
     t_rot = sp.Matrix([S.psi_dot, *(-S.psi_dot * E(SYMBOLIC) * u_point)])
     t_tra = sp.Matrix([0, S.x_dot, S.y_dot])
     rot = symbolic_equal(A * t_rot,
@@ -186,7 +178,7 @@ def mobility_centred(n=20000, n_coord=300, grid=36, seed=SEED):
                {"configurations": "collinear $P_i$, axles on their "
                                   "line", r"rank $\mathbf F$": {r_line}, "mobility": {6 - r_line}}]
     holds = rot and tra and minors and r_rand == {6} and r_coord == {5} and r_grid == {5, 6} and r_line == 4
-    return Derivation(A=A, minor=m23, summary=summary, findings=[claim(
+    return Derivation(summary=summary, findings=[claim(
         "mobility-centred", holds, r"$\operatorname{rank}\mathbf F = 3 + \operatorname{rank}\mathbf "
         r"A(\boldsymbol\beta)$; $\mathbf A\mathbf t = \mathbf 0$ for the rotation about $U$ iff $U$ is on every axle "
         r"line, for a translation iff the axles are parallel; the $2\times2$ minors of $\mathbf A$ vanish only for "
@@ -198,12 +190,22 @@ def mobility_centred(n=20000, n_coord=300, grid=36, seed=SEED):
              r"`twist_constraints` (rows up to sign)")])
 
 
-def isotropic_kinematics(n=25, seed=SEED):
-    r"""(54)-(57): :math:`\mathbf J_2^{\mathrm T}\mathbf J_2 = r^2\mathbf 1`; (55), (57) are least-squares maps through
-    :math:`\mathbf J = \mathbf J_{L1}^{\mathrm T}\mathbf J_2`.
+def isotropic_kinematics(J2tJ2, J, pinv_JL1, pinv_J2, paper, n=25, seed=SEED):
+    r"""Judge (54)-(57): :math:`\mathbf J_2^{\mathrm T}\mathbf J_2 = r^2\mathbf 1`; (55), (57) are least-squares maps
+    through :math:`\mathbf J = \mathbf J_{L1}^{\mathrm T}\mathbf J_2`.
 
     Parameters
     ----------
+    J2tJ2 : sympy.Matrix (3, 3)
+        :math:`\mathbf J_2^{\mathrm T}\mathbf J_2` for general mount points, derived in Chapter 4.
+    J : sympy.Matrix (3, 3)
+        :math:`\mathbf J_{L1}^{\mathrm T}\mathbf J_2` of the paper's placement (symbolic L, r).
+    pinv_JL1 : sympy.Matrix (3, 6)
+        :math:`(\mathbf J_{L1}^{\mathrm T}\mathbf J_{L1})^{-1}\mathbf J_{L1}^{\mathrm T}`.
+    pinv_J2 : sympy.Matrix (3, 6)
+        :math:`(\mathbf J_2^{\mathrm T}\mathbf J_2)^{-1}\mathbf J_2^{\mathrm T}`.
+    paper : wmr.Robot
+        ``wmr.paper_robot("centred", L=S.L, r=S.r, exact=True)``.
     n : int
         Random configurations (random and coordinated angles).
     seed : int
@@ -211,24 +213,20 @@ def isotropic_kinematics(n=25, seed=SEED):
     Returns
     -------
     Derivation
-        ``J2tJ2``, ``J`` (paper placement), ``exact_random`` (forward, inverse cases without slip at
-        random angles), ``exact_coordinated``, findings (54)-(57).
+        ``exact_random`` (forward, inverse cases without slip at random angles), ``exact_coordinated``,
+        ``n``, findings (54)-(57).
     """
     p54, p55, p56, p57 = (printed(i) for i in (54, 55, 56, 57))
-    gen = general_robot()
-    J2g = gen.J2()
-    J2tJ2 = J2g.T * J2g
-    paper = paper_robot("centred", L=S.L, r=S.r, exact=True)
-    JL1p, J2p, Jp = paper.J1(S.L), paper.J2(), paper.J(L=S.L)
+    JL1p, J2p = paper.J1(S.L), paper.J2()
+    require(symbolic_equal(J, paper.J(L=S.L)), "J_L1^T J_2 is Robot.J")
     th = sp.Matrix(paper.rate_symbols)
     tLs = sp.Matrix(sp.symbols("t_L1:4", real=True))
-    holds56 = symbolic_equal(Jp, explicit(p56.expr.rhs, {S.JL1: JL1p, S.J2_centred: J2p}))
-    pinv_JL1 = (JL1p.T * JL1p).inv() * JL1p.T
-    holds55 = symbolic_equal(pinv_JL1, JL1p.T / 3) and symbolic_equal(explicit(p55.expr.rhs, {S.J: Jp,
+    holds56 = symbolic_equal(J, explicit(p56.expr.rhs, {S.JL1: JL1p, S.J2_centred: J2p}))
+    holds55 = symbolic_equal(pinv_JL1, JL1p.T / 3) and symbolic_equal(explicit(p55.expr.rhs, {S.J: J,
                                                                                               S.theta_dot_centred: th}),
                                                                         pinv_JL1 * J2p * th)
-    pinv_J2 = (J2p.T * J2p).inv() * J2p.T
-    holds57 = symbolic_equal(explicit(p57.expr.rhs, {S.J: Jp, S.tL: tLs}), pinv_J2 * JL1p * tLs)
+    holds57 = (symbolic_equal(pinv_J2, J2p.T / S.r**2)
+               and symbolic_equal(explicit(p57.expr.rhs, {S.J: J, S.tL: tLs}), pinv_J2 * JL1p * tLs))
     bot = paper_robot("centred", L=L_NUM, r=R_NUM)
     scale = np.diag([L_NUM, 1.0, 1.0])
     rng = np.random.default_rng(seed)
@@ -254,7 +252,7 @@ def isotropic_kinematics(n=25, seed=SEED):
         coord_ok += int(ic.admissible and forward(bot, bc, thc).admissible)
         res_exact = max(res_exact, float(np.max(np.abs(back - tw))), float(np.max(np.abs(ic.residual))))
     require(fw_ok == inv_ok == 0 and coord_ok == n, "random data need slip; coordinated data are exact")
-    return Derivation(J2tJ2=sp.trigsimp(J2tJ2), J=Jp, exact_random=(fw_ok, inv_ok), exact_coordinated=coord_ok, n=n,
+    return Derivation(exact_random=(fw_ok, inv_ok), exact_coordinated=coord_ok, n=n,
                       findings=[
         equation(54, symbolic_equal(J2tJ2, p54.expr.rhs), r"$\mathbf J_2$ has orthogonal columns $-r\mathbf j_i$ in "
                  r"disjoint rows, so $\mathbf J_2^{\mathrm T}\mathbf J_2 = r^2\mathbf 1$ for every $\boldsymbol\beta$ "

@@ -22,18 +22,24 @@ from ... import symbols as S
 from ...transcription import printed
 from ...verify import SEED, max_residual, symbolic_equal
 from .. import Derivation, claim, equation, require
-from .mobility import L_NUM, R_NUM, general_robot, u_point, unit_axes
+from .mobility import L_NUM, R_NUM, u_point
 
 __all__ = ["singular_configurations", "printed_determinant", "classify_lines", "singular_list", "singular_v",
            "planes_through", "LINE_CLASSES"]
 
 
-def singular_configurations(n=20000, seed=SEED):
-    r"""(58): :math:`\det\mathbf J = -\tfrac{r^3}{L}\det[\mathbf i_i^{\mathrm T}\ \ \mathbf i_i\cdot\mathbf d_i]`: zero
-    iff the wheel-plane lines are concurrent or parallel.
+def singular_configurations(det_J, lines, robot, n=20000, seed=SEED):
+    r"""Judge (58): :math:`\det\mathbf J = -\tfrac{r^3}{L}\det[\mathbf i_i^{\mathrm T}\ \ \mathbf i_i\cdot\mathbf d_i]`:
+    zero iff the wheel-plane lines are concurrent or parallel.
 
     Parameters
     ----------
+    det_J : sympy.Expr
+        :math:`\det\mathbf J` for general mount points, derived in Chapter 4.
+    lines : sympy.Matrix (3, 3)
+        Rows :math:`[\mathbf i_i^{\mathrm T}\ \ \mathbf i_i\cdot\mathbf d_i]`: the wheel-plane lines.
+    robot : wmr.Robot
+        Three centred wheels at the general mount points :data:`edition.symbols.D`.
     n : int
         Random configurations (:math:`\kappa` finite there) and parallel ones (:math:`\kappa = \infty`).
     seed : int
@@ -41,42 +47,43 @@ def singular_configurations(n=20000, seed=SEED):
     Returns
     -------
     Derivation
-        ``lines`` (the 3x3 matrix of the wheel-plane lines), finding (58).
+        finding (58).
     """
-    gen = general_robot()
-    axle, _, _ = unit_axes()
-    Jg = gen.J(L=S.L)
+    axle = [sp.Matrix(lines[k, :2]).T for k in range(3)]
+    Jg = robot.J(L=S.L)
+    require(symbolic_equal(det_J, Jg.det()), "det_J is the determinant of Robot.J")
     tL_rot = sp.Matrix([S.L * S.psi_dot, *(-S.psi_dot * E(SYMBOLIC) * u_point)])
     rows = symbolic_equal(Jg.T * tL_rot,
                           sp.Matrix([-S.r * S.psi_dot * (axle[k].T * (sp.Matrix(S.D[k]) - u_point))[0]
                                      for k in range(3)]))
-    lines = sp.Matrix([[axle[k][0], axle[k][1], (axle[k].T * sp.Matrix(S.D[k]))[0]] for k in range(3)])
-    det_g = Jg.det()
-    holds = rows and symbolic_equal(det_g, -S.r**3 / S.L * lines.det())
+    holds = rows and symbolic_equal(det_J, -S.r**3 / S.L * lines.det())
     bot = paper_robot("centred", L=L_NUM, r=R_NUM)
     B = np.random.default_rng(seed).uniform(-np.pi, np.pi, (n, 3))
     k_par = condition_number(bot.J(np.c_[B[:, :1], B[:, :1] + np.pi, B[:, :1]], L=L_NUM))
     k_gen = condition_number(bot.J(B, L=L_NUM))
     require(np.all(np.isinf(k_par)) and np.all(np.isfinite(k_gen)), "kappa is infinite exactly on the singular set")
-    return Derivation(lines=lines, findings=[equation(
+    return Derivation(findings=[equation(
         58, holds, r"$\mathbf J^{\mathrm T}\mathbf t_L$ of the rotation about $U$ has rows "
                    r"$-r\dot\psi\,\mathbf i_i\cdot(\mathbf d_i - \mathbf u)$, and "
                    r"$\det\mathbf J = -\tfrac{r^3}{L}\det[\mathbf i_i^{\mathrm T}\ \ \mathbf i_i\cdot\mathbf d_i]$ for "
                    r"general mount points (SymPy): zero iff the wheel-plane lines are concurrent or all parallel; "
                    rf"$\kappa(\mathbf J)$ is infinite on {n} parallel configurations and finite on {n} random ones",
-        max_residual(det_g, -S.r**3 / S.L * lines.det()), convention=r"$\mathbf J = \mathbf J_{L1}^{\mathrm T}\mathbf "
+        max_residual(det_J, -S.r**3 / S.L * lines.det()), convention=r"$\mathbf J = \mathbf J_{L1}^{\mathrm T}\mathbf "
                                                                        r"J_2$ (56), three centred wheels")])
 
 
-def printed_determinant(n=200, seed=SEED):
-    r"""(59): which placement and numbering the printed determinant belongs to, and the missing factor :math:`r^3`.
+def printed_determinant(det_J, n=200, seed=SEED):
+    r"""Judge (59): which placement and numbering the printed determinant belongs to, and the missing factor
+    :math:`r^3`.
 
     Every equilateral placement with a vertex at a multiple of :math:`30^\circ` and both numbering
-    senses is compared with :math:`\pm` the printed form at random angles; then the one that
-    matches is checked exactly with symbolic L and r.
+    senses is compared with :math:`\pm` the printed form at random angles; then the chapter's
+    :math:`\det\mathbf J` of the paper's placement is compared exactly, with symbolic L and r.
 
     Parameters
     ----------
+    det_J : sympy.Expr
+        :math:`\det\mathbf J` of ``wmr.paper_robot("centred", L=S.L, r=S.r, exact=True)``, derived in Chapter 4.
     n : int
         Random steering configurations.
     seed : int
@@ -85,7 +92,7 @@ def printed_determinant(n=200, seed=SEED):
     -------
     Derivation
         ``placements`` (rows: first vertex, sense, errors against +/- (59)), ``matches`` (those that
-        hold with the printed sign), ``det_J`` (exact, paper placement), finding (59).
+        hold with the printed sign), finding (59).
     """
     p59 = printed(59)
     f59 = sp.lambdify(S.beta, p59.expr.rhs.subs(S.r, 1), "numpy")          # the search robots have r = 1
@@ -100,12 +107,12 @@ def printed_determinant(n=200, seed=SEED):
                          "plus": float(np.max(np.abs(dJ - P59))), "minus": float(np.max(np.abs(dJ + P59)))})
     matches = [(x["first"], x["sense"]) for x in rows if x["plus"] < 1e-9]
     paper = paper_robot("centred", L=S.L, r=S.r, exact=True)
-    det_paper = sp.expand(sp.expand_trig(paper.J(L=S.L).det()))
-    b1, b2, b3 = S.beta
+    require(symbolic_equal(det_J, paper.J(L=S.L).det()), "det_J is the determinant of the paper's J")
+    det_paper = sp.expand(sp.expand_trig(det_J))
     holds = symbolic_equal(det_paper, p59.expr.rhs)
     r3 = (symbolic_equal(det_paper, S.r**3 * p59.expr.rhs) and S.L not in det_paper.free_symbols
           and symbolic_equal(det_paper.subs(S.r, 1), p59.expr.rhs))
-    return Derivation(placements=rows, matches=matches, det_J=det_paper, findings=[equation(
+    return Derivation(placements=rows, matches=matches, findings=[equation(
         59, holds, r"for the paper's placement, $\det\mathbf J$ with symbolic $L$ and $r$ is $r^3$ times the printed "
                    r"form and does not depend on $L$ (SymPy)", max_residual(det_paper, S.r**3 * p59.expr.rhs),
         refuted=r"the printed form is $\det\mathbf J$ at $r = 1$ only",
@@ -202,7 +209,7 @@ def planes_through(robot, U):
     return np.arctan2(-w[..., 0], w[..., 1])
 
 
-def singular_list(n=1000, n_family=200, n_item=100, seed=SEED):
+def singular_list(det_J, n=1000, n_family=200, n_item=100, seed=SEED):
     r"""Claim ``singular-list-complete``: every printed item is singular, and the zero set is exactly concurrent or
     parallel wheel planes.
 
@@ -213,6 +220,8 @@ def singular_list(n=1000, n_family=200, n_item=100, seed=SEED):
 
     Parameters
     ----------
+    det_J : sympy.Expr
+        :math:`\det\mathbf J` of the paper's placement (symbolic L, r), derived in Chapter 4.
     n : int
         Zero-set samples from random :math:`(\beta_1, \beta_2)`, and random controls.
     n_family, n_item : int
@@ -227,7 +236,7 @@ def singular_list(n=1000, n_family=200, n_item=100, seed=SEED):
         ``singular-list-complete``.
     """
     p59 = printed(59)
-    det_paper = printed_determinant(n=1).det_J
+    det_paper = sp.expand(sp.expand_trig(det_J))
     b1, b2, b3 = S.beta
     b = sp.Symbol("b", real=True)
     fams = {}
@@ -296,7 +305,7 @@ def singular_list(n=1000, n_family=200, n_item=100, seed=SEED):
         convention=r"the paper's numbering of (59); 'intersect' read as meeting in one finite point")])
 
 
-def singular_v(angles_deg=(10, 45, 100, 200, 290), n_inside=50, seed=SEED):
+def singular_v(thales, angles_deg=(10, 45, 100, 200, 290), n_inside=50, seed=SEED):
     r"""Claim ``singular-v-immobile``: concurrent wheel planes cost all mobility -- unless :math:`D_P` is on the circle
     through the :math:`P_i`.
 
@@ -305,6 +314,9 @@ def singular_v(angles_deg=(10, 45, 100, 200, 290), n_inside=50, seed=SEED):
 
     Parameters
     ----------
+    thales : sequence of 3 sympy.Expr
+        :math:`(\mathbf u - \mathbf d_i)\cdot(\mathbf d_i + \mathbf u)` for :math:`\mathbf u` on the circle of
+        radius L, one per wheel of the paper's placement, derived in Chapter 4 (each must vanish).
     angles_deg : sequence of float
         Positions of :math:`D_P` on the circle (degrees).
     n_inside : int
@@ -314,14 +326,10 @@ def singular_v(angles_deg=(10, 45, 100, 200, 290), n_inside=50, seed=SEED):
     Returns
     -------
     Derivation
-        ``on_circle`` (mobilities), ``inside`` (set of mobilities), ``at_C`` (mobility), finding
-        ``singular-v-immobile``.
+        ``on_circle`` (mobilities), ``inside`` (set of mobilities), ``at_C`` (mobility), ``n_inside``,
+        finding ``singular-v-immobile``.
     """
-    alpha = sp.Symbol("alpha", real=True)
-    uc = S.L * sp.Matrix([sp.cos(alpha), sp.sin(alpha)])
-    paper = paper_robot("centred", L=S.L, r=S.r, exact=True)
-    thales = all(symbolic_equal(((uc - sp.Matrix(q.position)).T * (sp.Matrix(q.position) + uc))[0],
-                                0) for q in paper.wheels)
+    thales = len(thales) == 3 and all(symbolic_equal(e, 0) for e in thales)
     bot = paper_robot("centred", L=L_NUM, r=R_NUM)
     on = planes_through(bot, L_NUM * np.stack([np.cos(np.radians(angles_deg)), np.sin(np.radians(angles_deg))], -1))
     inside = planes_through(bot, np.random.default_rng(seed).uniform(-0.25, 0.25, (n_inside, 2)))
@@ -329,11 +337,13 @@ def singular_v(angles_deg=(10, 45, 100, 200, 290), n_inside=50, seed=SEED):
     det_on = float(np.abs(np.linalg.det(bot.J(on, L=L_NUM))).max())
     at_C = int(mobility(bot, planes_through(bot, np.zeros(2))))
     holds = bool(np.all(mob_on == 0))
-    return Derivation(on_circle=mob_on.tolist(), inside=set(mob_in.tolist()), at_C=at_C, findings=[claim(
+    return Derivation(on_circle=mob_on.tolist(), inside=set(mob_in.tolist()), at_C=at_C, n_inside=n_inside,
+                      findings=[claim(
         "singular-v-immobile", holds, r"with $D_P$ on the circle through $P_1, P_2, P_3$, every axle passes through "
         rf"the antipode of $D_P$ (SymPy, Thales); numerically, $D_P$ at {len(angles_deg)} points of the circle gives "
         rf"$\det\mathbf J = 0$ and mobility 1, at {n_inside} random points inside it mobility 0", det_on,
-        refuted=rf"$D_P$ on the circumcircle: $\det\mathbf J = 0$ yet mobility {sorted(set(mob_on.tolist()))}",
+        refuted=rf"$D_P$ on the circumcircle: $\det\mathbf J = 0$ yet mobility "
+                f"{' or '.join(map(str, sorted(set(mob_on.tolist()))))}",
         corrected="Concurrent wheel planes cost all mobility unless $D_P$ lies on the circle through $P_1, P_2, P_3$: "
                   "then the axles meet at the antipode of $D_P$ and the robot can turn about it (mobility 1)",
         corrected_holds=thales and bool(np.all(mob_on == 1)) and set(mob_in.tolist()) == {0} and det_on < 1e-12,

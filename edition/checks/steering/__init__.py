@@ -2,10 +2,10 @@ r"""Chapter 5, equations (60)-(65): steering three centred wheels, and the insta
 
 Everything rests on one scalar per wheel: the axle component of the mount point's velocity,
 :math:`g_i = \mathbf i_i^{\mathrm T}[\mathbf E\mathbf d_i\ \ \mathbf 1]\,\mathbf t`, which a centred wheel
-cannot produce (:func:`no_slip`).  A twist is executable iff every :math:`g_i = 0`.  The printed
-steering laws are substituted into :math:`g_i` exactly and tested numerically with the package's
-inverse kinematics (:func:`feasibility`); the instantaneous centre is derived by differentiating
-the position of a platform point.
+cannot produce (derived in the chapter, checked by :func:`no_slip`).  A twist is executable iff
+every :math:`g_i = 0`.  The printed steering laws are substituted into :math:`g_i` exactly and tested
+numerically with the package's inverse kinematics (:func:`feasibility`); the instantaneous centre is
+derived (in the chapter) by differentiating the position of a platform point.
 
 The checks, by equation group:
 
@@ -16,8 +16,8 @@ The checks, by equation group:
 ==================  =========================================================================
 """
 from .centre import centre_to_wheel, instant_centre, instant_centre_velocity
-from .constraint import KIND_NAMES, evaluate, feasibility, no_slip, no_slip_matches_constraints, robot
+from .constraint import KIND_NAMES, TWIST, evaluate, feasibility, no_slip, robot
 from .laws import rotation_angles, translation
 
-__all__ = ["robot", "no_slip", "no_slip_matches_constraints", "feasibility", "evaluate", "translation",
+__all__ = ["robot", "TWIST", "no_slip", "feasibility", "evaluate", "translation",
            "instant_centre_velocity", "instant_centre", "centre_to_wheel", "rotation_angles", "KIND_NAMES"]

@@ -4,8 +4,6 @@ Chapter 5's checks live in :mod:`edition.checks.steering`; this module holds one
 """
 from __future__ import annotations
 
-from functools import cache
-
 import numpy as np
 import sympy as sp
 
@@ -15,16 +13,14 @@ from wmr.analysis.mobility import rank_F, twist_constraints
 from wmr.analysis.steering import AT_INFINITY, FINITE, STILL
 from wmr.model.backend import SYMBOLIC
 from wmr.model.platform import rotation
-from wmr.model.robot import Robot
 from wmr.model.robots import paper_robot
 from wmr.model.tolerance import TOL
-from wmr.model.wheels import CentredWheel
 
 from ... import symbols as S
 from ...verify import SEED, symbolic_equal
-from .. import Derivation, require
+from .. import require
 
-__all__ = ["robot", "no_slip", "no_slip_matches_constraints", "feasibility", "evaluate", "KIND_NAMES"]
+__all__ = ["robot", "TWIST", "no_slip", "feasibility", "evaluate", "KIND_NAMES"]
 
 
 #: names of the kinds of :func:`wmr.instantaneous_centre`
@@ -61,33 +57,25 @@ def evaluate(expr, syms, *cols):
     return out if isinstance(expr, sp.MatrixBase) else out[..., 0]
 
 
-@cache
-def no_slip():
-    r"""The axle component :math:`g_i` of the velocity of a centred wheel's mount point, symbolic.
-
-    Returns
-    -------
-    Derivation
-        ``J1t`` (:math:`[\mathbf E\mathbf d_i\ \mathbf 1]\mathbf t`), ``J2`` (the wheel's block), ``g``,
-        ``beta`` and ``t`` (the symbols), ``axle``.
-    """
-    one = Robot([CentredWheel((S.dx, S.dy), r=S.r)])
-    beta = one.beta_symbols[0]
-    t = sp.Matrix(one.twist_symbols)
-    J1, J2 = one.J1(L=sp.S.One), one.J2()
-    axle = rotation(beta, SYMBOLIC) * sp.Matrix([1, 0])
-    roll = rotation(beta, SYMBOLIC) * sp.Matrix([0, 1])
-    require(symbolic_equal(axle.T * J2, sp.zeros(1, 1)), "the wheel cannot move P_i along its axle")
-    require(symbolic_equal(roll.T * J2, sp.Matrix([[-S.r]])), "the wheel rolls P_i along j_i at -r theta_dot")
-    g = sp.expand((axle.T * J1 * t)[0])
-    return Derivation(J1t=J1 * t, J2=J2, g=g, beta=beta, t=t, axle=axle)
+#: the twist :math:`[\dot\psi\ \dot x\ \dot y]^{\mathrm T}` (symbols of :class:`wmr.Robot`)
+TWIST = sp.Matrix([S.psi_dot, S.x_dot, S.y_dot])
 
 
-def no_slip_matches_constraints(n=2000, seed=SEED):
-    r"""The three :math:`g_i` are the rows of ``twist_constraints`` (up to sign) at random configurations.
+def no_slip(g, beta, J2, n=2000, seed=SEED):
+    r"""Check the chapter's no-slip scalar :math:`g_i` of one centred wheel against the package.
+
+    The axle :math:`\mathbf i_i` must annihilate the wheel's block of :math:`\mathbf J_2` and
+    :math:`\mathbf j_i` must give :math:`-r`; the three :math:`g_i` of the paper's robot must be the rows of
+    ``twist_constraints`` (up to sign) at random configurations.
 
     Parameters
     ----------
+    g : sympy.Expr
+        :math:`\mathbf i_i^{\mathrm T}[\mathbf E\mathbf d_i\ \ \mathbf 1]\mathbf t` for a wheel at
+        :math:`(d_x, d_y)` with steering angle ``beta``, derived in Chapter 5.
+    beta : sympy.Symbol
+    J2 : sympy.Matrix (2, 1)
+        The wheel's block.
     n : int
     seed : int
 
@@ -96,13 +84,17 @@ def no_slip_matches_constraints(n=2000, seed=SEED):
     float
         The largest difference (checked below ``TOL``).
     """
-    ns, bot = no_slip(), robot()
+    axle = rotation(beta, SYMBOLIC) * sp.Matrix([1, 0])
+    roll = rotation(beta, SYMBOLIC) * sp.Matrix([0, 1])
+    require(symbolic_equal(axle.T * J2, sp.zeros(1, 1)), "the wheel cannot move P_i along its axle")
+    require(symbolic_equal(roll.T * J2, sp.Matrix([[-S.r]])), "the wheel rolls P_i along j_i at -r theta_dot")
+    bot = robot()
     rng = np.random.default_rng(seed)
     B, T = rng.uniform(-np.pi, np.pi, (n, 3)), rng.normal(size=(n, 3))
     A, base = twist_constraints(bot, B)
     d = bot.mount_points
-    g = np.stack([evaluate(ns.g, (ns.beta, S.dx, S.dy, *ns.t), B[:, i], d[i, 0], d[i, 1], *T.T) for i in range(3)], -1)
-    res = float(np.max(np.abs(np.abs(g) - np.abs(np.einsum("nij,nj->ni", A, T)))))
+    g_num = np.stack([evaluate(g, (beta, S.dx, S.dy, *TWIST), B[:, i], d[i, 0], d[i, 1], *T.T) for i in range(3)], -1)
+    res = float(np.max(np.abs(np.abs(g_num) - np.abs(np.einsum("nij,nj->ni", A, T)))))
     require(res < TOL and base == 3, "g_i are the rows of the twist constraints")
     return res
 

@@ -8,8 +8,7 @@ import numpy as np
 import sympy as sp
 
 from wmr.analysis.steering import centre_to_wheels, instantaneous_centre, steering_angles
-from wmr.model.backend import SYMBOLIC
-from wmr.model.platform import E, rotation
+from wmr.model.platform import rotation
 from wmr.model.robots import paper_robot
 from wmr.model.tolerance import TOL
 
@@ -18,20 +17,26 @@ from ...algebra import mod_pi
 from ...transcription import printed
 from ...verify import SEED, symbolic_equal
 from .. import Derivation, equation, require
-from .constraint import evaluate, feasibility, no_slip, robot
+from .constraint import evaluate, feasibility, robot
 
 __all__ = ["translation", "rotation_angles"]
 
 
-def translation(n=2000, seed=SEED):
-    r"""(60): in translation the **axle** must be perpendicular to the velocity; the printed angle is the velocity's
-    own.
+def translation(g60, phi_true, n=2000, seed=SEED):
+    r"""Judge (60): in translation the **axle** must be perpendicular to the velocity; the printed angle is the
+    velocity's own.
 
-    :math:`g_i = 0` with :math:`\dot\psi = 0` reads :math:`\dot X\cos\phi_i + \dot Y\sin\phi_i = 0`, so
-    :math:`\phi_i = \operatorname{atan2}(\dot Y, \dot X) + \pi/2` (mod :math:`\pi`).
+    The chapter derives :math:`g_i = 0` with :math:`\dot\psi = 0` as
+    :math:`\dot X\cos\phi_i + \dot Y\sin\phi_i = 0`, solved by
+    :math:`\phi_i = \operatorname{atan2}(\dot Y, \dot X) + \pi/2` (mod :math:`\pi`).  This function substitutes the
+    derived and the printed angle, and drives the robot with each.
 
     Parameters
     ----------
+    g60 : sympy.Expr
+        The no-slip scalar in translation, in :data:`edition.symbols.phi_i`, :math:`\dot X`, :math:`\dot Y`.
+    phi_true : sympy.Expr
+        The derived angle of the axle.
     n : int
         Random translations (random heading, random velocity).
     seed : int
@@ -39,19 +44,12 @@ def translation(n=2000, seed=SEED):
     Returns
     -------
     Derivation
-        ``g`` (the condition in translation), ``g_true``, ``g_printed_squared``, ``phi_true``,
-        ``printed``, ``derived`` (:func:`feasibility` of each), ``alt`` (printed minus the angle of
-        :math:`\mathbf j_i`, mod :math:`\pi`), finding (60).
+        ``g_true``, ``g_printed_squared``, ``printed``, ``derived`` (:func:`feasibility` of each), ``alt``
+        (printed minus the angle of :math:`\mathbf j_i`, mod :math:`\pi`), ``n``, finding (60).
     """
     p60 = printed(60)
-    ns = no_slip()
     phi = p60.expr.lhs
-    v = sp.Matrix([S.X_dot, S.Y_dot])
-    c_body = rotation(S.psi, SYMBOLIC).T * v
-    g60 = ns.g.subs({S.psi_dot: 0, S.x_dot: c_body[0], S.y_dot: c_body[1], ns.beta: phi - S.psi}, simultaneous=True)
-    g60 = sp.collect(sp.expand(sp.expand_trig(sp.expand(g60))), [S.X_dot, S.Y_dot], sp.trigsimp)
-    phi_true = sp.atan2(S.Y_dot, S.X_dot) + sp.pi / 2
-    g_true = g60.subs(phi, phi_true)
+    g_true = sp.simplify(g60.subs(phi, phi_true))
     g_pr2 = sp.simplify(g60.subs(phi, p60.expr.rhs)**2)
     true_ok = symbolic_equal(g_true, 0)
     printed_fails = symbolic_equal(g_pr2, S.X_dot**2 + S.Y_dot**2)          # the whole speed is lateral
@@ -71,7 +69,7 @@ def translation(n=2000, seed=SEED):
               and dev < TOL)
     require(rep_pr["rank_J2_J1t"] == {4} and abs(rep_pr["min_rel_residual"] - 1) < TOL and alt < TOL,
             "printed angles: slip equal to the full speed; they are the angles of j_i")
-    return Derivation(g=g60, g_true=g_true, g_printed_squared=g_pr2, phi_true=phi_true, printed=rep_pr, derived=rep_tr,
+    return Derivation(g_true=g_true, g_printed_squared=g_pr2, printed=rep_pr, derived=rep_tr,
                       alt=alt, n=n, findings=[equation(
         60, holds, r"$g_i = 0$ in translation gives $\dot X\cos\phi_i + \dot Y\sin\phi_i = 0$, solved by "
                    r"$\phi_i = \operatorname{atan2}(\dot Y, \dot X) + \pi/2$ (SymPy); at these angles all "
@@ -92,15 +90,24 @@ def translation(n=2000, seed=SEED):
              r"velocity. Rank $\mathbf F = 5$ with either angles: the axles are parallel in both cases")])
 
 
-def rotation_angles(n=2000, seed=SEED, eps=1e-7):
-    r"""(65): in rotation about U each axle must point at U, :math:`\beta_i = \operatorname{atan2}(u_{iy}, u_{ix})` (mod
-    :math:`\pi`).
+def rotation_angles(g, beta, g65, beta_true, n=2000, seed=SEED, eps=1e-7):
+    r"""Judge (65): in rotation about U each axle must point at U,
+    :math:`\beta_i = \operatorname{atan2}(u_{iy}, u_{ix})`
+    (mod :math:`\pi`).
 
     The printed formula measures the angle between :math:`\overrightarrow{CU}` and :math:`\overrightarrow{P_iU}`
     instead; it agrees only when U lies on the positive body x-axis.
 
     Parameters
     ----------
+    g : sympy.Expr
+        The no-slip scalar of one centred wheel (Chapter 5), in ``beta``, :math:`d_x, d_y` and the twist.
+    beta : sympy.Symbol
+        Its steering angle.
+    g65 : sympy.Expr
+        ``g`` in rotation about U (:math:`\dot{\mathbf c}` from (63), :math:`\mathbf u_c = \mathbf u_i + \mathbf d_i`).
+    beta_true : sympy.Expr
+        The derived steering angle, in :data:`edition.symbols.u_i`.
     n : int
         Random rotations.
     seed : int
@@ -110,19 +117,12 @@ def rotation_angles(n=2000, seed=SEED, eps=1e-7):
     Returns
     -------
     Derivation
-        ``g`` (the condition in rotation about U), ``counterexample`` (rows: wheel, slip of the
-        printed angle with either sign), ``reports`` (feasibility of printed, derived and printed
-        with U on the +x axis), ``limit`` (of tan beta as psi_dot -> 0), ``at_C`` (printed right
-        side at U = C), finding (65).
+        ``counterexample`` (rows: wheel, slip of the printed angle with either sign), ``reports``
+        (feasibility of printed, derived and printed with U on the +x axis), ``limit`` (of tan beta as
+        psi_dot -> 0), ``at_C`` (printed right side at U = C), ``n``, finding (65).
     """
     p64, p65 = printed(64), printed(65)
-    ns = no_slip()
-    ui = S.u_i
-    d = sp.Matrix([S.dx, S.dy])
-    c_dot = -S.psi_dot * E(SYMBOLIC) * (ui + d)                       # from u_dot = 0 with u_c = u_i + d_i
-    g65 = sp.factor(sp.expand(ns.g.subs({S.x_dot: c_dot[0], S.y_dot: c_dot[1]}, simultaneous=True)))
-    beta_true = sp.atan2(ui[1], ui[0])
-    true_ok = symbolic_equal(g65.subs(ns.beta, beta_true), 0)
+    true_ok = symbolic_equal(g65.subs(beta, beta_true), 0)
     a = sp.Symbol("a", positive=True)
     on_axis = symbolic_equal(p65.expr.rhs.subs({S.u_c[0]: a, S.u_c[1]: 0}), sp.cos(beta_true))
     exact = paper_robot("centred", L=1, r=1, exact=True)
@@ -132,7 +132,7 @@ def rotation_angles(n=2000, seed=SEED, eps=1e-7):
         u_i = U - sp.Matrix(unit.position)
         sub = {S.u_c[0]: U[0], S.u_c[1]: U[1], S.u_i[0]: u_i[0], S.u_i[1]: u_i[1]}
         b_pr = sp.acos(sp.nsimplify(p65.expr.rhs.subs(sub)))
-        slips = [float(g65.subs(sub).subs({ns.beta: s * b_pr, S.psi_dot: 1})) for s in (1, -1)]
+        slips = [float(g65.subs(sub).subs({beta: s * b_pr, S.psi_dot: 1})) for s in (1, -1)]
         rows.append({"wheel": i, "printed": float(b_pr * 180 / sp.pi),
                      "derived": float(beta_true.subs(sub) * 180 / sp.pi),
                      "slip_plus": slips[0], "slip_minus": slips[1]})
@@ -156,25 +156,25 @@ def rotation_angles(n=2000, seed=SEED, eps=1e-7):
     cos_x = evaluate(p65.expr.rhs, (*S.u_c, *S.u_i), uc_x[:, None, 0], uc_x[:, None, 1], ui_x[..., 0], ui_x[..., 1])
     b_x = np.sign(ui_x[..., 1]) * np.arccos(np.clip(cos_x, -1, 1))
     reports = {"printed (65)": feasibility(b_pr, Tw), "derived": feasibility(b_tr, Tw),
-               "printed, U on the positive x-axis": feasibility(b_x, Tx)}
+               "printed, where its convention holds": feasibility(b_x, Tx)}
     dev = float(np.max(np.abs(mod_pi(steering_angles(bot, Tw) - b_tr))))
     res = max(reports["derived"]["max_residual"], dev)
     tan_beta = p64.expr[1] / p64.expr[0]
     lim = sp.limit(tan_beta, S.psi_dot, 0)
     T_ = sp.Symbol("T")
-    tan60 = sp.solve(ns.g.subs(S.psi_dot, 0).subs(sp.sin(ns.beta), T_ * sp.cos(ns.beta)), T_)[0]
+    tan60 = sp.solve(g.subs(S.psi_dot, 0).subs(sp.sin(beta), T_ * sp.cos(beta)), T_)[0]
     small = Tw.copy()
     small[:, 0] = eps
     dev_lim = float(np.max(np.abs(mod_pi(steering_angles(bot, small) - steering_angles(bot, small * [0, 1, 1])))))
     radial = float(np.max(np.abs(mod_pi(steering_angles(bot, [1.0, 0.0, 0.0]) - np.arctan2(D[:, 1], D[:, 0])))))
     limit_ok = symbolic_equal(lim, tan60) and dev_lim < 100 * eps and radial < TOL
     holds = reports["printed (65)"]["admissible"] == 1.0
-    require(reports["printed, U on the positive x-axis"]["rank_F"] == {5}
-            and reports["printed, U on the positive x-axis"]["admissible"] == 1.0 and on_axis,
+    require(reports["printed, where its convention holds"]["rank_F"] == {5}
+            and reports["printed, where its convention holds"]["admissible"] == 1.0 and on_axis,
             "the printed (65) holds with U on the positive x-axis")
     proven = (true_ok and reports["derived"]["rank_F"] == {5} and reports["derived"]["admissible"] == 1.0
               and res < TOL and limit_ok)
-    return Derivation(g=g65, counterexample=rows, reports=reports, limit=lim, dev_lim=dev_lim, radial=radial,
+    return Derivation(counterexample=rows, reports=reports, limit=lim, dev_lim=dev_lim, radial=radial,
                       at_C=p65.expr.rhs.subs({S.u_c[0]: 0, S.u_c[1]: 0}), n=n, findings=[equation(
         65, holds, r"$g_i = \dot\psi(u_{iy}\cos\beta_i - u_{ix}\sin\beta_i)$ in rotation about U, zero for "
                    r"$\beta_i = \operatorname{atan2}(u_{iy}, u_{ix})$ (SymPy); at these angles all "
@@ -190,6 +190,6 @@ def rotation_angles(n=2000, seed=SEED, eps=1e-7):
         why=r"the printed formula gives the angle between $\overrightarrow{CU}$ and $\overrightarrow{P_iU}$; with "
             r"$\beta_i$ measured from the body axis $\mathbf i$ (11) the axle must be parallel to $\mathbf u_i$",
         convention=r"$\beta_i$ measured from the body axis $\mathbf i$ (11); the printed form holds only if $\beta_i$ "
-                   r"is measured from the line CU (U on the positive body $x$-axis), up to the sign that $\arccos$ "
+                   r"is measured from the line CU instead of the body axis, up to the sign that $\arccos$ "
                    r"loses",
         note="the printed form is undefined for a rotation about C, where the corrected rule makes every axle radial")])
