@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import base64
 import csv
+import fcntl
 import json
 import re
 import shutil
@@ -77,8 +78,22 @@ def _cell(kind, src, tags=()):
 
 
 @pytest.fixture(scope="module")
-def project(tmp_path_factory):
-    root = tmp_path_factory.mktemp("project")
+def project(tmp_path_factory, worker_id):
+    """The fixture project, built once per run: pytest-xdist's workers share it (a lock, then a marker)."""
+    if worker_id == "master":
+        return build_project(tmp_path_factory.mktemp("project"))
+    shared = tmp_path_factory.getbasetemp().parent / "report-content-project"
+    with open(shared.with_suffix(".lock"), "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)                  # the other worker waits for the build
+        if not (shared / "built").exists():
+            shutil.rmtree(shared, ignore_errors=True)
+            shared.mkdir()
+            build_project(shared)
+            (shared / "built").touch()
+    return shared
+
+
+def build_project(root: Path) -> Path:
     nb = nbformat.v4.new_notebook()
     nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3", "language": "python"}
     nb.cells = [

@@ -17,6 +17,7 @@ With isotropic Jacobians these reduce to the paper's (49)-(50) and (55)-(57).
 """
 from __future__ import annotations
 
+import contextlib
 import functools
 from dataclasses import dataclass
 
@@ -91,12 +92,54 @@ class _Constants:
     passive: bool
 
 
+#: robot id -> (robot, its units, its constants) while :func:`constants_kept` runs
+_KEPT: dict = {}
+
+
+@contextlib.contextmanager
+def constants_kept(robot):
+    r"""Within the block, the kinematic constants of ``robot`` come from the model once (a simulation's steps).
+
+    Outside it they come from the model at every call; inside, a robot given other units computes
+    them again.
+
+    Parameters
+    ----------
+    robot : Robot
+        The robot whose constants (:math:`\mathbf J_1`, the units' blocks) are kept.
+
+    Yields
+    ------
+    None
+    """
+    key = id(robot)
+    before = _KEPT.get(key)
+    _KEPT[key] = (robot, robot.wheels, None)
+    try:
+        yield
+    finally:
+        if before is None:
+            _KEPT.pop(key, None)
+        else:
+            _KEPT[key] = before
+
+
 def _constants(robot):
     r"""The constants of forward and inverse kinematics, from the model at every call.
 
     Their pseudo-inverses are remembered by value (:func:`_pinv_rank`), so a call on one
-    configuration stays cheap (the simulation makes one per integration stage).
+    configuration stays cheap (the simulation makes one per integration stage, inside
+    :func:`constants_kept`, which computes the rest once).
     """
+    kept = _KEPT.get(id(robot))
+    if kept is None or kept[0] is not robot or kept[1] is not robot.wheels:
+        return _from_model(robot)
+    if kept[2] is None:
+        _KEPT[id(robot)] = kept = (robot, robot.wheels, _from_model(robot))
+    return kept[2]
+
+
+def _from_model(robot):
     w, n = robot.w, robot.n_rates
     check("memory_mb", 3 * 8 * 2 * w * n / 2 ** 20, f"the kinematics of this robot ({w} wheel units, {n} rates)")
     J1 = robot.J1(backend=NUMERIC)

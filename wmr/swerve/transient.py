@@ -32,6 +32,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..analysis.kinematics import constants_kept
 from ..errors import InputTypeError, InputValueError
 from ..model import validation as V
 from ..model.platform import wrap_angle
@@ -287,7 +288,7 @@ def resteer_transient(robot: Robot, profile: TwistProfile, strategy: str = "robo
     step = rate * dt
     k = 0
     try:
-        with np.errstate(over="ignore", invalid="ignore"):
+        with np.errstate(over="ignore", invalid="ignore"), constants_kept(robot):
             for k, t_k in enumerate(tw):                          # time steps (each kernel call is batched)
                 target, speed = _targets(robot, strategy, t_k, beta[k])
                 beta[k + 1] = beta[k] + np.clip(wrap_angle(target - beta[k]), -step, step)   # |beta_dot| <= omega_s
