@@ -491,6 +491,7 @@ NOT_FUZZED = {
     "trig_combination": "kernel of Robot.J2/F/J and twist_constraints, fuzzed through them",
     "is_symbolic": "a predicate: any value is a valid question",
     "CampionClass": "the result type of campion_class, fuzzed through it",
+    "Dimensions": "a TypedDict (the lengths paper_robot takes, for type checkers): no code runs; paper_robot is fuzzed",
     "search": "seconds per call (a search over designs); its arguments are checked in tests/test_design.py",
     "landscape": "seconds per call (two slices of the design space); its numbers are checked in tests/test_design.py",
     "WorstCase": "result type of worst_kappa", "DesignSearch": "result type of search",
