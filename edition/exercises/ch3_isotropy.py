@@ -41,7 +41,7 @@ SYMBOLS_3_2 = (S.r, S.b, S.beta_i)
 R_3_3 = 0.1
 TOL_3_3 = sig_figs(3)
 _WHAT_3_1 = "a pair `(points, L)`: the three mount points (an array of shape (3, 2), metres) and $L$ in metres"
-_WHAT_3_2 = r"the $2\times2$ matrix $\Upsilon_i$ (a SymPy `Matrix`)"
+_WHAT_3_2 = r"the $2\times2$ SymPy `Matrix` $\Upsilon_i$"
 
 
 def _placement(answer):
@@ -121,8 +121,11 @@ def dual_upsilon(answer):
     if equivalent(M, offset * offset.T) or equivalent(M, sp.eye(2) * S.r**2):
         return wrong(r"That is the $\Upsilon_i$ of an offset wheel; a dual-wheel unit has its own block "
                      r"$\mathbf B$ (both wheels roll, neither is steered).")
-    return wrong(r"Compute $\mathbf B$ with `wmr.DualWheel((0, 0), r=S.r, b=S.b).block(S.beta_i)` and multiply by its "
-                 r"transpose.")
+    if not equivalent(M, M.T):
+        return wrong(r"Your matrix is not symmetric, and $\mathbf B\mathbf B^{\mathrm T}$ always is: form (41) from "
+                     r"the dual-wheel unit's block $\mathbf B$ and its transpose.")
+    return wrong(r"Not $\mathbf B\mathbf B^{\mathrm T}$ of a dual-wheel unit: build its block $\mathbf B$ from the "
+                 r"no-slip rows of its two wheels (Chapter 1: each rolls at $\pm b$ along the axle), then form (41).")
 
 
 @exercise("3.3", answer="a list of offsets $d$ in metres", tolerance=TOL_3_3)

@@ -112,6 +112,42 @@ def _gap_to_lines_through(beta, points, X, along):
     return max([angle_gap([beta[k]], [want[k]]) for k in range(len(beta)) if far[k]], default=0.0)
 
 
+def _circumcentre(P):
+    """Centre of the circle through the three points ``P`` (3, 2)."""
+    A = 2 * (P[1:] - P[0])
+    b = np.sum(P[1:] ** 2, axis=1) - np.sum(P[0] ** 2)
+    return np.linalg.solve(A, b)
+
+
+def _nearest_turning_point(beta, P):
+    r"""How far (radians, the largest over the wheels) the axle lines of ``beta`` are from the nearest configuration
+    that is singular and mobile, and its turning point.
+
+    Three centred wheels are singular and mobile exactly when their axles meet at a point :math:`V` of the circle
+    through the mount points (the wheel-plane lines, perpendicular to the axles at :math:`P_k`, then meet at the
+    antipode :math:`D_P`, by Thales). The answer passes when some such :math:`V` has every axle within the stated
+    tolerance: a rounded right answer passes wherever on the circle it lies, which a fit of one point through the
+    rounded lines does not guarantee (a wheel near :math:`V` swings its axle far for a small move of :math:`V`).
+    """
+    c = _circumcentre(P)
+    R = float(np.linalg.norm(P[0] - c))
+    lo, hi, best = 0.0, 2 * np.pi, (np.inf, c)
+    for _ in range(6):                            # a grid over the circle, then finer grids around the best point
+        t = np.linspace(lo, hi, 721)
+        V = c + R * np.stack([np.cos(t), np.sin(t)], -1)                       # (n, 2)
+        w = V[:, None, :] - P[None]                                           # (n, 3, 2)
+        want = np.arctan2(w[..., 1], w[..., 0])
+        d = np.abs(np.mod(beta - want + np.pi / 2, np.pi) - np.pi / 2)
+        d[np.linalg.norm(w, axis=-1) < 1e-9 * R] = 0.0                        # a wheel at V turns on the spot
+        g = d.max(axis=1)
+        k = int(np.argmin(g))
+        if g[k] < best[0]:
+            best = (float(g[k]), V[k])
+        step = t[1] - t[0]
+        lo, hi = t[k] - 2 * step, t[k] + 2 * step
+    return best
+
+
 @exercise("4.2", answer="three steering angles in degrees", tolerance=TOL_4_2, units={"beta_deg": "deg"})
 def mobile_and_singular(beta_deg):
     r"""Exercise 4.2: angles at which :math:`\mathbf J` of :func:`robot_4_2` is singular although the robot can turn
@@ -129,20 +165,20 @@ def mobile_and_singular(beta_deg):
     beta = answers.angles(beta_deg, 3, "deg")
     P = np.array(POINTS_4_2)
     axle = np.stack([np.cos(beta), np.sin(beta)], -1)                # i_k: normal of the wheel-plane line
-    roll = np.stack([-np.sin(beta), np.cos(beta)], -1)               # j_k: normal of the axle line
     if all(angle_gap([beta[k]], [beta[0]]) <= 2 * TOL_4_2.abs for k in (1, 2)):
         return wrong(r"All wheel planes are parallel: $\mathbf J$ is singular and the robot can translate, but it "
                      "cannot turn about a point at these angles. Find angles at which it turns.")
     tol = TOL_4_2.abs * 1.0000001
+    gap, V = _nearest_turning_point(beta, P)
+    if gap <= tol:                                # exact angles within the tolerance turn about V on the circle
+        D = 2 * _circumcentre(P) - V              # ... and their wheel-plane lines meet at its antipode
+        return right(f"The wheel-plane lines meet at $D_P = ({number(D[0])}, {number(D[1])})$, so "
+                     f"$\\det\\mathbf J = 0$, and the axles meet at $({number(V[0])}, {number(V[1])})$: the robot can "
+                     r"turn about that point (rank $\mathbf F = 5$).")
     D, miss = _meet(axle, P)                      # where the wheel-plane lines (nearly) meet
     if _gap_to_lines_through(beta, P, D, "plane") > tol:
         return wrong(r"$\det\mathbf J \neq 0$: the three wheel-plane lines do not meet in one point (they miss by "
                      f"${number(miss)}$ m), so $\\mathbf J$ is not singular here.")
-    V, _ = _meet(roll, P)                         # where the axle lines (nearly) meet
-    if _gap_to_lines_through(beta, P, V, "axle") > tol:
-        return wrong(f"$\\mathbf J$ is singular (the wheel-plane lines meet at $({number(D[0])}, {number(D[1])})$), "
-                     r"but the axles do not meet in one point: rank $\mathbf F = 6$, the robot cannot move.")
-    return right(f"The wheel-plane lines meet at $D_P = ({number(D[0])}, {number(D[1])})$, so $\\det\\mathbf J = 0$, "
-                 f"and the axles meet at $({number(V[0])}, {number(V[1])})$: the robot can turn about that point "
-                 r"(rank $\mathbf F = 5$).")
+    return wrong(f"$\\mathbf J$ is singular (the wheel-plane lines meet at $({number(D[0])}, {number(D[1])})$), "
+                 r"but the axles do not meet in one point: rank $\mathbf F = 6$, the robot cannot move.")
 

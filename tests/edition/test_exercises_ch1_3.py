@@ -147,7 +147,10 @@ TABLES = {
         right_case("simplified", UPS.applyfunc(sp.trigsimp)),
         wrong_case("B^T B", B.T * B, says="other way round"),
         wrong_case("the offset wheel's Upsilon", OFFSET_UPS * OFFSET_UPS.T, says="offset wheel"),
-        wrong_case("trivial: zero", sp.zeros(2, 2), says="multiply", never_says="r^{2}"),
+        wrong_case("trivial: zero", sp.zeros(2, 2), says="no-slip rows", never_says="r^{2}"),
+        # a wrong answer is told what to do, never shown the solution's code
+        wrong_case("the identity", sp.eye(2), says="no-slip rows", never_says="DualWheel"),
+        wrong_case("not symmetric", sp.Matrix([[1, 2], [3, 4]]), says="not symmetric", never_says="DualWheel"),
         malformed_case("a 2-vector", sp.Matrix([1, 2]), says="shape"),
         missing_case(),
     ]),

@@ -70,6 +70,10 @@ TABLE_4_2 = [
     right_case("D_P on the circle", _beta_4_2(), says="can turn about"),
     right_case("another point of the circle", _beta_4_2(2.5)),
     right_case("rounded to 0.01 degree", rounded(_beta_4_2(), TOL_4_2)),
+    # rounding moves each line by up to 0.005 degree: it passes wherever on the circle D_P lies, also where a wheel
+    # is close to the turning point (a student's rounded solution was once refused there)
+    *[right_case(f"rounded to 0.01 degree, D_P at {a} rad on the circle", np.round(_beta_4_2(a), 2))
+      for a in np.linspace(0.0, 2 * np.pi, 24, endpoint=False).round(3)],
     right_case("each wheel turned round", _beta_4_2() + 180.0),
     wrong_case("trivial: [30, 30, 30]", [30.0, 30.0, 30.0], says="parallel", never_says="can turn about"),
     wrong_case("trivial: all zero", [0.0, 0.0, 0.0], says="cannot turn about a point"),
