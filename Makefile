@@ -1,8 +1,11 @@
 # wmr — executable edition of Leow, Low & Loh (2002).
 #
 #   make test      set up .venv + TeX, build the report and the student edition (cached), run pytest
-#                  (two workers), ruff and mypy, and fail if the build modified files that git tracks
+#                  (two workers; tests/ and tests/edition/), ruff and mypy, make release and make docs
+#                  (each cached), and fail if the build modified files that git tracks
 #   make report    build/report.html (self-contained, offline math) + build/report.pdf
+#   make docs      build/docs/html: the API reference and the user guide
+#   make release   the sdist and the wheel, the wheel tested in a fresh venv outside the repository
 #
 # This Makefile is the build: it knows every file, what it is made from, and runs two steps at a
 # time (-j2). Each step is one call of tools/build (python -m tools.build COMMAND), the glue around
@@ -35,12 +38,17 @@ FINDINGS := $(NB)/findings.ipynb
 CHAPTERS := $(filter-out $(FINDINGS),$(sort $(wildcard $(NB)/*.ipynb)))
 LESSONS  := $(sort $(wildcard $(NB)/[0-9][0-9]_*.ipynb))
 EXECUTED := $(CHAPTERS:$(NB)/%=$(B)/notebooks/%)
+# chapters beyond the paper: lessons (executed, student edition, assignments), not chapters of the paper's report
+BEYOND   := $(wildcard $(NB)/10_robot_classes.ipynb)
+REPORTED := $(filter-out $(BEYOND:$(NB)/%=$(B)/notebooks/%),$(EXECUTED))
 STUDENT  := $(LESSONS:$(NB)/%=$(B)/student/%)
 STUDENT_RUN := $(LESSONS:$(NB)/%=$(B)/student-run/notebooks/%)
 FIGURES  := $(wildcard $(WMR_ROOT)/figures/*)
 TOOL     := $(wildcard $(CURDIR)/tools/build/*.py)
 TEMPLATES := $(wildcard $(CURDIR)/tools/build/templates/*/*)
 LINTED   := $(wildcard $(addprefix $(WMR_ROOT)/,wmr edition tools tests))
+# make test also checks the release and the docs of this repository (not of another tree, WMR_ROOT=...)
+RELEASED := $(if $(filter $(CURDIR),$(WMR_ROOT)),yes)
 # what make test builds before pytest runs (the tests find it cached)
 TEST_BUILD = $(B)/report.html $(B)/report.pdf $(STUDENT_RUN)
 
@@ -60,7 +68,7 @@ TEX_DEBS := texlive-xetex texlive-fonts-recommended texlive-plain-generic \
             texlive-latex-extra lmodern fonts-lmodern pandoc poppler-utils
 TEX_CMDS := xelatex pandoc pdftotext pdfinfo
 
-.PHONY: help venv tex browser test report figures notebooks publish student assignments bench clean lock FORCE
+.PHONY: help venv tex browser test report figures notebooks publish student assignments bench clean lock docs release FORCE
 
 help: ## show this help
 	@echo "wmr — reproducible edition of Leow, Low & Loh (2002)"
@@ -68,7 +76,7 @@ help: ## show this help
 	@grep -E '^[a-z]+:.*## ' $(MAKEFILE_LIST) | sed -E 's/^([a-z]+):.*## (.*)/  make \1\t\2/' | expand -t 18
 
 venv: ## (internal) create/refresh .venv from environment.lock, editable install of wmr, the edition importable
-	@want="$$({ sha256sum environment.lock pyproject.toml; echo "edition on sys.path (.pth) v1"; } | sha256sum | cut -d' ' -f1)"; \
+	@want="$$({ sha256sum environment.lock pyproject.toml wmr/_version.py; echo "edition on sys.path (.pth) v1"; } | sha256sum | cut -d' ' -f1)"; \
 	have="$$(cat $(STAMP) 2>/dev/null || true)"; \
 	if [ -x $(VPY) ] && [ "$$want" = "$$have" ]; then exit 0; fi; \
 	if command -v flock >/dev/null 2>&1; then exec 9>.venv.lock; \
@@ -155,10 +163,10 @@ $(B)/commit: FORCE
 	[ -z "$${SOURCE_DATE_EPOCH:-}" ] || c="$${c% *} $$SOURCE_DATE_EPOCH"; \
 	c="$$c$${d:+ +}"; [ "$$c" = "$$(cat $@ 2>/dev/null)" ] || echo "$$c" > $@
 
-$(B)/report.ipynb: $(B)/notebooks/findings.ipynb $(EXECUTED) $(B)/commit $(FIGURES) $(TOOL)
-	@$(BUILD) assemble $@ $(B)/commit $(WMR_ROOT)/figures $(B)/notebooks/findings.ipynb $(EXECUTED)
+$(B)/report.ipynb: $(B)/notebooks/findings.ipynb $(REPORTED) $(B)/commit $(FIGURES) $(TOOL)
+	@$(BUILD) assemble $@ $(B)/commit $(WMR_ROOT)/figures $(B)/notebooks/findings.ipynb $(REPORTED)
 
-$(B)/report.html: $(B)/report.ipynb $(TEMPLATES)
+$(B)/report.html: $(B)/report.ipynb $(TEMPLATES) $(CURDIR)/tools/mathjax.py
 	@$(BUILD) html $< $@
 
 $(B)/report.pdf: $(B)/report.ipynb $(TEMPLATES)
@@ -175,7 +183,7 @@ $(B)/student-run/notebooks/%.ipynb: $(B)/student/%.ipynb FORCE
 	@$(BUILD) execute $< $@
 
 # ------------------------------------------------------------------------------------- the tests
-test: venv tex browser ## build (cached), pytest -n 2, ruff, mypy; fail if the build modified tracked files
+test: venv tex browser ## build (cached), pytest -n 2 (tests/ and tests/edition/), ruff, mypy, release, docs; fail if the build modified tracked files
 	@mkdir -p $(B); $(GIT_STATE) > $(B)/git-before
 	@$(LOCK) exec $(SUB) $(TEST_BUILD)
 	@rc=0; \
@@ -185,11 +193,21 @@ test: venv tex browser ## build (cached), pytest -n 2, ruff, mypy; fail if the b
 	  $(VPY) -m ruff check --quiet $(LINTED) || rc=1; \
 	  $(VPY) -m mypy --no-error-summary $(LINTED) || rc=1; \
 	fi; \
+	if [ -n "$(RELEASED)" ]; then \
+	  $(PDEATH) $(VPY) -m tools.release_check || rc=1; \
+	  $(PDEATH) $(VPY) -m tools.docs || rc=1; \
+	fi; \
 	if ! $(GIT_STATE) | diff $(B)/git-before - > $(B)/git-changed; then \
 	  echo "[git] FAILED: the build modified files that git tracks (or left new ones it does not ignore):"; \
 	  sed -n 's/^[<>] ...//p' $(B)/git-changed | cut -d' ' -f1 | sort -u | sed 's/^/  /'; rc=1; \
 	else echo "[git] the build left git status as it found it"; fi; \
 	exit $$rc
+
+release: venv ## sdist + wheel; the wheel in a fresh venv outside the repo runs the library tests, the CLI, the README (cached)
+	@$(PDEATH) $(VPY) -m tools.release_check
+
+docs: venv ## build/docs/html: API reference + user guide (Sphinx, numpydoc, MathJax from its release; warnings are errors)
+	@$(PDEATH) $(VPY) -m tools.docs
 
 bench: venv ## time the batched kernels against floors and peers (tools/bench.py)
 	@$(VPY) tools/bench.py

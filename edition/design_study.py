@@ -184,7 +184,9 @@ def singular_rotation(U, length=0.6, width=0.4):
     bot = swerve(length, width)
     if np.min(np.linalg.norm(bot.mount_points - U, axis=1)) <= TOL_8_3.abs:
         return wrong("U is a module's mount point: that module does not roll. Choose another point.")
-    c, R = mount_circle(bot)
+    circle = mount_circle(bot)
+    assert circle is not None                      # four modules on a rectangle: concyclic
+    c, R = circle
     gap = abs(float(np.linalg.norm(U - c)) - R)
     if gap <= TOL_8_3.allowed(R):
         return right(r"U lies on the circle through the four modules (to the millimetre), where "

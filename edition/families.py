@@ -304,6 +304,7 @@ def families(robot=None, n=72, exact=True):
 
     poly, c, s = det_J_polynomial(exact_bot)
     for f in out:
+        assert f.samples is not None                                 # every family above is sampled
         dj = np.abs(det_J(num, f.samples))
         f.det_J_max = float(dj.max())
         ranks = rank_F(num, f.samples)
@@ -313,8 +314,8 @@ def families(robot=None, n=72, exact=True):
         kinds: dict[str, int] = {}
         assert f.samples is not None
         for b in f.samples[:: max(1, len(f.samples) // 24)]:
-            k = classify(num, b).family
-            kinds[k] = kinds.get(k, 0) + 1
+            fam = classify(num, b).family
+            kinds[fam] = kinds.get(fam, 0) + 1
         f.classified_as = ", ".join(f"{k} ({v})" for k, v in sorted(kinds.items()))
         if exact and f.exact is not None:
             f.det_J_exact_zero = exact_zero(poly, c, s, f.exact())

@@ -78,4 +78,4 @@ def test_choose():
     assert B.choose(1.0, x) is SYMBOLIC
     assert B.choose(x, backend=NUMERIC) is NUMERIC
     with pytest.raises(TypeError, match="backend.*'numpy'"):
-        B.choose(1.0, backend="numpy")
+        B.choose(1.0, backend="numpy")  # type: ignore[arg-type]

@@ -77,7 +77,7 @@ def test_a_bad_urdf_is_one_line_with_its_line(capsys, tmp_path):
 def test_a_missing_extra_is_one_line(capsys, monkeypatch):
     monkeypatch.setitem(sys.modules, "yaml", None)
     code, _, err = _run(capsys, "analyze", ROOT / "examples" / "ros2" / "diff_drive.yaml")
-    assert code == 2 and len(err.splitlines()) == 1 and "pip install 'wmr[ros]'" in err
+    assert code == 2 and len(err.splitlines()) == 1 and "pip install 'wmr-kinematics[ros]'" in err
 
 
 def test_import_wmr_needs_none_of_the_extras():

@@ -45,7 +45,7 @@ def test_a_twist_object_is_never_read_as_numbers_where_none_is_expected():
     from wpimath.kinematics import ChassisSpeeds
     bot = wmr.load(SWERVE)
     with pytest.raises(InputError, match="ChassisSpeeds"):
-        wmr.steering_angles(bot, [0.8, 1.0, 0.5], current=ChassisSpeeds(1.0, 2.0, 3.0))
+        wmr.steering_angles(bot, [0.8, 1.0, 0.5], current=ChassisSpeeds(1.0, 2.0, 3.0))  # type: ignore[arg-type]
 
 
 def test_twist2d_and_a_list_of_chassis_speeds():

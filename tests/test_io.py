@@ -50,7 +50,7 @@ def test_load_reads_the_schema(tmp_path):
 
 def test_integers_are_numbers():
     bot = loads('[[wheel]]\ntype = "offset"\nposition = [1, 0]\nradius = 1\noffset = 0\n')
-    assert bot.wheels[0].position == (1.0, 0.0) and bot.wheels[0].d == 0.0
+    assert bot.wheels[0].position == (1.0, 0.0) and bot.wheels[0].d == 0.0  # type: ignore[attr-defined]
 
 
 @pytest.mark.parametrize("robot", [wmr.paper_robot("centred", L=0.3, r=0.05),
@@ -73,14 +73,14 @@ def test_round_trip_fixed_and_swedish(tmp_path):
     dump(bot, tmp_path / "b.toml")
     back = load(tmp_path / "b.toml")
     _same_matrices(bot, back)
-    assert np.isclose(back.wheels[2].roller, np.pi / 4) and np.isclose(back.wheels[1].angle, 0.3)
+    assert np.isclose(back.wheels[2].roller, np.pi / 4) and np.isclose(back.wheels[1].angle, 0.3)  # type: ignore[attr-defined]
 
 
 def test_dump_rejects_what_is_not_a_robot():
     with pytest.raises(TypeError, match="robot"):
-        dump("robot")
+        dump("robot")  # type: ignore[arg-type]
     with pytest.raises(TypeError, match="path"):
-        dump(wmr.paper_robot(), path=3)
+        dump(wmr.paper_robot(), path=3)  # type: ignore[arg-type]
 
 
 # ------------------------------------------------------------------------------ malformed files
@@ -176,9 +176,9 @@ def test_not_utf8(tmp_path):
 
 def test_bad_arguments_are_type_errors(tmp_path):
     with pytest.raises(TypeError, match="path"):
-        load(3)
+        load(3)  # type: ignore[arg-type]
     with pytest.raises(TypeError, match="text"):
-        loads(b"x")
+        loads(b"x")  # type: ignore[arg-type]
     with pytest.raises(FileNotFoundError):
         load(tmp_path / "nowhere.toml")
 

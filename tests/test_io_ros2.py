@@ -257,5 +257,5 @@ def test_the_controller_manager_names_a_controller_without_parameters(tmp_path):
 
 def test_a_missing_pyyaml_names_the_extra(monkeypatch):
     monkeypatch.setitem(__import__("sys").modules, "yaml", None)
-    with pytest.raises(MissingDependencyError, match=r"pip install 'wmr\[ros\]'"):
+    with pytest.raises(MissingDependencyError, match=r"pip install 'wmr-kinematics\[ros\]'"):
         load(ROS2 / "diff_drive.yaml")

@@ -40,8 +40,8 @@ def test_diffbot_urdf_is_a_differential_drive_with_a_passive_castor():
     assert [u.kind for u in bot.wheels] == ["fixed", "fixed", "offset"]
     np.testing.assert_allclose(bot.mount_points, [[0, 0.2], [0, -0.2], [-0.3, 0]], atol=1e-12)
     assert [float(u.r) for u in bot.wheels] == [0.08, 0.08, 0.03]
-    assert [float(u.angle) for u in bot.wheels[:2]] == [np.pi / 2, np.pi / 2]      # rpy -1.5708: snapped
-    assert float(bot.wheels[2].d) == pytest.approx(0.03, abs=1e-12)
+    assert [float(u.angle) for u in bot.wheels[:2]] == [np.pi / 2, np.pi / 2]  # type: ignore[attr-defined]  # snapped
+    assert float(bot.wheels[2].d) == pytest.approx(0.03, abs=1e-12)  # type: ignore[attr-defined]
     assert [u.driven for u in bot.wheels] == [(True,), (True,), (False, False)]   # from <ros2_control>
     assert wmr.campion_class(bot).label == "(2,0)"
 
@@ -226,5 +226,5 @@ def test_a_steering_joint_over_three_wheels(tmp_path):
 
 def test_a_missing_yourdfpy_names_the_extra(tmp_path, monkeypatch):
     monkeypatch.setitem(__import__("sys").modules, "yourdfpy", None)
-    with pytest.raises(MissingDependencyError, match=r"pip install 'wmr\[urdf\]'"):
+    with pytest.raises(MissingDependencyError, match=r"pip install 'wmr-kinematics\[urdf\]'"):
         load(ROOT / "examples" / "urdf" / "swerve.urdf")

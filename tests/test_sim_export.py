@@ -201,7 +201,7 @@ def test_bad_input_is_named():
     with pytest.raises(InputTypeError, match="unknown parameter"):
         to_mjcf(robot, slidng=1.0)
     with pytest.raises(InputTypeError, match="params"):
-        to_mjcf(robot, params={"sliding": 1.0})
+        to_mjcf(robot, params={"sliding": 1.0})  # type: ignore[arg-type]
     with pytest.raises(InputValueError, match="beta"):
         to_mjcf(robot, beta=[0.0, 0.0])
 

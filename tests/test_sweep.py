@@ -76,6 +76,7 @@ def test_sweep_equals_direct_evaluation(kind, name):
     want = _direct(robot, name, beta, L)
     res = sweep(robot, name, grid, quantiles=QS, chunk=97, keep=True)
     an = ANALYSES[name]
+    assert res.values is not None                                       # keep=True
     assert res.count == len(beta) == 11 ** 3
     fin = np.isfinite(want)
     assert np.array_equal(np.isinf(res.values), ~fin)
@@ -109,6 +110,7 @@ def test_result_does_not_depend_on_chunks():
             first.min, first.max, first.worst_index, first.quantiles, first.infinite)
     a = sweep(robot, "det_J", Grid(9), chunk=10, keep=True)
     b = sweep(robot, "det_J", Grid(9), chunk=729, keep=True)
+    assert a.values is not None and b.values is not None
     assert np.array_equal(a.values, b.values) and a.quantiles == b.quantiles and a.worst_index == b.worst_index
 
 
@@ -165,6 +167,7 @@ def test_sweep_on_dask_equals_in_process():
         remote = sweep(robot, "kappa_J", grid, chunk=100, keep=True, client=client,
                        progress=lambda done, total: seen.append(done))
         ranks = sweep(robot, "rank_F", grid, chunk=64, client=client)
+    assert remote.values is not None and local.values is not None
     assert np.array_equal(remote.values, local.values)
     assert (remote.min, remote.max, remote.worst_index, remote.quantiles, remote.infinite) == (
         local.min, local.max, local.worst_index, local.quantiles, local.infinite)
@@ -173,8 +176,8 @@ def test_sweep_on_dask_equals_in_process():
 
 
 @pytest.mark.parametrize("call, exc, words", [
-    (lambda r: sweep("robot", "rank_F", Grid(3)), TypeError, "robot"),
-    (lambda r: sweep(r, 3, Grid(3)), TypeError, "analysis"),
+    (lambda r: sweep("robot", "rank_F", Grid(3)), TypeError, "robot"),  # type: ignore[arg-type]
+    (lambda r: sweep(r, 3, Grid(3)), TypeError, "analysis"),  # type: ignore[arg-type]
     (lambda r: sweep(r, "rank", Grid(3)), ValueError, "analysis"),
     (lambda r: sweep(wmr.paper_robot("offset"), "det_J", Grid(3)), ValueError, "square"),
     (lambda r: sweep(r, "rank_F", "grid"), TypeError, "angles"),
@@ -183,8 +186,8 @@ def test_sweep_on_dask_equals_in_process():
     (lambda r: sweep(r, "rank_F", np.zeros((0, 3))), ValueError, "angles"),
     (lambda r: sweep(r, "rank_F", Grid(3), quantiles=[1.5]), ValueError, "quantiles"),
     (lambda r: sweep(r, "rank_F", Grid(3), chunk=0), ValueError, "chunk"),
-    (lambda r: sweep(r, "rank_F", Grid(3), chunk=2.5), TypeError, "chunk"),
-    (lambda r: sweep(r, "rank_F", Grid(3), progress=5), TypeError, "progress"),
+    (lambda r: sweep(r, "rank_F", Grid(3), chunk=2.5), TypeError, "chunk"),  # type: ignore[arg-type]
+    (lambda r: sweep(r, "rank_F", Grid(3), progress=5), TypeError, "progress"),  # type: ignore[arg-type]
     (lambda r: sweep(r, "rank_F", Grid(3), client=object()), TypeError, "client"),
     (lambda r: sweep(r, "kappa_J", Grid(3), L=-1.0), ValueError, "L"),
     (lambda r: sweep(r, "rank_F", Grid((3, 3))), ValueError, "steps"),

@@ -97,10 +97,10 @@ def test_figure_draws_every_run(turn):
 
 
 @pytest.mark.parametrize("call, name", [
-    (lambda: T.resteer_transient(_bot(), "profile"), "profile"),
+    (lambda: T.resteer_transient(_bot(), "profile"), "profile"),  # type: ignore[arg-type]
     (lambda: T.resteer_transient(_bot(), T.direction_change(), strategy="wpilib"), "strategy"),
     (lambda: T.resteer_transient(_bot(), T.direction_change(), steer_rate=0.0), "steer_rate"),
-    (lambda: T.resteer_transient(_bot(), T.direction_change(), cosine="yes"), "cosine"),
+    (lambda: T.resteer_transient(_bot(), T.direction_change(), cosine="yes"), "cosine"),  # type: ignore[arg-type]
     (lambda: T.resteer_transient(_bot(), T.direction_change(), beta0=[0.0]), "beta0"),
     (lambda: T.resteer_transient(wmr.paper_robot("dual"), T.direction_change()), "robot"),
     (lambda: T.direction_change(t_change=2.0, t_end=1.0), "t_change"),

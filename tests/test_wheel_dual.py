@@ -19,7 +19,8 @@ def test_block_is_no_slip_and_steering_is_corrected_15(x, y, r, b, beta, seed):
     assert np.allclose(unit.block(beta) @ rates, want, atol=1e-12)
     psi_dot = np.random.default_rng(seed + 1).normal()
     assert np.isclose(unit.beta_rate(psi_dot, rates), phi_dot - psi_dot)
-    assert np.isclose(unit.steering_row() @ rates, phi_dot)            # c theta_dot = psi_dot + beta_dot
+    row = unit.steering_row()
+    assert row is not None and np.isclose(row @ rates, phi_dot)       # c theta_dot = psi_dot + beta_dot
 
 
 def test_equal_rates_drive_like_a_centred_wheel():

@@ -19,7 +19,7 @@ from wmr.model.wheels.joints import actuation
 
 from wheel_contract import CHECKS, check_declarations, check_kind, check_mechanism
 
-ROOT = Path(__file__).resolve().parent.parent
+PACKAGE = Path(wmr.__file__).resolve().parent        # the package under test (the repository's or a wheel's)
 KINDS = sorted(wheel_kinds())
 
 
@@ -273,11 +273,11 @@ print("``ball``" in kinds_table() and "``ball``" in wmr.model.wheels.__doc__)
 def test_a_new_kind_is_one_new_module(tmp_path):
     """Copy the package, add ``wmr/model/wheels/ball.py`` and nothing else: every part of wmr takes the new kind
     (wmr.sim refuses it with the reason its module gives)."""
-    shutil.copytree(ROOT / "wmr", tmp_path / "wmr", ignore=shutil.ignore_patterns("__pycache__"))
+    shutil.copytree(PACKAGE, tmp_path / "wmr", ignore=shutil.ignore_patterns("__pycache__"))
     (tmp_path / "wmr" / "model" / "wheels" / "ball.py").write_text(BALL)
     changed = sorted(str(p.relative_to(tmp_path / "wmr")) for p in (tmp_path / "wmr").rglob("*.py")
-                     if not (ROOT / "wmr" / p.relative_to(tmp_path / "wmr")).exists()
-                     or (ROOT / "wmr" / p.relative_to(tmp_path / "wmr")).read_bytes() != p.read_bytes())
+                     if not (PACKAGE / p.relative_to(tmp_path / "wmr")).exists()
+                     or (PACKAGE / p.relative_to(tmp_path / "wmr")).read_bytes() != p.read_bytes())
     assert changed == ["model/wheels/ball.py"]
     robot = tmp_path / "ball.toml"
     robot.write_text(DIFFERENTIAL_WITH_BALL)

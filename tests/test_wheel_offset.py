@@ -68,7 +68,7 @@ def test_dead_zone_and_isotropy_hints():
     assert wmr.OffsetWheel((0, 0), r=0.1, d=0.03).dead_zone() == 0.03
     assert wmr.OffsetWheel((0, 0), r=0.1, d=0.1).isotropy_advice() is None
     hint = wmr.OffsetWheel((0, 0), r=0.1, d=0.03).isotropy_advice()
-    assert hint.format(wheels="2") == "set offset = radius on wheel 2 (d = r, the paper's (46))"
+    assert hint is not None and hint.format(wheels="2") == "set offset = radius on wheel 2 (d = r, the paper's (46))"
 
 
 @pytest.mark.parametrize("kwargs, exc, shown", [

@@ -224,9 +224,9 @@ def kernel_rows(n, repeat, k, peer=200_000):
         from wmr.io import to_wpilib
         from wmr.io.wpilib import module_positions
         m = min(k, 2000)
-        ref = SwerveDrive4Odometry(to_wpilib(swerve), Rotation2d(0.0), module_positions(o_beta[0], o_travel[0]),
+        ref = SwerveDrive4Odometry(to_wpilib(swerve), Rotation2d(0.0), tuple(module_positions(o_beta[0], o_travel[0])),
                                    Pose2d())
-        poses = (ref.update(Rotation2d(float(odo.pose[j, 0])), module_positions(o_beta[j], o_travel[j]))
+        poses = (ref.update(Rotation2d(float(odo.pose[j, 0])), tuple(module_positions(o_beta[j], o_travel[j])))
                  for j in range(1, m))
         xy = [(0.0, 0.0)] + [(p.X(), p.Y()) for p in poses]
         return np.abs(np.array(xy) - odo.pose[:m, 1:]).max() <= 1e-12 * max(1.0, np.abs(odo.pose[:m, 1:]).max())

@@ -17,6 +17,7 @@ Examples
 1
 """
 from . import errors, swerve
+from ._version import __version__ as __version__  # one source: wmr/_version.py
 from .analysis.classes import campion_class
 from .analysis.isotropy import characteristic_length, is_isotropic
 from .analysis.kinematics import forward, inverse
@@ -44,4 +45,3 @@ __all__ = [
     "simulate", "sweep", "campion_class", "TOL", "NUMERIC", "SYMBOLIC", "conventions", "load", "dump",
     "swerve", "errors", "wheel_odometry",
 ]
-__version__ = "0.1.0"

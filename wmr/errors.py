@@ -13,7 +13,7 @@ caller expects (in the style of python-control's ``ControlArgument(TypeError)``)
   (wheels, configurations, memory), refused before the work starts;
 * :class:`MissingDependencyError` (an ``ImportError``): an optional package that a bridge needs
   (yourdfpy for URDF, PyYAML for ROS 2 parameters, robotpy-wpimath for WPILib) is not installed;
-  the message names the extra to install (``pip install 'wmr[urdf]'``).
+  the message names the extra to install (``pip install 'wmr-kinematics[urdf]'``).
 
 So ``except ValueError`` still catches a bad value, and ``except wmr.errors.InputError`` catches
 bad input and nothing else: any other exception out of wmr is a bug in wmr.  The command line

@@ -35,6 +35,7 @@ Examples
 """
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -45,6 +46,7 @@ from .model import validation as V
 from .model.platform import wrap_angle
 from .model.robot import Robot
 from .model.tolerance import TOL, column_norms
+from .model.types import ArrayLike
 from .swerve.limits import se2_exp
 
 __all__ = ["Odometry", "measured_joints", "wheel_odometry", "MAX_SAMPLES"]
@@ -100,7 +102,7 @@ def _columns(robot):
     return driven, steering
 
 
-def measured_joints(robot):
+def measured_joints(robot: Robot) -> tuple[str, ...]:
     r"""The rates an encoder measures by default: those of the joints with a motor (a column of J2 each).
 
     Parameters
@@ -142,7 +144,8 @@ def _solve(A):
     return P, np.atleast_1d(determined)
 
 
-def wheel_odometry(robot, beta, angles, heading=None, pose0=(0.0, 0.0, 0.0), measured=None):
+def wheel_odometry(robot: Robot, beta: ArrayLike, angles: ArrayLike, heading: ArrayLike | None = None,
+                   pose0: ArrayLike = (0.0, 0.0, 0.0), measured: Sequence[str] | None = None) -> Odometry:
     r"""The pose over time from sampled joint angles (rules: module notes).
 
     Parameters

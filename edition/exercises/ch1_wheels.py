@@ -17,7 +17,7 @@ import numpy as np
 import sympy as sp
 
 from wmr.analysis.steering import steering_angles
-from wmr.model.robots import paper_robot
+from wmr.model.robots import Dimensions, paper_robot
 from wmr.model.wheels import DualWheel, OffsetWheel
 
 from .. import symbols as S
@@ -34,7 +34,7 @@ __all__ = ["offset_other_side", "dual_counterexample", "dual_spin_in_place", "SY
 #: 1.1: the symbols the answer may use (the student's own are mapped onto these by name)
 SYMBOLS_1_1 = (S.phi_i, S.phi_dot_i, S.theta_dot_i, S.r, S.d)
 #: 1.2: the paper's dual-wheel robot
-DUAL_1_2 = dict(L=0.5, r=0.1, b=0.08)
+DUAL_1_2 = Dimensions(L=0.5, r=0.1, b=0.08)
 #: 1.2: each steering angle within 1e-3 rad of an angle at which the motion needs no slip
 TOL_1_2 = within("to within $10^{-3}$ rad", abs=1e-3)
 #: 1.3: the two rates to 3 significant figures

@@ -16,7 +16,7 @@ import numpy as np
 import sympy as sp
 
 from wmr.model.robot import Robot
-from wmr.model.robots import paper_robot
+from wmr.model.robots import Dimensions, paper_robot
 from wmr.model.wheels import OffsetWheel
 
 from .. import symbols as S
@@ -31,7 +31,7 @@ __all__ = ["locked_steering", "drift_of_c_general", "PAPER_2_1", "TOL_2_1", "D4"
            "SYMBOLS_2_2", "locked_c_dot"]
 
 #: 2.1: the paper's offset-wheel robot of the chapter
-PAPER_2_1 = dict(L=0.3, r=0.1, d=0.05)
+PAPER_2_1 = Dimensions(L=0.3, r=0.1, d=0.05)
 #: 2.1: every arm line within 1e-3 rad of passing through one point
 TOL_2_1 = within("to within $10^{-3}$ rad", abs=1e-3)
 #: 2.2: the symbols of the four-wheel robot (the student's own are mapped onto these by name)

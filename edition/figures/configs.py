@@ -154,7 +154,7 @@ def singular_config(robot, beta, exact_deg=None, reach=3.2):
     axle_reach: list[list] = [[] for _ in range(3)]
     crossings = []
     for (i, j), (kind, pt) in axles.items():
-        if kind == ln.FINITE and np.linalg.norm(pt) < reach:
+        if kind == ln.FINITE and pt is not None and np.linalg.norm(pt) < reach:
             crossings.append(pt)
             axle_reach[i - 1].append(pt)
             axle_reach[j - 1].append(pt)

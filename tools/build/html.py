@@ -2,8 +2,8 @@
 
 Markdown goes to pandoc in one call (:class:`~tools.build.markup.Batch`), the page to nbconvert
 (template ``wmr_html``, code collapsed); then the contents sidebar is built from the headings, ids
-made unique and internal links checked. MathJax is the pinned ``django-static-mathjax`` bundle,
-inlined gzip-compressed (the page stays under 4 MB).
+made unique and internal links checked. MathJax is the official release's bundle (:mod:`tools.mathjax`:
+the npm tarball checked against its sha512), inlined gzip-compressed (the page stays under 4 MB).
 """
 from __future__ import annotations
 
@@ -23,14 +23,14 @@ __all__ = ["broken_links", "export_html", "keep_punctuation", "mathjax_gz", "nav
 
 @functools.lru_cache(maxsize=1)
 def mathjax_gz() -> str:
-    """MathJax 3 ``tex-svg-full.js`` (every TeX extension, SVG glyphs: no font files), gzip
-    (fixed mtime, so the bytes never change) and base64."""
-    import importlib.util
-    spec = importlib.util.find_spec("mathjax")        # the PyPI package django-static-mathjax
-    js = Path(next(iter(spec.submodule_search_locations or []), "?") if spec else "?") / "static/mathjax/es5/tex-svg-full.js"
-    if not js.exists():
-        raise BuildError(f"MathJax bundle not found ({js}): `make venv` installs django-static-mathjax from environment.lock")
-    return base64.b64encode(gzip.compress(js.read_bytes(), compresslevel=9, mtime=0)).decode()
+    """MathJax 3 ``tex-svg-full.js`` (every TeX extension, SVG glyphs: no font files) of the official
+    release (:func:`tools.mathjax.bundle`), gzip (fixed mtime, so the bytes never change) and base64."""
+    from tools import mathjax
+    try:
+        js = mathjax.bundle("tex-svg-full.js").read_bytes()
+    except mathjax.MathJaxError as e:
+        raise BuildError(f"MathJax: {e}") from None
+    return base64.b64encode(gzip.compress(js, compresslevel=9, mtime=0)).decode()
 
 
 def _prepare(nb, batch: Batch):

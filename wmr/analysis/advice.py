@@ -170,7 +170,7 @@ def actuation_advice(robot, before=None) -> list[Advice]:
     Tries every set of at most four of the units that have another build
     (:meth:`~wmr.model.wheels.WheelUnit.other_builds`), keeps those that give an actuated mobility
     equal to the degree of mobility, and advises the one whose motors command the admissible
-    twists most evenly (:func:`~wmr.analysis.actuation.motor_conditioning`; fewer changes first on
+    twists most evenly (:func:`~wmr.analysis.advice.motor_conditioning`; fewer changes first on
     a tie); nothing when none does or nothing is lost.
 
     Parameters

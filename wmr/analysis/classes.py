@@ -138,7 +138,7 @@ def _rank(A, scale):
     return int(rank(A, scale=scale)) if A.shape[0] else 0
 
 
-def campion_class(robot):
+def campion_class(robot: Robot) -> CampionClass:
     r"""Degree of mobility and of steerability of ``robot``: Campion's class :math:`(\delta_m, \delta_s)`.
 
     See the module notes for the definitions and the generic configuration.

@@ -6,20 +6,24 @@ Everything is derived from :meth:`wmr.Robot.J`; nothing is copied from the paper
 """
 from __future__ import annotations
 
+from collections.abc import Sequence
+from typing import Any
+
 import numpy as np
 import sympy as sp
 
 from ..errors import InputValueError
 from ..model import validation as V
-from ..model.backend import NUMERIC, SYMBOLIC, choose
+from ..model.backend import NUMERIC, SYMBOLIC, Backend, choose
 from ..model.robot import Robot
+from ..model.types import Matrix, Numbers, Point, Symbolic
 from ..model.wheels import CentredWheel
 from .square import default_L, exact_robot, require_square
 
 __all__ = ["det_J_symbolic", "det_J_polynomial", "exact_zero", "plane_line_matrix", "characterisation"]
 
 
-def det_J_symbolic(robot, L=None):
+def det_J_symbolic(robot: Robot, L: Numbers | None = None) -> Symbolic:
     r"""Exact :math:`\det\mathbf J` as a SymPy expression in the robot's :math:`\beta_i` symbols.
 
     Derived from :meth:`wmr.Robot.J`, expanded into a polynomial in :math:`\cos\beta_i,\sin\beta_i`
@@ -44,7 +48,7 @@ def det_J_symbolic(robot, L=None):
     return sp.factor(sp.expand(sp.expand_trig(J.det())))
 
 
-def plane_line_matrix(robot, beta, L=1, backend=None):
+def plane_line_matrix(robot: Robot, beta: Numbers, L: Numbers = 1, backend: Backend | None = None) -> Matrix:
     r"""The matrix :math:`\mathbf W` whose columns are the Plücker vectors of the wheel-plane lines.
 
     Column i is :math:`[m_i/L,\ \mathbf j_i^T]^T`.
@@ -73,7 +77,8 @@ def plane_line_matrix(robot, beta, L=1, backend=None):
     symbolic = bk is SYMBOLIC
     if symbolic:
         b = list(robot.beta_symbols) if beta is None else list(V.symbolic_vector("beta", beta, robot.w))
-        b = [bi if u.steered else sp.sympify(u.angle) for bi, u in zip(b, robot.wheels)]   # unsteered: own angle
+        b = [bi if u.steered else sp.sympify(u.constant_angle)            # unsteered: its own angle
+             for bi, u in zip(b, robot.wheels)]
     else:
         beta = V.robot(robot).effective_beta(beta)
         b = [beta[..., i] for i in range(robot.w)]
@@ -90,7 +95,7 @@ def plane_line_matrix(robot, beta, L=1, backend=None):
     return W
 
 
-def characterisation(robot, L=None):
+def characterisation(robot: Robot, L: Numbers | None = None) -> dict[str, Any]:
     r"""Exact statements about the zero set of :math:`\det\mathbf J`, derived from the model.
 
     Parameters
@@ -144,7 +149,8 @@ def characterisation(robot, L=None):
             "irreducible": len(nontrivial) == 1, "polynomial": poly}
 
 
-def det_J_polynomial(robot, L=None):
+def det_J_polynomial(robot: Robot,
+                     L: Numbers | None = None) -> tuple[Symbolic, tuple[Symbolic, ...], tuple[Symbolic, ...]]:
     r""":math:`\det\mathbf J` as a polynomial in :math:`c_i = \cos\beta_i`, :math:`s_i = \sin\beta_i`.
 
     Of degree 1 in each pair :math:`(c_i, s_i)`.
@@ -170,7 +176,7 @@ def det_J_polynomial(robot, L=None):
     return sp.expand(poly), c, s
 
 
-def exact_zero(poly, c, s, dirs):
+def exact_zero(poly: Symbolic, c: Sequence[Symbolic], s: Sequence[Symbolic], dirs: Sequence[Point]) -> bool:
     r"""True when the polynomial form of :math:`\det\mathbf J` vanishes identically on a parameterised family.
 
     :math:`\det\mathbf J` is homogeneous of degree one in each wheel's :math:`(\cos\beta_i,\sin\beta_i)`,

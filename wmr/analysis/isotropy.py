@@ -11,13 +11,15 @@ import numpy as np
 
 from ..errors import InputValueError
 from ..model import validation as V
+from ..model.robot import Robot
 from ..model.tolerance import TOL
+from ..model.types import ArrayLike, BoolArray
 from .linalg import condition_number
 
 __all__ = ["is_isotropic", "characteristic_length"]
 
 
-def is_isotropic(A):
+def is_isotropic(A: ArrayLike) -> BoolArray:
     """True where the condition number equals 1 within ``TOL`` (batched).
 
     Parameters
@@ -36,7 +38,7 @@ def is_isotropic(A):
     return np.abs(condition_number(A) - 1.0) <= TOL
 
 
-def characteristic_length(robot):
+def characteristic_length(robot: Robot) -> float:
     r"""The characteristic length :math:`L` that makes :math:`\mathbf J_{L1}` best conditioned when C is the centroid.
 
     With :math:`\sum_i\mathbf d_i = \mathbf 0`, (34) is :math:`\mathrm{diag}(\sum_i\|\mathbf d_i\|^2/L^2,\ w,\ w)`,

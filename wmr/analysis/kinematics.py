@@ -27,7 +27,9 @@ from ..model import validation as V
 from ..model.backend import NUMERIC
 from ..model.limits import check
 from ..model.platform import cos_sin, rotated
+from ..model.robot import Robot
 from ..model.tolerance import TOL
+from ..model.types import ArrayLike, Twist
 from ._batch import for_chunks
 from .actuation import driven_columns, uncontrolled
 from .linalg import pinv_columns, rank
@@ -156,7 +158,7 @@ def _flat(batch, *arrays):
 
 
 @np.errstate(over="ignore", invalid="ignore")        # overflow is checked on the results (_finite)
-def forward(robot, beta, rates, slip_tolerance=None):
+def forward(robot: Robot, beta: ArrayLike, rates: ArrayLike, slip_tolerance: float | None = None) -> Solution:
     r"""Platform twist from joint rates (least squares on (21)).
 
     Parameters
@@ -232,7 +234,7 @@ def forward(robot, beta, rates, slip_tolerance=None):
 
 
 @np.errstate(over="ignore", invalid="ignore")
-def inverse(robot, beta, twist, beta_dot=None):
+def inverse(robot: Robot, beta: ArrayLike, twist: Twist, beta_dot: ArrayLike | None = None) -> Solution:
     r"""Joint rates that realise a platform twist (unit by unit, exact or least squares).
 
     Parameters

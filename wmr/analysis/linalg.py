@@ -16,6 +16,7 @@ import numpy as np
 from ..errors import InputValueError
 from ..model import validation as V
 from ..model.tolerance import TOL, column_norms
+from ..model.types import ArrayLike, FloatArray, IntArray
 from . import _closed
 from ._batch import map_matrices
 
@@ -23,7 +24,7 @@ __all__ = ["singular_values", "column_norms", "rank", "nullity", "null_space", "
            "condition_number", "gram", "det", "rank_from_singular_values", "kappa_from_singular_values"]
 
 
-def _as_stack(A):
+def _as_stack(A: ArrayLike) -> FloatArray:
     """Validate a stack of matrices ``(..., m, n)`` of finite reals."""
     A = V.finite_array("A", A)
     if A.ndim < 2:
@@ -31,7 +32,7 @@ def _as_stack(A):
     return A
 
 
-def singular_values(A):
+def singular_values(A: ArrayLike) -> FloatArray:
     """Singular values, descending, of a stack of matrices.
 
     Parameters
@@ -67,14 +68,14 @@ def _finite(name, result, what):
     return result
 
 
-def _check_scale(scale, n):
+def _check_scale(scale: ArrayLike, n: int) -> FloatArray:
     scale = V.finite_array("scale", scale, last=n)
     if np.any(scale <= 0):
         raise InputValueError(f"scale must hold positive column sizes, got {V.show(scale)}")
     return scale
 
 
-def _scaled(A, scale):
+def _scaled(A: FloatArray, scale: ArrayLike | None) -> FloatArray:
     """``A`` with column j divided by ``scale[..., j]`` (default: the column lengths)."""
     scale = column_norms(A) if scale is None else _check_scale(scale, A.shape[-1])
     with np.errstate(over="ignore", under="ignore"):
@@ -84,7 +85,7 @@ def _scaled(A, scale):
     return out
 
 
-def rank_from_singular_values(s):
+def rank_from_singular_values(s: FloatArray) -> IntArray:
     """The rule of :func:`rank`: the singular values above ``TOL`` times the largest one (a zero matrix has rank 0).
 
     Parameters
@@ -106,7 +107,7 @@ def rank_from_singular_values(s):
     return np.sum(s > TOL * s[..., :1], axis=-1)
 
 
-def rank(A, scale=None):
+def rank(A: ArrayLike, scale: ArrayLike | None = None) -> IntArray:
     """Numerical rank of a stack of matrices, independent of the units of the unknowns.
 
     Each column is divided by its size (default: its length, :func:`column_norms`), then the
@@ -144,6 +145,7 @@ def rank(A, scale=None):
         A = _scaled(A, scale)                        # column sizes per matrix: one pass over the stack
         scale = None
     else:
+        assert scale is not None                     # (constant)
         scale = _check_scale(scale, A.shape[-1])     # one size per column: applied chunk by chunk
     if p == 0 or p > 3:
         return rank_from_singular_values(singular_values(A))
@@ -156,7 +158,7 @@ def rank(A, scale=None):
     return out.reshape(A.shape[:-2])
 
 
-def nullity(A, scale=None):
+def nullity(A: ArrayLike, scale: ArrayLike | None = None) -> IntArray:
     """Nullity ``n - rank(A)`` (27) of a stack of matrices (rank as in :func:`rank`).
 
     Parameters
@@ -178,7 +180,7 @@ def nullity(A, scale=None):
     return A.shape[-1] - rank(A, scale)
 
 
-def null_space(A, scale=None):
+def null_space(A: ArrayLike, scale: ArrayLike | None = None) -> FloatArray:
     """Orthonormal basis of the null space of one matrix (rank as in :func:`rank`).
 
     The dimension is ``nullity(A, scale)``; the basis is the last right singular vectors of
@@ -212,7 +214,7 @@ def null_space(A, scale=None):
     return Vt[r:].T.copy()
 
 
-def pinv_columns(A):
+def pinv_columns(A: ArrayLike) -> FloatArray:
     r"""Pseudo-inverse with the columns scaled as in :func:`rank`: :math:`\mathbf D^{-1}(\mathbf A\mathbf D^{-1})^+`.
 
     Singular values of :math:`\mathbf A\mathbf D^{-1}` at most ``TOL`` times the largest are
@@ -241,7 +243,7 @@ def pinv_columns(A):
         return _finite("A", np.linalg.pinv(A / scale, rcond=TOL) / scale[:, None], "the entries of its pseudo-inverse")
 
 
-def left_null_space(A):
+def left_null_space(A: ArrayLike) -> FloatArray:
     r"""Orthonormal basis of the left null space of one matrix, columns scaled as in :func:`rank`.
 
     Parameters
@@ -267,7 +269,7 @@ def left_null_space(A):
     return U[:, r:]
 
 
-def condition_number(A):
+def condition_number(A: ArrayLike) -> FloatArray:
     r"""Condition number :math:`\kappa = \sigma_l/\sigma_s` (30) of a stack of matrices.
 
     Rank-deficient matrices (smallest singular value at most ``TOL * sigma_l``, i.e.
@@ -307,7 +309,7 @@ def condition_number(A):
     return kappa.reshape(A.shape[:-2])
 
 
-def kappa_from_singular_values(s):
+def kappa_from_singular_values(s: FloatArray) -> FloatArray:
     """The rule of :func:`condition_number`: largest over smallest singular value, ``inf`` at most ``TOL`` apart (31).
 
     Parameters
@@ -330,7 +332,7 @@ def kappa_from_singular_values(s):
         return np.where(singular, np.inf, smax / np.where(singular, 1.0, smin))
 
 
-def gram(A):
+def gram(A: ArrayLike) -> FloatArray:
     r"""The product :math:`\mathbf A^T\mathbf A` of each matrix of a stack, as in (34), (40) and (54).
 
     Parameters
@@ -351,7 +353,7 @@ def gram(A):
         return _finite("A", np.swapaxes(A, -1, -2) @ A, "the entries of A^T A")
 
 
-def det(A):
+def det(A: ArrayLike) -> FloatArray:
     r"""Determinant of each matrix of a stack of square matrices.
 
     Matrices up to 3x3 use the cofactor expansion, element-wise over the stack

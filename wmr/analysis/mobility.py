@@ -31,13 +31,15 @@ from ..errors import InputValueError
 from ..model import validation as V
 from ..model.backend import NUMERIC
 from ..model.platform import E
+from ..model.robot import Robot
 from ..model.trig import trig_combination
+from ..model.types import ArrayLike, FloatArray, IntArray
 from .linalg import left_null_space, null_space, rank
 
 __all__ = ["twist_constraints", "rank_F", "mobility", "admissible_twists"]
 
 
-def twist_constraints(robot, beta, free=None):
+def twist_constraints(robot: Robot, beta: ArrayLike, free: ArrayLike | None = None) -> tuple[FloatArray, int]:
     r"""The constraint rows :math:`\mathbf A(\boldsymbol\beta)` on the platform twist (see module notes).
 
     A twist :math:`\mathbf t` is admissible (some joint rates realise it without slip) exactly when
@@ -93,7 +95,7 @@ def twist_constraints(robot, beta, free=None):
     return trig_combination(beta, Ps, Qs), base_rank
 
 
-def rank_F(robot, beta):
+def rank_F(robot: Robot, beta: ArrayLike) -> IntArray:
     r"""Rank of the functional matrix :math:`\mathbf F(\boldsymbol\beta)` for a batch of configurations.
 
     Parameters
@@ -116,7 +118,7 @@ def rank_F(robot, beta):
     return base + rank(A, scale=robot.F_column_norms[:3])     # the twist columns of F, scaled as in rank(F)
 
 
-def mobility(robot, beta):
+def mobility(robot: Robot, beta: ArrayLike) -> IntArray:
     r"""Mobility :math:`\nu(\mathbf F) = (3 + n) - \operatorname{rank}\mathbf F` (27), batched.
 
     Parameters
@@ -141,7 +143,7 @@ def mobility(robot, beta):
     return 3 + robot.n_rates - rank
 
 
-def admissible_twists(robot, beta):
+def admissible_twists(robot: Robot, beta: ArrayLike) -> FloatArray:
     r"""Orthonormal basis (3, m) of the admissible platform twists at one configuration.
 
     The projection of :math:`\mathcal N(\mathbf F)` onto the twist coordinates: the twists that some

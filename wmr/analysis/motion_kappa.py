@@ -26,7 +26,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..model import validation as V
+from ..model.robot import Robot
 from ..model.tolerance import near_zero
+from ..model.types import ArrayLike, FloatArray, Twist
 from .isotropy import characteristic_length
 from .linalg import condition_number
 from .lines import circumcircle
@@ -35,7 +37,7 @@ from .steering import steering_angles
 __all__ = ["rotation_twists", "motion_kappa", "mount_circle", "MotionMap", "motion_map"]
 
 
-def rotation_twists(centres):
+def rotation_twists(centres: ArrayLike) -> FloatArray:
     r"""Unit-rate rotations about points U: the twists :math:`(1,\ U_y,\ -U_x)` (array (..., 3)).
 
     Parameters
@@ -56,7 +58,7 @@ def rotation_twists(centres):
     return np.stack([np.ones(U.shape[:-1]), U[..., 1], -U[..., 0]], axis=-1)
 
 
-def motion_kappa(robot, twist, L=None):
+def motion_kappa(robot: Robot, twist: Twist, L: float | None = None) -> FloatArray:
     r""":math:`\kappa(\mathbf J)` at the steering angles that make each twist admissible (batched).
 
     Parameters
@@ -85,7 +87,7 @@ def motion_kappa(robot, twist, L=None):
     return condition_number(robot.J(steering_angles(robot, twist), L=L))
 
 
-def mount_circle(robot):
+def mount_circle(robot: Robot) -> tuple[FloatArray, float] | None:
     """The circle through every mount point, or None when they are not concyclic (or fewer than 3, or collinear).
 
     Parameters
@@ -142,7 +144,7 @@ class MotionMap:
     kappa_translation: float
 
 
-def motion_map(robot, n=121, half_width=None, L=None):
+def motion_map(robot: Robot, n: int = 121, half_width: float | None = None, L: float | None = None) -> MotionMap:
     r""":math:`\kappa(\mathbf J)` of the rotation about every point of an ``n`` x ``n`` grid centred on C.
 
     Parameters

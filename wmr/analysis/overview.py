@@ -31,7 +31,9 @@ import numpy as np
 
 from ..model import validation as V
 from ..model.limits import check
+from ..model.robot import Robot
 from ..model.tolerance import TOL
+from ..model.types import FloatArray
 from .actuation import describe_twist, free_twists
 from .advice import advice, profile
 from .classes import campion_class
@@ -69,7 +71,7 @@ def special_twists(robot):
     return np.array(special)
 
 
-def configurations(robot, grid=GRID_SIZE, twists=TWISTS, seed=0):
+def configurations(robot: Robot, grid: int = GRID_SIZE, twists: int = TWISTS, seed: int = 0) -> FloatArray:
     """The configurations :func:`overview` examines: a grid over the steered angles and motion configurations.
 
     Parameters
@@ -106,7 +108,7 @@ def configurations(robot, grid=GRID_SIZE, twists=TWISTS, seed=0):
     check("configurations", most, "the overview (grid and twists)")
     check("memory_mb", most * 8 * (3 * w + 3 * robot.n_rates + 16) / 2 ** 20, "the overview (grid and twists)")
     s = int(steered.sum())
-    parts = []
+    parts: list[FloatArray] = []
     if s:
         steps = max(4, int(np.floor(grid ** (1.0 / s) + 1e-9)))
         if steps ** s <= 4 * grid:
@@ -125,7 +127,7 @@ def configurations(robot, grid=GRID_SIZE, twists=TWISTS, seed=0):
     return np.concatenate(parts)
 
 
-def dead_zone_radius(robot):
+def dead_zone_radius(robot: Robot) -> float | None:
     r"""Radius of the dead zone of a robot on offset wheels: C's circle when the units are steered without driving.
 
     With every unit an offset wheel of the same offset d, steering all units together with the
@@ -246,7 +248,7 @@ class Overview:
     drivable: int = 0
 
 
-def overview(robot, grid=GRID_SIZE, twists=TWISTS, seed=0):
+def overview(robot: Robot, grid: int = GRID_SIZE, twists: int = TWISTS, seed: int = 0) -> Overview:
     r"""Class, actuation, mobility, isotropy, dead zone, singular families and limitations of a robot (module notes).
 
     Parameters

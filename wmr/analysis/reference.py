@@ -21,13 +21,15 @@ import numpy as np
 from ..errors import InputValueError
 from ..model import validation as V
 from ..model.backend import NUMERIC
+from ..model.robot import Robot
 from ..model.tolerance import near_zero
+from ..model.types import ArrayLike, BoolArray, FloatArray, IntArray, Twist
 from .linalg import column_norms, kappa_from_singular_values, rank_from_singular_values
 
 __all__ = ["J2", "F", "J", "rank", "rank_F", "det", "condition_number", "forward", "inverse"]
 
 
-def J2(robot, beta):
+def J2(robot: Robot, beta: ArrayLike) -> FloatArray:
     r""":math:`\mathbf J_2(\boldsymbol\beta)`, block by block: :math:`\mathbf R(\beta_i)\mathbf L_i` (11), (21).
 
     A unit without a steering joint (fixed, Swedish) uses its own ``angle`` for :math:`\beta_i`.
@@ -53,7 +55,7 @@ def J2(robot, beta):
     return out
 
 
-def F(robot, beta):
+def F(robot: Robot, beta: ArrayLike) -> FloatArray:
     r""":math:`\mathbf F = [\mathbf J_1\ \ -\mathbf J_2]` (24), formed in full.
 
     Parameters
@@ -71,7 +73,7 @@ def F(robot, beta):
     return np.concatenate([J1, -B], axis=-1)
 
 
-def J(robot, beta, L=1.0):
+def J(robot: Robot, beta: ArrayLike, L: float = 1.0) -> FloatArray:
     r""":math:`\mathbf J = \mathbf J_{L1}^T\mathbf J_2` (56) as a matrix product.
 
     Parameters
@@ -89,7 +91,7 @@ def J(robot, beta, L=1.0):
         return _finite("robot", robot.J1(L).T @ J2(robot, beta))
 
 
-def _matrices(A, square=False):
+def _matrices(A: ArrayLike, square: bool = False) -> FloatArray:
     A = V.finite_array("A", A)
     if A.ndim < 2 or min(A.shape[-2:]) == 0 or (square and A.shape[-1] != A.shape[-2]):
         raise InputValueError(f"A must have shape (..., m, n) with m, n >= 1{' and m = n' if square else ''}, "
@@ -111,7 +113,7 @@ def _sv(A):
     return np.linalg.svd(A / np.where(m > 0, m, 1.0), compute_uv=False)
 
 
-def rank(A):
+def rank(A: ArrayLike) -> IntArray:
     """Rank from a full SVD by the package's rule.
 
     The columns are divided by their lengths, then the singular values above ``TOL * s_max`` counted.
@@ -128,7 +130,7 @@ def rank(A):
     return rank_from_singular_values(_sv(A / column_norms(A)[..., None, :]))
 
 
-def rank_F(robot, beta):
+def rank_F(robot: Robot, beta: ArrayLike) -> IntArray:
     """:math:`\\operatorname{rank}\\mathbf F` from an SVD of the full matrix.
 
     Parameters
@@ -143,7 +145,7 @@ def rank_F(robot, beta):
     return rank(F(robot, beta))
 
 
-def det(A):
+def det(A: ArrayLike) -> FloatArray:
     """Determinant by LU (``numpy.linalg.det``).
 
     Parameters
@@ -158,7 +160,7 @@ def det(A):
         return _finite("A", np.linalg.det(_matrices(A, square=True)))
 
 
-def condition_number(A):
+def condition_number(A: ArrayLike) -> FloatArray:
     r""":math:`\kappa = \sigma_l/\sigma_s` (30) from a full SVD, ``inf`` where the rank rule says singular.
 
     Parameters
@@ -173,7 +175,7 @@ def condition_number(A):
 
 
 @np.errstate(over="ignore", invalid="ignore")       # overflow is checked on the results
-def forward(robot, beta, rates):
+def forward(robot: Robot, beta: ArrayLike, rates: ArrayLike) -> tuple[FloatArray, FloatArray, BoolArray]:
     r"""Least-squares twist :math:`\mathbf t = \mathbf J_1^+\mathbf J_2\dot{\boldsymbol\theta}` and the slip.
 
     Parameters
@@ -202,7 +204,8 @@ def forward(robot, beta, rates):
 
 
 @np.errstate(over="ignore", invalid="ignore")
-def inverse(robot, beta, twist, beta_dot=None):
+def inverse(robot: Robot, beta: ArrayLike, twist: Twist,
+            beta_dot: ArrayLike | None = None) -> tuple[FloatArray, FloatArray, BoolArray]:
     r"""Joint rates from the pseudo-inverse of the whole system, the units' steering rows appended.
 
     Solves, in the least-squares sense, :math:`\mathbf J_2\dot{\boldsymbol\theta} = \mathbf J_1\mathbf t`

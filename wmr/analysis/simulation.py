@@ -10,6 +10,7 @@ deterministic.
 """
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
@@ -17,6 +18,7 @@ import numpy as np
 from ..errors import InputTypeError, InputValueError
 from ..model import validation as V
 from ..model.robot import Robot
+from ..model.types import ArrayLike, FloatArray
 from .kinematics import forward
 
 __all__ = ["Trajectory", "simulate", "MAX_STEPS"]
@@ -47,7 +49,7 @@ class Trajectory:
     twist: np.ndarray
     slip: np.ndarray
 
-    def world(self, body_points):
+    def world(self, body_points: ArrayLike) -> FloatArray:
         """Map body-frame points to the fixed frame along the run.
 
         Parameters
@@ -76,7 +78,7 @@ class Trajectory:
                              f"(largest |body_points| = {np.abs(p).max():.3g})")
         return np.stack([X, Y], axis=-1)
 
-    def unit_points(self, i, key):
+    def unit_points(self, i: int, key: str) -> FloatArray:
         """World positions along the run of a point of unit ``i``.
 
         Parameters
@@ -123,7 +125,9 @@ def _as_input(f, size, name):
 MAX_STEPS = 1_000_000
 
 
-def simulate(robot, rates, beta0, t_end, dt, steer=None, pose0=(0.0, 0.0, 0.0), max_steps=MAX_STEPS):
+def simulate(robot: Robot, rates: ArrayLike | Callable[[float, FloatArray], ArrayLike], beta0: ArrayLike, t_end: float,
+             dt: float, steer: ArrayLike | Callable[[float, FloatArray], ArrayLike] | None = None,
+             pose0: ArrayLike = (0.0, 0.0, 0.0), max_steps: int = MAX_STEPS) -> Trajectory:
     r"""Integrate the robot's motion under joint-rate (and steering) inputs.
 
     Parameters

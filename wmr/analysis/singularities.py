@@ -43,7 +43,9 @@ import numpy as np
 from ..errors import InputValueError
 from ..model import validation as V
 from ..model.platform import wrap_angle
+from ..model.robot import Robot
 from ..model.tolerance import TOL, near_zero
+from ..model.types import ArrayLike, BoolArray, FloatArray
 from .det_exact import characterisation, det_J_polynomial, det_J_symbolic, exact_zero, plane_line_matrix
 from .linalg import det
 from .lines import (
@@ -67,7 +69,7 @@ __all__ = ["det_J", "det_J_scale", "is_singular", "Classification", "classify", 
            # the exact side of det J, from wmr.analysis.det_exact
            "det_J_symbolic", "det_J_polynomial", "exact_zero", "plane_line_matrix", "characterisation"]
 
-def numeric_robot(robot):
+def numeric_robot(robot: Robot) -> Robot:
     """The same robot with float coordinates and radii (from an exact one).
 
     Parameters
@@ -83,7 +85,7 @@ def numeric_robot(robot):
 
 
 # ------------------------------------------------------------------------------------- det J
-def det_J(robot, beta, L=None):
+def det_J(robot: Robot, beta: ArrayLike, L: float | None = None) -> FloatArray:
     r""":math:`\det\mathbf J(\boldsymbol\beta)` (58) for a batch of configurations.
 
     Parameters
@@ -111,7 +113,7 @@ def det_J(robot, beta, L=None):
     return det(robot.J(beta, L=default_L(robot, L)))                 # closed form, batched
 
 
-def det_J_scale(robot, beta, L=None):
+def det_J_scale(robot: Robot, beta: ArrayLike, L: float | None = None) -> FloatArray:
     r"""Hadamard bound :math:`\prod_i\|\mathbf J\mathbf e_i\|`: the size against which :math:`\det\mathbf J` is zero.
 
     Parameters
@@ -132,7 +134,7 @@ def det_J_scale(robot, beta, L=None):
     return np.prod(np.linalg.norm(J, axis=-2), axis=-1)
 
 
-def is_singular(robot, beta, L=None):
+def is_singular(robot: Robot, beta: ArrayLike, L: float | None = None) -> BoolArray:
     r"""True where :math:`|\det\mathbf J| \le` ``TOL`` times the Hadamard bound (batched).
 
     Parameters
@@ -189,7 +191,7 @@ def _same_angle(a, b, period=2 * np.pi):
     return bool(near_zero(x))
 
 
-def classify(robot, beta, L=None):
+def classify(robot: Robot, beta: ArrayLike, L: float | None = None) -> Classification:
     r"""Classify one configuration of a three-centred-wheel robot.
 
     Families: ``"i"`` (all wheel planes parallel, equal angles),
@@ -243,7 +245,7 @@ def classify(robot, beta, L=None):
     return Classification(beta, dj, sing, rk, mob, planes, axles, pairs, fam)
 
 
-def singular_motions(robot, beta1):
+def singular_motions(robot: Robot, beta1: float) -> tuple[FloatArray, list[str]]:
     r"""Configurations with :math:`\beta_1` fixed where :math:`\det\mathbf J = 0` **and** rank F = 5.
 
     These are the points where a slice :math:`\beta_1 = {\rm const}` of the singular surface meets

@@ -13,12 +13,13 @@ import sympy as sp
 from ..errors import InputValueError
 from ..model import validation as V
 from ..model.robot import Robot
+from ..model.types import Numbers
 from .isotropy import characteristic_length
 
 __all__ = ["require_square", "default_L", "exact_robot"]
 
 
-def require_square(robot):
+def require_square(robot: Robot) -> None:
     r"""Check that ``robot`` has a square :math:`\mathbf J` (56): three units of one rate each (three centred wheels).
 
     Parameters
@@ -41,7 +42,7 @@ def require_square(robot):
             f"n_rates = {robot.n_rates} (for dual wheels analyse the kinematically equivalent centred robot)")
 
 
-def default_L(robot, L, numeric=True):
+def default_L(robot: Robot, L: Numbers | None, numeric: bool = True) -> Numbers:
     """``L`` checked, or the characteristic length of ``robot`` (:func:`wmr.characteristic_length`) when None.
 
     Parameters
@@ -65,7 +66,7 @@ def default_L(robot, L, numeric=True):
     return characteristic_length(robot)
 
 
-def exact_robot(robot):
+def exact_robot(robot: Robot) -> Robot:
     r"""The same robot with exact (SymPy) mount coordinates and radii, for symbolic checks.
 
     Parameters

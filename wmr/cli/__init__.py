@@ -1,4 +1,4 @@
-"""The ``wmr`` command line: ``wmr COMMAND ...`` (also ``python -m wmr``).
+"""The ``wmr`` command line, ``wmr COMMAND`` (also ``python -m wmr``).
 
 Each command lives in its own module of this package (one file per command) and provides
 
@@ -19,6 +19,7 @@ import argparse
 import importlib
 import sys
 import traceback
+from collections.abc import Sequence
 
 from ..errors import InputError, MissingDependencyError
 
@@ -36,9 +37,32 @@ COMMANDS = {
 }
 
 
+def _version():
+    """``wmr --version``: the version, the distribution that provides it, and where it is installed."""
+    import os
+    import platform
+
+    from .._version import DISTRIBUTION, __version__
+    where = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    return f"wmr {__version__} ({DISTRIBUTION}, {where}, Python {platform.python_version()})"
+
+
+class _Version(argparse.Action):
+    """``--version``: print :func:`_version` on one line (argparse's own action wraps it) and exit."""
+
+    def __init__(self, option_strings, dest, **kwargs):
+        super().__init__(option_strings, dest, nargs=0, default=argparse.SUPPRESS,
+                         help="show the version, the distribution and where it is installed, and exit")
+
+    def __call__(self, parser, namespace, values, option_string=None):
+        print(_version())
+        parser.exit()
+
+
 def _parser():
     p = argparse.ArgumentParser(prog="wmr", description="Kinematics of wheeled mobile robots: mobility, "
                                 "isotropy, singularities and kinematics of a robot described in a TOML file.")
+    p.add_argument("--version", action=_Version)
     sub = p.add_subparsers(dest="command", metavar="COMMAND", required=True)
     for name, module in COMMANDS.items():
         mod = importlib.import_module(f"{__name__}.{module}")
@@ -46,7 +70,7 @@ def _parser():
     return p
 
 
-def main(argv=None):
+def main(argv: Sequence[str] | None = None) -> int:
     """Run the command line.
 
     Parameters

@@ -17,10 +17,14 @@ from __future__ import annotations
 import argparse
 import json
 import math
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from ._options import ROBOT_FILE
+
+if TYPE_CHECKING:                                   # (the command imports the library when it runs)
+    from ..analysis.overview import Overview
 
 __all__ = ["HELP", "add_arguments", "run", "as_json", "table", "notes"]
 
@@ -67,7 +71,7 @@ def _angles(beta, convention):
     return [round(math.degrees(b), 6) + 0.0 for b in angle_to(np.asarray(beta, dtype=float), convention)]
 
 
-def as_json(ov, convention: str = "wmr") -> dict:
+def as_json(ov: Overview, convention: str = "wmr") -> dict[str, Any]:
     """The JSON object of an overview.
 
     Parameters
@@ -96,7 +100,7 @@ def as_json(ov, convention: str = "wmr") -> dict:
                           "rank_F": f["rank_F"]} for f in ov.singular]}
 
 
-def table(ov, convention: str = "wmr") -> str:
+def table(ov: Overview, convention: str = "wmr") -> str:
     """The overview as a short aligned table (one fact per row).
 
     Parameters

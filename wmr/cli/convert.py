@@ -13,12 +13,17 @@ controller's layout) is refused with a one-line reason (exit status 2).
 """
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    import argparse
+
 __all__ = ["HELP", "add_arguments", "run"]
 
 HELP = "convert a robot between TOML, URDF and ROS 2 controller parameters (formats by file suffix)"
 
 
-def add_arguments(parser):
+def add_arguments(parser: argparse.ArgumentParser) -> None:
     """Options of ``wmr convert``.
 
     Parameters
@@ -40,7 +45,7 @@ def add_arguments(parser):
                         "file has several")
 
 
-def run(args):
+def run(args: argparse.Namespace) -> int:
     """Run ``wmr convert``.
 
     Parameters

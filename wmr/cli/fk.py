@@ -1,4 +1,5 @@
-"""``wmr fk ROBOT.toml --angles ... --rates ...``: the platform twist from steering angles and wheel rates.
+"""``wmr fk ROBOT.toml --angles DEG [DEG ...] --rates RATE [RATE ...]``: the platform twist from steering angles and
+wheel rates.
 
 Examples::
 
@@ -23,11 +24,15 @@ from __future__ import annotations
 import argparse
 import json
 import math
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from ._numbers import clean, fmt, number, numbers
 from ._options import ROBOT_FILE, add_convention, twist_words
+
+if TYPE_CHECKING:
+    import argparse
 
 __all__ = ["HELP", "add_arguments", "run", "ENCODER_COUNTS", "PERIOD", "default_slip_tolerance"]
 

@@ -26,11 +26,15 @@ from __future__ import annotations
 import argparse
 import json
 import math
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from ._numbers import clean, fmt, number, numbers
 from ._options import ROBOT_FILE, add_convention, twist_words
+
+if TYPE_CHECKING:
+    import argparse
 
 __all__ = ["HELP", "add_arguments", "run"]
 

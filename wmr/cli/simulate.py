@@ -12,12 +12,13 @@ twist (:func:`wmr.sim.twist_schedule`: wmr's inverse kinematics along the model'
 the commanded twist; the simulated one (mean over the second half of the run); the twist wmr's
 forward kinematics recovers from the simulated encoders and its slip residual; the mean slip
 speed of the wheels at their contacts; the largest servo torque as a fraction of its limit.
-Needs MuJoCo (``pip install wmr[sim]``).  Swedish wheels are refused (exit status 2).
+Needs MuJoCo (``pip install 'wmr-kinematics[sim]'``).  Swedish wheels are refused (exit status 2).
 """
 from __future__ import annotations
 
 import json
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -25,12 +26,15 @@ from ..errors import InputValueError
 from ._numbers import fmt, number
 from ._options import ROBOT_FILE
 
+if TYPE_CHECKING:
+    import argparse
+
 __all__ = ["HELP", "add_arguments", "run"]
 
 HELP = "the robot in MuJoCo following a commanded twist (needs mujoco); --mjcf writes the model"
 
 
-def add_arguments(parser):
+def add_arguments(parser: argparse.ArgumentParser) -> None:
     """Options of ``wmr simulate``.
 
     Parameters
@@ -65,7 +69,7 @@ def _params(items):
     return Params(**out)
 
 
-def run(args):
+def run(args: argparse.Namespace) -> int:
     """Run ``wmr simulate``.
 
     Parameters

@@ -37,7 +37,7 @@ HELP = ("evaluate rank F, mobility, actuated mobility, det J or a condition numb
         "configurations (or all)")
 
 
-def add_arguments(parser):
+def add_arguments(parser: argparse.ArgumentParser) -> None:
     """Options of ``wmr sweep``.
 
     Parameters
@@ -140,7 +140,8 @@ def _client(spec):
     try:
         from dask.distributed import Client, LocalCluster
     except ImportError:
-        raise InputValueError("--dask needs dask and distributed: pip install 'wmr[dask]'") from None
+        from .._version import DISTRIBUTION
+        raise InputValueError(f"--dask needs dask and distributed: pip install '{DISTRIBUTION}[dask]'") from None
     if spec.startswith("local"):
         n = _number(spec.partition(":")[2] or "2", "dask local:N")
         cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True, dashboard_address=":0")
@@ -166,7 +167,7 @@ def _as_json(res, convention="wmr"):
             "counts": {str(k): n for k, n in res.counts.items()}, "infinite": res.infinite}
 
 
-def run(args):
+def run(args: argparse.Namespace) -> int:
     """Run ``wmr sweep``.
 
     Parameters

@@ -17,15 +17,17 @@ Examples
 from __future__ import annotations
 
 from collections.abc import Sequence
+from typing import Any
 
 from ..errors import InputTypeError
 from ..model import validation as V
+from ..model.types import FloatArray, Twist
 from .extras import require
 
 __all__ = ["twist_of", "chassis_speeds", "is_chassis_speeds"]
 
 
-def is_chassis_speeds(obj):
+def is_chassis_speeds(obj: object) -> bool:
     """True for a WPILib ``ChassisSpeeds`` or ``Twist2d`` (any object with their attributes), or a sequence of them.
 
     The objects are those of :data:`wmr.model.arrays.TWIST_OBJECTS` (a ROS ``Twist`` too).
@@ -43,7 +45,7 @@ def is_chassis_speeds(obj):
     return V.twist_kind(obj) is not None
 
 
-def twist_of(speeds):
+def twist_of(speeds: Any) -> FloatArray:
     r"""wmr's twist :math:`[\dot\psi, \dot x, \dot y]` of a ``ChassisSpeeds`` (or the increment of a ``Twist2d``).
 
     Read by field names (:func:`wmr.model.arrays.twist_array`, the one conversion every function that
@@ -69,7 +71,7 @@ def twist_of(speeds):
     return V.twist_array("speeds", speeds)
 
 
-def chassis_speeds(twist):
+def chassis_speeds(twist: Twist) -> Any:
     r"""WPILib's ``ChassisSpeeds(vx, vy, omega)`` of a wmr twist :math:`[\dot\psi, \dot x, \dot y]`.
 
     Parameters

@@ -2,7 +2,7 @@
 
 ``import wmr`` needs NumPy and SymPy only.  Reading or writing URDF needs yourdfpy, ROS 2
 parameter files need PyYAML, WPILib objects need robotpy-wpimath; each is an extra of the
-``wmr`` distribution (``pip install 'wmr[urdf]'``, ``'wmr[ros]'``, ``'wmr[wpilib]'``), and a bridge
+distribution (``pip install 'wmr-kinematics[urdf]'``, ``[ros]``, ``[wpilib]``), and a bridge
 used without its package raises :class:`~wmr.errors.MissingDependencyError` naming the extra.
 """
 from __future__ import annotations
@@ -10,6 +10,7 @@ from __future__ import annotations
 import importlib
 from types import ModuleType
 
+from .._version import DISTRIBUTION
 from ..errors import MissingDependencyError
 
 __all__ = ["EXTRAS", "require"]
@@ -53,4 +54,4 @@ def require(extra: str, what: str, module: str | None = None) -> ModuleType:
         return importlib.import_module(module or top)
     except ImportError as exc:
         raise MissingDependencyError(f"{what} needs the package {dist}, which is not installed ({exc}): "
-                                     f"pip install 'wmr[{extra}]' (or pip install {dist})") from None
+                                     f"pip install '{DISTRIBUTION}[{extra}]' (or pip install {dist})") from None

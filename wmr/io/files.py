@@ -19,6 +19,8 @@ from pathlib import Path
 
 from ..errors import InputTypeError, InputValueError
 from ..model import validation as V
+from ..model.robot import Robot
+from ..model.types import JointNames, PathLike, WheelJoints
 from . import ros2, toml, urdf_read, urdf_write
 
 __all__ = ["FORMATS", "format_of", "load", "dump"]
@@ -27,7 +29,7 @@ __all__ = ["FORMATS", "format_of", "load", "dump"]
 FORMATS = {"toml": (".toml",), "urdf": (".urdf", ".xml"), "ros2": (".yaml", ".yml")}
 
 
-def format_of(path):
+def format_of(path: PathLike) -> str:
     """The format of a robot file, from its suffix (case-insensitive; unknown suffixes are TOML).
 
     Parameters
@@ -50,7 +52,7 @@ def format_of(path):
     return next((f for f, suffixes in FORMATS.items() if suffix in suffixes), "toml")
 
 
-def load(path, wheel_joints=None, controller=None):
+def load(path: PathLike, wheel_joints: WheelJoints | None = None, controller: str | None = None) -> Robot:
     """The robot described by a robot file: TOML, URDF or ROS 2 parameters, by its suffix (:data:`FORMATS`).
 
     Parameters
@@ -86,7 +88,8 @@ def load(path, wheel_joints=None, controller=None):
     return toml.load(path)
 
 
-def dump(robot, path=None, format=None, joint_names=None):
+def dump(robot: Robot, path: PathLike | None = None, format: str | None = None,
+         joint_names: JointNames | None = None) -> str:
     """The text of a robot file for ``robot`` (and write it to ``path`` if given), TOML unless told otherwise.
 
     Parameters

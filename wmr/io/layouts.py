@@ -6,19 +6,19 @@ from those numbers (wheels in the layout's order); :mod:`wmr.io.recognise` finds
 when a robot is not one.  Frames are wmr's
 (:mod:`wmr.model.conventions`), which are REP-103's and WPILib's: x forward, y left, C the origin.
 
-==============  =========================================================================  =====================
-layout          wheels, in the layout's order                                              numbers
-==============  =========================================================================  =====================
-``differential``  left and right fixed wheels at :math:`(0, \pm t/2)`, angle 90 deg             track t
-``mecanum``     Swedish wheels FL, FR, RL, RR, angle 90 deg, rollers +45, -45, -45, +45 deg  4 mount points
-``omni``        n >= 3 Swedish wheels, rollers 90 deg, at :math:`R(\cos a_k, \sin a_k)`,      n, R, :math:`a_0`
-                :math:`a_k = a_0 + 2\pi k/n`, axle radial (angle :math:`a_k`)
-``swerve``      centred (swerve) wheels anywhere                                           mount points
-``bicycle``     steered centred wheel at :math:`(l, 0)`, fixed wheel at C (angle 90 deg)       wheelbase l
-``tricycle``    steered centred wheel at :math:`(l, 0)`, fixed wheels at :math:`(0, \pm t/2)`  l, t
-``ackermann``   steered centred wheels at :math:`(l, \pm s/2)`, fixed wheels at              l, t, s
-                :math:`(0, \pm t/2)` (left before right)
-==============  =========================================================================  =====================
+================  =============================================================================  =================
+layout            wheels, in the layout's order                                                  numbers
+================  =============================================================================  =================
+``differential``  left and right fixed wheels at :math:`(0, \pm t/2)`, angle 90 deg              track t
+``mecanum``       Swedish wheels FL, FR, RL, RR, angle 90 deg, rollers +45, -45, -45, +45 deg    4 mount points
+``omni``          n >= 3 Swedish wheels, rollers 90 deg, at :math:`R(\cos a_k, \sin a_k)`,       n, R, :math:`a_0`
+                  :math:`a_k = a_0 + 2\pi k/n`, axle radial (angle :math:`a_k`)
+``swerve``        centred (swerve) wheels anywhere                                               mount points
+``bicycle``       steered centred wheel at :math:`(l, 0)`, fixed wheel at C (angle 90 deg)       wheelbase l
+``tricycle``      steered centred wheel at :math:`(l, 0)`, fixed wheels at :math:`(0, \pm t/2)`  l, t
+``ackermann``     steered centred wheels at :math:`(l, \pm s/2)`, fixed wheels at                l, t, s
+                  :math:`(0, \pm t/2)` (left before right)
+================  =============================================================================  =================
 
 The mecanum rollers are those whose wheel speeds WPILib's ``MecanumDriveKinematics`` and ROS 2's
 ``mecanum_drive_controller`` compute (FL: :math:`v_x - v_y - (l_x + l_y)\omega`, ...): an X seen from
@@ -32,6 +32,7 @@ from ..errors import InputValueError
 from ..model import validation as V
 from ..model.platform import wrap_angle
 from ..model.robot import Robot
+from ..model.types import ArrayLike, FloatArray, Point
 from ..model.wheels import CentredWheel, FixedWheel, SwedishWheel
 
 __all__ = ["LAYOUTS", "differential", "mecanum", "omni", "swerve", "car", "rectangle"]
@@ -58,7 +59,8 @@ def _radii(radius, n):
     return np.broadcast_to(r.reshape(-1), (n,))
 
 
-def differential(track, radius, radius_right=None, name="differential drive"):
+def differential(track: float, radius: float, radius_right: float | None = None,
+                 name: str = "differential drive") -> Robot:
     """A differential drive: left and right fixed wheels at ``(0, +-track/2)``, rolling along x.
 
     Parameters
@@ -86,7 +88,7 @@ def differential(track, radius, radius_right=None, name="differential drive"):
                   FixedWheel((0.0, -half), r=right, angle=_HALF_PI)], name=name)
 
 
-def rectangle(length, width, centre=(0.0, 0.0)):
+def rectangle(length: float, width: float, centre: Point = (0.0, 0.0)) -> FloatArray:
     """The corners FL, FR, RL, RR of a ``length`` (along x) by ``width`` rectangle about ``centre``.
 
     Parameters
@@ -109,7 +111,7 @@ def rectangle(length, width, centre=(0.0, 0.0)):
     return np.array([[cx + a, cy + b], [cx + a, cy - b], [cx - a, cy + b], [cx - a, cy - b]], dtype=float)
 
 
-def mecanum(positions, radius, name="mecanum drive"):
+def mecanum(positions: ArrayLike, radius: ArrayLike, name: str = "mecanum drive") -> Robot:
     """Four mecanum wheels FL, FR, RL, RR at ``positions``, rolling along x, rollers in an X (+45, -45, -45, +45 deg).
 
     Parameters
@@ -132,7 +134,7 @@ def mecanum(positions, radius, name="mecanum drive"):
                   for p, r, g in zip(positions, radii, rollers)], name=name)
 
 
-def omni(n, ring, radius, offset=0.0, name="omni drive"):
+def omni(n: int, ring: float, radius: float, offset: float = 0.0, name: str = "omni drive") -> Robot:
     r"""``n`` omni wheels evenly on a circle of radius ``ring`` about C, the first at angle ``offset``, anticlockwise.
 
     Wheel k is at :math:`R(\cos a_k, \sin a_k)`, :math:`a_k = a_0 + 2\pi k/n`, its axle radial
@@ -166,7 +168,7 @@ def omni(n, ring, radius, offset=0.0, name="omni drive"):
                   for a in angles], name=name)
 
 
-def swerve(positions, radius, name="swerve drive"):
+def swerve(positions: ArrayLike, radius: ArrayLike, name: str = "swerve drive") -> Robot:
     """Swerve modules (centred steered wheels) at ``positions``.
 
     Parameters
@@ -184,7 +186,8 @@ def swerve(positions, radius, name="swerve drive"):
     return Robot([CentredWheel(tuple(p), r=float(r)) for p, r in zip(positions, radii)], name=name)
 
 
-def car(wheelbase, traction_track, steering_track, traction_radius, steering_radius=None, name="car-like robot"):
+def car(wheelbase: float, traction_track: float, steering_track: float, traction_radius: float,
+        steering_radius: float | None = None, name: str = "car-like robot") -> Robot:
     """A car-like robot: steered centred wheels ``wheelbase`` ahead of fixed wheels on an axle through C.
 
     A track of 0 puts one wheel on that axle (bicycle: both 0; tricycle: ``steering_track`` 0;
@@ -217,4 +220,4 @@ def car(wheelbase, traction_track, steering_track, traction_radius, steering_rad
     rs = traction_radius if steering_radius is None else steering_radius
     steered = [CentredWheel((base, y), r=rs, driven={"drive": False}) for y in ((s, -s) if s else (0.0,))]
     traction = [FixedWheel((0.0, y), r=traction_radius, angle=_HALF_PI) for y in ((t, -t) if t else (0.0,))]
-    return Robot(steered + traction, name=name)
+    return Robot([*steered, *traction], name=name)

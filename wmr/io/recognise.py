@@ -10,6 +10,7 @@ relative to the robot's size.
 """
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -18,8 +19,11 @@ from ..analysis.linalg import rank
 from ..errors import InputValueError
 from ..model import validation as V
 from ..model.platform import wrap_angle
+from ..model.robot import Robot
 from ..model.tolerance import TOL
+from ..model.types import ArrayLike, FloatArray
 from ..model.wheels import CentredWheel, FixedWheel, SwedishWheel
+from ..model.wheels.unit import WheelUnit
 from .layouts import LAYOUTS, rectangle
 
 __all__ = ["Layout", "recognise", "rectangle_of", "free_passive"]
@@ -61,7 +65,7 @@ class _NotIt(Exception):
     """The robot is not this layout (the message says why)."""
 
 
-def free_passive(unit):
+def free_passive(unit: WheelUnit) -> bool:
     """True for a passive castor: every joint passive, and no constraint on the twist (its block has rank 2).
 
     Parameters
@@ -193,7 +197,7 @@ _RECOGNISERS = {
 }
 
 
-def recognise(robot, names, where="this format"):
+def recognise(robot: Robot, names: Sequence[str], where: str = "this format") -> Layout:
     """The first of the layouts ``names`` that ``robot`` is (passive castors left out).
 
     Parameters
@@ -245,7 +249,7 @@ def recognise(robot, names, where="this format"):
                           + f"){hint}: " + "; ".join(why))
 
 
-def rectangle_of(positions):
+def rectangle_of(positions: ArrayLike) -> tuple[tuple[int, int, int, int], float, float, FloatArray]:
     """The corners FL, FR, RL, RR of four points on an axis-aligned rectangle, its sides and its centre.
 
     Front is the two points of larger x, left the one of larger y of each pair.

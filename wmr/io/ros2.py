@@ -26,6 +26,7 @@ from pathlib import Path
 from ..errors import InputError, InputTypeError, InputValueError, RobotFileError
 from ..model import validation as V
 from ..model.robot import Robot
+from ..model.types import JointNames, PathLike
 from .recognise import recognise
 from .ros2_controllers import CONTROLLERS
 from .ros2_params import Params, parse
@@ -69,7 +70,7 @@ def _has(params, key):
     return True
 
 
-def from_ros2(path, controller=None):
+def from_ros2(path: PathLike, controller: str | None = None) -> Robot:
     """The robot of the drive controller in a ROS 2 parameter file (YAML).
 
     Parameters
@@ -88,7 +89,7 @@ def from_ros2(path, controller=None):
     wmr.errors.RobotFileError
         ``FILE:LINE: node.key: what is wrong`` (a key missing: the line of the node's ``ros__parameters``).
     wmr.errors.MissingDependencyError
-        Without PyYAML (``pip install 'wmr[ros]'``).
+        Without PyYAML (``pip install 'wmr-kinematics[ros]'``).
     OSError
         If the file cannot be read.
     """
@@ -172,7 +173,8 @@ def _namer(robot, joint_names):
     return names
 
 
-def to_ros2(robot, path=None, controller=None, joint_names=None):
+def to_ros2(robot: Robot, path: PathLike | None = None, controller: str | None = None,
+            joint_names: JointNames | None = None) -> str:
     """The ROS 2 parameters of the drive controller that fits ``robot`` (and write them to ``path`` if given).
 
     Parameters

@@ -67,7 +67,7 @@ def _lines(node, prefix, out):
             _lines(value, path, out)
 
 
-def parse(raw, source):
+def parse(raw: bytes, source: str) -> list[Block]:
     """The node blocks of a ROS 2 parameter file, with their lines.
 
     Parameters

@@ -45,6 +45,7 @@ from ..model import validation as V
 from ..model.limits import check, limit
 from ..model.robot import Robot
 from ..model.tolerance import near_zero
+from ..model.types import PathLike
 from ..model.wheels import wheel_kinds
 from ..model.wheels.filekeys import toml_string, toml_text
 
@@ -55,7 +56,7 @@ _TOP_KEYS = ("name", "wheel")
 _DRIVEN = "driven"
 
 
-def wheel_keys():
+def wheel_keys() -> dict[str, tuple[str, ...]]:
     """The keys of each wheel kind's table, as the kinds declare them (all required; ``driven`` is optional).
 
     Returns
@@ -178,7 +179,7 @@ def _wheel(k, table, lines, fail):
         fail(lines.of(k, at), f"{name}.{at}" if at else name, str(exc))
 
 
-def loads(text, source="<string>"):
+def loads(text: str, source: str = "<string>") -> Robot:
     """The robot described by the TOML text of a robot file.
 
     Parameters
@@ -267,7 +268,7 @@ def loads(text, source="<string>"):
         fail(lines.of(None, "wheel"), "wheel", str(exc))
 
 
-def load(path):
+def load(path: PathLike) -> Robot:
     """The robot described by a robot file (TOML).
 
     Parameters
@@ -312,7 +313,7 @@ def _value(v):
     return "[" + ", ".join(_float(x) for x in v) + "]" if isinstance(v, list) else _float(v)
 
 
-def dump(robot, path=None):
+def dump(robot: Robot, path: PathLike | None = None) -> str:
     """The TOML text of a robot file for ``robot`` (and write it to ``path`` if given).
 
     ``load(path)`` of the result builds the same matrices (angles go through degrees, within a

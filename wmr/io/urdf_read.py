@@ -52,6 +52,7 @@ import numpy as np
 from ..errors import InputError, InputTypeError, InputValueError, RobotFileError
 from ..model import validation as V
 from ..model.robot import Robot
+from ..model.types import PathLike, WheelJoints
 from ..model.wheels import CentredWheel, DualWheel, FixedWheel, OffsetWheel, SwedishWheel
 from .urdf_tree import AXIS_SNAP, UrdfTree, is_horizontal, is_vertical, suggest
 
@@ -250,7 +251,7 @@ def _unit(rd: UrdfTree, steering, wheels, info):
     return DualWheel(tuple(P), r=radius, b=b, driven=_driven(rd, DualWheel, steering, wheels, ()))
 
 
-def from_urdf(path, wheel_joints=None):
+def from_urdf(path: PathLike, wheel_joints: WheelJoints | None = None) -> Robot:
     """The robot a URDF file describes (rules: module notes); :func:`read_urdf` gives its joint names too.
 
     Parameters
@@ -272,14 +273,14 @@ def from_urdf(path, wheel_joints=None):
     wmr.errors.RobotFileError
         ``FILE:LINE: joint 'name': what is wrong`` (module notes).
     wmr.errors.MissingDependencyError
-        Without yourdfpy (``pip install 'wmr[urdf]'``).
+        Without yourdfpy (``pip install 'wmr-kinematics[urdf]'``).
     OSError
         If the file cannot be read.
     """
     return read_urdf(path, wheel_joints)[0]
 
 
-def read_urdf(path, wheel_joints=None):
+def read_urdf(path: PathLike, wheel_joints: WheelJoints | None = None) -> tuple[Robot, list[dict[str, str]]]:
     """The robot a URDF file describes, and the name in the file of each of its units' joints.
 
     Parameters

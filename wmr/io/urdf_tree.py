@@ -9,12 +9,14 @@ from __future__ import annotations
 
 import difflib
 import io
+from collections.abc import Iterable
 from pathlib import Path
 from typing import Any, NoReturn
 
 import numpy as np
 
 from ..errors import RobotFileError
+from ..model.types import ArrayLike, FloatArray
 from .extras import require
 
 __all__ = ["AXIS_SNAP", "UrdfTree", "snap", "suggest", "is_vertical", "is_horizontal"]
@@ -119,7 +121,7 @@ class UrdfTree:
         """
         raise RobotFileError(self.source, int(line or 1), key, reason)
 
-    def line(self, tag, name):
+    def line(self, tag: str, name: str) -> int:
         """The line of ``<tag name=name>`` (1 if unknown).
 
         Parameters
@@ -179,7 +181,7 @@ class UrdfTree:
         self.pose[link] = self._pose(j.parent, seen + (link,)) @ origin
         return self.pose[link]
 
-    def path(self, joint):
+    def path(self, joint: str) -> list[Any]:
         """The joints from the root down to ``joint`` (excluded), root first.
 
         Parameters
@@ -197,7 +199,7 @@ class UrdfTree:
             link = j.parent
         return out[::-1]
 
-    def axis(self, joint):
+    def axis(self, joint: str) -> FloatArray:
         """A joint's axis in the platform frame, unit length, components below AXIS_SNAP set to zero.
 
         Parameters
@@ -211,7 +213,7 @@ class UrdfTree:
         j = self.joints[joint]
         return snap(self.pose[j.child][:3, :3] @ np.asarray(j.axis, dtype=float))
 
-    def centre(self, joint):
+    def centre(self, joint: str) -> FloatArray:
         """The origin of a joint (its child link's) in the platform frame.
 
         Parameters
@@ -224,7 +226,7 @@ class UrdfTree:
         """
         return self.pose[self.joints[joint].child][:3, 3]
 
-    def cylinder(self, joint):
+    def cylinder(self, joint: str) -> tuple[float | None, Any]:
         """(radius, axis in the platform frame) of the child link's first cylinder, or (None, the shapes it has).
 
         Parameters
@@ -246,7 +248,7 @@ class UrdfTree:
         return None, shapes
 
 
-def snap(v):
+def snap(v: ArrayLike) -> FloatArray:
     """``v`` normalised, components below :data:`AXIS_SNAP` set to zero, normalised again.
 
     Parameters
@@ -268,8 +270,8 @@ def snap(v):
     return v / np.linalg.norm(v)
 
 
-def suggest(word, choices):
-    """`` (did you mean 'x'?)`` for the closest of ``choices``, or an empty string.
+def suggest(word: str, choices: Iterable[str]) -> str:
+    """The hint ``" (did you mean 'x'?)"`` naming the closest of ``choices`` to ``word``, or an empty string.
 
     Parameters
     ----------
@@ -284,7 +286,7 @@ def suggest(word, choices):
     return f" (did you mean {close[0]!r}?)" if close else ""
 
 
-def is_vertical(a):
+def is_vertical(a: FloatArray) -> bool:
     """True for a unit axis along +-z (within :data:`AXIS_SNAP`).
 
     Parameters
@@ -298,7 +300,7 @@ def is_vertical(a):
     return bool(abs(abs(a[2]) - 1.0) <= AXIS_SNAP)
 
 
-def is_horizontal(a):
+def is_horizontal(a: FloatArray) -> bool:
     """True for a unit axis in the xy plane (within :data:`AXIS_SNAP`).
 
     Parameters

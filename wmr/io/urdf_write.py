@@ -33,6 +33,8 @@ import numpy as np
 
 from ..errors import InputTypeError, InputValueError
 from ..model import validation as V
+from ..model.robot import Robot
+from ..model.types import PathLike
 from ..model.wheels.mechanism import Mechanism, wheel
 from ..model.wheels.parts import Rollers
 
@@ -42,7 +44,7 @@ __all__ = ["ROLLERS", "joint_name", "to_urdf"]
 ROLLERS = 8
 
 
-def joint_name(i, joint):
+def joint_name(i: int, joint: str) -> str:
     """The URDF name of joint ``joint`` (e.g. ``"drive"``) of wheel unit ``i`` (1-based): ``wheel{i}_{joint}``.
 
     The names :func:`to_urdf` and :func:`wmr.io.to_ros2` write, so that the two files agree.
@@ -165,7 +167,7 @@ def _unit(i, u, height):
     return lines, commanded
 
 
-def to_urdf(robot, path=None):
+def to_urdf(robot: Robot, path: PathLike | None = None) -> str:
     """The URDF text of ``robot`` (and write it to ``path`` if given); :func:`wmr.io.from_urdf` reads it back.
 
     Parameters

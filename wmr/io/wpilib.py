@@ -24,10 +24,15 @@ where a twist is expected reads :math:`v_x` as the turning rate: :func:`twist_of
 """
 from __future__ import annotations
 
+from collections.abc import Sequence
+from typing import Any
+
 import numpy as np
 
 from ..errors import InputTypeError, InputValueError
 from ..model import validation as V
+from ..model.robot import Robot
+from ..model.types import ArrayLike, FloatArray
 from .chassis import chassis_speeds, twist_of
 from .extras import require
 from .layouts import differential, mecanum, swerve
@@ -51,7 +56,7 @@ def _kinematics():
     return require("wpilib", "WPILib kinematics objects", "wpimath.kinematics")
 
 
-def from_wpilib(kinematics, wheel_radius):
+def from_wpilib(kinematics: Any, wheel_radius: ArrayLike) -> Robot:
     """The robot of a WPILib kinematics object.
 
     Parameters
@@ -104,7 +109,7 @@ def from_wpilib(kinematics, wheel_radius):
                          f"DifferentialDriveKinematics, got {type(kinematics).__name__}")
 
 
-def to_wpilib(robot):
+def to_wpilib(robot: Robot) -> Any:
     """The WPILib kinematics object of ``robot``: swerve, mecanum or differential (radii are dropped).
 
     Parameters
@@ -146,7 +151,7 @@ def _modules(kind, beta, values):
     return [make(float(v), geometry.Rotation2d(float(a))) for a, v in zip(np.atleast_1d(alpha), np.atleast_1d(values))]
 
 
-def module_states(beta, speed):
+def module_states(beta: ArrayLike, speed: ArrayLike) -> list[Any]:
     r"""WPILib ``SwerveModuleState`` objects of wmr's angles :math:`\beta` and signed speeds :math:`r\dot\theta`.
 
     Parameters
@@ -161,7 +166,7 @@ def module_states(beta, speed):
     return _modules("SwerveModuleState", beta, speed)
 
 
-def module_positions(beta, distance):
+def module_positions(beta: ArrayLike, distance: ArrayLike) -> list[Any]:
     r"""WPILib ``SwerveModulePosition`` objects of wmr's angles and wheel travels :math:`r\theta` (metres).
 
     Parameters
@@ -175,7 +180,7 @@ def module_positions(beta, distance):
     return _modules("SwerveModulePosition", beta, distance)
 
 
-def from_module_states(states):
+def from_module_states(states: Sequence[Any]) -> tuple[FloatArray, FloatArray]:
     r"""wmr's ``(beta, value)`` of WPILib ``SwerveModuleState`` (speed) or ``SwerveModulePosition`` (distance) objects.
 
     Parameters

@@ -3,6 +3,7 @@ r"""The model: what a wheeled mobile robot *is* (no analysis here).
 ==============================  ==================================================================================
 :mod:`~wmr.model.backend`       the two backends (NumPy numbers, SymPy symbols) every matrix is built with
 :mod:`~wmr.model.tolerance`     the one numerical tolerance, and the column scaling ranks are decided with
+:mod:`~wmr.model.types`         the types of the public API's arguments and results (annotations)
 :mod:`~wmr.model.checks`        input checks of scalars, points and flags (:mod:`wmr.errors`: wrong kind, bad value)
 :mod:`~wmr.model.arrays`        the same for arrays (finite batches, SymPy vectors and matrices)
 :mod:`~wmr.model.robot_checks`  the same for robots
@@ -16,5 +17,5 @@ r"""The model: what a wheeled mobile robot *is* (no analysis here).
 ==============================  ==================================================================================
 """
 
-__all__ = ["backend", "tolerance", "checks", "arrays", "robot_checks", "validation", "platform", "trig", "wheels",
-           "robot", "robots", "conventions"]
+__all__ = ["backend", "tolerance", "types", "checks", "arrays", "robot_checks", "validation", "platform", "trig",
+           "wheels", "robot", "robots", "conventions"]

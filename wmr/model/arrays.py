@@ -13,12 +13,14 @@ wmr.errors.InputTypeError: beta must be an array of real numbers, got strings: [
 from __future__ import annotations
 
 import numbers
+from collections.abc import Mapping
 
 import numpy as np
 import sympy as sp
 
 from ..errors import InputTypeError, InputValueError
 from .checks import finite_float, kind_error, real, show
+from .types import ArrayLike, FloatArray, Numbers, Symbolic, Twist
 
 __all__ = ["finite_array", "twist_array", "twist_kind", "TWIST_OBJECTS", "batch_shape", "symbolic_vector",
            "symbolic_matrix"]
@@ -66,7 +68,7 @@ def _object_array(name, raw, value):
     return out
 
 
-def finite_array(name, value, last=None):
+def finite_array(name: str, value: ArrayLike, last: int | None = None) -> FloatArray:
     """Convert to a float array; require finite real entries and (optionally) the size of the last axis.
 
     Parameters
@@ -125,7 +127,7 @@ def finite_array(name, value, last=None):
     return arr
 
 
-def twist_array(name, value):
+def twist_array(name: str, value: Twist) -> FloatArray:
     r"""A twist :math:`[\dot\psi, \dot x, \dot y]` (..., 3): numbers in wmr's order, or twist objects read by field.
 
     A WPILib ``ChassisSpeeds(vx, vy, omega)`` becomes ``[omega, vx, vy]``, a WPILib ``Twist2d`` ``[dtheta, dx,
@@ -156,7 +158,7 @@ def twist_array(name, value):
     return finite_array(name, value, last=3)
 
 
-def batch_shape(arrays, core=1):
+def batch_shape(arrays: Mapping[str, FloatArray | None], core: int = 1) -> tuple[int, ...]:
     """The common batch shape of named arrays (each with ``core`` trailing axes), or a ``ValueError`` naming them.
 
     Parameters
@@ -189,7 +191,7 @@ def batch_shape(arrays, core=1):
                          f"got {shapes}") from None
 
 
-def symbolic_vector(name, value, size):
+def symbolic_vector(name: str, value: Numbers, size: int) -> Symbolic:
     """Convert to a SymPy column of the given length (entries: real SymPy expressions or numbers).
 
     Parameters
@@ -223,7 +225,7 @@ def symbolic_vector(name, value, size):
     return sp.Matrix([real(f"{name}[{k}]", v) for k, v in enumerate(entries)])
 
 
-def symbolic_matrix(name, value):
+def symbolic_matrix(name: str, value: Numbers) -> Symbolic:
     """Return ``value`` as a ``sympy.Matrix`` (2-D, entries real SymPy expressions or numbers).
 
     Parameters

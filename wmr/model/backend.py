@@ -8,12 +8,16 @@ derivation notebooks and the numeric kernels cannot drift apart.
 """
 from __future__ import annotations
 
+from collections.abc import Sequence
+from typing import TypeAlias
+
 import numpy as np
 import sympy as sp
 
 from ..errors import InputTypeError
+from .types import ArrayLike, FloatArray, Symbolic
 
-__all__ = ["NumericBackend", "SymbolicBackend", "NUMERIC", "SYMBOLIC", "is_symbolic", "choose"]
+__all__ = ["NumericBackend", "SymbolicBackend", "Backend", "NUMERIC", "SYMBOLIC", "is_symbolic", "choose"]
 
 
 class NumericBackend:
@@ -22,32 +26,32 @@ class NumericBackend:
     name = "numpy"
 
     @staticmethod
-    def cos(x):
+    def cos(x: ArrayLike) -> FloatArray:
         return np.cos(x)
 
     @staticmethod
-    def sin(x):
+    def sin(x: ArrayLike) -> FloatArray:
         return np.sin(x)
 
     @staticmethod
-    def matrix(rows):
+    def matrix(rows: Sequence[Sequence[ArrayLike]]) -> FloatArray:
         """Build a ``(..., m, n)`` array from nested rows of broadcastable entries."""
         flat = np.broadcast_arrays(*[np.asarray(e, dtype=float) for row in rows for e in row])
         m, n = len(rows), len(rows[0])
         return np.stack(flat, axis=-1).reshape(flat[0].shape + (m, n))
 
     @staticmethod
-    def zeros(m, n, batch=()):
+    def zeros(m: int, n: int, batch: tuple[int, ...] = ()) -> FloatArray:
         return np.zeros(tuple(batch) + (m, n))
 
     @staticmethod
-    def set_block(M, i, j, B):
+    def set_block(M: FloatArray, i: int, j: int, B: ArrayLike) -> FloatArray:
         B = np.asarray(B, dtype=float)
         M[..., i:i + B.shape[-2], j:j + B.shape[-1]] = B
         return M
 
     @staticmethod
-    def broadcast_hstack(*Ms):
+    def broadcast_hstack(*Ms: ArrayLike) -> FloatArray:
         """Concatenate along columns after broadcasting the batch axes (not the matrix axes)."""
         arrays = [np.asarray(M, dtype=float) for M in Ms]
         batch = np.broadcast_shapes(*[M.shape[:-2] for M in arrays])
@@ -56,11 +60,11 @@ class NumericBackend:
     hstack = broadcast_hstack
 
     @staticmethod
-    def transpose(M):
+    def transpose(M: FloatArray) -> FloatArray:
         return np.swapaxes(M, -1, -2)
 
     @staticmethod
-    def eye(n):
+    def eye(n: int) -> FloatArray:
         return np.eye(n)
 
 
@@ -70,47 +74,51 @@ class SymbolicBackend:
     name = "sympy"
 
     @staticmethod
-    def cos(x):
+    def cos(x: Symbolic) -> Symbolic:
         return sp.cos(x)
 
     @staticmethod
-    def sin(x):
+    def sin(x: Symbolic) -> Symbolic:
         return sp.sin(x)
 
     @staticmethod
-    def matrix(rows):
+    def matrix(rows: Sequence[Sequence[Symbolic]]) -> Symbolic:
         return sp.Matrix(rows)
 
     @staticmethod
-    def zeros(m, n, batch=()):
+    def zeros(m: int, n: int, batch: tuple[int, ...] = ()) -> Symbolic:
         return sp.zeros(m, n)
 
     @staticmethod
-    def set_block(M, i, j, B):
+    def set_block(M: Symbolic, i: int, j: int, B: Symbolic) -> Symbolic:
         B = sp.Matrix(B)
         M[i:i + B.rows, j:j + B.cols] = B
         return M
 
     @staticmethod
-    def broadcast_hstack(*Ms):
+    def broadcast_hstack(*Ms: Symbolic) -> Symbolic:
         return sp.Matrix.hstack(*[sp.Matrix(M) for M in Ms])
 
     hstack = broadcast_hstack
 
     @staticmethod
-    def transpose(M):
+    def transpose(M: Symbolic) -> Symbolic:
         return M.T
 
     @staticmethod
-    def eye(n):
+    def eye(n: int) -> Symbolic:
         return sp.eye(n)
 
 
+#: either backend (the type of a ``backend`` argument)
+Backend: TypeAlias = NumericBackend | SymbolicBackend
+#: the NumPy backend: batched floating-point arrays
 NUMERIC = NumericBackend()
+#: the SymPy backend: exact matrices of symbols and rationals
 SYMBOLIC = SymbolicBackend()
 
 
-def is_symbolic(*values) -> bool:
+def is_symbolic(*values: object) -> bool:
     """True when any value (or any element of a sequence/array of values) is SymPy.
 
     Parameters
@@ -137,7 +145,7 @@ def is_symbolic(*values) -> bool:
     return False
 
 
-def choose(*values, backend=None):
+def choose(*values: object, backend: Backend | None = None) -> Backend:
     """Pick the backend: the one given, else SymPy if any value is symbolic, else NumPy.
 
     Parameters

@@ -32,11 +32,13 @@ from __future__ import annotations
 
 import math
 import numbers
+from typing import Any
 
 import numpy as np
 import sympy as sp
 
 from ..errors import InputTypeError, InputValueError
+from .types import Numbers
 
 __all__ = ["real", "number", "positive", "nonnegative", "point", "flag", "optional_text", "integer", "show",
            "kind_error", "finite_float"]
@@ -44,7 +46,7 @@ __all__ = ["real", "number", "positive", "nonnegative", "point", "flag", "option
 _NON_FINITE = (sp.nan, sp.zoo, sp.oo, -sp.oo)
 
 
-def show(value, limit=80):
+def show(value: Any, limit: int = 80) -> str:
     """A short one-line text form of ``value`` for error messages.
 
     Parameters
@@ -84,7 +86,7 @@ def _scalar(value):
     return value
 
 
-def kind_error(name, value, wanted):
+def kind_error(name: str, value: Any, wanted: str) -> InputTypeError:
     """The error for an argument of the wrong kind: names it, shows it and says what was wanted.
 
     Parameters
@@ -112,7 +114,7 @@ def kind_error(name, value, wanted):
     return InputTypeError(f"{name} must be {wanted}, got {show(value)} ({kind})")
 
 
-def finite_float(name, value):
+def finite_float(name: str, value: Any) -> float:
     """``float(value)`` for a real number; an input error if it is not finite in double precision.
 
     Parameters
@@ -168,7 +170,7 @@ def _symbolic(name, value, wanted="a real number"):
     return value
 
 
-def real(name, value):
+def real(name: str, value: Any) -> Numbers:
     """Return ``value`` if it is a finite real number (or a SymPy expression that may be one).
 
     Parameters
@@ -212,7 +214,7 @@ def _signed(name, value, strict):
     return value
 
 
-def number(name, value):
+def number(name: str, value: Any) -> float:
     """Return ``value`` as a ``float`` if it is a finite real number (SymPy numbers too, not symbols).
 
     Parameters
@@ -237,7 +239,7 @@ def number(name, value):
     return float(value)
 
 
-def positive(name, value):
+def positive(name: str, value: Any) -> Numbers:
     """Return ``value`` if it is a positive finite number (or a SymPy expression not known to be <= 0).
 
     Integers stay integers (so that SymPy expressions built from them stay exact).
@@ -259,7 +261,7 @@ def positive(name, value):
     return _signed(name, value, strict=True)
 
 
-def nonnegative(name, value):
+def nonnegative(name: str, value: Any) -> Numbers:
     """Return ``value`` if it is a finite number >= 0 (or a SymPy expression not known to be < 0).
 
     Parameters
@@ -279,7 +281,7 @@ def nonnegative(name, value):
     return _signed(name, value, strict=False)
 
 
-def point(name, value):
+def point(name: str, value: Any) -> tuple[Numbers, Numbers]:
     """Return a pair ``(x, y)`` of finite reals (floats) or SymPy expressions.
 
     Parameters
@@ -308,10 +310,10 @@ def point(name, value):
     for k, v in enumerate(items):
         v = real(f"{name}[{k}] (of {show(value, 40)})", v)
         out.append(v if isinstance(v, sp.Basic) else float(v))
-    return tuple(out)
+    return out[0], out[1]
 
 
-def flag(name, value):
+def flag(name: str, value: Any) -> bool:
     """Return ``value`` as ``bool`` if it is a bool (Python or NumPy).
 
     Parameters
@@ -333,7 +335,7 @@ def flag(name, value):
     raise kind_error(name, value, "True or False")
 
 
-def optional_text(name, value):
+def optional_text(name: str, value: Any) -> str | None:
     """Return ``value`` if it is a string or None.
 
     Parameters
@@ -350,7 +352,7 @@ def optional_text(name, value):
     raise kind_error(name, value, "a string or None")
 
 
-def integer(name, value, minimum=None):
+def integer(name: str, value: Any, minimum: int | None = None) -> int:
     """Return ``value`` as ``int`` if it is an integer (not a bool), at least ``minimum``.
 
     Parameters

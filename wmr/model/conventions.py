@@ -129,6 +129,7 @@ import numpy as np
 from .arrays import finite_array
 from .checks import kind_error
 from .platform import wrap_angle
+from .types import ArrayLike, FloatArray
 
 __all__ = ["CONVENTIONS", "TWIST_ORDER", "checked", "angle_to", "angle_from"]
 
@@ -165,7 +166,7 @@ def checked(convention: object) -> str:
     return convention
 
 
-def angle_to(beta, convention: str) -> np.ndarray:
+def angle_to(beta: ArrayLike, convention: str) -> FloatArray:
     r"""wmr's steering angles :math:`\beta` (radians) in the ``convention`` (radians, in :math:`(-\pi, \pi]`).
 
     Parameters
@@ -186,7 +187,7 @@ def angle_to(beta, convention: str) -> np.ndarray:
     return wrap_angle(finite_array("beta", beta) + _OFFSET[checked(convention)])
 
 
-def angle_from(angle, convention: str, argument: str = "angle") -> np.ndarray:
+def angle_from(angle: ArrayLike, convention: str, argument: str = "angle") -> FloatArray:
     r"""wmr's steering angles :math:`\beta` (radians) from angles in the ``convention`` (radians).
 
     Parameters

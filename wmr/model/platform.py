@@ -18,14 +18,15 @@ import numpy as np
 
 from ..errors import InputTypeError, InputValueError
 from .arrays import batch_shape, finite_array, symbolic_matrix, twist_array
-from .backend import NUMERIC, choose
+from .backend import NUMERIC, Backend, choose
 from .checks import integer, point, positive, real, show
 from .tolerance import TOL
+from .types import ArrayLike, FloatArray, Matrix, Numbers, Point, Twist
 
 __all__ = ["E", "rotation", "cos_sin", "rotated", "wrap_angle", "line_angle", "point_row", "point_velocity"]
 
 
-def E(backend=NUMERIC):
+def E(backend: Backend = NUMERIC) -> Matrix:
     r"""The counter-clockwise quarter turn :math:`\mathbf E` (3): :math:`\mathbf E\mathbf v = \mathbf k\times\mathbf v`.
 
     Parameters
@@ -44,7 +45,7 @@ def E(backend=NUMERIC):
     return choose(backend=backend).matrix([[0, -1], [1, 0]])
 
 
-def rotation(angle, backend=NUMERIC):
+def rotation(angle: Numbers, backend: Backend = NUMERIC) -> Matrix:
     r"""Rotation matrix through ``angle`` (11): :math:`\mathbf R_{bwi}` when ``angle`` is :math:`\beta_i`.
 
     Parameters
@@ -70,7 +71,7 @@ def rotation(angle, backend=NUMERIC):
     return backend.matrix([[c, -s], [s, c]])
 
 
-def cos_sin(beta, out=None):
+def cos_sin(beta: ArrayLike, out: tuple[FloatArray, FloatArray] | None = None) -> tuple[FloatArray, FloatArray]:
     r""":math:`(\cos\beta, \sin\beta)` of an array of angles, from :math:`t = \tan(\beta/2)`.
 
     .. math:: \cos\beta = \frac{2}{1 + t^2} - 1,\qquad \sin\beta = \frac{2t}{1 + t^2}.
@@ -118,7 +119,7 @@ def cos_sin(beta, out=None):
     return c, s
 
 
-def rotated(beta, M, EM, axes=2, backend=None):
+def rotated(beta: Numbers, M: Matrix, EM: Matrix, axes: int = 2, backend: Backend | None = None) -> Matrix:
     r"""A block rotated by :math:`\beta`: :math:`\cos\beta\,\mathbf M + \sin\beta\,\mathbf E\mathbf M`, batched.
 
     The rotation (11) is linear in :math:`(\cos\beta, \sin\beta)`:
@@ -136,7 +137,7 @@ def rotated(beta, M, EM, axes=2, backend=None):
     ----------
     beta : array (...), sympy.Expr, or pair (cos_beta, sin_beta) of arrays (...)
         The angle, or its cosine and sine when the caller already has them.
-    M, EM : array (..., *block) or sympy.Matrix
+    M, EM : array (..., \*block) or sympy.Matrix
         The block and its image :math:`\mathbf E\mathbf M` (or the same linear image of both);
         broadcast against ``beta``.
     axes : int, optional
@@ -146,7 +147,7 @@ def rotated(beta, M, EM, axes=2, backend=None):
 
     Returns
     -------
-    numpy.ndarray (..., *block) or sympy.Matrix
+    numpy.ndarray (..., \*block) or sympy.Matrix
 
     Examples
     --------
@@ -192,7 +193,7 @@ def _combination(c, s, M, EM):
     return c * M + s * EM                          # (11): R(beta) M = cos(beta) M + sin(beta) E M
 
 
-def wrap_angle(angle):
+def wrap_angle(angle: ArrayLike) -> FloatArray:
     r"""Angles mapped to :math:`(-\pi, \pi]` (element-wise).
 
     Parameters
@@ -212,7 +213,7 @@ def wrap_angle(angle):
     return _wrap("angle", angle, 2 * np.pi)
 
 
-def line_angle(beta):
+def line_angle(beta: ArrayLike) -> FloatArray:
     r"""The angle of a line through the origin, in :math:`(-\pi/2, \pi/2]` (``beta`` and ``beta + pi``: one line).
 
     Parameters
@@ -238,7 +239,7 @@ def _wrap(name, angle, period):
     return np.where(np.isclose(w, -period / 2, atol=TOL, rtol=0), period / 2, w)
 
 
-def point_row(d, L=1, backend=None):
+def point_row(d: Point, L: Numbers = 1, backend: Backend | None = None) -> Matrix:
     r"""The 2x3 block :math:`[\tfrac1L\mathbf E\mathbf d_i\ \ \mathbf 1]` of (5), (21) and (32).
 
     Maps the twist :math:`\mathbf t_L=[L\dot\psi\ \dot{\mathbf c}^T]^T` (33) (or :math:`\mathbf t`
@@ -274,7 +275,7 @@ def point_row(d, L=1, backend=None):
     return M
 
 
-def point_velocity(twist, d):
+def point_velocity(twist: Twist, d: ArrayLike) -> FloatArray:
     r"""Velocity :math:`\dot{\mathbf p} = \dot{\mathbf c} + \dot\psi\mathbf E\mathbf d` (2) of platform points.
 
     Parameters

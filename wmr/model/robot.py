@@ -10,17 +10,20 @@ of :math:`\mathbf F` is which rate.
 """
 from __future__ import annotations
 
+from collections.abc import Iterable
+
 import numpy as np
 import sympy as sp
 
 from ..errors import InputTypeError, InputValueError
 from . import arrays as A
 from . import checks as C
-from .backend import NUMERIC, SYMBOLIC, choose
+from .backend import NUMERIC, SYMBOLIC, Backend, choose
 from .limits import check
 from .platform import point_row
 from .tolerance import column_norms
 from .trig import trig_combination
+from .types import ArrayLike, FloatArray, Matrix, Numbers, Point, Symbolic
 from .wheels import WheelUnit, wheel_kinds
 
 __all__ = ["Robot", "TWIST_NAMES"]
@@ -49,7 +52,7 @@ class Robot:
     (4, 5)
     """
 
-    def __init__(self, wheels, name=None):
+    def __init__(self, wheels: Iterable[WheelUnit], name: str | None = None) -> None:
         if isinstance(wheels, (str, bytes, WheelUnit)):
             raise InputTypeError(f"wheels must be a sequence of wheel units, got {C.show(wheels)}")
         try:
@@ -75,62 +78,62 @@ class Robot:
 
     # --- sizes and names -----------------------------------------------------------------------
     @property
-    def w(self):
+    def w(self) -> int:
         """Number of wheel units."""
         return len(self.wheels)
 
     @property
-    def steered(self):
+    def steered(self) -> tuple[bool, ...]:
         """Tuple of w bools: True for units with a steering joint (offset, centred, dual); :meth:`effective_beta`."""
         return tuple(bool(u.steered) for u in self.wheels)
 
     @property
-    def n_rates(self):
+    def n_rates(self) -> int:
         """Length of the joint-rate vector :math:`\\dot{\\boldsymbol\\theta}`."""
         return self.rate_slices[-1].stop
 
     @property
-    def rate_names(self):
+    def rate_names(self) -> tuple[str, ...]:
         """Names of the joint rates, in column order of :math:`\\mathbf J_2`."""
         return tuple(n for i, u in enumerate(self.wheels, 1) for n in u.rate_names(i))
 
     @property
-    def qdot_names(self):
+    def qdot_names(self) -> tuple[str, ...]:
         """Names of the generalised rates (25): the columns of :math:`\\mathbf F`."""
         return TWIST_NAMES + self.rate_names
 
     @property
-    def twist_symbols(self):
+    def twist_symbols(self) -> tuple[Symbolic, ...]:
         r"""SymPy symbols :math:`(\dot\psi, \dot x, \dot y)`."""
         return sp.symbols(r"\dot{\psi} \dot{x} \dot{y}", real=True)
 
     @property
-    def rate_symbols(self):
+    def rate_symbols(self) -> tuple[Symbolic, ...]:
         """SymPy symbols of the joint rates, typeset as in the paper."""
         return tuple(s for i, u in enumerate(self.wheels, 1) for s in u.rate_symbols(i))
 
     @property
-    def qdot_symbols(self):
+    def qdot_symbols(self) -> tuple[Symbolic, ...]:
         """SymPy symbols of the generalised rates (25), in the column order of :math:`\\mathbf F`."""
         return tuple(self.twist_symbols) + self.rate_symbols
 
     @property
-    def beta_symbols(self):
+    def beta_symbols(self) -> tuple[Symbolic, ...]:
         r"""SymPy symbols :math:`\beta_1, \dots, \beta_w` (real)."""
         return sp.symbols(f"beta1:{self.w + 1}", real=True)
 
     @property
-    def mount_points(self):
+    def mount_points(self) -> FloatArray:
         r"""Array (w, 2) of the :math:`\mathbf d_i` (numeric robots only)."""
         return np.array([u.position for u in self.wheels], dtype=float)
 
     @property
-    def is_symbolic(self):
+    def is_symbolic(self) -> bool:
         """True when a mount point or a length of some unit is a SymPy expression."""
         return any(u.is_symbolic for u in self.wheels)
 
     @property
-    def F_column_norms(self):
+    def F_column_norms(self) -> FloatArray:
         r"""Lengths of the columns of :math:`\mathbf F` (22)-(24), the same at every configuration: (3 + n_rates,).
 
         :math:`\sqrt{\sum_i\|\mathbf d_i\|^2}` (the :math:`\dot\psi` column, a length), :math:`\sqrt w`,
@@ -144,7 +147,7 @@ class Robot:
         return np.concatenate([column_norms(bot.J1(backend=NUMERIC)), *rates])
 
     # --- matrices -------------------------------------------------------------------------------
-    def effective_beta(self, beta):
+    def effective_beta(self, beta: ArrayLike) -> FloatArray:
         r"""The configuration the model uses: ``beta`` with each unsteered unit's entry set to its own angle.
 
         Fixed and Swedish wheels have no steering joint: their entries are replaced by their ``angle``.
@@ -180,7 +183,7 @@ class Robot:
                     for i, u in enumerate(self.wheels)]
         return self.effective_beta(beta)
 
-    def J1(self, L=1, backend=None):
+    def J1(self, L: Numbers = 1, backend: Backend | None = None) -> Matrix:
         r"""Platform Jacobian :math:`\mathbf J_1` (21), or :math:`\mathbf J_{L1}` (32) for ``L != 1``.
 
         .. math:: \mathbf J_{L1} = \begin{bmatrix}\tfrac1L\mathbf E\mathbf d_1 & \mathbf 1\\
@@ -219,7 +222,7 @@ class Robot:
     def _backend(self, beta, backend):
         return SYMBOLIC if (beta is None or self.is_symbolic) else choose(beta, backend=backend)
 
-    def J2(self, beta=None, backend=None):
+    def J2(self, beta: Numbers | None = None, backend: Backend | None = None) -> Matrix:
         r"""Wheel Jacobian :math:`\mathbf J_2(\boldsymbol\beta)` (21): block-diagonal in the units' blocks.
 
         Parameters
@@ -253,7 +256,7 @@ class Robot:
             P[i, 2 * i:2 * i + 2, sl], Q[i, 2 * i:2 * i + 2, sl] = u.block_terms(NUMERIC)
         return P, Q
 
-    def F(self, beta=None, backend=None):
+    def F(self, beta: Numbers | None = None, backend: Backend | None = None) -> Matrix:
         r"""Functional matrix :math:`\mathbf F = [\mathbf J_1\ \ -\mathbf J_2]` (22)-(24).
 
         Its columns follow :attr:`qdot_names`.
@@ -278,7 +281,7 @@ class Robot:
         pad = np.zeros(P.shape[:2] + (3,))
         return trig_combination(b, np.concatenate([pad, -P], -1), np.concatenate([pad, -Q], -1), const)
 
-    def J(self, beta=None, L=1, backend=None):
+    def J(self, beta: Numbers | None = None, L: Numbers = 1, backend: Backend | None = None) -> Matrix:
         r"""The product :math:`\mathbf J = \mathbf J_{L1}^T\mathbf J_2` (56).
 
         Parameters
@@ -316,7 +319,7 @@ class Robot:
                              "the double-precision range")
         return trig_combination(b, P, Q)
 
-    def numeric(self):
+    def numeric(self) -> Robot:
         r"""The same robot with float mount points and lengths (itself when it has no SymPy values).
 
         Exact robots (``paper_robot(..., exact=True)``, SymPy numbers such as :math:`\sqrt3/2`) become
@@ -345,12 +348,12 @@ class Robot:
         return Robot([u.numeric() for u in self.wheels], name=self.name)
 
     @property
-    def free_symbols(self):
+    def free_symbols(self) -> set[Symbolic]:
         """The SymPy symbols in the mount points and lengths (an empty set for numeric and exact robots)."""
         return set().union(*(u.free_symbols for u in self.wheels))
 
     # --- frames ---------------------------------------------------------------------------------
-    def moved(self, origin=(0.0, 0.0), angle=0.0):
+    def moved(self, origin: Point = (0.0, 0.0), angle: Numbers = 0.0) -> Robot:
         """The same robot described from another body frame.
 
         The new frame has its origin (new operation point) at ``origin`` and is rotated by

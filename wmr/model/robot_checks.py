@@ -8,11 +8,12 @@ from __future__ import annotations
 from ..errors import InputTypeError, InputValueError
 from .checks import kind_error, show
 from .robot import Robot
+from .types import Symbolic
 
 __all__ = ["robot", "numeric_robot", "free_symbols"]
 
 
-def robot(value, name="robot"):
+def robot(value: object, name: str = "robot") -> Robot:
     """Return ``value`` if it is a :class:`wmr.Robot` instance.
 
     Parameters
@@ -40,7 +41,7 @@ def robot(value, name="robot"):
     raise kind_error(name, value, "a wmr.Robot")
 
 
-def numeric_robot(value, name="robot"):
+def numeric_robot(value: object, name: str = "robot") -> Robot:
     """Return ``value`` if it is a :class:`wmr.Robot` without free symbols, as floats (:meth:`wmr.Robot.numeric`).
 
     Parameters
@@ -60,7 +61,7 @@ def numeric_robot(value, name="robot"):
     return value.numeric() if value.is_symbolic else value
 
 
-def free_symbols(robot):
+def free_symbols(robot: Robot) -> set[Symbolic]:
     """The SymPy symbols in a robot's mount points and lengths (empty for numeric and exact robots).
 
     Parameters

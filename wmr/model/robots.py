@@ -10,15 +10,17 @@ exactly): the three mount points are the vertices of an equilateral triangle cen
 from __future__ import annotations
 
 import dataclasses
+from typing import TypedDict
 
 import sympy as sp
 
 from ..errors import InputValueError
 from . import validation as V
 from .robot import Robot
+from .types import Numbers
 from .wheels import wheel_kind
 
-__all__ = ["PAPER_MOUNT_ANGLES_DEG", "PAPER_KINDS", "equilateral_mounts", "paper_robot"]
+__all__ = ["PAPER_MOUNT_ANGLES_DEG", "PAPER_KINDS", "Dimensions", "equilateral_mounts", "paper_robot"]
 
 #: The wheel kinds of the paper's three robots (sections 3, 5 and 6).
 PAPER_KINDS = ("centred", "offset", "dual")
@@ -27,7 +29,17 @@ PAPER_KINDS = ("centred", "offset", "dual")
 PAPER_MOUNT_ANGLES_DEG = (180.0, 60.0, -60.0)
 
 
-def equilateral_mounts(L=1.0, first_deg=180.0, clockwise=True, exact=False):
+class Dimensions(TypedDict, total=False):
+    """The lengths of :func:`paper_robot` by keyword (``paper_robot("offset", **dims)``): L, r, d, b."""
+
+    L: float
+    r: float
+    d: float
+    b: float
+
+
+def equilateral_mounts(L: Numbers = 1.0, first_deg: float = 180.0, clockwise: bool = True,
+                       exact: bool = False) -> list[tuple[Numbers, Numbers]]:
     r"""Mount points at the vertices of an equilateral triangle with centroid C and circumradius L.
 
     Parameters
@@ -71,7 +83,8 @@ def equilateral_mounts(L=1.0, first_deg=180.0, clockwise=True, exact=False):
     return out
 
 
-def paper_robot(kind="centred", L=1.0, r=1.0, d=None, b=None, exact=False):
+def paper_robot(kind: str = "centred", L: Numbers = 1.0, r: Numbers = 1.0, d: Numbers | None = None,
+                b: Numbers | None = None, exact: bool = False) -> Robot:
     """The paper's three-wheel robot with its wheel numbering (see module docstring).
 
     Parameters

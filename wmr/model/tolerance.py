@@ -70,6 +70,7 @@ import numpy as np
 
 from ..errors import InputValueError
 from .arrays import finite_array
+from .types import ArrayLike, BoolArray, FloatArray
 
 __all__ = ["TOL", "ANGULAR_TOLERANCE", "near_zero", "column_norms"]
 
@@ -81,7 +82,7 @@ TOL: float = 1e-9
 ANGULAR_TOLERANCE: float = 5e-9
 
 
-def near_zero(x, scale=1.0):
+def near_zero(x: ArrayLike, scale: ArrayLike = 1.0) -> BoolArray:
     """True where ``|x| <= TOL * |scale|`` (element-wise): ``x`` is zero next to ``scale``.
 
     Parameters
@@ -114,7 +115,7 @@ def near_zero(x, scale=1.0):
         raise InputValueError(f"x and scale must broadcast, got shapes {x.shape} and {scale.shape}") from None
 
 
-def column_norms(A):
+def column_norms(A: ArrayLike) -> FloatArray:
     r"""Euclidean length of every column, :math:`\|\mathbf A\mathbf e_j\|`, without overflow or underflow.
 
     Zero columns get 1 (dividing by it leaves them zero).  Ranks are decided on the matrix divided by

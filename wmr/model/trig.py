@@ -12,6 +12,7 @@ from __future__ import annotations
 import numpy as np
 
 from .platform import cos_sin, rotated
+from .types import ArrayLike, FloatArray
 
 __all__ = ["trig_combination"]
 
@@ -19,7 +20,7 @@ __all__ = ["trig_combination"]
 CHUNK = 8192
 
 
-def trig_combination(beta, P, Q, const=None):
+def trig_combination(beta: ArrayLike, P: FloatArray, Q: FloatArray, const: FloatArray | None = None) -> FloatArray:
     r"""Matrices linear in the cosines and sines of the angles.
 
     :math:`\mathbf C + \sum_i(\cos\beta_i\,\mathbf P_i + \sin\beta_i\,\mathbf Q_i)`.
@@ -37,14 +38,14 @@ def trig_combination(beta, P, Q, const=None):
     ----------
     beta : numpy.ndarray (..., w)
         Finite angles.
-    P, Q : numpy.ndarray (w, *shape)
+    P, Q : numpy.ndarray (w, \*shape)
         The coefficients of :math:`\cos\beta_i` and :math:`\sin\beta_i`.
-    const : numpy.ndarray (*shape), optional
+    const : numpy.ndarray (\*shape), optional
         The constant term (default 0).
 
     Returns
     -------
-    numpy.ndarray (..., *shape)
+    numpy.ndarray (..., \*shape)
 
     Notes
     -----

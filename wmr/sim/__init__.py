@@ -20,7 +20,7 @@ joints (:meth:`wmr.model.wheels.WheelUnit.mechanism`, plain data) and says which
   kinematics.
 
 MuJoCo is imported only when a :class:`Simulation` is made: ``import wmr`` and ``import wmr.sim`` do
-not need it (``pip install wmr[sim]`` installs it).
+not need it (``pip install 'wmr-kinematics[sim]'`` installs it).
 
 Examples
 --------

@@ -15,12 +15,14 @@ from ..analysis.simulation import simulate
 from ..analysis.steering import steering_angles
 from ..model import validation as V
 from ..model.platform import point_velocity
+from ..model.robot import Robot
+from ..model.types import ArrayLike, FloatArray, Twist
 from .recording import Schedule
 
 __all__ = ["start_angles", "twist_schedule"]
 
 
-def start_angles(robot, twist):
+def start_angles(robot: Robot, twist: Twist) -> FloatArray:
     r"""Steering angles to start a constant twist from.
 
     Units that roll in their plane (centred and dual wheels): :func:`wmr.steering_angles` (wheel planes
@@ -49,7 +51,8 @@ def start_angles(robot, twist):
     return beta
 
 
-def twist_schedule(robot, twist, seconds, beta0=None, dt=0.05):
+def twist_schedule(robot: Robot, twist: Twist, seconds: float, beta0: ArrayLike | None = None,
+                   dt: float = 0.05) -> Schedule:
     r"""The joint commands of a constant body twist, from wmr's inverse kinematics.
 
     Parameters

@@ -17,6 +17,7 @@ mechanisms, deterministically (the same robot and parameters give the same bytes
 from __future__ import annotations
 
 import functools
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -24,7 +25,8 @@ import numpy as np
 from ..errors import InputTypeError, InputValueError
 from ..model import validation as V
 from ..model.robot import Robot
-from ..model.wheels.joints import rate_columns
+from ..model.types import ArrayLike
+from ..model.wheels.joints import Joint, rate_columns
 from ..model.wheels.mechanism import Mechanism
 from .bodies import POSITION, body_xml, height_of, mechanisms, num, nums, servo
 from .params import GRAVITY, Params
@@ -61,7 +63,7 @@ class Export:
     weight: float
 
     @staticmethod
-    def name(i, part):
+    def name(i: int, part: str) -> str:
         """The MuJoCo name of part ``part`` of unit ``i`` (0-based index): ``u<i+1>_<part>``.
 
         Parameters
@@ -76,16 +78,16 @@ class Export:
         return f"u{i + 1}_{part}"
 
     @property
-    def drive_names(self):
+    def drive_names(self) -> tuple[str, ...]:
         """Every drive hinge (driven or not), each with its lock ``<name>_lock``: tuple of str."""
         return drive_names(self.mechanisms)
 
     @property
-    def servo_names(self):
+    def servo_names(self) -> tuple[str, ...]:
         """The servos (MuJoCo actuators) in the model's order: one per driven joint (tuple of str)."""
         return tuple(self.name(i, j.name) for i, m in enumerate(self.mechanisms) for j in m.joints if servo(j))
 
-    def hinges(self):
+    def hinges(self) -> list[tuple[int, Joint, int | None]]:
         """Every joint of every unit, in MuJoCo's order, with what wmr's variables make of it.
 
         Returns
@@ -102,7 +104,7 @@ class Export:
         return out
 
 
-def drive_names(mechs):
+def drive_names(mechs: Sequence[Mechanism]) -> tuple[str, ...]:
     """The MuJoCo names of the drive hinges of the units' mechanisms (each has a lock).
 
     Parameters
@@ -132,7 +134,7 @@ def _platform(robot, params, height):
             f'contype="0" conaffinity="0" group="1" rgba="0.6 0.6 0.7 0.5"/>')
 
 
-def export(robot, beta=None, params=None, **changes):
+def export(robot: Robot, beta: ArrayLike | None = None, params: Params | None = None, **changes: float) -> Export:
     r"""Export a robot: the MJCF text and the map from its names to wmr's units.
 
     Parameters
@@ -173,7 +175,7 @@ def export(robot, beta=None, params=None, **changes):
     return Export(xml, robot, params, mechs, height, beta0, weight)
 
 
-def to_mjcf(robot, beta=None, params=None, **changes):
+def to_mjcf(robot: Robot, beta: ArrayLike | None = None, params: Params | None = None, **changes: float) -> str:
     r"""A MuJoCo model (MJCF text) of any :class:`wmr.Robot`.
 
     The platform (a free body, its frame wmr's body frame at C) and each unit's bodies and joints as

@@ -106,7 +106,7 @@ class Params:
             check = V.nonnegative if f.name in ("torsional", "rolling", "steer_damping") else V.positive
             object.__setattr__(self, f.name, V.number(f.name, check(f.name, getattr(self, f.name))))
 
-    def replace(self, **changes):
+    def replace(self, **changes: float) -> Params:
         """A copy with some parameters changed (each checked).
 
         Parameters
@@ -123,7 +123,7 @@ class Params:
             raise InputTypeError(f"unknown parameter(s) {unknown}; known: {[f.name for f in dataclasses.fields(self)]}")
         return dataclasses.replace(self, **changes)
 
-    def total_mass(self, n_bodies, n_wheels):
+    def total_mass(self, n_bodies: int, n_wheels: int) -> float:
         """Mass of the robot, kg.
 
         Parameters

@@ -14,6 +14,7 @@ import numpy as np
 
 from ..errors import InputValueError
 from ..model import validation as V
+from ..model.types import ArrayLike, FloatArray
 from .mjcf import Export
 
 __all__ = ["Recording", "Sample", "Schedule"]
@@ -112,11 +113,11 @@ class Recording:
     dissipation: np.ndarray
 
     @property
-    def slip_speed(self):
+    def slip_speed(self) -> FloatArray:
         """Slip speed of each wheel, m/s: (N, n_wheels)."""
         return np.hypot(self.slip[..., 0], self.slip[..., 1])
 
-    def kinematic_slip(self):
+    def kinematic_slip(self) -> tuple[FloatArray, FloatArray]:
         r"""wmr's view of the encoders: the residual of (21) of the least-squares twist, per sample.
 
         :func:`wmr.forward` from the measured steering angles and joint rates; the residual
@@ -165,7 +166,7 @@ class Schedule:
         object.__setattr__(self, "rates", rates)
 
     @classmethod
-    def constant(cls, beta, rates):
+    def constant(cls, beta: ArrayLike, rates: ArrayLike) -> Schedule:
         """The same command at every time.
 
         Parameters
@@ -180,7 +181,7 @@ class Schedule:
         return cls(np.zeros(1), np.atleast_2d(np.asarray(beta, dtype=float)),
                    np.atleast_2d(np.asarray(rates, dtype=float)))
 
-    def at(self, t):
+    def at(self, t: ArrayLike) -> tuple[FloatArray, FloatArray]:
         """The commands at times ``t``.
 
         Parameters
@@ -201,7 +202,7 @@ class Schedule:
                 out.append(np.stack([np.interp(tt, self.t, col) for col in values.T], axis=-1))
         return (out[0], out[1]) if np.ndim(t) else (out[0][0], out[1][0])
 
-    def beta_rate(self, t):
+    def beta_rate(self, t: ArrayLike) -> FloatArray:
         """The rate of the steering targets at times ``t`` (the slope of the segment; 0 outside the knots).
 
         Parameters

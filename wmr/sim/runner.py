@@ -1,6 +1,8 @@
 r"""Driving a :class:`~wmr.sim.Simulation` along a :class:`~wmr.sim.Schedule`: :func:`run`, and what it records."""
 from __future__ import annotations
 
+from collections.abc import Callable
+
 import numpy as np
 
 from ..errors import InputTypeError, InputValueError
@@ -11,7 +13,8 @@ from .simulation import MAX_STEPS, Simulation
 __all__ = ["run"]
 
 
-def run(sim, schedule, seconds, control_dt=0.001, every=10, on_step=None):
+def run(sim: Simulation, schedule: Schedule | None, seconds: float, control_dt: float = 0.001, every: int = 10,
+        on_step: Callable[[Simulation], object] | None = None) -> Recording:
     """Drive a simulation along a schedule and record it.
 
     Each control period the servos get the schedule's command at the period's start (as

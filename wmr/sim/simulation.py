@@ -16,16 +16,22 @@ of the wheel's material point at the contact relative to the ground (zero for ro
 slipping, (6)), and the power the contact takes from it (:class:`~wmr.sim.recording.Sample`).
 :func:`wmr.sim.runner.run` drives a simulation along a :class:`~wmr.sim.recording.Schedule`.
 
-MuJoCo is imported here only (``pip install wmr[sim]``); ``import wmr`` does not import it.
+MuJoCo is imported here only (``pip install 'wmr-kinematics[sim]'``); ``import wmr`` does not import it.
 """
 from __future__ import annotations
 
+from collections.abc import Iterable
+
 import numpy as np
 
-from ..errors import InputValueError
+from .._version import DISTRIBUTION
+from ..errors import InputValueError, MissingDependencyError
 from ..model import validation as V
+from ..model.robot import Robot
+from ..model.types import ArrayLike, FloatArray
 from .bodies import POSITION, VELOCITY, servo
 from .mjcf import Export, export
+from .params import Params
 from .recording import Sample
 
 __all__ = ["MAX_STEPS", "Simulation"]
@@ -38,7 +44,8 @@ def _mujoco():
     try:
         import mujoco
     except ImportError as e:                        # pragma: no cover - the edition's venv has it
-        raise ImportError("wmr.sim needs MuJoCo: pip install 'wmr[sim]' (or pip install mujoco)") from e
+        raise MissingDependencyError(f"wmr.sim needs MuJoCo: pip install '{DISTRIBUTION}[sim]' "
+                                     "(or pip install mujoco)") from e
     return mujoco
 
 
@@ -77,7 +84,8 @@ class Simulation:
         The unit (0-based) of each wheel.
     """
 
-    def __init__(self, robot, beta=None, params=None, settle=0.2, **changes):
+    def __init__(self, robot: Robot | Export, beta: ArrayLike | None = None, params: Params | None = None,
+                 settle: float = 0.2, **changes: float) -> None:
         mj = _mujoco()
         self._mj = mj
         self.export = robot if isinstance(robot, Export) else export(robot, beta, params, **changes)
@@ -119,8 +127,8 @@ class Simulation:
         kp, kv = m.actuator_gainprm[:, 0], -m.actuator_biasprm[:, 2]
         self._lead = np.where(self._from_beta.any(axis=1) & (kp > 0), kv / np.where(kp > 0, kp, 1.0), 0.0)
         mj.mj_resetDataKeyframe(m, self.data, 0)
-        self._beta = np.array(ex.beta0, dtype=float)
-        self._rates = np.zeros(self.robot.n_rates)
+        self._beta: FloatArray = np.array(ex.beta0, dtype=float)
+        self._rates: FloatArray = np.zeros(self.robot.n_rates)
         self.command(self._beta, self._rates)
         settle = V.number("settle", V.nonnegative("settle", settle))
         if settle > 0:
@@ -130,7 +138,8 @@ class Simulation:
         mj.mj_forward(m, self.data)
 
     # --- commands --------------------------------------------------------------------------
-    def command(self, beta=None, rates=None, beta_rate=None):
+    def command(self, beta: ArrayLike | None = None, rates: ArrayLike | None = None,
+                beta_rate: ArrayLike | None = None) -> None:
         r"""Set the servos' targets from steering angles and joint rates (wmr's variables).
 
         Parameters
@@ -155,7 +164,7 @@ class Simulation:
             self._rates = V.finite_array("rates", rates, last=self.robot.n_rates).reshape(self.robot.n_rates).copy()
         self.data.ctrl[:] = self.targets(self._beta, self._rates, beta_rate)
 
-    def targets(self, beta, rates, beta_rate=None):
+    def targets(self, beta: ArrayLike, rates: ArrayLike, beta_rate: ArrayLike | None = None) -> FloatArray:
         r"""The servos' targets for commands in wmr's variables (batched; :meth:`command` sets one of them).
 
         A steering servo takes :math:`\beta_i + (k_v/k_p)\dot\beta_i` (its target turning without lag), a
@@ -180,7 +189,7 @@ class Simulation:
             out = out + self._lead * (V.finite_array("beta_rate", beta_rate, last=self.robot.w) @ self._from_beta.T)
         return out
 
-    def release(self, names):
+    def release(self, names: Iterable[str]) -> None:
         """Switch servos off (their hinges turn freely), e.g. ``["u1_drive"]``; :meth:`engage` switches them on.
 
         Parameters
@@ -197,7 +206,7 @@ class Simulation:
             self.model.actuator_gainprm[a] = 0.0
             self.model.actuator_biasprm[a] = 0.0
 
-    def engage(self, names):
+    def engage(self, names: Iterable[str]) -> None:
         """Switch servos back on (undo :meth:`release`).
 
         Parameters
@@ -213,7 +222,7 @@ class Simulation:
             self.model.actuator_gainprm[a] = self._gains[0][a]
             self.model.actuator_biasprm[a] = self._gains[1][a]
 
-    def lock(self, names):
+    def lock(self, names: Iterable[str]) -> None:
         """Lock drive hinges where they are (their servos off): the paper's "driving actuators locked".
 
         A lock is a joint equality of the model (``<name>_lock``), as stiff as MuJoCo's constraints,
@@ -239,7 +248,7 @@ class Simulation:
             if n in self._servo:
                 self.release([n])
 
-    def unlock(self, names):
+    def unlock(self, names: Iterable[str]) -> None:
         """Undo :meth:`lock`.
 
         Parameters
@@ -264,7 +273,7 @@ class Simulation:
             raise InputValueError(f"no servo named {V.show(name)}; servos: {list(self.servo_names)}")
         return self._servo[name]
 
-    def push(self, force=(0.0, 0.0), torque=0.0):
+    def push(self, force: ArrayLike = (0.0, 0.0), torque: float = 0.0) -> None:
         """Apply a horizontal force at C and a torque about the vertical to the platform (until changed).
 
         Parameters
@@ -289,7 +298,7 @@ class Simulation:
         self.data.xfrc_applied[self._platform, 5] = tau + arm[0] * f[1] - arm[1] * f[0]
 
     # --- time ------------------------------------------------------------------------------
-    def advance(self, seconds):
+    def advance(self, seconds: float) -> None:
         """Integrate ``seconds`` (rounded to whole steps) with the present commands.
 
         Parameters
@@ -308,7 +317,7 @@ class Simulation:
         if n:
             self.step(n)
 
-    def step(self, n=1):
+    def step(self, n: int = 1) -> None:
         """Integrate ``n`` steps with the present servo targets (``data.ctrl``), as fast as MuJoCo goes.
 
         Parameters
@@ -330,12 +339,12 @@ class Simulation:
             raise FloatingPointError(f"the simulation diverged at t = {self.data.time:.6g} s")
 
     @property
-    def t(self):
+    def t(self) -> float:
         """Simulated time, s."""
         return float(self.data.time)
 
     # --- measurements ----------------------------------------------------------------------
-    def sample(self):
+    def sample(self) -> Sample:
         """Measure the present state (module docstring).
 
         Returns

@@ -31,12 +31,14 @@ import numpy as np
 
 from ..errors import InputValueError
 from ..model import validation as V
+from ..model.robot import Robot
+from ..model.types import ArrayLike, FloatArray, Twist
 from .modules import swerve_robot
 
 __all__ = ["desaturate", "desaturation_scale", "cosine_compensate", "se2_exp", "se2_log", "discretize"]
 
 
-def desaturation_scale(robot, twist, max_speed):
+def desaturation_scale(robot: Robot, twist: Twist, max_speed: float) -> FloatArray:
     r"""The factor :math:`k = \min(1, s_{\max}/\max_i s_i)` that brings the fastest module to ``max_speed``.
 
     Parameters
@@ -72,7 +74,7 @@ def desaturation_scale(robot, twist, max_speed):
     return k
 
 
-def desaturate(robot, twist, max_speed):
+def desaturate(robot: Robot, twist: Twist, max_speed: float) -> FloatArray:
     r"""Scale the twist so that no module exceeds ``max_speed``, keeping the instantaneous centre.
 
     :math:`k\,\mathbf t` with :math:`k` of :func:`desaturation_scale`: the angles do not change, the
@@ -102,7 +104,7 @@ def desaturate(robot, twist, max_speed):
     return t * desaturation_scale(robot, t, max_speed)[..., None]
 
 
-def cosine_compensate(speed, beta, target):
+def cosine_compensate(speed: ArrayLike, beta: ArrayLike, target: ArrayLike) -> FloatArray:
     r"""Module speeds scaled by the cosine of the steering error, :math:`s_i\cos(\beta_i - \beta^*_i)`.
 
     Parameters
@@ -139,7 +141,7 @@ def _coefficients(theta):
     return np.sinc(theta / np.pi), np.sin(theta / 2) * np.sinc(theta / (2 * np.pi))
 
 
-def se2_exp(twist, dt=1.0):
+def se2_exp(twist: Twist, dt: float = 1.0) -> FloatArray:
     r"""The pose reached by holding a body twist for ``dt``: the SE(2) exponential.
 
     Parameters
@@ -174,7 +176,7 @@ def se2_exp(twist, dt=1.0):
     return out
 
 
-def se2_log(delta, dt=1.0):
+def se2_log(delta: ArrayLike, dt: float = 1.0) -> FloatArray:
     r"""The constant body twist that reaches the pose ``delta`` in ``dt``: the SE(2) logarithm.
 
     Inverse of :func:`se2_exp` for :math:`|\Delta\psi| < 2\pi`:
@@ -214,7 +216,7 @@ def se2_log(delta, dt=1.0):
     return out
 
 
-def discretize(twist, dt):
+def discretize(twist: Twist, dt: float) -> FloatArray:
     r"""The twist that, held for ``dt``, ends where the components of ``twist`` would if independent.
 
     :func:`se2_log` of :math:`(\dot\psi\Delta t, \dot x\Delta t, \dot y\Delta t)` over :math:`\Delta t`:

@@ -37,11 +37,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..analysis.kinematics import forward, inverse
+from ..analysis.kinematics import Solution, forward, inverse
 from ..analysis.steering import steering_angles
 from ..errors import InputValueError
 from ..model import validation as V
 from ..model.conventions import angle_from, angle_to
+from ..model.robot import Robot
+from ..model.types import ArrayLike, FloatArray, Twist
 
 __all__ = ["ModuleCommand", "swerve_robot", "radii", "module_commands", "module_speeds", "chassis_twist",
            "to_wpilib", "from_wpilib", "to_chassis", "from_chassis"]
@@ -64,7 +66,7 @@ class ModuleCommand:
     speed: np.ndarray
 
 
-def swerve_robot(robot):
+def swerve_robot(robot: Robot) -> Robot:
     r"""Return ``robot`` (as numbers) if every unit is a swerve module: a steered wheel with one rolling rate.
 
     A swerve module steers to any angle and rolls in its wheel plane with one rate :math:`\dot\theta_i`,
@@ -98,7 +100,7 @@ def swerve_robot(robot):
     return robot
 
 
-def radii(robot):
+def radii(robot: Robot) -> FloatArray:
     """Wheel radii of a swerve robot's modules.
 
     Parameters
@@ -114,7 +116,7 @@ def radii(robot):
     return np.array([float(u.r) for u in robot.wheels])
 
 
-def module_speeds(robot, beta, twist):
+def module_speeds(robot: Robot, beta: ArrayLike, twist: Twist) -> FloatArray:
     r"""Module speeds :math:`s_i = r_i\dot\theta_i` that realise ``twist`` at the angles ``beta``.
 
     The least-squares rolling rates of :func:`wmr.inverse`: :math:`s_i` is the component of the
@@ -138,7 +140,7 @@ def module_speeds(robot, beta, twist):
     return inverse(robot, beta, twist).value * radii(robot)
 
 
-def module_commands(robot, twist, current=None):
+def module_commands(robot: Robot, twist: Twist, current: ArrayLike | None = None) -> ModuleCommand:
     r"""Inverse kinematics of a swerve robot: the angles and speeds of ``twist`` (WPILib's ``toSwerveModuleStates``).
 
     :math:`\beta_i` from :func:`wmr.steering_angles` (the wheel plane parallel to
@@ -173,7 +175,7 @@ def module_commands(robot, twist, current=None):
     return ModuleCommand(beta, module_speeds(robot, beta, twist))
 
 
-def chassis_twist(robot, beta, speed):
+def chassis_twist(robot: Robot, beta: ArrayLike, speed: ArrayLike) -> Solution:
     r"""Forward kinematics of a swerve robot (least squares): WPILib's ``toChassisSpeeds``.
 
     :math:`\mathbf t = \mathbf J_1^+\mathbf J_2\dot{\boldsymbol\theta}` with :math:`\dot\theta_i =
@@ -203,7 +205,7 @@ def chassis_twist(robot, beta, speed):
     return forward(robot, beta, rates)
 
 
-def to_wpilib(beta, speed=None):
+def to_wpilib(beta: ArrayLike, speed: ArrayLike | None = None) -> FloatArray | tuple[FloatArray, FloatArray]:
     r"""WPILib's module angle :math:`\alpha = \beta - \pi/2` (wrapped to :math:`(-\pi, \pi]`); speeds are the same.
 
     Parameters
@@ -227,7 +229,7 @@ def to_wpilib(beta, speed=None):
     return alpha if speed is None else (alpha, V.finite_array("speed", speed))
 
 
-def from_wpilib(alpha, speed=None):
+def from_wpilib(alpha: ArrayLike, speed: ArrayLike | None = None) -> FloatArray | tuple[FloatArray, FloatArray]:
     r"""wmr's steering angle :math:`\beta = \alpha + \pi/2` (wrapped) from WPILib's module angle.
 
     Parameters
@@ -246,7 +248,7 @@ def from_wpilib(alpha, speed=None):
     return beta if speed is None else (beta, V.finite_array("speed", speed))
 
 
-def to_chassis(twist):
+def to_chassis(twist: Twist) -> FloatArray:
     r"""WPILib's ``ChassisSpeeds`` order :math:`(v_x, v_y, \omega)` of a wmr twist :math:`[\dot\psi, \dot x, \dot y]`.
 
     Parameters
@@ -265,7 +267,7 @@ def to_chassis(twist):
     return np.roll(V.twist_array("twist", twist), -1, axis=-1)
 
 
-def from_chassis(chassis):
+def from_chassis(chassis: Twist) -> FloatArray:
     r"""wmr's twist :math:`[\dot\psi, \dot x, \dot y]` from WPILib's :math:`(v_x, v_y, \omega)`.
 
     Parameters

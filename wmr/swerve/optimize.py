@@ -32,6 +32,8 @@ import numpy as np
 from ..errors import InputValueError
 from ..model import validation as V
 from ..model.platform import wrap_angle
+from ..model.robot import Robot
+from ..model.types import ArrayLike, FloatArray, Twist
 from .modules import chassis_twist, module_commands, swerve_robot
 
 __all__ = ["SteeringChoice", "optimize_modules", "optimize_robot", "transition_slip", "MAX_MODULES"]
@@ -66,7 +68,8 @@ class SteeringChoice:
     slip: np.ndarray
 
 
-def transition_slip(robot, current, beta, speed, samples=8):
+def transition_slip(robot: Robot, current: ArrayLike, beta: ArrayLike, speed: ArrayLike,
+                    samples: int = 8) -> FloatArray:
     r"""Mean relative slip while the modules turn from ``current`` to ``beta`` at one common rate.
 
     Module :math:`i` turns along its shorter arc :math:`\Delta_i = \operatorname{wrap}(\beta_i -
@@ -132,7 +135,7 @@ def _targets(robot, twist, current):
     return robot, cmd, cur
 
 
-def optimize_modules(robot, twist, current):
+def optimize_modules(robot: Robot, twist: Twist, current: ArrayLike) -> SteeringChoice:
     r"""WPILib's ``SwerveModuleState.optimize``, module by module.
 
     Module :math:`i` flips (:math:`\beta_i + \pi`, speed :math:`-s_i`) exactly when
@@ -172,7 +175,7 @@ def _choice(robot, cmd, cur, flip):
     return SteeringChoice(beta, speed + 0.0, flip, resteer, transition_slip(robot, cur, beta, speed))
 
 
-def optimize_robot(robot, twist, current, samples=8):
+def optimize_robot(robot: Robot, twist: Twist, current: ArrayLike, samples: int = 8) -> SteeringChoice:
     r"""Robot-level steering choice: all modules' flips together, minimising re-steer plus transition slip.
 
     Minimises :math:`J(\mathbf f) = \sum_i|\Delta_i| + w\,\bar\sigma(\mathbf f)` over the :math:`2^w`

@@ -4,14 +4,20 @@ The data come from :func:`wmr.swerve.transient.resteer_study`; this module only 
 """
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import numpy as np
 
 from ..errors import InputTypeError
+from .transient import TransientStudy
+
+if TYPE_CHECKING:                                   # matplotlib is imported when a figure is drawn
+    from matplotlib.figure import Figure
 
 __all__ = ["transient_figure"]
 
 
-def transient_figure(study, fig=None):
+def transient_figure(study: TransientStudy, fig: Figure | None = None) -> Figure:
     r"""Three panels for a :class:`~wmr.swerve.transient.TransientStudy`: paths, slip, path error.
 
     (a) the path of C for each strategy and the reference (dashed); (b) the slip

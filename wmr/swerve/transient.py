@@ -27,6 +27,7 @@ A run is deterministic (no random input, a fixed step); data functions return da
 """
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -34,6 +35,8 @@ import numpy as np
 from ..errors import InputTypeError, InputValueError
 from ..model import validation as V
 from ..model.platform import wrap_angle
+from ..model.robot import Robot
+from ..model.types import ArrayLike, FloatArray
 from .limits import cosine_compensate, se2_exp
 from .modules import chassis_twist, module_commands, swerve_robot
 from .optimize import optimize_modules, optimize_robot
@@ -65,7 +68,7 @@ class TwistProfile:
     twist: np.ndarray
 
     @property
-    def t(self):
+    def t(self) -> FloatArray:
         """Start of each period, s: (N,)."""
         return np.arange(len(self.twist)) * self.dt
 
@@ -94,7 +97,8 @@ def _body(field_velocity, psi_dot, t, names):
     return out
 
 
-def direction_change(speed=1.0, angle=np.pi / 2, spin=0.0, t_change=0.25, t_end=1.0, dt=0.01):
+def direction_change(speed: float = 1.0, angle: float = np.pi / 2, spin: float = 0.0, t_change: float = 0.25,
+                     t_end: float = 1.0, dt: float = 0.01) -> TwistProfile:
     r"""Drive along the fixed x axis, then, at ``t_change``, along the direction ``angle``.
 
     Parameters
@@ -131,7 +135,8 @@ def direction_change(speed=1.0, angle=np.pi / 2, spin=0.0, t_change=0.25, t_end=
     return TwistProfile(name, dt, _body(v, np.full(len(t), spin), t, "speed and spin"))
 
 
-def spin_and_translate(speed=1.0, rate=3.0, t_start=0.25, t_end=1.0, dt=0.01):
+def spin_and_translate(speed: float = 1.0, rate: float = 3.0, t_start: float = 0.25, t_end: float = 1.0,
+                       dt: float = 0.01) -> TwistProfile:
     r"""Drive along the fixed x axis; from ``t_start`` on, keep doing so while spinning at ``rate``.
 
     In the body frame the velocity of C turns at :math:`-\dot\psi`: every module must keep steering.
@@ -194,27 +199,27 @@ class Transient:
     speed: np.ndarray
 
     @property
-    def slip_distance(self):
+    def slip_distance(self) -> float:
         r""":math:`\sum_k\sigma_k\Delta t`: how far the wheels slide in all (m)."""
         return float(self.slip.sum() * (self.t[1] - self.t[0]))
 
     @property
-    def peak_slip(self):
+    def peak_slip(self) -> float:
         """Largest slip, m/s."""
         return float(self.slip.max())
 
     @property
-    def max_path_error(self):
+    def max_path_error(self) -> float:
         """Largest path error, m."""
         return float(self.path_error.max())
 
     @property
-    def final_path_error(self):
+    def final_path_error(self) -> float:
         """Path error at the end, m."""
         return float(self.path_error[-1])
 
     @property
-    def steering_travel(self):
+    def steering_travel(self) -> float:
         """Total turn of all modules, radians."""
         return float(np.abs(np.diff(self.beta, axis=0)).sum())
 
@@ -233,7 +238,8 @@ def _targets(robot, strategy, twist, beta):
     return ch.beta, ch.speed
 
 
-def resteer_transient(robot, profile, strategy="robot", cosine=False, steer_rate=2 * np.pi, beta0=None):
+def resteer_transient(robot: Robot, profile: TwistProfile, strategy: str = "robot", cosine: bool = False,
+                      steer_rate: float = 2 * np.pi, beta0: ArrayLike | None = None) -> Transient:
     r"""Simulate rate-limited modules following ``profile`` (module docstring: the four steps).
 
     Parameters
@@ -318,7 +324,7 @@ class TransientStudy:
     steer_rate: float
     runs: tuple
 
-    def table(self):
+    def table(self) -> list[dict[str, object]]:
         """One row per strategy: slip and path error.
 
         Returns
@@ -331,7 +337,7 @@ class TransientStudy:
                  "max_path_error_m": r.max_path_error, "final_path_error_m": r.final_path_error,
                  "steering_travel_rad": r.steering_travel} for r in self.runs]
 
-    def run(self, label):
+    def run(self, label: str) -> Transient:
         """The run of one strategy.
 
         Parameters
@@ -349,7 +355,8 @@ class TransientStudy:
         raise InputValueError(f"label must be one of {[r.label for r in self.runs]}, got {V.show(label)}")
 
 
-def resteer_study(robot, profile, steer_rate=2 * np.pi, strategies=STRATEGIES):
+def resteer_study(robot: Robot, profile: TwistProfile, steer_rate: float = 2 * np.pi,
+                  strategies: Sequence[tuple[str, bool]] = STRATEGIES) -> TransientStudy:
     r"""Run every strategy on one profile: the data of the figure and table of the design notebook.
 
     Parameters

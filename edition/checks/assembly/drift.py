@@ -66,7 +66,7 @@ def drift_of_c(c_dot, n=100, origin=(0.06, -0.04), seed=SEED):
             bc = concurrent_angles(robot, u)
             x = locked_motion(robot, bc)
             x = x / x[0]
-            e = float(np.abs(x[1:3] - np.ravel(f28(*bc, *x[3:], robot.wheels[0].d))).max())
+            e = float(np.abs(x[1:3] - np.ravel(f28(*bc, *x[3:], robot.wheels[0].parameters()["d"]))).max())
             if robot is paper:
                 res = max(res, e)
             else:

@@ -15,7 +15,7 @@ from wmr.analysis.linalg import null_space
 from wmr.analysis.mobility import admissible_twists, mobility
 from wmr.analysis.steering import steering_angles
 from wmr.model.robot import Robot
-from wmr.model.robots import paper_robot
+from wmr.model.robots import Dimensions, paper_robot
 from wmr.model.tolerance import TOL
 from wmr.model.wheels import OffsetWheel
 
@@ -29,7 +29,7 @@ __all__ = ["general_robot", "one_unit", "stacking", "functional_matrix", "null_s
 
 
 #: the paper's offset-wheel robot used for numbers in this chapter (metres)
-PAPER = dict(L=0.3, r=0.1, d=0.05)
+PAPER = Dimensions(L=0.3, r=0.1, d=0.05)
 
 
 @cache

@@ -184,7 +184,7 @@ def dead_zone_of_isotropy(iso, steps=200, omega=2.0):
     contacts = np.stack([run.unit_points(i, "H") for i in range(3)], axis=1)
     radius = np.linalg.norm(run.pose[:, 1:] - contacts.mean(axis=1), axis=1)
     drift = float(np.max(np.abs(contacts - contacts[:1])))
-    d = off.wheels[0].d
+    d = off.wheels[0].parameters()["d"]
     radius_error = float(np.max(np.abs(radius - d)))
     res = max(radius_error, drift)
     holds = res < 1e-9 and iso.kappa_d0_infinite and iso["isotropy-d-equals-r"].printed_holds

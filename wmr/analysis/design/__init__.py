@@ -1,7 +1,7 @@
 r"""Design by conditioning: the worst-case :math:`\kappa(\mathbf J)` of a wheel layout and a search over layouts.
 
 The measure (Section 4.3 of the paper, (30)-(33) and (56))
----------------------------------------------------------
+-----------------------------------------------------------
 The kinematic model (21) is :math:`\mathbf J_{L1}\mathbf t_L = \mathbf J_2\dot{\boldsymbol\theta}` with the
 homogeneous platform Jacobian :math:`\mathbf J_{L1}` (32) (rows :math:`[\tfrac1L\mathbf E\mathbf d_i\ \ \mathbf 1]`)
 and the homogeneous twist :math:`\mathbf t_L = [L\dot\psi\ \dot{\mathbf c}^T]^T` (33).  The map of the

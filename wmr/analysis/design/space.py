@@ -9,6 +9,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...model import validation as V
+from ...model.types import ArrayLike
 from ..sweep import Grid
 from .worst_case import COARSE_STEPS, WheelDesign, compass_search, equilateral_design, worst_kappa, worst_kappa_designs
 
@@ -61,17 +62,18 @@ class DesignSearch:
     rtol: float
 
     @property
-    def paper_optimal(self):
+    def paper_optimal(self) -> bool:
         """The paper's design is as good as the best found, within ``rtol``."""
         return bool(self.paper_kappa <= self.best_kappa * (1.0 + self.rtol))
 
     @property
-    def reference_optimal(self):
+    def reference_optimal(self) -> bool:
         """The equilateral placement is as good as the best found at the same offset, within ``rtol``."""
         return bool(self.reference_kappa <= self.best_kappa * (1.0 + self.rtol))
 
 
-def search(ratio=None, n=600, starts=3, seed=0, rtol=1e-3):
+def search(ratio: float | None = None, n: int = 600, starts: int = 3, seed: int = 0,
+           rtol: float = 0.001) -> DesignSearch:
     r"""Search three-offset-wheel designs for the smallest worst-case :math:`\kappa(\mathbf J)`.
 
     1. ``n`` designs :math:`\mathbf p = (x_2, y_2, x_3, y_3, \log_2 d/r)` drawn uniformly from
@@ -165,7 +167,7 @@ class Landscape:
     mounts: np.ndarray
 
 
-def landscape(n=41, m=41, moved=(0.2, 1.2)):
+def landscape(n: int = 41, m: int = 41, moved: ArrayLike = (0.2, 1.2)) -> Landscape:
     r"""The data of the design-space figure: :math:`\bar\kappa` against :math:`d/r`, and over wheel 2's position.
 
     Both slices pass through the paper's design (equilateral, :math:`|\mathbf d_i| = r = 1`); the

@@ -4,6 +4,7 @@ See :mod:`wmr.analysis.design` for the measure and its notation.
 """
 from __future__ import annotations
 
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -11,10 +12,12 @@ import numpy as np
 from ...errors import InputTypeError, InputValueError
 from ...model import validation as V
 from ...model.robot import Robot
+from ...model.types import ArrayLike, FloatArray
 from ...model.wheels import OffsetWheel
 from ..isotropy import characteristic_length
 from ..linalg import condition_number
 from ..sweep import Grid, sweep
+from ..sweep.execute import Angles
 
 __all__ = ["WorstCase", "worst_kappa", "WheelDesign", "equilateral_design", "worst_kappa_designs", "COARSE_STEPS",
            "FINE_STEPS"]
@@ -46,7 +49,8 @@ class WorstCase:
     count: int
 
 
-def compass_search(f, x0, step, lo, hi, tol, max_iter=400):
+def compass_search(f: Callable[[FloatArray], FloatArray], x0: ArrayLike, step: ArrayLike, lo: ArrayLike, hi: ArrayLike,
+                   tol: float, max_iter: int = 400) -> tuple[FloatArray, float]:
     """Minimise ``f`` from ``x0`` by compass search: the 2n axis moves of the current step are evaluated at
     once; the best improving move is taken, else the step is halved.
 
@@ -88,7 +92,7 @@ def compass_search(f, x0, step, lo, hi, tol, max_iter=400):
     return x, fx
 
 
-def worst_kappa(robot, angles=None, L=None, refine=True):
+def worst_kappa(robot: Robot, angles: Angles | None = None, L: float | None = None, refine: bool = True) -> WorstCase:
     r"""The worst-case condition number :math:`\bar\kappa = \sup_{\boldsymbol\beta}\kappa(\mathbf J)` of a robot.
 
     :func:`wmr.sweep` evaluates :math:`\kappa(\mathbf J(\boldsymbol\beta, L))` (30), (56) on a grid of
@@ -162,11 +166,11 @@ class WheelDesign:
         object.__setattr__(self, "r", float(V.number("r (radius)", V.positive("r (radius)", self.r))))
 
     @property
-    def ratio(self):
+    def ratio(self) -> float:
         """The offset ratio :math:`d/r`."""
         return self.d / self.r
 
-    def robot(self, name="design"):
+    def robot(self, name: str = "design") -> Robot:
         """The design as a :class:`wmr.Robot` of :class:`wmr.OffsetWheel` units.
 
         Parameters
@@ -179,7 +183,7 @@ class WheelDesign:
         """
         return Robot([OffsetWheel(tuple(p), r=self.r, d=self.d) for p in self.mounts], name=name)
 
-    def scaled(self, k):
+    def scaled(self, k: float) -> WheelDesign:
         """The same design with every length multiplied by ``k`` (same :math:`\\kappa`).
 
         Parameters
@@ -194,7 +198,7 @@ class WheelDesign:
         k = float(V.number("k", V.positive("k", k)))
         return WheelDesign(self.mounts * k, self.d * k, self.r * k)
 
-    def centroid_offset(self):
+    def centroid_offset(self) -> float:
         """Distance from C to the centroid of the mount points, over their RMS distance from C.
 
         Returns
@@ -204,7 +208,7 @@ class WheelDesign:
         rms = float(np.sqrt(np.mean(np.sum(self.mounts ** 2, axis=1))))
         return float(np.linalg.norm(self.mounts.mean(axis=0))) / rms
 
-    def sides(self):
+    def sides(self) -> FloatArray:
         """Lengths of the sides :math:`|P_iP_{i+1}|` of the mount polygon, array (w,).
 
         Returns
@@ -214,7 +218,7 @@ class WheelDesign:
         return np.linalg.norm(self.mounts - np.roll(self.mounts, -1, axis=0), axis=1)
 
 
-def equilateral_design(ratio=1.0):
+def equilateral_design(ratio: float = 1.0) -> WheelDesign:
     r"""Three offset wheels at the vertices of an equilateral triangle centred at C.
 
     :math:`|\mathbf d_i| = r = 1` and :math:`d/r` = ``ratio``.
@@ -235,7 +239,7 @@ def equilateral_design(ratio=1.0):
     return WheelDesign(np.array(equilateral_mounts(1.0)), V.number("ratio", V.nonnegative("ratio", ratio)), 1.0)
 
 
-def worst_kappa_designs(designs, beta):
+def worst_kappa_designs(designs: Sequence[WheelDesign], beta: ArrayLike) -> FloatArray:
     r"""The largest :math:`\kappa(\mathbf J)` of each design over the same configurations (batched).
 
     For each design, :math:`\mathbf J(\boldsymbol\beta, L)` (56) of all configurations comes from

@@ -6,12 +6,14 @@ from __future__ import annotations
 
 import enum
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
 from ...errors import InputTypeError, InputValueError
 from ...model import validation as V
 from ...model.tolerance import near_zero
+from ...model.types import ArrayLike, FloatArray, Numbers, Point
 
 __all__ = ["Meet", "FINITE", "AT_INFINITY", "STILL", "NONE", "COINCIDENT", "PARALLEL", "Concurrency",
            "line_intersection", "pair_intersections", "lines_concurrency", "circumcircle"]
@@ -38,7 +40,7 @@ FINITE, AT_INFINITY, STILL, NONE, COINCIDENT, PARALLEL = (
     Meet.FINITE, Meet.AT_INFINITY, Meet.STILL, Meet.NONE, Meet.COINCIDENT, Meet.PARALLEL)
 
 
-def line_intersection(p1, u1, p2, u2):
+def line_intersection(p1: ArrayLike, u1: ArrayLike, p2: ArrayLike, u2: ArrayLike) -> tuple[Meet, FloatArray | None]:
     r"""Intersection of the lines :math:`p_1 + s u_1` and :math:`p_2 + t u_2` (one pair).
 
     Parameters
@@ -80,7 +82,8 @@ def line_intersection(p1, u1, p2, u2):
     return FINITE, point
 
 
-def pair_intersections(points, directions):
+def pair_intersections(points: ArrayLike,
+                       directions: ArrayLike) -> dict[tuple[int, int], tuple[Meet, FloatArray | None]]:
     r"""All pairwise intersections :math:`D_{ij}` of lines (one configuration).
 
     Parameters
@@ -122,12 +125,12 @@ class Concurrency:
     """
 
     kind: Meet
-    point: object
-    direction: object
+    point: Any                 # numpy.ndarray (2,) when kind is FINITE, else None
+    direction: Any             # numpy.ndarray (2,) when kind is AT_INFINITY, else None
     residual: float
 
 
-def lines_concurrency(points, directions):
+def lines_concurrency(points: ArrayLike, directions: ArrayLike) -> Concurrency:
     r"""Common point of lines :math:`p_k + s\,u_k` (one configuration), via the Plücker matrix.
 
     A point D lies on every line iff :math:`[-1, -D_y, D_x]\,[p_k\times u_k,\ u_k]^T = 0`; the
@@ -173,7 +176,7 @@ def lines_concurrency(points, directions):
     return Concurrency(FINITE, np.array([-n[2] / n[0], n[1] / n[0]]) * scale, None, res)
 
 
-def circumcircle(points):
+def circumcircle(points: Numbers) -> tuple[Point, Numbers]:
     r"""Centre and radius of the circle through three points; exact for SymPy coordinates.
 
     .. math:: \mathbf c = \frac{1}{2\Delta}\Big[\sum_{\rm cyc}|P_a|^2(y_b - y_c),\

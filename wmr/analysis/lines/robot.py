@@ -9,8 +9,10 @@ import numpy as np
 from ...errors import InputTypeError, InputValueError
 from ...model import validation as V
 from ...model.platform import line_angle
+from ...model.robot import Robot
 from ...model.tolerance import TOL
-from .geometry import lines_concurrency
+from ...model.types import ArrayLike, FloatArray
+from .geometry import Concurrency, lines_concurrency
 
 __all__ = ["wheel_plane_lines", "axle_lines", "concurrency_point", "axles_concurrency", "planes_through",
            "axles_through", "pair_line_angle"]
@@ -23,7 +25,7 @@ def _unit_points(robot, beta):
     return [u.points(beta[..., i]) for i, u in enumerate(robot.wheels)]
 
 
-def wheel_plane_lines(robot, beta):
+def wheel_plane_lines(robot: Robot, beta: ArrayLike) -> tuple[FloatArray, FloatArray]:
     r"""Wheel-plane lines :math:`\ell_i`: through :math:`P_i` along :math:`\mathbf j_i`.
 
     (For an offset wheel the line also passes through :math:`H_i = P_i - d\mathbf j_i`; for a dual
@@ -44,7 +46,7 @@ def wheel_plane_lines(robot, beta):
     return np.stack([p["P"] for p in pts], axis=-2), np.stack([p["j"] for p in pts], axis=-2)
 
 
-def axle_lines(robot, beta):
+def axle_lines(robot: Robot, beta: ArrayLike) -> tuple[FloatArray, FloatArray]:
     r"""Axle lines: through each wheel centre along :math:`\mathbf i_i` (centred: through :math:`P_i`).
 
     Parameters
@@ -74,7 +76,7 @@ def _one(robot, beta, what):
     return beta
 
 
-def concurrency_point(robot, beta):
+def concurrency_point(robot: Robot, beta: ArrayLike) -> Concurrency:
     r"""The point :math:`D_P` where the wheel-plane lines meet (one configuration).
 
     Parameters
@@ -90,7 +92,7 @@ def concurrency_point(robot, beta):
     return lines_concurrency(*wheel_plane_lines(robot, _one(robot, beta, "concurrency_point")))
 
 
-def axles_concurrency(robot, beta):
+def axles_concurrency(robot: Robot, beta: ArrayLike) -> Concurrency:
     """Where the axle lines meet (one configuration): the instantaneous centre when the robot can move.
 
     Parameters
@@ -105,7 +107,7 @@ def axles_concurrency(robot, beta):
     return lines_concurrency(*axle_lines(robot, _one(robot, beta, "axles_concurrency")))
 
 
-def planes_through(robot, D):
+def planes_through(robot: Robot, D: ArrayLike) -> FloatArray:
     r"""Steering angles whose wheel-plane lines all pass through the point D (body frame).
 
     :math:`\mathbf j_i \parallel D - P_i`, with :math:`\beta_i\in(-\pi/2, \pi/2]` (the other choice,
@@ -130,7 +132,7 @@ def planes_through(robot, D):
     return robot.effective_beta(line_angle(beta))                 # fixed, Swedish: their own angle
 
 
-def axles_through(robot, U):
+def axles_through(robot: Robot, U: ArrayLike) -> FloatArray:
     r"""Steering angles whose axles all pass through U (body frame): rotation about U is admissible.
 
     Parameters
@@ -157,7 +159,7 @@ def _at(v, robot, X):
     return np.abs(v).max(axis=-1) <= TOL * size
 
 
-def pair_line_angle(robot, i, j):
+def pair_line_angle(robot: Robot, i: int, j: int) -> float:
     r"""The steering angle in :math:`(-\pi/2,\pi/2]` that puts the plane of wheel i on the line :math:`P_iP_j`.
 
     Wheels are numbered from 1.

@@ -10,33 +10,33 @@ distribution of values).  Peak memory is that of one chunk plus the reduction, w
 number of configurations.
 
 The chunks are independent, so the same code runs on a Dask cluster when ``client`` is given
-(``pip install wmr[dask]``); the reduction is associative and ties go to the lower
+(``pip install wmr-kinematics[dask]``); the reduction is associative and ties go to the lower
 configuration index, so the result does not depend on the chunk size, on the order in which
 chunks finish, or on where they ran.
 
 Analyses (:data:`ANALYSES`):
 
-=============  ====================================================================  =================
-name           value at a configuration                                                "worst" end
-=============  ====================================================================  =================
-``rank_F``     :math:`\operatorname{rank}\mathbf F` (24)                              smallest
-``mobility``   :math:`\nu = (3+n) - \operatorname{rank}\mathbf F` (27)                 largest
-``det_J``      :math:`\det\mathbf J`, :math:`\mathbf J = \mathbf J_{L1}^T\mathbf J_2` (56), (58)   smallest magnitude
-``kappa_J``    :math:`\kappa(\mathbf J)` (30), ``inf`` where singular                  largest
-``kappa_JL1``  :math:`\kappa(\mathbf J_{L1})` (32): independent of :math:`\boldsymbol\beta`   largest
-=============  ====================================================================  =================
+=============  =================================================================================  ==================
+name           value at a configuration                                                           "worst" end
+=============  =================================================================================  ==================
+``rank_F``     :math:`\operatorname{rank}\mathbf F` (24)                                          smallest
+``mobility``   :math:`\nu = (3+n) - \operatorname{rank}\mathbf F` (27)                            largest
+``det_J``      :math:`\det\mathbf J`, :math:`\mathbf J = \mathbf J_{L1}^T\mathbf J_2` (56), (58)  smallest magnitude
+``kappa_J``    :math:`\kappa(\mathbf J)` (30), ``inf`` where singular                             largest
+``kappa_JL1``  :math:`\kappa(\mathbf J_{L1})` (32): independent of :math:`\boldsymbol\beta`       largest
+=============  =================================================================================  ==================
 
 The "worst" end is the one closest to a singularity: a rank drop of :math:`\mathbf F` (s
 
 Where the parts live:
 
-==========================================  =============================================================
-:mod:`~wmr.analysis.sweep.analyses`          the analyses by name (:data:`ANALYSES`)
-:mod:`~wmr.analysis.sweep.configurations`    which configurations: :class:`Grid`, :class:`Sample`, explicit angles
-:mod:`~wmr.analysis.sweep.reduction`         the associative reduction of one chunk (extremes, counts, sketch)
-:mod:`~wmr.analysis.sweep.execute`           :func:`sweep`: chunks evaluated here or on a Dask cluster
-:mod:`~wmr.analysis.sweep.result`            the result, :class:`Sweep`
-==========================================  =============================================================
+=========================================  =====================================================================
+:mod:`~wmr.analysis.sweep.analyses`        the analyses by name (:data:`ANALYSES`)
+:mod:`~wmr.analysis.sweep.configurations`  which configurations: :class:`Grid`, :class:`Sample`, explicit angles
+:mod:`~wmr.analysis.sweep.reduction`       the associative reduction of one chunk (extremes, counts, sketch)
+:mod:`~wmr.analysis.sweep.execute`         :func:`sweep`: chunks evaluated here or on a Dask cluster
+:mod:`~wmr.analysis.sweep.result`          the result, :class:`Sweep`
+=========================================  =====================================================================
 """
 from .analyses import ANALYSES
 from .configurations import Grid, Sample

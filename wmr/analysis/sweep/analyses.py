@@ -12,11 +12,12 @@ from typing import Any
 import numpy as np
 
 from ...model import validation as V
+from ...model.robot import Robot
 
 __all__ = ["ANALYSES", "J_length"]
 
 
-def J_length(robot, L):
+def J_length(robot: Robot, L: float | None) -> float:
     r"""The characteristic length of the analyses of :math:`\mathbf J_{L1}`.
 
     ``L`` checked, or :func:`wmr.characteristic_length` when None.

@@ -9,11 +9,13 @@ from __future__ import annotations
 import math
 import numbers
 from dataclasses import dataclass
+from typing import cast
 
 import numpy as np
 
 from ...errors import InputTypeError, InputValueError
 from ...model import validation as V
+from ...model.types import ArrayLike, FloatArray
 
 __all__ = ["Grid", "Sample", "BLOCK", "count", "as_source"]
 
@@ -28,7 +30,7 @@ def _bounds(lo, hi):
     return float(lo), float(hi)
 
 
-def count(name, value, minimum=1):
+def count(name: str, value: object, minimum: int = 1) -> int:
     """``value`` as an ``int`` of at least ``minimum``: an integer, or a float with an integral value (``1e6``).
 
     Parameters
@@ -104,7 +106,7 @@ class Grid:
         return (f"all steering angles (drivable or not): a grid of {steps} over "
                 f"[{math.degrees(self.lo):g}, {math.degrees(self.hi):g}) deg")
 
-    def shape(self, w):
+    def shape(self, w: int) -> tuple[int, ...]:
         """Values per angle.
 
         Parameters
@@ -119,10 +121,10 @@ class Grid:
         if isinstance(self.steps, tuple):
             if len(self.steps) != w:
                 raise InputValueError(f"Grid.steps has {len(self.steps)} entries, the robot has w = {w} angles")
-            return self.steps
-        return (self.steps,) * w
+            return cast(tuple[int, ...], self.steps)      # (ints: checked when the grid was made)
+        return (cast(int, self.steps),) * w
 
-    def size(self, w):
+    def size(self, w: int) -> int:
         """Number of configurations, :math:`\\prod_i steps_i`.
 
         Parameters
@@ -136,7 +138,7 @@ class Grid:
         """
         return math.prod(self.shape(w))
 
-    def configurations(self, w, start, stop):
+    def configurations(self, w: int, start: int, stop: int) -> FloatArray:
         """Configurations ``start .. stop-1`` of the grid's numbering.
 
         Parameters
@@ -202,7 +204,7 @@ class Sample:
         return (f"all steering angles (drivable or not): {self.n:,} configurations drawn uniformly from "
                 f"[{math.degrees(self.lo):g}, {math.degrees(self.hi):g}) deg per angle (seed {self.seed})")
 
-    def size(self, w):
+    def size(self, w: int) -> int:
         """Number of configurations (``n``, whatever ``w``).
 
         Parameters
@@ -216,7 +218,7 @@ class Sample:
         """
         return self.n
 
-    def configurations(self, w, start, stop):
+    def configurations(self, w: int, start: int, stop: int) -> FloatArray:
         """Configurations ``start .. stop-1`` of the sample.
 
         Parameters
@@ -251,7 +253,7 @@ class _Explicit:
         return self.beta[start:stop]
 
 
-def as_source(angles, w):
+def as_source(angles: Grid | Sample | ArrayLike, w: int) -> Grid | Sample | _Explicit:
     """The configurations of a sweep: a :class:`Grid` or :class:`Sample` as given, or explicit angles (N, w).
 
     Parameters

@@ -8,19 +8,28 @@ from __future__ import annotations
 
 import signal
 import threading
+from collections.abc import Callable, Sequence
+from typing import Any, TypeAlias
 
 import numpy as np
 
 from ...errors import InputTypeError, InputValueError
 from ...model import validation as V
 from ...model.limits import check, limit
+from ...model.robot import Robot
+from ...model.types import ArrayLike
 from .analyses import ANALYSES, J_length
-from .configurations import BLOCK, Sample, as_source, count
+from .configurations import BLOCK, Grid, Sample, as_source, count
 from .motions import Drivable, Motions
 from .reduction import Partial
-from .result import finish
+from .result import Sweep, finish
 
-__all__ = ["sweep", "bytes_per_configuration", "QUANTILES", "CHUNK"]
+__all__ = ["Angles", "sweep", "bytes_per_configuration", "QUANTILES", "CHUNK"]
+
+#: what a sweep runs over: a :class:`~wmr.analysis.sweep.configurations.Grid`, a
+#: :class:`~wmr.analysis.sweep.configurations.Sample`, the configurations a robot can drive in
+#: (:class:`~wmr.analysis.sweep.motions.Drivable`), or explicit configurations (N, w)
+Angles: TypeAlias = Grid | Sample | Drivable | ArrayLike
 
 #: Quantiles reported by default.
 QUANTILES = (0.0, 0.01, 0.05, 0.5, 0.95, 0.99, 1.0)
@@ -58,8 +67,10 @@ def _evaluate(task, start, stop, threads):
     return reduced(start, x)
 
 
-def sweep(robot, analysis, angles, *, L=None, quantiles=QUANTILES, keep=False, chunk=CHUNK,
-          progress=None, client=None, interruptible=False):
+def sweep(robot: Robot, analysis: str, angles: Angles, *, L: float | None = None,
+          quantiles: Sequence[float] = QUANTILES, keep: bool = False, chunk: int = CHUNK,
+          progress: Callable[[int, int], object] | None = None, client: Any = None,
+          interruptible: bool = False) -> Sweep:
     r"""Evaluate an analysis over a grid or sample of configurations, chunk by chunk.
 
     Each chunk of configurations :math:`\boldsymbol\beta_k\in\mathbb R^w` is evaluated with the

@@ -207,7 +207,7 @@ def _swerve_like(robot):
 
 
 def kappa_J_drivable(source, start, stop, L, fold):
-    r""":math:`\kappa(\mathbf J)` over configurations ``start .. stop-1`` of a drivable source, block by block.
+    r""":math:`\kappa(\mathbf J)` over configurations ``start`` to ``stop - 1`` of a drivable source, block by block.
 
     Each block of twists is drawn, evaluated (:func:`kappa_J_of_twists`) and handed to ``fold`` in
     one task, so that the drawing and the reduction run on every core too.

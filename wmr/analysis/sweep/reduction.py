@@ -12,6 +12,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ...model.types import FloatArray
+
 __all__ = ["SKETCH_ACCURACY", "Partial"]
 
 #: Relative accuracy of the quantiles of real-valued analyses (see :class:`~wmr.analysis.sweep.Sweep`).
@@ -125,7 +127,7 @@ class Partial:
     infinite: int = 0              # +inf (a condition number at a singular configuration)
     values: list = field(default_factory=list)             # (start, array) when kept
 
-    def add(self, start, x, integer, keep):
+    def add(self, start: int, x: FloatArray, integer: bool, keep: bool) -> None:
         """Fold in the values of the configurations ``start .. start + len(x) - 1``.
 
         Parameters
@@ -181,7 +183,7 @@ class Partial:
     def _small(self, v, at):
         self.small, self.small_at = self._first(v, at, self.small, self.small_at, 1)
 
-    def merge(self, other):
+    def merge(self, other: Partial) -> Partial:
         """Fold in another reduction (associative: the result does not depend on the order of the chunks).
 
         Parameters
@@ -206,7 +208,7 @@ class Partial:
         self.values.extend(other.values)
         return self
 
-    def quantile(self, q, integer):
+    def quantile(self, q: float, integer: bool) -> float:
         """The order statistic of rank floor(q (count - 1)) (exact for integers, else from the sketch).
 
         Parameters

@@ -71,7 +71,7 @@ class Sweep:
     covers: str = ""
     complete: bool = True
 
-    def summary(self, convention="wmr"):
+    def summary(self, convention: str = "wmr") -> str:
         """A few lines of text that state the result (used by ``wmr sweep``).
 
         Parameters

@@ -62,7 +62,7 @@ for _info in pkgutil.iter_modules(__path__):
     importlib.import_module(f"{__name__}.{_info.name}")
 
 
-def kinds_table():
+def kinds_table() -> str:
     r"""An RST table of the registered wheel kinds: name, class, joints (driven or passive) and rates.
 
     Returns

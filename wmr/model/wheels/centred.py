@@ -18,7 +18,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..backend import NUMERIC
+from ..backend import NUMERIC, Backend
+from ..types import ArrayLike, FloatArray, Matrix
 from .joints import Joint
 from .mechanism import VERTICAL, Body, mount, wheel
 from .unit import WheelUnit
@@ -48,7 +49,7 @@ class CentredWheel(WheelUnit):
     JOINTS = (Joint("steer", "steer", driven=True), Joint("drive", "drive", driven=True, rate=("theta", r"\theta", "")))
     rolls_in_plane = True
 
-    def local_block(self, backend=NUMERIC):
+    def local_block(self, backend: Backend = NUMERIC) -> Matrix:
         r"""(51): :math:`\mathbf L_i = [0\ \ -r]^T`, the column of :math:`\dot\theta_i`.
 
         Parameters
@@ -61,7 +62,7 @@ class CentredWheel(WheelUnit):
         """
         return backend.matrix([[0], [-self.r]])
 
-    def beta_rate(self, psi_dot, rates, steer=None):
+    def beta_rate(self, psi_dot: ArrayLike, rates: ArrayLike, steer: ArrayLike | None = None) -> FloatArray:
         """The steering rate is an independent input (decoupled from rolling): ``steer`` or 0.
 
         Parameters
@@ -80,7 +81,7 @@ class CentredWheel(WheelUnit):
         _, _, steer, shape = self._rates_in(psi_dot, rates, steer)
         return np.zeros(shape) if steer is None else np.broadcast_to(steer, shape).copy()
 
-    def root_body(self, height):
+    def root_body(self, height: float) -> Body:
         r"""The steer body at :math:`P_i` on ``steer``, the wheel under it (centre :math:`P_i`) on ``drive``.
 
         See :mod:`~wmr.model.wheels.mechanism`.

@@ -7,13 +7,15 @@ the changes to a copy of the robot and re-analyses it (:mod:`wmr.analysis.advice
 """
 from __future__ import annotations
 
+from typing import Self
+
 __all__ = ["DesignHints"]
 
 
 class DesignHints:
     """The design hints of a wheel unit (a base of every kind; see :class:`~wmr.model.wheels.unit.WheelUnit`)."""
 
-    def dead_zone(self):
+    def dead_zone(self) -> float | None:
         """The radius of C's circle when every unit is steered with its drives locked, if this unit has one.
 
         The paper's dead zone of a robot on offset wheels (:func:`wmr.analysis.overview.dead_zone_radius`).
@@ -25,7 +27,7 @@ class DesignHints:
         """
         return None
 
-    def isotropy_advice(self):
+    def isotropy_advice(self) -> str | None:
         """What would make this unit's block isotropic (equal singular values), as a sentence about ``{wheels}``.
 
         Returns
@@ -36,7 +38,7 @@ class DesignHints:
         """
         return None
 
-    def isotropic_variant(self):
+    def isotropic_variant(self) -> Self | None:
         """The same unit changed as :meth:`isotropy_advice` says (its block isotropic), or None.
 
         The design advice of ``wmr analyze`` builds the changed robot from it and re-analyses it
@@ -48,7 +50,7 @@ class DesignHints:
         """
         return None
 
-    def other_builds(self):
+    def other_builds(self) -> tuple[tuple[str, Self], ...]:
         """Other ways to build this unit that change which motions its motors drive, as ``(words, unit)`` pairs.
 
         The design advice tries them when the motors of a robot cannot drive every motion it can

@@ -21,11 +21,12 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import checks as C
-from ..backend import NUMERIC
+from ..backend import NUMERIC, Backend
+from ..types import ArrayLike, FloatArray, Matrix
 from .filekeys import FileKey
 from .joints import Joint
 from .mechanism import VERTICAL, Body, mount, wheel
-from .parts import Link
+from .parts import Link, Part
 from .unit import WheelUnit
 
 __all__ = ["DualWheel"]
@@ -67,7 +68,7 @@ class DualWheel(WheelUnit):
         super()._validate()
         object.__setattr__(self, "b", C.positive("b (half wheel separation)", self.b))
 
-    def local_block(self, backend=NUMERIC):
+    def local_block(self, backend: Backend = NUMERIC) -> Matrix:
         r"""(17): :math:`\dot{\mathbf h}_i = -\tfrac r2(\dot\theta_{i1} + \dot\theta_{i2})\mathbf j_i`, so
         :math:`\mathbf L_i = \begin{bmatrix}0&0\\-r/2&-r/2\end{bmatrix}`.
 
@@ -83,7 +84,7 @@ class DualWheel(WheelUnit):
         return backend.matrix([[0, 0], [-half, -half]])
 
     @np.errstate(over="ignore", invalid="ignore")       # overflow is checked on the result
-    def beta_rate(self, psi_dot, rates, steer=None):
+    def beta_rate(self, psi_dot: ArrayLike, rates: ArrayLike, steer: ArrayLike | None = None) -> FloatArray:
         r"""Corrected (15): :math:`\dot\beta_i = -\tfrac{r}{2b}(\dot\theta_{i1} - \dot\theta_{i2}) - \dot\psi`.
 
         Parameters
@@ -107,7 +108,7 @@ class DualWheel(WheelUnit):
         psi_dot, rates, _, _ = self._rates_in(psi_dot, rates, steer)
         return self._finite_rate(-(self.r / (2 * self.b)) * (rates[..., 0] - rates[..., 1]) - psi_dot, rates)
 
-    def steering_row(self):
+    def steering_row(self) -> FloatArray | None:
         r"""Corrected (15): the rate difference :math:`\mathbf c = [-\tfrac{r}{2b}\ \ \tfrac{r}{2b}]` turns the unit.
 
         Returns
@@ -126,7 +127,7 @@ class DualWheel(WheelUnit):
         wheels = np.stack([P + self.b * i_dir, P - self.b * i_dir], axis=-2)
         return {"P": P, "H": P, "wheels": wheels, "i": i_dir, "j": j_dir}
 
-    def parts(self, beta):
+    def parts(self, beta: float) -> tuple[Part, ...]:
         """The bar between the two wheels, the wheels, and the swivel (see :meth:`WheelUnit.parts`).
 
         Parameters
@@ -140,7 +141,7 @@ class DualWheel(WheelUnit):
         pts = self.points(C.number("beta", beta))
         return (Link(pts["wheels"], over=False, r=float(self.r)),) + super().parts(beta)
 
-    def root_body(self, height):
+    def root_body(self, height: float) -> Body:
         r"""The swivel body at :math:`P_i` on ``swivel``, wheel 1 at :math:`P_i + b\,\mathbf i_i` on ``drive1``, wheel 2
         at :math:`P_i - b\,\mathbf i_i` on ``drive2``.
 

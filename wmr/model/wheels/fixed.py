@@ -19,7 +19,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from .centred import CentredWheel
-from .mechanism import wheel
+from .mechanism import Body, wheel
 from .unsteered import UnsteeredUnit
 
 __all__ = ["FixedWheel"]
@@ -65,7 +65,7 @@ class FixedWheel(UnsteeredUnit):
     local_block = CentredWheel.local_block
     rolls_in_plane = True
 
-    def root_body(self, height):
+    def root_body(self, height: float) -> Body:
         r"""The wheel alone, centred at :math:`P_i` and turned by its ``angle``, on ``drive``.
 
         See :mod:`~wmr.model.wheels.mechanism`.

@@ -14,7 +14,8 @@ import numpy as np
 
 from .. import arrays as A
 from .. import checks as C
-from .parts import Disc, Pivot
+from ..types import ArrayLike, FloatArray
+from .parts import Disc, Part, Pivot
 
 __all__ = ["UnitGeometry"]
 
@@ -32,7 +33,7 @@ class UnitGeometry:
         """The constant angle of a unit without a steering joint; None for a steered unit."""
         return None
 
-    def points(self, beta):
+    def points(self, beta: ArrayLike) -> dict[str, FloatArray]:
         r"""Points of the unit in the body frame (for drawing and for checks).
 
         Parameters
@@ -64,7 +65,7 @@ class UnitGeometry:
         """The unit's points from :math:`P_i` and its axle and rolling directions (kinds with others override this)."""
         return {"P": P, "H": P, "wheels": P[..., None, :], "i": i_dir, "j": j_dir}
 
-    def parts(self, beta):
+    def parts(self, beta: float) -> tuple[Part, ...]:
         r"""The unit's parts seen from above at one steering angle, body frame (:mod:`~wmr.model.wheels.parts`).
 
         Parameters
@@ -90,7 +91,7 @@ class UnitGeometry:
     def _discs(self, pts, beta, arrow=True):
         return tuple(Disc(c, float(self.drawn_angle(beta)), float(self.r), arrow) for c in pts["wheels"])
 
-    def drawn_angle(self, beta):
+    def drawn_angle(self, beta: float) -> float:
         """The angle the unit is drawn at: ``beta``, or a unit's own constant angle.
 
         Parameters

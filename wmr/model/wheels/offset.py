@@ -18,16 +18,18 @@ In a robot file::
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
+from typing import Self
 
 import numpy as np
 
 from .. import checks as C
-from ..backend import NUMERIC
+from ..backend import NUMERIC, Backend
 from ..tolerance import TOL
+from ..types import ArrayLike, FloatArray, Matrix
 from .filekeys import FileKey
 from .joints import Joint
 from .mechanism import VERTICAL, Body, mount, wheel
-from .parts import Link
+from .parts import Link, Part
 from .unit import WheelUnit
 
 __all__ = ["OffsetWheel"]
@@ -70,7 +72,7 @@ class OffsetWheel(WheelUnit):
         super()._validate()
         object.__setattr__(self, "d", C.nonnegative("d (offset)", self.d))
 
-    def local_block(self, backend=NUMERIC):
+    def local_block(self, backend: Backend = NUMERIC) -> Matrix:
         r"""(20)/(21): :math:`\mathbf L_i = \mathrm{diag}(-d, -r)`, columns :math:`(\dot\phi_i, \dot\theta_i)`.
 
         Parameters
@@ -84,7 +86,7 @@ class OffsetWheel(WheelUnit):
         return backend.matrix([[-self.d, 0], [0, -self.r]])
 
     @np.errstate(over="ignore", invalid="ignore")       # overflow is checked on the result
-    def beta_rate(self, psi_dot, rates, steer=None):
+    def beta_rate(self, psi_dot: ArrayLike, rates: ArrayLike, steer: ArrayLike | None = None) -> FloatArray:
         r"""(7): :math:`\dot\beta_i = \dot\phi_i - \dot\psi`, with :math:`\dot\phi_i` = ``rates[..., 0]``.
 
         Parameters
@@ -112,7 +114,7 @@ class OffsetWheel(WheelUnit):
         H = P - self.d * j_dir
         return {"P": P, "H": H, "wheels": H[..., None, :], "i": i_dir, "j": j_dir}
 
-    def parts(self, beta):
+    def parts(self, beta: float) -> tuple[Part, ...]:
         """The arm from the steering axis to the wheel, the wheel, and the steering axis (see :meth:`WheelUnit.parts`).
 
         Parameters
@@ -126,7 +128,7 @@ class OffsetWheel(WheelUnit):
         pts = self.points(C.number("beta", beta))
         return (Link(np.stack([pts["P"], pts["H"]]), over=True, r=float(self.r)),) + super().parts(beta)
 
-    def root_body(self, height):
+    def root_body(self, height: float) -> Body:
         r"""The steer body at :math:`P_i` on ``steer``, its arm to the wheel at :math:`H_i = P_i - d\,\mathbf j_i`.
 
         The wheel turns on ``drive``.
@@ -148,7 +150,7 @@ class OffsetWheel(WheelUnit):
         return Body("steer", mount(self.position), 0.0, steer, VERTICAL, size=max(d, r / 2),
                     rods=(((0.0, 0.0, 0.0), H),), children=(wheel("wheel", H, r, drive),))
 
-    def dead_zone(self):
+    def dead_zone(self) -> float | None:
         """The offset d: steered with the drives locked, offset wheels carry C on a circle of radius d.
 
         Returns
@@ -157,7 +159,7 @@ class OffsetWheel(WheelUnit):
         """
         return float(self.d)
 
-    def isotropy_advice(self):
+    def isotropy_advice(self) -> str | None:
         """``d = r`` (the paper's (46)) makes :math:`\\mathbf L_i = -r\\mathbf 1`; None when it holds already.
 
         Returns
@@ -169,7 +171,7 @@ class OffsetWheel(WheelUnit):
             return None
         return "set offset = radius on wheel {wheels} (d = r, the paper's (46))"
 
-    def isotropic_variant(self):
+    def isotropic_variant(self) -> Self | None:
         """The same unit with ``d = r`` (see :meth:`isotropy_advice`); None when it holds already.
 
         Returns

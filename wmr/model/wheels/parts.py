@@ -5,14 +5,14 @@ each part by its type, so it draws every wheel kind without asking which kind it
 matplotlib here, and no style: sizes are the unit's own (its wheel radius), colours and line
 widths are the drawing's.
 
-===============  ==================================================================================
-part             what it is
-===============  ==================================================================================
-:class:`Disc`    a wheel: from above a rounded rectangle :math:`2r` long along the rolling direction
-:class:`Link`    a rigid bar of the intermediate body (an offset wheel's arm, a dual wheel's axle bar)
-:class:`Rollers` the free rollers in contact on a Swedish wheel, at their angle to the axle
-:class:`Pivot`   a vertical joint (steering axis) at :math:`P_i`
-===============  ==================================================================================
+================  =====================================================================================
+part              what it is
+================  =====================================================================================
+:class:`Disc`     a wheel: from above a rounded rectangle :math:`2r` long along the rolling direction
+:class:`Link`     a rigid bar of the intermediate body (an offset wheel's arm, a dual wheel's axle bar)
+:class:`Rollers`  the free rollers in contact on a Swedish wheel, at their angle to the axle
+:class:`Pivot`    a vertical joint (steering axis) at :math:`P_i`
+================  =====================================================================================
 
 Examples
 --------
@@ -23,10 +23,11 @@ Examples
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TypeAlias
 
 import numpy as np
 
-__all__ = ["Disc", "Link", "Rollers", "Pivot"]
+__all__ = ["Disc", "Link", "Rollers", "Pivot", "Part"]
 
 
 @dataclass(frozen=True)
@@ -108,3 +109,7 @@ class Pivot:
 
     point: np.ndarray
     r: float
+
+
+#: any of the parts (what :meth:`wmr.model.wheels.WheelUnit.parts` returns a tuple of)
+Part: TypeAlias = Disc | Link | Rollers | Pivot

@@ -18,16 +18,19 @@ In a robot file::
 from __future__ import annotations
 
 from dataclasses import InitVar, dataclass, field, replace
+from typing import Self
 
 import numpy as np
 
 from ...errors import InputValueError
 from .. import checks as C
-from ..backend import NUMERIC
+from ..backend import NUMERIC, Backend
 from ..tolerance import TOL
+from ..types import FloatArray, Matrix
 from .filekeys import FileKey
 from .joints import Joint
-from .parts import Rollers
+from .mechanism import Body
+from .parts import Part, Rollers
 from .unsteered import UnsteeredUnit, in_degrees, radians
 
 __all__ = ["NO_FAITHFUL_MECHANISM", "SwedishWheel"]
@@ -133,7 +136,7 @@ class SwedishWheel(UnsteeredUnit):
                                   f"a conventional wheel: use FixedWheel), got {C.show(self.roller)}")
         object.__setattr__(self, "roller", g)
 
-    def local_block(self, backend=NUMERIC):
+    def local_block(self, backend: Backend = NUMERIC) -> Matrix:
         r"""The local block :math:`\mathbf L_i = \begin{bmatrix}0 & r\sin\gamma\\ -r & -r\cos\gamma\end{bmatrix}`.
 
         Its columns are those of :math:`\dot\theta_i` and :math:`\dot\sigma_i`.
@@ -150,7 +153,7 @@ class SwedishWheel(UnsteeredUnit):
         r, g = self.r, self.roller
         return backend.matrix([[0, r * backend.sin(g)], [-r, -r * backend.cos(g)]])
 
-    def roller_axis(self):
+    def roller_axis(self) -> FloatArray:
         r"""The roller axis :math:`\mathbf a_i = \mathbf R(\beta_i)[\cos\gamma\ \ \sin\gamma]^T`, body frame (numbers).
 
         Returns
@@ -165,7 +168,7 @@ class SwedishWheel(UnsteeredUnit):
         t = C.number("angle", self.angle) + C.number("roller", self.roller)
         return np.array([np.cos(t), np.sin(t)])
 
-    def parts(self, beta):
+    def parts(self, beta: float) -> tuple[Part, ...]:
         """The wheel without a rolling arrow (it rolls every way), and its rollers (see :meth:`WheelUnit.parts`).
 
         Parameters
@@ -181,7 +184,7 @@ class SwedishWheel(UnsteeredUnit):
         pts = self.points(angle)
         return self._discs(pts, angle, arrow=False) + (Rollers(pts["H"], angle, float(self.r), float(self.roller)),)
 
-    def root_body(self, height):
+    def root_body(self, height: float) -> Body:
         """None a physics engine could take faithfully: refused (:data:`NO_FAITHFUL_MECHANISM`).
 
         Parameters
@@ -200,7 +203,7 @@ class SwedishWheel(UnsteeredUnit):
         """
         raise NotImplementedError(f"Swedish wheel at {tuple(float(v) for v in self.position)}: {NO_FAITHFUL_MECHANISM}")
 
-    def isotropy_advice(self):
+    def isotropy_advice(self) -> str | None:
         """Omni rollers (:math:`\\gamma = \\pi/2`) make the block :math:`r\\,\\mathbf R`, isotropic; None if they are.
 
         Returns
@@ -212,7 +215,7 @@ class SwedishWheel(UnsteeredUnit):
         return ("use omni wheels (rollers at 90 deg) on wheel {wheels}: a Swedish wheel's block "
                 "r[[0, sin g], [-1, -cos g]] has singular values r sqrt(1 +- cos g)")
 
-    def isotropic_variant(self):
+    def isotropic_variant(self) -> Self | None:
         """The same wheel with omni rollers (:math:`\\gamma = \\pi/2`); None when it has them already.
 
         Returns
@@ -221,7 +224,7 @@ class SwedishWheel(UnsteeredUnit):
         """
         return None if self.isotropy_advice() is None else replace(self, roller=np.pi / 2)
 
-    def other_builds(self):
+    def other_builds(self) -> tuple[tuple[str, Self], ...]:
         """The wheel of the other hand (rollers at :math:`-\\gamma`), unless it is an omni wheel.
 
         Returns

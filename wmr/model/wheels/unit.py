@@ -38,7 +38,7 @@ from __future__ import annotations
 
 import dataclasses
 from dataclasses import dataclass
-from typing import Any, ClassVar
+from typing import Any, ClassVar, Self
 
 import numpy as np
 import sympy as sp
@@ -46,8 +46,9 @@ import sympy as sp
 from ...errors import InputValueError
 from .. import arrays as A
 from .. import checks as C
-from ..backend import NUMERIC, choose, is_symbolic
+from ..backend import NUMERIC, Backend, choose, is_symbolic
 from ..platform import E, rotated
+from ..types import ArrayLike, FloatArray, Matrix, Numbers, Point, Symbolic
 from .design import DesignHints
 from .filekeys import COMMON_KEYS, FileKey
 from .geometry import UnitGeometry
@@ -135,7 +136,7 @@ class WheelUnit(UnitGeometry, UnitMechanism, DesignHints):
         """The unit's joints, with its own actuation (``driven``), in the order of ``JOINTS``."""
         return tuple(dataclasses.replace(j, driven=d) for j, d in zip(self.JOINTS, self.driven, strict=True))
 
-    def rate_names(self, i):
+    def rate_names(self, i: int) -> tuple[str, ...]:
         """Plain names of this unit's rate variables when it is wheel ``i``.
 
         Parameters
@@ -159,7 +160,7 @@ class WheelUnit(UnitGeometry, UnitMechanism, DesignHints):
         i = C.integer("i", i, minimum=1)
         return tuple(f"{name}_dot_{i}{suffix}" for name, _, suffix in self.RATES)
 
-    def rate_symbols(self, i):
+    def rate_symbols(self, i: int) -> tuple[Symbolic, ...]:
         """SymPy symbols of the rate variables of wheel ``i``, typeset as in the paper.
 
         Parameters
@@ -182,7 +183,7 @@ class WheelUnit(UnitGeometry, UnitMechanism, DesignHints):
         return tuple(sp.Symbol(rf"\dot{{{tex}}}_{{{i}{suffix}}}", real=True) for _, tex, suffix in self.RATES)
 
     # --- steering --------------------------------------------------------------------------------
-    def beta_rate(self, psi_dot, rates, steer=None):
+    def beta_rate(self, psi_dot: ArrayLike, rates: ArrayLike, steer: ArrayLike | None = None) -> FloatArray:
         """Steering rate :math:`\\dot\\beta_i` of the unit on the platform (used by the simulation).
 
         Parameters
@@ -200,7 +201,7 @@ class WheelUnit(UnitGeometry, UnitMechanism, DesignHints):
         """
         raise NotImplementedError(f"{type(self).__name__} does not say how it steers (beta_rate)")
 
-    def steering_row(self):
+    def steering_row(self) -> FloatArray | None:
         r"""How the unit's rates turn it where its block leaves them free, or None.
 
         A row :math:`\mathbf c` with :math:`\mathbf c\,\dot{\boldsymbol\theta}_i = \dot\psi + \dot\beta_i`
@@ -216,7 +217,8 @@ class WheelUnit(UnitGeometry, UnitMechanism, DesignHints):
         """
         return None
 
-    def _rates_in(self, psi_dot, rates, steer):
+    def _rates_in(self, psi_dot: ArrayLike, rates: ArrayLike,
+                  steer: ArrayLike | None) -> tuple[FloatArray, FloatArray, FloatArray | None, tuple[int, ...]]:
         """``psi_dot`` (...), ``rates`` (..., n_rates) and ``steer`` (... or None), checked, and their batch shape."""
         psi_dot = A.finite_array("psi_dot", psi_dot)
         rates = A.finite_array("rates", rates, last=self.n_rates)
@@ -225,14 +227,14 @@ class WheelUnit(UnitGeometry, UnitMechanism, DesignHints):
         return psi_dot, rates, steer, shape
 
     @staticmethod
-    def _finite_rate(out, rates):
+    def _finite_rate(out: FloatArray, rates: FloatArray) -> FloatArray:
         if not np.isfinite(out).all():
             raise InputValueError(f"rates or psi_dot are too large: the steering rate overflows "
                                   f"(largest |rates| = {np.abs(rates).max():.3g})")
         return out
 
     # --- parameters --------------------------------------------------------------------------------
-    def parameters(self):
+    def parameters(self) -> dict[str, Numbers]:
         """The unit's lengths and angles by field name (its dataclass fields but ``position`` and ``driven``).
 
         Returns
@@ -248,11 +250,11 @@ class WheelUnit(UnitGeometry, UnitMechanism, DesignHints):
         return {f.name: getattr(self, f.name) for f in dataclasses.fields(self) if f.name not in ("position", "driven")}
 
     @property
-    def free_symbols(self):
+    def free_symbols(self) -> set[Symbolic]:
         """The SymPy symbols in the unit's position and parameters (an empty set for numbers and exact numbers)."""
         return set().union(*(v.free_symbols for v in self._values() if isinstance(v, sp.Basic)))
 
-    def numeric(self):
+    def numeric(self) -> Self:
         """The same unit with float position and parameters (SymPy numbers such as :math:`\\sqrt3/2` evaluated).
 
         Returns
@@ -278,7 +280,7 @@ class WheelUnit(UnitGeometry, UnitMechanism, DesignHints):
                                    **{k: num(v) for k, v in self.parameters().items()})
 
     @property
-    def is_symbolic(self):
+    def is_symbolic(self) -> bool:
         """True when the position or a length of the unit is a SymPy expression."""
         return is_symbolic(*self._values())
 
@@ -286,7 +288,7 @@ class WheelUnit(UnitGeometry, UnitMechanism, DesignHints):
         """The unit's parameters as a flat tuple (position coordinates, lengths, angles)."""
         return (*self.position, *self.parameters().values())
 
-    def remounted(self, position, turn):
+    def remounted(self, position: Point, turn: Numbers) -> Self:
         """The same unit described from a body frame turned by ``turn``, with its mount point at ``position``.
 
         Parameters
@@ -304,7 +306,7 @@ class WheelUnit(UnitGeometry, UnitMechanism, DesignHints):
         return dataclasses.replace(self, position=position)
 
     # --- the block of J2 -------------------------------------------------------------------------
-    def local_block(self, backend=NUMERIC):
+    def local_block(self, backend: Backend = NUMERIC) -> Matrix:
         r"""The unit's constant local block :math:`\mathbf L_i` (its block of :math:`\mathbf J_2` at :math:`\beta = 0`).
 
         Parameters
@@ -317,7 +319,7 @@ class WheelUnit(UnitGeometry, UnitMechanism, DesignHints):
         """
         raise NotImplementedError(f"{type(self).__name__} does not give its block (local_block)")
 
-    def block(self, beta, backend=None):
+    def block(self, beta: Numbers, backend: Backend | None = None) -> Matrix:
         r"""This unit's block :math:`\mathbf B_i(\beta_i) = \mathbf R_{bwi}\mathbf L_i` of :math:`\mathbf J_2`.
 
         Evaluated as :math:`\cos\beta_i\,\mathbf L_i + \sin\beta_i\,\mathbf E\mathbf L_i` by
@@ -347,7 +349,7 @@ class WheelUnit(UnitGeometry, UnitMechanism, DesignHints):
         L, EL = self.block_terms(bk)
         return rotated(beta, L, EL, backend=bk)                     # (11): R(beta) L = cos L + sin E L
 
-    def block_terms(self, backend=NUMERIC):
+    def block_terms(self, backend: Backend = NUMERIC) -> tuple[Matrix, Matrix]:
         r"""The constant pair :math:`(\mathbf L_i, \mathbf E\mathbf L_i)` with
         :math:`\mathbf B_i(\beta) = \cos\beta\,\mathbf L_i + \sin\beta\,\mathbf E\mathbf L_i`.
 
@@ -367,7 +369,7 @@ class WheelUnit(UnitGeometry, UnitMechanism, DesignHints):
         return L, E(backend) @ L
 
     @classmethod
-    def file_keys(cls):
+    def file_keys(cls) -> tuple[FileKey, ...]:
         """Every key of this kind's table in a robot file: :data:`~wmr.model.wheels.filekeys.COMMON_KEYS`, then its own.
 
         Returns

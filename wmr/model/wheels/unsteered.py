@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import InitVar, dataclass, field, replace
-from typing import ClassVar
+from typing import ClassVar, Self
 
 import numpy as np
 import sympy as sp
@@ -24,15 +24,16 @@ import sympy as sp
 from ...errors import InputValueError
 from .. import arrays as A
 from .. import checks as C
-from ..backend import NUMERIC, choose
+from ..backend import NUMERIC, Backend, choose
 from ..platform import rotated
+from ..types import ArrayLike, FloatArray, Matrix, Numbers, Point
 from .filekeys import FileKey
 from .unit import WheelUnit
 
 __all__ = ["UnsteeredUnit", "constant", "radians", "in_degrees"]
 
 
-def constant(name, value):
+def constant(name: str, value: Numbers) -> Numbers:
     """A constant angle: a finite real number (float), or an exact SymPy number kept exact (no free symbols).
 
     Parameters
@@ -136,11 +137,11 @@ class UnsteeredUnit(WheelUnit):
         object.__setattr__(self, "angle", radians("angle", self.angle))
 
     @property
-    def constant_angle(self):
+    def constant_angle(self) -> Numbers:
         """The unit's own angle (``angle``), which replaces its configuration entry."""
         return self.angle
 
-    def remounted(self, position, turn):
+    def remounted(self, position: Point, turn: Numbers) -> Self:
         """The same unit seen from a body frame turned by ``turn``: at ``position``, ``angle`` shifted by ``-turn``.
 
         Parameters
@@ -154,7 +155,7 @@ class UnsteeredUnit(WheelUnit):
         """
         return replace(self, position=position, angle=self.angle - turn)
 
-    def own_angle(self, beta):
+    def own_angle(self, beta: ArrayLike) -> FloatArray:
         r"""The unit's constant angle, in the shape of ``beta`` (whose values are ignored, only checked).
 
         Parameters
@@ -176,7 +177,7 @@ class UnsteeredUnit(WheelUnit):
         beta = A.finite_array("beta", beta)
         return np.full(beta.shape, C.number("angle", self.angle))
 
-    def block(self, beta, backend=None):
+    def block(self, beta: Numbers, backend: Backend | None = None) -> Matrix:
         r"""This unit's block :math:`\mathbf B_i = \mathbf R(\text{angle})\mathbf L_i` of :math:`\mathbf J_2`.
 
         Parameters
@@ -198,6 +199,7 @@ class UnsteeredUnit(WheelUnit):
         [[0.0], [-2.0]]
         """
         bk = choose(beta, *self._values(), backend=backend)
+        angle: Numbers
         if bk is NUMERIC:
             angle = self.own_angle(beta)
         else:
@@ -206,7 +208,7 @@ class UnsteeredUnit(WheelUnit):
         L, EL = self.block_terms(bk)
         return rotated(angle, L, EL, backend=bk)
 
-    def points(self, beta):
+    def points(self, beta: ArrayLike) -> dict[str, FloatArray]:
         r"""Points of the unit in the body frame, at its own angle (``beta`` sets the batch shape only).
 
         Parameters
@@ -228,7 +230,7 @@ class UnsteeredUnit(WheelUnit):
         """
         return super().points(self.own_angle(beta))
 
-    def beta_rate(self, psi_dot, rates, steer=None):
+    def beta_rate(self, psi_dot: ArrayLike, rates: ArrayLike, steer: ArrayLike | None = None) -> FloatArray:
         """The wheel frame does not turn on the platform: :math:`\\dot\\beta_i = 0`.
 
         Parameters

@@ -112,7 +112,7 @@ def test_line_intersection_kinds():
     assert ln.line_intersection([0, 0], [1, 0], [0, 1], [1, 0])[0] == ln.PARALLEL
     assert ln.line_intersection([0, 0], [1, 0], [2, 0], [-1, 0])[0] == ln.COINCIDENT
     k, p = ln.line_intersection([0, 0], [1, 1], [2, 0], [0, 1])
-    assert k == ln.FINITE and np.allclose(p, [2, 2])
+    assert k == ln.FINITE and p is not None and np.allclose(p, [2, 2])
 
 
 # ----------------------------------------------------------------------------- classification

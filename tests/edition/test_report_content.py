@@ -27,7 +27,7 @@ import pytest
 from edition.ledger import COLUMNS
 from tools.build.pdf import to_latex
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 REPORT = ("report.html", "report.pdf") if shutil.which("xelatex") and shutil.which("pandoc") else ("report.html",)
 
 
@@ -93,7 +93,9 @@ def project(tmp_path_factory):
         _cell("code", "class T:\n    def _repr_html_(self):\n"
                       "        return '<table><tr><td>HTML-TABLE-OUTPUT</td></tr></table>'\nT()"),
         _cell("md", "**Exercise.** EXERCISE-TEXT", ["exercise"]),
+        _cell("code", "answer_1 = 'ANSWER-TEXT'", ["answer"]),
         _cell("code", "'SOLUTION-TEXT'", ["solution"]),
+        _cell("code", "'CHECK-TEXT'", ["check"]),
         _cell("code", "display(Markdown('LEDGER-CELL-OUTPUT'))", ["ledger"]),
         _cell("code", "display(Markdown('WIDGET-STATIC-STATE'))", ["widget"]),
         _cell("md", "<a id=\"claim-drift\"></a>\n\n## 1.3 The drift claim"),
@@ -138,7 +140,7 @@ def page(project):
 
 
 def test_tagged_cells_and_program_output_are_dropped(page):
-    for gone in ("EXERCISE-TEXT", "SOLUTION-TEXT", "LEDGER-CELL-OUTPUT"):     # not even their code
+    for gone in ("EXERCISE-TEXT", "ANSWER-TEXT", "SOLUTION-TEXT", "CHECK-TEXT", "LEDGER-CELL-OUTPUT"):  # not even code
         assert gone not in page
     no_code = re.sub(r'<details class="code">.*?</details>', "", page, flags=re.DOTALL)
     for gone in ("PRINTED-OUTPUT", "HTML-TABLE-OUTPUT"):                      # the code stays, collapsed

@@ -52,13 +52,17 @@ def test_4_1(case):
 def _beta_4_2(alpha=0.7):
     """Every wheel plane through a point of the circle through the mount points (degrees)."""
     bot = X.robot_4_2()
-    c, R = mount_circle(bot)
+    circle = mount_circle(bot)
+    assert circle is not None
+    c, R = circle
     return np.degrees(planes_through(bot, c + R * np.array([np.cos(alpha), np.sin(alpha)])))
 
 
 def _beta_4_2_inside():
     bot = X.robot_4_2()
-    c, R = mount_circle(bot)
+    circle = mount_circle(bot)
+    assert circle is not None
+    c, R = circle
     return np.degrees(planes_through(bot, c + 0.5 * R * np.array([1.0, 0.0])))
 
 

@@ -31,7 +31,7 @@ import pytest
 from edition.files import atomic_path, atomic_write
 from tools.build import execute as X
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 
 PY = sys.executable
 LINUX = sys.platform.startswith("linux")

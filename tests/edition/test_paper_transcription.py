@@ -20,7 +20,7 @@ from edition import symbols as S
 from edition.ledger import EQUATIONS
 from edition.transcription import TABLE, TranscriptionError, claim, load, printed, table
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 #: the paper's text extraction (not in the repository): $WMR_PAPER_TEXT, else the shared copy of this machine
 PAPER = Path(os.environ.get("WMR_PAPER_TEXT", "/work/shared/paper/leow-low-loh-2002-wmr-kinematics.md"))
 

@@ -9,7 +9,7 @@ from pathlib import Path
 import nbformat
 import pytest
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 TREE = Path(os.environ.get("WMR_ROOT") or ROOT)  # WMR_ROOT: test another tree
 NOTEBOOKS = sorted((TREE / "notebooks").glob("*.ipynb"))
 BUILD = Path(os.environ.get("WMR_BUILD") or TREE / "build")

@@ -9,7 +9,7 @@ from prose import ascii_math, row_problems
 from edition import ledger as LG
 from edition.ledger import Finding
 
-LEDGER = Path(__file__).resolve().parents[1] / "figures" / "ledger.csv"
+LEDGER = Path(__file__).resolve().parents[2] / "figures" / "ledger.csv"
 
 
 def ok(id, **kw):

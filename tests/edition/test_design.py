@@ -73,7 +73,7 @@ def test_screening_kernel_matches_worst_kappa_on_the_same_grid():
     with pytest.raises(ValueError, match="beta"):
         D.worst_kappa_designs(designs, np.zeros((0, 3)))
     with pytest.raises(TypeError, match="designs"):
-        D.worst_kappa_designs([wmr.paper_robot("offset")], beta)
+        D.worst_kappa_designs([wmr.paper_robot("offset")], beta)  # type: ignore[list-item]
 
 
 # ------------------------------------------------------------------------------------------ the search
@@ -128,7 +128,9 @@ def test_landscape_data():
 # ------------------------------------------------------------------------------------ along the motions
 def test_kappa_along_motions_of_a_rectangle():
     bot = study.swerve(0.6, 0.4, r=0.05)
-    c, R = MK.mount_circle(bot)
+    circle = MK.mount_circle(bot)
+    assert circle is not None
+    c, R = circle
     assert np.allclose(c, 0) and R == pytest.approx(np.hypot(0.3, 0.2))
     ang = np.radians(np.arange(10.0, 360.0, 30.0))
     on = MK.motion_kappa(bot, MK.rotation_twists(R * np.stack([np.cos(ang), np.sin(ang)], -1)))

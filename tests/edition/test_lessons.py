@@ -17,7 +17,7 @@ from edition import exercises as X
 from edition import notebook as NB
 from edition.algebra import mod_pi
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 CHAPTERS = sorted((ROOT / "notebooks").glob("[0-9][0-9]_*.ipynb"))
 PAPER_CHAPTERS = [p for p in CHAPTERS if p.name[:2] in {"01", "02", "03", "04", "05", "06"}]
 #: every chapter but the interactive robot (07), whose "Things to try" are for the sliders

@@ -15,7 +15,7 @@ import pytest
 from edition.exercises.framework import by_name
 from tools import assignments as A
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 LESSONS = sorted((ROOT / "notebooks").glob("[0-9][0-9]_*.ipynb"))
 
 
