@@ -11,7 +11,7 @@ from edition import findings as F
 from edition.families import ITEMS, READINGS, accounting, covering_items
 from wmr.model.robots import paper_robot
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 
 
 @pytest.fixture(scope="module")
