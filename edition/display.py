@@ -232,8 +232,20 @@ def quote(id):
         _display(_markdown(text))
         return None
     c = claim(id)
-    _display(_markdown(f"> {c.text} (Section {c.section})"))
+    _display(_markdown(f"> {c.text} ({_where(c.section)})"))
     return None
+
+
+def _where(section):
+    """Where in the paper: ``"4.2"`` -> ``"Section 4.2"``, ``"3.2, 6"`` -> ``"Sections 3.2 and 6"``,
+    ``"Abstract, 7"`` -> ``"Abstract and Section 7"``."""
+    parts = [p.strip() for p in str(section).split(",") if p.strip()]
+    numbered = [p for p in parts if p[:1].isdigit()]
+    named = [p for p in parts if not p[:1].isdigit()]
+    if numbered:
+        named.append(("Section " if len(numbered) == 1 else "Sections ")
+                     + (numbered[0] if len(numbered) == 1 else ", ".join(numbered[:-1]) + " and " + numbered[-1]))
+    return " and ".join(named)
 
 
 

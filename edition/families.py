@@ -277,7 +277,8 @@ def families(robot=None, n=72, exact=True):
         rf"e.g. $\beta_1\equiv{a13}^\circ$, $\beta_2\equiv{a23}^\circ$ (mod $180^\circ$), $\beta_3$ free ($D_P=P_3$); "
         r"likewise at $P_1$, $P_2$",
         r"$D_P=P_k$: the other two planes lie on the sides through $P_k$; wheel $k$ may take any angle",
-        "partly", "(v)", "Implied by (v) but, unlike (ii)-(iv), not identified as a family with a free angle.",
+        "yes", "(v)", "Read literally, (v) holds: the three planes meet at $P_k$. The report's reading of (v) "
+        r"excludes a $D_P$ at a mount point, and under it no printed item covers this family.",
         samples=np.concatenate(rows),
         exact=lambda: [(sp.cos(th), sp.sin(th)) if w == 2 else dirs_through(*Pex[2])[w] for w in range(3)]))
 
@@ -362,7 +363,11 @@ def check_paper_items(robot=None, L=None):
 
 
 def table(robot=None, n=72, exact=True):
-    """The families as rows of ``singularities.csv``.
+    """The families as rows of ``singularities.csv``: those of :func:`accounting`, counted modulo a half turn.
+
+    ``listed_in_paper`` and ``paper_item`` say which printed items cover a family under the reading the report
+    counts with (:data:`READINGS` ``"half-turn"``), computed from its configurations; ``note`` says what the
+    other stated reading changes.
 
     Parameters
     ----------
@@ -374,7 +379,18 @@ def table(robot=None, n=72, exact=True):
     list of dict
         One row per family (columns :data:`COLUMNS`, numbers as text).
     """
-    return [f.row() for f in families(robot, n=n, exact=exact)]
+    rows = []
+    for f in accounting(robot, n=n, exact=exact):
+        row = f.row()
+        if f.note == f.paper_item:
+            row["note"] = "the same under either reading"
+        elif f.note:
+            row["note"] = (f"covered by {f.note} when $D_P$ may be a mount point (the reading \"any point\"), by "
+                           f"{f.paper_item or 'no printed item'} when not")
+        else:
+            row["note"] = "covered by no printed item under either reading"
+        rows.append(row)
+    return rows
 
 
 def write_csv(path, robot=None, n=72, exact=True):

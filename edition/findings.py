@@ -3,10 +3,6 @@ r"""What Part I of the report states that no chapter's ledger row says: computed
 The findings chapter (``notebooks/findings.ipynb``) reads the ledger and the figures the chapters wrote
 into ``figures/``; this module adds what it computes itself:
 
-- :func:`locked_drive`: the claim ``drift`` of paper section 4.2 judged on its word *whenever*: with the
-  drives locked the :math:`6\times6` system :math:`\mathbf M(\boldsymbol\beta)[\mathbf t;\dot{\boldsymbol\phi}]
-  = \mathbf 0` is nonsingular unless the arm lines are concurrent or parallel
-  (:func:`edition.checks.assembly.locked.locked_steering`);
 - :func:`equation_count`: how many equations the paper numbers, from the transcription
   (``edition/printed.toml``), and which of them the ledger judges;
 - :func:`readings`: the verdicts that rest on a reading of the extracted text (the transcription's ``doubt``);
@@ -19,9 +15,7 @@ import importlib.metadata as md
 import platform
 from pathlib import Path
 
-import numpy as np
-
-__all__ = ["INFERRED", "DISTRIBUTIONS", "locked_drive", "equation_count", "readings", "environment", "citation"]
+__all__ = ["INFERRED", "DISTRIBUTIONS", "equation_count", "readings", "environment", "citation"]
 
 #: Equations whose verdict holds under a convention the paper's text leaves open, and what was inferred
 #: (the ledger's ``convention`` column states the convention itself).  Facts about the text, not verdicts.
@@ -36,73 +30,6 @@ INFERRED = {
 
 #: Distributions whose versions the report states, in this order (the first two are the edition's package).
 DISTRIBUTIONS = ("wmr-kinematics", "wmr", "numpy", "sympy", "matplotlib", "nbclient", "nbconvert", "mujoco")
-
-
-def locked_drive(det_M, plucker, robots=200, per=10, seed=None):
-    r"""The claim ``drift`` (paper section 4.2) on its word *whenever*: can three offset wheels be steered with the
-    drives locked?
-
-    With :math:`\dot\theta_i = 0` the six no-slip equations leave six unknowns, :math:`\mathbf t` and
-    :math:`\dot{\boldsymbol\phi}`: :math:`\mathbf M(\boldsymbol\beta)[\mathbf t;\dot{\boldsymbol\phi}] = \mathbf 0`
-    with :math:`\det\mathbf M = d^3\det[\mathbf d_i\times\mathbf j_i\ \ \mathbf j_i^{\mathrm T}]`, the Plücker
-    coordinates of the arm lines (through :math:`P_i` along :math:`\mathbf j_i`): zero exactly when they are
-    concurrent or all parallel (SymPy, :func:`edition.checks.assembly.locked.locked_steering`).
-
-    Parameters
-    ----------
-    det_M, plucker : SymPy expression, sympy.Matrix (3, 3)
-        Chapter 2's derived :math:`\det\mathbf M` and Plücker rows (``edition.derivations.derived``), checked
-        by :func:`edition.checks.assembly.locked.locked_steering`.
-    robots, per : int
-        Random robots and configurations of each for the numeric rank of :math:`\mathbf M`.
-    seed : int, optional
-        Default :data:`edition.verify.SEED`.
-
-    Returns
-    -------
-    dict
-        A row with the ledger's columns (:data:`edition.ledger.COLUMNS`): ``verdict`` ``"wrong"`` when the
-        determinant is proven and :math:`\mathbf M` has full rank at every random configuration, and the numbers
-        behind it: ``ranks`` (the paper's robot at random angles), ``equal_rank`` (all :math:`\beta_i` equal),
-        ``concurrent_rank`` (arms through one point), ``n`` (configurations tried).
-    """
-    from wmr.analysis.linalg import rank
-    from wmr.model.robots import paper_robot
-
-    from .checks.assembly.locked import concurrent_angles, locked_steering, locked_system
-    from .ledger import COLUMNS
-    from .transcription import claim
-    from .verify import SEED
-    d = locked_steering(det_M, plucker, robots=robots, per=per, seed=SEED if seed is None else seed)
-    bot = paper_robot("offset")
-    rng = np.random.default_rng(SEED if seed is None else seed)
-    generic = sorted(set(rank(locked_system(bot, rng.uniform(-np.pi, np.pi, (per * robots, 3)))).tolist()))
-    b = rng.uniform(-np.pi, np.pi)
-    equal = int(rank(locked_system(bot, np.full(3, b))))
-    u = rng.uniform(-0.5, 0.5, 2) * np.abs(bot.mount_points).max()          # a point inside the platform
-    conc = int(rank(locked_system(bot, concurrent_angles(bot, u))))
-    jams = bool(d.proven) and d.ranks == {6} and generic == [6]
-    text = claim("drift")
-    row: dict[str, object] = dict.fromkeys(COLUMNS, "")
-    row.update(
-        id="drift", kind="claim", section=text.section, verdict="wrong" if jams else "ok", printed=text.text,
-        corrected=(r"With the drives locked ($\dot\theta_i = 0$) three offset wheels can be steered only while their "
-                   r"arm lines (through $P_i$ along $\mathbf j_i$) are concurrent or all parallel; at any other "
-                   r"steering angles the robot jams: no twist and no steering rate satisfy the no-slip equations. The "
-                   r"dead-zone circle of (28)-(29) and Fig. 7 needs all $\beta_i$ equal (parallel arms, a "
-                   r"translation); concurrent arms allow a rotation for an instant only"),
-        why=(r"the locked-drive system $\mathbf M(\boldsymbol\beta)[\mathbf t;\dot{\boldsymbol\phi}] = \mathbf 0$ is "
-             r"$6\times6$ with $\det\mathbf M = d^3\det[\mathbf d_i\times\mathbf j_i\ \ \mathbf j_i^{\mathrm T}]$ "
-             r"(SymPy), which vanishes exactly when the arm lines are concurrent or parallel; $\mathbf M$ has rank "
-             rf"{'/'.join(map(str, generic))} at all {per * robots} random configurations of the paper's robot and "
-             rf"{'/'.join(map(str, sorted(d.ranks)))} at {d.n} configurations of random robots, rank {equal} with "
-             rf"all $\beta_i$ equal and {conc} with concurrent arms"),
-        convention=r"steering without driving read as $\dot\theta_i = 0$ with the steering servos commanding "
-                   r"$\dot\phi_i \neq 0$; offset $d > 0$",
-        check="refuted by counterexample (SymPy determinant, numeric ranks)", printed_holds="no" if jams else "yes",
-        residual="0", notebook="02_offset_wheels_and_mobility", anchor="claim-drift")
-    row.update(ranks=generic, equal_rank=equal, concurrent_rank=conc, n=per * robots)
-    return row
 
 
 def equation_count(ledger, transcription=None):

@@ -34,7 +34,7 @@ TABLE = Path(__file__).with_name("printed.toml")
 _SYMPY = ("Matrix", "Tuple", "BlockMatrix", "BlockDiagMatrix", "ZeroMatrix", "Determinant", "diag", "eye", "zeros",
           "sqrt", "sin", "cos", "atan", "pi", "oo", "Integer", "Float", "Rational")
 _EQUATION_KEYS = {"section", "latex", "sympy", "extracted", "doubt", "note", "extra", "data"}
-_CLAIM_KEYS = {"section", "text", "extracted"}
+_CLAIM_KEYS = {"title", "section", "text", "extracted"}
 
 
 class TranscriptionError(ValueError):
@@ -95,12 +95,15 @@ class Claim:
         The claim, quoted or closely paraphrased, Markdown with ``$...$`` math.
     extracted : tuple of str
         The sentences of the text extraction it quotes, verbatim.
+    title : str
+        How the report names the claim (Markdown), e.g. ``"drift when steering without driving"``; never the slug.
     """
 
     slug: str
     section: str
     text: str
     extracted: tuple = ()
+    title: str = ""
 
 
 @dataclass(frozen=True)
@@ -232,7 +235,7 @@ def load(path=TABLE):
     for slug, entry in raw.get("claim", {}).items():
         where = _entry(entry, f"{path}: claim.{slug}", _CLAIM_KEYS)
         claims[slug] = Claim(slug, _text(entry, "section", where, True), _text(entry, "text", where, True),
-                             _fragments(entry, where))
+                             _fragments(entry, where), _text(entry, "title", where, True))
     return Transcription(equations, claims, names)
 
 

@@ -324,9 +324,7 @@ def omnidirectional(n=2000, seed=SEED):
         corrected_holds=proven, severity="wrong",
         why="omnidirectional means every twist executable at once, the paper's own use in Section 4.2; decoupled "
             "steering only lets the wheels turn, one direction of motion at a time",
-        convention="omnidirectional = every platform twist executable at once from any configuration (Section 4.2)",
-        note="the earlier reading that the platform must stop to re-steer is too strong: wheels re-steered together "
-             "stay parallel, and a translation steers while it moves")])
+        convention="omnidirectional = every platform twist executable at once from any configuration (Section 4.2)")])
 
 
 def discontinuous_heading(n=2000, seed=SEED):

@@ -83,17 +83,25 @@ class _Explorer:
             self._image.update(img)
             self._text.update(md)
 
-    def show(self):
-        """Display the controls, then the picture and the numbers (updated in place by the controls).
+    def show(self, caption=None):
+        """Display the controls, then the picture, its caption and the numbers (updated in place by the controls).
+
+        Parameters
+        ----------
+        caption : str, optional
+            Markdown shown right below the picture (a figure number and what the picture shows); it stays as the
+            picture is redrawn, so it describes what every drawing shows, not one state.
 
         Returns
         -------
         None
         """
-        from IPython.display import display
+        from IPython.display import Markdown, display
         display(self.controls)
         img, md = self._render()
         self._image = display(img, display_id=True)
+        if caption:
+            display(Markdown(caption))
         self._text = display(md, display_id=True)
 
 

@@ -32,7 +32,7 @@ class Row(dict):
     """One ledger row: a dict of :data:`COLUMNS`, shown in a notebook as the verdict sentence."""
 
     def _label(self):
-        return f"({self['id']})" if self["kind"] == "equation" else f"`{self['id']}`"
+        return f"({self['id']})" if self["kind"] == "equation" else f"on {claim(self['id']).title}"
 
     def sentence(self):
         r"""The verdict as a Markdown paragraph, generated from the row (the chapters show this, nothing typed).

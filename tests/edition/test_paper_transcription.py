@@ -119,6 +119,7 @@ latex = '\\phi_i = \\psi + \\beta_i'
 sympy = "Eq(phi_i, twice(psi) + beta_i)"
 extracted = "x"
 [claim.c]
+title = "the claim"
 section = "1"
 text = "a claim"
 """
@@ -132,6 +133,7 @@ text = "a claim"
     (('twice = ', 'beta = '), ["notation.beta", "defined already"]),                 # a notation hiding a symbol
     (("Eq(phi_i, twice(psi) + beta_i)", "Eq(phi_i,"), ["equation.8.sympy", "cannot read"]),
     (('[claim.c]', '[claim.c]\nsource = "x"'), ["claim.c", "unknown keys ['source']"]),
+    (('title = "the claim"\n', ''), ["claim.c", "'title' is missing"]),                 # named by its slug
     (('extracted = "x"', 'extracted = ["x", 3]'), ["equation.8.extracted"]),
     (('[equation.8]', '[equations.8]'), ["top level", "equations"]),
 ])

@@ -1,6 +1,8 @@
 """What Part I computes itself (issue 19): the singular families counted under a stated reading, the
-locked-drive claim, the number of equations the paper numbers, the apparatus."""
+locked-drive claim as Chapter 2 judges it, the number of equations the paper numbers, the apparatus."""
 from __future__ import annotations
+
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -8,6 +10,8 @@ import pytest
 from edition import findings as F
 from edition.families import ITEMS, READINGS, accounting, covering_items
 from wmr.model.robots import paper_robot
+
+ROOT = Path(__file__).resolve().parents[2]
 
 
 @pytest.fixture(scope="module")
@@ -42,12 +46,26 @@ def test_covering_items_can_say_no():
 
 
 def test_locked_drive_claim_is_judged_on_whenever():
+    """Chapter 2's check judges the claim "drift" on its word *whenever* from the chapter's derived det M, and the
+    published ledger carries that verdict (Part I reads it, never judges it again)."""
+    from types import SimpleNamespace
+
+    from edition.checks.assembly import drift, locked_steering
     from edition.derivations import derived
+    from edition.ledger import read as read_ledger
     ch2 = derived("02_offset_wheels_and_mobility")
-    row = F.locked_drive(ch2["det_M"], ch2["plucker"], robots=20, per=5)
-    assert row["verdict"] == "wrong" and row["printed_holds"] == "no"
-    assert row["ranks"] == [6] and row["equal_rank"] == 5 and row["concurrent_rank"] == 5
-    assert "all $\\beta_i$ equal" in row["corrected"] and row["anchor"] == "claim-drift"
+    locked = locked_steering(ch2["det_M"], ch2["plucker"], robots=20, per=5)
+    quiet = SimpleNamespace(residual=0.0)
+    d = drift(quiet, quiet, locked, ch2["J2"], per=100)
+    f = d["drift"]
+    assert not f.printed_holds and f.corrected_holds and f.severity == "wrong"
+    assert d.ranks == [6] and d.equal_rank == 5 and d.concurrent_rank == 5
+    assert "all $\\beta_i$ equal" in f.corrected
+    # a locked system that is singular everywhere (the claim would then hold) is not judged wrong
+    singular = SimpleNamespace(**{**vars(locked), "ranks": {5}})
+    assert drift(quiet, quiet, singular, ch2["J2"], per=10)["drift"].printed_holds
+    row = next(r for r in read_ledger(ROOT / "figures" / "ledger.csv") if r["kind"] == "claim" and r["id"] == "drift")
+    assert row["verdict"] == "wrong" and row["printed_holds"] == "no" and row["anchor"] == "claim-drift"
 
 
 def test_equation_count_from_the_transcription():

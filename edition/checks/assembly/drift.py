@@ -7,6 +7,7 @@ from __future__ import annotations
 import numpy as np
 import sympy as sp
 
+from wmr.analysis.linalg import rank
 from wmr.model.backend import SYMBOLIC
 from wmr.model.platform import E, rotation
 from wmr.model.robot import Robot
@@ -18,7 +19,7 @@ from ... import symbols as S
 from ...transcription import printed
 from ...verify import SEED, symbolic_equal
 from .. import Derivation, claim, equation, require
-from .locked import concurrent_angles, locked_motion
+from .locked import concurrent_angles, locked_motion, locked_system
 from .matrices import PAPER
 
 __all__ = ["drift_of_c", "drift_of_psi", "drift"]
@@ -155,47 +156,67 @@ def drift_of_psi(a, b, c, J1, n=100, seed=SEED):
              r"$3L^2$")])
 
 
-def drift(row28, row29, n_locked, J2):
-    r"""Claim ``drift``: steering with the drives locked moves the platform -- a conditional that holds.
+def drift(row28, row29, n_locked, J2, per=2000, seed=SEED):
+    r"""Claim ``drift``, judged on its word *whenever*: can three offset wheels be steered with the drives locked?
 
-    With :math:`\dot\theta_i = 0` and :math:`\mathbf t = \mathbf 0`, (21) leaves
-    :math:`\mathbf J_2[\dot\phi_i\ 0]^{\mathrm T} = \mathbf 0`, and :math:`\det\mathbf J_2 = d^3r^3 \neq 0`
-    forces :math:`\dot\phi_i = 0`: whenever the wheels are steered without driving, the platform
-    moves.  What fails is *free* steering: the locked system jams unless the arm lines are
-    concurrent or parallel (:func:`locked_steering`).  The residual is that of (28) and (29).
+    With :math:`\dot\theta_i = 0` the six no-slip equations leave six unknowns, :math:`\mathbf t` and
+    :math:`\dot{\boldsymbol\phi}`: :math:`\mathbf M(\boldsymbol\beta)[\mathbf t;\dot{\boldsymbol\phi}] = \mathbf 0`
+    with :math:`\det\mathbf M = d^3\det[\mathbf d_i\times\mathbf j_i\ \ \mathbf j_i^{\mathrm T}]`, zero exactly
+    when the arm lines are concurrent or all parallel (:func:`locked_steering`).  At any other steering angles the
+    robot jams: no steering rate is possible, so steering without driving does not "reveal a drift whenever" it is
+    tried; the dead zone of (28)-(29) needs all :math:`\beta_i` equal.  The claim is refuted when the determinant is
+    proven and :math:`\mathbf M` has full rank at every random configuration (of random robots and of the paper's).
+    The residual is that of (28) and (29).
 
     Parameters
     ----------
     row28, row29 : edition.ledger.Finding
         The findings of :func:`drift_of_c` and :func:`drift_of_psi`.
     n_locked : Derivation
-        :func:`locked_steering`.
+        :func:`locked_steering` (the derived :math:`\det\mathbf M`, its zero set, ranks of random robots).
     J2 : sympy.Matrix (6, 6)
         The derived :math:`\mathbf J_2` of three units.
+    per : int
+        Random configurations of the paper's robot.
+    seed : int
 
     Returns
     -------
     Derivation
-        finding ``drift``.
+        ``ranks`` (sorted ranks of :math:`\mathbf M` for the paper's robot at random angles), ``equal_rank``
+        (all :math:`\beta_i` equal), ``concurrent_rank`` (arm lines through one point), ``n``, finding ``drift``.
     """
     locked = n_locked
     steer_only = sp.Matrix([S.phi_dot[0], 0, S.phi_dot[1], 0, S.phi_dot[2], 0])
     moved = J2 * steer_only                                   # = J1 t must vanish if t = 0
-    sol = sp.solve(list(moved), list(S.phi_dot), dict=True)
-    forced = sol == [{p: 0 for p in S.phi_dot}]
-    det_J2 = sp.trigsimp(J2.det())
-    holds = forced and symbolic_equal(det_J2, S.d**3 * S.r**3)
-    return Derivation(findings=[claim(
-        "drift", holds, r"with $\dot\theta_i = 0$ and $\mathbf t = \mathbf 0$, (21) leaves "
-                        r"$\mathbf J_2[\dot\phi_1\ 0\ \dot\phi_2\ 0\ \dot\phi_3\ 0]^{\mathrm T} = \mathbf 0$, whose "
-                        r"only solution is $\dot\phi_i = 0$ since $\det\mathbf J_2 = d^3r^3 \neq 0$ (SymPy): any "
-                        r"steering without driving moves the platform, as (28) and (29) "
-                        r"describe", max(row28.residual, row29.residual),
-        convention=r"offset $d > 0$, non-collinear $P_i$; residual of rows (28) and (29)",
-        note=r"what fails is free steering: with the drives locked the $6\times6$ system "
-             r"$\mathbf M(\boldsymbol\beta)[\mathbf t;\dot{\boldsymbol\phi}] = \mathbf 0$ has "
-             r"$\det\mathbf M = d^3\det[\mathbf d_i\times\mathbf j_i\ \ \mathbf j_i^{\mathrm T}]$"
-             + (" (SymPy)" if locked.proven else "")
-             + rf", nonzero (rank {sorted(locked.ranks)} at {locked.n} random configurations) unless the arm lines are "
-               r"concurrent or all parallel; only then can the robot steer without driving, and the concurrent case "
-               r"only instantaneously")])
+    forced = sp.solve(list(moved), list(S.phi_dot), dict=True) == [{p: 0 for p in S.phi_dot}]
+    bot = paper_robot("offset")
+    rng = np.random.default_rng(seed)
+    generic = sorted(set(rank(locked_system(bot, rng.uniform(-np.pi, np.pi, (per, 3)))).tolist()))
+    equal = int(rank(locked_system(bot, np.full(3, rng.uniform(-np.pi, np.pi)))))
+    u = rng.uniform(-0.5, 0.5, 2) * np.abs(bot.mount_points).max()          # a point inside the platform
+    conc = int(rank(locked_system(bot, concurrent_angles(bot, u))))
+    jams = bool(locked.proven) and locked.ranks == {6} and generic == [6]
+    evidence = (r"the locked-drive system $\mathbf M(\boldsymbol\beta)[\mathbf t;\dot{\boldsymbol\phi}] = "
+                r"\mathbf 0$ is $6\times6$ with $\det\mathbf M = d^3\det[\mathbf d_i\times\mathbf j_i\ \ "
+                r"\mathbf j_i^{\mathrm T}]$" + (" (SymPy)" if locked.proven else "")
+                + r", which vanishes exactly when the arm lines are concurrent or parallel; $\mathbf M$ has rank "
+                rf"{' or '.join(map(str, generic))} at all {per} random configurations of the paper's robot and "
+                rf"{' or '.join(map(str, sorted(locked.ranks)))} at {locked.n} configurations of random robots, rank "
+                rf"{equal} with all $\beta_i$ equal and {conc} with concurrent arms")
+    return Derivation(ranks=generic, equal_rank=equal, concurrent_rank=conc, n=per, findings=[claim(
+        "drift", not jams, evidence, max(row28.residual, row29.residual),
+        refuted=r"at generic steering angles the robot cannot be steered with the drives locked at all: it jams",
+        corrected=(r"With the drives locked ($\dot\theta_i = 0$) three offset wheels can be steered only while "
+                   r"their arm lines (through $P_i$ along $\mathbf j_i$) are concurrent or all parallel; at any other "
+                   r"steering angles the robot jams: no twist and no steering rate satisfy the no-slip equations. "
+                   r"The dead-zone circle of (28)-(29) and Fig. 7 needs all $\beta_i$ equal (parallel arms, a "
+                   r"translation); concurrent arms allow a rotation for an instant only"),
+        corrected_holds=bool(locked.proven) and equal == 5 and conc == 5, severity="wrong",
+        why=r"the paper's *whenever*: steering without driving moves the platform only where $\det\mathbf M = 0$; "
+            r"elsewhere the wheels cannot be steered at all",
+        convention=r"steering without driving read as $\dot\theta_i = 0$ with the steering servos commanding "
+                   r"$\dot\phi_i \neq 0$; offset $d > 0$; residual of rows (28) and (29)",
+        note=(r"where steering without driving is possible it does move the platform: with $\mathbf t = \mathbf 0$, "
+              r"(21) leaves only $\dot\phi_i = 0$ since $\det\mathbf J_2 = d^3r^3 \neq 0$"
+              + (" (SymPy)" if forced and symbolic_equal(sp.trigsimp(J2.det()), S.d**3 * S.r**3) else "")))])

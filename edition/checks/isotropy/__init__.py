@@ -13,7 +13,7 @@ The checks, by equation group:
 ==============  ==================================================================================================
 :mod:`.jl1`     isotropy of J_L1, (30)-(39): condition number, homogeneous Jacobian, Gram matrix, placement, L
 :mod:`.j2`      isotropy of J2, (40)-(50): its product, d = r, the dead zone of isotropy, the isotropic kinematics
-:mod:`.robust`  robust control: a bound on the condition number of J = J_L1^T J2 for centred wheels
+:mod:`.robust`  robust control: J = J_L1^T J2 isotropic for offset wheels (d = r), kappa >= sqrt 2 for centred
 ==============  ==================================================================================================
 """
 from .j2 import J2_isotropy, J2_product, dead_zone_of_isotropy, isotropic_kinematics
