@@ -13,8 +13,6 @@ reader (raw e-notation, printed Python lists, dicts and sets); the answer-table 
 """
 from __future__ import annotations
 
-import base64
-import html
 import re
 
 import numpy as np
@@ -345,16 +343,14 @@ def image(data, alt, width=None, metadata=None):
     -------
     None
     """
-    if not isinstance(alt, str) or not alt.strip():
-        raise ValueError(f"alt must be a non-empty description of the picture, got {alt!r}")
     from IPython.display import display
-    b64 = base64.b64encode(data).decode("ascii")
-    size = f' width="{int(width)}"' if width else ""
-    tag = f'<img src="data:image/png;base64,{b64}" alt="{html.escape(alt.strip())}"{size} style="max-width:100%">'
+
+    from wmr.plot.design import picture_bundle
+    bundle = picture_bundle(data, alt, width)
     meta = dict(metadata or {})
     if width:
         meta["image/png"] = {"width": int(width)}
-    display({"text/html": tag, "image/png": b64, "text/plain": alt.strip()}, raw=True, metadata=meta)
+    display(bundle, raw=True, metadata=meta)
 
 
 def figure(fig, caption, alt, width=None, dpi=150):

@@ -59,6 +59,17 @@ def _enable(pairs, on):
         slider.disabled = box.disabled = not on
 
 
+class _Picture:
+    """A PNG with alt text, displayed (and updated in place) as :func:`wmr.plot.design.picture_bundle`."""
+
+    def __init__(self, data, alt, width):
+        self.data, self.alt, self.width = data, alt, width
+
+    def _repr_mimebundle_(self, include=None, exclude=None):
+        from wmr.plot.design import picture_bundle
+        return picture_bundle(self.data, self.alt, self.width), {"image/png": {"width": self.width}}
+
+
 class _Explorer:
     """What both explorers share: the state drawn and described, shown below the controls and redrawn in place."""
 
@@ -67,11 +78,12 @@ class _Explorer:
     controls: Any                     # the ipywidgets box shown above the picture
     _describe: Callable[[Any], str]   # state -> Markdown text (set by each explorer)
     _width = 500                      # width of the picture (pixels)
+    _alt = "The robot seen from above."  # what the picture shows, for a reader who cannot see it (each explorer)
 
     def _render(self):
-        from IPython.display import Image, Markdown
+        from IPython.display import Markdown
         s = self.state()
-        return Image(png(self._draw(s)), width=self._width), Markdown(self._describe(s))
+        return _Picture(png(self._draw(s)), self._alt, self._width), Markdown(self._describe(s))
 
     def _sync(self):
         """Set the controls that follow the others (none here)."""
@@ -119,6 +131,9 @@ class SteeringExplorer(_Explorer):
     mode : {"steering angles", "commanded twist"}
         Initial mode.
     """
+
+    _alt = ("The robot seen from above at the chosen steering angles: its three wheels, their axle lines and "
+            "wheel-plane lines, and the instantaneous centre where the axles meet, when they do.")
 
     def __init__(self, robot=None, beta_deg=(30.0, -50.0, 75.0), twist=(0.5, 0.2, 0.1), mode="steering angles"):
         import ipywidgets as W
@@ -175,6 +190,9 @@ class MountExplorer(_Explorer):
     L : float or None
         Initial characteristic length (None: the RMS distance, kept in step with the points).
     """
+
+    _alt = ("The platform seen from above: the centre C, the three mount points placed by the sliders, and the "
+            "circle of radius L about C.")
 
     def __init__(self, radii=(1.0, 1.0, 1.0), angles_deg=(180.0, 60.0, -60.0), L=None):
         import ipywidgets as W

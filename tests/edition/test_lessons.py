@@ -274,3 +274,22 @@ def test_describe_robot():
     assert "rank 6" in text and "3-dimensional" in text and "executable" in text
     with pytest.raises(TypeError, match="robot"):
         X.describe_robot("robot")
+
+
+@pytest.mark.parametrize("path", CHAPTERS, ids=lambda p: p.name)
+def test_every_picture_a_chapter_shows_has_alt_text(path):
+    """Each PNG an executed chapter shows also comes as an ``<img alt=...>`` with a description (JupyterLab and HTML
+    readers get the alt text; a bare PNG output has none). Reads the build's executed copy (``make test`` makes it)."""
+    executed = ROOT / "build" / "notebooks" / path.name
+    if not executed.is_file():
+        pytest.skip(f"{executed} not built: run `make notebooks` (make test does)")
+    nb = nbformat.read(executed, as_version=4)
+    bare = []
+    for k, c in enumerate(nb.cells):
+        for o in c.get("outputs", []):
+            data = o.get("data", {})
+            if "image/png" in data:
+                m = re.search(r'<img [^>]*alt="([^"]*)"', data.get("text/html", ""))
+                if not m or len(m.group(1).split()) < 3:
+                    bare.append(f"cell {k}")
+    assert not bare, f"{path.name}: pictures without alt text in {bare}"

@@ -10,7 +10,7 @@ from matplotlib.colors import LogNorm
 
 from .style import PALETTE, ROLE, new_figure, panel_title, style
 
-__all__ = ["draw_landscape", "draw_motion_maps", "show_figure"]
+__all__ = ["draw_landscape", "draw_motion_maps", "picture_bundle", "show_figure"]
 
 _KAPPA_LEVELS = (1.05, 1.25, 1.5, 2.0, 3.0, 5.0, 10.0)
 
@@ -114,7 +114,50 @@ def draw_motion_maps(maps, titles, fig=None):
     return fig
 
 
-def show_figure(fig, caption, width=None, dpi=150, colours=None):
+def picture_bundle(data, alt, width=None):
+    """The MIME bundle that shows a PNG with alt text.
+
+    JupyterLab's PNG renderer drops alt text, so the bundle carries ``text/html`` (an ``<img alt=...>``,
+    preferred by JupyterLab and nbconvert's HTML), ``image/png`` (used by LaTeX/PDF) and ``text/plain``
+    (the alt text, for a reader without images).
+
+    Parameters
+    ----------
+    data : bytes
+        A PNG.
+    alt : str
+        What the picture shows, in words (plain text; no Markdown or LaTeX).
+    width : int, optional
+        Display width in pixels (the picture shrinks to fit a narrower notebook).
+
+    Returns
+    -------
+    dict
+        ``{mime type: data}``, for ``IPython.display.display(bundle, raw=True)``.
+
+    Raises
+    ------
+    wmr.errors.InputValueError
+        When ``alt`` is not a non-empty string.
+
+    Examples
+    --------
+    >>> sorted(picture_bundle(b"png bytes", "a robot seen from above"))
+    ['image/png', 'text/html', 'text/plain']
+    """
+    import base64
+    import html
+
+    from ..errors import InputValueError
+    if not isinstance(alt, str) or not alt.strip():
+        raise InputValueError(f"alt must be a non-empty description of the picture, got {alt!r}")
+    b64 = base64.b64encode(data).decode("ascii")
+    size = f' width="{int(width)}"' if width else ""
+    tag = f'<img src="data:image/png;base64,{b64}" alt="{html.escape(alt.strip())}"{size} style="max-width:100%">'
+    return {"text/html": tag, "image/png": b64, "text/plain": alt.strip()}
+
+
+def show_figure(fig, caption, width=None, dpi=150, colours=None, alt=None):
     """Display a figure in a notebook as a PNG, with its caption below (Markdown).
 
     Parameters
@@ -129,6 +172,8 @@ def show_figure(fig, caption, width=None, dpi=150, colours=None):
     colours : int, optional
         Reduce the PNG to a palette of this many colours (a third of the bytes for line charts;
         default: full colour).
+    alt : str, optional
+        What the figure shows, in words, for a reader who cannot see it (:func:`picture_bundle`).
 
     Returns
     -------
@@ -147,4 +192,9 @@ def show_figure(fig, caption, width=None, dpi=150, colours=None):
         picture = Picture.open(io.BytesIO(png)).convert("RGB").quantize(colors=int(colours))
         picture.save(small, format="PNG", optimize=True)
         png = small.getvalue()
-    display(Image(png, width=width or round(fig.get_figwidth() * 110)), Markdown(caption))
+    shown = width or round(fig.get_figwidth() * 110)
+    if alt is None:
+        display(Image(png, width=shown), Markdown(caption))
+    else:
+        display(picture_bundle(png, alt, shown), raw=True, metadata={"image/png": {"width": shown}})
+        display(Markdown(caption))
