@@ -4,6 +4,7 @@ tools/docs.py copies docs/ into build/docs/src (autosummary writes its stub page
 and the tree stays clean), puts MathJax from its official release (tools/mathjax.py) into _static/,
 and runs sphinx-build with -W. WMR_REPOSITORY names the repository (README.md, examples/).
 """
+
 from __future__ import annotations
 
 import os
@@ -36,23 +37,23 @@ wmr_repository = os.environ.get("WMR_REPOSITORY", str(HERE.parent))
 templates_path = ["_templates"]
 exclude_patterns = ["_build", "_ext"]
 root_doc = "index"
-nitpicky = True                              # every cross-reference must resolve, except to
+nitpicky = True  # every cross-reference must resolve, except to
 nitpick_ignore_regex = [
-    ("py:.*", r"(?!wmr\.)[A-Za-z_]\w*\..+"),   # other libraries (their inventories would come from the
-                                                # network), the standard library, the repository's edition
+    ("py:.*", r"(?!wmr\.)[A-Za-z_]\w*\..+"),  # other libraries (their inventories would come from the
+    # network), the standard library, the repository's edition
     ("py:mod", r"edition"),
-    ("py:.*", r"(.*\.)?_[A-Za-z].*"),           # private names (a base class in a signature)
+    ("py:.*", r"(.*\.)?_[A-Za-z].*"),  # private names (a base class in a signature)
 ]
 default_role = "obj"
 
 # the API reference: a page per module, class and function (templates in _templates/autosummary)
 autosummary_generate = True
-autosummary_ignore_module_all = True         # each object on one page, in the module that defines it
-                                             # (what wmr re-exports: the table of api.rst, `.. exports::`)
+autosummary_ignore_module_all = True  # each object on one page, in the module that defines it
+# (what wmr re-exports: the table of api.rst, `.. exports::`)
 autosummary_imported_members = False
 autodoc_default_options = {"member-order": "bysource"}
-autodoc_typehints = "none"                   # the numpydoc sections say the types
-numpydoc_show_class_members = False          # the class template lists members itself
+autodoc_typehints = "none"  # the numpydoc sections say the types
+numpydoc_show_class_members = False  # the class template lists members itself
 numpydoc_class_members_toctree = False
 numpydoc_attributes_as_param_list = False
 

@@ -11,6 +11,7 @@ r"""The executable edition of Leow, Low & Loh (2002), built on the library :mod:
 
 Imports go one way: edition -> wmr.
 """
+
 from .transcription import Claim, Printed, claim, printed
 
 __all__ = ["Printed", "Claim", "printed", "claim"]

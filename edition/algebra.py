@@ -1,4 +1,5 @@
 r"""Small algebra helpers of the derivations: substitute named objects, angles modulo pi."""
+
 from __future__ import annotations
 
 import numpy as np

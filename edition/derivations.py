@@ -8,6 +8,7 @@ that need a derived object run the same cells through :func:`derived` instead of
 Only the chapter's first code cell (its imports, tagged ``imports``) and the cells tagged ``derivation``
 run, in that order, in a fresh namespace; what they display is dropped.
 """
+
 from __future__ import annotations
 
 from functools import cache
@@ -45,6 +46,7 @@ def derived(chapter):
         When ``notebooks/<chapter>.ipynb`` does not exist.
     """
     import nbformat
+
     path = NOTEBOOKS / f"{chapter}.ipynb"
     if not path.is_file():
         raise FileNotFoundError(f"chapter {chapter!r}: no notebook {path}")

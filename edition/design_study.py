@@ -14,6 +14,7 @@ check                               the exercise
 
 :func:`describe_design` summarises a robot of the reader's own ("your own robot" cells).
 """
+
 from __future__ import annotations
 
 import numpy as np
@@ -30,8 +31,17 @@ from .exercises.framework import exercise
 from .exercises.tolerance import decimals, sig_figs, within
 from .text import number
 
-__all__ = ["TOL_8_1", "TOL_8_2", "TOL_8_3", "swerve", "design_row", "offset_for_worst_case", "scalene_optimum",
-           "singular_rotation", "describe_design"]
+__all__ = [
+    "TOL_8_1",
+    "TOL_8_2",
+    "TOL_8_3",
+    "swerve",
+    "design_row",
+    "offset_for_worst_case",
+    "scalene_optimum",
+    "singular_rotation",
+    "describe_design",
+]
 
 
 def swerve(length=0.6, width=0.4, r=0.05):
@@ -70,9 +80,14 @@ def design_row(name, design, kappa):
     -------
     dict
     """
-    return {"design": name, "$d/r$": design.ratio, "sides": design.sides(),
-            "C to centroid / RMS radius": design.centroid_offset(), r"$\bar\kappa$": kappa,
-            r"$\bar\kappa - 1$": kappa - 1}
+    return {
+        "design": name,
+        "$d/r$": design.ratio,
+        "sides": design.sides(),
+        "C to centroid / RMS radius": design.centroid_offset(),
+        r"$\bar\kappa$": kappa,
+        r"$\bar\kappa - 1$": kappa - 1,
+    }
 
 
 #: exercise 8.1: the offset to 3 significant figures; 8.2: the worst case equal to 1 to 2 decimal places;
@@ -110,16 +125,21 @@ def offset_for_worst_case(d, r=0.05, kappa=1.25, radius=0.3):
     if d < 0:
         return wrong("An offset is a distance: it cannot be negative.")
     if d == 0:
-        return wrong(r"With $d = 0$ the units are centred wheels: $\mathbf J_2$ and $\mathbf J$ are singular in every "
-                     r"configuration ($\kappa = \infty$).")
+        return wrong(
+            r"With $d = 0$ the units are centred wheels: $\mathbf J_2$ and $\mathbf J$ are singular in every "
+            r"configuration ($\kappa = \infty$)."
+        )
     design = equilateral_design(d / r).scaled(radius)
     got = worst_kappa(WheelDesign(design.mounts, d, r).robot()).kappa
     if not TOL_8_1.accepts(got, kappa):
-        return wrong(f"With $d = {number(d, 4)}$ m the worst case is $\\bar\\kappa = {number(got, 4)}$, not "
-                     f"${number(kappa)}$.")
+        return wrong(
+            f"With $d = {number(d, 4)}$ m the worst case is $\\bar\\kappa = {number(got, 4)}$, not ${number(kappa)}$."
+        )
     if d > r:
-        return wrong(f"$d = {number(d, 4)}$ m gives $\\bar\\kappa = {number(got, 4)}$ too, but it is larger than $r$: "
-                     "find the smaller offset (a smaller dead zone).")
+        return wrong(
+            f"$d = {number(d, 4)}$ m gives $\\bar\\kappa = {number(got, 4)}$ too, but it is larger than $r$: "
+            "find the smaller offset (a smaller dead zone)."
+        )
     return right(f"$d = {number(d, 4)}$ m: $\\bar\\kappa = {number(got, 4)} = r/d$, whatever the mount radius.")
 
 
@@ -140,21 +160,26 @@ def scalene_optimum(points):
     scale = float(np.abs(pts).max())
     if scale == 0:
         return wrong("All three points are C itself: there is no triangle.")
-    pts = pts / scale                                               # any unit: r = 1 on the points' scale
+    pts = pts / scale  # any unit: r = 1 on the points' scale
     e1, e2 = pts[1] - pts[0], pts[2] - pts[0]
     if abs(e1[0] * e2[1] - e1[1] * e2[0]) <= 1e-6:
-        return wrong("The three points are collinear: the wheels cannot steer the platform's rotation well. Make a "
-                     "triangle.")
+        return wrong(
+            "The three points are collinear: the wheels cannot steer the platform's rotation well. Make a triangle."
+        )
     design = WheelDesign(pts, 1.0, 1.0)
     s = np.sort(design.sides())
     if np.min(np.diff(s)) <= 1e-3 * s[-1]:
         return wrong("Two sides of your triangle are equal: make it scalene.")
     got = worst_kappa(design.robot()).kappa
     if not TOL_8_2.accepts(got, 1.0):
-        return wrong(f"Worst case $\\bar\\kappa = {number(got, 4)}$: the centroid of your points is "
-                     f"${number(design.centroid_offset())}$ RMS radii away from C.")
-    return right(f"Sides ${', '.join(number(x) for x in s * scale)}$: $\\bar\\kappa = {number(got, 4)}$. Only the "
-                 "centroid matters (37); the equal distances of (38) are not needed.")
+        return wrong(
+            f"Worst case $\\bar\\kappa = {number(got, 4)}$: the centroid of your points is "
+            f"${number(design.centroid_offset())}$ RMS radii away from C."
+        )
+    return right(
+        f"Sides ${', '.join(number(x) for x in s * scale)}$: $\\bar\\kappa = {number(got, 4)}$. Only the "
+        "centroid matters (37); the equal distances of (38) are not needed."
+    )
 
 
 @exercise("8.3", answer="a point `(x, y)` in metres", tolerance=TOL_8_3)
@@ -185,12 +210,14 @@ def singular_rotation(U, length=0.6, width=0.4):
     if np.min(np.linalg.norm(bot.mount_points - U, axis=1)) <= TOL_8_3.abs:
         return wrong("U is a module's mount point: that module does not roll. Choose another point.")
     circle = mount_circle(bot)
-    assert circle is not None                      # four modules on a rectangle: concyclic
+    assert circle is not None  # four modules on a rectangle: concyclic
     c, R = circle
     gap = abs(float(np.linalg.norm(U - c)) - R)
     if gap <= TOL_8_3.allowed(R):
-        return right(r"U lies on the circle through the four modules (to the millimetre), where "
-                     r"$\kappa(\mathbf J) = \infty$: the robot turns about U, yet $\mathbf J$ is singular.")
+        return right(
+            r"U lies on the circle through the four modules (to the millimetre), where "
+            r"$\kappa(\mathbf J) = \infty$: the robot turns about U, yet $\mathbf J$ is singular."
+        )
     k = float(motion_kappa(bot, rotation_twists(U)))
     return wrong(f"About this U, $\\kappa(\\mathbf J) = {number(k)}$: $\\mathbf J$ is not singular here.")
 
@@ -211,9 +238,11 @@ def describe_design(robot):
     text = f"{robot.w} units: worst-case $\\kappa(\\mathbf J) = {_k(wc.kappa)}$ over {wc.count:,} configurations"
     if all(u.kind in ("centred", "dual") for u in robot.wheels):
         mm = motion_map(robot, n=61)
-        text += (f"; along its motions: smallest ${mm.kappa_min:.4g}$ (rotation about ({mm.argmin[0]:.3g}, "
-                 f"{mm.argmin[1]:.3g})), translation ${_k(mm.kappa_translation)}$, "
-                 + ("singular on the circle through the mount points" if mm.circle else "mount points not concyclic"))
+        text += (
+            f"; along its motions: smallest ${mm.kappa_min:.4g}$ (rotation about ({mm.argmin[0]:.3g}, "
+            f"{mm.argmin[1]:.3g})), translation ${_k(mm.kappa_translation)}$, "
+            + ("singular on the circle through the mount points" if mm.circle else "mount points not concyclic")
+        )
     return text + "."
 
 

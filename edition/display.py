@@ -11,6 +11,7 @@ Numbers in math go through :func:`tex`: a computed value that is zero up to roun
 reader (raw e-notation, printed Python lists, dicts and sets); the answer-table harness
 (:mod:`edition.exercises.table`) applies it to every verdict.
 """
+
 from __future__ import annotations
 
 import re
@@ -21,25 +22,41 @@ import sympy as sp
 from .text import RESOLUTION, bound, number
 from .transcription import claim, printed
 
-__all__ = ["UNDEFINED", "latex", "show", "aligned_sum", "say", "table", "quote", "tex", "raw_output", "image",
-           "figure", "png"]
+__all__ = [
+    "UNDEFINED",
+    "latex",
+    "show",
+    "aligned_sum",
+    "say",
+    "table",
+    "quote",
+    "tex",
+    "raw_output",
+    "image",
+    "figure",
+    "png",
+]
 
 #: raw e-notation as Python prints it (``2.88e-16``, ``1.21e+04``), not inside a word or a LaTeX command
 RAW_E = re.compile(r"(?<![A-Za-z_\\])[-+]?\d(?:\.\d+)?e[-+]?\d+")
 #: a printed Python container: ``[6]`` (a list of one integer), ``{d3x: 1}`` (a dict), ``{'a', 'b'}`` (a set),
 #: ``array(...)``; a bracket after ``_``, ``^``, ``{`` or a word (an index) or before ``(`` (a link) is not one
-RAW_CONTAINER = re.compile(r"(?<![\w\\^_{])\[-?\d+\](?!\()"                   # [6]
-                           r"|(?<!\\)\{\s*['\"]?[A-Za-z_]\w*['\"]?\s*:\s"     # {d3x: 1}
-                           r"|(?<!\\)\{\s*'[^']*'\s*,|\barray\(")              # {'a', 'b'}, array(...)
+RAW_CONTAINER = re.compile(
+    r"(?<![\w\\^_{])\[-?\d+\](?!\()"  # [6]
+    r"|(?<!\\)\{\s*['\"]?[A-Za-z_]\w*['\"]?\s*:\s"  # {d3x: 1}
+    r"|(?<!\\)\{\s*'[^']*'\s*,|\barray\("
+)  # {'a', 'b'}, array(...)
 
 
 def _display(*objs):
     from IPython.display import display
+
     display(*objs)
 
 
 def _markdown(text):
     from IPython.display import Markdown
+
     return Markdown(text)
 
 
@@ -141,7 +158,7 @@ def aligned_sum(lhs, expr, per_line):
         neg = term.could_extract_minus_sign()
         text = latex(-term if neg else term)
         parts.append(("- " if neg else ("+ " if k else "")) + text)
-    lines = [" ".join(parts[i:i + per_line]) for i in range(0, len(parts), per_line)]
+    lines = [" ".join(parts[i : i + per_line]) for i in range(0, len(parts), per_line)]
     return r"\begin{aligned}" + lhs + " = {}& " + r"\\ &".join(lines) + r"\end{aligned}"
 
 
@@ -165,9 +182,9 @@ def _cell(v, in_array=False):
         return "yes" if v else "no"
     if isinstance(v, (float, np.floating)):
         x = float(v)
-        if np.isnan(x):                                   # a quantity that does not exist here (0/0)
+        if np.isnan(x):  # a quantity that does not exist here (0/0)
             return UNDEFINED
-        if 0 < abs(x) < RESOLUTION:                       # round-off: no digits that differ between machines
+        if 0 < abs(x) < RESOLUTION:  # round-off: no digits that differ between machines
             return "$0$" if in_array else f"$< 10^{{{int(np.log10(RESOLUTION))}}}$"
         return f"${number(x)}$"
     if isinstance(v, (list, tuple, set, frozenset, np.ndarray)):
@@ -241,10 +258,11 @@ def _where(section):
     numbered = [p for p in parts if p[:1].isdigit()]
     named = [p for p in parts if not p[:1].isdigit()]
     if numbered:
-        named.append(("Section " if len(numbered) == 1 else "Sections ")
-                     + (numbered[0] if len(numbered) == 1 else ", ".join(numbered[:-1]) + " and " + numbered[-1]))
+        named.append(
+            ("Section " if len(numbered) == 1 else "Sections ")
+            + (numbered[0] if len(numbered) == 1 else ", ".join(numbered[:-1]) + " and " + numbered[-1])
+        )
     return " and ".join(named)
-
 
 
 # ------------------------------------------------------------------------------------- numbers for readers
@@ -315,6 +333,7 @@ def png(fig, dpi=150):
     import io
 
     from wmr.plot.style import style
+
     buf = io.BytesIO()
     with style():
         fig.savefig(buf, format="png", dpi=dpi)
@@ -346,6 +365,7 @@ def image(data, alt, width=None, metadata=None):
     from IPython.display import display
 
     from wmr.plot.design import picture_bundle
+
     bundle = picture_bundle(data, alt, width)
     meta = dict(metadata or {})
     if width:

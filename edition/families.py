@@ -8,6 +8,7 @@ family :func:`wmr.analysis.singularities.classify` assigns.  :func:`check_paper_
 printed list literally.  The general analysis lives in :mod:`wmr.analysis.singularities`; only the
 paper's catalogue is here.
 """
+
 from __future__ import annotations
 
 from collections.abc import Callable
@@ -27,8 +28,20 @@ from .files import atomic_write, csv_text
 from .text import bound
 from .text import degrees as _deg
 
-__all__ = ["PAPER_PAIR_ITEMS", "COLUMNS", "Family", "families", "paper_item", "check_paper_items", "table",
-           "write_csv", "READINGS", "ITEMS", "covering_items", "accounting"]
+__all__ = [
+    "PAPER_PAIR_ITEMS",
+    "COLUMNS",
+    "Family",
+    "families",
+    "paper_item",
+    "check_paper_items",
+    "table",
+    "write_csv",
+    "READINGS",
+    "ITEMS",
+    "covering_items",
+    "accounting",
+]
 
 #: The paper's items of section 5.3 for its wheel numbering (wheels 1-based): planes of wheels i and j on
 #: the line P_i P_j.
@@ -122,18 +135,35 @@ class Family:
             Columns :data:`COLUMNS`; numbers as text.
         """
         return {
-            "family": self.family, "configuration": self.configuration,
+            "family": self.family,
+            "configuration": self.configuration,
             "geometric_meaning": self.geometric_meaning,
             "det_J": bound(self.det_J_max),
-            "det_J_exact": ("0 identically" if self.det_J_exact_zero else
-                            ("NOT zero" if self.det_J_exact_zero is False else "not checked")),
-            "rank_F": self.rank_F, "samples": 0 if self.samples is None else len(self.samples),
-            "listed_in_paper": self.listed_in_paper, "paper_item": self.paper_item, "note": self.note,
+            "det_J_exact": (
+                "0 identically"
+                if self.det_J_exact_zero
+                else ("NOT zero" if self.det_J_exact_zero is False else "not checked")
+            ),
+            "rank_F": self.rank_F,
+            "samples": 0 if self.samples is None else len(self.samples),
+            "listed_in_paper": self.listed_in_paper,
+            "paper_item": self.paper_item,
+            "note": self.note,
         }
 
 
-COLUMNS = ("family", "configuration", "geometric_meaning", "det_J", "det_J_exact", "rank_F", "samples",
-           "listed_in_paper", "paper_item", "note")
+COLUMNS = (
+    "family",
+    "configuration",
+    "geometric_meaning",
+    "det_J",
+    "det_J_exact",
+    "rank_F",
+    "samples",
+    "listed_in_paper",
+    "paper_item",
+    "note",
+)
 
 
 def _exact_dirs_angles(angles):
@@ -163,7 +193,7 @@ def families(robot=None, n=72, exact=True):
     if robot is None:
         robot = paper_robot("centred")
     num = numeric_robot(robot)
-    det_J(num, np.zeros(3), L=1.0)              # wmr's own check: J must be square (three centred wheels)
+    det_J(num, np.zeros(3), L=1.0)  # wmr's own check: J must be square (three centred wheels)
     exact_bot = exact_robot(robot)
     P = num.mount_points
     t = np.linspace(-np.pi, np.pi, n, endpoint=False)
@@ -174,26 +204,39 @@ def families(robot=None, n=72, exact=True):
     out = []
 
     # (i) and (i'): all wheel-plane lines parallel
-    out.append(Family(
-        "i", "(i)", r"$\beta_1=\beta_2=\beta_3=\beta$, $\beta$ free",
-        r"all wheel planes parallel ($D_P$ and the IC at infinity): translation",
-        "yes", "(i)", "Fig. 10; the only singular family in which the robot still translates.",
-        samples=np.stack([t, t, t], axis=-1),
-        exact=lambda: _exact_dirs_angles([tau, tau, tau])))
+    out.append(
+        Family(
+            "i",
+            "(i)",
+            r"$\beta_1=\beta_2=\beta_3=\beta$, $\beta$ free",
+            r"all wheel planes parallel ($D_P$ and the IC at infinity): translation",
+            "yes",
+            "(i)",
+            "Fig. 10; the only singular family in which the robot still translates.",
+            samples=np.stack([t, t, t], axis=-1),
+            exact=lambda: _exact_dirs_angles([tau, tau, tau]),
+        )
+    )
     rev = []
     for k in range(3):
         b = np.stack([t, t, t], axis=-1)
         b[:, k] += np.pi
         rev.append(b)
-    out.append(Family(
-        "i'", r"(i') parallel, one wheel turned by $180^\circ$",
-        r"$\beta_j=\beta_k=\beta$, $\beta_i=\beta+180^\circ$ (3 choices of i), $\beta$ free",
-        r"the same parallel planes as (i): $\beta$ and $\beta+\pi$ give the same wheel plane",
-        "no", "(i)", r"The printed (i) requires equal angles; a wheel turned half a turn has the same plane "
-        r"(its column of $\mathbf J$ only changes sign). Translation is still possible "
-        r"($\operatorname{rank}\mathbf F = 5$).",
-        samples=np.concatenate(rev),
-        exact=lambda: _exact_dirs_angles([tau + sp.pi, tau, tau])))
+    out.append(
+        Family(
+            "i'",
+            r"(i') parallel, one wheel turned by $180^\circ$",
+            r"$\beta_j=\beta_k=\beta$, $\beta_i=\beta+180^\circ$ (3 choices of i), $\beta$ free",
+            r"the same parallel planes as (i): $\beta$ and $\beta+\pi$ give the same wheel plane",
+            "no",
+            "(i)",
+            r"The printed (i) requires equal angles; a wheel turned half a turn has the same plane "
+            r"(its column of $\mathbf J$ only changes sign). Translation is still possible "
+            r"($\operatorname{rank}\mathbf F = 5$).",
+            samples=np.concatenate(rev),
+            exact=lambda: _exact_dirs_angles([tau + sp.pi, tau, tau]),
+        )
+    )
 
     # (ii)-(iv): two wheel planes on the line P_i P_j, third free
     for (i, j), item in PAPER_PAIR_ITEMS.items():
@@ -211,22 +254,43 @@ def families(robot=None, n=72, exact=True):
             if not prime:
                 conf = rf"$\beta_{i}=\beta_{j}={a1}^\circ$ or $\beta_{i}=\beta_{j}={a2}^\circ$, $\beta_{k}$ free"
                 fam = f"{item} planes {i}, {j} coincident"
-                listed, note = "yes", (f"Fig. 11; line $P_{i}P_{j}$ carries both planes; axles {i} and {j} parallel, "
-                                       r"so $\operatorname{rank}\mathbf F = 6$ unless the third plane is parallel too "
-                                       r"(then it is (i) or (i')).")
+                listed, note = (
+                    "yes",
+                    (
+                        f"Fig. 11; line $P_{i}P_{j}$ carries both planes; axles {i} and {j} parallel, "
+                        r"so $\operatorname{rank}\mathbf F = 6$ unless the third plane is parallel too "
+                        r"(then it is (i) or (i'))."
+                    ),
+                )
             else:
-                conf = (rf"$\beta_{i}={a1}^\circ,\ \beta_{j}={a2}^\circ$ or "
-                        rf"$\beta_{i}={a2}^\circ,\ \beta_{j}={a1}^\circ$, $\beta_{k}$ free")
+                conf = (
+                    rf"$\beta_{i}={a1}^\circ,\ \beta_{j}={a2}^\circ$ or "
+                    rf"$\beta_{i}={a2}^\circ,\ \beta_{j}={a1}^\circ$, $\beta_{k}$ free"
+                )
                 fam = f"{item}' planes {i}, {j} coincident, half a turn apart"
                 listed = "no"
-                note = (f"The printed {item} gives equal angles; one wheel of the pair turned by "
-                        r"$180^\circ$ has the same plane, so these are singular too.")
-            out.append(Family(
-                f"pair-{i}{j}" + ("'" if prime else ""), fam, conf,
-                rf"planes of wheels {i} and {j} coincide with the line $P_{i}P_{j}$; $D_P$ is where plane {k} "
-                "crosses it", listed, item, note, samples=np.concatenate(rows),
-                exact=(lambda i=i, j=j, k=k, ai=ai, prime=prime: _exact_dirs_angles(  # type: ignore[misc]
-                    [ai if w == i else (ai + (sp.pi if prime else 0) if w == j else th) for w in (1, 2, 3)]))))
+                note = (
+                    f"The printed {item} gives equal angles; one wheel of the pair turned by "
+                    r"$180^\circ$ has the same plane, so these are singular too."
+                )
+            out.append(
+                Family(
+                    f"pair-{i}{j}" + ("'" if prime else ""),
+                    fam,
+                    conf,
+                    rf"planes of wheels {i} and {j} coincide with the line $P_{i}P_{j}$; $D_P$ is where plane {k} "
+                    "crosses it",
+                    listed,
+                    item,
+                    note,
+                    samples=np.concatenate(rows),
+                    exact=(
+                        lambda i=i, j=j, k=k, ai=ai, prime=prime: _exact_dirs_angles(  # type: ignore[misc]
+                            [ai if w == i else (ai + (sp.pi if prime else 0) if w == j else th) for w in (1, 2, 3)]
+                        )
+                    ),
+                )
+            )
 
     # (v): concurrent at a finite point D_P
     grid = np.linspace(-2.5, 2.5, 11) * np.abs(P).max()
@@ -245,26 +309,41 @@ def families(robot=None, n=72, exact=True):
             out_.append((sgn * vy, -sgn * vx))
         return out_
 
-    out.append(Family(
-        "v", "(v) planes concurrent", r"$\ell_1,\ell_2,\ell_3$ concurrent at a finite $D_P$ (2 free parameters; "
-        r"each $\beta_i$ or $\beta_i+180^\circ$)",
-        r"the three wheel-plane lines meet at one point $D_P$; generically the axles meet pairwise at three points",
-        "yes", "(v)", "Fig. 12b. Contains (ii)-(iv) (two planes on a side line) and the rows (v-a), (v-b), (v-c); "
-        r"$\operatorname{rank}\mathbf F = 5$ only where $D_P$ is on the circle through the $P_i$ (row (v-c)).",
-        samples=samples_v, exact=lambda: dirs_through(x, y, (0, 1, 0))))
+    out.append(
+        Family(
+            "v",
+            "(v) planes concurrent",
+            r"$\ell_1,\ell_2,\ell_3$ concurrent at a finite $D_P$ (2 free parameters; "
+            r"each $\beta_i$ or $\beta_i+180^\circ$)",
+            r"the three wheel-plane lines meet at one point $D_P$; generically the axles meet pairwise at three points",
+            "yes",
+            "(v)",
+            "Fig. 12b. Contains (ii)-(iv) (two planes on a side line) and the rows (v-a), (v-b), (v-c); "
+            r"$\operatorname{rank}\mathbf F = 5$ only where $D_P$ is on the circle through the $P_i$ (row (v-c)).",
+            samples=samples_v,
+            exact=lambda: dirs_through(x, y, (0, 1, 0)),
+        )
+    )
     bC = planes_through(num, [0.0, 0.0])
-    out.append(Family(
-        "v-C", "(v-a) planes through C",
-        rf"$\beta=({_deg(bC[0])}^\circ, {_deg(bC[1])}^\circ, {_deg(bC[2])}^\circ)$, each $+180^\circ$ optional",
-        r"$D_P=C$: every wheel plane contains the operation point; no twist is admissible",
-        "yes", "(v)", f"Fig. 12a (braking at rest). Isolated points ({len(flips)} of them).",
-        samples=bC[None, :] + flips, exact=lambda: dirs_through(0, 0)))
+    out.append(
+        Family(
+            "v-C",
+            "(v-a) planes through C",
+            rf"$\beta=({_deg(bC[0])}^\circ, {_deg(bC[1])}^\circ, {_deg(bC[2])}^\circ)$, each $+180^\circ$ optional",
+            r"$D_P=C$: every wheel plane contains the operation point; no twist is admissible",
+            "yes",
+            "(v)",
+            f"Fig. 12a (braking at rest). Isolated points ({len(flips)} of them).",
+            samples=bC[None, :] + flips,
+            exact=lambda: dirs_through(0, 0),
+        )
+    )
     rows = []
     for kk in range(3):
         b = np.zeros((4 * n, 3))
         base_k = planes_through(num, P[kk])
         for q, (f1, f2) in enumerate([(0, 0), (0, 1), (1, 0), (1, 1)]):
-            blk = b[q * n:(q + 1) * n]
+            blk = b[q * n : (q + 1) * n]
             others = [w for w in range(3) if w != kk]
             blk[:, others[0]] = base_k[others[0]] + f1 * np.pi
             blk[:, others[1]] = base_k[others[1]] + f2 * np.pi
@@ -272,39 +351,53 @@ def families(robot=None, n=72, exact=True):
         rows.append(b)
     a13 = _deg(pair_line_angle(num, 1, 3))
     a23 = _deg(pair_line_angle(num, 2, 3))
-    out.append(Family(
-        "v-P", "(v-b) planes through a mount point",
-        rf"e.g. $\beta_1\equiv{a13}^\circ$, $\beta_2\equiv{a23}^\circ$ (mod $180^\circ$), $\beta_3$ free ($D_P=P_3$); "
-        r"likewise at $P_1$, $P_2$",
-        r"$D_P=P_k$: the other two planes lie on the sides through $P_k$; wheel $k$ may take any angle",
-        "yes", "(v)", "Read literally, (v) holds: the three planes meet at $P_k$. The report's reading of (v) "
-        r"excludes a $D_P$ at a mount point, and under it no printed item covers this family.",
-        samples=np.concatenate(rows),
-        exact=lambda: [(sp.cos(th), sp.sin(th)) if w == 2 else dirs_through(*Pex[2])[w] for w in range(3)]))
+    out.append(
+        Family(
+            "v-P",
+            "(v-b) planes through a mount point",
+            rf"e.g. $\beta_1\equiv{a13}^\circ$, $\beta_2\equiv{a23}^\circ$ (mod $180^\circ$), $\beta_3$ free ($D_P=P_3$); "
+            r"likewise at $P_1$, $P_2$",
+            r"$D_P=P_k$: the other two planes lie on the sides through $P_k$; wheel $k$ may take any angle",
+            "yes",
+            "(v)",
+            "Read literally, (v) holds: the three planes meet at $P_k$. The report's reading of (v) "
+            r"excludes a $D_P$ at a mount point, and under it no printed item covers this family.",
+            samples=np.concatenate(rows),
+            exact=lambda: [(sp.cos(th), sp.sin(th)) if w == 2 else dirs_through(*Pex[2])[w] for w in range(3)],
+        )
+    )
 
     # rotation about a point U on the circumcircle: axles through U and planes through the antipode
     cc, R = circumcircle(num.mount_points)
-    U = cc + R * np.stack([np.cos(t + np.pi / n), np.sin(t + np.pi / n)], axis=-1)   # half a step: U != P_k
+    U = cc + R * np.stack([np.cos(t + np.pi / n), np.sin(t + np.pi / n)], axis=-1)  # half a step: U != P_k
     bU = axles_through(num, U)
     samples_c = (bU[:, None, :] + flips[None]).reshape(-1, 3)
-    (ccx, ccy), Rex = circumcircle(Pex)                      # the same formula, exact
+    (ccx, ccy), Rex = circumcircle(Pex)  # the same formula, exact
 
     def circle_dirs():
         ux = ccx + Rex * (1 - th**2) / (1 + th**2)
         uy = ccy + Rex * 2 * th / (1 + th**2)
-        return [(ux - px, uy - py) for px, py in Pex]            # i_i || U - P_i
-    out.append(Family(
-        "v-circle", r"(v-c) rotation about a point of the circle through $P_1, P_2, P_3$",
-        r"axles through $U$ on the circle through $P_1, P_2, P_3$ (radius $L$ about $C$), $U$ free",
-        r"$U$ and $D_P$ antipodal on the circumcircle: each $P_i$ sees them at a right angle (Thales)",
-        "no", "(v)", r"$\det\mathbf J = 0$ while $\operatorname{rank}\mathbf F = 5$: the robot *can* rotate about "
-        r"$U$, contradicting the statement that in (v) it has lost all mobility; every rotation about a point at "
-        r"distance $L$ from $C$ passes through a singular $\mathbf J$.",
-        samples=samples_c, exact=circle_dirs))
+        return [(ux - px, uy - py) for px, py in Pex]  # i_i || U - P_i
+
+    out.append(
+        Family(
+            "v-circle",
+            r"(v-c) rotation about a point of the circle through $P_1, P_2, P_3$",
+            r"axles through $U$ on the circle through $P_1, P_2, P_3$ (radius $L$ about $C$), $U$ free",
+            r"$U$ and $D_P$ antipodal on the circumcircle: each $P_i$ sees them at a right angle (Thales)",
+            "no",
+            "(v)",
+            r"$\det\mathbf J = 0$ while $\operatorname{rank}\mathbf F = 5$: the robot *can* rotate about "
+            r"$U$, contradicting the statement that in (v) it has lost all mobility; every rotation about a point at "
+            r"distance $L$ from $C$ passes through a singular $\mathbf J$.",
+            samples=samples_c,
+            exact=circle_dirs,
+        )
+    )
 
     poly, c, s = det_J_polynomial(exact_bot)
     for f in out:
-        assert f.samples is not None                                 # every family above is sampled
+        assert f.samples is not None  # every family above is sampled
         dj = np.abs(det_J(num, f.samples))
         f.det_J_max = float(dj.max())
         ranks = rank_F(num, f.samples)
@@ -357,7 +450,7 @@ def check_paper_items(robot=None, L=None):
     dirs = []
     for u in robot.wheels:
         px, py = (sp.nsimplify(v) for v in u.position)
-        dirs.append((y - py, -(x - px)))                          # plane through D = (x, y)
+        dirs.append((y - py, -(x - px)))  # plane through D = (x, y)
     out["(v)"] = exact_zero(poly, c, s, dirs)
     return out
 
@@ -385,8 +478,10 @@ def table(robot=None, n=72, exact=True):
         if f.note == f.paper_item:
             row["note"] = "the same under either reading"
         elif f.note:
-            row["note"] = (f"covered by {f.note} when $D_P$ may be a mount point (the reading \"any point\"), by "
-                           f"{f.paper_item or 'no printed item'} when not")
+            row["note"] = (
+                f'covered by {f.note} when $D_P$ may be a mount point (the reading "any point"), by '
+                f"{f.paper_item or 'no printed item'} when not"
+            )
         else:
             row["note"] = "covered by no printed item under either reading"
         rows.append(row)
@@ -420,10 +515,12 @@ def write_csv(path, robot=None, n=72, exact=True):
 #: The readings under which the report compares the zero set with the printed list (i)-(v).  ``"half-turn"``
 #: is the reading the report counts with; ``"any point"`` differs from it only in item (v).
 READINGS = {
-    "half-turn": (r"a steering angle matters modulo $180^\circ$ ($\beta_i$ and $\beta_i + 180^\circ$ give the same "
-                  r"wheel-plane line, and $\det\mathbf J$ only changes sign); (i) is all three lines parallel; "
-                  r"(ii)-(iv) the two named planes on the side $P_iP_j$, the third wheel free; (v) the three lines "
-                  r"through one finite point $D_P$ that is not a mount point"),
+    "half-turn": (
+        r"a steering angle matters modulo $180^\circ$ ($\beta_i$ and $\beta_i + 180^\circ$ give the same "
+        r"wheel-plane line, and $\det\mathbf J$ only changes sign); (i) is all three lines parallel; "
+        r"(ii)-(iv) the two named planes on the side $P_iP_j$, the third wheel free; (v) the three lines "
+        r"through one finite point $D_P$ that is not a mount point"
+    ),
     "any point": r"(v) also with $D_P$ at a mount point, the rest as in the reading above",
 }
 
@@ -452,30 +549,31 @@ def covering_items(robot, beta, reading="half-turn"):
     """
     from wmr.analysis.lines import wheel_plane_lines
     from wmr.model.tolerance import TOL
+
     if reading not in READINGS:
         raise ValueError(f"reading must be one of {sorted(READINGS)}, got {reading!r}")
     num = numeric_robot(robot)
-    P, j = wheel_plane_lines(num, np.asarray(beta, dtype=float).reshape(-1, 3))       # (n, 3, 2) each
+    P, j = wheel_plane_lines(num, np.asarray(beta, dtype=float).reshape(-1, 3))  # (n, 3, 2) each
     scale = float(np.abs(num.mount_points).max())
 
     def cross(a, b):
         return a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]
 
     pairs = ((0, 1), (0, 2), (1, 2))
-    sines = np.stack([cross(j[:, a], j[:, b]) for a, b in pairs], axis=-1)          # (n, 3)
+    sines = np.stack([cross(j[:, a], j[:, b]) for a, b in pairs], axis=-1)  # (n, 3)
     out = {"(i)": np.all(np.abs(sines) <= TOL, axis=-1)}
     for (i, k), item in PAPER_PAIR_ITEMS.items():
         side = P[:, k - 1] - P[:, i - 1]
         tol = TOL * np.linalg.norm(side, axis=-1)
         out[item] = (np.abs(cross(j[:, i - 1], side)) <= tol) & (np.abs(cross(j[:, k - 1], side)) <= tol)
-    best = np.argmax(np.abs(sines), axis=-1)                                          # two lines that cross
+    best = np.argmax(np.abs(sines), axis=-1)  # two lines that cross
     a, b = np.array(pairs)[best].T
     rows = np.arange(len(j))
     Pa, ja, Pb, jb = P[rows, a], j[rows, a], P[rows, b], j[rows, b]
     den = cross(jb, ja)
     finite = np.abs(den) > TOL
     s = np.where(finite, cross(jb, Pb - Pa) / np.where(finite, den, 1.0), 0.0)
-    D = Pa + s[:, None] * ja                                                          # (n, 2)
+    D = Pa + s[:, None] * ja  # (n, 2)
     size = np.maximum(scale, np.abs(D).max(axis=-1))
     through = np.all(np.abs(cross(j, D[:, None, :] - P)) <= TOL * size[:, None], axis=-1)
     at_mount = np.min(np.linalg.norm(D[:, None, :] - P, axis=-1), axis=-1) <= TOL * size
@@ -501,12 +599,20 @@ def _mount_point_family(num, exact_bot, k, n):
 
     def dirs():
         kx, ky = Pex[k - 1]
-        return [(sp.cos(th), sp.sin(th)) if w == k else (ky - Pex[w - 1][1], -(kx - Pex[w - 1][0]))
-                for w in (1, 2, 3)]
-    return Family(f"v-P{k}", rf"(v-b) planes through $P_{k}$", rf"${angles}$ (mod $180^\circ$), $\beta_{k}$ free",
-                  rf"$D_P = P_{k}$: the planes of wheels {others[0]} and {others[1]} lie on the sides through "
-                  rf"$P_{k}$; the plane of wheel {k} contains $P_{k}$ whatever $\beta_{k}$", "", "", "",
-                  samples=np.concatenate(blocks), exact=dirs)
+        return [(sp.cos(th), sp.sin(th)) if w == k else (ky - Pex[w - 1][1], -(kx - Pex[w - 1][0])) for w in (1, 2, 3)]
+
+    return Family(
+        f"v-P{k}",
+        rf"(v-b) planes through $P_{k}$",
+        rf"${angles}$ (mod $180^\circ$), $\beta_{k}$ free",
+        rf"$D_P = P_{k}$: the planes of wheels {others[0]} and {others[1]} lie on the sides through "
+        rf"$P_{k}$; the plane of wheel {k} contains $P_{k}$ whatever $\beta_{k}$",
+        "",
+        "",
+        "",
+        samples=np.concatenate(blocks),
+        exact=dirs,
+    )
 
 
 def accounting(robot=None, n=72, exact=True):
@@ -538,11 +644,22 @@ def accounting(robot=None, n=72, exact=True):
     merged = []
     for key in ("i", "pair-13", "pair-12", "pair-23"):
         f, g = fams[key], fams[key + "'"]
-        both = Family(f.key, f.family.split(" ")[0], f.configuration + r" (mod $180^\circ$)", f.geometric_meaning,
-                      "", "", "", samples=np.concatenate([f.samples, g.samples]))
+        both = Family(
+            f.key,
+            f.family.split(" ")[0],
+            f.configuration + r" (mod $180^\circ$)",
+            f.geometric_meaning,
+            "",
+            "",
+            "",
+            samples=np.concatenate([f.samples, g.samples]),
+        )
         both.det_J_max = max(f.det_J_max, g.det_J_max)
-        both.det_J_exact_zero = (None if f.det_J_exact_zero is None or g.det_J_exact_zero is None
-                                 else f.det_J_exact_zero and g.det_J_exact_zero)
+        both.det_J_exact_zero = (
+            None
+            if f.det_J_exact_zero is None or g.det_J_exact_zero is None
+            else f.det_J_exact_zero and g.det_J_exact_zero
+        )
         both.rank_F = f.rank_F if f.rank_F == g.rank_F else f"{f.rank_F}; turned: {g.rank_F}"
         merged.append(both)
     merged += [fams["v"], fams["v-C"]]
@@ -551,8 +668,10 @@ def accounting(robot=None, n=72, exact=True):
         f = _mount_point_family(num, exact_bot, k, n)
         f.det_J_max = float(np.abs(det_J(num, f.samples)).max())
         vals, counts = np.unique(rank_F(num, f.samples), return_counts=True)
-        f.rank_F = ", ".join(f"{int(v)} ({int(m)}/{len(f.samples)})" for v, m in
-                             sorted(zip(vals, counts, strict=True), key=lambda vm: -vm[1]))
+        f.rank_F = ", ".join(
+            f"{int(v)} ({int(m)}/{len(f.samples)})"
+            for v, m in sorted(zip(vals, counts, strict=True), key=lambda vm: -vm[1])
+        )
         if exact:
             f.det_J_exact_zero = exact_zero(poly, c, s, f.exact())
         merged.append(f)

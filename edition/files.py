@@ -7,6 +7,7 @@ never a part.  Where the files go is always passed in: the library never resolve
 This module uses the standard library only: the build tool (``tools/build/files.py``) loads it by
 path, so the project has one atomic writer without the build importing NumPy or SymPy.
 """
+
 from __future__ import annotations
 
 import contextlib

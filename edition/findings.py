@@ -9,6 +9,7 @@ into ``figures/``; this module adds what it computes itself:
 - :data:`INFERRED`: the verdicts that rest on a convention the paper's text does not state;
 - :func:`environment` and :func:`citation`: the apparatus (versions, licence, BibTeX).
 """
+
 from __future__ import annotations
 
 import importlib.metadata as md
@@ -21,9 +22,9 @@ __all__ = ["INFERRED", "DISTRIBUTIONS", "equation_count", "readings", "environme
 #: (the ledger's ``convention`` column states the convention itself).  Facts about the text, not verdicts.
 INFERRED = {
     "9": "the side of the wheel centre $H_i$ relative to the pivot $P_i$ (the text does not state it; Fig. 4 is "
-         "missing from the extraction): inferred from the printed signs",
+    "missing from the extraction): inferred from the printed signs",
     "59": "the numbering and placement of the wheels: inferred from the printed determinant, which holds for one "
-          "of the 24 numberings tried (wheel 1 at $180^\\circ$, numbered clockwise)",
+    "of the 24 numberings tried (wheel 1 at $180^\\circ$, numbered clockwise)",
     "60": "what $\\phi_i$ measures: the axle by (6), (8) and (11), the rolling direction if (60) is to hold",
     "65": "where $\\beta_i$ is measured from: the body axis $\\mathbf i$ by (11); the line $CU$ if (65) is to hold",
 }
@@ -51,13 +52,18 @@ def equation_count(ledger, transcription=None):
         ``numbered`` (int), ``transcribed``, ``judged``, ``not_judged``, ``not_transcribed`` (sorted lists of int).
     """
     from .transcription import table
+
     tr = table() if transcription is None else transcription
     transcribed = sorted(int(k) for k in tr.equations)
     judged = sorted(int(r["id"]) for r in ledger if r["kind"] == "equation")
     numbered = max(transcribed + judged)
-    return {"numbered": numbered, "transcribed": transcribed, "judged": judged,
-            "not_judged": sorted(set(range(1, numbered + 1)) - set(judged)),
-            "not_transcribed": sorted(set(range(1, numbered + 1)) - set(transcribed))}
+    return {
+        "numbered": numbered,
+        "transcribed": transcribed,
+        "judged": judged,
+        "not_judged": sorted(set(range(1, numbered + 1)) - set(judged)),
+        "not_transcribed": sorted(set(range(1, numbered + 1)) - set(transcribed)),
+    }
 
 
 def readings(transcription=None):
@@ -74,6 +80,7 @@ def readings(transcription=None):
         Equation number -> the transcription's ``doubt`` (what the extraction shows and how it is read).
     """
     from .transcription import table
+
     tr = table() if transcription is None else transcription
     return {k: e.doubt for k, e in sorted(tr.equations.items(), key=lambda kv: int(kv[0])) if e.doubt}
 
@@ -131,17 +138,30 @@ def citation(root=None):
     cff = path.exists()
     if cff:
         import yaml  # type: ignore[import-untyped]
+
         meta = yaml.safe_load(path.read_text(encoding="utf-8")) or {}
         title = " ".join(str(meta.get("title", title)).split())
-        names = [a.get("name") or " ".join(filter(None, (a.get("given-names"), a.get("family-names"))))
-                 for a in meta.get("authors", [])]
+        names = [
+            a.get("name") or " ".join(filter(None, (a.get("given-names"), a.get("family-names"))))
+            for a in meta.get("authors", [])
+        ]
         authors = " and ".join(n for n in names if n) or authors
         lic = str(meta.get("license", lic))
         version = str(meta.get("version", version))
     import textwrap
+
     wrapped = "\n".join(textwrap.wrap(title, 58, subsequent_indent=" " * 13))
-    bib = (f"@software{{wmr_edition,\n  title   = {{{wrapped}}},\n  author  = {{{{{authors}}}}},\n"
-           f"  version = {{{version}}},\n  license = {{{lic}}},\n  note    = {{{name}; cite the commit printed on\n"
-           "             the title page}\n}")
-    return {"name": name, "version": version, "licence": lic, "title": title, "authors": authors, "cff": cff,
-            "bibtex": bib}
+    bib = (
+        f"@software{{wmr_edition,\n  title   = {{{wrapped}}},\n  author  = {{{{{authors}}}}},\n"
+        f"  version = {{{version}}},\n  license = {{{lic}}},\n  note    = {{{name}; cite the commit printed on\n"
+        "             the title page}\n}"
+    )
+    return {
+        "name": name,
+        "version": version,
+        "licence": lic,
+        "title": title,
+        "authors": authors,
+        "cff": cff,
+        "bibtex": bib,
+    }

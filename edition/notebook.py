@@ -10,6 +10,7 @@ r"""What a chapter (``notebooks/01..08``) is: where it writes, its ledger, its r
 The chapters show their results with :mod:`edition.display` (:func:`quote`, :func:`show`,
 :func:`say`, :func:`table`, re-exported here, so that a chapter imports what it uses from one place).
 """
+
 from __future__ import annotations
 
 import os
@@ -64,10 +65,13 @@ class Project:
             Markdown.
         """
         import wmr
+
         pkg = Path(wmr.__file__).resolve().parent
-        why = {"scratch": "a scratch folder of this project; only `make report` or `make test` writes `figures/`",
-               "temporary": "a temporary folder: this notebook is not inside the project",
-               "build": "the build"}[self.source]
+        why = {
+            "scratch": "a scratch folder of this project; only `make report` or `make test` writes `figures/`",
+            "temporary": "a temporary folder: this notebook is not inside the project",
+            "build": "the build",
+        }[self.source]
         text = f"*This run writes its figures and ledger rows to* `{self.out}` *({why}).*"
         if self.root is not None and pkg.parent != self.root:
             text += f" *The `wmr` package it imports is* `{pkg}`*, not this project’s.*"
@@ -128,8 +132,8 @@ def project(where=None, chapter="scratch"):
     if root is not None:
         return Project(root=root, out=root / "build" / "scratch" / chapter, source="scratch")
     import tempfile
-    return Project(root=None, out=Path(tempfile.mkdtemp(prefix=f"wmr-{chapter}-")), source="temporary")
 
+    return Project(root=None, out=Path(tempfile.mkdtemp(prefix=f"wmr-{chapter}-")), source="temporary")
 
 
 # --------------------------------------------------------------------------------------- a chapter
@@ -173,7 +177,7 @@ class Chapter:
         """
         rows = []
         for res in results:
-            for f in ([res] if isinstance(res, Finding) else list(res.findings)):
+            for f in [res] if isinstance(res, Finding) else list(res.findings):
                 rows.append(self.ledger.add(f))
         say("\n\n".join(r.sentence() for r in rows))
 
@@ -192,6 +196,7 @@ class Chapter:
             The figure's numbers.
         """
         from .figures import show as show_figure
+
         return show_figure(key, data, outdir=self.project.figures)
 
     def close(self):
@@ -204,5 +209,7 @@ class Chapter:
         """
         self.ledger.write(self.project.out)
         c = self.ledger.counts()
-        say(f"*Ledger of this chapter:* {len(self.ledger.rows)} rows "
-            f"({c['ok']} ok, {c['typo']} typo, {c['wrong']} wrong).")
+        say(
+            f"*Ledger of this chapter:* {len(self.ledger.rows)} rows "
+            f"({c['ok']} ok, {c['typo']} typo, {c['wrong']} wrong)."
+        )

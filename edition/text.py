@@ -6,6 +6,7 @@ a bound at the stated resolution (:data:`RESOLUTION`), never with its round-off 
 values are printed with a few significant digits (:func:`number`) or, in data files, rounded to
 :data:`DECIMALS` places (:func:`rounded`).
 """
+
 from __future__ import annotations
 
 import numpy as np

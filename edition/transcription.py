@@ -13,6 +13,7 @@ entry, never a new symbol.  Reading the table has no side effect; it is read onc
 These are the statements under test: the checks (:mod:`edition.checks`) derive each result from
 the model in :mod:`wmr` and compare it with the printed form, never the other way round.
 """
+
 from __future__ import annotations
 
 import functools
@@ -31,8 +32,26 @@ __all__ = ["TABLE", "Printed", "Claim", "Transcription", "TranscriptionError", "
 TABLE = Path(__file__).with_name("printed.toml")
 
 #: the SymPy names a printed form may use besides :mod:`edition.symbols` and the notation
-_SYMPY = ("Matrix", "Tuple", "BlockMatrix", "BlockDiagMatrix", "ZeroMatrix", "Determinant", "diag", "eye", "zeros",
-          "sqrt", "sin", "cos", "atan", "pi", "oo", "Integer", "Float", "Rational")
+_SYMPY = (
+    "Matrix",
+    "Tuple",
+    "BlockMatrix",
+    "BlockDiagMatrix",
+    "ZeroMatrix",
+    "Determinant",
+    "diag",
+    "eye",
+    "zeros",
+    "sqrt",
+    "sin",
+    "cos",
+    "atan",
+    "pi",
+    "oo",
+    "Integer",
+    "Float",
+    "Rational",
+)
 _EQUATION_KEYS = {"section", "latex", "sympy", "extracted", "doubt", "note", "extra", "data"}
 _CLAIM_KEYS = {"title", "section", "text", "extracted"}
 
@@ -131,7 +150,7 @@ def _fail(where, message):
 
 def _names():
     names = {n: getattr(sp, n) for n in _SYMPY}
-    names["Eq"] = lambda lhs, rhs: sp.Eq(lhs, rhs, evaluate=False)      # a printed identity, never decided here
+    names["Eq"] = lambda lhs, rhs: sp.Eq(lhs, rhs, evaluate=False)  # a printed identity, never decided here
     names.update({k: v for k, v in vars(symbols).items() if not k.startswith("_") and k != "sp"})
     return names
 
@@ -141,7 +160,7 @@ def _parse(text, names, where):
         _fail(where, f"a SymPy form must be a string, got {text!r}")
     try:
         return parse_expr(text, local_dict={}, global_dict=names, transformations=(auto_number,))
-    except Exception as e:        # SyntaxError, NameError, TypeError, ...: all say the same: this entry is wrong
+    except Exception as e:  # SyntaxError, NameError, TypeError, ...: all say the same: this entry is wrong
         _fail(where, f"cannot read {text!r}: {type(e).__name__}: {e}")
 
 
@@ -228,14 +247,26 @@ def load(path=TABLE):
         data = _plain(entry.get("data", {}))
         if set(extra) & set(data):
             _fail(where, f"{sorted(set(extra) & set(data))} both in 'extra' and in 'data'")
-        equations[key] = Printed(key, _text(entry, "section", where, True), _text(entry, "latex", where, True), expr,
-                                 _fragments(entry, where), _text(entry, "doubt", where), _text(entry, "note", where),
-                                 {**extra, **data})
+        equations[key] = Printed(
+            key,
+            _text(entry, "section", where, True),
+            _text(entry, "latex", where, True),
+            expr,
+            _fragments(entry, where),
+            _text(entry, "doubt", where),
+            _text(entry, "note", where),
+            {**extra, **data},
+        )
     claims = {}
     for slug, entry in raw.get("claim", {}).items():
         where = _entry(entry, f"{path}: claim.{slug}", _CLAIM_KEYS)
-        claims[slug] = Claim(slug, _text(entry, "section", where, True), _text(entry, "text", where, True),
-                             _fragments(entry, where), _text(entry, "title", where, True))
+        claims[slug] = Claim(
+            slug,
+            _text(entry, "section", where, True),
+            _text(entry, "text", where, True),
+            _fragments(entry, where),
+            _text(entry, "title", where, True),
+        )
     return Transcription(equations, claims, names)
 
 

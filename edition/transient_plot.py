@@ -5,6 +5,7 @@ library draws the first run wide so that others may run on it.  A reader still c
 exactly under another, so this drawing adds a marker of its own to every run, at staggered samples, and names
 in the legend a run that coincides with an earlier one.
 """
+
 from __future__ import annotations
 
 import numpy as np
@@ -30,11 +31,16 @@ def coincident_runs(study):
     list of (str or None)
         One entry per run of ``study.runs``.
     """
+
     def same(a, b):
         scale = max(1.0, float(np.max(np.abs(a.pose))))
-        return (a.pose.shape == b.pose.shape and float(np.max(np.abs(a.pose - b.pose))) <= TOL * scale
-                and float(np.max(np.abs(a.slip - b.slip), initial=0.0)) <= TOL * scale
-                and float(np.max(np.abs(a.path_error - b.path_error), initial=0.0)) <= TOL * scale)
+        return (
+            a.pose.shape == b.pose.shape
+            and float(np.max(np.abs(a.pose - b.pose))) <= TOL * scale
+            and float(np.max(np.abs(a.slip - b.slip), initial=0.0)) <= TOL * scale
+            and float(np.max(np.abs(a.path_error - b.path_error), initial=0.0)) <= TOL * scale
+        )
+
     out = []
     for k, run in enumerate(study.runs):
         out.append(next((prev.label for prev in study.runs[:k] if same(run, prev)), None))
@@ -71,7 +77,7 @@ def distinguished_transient_figure(study, every=10):
             if same_as[k]:
                 line.set_label(f"{run.label} (same motion as {same_as[k]})")
     legend = fig.axes[0].get_legend()
-    if legend is not None:                                    # below the panels: no curve under it
+    if legend is not None:  # below the panels: no curve under it
         size = legend.get_texts()[0].get_fontsize()
         legend.remove()
         handles, labels = fig.axes[0].get_legend_handles_labels()

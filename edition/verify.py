@@ -4,6 +4,7 @@ r"""Comparing a derived result with the printed one: exactly (SymPy) and numeric
 targeted chain of simplifications (no blanket ``simplify`` on large expressions);
 :func:`max_residual` evaluates the difference at random points drawn with a fixed seed.
 """
+
 from __future__ import annotations
 
 import numpy as np
@@ -24,8 +25,12 @@ def _as_matrix(x):
 def _is_zero(e):
     if e == 0:
         return True
-    for step in (sp.expand, lambda z: sp.expand(sp.expand_trig(z)), sp.trigsimp,
-                 lambda z: sp.simplify(sp.expand_trig(z))):
+    for step in (
+        sp.expand,
+        lambda z: sp.expand(sp.expand_trig(z)),
+        sp.trigsimp,
+        lambda z: sp.simplify(sp.expand_trig(z)),
+    ):
         e = step(e)
         if e == 0:
             return True

@@ -3,6 +3,7 @@
 Everything here is computed *independently of the package* (3D cross products, explicit frame
 changes) so that the tests compare :mod:`wmr` with the physics, not with itself.
 """
+
 from __future__ import annotations
 
 import sys
@@ -17,10 +18,16 @@ import wmr
 
 # --- determinism: a fixed, bounded Hypothesis profile -------------------------------------------
 settings.register_profile(
-    "wmr", derandomize=True, database=None, max_examples=25, deadline=None, print_blob=True,
-    suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much,
-                           HealthCheck.function_scoped_fixture])
+    "wmr",
+    derandomize=True,
+    database=None,
+    max_examples=25,
+    deadline=None,
+    print_blob=True,
+    suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much, HealthCheck.function_scoped_fixture],
+)
 settings.load_profile("wmr")
+
 
 def pytest_configure(config):
     """Before collection: nbformat imports jsonschema, which compiles the grammar of ``rfc3987_syntax``
@@ -81,7 +88,7 @@ def hub_velocity(kind, beta, r, rates, roller=None):
     i3 = vec3(axle(beta))
     omega = rates[0] * i3
     if kind == "swedish":
-        a3 = vec3(axle(beta + roller))                   # the roller axis: the axle turned by gamma
+        a3 = vec3(axle(beta + roller))  # the roller axis: the axle turned by gamma
         omega = omega + rates[1] * a3
     return np.cross(omega, r * K)[:2]
 
@@ -204,6 +211,7 @@ def robots(draw, kinds=KINDS, w_min=1, w_max=4, spread=False, same_kind=False):
     pts = draw(mount_sets(w_min, w_max, spread))
     if spread and len(pts) >= 3:
         from hypothesis import assume
+
         assume(noncollinear(pts))
     kind0 = draw(st.sampled_from(kinds))
     units = []
@@ -215,8 +223,9 @@ def robots(draw, kinds=KINDS, w_min=1, w_max=4, spread=False, same_kind=False):
 
 def with_kind(robot, kind):
     """The same geometry (mount points, radii) with every unit replaced by ``kind``."""
-    return wmr.Robot([make_unit(kind, u.position, u.r, d=getattr(u, "d", u.r) or u.r,
-                                b=getattr(u, "b", u.r)) for u in robot.wheels])
+    return wmr.Robot(
+        [make_unit(kind, u.position, u.r, d=getattr(u, "d", u.r) or u.r, b=getattr(u, "b", u.r)) for u in robot.wheels]
+    )
 
 
 def random_twist(seed, scale=1.0):
@@ -271,7 +280,7 @@ def check_offset_steer_only(robot, omega=0.7, t_end=1.0, dt=0.01):
     wheel centres (contact points) do not move."""
     beta0 = np.full(robot.w, 0.3)
     rates = np.zeros(robot.n_rates)
-    rates[0::2] = omega                                   # phi_dot_i = omega, theta_dot_i = 0
+    rates[0::2] = omega  # phi_dot_i = omega, theta_dot_i = 0
     traj = wmr.simulate(robot, rates, beta0, t_end, dt)
     d = robot.wheels[0].d
     # first principles: with the platform translating (psi = 0), C - H_1 = d_1 + d j(beta)

@@ -10,6 +10,7 @@ the annotations agree with the code; this test checks that they are there, so th
 ``python tests/test_annotations.py`` prints how many of the public API's callables, and of all the
 public callables of wmr's public modules, are annotated.
 """
+
 from __future__ import annotations
 
 import ast
@@ -42,13 +43,13 @@ def _returned_classes(func: Callable) -> list[type]:
     ret = inspect.signature(func).return_annotation
     if ret is inspect.Signature.empty:
         return []
-    if isinstance(ret, str):                           # from __future__ import annotations: look the names up
+    if isinstance(ret, str):  # from __future__ import annotations: look the names up
         names = {n.id for n in ast.walk(ast.parse(ret, mode="eval")) if isinstance(n, ast.Name)}
         scope = dict(vars(sys.modules[func.__module__]))
-        if "." in func.__qualname__:                   # a method: its own class (typing.Self)
+        if "." in func.__qualname__:  # a method: its own class (typing.Self)
             scope.setdefault("Self", scope.get(func.__qualname__.split(".")[0]))
         found = [scope.get(n) for n in names]
-    else:                                              # the objects themselves (X, tuple[X, ...], X | None)
+    else:  # the objects themselves (X, tuple[X, ...], X | None)
         found, todo = [], [ret]
         while todo:
             t = todo.pop()
@@ -70,7 +71,7 @@ def api() -> dict[str, Callable]:
             classes.append(obj)
             for base in obj.__mro__[1:]:
                 if base.__module__.split(".")[0] == "wmr":
-                    todo.append(base)                   # inherited methods are part of the class's API
+                    todo.append(base)  # inherited methods are part of the class's API
             for name, f in _functions_of(obj):
                 if name not in out:
                     out[name] = f
@@ -86,12 +87,15 @@ def api() -> dict[str, Callable]:
 def everything() -> dict[str, Callable]:
     """Every public function and method of wmr's public modules (no part of the name starting with ``_``)."""
     out: dict[str, Callable] = {}
-    names = ["wmr"] + [m.name for m in pkgutil.walk_packages(wmr.__path__, "wmr.")
-                       if not any(p.startswith("_") for p in m.name.split(".")[1:])]
+    names = ["wmr"] + [
+        m.name
+        for m in pkgutil.walk_packages(wmr.__path__, "wmr.")
+        if not any(p.startswith("_") for p in m.name.split(".")[1:])
+    ]
     for modname in sorted(names):
         try:
             module = importlib.import_module(modname)
-        except ImportError:                             # a module that needs an extra that is not installed
+        except ImportError:  # a module that needs an extra that is not installed
             continue
         for name, obj in vars(module).items():
             if name.startswith("_") or getattr(obj, "__module__", None) != modname:
@@ -120,9 +124,9 @@ def missing(func: Callable) -> list[str]:
 def test_the_api_is_what_wmr_exports_and_what_it_returns():
     names = api()
     assert "wmr.analysis.linalg.rank" in names and "wmr.model.robot.Robot.J2" in names
-    assert "wmr.swerve.modules.module_commands" in names                      # a module in wmr.__all__
-    assert "wmr.analysis.sweep.result.Sweep.summary" in names                 # a class wmr.sweep returns
-    assert "wmr.model.wheels.unit.WheelUnit.block" in names                   # a base class of OffsetWheel
+    assert "wmr.swerve.modules.module_commands" in names  # a module in wmr.__all__
+    assert "wmr.analysis.sweep.result.Sweep.summary" in names  # a class wmr.sweep returns
+    assert "wmr.model.wheels.unit.WheelUnit.block" in names  # a base class of OffsetWheel
     assert not any(n.split(".")[-1].startswith("_") and not n.endswith("__init__") for n in names)
 
 
@@ -150,7 +154,9 @@ def test_the_check_sees_a_missing_annotation():
 
 
 if __name__ == "__main__":
-    for label, found in (("public API (wmr.__all__ and what it returns)", api()),
-                         ("public modules of wmr", everything())):
+    for label, found in (
+        ("public API (wmr.__all__ and what it returns)", api()),
+        ("public modules of wmr", everything()),
+    ):
         done = sum(not missing(f) for f in found.values())
         print(f"{label}: {done} of {len(found)} callables annotated")

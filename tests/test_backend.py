@@ -1,4 +1,5 @@
 """wmr.model.backend: the two backends give the same matrices (SymPy exactly, NumPy batched)."""
+
 import numpy as np
 import pytest
 import sympy as sp
@@ -56,19 +57,22 @@ def test_numeric_batched_blocks_and_hstack():
     assert M.shape == (4, 2, 3)
     NUMERIC.set_block(M, 0, 1, np.ones((4, 2, 2)))
     assert np.all(M[:, :, 1:] == 1) and np.all(M[:, :, 0] == 0)
-    H = NUMERIC.broadcast_hstack(np.eye(2), np.ones((4, 2, 1)))      # constant block broadcast
+    H = NUMERIC.broadcast_hstack(np.eye(2), np.ones((4, 2, 1)))  # constant block broadcast
     assert H.shape == (4, 2, 3)
     assert np.array_equal(NUMERIC.hstack(np.eye(2), np.ones((2, 1))), [[1, 0, 1], [0, 1, 1]])
 
 
-@pytest.mark.parametrize("values, expected", [
-    ((1.0, 2), False),
-    ((1.0, x), True),
-    (([1.0, [2.0, y]],), True),
-    ((np.array([1.0, x], dtype=object),), True),
-    ((np.array([1.0, 2.0]),), False),
-    ((sp.Matrix([1, 2]),), True),
-])
+@pytest.mark.parametrize(
+    "values, expected",
+    [
+        ((1.0, 2), False),
+        ((1.0, x), True),
+        (([1.0, [2.0, y]],), True),
+        ((np.array([1.0, x], dtype=object),), True),
+        ((np.array([1.0, 2.0]),), False),
+        ((sp.Matrix([1, 2]),), True),
+    ],
+)
 def test_is_symbolic(values, expected):
     assert B.is_symbolic(*values) is expected
 

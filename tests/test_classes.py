@@ -1,4 +1,5 @@
 """wmr.analysis.classes: Campion, Bastin & d'Andrea-Novel's five classes on robots built in Python."""
+
 import dataclasses
 import re
 
@@ -18,28 +19,62 @@ def _robots():
     F, S, C, Off = wmr.FixedWheel, wmr.SwedishWheel, wmr.CentredWheel, wmr.OffsetWheel
     rect = [(0.3, 0.25), (0.3, -0.25), (-0.3, 0.25), (-0.3, -0.25)]
     return {
-        "three omni wheels": (wmr.Robot([S(tuple(p), r=0.05, angle=float(np.arctan2(p[1], p[0])), roller=PI / 2)
-                                         for p in wmr.equilateral_mounts(0.25)]), (3, 0)),
-        "four mecanum wheels": (wmr.Robot([S(p, r=0.05, angle=PI / 2, roller=PI / 4 if p[0] * p[1] > 0 else -PI / 4)
-                                           for p in rect]), (3, 0)),
-        "differential drive + castor": (wmr.Robot([F((0.0, 0.2), r=0.05, angle=PI / 2),
-                                                   F((0.0, -0.2), r=0.05, angle=PI / 2),
-                                                   Off((-0.3, 0.0), r=0.03, d=0.04)]), (2, 0)),
-        "steered wheel + two castors": (wmr.Robot([C((0.35, 0.0), r=0.05), Off((-0.2, 0.2), r=0.03, d=0.04),
-                                                   Off((-0.2, -0.2), r=0.03, d=0.04)]), (2, 1)),
-        "tricycle": (wmr.Robot([F((0.0, 0.2), r=0.05, angle=PI / 2), F((0.0, -0.2), r=0.05, angle=PI / 2),
-                                C((0.5, 0.0), r=0.05)]), (1, 1)),
-        "car (front axle of two steered wheels)": (wmr.Robot([F((0.0, 0.2), r=0.05, angle=PI / 2),
-                                                             F((0.0, -0.2), r=0.05, angle=PI / 2),
-                                                             C((0.5, 0.2), r=0.05), C((0.5, -0.2), r=0.05)]), (1, 1)),
+        "three omni wheels": (
+            wmr.Robot(
+                [
+                    S(tuple(p), r=0.05, angle=float(np.arctan2(p[1], p[0])), roller=PI / 2)
+                    for p in wmr.equilateral_mounts(0.25)
+                ]
+            ),
+            (3, 0),
+        ),
+        "four mecanum wheels": (
+            wmr.Robot([S(p, r=0.05, angle=PI / 2, roller=PI / 4 if p[0] * p[1] > 0 else -PI / 4) for p in rect]),
+            (3, 0),
+        ),
+        "differential drive + castor": (
+            wmr.Robot(
+                [
+                    F((0.0, 0.2), r=0.05, angle=PI / 2),
+                    F((0.0, -0.2), r=0.05, angle=PI / 2),
+                    Off((-0.3, 0.0), r=0.03, d=0.04),
+                ]
+            ),
+            (2, 0),
+        ),
+        "steered wheel + two castors": (
+            wmr.Robot([C((0.35, 0.0), r=0.05), Off((-0.2, 0.2), r=0.03, d=0.04), Off((-0.2, -0.2), r=0.03, d=0.04)]),
+            (2, 1),
+        ),
+        "tricycle": (
+            wmr.Robot(
+                [F((0.0, 0.2), r=0.05, angle=PI / 2), F((0.0, -0.2), r=0.05, angle=PI / 2), C((0.5, 0.0), r=0.05)]
+            ),
+            (1, 1),
+        ),
+        "car (front axle of two steered wheels)": (
+            wmr.Robot(
+                [
+                    F((0.0, 0.2), r=0.05, angle=PI / 2),
+                    F((0.0, -0.2), r=0.05, angle=PI / 2),
+                    C((0.5, 0.2), r=0.05),
+                    C((0.5, -0.2), r=0.05),
+                ]
+            ),
+            (1, 1),
+        ),
         "paper, three centred wheels": (wmr.paper_robot("centred", L=0.3, r=0.05), (1, 2)),
         "four-module swerve": (wmr.Robot([C(p, r=0.05) for p in rect]), (1, 2)),
         "paper, offset wheels": (wmr.paper_robot("offset", L=0.3, r=0.05), (3, 0)),
         "paper, dual wheels": (wmr.paper_robot("dual", L=0.3, r=0.05), (1, 2)),
-        "one omni wheel + one fixed wheel": (wmr.Robot([S((0.3, 0.0), r=0.05, angle=0.0, roller=PI / 2),
-                                                       F((-0.3, 0.0), r=0.05, angle=0.0)]), (2, 0)),
-        "two steered + one castor": (wmr.Robot([C((0.3, 0.0), r=0.05), C((-0.3, 0.0), r=0.05),
-                                                Off((0.0, 0.3), r=0.03, d=0.03)]), (1, 2)),
+        "one omni wheel + one fixed wheel": (
+            wmr.Robot([S((0.3, 0.0), r=0.05, angle=0.0, roller=PI / 2), F((-0.3, 0.0), r=0.05, angle=0.0)]),
+            (2, 0),
+        ),
+        "two steered + one castor": (
+            wmr.Robot([C((0.3, 0.0), r=0.05), C((-0.3, 0.0), r=0.05), Off((0.0, 0.3), r=0.03, d=0.03)]),
+            (1, 2),
+        ),
     }
 
 
@@ -79,7 +114,7 @@ def _scaled(bot, s):
 @pytest.mark.parametrize("name", NAMES)
 def test_class_is_unit_invariant(name):
     bot, want = ROBOTS[name]
-    got = {k: (lambda c: (c.delta_m, c.delta_s))(campion_class(_scaled(bot, 10.0 ** k))) for k in range(-6, 7)}
+    got = {k: (lambda c: (c.delta_m, c.delta_s))(campion_class(_scaled(bot, 10.0**k))) for k in range(-6, 7)}
     assert set(got.values()) == {want}, got
 
 
@@ -95,16 +130,17 @@ def test_class_is_frame_invariant_and_deterministic(name):
 
 def test_degenerate_robots_are_named():
     F, C = wmr.FixedWheel, wmr.CentredWheel
-    stuck = wmr.Robot([F((1.0, 0.0), r=0.1, angle=0.0), F((-0.5, 0.8), r=0.1, angle=0.3),
-                       F((-0.5, -0.8), r=0.1, angle=2.0)])
+    stuck = wmr.Robot(
+        [F((1.0, 0.0), r=0.1, angle=0.0), F((-0.5, 0.8), r=0.1, angle=0.3), F((-0.5, -0.8), r=0.1, angle=2.0)]
+    )
     c = campion_class(stuck)
     assert (c.delta_m, c.standard) == (0, False) and "no motion" in c.name and c.twist == (0.0, 0.0, 0.0)
     pivot = wmr.Robot([F((1.0, 0.0), r=0.1, angle=0.0), F((0.0, 1.0), r=0.1, angle=PI / 2), C((-1.0, -1.0), r=0.1)])
-    c = campion_class(pivot)                  # axles meet at C: it can only spin about C
+    c = campion_class(pivot)  # axles meet at C: it can only spin about C
     assert (c.delta_m, c.standard) == (1, False) and "rotation about one point" in c.name
     assert np.allclose(np.array(c.twist)[1:], 0)
     aligned = wmr.Robot([F((0.0, 0.2), r=0.1, angle=PI / 2), F((0.0, -0.2), r=0.1, angle=PI / 2), C((0.0, 0.5), r=0.1)])
-    c = campion_class(aligned)                # a steered wheel on the fixed axle: its row repeats theirs
+    c = campion_class(aligned)  # a steered wheel on the fixed axle: its row repeats theirs
     assert (c.delta_m, c.delta_s, c.rank_C1s, c.standard) == (2, 0, 1, True)
 
 
@@ -122,8 +158,10 @@ def test_exact_robot_and_result_type():
     assert wmr.campion_class is campion_class
 
 
-@pytest.mark.parametrize("bad, exc", [(None, TypeError), ("robot", TypeError), (wmr.Robot, TypeError),
-                                      ([wmr.CentredWheel((0, 0), r=1)], TypeError)])
+@pytest.mark.parametrize(
+    "bad, exc",
+    [(None, TypeError), ("robot", TypeError), (wmr.Robot, TypeError), ([wmr.CentredWheel((0, 0), r=1)], TypeError)],
+)
 def test_bad_robot(bad, exc):
     with pytest.raises(exc, match=r"\brobot\b"):
         campion_class(bad)
@@ -138,8 +176,10 @@ def test_symbolic_robot_is_rejected():
 
 #: angles: multiples of 15 degrees (exact alignments) or at least 1e-4 rad away from them, so that no
 #: configuration is within the rank tolerance of a special one (there the class may flip, by design)
-_ANGLES = st.one_of(st.integers(-12, 12).map(lambda k: k * PI / 12),
-                    st.floats(-PI, PI).filter(lambda a: np.min(np.abs(a - np.arange(-12, 13) * PI / 12)) > 1e-4))
+_ANGLES = st.one_of(
+    st.integers(-12, 12).map(lambda k: k * PI / 12),
+    st.floats(-PI, PI).filter(lambda a: np.min(np.abs(a - np.arange(-12, 13) * PI / 12)) > 1e-4),
+)
 #: mount points on a 0.05 grid (collinear exactly, or clearly not)
 _POINTS = st.tuples(st.integers(-20, 20), st.integers(-20, 20)).map(lambda p: (p[0] / 20, p[1] / 20))
 
@@ -156,8 +196,9 @@ def mixed_robots(draw):
         if kind == "fixed":
             units.append(wmr.FixedWheel(p, r=0.1, angle=angle))
         elif kind == "swedish":
-            units.append(wmr.SwedishWheel(p, r=0.1, angle=angle,
-                                          roller=draw(st.sampled_from([PI / 2, PI / 4, -PI / 4]))))
+            units.append(
+                wmr.SwedishWheel(p, r=0.1, angle=angle, roller=draw(st.sampled_from([PI / 2, PI / 4, -PI / 4])))
+            )
         elif kind == "centred":
             units.append(wmr.CentredWheel(p, r=0.1))
         elif kind == "offset":
@@ -176,6 +217,6 @@ def test_class_of_random_robots(bot, k):
     assert wmr.admissible_twists(bot, c.beta).shape[1] == c.delta_m
     if c.delta_m:
         assert bool(wmr.inverse(bot, c.beta, c.twist).no_slip)
-    for other in (_scaled(bot, 10.0 ** k), bot.moved(origin=(0.3, -0.1), angle=1.0)):
+    for other in (_scaled(bot, 10.0**k), bot.moved(origin=(0.3, -0.1), angle=1.0)):
         d = campion_class(other)
         assert (d.delta_m, d.delta_s, d.standard) == (c.delta_m, c.delta_s, c.standard)

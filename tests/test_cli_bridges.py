@@ -1,5 +1,6 @@
 """The command line on URDF and ROS 2 files: `wmr analyze` reads them as it reads TOML, `wmr convert` moves a robot
 between formats, bad files and missing extras are one line and exit status 2; `import wmr` needs none of the extras."""
+
 import json
 import subprocess
 import sys
@@ -19,9 +20,16 @@ def _run(capsys, *argv):
     return code, out.out, out.err
 
 
-@pytest.mark.parametrize("path, label", [("urdf/diffbot.urdf", "(2,0)"), ("urdf/swerve.urdf", "(1,2)"),
-                                         ("ros2/diff_drive.yaml", "(2,0)"), ("ros2/mecanum_drive.yaml", "(3,0)"),
-                                         ("ros2/tricycle_steering.yaml", "(1,1)")])
+@pytest.mark.parametrize(
+    "path, label",
+    [
+        ("urdf/diffbot.urdf", "(2,0)"),
+        ("urdf/swerve.urdf", "(1,2)"),
+        ("ros2/diff_drive.yaml", "(2,0)"),
+        ("ros2/mecanum_drive.yaml", "(3,0)"),
+        ("ros2/tricycle_steering.yaml", "(1,1)"),
+    ],
+)
 def test_analyze_reads_urdf_and_ros2_files(capsys, path, label):
     pytest.importorskip("yourdfpy")
     pytest.importorskip("yaml")
@@ -35,8 +43,10 @@ def test_convert_round_trip(capsys, tmp_path):
     urdf, toml = tmp_path / "bot.urdf", tmp_path / "bot.toml"
     assert _run(capsys, "convert", ROOT / "examples" / "paper_dual.toml", urdf)[0] == 0
     assert _run(capsys, "convert", urdf, toml)[0] == 0
-    assert wmr.load(toml).F([0.1, 0.2, 0.3]).round(12).tolist() == \
-        wmr.load(ROOT / "examples" / "paper_dual.toml").F([0.1, 0.2, 0.3]).round(12).tolist()
+    assert (
+        wmr.load(toml).F([0.1, 0.2, 0.3]).round(12).tolist()
+        == wmr.load(ROOT / "examples" / "paper_dual.toml").F([0.1, 0.2, 0.3]).round(12).tolist()
+    )
     code, out, _ = _run(capsys, "convert", ROOT / "examples" / "tricycle.toml", "--to", "ros2")
     assert code == 0 and "tricycle_steering_controller:" in out
 
@@ -62,15 +72,28 @@ def test_convert_refuses_what_a_format_cannot_express(capsys):
 
 def test_a_bad_urdf_is_one_line_with_its_line(capsys, tmp_path):
     pytest.importorskip("yourdfpy")
-    text = (ROOT / "examples" / "urdf" / "diffbot.urdf").read_text().replace('<cylinder radius="0.08" length="0.04"/>',
-                                                                             '<sphere radius="0.08"/>')
+    text = (
+        (ROOT / "examples" / "urdf" / "diffbot.urdf")
+        .read_text()
+        .replace('<cylinder radius="0.08" length="0.04"/>', '<sphere radius="0.08"/>')
+    )
     (tmp_path / "d.urdf").write_text(text)
-    line = text[:text.index('<joint name="left_wheel_joint"')].count("\n") + 1
+    line = text[: text.index('<joint name="left_wheel_joint"')].count("\n") + 1
     code, _, err = _run(capsys, "analyze", tmp_path / "d.urdf")
     assert code == 2 and len(err.splitlines()) == 1
     assert err.startswith(f"wmr analyze: {tmp_path / 'd.urdf'}:{line}: joint 'left_wheel_joint': ")
-    code, out, err = _run(capsys, "analyze", tmp_path / "d.urdf", "--wheel-joints",
-                          "left_wheel_joint=0.08,right_wheel_joint=0.08", "--json", "--grid", "50", "--twists", "5")
+    code, out, err = _run(
+        capsys,
+        "analyze",
+        tmp_path / "d.urdf",
+        "--wheel-joints",
+        "left_wheel_joint=0.08,right_wheel_joint=0.08",
+        "--json",
+        "--grid",
+        "50",
+        "--twists",
+        "5",
+    )
     assert code == 0 and json.loads(out)["class"] == "(2,0)"
 
 
@@ -89,7 +112,9 @@ def test_import_wmr_needs_none_of_the_extras():
 
 def test_the_extras_are_declared():
     import tomllib
+
     extras = tomllib.loads((ROOT / "pyproject.toml").read_text())["project"]["optional-dependencies"]
     from wmr.io.extras import EXTRAS
+
     for extra, (_, dist) in EXTRAS.items():
         assert any(d.lower().startswith(dist) for d in extras[extra]), extra

@@ -1,4 +1,5 @@
 """`wmr analyze`, `wmr ik`, `wmr fk`: tables, JSON that matches the library, one-line errors (exit 2)."""
+
 import json
 import tomllib
 from pathlib import Path
@@ -50,7 +51,7 @@ def test_analyze_table(capsys):
     assert rows["nullity F"] == "3 generic, 3..3" and rows["kappa(J2)"].startswith("1 isotropic")
     assert rows["dead zone"].startswith("radius 1:") and rows["singular"].startswith("none found")
     starts = {len(line) - len(line[13:]) for line in out.splitlines()}
-    assert starts == {13}                                                       # one aligned column
+    assert starts == {13}  # one aligned column
 
 
 # ------------------------------------------------------------------------------------- ik / fk
@@ -59,8 +60,8 @@ def test_ik_json_matches_the_library(capsys):
     assert code == 0
     data = json.loads(out)
     bot = wmr.load(SWERVE)
-    twist = [0.8, 1.0, 0.5]                                                     # wmr's order: psi_dot, x_dot, y_dot
-    beta = wmr.steering_angles(bot, twist)                  # rates >= 0; nearer the current 0: beta - 180, rates < 0
+    twist = [0.8, 1.0, 0.5]  # wmr's order: psi_dot, x_dot, y_dot
+    beta = wmr.steering_angles(bot, twist)  # rates >= 0; nearer the current 0: beta - 180, rates < 0
     assert np.allclose(data["angles_deg"], np.degrees(beta) - 180.0)
     assert np.allclose(list(data["rates"].values()), -wmr.inverse(bot, beta, twist).value)
     assert list(data["rates"]) == list(bot.rate_names)
@@ -72,7 +73,7 @@ def test_ik_without_resteering(capsys):
     code, out, _ = _run(capsys, "ik", SWERVE, "--vy", "0.5", "--current-angles", "0,0", "0", "0", "--json")
     data = json.loads(out)
     assert code == 0 and data["admissible_without_resteering"] and np.allclose(data["resteer_deg"], 0)
-    assert np.allclose(list(data["rates"].values()), -0.5 / 0.0508)           # h_dot = -r theta_dot j
+    assert np.allclose(list(data["rates"].values()), -0.5 / 0.0508)  # h_dot = -r theta_dot j
     code, out, _ = _run(capsys, "ik", SWERVE, "--vx", "0.5", "--current-angles", "0", "0", "0", "0")
     assert code == 0 and "without re-steering: no" in out and "admissible: yes" in out
 
@@ -80,9 +81,10 @@ def test_ik_without_resteering(capsys):
 def test_fk_json_matches_the_library(capsys):
     bot = wmr.load(OFFSET)
     beta = np.radians([10, 20, 30])
-    rates = wmr.inverse(bot, beta, [0.3, -1.0, 0.5]).value                     # compatible rates
-    code, out, _ = _run(capsys, "fk", OFFSET, "--angles", "10", "20", "30",
-                        "--rates=" + ",".join(map(repr, rates.tolist())), "--json")
+    rates = wmr.inverse(bot, beta, [0.3, -1.0, 0.5]).value  # compatible rates
+    code, out, _ = _run(
+        capsys, "fk", OFFSET, "--angles", "10", "20", "30", "--rates=" + ",".join(map(repr, rates.tolist())), "--json"
+    )
     data = json.loads(out)
     assert code == 0 and np.allclose([data["omega"], data["vx"], data["vy"]], [0.3, -1.0, 0.5]) and data["admissible"]
     code, out, _ = _run(capsys, "fk", OFFSET, "--angles", "10", "20", "30", "--rates", "1,2,1,2,1,2", "--json")
@@ -93,8 +95,9 @@ def test_fk_json_matches_the_library(capsys):
 
 
 def test_fk_slip(capsys):
-    code, out, _ = _run(capsys, "fk", SWERVE, "--angles", "0", "0", "0", "90", "--rates", "-10", "-10", "-10", "-10",
-                        "--json")
+    code, out, _ = _run(
+        capsys, "fk", SWERVE, "--angles", "0", "0", "0", "90", "--rates", "-10", "-10", "-10", "-10", "--json"
+    )
     data = json.loads(out)
     assert code == 0 and not data["admissible"] and data["slip"] == pytest.approx(0.622, abs=1e-3)
     code, out, _ = _run(capsys, "fk", SWERVE, "--angles", "0", "0", "0", "0", "--rates", "-10", "-10", "-10", "-10")
@@ -110,20 +113,23 @@ def bad_file(tmp_path):
     return str(path)
 
 
-@pytest.mark.parametrize("argv, words", [
-    (["analyze", "nowhere.toml"], "nowhere.toml"),
-    (["analyze", "BAD"], "bad.toml:4: wheel[1].radius: must be positive"),
-    (["analyze", SWERVE, "--grid", "0"], "grid"),
-    (["ik", "BAD", "--vx", "1"], "bad.toml:4: wheel[1].radius"),
-    (["ik", SWERVE, "--vx", "fast"], "--vx must be a number"),
-    (["ik", SWERVE, "--omega", "nan"], "--omega must be a finite number"),
-    (["ik", SWERVE, "--current-angles", "0", "0"], "--current-angles needs 4 values"),
-    (["ik", SWERVE, "--current-angles", "0", "0", "0", "x"], "--current-angles must be a number"),
-    (["fk", SWERVE, "--angles", "0", "0", "0", "0", "--rates", "1"], "--rates needs 4 values"),
-    (["fk", OFFSET, "--angles", "0", "0", "0", "--rates", "1", "2", "3"], "phi_dot_1 theta_dot_1"),
-    (["fk", SWERVE, "--angles", "0", "0", "0", "inf", "--rates", "1", "1", "1", "1"], "--angles must be a finite"),
-    (["fk", "BAD", "--angles", "0", "--rates", "1"], "bad.toml:4"),
-])
+@pytest.mark.parametrize(
+    "argv, words",
+    [
+        (["analyze", "nowhere.toml"], "nowhere.toml"),
+        (["analyze", "BAD"], "bad.toml:4: wheel[1].radius: must be positive"),
+        (["analyze", SWERVE, "--grid", "0"], "grid"),
+        (["ik", "BAD", "--vx", "1"], "bad.toml:4: wheel[1].radius"),
+        (["ik", SWERVE, "--vx", "fast"], "--vx must be a number"),
+        (["ik", SWERVE, "--omega", "nan"], "--omega must be a finite number"),
+        (["ik", SWERVE, "--current-angles", "0", "0"], "--current-angles needs 4 values"),
+        (["ik", SWERVE, "--current-angles", "0", "0", "0", "x"], "--current-angles must be a number"),
+        (["fk", SWERVE, "--angles", "0", "0", "0", "0", "--rates", "1"], "--rates needs 4 values"),
+        (["fk", OFFSET, "--angles", "0", "0", "0", "--rates", "1", "2", "3"], "phi_dot_1 theta_dot_1"),
+        (["fk", SWERVE, "--angles", "0", "0", "0", "inf", "--rates", "1", "1", "1", "1"], "--angles must be a finite"),
+        (["fk", "BAD", "--angles", "0", "--rates", "1"], "bad.toml:4"),
+    ],
+)
 def test_bad_input_is_one_line(capsys, bad_file, argv, words):
     argv = [bad_file if a == "BAD" else a for a in argv]
     code, out, err = _run(capsys, *argv)
@@ -134,8 +140,10 @@ def test_bad_input_is_one_line(capsys, bad_file, argv, words):
 @pytest.mark.parametrize("error", [ValueError("a bug"), TypeError("another bug"), IndexError("and another")])
 def test_a_library_bug_is_not_called_bad_input(capsys, monkeypatch, error):
     """A builtin exception from inside wmr (here a planted one) is a bug: traceback, a request to report, exit 1."""
+
     def broken(*args, **kwargs):
         raise error
+
     monkeypatch.setattr(wmr, "steering_angles", broken)
     code, out, err = _run(capsys, "ik", SWERVE, "--vx", "1")
     assert code == 1 and out == ""
@@ -146,11 +154,14 @@ def test_a_library_bug_is_not_called_bad_input(capsys, monkeypatch, error):
 def test_input_errors_are_the_package_s_own(capsys, monkeypatch):
     """What the command line reports as bad input is an InputError (which is also a ValueError or TypeError)."""
     from wmr.errors import InputError
+
     with pytest.raises(InputError) as info:
         wmr.load(ROOT / "examples" / "swerve4.toml").J1(L=-1.0)
     assert isinstance(info.value, ValueError)
+
     def bad(*args, **kwargs):
         raise info.value
+
     monkeypatch.setattr(wmr, "steering_angles", bad)
     code, _, err = _run(capsys, "ik", SWERVE, "--vx", "1")
     assert code == 2 and err == f"wmr ik: {info.value}\n"
@@ -162,7 +173,8 @@ def test_ik_fixed_wheels(capsys):
     data = json.loads(out)
     assert code == 0 and data["admissible"] and data["admissible_without_resteering"]
     assert data["angles_deg"][:2] == [90.0, 90.0] and data["resteer_deg"][:2] == [0.0, 0.0]
-    assert np.allclose([data["rates"]["theta_dot_1"], data["rates"]["theta_dot_2"]],
-                       [(0.5 - 0.2) / 0.08, (0.5 + 0.2) / 0.08])
-    code, out, _ = _run(capsys, "ik", diff, "--vy", "0.5")                     # sideways: impossible
+    assert np.allclose(
+        [data["rates"]["theta_dot_1"], data["rates"]["theta_dot_2"]], [(0.5 - 0.2) / 0.08, (0.5 + 0.2) / 0.08]
+    )
+    code, out, _ = _run(capsys, "ik", diff, "--vy", "0.5")  # sideways: impossible
     assert code == 0 and "admissible: no" in out and "without re-steering: no" in out

@@ -1,4 +1,5 @@
 """``wmr sweep``: the table, the JSON, the progress bar, Dask and one-line errors."""
+
 import json
 
 import numpy as np
@@ -20,6 +21,7 @@ def robot_file(tmp_path, monkeypatch):
         if str(p) != str(path):
             raise OSError(f"{p}: no such file")
         return bot
+
     monkeypatch.setattr(wmr, "load", load, raising=False)
     return str(path), bot
 
@@ -30,8 +32,25 @@ def test_table_and_json_match_the_library(robot_file, capsys):
     table = capsys.readouterr().out
     res = wmr.sweep(bot, "mobility", Grid((12, 12, 12)))
     assert table.strip() == res.summary()
-    assert main(["sweep", path, "kappa_J", "--angles", "any", "--sample", "2e4", "--seed", "5", "--json",
-                 "--quantiles", "0.5,1"]) == 0
+    assert (
+        main(
+            [
+                "sweep",
+                path,
+                "kappa_J",
+                "--angles",
+                "any",
+                "--sample",
+                "2e4",
+                "--seed",
+                "5",
+                "--json",
+                "--quantiles",
+                "0.5,1",
+            ]
+        )
+        == 0
+    )
     out = json.loads(capsys.readouterr().out)
     res = wmr.sweep(bot, "kappa_J", Sample(20000, seed=5), quantiles=[0.5, 1.0])
     assert out["count"] == 20000 and out["quantiles"]["0.5"] == res.quantiles[0.5]
@@ -62,15 +81,18 @@ def test_dask_local_cluster(robot_file, capsys):
     assert out["counts"] == {str(k): v for k, v in wmr.sweep(bot, "rank_F", Grid(10)).counts.items()}
 
 
-@pytest.mark.parametrize("argv, words", [
-    (["--sample", "0"], "--sample"),
-    (["--sample", "many"], "--sample"),
-    (["--grid", "3,3"], "steps"),
-    (["--quantiles", "0.5,x"], "--quantiles"),
-    (["--quantiles", "2"], "quantiles"),
-    (["--range", "10", "10"], "hi"),
-    (["--length", "-1"], "L"),
-])
+@pytest.mark.parametrize(
+    "argv, words",
+    [
+        (["--sample", "0"], "--sample"),
+        (["--sample", "many"], "--sample"),
+        (["--grid", "3,3"], "steps"),
+        (["--quantiles", "0.5,x"], "--quantiles"),
+        (["--quantiles", "2"], "quantiles"),
+        (["--range", "10", "10"], "hi"),
+        (["--length", "-1"], "L"),
+    ],
+)
 def test_bad_input_is_one_line(robot_file, capsys, argv, words):
     path, _ = robot_file
     assert main(["sweep", path, "kappa_J", *argv]) == 2

@@ -1,5 +1,6 @@
 """Issue 24, points 6 and 7: the conventions users bring (WPILib, ROS), WPILib objects, degrees and radians,
 ``--current-angles``, the drawing's arrows, and a slip tolerance the user sets."""
+
 import json
 import math
 from pathlib import Path
@@ -26,10 +27,11 @@ def _run(capsys, *argv):
 def test_a_chassis_speeds_is_read_by_its_fields():
     from wpimath.geometry import Translation2d
     from wpimath.kinematics import ChassisSpeeds, SwerveDrive4Kinematics
+
     bot = wmr.load(SWERVE)
-    speeds = ChassisSpeeds(1.0, 0.5, 0.8)                                       # vx, vy, omega
+    speeds = ChassisSpeeds(1.0, 0.5, 0.8)  # vx, vy, omega
     cmd = wmr.swerve.module_commands(bot, speeds)
-    want = wmr.swerve.module_commands(bot, [0.8, 1.0, 0.5])                      # wmr's order
+    want = wmr.swerve.module_commands(bot, [0.8, 1.0, 0.5])  # wmr's order
     assert np.allclose(cmd.beta, want.beta) and np.allclose(cmd.speed, want.speed)
     kin = SwerveDrive4Kinematics(*[Translation2d(*map(float, p)) for p in bot.mount_points])
     states = kin.toSwerveModuleStates(speeds)
@@ -43,6 +45,7 @@ def test_a_chassis_speeds_is_read_by_its_fields():
 
 def test_a_twist_object_is_never_read_as_numbers_where_none_is_expected():
     from wpimath.kinematics import ChassisSpeeds
+
     bot = wmr.load(SWERVE)
     with pytest.raises(InputError, match="ChassisSpeeds"):
         wmr.steering_angles(bot, [0.8, 1.0, 0.5], current=ChassisSpeeds(1.0, 2.0, 3.0))  # type: ignore[arg-type]
@@ -51,6 +54,7 @@ def test_a_twist_object_is_never_read_as_numbers_where_none_is_expected():
 def test_twist2d_and_a_list_of_chassis_speeds():
     from wpimath.geometry import Twist2d
     from wpimath.kinematics import ChassisSpeeds
+
     bot = wmr.load(SWERVE)
     assert np.allclose(wmr.steering_angles(bot, Twist2d(1.0, 0.5, 0.8)), wmr.steering_angles(bot, [0.8, 1.0, 0.5]))
     many = wmr.steering_angles(bot, [ChassisSpeeds(1.0, 0.0, 0.0), ChassisSpeeds(0.0, 1.0, 0.0)])
@@ -65,7 +69,7 @@ def test_degrees_and_radians_are_named():
     a = wmr.FixedWheel((0.0, 0.2), r=0.05, angle_deg=90)
     assert a.angle == pytest.approx(math.pi / 2) and a == wmr.FixedWheel((0.0, 0.2), r=0.05, angle=math.pi / 2)
     b = wmr.SwedishWheel((0.0, 0.2), r=0.05, angle_deg=90, roller_deg=45)
-    text = wmr.dump(wmr.Robot([a, b]))                                           # the file's keys: the same degrees
+    text = wmr.dump(wmr.Robot([a, b]))  # the file's keys: the same degrees
     assert "angle_deg = 90.0" in text and "roller_deg = 45.0" in text
     with pytest.raises(InputError, match="not both"):
         wmr.FixedWheel((0.0, 0.2), r=0.05, angle=1.0, angle_deg=30)
@@ -75,7 +79,7 @@ def test_conventions_are_inverse_of_each_other():
     beta = np.linspace(-3, 3, 13)
     for name in ("wmr", "wpilib", "ros"):
         assert np.allclose(np.cos(angle_from(angle_to(beta, name), name) - beta), 1.0)
-    assert float(np.degrees(angle_to(np.pi / 2, "wpilib"))) == pytest.approx(0.0)     # rolls forward: 0 in WPILib
+    assert float(np.degrees(angle_to(np.pi / 2, "wpilib"))) == pytest.approx(0.0)  # rolls forward: 0 in WPILib
 
 
 def test_ik_in_wpilib_convention(capsys):
@@ -96,20 +100,22 @@ def test_current_angles_default_is_what_help_says(capsys, convention):
     _, default, _ = _run(capsys, *argv)
     _, zeros, _ = _run(capsys, *argv, "--current-angles", "0", "0", "0", "0")
     assert json.loads(default) == json.loads(zeros)
-    assert all(abs(a) <= 90 + 1e-9 for a in json.loads(default)["resteer_deg"])    # the nearer of beta, beta + pi
+    assert all(abs(a) <= 90 + 1e-9 for a in json.loads(default)["resteer_deg"])  # the nearer of beta, beta + pi
 
 
 def test_fk_in_wpilib_convention_matches_wpilib(capsys):
     from wpimath.geometry import Rotation2d, Translation2d
     from wpimath.kinematics import SwerveDrive4Kinematics, SwerveModuleState
+
     bot = wmr.load(SWERVE)
     kin = SwerveDrive4Kinematics(*[Translation2d(*map(float, p)) for p in bot.mount_points])
     heading, speed = [10.0, 20.0, 30.0, 40.0], [1.0, 1.2, 0.8, 1.1]
     states = [SwerveModuleState(s, Rotation2d.fromDegrees(a)) for a, s in zip(heading, speed)]
     cs = kin.toChassisSpeeds((states[0], states[1], states[2], states[3]))
     rates = [s / 0.0508 for s in speed]
-    code, out, _ = _run(capsys, "fk", SWERVE, "--angles", *heading, "--rates", *rates, "--convention", "wpilib",
-                        "--json")
+    code, out, _ = _run(
+        capsys, "fk", SWERVE, "--angles", *heading, "--rates", *rates, "--convention", "wpilib", "--json"
+    )
     data = json.loads(out)
     assert code == 0 and np.allclose([data["vx"], data["vy"], data["omega"]], [cs.vx, cs.vy, cs.omega], atol=1e-12)
 
@@ -117,22 +123,24 @@ def test_fk_in_wpilib_convention_matches_wpilib(capsys):
 def test_draw_robot_arrows_point_where_the_robot_drives():
     pytest.importorskip("matplotlib")
     import matplotlib
+
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     from matplotlib.patches import FancyArrowPatch
 
     from wmr.plot.robot import draw_robot
+
     bot = wmr.load(SWERVE)
-    twist = [0.0, 1.0, 0.0]                                                     # forward
+    twist = [0.0, 1.0, 0.0]  # forward
     beta = wmr.steering_angles(bot, twist)
-    assert (wmr.inverse(bot, beta, twist).value > 0).all()                      # positive rates
+    assert (wmr.inverse(bot, beta, twist).value > 0).all()  # positive rates
     for arrows, sign in (("travel", 1.0), ("j", -1.0)):
         fig, ax = plt.subplots()
         draw_robot(ax, bot, beta, arrows=arrows)
         tips = [p for p in ax.patches if isinstance(p, FancyArrowPatch) and p.get_facecolor()[:3] == (1.0, 1.0, 1.0)]
         assert len(tips) == 4
         for p in tips:
-            (x0, _), (x1, _) = p._posA_posB                      # type: ignore[attr-defined]  # tail, head
+            (x0, _), (x1, _) = p._posA_posB  # type: ignore[attr-defined]  # tail, head
             assert sign * (x1 - x0) > 0
         plt.close(fig)
 
@@ -146,9 +154,9 @@ def test_rounded_rates_do_not_slip_by_default(capsys):
     argv = ["fk", SWERVE, "--angles", *np.round(np.degrees(beta), 10), "--rates", *rates, "--json"]
     code, out, _ = _run(capsys, *argv)
     data = json.loads(out)
-    tol = 0.0508 * 2 * np.pi / (2048 * 0.02)                                   # one count per 20 ms at the rim
+    tol = 0.0508 * 2 * np.pi / (2048 * 0.02)  # one count per 20 ms at the rim
     assert code == 0 and data["admissible"] and data["slip_tolerance"] == pytest.approx(tol)
-    assert 1e-7 < data["slip_max_wheel"] < 1e-4                                 # the rounding, far below a count
+    assert 1e-7 < data["slip_max_wheel"] < 1e-4  # the rounding, far below a count
     code, out, _ = _run(capsys, *argv, "--slip-tolerance", "0")
     assert not json.loads(out)["admissible"]
     code, out, _ = _run(capsys, *argv, "--slip-tolerance", "1e-7")
@@ -160,9 +168,9 @@ def test_rounded_rates_do_not_slip_by_default(capsys):
 def test_forward_slip_tolerance_in_python():
     bot = wmr.load(SWERVE)
     beta = np.zeros(4)
-    rates = np.array([10.0, 10.0, 10.0, 10.0 + 1e-3])                          # wheel 4 off by 1e-3 rad/s
+    rates = np.array([10.0, 10.0, 10.0, 10.0 + 1e-3])  # wheel 4 off by 1e-3 rad/s
     assert not wmr.forward(bot, beta, rates).admissible
-    assert wmr.forward(bot, beta, rates, slip_tolerance=1e-4).admissible        # slip ~ 0.0508e-3 * 3/4 m/s
+    assert wmr.forward(bot, beta, rates, slip_tolerance=1e-4).admissible  # slip ~ 0.0508e-3 * 3/4 m/s
     assert not wmr.forward(bot, beta, rates, slip_tolerance=1e-5).admissible
     with pytest.raises(InputError, match="slip_tolerance"):
         wmr.forward(bot, beta, rates, slip_tolerance=-1.0)

@@ -3,6 +3,7 @@
 Modelled on python-control's ``docstrings_test.py``: the signature is the truth, the
 ``Parameters`` section must list every argument (and nothing that is not one).
 """
+
 import dataclasses
 import doctest
 import enum
@@ -55,15 +56,23 @@ def _module_callables():
                 out.append((f"{module}.{name}", obj))
             elif inspect.isclass(obj) and "Backend" not in name:
                 out.append((f"{module}.{name}", obj))
-                out += [(f"{module}.{name}.{k}", v) for k, v in vars(obj).items()
-                        if inspect.isfunction(v) and not k.startswith("_")]
+                out += [
+                    (f"{module}.{name}.{k}", v)
+                    for k, v in vars(obj).items()
+                    if inspect.isfunction(v) and not k.startswith("_")
+                ]
     return out
 
 
 PUBLIC = _public_callables()
 MODULE_LEVEL = [(n, o) for n, o in _module_callables() if all(o is not p for _, p in PUBLIC)]
-PROPERTIES = [(f"{n}.{m}", p) for n, c in PUBLIC if inspect.isclass(c)
-              for m, p in inspect.getmembers(c, lambda x: isinstance(x, property)) if not m.startswith("_")]
+PROPERTIES = [
+    (f"{n}.{m}", p)
+    for n, c in PUBLIC
+    if inspect.isclass(c)
+    for m, p in inspect.getmembers(c, lambda x: isinstance(x, property))
+    if not m.startswith("_")
+]
 
 
 def sections(doc):
@@ -98,8 +107,11 @@ def signature_parameters(obj):
         sig = inspect.signature(obj)
     except (TypeError, ValueError):
         return []
-    return [p.name for p in sig.parameters.values()
-            if p.name not in ("self", "cls") and p.kind not in (p.VAR_POSITIONAL, p.VAR_KEYWORD)]
+    return [
+        p.name
+        for p in sig.parameters.values()
+        if p.name not in ("self", "cls") and p.kind not in (p.VAR_POSITIONAL, p.VAR_KEYWORD)
+    ]
 
 
 @pytest.mark.parametrize("name, obj", PUBLIC, ids=[n for n, _ in PUBLIC])
@@ -125,12 +137,15 @@ def numpydoc_problems(name, obj):
     if not (doc and doc.strip()):
         return [f"{name} has no docstring"]
     if inspect.isclass(obj) and issubclass(obj, enum.Enum):
-        return []                                          # the signature is Enum's machinery
+        return []  # the signature is Enum's machinery
     params = signature_parameters(obj)
     documented = documented_parameters(doc)
     if dataclasses.is_dataclass(obj):
-        documented += [line.split(" : ")[0].strip() for line in sections(doc).get("Attributes", [])
-                       if line and not line.startswith(" ")]
+        documented += [
+            line.split(" : ")[0].strip()
+            for line in sections(doc).get("Attributes", [])
+            if line and not line.startswith(" ")
+        ]
     out = []
     missing = [p for p in params if p not in documented]
     if missing:
@@ -150,6 +165,7 @@ def test_module_level_docstrings(name, obj):
 def test_checker_catches_missing_sections():
     def f(a):
         """Summary only."""
+
     assert numpydoc_problems("f", f) == ["f: parameters not documented: ['a']", "f: no 'Returns' section"]
 
 
@@ -176,6 +192,7 @@ def test_parser_catches_an_undocumented_parameter():
         -------
         int
         """
+
     assert documented_parameters(inspect.getdoc(f)) == ["a"]
     assert "b" not in documented_parameters(inspect.getdoc(f))
 
@@ -210,7 +227,11 @@ def test_module_has_docstring_and_all(module):
 
 def test_core_modules_have_examples():
     """Worked examples (which double as doctests) exist across the core."""
-    finder = doctest.DocTestFinder()             # counted, not run again: test_doctests runs each one
-    n = sum(not ex.options.get(doctest.SKIP) for module in ALL_MODULES
-            for t in finder.find(importlib.import_module(module)) for ex in t.examples)
+    finder = doctest.DocTestFinder()  # counted, not run again: test_doctests runs each one
+    n = sum(
+        not ex.options.get(doctest.SKIP)
+        for module in ALL_MODULES
+        for t in finder.find(importlib.import_module(module))
+        for ex in t.examples
+    )
     assert n >= 30

@@ -1,5 +1,6 @@
 """Issue 24, points 1-4 and 8: twelve engineers' robots (examples/engineers/), actuation, limitations, checked
 advice, drivable sweeps and plain-language output, against hand computations."""
+
 import json
 from pathlib import Path
 
@@ -17,10 +18,18 @@ ENG = ROOT / "examples" / "engineers"
 
 #: Campion's class (by the wheel types: Campion, Bastin & d'Andrea-Novel 1996) and the actuated mobility by hand
 TABLE = {
-    "car": ("(1,1)", 1), "forklift": ("(1,1)", 1), "skid_steer6": ("(1,0)", 1), "diff_drive_castors": ("(2,0)", 2),
-    "swerve_offcentre": ("(1,2)", 1), "x_drive": ("(3,0)", 3), "mecanum_x": ("(3,0)", 3),
-    "mecanum_same_hand": ("(3,0)", 2), "kiwi": ("(3,0)", 3), "agv_two_steer": ("(1,2)", 1),
-    "powered_castors3": ("(3,0)", 3), "rover6": ("(1,1)", 1),
+    "car": ("(1,1)", 1),
+    "forklift": ("(1,1)", 1),
+    "skid_steer6": ("(1,0)", 1),
+    "diff_drive_castors": ("(2,0)", 2),
+    "swerve_offcentre": ("(1,2)", 1),
+    "x_drive": ("(3,0)", 3),
+    "mecanum_x": ("(3,0)", 3),
+    "mecanum_same_hand": ("(3,0)", 2),
+    "kiwi": ("(3,0)", 3),
+    "agv_two_steer": ("(1,2)", 1),
+    "powered_castors3": ("(3,0)", 3),
+    "rover6": ("(1,1)", 1),
 }
 
 
@@ -38,7 +47,7 @@ def _twist_dim(F, cols):
     """dim of the twist part of N(F[:, cols]) from the SVD of the column-scaled dense matrix."""
     A = F[:, cols] / np.linalg.norm(F[:, cols], axis=0).clip(1e-300)
     _, s, Vt = np.linalg.svd(A)
-    N = Vt[int((s > wmr.TOL * s[0]).sum()):].T
+    N = Vt[int((s > wmr.TOL * s[0]).sum()) :].T
     return int((np.linalg.svd(N[:3], compute_uv=False) > 1e-6).sum()) if N.shape[1] else 0
 
 
@@ -71,17 +80,17 @@ def test_mecanum_same_hand_motor_map_has_rank_2_by_hand():
     rows = [[u.roller_axis() @ np.array([-u.position[1], u.position[0]]), *u.roller_axis()] for u in good.wheels]
     assert np.linalg.matrix_rank(np.array(rows)) == 3
     U = free_twists(bot, np.zeros(4))
-    assert U.shape[1] == 1 and abs(U[0, 0]) < 1e-12 and np.isclose(abs(U[1, 0]), abs(U[2, 0]))   # the diagonal
+    assert U.shape[1] == 1 and abs(U[0, 0]) < 1e-12 and np.isclose(abs(U[1, 0]), abs(U[2, 0]))  # the diagonal
 
 
 def test_inverse_refuses_a_motion_the_motors_do_not_command():
     bot = _load("mecanum_same_hand")
-    sol = wmr.inverse(bot, np.zeros(4), [0.0, 1.0, 1.0])                     # along the 45 deg diagonal
+    sol = wmr.inverse(bot, np.zeros(4), [0.0, 1.0, 1.0])  # along the 45 deg diagonal
     motors = sol.value[driven_columns(bot)]
     assert sol.no_slip and not sol.actuated and not sol.admissible and np.allclose(motors, 0, atol=1e-12)
     part, ok = uncontrolled(bot, np.zeros(4), [0.0, 1.0, 1.0])
     assert not ok and np.allclose(part, [0.0, 1.0, 1.0])
-    assert wmr.inverse(bot, np.zeros(4), [0.0, 1.0, -1.0]).admissible        # the other diagonal: driven
+    assert wmr.inverse(bot, np.zeros(4), [0.0, 1.0, -1.0]).admissible  # the other diagonal: driven
     assert wmr.inverse(_load("mecanum_x"), np.zeros(4), [0.0, 1.0, 1.0]).admissible
 
 
@@ -100,8 +109,7 @@ def test_parallel_omni_wheels_cannot_be_driven_sideways(capsys, tmp_path):
 
 
 def test_same_hand_mecanum_is_flagged_and_its_fix_is_checked(capsys):
-    code, out, _ = _run(capsys, "analyze", ENG / "mecanum_same_hand.toml", "--json", "--grid", "100",
-                        "--twists", "100")
+    code, out, _ = _run(capsys, "analyze", ENG / "mecanum_same_hand.toml", "--json", "--grid", "100", "--twists", "100")
     data = json.loads(out)
     assert code == 0 and (data["class"], data["actuated_mobility"]) == ("(3,0)", 2)
     assert data["uncontrolled"] == ["diagonally (along 45 deg from x)"]
@@ -121,7 +129,7 @@ def test_mecanum_x_omni_advice_is_not_advised():
     omni = [t for t in tips if "omni" in t.text]
     assert len(omni) == 1 and not omni[0].advised
     assert omni[0].after["kappa_J2"] == pytest.approx(1.0) and omni[0].after["actuated_mobility"] == 2
-    assert omni[0].before["kappa_J2"] == pytest.approx(1 + np.sqrt(2))          # sqrt((1 + cos g) / (1 - cos g))
+    assert omni[0].before["kappa_J2"] == pytest.approx(1 + np.sqrt(2))  # sqrt((1 + cos g) / (1 - cos g))
 
 
 def test_advice_that_gains_nothing_by_itself_says_so():
@@ -165,15 +173,18 @@ def test_limitations_of_the_others():
 def test_car_advice_gives_the_L_of_the_moved_robot():
     car = _load("car")
     # by hand: mount points (0, +-0.775), (2.7, +-0.775); centroid (1.35, 0)
-    assert wmr.characteristic_length(car) == pytest.approx(np.sqrt((2 * 0.775 ** 2 + 2 * (2.7 ** 2 + 0.775 ** 2)) / 4))
-    L_moved = np.hypot(1.35, 0.775)                                             # every |d_i| after the move
+    assert wmr.characteristic_length(car) == pytest.approx(np.sqrt((2 * 0.775**2 + 2 * (2.7**2 + 0.775**2)) / 4))
+    L_moved = np.hypot(1.35, 0.775)  # every |d_i| after the move
     moved = car.moved(origin=(1.35, 0.0))
     assert wmr.characteristic_length(moved) == pytest.approx(L_moved) and L_moved == pytest.approx(1.557, abs=5e-4)
     assert float(wmr.condition_number(moved.J1(L=L_moved))) == pytest.approx(1.0)
     # the old claim: kappa(J_L1) = 1 at L = 2.06 after the move is false; sqrt(w / (a / L^2)) by (34)
     L_old = wmr.characteristic_length(car)
-    assert float(wmr.condition_number(moved.J1(L=L_old))) == pytest.approx(L_old / L_moved) == pytest.approx(1.32,
-                                                                                                           abs=5e-3)
+    assert (
+        float(wmr.condition_number(moved.J1(L=L_old)))
+        == pytest.approx(L_old / L_moved)
+        == pytest.approx(1.32, abs=5e-3)
+    )
     tips, iso = advice(car)
     assert not iso["J_L1"] and tips[0].matrix == "J_L1" and tips[0].advised
     assert "then L = 1.557 gives kappa(J_L1) = 1 (now 2.191 at L = 2.06)" in tips[0].text
@@ -207,6 +218,7 @@ def test_default_swerve_sweep_is_over_drivable_configurations(capsys):
 def test_drivable_kappa_is_not_the_torus_kappa():
     """kappa(J) over what the swerve can drive is far worse than over random angles (which it never drives)."""
     from wmr.analysis.sweep import Drivable, Sample
+
     bot = wmr.load(ROOT / "examples" / "swerve4.toml")
     drive = wmr.sweep(bot, "kappa_J", Drivable(200000, seed=2), quantiles=(0.5, 0.95))
     torus = wmr.sweep(bot, "kappa_J", Sample(200000, seed=2), quantiles=(0.5, 0.95))
@@ -218,15 +230,16 @@ def test_drivable_kappa_is_not_the_torus_kappa():
 
 def test_car_drivable_configurations_turn():
     from wmr.analysis.sweep import Drivable
+
     car = _load("car")
     beta = Drivable(2000, seed=1).bind(car).configurations(4, 0, 2000)
     assert (wmr.mobility(car, beta) >= 1).all()
     front = np.degrees(beta[:, 2:]) % 180
-    assert np.mean(np.abs(front - 90) > 1) > 0.9                               # not only straight ahead
+    assert np.mean(np.abs(front - 90) > 1) > 0.9  # not only straight ahead
     # the front wheels are coordinated (Ackermann): their axles meet on the rear axle line x = 0
     d = car.mount_points
     t = np.tan(beta[:, 2:])
-    y_meet = d[2:, 1] + (0 - d[2:, 0]) * t                                      # axle lines at x = 0
+    y_meet = d[2:, 1] + (0 - d[2:, 0]) * t  # axle lines at x = 0
     ok = np.abs(np.cos(beta[:, 2])) > 1e-6
     assert np.allclose(y_meet[ok, 0], y_meet[ok, 1], rtol=1e-6, atol=1e-9)
 
@@ -235,20 +248,22 @@ def test_car_drivable_configurations_turn():
 def test_fused_drivable_kappa_equals_the_general_kernels(name):
     from wmr.analysis.sweep import Drivable
     from wmr.analysis.sweep.motions import kappa_J_of_twists
+
     bot = _load(name)
     L = wmr.characteristic_length(bot)
     src = Drivable(5000, seed=4).bind(bot)
     tw, cur = src.twists(0, 5000)
-    tw[0] = [1.0, -bot.mount_points[0, 1], bot.mount_points[0, 0]]            # wheel 1 at the centre: still
+    tw[0] = [1.0, -bot.mount_points[0, 1], bot.mount_points[0, 0]]  # wheel 1 at the centre: still
     fused = kappa_J_of_twists(bot, tw, L)
-    if fused is None:                                                          # castors: no fused kernel
+    if fused is None:  # castors: no fused kernel
         assert not all(u.rolls_in_plane for u in bot.wheels)
         return
     want = wmr.condition_number(bot.J(wmr.steering_angles(bot, tw, cur), L=L))
     fin = np.isfinite(want)
 
-    def close(got, ref):                  # both within the SVD's own accuracy, ~eps kappa, or 1e-12
+    def close(got, ref):  # both within the SVD's own accuracy, ~eps kappa, or 1e-12
         return np.all(np.abs(got / ref - 1) <= 1e-12 + 64 * np.finfo(float).eps * ref)
+
     assert np.array_equal(np.isfinite(fused), fin) and close(fused[fin], want[fin])
     res = wmr.sweep(bot, "kappa_J", Drivable(5000, seed=4), keep=True)
     assert close(res.values, wmr.condition_number(bot.J(src.configurations(4, 0, 5000), L=L)))
@@ -259,13 +274,21 @@ def test_analyze_explains_itself(capsys):
     code, out, _ = _run(capsys, "analyze", ENG / "car.toml", "--grid", "200", "--twists", "50")
     assert code == 0
     assert "What the rows mean" in out and "rank-F" in out and "nullity" in out and "J_L1" in out
-    singular = out[out.index("singular"):]
+    singular = out[out.index("singular") :]
     assert "means: the wheels all point the same way" in singular and "steer first" in singular
 
 
-@pytest.mark.parametrize("term, words", [("rank-F", "no-slip equations"), ("nullity", "free motions"),
-                                          ("J_L1", "mount points"), ("J2", "wheel rates"),
-                                          ("through-P", "stands still"), ("kappa(J_L1)", "C is the centroid")])
+@pytest.mark.parametrize(
+    "term, words",
+    [
+        ("rank-F", "no-slip equations"),
+        ("nullity", "free motions"),
+        ("J_L1", "mount points"),
+        ("J2", "wheel rates"),
+        ("through-P", "stands still"),
+        ("kappa(J_L1)", "C is the centroid"),
+    ],
+)
 def test_explain(capsys, term, words):
     code, out, _ = _run(capsys, "explain", term)
     assert code == 0 and words in out.replace("\n", " ")

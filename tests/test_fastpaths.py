@@ -1,5 +1,6 @@
 """Every fast path against the dense reference (wmr.analysis.reference), on random, singular and
 nearly singular members; the closed forms against 40-digit arithmetic where the SVD is not exact enough."""
+
 import mpmath
 import numpy as np
 import pytest
@@ -58,14 +59,14 @@ def test_det_equals_lu(n, batch):
 
 def test_det_singular_members_and_the_paper_robot():
     A = np.random.default_rng(0).normal(size=(1000, 3, 3))
-    A[::3, 2] = A[::3, 0] - 2 * A[::3, 1]                       # exact linear dependence (up to rounding)
-    A[1::3, :, 1] = 0.0                                          # a zero column: det exactly 0
+    A[::3, 2] = A[::3, 0] - 2 * A[::3, 1]  # exact linear dependence (up to rounding)
+    A[1::3, :, 1] = 0.0  # a zero column: det exactly 0
     got = LA.det(A)
     assert np.all(got[1::3] == 0.0)
     assert np.allclose(got, np.linalg.det(A), rtol=1e-11, atol=1e-13)
     bot = wmr.paper_robot("centred", L=0.3, r=0.05)
     beta = np.random.default_rng(1).uniform(-np.pi, np.pi, (5000, 3))
-    beta[:100] = 0.7                                             # all wheels parallel: singular
+    beta[:100] = 0.7  # all wheels parallel: singular
     J = bot.J(beta, L=0.3)
     got, want = LA.det(J), R.det(R.J(bot, beta, 0.3))
     assert np.allclose(got, want, rtol=1e-12, atol=1e-18) and np.all(np.abs(got[:100]) < 1e-17)
@@ -83,22 +84,33 @@ def test_certified_rank_equals_svd_rank(shape):
     A = rng.normal(size=(3000,) + shape)
     p = min(shape)
     if shape[0] < shape[1]:
-        A[::4, -1, :] = 0.0                                      # rank-deficient members (a zero row)
+        A[::4, -1, :] = 0.0  # rank-deficient members (a zero row)
     else:
-        A[::4, ..., -1] = 0.0                                    # rank-deficient members (a zero column)
-    A[1::4] *= 10.0 ** rng.uniform(-12, 12, (750, 1, 1))         # all scales, absolute part of the rule
+        A[::4, ..., -1] = 0.0  # rank-deficient members (a zero column)
+    A[1::4] *= 10.0 ** rng.uniform(-12, 12, (750, 1, 1))  # all scales, absolute part of the rule
     if p > 1:
-        A[2::4, :, 0] = A[2::4, :, 1] * (1 + TOL * rng.uniform(0.5, 3, (750, 1)))   # nearly dependent
+        A[2::4, :, 0] = A[2::4, :, 1] * (1 + TOL * rng.uniform(0.5, 3, (750, 1)))  # nearly dependent
     assert np.array_equal(LA.rank(A), R.rank(A))
     ok = _closed.certified_full_rank(A.reshape((-1,) + shape))
-    assert ok.any() and not ok.all()                             # both paths ran
-    assert np.all(R.rank(A)[ok] == p)                            # a certificate is never wrong
+    assert ok.any() and not ok.all()  # both paths ran
+    assert np.all(R.rank(A)[ok] == p)  # a certificate is never wrong
 
 
 # ------------------------------------------------------------------------------ kappa 3x3
 @pytest.mark.parametrize("scale", [1e-40, 1e-3, 1.0, 1e5])
-@pytest.mark.parametrize("kind", ["random", "graded", "near-isotropic", "isotropic", "double-smallest",
-                                  "double-largest", "rank-2", "near-threshold"])
+@pytest.mark.parametrize(
+    "kind",
+    [
+        "random",
+        "graded",
+        "near-isotropic",
+        "isotropic",
+        "double-smallest",
+        "double-largest",
+        "rank-2",
+        "near-threshold",
+    ],
+)
 def test_kappa_3x3_agrees_with_svd(kind, scale):
     """Same infs as the SVD rule; finite values within the sum of both methods' errors."""
     rng = np.random.default_rng(len(kind))
@@ -127,7 +139,7 @@ def test_kappa_3x3_takes_the_closed_form_on_the_paper_robot():
     beta = np.random.default_rng(2).uniform(-np.pi, np.pi, (20000, 3))
     J = bot.J(beta, L=0.3)
     kappa, accepted = _closed.condition_number_3x3(J)
-    assert accepted.mean() > 0.98                                # the SVD is the exception
+    assert accepted.mean() > 0.98  # the SVD is the exception
     want = R.condition_number(R.J(bot, beta, 0.3))
     got = LA.condition_number(J)
     fin = np.isfinite(want)
@@ -138,31 +150,39 @@ def test_kappa_3x3_takes_the_closed_form_on_the_paper_robot():
 
 # ------------------------------------------------------------------------------ kinematics
 def _mixed_robot():
-    return wmr.Robot([wmr.OffsetWheel((0.4, 0.1), r=0.05, d=0.02), wmr.CentredWheel((-0.3, 0.25), r=0.06),
-                      wmr.DualWheel((-0.1, -0.35), r=0.04, b=0.03), wmr.CentredWheel((0.2, -0.2), r=0.05)])
+    return wmr.Robot(
+        [
+            wmr.OffsetWheel((0.4, 0.1), r=0.05, d=0.02),
+            wmr.CentredWheel((-0.3, 0.25), r=0.06),
+            wmr.DualWheel((-0.1, -0.35), r=0.04, b=0.03),
+            wmr.CentredWheel((0.2, -0.2), r=0.05),
+        ]
+    )
 
 
-ROBOTS = {"centred": lambda: wmr.paper_robot("centred", L=0.3, r=0.05),
-          "offset": lambda: wmr.paper_robot("offset", L=0.3, r=0.05, d=0.02),
-          "dual": lambda: wmr.paper_robot("dual", L=0.3, r=0.05, b=0.04),
-          "mixed": _mixed_robot}
+ROBOTS = {
+    "centred": lambda: wmr.paper_robot("centred", L=0.3, r=0.05),
+    "offset": lambda: wmr.paper_robot("offset", L=0.3, r=0.05, d=0.02),
+    "dual": lambda: wmr.paper_robot("dual", L=0.3, r=0.05, b=0.04),
+    "mixed": _mixed_robot,
+}
 
 
 def _configurations(bot, n, seed):
     """Random angles, plus singular ones: all wheels parallel, and axles through one point."""
     rng = np.random.default_rng(seed)
     beta = rng.uniform(-np.pi, np.pi, (n, bot.w))
-    beta[: n // 4] = rng.uniform(-np.pi, np.pi, (n // 4, 1))                  # parallel wheels
+    beta[: n // 4] = rng.uniform(-np.pi, np.pi, (n // 4, 1))  # parallel wheels
     twist = rng.normal(size=(n, 3))
-    beta[n // 4: n // 2] = wmr.steering_angles(bot, twist[n // 4: n // 2])    # axles through the IC
-    beta[n // 2: n // 2 + 50] += 1e-9 * rng.normal(size=(50, bot.w))          # nearly so
+    beta[n // 4 : n // 2] = wmr.steering_angles(bot, twist[n // 4 : n // 2])  # axles through the IC
+    beta[n // 2 : n // 2 + 50] += 1e-9 * rng.normal(size=(50, bot.w))  # nearly so
     return beta, twist
 
 
 @pytest.mark.parametrize("kind", sorted(ROBOTS))
 def test_forward_equals_pseudo_inverse(kind):
     bot = ROBOTS[kind]()
-    beta, _ = _configurations(bot, 20000, 1)          # more than one chunk of the batched kernel
+    beta, _ = _configurations(bot, 20000, 1)  # more than one chunk of the batched kernel
     rates = np.random.default_rng(2).normal(size=(20000, bot.n_rates))
     rates[:100] = 0.0
     sol = wmr.forward(bot, beta, rates)
@@ -217,8 +237,8 @@ def test_steering_angles_point_the_wheels_along_the_velocity(kind):
     bot = ROBOTS[kind]()
     rng = np.random.default_rng(7)
     twist = rng.normal(size=(5000, 3))
-    twist[:10] = 0.0                                                  # still: keep the current angles
-    twist[10:20, 1:] = 0.0                                            # spin about C
+    twist[:10] = 0.0  # still: keep the current angles
+    twist[10:20, 1:] = 0.0  # spin about C
     current = rng.uniform(-np.pi, np.pi, (5000, bot.w))
     beta = wmr.steering_angles(bot, twist, current=current)
     d = bot.mount_points
@@ -226,8 +246,8 @@ def test_steering_angles_point_the_wheels_along_the_velocity(kind):
     speed = np.linalg.norm(p, axis=-1)
     steer = np.array([u.kind in ("centred", "dual") for u in bot.wheels])
     moving = speed > 1e-6
-    j = np.stack([-np.sin(beta), np.cos(beta)], -1)                   # rolling direction R(beta) [0, 1]
-    cosang = -np.sum(j * p, -1) / np.where(moving, speed, 1.0)         # j = -p / |p|
+    j = np.stack([-np.sin(beta), np.cos(beta)], -1)  # rolling direction R(beta) [0, 1]
+    cosang = -np.sum(j * p, -1) / np.where(moving, speed, 1.0)  # j = -p / |p|
     assert np.all(np.abs(cosang[moving & steer] - 1) < 1e-12)
     assert np.array_equal(beta[~moving | ~steer], current[~moving | ~steer])
     assert np.all(np.abs(beta[moving & steer]) <= np.pi)
@@ -235,7 +255,7 @@ def test_steering_angles_point_the_wheels_along_the_velocity(kind):
     t = np.array([[0.0, 1e-10, 0.0], [0.0, 2e-9, 0.0]])
     assert np.allclose(np.abs(wmr.steering_angles(wmr.paper_robot("centred"), t)), np.pi / 2)
     at_c = wmr.Robot([wmr.CentredWheel((0.0, 0.0), r=0.1), wmr.CentredWheel((1.0, 0.0), r=0.1)])
-    t = np.array([[1.0, 1e-12, 0.0], [1.0, 1e-8, 0.0]])                # wheel 1 at the spin centre, or near it
+    t = np.array([[1.0, 1e-12, 0.0], [1.0, 1e-8, 0.0]])  # wheel 1 at the spin centre, or near it
     got = wmr.steering_angles(at_c, t, current=[[0.7, 0.7], [0.7, 0.7]])
     assert got[0, 0] == 0.7 and abs(abs(got[1, 0]) - np.pi / 2) < 1e-12
 
@@ -246,13 +266,13 @@ def test_robot_matrices_equal_the_dense_definitions(kind):
     """J2, F and J (entry-major, from trig_combination) against blockdiag(R(beta_i) L_i) formed in full."""
     bot = ROBOTS[kind]()
     beta, _ = _configurations(bot, 20000, 8)
-    beta[0], beta[1], beta[2] = 0.0, np.pi, -np.pi / 2                   # exact special angles
-    beta = beta.reshape(40, 500, bot.w)                                  # two batch axes
+    beta[0], beta[1], beta[2] = 0.0, np.pi, -np.pi / 2  # exact special angles
+    beta = beta.reshape(40, 500, bot.w)  # two batch axes
     for L in (1.0, 0.37):
         assert np.allclose(bot.J(beta, L=L), R.J(bot, beta, L), rtol=0, atol=4e-16)
     assert np.allclose(bot.J2(beta), R.J2(bot, beta), rtol=0, atol=4e-16)
     F = bot.F(beta)
     assert F.shape == (40, 500, 2 * bot.w, 3 + bot.n_rates)
     assert np.allclose(F, R.F(bot, beta), rtol=0, atol=4e-16)
-    assert np.array_equal(F[7, 11], bot.F(beta[7, 11]))                 # one configuration = any batch
-    assert np.array_equal(np.ascontiguousarray(F), F)                    # the layout changes no value
+    assert np.array_equal(F[7, 11], bot.F(beta[7, 11]))  # one configuration = any batch
+    assert np.array_equal(np.ascontiguousarray(F), F)  # the layout changes no value

@@ -13,6 +13,7 @@ wrong shape, NaN, infinity, SymPy ``oo``/``nan``/``zoo``/``I``, ``10**400``, ``n
 
 Deterministic (the ``wmr`` Hypothesis profile of ``conftest.py``: derandomized, no database).
 """
+
 import inspect
 import warnings
 
@@ -52,7 +53,7 @@ def _draw(data, case):
 def test_public_function_under_fuzzing(case, data):
     args, bad = _draw(data, case)
     with warnings.catch_warnings():
-        warnings.simplefilter("error", RuntimeWarning)            # no overflow warning leaks out either
+        warnings.simplefilter("error", RuntimeWarning)  # no overflow warning leaks out either
         what, detail = F.outcome(case, args, bad)
     assert what in ("returned", "rejected"), f"{what}: {case.name}({args}) {detail}"
 
@@ -61,6 +62,7 @@ def _public_functions():
     """Names of every public function and class of wmr, wmr.model.* and wmr.analysis.* (not the packages)."""
     import importlib
     import pkgutil
+
     names = {n for n in wmr.__all__ if inspect.isfunction(getattr(wmr, n)) or inspect.isclass(getattr(wmr, n))}
     for m in pkgutil.walk_packages(wmr.__path__, "wmr."):
         if not m.name.startswith(("wmr.model.", "wmr.analysis.")) or any(p.startswith("_") for p in m.name.split(".")):
@@ -76,11 +78,38 @@ def _public_functions():
 def test_every_public_function_is_fuzzed_or_excused():
     """A new public function must get a fuzz case (or a stated reason in fuzz_api.NOT_FUZZED)."""
     covered = {c.name.split(".")[-1].split("(")[0] for c in F.CASES}
-    covered |= {"Robot", "Solution", "Trajectory", "InstantCentre", "Concurrency", "Classification", "Meet",
-                "NumericBackend", "SymbolicBackend", "Grid", "Sample", "Sweep"}    # result types, fuzzed via the calls
-    covered |= {"real", "number", "positive", "nonnegative", "point", "finite_array", "symbolic_vector",  # the checks
-                "symbolic_matrix", "robot", "numeric_robot", "free_symbols", "batch_shape", "flag", "optional_text",
-                "integer", "show"}
+    covered |= {
+        "Robot",
+        "Solution",
+        "Trajectory",
+        "InstantCentre",
+        "Concurrency",
+        "Classification",
+        "Meet",
+        "NumericBackend",
+        "SymbolicBackend",
+        "Grid",
+        "Sample",
+        "Sweep",
+    }  # result types, fuzzed via the calls
+    covered |= {
+        "real",
+        "number",
+        "positive",
+        "nonnegative",
+        "point",
+        "finite_array",
+        "symbolic_vector",  # the checks
+        "symbolic_matrix",
+        "robot",
+        "numeric_robot",
+        "free_symbols",
+        "batch_shape",
+        "flag",
+        "optional_text",
+        "integer",
+        "show",
+    }
     missing = sorted(_public_functions() - covered - set(F.NOT_FUZZED))
     assert not missing, f"public functions without a fuzz case: {missing}"
 
@@ -95,8 +124,7 @@ def test_the_fuzzer_catches_faults(monkeypatch):
     vague = F.Case("h", lambda x: (_ for _ in ()).throw(InputValueError("something is wrong")), (("x", "angle"),))
     assert F.outcome(vague, {"x": 1.0}, [])[0] == "unnamed"
     builtin = F.Case("k", lambda x: (_ for _ in ()).throw(ValueError(f"x = {x} is bad")), (("x", "angle"),))
-    assert F.outcome(builtin, {"x": 1.0}, ["x"])[0] == "wrong-exception"        # not the package's own error
+    assert F.outcome(builtin, {"x": 1.0}, ["x"])[0] == "wrong-exception"  # not the package's own error
     monkeypatch.setattr(wmr.analysis.mobility, "rank_F", lambda robot, beta: float("nan"))
     mobility_case = F.CASES[[c.name for c in F.CASES].index("mobility")]
-    assert F.outcome(mobility_case, {"robot": F.ROBOTS[0], "beta": [0.0] * 3}, [])[0] \
-        == "non-finite"
+    assert F.outcome(mobility_case, {"robot": F.ROBOTS[0], "beta": [0.0] * 3}, [])[0] == "non-finite"

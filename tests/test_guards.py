@@ -1,5 +1,6 @@
 """Issue 24, point 5: limits checked before work starts, Ctrl-C leaves a partial result, hostile robot files
 get one line naming file, line and key.  Run from outside, as a user would (subprocesses, a real SIGINT)."""
+
 import json
 import math
 import os
@@ -26,8 +27,13 @@ def _wheels(n, kind="centred"):
     out = [f'name = "{n} wheels"']
     for k in range(n):
         a = 2 * math.pi * k / n
-        out += ["", "[[wheel]]", f'type = "{kind}"', f"position = [{math.cos(a):.6f}, {math.sin(a):.6f}]",
-                "radius = 0.05"]
+        out += [
+            "",
+            "[[wheel]]",
+            f'type = "{kind}"',
+            f"position = [{math.cos(a):.6f}, {math.sin(a):.6f}]",
+            "radius = 0.05",
+        ]
     return "\n".join(out) + "\n"
 
 
@@ -36,12 +42,20 @@ def _cli(*argv, env=None):
 
     CPU time (user + system, from wait4) rather than wall-clock time: the machine is shared.
     """
-    code = ("import sys\nfrom wmr.cli import main\ntry:\n    rc = main(sys.argv[1:])\nfinally:\n    " + PEAK
-            + "\nsys.exit(rc)\n")
-    p = subprocess.Popen([sys.executable, "-c", code, *map(str, argv)], stdout=subprocess.PIPE,
-                         stderr=subprocess.PIPE, text=True, env=dict(os.environ, **(env or {})))
+    code = (
+        "import sys\nfrom wmr.cli import main\ntry:\n    rc = main(sys.argv[1:])\nfinally:\n    "
+        + PEAK
+        + "\nsys.exit(rc)\n"
+    )
+    p = subprocess.Popen(
+        [sys.executable, "-c", code, *map(str, argv)],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+        env=dict(os.environ, **(env or {})),
+    )
     out, err = p.communicate(timeout=120)
-    usage = resource.getrusage(resource.RUSAGE_CHILDREN)                    # (children waited for so far)
+    usage = resource.getrusage(resource.RUSAGE_CHILDREN)  # (children waited for so far)
     *lines, peak = err.rstrip("\n").split("\n")
     return p.returncode, out, "\n".join(lines), usage.ru_utime + usage.ru_stime, int(peak) / 1024
 
@@ -64,7 +78,7 @@ def test_the_wheel_limit_is_raised_by_its_variable(tmp_path, monkeypatch):
     with pytest.raises(RobotFileError, match="limit of 100") as refused:
         wmr.io.loads(text)
     suggested = re.search(r"e\.g\. WMR_MAX_WHEELS=(\d+)\)", str(refused.value))
-    assert suggested and suggested.group(1) == "120"                           # exactly enough
+    assert suggested and suggested.group(1) == "120"  # exactly enough
     monkeypatch.setenv("WMR_MAX_WHEELS", suggested.group(1))
     assert wmr.io.loads(text).w == 120
     monkeypatch.setenv("WMR_MAX_WHEELS", "50")
@@ -83,25 +97,27 @@ def test_huge_sweeps_are_refused_before_they_start(argv):
 
 def test_memory_limit(monkeypatch):
     from wmr.analysis.sweep import Drivable
+
     bot = wmr.io.loads(_wheels(100))
     monkeypatch.setenv("WMR_MAX_MEMORY_MB", "1")
     with pytest.raises(LimitError, match="WMR_MAX_MEMORY_MB"):
         wmr.sweep(bot, "kappa_J", Drivable(1000))
-    monkeypatch.setenv("WMR_MAX_MEMORY_MB", "64")                              # fits, in smaller chunks
+    monkeypatch.setenv("WMR_MAX_MEMORY_MB", "64")  # fits, in smaller chunks
     assert wmr.sweep(bot, "kappa_J", Drivable(3000)).count == 3000
     with pytest.raises(LimitError, match="keep=True"):
-        wmr.sweep(bot, "rank_F", Drivable(10 ** 8), keep=True)
+        wmr.sweep(bot, "rank_F", Drivable(10**8), keep=True)
 
 
 def test_memory_is_checked_before_the_robot_is_worked_on(monkeypatch):
     """With the wheel limit raised, the memory limit still refuses before any work on the robot."""
     from wmr.analysis.sweep import Drivable, motions
+
     monkeypatch.setenv("WMR_MAX_WHEELS", "400")
     bot = wmr.io.loads(_wheels(400))
     monkeypatch.setenv("WMR_MAX_MEMORY_MB", "1")
-    monkeypatch.setattr(motions, "twist_constraints", None)                    # binding would fail here
+    monkeypatch.setattr(motions, "twist_constraints", None)  # binding would fail here
     fixed = wmr.io.loads(_wheels(400, "fixed").replace("radius = 0.05", "radius = 0.05\nangle_deg = 0"))
-    for robot in (bot, fixed):                                                 # steered; fixed (binding works)
+    for robot in (bot, fixed):  # steered; fixed (binding works)
         with pytest.raises(LimitError, match=r"a sweep of kappa_J .* WMR_MAX_MEMORY_MB"):
             wmr.sweep(robot, "kappa_J", Drivable(1000))
     with pytest.raises(LimitError, match=r"the kinematics of this robot \(400 wheel units, 400 rates\) needs 7 MB"):
@@ -110,12 +126,16 @@ def test_memory_is_checked_before_the_robot_is_worked_on(monkeypatch):
 
 def test_ctrl_c_prints_the_partial_result():
     """A real SIGINT to a running sweep: the result over the chunks done, marked, exit status 130."""
-    p = subprocess.Popen([sys.executable, "-m", "wmr", "sweep", str(SWERVE), "kappa_J", "--sample", "1e9", "--json",
-                          "--progress"], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    p = subprocess.Popen(
+        [sys.executable, "-m", "wmr", "sweep", str(SWERVE), "kappa_J", "--sample", "1e9", "--json", "--progress"],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+    )
     try:
         seen = ""
         assert p.stderr is not None
-        while "[" not in seen:                                                 # the progress bar: it is running
+        while "[" not in seen:  # the progress bar: it is running
             seen += p.stderr.read(1)
             assert p.poll() is None, seen
         time.sleep(0.5)
@@ -126,7 +146,7 @@ def test_ctrl_c_prints_the_partial_result():
             p.kill()
     assert p.returncode == 130, err
     data = json.loads(out)
-    assert not data["complete"] and 0 < data["count"] < 10 ** 9 and data["min"] >= 1.0
+    assert not data["complete"] and 0 < data["count"] < 10**9 and data["min"] >= 1.0
     assert "interrupted (Ctrl-C)" in err and "Traceback" not in err
 
 
@@ -138,7 +158,8 @@ def test_interrupted_sweep_in_python_is_marked():
     def progress(done, total):
         calls.append(done)
         if len(calls) == 2:
-            os.kill(os.getpid(), signal.SIGINT)                                 # as a user's Ctrl-C
+            os.kill(os.getpid(), signal.SIGINT)  # as a user's Ctrl-C
+
     bot = wmr.load(SWERVE)
     old = signal.signal(signal.SIGINT, signal.default_int_handler)
     try:
@@ -147,9 +168,9 @@ def test_interrupted_sweep_in_python_is_marked():
         signal.signal(signal.SIGINT, old)
     assert not res.complete and res.count == calls[-1] == 2 << 16
     calls.clear()
-    old = signal.signal(signal.SIGINT, signal.default_int_handler)             # (a test runner may ignore it)
+    old = signal.signal(signal.SIGINT, signal.default_int_handler)  # (a test runner may ignore it)
     try:
-        with pytest.raises(KeyboardInterrupt):                                   # not interruptible: as Python does
+        with pytest.raises(KeyboardInterrupt):  # not interruptible: as Python does
             wmr.sweep(bot, "kappa_J", Drivable(1 << 22), chunk=1 << 16, progress=progress)
     finally:
         signal.signal(signal.SIGINT, old)
@@ -159,18 +180,25 @@ def test_interrupted_sweep_in_python_is_marked():
 W2 = '\n[[wheel]]\ntype = "centred"\nposition = [-0.3, 0.0]\nradius = 0.05\n'
 
 
-@pytest.mark.parametrize("text, where", [
-    ('[[wheel]]\ntype = "centred"\nposition = [1e308, 0.0]\nradius = 0.05\n' + W2, ":3: wheel[1].position:"),
-    ('[[wheel]]\ntype = "centred"\nposition = [0.3, 0.0]\nradius = nan\n' + W2, ":4: wheel[1].radius:"),
-    ('[[wheel]]\ntype = "centred"\nposition = [0.3, inf]\nradius = 0.05\n' + W2, ":3: wheel[1].position:"),
-    ('[[wheel]]\ntype = "centred"\nposition = "0.3, 0"\nradius = 0.05\n' + W2, ":3: wheel[1].position:"),
-    ('[[wheel]]\ntype = "centred"\nposition = [0.3, 0.0]\nradius = true\n' + W2, ":4: wheel[1].radius:"),
-    ('[[wheel]]\ntype = "centred"\nposition = [0.3, 0.0]\nradius = 1e-320\n' + W2, ":4: wheel[1].radius:"),
-    ('[[wheel]]\ntype = "fixed"\nposition = [0.3, 0.0]\nradius = 0.05\nangle_deg = 1e308\n' + W2,
-     ":5: wheel[1].angle_deg:"),
-    ('[[wheel]]\ntype = "centred"\nposition = [0.3, 0.0]\nradius = 0.05\ndriven = {drive = "yes"}\n' + W2,
-     ":5: wheel[1].driven:"),
-])
+@pytest.mark.parametrize(
+    "text, where",
+    [
+        ('[[wheel]]\ntype = "centred"\nposition = [1e308, 0.0]\nradius = 0.05\n' + W2, ":3: wheel[1].position:"),
+        ('[[wheel]]\ntype = "centred"\nposition = [0.3, 0.0]\nradius = nan\n' + W2, ":4: wheel[1].radius:"),
+        ('[[wheel]]\ntype = "centred"\nposition = [0.3, inf]\nradius = 0.05\n' + W2, ":3: wheel[1].position:"),
+        ('[[wheel]]\ntype = "centred"\nposition = "0.3, 0"\nradius = 0.05\n' + W2, ":3: wheel[1].position:"),
+        ('[[wheel]]\ntype = "centred"\nposition = [0.3, 0.0]\nradius = true\n' + W2, ":4: wheel[1].radius:"),
+        ('[[wheel]]\ntype = "centred"\nposition = [0.3, 0.0]\nradius = 1e-320\n' + W2, ":4: wheel[1].radius:"),
+        (
+            '[[wheel]]\ntype = "fixed"\nposition = [0.3, 0.0]\nradius = 0.05\nangle_deg = 1e308\n' + W2,
+            ":5: wheel[1].angle_deg:",
+        ),
+        (
+            '[[wheel]]\ntype = "centred"\nposition = [0.3, 0.0]\nradius = 0.05\ndriven = {drive = "yes"}\n' + W2,
+            ":5: wheel[1].driven:",
+        ),
+    ],
+)
 def test_hostile_files_name_file_line_and_key(tmp_path, text, where):
     path = tmp_path / "bot.toml"
     path.write_text(text)
@@ -191,15 +219,19 @@ def test_huge_but_finite_robot_runs_without_warnings(tmp_path):
     path = tmp_path / "big.toml"
     path.write_text('[[wheel]]\ntype = "centred"\nposition = [1e300, 0.0]\nradius = 0.05\n' + W2)
     for argv in (["analyze", path, "--grid", "100", "--twists", "50"], ["ik", path, "--vx", "1", "--omega", "1"]):
-        p = subprocess.run([sys.executable, "-W", "error", "-m", "wmr", *map(str, argv)], capture_output=True,
-                           text=True, timeout=120)
+        p = subprocess.run(
+            [sys.executable, "-W", "error", "-m", "wmr", *map(str, argv)], capture_output=True, text=True, timeout=120
+        )
         assert p.returncode == 0 and p.stderr == "", p.stderr
 
 
-@pytest.mark.parametrize("argv, words", [(["--grid", "1000000000"], "WMR_MAX_CONFIGURATIONS"),
-                                         (["--twists", "100000000"], "WMR_MAX_MEMORY_MB")])
+@pytest.mark.parametrize(
+    "argv, words",
+    [(["--grid", "1000000000"], "WMR_MAX_CONFIGURATIONS"), (["--twists", "100000000"], "WMR_MAX_MEMORY_MB")],
+)
 def test_analyze_is_guarded_too(capsys, argv, words):
     from wmr.cli import main
+
     t0 = time.perf_counter()
     assert main(["analyze", str(SWERVE), *argv]) == 2
     err = capsys.readouterr().err

@@ -1,4 +1,5 @@
 """Robot files: wmr.load / wmr.dump, the examples, and one-line errors for every malformed case."""
+
 from pathlib import Path
 
 import numpy as np
@@ -9,7 +10,7 @@ from wmr.io import RobotFileError, dump, load, loads, wheel_keys
 
 EXAMPLES = Path(__file__).resolve().parent.parent / "examples"
 
-CENTRED = '''name = "two"
+CENTRED = """name = "two"
 
 [[wheel]]
 type = "centred"
@@ -20,7 +21,7 @@ radius = 0.05
 type = "centred"
 position = [-0.3, 0.0]
 radius = 0.05
-'''
+"""
 
 
 def _same_matrices(a, b):
@@ -32,9 +33,15 @@ def _same_matrices(a, b):
 
 
 def _mixed():
-    return wmr.Robot([wmr.OffsetWheel((1.0, 0.2), r=0.2, d=0.1), wmr.CentredWheel((-0.5, 0.9), r=0.3),
-                      wmr.DualWheel((-0.4, -1.0), r=0.25, b=0.15), wmr.CentredWheel((0.6, -0.7), r=1e-3)],
-                     name='mixed "quoted" \\ name\twith tab')
+    return wmr.Robot(
+        [
+            wmr.OffsetWheel((1.0, 0.2), r=0.2, d=0.1),
+            wmr.CentredWheel((-0.5, 0.9), r=0.3),
+            wmr.DualWheel((-0.4, -1.0), r=0.25, b=0.15),
+            wmr.CentredWheel((0.6, -0.7), r=1e-3),
+        ],
+        name='mixed "quoted" \\ name\twith tab',
+    )
 
 
 # ------------------------------------------------------------------------------------ reading
@@ -45,7 +52,7 @@ def test_load_reads_the_schema(tmp_path):
     assert bot.name == "two" and bot.w == 2 and [u.kind for u in bot.wheels] == ["centred", "centred"]
     assert bot.mount_points.tolist() == [[0.3, 0.0], [-0.3, 0.0]] and bot.wheels[0].r == 0.05
     path.write_text(CENTRED.replace('name = "two"\n', ""))
-    assert load(str(path)).name == "two"                 # the file's stem
+    assert load(str(path)).name == "two"  # the file's stem
 
 
 def test_integers_are_numbers():
@@ -53,10 +60,17 @@ def test_integers_are_numbers():
     assert bot.wheels[0].position == (1.0, 0.0) and bot.wheels[0].d == 0.0  # type: ignore[attr-defined]
 
 
-@pytest.mark.parametrize("robot", [wmr.paper_robot("centred", L=0.3, r=0.05),
-                                   wmr.paper_robot("offset", L=2.0, r=0.3, d=0.1),
-                                   wmr.paper_robot("dual", L=1.0, r=0.2, b=0.4), wmr.paper_robot("centred", exact=True),
-                                   _mixed()], ids=["centred", "offset", "dual", "exact", "mixed"])
+@pytest.mark.parametrize(
+    "robot",
+    [
+        wmr.paper_robot("centred", L=0.3, r=0.05),
+        wmr.paper_robot("offset", L=2.0, r=0.3, d=0.1),
+        wmr.paper_robot("dual", L=1.0, r=0.2, b=0.4),
+        wmr.paper_robot("centred", exact=True),
+        _mixed(),
+    ],
+    ids=["centred", "offset", "dual", "exact", "mixed"],
+)
 def test_round_trip(robot, tmp_path):
     path = tmp_path / "bot.toml"
     text = dump(robot, path)
@@ -64,12 +78,18 @@ def test_round_trip(robot, tmp_path):
     back = load(path)
     assert back.name == robot.name
     _same_matrices(robot.numeric(), back)
-    assert dump(back) == text                           # a fixed point
+    assert dump(back) == text  # a fixed point
 
 
 def test_round_trip_fixed_and_swedish(tmp_path):
-    bot = wmr.Robot([wmr.FixedWheel((0.0, 0.2), 0.08, np.pi / 2), wmr.FixedWheel((0.0, -0.2), 0.08, 0.3),
-                     wmr.SwedishWheel((0.4, 0.1), 0.05, 1.1, np.pi / 4), wmr.CentredWheel((-0.3, 0.0), r=0.04)])
+    bot = wmr.Robot(
+        [
+            wmr.FixedWheel((0.0, 0.2), 0.08, np.pi / 2),
+            wmr.FixedWheel((0.0, -0.2), 0.08, 0.3),
+            wmr.SwedishWheel((0.4, 0.1), 0.05, 1.1, np.pi / 4),
+            wmr.CentredWheel((-0.3, 0.0), r=0.04),
+        ]
+    )
     dump(bot, tmp_path / "b.toml")
     back = load(tmp_path / "b.toml")
     _same_matrices(bot, back)
@@ -84,7 +104,7 @@ def test_dump_rejects_what_is_not_a_robot():
 
 
 # ------------------------------------------------------------------------------ malformed files
-BASE = '''name = "bot"
+BASE = """name = "bot"
 [[wheel]]
 type = "centred"
 position = [0.3, 0.0]
@@ -95,7 +115,7 @@ type = "offset"
 position = [-0.3, 0.1]
 radius = 0.05
 offset = 0.02
-'''
+"""
 
 MALFORMED = {
     # case: (text, line, key, words in the reason)
@@ -108,37 +128,71 @@ MALFORMED = {
     "position a number": (BASE.replace("[-0.3, 0.1]", "0.3"), 9, "wheel[2].position", ["two numbers"]),
     "infinite position": (BASE.replace("[-0.3, 0.1]", "[inf, 0.1]"), 9, "wheel[2].position", ["finite"]),
     "radius a string": (BASE.replace("radius = 0.05\n\n", 'radius = "5 cm"\n\n'), 5, "wheel[1].radius", ["number"]),
-    "radius a boolean": (BASE.replace("radius = 0.05\n\n", "radius = true\n\n"), 5, "wheel[1].radius",
-                         ["number", "true"]),
+    "radius a boolean": (
+        BASE.replace("radius = 0.05\n\n", "radius = true\n\n"),
+        5,
+        "wheel[1].radius",
+        ["number", "true"],
+    ),
     "zero radius": (BASE.replace("radius = 0.05\n\n", "radius = 0\n\n"), 5, "wheel[1].radius", ["positive"]),
     "negative offset": (BASE.replace("offset = 0.02", "offset = -0.02"), 11, "wheel[2].offset", ["negative"]),
     "missing offset": (BASE.replace("offset = 0.02\n", ""), 7, "wheel[2].offset", ["missing"]),
-    "duplicate mount point": (BASE.replace("[-0.3, 0.1]", "[0.3, 0]"), 9, "wheel[2].position",
-                              ["same mount point", "wheel[1]"]),
+    "duplicate mount point": (
+        BASE.replace("[-0.3, 0.1]", "[0.3, 0]"),
+        9,
+        "wheel[2].position",
+        ["same mount point", "wheel[1]"],
+    ),
     "zero wheels": ('name = "nothing"\n', 1, "wheel", ["no wheels"]),
     "empty file": ("", 1, "wheel", ["no wheels"]),
-    "unknown wheel key": (BASE.replace("offset = 0.02", "offset = 0.02\nradious = 3"), 12, "wheel[2].radious",
-                          ["unknown key", "'radius'"]),
+    "unknown wheel key": (
+        BASE.replace("offset = 0.02", "offset = 0.02\nradious = 3"),
+        12,
+        "wheel[2].radious",
+        ["unknown key", "'radius'"],
+    ),
     "unknown top-level key": (BASE.replace('name = "bot"', 'name = "bot"\nmass = 3'), 2, "mass", ["unknown key"]),
     "name not a string": (BASE.replace('name = "bot"', "name = 3"), 1, "name", ["string"]),
-    "wheel not tables": ('wheel = 3\n', 1, "wheel", ["[[wheel]]"]),
-    "wheel not a table": ('wheel = [1]\n', 1, "wheel[1]", ["table"]),
+    "wheel not tables": ("wheel = 3\n", 1, "wheel", ["[[wheel]]"]),
+    "wheel not a table": ("wheel = [1]\n", 1, "wheel[1]", ["table"]),
     "TOML syntax error": (BASE.replace('"offset"', "offset"), 8, "wheel[2].type", ["TOML syntax error", "column 8"]),
-    "TOML duplicate key": (BASE.replace("radius = 0.05\n\n", "radius = 0.05\nradius = 0.06\n\n"), 6, "wheel[1].radius",
-                           ["TOML syntax error", "given twice"]),
-    "TOML duplicate top-level key": (BASE.replace('name = "bot"', 'name = "bot"\nname = "b"'), 2, "name",
-                                     ["given twice"]),
+    "TOML duplicate key": (
+        BASE.replace("radius = 0.05\n\n", "radius = 0.05\nradius = 0.06\n\n"),
+        6,
+        "wheel[1].radius",
+        ["TOML syntax error", "given twice"],
+    ),
+    "TOML duplicate top-level key": (
+        BASE.replace('name = "bot"', 'name = "bot"\nname = "b"'),
+        2,
+        "name",
+        ["given twice"],
+    ),
     "TOML unterminated": (BASE + "x = [1,\n", 12, "wheel[2].x", ["TOML syntax error", "end of the file"]),
-    "roller on a centred wheel": (BASE.replace("radius = 0.05\n\n", "radius = 0.05\nroller_deg = 45\n\n"), 6,
-                                  "wheel[1].roller_deg", ["not a key of a centred wheel"]),
-    "offset on a dual wheel": (BASE.replace('"offset"', '"dual"')
-                               .replace("offset = 0.02", "half_separation = 0.1\noffset = 0.1"),
-                               12, "wheel[2].offset", ["not a key of a dual wheel", "half_separation"]),
-    "zero half separation": (BASE.replace('"offset"', '"dual"').replace("offset = 0.02", "half_separation = 0"),
-                             11, "wheel[2].half_separation", ["positive"]),
-    "angle on an offset wheel": (BASE.replace("offset = 0.02", "offset = 0.02\nangle_deg = 3"), 12,
-                                 "wheel[2].angle_deg",
-                                 ["not a key of an offset wheel"]),
+    "roller on a centred wheel": (
+        BASE.replace("radius = 0.05\n\n", "radius = 0.05\nroller_deg = 45\n\n"),
+        6,
+        "wheel[1].roller_deg",
+        ["not a key of a centred wheel"],
+    ),
+    "offset on a dual wheel": (
+        BASE.replace('"offset"', '"dual"').replace("offset = 0.02", "half_separation = 0.1\noffset = 0.1"),
+        12,
+        "wheel[2].offset",
+        ["not a key of a dual wheel", "half_separation"],
+    ),
+    "zero half separation": (
+        BASE.replace('"offset"', '"dual"').replace("offset = 0.02", "half_separation = 0"),
+        11,
+        "wheel[2].half_separation",
+        ["positive"],
+    ),
+    "angle on an offset wheel": (
+        BASE.replace("offset = 0.02", "offset = 0.02\nangle_deg = 3"),
+        12,
+        "wheel[2].angle_deg",
+        ["not a key of an offset wheel"],
+    ),
 }
 
 
@@ -201,14 +255,22 @@ def test_every_example_loads_and_round_trips(name, tmp_path):
 
 
 # ------------------------------------------------------------------------------ Campion classes
-CLASSES = {"paper_offset.toml": "(3,0)", "omni3.toml": "(3,0)", "mecanum4.toml": "(3,0)", "differential.toml": "(2,0)",
-           "steered_castors.toml": "(2,1)", "tricycle.toml": "(1,1)", "swerve4.toml": "(1,2)",
-           "paper_centred.toml": "(1,2)", "paper_dual.toml": "(1,2)"}
+CLASSES = {
+    "paper_offset.toml": "(3,0)",
+    "omni3.toml": "(3,0)",
+    "mecanum4.toml": "(3,0)",
+    "differential.toml": "(2,0)",
+    "steered_castors.toml": "(2,1)",
+    "tricycle.toml": "(1,1)",
+    "swerve4.toml": "(1,2)",
+    "paper_centred.toml": "(1,2)",
+    "paper_dual.toml": "(1,2)",
+}
 
 
 def test_the_examples_cover_the_five_classes():
     assert set(CLASSES) == {p.name for p in EXAMPLES.glob("*.toml")}
-    assert set(CLASSES.values()) == {"(3,0)", "(2,0)", "(2,1)", "(1,1)", "(1,2)"}         # all five of Campion's
+    assert set(CLASSES.values()) == {"(3,0)", "(2,0)", "(2,1)", "(1,1)", "(1,2)"}  # all five of Campion's
 
 
 @pytest.mark.parametrize("name, label", CLASSES.items())

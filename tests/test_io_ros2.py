@@ -1,6 +1,7 @@
 """ROS 2 controller parameters in and out (wmr.io.from_ros2, wmr.io.to_ros2): the example files read as their robots,
 the layouts round-trip, the controllers' own wheel-speed formulas agree with wmr's inverse kinematics of the robot read,
 and bad files get one-line errors naming the file, the line and the node.key."""
+
 from pathlib import Path
 
 import numpy as np
@@ -11,11 +12,11 @@ from wmr.errors import InputValueError, MissingDependencyError, RobotFileError
 from wmr.io import from_ros2, load, to_ros2
 from wmr.io import layouts as L
 
-yaml = pytest.importorskip("yaml")                  # in environment.lock: runs here
+yaml = pytest.importorskip("yaml")  # in environment.lock: runs here
 
 ROOT = Path(__file__).resolve().parent.parent
 ROS2 = ROOT / "examples" / "ros2"
-TWISTS = np.random.default_rng(7).normal(0, 1, (50, 3))      # psi_dot, x_dot, y_dot
+TWISTS = np.random.default_rng(7).normal(0, 1, (50, 3))  # psi_dot, x_dot, y_dot
 
 
 def _drive_rates(bot, twists, beta=None):
@@ -40,31 +41,33 @@ def test_diff_drive_example():
     assert [float(u.r) for u in bot.wheels] == [0.08, 0.08] and wmr.campion_class(bot).label == "(2,0)"
     # diff_drive_controller: left = (v - omega s / 2) / r, right = (v + omega s / 2) / r (v = vx)
     v, w = TWISTS[:, 1], TWISTS[:, 0]
-    fwd = TWISTS * [1, 1, 0]                                           # no lateral velocity: admissible
-    np.testing.assert_allclose(_drive_rates(bot, fwd), np.column_stack([(v - w * 0.2) / 0.08, (v + w * 0.2) / 0.08]),
-                               rtol=1e-12)
+    fwd = TWISTS * [1, 1, 0]  # no lateral velocity: admissible
+    np.testing.assert_allclose(
+        _drive_rates(bot, fwd), np.column_stack([(v - w * 0.2) / 0.08, (v + w * 0.2) / 0.08]), rtol=1e-12
+    )
 
 
 def test_mecanum_example_and_the_controllers_wheel_speeds():
     """mecanum_drive_controller.cpp: FL = (vx - vy - k w)/r, FR = (vx + vy + k w)/r, RL = (vx + vy - k w)/r,
     RR = (vx - vy + k w)/r with k = lx + ly: the rollers wmr reads give exactly these rates."""
-    bot = load(ROS2 / "mecanum_drive.yaml")                           # under the wildcard namespace /**
+    bot = load(ROS2 / "mecanum_drive.yaml")  # under the wildcard namespace /**
     assert [u.kind for u in bot.wheels] == ["swedish"] * 4 and wmr.campion_class(bot).label == "(3,0)"
-    np.testing.assert_allclose(np.abs(bot.mount_points), 0.225, atol=1e-15)    # lx = ly = (lx + ly) / 2
+    np.testing.assert_allclose(np.abs(bot.mount_points), 0.225, atol=1e-15)  # lx = ly = (lx + ly) / 2
     w, vx, vy = TWISTS.T
     k, r = 0.45, 0.05
     want = np.column_stack([vx - vy - k * w, vx + vy + k * w, vx + vy - k * w, vx - vy + k * w]) / r
     np.testing.assert_allclose(_drive_rates(bot, TWISTS), want, rtol=1e-12, atol=1e-12)
     # the 0.5 x 0.4 robot the file was written for has the same wheel speeds
-    np.testing.assert_allclose(_drive_rates(wmr.load(ROOT / "examples" / "mecanum4.toml"), TWISTS), want,
-                               rtol=1e-12, atol=1e-12)
+    np.testing.assert_allclose(
+        _drive_rates(wmr.load(ROOT / "examples" / "mecanum4.toml"), TWISTS), want, rtol=1e-12, atol=1e-12
+    )
 
 
 def test_tricycle_steering_example():
     bot = load(ROS2 / "tricycle_steering.yaml")
     assert [u.kind for u in bot.wheels] == ["centred", "fixed", "fixed"]
     np.testing.assert_allclose(bot.mount_points, [[0.5, 0], [0, 0.25], [0, -0.25]], atol=1e-15)
-    assert bot.wheels[0].driven == (True, False)                  # the controller steers it and drives the rear
+    assert bot.wheels[0].driven == (True, False)  # the controller steers it and drives the rear
     assert wmr.campion_class(bot).label == wmr.campion_class(wmr.load(ROOT / "examples" / "tricycle.toml")).label
 
 
@@ -122,7 +125,7 @@ def test_a_permuted_robot_comes_back_in_the_layouts_order(tmp_path):
     bot = wmr.load(ROOT / "examples" / "tricycle.toml")
     shuffled = wmr.Robot([bot.wheels[k] for k in (2, 0, 1)], name="shuffled")
     text = to_ros2(shuffled)
-    assert 'traction_joints_names: ["wheel1_drive", "wheel3_drive"]' in text      # right, left; URDF's names
+    assert 'traction_joints_names: ["wheel1_drive", "wheel3_drive"]' in text  # right, left; URDF's names
     back = _round_trip(shuffled, tmp_path)
     np.testing.assert_allclose(back.mount_points, bot.mount_points, atol=1e-15)
 
@@ -141,7 +144,7 @@ def test_written_parameters_have_ros2s_types(tmp_path):
     assert isinstance(data["controller_manager"]["ros__parameters"]["update_rate"], int)
     p = data["ackermann_steering_controller"]["ros__parameters"]
     assert all(isinstance(p[k], float) for k in ("wheelbase", "traction_track_width", "steering_track_width"))
-    assert p["traction_joints_names"] == ["wheel4_drive", "wheel3_drive"]             # (right, left)
+    assert p["traction_joints_names"] == ["wheel4_drive", "wheel3_drive"]  # (right, left)
     assert p["steering_joints_names"] == ["wheel2_steer", "wheel1_steer"]
 
 
@@ -158,22 +161,30 @@ def test_joint_names_given(tmp_path):
 def test_the_older_parameter_names(tmp_path):
     """humble's ackermann_steering_controller: rear/front_wheels_names, *_wheel_track, *_wheels_radius."""
     path = tmp_path / "humble.yaml"
-    path.write_text("ackermann_steering_controller:\n  ros__parameters:\n    front_steering: true\n"
-                    "    rear_wheels_names: [rr, rl]\n    front_wheels_names: [fr, fl]\n    wheelbase: 2.7\n"
-                    "    front_wheel_track: 1.5\n    rear_wheel_track: 1.6\n    front_wheels_radius: 0.3\n"
-                    "    rear_wheels_radius: 0.33\n")
+    path.write_text(
+        "ackermann_steering_controller:\n  ros__parameters:\n    front_steering: true\n"
+        "    rear_wheels_names: [rr, rl]\n    front_wheels_names: [fr, fl]\n    wheelbase: 2.7\n"
+        "    front_wheel_track: 1.5\n    rear_wheel_track: 1.6\n    front_wheels_radius: 0.3\n"
+        "    rear_wheels_radius: 0.33\n"
+    )
     bot = from_ros2(path)
     np.testing.assert_allclose(bot.mount_points, [[2.7, 0.75], [2.7, -0.75], [0, 0.8], [0, -0.8]], atol=1e-15)
     assert [float(u.r) for u in bot.wheels] == [0.3, 0.3, 0.33, 0.33]
 
 
 # ------------------------------------------------------------------------------------------ refusals
-@pytest.mark.parametrize("name, why", [
-    ("steered_castors", "passive castors [2, 3] left out): not differential: needs exactly two fixed wheels, has 0 "
-                        "of 1 units; not mecanum"),
-    ("paper_dual", "not swerve: needs centred wheels only"),
-    ("paper_offset", "wheel 1, 2, 3 constrains nothing but has motors"),
-])
+@pytest.mark.parametrize(
+    "name, why",
+    [
+        (
+            "steered_castors",
+            "passive castors [2, 3] left out): not differential: needs exactly two fixed wheels, has 0 "
+            "of 1 units; not mecanum",
+        ),
+        ("paper_dual", "not swerve: needs centred wheels only"),
+        ("paper_offset", "wheel 1, 2, 3 constrains nothing but has motors"),
+    ],
+)
 def test_robots_no_controller_expresses_are_refused(name, why):
     with pytest.raises(InputValueError, match="ROS 2's drive controllers .* cannot express") as err:
         to_ros2(wmr.load(ROOT / "examples" / f"{name}.toml"))
@@ -193,8 +204,10 @@ def _file(tmp_path, text, name="bad.yaml"):
     return path
 
 
-DIFF = ("diff_drive_controller:\n  ros__parameters:\n    left_wheel_names: [l]\n    right_wheel_names: [r]\n"
-        "    wheel_separation: 0.4\n    wheel_radius: 0.08\n")
+DIFF = (
+    "diff_drive_controller:\n  ros__parameters:\n    left_wheel_names: [l]\n    right_wheel_names: [r]\n"
+    "    wheel_separation: 0.4\n    wheel_radius: 0.08\n"
+)
 
 
 def test_a_missing_key_names_the_node_and_the_line(tmp_path):
@@ -220,7 +233,7 @@ def test_a_nested_key_names_its_line(tmp_path):
     with pytest.raises(RobotFileError) as err:
         from_ros2(_file(tmp_path, text))
     assert err.value.key == "mecanum_drive_controller.kinematics.wheels_radius"
-    assert err.value.line == text[:text.index("wheels_radius: 0")].count("\n") + 1
+    assert err.value.line == text[: text.index("wheels_radius: 0")].count("\n") + 1
 
 
 def test_floats_without_a_dot_are_floats_as_in_ros2(tmp_path):
@@ -249,8 +262,10 @@ def test_no_controller_and_two_controllers(tmp_path):
 
 
 def test_the_controller_manager_names_a_controller_without_parameters(tmp_path):
-    text = ("controller_manager:\n  ros__parameters:\n    drive:\n"
-            "      type: diff_drive_controller/DiffDriveController\nimu:\n  ros__parameters:\n    x: 1\n")
+    text = (
+        "controller_manager:\n  ros__parameters:\n    drive:\n"
+        "      type: diff_drive_controller/DiffDriveController\nimu:\n  ros__parameters:\n    x: 1\n"
+    )
     with pytest.raises(RobotFileError, match="names a diff_drive_controller/DiffDriveController 'drive', but the file"):
         from_ros2(_file(tmp_path, text))
 

@@ -1,5 +1,6 @@
 """URDF in and out (wmr.io.from_urdf, wmr.io.to_urdf): hand-written files read as the robots they describe, every
 example robot round-trips, and bad files get one-line errors naming the file, the line and the joint or link."""
+
 import importlib.util
 from pathlib import Path
 
@@ -33,7 +34,7 @@ def _same(a, b):
 
 def _line(text, needle):
     """The line (from 1) of the first occurrence of ``needle`` in ``text``."""
-    return text[:text.index(needle)].count("\n") + 1
+    return text[: text.index(needle)].count("\n") + 1
 
 
 # ------------------------------------------------------------------------------------------ reading
@@ -45,7 +46,7 @@ def test_diffbot_urdf_is_a_differential_drive_with_a_passive_castor():
     assert [float(u.r) for u in bot.wheels] == [0.08, 0.08, 0.03]
     assert [float(u.angle) for u in bot.wheels[:2]] == [np.pi / 2, np.pi / 2]  # type: ignore[attr-defined]  # snapped
     assert float(bot.wheels[2].d) == pytest.approx(0.03, abs=1e-12)  # type: ignore[attr-defined]
-    assert [u.driven for u in bot.wheels] == [(True,), (True,), (False, False)]   # from <ros2_control>
+    assert [u.driven for u in bot.wheels] == [(True,), (True,), (False, False)]  # from <ros2_control>
     assert wmr.campion_class(bot).label == "(2,0)"
 
 
@@ -60,7 +61,7 @@ def test_swerve_urdf_is_four_swerve_modules():
 
 def test_without_ros2_control_the_kinds_defaults_hold(tmp_path):
     text = (ROOT / "examples" / "urdf" / "diffbot.urdf").read_text()
-    text = text[:text.index("<ros2_control")] + "</robot>\n"
+    text = text[: text.index("<ros2_control")] + "</robot>\n"
     (tmp_path / "d.urdf").write_text(text)
     bot = load(tmp_path / "d.urdf")
     defaults = [tuple(j.driven for j in type(u).JOINTS) for u in bot.wheels]
@@ -74,17 +75,21 @@ def test_every_example_round_trips_through_urdf(path, tmp_path):
     bot = load(path)
     out = tmp_path / "bot.urdf"
     text = dump(bot, out)
-    assert to_urdf(bot) == text == out.read_text()                        # the same bytes every time
+    assert to_urdf(bot) == text == out.read_text()  # the same bytes every time
     back = load(out)
     assert back.name == bot.name
     _same(bot, back)
 
 
 def test_round_trip_with_actuation_changed_and_a_dual_wheel(tmp_path):
-    bot = wmr.Robot([wmr.DualWheel((0.3, 0.1), r=0.05, b=0.04, driven={"swivel": True}),
-                     wmr.OffsetWheel((-0.2, 0.2), r=0.03, d=0.02, driven={"steer": False}),
-                     wmr.SwedishWheel((-0.2, -0.2), r=0.04, angle=0.3, roller=-0.6, driven={"roller": True})],
-                    name="mixed")
+    bot = wmr.Robot(
+        [
+            wmr.DualWheel((0.3, 0.1), r=0.05, b=0.04, driven={"swivel": True}),
+            wmr.OffsetWheel((-0.2, 0.2), r=0.03, d=0.02, driven={"steer": False}),
+            wmr.SwedishWheel((-0.2, -0.2), r=0.04, angle=0.3, roller=-0.6, driven={"roller": True}),
+        ],
+        name="mixed",
+    )
     to_urdf(bot, tmp_path / "m.urdf")
     _same(bot, from_urdf(tmp_path / "m.urdf"))
 
@@ -161,14 +166,19 @@ def _write(tmp_path, body):
     return path
 
 
-LINKS = ('<link name="base"/>\n'
-         '<link name="a"><visual><geometry><cylinder radius="0.1" length="0.02"/></geometry></visual></link>')
+LINKS = (
+    '<link name="base"/>\n'
+    '<link name="a"><visual><geometry><cylinder radius="0.1" length="0.02"/></geometry></visual></link>'
+)
 
 
 def test_no_wheels(tmp_path):
-    path = _write(tmp_path, '<link name="base"/>\n<link name="arm"/>\n<joint name="j" type="revolute"><parent '
-                            'link="base"/><child link="arm"/><axis xyz="0 1 0"/><limit lower="0" upper="1" effort="1" '
-                            'velocity="1"/></joint>')
+    path = _write(
+        tmp_path,
+        '<link name="base"/>\n<link name="arm"/>\n<joint name="j" type="revolute"><parent '
+        'link="base"/><child link="arm"/><axis xyz="0 1 0"/><limit lower="0" upper="1" effort="1" '
+        'velocity="1"/></joint>',
+    )
     with pytest.raises(RobotFileError, match=r"bad.urdf:2: robot: no wheels: .*moving joints: j \(revolute"):
         load(path)
 
@@ -181,8 +191,11 @@ def test_malformed_xml_names_its_line(tmp_path):
 
 def test_a_malformed_cylinder_names_its_line(tmp_path):
     text = (ROOT / "examples" / "urdf" / "diffbot.urdf").read_text()
-    text = text.replace('<cylinder radius="0.08" length="0.04"/></geometry>\n    </collision>',
-                        '<cylinder radius="8 cm" length="0.04"/></geometry>\n    </collision>', 1)
+    text = text.replace(
+        '<cylinder radius="0.08" length="0.04"/></geometry>\n    </collision>',
+        '<cylinder radius="8 cm" length="0.04"/></geometry>\n    </collision>',
+        1,
+    )
     (tmp_path / "c.urdf").write_text(text)
     with pytest.raises(RobotFileError) as err:
         load(tmp_path / "c.urdf")
@@ -199,30 +212,40 @@ def test_a_joint_naming_a_missing_link(tmp_path):
 
 
 def test_a_malformed_origin(tmp_path):
-    body = LINKS + ('\n<joint name="w" type="continuous"><parent link="base"/><child link="a"/>\n'
-                    '<origin xyz="0 a 0"/></joint>')
+    body = LINKS + (
+        '\n<joint name="w" type="continuous"><parent link="base"/><child link="a"/>\n<origin xyz="0 a 0"/></joint>'
+    )
     with pytest.raises(RobotFileError, match=r"bad.urdf:6: joint 'w' <origin xyz>: must be three numbers"):
         load(_write(tmp_path, body))
 
 
 def test_a_tilted_joint_between_platform_and_wheel(tmp_path):
-    body = ('<link name="base"/>\n<link name="arm"/>\n<link name="w"><collision><origin rpy="1.5708 0 0"/><geometry>'
-            '<cylinder radius="0.1" length="0.02"/></geometry></collision></link>\n'
-            '<joint name="hinge" type="revolute"><parent link="base"/><child link="arm"/><axis xyz="1 0 0"/>'
-            '<limit lower="-1" upper="1" effort="1" velocity="1"/></joint>\n'
-            '<joint name="wheel" type="continuous"><parent link="arm"/><child link="w"/><axis xyz="0 1 0"/></joint>')
-    with pytest.raises(RobotFileError, match=r"joint 'hinge': a revolute joint about \[1.0, 0.0, 0.0\] between the "
-                                             r"platform and wheel joint 'wheel'"):
+    body = (
+        '<link name="base"/>\n<link name="arm"/>\n<link name="w"><collision><origin rpy="1.5708 0 0"/><geometry>'
+        '<cylinder radius="0.1" length="0.02"/></geometry></collision></link>\n'
+        '<joint name="hinge" type="revolute"><parent link="base"/><child link="arm"/><axis xyz="1 0 0"/>'
+        '<limit lower="-1" upper="1" effort="1" velocity="1"/></joint>\n'
+        '<joint name="wheel" type="continuous"><parent link="arm"/><child link="w"/><axis xyz="0 1 0"/></joint>'
+    )
+    with pytest.raises(
+        RobotFileError,
+        match=r"joint 'hinge': a revolute joint about \[1.0, 0.0, 0.0\] between the "
+        r"platform and wheel joint 'wheel'",
+    ):
         load(_write(tmp_path, body))
 
 
 def test_a_steering_joint_over_three_wheels(tmp_path):
-    wheels = "".join(f'<link name="w{k}"><collision><origin rpy="1.5708 0 0"/><geometry><cylinder radius="0.1" '
-                     f'length="0.02"/></geometry></collision></link>\n<joint name="d{k}" type="continuous"><parent '
-                     f'link="body"/><child link="w{k}"/><origin xyz="{0.1 * k} 0 0"/><axis xyz="0 1 0"/></joint>\n'
-                     for k in range(3))
-    body = ('<link name="base"/>\n<link name="body"/>\n<joint name="steer" type="continuous"><parent link="base"/>'
-            '<child link="body"/><axis xyz="0 0 1"/></joint>\n' + wheels)
+    wheels = "".join(
+        f'<link name="w{k}"><collision><origin rpy="1.5708 0 0"/><geometry><cylinder radius="0.1" '
+        f'length="0.02"/></geometry></collision></link>\n<joint name="d{k}" type="continuous"><parent '
+        f'link="body"/><child link="w{k}"/><origin xyz="{0.1 * k} 0 0"/><axis xyz="0 1 0"/></joint>\n'
+        for k in range(3)
+    )
+    body = (
+        '<link name="base"/>\n<link name="body"/>\n<joint name="steer" type="continuous"><parent link="base"/>'
+        '<child link="body"/><axis xyz="0 0 1"/></joint>\n' + wheels
+    )
     with pytest.raises(RobotFileError, match=r"bad.urdf:5: joint 'steer': steers 3 wheels"):
         load(_write(tmp_path, body))
 

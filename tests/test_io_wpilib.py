@@ -1,5 +1,6 @@
 """WPILib kinematics objects in and out (wmr.io.from_wpilib, wmr.io.to_wpilib) and WPILib's values in wmr's conventions,
 checked against robotpy-wpimath itself: the robot read from an object gives the object's wheel speeds."""
+
 from pathlib import Path
 
 import numpy as np
@@ -12,11 +13,11 @@ from wmr.io import layouts as L
 from wmr.io.chassis import is_chassis_speeds
 from wmr.io.wpilib import chassis_speeds, from_module_states, module_positions, module_states, twist_of
 
-wk = pytest.importorskip("wpimath.kinematics")           # in environment.lock: runs here
+wk = pytest.importorskip("wpimath.kinematics")  # in environment.lock: runs here
 from wpimath.geometry import Rotation2d, Translation2d, Twist2d  # noqa: E402
 
 ROOT = Path(__file__).resolve().parent.parent
-TWISTS = np.random.default_rng(3).normal(0, 1.5, (40, 3))                   # psi_dot, x_dot, y_dot
+TWISTS = np.random.default_rng(3).normal(0, 1.5, (40, 3))  # psi_dot, x_dot, y_dot
 
 
 def _drive_speeds(bot, twists):
@@ -48,16 +49,21 @@ def test_swerve_of_other_sizes_round_trips(n):
 
 def test_mecanum_kinematics_gives_wpilibs_wheel_speeds():
     """The rollers wmr puts on WPILib's mecanum wheels (+45, -45, -45, +45 deg) give toWheelSpeeds exactly."""
-    corners = [(0.3, 0.25), (0.28, -0.26), (-0.27, 0.24), (-0.3, -0.25)]          # not even a rectangle
+    corners = [(0.3, 0.25), (0.28, -0.26), (-0.27, 0.24), (-0.3, -0.25)]  # not even a rectangle
     kin = wk.MecanumDriveKinematics(*(Translation2d(x, y) for x, y in corners))
     bot = from_wpilib(kin, wheel_radius=0.0762)
     assert wmr.campion_class(bot).label == "(3,0)"
-    ref = np.array([[(s := kin.toWheelSpeeds(wk.ChassisSpeeds(vx, vy, om))).frontLeft, s.frontRight, s.rearLeft,
-                     s.rearRight] for om, vx, vy in TWISTS])
+    ref = np.array(
+        [
+            [(s := kin.toWheelSpeeds(wk.ChassisSpeeds(vx, vy, om))).frontLeft, s.frontRight, s.rearLeft, s.rearRight]
+            for om, vx, vy in TWISTS
+        ]
+    )
     np.testing.assert_allclose(_drive_speeds(bot, TWISTS), ref, rtol=1e-12, atol=1e-12)
     back = to_wpilib(bot)
-    assert [(t.x, t.y) for t in (back.getFrontLeft(), back.getFrontRight(), back.getRearLeft(), back.getRearRight())] \
-        == corners
+    assert [
+        (t.x, t.y) for t in (back.getFrontLeft(), back.getFrontRight(), back.getRearLeft(), back.getRearRight())
+    ] == corners
 
 
 def test_the_mecanum_example_in_any_order_becomes_wpilibs_mecanum():
@@ -77,12 +83,18 @@ def test_differential_kinematics_gives_wpilibs_wheel_speeds():
     np.testing.assert_allclose(_drive_speeds(bot, fwd), ref, rtol=1e-12, atol=1e-12)
     assert to_wpilib(bot).trackWidth == 0.6
     castor = wmr.OffsetWheel((-0.3, 0.0), r=0.03, d=0.03, driven={"steer": False, "drive": False})
-    assert to_wpilib(wmr.Robot(list(bot.wheels) + [castor])).trackWidth == 0.6       # a passive castor is left out
+    assert to_wpilib(wmr.Robot(list(bot.wheels) + [castor])).trackWidth == 0.6  # a passive castor is left out
 
 
-@pytest.mark.parametrize("robot", [L.differential(0.55, 0.0762), wmr.load(ROOT / "examples" / "swerve4.toml"),
-                                   wmr.load(ROOT / "examples" / "mecanum4.toml")],
-                         ids=["differential", "swerve", "mecanum"])
+@pytest.mark.parametrize(
+    "robot",
+    [
+        L.differential(0.55, 0.0762),
+        wmr.load(ROOT / "examples" / "swerve4.toml"),
+        wmr.load(ROOT / "examples" / "mecanum4.toml"),
+    ],
+    ids=["differential", "swerve", "mecanum"],
+)
 def test_round_trip(robot):
     """wmr -> WPILib -> wmr: the same kinds, mount points and Campion class (the radii given back: WPILib has none)."""
     back = from_wpilib(to_wpilib(robot), wheel_radius=[float(u.r) for u in robot.wheels])
@@ -92,9 +104,14 @@ def test_round_trip(robot):
     assert wmr.campion_class(back).label == wmr.campion_class(robot).label
 
 
-@pytest.mark.parametrize("name, why", [("tricycle", "not differential: needs exactly two fixed wheels"),
-                                       ("omni3", "not mecanum: needs exactly four Swedish wheels"),
-                                       ("steered_castors", "not swerve: needs two swerve modules or more, has 1")])
+@pytest.mark.parametrize(
+    "name, why",
+    [
+        ("tricycle", "not differential: needs exactly two fixed wheels"),
+        ("omni3", "not mecanum: needs exactly four Swedish wheels"),
+        ("steered_castors", "not swerve: needs two swerve modules or more, has 1"),
+    ],
+)
 def test_robots_wpilib_cannot_express(name, why):
     with pytest.raises(InputValueError, match="WPILib .* cannot express") as err:
         to_wpilib(wmr.load(ROOT / "examples" / f"{name}.toml"))
@@ -102,7 +119,7 @@ def test_robots_wpilib_cannot_express(name, why):
 
 
 def test_a_castor_with_motors_is_not_left_out():
-    bot = wmr.load(ROOT / "examples" / "differential.toml")          # its castor is passive: WPILib leaves it out
+    bot = wmr.load(ROOT / "examples" / "differential.toml")  # its castor is passive: WPILib leaves it out
     assert to_wpilib(bot).trackWidth == 0.4
     active = wmr.Robot(list(bot.wheels[:2]) + [wmr.OffsetWheel((-0.3, 0.0), r=0.03, d=0.03)])
     with pytest.raises(InputValueError, match="wheel 3 constrains nothing but has motors"):
@@ -130,7 +147,7 @@ def test_chassis_speeds_and_twists():
     back = chassis_speeds([3.0, 1.0, 2.0])
     assert (back.vx, back.vy, back.omega) == (1.0, 2.0, 3.0)
     with pytest.raises(InputTypeError, match="ChassisSpeeds"):
-        twist_of(np.array([1.0, 2.0, 3.0]))                                   # an array's order would be a guess
+        twist_of(np.array([1.0, 2.0, 3.0]))  # an array's order would be a guess
     # the trap: a ChassisSpeeds iterates as (vx, vy, omega), so as an array it is a twist in the wrong order
     assert np.asarray(cs).tolist() == [1.0, 2.0, 3.0] != twist_of(cs).tolist()
     assert is_chassis_speeds(cs) and is_chassis_speeds([cs, cs]) and is_chassis_speeds(Twist2d(1, 2, 3))

@@ -1,4 +1,5 @@
 """wmr.analysis.isotropy: condition numbers (30)-(31), isotropy of J_L1 (34)-(38) and of the offset robot's J."""
+
 import numpy as np
 import pytest
 from hypothesis import given
@@ -12,19 +13,23 @@ from wmr.model.tolerance import TOL
 from conftest import robots, seeds
 
 
-@pytest.mark.parametrize("A, kappa", [
-    (np.diag([2.0, 1.0]), 2.0),
-    (np.diag([3.0, -3.0, 3.0]), 1.0),
-    ([[1.0, 0.0, 0.0], [0.0, 4.0, 0.0]], 4.0),                 # m < n
-    (np.ones((4, 1)), 1.0),
-    ([[1.0, 2.0], [2.0, 4.0]], np.inf),                          # singular
-    (np.zeros((3, 3)), np.inf),
-    (np.diag([1.0, 1e-11]), np.inf),                             # below TOL * sigma_max
-    (np.diag([1.0, 1e-8]), 1e8),
-])
+@pytest.mark.parametrize(
+    "A, kappa",
+    [
+        (np.diag([2.0, 1.0]), 2.0),
+        (np.diag([3.0, -3.0, 3.0]), 1.0),
+        ([[1.0, 0.0, 0.0], [0.0, 4.0, 0.0]], 4.0),  # m < n
+        (np.ones((4, 1)), 1.0),
+        ([[1.0, 2.0], [2.0, 4.0]], np.inf),  # singular
+        (np.zeros((3, 3)), np.inf),
+        (np.diag([1.0, 1e-11]), np.inf),  # below TOL * sigma_max
+        (np.diag([1.0, 1e-8]), 1e8),
+    ],
+)
 def test_condition_number_known_values(A, kappa):
     assert np.isclose(float(LA.condition_number(A)), kappa, rtol=1e-12) or (
-        np.isinf(kappa) and np.isinf(LA.condition_number(A)))
+        np.isinf(kappa) and np.isinf(LA.condition_number(A))
+    )
 
 
 @pytest.mark.parametrize("shape", [(3, 3), (5, 3, 3), (2, 4, 6, 3), (7, 3, 6)])
@@ -34,12 +39,12 @@ def test_condition_number_batched(shape):
     s = np.linalg.svd(A, compute_uv=False)
     assert k.shape == shape[:-2]
     assert np.allclose(k, s[..., 0] / s[..., -1], rtol=1e-12)
-    assert np.all(k >= 1.0)                                      # (31)
+    assert np.all(k >= 1.0)  # (31)
 
 
 def _kappa_svd(A):
     s = np.linalg.svd(A, compute_uv=False)
-    singular = s[..., -1] <= TOL * s[..., 0]                     # relative: the same in every unit
+    singular = s[..., -1] <= TOL * s[..., 0]  # relative: the same in every unit
     with np.errstate(divide="ignore"):
         return np.where(singular, np.inf, s[..., 0] / s[..., -1])
 
@@ -52,12 +57,14 @@ def test_3x3_fast_path_matches_svd(scale, kind):
     n = 500
     U, _ = np.linalg.qr(rng.normal(size=(n, 3, 3)))
     V, _ = np.linalg.qr(rng.normal(size=(n, 3, 3)))
-    s = {"random": rng.uniform(0.1, 1.0, (n, 3)),
-         "graded": np.stack([np.ones(n), 10 ** rng.uniform(-3, 0, n), 10 ** rng.uniform(-12, 0, n)], -1),
-         "rank2": np.stack([np.ones(n), rng.uniform(0, 1, n), np.zeros(n)], -1),
-         "rank1": np.stack([np.ones(n), np.zeros(n), np.zeros(n)], -1),
-         "isotropic": np.ones((n, 3)),
-         "near-threshold": np.stack([np.ones(n), np.ones(n), TOL * rng.uniform(0.5, 2.0, n)], -1)}[kind]
+    s = {
+        "random": rng.uniform(0.1, 1.0, (n, 3)),
+        "graded": np.stack([np.ones(n), 10 ** rng.uniform(-3, 0, n), 10 ** rng.uniform(-12, 0, n)], -1),
+        "rank2": np.stack([np.ones(n), rng.uniform(0, 1, n), np.zeros(n)], -1),
+        "rank1": np.stack([np.ones(n), np.zeros(n), np.zeros(n)], -1),
+        "isotropic": np.ones((n, 3)),
+        "near-threshold": np.stack([np.ones(n), np.ones(n), TOL * rng.uniform(0.5, 2.0, n)], -1),
+    }[kind]
     A = scale * (U * s[:, None, :]) @ V
     got, want = LA.condition_number(A), _kappa_svd(A)
     assert np.array_equal(np.isinf(got), np.isinf(want))
@@ -127,7 +134,7 @@ def test_centred_robot_J_is_not_isotropic():
     beta = np.random.default_rng(3).uniform(-np.pi, np.pi, (200, 3))
     k = LA.condition_number(bot.J(beta, L=0.3))
     assert not np.any(I.is_isotropic(bot.J(beta, L=0.3)))
-    assert np.ptp(k[np.isfinite(k)]) > 1.0                        # depends on beta
+    assert np.ptp(k[np.isfinite(k)]) > 1.0  # depends on beta
 
 
 def test_characteristic_length_rejects_degenerate():

@@ -1,4 +1,5 @@
 """wmr.analysis.kinematics: forward and inverse kinematics, round trips, first principles, body-frame independence."""
+
 import numpy as np
 import pytest
 from hypothesis import assume, given
@@ -21,7 +22,7 @@ from conftest import (
 @given(robots(w_min=2), seeds)
 def test_forward_inverse_round_trip(bot, seed):
     """forward(inverse(t)) = t when centred/dual wheels are steered for t (offset wheels: any beta)."""
-    assume(int(wmr.rank(bot.J1())) == 3)               # two distinct mount points at least
+    assume(int(wmr.rank(bot.J1())) == 3)  # two distinct mount points at least
     rng = np.random.default_rng(seed)
     for t in [rng.normal(size=3), np.array([0.0, rng.normal(), rng.normal()]), np.array([1.3, 0.0, 0.0])]:
         check_round_trip(bot, t, seed)
@@ -40,7 +41,7 @@ def test_inverse_rates_satisfy_no_slip_first_principles(bot, seed):
     for i, (u, sl) in enumerate(zip(bot.wheels, bot.rate_slices)):
         v, phi_dot = unit_mount_velocity(u, beta[i], sol.value[sl])
         assert np.allclose(v, vP[i], atol=1e-9)
-        if u.kind == "dual":          # the wheel-rate difference turns the unit at psi_dot + beta_dot
+        if u.kind == "dual":  # the wheel-rate difference turns the unit at psi_dot + beta_dot
             assert np.isclose(phi_dot, t[0] + bdot[i])
             assert np.isclose(u.beta_rate(t[0], sol.value[sl]), bdot[i])
 
@@ -51,7 +52,7 @@ def test_known_values_spin_about_C(paper_centred):
     beta = wmr.steering_angles(paper_centred, t)
     sol = wmr.inverse(paper_centred, beta, t)
     assert np.allclose(sol.value, 0.3 * 2.0 / 0.05)
-    for i, d in enumerate(paper_centred.mount_points):         # rolling direction = -p_dot/|p_dot|
+    for i, d in enumerate(paper_centred.mount_points):  # rolling direction = -p_dot/|p_dot|
         assert np.allclose(rolling_dir(beta[i]), -rigid_velocity(2.0, [0, 0], d) / (0.3 * 2.0))
 
 
@@ -74,7 +75,7 @@ def test_offset_robot_known_values():
 @given(robots(kinds=("centred",), w_min=3, spread=True), seeds)
 def test_inadmissible_motion_is_flagged(bot, seed):
     rng = np.random.default_rng(seed)
-    beta = rng.uniform(-np.pi, np.pi, bot.w)                   # generic: only t = 0 admissible
+    beta = rng.uniform(-np.pi, np.pi, bot.w)  # generic: only t = 0 admissible
     t = rng.normal(size=3)
     inv = wmr.inverse(bot, beta, t)
     assert not bool(inv.admissible)
@@ -85,7 +86,7 @@ def test_inadmissible_motion_is_flagged(bot, seed):
     assert not bool(fw.admissible)
     J1, J2 = bot.J1(), bot.J2(beta)
     assert np.allclose(fw.residual, J1 @ fw.value - J2 @ rates)
-    assert np.allclose(J1.T @ fw.residual, 0.0, atol=1e-10)     # normal equations of least squares
+    assert np.allclose(J1.T @ fw.residual, 0.0, atol=1e-10)  # normal equations of least squares
 
 
 @given(robots(w_min=2), seeds, st.tuples(st.floats(-2, 2), st.floats(-2, 2)), st.floats(-np.pi, np.pi))
@@ -100,15 +101,18 @@ def test_forward_twist_transforms_as_a_twist(bot, seed, origin, angle):
     t = rng.normal(size=3)
     inv_a = wmr.inverse(bot, beta, t)
     inv_b = wmr.inverse(moved, beta - angle, transform_twist(t, origin, angle))
-    assert np.allclose(inv_a.value, inv_b.value, atol=1e-9)         # joint rates do not depend on B
+    assert np.allclose(inv_a.value, inv_b.value, atol=1e-9)  # joint rates do not depend on B
 
 
-@pytest.mark.parametrize("bshape, xshape, out", [
-    ((3,), (3,), ()),
-    ((5, 3), (3,), (5,)),
-    ((3,), (5, 3), (5,)),
-    ((4, 1, 3), (5, 3), (4, 5)),
-])
+@pytest.mark.parametrize(
+    "bshape, xshape, out",
+    [
+        ((3,), (3,), ()),
+        ((5, 3), (3,), (5,)),
+        ((3,), (5, 3), (5,)),
+        ((4, 1, 3), (5, 3), (4, 5)),
+    ],
+)
 def test_batched_shapes(bshape, xshape, out):
     bot = wmr.paper_robot("dual", r=0.1, b=0.2)
     rng = np.random.default_rng(0)
@@ -121,8 +125,9 @@ def test_batched_shapes(bshape, xshape, out):
 
 
 def test_batched_equals_loop():
-    bot = wmr.Robot([wmr.OffsetWheel((1, 0), r=0.1, d=0.05), wmr.CentredWheel((-1, 1), r=0.2),
-                     wmr.DualWheel((0, -1), r=0.1, b=0.1)])
+    bot = wmr.Robot(
+        [wmr.OffsetWheel((1, 0), r=0.1, d=0.05), wmr.CentredWheel((-1, 1), r=0.2), wmr.DualWheel((0, -1), r=0.1, b=0.1)]
+    )
     rng = np.random.default_rng(5)
     beta, t = rng.uniform(-3, 3, (6, 3)), rng.normal(size=(6, 3))
     inv = wmr.inverse(bot, beta, t)

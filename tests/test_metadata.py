@@ -3,6 +3,7 @@
 These read the files of the source tree (pyproject.toml, CHANGELOG.md, CITATION.cff, LICENSE), which the
 sdist carries too; what the installed wheel says about itself is checked by tools/release_check.py.
 """
+
 import re
 import sys
 import tomllib
@@ -47,7 +48,7 @@ def test_build_requirement_is_capped():
     (req,) = META["build-system"]["requires"]
     assert re.fullmatch(r"setuptools>=(\d+),<(\d+)", req)
     low, high = map(int, re.findall(r"\d+", req))
-    assert low >= 77 and high > low          # SPDX license + license-files need setuptools >= 77
+    assert low >= 77 and high > low  # SPDX license + license-files need setuptools >= 77
 
 
 def test_package_is_typed():
@@ -60,13 +61,12 @@ def test_version_option(capsys):
     assert exit_.value.code == 0
     out = capsys.readouterr().out
     assert out.startswith(f"wmr {wmr.__version__} ({_version.DISTRIBUTION}, ")
-    assert str(Path(wmr.__file__).parent) in out          # which copy of wmr answers
+    assert str(Path(wmr.__file__).parent) in out  # which copy of wmr answers
 
 
 def test_missing_extra_hint_names_this_distribution(capsys, monkeypatch):
     """Without dask, ``wmr sweep --dask`` says which extra to install, of this distribution (not 'wmr')."""
-    monkeypatch.setitem(sys.modules, "dask.distributed", None)          # import fails as if not installed
-    code = main(["sweep", str(ROOT / "examples" / "paper_centred.toml"), "rank_F", "--grid", "2",
-                 "--dask", "local:1"])
+    monkeypatch.setitem(sys.modules, "dask.distributed", None)  # import fails as if not installed
+    code = main(["sweep", str(ROOT / "examples" / "paper_centred.toml"), "rank_F", "--grid", "2", "--dask", "local:1"])
     err = capsys.readouterr().err
     assert code == 2 and f"pip install '{_version.DISTRIBUTION}[dask]'" in err, err

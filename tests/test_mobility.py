@@ -1,4 +1,5 @@
 """wmr.analysis.mobility: rank, nullity and the mobility of F against independent reasoning per wheel type."""
+
 import importlib
 
 import numpy as np
@@ -11,23 +12,26 @@ from wmr.model.tolerance import TOL
 
 from conftest import random_twist, robots, same_subspace, seeds, steered_beta, transform_twist, twist_map, with_kind
 
-M = importlib.import_module("wmr.analysis.mobility")   # the module (wmr.mobility is the function)
+M = importlib.import_module("wmr.analysis.mobility")  # the module (wmr.mobility is the function)
 LA = importlib.import_module("wmr.analysis.linalg")
 
 
 # --- linear algebra ---------------------------------------------------------------------------
-@pytest.mark.parametrize("A, rank", [
-    ([[1.0, 2.0], [2.0, 4.0]], 1),
-    (np.eye(3), 3),
-    (np.zeros((2, 3)), 0),
-    (np.diag([1.0, 1e-12, 1.0]), 3),                       # a small column is not zero next to itself
-    ([[1.0, 1.0], [1.0, 1.0 + 1e-12]], 1),                  # nearly parallel columns: below TOL * s_max
-    ([[1.0, 1.0], [1.0, 1.0 + 1e-6]], 2),
-    (np.diag([1.0, 1e-6, 1.0]), 3),
-    (1e-12 * np.eye(2), 2),                                 # relative: the same in every unit
-    (np.ones((4, 1)), 1),
-    (np.ones((1, 5)), 1),
-])
+@pytest.mark.parametrize(
+    "A, rank",
+    [
+        ([[1.0, 2.0], [2.0, 4.0]], 1),
+        (np.eye(3), 3),
+        (np.zeros((2, 3)), 0),
+        (np.diag([1.0, 1e-12, 1.0]), 3),  # a small column is not zero next to itself
+        ([[1.0, 1.0], [1.0, 1.0 + 1e-12]], 1),  # nearly parallel columns: below TOL * s_max
+        ([[1.0, 1.0], [1.0, 1.0 + 1e-6]], 2),
+        (np.diag([1.0, 1e-6, 1.0]), 3),
+        (1e-12 * np.eye(2), 2),  # relative: the same in every unit
+        (np.ones((4, 1)), 1),
+        (np.ones((1, 5)), 1),
+    ],
+)
 def test_rank_known_values(A, rank):
     assert int(LA.rank(A)) == rank
     assert int(LA.nullity(A)) == np.shape(A)[1] - rank
@@ -94,23 +98,30 @@ def test_rank_F_equals_svd_rank_random(bot, seed):
 def test_rank_F_equals_svd_rank_at_special_configurations(bot, seed):
     rng = np.random.default_rng(seed)
     twists = np.vstack([rng.normal(size=(3, 3)), [[0.0, 1.0, 0.5], [2.0, 0.0, 0.0], [0.0, 0.0, 0.0]]])
-    betas = np.stack([steered_beta(bot, t, seed) for t in twists]
-                     + [np.full(bot.w, 0.4), np.zeros(bot.w)])
+    betas = np.stack([steered_beta(bot, t, seed) for t in twists] + [np.full(bot.w, 0.4), np.zeros(bot.w)])
     assert np.array_equal(M.rank_F(bot, betas), LA.rank(bot.F(betas)))
 
 
-@pytest.mark.parametrize("units", [
-    [wmr.OffsetWheel((1, 0), r=0.1, d=0.0), wmr.OffsetWheel((-1, 0), r=0.1, d=0.0),
-     wmr.OffsetWheel((0, 1), r=0.1, d=0.0)],                                 # d = 0: rank L_i = 1
-    [wmr.OffsetWheel((1, 0), r=0.1, d=0.0), wmr.CentredWheel((-1, 0), r=0.1)],
-    [wmr.CentredWheel((0, 0), r=0.1)],                                       # one wheel
-    [wmr.DualWheel((0, 0), r=0.1, b=0.1), wmr.DualWheel((0, 0), r=0.1, b=0.2)],   # coincident mounts
-], ids=["offset-d0", "offset-d0+centred", "single", "coincident-duals"])
+@pytest.mark.parametrize(
+    "units",
+    [
+        [
+            wmr.OffsetWheel((1, 0), r=0.1, d=0.0),
+            wmr.OffsetWheel((-1, 0), r=0.1, d=0.0),
+            wmr.OffsetWheel((0, 1), r=0.1, d=0.0),
+        ],  # d = 0: rank L_i = 1
+        [wmr.OffsetWheel((1, 0), r=0.1, d=0.0), wmr.CentredWheel((-1, 0), r=0.1)],
+        [wmr.CentredWheel((0, 0), r=0.1)],  # one wheel
+        [wmr.DualWheel((0, 0), r=0.1, b=0.1), wmr.DualWheel((0, 0), r=0.1, b=0.2)],  # coincident mounts
+    ],
+    ids=["offset-d0", "offset-d0+centred", "single", "coincident-duals"],
+)
 def test_rank_F_equals_svd_rank_degenerate_units(units):
     bot = wmr.Robot(units)
     rng = np.random.default_rng(3)
-    betas = np.vstack([rng.uniform(-np.pi, np.pi, (50, bot.w)), np.zeros((1, bot.w)),
-                       steered_beta(bot, np.array([1.0, 0.2, -0.3]))])
+    betas = np.vstack(
+        [rng.uniform(-np.pi, np.pi, (50, bot.w)), np.zeros((1, bot.w)), steered_beta(bot, np.array([1.0, 0.2, -0.3]))]
+    )
     assert np.array_equal(M.rank_F(bot, betas), LA.rank(bot.F(betas)))
 
 
@@ -145,8 +156,7 @@ def test_dual_adds_one_per_unit_and_same_twists(bot, seed):
     """nullity(F_dual) = nullity(F_centred) + w; both admit the same platform twists."""
     cen, dual = with_kind(bot, "centred"), with_kind(bot, "dual")
     rng = np.random.default_rng(seed)
-    betas = [rng.uniform(-np.pi, np.pi, bot.w), steered_beta(cen, rng.normal(size=3), seed),
-             np.full(bot.w, -0.7)]
+    betas = [rng.uniform(-np.pi, np.pi, bot.w), steered_beta(cen, rng.normal(size=3), seed), np.full(bot.w, -0.7)]
     for beta in betas:
         assert int(LA.nullity(dual.F(beta))) == int(LA.nullity(cen.F(beta))) + bot.w
         assert int(M.mobility(dual, beta)) == int(M.mobility(cen, beta)) + bot.w
@@ -167,7 +177,7 @@ def test_admissible_twists_are_realisable(bot, seed):
     assert np.linalg.matrix_rank(null[:3], tol=1e-8) == basis.shape[1]
     # a twist outside the admissible set leaves a residual
     if basis.shape[1] < 3:
-        t = np.linalg.svd(basis.T)[2][-1]                       # orthogonal to all admissible twists
+        t = np.linalg.svd(basis.T)[2][-1]  # orthogonal to all admissible twists
         assert not bool(wmr.inverse(bot, beta, t).admissible)
 
 
@@ -176,8 +186,7 @@ def test_admissible_twists_are_realisable(bot, seed):
 def test_mobility_and_admissibility_do_not_depend_on_body_frame(bot, seed, origin, angle):
     rng = np.random.default_rng(seed)
     moved = bot.moved(origin, angle)
-    beta = np.vstack([rng.uniform(-np.pi, np.pi, (5, bot.w)),
-                      steered_beta(bot, rng.normal(size=3), seed)])
+    beta = np.vstack([rng.uniform(-np.pi, np.pi, (5, bot.w)), steered_beta(bot, rng.normal(size=3), seed)])
     assert np.array_equal(M.mobility(moved, beta - angle), M.mobility(bot, beta))
     T = twist_map(origin, angle)
     for b in beta:
@@ -185,7 +194,8 @@ def test_mobility_and_admissibility_do_not_depend_on_body_frame(bot, seed, origi
     t = rng.normal(size=3)
     b = beta[-1]
     assert bool(wmr.inverse(bot, b, t).admissible) == bool(
-        wmr.inverse(moved, b - angle, transform_twist(t, origin, angle)).admissible)
+        wmr.inverse(moved, b - angle, transform_twist(t, origin, angle)).admissible
+    )
 
 
 @pytest.mark.parametrize("batch", [(), (3,), (2, 4)])
@@ -212,6 +222,6 @@ BAD = [
 
 @pytest.mark.parametrize("call, name, value", BAD)
 def test_bad_input(call, name, value):
-    with pytest.raises(TypeError if value == "'abc'" else ValueError) as exc:   # a string: the wrong kind
+    with pytest.raises(TypeError if value == "'abc'" else ValueError) as exc:  # a string: the wrong kind
         call()
     assert name in str(exc.value) and value in str(exc.value), str(exc.value)

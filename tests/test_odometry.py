@@ -6,6 +6,7 @@ Agreement with WPILib: the same least squares, the module angles of each step's 
 size in position, 1e-12 rad in heading, over 2000 steps with noisy (slipping) module measurements; measured about
 4e-14 m over a 10 m path (tests print nothing; the numbers are in the report of issue 24).
 """
+
 from pathlib import Path
 
 import numpy as np
@@ -51,6 +52,7 @@ def _wpilib_poses(odometry, T, gyro, positions):
 def test_swerve_odometry_agrees_with_wpilib(with_gyro):
     wk = pytest.importorskip("wpimath.kinematics")
     from wpimath.geometry import Pose2d, Rotation2d
+
     bot = wmr.load(ROOT / "examples" / "swerve4.toml")
     beta, distance = _swerve_run(bot)
     T = len(beta)
@@ -59,9 +61,10 @@ def test_swerve_odometry_agrees_with_wpilib(with_gyro):
     gyro = odo.pose[:, 0] + (np.random.default_rng(1).normal(0, 0.02, T) if with_gyro else 0.0)
     if with_gyro:
         odo = wheel_odometry(bot, beta, angles, heading=gyro)
-    assert odo.slip.max() > 1e-4                                       # the measurements do slip
-    wp = wk.SwerveDrive4Odometry(to_wpilib(bot), Rotation2d(float(gyro[0])),
-                                 tuple(module_positions(beta[0], distance[0])), Pose2d())
+    assert odo.slip.max() > 1e-4  # the measurements do slip
+    wp = wk.SwerveDrive4Odometry(
+        to_wpilib(bot), Rotation2d(float(gyro[0])), tuple(module_positions(beta[0], distance[0])), Pose2d()
+    )
     ref = _wpilib_poses(wp, T, gyro, lambda k: tuple(module_positions(beta[k], distance[k])))
     size = np.abs(odo.pose[:, 1:]).max()
     assert size > 5.0
@@ -73,10 +76,11 @@ def test_mecanum_odometry_agrees_with_wpilib():
     """Rollers are unknowns here (solved with the twist): the same least squares as WPILib's 4 x 3 matrix."""
     wk = pytest.importorskip("wpimath.kinematics")
     from wpimath.geometry import Pose2d, Rotation2d
+
     bot = wmr.load(ROOT / "examples" / "mecanum4.toml")
     rng = np.random.default_rng(5)
     T = 500
-    travel = np.cumsum(rng.normal(0.0, 0.02, (T, 4)) + [0.01, 0.02, 0.015, 0.012], axis=0)    # metres, slipping
+    travel = np.cumsum(rng.normal(0.0, 0.02, (T, 4)) + [0.01, 0.02, 0.015, 0.012], axis=0)  # metres, slipping
     odo = wheel_odometry(bot, np.zeros((T, 4)), travel / 0.05)
     assert measured_joints(bot) == ("theta_dot_1", "theta_dot_2", "theta_dot_3", "theta_dot_4")
     gyro = odo.pose[:, 0]
@@ -89,19 +93,20 @@ def test_mecanum_odometry_agrees_with_wpilib():
     wp = wk.MecanumDriveOdometry(to_wpilib(bot), Rotation2d(0.0), positions(0), Pose2d())
     ref = _wpilib_poses(wp, T, gyro, positions)
     assert np.abs(ref[:, 1:] - odo.pose[:, 1:]).max() <= TOL_POSE * np.abs(odo.pose[:, 1:]).max()
-    assert odo.unknown.shape == (T - 1, 4)                              # the four roller increments
+    assert odo.unknown.shape == (T - 1, 4)  # the four roller increments
 
 
 def test_differential_odometry_agrees_with_wpilib():
     wk = pytest.importorskip("wpimath.kinematics")
     from wpimath.geometry import Pose2d, Rotation2d
+
     kin = wk.DifferentialDriveKinematics(0.55)
     bot = from_wpilib(kin, wheel_radius=0.0762)
     T = 400
     rng = np.random.default_rng(2)
     travel = np.cumsum(rng.normal(0.02, 0.01, (T, 2)), axis=0)
     odo = wheel_odometry(bot, np.zeros((T, 2)), travel / 0.0762)
-    assert odo.slip.max() < 1e-14                                       # two wheels: any travels are a rigid motion
+    assert odo.slip.max() < 1e-14  # two wheels: any travels are a rigid motion
     wp = wk.DifferentialDriveOdometry(Rotation2d(0.0), float(travel[0, 0]), float(travel[0, 1]), Pose2d())
     out = [(0.0, 0.0, 0.0)]
     for k in range(1, T):
@@ -120,7 +125,7 @@ def test_odometry_of_a_differential_drive_with_a_castor():
     bot = wmr.Robot(list(differential(0.4, 0.08).wheels) + [castor])
     twist = np.array([0.7, 0.5, 0.0])
     rates = wmr.inverse(bot, wmr.steering_angles(bot, twist), twist).value
-    assert measured_joints(bot) == ("theta_dot_1", "theta_dot_2")        # the castor has no encoder
+    assert measured_joints(bot) == ("theta_dot_1", "theta_dot_2")  # the castor has no encoder
     t = np.linspace(0.0, 3.0, 301)
     beta = np.random.default_rng(4).uniform(-np.pi, np.pi, (len(t), 3))  # the castor turns any way
     odo = wheel_odometry(bot, beta, t[:, None] * rates[:2])
@@ -135,7 +140,7 @@ def test_odometry_of_offset_wheels_converges_at_first_order():
     bot = wmr.paper_robot("offset", L=0.5, r=0.1)
     rates = np.array([0.3, -1.0, -0.2, 2.0, 0.5, 1.0])
     fine = wmr.simulate(bot, rates, [0.2, 1.0, -0.5], t_end=2.0, dt=1e-3)
-    assert measured_joints(bot) == bot.rate_names                   # steering through beta, drives through angles
+    assert measured_joints(bot) == bot.rate_names  # steering through beta, drives through angles
     drive = [k for k, n in enumerate(bot.rate_names) if n.startswith("theta")]
     errors = []
     for every in (40, 20, 10):
@@ -150,13 +155,13 @@ def test_the_slip_residual_is_the_travel_no_rigid_motion_explains():
     bot = wmr.load(ROOT / "examples" / "swerve4.toml")
     T = 5
     beta = np.full((T, 4), np.pi / 2)
-    angles = np.outer(np.arange(T), np.full(4, 2.0))                    # straight ahead: no slip
-    angles[3:, 1] += 0.5                                                # module 2 slips at step 2 (samples 2..3)
+    angles = np.outer(np.arange(T), np.full(4, 2.0))  # straight ahead: no slip
+    angles[3:, 1] += 0.5  # module 2 slips at step 2 (samples 2..3)
     odo = wheel_odometry(bot, beta, angles)
     assert np.all(odo.slip[[0, 1, 3]] < 1e-14) and odo.slip[2] > 0.0
     J1, J2 = bot.J1(), bot.J2(beta[3])
     e = J2 @ (angles[3] - angles[2])
-    expected = J1 @ np.linalg.lstsq(J1, e, rcond=None)[0] - e           # the part of J2 d_theta outside range(J1)
+    expected = J1 @ np.linalg.lstsq(J1, e, rcond=None)[0] - e  # the part of J2 d_theta outside range(J1)
     np.testing.assert_allclose(odo.residual[2], expected, atol=1e-14)
 
 

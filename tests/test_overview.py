@@ -1,4 +1,5 @@
 """wmr.analysis.overview: the numbers `wmr analyze` reports, checked against the library and the paper."""
+
 import numpy as np
 import pytest
 
@@ -21,7 +22,7 @@ def test_configurations_hold_the_grid_and_the_motion_configurations():
 
 def test_configurations_have_at_least_four_values_per_angle():
     bot = wmr.paper_robot("offset", d=0.5)
-    assert configurations(bot, grid=16, twists=0).shape == (4 ** 3 + 4 + 3, 3)
+    assert configurations(bot, grid=16, twists=0).shape == (4**3 + 4 + 3, 3)
 
 
 def test_configurations_grid_only_the_steered_angles():
@@ -41,7 +42,7 @@ def test_characteristic_length_minimises_kappa_JL1_anywhere():
 
     assert k(1.0) < min(k(0.99), k(1.01)) and k(1.0) > 1.0001
     d = bot.mount_points
-    c = np.linalg.norm(d.sum(0)) * np.sqrt(3 / (d ** 2).sum())
+    c = np.linalg.norm(d.sum(0)) * np.sqrt(3 / (d**2).sum())
     assert np.isclose(k(1.0), np.sqrt((3 + c) / (3 - c)), rtol=1e-12)
     o = overview(bot, grid=200, twists=20)
     assert not o.isotropic["J_L1"] and "centroid" in o.advice[0]
@@ -80,7 +81,7 @@ def test_singular_families_are_singular_and_the_others_are_not():
     L = wmr.characteristic_length(bot)
     beta = np.array([f["beta"] for f in fams])
     assert (rank(bot.J(beta, L=L)) == 2).all()
-    assert (rank(bot.J(beta + [0.0, 0.0, 0.0, 0.3], L=L)) == 3).all()       # wheel 4 turned: regular again
+    assert (rank(bot.J(beta + [0.0, 0.0, 0.0, 0.3], L=L)) == 3).all()  # wheel 4 turned: regular again
     assert singular_families(wmr.paper_robot("offset", d=0.2)) == []
 
 
@@ -96,19 +97,19 @@ def test_bad_arguments():
 def test_fixed_wheels_keep_their_angles_and_meet_only_at_infinity():
     bot = wmr.load(EXAMPLES / "tricycle.toml")
     fams = singular_families(bot)
-    assert [f["family"] for f in fams] == ["parallel"]                        # the rear planes never meet
+    assert [f["family"] for f in fams] == ["parallel"]  # the rear planes never meet
     assert np.allclose(np.degrees(fams[0]["beta"])[1:], 90.0) and np.isclose(abs(np.degrees(fams[0]["beta"][0])), 90.0)
     o = overview(wmr.load(EXAMPLES / "differential.toml"), grid=100, twists=10)
     assert (o.rank_F, o.nullity_range) == (5, (2, 2)) and o.singular == [] and not o.isotropic["J_L1"]
     m = overview(wmr.load(EXAMPLES / "mecanum4.toml"), grid=100, twists=10)
-    assert np.isclose(m.kappa_J2, 1 + np.sqrt(2)) and "omni" in m.advice[0]             # sqrt((1 + c) / (1 - c))
+    assert np.isclose(m.kappa_J2, 1 + np.sqrt(2)) and "omni" in m.advice[0]  # sqrt((1 + c) / (1 - c))
     assert overview(wmr.load(EXAMPLES / "omni3.toml"), grid=100, twists=10).isotropic == {"J_L1": True, "J2": True}
 
 
 def test_many_steered_units_get_a_sample_not_a_huge_grid():
     ring = [(np.cos(a), np.sin(a)) for a in np.linspace(0, 2 * np.pi, 12, endpoint=False)]
-    bot = wmr.Robot([wmr.CentredWheel(p, r=0.1) for p in ring])                 # 4 ** 12 = 1.7e7 grid points
+    bot = wmr.Robot([wmr.CentredWheel(p, r=0.1) for p in ring])  # 4 ** 12 = 1.7e7 grid points
     beta = configurations(bot, grid=500, twists=10)
     assert beta.shape == (500 + 4 + 12 + 10, 12)
     o = overview(bot, grid=500, twists=10)
-    assert (o.rank_F, o.rank_F_range) == (12 + 3, (12 + 2, 12 + 3))              # generic rank F = w + 3
+    assert (o.rank_F, o.rank_F_range) == (12 + 3, (12 + 2, 12 + 3))  # generic rank F = w + 3

@@ -1,4 +1,5 @@
 """wmr.model.platform: E, rotations and platform point velocities, checked against 3D cross products."""
+
 import numpy as np
 import pytest
 import sympy as sp
@@ -49,7 +50,7 @@ def test_rotation_symbolic_matches_numeric(seed):
 @given(coords, coords, seeds)
 def test_point_velocity_first_principles(dx, dy, seed):
     t = np.random.default_rng(seed).normal(size=3)
-    want = rigid_velocity(t[0], t[1:], [dx, dy])               # c_dot + (psi_dot k) x d
+    want = rigid_velocity(t[0], t[1:], [dx, dy])  # c_dot + (psi_dot k) x d
     assert np.allclose(P.point_velocity(t, [dx, dy]), want, atol=1e-12)
     assert np.allclose(P.point_row((dx, dy)) @ t, want, atol=1e-12)
 
@@ -57,7 +58,7 @@ def test_point_velocity_first_principles(dx, dy, seed):
 @given(coords, coords, st.floats(0.1, 5.0), seeds)
 def test_point_row_with_characteristic_length(dx, dy, L, seed):
     t = np.random.default_rng(seed).normal(size=3)
-    tL = np.array([L * t[0], t[1], t[2]])                      # (33)
+    tL = np.array([L * t[0], t[1], t[2]])  # (33)
     assert np.allclose(P.point_row((dx, dy), L) @ tL, P.point_row((dx, dy)) @ t, atol=1e-12)
 
 
@@ -66,15 +67,18 @@ def test_point_row_symbolic():
     M = P.point_row((dx, dy), L)
     assert isinstance(M, sp.MatrixBase)
     assert M == sp.Matrix([[-dy / L, 1, 0], [dx / L, 0, 1]])
-    assert P.point_row((dx, dy), 1) == sp.Matrix([[-dy, 1, 0], [dx, 0, 1]])   # exact, no 1.0
+    assert P.point_row((dx, dy), 1) == sp.Matrix([[-dy, 1, 0], [dx, 0, 1]])  # exact, no 1.0
 
 
-@pytest.mark.parametrize("tshape, dshape, out", [
-    ((3,), (2,), (2,)),
-    ((5, 3), (2,), (5, 2)),
-    ((3,), (4, 2), (4, 2)),
-    ((5, 1, 3), (4, 2), (5, 4, 2)),
-])
+@pytest.mark.parametrize(
+    "tshape, dshape, out",
+    [
+        ((3,), (2,), (2,)),
+        ((5, 3), (2,), (5, 2)),
+        ((3,), (4, 2), (4, 2)),
+        ((5, 1, 3), (4, 2), (5, 4, 2)),
+    ],
+)
 def test_point_velocity_broadcasts(tshape, dshape, out):
     rng = np.random.default_rng(0)
     t, d = rng.normal(size=tshape), rng.normal(size=dshape)
@@ -83,12 +87,15 @@ def test_point_velocity_broadcasts(tshape, dshape, out):
     assert np.allclose(v, rigid_velocity(t[..., 0], t[..., 1:], d))
 
 
-@pytest.mark.parametrize("twist, d, name", [
-    ([1.0, 2.0], [0.0, 0.0], "twist"),
-    ([1.0, 2.0, 3.0], [0.0, 0.0, 0.0], "d"),
-    ([1.0, np.nan, 3.0], [0.0, 0.0], "twist"),
-    ([1.0, 2.0, 3.0], [np.inf, 0.0], "d"),
-])
+@pytest.mark.parametrize(
+    "twist, d, name",
+    [
+        ([1.0, 2.0], [0.0, 0.0], "twist"),
+        ([1.0, 2.0, 3.0], [0.0, 0.0, 0.0], "d"),
+        ([1.0, np.nan, 3.0], [0.0, 0.0], "twist"),
+        ([1.0, 2.0, 3.0], [np.inf, 0.0], "d"),
+    ],
+)
 def test_point_velocity_bad_input(twist, d, name):
     with pytest.raises(ValueError, match=name):
         P.point_velocity(twist, d)

@@ -3,6 +3,7 @@
 The last test shows that the suite can fail: it plants a wrong sign in a Jacobian and checks
 that the key properties then break.
 """
+
 from types import SimpleNamespace
 
 import numpy as np
@@ -24,8 +25,9 @@ from conftest import (
 )
 
 # the symbols of the paper's robot (edition.symbols defines the same ones for the chapters)
-S = SimpleNamespace(L=sp.Symbol("L", positive=True), r=sp.Symbol("r", positive=True),
-                    beta=sp.symbols("beta1:4", real=True))
+S = SimpleNamespace(
+    L=sp.Symbol("L", positive=True), r=sp.Symbol("r", positive=True), beta=sp.symbols("beta1:4", real=True)
+)
 
 
 @given(robots(), seeds, st.sampled_from([(), (4,), (2, 3)]))
@@ -54,7 +56,7 @@ def test_F_columns_follow_qdot_names(bot, seed):
     rng = np.random.default_rng(seed)
     beta, t, th = rng.uniform(-3, 3, bot.w), rng.normal(size=3), rng.normal(size=bot.n_rates)
     F = bot.F(beta)
-    assert np.allclose(F @ np.concatenate([t, th]), bot.J1() @ t - bot.J2(beta) @ th)   # (22)-(24)
+    assert np.allclose(F @ np.concatenate([t, th]), bot.J1() @ t - bot.J2(beta) @ th)  # (22)-(24)
     assert bot.qdot_names[:3] == ("psi_dot", "x_dot", "y_dot")
     for i, (u, sl) in enumerate(zip(bot.wheels, bot.rate_slices), 1):
         assert bot.rate_names[sl] == u.rate_names(i)
@@ -62,7 +64,7 @@ def test_F_columns_follow_qdot_names(bot, seed):
 
 @given(robots(w_max=3), seeds)
 def test_symbolic_F_matches_numeric(bot, seed):
-    Fs = bot.F()                                        # symbolic betas beta1..betaw
+    Fs = bot.F()  # symbolic betas beta1..betaw
     assert isinstance(Fs, sp.MatrixBase)
     f = sp.lambdify(bot.beta_symbols, Fs, "numpy")
     betas = np.random.default_rng(seed).uniform(-np.pi, np.pi, (3, bot.w))
@@ -75,19 +77,19 @@ def test_symbolic_F_matches_numeric(bot, seed):
 def test_JL1_and_J(bot, L, seed):
     rng = np.random.default_rng(seed)
     t, beta = rng.normal(size=3), rng.uniform(-3, 3, bot.w)
-    tL = np.array([L * t[0], t[1], t[2]])              # (33)
+    tL = np.array([L * t[0], t[1], t[2]])  # (33)
     assert np.allclose(bot.J1(L) @ tL, bot.J1() @ t)
-    assert np.allclose(bot.J(beta, L), bot.J1(L).T @ bot.J2(beta))   # (56)
+    assert np.allclose(bot.J(beta, L), bot.J1(L).T @ bot.J2(beta))  # (56)
 
 
 def test_symbolic_paper_robot_is_exact():
     bot = wmr.paper_robot("centred", L=S.L, r=S.r)
     J1 = bot.J1()
-    assert not J1.atoms(sp.Float), J1                      # L = 1 must not turn into 1.0
+    assert not J1.atoms(sp.Float), J1  # L = 1 must not turn into 1.0
     assert J1[0, :] == sp.Matrix([[0, 1, 0]]) and J1[1, :] == sp.Matrix([[-S.L, 0, 1]])
     J = bot.J(L=S.L)
     assert not J.atoms(sp.Float)
-    assert set(J.free_symbols) == {S.r, *S.beta}           # J_L1 with L = |d_i|: no L left
+    assert set(J.free_symbols) == {S.r, *S.beta}  # J_L1 with L = |d_i|: no L left
     num = wmr.paper_robot("centred", L=0.7, r=0.2)
     beta = np.array([0.3, -1.2, 2.0])
     f = sp.lambdify([S.L, S.r, *S.beta], J, "numpy")
@@ -111,11 +113,9 @@ def test_moved_round_trip(bot, origin, angle):
 
 
 def test_repr_and_names():
-    bot = wmr.Robot([wmr.OffsetWheel((1, 0), r=0.1, d=0.05), wmr.DualWheel((-1, 0), r=0.1, b=0.2)],
-                    name="mix")
+    bot = wmr.Robot([wmr.OffsetWheel((1, 0), r=0.1, d=0.05), wmr.DualWheel((-1, 0), r=0.1, b=0.2)], name="mix")
     assert "mix" in repr(bot) and "offset" in repr(bot) and "dual" in repr(bot)
-    assert bot.qdot_names == ("psi_dot", "x_dot", "y_dot", "phi_dot_1", "theta_dot_1",
-                              "theta_dot_21", "theta_dot_22")
+    assert bot.qdot_names == ("psi_dot", "x_dot", "y_dot", "phi_dot_1", "theta_dot_1", "theta_dot_21", "theta_dot_22")
     assert bot.rate_slices == (slice(0, 2), slice(2, 4))
 
 
@@ -151,24 +151,30 @@ def test_bad_input_raises_with_name_and_value(make, name, value):
 
 # --- the suite can fail ---------------------------------------------------------------------------
 def _flip_offset(self, bk):
-    return bk.matrix([[self.d, 0], [0, -self.r]])          # wrong sign of the offset term of (20)
+    return bk.matrix([[self.d, 0], [0, -self.r]])  # wrong sign of the offset term of (20)
 
 
 def _flip_centred(self, bk):
-    return bk.matrix([[0], [self.r]])                      # wrong sign of (51)
+    return bk.matrix([[0], [self.r]])  # wrong sign of (51)
 
 
 def _flip_dual(self, bk):
     return bk.matrix([[0, 0], [self.r / 2, -self.r / 2]])  # wrong sign on wheel 1 of (17)
 
 
-def _flip_E(d, L=1, backend=None):                         # E -> -E in (5)
+def _flip_E(d, L=1, backend=None):  # E -> -E in (5)
     bk = wmr.model.backend.choose(*d, L, backend=backend)
     return bk.matrix([[d[1] / L, 1, 0], [-d[0] / L, 0, 1]])
 
 
-MIXED = wmr.Robot([wmr.OffsetWheel((1.0, 0.2), r=0.2, d=0.1), wmr.CentredWheel((-0.5, 0.9), r=0.3),
-                   wmr.DualWheel((-0.4, -1.0), r=0.25, b=0.15), wmr.CentredWheel((0.6, -0.7), r=0.1)])
+MIXED = wmr.Robot(
+    [
+        wmr.OffsetWheel((1.0, 0.2), r=0.2, d=0.1),
+        wmr.CentredWheel((-0.5, 0.9), r=0.3),
+        wmr.DualWheel((-0.4, -1.0), r=0.25, b=0.15),
+        wmr.CentredWheel((0.6, -0.7), r=0.1),
+    ]
+)
 OFFSET_PAIR = wmr.Robot([wmr.OffsetWheel((1.0, 0.0), r=0.2, d=0.1), wmr.OffsetWheel((-1.0, 0.5), r=0.2, d=0.1)])
 TWIST = np.array([0.8, 0.3, -0.5])
 RNG = np.random.default_rng(7)
@@ -181,14 +187,17 @@ CHECKS = {
     "steering rolls forward": lambda: check_positive_rolling(MIXED, TWIST),
     "offset steer-only circle": lambda: check_offset_steer_only(OFFSET_PAIR),
 }
-MUTATIONS = {   # mutation -> the checks that must catch it
-    "offset d sign": (("OffsetWheel", "local_block", _flip_offset),
-                      ["J2 first principles", "offset steer-only circle"]),
-    "centred r sign": (("CentredWheel", "local_block", _flip_centred),
-                       ["J2 first principles", "steering rolls forward"]),
+MUTATIONS = {  # mutation -> the checks that must catch it
+    "offset d sign": (
+        ("OffsetWheel", "local_block", _flip_offset),
+        ["J2 first principles", "offset steer-only circle"],
+    ),
+    "centred r sign": (
+        ("CentredWheel", "local_block", _flip_centred),
+        ["J2 first principles", "steering rolls forward"],
+    ),
     "dual wheel sign": (("DualWheel", "local_block", _flip_dual), ["J2 first principles"]),
-    "E sign in J1": (("robot", "point_row", _flip_E),
-                     ["J1 first principles", "forward(inverse(t)) = t"]),
+    "E sign in J1": (("robot", "point_row", _flip_E), ["J1 first principles", "forward(inverse(t)) = t"]),
 }
 
 

@@ -1,4 +1,5 @@
 """`wmr simulate`: JSON that matches the runner, the model written with --mjcf, refusals and bad input in one line."""
+
 from __future__ import annotations
 
 import json
@@ -21,8 +22,22 @@ def _run(capsys, *argv):
 
 def test_simulate_json_and_model(capsys, tmp_path):
     xml = tmp_path / "swerve.xml"
-    code, out, err = _run(capsys, "simulate", str(ROOT / "examples" / "swerve4.toml"), "--vx", "0.8", "--vy", "0.2",
-                          "--omega", "0.4", "--seconds", "2", "--mjcf", str(xml), "--json")
+    code, out, err = _run(
+        capsys,
+        "simulate",
+        str(ROOT / "examples" / "swerve4.toml"),
+        "--vx",
+        "0.8",
+        "--vy",
+        "0.2",
+        "--omega",
+        "0.4",
+        "--seconds",
+        "2",
+        "--mjcf",
+        str(xml),
+        "--json",
+    )
     assert code == 0 and err == ""
     data = json.loads(out)
     for key, want in (("omega", 0.4), ("vx", 0.8), ("vy", 0.2)):
@@ -33,23 +48,29 @@ def test_simulate_json_and_model(capsys, tmp_path):
 
 
 def test_simulate_table_and_export_only(capsys, tmp_path):
-    code, out, _ = _run(capsys, "simulate", str(ROOT / "examples" / "differential.toml"), "--omega", "1",
-                        "--seconds", "1")
+    code, out, _ = _run(
+        capsys, "simulate", str(ROOT / "examples" / "differential.toml"), "--omega", "1", "--seconds", "1"
+    )
     assert code == 0 and out.splitlines()[0].startswith("commanded") and "from encoders" in out
     xml = tmp_path / "tri.xml"
-    code, out, _ = _run(capsys, "simulate", str(ROOT / "examples" / "tricycle.toml"), "--seconds", "0",
-                        "--mjcf", str(xml))
+    code, out, _ = _run(
+        capsys, "simulate", str(ROOT / "examples" / "tricycle.toml"), "--seconds", "0", "--mjcf", str(xml)
+    )
     assert code == 0 and xml.read_text().startswith("<mujoco")
 
 
-@pytest.mark.parametrize("argv, message", [
-    (["examples/omni3.toml"], "cannot export .*Swedish wheel"),
-    (["examples/swerve4.toml", "--param", "sliding=-1"], "sliding"),
-    (["examples/swerve4.toml", "--param", "grip=1"], "--param must be NAME=VALUE"),
-    (["examples/swerve4.toml", "--seconds", "-1"], "--seconds must be >= 0"),
-    (["examples/swerve4.toml", "--vx", "fast"], "--vx must be a number"),
-])
+@pytest.mark.parametrize(
+    "argv, message",
+    [
+        (["examples/omni3.toml"], "cannot export .*Swedish wheel"),
+        (["examples/swerve4.toml", "--param", "sliding=-1"], "sliding"),
+        (["examples/swerve4.toml", "--param", "grip=1"], "--param must be NAME=VALUE"),
+        (["examples/swerve4.toml", "--seconds", "-1"], "--seconds must be >= 0"),
+        (["examples/swerve4.toml", "--vx", "fast"], "--vx must be a number"),
+    ],
+)
 def test_simulate_bad_input(capsys, argv, message):
     import re
+
     code, out, err = _run(capsys, "simulate", *[str(ROOT / a) if a.endswith(".toml") else a for a in argv])
     assert code == 2 and out == "" and re.search(message, err) and len(err.strip().splitlines()) == 1

@@ -1,6 +1,7 @@
 """wmr.sim's runner against cases computed by hand: wheels rolling at v = omega r, a differential drive turning
 about the midpoint of its axle, a swerve drive following a commanded twist (against wmr.forward); and the
 runner's own contract (commands, servos off, pushes, sampling that does not change the physics)."""
+
 from __future__ import annotations
 
 from pathlib import Path
@@ -29,27 +30,27 @@ def test_wheels_roll_at_omega_r():
     sim = Simulation(_cart(r))
     rec = run(sim, Schedule.constant(np.zeros(3), np.full(3, omega)), 2.0)
     late = rec.t > 1.0
-    v = r * omega                                                           # 0.4 m/s, by hand
+    v = r * omega  # 0.4 m/s, by hand
     assert rec.twist[late, 1].mean() == pytest.approx(v, rel=0.01)
     assert np.abs(rec.twist[late, 2]).max() < 0.01 * v and np.abs(rec.twist[late, 0]).max() < 0.01 * v / 0.25
-    assert np.allclose(rec.rates[late], omega, rtol=0.01)                   # the encoders read omega
+    assert np.allclose(rec.rates[late], omega, rtol=0.01)  # the encoders read omega
     assert sim.joint_names == ("u1_drive", "u2_drive", "u3_drive") and np.array_equal(rec.joint_vel, rec.rates)
-    assert rec.joint_pos[-1] == pytest.approx(np.trapezoid(rec.joint_vel, rec.t, axis=0), rel=0.01)   # angle = integral
-    assert rec.slip_speed[late].max() < 0.01 * v                            # rolling, not sliding
-    assert rec.pose[-1, 1] == pytest.approx(v * rec.t[-1], rel=0.05)        # from rest: a short start-up
+    assert rec.joint_pos[-1] == pytest.approx(np.trapezoid(rec.joint_vel, rec.t, axis=0), rel=0.01)  # angle = integral
+    assert rec.slip_speed[late].max() < 0.01 * v  # rolling, not sliding
+    assert rec.pose[-1, 1] == pytest.approx(v * rec.t[-1], rel=0.05)  # from rest: a short start-up
 
 
 def test_differential_drive_turns_about_the_midpoint_of_its_axle():
     """Left wheel back, right wheel forward at omega: psi_dot = r omega / b (b = 0.2 half the track), C still."""
-    robot = wmr.load(ROOT / "examples" / "differential.toml")           # C = midpoint of the driven axle
+    robot = wmr.load(ROOT / "examples" / "differential.toml")  # C = midpoint of the driven axle
     r, b, omega = 0.08, 0.2, 5.0
     # the castor trails for the spin: its mount point moves along (0, -0.3 psi_dot): j along it, beta = pi
     sim = Simulation(robot, beta=[0.0, 0.0, np.pi])
     rec = run(sim, Schedule.constant(np.zeros(3), [-omega, omega, 0.0, 0.0]), 3.0)
     late = rec.t > 1.0
-    psi_dot = r * omega / b                                                 # 2 rad/s, by hand
+    psi_dot = r * omega / b  # 2 rad/s, by hand
     assert rec.twist[late, 0].mean() == pytest.approx(psi_dot, rel=0.01)
-    assert np.hypot(*rec.pose[:, 1:].T).max() < 0.05 * b          # C stays where it was (the castor's drag: mm)
+    assert np.hypot(*rec.pose[:, 1:].T).max() < 0.05 * b  # C stays where it was (the castor's drag: mm)
     est, residual = rec.kinematic_slip()
     assert est[late, 0].mean() == pytest.approx(psi_dot, rel=0.01) and residual[late].max() < 0.02 * r * omega
 
@@ -61,10 +62,10 @@ def test_swerve_follows_a_commanded_twist_and_wmr_forward_recovers_it():
     sim = Simulation(robot, beta=cmd.beta)
     rec = run(sim, Schedule.constant(cmd.beta, cmd.speed / 0.0508), 3.0)
     late = rec.t > 1.0
-    size = np.array([0.2921 * np.sqrt(2), 1.0, 1.0])                        # psi_dot as the speed of a module
+    size = np.array([0.2921 * np.sqrt(2), 1.0, 1.0])  # psi_dot as the speed of a module
     err = np.abs(rec.twist[late].mean(axis=0) - twist) * size
-    assert err.max() < 0.02 * np.hypot(*twist[1:])                          # within 2 % of the commanded twist
-    est, residual = rec.kinematic_slip()                                    # wmr.forward from the encoders
+    assert err.max() < 0.02 * np.hypot(*twist[1:])  # within 2 % of the commanded twist
+    est, residual = rec.kinematic_slip()  # wmr.forward from the encoders
     assert np.abs(est[late] - rec.twist[late]).max(axis=0) @ size < 0.02 * np.hypot(*twist[1:])
     assert residual[late].mean() < 1e-3
 
@@ -77,7 +78,7 @@ def test_twist_schedule_is_wmrs_inverse_kinematics():
     assert np.array_equal(sol.value, s.rates) and sol.admissible.all()
     fine = twist_schedule(robot, twist, 1.0, dt=0.01)
     beta_dot = np.gradient(fine.beta, fine.t, axis=0, edge_order=2)
-    assert np.allclose(beta_dot, fine.rates[:, 0::2] - twist[0], atol=1e-3)       # (7): beta_dot = phi_dot - psi_dot
+    assert np.allclose(beta_dot, fine.rates[:, 0::2] - twist[0], atol=1e-3)  # (7): beta_dot = phi_dot - psi_dot
     sim = Simulation(robot, beta=s.beta[0])
     rec = run(sim, s, 1.0)
     assert np.allclose(rec.twist[rec.t > 0.5].mean(axis=0), twist, atol=0.01)

@@ -1,4 +1,5 @@
 """wmr.analysis.simulation: integrated motions that can be predicted without the package."""
+
 import numpy as np
 import pytest
 from hypothesis import given, settings
@@ -20,7 +21,7 @@ def test_spin_about_C_keeps_C_fixed(kind):
     assert np.allclose(tr.pose[:, 1:], [1.0, -2.0], atol=1e-12)
     assert np.allclose(tr.pose[:, 0], 0.1 + 0.8 * tr.t, atol=1e-12)
     assert np.allclose(tr.slip, 0.0, atol=1e-12)
-    assert np.allclose(tr.beta, beta, atol=1e-12)                 # steering stays put on the platform
+    assert np.allclose(tr.beta, beta, atol=1e-12)  # steering stays put on the platform
     assert np.allclose(tr.twist, t, atol=1e-12)
     # every wheel contact point moves on a circle about C of radius |d_i|
     for i in range(bot.w):
@@ -58,7 +59,7 @@ def test_offset_steer_only_centre_is_contact_centroid():
 
 def test_straight_line_and_world_frame():
     bot = wmr.paper_robot("centred", L=0.3, r=0.05)
-    t = np.array([0.0, 0.0, 1.0])                                # along body +y
+    t = np.array([0.0, 0.0, 1.0])  # along body +y
     beta = wmr.steering_angles(bot, t)
     rates = wmr.inverse(bot, beta, t).value
     tr = wmr.simulate(bot, rates, beta, t_end=1.0, dt=0.1, pose0=(np.pi / 2, 0.0, 0.0))
@@ -83,8 +84,8 @@ def test_callable_inputs_and_determinism():
     b = wmr.simulate(bot, rates, np.zeros(3), 1.0, 0.05, steer=steer)
     assert np.array_equal(a.pose, b.pose) and np.array_equal(a.slip, b.slip)
     assert a.t.shape == (21,) and a.pose.shape == (21, 3) and a.beta.shape == (21, 3)
-    assert np.allclose(a.beta[-1], 0.1, atol=1e-12)              # centred wheels follow the steering input
-    assert np.all(a.slip[1:] > 0)                                # incompatible rates are reported
+    assert np.allclose(a.beta[-1], 0.1, atol=1e-12)  # centred wheels follow the steering input
+    assert np.all(a.slip[1:] > 0)  # incompatible rates are reported
 
 
 def test_dual_unit_turns_by_wheel_difference():

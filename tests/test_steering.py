@@ -1,4 +1,5 @@
 """wmr.analysis.steering: the instantaneous centre (62)-(64) and compatible steering angles."""
+
 import numpy as np
 import pytest
 from hypothesis import given
@@ -24,23 +25,26 @@ def test_centre_has_zero_velocity(seed):
     t = np.random.default_rng(seed).normal(size=(20, 3))
     ic = wmr.instantaneous_centre(t)
     assert np.all(ic.kind == Sg.FINITE)
-    assert np.allclose(wmr.point_velocity(t, ic.point), 0.0, atol=1e-10)       # (62)
+    assert np.allclose(wmr.point_velocity(t, ic.point), 0.0, atol=1e-10)  # (62)
     assert np.allclose(rigid_velocity(t[:, 0], t[:, 1:], ic.point), 0.0, atol=1e-10)
     assert np.allclose(np.linalg.norm(ic.direction, axis=-1), 1.0)
     # the direction points from C towards U
     assert np.all(np.sum(ic.direction * ic.point, -1) > 0)
 
 
-@pytest.mark.parametrize("twist, length, kind", [
-    ([0.0, 1.0, 2.0], None, Sg.AT_INFINITY),
-    ([1e-12, 1.0, 0.0], 1.0, Sg.AT_INFINITY),              # the centre 1e12 robot sizes away
-    ([1e-12, 1.0, 0.0], 1e6, Sg.FINITE),                   # ... but only 1e6 sizes of a bigger robot
-    ([1e-12, 1.0, 0.0], None, Sg.FINITE),                  # no size given: no tolerance
-    ([0.0, 0.0, 0.0], None, Sg.STILL),
-    ([1e-300, 0.0, 0.0], 1.0, Sg.FINITE),                  # a (slow) spin is not rest
-    ([1.0, 0.0, 0.0], 1.0, Sg.FINITE),
-    ([-2.0, 3.0, 0.0], None, Sg.FINITE),
-])
+@pytest.mark.parametrize(
+    "twist, length, kind",
+    [
+        ([0.0, 1.0, 2.0], None, Sg.AT_INFINITY),
+        ([1e-12, 1.0, 0.0], 1.0, Sg.AT_INFINITY),  # the centre 1e12 robot sizes away
+        ([1e-12, 1.0, 0.0], 1e6, Sg.FINITE),  # ... but only 1e6 sizes of a bigger robot
+        ([1e-12, 1.0, 0.0], None, Sg.FINITE),  # no size given: no tolerance
+        ([0.0, 0.0, 0.0], None, Sg.STILL),
+        ([1e-300, 0.0, 0.0], 1.0, Sg.FINITE),  # a (slow) spin is not rest
+        ([1.0, 0.0, 0.0], 1.0, Sg.FINITE),
+        ([-2.0, 3.0, 0.0], None, Sg.FINITE),
+    ],
+)
 def test_centre_kinds(twist, length, kind):
     ic = wmr.instantaneous_centre(twist, length=length)
     assert int(ic.kind) == kind
@@ -80,12 +84,13 @@ def test_steering_angles_wheel_planes_and_axles(bot, seed):
 
 
 def test_steering_angles_keep_current_where_free():
-    bot = wmr.Robot([wmr.CentredWheel((0, 0), r=0.1), wmr.OffsetWheel((1, 0), r=0.1, d=0.05),
-                     wmr.CentredWheel((0, 1), r=0.1)])
+    bot = wmr.Robot(
+        [wmr.CentredWheel((0, 0), r=0.1), wmr.OffsetWheel((1, 0), r=0.1, d=0.05), wmr.CentredWheel((0, 1), r=0.1)]
+    )
     current = np.array([0.3, -0.7, 1.1])
-    spin = wmr.steering_angles(bot, [1.0, 0.0, 0.0], current=current)   # wheel 1 sits at U = C
+    spin = wmr.steering_angles(bot, [1.0, 0.0, 0.0], current=current)  # wheel 1 sits at U = C
     assert spin[0] == 0.3 and spin[1] == -0.7
-    assert np.isclose(spin[2], -np.pi / 2)                # axle (0, -1): from (0, 1) towards U = C
+    assert np.isclose(spin[2], -np.pi / 2)  # axle (0, -1): from (0, 1) towards U = C
     still = wmr.steering_angles(bot, [0.0, 0.0, 0.0], current=current)
     assert np.array_equal(still, current)
 
@@ -100,8 +105,8 @@ def test_steering_angles_do_not_depend_on_body_frame(bot, seed, origin, angle):
 
 def test_translation_steers_all_wheels_parallel():
     bot = wmr.paper_robot("dual", r=0.1)
-    beta = wmr.steering_angles(bot, [0.0, 0.0, 1.0])              # along +y
-    assert np.allclose(rolling_dir(beta), [0.0, -1.0])            # j = -c_dot / |c_dot|
+    beta = wmr.steering_angles(bot, [0.0, 0.0, 1.0])  # along +y
+    assert np.allclose(rolling_dir(beta), [0.0, -1.0])  # j = -c_dot / |c_dot|
 
 
 @given(seeds)
@@ -110,7 +115,7 @@ def test_centre_to_wheels(seed):
     t, d = rng.normal(size=(5, 3)), rng.normal(size=(4, 2))
     u = wmr.centre_to_wheels(t, d)
     assert u.shape == (5, 4, 2)
-    assert np.allclose(u, wmr.instantaneous_centre(t).point[:, None, :] - d)        # (64)
+    assert np.allclose(u, wmr.instantaneous_centre(t).point[:, None, :] - d)  # (64)
 
 
 BAD = [

@@ -7,6 +7,7 @@ that is imported (the repository's, or an installed wheel's: this test ships in 
 reader checks ``edition/``, which may import ``wmr`` and never the other way round, in
 tests/edition/test_structure_edition.py.
 """
+
 import ast
 from pathlib import Path
 
@@ -42,7 +43,7 @@ def imports(name, path, known):
         elif isinstance(node, ast.ImportFrom):
             if node.level:
                 base = name.split(".") if is_package else name.split(".")[:-1]
-                base = base[:len(base) - (node.level - 1)]
+                base = base[: len(base) - (node.level - 1)]
                 target = ".".join(base + ([node.module] if node.module else []))
             else:
                 target = node.module or ""
@@ -61,8 +62,10 @@ def nearest(module, known):
 
 def graph(known):
     """``{module: {modules it imports}}`` among the known modules."""
-    return {m: {t for t in (nearest(i, known) for i, _, _ in imports(m, p, known)) if t and t != m}
-            for m, p in known.items()}
+    return {
+        m: {t for t in (nearest(i, known) for i, _, _ in imports(m, p, known)) if t and t != m}
+        for m, p in known.items()
+    }
 
 
 def cycles(edges):
@@ -102,8 +105,12 @@ def cycles(edges):
 
 def private_imports(known):
     """``{(importer, module, name)}``: a name starting with ``_`` imported from another module."""
-    return {(m, nearest(t, known), n) for m, p in known.items() for t, n, _ in imports(m, p, known)
-            if n and n.startswith("_") and not n.startswith("__") and nearest(t, known) not in (None, m)}
+    return {
+        (m, nearest(t, known), n)
+        for m, p in known.items()
+        for t, n, _ in imports(m, p, known)
+        if n and n.startswith("_") and not n.startswith("__") and nearest(t, known) not in (None, m)
+    }
 
 
 WMR = modules("wmr")
@@ -139,8 +146,12 @@ def test_no_private_names_imported_across_modules_of_wmr():
 
 def test_imports_go_one_way():
     """The library never imports the edition or the build."""
-    wrong = [(m, i, line) for m, p in WMR.items() for i, _, line in imports(m, p, WMR)
-             if i.split(".")[0] in ("edition", "tools")]
+    wrong = [
+        (m, i, line)
+        for m, p in WMR.items()
+        for i, _, line in imports(m, p, WMR)
+        if i.split(".")[0] in ("edition", "tools")
+    ]
     assert wrong == []
 
 
@@ -165,6 +176,7 @@ def test_bad_input_raises_the_package_s_own_errors():
 def test_no_dispatch_on_the_kind_of_a_wheel():
     """Outside the wheel kinds' own package, nothing compares ``something.kind`` with a kind's name."""
     from wmr.model.wheels import wheel_kinds
+
     names = set(wheel_kinds())
     wrong = []
     for name, path in WMR.items():

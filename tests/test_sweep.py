@@ -1,4 +1,5 @@
 """wmr.analysis.sweep: chunked sweeps against a direct evaluation of every configuration."""
+
 import math
 
 import numpy as np
@@ -31,7 +32,7 @@ def _twist_dim(F, cols):
     A = F[:, cols] / np.linalg.norm(F[:, cols], axis=0).clip(1e-300)
     _, s, Vt = np.linalg.svd(A)
     r = int((s > wmr.TOL * s[0]).sum())
-    N = Vt[r:].T                                       # null space, scaled coordinates
+    N = Vt[r:].T  # null space, scaled coordinates
     if N.shape[1] == 0:
         return 0
     sv = np.linalg.svd(N[:3], compute_uv=False)
@@ -41,6 +42,7 @@ def _twist_dim(F, cols):
 def _actuated_dense(robot, beta):
     """dim T - dim U from the dense F: every rate column free, then only the passive ones."""
     from wmr.analysis.actuation import driven_columns
+
     F = robot.F(beta)
     passive = np.flatnonzero(~driven_columns(robot)) + 3
     return _twist_dim(F, list(range(F.shape[1]))) - _twist_dim(F, [0, 1, 2, *passive])
@@ -57,27 +59,33 @@ def _all_configurations(angles, w):
 
 
 def _robots():
-    return {"centred": wmr.paper_robot("centred", L=0.3, r=0.05),
-            "offset": wmr.paper_robot("offset", L=0.3, r=0.05),
-            "dual": wmr.paper_robot("dual", L=0.3, r=0.05, b=0.04)}
+    return {
+        "centred": wmr.paper_robot("centred", L=0.3, r=0.05),
+        "offset": wmr.paper_robot("offset", L=0.3, r=0.05),
+        "dual": wmr.paper_robot("dual", L=0.3, r=0.05, b=0.04),
+    }
 
 
 #: (robot, analysis) pairs that exist: det J only for a square J (the centred robot's n_rates = 3)
-CASES = [(kind, name) for kind, robot in _robots().items() for name in sorted(ANALYSES)
-         if not (ANALYSES[name].square and robot.n_rates != 3)]
+CASES = [
+    (kind, name)
+    for kind, robot in _robots().items()
+    for name in sorted(ANALYSES)
+    if not (ANALYSES[name].square and robot.n_rates != 3)
+]
 
 
 @pytest.mark.parametrize("kind, name", CASES)
 def test_sweep_equals_direct_evaluation(kind, name):
     robot = _robots()[kind]
-    grid = Grid(11)                                   # includes -pi, 0 and the singular parallel settings
+    grid = Grid(11)  # includes -pi, 0 and the singular parallel settings
     beta = _all_configurations(grid, robot.w)
     L = wmr.characteristic_length(robot)
     want = _direct(robot, name, beta, L)
     res = sweep(robot, name, grid, quantiles=QS, chunk=97, keep=True)
     an = ANALYSES[name]
-    assert res.values is not None                                       # keep=True
-    assert res.count == len(beta) == 11 ** 3
+    assert res.values is not None  # keep=True
+    assert res.count == len(beta) == 11**3
     fin = np.isfinite(want)
     assert np.array_equal(np.isinf(res.values), ~fin)
     assert np.allclose(res.values[fin], want[fin], rtol=1e-9, atol=1e-12)
@@ -107,7 +115,12 @@ def test_result_does_not_depend_on_chunks():
     first = results[0]
     for r in results[1:]:
         assert (r.min, r.max, r.worst_index, r.quantiles, r.infinite) == (
-            first.min, first.max, first.worst_index, first.quantiles, first.infinite)
+            first.min,
+            first.max,
+            first.worst_index,
+            first.quantiles,
+            first.infinite,
+        )
     a = sweep(robot, "det_J", Grid(9), chunk=10, keep=True)
     b = sweep(robot, "det_J", Grid(9), chunk=729, keep=True)
     assert a.values is not None and b.values is not None
@@ -161,42 +174,53 @@ def test_sweep_on_dask_equals_in_process():
     robot = _robots()["centred"]
     grid = Grid(10)
     local = sweep(robot, "kappa_J", grid, chunk=100, keep=True)
-    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
-                                  dashboard_address=":0") as cluster, distributed.Client(cluster) as client:
+    with (
+        distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=":0") as cluster,
+        distributed.Client(cluster) as client,
+    ):
         seen = []
-        remote = sweep(robot, "kappa_J", grid, chunk=100, keep=True, client=client,
-                       progress=lambda done, total: seen.append(done))
+        remote = sweep(
+            robot, "kappa_J", grid, chunk=100, keep=True, client=client, progress=lambda done, total: seen.append(done)
+        )
         ranks = sweep(robot, "rank_F", grid, chunk=64, client=client)
     assert remote.values is not None and local.values is not None
     assert np.array_equal(remote.values, local.values)
     assert (remote.min, remote.max, remote.worst_index, remote.quantiles, remote.infinite) == (
-        local.min, local.max, local.worst_index, local.quantiles, local.infinite)
+        local.min,
+        local.max,
+        local.worst_index,
+        local.quantiles,
+        local.infinite,
+    )
     assert seen[-1] == 1000 and sorted(seen) == seen
     assert ranks.counts == sweep(robot, "rank_F", grid).counts
 
 
-@pytest.mark.parametrize("call, exc, words", [
-    (lambda r: sweep("robot", "rank_F", Grid(3)), TypeError, "robot"),  # type: ignore[arg-type]
-    (lambda r: sweep(r, 3, Grid(3)), TypeError, "analysis"),  # type: ignore[arg-type]
-    (lambda r: sweep(r, "rank", Grid(3)), ValueError, "analysis"),
-    (lambda r: sweep(wmr.paper_robot("offset"), "det_J", Grid(3)), ValueError, "square"),
-    (lambda r: sweep(r, "rank_F", "grid"), TypeError, "angles"),
-    (lambda r: sweep(r, "rank_F", np.zeros((4, 2))), ValueError, "angles"),
-    (lambda r: sweep(r, "rank_F", np.full((4, 3), np.nan)), ValueError, "angles"),
-    (lambda r: sweep(r, "rank_F", np.zeros((0, 3))), ValueError, "angles"),
-    (lambda r: sweep(r, "rank_F", Grid(3), quantiles=[1.5]), ValueError, "quantiles"),
-    (lambda r: sweep(r, "rank_F", Grid(3), chunk=0), ValueError, "chunk"),
-    (lambda r: sweep(r, "rank_F", Grid(3), chunk=2.5), TypeError, "chunk"),  # type: ignore[arg-type]
-    (lambda r: sweep(r, "rank_F", Grid(3), progress=5), TypeError, "progress"),  # type: ignore[arg-type]
-    (lambda r: sweep(r, "rank_F", Grid(3), client=object()), TypeError, "client"),
-    (lambda r: sweep(r, "kappa_J", Grid(3), L=-1.0), ValueError, "L"),
-    (lambda r: sweep(r, "rank_F", Grid((3, 3))), ValueError, "steps"),
-    (lambda r: Grid(0), ValueError, "steps"),
-    (lambda r: Grid("many"), TypeError, "steps"),
-    (lambda r: Grid(3, lo=1.0, hi=1.0), ValueError, "hi"),
-    (lambda r: Sample(0), ValueError, "n"),
-    (lambda r: Sample(10, seed=-1), ValueError, "seed"),
-])
+@pytest.mark.parametrize(
+    "call, exc, words",
+    [
+        (lambda r: sweep("robot", "rank_F", Grid(3)), TypeError, "robot"),  # type: ignore[arg-type]
+        (lambda r: sweep(r, 3, Grid(3)), TypeError, "analysis"),  # type: ignore[arg-type]
+        (lambda r: sweep(r, "rank", Grid(3)), ValueError, "analysis"),
+        (lambda r: sweep(wmr.paper_robot("offset"), "det_J", Grid(3)), ValueError, "square"),
+        (lambda r: sweep(r, "rank_F", "grid"), TypeError, "angles"),
+        (lambda r: sweep(r, "rank_F", np.zeros((4, 2))), ValueError, "angles"),
+        (lambda r: sweep(r, "rank_F", np.full((4, 3), np.nan)), ValueError, "angles"),
+        (lambda r: sweep(r, "rank_F", np.zeros((0, 3))), ValueError, "angles"),
+        (lambda r: sweep(r, "rank_F", Grid(3), quantiles=[1.5]), ValueError, "quantiles"),
+        (lambda r: sweep(r, "rank_F", Grid(3), chunk=0), ValueError, "chunk"),
+        (lambda r: sweep(r, "rank_F", Grid(3), chunk=2.5), TypeError, "chunk"),  # type: ignore[arg-type]
+        (lambda r: sweep(r, "rank_F", Grid(3), progress=5), TypeError, "progress"),  # type: ignore[arg-type]
+        (lambda r: sweep(r, "rank_F", Grid(3), client=object()), TypeError, "client"),
+        (lambda r: sweep(r, "kappa_J", Grid(3), L=-1.0), ValueError, "L"),
+        (lambda r: sweep(r, "rank_F", Grid((3, 3))), ValueError, "steps"),
+        (lambda r: Grid(0), ValueError, "steps"),
+        (lambda r: Grid("many"), TypeError, "steps"),
+        (lambda r: Grid(3, lo=1.0, hi=1.0), ValueError, "hi"),
+        (lambda r: Sample(0), ValueError, "n"),
+        (lambda r: Sample(10, seed=-1), ValueError, "seed"),
+    ],
+)
 def test_bad_input(call, exc, words):
     with pytest.raises(exc, match=words):
         call(_robots()["centred"])

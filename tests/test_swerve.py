@@ -1,4 +1,5 @@
 """wmr.swerve without WPILib: conventions, batching, the robot-level choice, desaturation, the SE(2) exponential."""
+
 import numpy as np
 import pytest
 
@@ -51,7 +52,7 @@ def test_robot_level_never_turns_more_than_it_must_when_the_modules_agree():
     cmd = swerve.module_commands(bot, tw)
     ch = swerve.optimize_robot(bot, tw, cmd.beta)
     assert np.all(ch.resteer < 1e-12) and np.all(ch.slip < 1e-12) and not ch.flipped.any()
-    near = swerve.module_commands(bot, tw * [1.0, 1.02, 0.98]).beta            # a slightly different twist
+    near = swerve.module_commands(bot, tw * [1.0, 1.02, 0.98]).beta  # a slightly different twist
     per, rob = swerve.optimize_modules(bot, tw, near), swerve.optimize_robot(bot, tw, near)
     np.testing.assert_array_equal(per.flipped, rob.flipped)
 
@@ -61,7 +62,7 @@ def test_robot_level_choice_is_never_worse_in_its_cost_than_per_module():
     rng = np.random.default_rng(2)
     tw, cur = rng.normal(size=(200, 3)), rng.uniform(-np.pi, np.pi, (200, 5))
     per, rob = swerve.optimize_modules(bot, tw, cur), swerve.optimize_robot(bot, tw, cur)
-    J = lambda ch: ch.resteer + bot.w * ch.slip                                   # noqa: E731
+    J = lambda ch: ch.resteer + bot.w * ch.slip  # noqa: E731
     assert np.all(J(rob) <= J(per) + 1e-12)
     assert np.mean(rob.slip) < np.mean(per.slip)
 
@@ -69,7 +70,7 @@ def test_robot_level_choice_is_never_worse_in_its_cost_than_per_module():
 def test_a_still_module_keeps_its_angle():
     """Spin about a module's mount point: that module has no speed and does not turn (either way)."""
     bot = _bot()
-    tw = np.array([1.0, 0.3, -0.3])                                 # centre at module 1 (0.3, 0.3): c = -psi E d
+    tw = np.array([1.0, 0.3, -0.3])  # centre at module 1 (0.3, 0.3): c = -psi E d
     cur = np.radians([17.0, 90.0, 90.0, 90.0])
     for f in (swerve.optimize_modules, swerve.optimize_robot):
         ch = f(bot, tw, cur)
@@ -112,19 +113,22 @@ def test_cosine_compensation():
     assert swerve.cosine_compensate(2.0, np.pi, 0.0) == pytest.approx(-2.0)
 
 
-@pytest.mark.parametrize("call, name", [
-    (lambda: swerve.module_commands(wmr.paper_robot("offset"), [0, 1, 0]), "robot"),
-    (lambda: swerve.module_commands(_bot(), [0, 1]), "twist"),
-    (lambda: swerve.optimize_robot(_bot(), [0, 1, 0], [0, 0, 0]), "current"),
-    (lambda: swerve.optimize_robot(_bot(), [0, 1, 0], np.zeros(4), samples=0), "samples"),
-    (lambda: swerve.desaturate(_bot(), [0, 1, 0], -1.0), "max_speed"),
-    (lambda: swerve.discretize([0, 1, 0], 0.0), "dt"),
-    (lambda: swerve.se2_log([7.0, 0, 0]), "delta"),
-    (lambda: swerve.chassis_twist(_bot(), np.zeros(4), [np.nan] * 4), "speed"),
-    (lambda: swerve.cosine_compensate(np.ones(3), np.ones(2), 0.0), "speed"),
-    (lambda: swerve.to_wpilib("0.5"), "beta"),
-    (lambda: swerve.from_chassis([1, 2]), "chassis"),
-])
+@pytest.mark.parametrize(
+    "call, name",
+    [
+        (lambda: swerve.module_commands(wmr.paper_robot("offset"), [0, 1, 0]), "robot"),
+        (lambda: swerve.module_commands(_bot(), [0, 1]), "twist"),
+        (lambda: swerve.optimize_robot(_bot(), [0, 1, 0], [0, 0, 0]), "current"),
+        (lambda: swerve.optimize_robot(_bot(), [0, 1, 0], np.zeros(4), samples=0), "samples"),
+        (lambda: swerve.desaturate(_bot(), [0, 1, 0], -1.0), "max_speed"),
+        (lambda: swerve.discretize([0, 1, 0], 0.0), "dt"),
+        (lambda: swerve.se2_log([7.0, 0, 0]), "delta"),
+        (lambda: swerve.chassis_twist(_bot(), np.zeros(4), [np.nan] * 4), "speed"),
+        (lambda: swerve.cosine_compensate(np.ones(3), np.ones(2), 0.0), "speed"),
+        (lambda: swerve.to_wpilib("0.5"), "beta"),
+        (lambda: swerve.from_chassis([1, 2]), "chassis"),
+    ],
+)
 def test_bad_input_names_the_argument(call, name):
     with pytest.raises((TypeError, ValueError), match=rf"\b{name}\b"):
         call()

@@ -6,6 +6,7 @@ points, radii, offsets, separations, the characteristic length, the translationa
 ``10**k``, ``k = -6 .. 6``, gives the same answer, and both rank paths (``wmr.rank(bot.F(beta))``
 and ``wmr.rank_F(bot, beta)``) agree.  Results from finite input are finite, or the call raises.
 """
+
 import warnings
 
 import numpy as np
@@ -17,32 +18,51 @@ from wmr.analysis import reference as R
 from wmr.analysis import singularities as S
 
 KS = range(-6, 7)
-SPIN = np.radians([0.0, -120.0, 120.0])                 # axles through C: spin about C (mobility 1)
+SPIN = np.radians([0.0, -120.0, 120.0])  # axles through C: spin about C (mobility 1)
 E1 = np.array([1.0, 0.0, 0.0])
 
 
 def robot(kind, scale=1.0, L=1.0, r=0.1):
     """A three-wheel robot of the paper or a mixed one, every length times ``scale``."""
     if kind == "mixed":
-        return wmr.Robot([wmr.OffsetWheel((scale * L, 0.2 * scale), r=scale * r, d=0.5 * scale * r),
-                          wmr.CentredWheel((-0.5 * scale * L, 0.9 * scale * L), r=scale * r),
-                          wmr.DualWheel((-0.4 * scale * L, -scale * L), r=scale * r, b=0.7 * scale * r)])
+        return wmr.Robot(
+            [
+                wmr.OffsetWheel((scale * L, 0.2 * scale), r=scale * r, d=0.5 * scale * r),
+                wmr.CentredWheel((-0.5 * scale * L, 0.9 * scale * L), r=scale * r),
+                wmr.DualWheel((-0.4 * scale * L, -scale * L), r=scale * r, b=0.7 * scale * r),
+            ]
+        )
     return wmr.paper_robot(kind, L=scale * L, r=scale * r)
 
 
 #: steering angles of the centred robot: exactly singular, perturbed by 1e-12 (still singular within
 #: the angular tolerance), by 1e-7 and 1e-4 rad (regular), and generic
 CONFIGS = {
-    "spin": SPIN, "spin+1e-12": SPIN + 1e-12 * E1, "spin+1e-7": SPIN + 1e-7 * E1, "spin+1e-4": SPIN + 1e-4 * E1,
-    "parallel": np.zeros(3), "parallel+1e-12": 1e-12 * E1, "parallel+1e-7": 1e-7 * E1,
-    "parallel+1e-4": 1e-4 * E1, "generic": np.array([0.1, 0.2, 0.3]),
+    "spin": SPIN,
+    "spin+1e-12": SPIN + 1e-12 * E1,
+    "spin+1e-7": SPIN + 1e-7 * E1,
+    "spin+1e-4": SPIN + 1e-4 * E1,
+    "parallel": np.zeros(3),
+    "parallel+1e-12": 1e-12 * E1,
+    "parallel+1e-7": 1e-7 * E1,
+    "parallel+1e-4": 1e-4 * E1,
+    "generic": np.array([0.1, 0.2, 0.3]),
 }
-WANT_CENTRED = {"spin": 1, "spin+1e-12": 1, "spin+1e-7": 0, "spin+1e-4": 0, "parallel": 1,
-                "parallel+1e-12": 1, "parallel+1e-7": 0, "parallel+1e-4": 0, "generic": 0}
+WANT_CENTRED = {
+    "spin": 1,
+    "spin+1e-12": 1,
+    "spin+1e-7": 0,
+    "spin+1e-4": 0,
+    "parallel": 1,
+    "parallel+1e-12": 1,
+    "parallel+1e-7": 0,
+    "parallel+1e-4": 0,
+    "generic": 0,
+}
 
 
 def _by_unit(f, kind):
-    return {k: f(robot(kind, 10.0 ** k)) for k in KS}
+    return {k: f(robot(kind, 10.0**k)) for k in KS}
 
 
 @pytest.mark.parametrize("name", sorted(CONFIGS))
@@ -54,11 +74,11 @@ def test_mobility_of_the_centred_robot_in_every_unit(name):
 @pytest.mark.parametrize("kind", ["offset", "dual", "mixed"])
 def test_mobility_of_other_robots_in_every_unit(kind):
     beta = np.random.default_rng(3).uniform(-np.pi, np.pi, (200, 3))
-    beta[:20] = SPIN                                       # dual wheels: the spin about C again
+    beta[:20] = SPIN  # dual wheels: the spin about C again
     beta[20:40] = 0.0
     base = wmr.mobility(robot(kind), beta)
     for k in KS:
-        assert np.array_equal(wmr.mobility(robot(kind, 10.0 ** k), beta), base), k
+        assert np.array_equal(wmr.mobility(robot(kind, 10.0**k), beta), base), k
 
 
 @pytest.mark.parametrize("L, r", [(1e300, 1e299), (1e-8, 1e-9), (1e12, 1e11), (1e-150, 1e-151), (1e4, 1e-4)])
@@ -93,11 +113,11 @@ def test_rank_of_F_agrees_with_rank_F_on_a_grid():
 def test_rank_does_not_depend_on_the_units_of_the_unknowns():
     rng = np.random.default_rng(0)
     A = rng.normal(size=(500, 4, 4))
-    A[::2, :, 3] = A[::2, :, 0] - A[::2, :, 1] * 0.5           # exactly dependent columns
+    A[::2, :, 3] = A[::2, :, 0] - A[::2, :, 1] * 0.5  # exactly dependent columns
     base = wmr.rank(A)
     assert set(base.tolist()) == {3, 4}
     for k in KS:
-        D = 10.0 ** rng.integers(-6, 7, size=4)                  # a unit per unknown
+        D = 10.0 ** rng.integers(-6, 7, size=4)  # a unit per unknown
         assert np.array_equal(wmr.rank(A * D), base), k
         assert np.array_equal(wmr.nullity(A * D), 4 - base)
 
@@ -106,30 +126,31 @@ def test_rank_does_not_depend_on_the_units_of_the_unknowns():
 def test_admissibility_in_every_unit(kind):
     rng = np.random.default_rng(11)
     twist = rng.normal(size=(60, 3))
-    twist[:5, 0] = 0.0                                             # translations
-    twist[5:10, 1:] = 0.0                                          # spins about C
+    twist[:5, 0] = 0.0  # translations
+    twist[5:10, 1:] = 0.0  # spins about C
     base = robot(kind)
     beta = rng.uniform(-np.pi, np.pi, (60, 3))
-    beta[:30] = wmr.steering_angles(base, twist[:30], current=beta[:30])   # half of them steered to fit
+    beta[:30] = wmr.steering_angles(base, twist[:30], current=beta[:30])  # half of them steered to fit
     inv = wmr.inverse(base, beta, twist)
     want_inv, rates = inv.admissible, inv.value
     want_fwd = wmr.forward(base, beta, rates).admissible
     assert want_inv[:30].all() and want_fwd[:30].all()
-    assert want_inv[30:].all() == (kind == "offset")             # offset wheels: any twist, any angles
-    for k in [*KS, -100, -12, 12, 100]:                            # and far beyond: no absolute zero anywhere
-        s = 10.0 ** k
+    assert want_inv[30:].all() == (kind == "offset")  # offset wheels: any twist, any angles
+    for k in [*KS, -100, -12, 12, 100]:  # and far beyond: no absolute zero anywhere
+        s = 10.0**k
         bot = robot(kind, s)
-        lin = np.array([1.0, s, s])                                # [psi_dot, x_dot, y_dot] in the new unit
+        lin = np.array([1.0, s, s])  # [psi_dot, x_dot, y_dot] in the new unit
         assert np.array_equal(wmr.inverse(bot, beta, twist * lin).admissible, want_inv), k
         assert np.array_equal(wmr.forward(bot, beta, rates).admissible, want_fwd), k
-        assert np.array_equal(wmr.steering_angles(bot, twist[:30] * lin, current=beta[:30]), beta[:30]) or \
-            np.allclose(wmr.steering_angles(bot, twist[:30] * lin, current=beta[:30]), beta[:30], atol=1e-12), k
+        assert np.array_equal(wmr.steering_angles(bot, twist[:30] * lin, current=beta[:30]), beta[:30]) or np.allclose(
+            wmr.steering_angles(bot, twist[:30] * lin, current=beta[:30]), beta[:30], atol=1e-12
+        ), k
 
 
 def test_admissible_twists_of_a_spin_in_every_unit():
     for k in KS:
-        basis = wmr.admissible_twists(robot("centred", 10.0 ** k), SPIN)
-        t = basis[:, 0] * [10.0 ** k, 1.0, 1.0]                 # [L psi_dot, x_dot, y_dot]: one unit
+        basis = wmr.admissible_twists(robot("centred", 10.0**k), SPIN)
+        t = basis[:, 0] * [10.0**k, 1.0, 1.0]  # [L psi_dot, x_dot, y_dot]: one unit
         assert basis.shape == (3, 1) and np.allclose(np.abs(t) / np.linalg.norm(t), [1.0, 0.0, 0.0], atol=1e-12), k
 
 
@@ -139,7 +160,7 @@ def test_steering_and_instant_centre_in_every_unit():
     want_beta = wmr.steering_angles(base, twists)
     want_kind = wmr.instantaneous_centre(twists, length=1.0).kind
     for k in KS:
-        s = 10.0 ** k
+        s = 10.0**k
         bot = robot("centred", s)
         tw = twists * [1.0, s, s]
         assert np.allclose(wmr.steering_angles(bot, tw), want_beta, atol=1e-12), k
@@ -147,8 +168,12 @@ def test_steering_and_instant_centre_in_every_unit():
 
 
 def test_isotropy_and_singularity_in_every_unit():
-    beta = np.concatenate([np.random.default_rng(5).uniform(-np.pi, np.pi, (300, 3)),
-                           [SPIN, np.zeros(3), [0.3, 0.3, 0.3], [2.0, 2.0 + np.pi, 2.0]]])
+    beta = np.concatenate(
+        [
+            np.random.default_rng(5).uniform(-np.pi, np.pi, (300, 3)),
+            [SPIN, np.zeros(3), [0.3, 0.3, 0.3], [2.0, 2.0 + np.pi, 2.0]],
+        ]
+    )
     base = robot("centred")
     L0 = wmr.characteristic_length(base)
     J0 = base.J(beta, L=L0)
@@ -156,7 +181,7 @@ def test_isotropy_and_singularity_in_every_unit():
     want_sing = S.is_singular(base, beta)
     assert want_sing[-3:].all() and want_inf[-3:].all() and not want_sing[:300].any()
     for k in KS:
-        bot = robot("centred", 10.0 ** k)
+        bot = robot("centred", 10.0**k)
         J = bot.J(beta, L=wmr.characteristic_length(bot))
         assert np.array_equal(wmr.is_isotropic(J), want_iso), k
         assert np.array_equal(np.isinf(wmr.condition_number(J)), want_inf), k
@@ -167,7 +192,7 @@ def test_isotropy_and_singularity_in_every_unit():
 
 @pytest.mark.parametrize("beta", [[0.3, 0.3, 0.3], [0.3, 0.3 + np.pi, 0.3], SPIN, [0.1, 0.5, -0.7]])
 def test_classification_in_every_unit(beta):
-    fams = {k: S.classify(robot("centred", 10.0 ** k), beta).family for k in KS}
+    fams = {k: S.classify(robot("centred", 10.0**k), beta).family for k in KS}
     assert len(set(fams.values())) == 1, fams
 
 
@@ -187,7 +212,7 @@ def test_tiny_L_overflows_loudly():
 
 def test_huge_robots_and_twists():
     big = wmr.paper_robot("centred", L=1e300, r=1e299)
-    sol = wmr.forward(big, [0.1, 0.2, 0.3], [1.0, 2.0, 3.0])          # was: "fewer than two distinct mount points"
+    sol = wmr.forward(big, [0.1, 0.2, 0.3], [1.0, 2.0, 3.0])  # was: "fewer than two distinct mount points"
     assert np.all(np.isfinite(sol.value)) and bool(sol.admissible) is False
     bot = wmr.paper_robot("centred", L=1.0, r=0.1)
     with warnings.catch_warnings():
@@ -203,6 +228,7 @@ def test_huge_robots_and_twists():
 def test_angular_tolerance_is_documented_and_true():
     """The decision of a near-singular configuration flips where tolerance.py says it does."""
     from wmr.model import tolerance
+
     bot = robot("centred")
     for family, base in (("spin", SPIN), ("parallel", np.zeros(3))):
         lo, hi = tolerance.ANGULAR_TOLERANCE / 100, tolerance.ANGULAR_TOLERANCE * 100

@@ -5,6 +5,7 @@ Every bad input raises the package's own ``InputTypeError`` (wrong kind, a ``Typ
 ``InputValueError`` (bad value, a ``ValueError``) of :mod:`wmr.errors`, whose message names the argument
 and shows the value.
 """
+
 import warnings
 
 import numpy as np
@@ -25,34 +26,60 @@ OWN = {ValueError: InputValueError, TypeError: InputTypeError}
 
 
 # --- scalars ------------------------------------------------------------------------------------
-@pytest.mark.parametrize("check, value, expected", [
-    (V.positive, 2, 2), (V.positive, 0.5, 0.5), (V.positive, np.float32(0.5), 0.5),
-    (V.positive, np.array(3.0), 3.0), (V.positive, p, p), (V.positive, x, x),
-    (V.nonnegative, 0, 0), (V.nonnegative, 0.0, 0.0), (V.nonnegative, p, p),
-    (V.real, -3, -3), (V.real, np.int64(4), 4), (V.real, sp.pi, sp.pi),
-])
+@pytest.mark.parametrize(
+    "check, value, expected",
+    [
+        (V.positive, 2, 2),
+        (V.positive, 0.5, 0.5),
+        (V.positive, np.float32(0.5), 0.5),
+        (V.positive, np.array(3.0), 3.0),
+        (V.positive, p, p),
+        (V.positive, x, x),
+        (V.nonnegative, 0, 0),
+        (V.nonnegative, 0.0, 0.0),
+        (V.nonnegative, p, p),
+        (V.real, -3, -3),
+        (V.real, np.int64(4), 4),
+        (V.real, sp.pi, sp.pi),
+    ],
+)
 def test_scalar_accepted(check, value, expected):
     out = check("v", value)
     assert out == expected
     if isinstance(value, (int, np.integer)) and not isinstance(value, bool):
-        assert type(out) is int                                    # exact, for SymPy products
+        assert type(out) is int  # exact, for SymPy products
 
 
-@pytest.mark.parametrize("check, value, shown, kind", [
-    (V.positive, 0, "0", ValueError), (V.positive, -1.5, "-1.5", ValueError),
-    (V.positive, np.nan, "nan", ValueError), (V.positive, np.inf, "inf", ValueError),
-    (V.positive, True, "True", TypeError), (V.positive, "1", "'1'", TypeError),
-    (V.positive, 1j, "1j", TypeError), (V.positive, [1.0], "[1.0]", TypeError),
-    (V.positive, -p, "-p", ValueError), (V.positive, sp.oo, "oo", ValueError),
-    (V.positive, sp.zoo, "zoo", ValueError), (V.positive, sp.nan, "nan", ValueError),
-    (V.positive, 10**400, "1000", ValueError), (V.positive, np.longdouble("1e400"), "e+400", ValueError),
-    (V.positive, sp.Integer(10) ** 400, "1000", ValueError), (V.positive, None, "None", TypeError),
-    (V.positive, sp.Symbol("s") < 1, "s < 1", TypeError),
-    (V.nonnegative, -1e-3, "-0.001", ValueError), (V.nonnegative, -np.inf, "inf", ValueError),
-    (V.nonnegative, -p, "-p", ValueError),
-    (V.real, np.nan, "nan", ValueError), (V.real, None, "None", TypeError), (V.real, sp.I, "I", ValueError),
-    (V.real, x + sp.I, "x + I", ValueError), (V.real, np.complex128(1), "1", TypeError),
-])
+@pytest.mark.parametrize(
+    "check, value, shown, kind",
+    [
+        (V.positive, 0, "0", ValueError),
+        (V.positive, -1.5, "-1.5", ValueError),
+        (V.positive, np.nan, "nan", ValueError),
+        (V.positive, np.inf, "inf", ValueError),
+        (V.positive, True, "True", TypeError),
+        (V.positive, "1", "'1'", TypeError),
+        (V.positive, 1j, "1j", TypeError),
+        (V.positive, [1.0], "[1.0]", TypeError),
+        (V.positive, -p, "-p", ValueError),
+        (V.positive, sp.oo, "oo", ValueError),
+        (V.positive, sp.zoo, "zoo", ValueError),
+        (V.positive, sp.nan, "nan", ValueError),
+        (V.positive, 10**400, "1000", ValueError),
+        (V.positive, np.longdouble("1e400"), "e+400", ValueError),
+        (V.positive, sp.Integer(10) ** 400, "1000", ValueError),
+        (V.positive, None, "None", TypeError),
+        (V.positive, sp.Symbol("s") < 1, "s < 1", TypeError),
+        (V.nonnegative, -1e-3, "-0.001", ValueError),
+        (V.nonnegative, -np.inf, "inf", ValueError),
+        (V.nonnegative, -p, "-p", ValueError),
+        (V.real, np.nan, "nan", ValueError),
+        (V.real, None, "None", TypeError),
+        (V.real, sp.I, "I", ValueError),
+        (V.real, x + sp.I, "x + I", ValueError),
+        (V.real, np.complex128(1), "1", TypeError),
+    ],
+)
 def test_scalar_rejected_with_name_and_value(check, value, shown, kind):
     with pytest.raises(Exception) as exc:
         check("the_arg", value)
@@ -63,15 +90,25 @@ def test_scalar_rejected_with_name_and_value(check, value, shown, kind):
 
 def test_fractions_are_real_numbers():
     from fractions import Fraction
+
     assert V.positive("r", Fraction(1, 4)) == 0.25
     assert V.finite_array("beta", [Fraction(1, 2), 1]).tolist() == [0.5, 1.0]  # type: ignore[arg-type]  # real numbers
 
 
-@pytest.mark.parametrize("value, shown, kind", [
-    ((1.0,), "(1.0,)", ValueError), ((1, 2, 3), "(1, 2, 3)", ValueError), (1.0, "1.0", TypeError),
-    ((np.nan, 0), "nan", ValueError), (("a", 0), "'a'", TypeError), ((True, 0), "True", TypeError),
-    ("ab", "'ab'", TypeError), ((sp.oo, 0), "oo", ValueError), (None, "None", TypeError),
-])
+@pytest.mark.parametrize(
+    "value, shown, kind",
+    [
+        ((1.0,), "(1.0,)", ValueError),
+        ((1, 2, 3), "(1, 2, 3)", ValueError),
+        (1.0, "1.0", TypeError),
+        ((np.nan, 0), "nan", ValueError),
+        (("a", 0), "'a'", TypeError),
+        ((True, 0), "True", TypeError),
+        ("ab", "'ab'", TypeError),
+        ((sp.oo, 0), "oo", ValueError),
+        (None, "None", TypeError),
+    ],
+)
 def test_point_rejected(value, shown, kind):
     with pytest.raises(kind) as exc:
         V.point("position", value)
@@ -84,25 +121,32 @@ def test_point_accepted():
 
 
 # --- arrays -------------------------------------------------------------------------------------
-@pytest.mark.parametrize("value, last, shown, kind", [
-    ([1.0, 2.0], 3, "(2,)", ValueError),
-    ([[1.0, 2.0]], 3, "[[1., 2.]]", ValueError),
-    (np.zeros((1000, 2)), 3, "(1000, 2)", ValueError),
-    (5.0, 3, "()", ValueError),
-    ([1.0, np.nan, 2.0], None, "nan", ValueError),
-    ([np.inf, -np.inf], None, "inf", ValueError),
-    ([[1.0, 2.0], [3.0]], None, "[[1.0, 2.0], [3.0]]", ValueError),
-    ([10**400, 1.0], None, "1000", ValueError),
-    (np.array([np.longdouble("1e400"), 1.0]), None,
-     "too large" if np.isfinite(np.longdouble("1e400")) else "inf", ValueError),   # 80-bit long double: finite
-    ("abc", None, "'abc'", TypeError),
-    (["0.7", "0.1"], None, "'0.7'", TypeError),
-    ([True, False], None, "True", TypeError),
-    ([1j, 2.0], None, "1j", TypeError),
-    ([x, 1.0], None, "x", TypeError),
-    (None, None, "None", TypeError),
-    ([None, 1.0], None, "None", TypeError),
-])
+@pytest.mark.parametrize(
+    "value, last, shown, kind",
+    [
+        ([1.0, 2.0], 3, "(2,)", ValueError),
+        ([[1.0, 2.0]], 3, "[[1., 2.]]", ValueError),
+        (np.zeros((1000, 2)), 3, "(1000, 2)", ValueError),
+        (5.0, 3, "()", ValueError),
+        ([1.0, np.nan, 2.0], None, "nan", ValueError),
+        ([np.inf, -np.inf], None, "inf", ValueError),
+        ([[1.0, 2.0], [3.0]], None, "[[1.0, 2.0], [3.0]]", ValueError),
+        ([10**400, 1.0], None, "1000", ValueError),
+        (
+            np.array([np.longdouble("1e400"), 1.0]),
+            None,
+            "too large" if np.isfinite(np.longdouble("1e400")) else "inf",
+            ValueError,
+        ),  # 80-bit long double: finite
+        ("abc", None, "'abc'", TypeError),
+        (["0.7", "0.1"], None, "'0.7'", TypeError),
+        ([True, False], None, "True", TypeError),
+        ([1j, 2.0], None, "1j", TypeError),
+        ([x, 1.0], None, "x", TypeError),
+        (None, None, "None", TypeError),
+        ([None, 1.0], None, "None", TypeError),
+    ],
+)
 def test_finite_array_rejected(value, last, shown, kind):
     with pytest.raises(kind) as exc:
         V.finite_array("beta", value, last=last)
@@ -144,8 +188,12 @@ ENTRY_POINTS = [
     ("complex beta", lambda: wmr.mobility(BOT, np.array([0.1, 0.2, 0.3j])), "beta", "0.3j"),
     ("strings as beta", lambda: wmr.rank_F(BOT, ["0.7"] * 3), "beta", "'0.7'"),
     ("beta with wrong w", lambda: wmr.mobility(BOT, [0.1, 0.2]), "beta", "[0.1, 0.2]"),
-    ("rates with wrong n", lambda: wmr.forward(BOT, [0.1, 0.2, 0.3], [1.0, 2.0, 3.0, 4.0]), "rates",
-     "[1., 2., 3., 4.]"),
+    (
+        "rates with wrong n",
+        lambda: wmr.forward(BOT, [0.1, 0.2, 0.3], [1.0, 2.0, 3.0, 4.0]),
+        "rates",
+        "[1., 2., 3., 4.]",
+    ),
     ("NaN in beta", lambda: BOT.J([0.1, np.nan, 0.3]), "beta", "nan"),
     ("inf in twist", lambda: wmr.inverse(BOT, [0.0] * 3, [np.inf, 0.0, 0.0]), "twist", "inf"),
     ("twist of wrong shape", lambda: wmr.steering_angles(BOT, [[1.0, 2.0]]), "twist", "(1, 2)"),
@@ -157,8 +205,17 @@ ENTRY_POINTS = [
 ]
 
 
-TYPE_ERRORS = {"None robot", "the class Robot", "name not a string", "clockwise not a bool", "exact not a bool",
-               "kind not a string", "wheel not a unit", "complex beta", "strings as beta"}
+TYPE_ERRORS = {
+    "None robot",
+    "the class Robot",
+    "name not a string",
+    "clockwise not a bool",
+    "exact not a bool",
+    "kind not a string",
+    "wheel not a unit",
+    "complex beta",
+    "strings as beta",
+}
 
 
 @pytest.mark.parametrize("case, call, name, value", ENTRY_POINTS, ids=[c[0] for c in ENTRY_POINTS])
@@ -171,10 +228,20 @@ def test_entry_points_reject_bad_input(case, call, name, value):
 
 
 # --- tolerance ----------------------------------------------------------------------------------
-@pytest.mark.parametrize("value, scale, expected", [
-    (1e-12, 1.0, True), (1e-8, 1.0, False), (1e-8, 1e2, True), (1e-10, 1e-6, False),   # relative
-    (1e-16, 1e-6, True), (2 * TOL, 1.0, False), (TOL, 1.0, True), (-TOL / 2, 0.0, False), (0.0, 0.0, True),
-])
+@pytest.mark.parametrize(
+    "value, scale, expected",
+    [
+        (1e-12, 1.0, True),
+        (1e-8, 1.0, False),
+        (1e-8, 1e2, True),
+        (1e-10, 1e-6, False),  # relative
+        (1e-16, 1e-6, True),
+        (2 * TOL, 1.0, False),
+        (TOL, 1.0, True),
+        (-TOL / 2, 0.0, False),
+        (0.0, 0.0, True),
+    ],
+)
 def test_near_zero(value, scale, expected):
     assert bool(near_zero(value, scale)) is expected
 
@@ -201,7 +268,7 @@ from fractions import Fraction  # noqa: E402
 import sympy as _sp  # noqa: E402  (kept local to this section)
 
 _BOT = wmr.paper_robot("centred", L=0.5, r=0.1)
-QUOTED = [   # (case, call, exception type, words the message must hold)
+QUOTED = [  # (case, call, exception type, words the message must hold)
     ("complex beta", lambda: wmr.mobility(_BOT, np.array([0.1, 0.2, 0.3]) + 1e-3j), TypeError, ["beta", "complex"]),
     ("strings", lambda: wmr.mobility(_BOT, ["0.7"] * 3), TypeError, ["beta", "'0.7'"]),
     ("bools", lambda: wmr.mobility(_BOT, [True, False, True]), TypeError, ["beta", "booleans"]),
@@ -214,40 +281,56 @@ QUOTED = [   # (case, call, exception type, words the message must hold)
     ("the class Robot", lambda: wmr.rank_F(wmr.Robot, [0.0] * 3), TypeError, ["robot", "class Robot"]),  # type: ignore[arg-type]
     ("empty matrix", lambda: wmr.condition_number(np.empty((3, 0))), ValueError, ["A", "(3, 0)"]),
     ("10**400 entry", lambda: wmr.rank([[10**400, 1], [0, 1]]), ValueError, ["A", "1000000"]),
-    ("current of the wrong shape", lambda: wmr.steering_angles(_BOT, [1.0, 0.0, 0.0], current=[[0.0]]), ValueError,
-     ["current", "(1, 1)"]),
-    ("tiny dt", lambda: wmr.simulate(_BOT, [1.0] * 3, [0.0] * 3, t_end=0.5, dt=1e-9), ValueError,
-     ["dt", "max_steps", "5e+08"]),
+    (
+        "current of the wrong shape",
+        lambda: wmr.steering_angles(_BOT, [1.0, 0.0, 0.0], current=[[0.0]]),
+        ValueError,
+        ["current", "(1, 1)"],
+    ),
+    (
+        "tiny dt",
+        lambda: wmr.simulate(_BOT, [1.0] * 3, [0.0] * 3, t_end=0.5, dt=1e-9),
+        ValueError,
+        ["dt", "max_steps", "5e+08"],
+    ),
     ("L = 1e-320", lambda: _BOT.J([0.1, 0.2, 0.3], L=1e-320), ValueError, ["L", "1e-320", "overflow"]),
     ("huge twist", lambda: wmr.inverse(_BOT, [0.0] * 3, [1.7e308] * 3), ValueError, ["twist", "overflow"]),
-    ("huge rates", lambda: wmr.simulate(_BOT, [1.7e308] * _BOT.n_rates, [0.0] * 3, t_end=1.0, dt=0.1), ValueError,
-     ["rates", "overflow"]),
+    (
+        "huge rates",
+        lambda: wmr.simulate(_BOT, [1.7e308] * _BOT.n_rates, [0.0] * 3, t_end=1.0, dt=0.1),
+        ValueError,
+        ["rates", "overflow"],
+    ),
     ("name not a string", lambda: wmr.Robot(_BOT.wheels, name=["n"]), TypeError, ["name", "['n']"]),  # type: ignore[arg-type]
     ("exact not a bool", lambda: wmr.equilateral_mounts(1.0, exact="yes"), TypeError, ["exact", "'yes'"]),  # type: ignore[arg-type]
     ("clockwise not a bool", lambda: wmr.equilateral_mounts(1.0, clockwise=None), TypeError, ["clockwise", "None"]),  # type: ignore[arg-type]
     ("unused offset of a centred robot", lambda: wmr.paper_robot("centred", d=-1.0), ValueError, ["d", "-1.0"]),
-    ("unused steer of an offset wheel", lambda: wmr.OffsetWheel((0, 0), r=1.0, d=0.5).beta_rate(0.0, [1.0, 1.0], "x"),
-     TypeError, ["steer", "'x'"]),
+    (
+        "unused steer of an offset wheel",
+        lambda: wmr.OffsetWheel((0, 0), r=1.0, d=0.5).beta_rate(0.0, [1.0, 1.0], "x"),
+        TypeError,
+        ["steer", "'x'"],
+    ),
 ]
 
 
 @pytest.mark.parametrize("case, call, kind, words", QUOTED, ids=[q[0] for q in QUOTED])
 def test_quoted_bad_input_is_rejected(case, call, kind, words):
     with pytest.raises(Exception) as exc, warnings.catch_warnings():
-        warnings.simplefilter("error", RuntimeWarning)          # no NumPy warning on the way to the error
+        warnings.simplefilter("error", RuntimeWarning)  # no NumPy warning on the way to the error
         call()
     assert exc.type is OWN[kind], (exc.type, str(exc.value))
     assert all(w in str(exc.value) for w in words), str(exc.value)
 
 
 def test_quoted_inputs_that_are_valid_give_right_finite_answers():
-    pts = wmr.equilateral_mounts(1.0, first_deg=1e300)                  # three distinct vertices
+    pts = wmr.equilateral_mounts(1.0, first_deg=1e300)  # three distinct vertices
     assert len({tuple(np.round(p, 12)) for p in pts}) == 3
     assert np.allclose([np.hypot(*p) for p in pts], 1.0)
     assert wmr.CentredWheel((0, 0), r=Fraction(1, 4)).r == 0.25  # type: ignore[arg-type]  # Fractions are real numbers
     assert np.isfinite(wmr.characteristic_length(wmr.paper_robot("centred", L=1e300, r=1e299)))
     sol = wmr.forward(wmr.paper_robot("centred", L=1e300, r=1e299), [0.1, 0.2, 0.3], [1.0, 2.0, 3.0])
-    assert np.all(np.isfinite(sol.value))                                # (was: "fewer than two mount points")
+    assert np.all(np.isfinite(sol.value))  # (was: "fewer than two mount points")
     with pytest.raises(ValueError, match="max_steps"):
         wmr.simulate(_BOT, [1.0] * 3, [0.0] * 3, t_end=1.0, dt=0.1, max_steps=5)
     assert len(wmr.simulate(_BOT, [1.0] * 3, [0.0] * 3, t_end=1.0, dt=0.1, max_steps=10).t) == 11

@@ -1,5 +1,6 @@
 """The centred steered wheel, wmr.model.wheels.centred: its block (51) from first principles, steering as an
 independent input, the swerve module it is, and its parameter checks."""
+
 import numpy as np
 import pytest
 import sympy as sp
@@ -30,7 +31,7 @@ def test_known_values_51():
     u = wmr.CentredWheel((0, 0), r=2.0)
     assert np.allclose(u.block(0.0) @ [1.0], [0.0, -2.0])
     b = sp.Symbol("b")
-    assert wmr.CentredWheel((0, 0), r=2).block(b) == sp.Matrix([[2 * sp.sin(b)], [-2 * sp.cos(b)]])   # R(b) [0, -r]^T
+    assert wmr.CentredWheel((0, 0), r=2).block(b) == sp.Matrix([[2 * sp.sin(b)], [-2 * sp.cos(b)]])  # R(b) [0, -r]^T
 
 
 def test_wheel_centre_velocity_helper_is_rolling():
@@ -47,11 +48,14 @@ def test_a_swerve_module():
 
 
 BAD = [
-    (dict(r=0.0), ValueError, "r", "0"), (dict(r=-1.0), ValueError, "r", "-1"),
+    (dict(r=0.0), ValueError, "r", "0"),
+    (dict(r=-1.0), ValueError, "r", "-1"),
     (dict(r=np.nan), ValueError, "r", "nan"),
-    (dict(r=np.inf), ValueError, "r", "inf"), (dict(r="1"), TypeError, "r", "'1'"),
+    (dict(r=np.inf), ValueError, "r", "inf"),
+    (dict(r="1"), TypeError, "r", "'1'"),
     (dict(position=(0, 0, 0)), ValueError, "position", "(0, 0, 0)"),
-    (dict(position=(np.nan, 0)), ValueError, "position", "nan"), (dict(position=5.0), TypeError, "position", "5.0"),
+    (dict(position=(np.nan, 0)), ValueError, "position", "nan"),
+    (dict(position=5.0), TypeError, "position", "5.0"),
     (dict(r=-sp.Symbol("r", positive=True)), ValueError, "r", "-r"),
     (dict(r=1e308), ValueError, "CentredWheel", "overflow"),
 ]

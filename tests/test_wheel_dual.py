@@ -1,5 +1,6 @@
 """The dual-wheel unit, wmr.model.wheels.dual: its block (17) and the corrected (15) from first principles, the
 two wheels' places, and its steering row: inverse kinematics turns it at the wanted rate."""
+
 import numpy as np
 import pytest
 from hypothesis import given
@@ -20,12 +21,12 @@ def test_block_is_no_slip_and_steering_is_corrected_15(x, y, r, b, beta, seed):
     psi_dot = np.random.default_rng(seed + 1).normal()
     assert np.isclose(unit.beta_rate(psi_dot, rates), phi_dot - psi_dot)
     row = unit.steering_row()
-    assert row is not None and np.isclose(row @ rates, phi_dot)       # c theta_dot = psi_dot + beta_dot
+    assert row is not None and np.isclose(row @ rates, phi_dot)  # c theta_dot = psi_dot + beta_dot
 
 
 def test_equal_rates_drive_like_a_centred_wheel():
     du, cu = wmr.DualWheel((0, 0), r=2.0, b=0.4), wmr.CentredWheel((0, 0), r=2.0)
-    assert np.allclose(du.block(0.3) @ [0.7, 0.7], cu.block(0.3) @ [0.7])           # (17)-(18)
+    assert np.allclose(du.block(0.3) @ [0.7, 0.7], cu.block(0.3) @ [0.7])  # (17)-(18)
     assert np.isclose(du.beta_rate(0.0, np.array([1.0, 0.0])), -2.0 / (2 * 0.4))
 
 
@@ -46,8 +47,9 @@ def test_inverse_kinematics_steers_it_as_wanted():
     turning = wmr.inverse(bot, beta, twist, beta_dot=beta_dot)
     assert bool(still.admissible) and bool(turning.admissible)
     got = [u.beta_rate(twist[0], turning.value[sl]) for u, sl in zip(bot.wheels, bot.rate_slices)]
-    assert np.allclose(got, beta_dot) and np.allclose([u.beta_rate(twist[0], still.value[sl]) for u, sl in
-                                                       zip(bot.wheels, bot.rate_slices)], 0, atol=1e-12)
+    assert np.allclose(got, beta_dot) and np.allclose(
+        [u.beta_rate(twist[0], still.value[sl]) for u, sl in zip(bot.wheels, bot.rate_slices)], 0, atol=1e-12
+    )
     assert np.allclose(bot.J2(beta) @ turning.value, bot.J2(beta) @ still.value)
     assert np.allclose(reference.inverse(bot, beta, twist, beta_dot)[0], turning.value)
 
@@ -58,8 +60,10 @@ def test_its_swivel_is_passive():
     assert unit.steered and unit.rolls_in_plane
 
 
-@pytest.mark.parametrize("b, exc, shown", [(0.0, ValueError, "0"), (-2, ValueError, "-2"), (np.inf, ValueError, "inf"),
-                                           (None, TypeError, "None")])
+@pytest.mark.parametrize(
+    "b, exc, shown",
+    [(0.0, ValueError, "0"), (-2, ValueError, "-2"), (np.inf, ValueError, "inf"), (None, TypeError, "None")],
+)
 def test_bad_half_separation(b, exc, shown):
     with pytest.raises(exc) as info:
         wmr.DualWheel((0, 0), r=1.0, b=b)

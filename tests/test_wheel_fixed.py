@@ -1,5 +1,6 @@
 """The fixed conventional wheel, wmr.model.wheels.fixed: no slip from first principles at its own angle (the
 configuration entry ignored), its actuation (driven, or an idler) and its parameter checks."""
+
 import numpy as np
 import pytest
 from hypothesis import given
@@ -31,8 +32,15 @@ def test_driven_by_default_an_idler_when_passive():
     assert wmr.io.loads(wmr.dump(wmr.Robot([idler]))).wheels[0].driven == (False,)
 
 
-@pytest.mark.parametrize("kwargs, exc", [(dict(angle="0"), TypeError), (dict(angle=10**400), ValueError),
-                                         (dict(angle=True), TypeError), (dict(r=0), ValueError)])
+@pytest.mark.parametrize(
+    "kwargs, exc",
+    [
+        (dict(angle="0"), TypeError),
+        (dict(angle=10**400), ValueError),
+        (dict(angle=True), TypeError),
+        (dict(r=0), ValueError),
+    ],
+)
 def test_bad_fixed_wheel(kwargs, exc):
     args = dict(position=(0.0, 0.0), r=0.1, angle=0.0) | kwargs
     with pytest.raises(exc, match=rf"\b{next(iter(kwargs))}\b"):

@@ -1,6 +1,7 @@
 """Wheel kinds answer for themselves: the contract every registered kind meets, the registry, and a new kind
 added as one new module (the only file it needs) that the robot, the analyses, robot files, the drawings
 and the command line then take."""
+
 import dataclasses
 import os
 import shutil
@@ -19,7 +20,7 @@ from wmr.model.wheels.joints import actuation
 
 from wheel_contract import CHECKS, check_declarations, check_kind, check_mechanism
 
-PACKAGE = Path(wmr.__file__).resolve().parent        # the package under test (the repository's or a wheel's)
+PACKAGE = Path(wmr.__file__).resolve().parent  # the package under test (the repository's or a wheel's)
 KINDS = sorted(wheel_kinds())
 
 
@@ -36,9 +37,10 @@ def test_every_kind_meets_the_contract(kind, check):
 
 def test_the_contract_can_fail():
     """A kind that declares what its block does not do is caught: rolls_in_plane on an invertible block."""
+
     @dataclasses.dataclass(frozen=True)
-    class Liar(wmr.OffsetWheel):                    # (no kind of its own: not registered)
-        rolls_in_plane = True                       # an offset wheel (d > 0) moves its mount point every way
+    class Liar(wmr.OffsetWheel):  # (no kind of its own: not registered)
+        rolls_in_plane = True  # an offset wheel (d > 0) moves its mount point every way
 
     with pytest.raises(AssertionError):
         check_declarations(Liar)
@@ -47,15 +49,16 @@ def test_the_contract_can_fail():
 
 def test_the_mechanism_contract_can_fail():
     """A mechanism with its wheel ahead of P, one deaf to the unit's actuation, a refusal without a reason: caught."""
+
     @dataclasses.dataclass(frozen=True)
-    class Ahead(wmr.OffsetWheel):                   # H = P + d j: not where points() puts the wheel
+    class Ahead(wmr.OffsetWheel):  # H = P + d j: not where points() puts the wheel
         def root_body(self, height):
             root = wmr.OffsetWheel.root_body(self, height)
             arm = root.children[0]
             return dataclasses.replace(root, children=(dataclasses.replace(arm, pos=(0.0, self.d, arm.pos[2])),))
 
     @dataclasses.dataclass(frozen=True)
-    class Deaf(wmr.OffsetWheel):                    # the kind's default actuation, whatever the unit's
+    class Deaf(wmr.OffsetWheel):  # the kind's default actuation, whatever the unit's
         def root_body(self, height):
             return wmr.OffsetWheel(self.position, self.r, d=self.d).root_body(height)
 
@@ -93,9 +96,11 @@ def test_wheel_kind_names_and_suggests():
 
 def test_a_kind_name_is_taken_once():
     with pytest.raises(InputValueError, match=r"'offset' is already OffsetWheel"):
+
         @dataclasses.dataclass(frozen=True)
         class Other(WheelUnit):
             kind = "offset"
+
     assert wheel_kind("offset") is wmr.OffsetWheel
 
 
@@ -103,6 +108,7 @@ def test_subclasses_without_a_kind_are_not_registered():
     @dataclasses.dataclass(frozen=True)
     class Variant(wmr.CentredWheel):
         """A centred wheel under another class: not a kind of its own."""
+
     assert Variant not in wheel_kinds().values() and Variant.kind == "centred"
     assert wheel_kind("centred") is wmr.CentredWheel
 
@@ -118,6 +124,7 @@ def test_joints_and_file_keys_check_themselves():
     with pytest.raises(InputValueError, match="check"):
         FileKey("k", "f", "meaning", check="even")
     with pytest.raises(InputValueError, match="distinct names"):
+
         @dataclasses.dataclass(frozen=True)
         class Twice(WheelUnit):
             JOINTS = (Joint("a", "drive", True), Joint("a", "drive", True))
@@ -211,7 +218,7 @@ class BallCaster(UnsteeredUnit):
                                   "lock when the outer one turns a quarter turn, and a mechanism has hinges only")
 '''
 
-DIFFERENTIAL_WITH_BALL = '''\
+DIFFERENTIAL_WITH_BALL = """\
 name = "differential drive on a ball caster"
 
 [[wheel]]
@@ -230,9 +237,9 @@ angle_deg = 90.0
 type = "ball"
 position = [-0.3, 0.0]
 radius = 0.02
-'''
+"""
 
-USE = '''\
+USE = """\
 import json, sys
 import numpy as np
 import wmr
@@ -267,7 +274,7 @@ else:
     raise AssertionError("a ball caster was exported")
 assert main(["simulate", sys.argv[1], "--seconds", "0"]) == 2
 print("``ball``" in kinds_table() and "``ball``" in wmr.model.wheels.__doc__)
-'''
+"""
 
 
 def test_a_new_kind_is_one_new_module(tmp_path):
@@ -275,15 +282,24 @@ def test_a_new_kind_is_one_new_module(tmp_path):
     (wmr.sim refuses it with the reason its module gives)."""
     shutil.copytree(PACKAGE, tmp_path / "wmr", ignore=shutil.ignore_patterns("__pycache__"))
     (tmp_path / "wmr" / "model" / "wheels" / "ball.py").write_text(BALL)
-    changed = sorted(str(p.relative_to(tmp_path / "wmr")) for p in (tmp_path / "wmr").rglob("*.py")
-                     if not (PACKAGE / p.relative_to(tmp_path / "wmr")).exists()
-                     or (PACKAGE / p.relative_to(tmp_path / "wmr")).read_bytes() != p.read_bytes())
+    changed = sorted(
+        str(p.relative_to(tmp_path / "wmr"))
+        for p in (tmp_path / "wmr").rglob("*.py")
+        if not (PACKAGE / p.relative_to(tmp_path / "wmr")).exists()
+        or (PACKAGE / p.relative_to(tmp_path / "wmr")).read_bytes() != p.read_bytes()
+    )
     assert changed == ["model/wheels/ball.py"]
     robot = tmp_path / "ball.toml"
     robot.write_text(DIFFERENTIAL_WITH_BALL)
     env = {**os.environ, "PYTHONPATH": str(tmp_path), "MPLBACKEND": "Agg"}
-    out = subprocess.run([sys.executable, "-c", USE, str(robot), str(Path(__file__).parent)], cwd=tmp_path, env=env,
-                         capture_output=True, text=True, timeout=600)
+    out = subprocess.run(
+        [sys.executable, "-c", USE, str(robot), str(Path(__file__).parent)],
+        cwd=tmp_path,
+        env=env,
+        capture_output=True,
+        text=True,
+        timeout=600,
+    )
     assert out.returncode == 0, out.stderr[-3000:]
     assert out.stdout.strip().splitlines()[-1] == "True", out.stdout[-2000:]
     assert '"wheels": [\n    "fixed",\n    "fixed",\n    "ball"\n  ]' in out.stdout

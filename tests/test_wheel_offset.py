@@ -1,5 +1,6 @@
 """The offset (castor) wheel, wmr.model.wheels.offset: its block (20) and steering (7) from first principles,
 its geometry, its actuation (active by default, a castor when passive), its robot-file key and design hints."""
+
 import numpy as np
 import pytest
 import sympy as sp
@@ -25,7 +26,7 @@ def test_block_is_no_slip_and_steering_is_7(x, y, r, d, beta, seed):
 def test_known_values_9():
     o = wmr.OffsetWheel((0, 0), r=2.0, d=0.5)
     beta = 0.3
-    want = -2.0 * 0.7 * rolling_dir(beta) - 0.5 * 1.1 * axle(beta)          # (9): p_dot = -r theta_dot j - d phi_dot i
+    want = -2.0 * 0.7 * rolling_dir(beta) - 0.5 * 1.1 * axle(beta)  # (9): p_dot = -r theta_dot j - d phi_dot i
     assert np.allclose(o.block(beta) @ [1.1, 0.7], want)
 
 
@@ -33,7 +34,7 @@ def test_wheel_centre_is_behind_the_steering_axis():
     beta = np.array([0.0, 0.4, -2.0])
     pts = wmr.OffsetWheel((1.0, 2.0), r=0.3, d=0.25).points(beta)
     assert np.allclose(pts["i"], axle(beta)) and np.allclose(pts["j"], rolling_dir(beta))
-    assert np.allclose(pts["H"], pts["P"] - 0.25 * rolling_dir(beta))       # H = P - d j
+    assert np.allclose(pts["H"], pts["P"] - 0.25 * rolling_dir(beta))  # H = P - d j
     assert np.allclose(pts["wheels"][..., 0, :], pts["H"])
 
 
@@ -57,7 +58,7 @@ def test_active_by_default_a_castor_when_passive():
     castor = wmr.OffsetWheel((0, 0), r=0.1, d=0.05, driven={"steer": False, "drive": False})
     assert [(j.name, j.kind, j.driven) for j in active.joints] == [("steer", "steer", True), ("drive", "drive", True)]
     assert [j.driven for j in castor.joints] == [False, False]
-    assert np.array_equal(castor.block(0.3), active.block(0.3))           # the kinematics do not change
+    assert np.array_equal(castor.block(0.3), active.block(0.3))  # the kinematics do not change
     text = wmr.dump(wmr.Robot([castor]))
     assert "offset = 0.05" in text and "driven = {steer = false, drive = false}" in text
     assert wmr.io.loads(text).wheels[0] == castor
@@ -71,10 +72,15 @@ def test_dead_zone_and_isotropy_hints():
     assert hint is not None and hint.format(wheels="2") == "set offset = radius on wheel 2 (d = r, the paper's (46))"
 
 
-@pytest.mark.parametrize("kwargs, exc, shown", [
-    (dict(d=-0.1), ValueError, "-0.1"), (dict(d=np.nan), ValueError, "nan"), (dict(d="0.1"), TypeError, "'0.1'"),
-    (dict(r=0.0), ValueError, "0"),
-])
+@pytest.mark.parametrize(
+    "kwargs, exc, shown",
+    [
+        (dict(d=-0.1), ValueError, "-0.1"),
+        (dict(d=np.nan), ValueError, "nan"),
+        (dict(d="0.1"), TypeError, "'0.1'"),
+        (dict(r=0.0), ValueError, "0"),
+    ],
+)
 def test_bad_parameters(kwargs, exc, shown):
     args = dict(position=(0.0, 0.0), r=1.0, d=0.5) | kwargs
     with pytest.raises(exc) as info:

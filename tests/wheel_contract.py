@@ -9,6 +9,7 @@ with the rotation (11), SymPy with NumPy; then files, drawing, kinematics and th
 on three such units; and the unit's mechanism for a physics engine (its own joints, its wheels where its
 points put them) or a refusal that says why.
 """
+
 from __future__ import annotations
 
 import numpy as np
@@ -27,8 +28,12 @@ VALUES = {"pair": [0.3, -0.2], "positive": 0.04, "nonnegative": 0.03, "number": 
 
 def table(cls, position=(0.3, -0.2), radius=0.05):
     """The ``[[wheel]]`` table of a unit of kind ``cls``, every key given a valid value."""
-    lines = ["[[wheel]]", f'type = "{cls.kind}"', f"position = [{position[0]!r}, {position[1]!r}]",
-             f"radius = {radius!r}"]
+    lines = [
+        "[[wheel]]",
+        f'type = "{cls.kind}"',
+        f"position = [{position[0]!r}, {position[1]!r}]",
+        f"radius = {radius!r}",
+    ]
     lines += [f"{key.name} = {VALUES[key.check]!r}" for key in cls.FILE_KEYS]
     return "\n".join(lines) + "\n"
 
@@ -106,10 +111,12 @@ def check_geometry_and_drawing(cls):
     assert sum(isinstance(p, P.Disc) for p in parts) == pts["wheels"].shape[1]
     assert any(isinstance(p, P.Pivot) for p in parts) == cls.steered
     import matplotlib
+
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
     from wmr.plot.robot import draw_unit
+
     fig, ax = plt.subplots()
     try:
         P_w, H_w = draw_unit(ax, unit, 0.4, pose=(0.3, 1.0, 2.0))
@@ -228,8 +235,16 @@ def check_mechanism(cls):
             assert np.allclose(axle, [*pts["i"], 0.0], atol=1e-12) and body.wheel == float(unit.r)
 
 
-CHECKS = (check_registered, check_declarations, check_block, check_geometry_and_drawing, check_files, check_steering,
-          check_robot, check_mechanism)
+CHECKS = (
+    check_registered,
+    check_declarations,
+    check_block,
+    check_geometry_and_drawing,
+    check_files,
+    check_steering,
+    check_robot,
+    check_mechanism,
+)
 
 
 def check_kind(cls):

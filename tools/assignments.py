@@ -21,6 +21,7 @@ tag             becomes
 Every other cell is kept as it is.  The files are written only when their bytes change, with
 deterministic cell ids, so a second run leaves them untouched.
 """
+
 from __future__ import annotations
 
 import ast
@@ -82,17 +83,23 @@ def check_call(source, where):
     call = value if isinstance(value, ast.Call) else None
     func = call.func if call is not None else None
     if call is not None and not all(isinstance(a, ast.Name) for a in [*call.args, *(k.value for k in call.keywords)]):
-        func = None                                             # its arguments are the answers' names
+        func = None  # its arguments are the answers' names
     if isinstance(func, ast.Name):
         return func.id
-    if isinstance(func, ast.Attribute):                         # module.check_4_1(...)
+    if isinstance(func, ast.Attribute):  # module.check_4_1(...)
         return func.attr
     raise AssignmentError(f"{where}: a check cell must be one call such as `check_4_1(beta_4_1)`, got {source!r}")
 
 
 def _meta(kind, grade_id, points=None):
-    m = {"grade": kind == "test", "grade_id": grade_id, "locked": kind != "solution",
-         "schema_version": 3, "solution": kind == "solution", "task": False}
+    m = {
+        "grade": kind == "test",
+        "grade_id": grade_id,
+        "locked": kind != "solution",
+        "schema_version": 3,
+        "solution": kind == "solution",
+        "task": False,
+    }
     if points is not None:
         m["points"] = points
     return {"nbgrader": m}
@@ -116,7 +123,7 @@ def assignment(nb, name, points_of):
         None for a chapter without cells tagged ``answer`` or ``check``.
     """
     if not any(_tags(c) & {"answer", "check"} for c in nb.cells):
-        return None                     # no gradable exercise (only "Your own robot" cells, or none)
+        return None  # no gradable exercise (only "Your own robot" cells, or none)
     out, pending, n = [], None, 0
     for i, cell in enumerate(nb.cells):
         where = f"{name}, cell {i}"
@@ -125,8 +132,11 @@ def assignment(nb, name, points_of):
             out.append(nbformat.from_dict(json.loads(json.dumps(cell))))
             continue
         if role == "exercise":
-            md = nbformat.v4.new_markdown_cell(cell.source) if cell.cell_type == "markdown" else \
-                nbformat.v4.new_code_cell(cell.source)
+            md = (
+                nbformat.v4.new_markdown_cell(cell.source)
+                if cell.cell_type == "markdown"
+                else nbformat.v4.new_code_cell(cell.source)
+            )
             if cell.cell_type == "markdown":
                 md.metadata.update(_meta("text", f"{name}-statement-{i}"))
             out.append(md)
@@ -138,7 +148,7 @@ def assignment(nb, name, points_of):
             if pending is None:
                 raise AssignmentError(f"{where}: a solution cell without an answer cell before it")
             pending[2].append(cell.source.rstrip())
-        else:                                                        # check
+        else:  # check
             if pending is None:
                 raise AssignmentError(f"{where}: a check cell without an answer cell before it")
             if not pending[2]:
@@ -148,7 +158,7 @@ def assignment(nb, name, points_of):
             src = "\n".join([pending[1], "### BEGIN SOLUTION", *pending[2], "### END SOLUTION"])
             sol = nbformat.v4.new_code_cell(src)
             sol.metadata.update(_meta("solution", f"{name}-{check}-answer"))
-            test = nbformat.v4.new_code_cell(f"{cell.source.strip()}.require();")   # ';': no output to grade
+            test = nbformat.v4.new_code_cell(f"{cell.source.strip()}.require();")  # ';': no output to grade
             test.metadata.update(_meta("test", f"{name}-{check}", float(points_of(check))))
             out += [sol, test]
             pending = None
@@ -191,8 +201,10 @@ def main(argv=None):
         try:
             return by_name(check).points
         except KeyError as e:
-            raise AssignmentError(f"{e.args[0]}: a check cell must call a check made with "
-                                  "edition.exercises.framework.exercise (its points come from there)") from None
+            raise AssignmentError(
+                f"{e.args[0]}: a check cell must call a check made with "
+                "edition.exercises.framework.exercise (its points come from there)"
+            ) from None
 
     out = Path(args[0])
     written, skipped = [], []
@@ -210,8 +222,10 @@ def main(argv=None):
         print(f"[assignments] {e}", file=sys.stderr)
         return 1
     _write(out / "nbgrader_config.py", CONFIG)
-    print(f"[assignments] {len(written)} source notebooks written in {out / 'source'}"
-          + (f"; without answer/check cells: {', '.join(skipped)}" if skipped else ""))
+    print(
+        f"[assignments] {len(written)} source notebooks written in {out / 'source'}"
+        + (f"; without answer/check cells: {', '.join(skipped)}" if skipped else "")
+    )
     return 0
 
 

@@ -24,6 +24,7 @@ the default sweep of issue 24, kappa(J) of the four-module swerve over its driva
 (goal: 5 M configurations per second in process), beside the same over random angles.  The load
 average is printed before and after: timings on a shared machine are only as quiet as it was.
 """
+
 from __future__ import annotations
 
 import argparse
@@ -84,8 +85,11 @@ def floor_forward(robot, pinvJ1):
         c, s = np.cos(beta), np.sin(beta)
         rhs = np.empty(beta.shape[:-1] + (2 * robot.w,))
         for i, ((Lb, ELb), sl) in enumerate(zip(blocks, robot.rate_slices)):
-            rhs[:, 2 * i:2 * i + 2] = c[:, i:i + 1] * (rates[:, sl] @ Lb.T) + s[:, i:i + 1] * (rates[:, sl] @ ELb.T)
+            rhs[:, 2 * i : 2 * i + 2] = c[:, i : i + 1] * (rates[:, sl] @ Lb.T) + s[:, i : i + 1] * (
+                rates[:, sl] @ ELb.T
+            )
         return rhs @ pinvJ1.T
+
     return run
 
 
@@ -98,9 +102,11 @@ def floor_inverse(robot):
         c, s = np.cos(beta), np.sin(beta)
         vx = twist[:, 1:2] - twist[:, 0:1] * d[:, 1]
         vy = twist[:, 2:3] + twist[:, 0:1] * d[:, 0]
-        lx, ly = c * vx + s * vy, c * vy - s * vx          # R^T v
-        return np.concatenate([lx[:, i:i + 1] * P[:, 0] + ly[:, i:i + 1] * P[:, 1]
-                               for i, P in enumerate(pinvs)], axis=1)
+        lx, ly = c * vx + s * vy, c * vy - s * vx  # R^T v
+        return np.concatenate(
+            [lx[:, i : i + 1] * P[:, 0] + ly[:, i : i + 1] * P[:, 1] for i, P in enumerate(pinvs)], axis=1
+        )
+
     return run
 
 
@@ -113,6 +119,7 @@ def floor_swerve(robot):
         px = twist[:, 1:2] - twist[:, 0:1] * d[:, 1]
         py = twist[:, 2:3] + twist[:, 0:1] * d[:, 0]
         return np.arctan2(px, -py), np.hypot(px, py) / r
+
     return run
 
 
@@ -120,6 +127,7 @@ def wpilib_swerve(robot):
     """WPILib's inverse kinematics, one call per twist (a Python loop, as a robot program does)."""
     from wpimath.geometry import Translation2d
     from wpimath.kinematics import ChassisSpeeds, SwerveDrive4Kinematics
+
     kin = SwerveDrive4Kinematics(*[Translation2d(float(x), float(y)) for x, y in robot.mount_points])
 
     def run(twist, keep=False):
@@ -129,6 +137,7 @@ def wpilib_swerve(robot):
             if keep:
                 out.append(states)
         return out
+
     return run
 
 
@@ -136,6 +145,7 @@ def wmr_swerve(robot):
     def run(twist):
         beta = wmr.steering_angles(robot, twist)
         return beta, wmr.inverse(robot, beta, twist)
+
     return run
 
 
@@ -156,13 +166,15 @@ def wpilib_odometry(robot, beta, travel, m):
 
     from wmr.io import to_wpilib
     from wmr.io.wpilib import module_positions
+
     kin = to_wpilib(robot)
     cache = [tuple(module_positions(b, t)) for b, t in zip(beta[:m], travel[:m])]
 
     def run(twist):
         odo = SwerveDrive4Odometry(kin, Rotation2d(0.0), cache[0], Pose2d())
-        for p in cache[1:len(twist)]:
+        for p in cache[1 : len(twist)]:
             odo.update(Rotation2d(0.0), p)
+
     run.label = "WPILib, one update per sample"  # type: ignore[attr-defined]
     return run
 
@@ -170,8 +182,9 @@ def wpilib_odometry(robot, beta, travel, m):
 # ----------------------------------------------------------------------------------- checks
 def same_kappa(got, want):
     fin = np.isfinite(want)
-    return bool(np.array_equal(np.isinf(got), ~fin)
-                and np.all(np.abs(got[fin] / want[fin] - 1) <= 32 * EPS * want[fin]))
+    return bool(
+        np.array_equal(np.isinf(got), ~fin) and np.all(np.abs(got[fin] / want[fin] - 1) <= 32 * EPS * want[fin])
+    )
 
 
 def angle_gap(a, b):
@@ -193,13 +206,19 @@ def kernel_rows(n, repeat, k, peer=200_000):
 
     def check_forward(sol):
         t, res, adm = R.forward(centred, b, th)
-        return (np.allclose(sol.value[:k], t, rtol=1e-12, atol=1e-12) and np.allclose(sol.residual[:k], res, atol=1e-12)
-                and np.array_equal(sol.admissible[:k], adm))
+        return (
+            np.allclose(sol.value[:k], t, rtol=1e-12, atol=1e-12)
+            and np.allclose(sol.residual[:k], res, atol=1e-12)
+            and np.array_equal(sol.admissible[:k], adm)
+        )
 
     def check_inverse(sol):
         th_ref, res, adm = R.inverse(centred, b, tw)
-        return (np.allclose(sol.value[:k], th_ref, rtol=1e-12, atol=1e-12)
-                and np.allclose(sol.residual[:k], res, atol=1e-12) and np.array_equal(sol.admissible[:k], adm))
+        return (
+            np.allclose(sol.value[:k], th_ref, rtol=1e-12, atol=1e-12)
+            and np.allclose(sol.residual[:k], res, atol=1e-12)
+            and np.array_equal(sol.admissible[:k], adm)
+        )
 
     def check_swerve(out):
         beta_s, sol = out
@@ -208,48 +227,85 @@ def kernel_rows(n, repeat, k, peer=200_000):
         ang = np.array([[m.angle.radians() for m in s] for s in states])
         spd = np.array([[m.speed for m in s] for s in states])
         r = np.array([u.r for u in swerve.wheels])
-        return (np.all(angle_gap(beta_s[:k], fl_beta) < 1e-12) and np.allclose(sol.value[:k], fl_rate, rtol=1e-12)
-                and np.all(sol.admissible[:k]) and np.all(angle_gap(beta_s[:1000] - np.pi / 2, ang) < 1e-9)
-                and np.allclose(sol.value[:1000] * r, spd, rtol=1e-9))
+        return (
+            np.all(angle_gap(beta_s[:k], fl_beta) < 1e-12)
+            and np.allclose(sol.value[:k], fl_rate, rtol=1e-12)
+            and np.all(sol.admissible[:k])
+            and np.all(angle_gap(beta_s[:1000] - np.pi / 2, ang) < 1e-9)
+            and np.allclose(sol.value[:1000] * r, spd, rtol=1e-9)
+        )
 
     from wmr.odometry import wheel_odometry
+
     o_beta, o_travel = odometry_run(swerve, n)
     radii = np.array([u.r for u in swerve.wheels])
     wp_odometry = wpilib_odometry(swerve, o_beta, o_travel, min(n, peer))
 
-    def check_odometry(odo):                                # WPILib with the wheels' heading as its gyro
+    def check_odometry(odo):  # WPILib with the wheels' heading as its gyro
         from wpimath.geometry import Pose2d, Rotation2d
         from wpimath.kinematics import SwerveDrive4Odometry
 
         from wmr.io import to_wpilib
         from wmr.io.wpilib import module_positions
+
         m = min(k, 2000)
-        ref = SwerveDrive4Odometry(to_wpilib(swerve), Rotation2d(0.0), tuple(module_positions(o_beta[0], o_travel[0])),
-                                   Pose2d())
-        poses = (ref.update(Rotation2d(float(odo.pose[j, 0])), tuple(module_positions(o_beta[j], o_travel[j])))
-                 for j in range(1, m))
+        ref = SwerveDrive4Odometry(
+            to_wpilib(swerve), Rotation2d(0.0), tuple(module_positions(o_beta[0], o_travel[0])), Pose2d()
+        )
+        poses = (
+            ref.update(Rotation2d(float(odo.pose[j, 0])), tuple(module_positions(o_beta[j], o_travel[j])))
+            for j in range(1, m)
+        )
         xy = [(0.0, 0.0)] + [(p.X(), p.Y()) for p in poses]
         return np.abs(np.array(xy) - odo.pose[:m, 1:]).max() <= 1e-12 * max(1.0, np.abs(odo.pose[:m, 1:]).max())
 
     J_ref = R.J(centred, b, L)
     return [
         # name, function, (kind, reference time or function), check
-        ("rank F, 3 centred (6x6)", lambda: wmr.rank_F(centred, beta), ("target", 0.1),
-         lambda x: np.array_equal(x[:k], R.rank_F(centred, b))),
-        ("det J, 3 centred (3x3)", lambda: det(centred.J(beta, L=L)), ("target", 0.1),
-         lambda x: np.allclose(x[:k], R.det(J_ref), rtol=1e-12, atol=1e-14)),
-        ("kappa(J), 3 centred (3x3)", lambda: wmr.condition_number(centred.J(beta, L=L)), ("target", 0.15),
-         lambda x: same_kappa(x[:k], R.condition_number(J_ref))),
-        ("mobility, 3 dual (6x9)", lambda: wmr.mobility(dual, beta), ("target", 0.1),
-         lambda x: np.array_equal(x[:k], 3 + dual.n_rates - R.rank_F(dual, b))),
-        ("forward kinematics, 3 centred", lambda: wmr.forward(centred, beta, rates),
-         ("floor", lambda: fwd_floor(beta, rates)), check_forward),
-        ("inverse kinematics, 3 centred", lambda: wmr.inverse(centred, beta, twist),
-         ("floor", lambda: inv_floor(beta, twist)), check_inverse),
+        (
+            "rank F, 3 centred (6x6)",
+            lambda: wmr.rank_F(centred, beta),
+            ("target", 0.1),
+            lambda x: np.array_equal(x[:k], R.rank_F(centred, b)),
+        ),
+        (
+            "det J, 3 centred (3x3)",
+            lambda: det(centred.J(beta, L=L)),
+            ("target", 0.1),
+            lambda x: np.allclose(x[:k], R.det(J_ref), rtol=1e-12, atol=1e-14),
+        ),
+        (
+            "kappa(J), 3 centred (3x3)",
+            lambda: wmr.condition_number(centred.J(beta, L=L)),
+            ("target", 0.15),
+            lambda x: same_kappa(x[:k], R.condition_number(J_ref)),
+        ),
+        (
+            "mobility, 3 dual (6x9)",
+            lambda: wmr.mobility(dual, beta),
+            ("target", 0.1),
+            lambda x: np.array_equal(x[:k], 3 + dual.n_rates - R.rank_F(dual, b)),
+        ),
+        (
+            "forward kinematics, 3 centred",
+            lambda: wmr.forward(centred, beta, rates),
+            ("floor", lambda: fwd_floor(beta, rates)),
+            check_forward,
+        ),
+        (
+            "inverse kinematics, 3 centred",
+            lambda: wmr.inverse(centred, beta, twist),
+            ("floor", lambda: inv_floor(beta, twist)),
+            check_inverse,
+        ),
         ("swerve IK + steering, 4 modules", lambda: sw_wmr(twist), ("floor", lambda: sw_floor(twist)), check_swerve),
         ("swerve IK + steering, 4 modules", lambda: sw_wmr(twist), ("peer", wpilib_swerve(swerve)), check_swerve),
-        ("swerve odometry, 4 modules", lambda: wheel_odometry(swerve, o_beta, o_travel / radii),
-         ("peer", wp_odometry), check_odometry),
+        (
+            "swerve odometry, 4 modules",
+            lambda: wheel_odometry(swerve, o_beta, o_travel / radii),
+            ("peer", wp_odometry),
+            check_odometry,
+        ),
     ], twist
 
 
@@ -260,8 +316,11 @@ def sweep_child(analysis, n, chunk, threads=None, robot="paper_centred", source=
     ``source`` is ``"Sample"`` (random angles) or ``"Drivable"`` (the steering angles of sampled twists).
     """
     # VmHWM, not ru_maxrss: Linux carries the parent's peak over fork + exec into ru_maxrss
-    make = ("wmr.paper_robot('centred')" if robot == "paper_centred"
-            else f"wmr.load({str(Path(__file__).resolve().parent.parent / 'examples' / 'swerve4.toml')!r})")
+    make = (
+        "wmr.paper_robot('centred')"
+        if robot == "paper_centred"
+        else f"wmr.load({str(Path(__file__).resolve().parent.parent / 'examples' / 'swerve4.toml')!r})"
+    )
     code = (
         "import sys, time, wmr\n"
         f"from wmr.analysis.sweep import {source}\n"
@@ -270,15 +329,18 @@ def sweep_child(analysis, n, chunk, threads=None, robot="paper_centred", source=
         f"{source}({n}, seed=1), chunk={chunk})\n"
         "dt, dc = time.perf_counter() - t0, time.process_time() - c0\n"
         "hwm = [l for l in open('/proc/self/status') if l.startswith('VmHWM')][0].split()[1]\n"
-        "print(dt, dc, int(hwm) / 1024, res.count, res.max)\n")
+        "print(dt, dc, int(hwm) / 1024, res.count, res.max)\n"
+    )
     env = dict(os.environ, **({} if threads is None else {"WMR_THREADS": str(threads)}))
-    out = subprocess.run([sys.executable, "-c", code], check=True, capture_output=True, text=True,
-                         env=env).stdout.split()
+    out = subprocess.run(
+        [sys.executable, "-c", code], check=True, capture_output=True, text=True, env=env
+    ).stdout.split()
     return float(out[0]), float(out[1]), float(out[2]), int(out[3])
 
 
 def sweep_rows(n, dask):
     from wmr.analysis.sweep import CHUNK, Sample
+
     rows = []
     for analysis in ("rank_F", "kappa_J"):
         for threads in (None, 1):
@@ -287,10 +349,13 @@ def sweep_rows(n, dask):
             rows.append((f"sweep {analysis}, {where}", sec, cpu, count, rss))
         if dask:
             from dask.distributed import Client, LocalCluster
+
             bot = wmr.paper_robot("centred")
-            with LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=":0") as cl, \
-                    Client(cl) as client:
-                wmr.sweep(bot, analysis, Sample(4 * CHUNK, seed=2), client=client)       # warm the workers
+            with (
+                LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=":0") as cl,
+                Client(cl) as client,
+            ):
+                wmr.sweep(bot, analysis, Sample(4 * CHUNK, seed=2), client=client)  # warm the workers
                 t0 = time.perf_counter()
                 res = wmr.sweep(bot, analysis, Sample(n, seed=1), client=client)
                 rows.append((f"sweep {analysis}, dask 2 workers", time.perf_counter() - t0, None, res.count, None))
@@ -300,6 +365,7 @@ def sweep_rows(n, dask):
 def drivable_rows(n):
     """The default sweep of issue 24: kappa(J) of the four-module swerve over drivable configurations (goal 5 M/s)."""
     from wmr.analysis.sweep import CHUNK
+
     rows = []
     for threads in (None, 1):
         sec, cpu, rss, count = sweep_child("kappa_J", n, CHUNK, threads, robot="swerve4", source="Drivable")
@@ -319,13 +385,17 @@ def main(argv=None):
     p.add_argument("--no-dask", action="store_true", help="skip the Dask rows")
     args = p.parse_args(argv)
     n, k = int(args.n), min(int(args.n), 20000)
-    print(f"wmr {wmr.__version__}, numpy {np.__version__}, Python {platform.python_version()}, "
-          f"{os.cpu_count()} cores, WMR_THREADS={os.environ.get('WMR_THREADS', '(all)')}, N = {n:,}, "
-          f"best of {args.repeat}, seed {SEED}")
+    print(
+        f"wmr {wmr.__version__}, numpy {np.__version__}, Python {platform.python_version()}, "
+        f"{os.cpu_count()} cores, WMR_THREADS={os.environ.get('WMR_THREADS', '(all)')}, N = {n:,}, "
+        f"best of {args.repeat}, seed {SEED}"
+    )
     print(f"before: {load()}")
     rows, twist = kernel_rows(n, args.repeat, k, int(args.peer_n))
-    head = (f"{'kernel':34s} {'wmr s':>8s} {'cpu s':>7s}  {'compared with':28s} {'its s':>8s} {'ratio':>7s}  "
-            f"{'goal':>7s}  check")
+    head = (
+        f"{'kernel':34s} {'wmr s':>8s} {'cpu s':>7s}  {'compared with':28s} {'its s':>8s} {'ratio':>7s}  "
+        f"{'goal':>7s}  check"
+    )
     print(head)
     print("-" * len(head))
     fails = 0
@@ -333,7 +403,7 @@ def main(argv=None):
         cpu: list[float] = []
         sec, out = best_of(fn, args.repeat, cpu)
         ok = bool(check(out))
-        if kind == "target":                                # the targets are for 10**6 configurations
+        if kind == "target":  # the targets are for 10**6 configurations
             other = ref * n / 1e6
             what, ratio, goal, met = "target (issue 13)", sec / other, "<= 1", sec <= other
         elif kind == "floor":
@@ -345,14 +415,18 @@ def main(argv=None):
             peer_sec, _ = best_of(lambda ref=ref, m=m: ref(twist[:m]), max(1, args.repeat // 2))
             per_wmr, per_peer = sec / n, peer_sec / m
             what = getattr(ref, "label", "WPILib, one call per twist")
-            print(f"{name:34s} {per_wmr * 1e6:6.3f}us {cpu[0] / n * 1e6:5.3f}us  {what:28s} "
-                  f"{per_peer * 1e6:6.3f}us {per_peer / per_wmr:6.1f}x  {'>= 5x':>7s}  "
-                  f"{'ok' if ok else 'FAIL'}{'' if per_peer / per_wmr >= 5 else ' (goal missed)'}")
+            print(
+                f"{name:34s} {per_wmr * 1e6:6.3f}us {cpu[0] / n * 1e6:5.3f}us  {what:28s} "
+                f"{per_peer * 1e6:6.3f}us {per_peer / per_wmr:6.1f}x  {'>= 5x':>7s}  "
+                f"{'ok' if ok else 'FAIL'}{'' if per_peer / per_wmr >= 5 else ' (goal missed)'}"
+            )
             fails += not ok
             continue
         fails += not ok
-        print(f"{name:34s} {sec:8.4f} {cpu[0]:7.4f}  {what:28s} {other:8.4f} {ratio:7.2f}  {goal:>7s}  "
-              f"{'ok' if ok else 'FAIL'}{'' if met else ' (goal missed)'}")
+        print(
+            f"{name:34s} {sec:8.4f} {cpu[0]:7.4f}  {what:28s} {other:8.4f} {ratio:7.2f}  {goal:>7s}  "
+            f"{'ok' if ok else 'FAIL'}{'' if met else ' (goal missed)'}"
+        )
     if args.sweep > 0:
         ns = int(args.sweep)
         print(f"\nsweeps of {ns:,} random configurations of the paper's centred robot ({load()})")
@@ -363,13 +437,20 @@ def main(argv=None):
             extra = f"peak RSS {rss:.0f} MB" if rss is not None else f"speed-up {base[an] / sec:.2f}x vs in process"
             base.setdefault(an, sec)
             print(f"{name:34s} {sec:8.2f} s  {count / sec / 1e6:6.2f} M configurations/s  {extra}")
-        print(f"\nthe default (drivable) sweep of issue 24, {ns:,} configurations; goal >= 5 M/s in process "
-              f"({load()}); the cpu rate is per second of CPU time of all threads together")
+        print(
+            f"\nthe default (drivable) sweep of issue 24, {ns:,} configurations; goal >= 5 M/s in process "
+            f"({load()}); the cpu rate is per second of CPU time of all threads together"
+        )
         for name, sec, cpu, count, rss in drivable_rows(ns):
-            goal = "" if "random" in name or "1 thread" in name else (
-                "  goal met" if count / sec >= 5e6 else "  (goal missed: see the load average)")
-            print(f"{name:34s} {sec:8.2f} s  {count / sec / 1e6:6.2f} M/s wall  {count / cpu / 1e6:6.2f} M/s cpu  "
-                  f"peak RSS {rss:.0f} MB{goal}")
+            goal = (
+                ""
+                if "random" in name or "1 thread" in name
+                else ("  goal met" if count / sec >= 5e6 else "  (goal missed: see the load average)")
+            )
+            print(
+                f"{name:34s} {sec:8.2f} s  {count / sec / 1e6:6.2f} M/s wall  {count / cpu / 1e6:6.2f} M/s cpu  "
+                f"peak RSS {rss:.0f} MB{goal}"
+            )
     print(f"after: {load()}")
     return 1 if fails else 0
 

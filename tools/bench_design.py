@@ -12,6 +12,7 @@ A version that does not print a quantity shows a dash.
 CMD is a command that runs ``wmr``, e.g. ``"env PYTHONPATH=/tmp/main /work/main/.venv/bin/python -m wmr"``
 (the library of another commit with this project's venv) or ``"$PWD/.venv/bin/wmr"``; it runs in ``/``.
 """
+
 from __future__ import annotations
 
 import argparse
@@ -23,13 +24,14 @@ import sys
 import time
 from pathlib import Path
 
-SAMPLE = "1e5"            # (the default grid of 36 angles per steered unit has 36^6 = 2.2e9 for six units)
+SAMPLE = "1e5"  # (the default grid of 36 angles per steered unit has 36^6 = 2.2e9 for six units)
 ROBOTS = Path(__file__).resolve().parent.parent / "examples" / "engineers"
 
 
 def _run(cmd: str, *argv: str) -> dict:
-    out = subprocess.run([*shlex.split(cmd), *argv], capture_output=True, text=True, check=True,
-                         cwd="/").stdout              # (python -m puts the working directory first on sys.path)
+    out = subprocess.run(
+        [*shlex.split(cmd), *argv], capture_output=True, text=True, check=True, cwd="/"
+    ).stdout  # (python -m puts the working directory first on sys.path)
     return json.loads(out)
 
 
@@ -45,10 +47,14 @@ def _version(cmd: str, robot: Path) -> dict:
     m = _run(cmd, "sweep", "--json", str(robot), "mobility", "--sample", SAMPLE)
     q = k["quantiles"]
     over = k.get("covers", "").split(":")[0] or "random configurations"
-    return {"class": a["class"], "actuated": str(a.get("actuated_mobility", "-")),
-            "limitations": "; ".join(a.get("limitations", [])) or ("none" if "limitations" in a else "-"),
-            "kappa": f"{_num(q['0.5'])} / {_num(q['0.95'])}", "count": f"{k['count']:,} {over}",
-            "mobility": _num(m["min"])}
+    return {
+        "class": a["class"],
+        "actuated": str(a.get("actuated_mobility", "-")),
+        "limitations": "; ".join(a.get("limitations", [])) or ("none" if "limitations" in a else "-"),
+        "kappa": f"{_num(q['0.5'])} / {_num(q['0.95'])}",
+        "count": f"{k['count']:,} {over}",
+        "mobility": _num(m["min"]),
+    }
 
 
 def main(argv=None) -> int:
@@ -57,15 +63,19 @@ def main(argv=None) -> int:
     p.add_argument("--after", required=True, help="command running the new wmr")
     args = p.parse_args(argv)
     t0 = time.time()
-    print("| robot | class before / after | actuated mobility before / after | kappa(J) median / p95 before "
-          "| over | after | over | least mobility of the default sweep before / after | limitations before "
-          "| limitations after |")
+    print(
+        "| robot | class before / after | actuated mobility before / after | kappa(J) median / p95 before "
+        "| over | after | over | least mobility of the default sweep before / after | limitations before "
+        "| limitations after |"
+    )
     print("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |")
     for robot in sorted(ROBOTS.glob("*.toml")):
         b, a = _version(args.before, robot), _version(args.after, robot)
-        print(f"| {robot.stem} | {b['class']} / {a['class']} | {b['actuated']} / {a['actuated']} | {b['kappa']} "
-              f"| {b['count']} | {a['kappa']} | {a['count']} | {b['mobility']} / {a['mobility']} "
-              f"| {b['limitations']} | {a['limitations']} |")
+        print(
+            f"| {robot.stem} | {b['class']} / {a['class']} | {b['actuated']} / {a['actuated']} | {b['kappa']} "
+            f"| {b['count']} | {a['kappa']} | {a['count']} | {b['mobility']} / {a['mobility']} "
+            f"| {b['limitations']} | {a['limitations']} |"
+        )
         print(f"  ({robot.stem}: {time.time() - t0:.0f} s)", file=sys.stderr)
     return 0
 

@@ -9,6 +9,7 @@ load average is printed before and after: wall
 times are only as quiet as the machine was.  The last row is the sum, the figure to compare with
 the 60 s budget.
 """
+
 from __future__ import annotations
 
 import argparse
@@ -26,7 +27,7 @@ BUDGET = 60.0
 def _load():
     try:
         return " ".join(f"{x:.2f}" for x in os.getloadavg())
-    except OSError:                                  # pragma: no cover - not on Linux
+    except OSError:  # pragma: no cover - not on Linux
         return "n/a"
 
 
@@ -48,8 +49,11 @@ def main(argv=None):
     import mujoco
 
     from edition import physics
-    print(f"Python {platform.python_version()}, MuJoCo {mujoco.__version__}, {os.cpu_count()} cores, "
-          f"{platform.machine()}; load average before: {_load()}")
+
+    print(
+        f"Python {platform.python_version()}, MuJoCo {mujoco.__version__}, {os.cpu_count()} cores, "
+        f"{platform.machine()}; load average before: {_load()}"
+    )
     rows, wall, cpu = [], 0.0, 0.0
     for f in physics.EXPERIMENTS:
         best = (float("inf"), float("inf"))
@@ -65,8 +69,10 @@ def main(argv=None):
     print(f"| {'-' * width} | -------- | ------- | -------")
     for name, v, w, c in rows:
         print(f"| {name:<{width}} | {w:8.2f} | {c:7.2f} | {v}")
-    print(f"| {'all seven':<{width}} | {wall:8.2f} | {cpu:7.2f} | budget {BUDGET:g} s: "
-          f"{'within' if wall <= BUDGET else 'OVER'}")
+    print(
+        f"| {'all seven':<{width}} | {wall:8.2f} | {cpu:7.2f} | budget {BUDGET:g} s: "
+        f"{'within' if wall <= BUDGET else 'OVER'}"
+    )
     print(f"\nload average after: {_load()}")
     return 0 if wall <= BUDGET else 1
 

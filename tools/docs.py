@@ -13,6 +13,7 @@
 A pass is recorded with the hash of its inputs (docs/, wmr/, README.md, CHANGELOG.md, CITATION.cff,
 examples/, environment.lock, this script and tools/mathjax.py) in build/docs/stamp.
 """
+
 from __future__ import annotations
 
 import argparse
@@ -33,8 +34,17 @@ ROOT = Path(__file__).resolve().parents[1]
 
 OUT = ROOT / "build" / "docs"
 SRC, HTML = OUT / "src", OUT / "html"
-INPUTS = ("docs", "wmr", "README.md", "CHANGELOG.md", "CITATION.cff", "examples", "environment.lock",
-          "tools/docs.py", "tools/mathjax.py")
+INPUTS = (
+    "docs",
+    "wmr",
+    "README.md",
+    "CHANGELOG.md",
+    "CITATION.cff",
+    "examples",
+    "environment.lock",
+    "tools/docs.py",
+    "tools/mathjax.py",
+)
 #: the MathJax bundle the pages load (tex-svg-full: every TeX extension, glyphs as SVG paths, no fonts)
 BUNDLE = "tex-svg-full.js"
 
@@ -89,9 +99,9 @@ def check_pages(html_dir: Path) -> list[str]:
         refs.feed(text)
         rel = page.relative_to(html_dir).as_posix()
         prose = re.sub(r"<(pre|script)\b.*?</\1>", "", text, flags=re.DOTALL)
-        if "``" in prose:                     # reST markup that was not converted (code inside bold, ...)
+        if "``" in prose:  # reST markup that was not converted (code inside bold, ...)
             at = prose.index("``")
-            problems.append(f"{rel} shows raw markup: ...{prose[max(0, at - 60):at + 40]}...")
+            problems.append(f"{rel} shows raw markup: ...{prose[max(0, at - 60) : at + 40]}...")
         for url in refs.loads:
             if urlsplit(url).scheme or url.startswith("//"):
                 problems.append(f"{rel} loads {url} from the network")
@@ -115,8 +125,23 @@ def build() -> int:
     shutil.rmtree(HTML, ignore_errors=True)
     env = dict(os.environ, WMR_REPOSITORY=str(ROOT), MPLBACKEND="Agg")
     log = OUT / "sphinx.log"
-    cmd = [sys.executable, "-m", "sphinx", "-b", "html", "-W", "--keep-going", "-E", "-q", "-j", "1",
-           "-d", str(OUT / "doctrees"), str(SRC), str(HTML)]
+    cmd = [
+        sys.executable,
+        "-m",
+        "sphinx",
+        "-b",
+        "html",
+        "-W",
+        "--keep-going",
+        "-E",
+        "-q",
+        "-j",
+        "1",
+        "-d",
+        str(OUT / "doctrees"),
+        str(SRC),
+        str(HTML),
+    ]
     with open(log, "w", encoding="utf-8") as fh:
         code = subprocess.run(cmd, cwd=ROOT, env=env, stdout=fh, stderr=subprocess.STDOUT, check=False).returncode
     text = log.read_text(encoding="utf-8", errors="replace")
@@ -138,8 +163,12 @@ def main(argv: list[str] | None = None) -> int:
     args = ap.parse_args(argv)
     digest = inputs_hash()
     stamp = OUT / "stamp"
-    if not args.force and stamp.exists() and stamp.read_text(encoding="utf-8").strip() == digest \
-            and (HTML / "index.html").exists():
+    if (
+        not args.force
+        and stamp.exists()
+        and stamp.read_text(encoding="utf-8").strip() == digest
+        and (HTML / "index.html").exists()
+    ):
         print(f"[docs] unchanged since the last build ({digest[:12]}): {HTML.relative_to(ROOT)}/index.html")
         return 0
     stamp.unlink(missing_ok=True)
@@ -150,8 +179,10 @@ def main(argv: list[str] | None = None) -> int:
         print(f"[docs] FAILED: {exc}", file=sys.stderr)
         return 1
     stamp.write_text(digest + "\n", encoding="utf-8")
-    print(f"[docs] {pages} pages (and {len(list((HTML / '_modules').rglob('*.html')))} of highlighted source) "
-          f"in {time.monotonic() - t0:.0f} s, no warnings: {HTML.relative_to(ROOT)}/index.html")
+    print(
+        f"[docs] {pages} pages (and {len(list((HTML / '_modules').rglob('*.html')))} of highlighted source) "
+        f"in {time.monotonic() - t0:.0f} s, no warnings: {HTML.relative_to(ROOT)}/index.html"
+    )
     return 0
 
 

@@ -16,6 +16,7 @@ Why not the PyPI package ``django-static-mathjax``: it is a rebuild; its 3.2.2.1
 official 3.2.2 in 13 of the 106 files of ``es5/`` (``tex-svg-full.js`` among them: different minified
 code), so what it serves is not what MathJax released.
 """
+
 from __future__ import annotations
 
 import base64
@@ -69,15 +70,24 @@ def check_integrity(data: bytes, integrity: str | None = None) -> None:
 def _npm_pack(dest: Path) -> Path:
     npm = shutil.which("npm")
     if npm is None:
-        raise MathJaxError("npm not found: MathJax is fetched from the npm registry with npm "
-                           "(Debian: apt-get install npm)")
-    with tempfile.TemporaryDirectory(dir=dest) as tmp:      # an empty cwd: no project .npmrc applies
-        proc = subprocess.run([npm, "pack", f"mathjax@{VERSION}", "--silent", "--pack-destination", tmp],
-                              cwd=tmp, capture_output=True, text=True, timeout=600, check=False)
+        raise MathJaxError(
+            "npm not found: MathJax is fetched from the npm registry with npm (Debian: apt-get install npm)"
+        )
+    with tempfile.TemporaryDirectory(dir=dest) as tmp:  # an empty cwd: no project .npmrc applies
+        proc = subprocess.run(
+            [npm, "pack", f"mathjax@{VERSION}", "--silent", "--pack-destination", tmp],
+            cwd=tmp,
+            capture_output=True,
+            text=True,
+            timeout=600,
+            check=False,
+        )
         files = sorted(Path(tmp).glob("*.tgz"))
         if proc.returncode != 0 or len(files) != 1:
-            raise MathJaxError(f"npm pack mathjax@{VERSION} failed (exit {proc.returncode}): "
-                               f"{proc.stderr.strip() or proc.stdout.strip()}")
+            raise MathJaxError(
+                f"npm pack mathjax@{VERSION} failed (exit {proc.returncode}): "
+                f"{proc.stderr.strip() or proc.stdout.strip()}"
+            )
         out = dest / f".mathjax-{VERSION}.tgz.{os.getpid()}"
         shutil.move(str(files[0]), out)
     return out
@@ -97,7 +107,7 @@ def tarball(cache: Path = CACHE) -> bytes:
     tmp = _npm_pack(cache)
     try:
         data = tmp.read_bytes()
-        check_integrity(data)                               # before it is kept under its name
+        check_integrity(data)  # before it is kept under its name
         os.replace(tmp, path)
     finally:
         tmp.unlink(missing_ok=True)
@@ -118,8 +128,11 @@ def bundle(name: str = "tex-svg-full.js", cache: Path = CACHE) -> Path:
         except KeyError:
             member = None
         if member is None:
-            known = sorted(m.name.removeprefix("package/es5/") for m in tar.getmembers()
-                           if m.name.startswith("package/es5/") and m.name.count("/") == 2)
+            known = sorted(
+                m.name.removeprefix("package/es5/")
+                for m in tar.getmembers()
+                if m.name.startswith("package/es5/") and m.name.count("/") == 2
+            )
             raise MathJaxError(f"bundle {name!r} is not in mathjax@{VERSION}/es5 (there are: {', '.join(known)})")
         data = member.read()
     out = cache / VERSION / "es5" / name

@@ -28,6 +28,7 @@ A pass is recorded in ``build/release/stamp`` with the hash of everything that g
 the lock and this script; the next run with the same hash stops at once. ``build/release/`` keeps the
 sdist, the wheel and ``report.txt`` (``pip show``, versions, test summary).
 """
+
 from __future__ import annotations
 
 import argparse
@@ -50,20 +51,55 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[1]
 OUT = ROOT / "build" / "release"
 #: what goes into the sdist besides wmr/ (MANIFEST.in): the inputs of the check, with this script
-INPUTS = ("pyproject.toml", "MANIFEST.in", "README.md", "LICENSE", "CITATION.cff", "CHANGELOG.md",
-          "environment.lock", "wmr", "tests", "examples", "tools/release_check.py")
+INPUTS = (
+    "pyproject.toml",
+    "MANIFEST.in",
+    "README.md",
+    "LICENSE",
+    "CITATION.cff",
+    "CHANGELOG.md",
+    "environment.lock",
+    "wmr",
+    "tests",
+    "examples",
+    "tools/release_check.py",
+)
 #: extras installed in the fresh venv: the library's tests, and what they test beyond numpy and sympy (Dask
 #: sweeps, wmr.sim in MuJoCo, the URDF, ROS 2 and WPILib bridges), so that none of them is skipped
 EXTRAS = "test,dask,sim,urdf,ros,wpilib"
 #: in the sdist: the metadata files (besides wmr/, tests/*.py and examples/)
-SDIST_FILES = ("PKG-INFO", "pyproject.toml", "MANIFEST.in", "README.md", "LICENSE", "CITATION.cff",
-               "CHANGELOG.md", "wmr/py.typed", "wmr/_version.py", "tests/conftest.py", "tests/fuzz_api.py")
+SDIST_FILES = (
+    "PKG-INFO",
+    "pyproject.toml",
+    "MANIFEST.in",
+    "README.md",
+    "LICENSE",
+    "CITATION.cff",
+    "CHANGELOG.md",
+    "wmr/py.typed",
+    "wmr/_version.py",
+    "tests/conftest.py",
+    "tests/fuzz_api.py",
+)
 #: never in the sdist: the repository's own parts
-SDIST_FORBIDDEN = ("edition/", "notebooks/", "tools/", "figures/", "docs/", "tests/edition/", "build/",
-                   ".venv/", ".ci/", "environment.lock", "Makefile")
+SDIST_FORBIDDEN = (
+    "edition/",
+    "notebooks/",
+    "tools/",
+    "figures/",
+    "docs/",
+    "tests/edition/",
+    "build/",
+    ".venv/",
+    ".ci/",
+    "environment.lock",
+    "Makefile",
+)
 #: what setuptools says on every build that is not a problem of the release
-BENIGN = (r"no previously-included files matching '\*\.py\[cod\]' found"   # MANIFEST.in's global-exclude
-          r"|byte-compiling is disabled")                                     # PYTHONDONTWRITEBYTECODE
+BENIGN = (
+    r"no previously-included files matching '\*\.py\[cod\]' found"  # MANIFEST.in's global-exclude
+    r"|byte-compiling is disabled"
+)  # PYTHONDONTWRITEBYTECODE
 #: top-level names the shipped tests must not import
 REPO_ONLY_MODULES = ("edition", "tools")
 
@@ -84,8 +120,14 @@ def _files(root: Path, names: Iterable[str]) -> list[Path]:
         if p.is_file():
             out.append(p)
         elif p.is_dir():
-            out += [f for f in p.rglob("*") if f.is_file() and "__pycache__" not in f.parts
-                    and not f.name.endswith((".pyc", ".pyo")) and not f.is_relative_to(root / "tests" / "edition")]
+            out += [
+                f
+                for f in p.rglob("*")
+                if f.is_file()
+                and "__pycache__" not in f.parts
+                and not f.name.endswith((".pyc", ".pyo"))
+                and not f.is_relative_to(root / "tests" / "edition")
+            ]
     return sorted(out)
 
 
@@ -123,13 +165,21 @@ def build(outdir: Path) -> tuple[Path, Path]:
     outdir.mkdir(parents=True)
     log = outdir.parent / "build.log"
     with open(log, "w", encoding="utf-8") as fh:
-        code = subprocess.run([sys.executable, "-m", "build", "--no-isolation", "--outdir", str(outdir), str(ROOT)],
-                              cwd=ROOT, stdout=fh, stderr=subprocess.STDOUT, check=False).returncode
+        code = subprocess.run(
+            [sys.executable, "-m", "build", "--no-isolation", "--outdir", str(outdir), str(ROOT)],
+            cwd=ROOT,
+            stdout=fh,
+            stderr=subprocess.STDOUT,
+            check=False,
+        ).returncode
     text = log.read_text(encoding="utf-8", errors="replace")
     if code != 0:
         raise ReleaseError(f"python -m build failed (exit {code}); its log, {log}:\n{text[-3000:]}")
-    warnings = [ln for ln in text.splitlines() if re.search(r"warning|deprecat", ln, re.IGNORECASE)
-                and not re.search(BENIGN, ln)]
+    warnings = [
+        ln
+        for ln in text.splitlines()
+        if re.search(r"warning|deprecat", ln, re.IGNORECASE) and not re.search(BENIGN, ln)
+    ]
     if warnings:
         raise ReleaseError("python -m build warned:\n  " + "\n  ".join(warnings[:20]))
     sdists, wheels = sorted(outdir.glob("*.tar.gz")), sorted(outdir.glob("*.whl"))
@@ -205,8 +255,11 @@ def check_wheel(names: Sequence[str], metadata: str, entry_points: str, version:
             problems.append(f"wheel METADATA {key}: {meta.get(key)!r}, expected {value!r}")
     if meta.get("License"):
         problems.append("wheel METADATA has the deprecated License field besides License-Expression")
-    requires = {re.split(r"[ ;<>=!~\[]", r, maxsplit=1)[0].lower() for r in meta.get_all("Requires-Dist") or []
-                if "extra ==" not in r}
+    requires = {
+        re.split(r"[ ;<>=!~\[]", r, maxsplit=1)[0].lower()
+        for r in meta.get_all("Requires-Dist") or []
+        if "extra ==" not in r
+    }
     if requires != {"numpy", "sympy"}:
         problems.append(f"wheel METADATA Requires-Dist (not extras): {sorted(requires)}, expected numpy and sympy")
     if not re.search(r"^wmr\s*=\s*wmr\.cli:main\s*$", entry_points, re.MULTILINE):
@@ -224,8 +277,10 @@ def inspect(sdist: Path, wheel: Path, version: str, dist: str) -> None:
     for name, src in sorted(sources.items()):
         bad = repo_only_imports(src)
         if bad:
-            problems.append(f"{name} (shipped in the sdist) imports {', '.join(bad)}: a test that needs the "
-                            f"repository belongs in tests/edition/")
+            problems.append(
+                f"{name} (shipped in the sdist) imports {', '.join(bad)}: a test that needs the "
+                f"repository belongs in tests/edition/"
+            )
     with zipfile.ZipFile(wheel) as zf:
         names = zf.namelist()
         info = f"{dist.replace('-', '_')}-{version}.dist-info/"
@@ -237,8 +292,10 @@ def inspect(sdist: Path, wheel: Path, version: str, dist: str) -> None:
     problems += check_wheel(names, metadata, entry_points, version, dist)
     if problems:
         raise ReleaseError("the release artefacts are wrong:\n  " + "\n  ".join(problems))
-    say(f"sdist: {len(members)} files, {len(sources)} of them tests/*.py; wheel: {len(names)} files; "
-        f"metadata: {dist} {version}, License-Expression MIT")
+    say(
+        f"sdist: {len(members)} files, {len(sources)} of them tests/*.py; wheel: {len(names)} files; "
+        f"metadata: {dist} {version}, License-Expression MIT"
+    )
 
 
 # ------------------------------------------------------------------------------- the fresh venv
@@ -261,22 +318,31 @@ def constraints(lock: str) -> str:
     return "\n".join(pins) + "\n"
 
 
-def _run(cmd: Sequence[str | Path], cwd: Path, env: dict[str, str], what: str,
-         timeout: float = 1800) -> str:
-    proc = subprocess.run([str(c) for c in cmd], cwd=cwd, env=env, capture_output=True, text=True, timeout=timeout,
-                          check=False)
+def _run(cmd: Sequence[str | Path], cwd: Path, env: dict[str, str], what: str, timeout: float = 1800) -> str:
+    proc = subprocess.run(
+        [str(c) for c in cmd], cwd=cwd, env=env, capture_output=True, text=True, timeout=timeout, check=False
+    )
     if proc.returncode != 0:
-        raise ReleaseError(f"{what} failed (exit {proc.returncode}): {' '.join(map(str, cmd))}\n"
-                           f"{(proc.stdout + proc.stderr)[-4000:]}")
+        raise ReleaseError(
+            f"{what} failed (exit {proc.returncode}): {' '.join(map(str, cmd))}\n{(proc.stdout + proc.stderr)[-4000:]}"
+        )
     return proc.stdout
 
 
 def clean_env(tmp: Path) -> dict[str, str]:
     """The environment of the fresh venv's processes: nothing that points back into the repository."""
-    env = {k: v for k, v in os.environ.items()
-           if not k.startswith(("PYTHON", "VIRTUAL_ENV", "WMR_", "PIP_REQUIRE", "CONDA"))}
-    env.update(HOME=env.get("HOME", str(tmp)), PYTHONNOUSERSITE="1", MPLBACKEND="Agg",
-               PYTHONDONTWRITEBYTECODE="1", PIP_DISABLE_PIP_VERSION_CHECK="1")
+    env = {
+        k: v
+        for k, v in os.environ.items()
+        if not k.startswith(("PYTHON", "VIRTUAL_ENV", "WMR_", "PIP_REQUIRE", "CONDA"))
+    }
+    env.update(
+        HOME=env.get("HOME", str(tmp)),
+        PYTHONNOUSERSITE="1",
+        MPLBACKEND="Agg",
+        PYTHONDONTWRITEBYTECODE="1",
+        PIP_DISABLE_PIP_VERSION_CHECK="1",
+    )
     return env
 
 
@@ -295,9 +361,25 @@ def wheelhouse(vpy: Path, wheel: Path, env: dict[str, str], cwd: Path) -> Path:
     shutil.rmtree(tmp, ignore_errors=True)
     tmp.mkdir(parents=True)
     (tmp / "constraints.txt").write_text(constraints(lock), encoding="utf-8")
-    _run([vpy, "-m", "pip", "download", "--quiet", "--only-binary=:all:", "--dest", tmp,
-          "--constraint", tmp / "constraints.txt", f"{wheel}[{EXTRAS}]"], cwd, env, "pip download")
-    (tmp / wheel.name).unlink(missing_ok=True)               # the wheel itself comes from build/release
+    _run(
+        [
+            vpy,
+            "-m",
+            "pip",
+            "download",
+            "--quiet",
+            "--only-binary=:all:",
+            "--dest",
+            tmp,
+            "--constraint",
+            tmp / "constraints.txt",
+            f"{wheel}[{EXTRAS}]",
+        ],
+        cwd,
+        env,
+        "pip download",
+    )
+    (tmp / wheel.name).unlink(missing_ok=True)  # the wheel itself comes from build/release
     (tmp / ".complete").write_text("", encoding="utf-8")
     shutil.rmtree(house, ignore_errors=True)
     os.replace(tmp, house)
@@ -324,8 +406,10 @@ def missing_modules(pytest_output: str) -> list[str]:
     ...                 "SKIPPED [2] tests/test_b.py:9: chromium not installed\\n")
     ["tests/test_a.py:3: could not import 'yaml'"]
     """
-    return [m.group(1) for m in re.finditer(r"^SKIPPED \[\d+\] (\S+: could not import '[^']+')", pytest_output,
-                                           re.MULTILINE)]
+    return [
+        m.group(1)
+        for m in re.finditer(r"^SKIPPED \[\d+\] (\S+: could not import '[^']+')", pytest_output, re.MULTILINE)
+    ]
 
 
 def in_venv(vdir: Path, src: Path, env: dict[str, str], version: str, dist: str) -> dict[str, str]:
@@ -334,8 +418,10 @@ def in_venv(vdir: Path, src: Path, env: dict[str, str], version: str, dist: str)
     facts: dict[str, str] = {}
     _run([vpy, "-m", "pip", "check"], src, env, "pip check")
     facts["pip show"] = _run([vpy, "-m", "pip", "show", dist], src, env, "pip show").strip()
-    probe = ("import wmr, importlib.metadata as m, sysconfig; "
-             f"print(wmr.__file__); print(m.version({dist!r})); print(sysconfig.get_path('purelib'))")
+    probe = (
+        "import wmr, importlib.metadata as m, sysconfig; "
+        f"print(wmr.__file__); print(m.version({dist!r})); print(sysconfig.get_path('purelib'))"
+    )
     where = _run([vpy, "-P", "-c", probe], src, env, "import wmr").split("\n")
     if not Path(where[0]).is_relative_to(Path(where[2])):
         raise ReleaseError(f"import wmr found {where[0]}, not the installed wheel in {where[2]}")
@@ -353,37 +439,59 @@ def in_venv(vdir: Path, src: Path, env: dict[str, str], version: str, dist: str)
     # the command line on the shipped example robots
     analyzed = json.loads(_run([wmr_cmd, "analyze", "examples/swerve4.toml", "--json"], src, env, "wmr analyze"))
     if (analyzed["delta_m"], analyzed["delta_s"]) != (1, 2):
-        raise ReleaseError(f"wmr analyze examples/swerve4.toml: class ({analyzed['delta_m']},{analyzed['delta_s']}), "
-                           "expected (1,2) (tests/test_cli_robot.py has the same robot)")
-    _run([wmr_cmd, "ik", "examples/swerve4.toml", "--vx", "1", "--vy", "0.5", "--omega", "0.8", "--json"], src, env,
-         "wmr ik")
-    _run([wmr_cmd, "fk", "examples/paper_centred.toml", "--angles", "0", "0", "0", "--rates", "1", "1", "1", "--json"],
-         src, env, "wmr fk")
+        raise ReleaseError(
+            f"wmr analyze examples/swerve4.toml: class ({analyzed['delta_m']},{analyzed['delta_s']}), "
+            "expected (1,2) (tests/test_cli_robot.py has the same robot)"
+        )
+    _run(
+        [wmr_cmd, "ik", "examples/swerve4.toml", "--vx", "1", "--vy", "0.5", "--omega", "0.8", "--json"],
+        src,
+        env,
+        "wmr ik",
+    )
+    _run(
+        [wmr_cmd, "fk", "examples/paper_centred.toml", "--angles", "0", "0", "0", "--rates", "1", "1", "1", "--json"],
+        src,
+        env,
+        "wmr fk",
+    )
     _run([wmr_cmd, "sweep", "examples/paper_centred.toml", "kappa_J", "--grid", "12", "--json"], src, env, "wmr sweep")
-    bad = subprocess.run([str(wmr_cmd), "analyze", "no-such-robot.toml"], cwd=src, env=env, capture_output=True,
-                         text=True, check=False)
+    bad = subprocess.run(
+        [str(wmr_cmd), "analyze", "no-such-robot.toml"], cwd=src, env=env, capture_output=True, text=True, check=False
+    )
     if bad.returncode != 2 or len(bad.stderr.strip().splitlines()) != 1 or "no-such-robot.toml" not in bad.stderr:
-        raise ReleaseError(f"wmr analyze on a missing file: exit {bad.returncode}, stderr {bad.stderr!r} "
-                           "(expected exit 2 and one line naming the file)")
+        raise ReleaseError(
+            f"wmr analyze on a missing file: exit {bad.returncode}, stderr {bad.stderr!r} "
+            "(expected exit 2 and one line naming the file)"
+        )
     ros2 = _run([wmr_cmd, "convert", "examples/urdf/diffbot.urdf", "--to", "ros2"], src, env, "wmr convert")
     if "diff_drive_controller" not in ros2:
         raise ReleaseError(f"wmr convert examples/urdf/diffbot.urdf --to ros2: no diff_drive_controller in\n{ros2}")
-    facts["wmr commands"] = ("analyze, ik, fk, sweep, convert (URDF -> ROS 2) on examples/; a missing file: exit 2, "
-                             "one line")
+    facts["wmr commands"] = (
+        "analyze, ik, fk, sweep, convert (URDF -> ROS 2) on examples/; a missing file: exit 2, one line"
+    )
     # the library's tests, as shipped
     log = vdir.parent / "pytest.log"
     t0 = time.monotonic()
     with open(log, "w", encoding="utf-8") as fh:
-        proc = subprocess.run([str(vpy), "-P", "-m", "pytest", "-q", "-rs", "-p", "no:cacheprovider", "tests"],
-                              cwd=src, env=env, stdout=fh, stderr=subprocess.STDOUT, check=False)
+        proc = subprocess.run(
+            [str(vpy), "-P", "-m", "pytest", "-q", "-rs", "-p", "no:cacheprovider", "tests"],
+            cwd=src,
+            env=env,
+            stdout=fh,
+            stderr=subprocess.STDOUT,
+            check=False,
+        )
     text = log.read_text(encoding="utf-8", errors="replace")
     summary = next((ln.strip("= ") for ln in reversed(text.splitlines()) if re.search(r"\d+ (passed|failed)", ln)), "")
     if proc.returncode != 0 or "passed" not in summary:
         raise ReleaseError(f"the library's tests failed in the fresh venv (exit {proc.returncode}):\n{text[-6000:]}")
     unimported = missing_modules(text)
     if unimported:
-        raise ReleaseError("library tests were skipped in the fresh venv for want of a module (an extra missing "
-                           f"from EXTRAS, or from pyproject's extras): {'; '.join(unimported)}")
+        raise ReleaseError(
+            "library tests were skipped in the fresh venv for want of a module (an extra missing "
+            f"from EXTRAS, or from pyproject's extras): {'; '.join(unimported)}"
+        )
     facts["library tests"] = f"{summary} ({time.monotonic() - t0:.0f} s)"
     return facts
 
@@ -403,13 +511,17 @@ def check(python: str, keep: bool) -> dict[str, str]:
         vpy = vdir / "bin" / "python"
         house = wheelhouse(vpy, wheel, env, tmp)
         t0 = time.monotonic()
-        _run([vpy, "-m", "pip", "install", "--quiet", "--no-index", "--find-links", house,
-              f"{wheel}[{EXTRAS}]"], tmp, env, "pip install (offline)")
+        _run(
+            [vpy, "-m", "pip", "install", "--quiet", "--no-index", "--find-links", house, f"{wheel}[{EXTRAS}]"],
+            tmp,
+            env,
+            "pip install (offline)",
+        )
         say(f"installed {wheel.name}[{EXTRAS}] into a fresh venv in {tmp} ({time.monotonic() - t0:.0f} s, offline)")
         with tarfile.open(sdist) as tar:
             tar.extractall(tmp, filter="data")
         src = tmp / sdist.name.removesuffix(".tar.gz")
-        shutil.rmtree(src / "wmr")                           # only the installed wheel can be imported
+        shutil.rmtree(src / "wmr")  # only the installed wheel can be imported
         facts = in_venv(vdir, src, env, version, dist)
         facts["python"] = _python_version(str(vpy))
         facts["artefacts"] = f"{sdist.relative_to(ROOT)}, {wheel.relative_to(ROOT)}"
@@ -422,8 +534,9 @@ def check(python: str, keep: bool) -> dict[str, str]:
 
 
 def main(argv: list[str] | None = None) -> int:
-    ap = argparse.ArgumentParser(description=(__doc__ or "").split("\n\n")[0],
-                                 formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap = argparse.ArgumentParser(
+        description=(__doc__ or "").split("\n\n")[0], formatter_class=argparse.RawDescriptionHelpFormatter
+    )
     ap.add_argument("--force", action="store_true", help="check even when nothing changed since the last pass")
     ap.add_argument("--python", default=sys.executable, help="interpreter of the fresh venv (default: this one)")
     ap.add_argument("--keep", action="store_true", help="keep the temporary folder with the venv and the sdist")

@@ -16,6 +16,7 @@ Examples
 >>> int(wmr.mobility(bot, beta))
 1
 """
+
 from . import errors, swerve
 from ._version import __version__ as __version__  # one source: wmr/_version.py
 from .analysis.classes import campion_class
@@ -37,11 +38,41 @@ from .model.wheels import CentredWheel, DualWheel, FixedWheel, OffsetWheel, Swed
 from .odometry import wheel_odometry
 
 __all__ = [
-    "Robot", "OffsetWheel", "CentredWheel", "DualWheel", "FixedWheel", "SwedishWheel", "paper_robot",
+    "Robot",
+    "OffsetWheel",
+    "CentredWheel",
+    "DualWheel",
+    "FixedWheel",
+    "SwedishWheel",
+    "paper_robot",
     "equilateral_mounts",
-    "E", "rotation", "point_velocity", "rank", "nullity", "null_space", "rank_F", "mobility",
-    "admissible_twists", "condition_number", "is_isotropic", "characteristic_length",
-    "forward", "inverse", "instantaneous_centre", "steering_angles", "centre_to_wheels",
-    "simulate", "sweep", "campion_class", "TOL", "NUMERIC", "SYMBOLIC", "conventions", "load", "dump",
-    "swerve", "errors", "wheel_odometry",
+    "E",
+    "rotation",
+    "point_velocity",
+    "rank",
+    "nullity",
+    "null_space",
+    "rank_F",
+    "mobility",
+    "admissible_twists",
+    "condition_number",
+    "is_isotropic",
+    "characteristic_length",
+    "forward",
+    "inverse",
+    "instantaneous_centre",
+    "steering_angles",
+    "centre_to_wheels",
+    "simulate",
+    "sweep",
+    "campion_class",
+    "TOL",
+    "NUMERIC",
+    "SYMBOLIC",
+    "conventions",
+    "load",
+    "dump",
+    "swerve",
+    "errors",
+    "wheel_odometry",
 ]

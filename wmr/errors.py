@@ -29,10 +29,18 @@ Examples
 ...     print(type(exc).__name__, isinstance(exc, ValueError), exc)
 InputValueError True r (wheel radius) must be positive, got -1.0
 """
+
 from __future__ import annotations
 
-__all__ = ["WmrError", "InputError", "InputTypeError", "InputValueError", "RobotFileError", "LimitError",
-           "MissingDependencyError"]
+__all__ = [
+    "WmrError",
+    "InputError",
+    "InputTypeError",
+    "InputValueError",
+    "RobotFileError",
+    "LimitError",
+    "MissingDependencyError",
+]
 
 
 class WmrError(Exception):

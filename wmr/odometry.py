@@ -33,6 +33,7 @@ Examples
 >>> (odo.pose[-1].round(12) + 0.0).tolist(), bool(odo.slip.max() < 1e-12)
 ([0.0, 1.0, 0.0], True)
 """
+
 from __future__ import annotations
 
 from collections.abc import Sequence
@@ -130,8 +131,10 @@ def _steps(name, values):
     with np.errstate(over="ignore", invalid="ignore"):
         out = np.diff(values, axis=0)
     if not np.isfinite(out).all():
-        raise InputValueError(f"{name} are too large: the differences of successive samples overflow "
-                              f"(largest |{name}| = {np.abs(values).max():.3g})")
+        raise InputValueError(
+            f"{name} are too large: the differences of successive samples overflow "
+            f"(largest |{name}| = {np.abs(values).max():.3g})"
+        )
     return out
 
 
@@ -144,8 +147,14 @@ def _solve(A):
     return P, np.atleast_1d(determined)
 
 
-def wheel_odometry(robot: Robot, beta: ArrayLike, angles: ArrayLike, heading: ArrayLike | None = None,
-                   pose0: ArrayLike = (0.0, 0.0, 0.0), measured: Sequence[str] | None = None) -> Odometry:
+def wheel_odometry(
+    robot: Robot,
+    beta: ArrayLike,
+    angles: ArrayLike,
+    heading: ArrayLike | None = None,
+    pose0: ArrayLike = (0.0, 0.0, 0.0),
+    measured: Sequence[str] | None = None,
+) -> Odometry:
     r"""The pose over time from sampled joint angles (rules: module notes).
 
     Parameters
@@ -184,17 +193,20 @@ def wheel_odometry(robot: Robot, beta: ArrayLike, angles: ArrayLike, heading: Ar
         if isinstance(measured, str) or not all(isinstance(n, str) for n in measured):
             raise V.kind_error("measured", measured, "a sequence of rate names")
         if any(n not in names for n in measured) or len(set(measured)) != len(measured):
-            raise InputValueError(f"measured must name distinct rates of the robot ({', '.join(names)}), got "
-                                  f"{list(measured)}")
+            raise InputValueError(
+                f"measured must name distinct rates of the robot ({', '.join(names)}), got {list(measured)}"
+            )
         chosen = [names.index(n) for n in measured]
-    steer = [c for c in chosen if c in steering_rates]                 # through beta: phi = psi + beta (7)
-    cols = [c for c in chosen if c not in steering_rates]              # through angles
+    steer = [c for c in chosen if c in steering_rates]  # through beta: phi = psi + beta (7)
+    cols = [c for c in chosen if c not in steering_rates]  # through angles
     beta = V.finite_array("beta", beta, last=robot.w)
     angles = V.finite_array("angles", angles, last=len(cols))
     T = beta.shape[0] if beta.ndim == 2 else 0
     if beta.ndim != 2 or angles.shape != (T, len(cols)) or not 2 <= T <= MAX_SAMPLES:
-        raise InputValueError(f"beta must be (T, {robot.w}) and angles (T, {len(cols)}) with 2 <= T <= {MAX_SAMPLES}, "
-                              f"got shapes {beta.shape} and {angles.shape}")
+        raise InputValueError(
+            f"beta must be (T, {robot.w}) and angles (T, {len(cols)}) with 2 <= T <= {MAX_SAMPLES}, "
+            f"got shapes {beta.shape} and {angles.shape}"
+        )
     if heading is not None:
         heading = V.finite_array("heading", heading)
         if heading.shape != (T,):
@@ -204,20 +216,20 @@ def wheel_odometry(robot: Robot, beta: ArrayLike, angles: ArrayLike, heading: Ar
         raise InputValueError(f"pose0 must be (psi, X, Y), got shape {pose0.shape}")
     unknown = [c for c in range(robot.n_rates) if c not in cols and c not in steer]
     J1 = robot.J1()
-    unit_of = [i for i, sl in enumerate(robot.rate_slices) for _ in range(sl.start, sl.stop)]     # column -> unit
+    unit_of = [i for i, sl in enumerate(robot.rate_slices) for _ in range(sl.start, sl.stop)]  # column -> unit
     steering = [unit_of[c] for c in steer]
     # A (the unknowns' matrix) changes with beta only through steered units' unknown or steering columns
     constant = not any(robot.wheels[unit_of[c]].steered for c in unknown + steer)
     b_end = robot.effective_beta(beta[1:])
     d_theta = _steps("angles", angles)
-    d_beta = wrap_angle(_steps("beta", beta[:, steering]))            # (T-1, 0) without measured steering
+    d_beta = wrap_angle(_steps("beta", beta[:, steering]))  # (T-1, 0) without measured steering
     z = np.empty((T - 1, 3 + len(unknown)))
     res = np.empty((T - 1, 2 * robot.w))
     fixed = None
-    with np.errstate(over="ignore", invalid="ignore"):          # an overflow is caught on the pose
+    with np.errstate(over="ignore", invalid="ignore"):  # an overflow is caught on the pose
         for a in range(0, T - 1, _CHUNK):
             k = slice(a, min(a + _CHUNK, T - 1))
-            J2 = robot.J2(b_end[k])                                        # (n, 2w, n_rates) at the steps' ends
+            J2 = robot.J2(b_end[k])  # (n, 2w, n_rates) at the steps' ends
             b = np.einsum("kij,kj->ki", J2[..., cols], d_theta[k])
             if steer:
                 b += np.einsum("kij,kj->ki", J2[..., steer], d_beta[k])
@@ -227,33 +239,36 @@ def wheel_odometry(robot: Robot, beta: ArrayLike, angles: ArrayLike, heading: Ar
                 res[k] = z[k] @ A.T - b
                 continue
             A = np.concatenate([np.broadcast_to(J1, J2.shape[:1] + J1.shape), -J2[..., unknown]], axis=-1)
-            A[..., 0] -= J2[..., steer].sum(axis=-1)                        # phi_i = psi + beta_i (7): psi's column
-            n = 1 if constant else len(b)                                   # a constant A: solved once
+            A[..., 0] -= J2[..., steer].sum(axis=-1)  # phi_i = psi + beta_i (7): psi's column
+            n = 1 if constant else len(b)  # a constant A: solved once
             P, determined = _solve(A[:n])
             if not determined.all():
                 step = a + int(np.argmin(determined))
-                raise InputValueError(f"the measured joints {[names[c] for c in chosen]} do not determine the "
-                                      f"platform's motion at step {step} (samples {step}..{step + 1}, beta = "
-                                      f"{b_end[step].round(6).tolist()}): measure more joints")
+                raise InputValueError(
+                    f"the measured joints {[names[c] for c in chosen]} do not determine the "
+                    f"platform's motion at step {step} (samples {step}..{step + 1}, beta = "
+                    f"{b_end[step].round(6).tolist()}): measure more joints"
+                )
             if constant:
                 fixed = (A[0], P[0])
             z[k] = np.einsum("kij,kj->ki", np.broadcast_to(P, (len(b),) + P.shape[1:]), b)
             res[k] = np.einsum("kij,kj->ki", A, z[k]) - b
     inc = z[:, :3].copy()
     if heading is not None:
-        inc[:, 0] = wrap_angle(_steps("heading", heading))             # WPILib: the gyro's angle, wheels' dx, dy
+        inc[:, 0] = wrap_angle(_steps("heading", heading))  # WPILib: the gyro's angle, wheels' dx, dy
     with np.errstate(over="ignore", invalid="ignore"):
         psi = pose0[0] + np.concatenate([[0.0], np.cumsum(inc[:, 0])])
         ok = np.isfinite(inc).all() and np.isfinite(res).all() and np.isfinite(psi).all()
         if ok:
-            d = se2_exp(inc)                                           # Pose2d.exp: body-frame displacement
+            d = se2_exp(inc)  # Pose2d.exp: body-frame displacement
             c, s = np.cos(psi[:-1]), np.sin(psi[:-1])
             world = np.stack([c * d[:, 1] - s * d[:, 2], s * d[:, 1] + c * d[:, 2]], axis=-1)
             xy = pose0[1:] + np.concatenate([np.zeros((1, 2)), np.cumsum(world, axis=0)])
             ok = np.isfinite(xy).all()
     if not ok:
-        raise InputValueError(f"angles, heading or pose0 are too large: the pose overflows double precision "
-                              f"(largest |angles| = {np.abs(angles).max():.3g})")
+        raise InputValueError(
+            f"angles, heading or pose0 are too large: the pose overflows double precision "
+            f"(largest |angles| = {np.abs(angles).max():.3g})"
+        )
     pose = np.column_stack([psi, xy])
-    return Odometry(robot, tuple(names[c] for c in chosen), pose, inc, res, np.linalg.norm(res, axis=-1),
-                    z[:, 3:])
+    return Odometry(robot, tuple(names[c] for c in chosen), pose, inc, res, np.linalg.norm(res, axis=-1), z[:, 3:])

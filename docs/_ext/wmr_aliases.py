@@ -9,6 +9,7 @@ imports it and retries with the object's own name (``module.qualname``, or the m
 that is documented, the reference links there. Anything else stays unresolved, and ``nitpicky``
 reports it.
 """
+
 from __future__ import annotations
 
 import importlib
@@ -59,7 +60,7 @@ def own_name(obj: Any) -> str | None:
     """
     if inspect.ismodule(obj):
         return obj.__name__
-    obj = getattr(obj, "fget", None) or getattr(obj, "func", None) or obj     # property, cached_property
+    obj = getattr(obj, "fget", None) or getattr(obj, "func", None) or obj  # property, cached_property
     module, qualname = getattr(obj, "__module__", None), getattr(obj, "__qualname__", None)
     if isinstance(module, str) and isinstance(qualname, str) and "<" not in qualname:
         return f"{module}.{qualname}"
@@ -73,9 +74,13 @@ def documented_as(domain: Any, target: str, reftype: str, obj: Any = _MISSING) -
     """The one documented name that ends with ``.target`` (or is ``target``), of a type the role
     ``reftype`` may refer to, and that is ``obj`` when ``obj`` is given; None when there is not one."""
     types = set(domain.objtypes_for_role(reftype) or ())
-    found = [name for name, entry in domain.objects.items()
-             if (name == target or name.endswith("." + target)) and (not types or entry.objtype in types)
-             and (obj is _MISSING or imported(name) is obj)]
+    found = [
+        name
+        for name, entry in domain.objects.items()
+        if (name == target or name.endswith("." + target))
+        and (not types or entry.objtype in types)
+        and (obj is _MISSING or imported(name) is obj)
+    ]
     return found[0] if len(found) == 1 else None
 
 
@@ -87,13 +92,13 @@ def resolve(app: Sphinx, env: BuildEnvironment, node: pending_xref, contnode: no
     modname = node.get("py:module")
     names: list[str | None] = []
     parts = target.split(".")
-    suffixes = [".".join(parts[i:]) for i in range(len(parts))]           # the longest first
+    suffixes = [".".join(parts[i:]) for i in range(len(parts))]  # the longest first
     for candidate in ([f"{modname}.{target}"] if modname else []) + [target]:
         obj = imported(candidate) if "." in candidate else None
         if obj is not None:
             names.append(own_name(obj))
             names += [documented_as(domain, suffix, reftype, obj) for suffix in suffixes]
-            names += [documented_as(domain, suffix, "obj", obj) for suffix in suffixes]    # any type
+            names += [documented_as(domain, suffix, "obj", obj) for suffix in suffixes]  # any type
     names.append(documented_as(domain, target, reftype))
     for name in names:
         if name and name != node["reftarget"]:
@@ -125,13 +130,15 @@ def reexported(module: Any) -> list[str]:
 def _defined_in(module: Any, name: str) -> bool:
     """Whether ``name`` (data) is assigned in ``module``'s own source, rather than imported."""
     import ast
+
     try:
         tree = ast.parse(inspect.getsource(module))
     except (OSError, TypeError):
         return True
     for node in tree.body:
-        targets = (node.targets if isinstance(node, ast.Assign)
-                   else [node.target] if isinstance(node, ast.AnnAssign) else [])
+        targets = (
+            node.targets if isinstance(node, ast.Assign) else [node.target] if isinstance(node, ast.AnnAssign) else []
+        )
         for t in targets:
             names = [t] if isinstance(t, ast.Name) else list(t.elts) if isinstance(t, ast.Tuple) else []
             if any(isinstance(n, ast.Name) and n.id == name for n in names):
@@ -151,7 +158,7 @@ def summary(obj: Any) -> str:
         return f"(a ``{type(obj).__name__}``)"
     doc = (inspect.getdoc(obj) or "").strip().split("\n\n")[0].replace("\n", " ")
     end = doc.find(". ")
-    return doc if end < 0 else doc[:end + 1]
+    return doc if end < 0 else doc[: end + 1]
 
 
 class Exports(SphinxDirective):
@@ -164,9 +171,15 @@ class Exports(SphinxDirective):
         names = reexported(module)
         if not names:
             return []
-        lines = [f".. rubric:: What ``{module.__name__}`` offers", "",
-                 f"The names of ``{module.__name__}.__all__`` that are defined in its modules:", "",
-                 ".. list-table::", "   :widths: 30 70", ""]
+        lines = [
+            f".. rubric:: What ``{module.__name__}`` offers",
+            "",
+            f"The names of ``{module.__name__}.__all__`` that are defined in its modules:",
+            "",
+            ".. list-table::",
+            "   :widths: 30 70",
+            "",
+        ]
         for name in names:
             lines += [f"   * - :py:obj:`{module.__name__}.{name}`", f"     - {summary(getattr(module, name))}"]
         self.state_machine.insert_input(lines + [""], f"<exports of {module.__name__}>")

@@ -18,6 +18,7 @@ Its fenced code blocks are not converted but handled here:
 Every failed claim is a Sphinx warning, which ``-W`` turns into a failed build. The README stays
 the one source of the text; the docs prove its examples.
 """
+
 from __future__ import annotations
 
 import contextlib
@@ -122,18 +123,20 @@ def _literal(text: str, language: str = "text") -> list[str]:
 
 class MarkdownSection(SphinxDirective):
     """``.. markdown:: FILE`` (relative to the repository): the file, or with ``:section: TITLE`` one
-``##`` section of it; with ``:code: LANGUAGE`` the file shown as code."""
+    ``##`` section of it; with ``:code: LANGUAGE`` the file shown as code."""
 
     required_arguments = 1
-    option_spec: ClassVar[dict[str, Any]] = {"section": directives.unchanged_required,
-                                             "code": directives.unchanged_required}
+    option_spec: ClassVar[dict[str, Any]] = {
+        "section": directives.unchanged_required,
+        "code": directives.unchanged_required,
+    }
 
     def run(self) -> list[Any]:
         root = Path(self.config.wmr_repository)
         path = root / self.arguments[0]
         self.env.note_dependency(str(path))
         text = path.read_text(encoding="utf-8")
-        if "code" in self.options:                                 # the whole file, as code
+        if "code" in self.options:  # the whole file, as code
             self.state_machine.insert_input(_literal(text, self.options["code"]), str(path))
             return []
         title = self.options.get("section")
@@ -142,7 +145,7 @@ class MarkdownSection(SphinxDirective):
                 text = section(text, title)
             except KeyError:
                 raise self.error(f"{self.arguments[0]} has no section '## {title}'") from None
-        else:                                                      # the page has its own title
+        else:  # the page has its own title
             text = re.sub(r"\A# [^\n]*\n", "", text)
         where = f"{self.arguments[0]}" + (f", section '{title}'" if title else "")
         blocks: list[tuple[str, str]] = []
@@ -152,7 +155,7 @@ class MarkdownSection(SphinxDirective):
             return "\n" + PLACEHOLDER.format(len(blocks) - 1) + "\n"
 
         rst = _pandoc(FENCE.sub(hold, text))
-        if "wmr_markdown_namespace" not in self.env.temp_data:                  # one namespace per page
+        if "wmr_markdown_namespace" not in self.env.temp_data:  # one namespace per page
             self.env.temp_data["wmr_markdown_namespace"] = {"__name__": "__docs__"}
         namespace: dict[str, Any] = self.env.temp_data["wmr_markdown_namespace"]
         out: list[str] = []
@@ -171,13 +174,16 @@ class MarkdownSection(SphinxDirective):
             buf = io.StringIO()
             try:
                 with contextlib.chdir(root), contextlib.redirect_stdout(buf):
-                    exec(compile(code, f"<{where}>", "exec"), ns)       # the README's own example
-            except Exception as exc:                                  # reported: fails -W
-                logger.warning(f"{where}: the Python example raised {type(exc).__name__}: {exc}",
-                               location=self.get_location())
+                    exec(compile(code, f"<{where}>", "exec"), ns)  # the README's own example
+            except Exception as exc:  # reported: fails -W
+                logger.warning(
+                    f"{where}: the Python example raised {type(exc).__name__}: {exc}", location=self.get_location()
+                )
             for value in unmet_claims(code, buf.getvalue()):
-                logger.warning(f"{where}: the example's comment says it prints {value!r}; it printed:\n"
-                               f"{buf.getvalue()}", location=self.get_location())
+                logger.warning(
+                    f"{where}: the example's comment says it prints {value!r}; it printed:\n{buf.getvalue()}",
+                    location=self.get_location(),
+                )
             shown = _literal(code, "python")
             if buf.getvalue():
                 shown += ["Output:", "", *_literal(buf.getvalue())]
@@ -186,13 +192,22 @@ class MarkdownSection(SphinxDirective):
             for cmd, shown_out in console_runs(code):
                 got = _run_wmr(cmd, root)
                 if got is not None and got.rstrip() != shown_out.rstrip():
-                    diff = "\n".join(difflib.unified_diff(shown_out.rstrip().splitlines(), got.rstrip().splitlines(),
-                                                          "as shown", "as run", lineterm=""))
-                    logger.warning(f"{where}: `{cmd}` prints something else than shown:\n{diff}",
-                                   location=self.get_location())
+                    diff = "\n".join(
+                        difflib.unified_diff(
+                            shown_out.rstrip().splitlines(),
+                            got.rstrip().splitlines(),
+                            "as shown",
+                            "as run",
+                            lineterm="",
+                        )
+                    )
+                    logger.warning(
+                        f"{where}: `{cmd}` prints something else than shown:\n{diff}", location=self.get_location()
+                    )
             return _literal(code, "console")
         if lang == "toml" and "[[wheel]]" in code:
             import wmr
+
             with tempfile.TemporaryDirectory() as tmp:
                 robot = Path(tmp) / "robot.toml"
                 robot.write_text(code, encoding="utf-8")
@@ -209,11 +224,12 @@ def _run_wmr(cmd: str, root: Path) -> str | None:
     if not argv or argv[0] != "wmr":
         return None
     from wmr.cli import main
+
     buf = io.StringIO()
     with contextlib.chdir(root), contextlib.redirect_stdout(buf):
         try:
             code = main(argv[1:])
-        except SystemExit as exc:                                  # --version, --help
+        except SystemExit as exc:  # --version, --help
             code = exc.code if isinstance(exc.code, int) else 1
     if code != 0:
         logger.warning(f"`{cmd}` exited with status {code}")
@@ -223,10 +239,17 @@ def _run_wmr(cmd: str, root: Path) -> str | None:
 def _pandoc(markdown: str) -> str:
     pandoc = shutil.which("pandoc")
     if pandoc is None:
-        raise RuntimeError("pandoc not found: the user guide converts the README's Markdown with pandoc "
-                           "(make tex installs it; Debian: apt-get install pandoc)")
-    proc = subprocess.run([pandoc, "--from", "gfm", "--to", "rst", "--wrap", "preserve"], input=markdown,
-                          capture_output=True, text=True, check=True)
+        raise RuntimeError(
+            "pandoc not found: the user guide converts the README's Markdown with pandoc "
+            "(make tex installs it; Debian: apt-get install pandoc)"
+        )
+    proc = subprocess.run(
+        [pandoc, "--from", "gfm", "--to", "rst", "--wrap", "preserve"],
+        input=markdown,
+        capture_output=True,
+        text=True,
+        check=True,
+    )
     return proc.stdout
 
 

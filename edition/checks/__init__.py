@@ -19,6 +19,7 @@ anything (the package's kernels agree with the derivation) go through :func:`req
 raises :class:`CheckError` instead of recording a row.  Random samples use the fixed seed
 :data:`edition.verify.SEED`.
 """
+
 from __future__ import annotations
 
 from types import SimpleNamespace
@@ -70,8 +71,20 @@ class Derivation(SimpleNamespace):
         raise KeyError(id)
 
 
-def equation(id, holds, proven, residual, *, refuted="", corrected="", corrected_holds=False, severity="",
-             why="", convention="", note=""):
+def equation(
+    id,
+    holds,
+    proven,
+    residual,
+    *,
+    refuted="",
+    corrected="",
+    corrected_holds=False,
+    severity="",
+    why="",
+    convention="",
+    note="",
+):
     r"""A :class:`~edition.ledger.Finding` for a numbered equation, its ``check`` text built from what was shown.
 
     Parameters
@@ -94,14 +107,39 @@ def equation(id, holds, proven, residual, *, refuted="", corrected="", corrected
     edition.ledger.Finding
     """
     holds = bool(holds)
-    check = (f"printed form proven: {proven}" if holds else
-             f"printed form refuted ({refuted}); corrected form proven: {proven}")
-    return Finding(str(id), holds, check, float(residual), corrected=corrected, corrected_holds=bool(corrected_holds),
-                   severity=severity, why=why, convention=convention, note=note)
+    check = (
+        f"printed form proven: {proven}"
+        if holds
+        else f"printed form refuted ({refuted}); corrected form proven: {proven}"
+    )
+    return Finding(
+        str(id),
+        holds,
+        check,
+        float(residual),
+        corrected=corrected,
+        corrected_holds=bool(corrected_holds),
+        severity=severity,
+        why=why,
+        convention=convention,
+        note=note,
+    )
 
 
-def claim(slug, holds, proven, residual, *, refuted="", corrected="", corrected_holds=False, severity="",
-          why="", convention="", note=""):
+def claim(
+    slug,
+    holds,
+    proven,
+    residual,
+    *,
+    refuted="",
+    corrected="",
+    corrected_holds=False,
+    severity="",
+    why="",
+    convention="",
+    note="",
+):
     r"""A :class:`~edition.ledger.Finding` for a claim of the text (see :func:`equation`).
 
     Parameters
@@ -120,6 +158,16 @@ def claim(slug, holds, proven, residual, *, refuted="", corrected="", corrected_
     edition.ledger.Finding
     """
     holds = bool(holds)
-    check = (f"claim proven: {proven}" if holds else f"claim refuted ({refuted}); what is true, proven: {proven}")
-    return Finding(slug, holds, check, float(residual), corrected=corrected, corrected_holds=bool(corrected_holds),
-                   severity=severity, why=why, convention=convention, note=note)
+    check = f"claim proven: {proven}" if holds else f"claim refuted ({refuted}); what is true, proven: {proven}"
+    return Finding(
+        slug,
+        holds,
+        check,
+        float(residual),
+        corrected=corrected,
+        corrected_holds=bool(corrected_holds),
+        severity=severity,
+        why=why,
+        convention=convention,
+        note=note,
+    )

@@ -6,6 +6,7 @@ dimension of the admissible twists; "omnidirectional" in the paper's own sense o
 (every twist executable at once).  Motions are integrated with :func:`wmr.simulate`, which moves
 dual units by the corrected (15) and reports the slip (the residual of (21)).
 """
+
 from __future__ import annotations
 
 import numpy as np
@@ -28,8 +29,16 @@ from ..text import bound
 from ..verify import SEED, symbolic_equal
 from . import Derivation, claim, require
 
-__all__ = ["ROBOT", "robots", "equivalence", "mobility_dual", "corner", "curved_translation", "omnidirectional",
-           "discontinuous_heading"]
+__all__ = [
+    "ROBOT",
+    "robots",
+    "equivalence",
+    "mobility_dual",
+    "corner",
+    "curved_translation",
+    "omnidirectional",
+    "discontinuous_heading",
+]
 
 #: lengths of this chapter's robots (metres)
 ROBOT = dict(L=0.4, r=0.1, b=0.05)
@@ -78,9 +87,11 @@ def equivalence(B_dual, B_centred, avg, F_dual, F_centred, T, n=300, n_paper=100
     du = Robot([DualWheel((S.dx, S.dy), r=S.r, b=S.b)])
     cu = Robot([CentredWheel((S.dx, S.dy), r=S.r)])
     require(symbolic_equal(B_dual, du.J2()) and symbolic_equal(B_centred, cu.J2()), "the blocks are Robot.J2's")
-    require(symbolic_equal(F_dual, paper_robot("dual", L=S.L, r=S.r, b=S.b, exact=True).F())
-            and symbolic_equal(F_centred, paper_robot("centred", L=S.L, r=S.r, exact=True).F()),
-            "the functional matrices are the paper robots'")
+    require(
+        symbolic_equal(F_dual, paper_robot("dual", L=S.L, r=S.r, b=S.b, exact=True).F())
+        and symbolic_equal(F_centred, paper_robot("centred", L=S.L, r=S.r, exact=True).F()),
+        "the functional matrices are the paper robots'",
+    )
     require(symbolic_equal(avg, sp.Matrix([[sp.Rational(1, 2), sp.Rational(1, 2)]])), "avg is the mean of (18)")
     beta = du.beta_symbols[0]
     ok_block = symbolic_equal(B_dual, B_centred * avg)
@@ -106,12 +117,20 @@ def equivalence(B_dual, B_centred, avg, F_dual, F_centred, T, n=300, n_paper=100
         worst = max(worst, float(np.max(np.abs(Pc - Pd))))
         key = (int(round(np.trace(Pc))), int(round(np.trace(Pd))), int(mobility(rc, be)), int(mobility(rd, be)))
         counts[key] = counts.get(key, 0) + 1
-    rows = [{"twists (centred)": k[0], "twists (dual)": k[1], r"nullity $\mathbf F$ centred": k[2],
-             r"nullity $\mathbf F$ dual": k[3], "configurations": v} for k, v in sorted(counts.items())]
+    rows = [
+        {
+            "twists (centred)": k[0],
+            "twists (dual)": k[1],
+            r"nullity $\mathbf F$ centred": k[2],
+            r"nullity $\mathbf F$ dual": k[3],
+            "configurations": v,
+        }
+        for k, v in sorted(counts.items())
+    ]
     be = rng.uniform(-np.pi, np.pi, 3)
     spin = np.zeros((3, 9))
     for i in range(3):
-        spin[i, 3 + 2 * i: 5 + 2 * i] = [1.0, -1.0]                 # t = 0, theta_i1 = -theta_i2
+        spin[i, 3 + 2 * i : 5 + 2 * i] = [1.0, -1.0]  # t = 0, theta_i1 = -theta_i2
     res_spin = float(np.max(np.abs(spin @ dual.F(be).T)))
     steer_rate = float(dual.wheels[0].beta_rate(0.0, np.array([1.0, -1.0])))
     tw = np.array([0.5, 0.2, -0.1])
@@ -123,32 +142,57 @@ def equivalence(B_dual, B_centred, avg, F_dual, F_centred, T, n=300, n_paper=100
     for name, rates in (("corrected (15)", ok_rates), ("printed (15)", printed_rates)):
         tr = simulate(dual, rates, beta0, t_end=t_end, dt=dt)
         U = tr.world(instantaneous_centre(tw).point)
-        runs.append({"steering law": name, "wheel-rate difference": float(np.ptp(rates.reshape(3, 2), axis=1).max()),
-                     "largest "
-                     "slip": float(tr.slip.max()), r"largest $|\beta - \beta_0|$": float(np.abs(tr.beta - beta0).max()),
-                     "drift of U": float(np.ptp(U, axis=0).max())})
-    require(res_spin < TOL and abs(steer_rate + ROBOT["r"] / ROBOT["b"]) < TOL, "counter-rotating wheels steer a dual "
-                                                                                "unit in place")
+        runs.append(
+            {
+                "steering law": name,
+                "wheel-rate difference": float(np.ptp(rates.reshape(3, 2), axis=1).max()),
+                "largest slip": float(tr.slip.max()),
+                r"largest $|\beta - \beta_0|$": float(np.abs(tr.beta - beta0).max()),
+                "drift of U": float(np.ptp(U, axis=0).max()),
+            }
+        )
+    require(
+        res_spin < TOL and abs(steer_rate + ROBOT["r"] / ROBOT["b"]) < TOL,
+        "counter-rotating wheels steer a dual unit in place",
+    )
     require(runs[1]["largest slip"] > TOL, "the printed (15) makes the dual robot slip")
-    holds = (ok_block and ok_J1 and ok_axle and ok_F and worst < TOL
-             and all(r["twists (centred)"] == r["twists (dual)"] for r in rows)
-             and all(r[r"nullity $\mathbf F$ dual"] - r[r"nullity $\mathbf F$ centred"] == 3 for r in rows)
-             and runs[0]["largest slip"] < TOL and runs[0]["drift of U"] < TOL)
-    return Derivation(counts=rows, worst=worst, spin=res_spin, steer_rate=steer_rate,
-                      runs=runs, n=n, findings=[claim(
-        "dual-wheel-equivalence", holds,
-        r"$\mathbf J_2^{\text{dual}} = \mathbf J_2^{\text{centred}}[\tfrac12\ \ \tfrac12]$ for one unit and "
-        r"$\mathbf F^{\text{dual}} = \mathbf F^{\text{centred}}\mathbf T$ for the paper's robots (SymPy): the same "
-        r"admissible "
-        rf"platform twists at every $\boldsymbol\beta$, confirmed at {n} configurations of the paper's and random "
-        r"robots; the dual robot steered by the corrected (15) turns about a fixed U without slip (`wmr.simulate`)",
-        max(worst, runs[0]["largest slip"]),
-        convention=r"equivalent = the same admissible platform twists at every $\boldsymbol\beta$, with the average "
-                   r"rate (18); the wheel-rate difference is the unit's steering rate, by the corrected (15) "
-                   r"$\dot\phi_i = \dot\psi + \dot\beta_i$",
-        note=r"the nullity of $\mathbf F^{\text{dual}}$ is larger by $w = 3$: the extra rates steer the units; with "
-             r"the printed (15) the same robot slips (up to "
-             f"${runs[1]['largest slip']:.2g}$)")])
+    holds = (
+        ok_block
+        and ok_J1
+        and ok_axle
+        and ok_F
+        and worst < TOL
+        and all(r["twists (centred)"] == r["twists (dual)"] for r in rows)
+        and all(r[r"nullity $\mathbf F$ dual"] - r[r"nullity $\mathbf F$ centred"] == 3 for r in rows)
+        and runs[0]["largest slip"] < TOL
+        and runs[0]["drift of U"] < TOL
+    )
+    return Derivation(
+        counts=rows,
+        worst=worst,
+        spin=res_spin,
+        steer_rate=steer_rate,
+        runs=runs,
+        n=n,
+        findings=[
+            claim(
+                "dual-wheel-equivalence",
+                holds,
+                r"$\mathbf J_2^{\text{dual}} = \mathbf J_2^{\text{centred}}[\tfrac12\ \ \tfrac12]$ for one unit and "
+                r"$\mathbf F^{\text{dual}} = \mathbf F^{\text{centred}}\mathbf T$ for the paper's robots (SymPy): the same "
+                r"admissible "
+                rf"platform twists at every $\boldsymbol\beta$, confirmed at {n} configurations of the paper's and random "
+                r"robots; the dual robot steered by the corrected (15) turns about a fixed U without slip (`wmr.simulate`)",
+                max(worst, runs[0]["largest slip"]),
+                convention=r"equivalent = the same admissible platform twists at every $\boldsymbol\beta$, with the average "
+                r"rate (18); the wheel-rate difference is the unit's steering rate, by the corrected (15) "
+                r"$\dot\phi_i = \dot\psi + \dot\beta_i$",
+                note=r"the nullity of $\mathbf F^{\text{dual}}$ is larger by $w = 3$: the extra rates steer the units; with "
+                r"the printed (15) the same robot slips (up to "
+                f"${runs[1]['largest slip']:.2g}$)",
+            )
+        ],
+    )
 
 
 def mobility_dual(T, n=2000, seed=SEED):
@@ -172,25 +216,37 @@ def mobility_dual(T, n=2000, seed=SEED):
     rng = np.random.default_rng(seed)
     be_c = steering_angles(dual, rng.normal(size=(n, 3)))
     be_r = rng.uniform(-np.pi, np.pi, (n, 3))
+
     def count(f):
         return sorted(set(f(be_c).tolist())), sorted(set(f(be_r).tolist()))
-    rows = [("nullity of $\\mathbf F$ with the averaged rates (the paper)", count(lambda b: mobility(cen, b))),
-            ("nullity of $\\mathbf F^{\\text{dual}}$ with both wheel rates", count(lambda b: mobility(dual, b))),
-            ("dimension of the admissible platform twists", count(lambda b: 3 - (rank_F(dual, b) - 3)))]
+
+    rows = [
+        ("nullity of $\\mathbf F$ with the averaged rates (the paper)", count(lambda b: mobility(cen, b))),
+        ("nullity of $\\mathbf F^{\\text{dual}}$ with both wheel rates", count(lambda b: mobility(dual, b))),
+        ("dimension of the admissible platform twists", count(lambda b: 3 - (rank_F(dual, b) - 3))),
+    ]
     res = float(np.max(np.abs(dual.F(be_r) - cen.F(be_r) @ np.array(T, dtype=float))))
     holds = rows[0][1] == ([1], [0]) and rows[2][1] == ([1], [0]) and res < TOL
     require(rows[1][1] == ([4], [3]), "the dual robot's F has three more null directions")
-    return Derivation(rows=[{"counting": a, "coordinated steering": b[0], "arbitrary steering": b[1]} for a, b in rows],
-                      findings=[claim(
-        "mobility-dual", holds, rf"at the steering angles of {n} random twists the nullity of $\mathbf F$ with the "
-                                rf"averaged rates and the dimension of the admissible twists are 1; at {n} arbitrary "
-                                r"configurations 0; "
-                                r"$\mathbf F^{\text{dual}} = \mathbf F^{\text{centred}}\mathbf T$ numerically", res,
-        convention=r"mobility = nullity of $\mathbf F$ with the averaged rates (18) = dimension of the admissible "
-                   r"platform twists, at coordinated steering angles (0 otherwise)",
-        note=r"the nullity of the $6\times9$ matrix $\mathbf F^{\text{dual}}$ with both wheel rates is $1 + w = 4$; "
-             r"the extra 3 are the steering rates, which also let a jammed dual-wheel robot re-steer (nullity 3 at "
-             r"arbitrary $\boldsymbol\beta$)")])
+    return Derivation(
+        rows=[{"counting": a, "coordinated steering": b[0], "arbitrary steering": b[1]} for a, b in rows],
+        findings=[
+            claim(
+                "mobility-dual",
+                holds,
+                rf"at the steering angles of {n} random twists the nullity of $\mathbf F$ with the "
+                rf"averaged rates and the dimension of the admissible twists are 1; at {n} arbitrary "
+                r"configurations 0; "
+                r"$\mathbf F^{\text{dual}} = \mathbf F^{\text{centred}}\mathbf T$ numerically",
+                res,
+                convention=r"mobility = nullity of $\mathbf F$ with the averaged rates (18) = dimension of the admissible "
+                r"platform twists, at coordinated steering angles (0 otherwise)",
+                note=r"the nullity of the $6\times9$ matrix $\mathbf F^{\text{dual}}$ with both wheel rates is $1 + w = 4$; "
+                r"the extra 3 are the steering rates, which also let a jammed dual-wheel robot re-steer (nullity 3 at "
+                r"arbitrary $\boldsymbol\beta$)",
+            )
+        ],
+    )
 
 
 def corner(v=0.2, w_max=np.pi / 2, dt=0.01):
@@ -216,8 +272,14 @@ def corner(v=0.2, w_max=np.pi / 2, dt=0.01):
     bx, by = steering_angles(cen, tw_x), steering_angles(cen, tw_y)
     Ts = float(np.max(np.abs(mod_pi(by - bx)))) / w_max
     rx, ry = inverse(cen, bx, tw_x).value, inverse(cen, by, tw_y).value
-    run = simulate(cen, lambda t, s: rx if t < 1 else (np.zeros(3) if t < 1 + Ts else ry), bx, t_end=2 + Ts, dt=dt,
-                   steer=lambda t, s: (by - bx) / Ts if 1 <= t < 1 + Ts else np.zeros(3))
+    run = simulate(
+        cen,
+        lambda t, s: rx if t < 1 else (np.zeros(3) if t < 1 + Ts else ry),
+        bx,
+        t_end=2 + Ts,
+        dt=dt,
+        steer=lambda t, s: (by - bx) / Ts if 1 <= t < 1 + Ts else np.zeros(3),
+    )
     inside = (run.t > 1 + 1e-9) & (run.t < 1 + Ts - 1e-9)
     at_once = inverse(cen, bx, tw_y)
 
@@ -227,19 +289,32 @@ def corner(v=0.2, w_max=np.pi / 2, dt=0.01):
         if t < 1 + Ts:
             return inverse(dual, s[1], np.zeros(3), beta_dot=(by - bx) / Ts).value
         return inverse(dual, s[1], tw_y).value
+
     run_d = simulate(dual, dual_rates, bx, t_end=2 + Ts, dt=dt)
     inside_d = (run_d.t > 1 + 1e-9) & (run_d.t < 1 + Ts - 1e-9)
+
     def off_rates(t, s):
         return inverse(off, s[1], tw_x if t < 1 else tw_y).value
+
     run_o = simulate(off, off_rates, np.zeros(3), t_end=2.0, dt=dt)
     top = float(np.abs([off_rates(t, (p, b)) for t, p, b in zip(run_o.t, run_o.pose, run_o.beta, strict=True)]).max())
-    return {"Ts": Ts, "v": v,
-            "centred": {"moved": float(np.ptp(run.pose[inside], axis=0).max()), "slip": float(run.slip.max()),
-                        "final": run.pose[-1], "at_once": float(np.abs(at_once.residual).max()),
-                        "admissible_at_once": bool(at_once.admissible)},
-            "dual": {"slip": float(run_d.slip.max()), "moved": float(np.ptp(run_d.pose[inside_d], axis=0).max()),
-                     "angle_error": float(np.abs(mod_pi(run_d.beta[-1] - by)).max())},
-            "offset": {"slip": float(run_o.slip.max()), "final": run_o.pose[-1], "top_rate": top}}
+    return {
+        "Ts": Ts,
+        "v": v,
+        "centred": {
+            "moved": float(np.ptp(run.pose[inside], axis=0).max()),
+            "slip": float(run.slip.max()),
+            "final": run.pose[-1],
+            "at_once": float(np.abs(at_once.residual).max()),
+            "admissible_at_once": bool(at_once.admissible),
+        },
+        "dual": {
+            "slip": float(run_d.slip.max()),
+            "moved": float(np.ptp(run_d.pose[inside_d], axis=0).max()),
+            "angle_error": float(np.abs(mod_pi(run_d.beta[-1] - by)).max()),
+        },
+        "offset": {"slip": float(run_o.slip.max()), "final": run_o.pose[-1], "top_rate": top},
+    }
 
 
 def curved_translation(v=0.2, omega=0.5, t_end=np.pi, dt=0.01):
@@ -263,18 +338,26 @@ def curved_translation(v=0.2, omega=0.5, t_end=np.pi, dt=0.01):
         ``parallel`` (largest spread of the steering angles).
     """
     cen, _, _ = robots()
+
     def twist(t):
         return np.array([0.0, v * np.cos(omega * t), v * np.sin(omega * t)])
+
     beta0 = steering_angles(cen, twist(0.0))
-    run = simulate(cen, lambda t, s: inverse(cen, s[1], twist(t)).value, beta0, t_end=t_end, dt=dt,
-                   steer=np.full(3, omega))
+    run = simulate(
+        cen, lambda t, s: inverse(cen, s[1], twist(t)).value, beta0, t_end=t_end, dt=dt, steer=np.full(3, omega)
+    )
     vel = np.diff(run.pose[:, 1:], axis=0)
     heading = np.unwrap(np.arctan2(vel[:, 1], vel[:, 0]))
     miss = float(np.max(np.abs(run.twist - np.array([twist(t) for t in run.t]))))
-    return {"slip": float(run.slip.max()), "miss": miss, "psi": float(np.abs(run.pose[:, 0]).max()),
-            "turned": float(heading[-1] - heading[0]), "parallel": float(np.ptp(mod_pi(run.beta - run.beta[:, :1]),
-                                                                                axis=0).max()),
-            "omega": omega, "t_end": t_end}
+    return {
+        "slip": float(run.slip.max()),
+        "miss": miss,
+        "psi": float(np.abs(run.pose[:, 0]).max()),
+        "turned": float(heading[-1] - heading[0]),
+        "parallel": float(np.ptp(mod_pi(run.beta - run.beta[:, :1]), axis=0).max()),
+        "omega": omega,
+        "t_end": t_end,
+    }
 
 
 def omnidirectional(n=2000, seed=SEED):
@@ -301,30 +384,52 @@ def omnidirectional(n=2000, seed=SEED):
     c = corner()
     curve = curved_translation()
     holds = dims == [3]
-    proven = (dims == [0, 1] and dims_off == [3] and c["centred"]["slip"] < TOL and c["centred"]["moved"] == 0.0
-              and not c["centred"]["admissible_at_once"] and abs(c["centred"]["at_once"] - c["v"]) < TOL
-              and c["dual"]["slip"] < TOL and c["dual"]["moved"] < TOL and curve["psi"] < TOL
-              and curve["slip"] < 1e-6 and curve["miss"] < 1e-9 and abs(curve["turned"] - curve["omega"]
-                                                                        * curve["t_end"]) < 0.05)
-    return Derivation(dims=dims, dims_offset=dims_off, corner=c, curve=curve, n=2 * n, findings=[claim(
-        "omnidirectional", holds,
-        rf"the admissible twists of three centred wheels form a space of dimension at most 1 at all {2 * n} "
-        r"configurations (3 for offset wheels); a 90-degree corner followed exactly needs the wheels re-steered with "
-        r"the platform at rest (commanding the new twist at once slips at the full speed), while a curvilinear "
-        rf"translation whose direction turns by ${np.degrees(curve['turned']):.0f}^\circ$ is followed without "
-        rf"stopping: the twist executed differs from the one commanded by ${bound(curve['miss'], latex=True)}$, slip "
-        rf"${bound(curve['slip'], latex=True)}$ (`wmr.simulate`)", max(curve["slip"], curve["miss"]),
-        refuted=f"the admissible twists have dimension {' or '.join(map(str, dims))} (never 3): a twist in another "
+    proven = (
+        dims == [0, 1]
+        and dims_off == [3]
+        and c["centred"]["slip"] < TOL
+        and c["centred"]["moved"] == 0.0
+        and not c["centred"]["admissible_at_once"]
+        and abs(c["centred"]["at_once"] - c["v"]) < TOL
+        and c["dual"]["slip"] < TOL
+        and c["dual"]["moved"] < TOL
+        and curve["psi"] < TOL
+        and curve["slip"] < 1e-6
+        and curve["miss"] < 1e-9
+        and abs(curve["turned"] - curve["omega"] * curve["t_end"]) < 0.05
+    )
+    return Derivation(
+        dims=dims,
+        dims_offset=dims_off,
+        corner=c,
+        curve=curve,
+        n=2 * n,
+        findings=[
+            claim(
+                "omnidirectional",
+                holds,
+                rf"the admissible twists of three centred wheels form a space of dimension at most 1 at all {2 * n} "
+                r"configurations (3 for offset wheels); a 90-degree corner followed exactly needs the wheels re-steered with "
+                r"the platform at rest (commanding the new twist at once slips at the full speed), while a curvilinear "
+                rf"translation whose direction turns by ${np.degrees(curve['turned']):.0f}^\circ$ is followed without "
+                rf"stopping: the twist executed differs from the one commanded by ${bound(curve['miss'], latex=True)}$, slip "
+                rf"${bound(curve['slip'], latex=True)}$ (`wmr.simulate`)",
+                max(curve["slip"], curve["miss"]),
+                refuted=f"the admissible twists have dimension {' or '.join(map(str, dims))} (never 3): a twist in another "
                 "direction than the current one cannot be executed without re-steering",
-        corrected=r"A WMR with three centred (or dual) wheels has mobility $\nu = 1$ ($0$ at uncoordinated steering "
-                  r"angles): it is not omnidirectional. It can travel in any direction, and change direction while "
-                  r"moving when the wheels are re-steered together (they stay parallel, as in the curvilinear "
-                  r"translation of Fig. 8b); it must stop only to follow a sharp corner exactly, re-steering with the "
-                  r"platform at rest (type $(1, 2)$ in the classification of Campion et al.)",
-        corrected_holds=proven, severity="wrong",
-        why="omnidirectional means every twist executable at once, the paper's own use in Section 4.2; decoupled "
-            "steering only lets the wheels turn, one direction of motion at a time",
-        convention="omnidirectional = every platform twist executable at once from any configuration (Section 4.2)")])
+                corrected=r"A WMR with three centred (or dual) wheels has mobility $\nu = 1$ ($0$ at uncoordinated steering "
+                r"angles): it is not omnidirectional. It can travel in any direction, and change direction while "
+                r"moving when the wheels are re-steered together (they stay parallel, as in the curvilinear "
+                r"translation of Fig. 8b); it must stop only to follow a sharp corner exactly, re-steering with the "
+                r"platform at rest (type $(1, 2)$ in the classification of Campion et al.)",
+                corrected_holds=proven,
+                severity="wrong",
+                why="omnidirectional means every twist executable at once, the paper's own use in Section 4.2; decoupled "
+                "steering only lets the wheels turn, one direction of motion at a time",
+                convention="omnidirectional = every platform twist executable at once from any configuration (Section 4.2)",
+            )
+        ],
+    )
 
 
 def discontinuous_heading(n=2000, seed=SEED):
@@ -356,27 +461,52 @@ def discontinuous_heading(n=2000, seed=SEED):
     bound_ = np.linalg.svd(off.J1(), compute_uv=False)[0] / np.linalg.svd(off.J2(be_off), compute_uv=False)[..., -1]
     c = corner()
     rows: list[dict] = [
-            {"case": r"centred: $\mathbf t^-$ to a random $\mathbf t^+$",
-             "executable": float(jump.admissible.mean()),
-             "largest residual": float(np.abs(jump.residual).max())},
-            {"case": r"centred: $\mathbf t^-$ to $\lambda\mathbf t^-$ (incl. "
-                     r"reversal)", "executable": float(scaled.admissible.mean()),
-             "largest residual": float(np.abs(scaled.residual).max())},
-            {"case": r"offset ($d = r$): any $\boldsymbol\beta$, random "
-                     r"$\mathbf t^+$", "executable": float(sol_off.admissible.mean()),
-             "largest residual": float(np.abs(sol_off.residual).max())}]
+        {
+            "case": r"centred: $\mathbf t^-$ to a random $\mathbf t^+$",
+            "executable": float(jump.admissible.mean()),
+            "largest residual": float(np.abs(jump.residual).max()),
+        },
+        {
+            "case": r"centred: $\mathbf t^-$ to $\lambda\mathbf t^-$ (incl. "
+            r"reversal)",
+            "executable": float(scaled.admissible.mean()),
+            "largest residual": float(np.abs(scaled.residual).max()),
+        },
+        {
+            "case": r"offset ($d = r$): any $\boldsymbol\beta$, random "
+            r"$\mathbf t^+$",
+            "executable": float(sol_off.admissible.mean()),
+            "largest residual": float(np.abs(sol_off.residual).max()),
+        },
+    ]
     res = rows[2]["largest residual"]
-    holds = (not jump.admissible.any() and bool(scaled.admissible.all()) and bool(sol_off.admissible.all())
-             and res < TOL
-             and bool(np.all(gain <= bound_ * (1 + 1e-12))) and c["offset"]["slip"] < TOL
-             and bool(np.allclose(c["offset"]["final"], [0.0, c["v"], c["v"]], atol=0.01 * c["v"])))
-    return Derivation(rows=rows, gain=float(gain.max()), bound=float(bound_.max()), corner=c, findings=[claim(
-        "discontinuous-heading", holds,
-        rf"of {n} random jumps of the twist, none is executable by the centred robot without re-steering, all jumps "
-        r"$\mathbf t \to \lambda\mathbf t$ are; the offset robot executes all of them at once, with joint rates "
-        r"bounded by "
-        r"$\sigma_{\max}(\mathbf J_1)/\sigma_{\min}(\mathbf J_2)\,\|\mathbf t\|$, and turns a 90-degree corner without "
-        r"stopping and without slip (`wmr.simulate`)", res,
-        convention=r"heading = the direction of the platform twist; a jump $\mathbf t \to \lambda\mathbf t$ (same "
-                   r"instantaneous centre, a reversal for $\lambda < 0$) needs no delay; offset wheels ($d > 0$) "
-                   r"realise any twist at once")])
+    holds = (
+        not jump.admissible.any()
+        and bool(scaled.admissible.all())
+        and bool(sol_off.admissible.all())
+        and res < TOL
+        and bool(np.all(gain <= bound_ * (1 + 1e-12)))
+        and c["offset"]["slip"] < TOL
+        and bool(np.allclose(c["offset"]["final"], [0.0, c["v"], c["v"]], atol=0.01 * c["v"]))
+    )
+    return Derivation(
+        rows=rows,
+        gain=float(gain.max()),
+        bound=float(bound_.max()),
+        corner=c,
+        findings=[
+            claim(
+                "discontinuous-heading",
+                holds,
+                rf"of {n} random jumps of the twist, none is executable by the centred robot without re-steering, all jumps "
+                r"$\mathbf t \to \lambda\mathbf t$ are; the offset robot executes all of them at once, with joint rates "
+                r"bounded by "
+                r"$\sigma_{\max}(\mathbf J_1)/\sigma_{\min}(\mathbf J_2)\,\|\mathbf t\|$, and turns a 90-degree corner without "
+                r"stopping and without slip (`wmr.simulate`)",
+                res,
+                convention=r"heading = the direction of the platform twist; a jump $\mathbf t \to \lambda\mathbf t$ (same "
+                r"instantaneous centre, a reversal for $\lambda < 0$) needs no delay; offset wheels ($d > 0$) "
+                r"realise any twist at once",
+            )
+        ],
+    )

@@ -39,6 +39,7 @@ The checks live one module per chapter (:mod:`~edition.exercises.ch1_wheels` ...
 :mod:`~edition.exercises.ch6_motion`), the verdict type in :mod:`~edition.exercises.feedback`
 and the "your own robot" summary in :mod:`~edition.exercises.own_robot`.
 """
+
 from .ch1_wheels import dual_counterexample, dual_spin_in_place, offset_other_side
 from .ch2_mobility import BETA4, D4, PHI_DOT4, drift_of_c_general, locked_steering
 from .ch3_isotropy import dual_upsilon, isotropic_placement, offset_for_kappa
@@ -48,7 +49,26 @@ from .ch6_motion import curved_translation, reversal
 from .feedback import Feedback
 from .own_robot import describe_robot
 
-__all__ = ["Feedback", "offset_other_side", "dual_counterexample", "dual_spin_in_place", "locked_steering",
-           "drift_of_c_general", "D4", "BETA4", "PHI_DOT4", "isotropic_placement", "dual_upsilon", "offset_for_kappa",
-           "unlisted_singularity", "mobile_and_singular", "robot_4_2", "translation_angles", "rotation_angles",
-           "printed_65_region", "curved_translation", "reversal", "describe_robot"]
+__all__ = [
+    "Feedback",
+    "offset_other_side",
+    "dual_counterexample",
+    "dual_spin_in_place",
+    "locked_steering",
+    "drift_of_c_general",
+    "D4",
+    "BETA4",
+    "PHI_DOT4",
+    "isotropic_placement",
+    "dual_upsilon",
+    "offset_for_kappa",
+    "unlisted_singularity",
+    "mobile_and_singular",
+    "robot_4_2",
+    "translation_angles",
+    "rotation_angles",
+    "printed_65_region",
+    "curved_translation",
+    "reversal",
+    "describe_robot",
+]

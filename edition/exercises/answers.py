@@ -14,6 +14,7 @@ array([0.5, 0.5, 0.5])
 ...     print(e)
 Expected three steering rates (rad/s); got a list of 2 numbers.
 """
+
 from __future__ import annotations
 
 import numbers
@@ -84,7 +85,7 @@ def _to_float(x):
     """One element of an answer as a float; TypeError for text, truth values, symbols and complex numbers."""
     if isinstance(x, (str, bytes, bool, np.bool_, complex, np.complexfloating)):
         raise TypeError(x)
-    return float(x)                                   # SymPy numbers convert; an expression in symbols raises
+    return float(x)  # SymPy numbers convert; an expression in symbols raises
 
 
 def _float_array(answer, what):

@@ -11,6 +11,7 @@ number  check                    the exercise
 The robots are built here once (the chapter shows them); every expected value is computed with
 ``wmr`` (:func:`wmr.campion_class`, :func:`wmr.inverse`, :func:`wmr.steering_angles`).
 """
+
 from __future__ import annotations
 
 import numpy as np
@@ -23,17 +24,30 @@ from .feedback import right, wrong
 from .framework import exercise
 from .tolerance import angle_gap, decimals, within
 
-__all__ = ["AGV", "ONE_HANDED", "SWERVE", "motor_rates", "check_10_1", "check_10_2", "check_10_3",
-           "TOL_10_2", "TOL_10_3"]
+__all__ = [
+    "AGV",
+    "ONE_HANDED",
+    "SWERVE",
+    "motor_rates",
+    "check_10_1",
+    "check_10_2",
+    "check_10_3",
+    "TOL_10_2",
+    "TOL_10_3",
+]
 
 #: 10.1: two steered drive wheels on the centre line, 0.6 m ahead of and behind C, and four castors
-AGV = wmr.Robot([wmr.CentredWheel((0.6, 0.0), r=0.1), wmr.CentredWheel((-0.6, 0.0), r=0.1)]
-                + [wmr.OffsetWheel((x, y), r=0.05, d=0.04) for x in (0.5, -0.5) for y in (0.35, -0.35)],
-                name="AGV with two steered drive wheels and four castors")
+AGV = wmr.Robot(
+    [wmr.CentredWheel((0.6, 0.0), r=0.1), wmr.CentredWheel((-0.6, 0.0), r=0.1)]
+    + [wmr.OffsetWheel((x, y), r=0.05, d=0.04) for x in (0.5, -0.5) for y in (0.35, -0.35)],
+    name="AGV with two steered drive wheels and four castors",
+)
 
 #: 10.2: four mecanum wheels on a 0.5 m x 0.4 m rectangle, every roller at +45 degrees (all of one hand)
-ONE_HANDED = wmr.Robot([wmr.SwedishWheel(tuple(p), r=0.05, angle=np.pi / 2, roller=np.pi / 4)
-                        for p in layouts.rectangle(0.5, 0.4)], name="mecanum, all rollers of one hand")
+ONE_HANDED = wmr.Robot(
+    [wmr.SwedishWheel(tuple(p), r=0.05, angle=np.pi / 2, roller=np.pi / 4) for p in layouts.rectangle(0.5, 0.4)],
+    name="mecanum, all rollers of one hand",
+)
 
 #: 10.3: a four-module swerve drive on a 0.6 m x 0.5 m rectangle
 SWERVE = layouts.swerve(layouts.rectangle(0.6, 0.5), 0.05)
@@ -78,11 +92,15 @@ def check_10_1(classes):
     if (ds, dm) == (c.delta_m, c.delta_s):
         return wrong(r"These are the two numbers in the other order: $\delta_m$ comes first.")
     if dm == c.delta_m:
-        return wrong(r"$\delta_m$ is right; $\delta_s$ counts the steering angles you can choose *independently* "
-                     r"once the robot moves.")
+        return wrong(
+            r"$\delta_m$ is right; $\delta_s$ counts the steering angles you can choose *independently* "
+            r"once the robot moves."
+        )
     if ds == c.delta_s:
-        return wrong(r"$\delta_s$ is right; for $\delta_m$ count the rows of $\mathbf C_1^*$ at a configuration where "
-                     "the robot moves. Castors add no row.")
+        return wrong(
+            r"$\delta_s$ is right; for $\delta_m$ count the rows of $\mathbf C_1^*$ at a configuration where "
+            "the robot moves. Castors add no row."
+        )
     return wrong(r"Neither degree is right: write $\mathbf C_1^*$ row by row (castors add none) and take its rank.")
 
 
@@ -92,17 +110,21 @@ def check_10_2(twist):
     t = answers.vector(twist, 3, r"a twist $(\dot\psi, \dot x, \dot y)$ in rad/s and m/s")
     beta = ONE_HANDED.effective_beta(np.zeros(ONE_HANDED.w))
     L = float(np.sqrt(np.mean(np.sum(ONE_HANDED.mount_points.astype(float) ** 2, axis=1))))
-    speed = float(np.hypot(L * t[0], np.hypot(t[1], t[2])))         # metres per second at the wheels
+    speed = float(np.hypot(L * t[0], np.hypot(t[1], t[2])))  # metres per second at the wheels
     if speed == 0:
         return wrong("A robot at rest turns no motor: give a motion.")
     m = motor_rates(ONE_HANDED, beta, t)
-    scale = speed / 0.05                                            # the wheel rates of that speed, rad/s
-    if TOL_10_2.accepts(m / scale, np.zeros_like(m)):          # an absolute bound on dimensionless rates
-        return right("No drive motor turns, yet the platform moves: the rollers alone carry this motion, so the "
-                     "motors can neither produce it nor stop it.")
+    scale = speed / 0.05  # the wheel rates of that speed, rad/s
+    if TOL_10_2.accepts(m / scale, np.zeros_like(m)):  # an absolute bound on dimensionless rates
+        return right(
+            "No drive motor turns, yet the platform moves: the rollers alone carry this motion, so the "
+            "motors can neither produce it nor stop it."
+        )
     turning = max(1, int(np.sum(np.abs(m) > TOL_10_2.abs * scale)))
-    return wrong(f"For this twist {turning} of the four drive motors must turn. Look for a motion that the rollers "
-                 "alone can carry, with every wheel's spin zero.")
+    return wrong(
+        f"For this twist {turning} of the four drive motors must turn. Look for a motion that the rollers "
+        "alone can carry, with every wheel's spin zero."
+    )
 
 
 @exercise("10.3", answer="four steering angles in degrees", tolerance=TOL_10_3, units={"beta": "deg"})

@@ -10,6 +10,7 @@ number  check                        the exercise
 The expected values come from the package (``wmr.Robot.J1``, ``J2``; the arm lines of the units),
 not from the chapter's derivation, which covers three wheels.
 """
+
 from __future__ import annotations
 
 import numpy as np
@@ -27,8 +28,17 @@ from .framework import exercise
 from .symbolic import compare, equivalent
 from .tolerance import within
 
-__all__ = ["locked_steering", "drift_of_c_general", "PAPER_2_1", "TOL_2_1", "D4", "BETA4", "PHI_DOT4",
-           "SYMBOLS_2_2", "locked_c_dot"]
+__all__ = [
+    "locked_steering",
+    "drift_of_c_general",
+    "PAPER_2_1",
+    "TOL_2_1",
+    "D4",
+    "BETA4",
+    "PHI_DOT4",
+    "SYMBOLS_2_2",
+    "locked_c_dot",
+]
 
 #: 2.1: the paper's offset-wheel robot of the chapter
 PAPER_2_1 = Dimensions(L=0.3, r=0.1, d=0.05)
@@ -45,7 +55,7 @@ _WHAT_2_2 = r"the 2-vector $\dot{\mathbf c}$ (a SymPy `Matrix`)"
 def _arms(beta, robot):
     """Unit directions j_i of the arm lines (through P_i) and the point closest to all of them (least squares)."""
     j = np.stack([-np.sin(beta), np.cos(beta)], -1)
-    n = np.stack([np.cos(beta), np.sin(beta)], -1)                  # normals i_i
+    n = np.stack([np.cos(beta), np.sin(beta)], -1)  # normals i_i
     P = robot.mount_points.astype(float)
     u, *_ = np.linalg.lstsq(n, np.einsum("ij,ij->i", n, P), rcond=None)
     return j, n, P, u
@@ -68,19 +78,25 @@ def locked_steering(beta):
     b = answers.angles(beta, 3, "rad")
     robot = paper_robot("offset", **PAPER_2_1)
     j, n, P, u = _arms(b, robot)
-    cross = np.abs(j[:, None, 0] * j[None, :, 1] - j[:, None, 1] * j[None, :, 0])   # |sin| between arm pairs
+    cross = np.abs(j[:, None, 0] * j[None, :, 1] - j[:, None, 1] * j[None, :, 0])  # |sin| between arm pairs
     if cross.max() <= TOL_2_1.abs:
-        return wrong("All three arms are parallel: then the robot can steer with its drives locked, but it only "
-                     "translates. The exercise asks for arms that are not all parallel.")
-    dist = np.abs(np.einsum("ij,ij->i", n, P - u))                  # distance of each arm line from u
+        return wrong(
+            "All three arms are parallel: then the robot can steer with its drives locked, but it only "
+            "translates. The exercise asks for arms that are not all parallel."
+        )
+    dist = np.abs(np.einsum("ij,ij->i", n, P - u))  # distance of each arm line from u
     reach = np.linalg.norm(P - u, axis=1)
     tilt = np.arcsin(np.minimum(1.0, dist / np.maximum(reach, 1e-300)))
     if float(tilt.max()) <= TOL_2_1.abs:
         where = f"$({number(u[0], 3)}, {number(u[1], 3)})$ m"
-        return right(rf"The three arm lines meet at {where} (body frame): the platform turns about that point while "
-                     r"the units steer with the drives locked, for an instant only, as the chapter shows.")
-    return wrong(r"The arm lines (through $P_i$ along $\mathbf j_i$) do not meet in one point and are not all "
-                 r"parallel: $\det\mathbf M \neq 0$ and the steering jams.")
+        return right(
+            rf"The three arm lines meet at {where} (body frame): the platform turns about that point while "
+            r"the units steer with the drives locked, for an instant only, as the chapter shows."
+        )
+    return wrong(
+        r"The arm lines (through $P_i$ along $\mathbf j_i$) do not meet in one point and are not all "
+        r"parallel: $\det\mathbf M \neq 0$ and the steering jams."
+    )
 
 
 def locked_c_dot(points, betas, phi_dots):
@@ -103,7 +119,7 @@ def locked_c_dot(points, betas, phi_dots):
     w = len(points)
     rates = sp.Matrix([x for k in range(w) for x in (phi_dots[k], 0)])
     residual = bot.J1() * sp.Matrix(bot.twist_symbols) - bot.J2(list(betas)) * rates
-    rows = sum((residual[2 * k:2 * k + 2, :] for k in range(w)), sp.zeros(2, 1))
+    rows = sum((residual[2 * k : 2 * k + 2, :] for k in range(w)), sp.zeros(2, 1))
     sol = sp.solve(list(rows), [S.x_dot, S.y_dot], dict=True)[0]
     return sp.Matrix([sol[S.x_dot], sol[S.y_dot]])
 
@@ -124,18 +140,26 @@ def drift_of_c_general(answer):
     truth = locked_c_dot(D4, BETA4, PHI_DOT4)
     M, same = compare(answer, truth, SYMBOLS_2_2, _WHAT_2_2)
     if same:
-        return right(r"$\dot{\mathbf c} = \frac d4\sum_i\mathbf R_{bwi}[-\dot\phi_i\ \ 0]^{\mathrm T} - "
-                     r"\frac{\dot\psi}{4}\mathbf E\sum_i\mathbf d_i$: with C at the centroid of the four mount points "
-                     r"the last term drops, as in (28).")
+        return right(
+            r"$\dot{\mathbf c} = \frac d4\sum_i\mathbf R_{bwi}[-\dot\phi_i\ \ 0]^{\mathrm T} - "
+            r"\frac{\dot\psi}{4}\mathbf E\sum_i\mathbf d_i$: with C at the centroid of the four mount points "
+            r"the last term drops, as in (28)."
+        )
     if same is None:
-        return undecided("This check cannot tell whether your expression equals the drift (it could not be "
-                         "simplified or evaluated); write it with `sp.sin`, `sp.cos` and the exercise's symbols.")
+        return undecided(
+            "This check cannot tell whether your expression equals the drift (it could not be "
+            "simplified or evaluated); write it with `sp.sin`, `sp.cos` and the exercise's symbols."
+        )
     if equivalent(M, truth * sp.Rational(4, 3)):
         return wrong("You divided by 3, as for three wheels: here the sum has four block rows.")
     if equivalent(M, truth.subs(S.psi_dot, 0)):
-        return wrong(r"The steering part is right, but the platform rows $\dot\psi\,\mathbf E\mathbf d_i$ are missing: "
-                     r"(28) drops them only when C is the centroid of the mount points.")
+        return wrong(
+            r"The steering part is right, but the platform rows $\dot\psi\,\mathbf E\mathbf d_i$ are missing: "
+            r"(28) drops them only when C is the centroid of the mount points."
+        )
     if equivalent(M.subs(S.psi_dot, 0), truth.subs(S.psi_dot, 0)):
         return wrong(r"The steering part is right; the platform part (the terms in $\dot\psi$) is not.")
-    return wrong(r"Sum the four block rows of $\mathbf J_1\mathbf t = \mathbf J_2\dot{\boldsymbol\theta}$ with "
-                 r"$\dot\theta_i = 0$ and solve for $\dot x$ and $\dot y$.")
+    return wrong(
+        r"Sum the four block rows of $\mathbf J_1\mathbf t = \mathbf J_2\dot{\boldsymbol\theta}$ with "
+        r"$\dot\theta_i = 0$ and solve for $\dot x$ and $\dot y$."
+    )

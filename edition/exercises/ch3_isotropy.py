@@ -10,6 +10,7 @@ number  check                         the exercise
 
 Expected values are computed with ``wmr`` (``Robot.J1``, ``DualWheel.block``, ``wmr.condition_number``).
 """
+
 from __future__ import annotations
 
 import numpy as np
@@ -28,8 +29,16 @@ from .framework import exercise
 from .symbolic import compare, equivalent
 from .tolerance import sig_figs
 
-__all__ = ["isotropic_placement", "dual_upsilon", "offset_for_kappa", "FIXED_3_1", "TOL_3_1", "TOL_3_3",
-           "SYMBOLS_3_2", "R_3_3"]
+__all__ = [
+    "isotropic_placement",
+    "dual_upsilon",
+    "offset_for_kappa",
+    "FIXED_3_1",
+    "TOL_3_1",
+    "TOL_3_3",
+    "SYMBOLS_3_2",
+    "R_3_3",
+]
 
 #: 3.1: wheels 1 and 2 (metres)
 FIXED_3_1 = ((-0.4, 0.0), (0.1, 0.5))
@@ -47,8 +56,10 @@ _WHAT_3_2 = r"the $2\times2$ SymPy `Matrix` $\Upsilon_i$"
 def _placement(answer):
     if not isinstance(answer, (tuple, list)) or len(answer) != 2:
         raise answers.AnswerError(f"Expected {_WHAT_3_1}; got {answers.describe(answer)}.")
-    return (answers.array(answer[0], (3, 2), "the three mount points, an array of shape (3, 2) in metres"),
-            answers.number(answer[1], "the characteristic length $L$ in metres"))
+    return (
+        answers.array(answer[0], (3, 2), "the three mount points, an array of shape (3, 2) in metres"),
+        answers.number(answer[1], "the characteristic length $L$ in metres"),
+    )
 
 
 @exercise("3.1", answer=_WHAT_3_1, tolerance=TOL_3_1)
@@ -66,27 +77,35 @@ def isotropic_placement(placement):
     """
     pts, L = _placement(placement)
     fixed = np.array(FIXED_3_1)
-    size = float(np.sqrt(np.mean(np.sum(fixed**2, axis=1))))          # the scale of the robot (m)
-    if np.abs(pts[:2] - fixed).max() > TOL_3_1.rel * size:        # 4 significant figures of the robot's size
-        return wrong("Wheels 1 and 2 must stay at $(-0.4, 0)$ and $(0.1, 0.5)$, in that order; only wheel 3 and "
-                     "$L$ are yours to choose.")
+    size = float(np.sqrt(np.mean(np.sum(fixed**2, axis=1))))  # the scale of the robot (m)
+    if np.abs(pts[:2] - fixed).max() > TOL_3_1.rel * size:  # 4 significant figures of the robot's size
+        return wrong(
+            "Wheels 1 and 2 must stay at $(-0.4, 0)$ and $(0.1, 0.5)$, in that order; only wheel 3 and "
+            "$L$ are yours to choose."
+        )
     if L <= 0:
         return wrong("$L$ is a length: it must be positive.")
     rms = float(np.sqrt(np.mean(np.sum(pts**2, axis=1))))
     centroid = float(np.linalg.norm(pts.sum(axis=0)))
     if centroid > 3 * TOL_3_1.rel * size:
-        return wrong(r"With this wheel 3, C is not the centroid of the mount points "
-                     r"($\sum_i\mathbf d_i \neq \mathbf 0$): the off-diagonal blocks of "
-                     r"$\mathbf J_{L1}^{\mathrm T}\mathbf J_{L1}$ (35) cannot vanish for any $L$.")
+        return wrong(
+            r"With this wheel 3, C is not the centroid of the mount points "
+            r"($\sum_i\mathbf d_i \neq \mathbf 0$): the off-diagonal blocks of "
+            r"$\mathbf J_{L1}^{\mathrm T}\mathbf J_{L1}$ (35) cannot vanish for any $L$."
+        )
     if not TOL_3_1.accepts(L, rms):
-        return wrong(r"Wheel 3 is right, but not $L$: (36) fixes $L^2$ as the mean squared distance of the mount "
-                     r"points from C.")
+        return wrong(
+            r"Wheel 3 is right, but not $L$: (36) fixes $L^2$ as the mean squared distance of the mount "
+            r"points from C."
+        )
     kappa = float(condition_number(Robot([OffsetWheel(tuple(p), r=0.1, d=0.05) for p in pts]).J1(L)))
     sides = np.linalg.norm(pts - np.roll(pts, -1, axis=0), axis=1)
     shape = "equilateral" if np.ptp(sides) <= TOL_3_1.rel * sides.max() else "not equilateral"
-    return right(f"Wheel 3 at $({number(pts[2, 0], 4)}, {number(pts[2, 1], 4)})$ puts C at the centroid, and "
-                 f"$L = {number(L, 4)}$ m (the root-mean-square distance) makes $\\mathbf J_{{L1}}$ isotropic "
-                 f"($\\kappa = {number(kappa, 4)}$). The triangle is {shape}: equal distances are not needed.")
+    return right(
+        f"Wheel 3 at $({number(pts[2, 0], 4)}, {number(pts[2, 1], 4)})$ puts C at the centroid, and "
+        f"$L = {number(L, 4)}$ m (the root-mean-square distance) makes $\\mathbf J_{{L1}}$ isotropic "
+        f"($\\kappa = {number(kappa, 4)}$). The triangle is {shape}: equal distances are not needed."
+    )
 
 
 @exercise("3.2", answer=_WHAT_3_2)
@@ -107,25 +126,37 @@ def dual_upsilon(answer):
     truth = (B * B.T).applyfunc(sp.trigsimp)
     M, same = compare(answer, truth, SYMBOLS_3_2, _WHAT_3_2)
     if same:
-        return right(r"$\Upsilon_i = \tfrac{r^2}{2}\mathbf j_i\mathbf j_i^{\mathrm T}$ has rank 1 at every "
-                     r"$\beta_i$: it is never a multiple of $\mathbf 1$, so $\mathbf J_2$ of dual wheels is "
-                     r"singular ($\kappa = \infty$), whatever $r$ and $b$.")
+        return right(
+            r"$\Upsilon_i = \tfrac{r^2}{2}\mathbf j_i\mathbf j_i^{\mathrm T}$ has rank 1 at every "
+            r"$\beta_i$: it is never a multiple of $\mathbf 1$, so $\mathbf J_2$ of dual wheels is "
+            r"singular ($\kappa = \infty$), whatever $r$ and $b$."
+        )
     if same is None:
-        return undecided("This check cannot tell whether your matrix equals $\\Upsilon_i$ (it could not be "
-                         "simplified or evaluated); write it with `sp.sin`, `sp.cos` and the symbols `r`, `b`, "
-                         "`beta_i`.")
+        return undecided(
+            "This check cannot tell whether your matrix equals $\\Upsilon_i$ (it could not be "
+            "simplified or evaluated); write it with `sp.sin`, `sp.cos` and the symbols `r`, `b`, "
+            "`beta_i`."
+        )
     if equivalent(M, (B.T * B).applyfunc(sp.trigsimp)):
-        return wrong(r"That is $\mathbf B^{\mathrm T}\mathbf B$; (41) multiplies the other way round, "
-                     r"$\Upsilon_i = \mathbf B\mathbf B^{\mathrm T}$.")
+        return wrong(
+            r"That is $\mathbf B^{\mathrm T}\mathbf B$; (41) multiplies the other way round, "
+            r"$\Upsilon_i = \mathbf B\mathbf B^{\mathrm T}$."
+        )
     offset = OffsetWheel((0, 0), r=S.r, d=S.b).block(S.beta_i)
     if equivalent(M, offset * offset.T) or equivalent(M, sp.eye(2) * S.r**2):
-        return wrong(r"That is the $\Upsilon_i$ of an offset wheel; a dual-wheel unit has its own block "
-                     r"$\mathbf B$ (both wheels roll, neither is steered).")
+        return wrong(
+            r"That is the $\Upsilon_i$ of an offset wheel; a dual-wheel unit has its own block "
+            r"$\mathbf B$ (both wheels roll, neither is steered)."
+        )
     if not equivalent(M, M.T):
-        return wrong(r"Your matrix is not symmetric, and $\mathbf B\mathbf B^{\mathrm T}$ always is: form (41) from "
-                     r"the dual-wheel unit's block $\mathbf B$ and its transpose.")
-    return wrong(r"Not $\mathbf B\mathbf B^{\mathrm T}$ of a dual-wheel unit: build its block $\mathbf B$ from the "
-                 r"no-slip rows of its two wheels (Chapter 1: each rolls at $\pm b$ along the axle), then form (41).")
+        return wrong(
+            r"Your matrix is not symmetric, and $\mathbf B\mathbf B^{\mathrm T}$ always is: form (41) from "
+            r"the dual-wheel unit's block $\mathbf B$ and its transpose."
+        )
+    return wrong(
+        r"Not $\mathbf B\mathbf B^{\mathrm T}$ of a dual-wheel unit: build its block $\mathbf B$ from the "
+        r"no-slip rows of its two wheels (Chapter 1: each rolls at $\pm b$ along the axle), then form (41)."
+    )
 
 
 @exercise("3.3", answer="a list of offsets $d$ in metres", tolerance=TOL_3_3)
@@ -164,7 +195,11 @@ def offset_for_kappa(offsets, n=200):
         i = good.index(False)
         return wrong(f"At $d = {number(d[i], 3)}$ m, $\\kappa(\\mathbf J_2) = {number(kappas[i], 3)}$, not 2.")
     if np.ptp(d) <= TOL_3_3.rel * d.max():
-        return wrong(r"Right, but there is one more offset: $\kappa = \max(d, r)/\min(d, r)$ is 2 on both sides of "
-                     r"$d = r$.")
-    return right(r"The singular values of $\mathbf J_2$ are $d$ and $r$ at every steering angle, so "
-                 r"$\kappa = \max(d, r)/\min(d, r) = 2$ at $d = r/2$ and at $d = 2r$.")
+        return wrong(
+            r"Right, but there is one more offset: $\kappa = \max(d, r)/\min(d, r)$ is 2 on both sides of "
+            r"$d = r$."
+        )
+    return right(
+        r"The singular values of $\mathbf J_2$ are $d$ and $r$ at every steering angle, so "
+        r"$\kappa = \max(d, r)/\min(d, r) = 2$ at $d = r/2$ and at $d = 2r$."
+    )

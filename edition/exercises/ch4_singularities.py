@@ -5,6 +5,7 @@ a wheel-plane line is :math:`\{\mathbf x : \mathbf i_k\cdot\mathbf x = \mathbf i
 :math:`\{\mathbf x : \mathbf j_k\cdot\mathbf x = \mathbf j_k\cdot\mathbf d_k\}`; :math:`\det\mathbf J = 0` iff the
 wheel-plane lines are concurrent or all parallel, and the robot can move iff the axle lines are (Chapter 4).
 """
+
 from __future__ import annotations
 
 import numpy as np
@@ -18,8 +19,15 @@ from .feedback import right, wrong
 from .framework import exercise
 from .tolerance import angle_gap, within
 
-__all__ = ["TOL_4_1", "TOL_4_2", "DIRECTION_4_1", "POINTS_4_2", "robot_4_2", "unlisted_singularity",
-           "mobile_and_singular"]
+__all__ = [
+    "TOL_4_1",
+    "TOL_4_2",
+    "DIRECTION_4_1",
+    "POINTS_4_2",
+    "robot_4_2",
+    "unlisted_singularity",
+    "mobile_and_singular",
+]
 
 #: angles to 0.01 degree (absolute, radians)
 TOL_4_1 = within("to 0.01 degree", abs=np.radians(0.01))
@@ -47,10 +55,12 @@ def _degrees(x):
 def _stated_item(beta):
     """The printed item (i)-(iv) that states ``beta`` literally (equalities to the tolerance), or ""."""
     from ..transcription import printed
+
     tol = TOL_4_1.abs * 1.0000001
 
     def same(a, b):
         return angle_gap([a], [b], period=2 * np.pi) <= tol
+
     if same(beta[0], beta[1]) and same(beta[0], beta[2]):
         return "(i)"
     for item, ((i, k), values) in printed(59).extra["singular_sets"].items():
@@ -75,22 +85,28 @@ def unlisted_singularity(beta_deg):
     """
     beta = answers.angles(beta_deg, 3, "deg")
     want = np.radians(DIRECTION_4_1)
-    rolling = beta + np.pi / 2                                      # the angle of j_k
+    rolling = beta + np.pi / 2  # the angle of j_k
     off = [k + 1 for k in range(3) if angle_gap([rolling[k]], [want]) > TOL_4_1.abs * 1.0000001]
     if off:
         which = ", ".join(str(k) for k in off)
-        return wrong(f"Wheel{'s' if len(off) > 1 else ''} {which} "
-                     f"roll{'' if len(off) > 1 else 's'} along another direction than "
-                     f"${DIRECTION_4_1:g}^\\circ$ (the rolling direction $\\mathbf j_k$ is at $\\beta_k + 90^\\circ$): "
-                     "the robot cannot translate along it.")
+        return wrong(
+            f"Wheel{'s' if len(off) > 1 else ''} {which} "
+            f"roll{'' if len(off) > 1 else 's'} along another direction than "
+            f"${DIRECTION_4_1:g}^\\circ$ (the rolling direction $\\mathbf j_k$ is at $\\beta_k + 90^\\circ$): "
+            "the robot cannot translate along it."
+        )
     item = _stated_item(beta)
     if item:
-        return wrong(f"The robot translates along ${DIRECTION_4_1:g}^\\circ$ and $\\mathbf J$ is singular (the wheel "
-                     f"planes are parallel), but item {item} states these angles literally. Find angles no item "
-                     "states.")
-    return right(f"All wheels roll along ${DIRECTION_4_1:g}^\\circ$, so the wheel-plane lines are parallel and "
-                 r"$\det\mathbf J = 0$; no item (i)-(iv) states these angles, and parallel lines do not meet in one "
-                 "point as (v) requires: the printed list misses a wheel turned by $180^\\circ$.")
+        return wrong(
+            f"The robot translates along ${DIRECTION_4_1:g}^\\circ$ and $\\mathbf J$ is singular (the wheel "
+            f"planes are parallel), but item {item} states these angles literally. Find angles no item "
+            "states."
+        )
+    return right(
+        f"All wheels roll along ${DIRECTION_4_1:g}^\\circ$, so the wheel-plane lines are parallel and "
+        r"$\det\mathbf J = 0$; no item (i)-(iv) states these angles, and parallel lines do not meet in one "
+        "point as (v) requires: the printed list misses a wheel turned by $180^\\circ$."
+    )
 
 
 def _meet(normals, points):
@@ -132,13 +148,13 @@ def _nearest_turning_point(beta, P):
     c = _circumcentre(P)
     R = float(np.linalg.norm(P[0] - c))
     lo, hi, best = 0.0, 2 * np.pi, (np.inf, c)
-    for _ in range(6):                            # a grid over the circle, then finer grids around the best point
+    for _ in range(6):  # a grid over the circle, then finer grids around the best point
         t = np.linspace(lo, hi, 721)
-        V = c + R * np.stack([np.cos(t), np.sin(t)], -1)                       # (n, 2)
-        w = V[:, None, :] - P[None]                                           # (n, 3, 2)
+        V = c + R * np.stack([np.cos(t), np.sin(t)], -1)  # (n, 2)
+        w = V[:, None, :] - P[None]  # (n, 3, 2)
         want = np.arctan2(w[..., 1], w[..., 0])
         d = np.abs(np.mod(beta - want + np.pi / 2, np.pi) - np.pi / 2)
-        d[np.linalg.norm(w, axis=-1) < 1e-9 * R] = 0.0                        # a wheel at V turns on the spot
+        d[np.linalg.norm(w, axis=-1) < 1e-9 * R] = 0.0  # a wheel at V turns on the spot
         g = d.max(axis=1)
         k = int(np.argmin(g))
         if g[k] < best[0]:
@@ -164,21 +180,28 @@ def mobile_and_singular(beta_deg):
     """
     beta = answers.angles(beta_deg, 3, "deg")
     P = np.array(POINTS_4_2)
-    axle = np.stack([np.cos(beta), np.sin(beta)], -1)                # i_k: normal of the wheel-plane line
+    axle = np.stack([np.cos(beta), np.sin(beta)], -1)  # i_k: normal of the wheel-plane line
     if all(angle_gap([beta[k]], [beta[0]]) <= 2 * TOL_4_2.abs for k in (1, 2)):
-        return wrong(r"All wheel planes are parallel: $\mathbf J$ is singular and the robot can translate, but it "
-                     "cannot turn about a point at these angles. Find angles at which it turns.")
+        return wrong(
+            r"All wheel planes are parallel: $\mathbf J$ is singular and the robot can translate, but it "
+            "cannot turn about a point at these angles. Find angles at which it turns."
+        )
     tol = TOL_4_2.abs * 1.0000001
     gap, V = _nearest_turning_point(beta, P)
-    if gap <= tol:                                # exact angles within the tolerance turn about V on the circle
-        D = 2 * _circumcentre(P) - V              # ... and their wheel-plane lines meet at its antipode
-        return right(f"The wheel-plane lines meet at $D_P = ({number(D[0])}, {number(D[1])})$, so "
-                     f"$\\det\\mathbf J = 0$, and the axles meet at $({number(V[0])}, {number(V[1])})$: the robot can "
-                     r"turn about that point (rank $\mathbf F = 5$).")
-    D, miss = _meet(axle, P)                      # where the wheel-plane lines (nearly) meet
+    if gap <= tol:  # exact angles within the tolerance turn about V on the circle
+        D = 2 * _circumcentre(P) - V  # ... and their wheel-plane lines meet at its antipode
+        return right(
+            f"The wheel-plane lines meet at $D_P = ({number(D[0])}, {number(D[1])})$, so "
+            f"$\\det\\mathbf J = 0$, and the axles meet at $({number(V[0])}, {number(V[1])})$: the robot can "
+            r"turn about that point (rank $\mathbf F = 5$)."
+        )
+    D, miss = _meet(axle, P)  # where the wheel-plane lines (nearly) meet
     if _gap_to_lines_through(beta, P, D, "plane") > tol:
-        return wrong(r"$\det\mathbf J \neq 0$: the three wheel-plane lines do not meet in one point (they miss by "
-                     f"${number(miss)}$ m), so $\\mathbf J$ is not singular here.")
-    return wrong(f"$\\mathbf J$ is singular (the wheel-plane lines meet at $({number(D[0])}, {number(D[1])})$), "
-                 r"but the axles do not meet in one point: rank $\mathbf F = 6$, the robot cannot move.")
-
+        return wrong(
+            r"$\det\mathbf J \neq 0$: the three wheel-plane lines do not meet in one point (they miss by "
+            f"${number(miss)}$ m), so $\\mathbf J$ is not singular here."
+        )
+    return wrong(
+        f"$\\mathbf J$ is singular (the wheel-plane lines meet at $({number(D[0])}, {number(D[1])})$), "
+        r"but the axles do not meet in one point: rank $\mathbf F = 6$, the robot cannot move."
+    )

@@ -4,6 +4,7 @@ The steering angles a twist needs are computed from the model (``wmr.steering_an
 modulo :math:`\pi` (a wheel turned round rolls backwards along the same line) with the tolerance the
 question states; a centre of rotation is judged with the printed (65) evaluated at it.
 """
+
 from __future__ import annotations
 
 import numpy as np
@@ -17,8 +18,16 @@ from .feedback import right, wrong
 from .framework import exercise
 from .tolerance import angle_gap, decimals, within
 
-__all__ = ["TOL_5_1", "TOL_5_2", "TOL_5_3", "translation_twist", "rotation_twist", "translation_angles",
-           "rotation_angles", "printed_65_region"]
+__all__ = [
+    "TOL_5_1",
+    "TOL_5_2",
+    "TOL_5_3",
+    "translation_twist",
+    "rotation_twist",
+    "translation_angles",
+    "rotation_angles",
+    "printed_65_region",
+]
 
 TOL_5_1 = decimals(3)
 TOL_5_2 = decimals(3)
@@ -27,6 +36,7 @@ TOL_5_3 = within("within 1 mm", abs=1e-3)
 
 def _robot():
     from ..checks.steering import robot
+
     return robot()
 
 
@@ -94,17 +104,23 @@ def translation_angles(beta):
     twist = translation_twist()
     off = _off(beta, steering_angles(_robot(), twist), TOL_5_1)
     if not off:
-        return right(r"Every axle is perpendicular to the velocity and the wheels roll along it: "
-                     r"$\phi_i = \psi + \beta_i = \operatorname{atan2}(\dot Y, \dot X) + \pi/2$ (mod $\pi$).")
+        return right(
+            r"Every axle is perpendicular to the velocity and the wheels roll along it: "
+            r"$\phi_i = \psi + \beta_i = \operatorname{atan2}(\dot Y, \dot X) + \pi/2$ (mod $\pi$)."
+        )
     psi, v = np.radians(30.0), np.array([0.3, 0.4])
     printed_60 = np.full(3, np.arctan2(v[1], v[0]) - psi)
     if not _off(beta, printed_60, TOL_5_1):
-        return wrong("These are the angles of the printed (60): the *axles* point along the velocity and the wheels "
-                     f"would slide sideways at the full speed (${number(np.linalg.norm(v))}$ m/s).")
-    return wrong(f"The wheels would slip: {_wheels(off)} {'is' if len(off) == 1 else 'are'} not steered for this "
-                 "translation. In translation every "
-                 r"point moves with $\dot{\mathbf c}$: each axle $\mathbf i_i$ (absolute angle $\psi + \beta_i$) must "
-                 "be perpendicular to it.")
+        return wrong(
+            "These are the angles of the printed (60): the *axles* point along the velocity and the wheels "
+            f"would slide sideways at the full speed (${number(np.linalg.norm(v))}$ m/s)."
+        )
+    return wrong(
+        f"The wheels would slip: {_wheels(off)} {'is' if len(off) == 1 else 'are'} not steered for this "
+        "translation. In translation every "
+        r"point moves with $\dot{\mathbf c}$: each axle $\mathbf i_i$ (absolute angle $\psi + \beta_i$) must "
+        "be perpendicular to it."
+    )
 
 
 @exercise("5.2", answer="three steering angles in radians", tolerance=TOL_5_2, units={"beta": "rad"})
@@ -123,11 +139,15 @@ def rotation_angles(beta):
     beta = answers.angles(beta, 3, "rad")
     off = _off(beta, steering_angles(_robot(), rotation_twist()), TOL_5_2)
     if not off:
-        return right(r"Every axle points at U: $\beta_i = \operatorname{atan2}(u_{iy}, u_{ix})$ (mod $\pi$) with "
-                     r"$\mathbf u_i = \mathbf u_c - \mathbf d_i$ (64).")
-    return wrong(f"The wheels would slip: the axle of {_wheels(off)} does not point at U. Each axle $\\mathbf i_i$ "
-                 r"must be parallel to $\mathbf u_i = \overrightarrow{P_iU}$, its angle measured from the body axis "
-                 r"$\mathbf i$.")
+        return right(
+            r"Every axle points at U: $\beta_i = \operatorname{atan2}(u_{iy}, u_{ix})$ (mod $\pi$) with "
+            r"$\mathbf u_i = \mathbf u_c - \mathbf d_i$ (64)."
+        )
+    return wrong(
+        f"The wheels would slip: the axle of {_wheels(off)} does not point at U. Each axle $\\mathbf i_i$ "
+        r"must be parallel to $\mathbf u_i = \overrightarrow{P_iU}$, its angle measured from the body axis "
+        r"$\mathbf i$."
+    )
 
 
 def printed_65_angles(u, points):
@@ -151,6 +171,7 @@ def printed_65_angles(u, points):
 
     def lateral(x):
         return np.abs(ui[:, 1] * np.cos(x) - ui[:, 0] * np.sin(x))
+
     return np.where(lateral(b) <= lateral(-b), b, -b)
 
 
@@ -175,20 +196,28 @@ def printed_65_region(U):
         return wrong(r"At U = C the printed (65) is $0/0$: undefined. Try another point.")
     near = [k + 1 for k in range(3) if np.linalg.norm(u - bot.mount_points[k]) <= tol]
     if near:
-        return wrong(f"U is the mount point of wheel {near[0]}: there $\\mathbf u_{near[0]} = \\mathbf 0$ and the "
-                     "printed (65) is $0/0$ for that wheel. Try another point.")
+        return wrong(
+            f"U is the mount point of wheel {near[0]}: there $\\mathbf u_{near[0]} = \\mathbf 0$ and the "
+            "printed (65) is $0/0$ for that wheel. Try another point."
+        )
     # judged at the nearest point of the body x-axis when U is within the tolerance of it, else at U itself
     at = np.array([u[0], 0.0]) if abs(u[1]) <= tol else u
     ok = bool(inverse(bot, printed_65_angles(at, bot.mount_points), rotation_twist(at)).admissible)
     if not ok:
-        return wrong(r"At this U the printed angles leave the axles off U: the robot is jammed. The printed angle is "
-                     r"measured from $\overrightarrow{CU}$; where does that line coincide with the body axis "
-                     r"$\mathbf i$?")
+        return wrong(
+            r"At this U the printed angles leave the axles off U: the robot is jammed. The printed angle is "
+            r"measured from $\overrightarrow{CU}$; where does that line coincide with the body axis "
+            r"$\mathbf i$?"
+        )
     if at[1] == 0.0 and at[0] > 0:
-        return right(r"Here $\overrightarrow{CU}$ points along the body axis $\mathbf i$, so the printed angle "
-                     r"between $\overrightarrow{CU}$ and $\overrightarrow{P_iU}$ is the angle from $\mathbf i$: the "
-                     "axles point at U.")
+        return right(
+            r"Here $\overrightarrow{CU}$ points along the body axis $\mathbf i$, so the printed angle "
+            r"between $\overrightarrow{CU}$ and $\overrightarrow{P_iU}$ is the angle from $\mathbf i$: the "
+            "axles point at U."
+        )
     if at[1] == 0.0:
-        return right(r"Here $\overrightarrow{CU}$ points along $-\mathbf i$: the printed angle is $\pi - \beta_i$, and "
-                     r"the better sign of $\arccos$ gives $\beta_i - \pi$, the same axle line. The axles point at U.")
+        return right(
+            r"Here $\overrightarrow{CU}$ points along $-\mathbf i$: the printed angle is $\pi - \beta_i$, and "
+            r"the better sign of $\arccos$ gives $\beta_i - \pi$, the same axle line. The axles point at U."
+        )
     return right("At this U the printed angles, each with the better sign, put every axle through U.")

@@ -3,6 +3,7 @@ r"""Chapter 6 exercises (dual wheels and continuous motion): fair checks (:func:
 The steering rates of 6.1 are computed from the model (``wmr.steering_angles`` along the commanded
 motion, differentiated); the jump of 6.2 is judged by whether the new twist keeps the instantaneous centre.
 """
+
 from __future__ import annotations
 
 import numpy as np
@@ -49,9 +50,10 @@ def needed_rates(t=0.0, h=1e-3):
         rad/s.
     """
     from wmr.analysis.steering import steering_angles
+
     bot = _robot()
     a, b = steering_angles(bot, _twist(t - h)), steering_angles(bot, _twist(t + h))
-    d = np.mod(b - a + np.pi / 2, np.pi) - np.pi / 2                 # a wheel turned round is the same line
+    d = np.mod(b - a + np.pi / 2, np.pi) - np.pi / 2  # a wheel turned round is the same line
     return d / (2 * h)
 
 
@@ -72,19 +74,30 @@ def curved_translation(beta_dot):
     rates = answers.vector(beta_dot, 3, "three steering rates in rad/s")
     need = needed_rates()
     if TOL_6_1.accepts(rates, need):
-        return right(r"The wheels turn together at the rate of the velocity direction, stay parallel, and the robot "
-                     "changes direction without stopping and without slip. Mobility 1 is not the same as having to "
-                     "stop.")
+        return right(
+            r"The wheels turn together at the rate of the velocity direction, stay parallel, and the robot "
+            "changes direction without stopping and without slip. Mobility 1 is not the same as having to "
+            "stop."
+        )
     from wmr.analysis.simulation import simulate
     from wmr.analysis.steering import steering_angles
+
     bot, t_end = _robot(), 2.0
-    run = simulate(bot, lambda t, s: inverse(bot, s[1], _twist(t)).value, steering_angles(bot, _twist(0.0)),
-                   t_end=t_end, dt=0.01, steer=rates)
+    run = simulate(
+        bot,
+        lambda t, s: inverse(bot, s[1], _twist(t)).value,
+        steering_angles(bot, _twist(0.0)),
+        t_end=t_end,
+        dt=0.01,
+        steer=rates,
+    )
     miss = float(np.max(np.abs(run.twist - np.array([_twist(t) for t in run.t]))))
     drift = angle_gap(run.beta[-1], steering_angles(bot, _twist(t_end)))
-    return wrong(f"With these rates the axles do not stay perpendicular to the velocity: after {t_end:g} s they are "
-                 f"${number(np.degrees(drift))}^\\circ$ off, and the robot misses the commanded velocity by "
-                 f"${number(miss)}$ m/s.")
+    return wrong(
+        f"With these rates the axles do not stay perpendicular to the velocity: after {t_end:g} s they are "
+        f"${number(np.degrees(drift))}^\\circ$ off, and the robot misses the commanded velocity by "
+        f"${number(miss)}$ m/s."
+    )
 
 
 @exercise("6.2", answer="a twist `(psi_dot, x_dot, y_dot)`", tolerance=TOL_6_2)
@@ -108,10 +121,14 @@ def reversal(twist_plus):
         return wrong("A twist of zero stops the robot: it has no heading. Give a motion.")
     across = float(np.linalg.norm(np.cross(tp, tm))) / (size * float(np.linalg.norm(tm)))
     if across > TOL_6_2.rel:
-        return wrong("At the current steering angles this twist needs slip: only multiples of the current twist "
-                     "share its instantaneous centre, every other one needs re-steering.")
+        return wrong(
+            "At the current steering angles this twist needs slip: only multiples of the current twist "
+            "share its instantaneous centre, every other one needs re-steering."
+        )
     lam = float(tp @ tm / (tm @ tm))
     if lam > 0:
         return wrong("Executable, but it is the same heading at another speed: make the heading jump.")
-    return right(f"$\\mathbf t^+ = {number(lam)}\\,\\mathbf t^-$: a reversal, the heading jumps by $180^\\circ$ "
-                 "and the wheels simply roll the other way. Every other jump needs re-steering.")
+    return right(
+        f"$\\mathbf t^+ = {number(lam)}\\,\\mathbf t^-$: a reversal, the heading jumps by $180^\\circ$ "
+        "and the wheels simply roll the other way. Every other jump needs re-steering."
+    )

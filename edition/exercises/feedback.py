@@ -8,6 +8,7 @@ their own), so that a student never sees a traceback and a grader reads ``.passe
 :func:`missing`, :func:`as_matrix` and :func:`as_angles` are the older parsing used by chapter modules
 not yet written with :mod:`edition.exercises.answers`.
 """
+
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
@@ -22,8 +23,14 @@ __all__ = ["Result", "Feedback", "STATUSES", "right", "wrong", "undecided", "mis
 #: error (the check itself failed on this answer: a defect of the check, caught so the student sees one line)
 STATUSES = ("right", "wrong", "missing", "malformed", "undecided", "error")
 
-_HEAD = {"right": "**Right.**", "wrong": "**Not yet.**", "missing": "**Not yet.**", "malformed": "**Not yet.**",
-         "undecided": "**Cannot tell.**", "error": "**Not checked.**"}
+_HEAD = {
+    "right": "**Right.**",
+    "wrong": "**Not yet.**",
+    "missing": "**Not yet.**",
+    "malformed": "**Not yet.**",
+    "undecided": "**Cannot tell.**",
+    "error": "**Not checked.**",
+}
 
 
 @dataclass(frozen=True)
@@ -110,6 +117,7 @@ class Result:
             ``self``, when passed.
         """
         from IPython.display import Markdown, display
+
         display(Markdown(self.markdown()))
         if not self.passed:
             raise AssertionError(self.markdown())
@@ -212,8 +220,9 @@ def as_matrix(answer, shape, wanted):
     try:
         M = sp.Matrix(answer)
     except (TypeError, ValueError, sp.SympifyError):
-        return None, Result(False, f"The answer must be a SymPy matrix (or a list) of shape {shape}.",
-                            status="malformed")
+        return None, Result(
+            False, f"The answer must be a SymPy matrix (or a list) of shape {shape}.", status="malformed"
+        )
     if M.shape != shape:
         return None, Result(False, f"The answer must have shape {shape}, got {M.shape}.", status="malformed")
     return M, None

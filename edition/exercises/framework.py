@@ -37,6 +37,7 @@ In a chapter an exercise is four cells, each tagged (cell metadata ``tags``), in
 tables of :mod:`edition.exercises.table` test each check (right, rounded, wrong, trivial, other unit,
 malformed, missing).
 """
+
 from __future__ import annotations
 
 import functools
@@ -110,8 +111,12 @@ def _run(f, args, kwargs):
         return Result(False, str(e), status="malformed")
     except Exception as e:
         first = (str(e).splitlines() or [""])[0][:160]
-        return Result(False, f"The check could not evaluate this answer ({type(e).__name__}: {first}). Check its "
-                             "type and shape against the question.", status="error")
+        return Result(
+            False,
+            f"The check could not evaluate this answer ({type(e).__name__}: {first}). Check its "
+            "type and shape against the question.",
+            status="error",
+        )
     if not isinstance(result, Result):
         raise TypeError(f"check {f.__name__} returned {type(result).__name__}, not a Result")
     return result
@@ -177,8 +182,7 @@ def exercise(number, *, answer, points=1, tolerance=None, units=None, register=T
                 bound = sig.bind(*args, **kwargs)
             except TypeError:
                 names = ", ".join(f"`{n}`" for n in required)
-                result = Result(False, f"`{f.__name__}` takes {len(required)} answer(s): {names}.",
-                                status="malformed")
+                result = Result(False, f"`{f.__name__}` takes {len(required)} answer(s): {names}.", status="malformed")
             else:
                 bound.apply_defaults()
                 if any(bound.arguments[n] is None for n in required):
@@ -189,8 +193,15 @@ def exercise(number, *, answer, points=1, tolerance=None, units=None, register=T
                         result = _unit_retry(f, bound, units, result)
             return replace(result, exercise=number, max_points=float(points))
 
-        info = Exercise(number=number, name=f.__name__, answer=answer, points=float(points), tolerance=tolerance,
-                        units=units, check=check)
+        info = Exercise(
+            number=number,
+            name=f.__name__,
+            answer=answer,
+            points=float(points),
+            tolerance=tolerance,
+            units=units,
+            check=check,
+        )
         old = _REGISTRY.get(number) if register else None
         if old is not None and (old.name, getattr(old.check, "__module__", "")) != (f.__name__, f.__module__):
             raise ValueError(f"exercise {number} is registered twice: {old.name} and {f.__name__}")
@@ -232,6 +243,9 @@ def by_name(name):
     """
     found = [e for e in registered().values() if e.name == name]
     if len(found) != 1:
-        raise KeyError(f"no registered exercise check is called {name!r}" if not found else
-                       f"{len(found)} exercise checks are called {name!r}")
+        raise KeyError(
+            f"no registered exercise check is called {name!r}"
+            if not found
+            else f"{len(found)} exercise checks are called {name!r}"
+        )
     return found[0]

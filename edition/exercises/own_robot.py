@@ -1,4 +1,5 @@
 r"""The "your own robot" cells of the chapters: a Markdown summary of any robot."""
+
 from __future__ import annotations
 
 import numpy as np
@@ -37,12 +38,20 @@ def describe_robot(robot, beta=None, twist=None):
     rk = int(rank(F))
     tw = admissible_twists(robot, beta)
     kinds = ", ".join(f"{u.kind} at $({u.position[0]:.3g}, {u.position[1]:.3g})$" for u in robot.wheels)
-    lines = [f"**Your robot:** {robot.w} units ({kinds}).",
-             rf"$\mathbf F$ is ${F.shape[0]}\times{F.shape[1]}$ with rank {rk}: nullity {F.shape[1] - rk}; "
-             rf"the platform can follow a {tw.shape[1]}-dimensional set of twists at these steering angles."]
+    lines = [
+        f"**Your robot:** {robot.w} units ({kinds}).",
+        rf"$\mathbf F$ is ${F.shape[0]}\times{F.shape[1]}$ with rank {rk}: nullity {F.shape[1] - rk}; "
+        rf"the platform can follow a {tw.shape[1]}-dimensional set of twists at these steering angles.",
+    ]
     if twist is not None:
         sol = inverse(robot, beta, np.asarray(twist, dtype=float))
-        lines.append(("The twist is executable without slip; joint rates "
-                      + ", ".join(f"${v:.3g}$" for v in np.ravel(sol.value)) + ".") if bool(sol.admissible) else
-                     f"The twist needs slip (residual ${np.abs(sol.residual).max():.3g}$).")
+        lines.append(
+            (
+                "The twist is executable without slip; joint rates "
+                + ", ".join(f"${v:.3g}$" for v in np.ravel(sol.value))
+                + "."
+            )
+            if bool(sol.admissible)
+            else f"The twist needs slip (residual ${np.abs(sol.residual).max():.3g}$)."
+        )
     return "\n\n".join(lines)

@@ -12,6 +12,7 @@ Greek letters spelled out, in any order: ``phi_dot_i``, ``phidot_i``, ``\dot{\ph
 evaluating the difference at random points (fixed seed); an expression that cannot be evaluated
 there gives ``None``: the check says that it cannot tell, never a false "wrong".
 """
+
 from __future__ import annotations
 
 import re
@@ -23,8 +24,22 @@ from .answers import AnswerError
 
 __all__ = ["spelling", "map_symbols", "equivalent", "compare"]
 
-_GREEK = {"α": "alpha", "β": "beta", "γ": "gamma", "δ": "delta", "θ": "theta", "ϑ": "theta", "φ": "phi",
-          "ϕ": "phi", "ψ": "psi", "ω": "omega", "κ": "kappa", "ν": "nu", "σ": "sigma", "ρ": "rho"}
+_GREEK = {
+    "α": "alpha",
+    "β": "beta",
+    "γ": "gamma",
+    "δ": "delta",
+    "θ": "theta",
+    "ϑ": "theta",
+    "φ": "phi",
+    "ϕ": "phi",
+    "ψ": "psi",
+    "ω": "omega",
+    "κ": "kappa",
+    "ν": "nu",
+    "σ": "sigma",
+    "ρ": "rho",
+}
 _MARKUP = re.compile(r"\\(?:mathrm|mathbf|boldsymbol|operatorname|text)|\\var")
 
 
@@ -105,8 +120,9 @@ def map_symbols(expr, onto, what="your answer"):
     if strangers:
         allowed = ", ".join(f"${sp.latex(s)}$" for s in sorted(onto, key=lambda s: s.name))
         bad = ", ".join(f"${sp.latex(s)}$" for s in strangers)
-        raise AnswerError(f"{what[0].upper()}{what[1:]} uses {bad}, which this exercise does not have; "
-                          f"it may use {allowed}.")
+        raise AnswerError(
+            f"{what[0].upper()}{what[1:]} uses {bad}, which this exercise does not have; it may use {allowed}."
+        )
     return expr.xreplace(subs) if subs else expr
 
 
@@ -129,8 +145,11 @@ def equivalent(answer, truth, n=24, seed=20020101):
     bool or None
     """
     from ..verify import symbolic_equal
-    A, B = sp.Matrix([answer]) if not isinstance(answer, sp.MatrixBase) else sp.Matrix(answer), \
-        sp.Matrix([truth]) if not isinstance(truth, sp.MatrixBase) else sp.Matrix(truth)
+
+    A, B = (
+        sp.Matrix([answer]) if not isinstance(answer, sp.MatrixBase) else sp.Matrix(answer),
+        sp.Matrix([truth]) if not isinstance(truth, sp.MatrixBase) else sp.Matrix(truth),
+    )
     if A.shape != B.shape:
         return False
     try:
@@ -182,6 +201,7 @@ def compare(answer, truth, onto, what):
         Not a SymPy object, a shape other than ``truth``'s, or a symbol the exercise does not have.
     """
     from .answers import describe, sympy_object
+
     obj = sympy_object(answer, what)
     if isinstance(truth, sp.MatrixBase):
         if not isinstance(obj, sp.MatrixBase) or obj.shape != truth.shape:

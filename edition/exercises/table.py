@@ -23,6 +23,7 @@ paragraph; no traceback; no raw e-notation (``2.88e-16``) in the text; for a mal
 line; and never the status ``error`` (a check that failed on the answer).  :data:`JUNK` and
 :func:`junk_cases` give the malformed answers every check must survive.
 """
+
 from __future__ import annotations
 
 import re
@@ -34,9 +35,18 @@ import sympy as sp
 from ..display import raw_output
 from .feedback import Result
 
-__all__ = ["Case", "right_case", "wrong_case", "malformed_case", "missing_case", "rounded", "problems", "verify",
-           "JUNK", "junk_cases"]
-
+__all__ = [
+    "Case",
+    "right_case",
+    "wrong_case",
+    "malformed_case",
+    "missing_case",
+    "rounded",
+    "problems",
+    "verify",
+    "JUNK",
+    "junk_cases",
+]
 
 
 @dataclass(frozen=True)

@@ -16,6 +16,7 @@ Examples
 >>> t.accepts(0.5033, 0.50332), t.accepts(0.50, 0.50332), t.show(0.5033189)
 (True, False, '0.503')
 """
+
 from __future__ import annotations
 
 import math
@@ -25,7 +26,7 @@ import numpy as np
 
 __all__ = ["Tolerance", "sig_figs", "decimals", "within", "angle_gap", "unit_hint"]
 
-_EPS = 4 * np.finfo(float).eps          # round-off of the comparison itself
+_EPS = 4 * np.finfo(float).eps  # round-off of the comparison itself
 
 
 @dataclass(frozen=True)
@@ -106,6 +107,7 @@ class Tolerance:
         str
         """
         from ..text import number
+
         x = float(value)
         if self.rel > 0:
             return number(x, self.digits)
@@ -212,6 +214,8 @@ def unit_hint(values, unit):
     if unit == "rad" and v.max() > 2 * np.pi + 1e-9:
         return r"Some of these numbers are larger than $2\pi$: are they degrees? The question asks for radians."
     if unit == "deg" and v.max() <= 2 * np.pi and np.any(v != np.round(v)):
-        return (r"All these numbers are at most $2\pi$ in size: if they are radians, convert them with `np.degrees`; "
-                "the question asks for degrees.")
+        return (
+            r"All these numbers are at most $2\pi$ in size: if they are radians, convert them with `np.degrees`; "
+            "the question asks for degrees."
+        )
     return ""

@@ -18,10 +18,22 @@ The parts: :mod:`~edition.interactive.state` (the numbers), :mod:`~edition.inter
 (the figures), :mod:`~edition.interactive.describe` (the Markdown) and
 :mod:`~edition.interactive.widgets` (the explorers).
 """
+
 from .describe import describe_mounts, describe_steering
 from .draw import draw_mounts, draw_steering, png
 from .state import MountState, SteeringState, mount_state, steering_state
 from .widgets import MountExplorer, SteeringExplorer
 
-__all__ = ["SteeringState", "MountState", "steering_state", "mount_state", "draw_steering", "draw_mounts",
-           "describe_steering", "describe_mounts", "SteeringExplorer", "MountExplorer", "png"]
+__all__ = [
+    "SteeringState",
+    "MountState",
+    "steering_state",
+    "mount_state",
+    "draw_steering",
+    "draw_mounts",
+    "describe_steering",
+    "describe_mounts",
+    "SteeringExplorer",
+    "MountExplorer",
+    "png",
+]

@@ -2,6 +2,7 @@ r"""The numbers of a state as Markdown.
 
 Part of the interactive chapter: :mod:`edition.interactive`.
 """
+
 from __future__ import annotations
 
 import numpy as np
@@ -28,11 +29,14 @@ def describe_steering(state):
     axles = kind.get(state.axles.kind, "do not meet in one point")
     planes = kind.get(state.planes.kind, "do not meet in one point")
     k = "\\infty" if not np.isfinite(state.kappa_J) else number(state.kappa_J, 4)
-    lines = ["| $\\det\\mathbf J$ | $\\operatorname{rank}\\mathbf F$ | mobility | $\\kappa(\\mathbf J)$ |",
-             "|---|---|---|---|",
-             f"| ${number(state.det_J, 3) if abs(state.det_J) > 1e-12 else '0'}$ | {state.rank_F} | {state.mobility} | "
-             f"${k}$ |",
-             "", f"The axle lines {axles}; the wheel-plane lines {planes}."]
+    lines = [
+        "| $\\det\\mathbf J$ | $\\operatorname{rank}\\mathbf F$ | mobility | $\\kappa(\\mathbf J)$ |",
+        "|---|---|---|---|",
+        f"| ${number(state.det_J, 3) if abs(state.det_J) > 1e-12 else '0'}$ | {state.rank_F} | {state.mobility} | "
+        f"${k}$ |",
+        "",
+        f"The axle lines {axles}; the wheel-plane lines {planes}.",
+    ]
     if state.mobility:
         m = state.motion
         u = np.round(state.axles.point, 2) + 0.0 if state.axles.kind == FINITE else None
@@ -56,11 +60,13 @@ def describe_mounts(state):
     -------
     str
     """
-    c = np.round(state.centroid, 3) + 0.0                # no "-0.000"
+    c = np.round(state.centroid, 3) + 0.0  # no "-0.000"
     iso = abs(state.kappa - 1) < 1e-9
-    text = (rf"$\kappa(\mathbf J_{{L1}}) = {number(state.kappa, 4)}$ at $L = {state.L:.3g}$; centroid of the "
-            rf"$P_i$ at $({c[0]:.3f}, {c[1]:.3f})$; RMS distance ${state.L_rms:.3f}$, where "
-            rf"$\kappa = {number(state.kappa_best, 4)}$.")
+    text = (
+        rf"$\kappa(\mathbf J_{{L1}}) = {number(state.kappa, 4)}$ at $L = {state.L:.3g}$; centroid of the "
+        rf"$P_i$ at $({c[0]:.3f}, {c[1]:.3f})$; RMS distance ${state.L_rms:.3f}$, where "
+        rf"$\kappa = {number(state.kappa_best, 4)}$."
+    )
     if iso:
         text += r" **Isotropic.**"
     elif np.abs(c).max() > 1e-9:

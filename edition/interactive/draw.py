@@ -2,6 +2,7 @@ r"""The figures of a state: one :class:`matplotlib.figure.Figure` each, and a PN
 
 Part of the interactive chapter: :mod:`edition.interactive`.
 """
+
 from __future__ import annotations
 
 import io
@@ -42,6 +43,7 @@ def draw_steering(state, fig=None):
     from wmr.plot.annotate import draw_line, draw_point, label
     from wmr.plot.robot import draw_robot, platform_radius, robot_geometry
     from wmr.plot.style import DASHES, ROLE, fit_view, new_figure, style
+
     with style():
         fig, (ax,) = new_figure(1, 1, width=4.2, height=4.0, fig=fig)
         g = robot_geometry(state.robot, state.beta)
@@ -63,15 +65,22 @@ def draw_steering(state, fig=None):
             label(ax, D, "$D_P$", offset=(6, -10), color=ROLE["dp"])
         if state.motion is not None and state.axles.kind == AT_INFINITY:
             v = state.motion[1:] / max(np.linalg.norm(state.motion[1:]), 1e-12)
-            ax.annotate("", xy=tuple(0.9 * R * v), xytext=(0, 0),
-                        arrowprops=dict(arrowstyle="-|>", color=ROLE["ic"], lw=1.6), zorder=9)
+            ax.annotate(
+                "",
+                xy=tuple(0.9 * R * v),
+                xytext=(0, 0),
+                arrowprops=dict(arrowstyle="-|>", color=ROLE["ic"], lw=1.6),
+                zorder=9,
+            )
         fit_view(ax, np.array([[-view, -view], [view, view]]) * 0.62, pad=0.02)
-        handles = [Line2D([], [], color=DASHES["axle"][0], ls=DASHES["axle"][1], lw=1.2, label="axle lines"),
-                   Line2D([], [], color=DASHES["plane"][0], ls=DASHES["plane"][1], lw=1.2, label="wheel-plane lines"),
-                   Line2D([], [], color=ROLE["ic"], marker="o", ls="none", label="$U$: centre of rotation"),
-                   Line2D([], [], color=ROLE["dp"], marker="s", ls="none", label="$D_P$: planes meet")]
+        handles = [
+            Line2D([], [], color=DASHES["axle"][0], ls=DASHES["axle"][1], lw=1.2, label="axle lines"),
+            Line2D([], [], color=DASHES["plane"][0], ls=DASHES["plane"][1], lw=1.2, label="wheel-plane lines"),
+            Line2D([], [], color=ROLE["ic"], marker="o", ls="none", label="$U$: centre of rotation"),
+            Line2D([], [], color=ROLE["dp"], marker="s", ls="none", label="$D_P$: planes meet"),
+        ]
         ax.legend(handles=handles, loc="lower left", fontsize=LEGEND_PT, frameon=True, framealpha=0.9)
-        verdict = ("can move" if state.mobility > 0 else "cannot move")
+        verdict = "can move" if state.mobility > 0 else "cannot move"
         ax.set_title(rf"$\beta = ({', '.join(_deg(b) for b in state.beta)})$: the robot {verdict}", fontsize=TITLE_PT)
     return fig
 
@@ -93,6 +102,7 @@ def draw_mounts(state, fig=None):
 
     from wmr.plot.annotate import draw_point, label
     from wmr.plot.style import PALETTE, fit_view, new_figure, style
+
     with style():
         fig, (ax,) = new_figure(1, 1, width=4.0, height=3.9, fig=fig)
         p = state.points
@@ -103,17 +113,20 @@ def draw_mounts(state, fig=None):
         label(ax, (0, 0), "$C$", offset=(-6, 6), ha="right", va="bottom")
         draw_point(ax, state.centroid, None, marker="x", color=PALETTE["vermillion"], size=7, zorder=8)
         label(ax, state.centroid, r"$\bar P$", offset=(6, -6), ha="left", va="top", color=PALETTE["vermillion"])
-        handles = [Line2D([], [], color=PALETTE["blue"], ls=(0, (5, 3)), label=f"radius $L = {state.L:.3g}$"),
-                   Line2D([], [], color=PALETTE["green"], ls=(0, (1, 2)), label=f"RMS distance ${state.L_rms:.3g}$"),
-                   Line2D([], [], color=PALETTE["vermillion"], marker="x", ls="none", label=r"centroid $\bar P$")]
+        handles = [
+            Line2D([], [], color=PALETTE["blue"], ls=(0, (5, 3)), label=f"radius $L = {state.L:.3g}$"),
+            Line2D([], [], color=PALETTE["green"], ls=(0, (1, 2)), label=f"RMS distance ${state.L_rms:.3g}$"),
+            Line2D([], [], color=PALETTE["vermillion"], marker="x", ls="none", label=r"centroid $\bar P$"),
+        ]
         ax.legend(handles=handles, loc="lower left", fontsize=LEGEND_PT, frameon=True, framealpha=0.9)
         for k, q in enumerate(p, 1):
             draw_point(ax, q, None, size=5, color=PALETTE["dark"])
             label(ax, q, f"$P_{k}$", offset=(6, 6))
         m = max(float(np.abs(p).max()), state.L, state.L_rms) * 1.25
         fit_view(ax, np.array([[-m, -m], [m, m]]), pad=0.02)
-        ax.set_title(rf"$\kappa(\mathbf{{J}}_{{L1}}) = {number(state.kappa, 4)}$ at $L = {state.L:.3g}$",
-                     fontsize=TITLE_PT)
+        ax.set_title(
+            rf"$\kappa(\mathbf{{J}}_{{L1}}) = {number(state.kappa, 4)}$ at $L = {state.L:.3g}$", fontsize=TITLE_PT
+        )
     return fig
 
 
@@ -130,6 +143,7 @@ def png(fig, dpi=DPI):
     bytes
     """
     from wmr.plot.style import style
+
     buf = io.BytesIO()
     with style():
         fig.savefig(buf, format="png", dpi=dpi)

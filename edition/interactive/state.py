@@ -4,6 +4,7 @@ No matplotlib, no widgets.
 
 Part of the interactive chapter: :mod:`edition.interactive`.
 """
+
 from __future__ import annotations
 
 from dataclasses import dataclass
@@ -100,8 +101,17 @@ def steering_state(robot=None, beta=None, twist=None):
     if basis.shape[1] == 1:
         m = basis[:, 0]
         motion = m / np.linalg.norm(m) * (1.0 if (m[0] if abs(m[0]) > 1e-12 else m[np.argmax(np.abs(m))]) > 0 else -1.0)
-    return SteeringState(robot, beta, twist, float(np.linalg.det(J)), rk, float(condition_number(J)),
-                         axles_concurrency(robot, beta), concurrency_point(robot, beta), motion)
+    return SteeringState(
+        robot,
+        beta,
+        twist,
+        float(np.linalg.det(J)),
+        rk,
+        float(condition_number(J)),
+        axles_concurrency(robot, beta),
+        concurrency_point(robot, beta),
+        motion,
+    )
 
 
 @dataclass(frozen=True)
@@ -159,5 +169,11 @@ def mount_state(points, L=None):
         raise ValueError("points must not all be at C")
     L = L_rms if L is None else V.positive("L", L)
     bot = Robot([OffsetWheel(tuple(p), r=1.0, d=1.0) for p in pts])
-    return MountState(pts, float(L), L_rms, pts.mean(axis=0), float(condition_number(bot.J1(L))),
-                      float(condition_number(bot.J1(L_rms))))
+    return MountState(
+        pts,
+        float(L),
+        L_rms,
+        pts.mean(axis=0),
+        float(condition_number(bot.J1(L))),
+        float(condition_number(bot.J1(L_rms))),
+    )

@@ -2,6 +2,7 @@ r"""The explorers: ipywidgets around a state, its figure and its numbers.
 
 Part of the interactive chapter: :mod:`edition.interactive`.
 """
+
 from __future__ import annotations
 
 from collections.abc import Callable
@@ -45,9 +46,18 @@ def typed_slider(description, value, lo, hi, step, width="82px"):
         Slider and box, for the layout.
     """
     import ipywidgets as W
-    slider = W.FloatSlider(value=value, min=lo, max=hi, step=step, description=description, readout=False,
-                           continuous_update=False, style={"description_width": "76px"},
-                           layout=W.Layout(flex="1 1 auto", min_width="160px", width="auto"))
+
+    slider = W.FloatSlider(
+        value=value,
+        min=lo,
+        max=hi,
+        step=step,
+        description=description,
+        readout=False,
+        continuous_update=False,
+        style={"description_width": "76px"},
+        layout=W.Layout(flex="1 1 auto", min_width="160px", width="auto"),
+    )
     box = W.BoundedFloatText(value=value, min=lo, max=hi, step=None, layout=W.Layout(width=width, flex="0 0 auto"))
     W.link((slider, "value"), (box, "value"))
     return slider, box, W.HBox([slider, box], layout=W.Layout(**_ROW))
@@ -67,21 +77,23 @@ class _Picture:
 
     def _repr_mimebundle_(self, include=None, exclude=None):
         from wmr.plot.design import picture_bundle
+
         return picture_bundle(self.data, self.alt, self.width), {"image/png": {"width": self.width}}
 
 
 class _Explorer:
     """What both explorers share: the state drawn and described, shown below the controls and redrawn in place."""
 
-    _draw: Callable[[Any], Any]       # state -> Figure (set by each explorer)
-    state: Callable[[], Any]          # the current state (set by each explorer)
-    controls: Any                     # the ipywidgets box shown above the picture
-    _describe: Callable[[Any], str]   # state -> Markdown text (set by each explorer)
-    _width = 500                      # width of the picture (pixels)
+    _draw: Callable[[Any], Any]  # state -> Figure (set by each explorer)
+    state: Callable[[], Any]  # the current state (set by each explorer)
+    controls: Any  # the ipywidgets box shown above the picture
+    _describe: Callable[[Any], str]  # state -> Markdown text (set by each explorer)
+    _width = 500  # width of the picture (pixels)
     _alt = "The robot seen from above."  # what the picture shows, for a reader who cannot see it (each explorer)
 
     def _render(self):
         from IPython.display import Markdown
+
         s = self.state()
         return _Picture(png(self._draw(s)), self._alt, self._width), Markdown(self._describe(s))
 
@@ -109,6 +121,7 @@ class _Explorer:
         None
         """
         from IPython.display import Markdown, display
+
         display(self.controls)
         img, md = self._render()
         self._image = display(img, display_id=True)
@@ -132,26 +145,32 @@ class SteeringExplorer(_Explorer):
         Initial mode.
     """
 
-    _alt = ("The robot seen from above at the chosen steering angles: its three wheels, their axle lines and "
-            "wheel-plane lines, and the instantaneous centre where the axles meet, when they do.")
+    _alt = (
+        "The robot seen from above at the chosen steering angles: its three wheels, their axle lines and "
+        "wheel-plane lines, and the instantaneous centre where the axles meet, when they do."
+    )
 
     def __init__(self, robot=None, beta_deg=(30.0, -50.0, 75.0), twist=(0.5, 0.2, 0.1), mode="steering angles"):
         import ipywidgets as W
+
         self.robot = robot or paper_robot("centred", L=1.0, r=0.2)
-        self.mode = W.ToggleButtons(options=["steering angles", "commanded twist"], value=mode,
-                                    style={"button_width": "150px"})
+        self.mode = W.ToggleButtons(
+            options=["steering angles", "commanded twist"], value=mode, style={"button_width": "150px"}
+        )
         angles = [typed_slider(rf"$\beta_{k}$ (deg)", b, -180, 180, 1) for k, b in enumerate(beta_deg, 1)]
-        names = (r"$\dot\psi$ (rad/s)", r"$\dot x$ (m/s)", r"$\dot y$ (m/s)")      # typeset by MathJax
+        names = (r"$\dot\psi$ (rad/s)", r"$\dot x$ (m/s)", r"$\dot y$ (m/s)")  # typeset by MathJax
         rates = [typed_slider(n, v, -1, 1, 0.05) for n, v in zip(names, twist, strict=True)]
         self.betas, self.twist = [a[0] for a in angles], [r[0] for r in rates]
         self._pairs = {"angles": [a[:2] for a in angles], "twist": [r[:2] for r in rates]}
         for w in self.betas + self.twist + [self.mode]:
             w.observe(self._changed, names="value")
-        groups = [W.VBox([a[2] for a in angles], layout=W.Layout(width="410px", max_width="100%")),
-                  W.VBox([r[2] for r in rates], layout=W.Layout(width="410px", max_width="100%"))]
+        groups = [
+            W.VBox([a[2] for a in angles], layout=W.Layout(width="410px", max_width="100%")),
+            W.VBox([r[2] for r in rates], layout=W.Layout(width="410px", max_width="100%")),
+        ]
         self.controls = W.VBox([self.mode, W.Box(groups, layout=W.Layout(**_GROUPS))])
         self._image = self._text = None
-        self._changed()                                     # the angle sliders show the angles of the twist mode
+        self._changed()  # the angle sliders show the angles of the twist mode
 
     def state(self):
         """The :class:`SteeringState` the controls describe.
@@ -168,13 +187,13 @@ class SteeringExplorer(_Explorer):
 
     def _sync(self):
         twist = self.mode.value == "commanded twist"
-        _enable(self._pairs["angles"], not twist)           # in each mode only its own controls act
+        _enable(self._pairs["angles"], not twist)  # in each mode only its own controls act
         _enable(self._pairs["twist"], twist)
-        if twist:                                           # show the angles the twist needs
+        if twist:  # show the angles the twist needs
             s = self.state()
             for b, v in zip(self.betas, np.degrees(s.beta), strict=True):
                 b.unobserve(self._changed, names="value")
-                b.value = float(v)                          # exact: a rounded angle would jam the robot
+                b.value = float(v)  # exact: a rounded angle would jam the robot
                 b.observe(self._changed, names="value")
 
 
@@ -191,24 +210,34 @@ class MountExplorer(_Explorer):
         Initial characteristic length (None: the RMS distance, kept in step with the points).
     """
 
-    _alt = ("The platform seen from above: the centre C, the three mount points placed by the sliders, and the "
-            "circle of radius L about C.")
+    _alt = (
+        "The platform seen from above: the centre C, the three mount points placed by the sliders, and the "
+        "circle of radius L about C."
+    )
 
     def __init__(self, radii=(1.0, 1.0, 1.0), angles_deg=(180.0, 60.0, -60.0), L=None):
         import ipywidgets as W
+
         radius = [typed_slider(rf"$|CP_{k}|$", r, 0.2, 2.0, 0.05) for k, r in enumerate(radii, 1)]
         angle = [typed_slider(rf"$\angle P_{k}$ (deg)", a, -180, 180, 1) for k, a in enumerate(angles_deg, 1)]
         self.radii, self.angles = [r[0] for r in radius], [a[0] for a in angle]
-        self.auto = W.Checkbox(value=L is None, description="$L$ = RMS distance", indent=False,
-                               layout=W.Layout(width="auto"))
+        self.auto = W.Checkbox(
+            value=L is None, description="$L$ = RMS distance", indent=False, layout=W.Layout(width="auto")
+        )
         length = typed_slider("$L$", 1.0 if L is None else L, 0.2, 2.0, 0.01)
         self.L, self._L_pair = length[0], length[:2]
         for w in self.radii + self.angles + [self.auto, self.L]:
             w.observe(self._changed, names="value")
         col = W.Layout(width="410px", max_width="100%")
-        self.controls = W.VBox([W.Box([W.VBox([r[2] for r in radius], layout=col),
-                                       W.VBox([a[2] for a in angle], layout=col)], layout=W.Layout(**_GROUPS)),
-                                W.Box([W.VBox([length[2]], layout=col), self.auto], layout=W.Layout(**_GROUPS))])
+        self.controls = W.VBox(
+            [
+                W.Box(
+                    [W.VBox([r[2] for r in radius], layout=col), W.VBox([a[2] for a in angle], layout=col)],
+                    layout=W.Layout(**_GROUPS),
+                ),
+                W.Box([W.VBox([length[2]], layout=col), self.auto], layout=W.Layout(**_GROUPS)),
+            ]
+        )
         self._image = self._text = None
         self._sync()
 
@@ -235,7 +264,7 @@ class MountExplorer(_Explorer):
     _draw, _describe, _width = staticmethod(draw_mounts), staticmethod(describe_mounts), 480
 
     def _sync(self):
-        _enable([self._L_pair], not self.auto.value)       # L follows the points while the box is ticked
+        _enable([self._L_pair], not self.auto.value)  # L follows the points while the box is ticked
         if self.auto.value:
             self.L.unobserve(self._changed, names="value")
             self.L.value = round(self.state().L_rms, 4)

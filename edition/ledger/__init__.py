@@ -35,9 +35,26 @@ The parts: :mod:`~edition.ledger.verdict` (findings, their grading, the columns)
 :mod:`~edition.ledger.rows` (a chapter's rows and its file) and :mod:`~edition.ledger.store`
 (validating and concatenating the chapters' files; ``python -m edition.ledger``).
 """
+
 from .rows import Ledger, Row
 from .store import LedgerError, assemble, fragments, main, problems, read
 from .verdict import COLUMNS, EQUATIONS, KINDS, SEVERITIES, VERDICTS, Finding, anchor, grade
 
-__all__ = ["COLUMNS", "KINDS", "VERDICTS", "SEVERITIES", "EQUATIONS", "Finding", "Row", "Ledger", "grade",
-           "anchor", "LedgerError", "read", "fragments", "problems", "assemble", "main"]
+__all__ = [
+    "COLUMNS",
+    "KINDS",
+    "VERDICTS",
+    "SEVERITIES",
+    "EQUATIONS",
+    "Finding",
+    "Row",
+    "Ledger",
+    "grade",
+    "anchor",
+    "LedgerError",
+    "read",
+    "fragments",
+    "problems",
+    "assemble",
+    "main",
+]

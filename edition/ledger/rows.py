@@ -2,6 +2,7 @@ r"""A notebook's rows (:class:`Row`, :class:`Ledger`) and the fragment it writes
 
 Part of the ledger: :mod:`edition.ledger`.
 """
+
 from __future__ import annotations
 
 import math
@@ -51,7 +52,7 @@ class Row(dict):
         text = " ".join(parts)
         if self["verdict"] != "ok":
             if self["kind"] == "equation":
-                text += (f"\n\n*Corrected:*\n\n$$\n{self['corrected']}\n\\tag*{{({self['id']}) corrected}}\n$$")
+                text += f"\n\n*Corrected:*\n\n$$\n{self['corrected']}\n\\tag*{{({self['id']}) corrected}}\n$$"
             else:
                 text += f"\n\n*What is true:* {self['corrected']}"
         if self["note"]:
@@ -130,10 +131,22 @@ class Ledger:
             src = claim(id)
             kind, section, text = "claim", src.section, src.text
         corrected = "" if verdict == "ok" else str(finding.corrected).strip()
-        row = Row(id=id, kind=kind, section=section, verdict=verdict, printed=text, corrected=corrected,
-                  why="" if verdict == "ok" else str(finding.why).strip(), convention=str(finding.convention).strip(),
-                  check=str(finding.check).strip(), printed_holds="yes" if finding.printed_holds else "no",
-                  residual=bound(res), notebook=self.notebook, anchor=anchor(id), note=str(finding.note).strip())
+        row = Row(
+            id=id,
+            kind=kind,
+            section=section,
+            verdict=verdict,
+            printed=text,
+            corrected=corrected,
+            why="" if verdict == "ok" else str(finding.why).strip(),
+            convention=str(finding.convention).strip(),
+            check=str(finding.check).strip(),
+            printed_holds="yes" if finding.printed_holds else "no",
+            residual=bound(res),
+            notebook=self.notebook,
+            anchor=anchor(id),
+            note=str(finding.note).strip(),
+        )
         self.rows.append(row)
         return row
 

@@ -7,6 +7,7 @@ from a shell: ``python -m edition.ledger CHAPTERS... DEST``.
 
 Part of the ledger: :mod:`edition.ledger`.
 """
+
 from __future__ import annotations
 
 import csv

@@ -2,6 +2,7 @@ r"""What a check establishes (:class:`Finding`), the verdict computed from it (:
 
 Part of the ledger: :mod:`edition.ledger`.
 """
+
 from __future__ import annotations
 
 from dataclasses import dataclass
@@ -9,8 +10,22 @@ from dataclasses import dataclass
 __all__ = ["COLUMNS", "KINDS", "VERDICTS", "SEVERITIES", "EQUATIONS", "Finding", "grade", "anchor"]
 
 
-COLUMNS = ("id", "kind", "section", "verdict", "printed", "corrected", "why", "convention", "check",
-           "printed_holds", "residual", "notebook", "anchor", "note")
+COLUMNS = (
+    "id",
+    "kind",
+    "section",
+    "verdict",
+    "printed",
+    "corrected",
+    "why",
+    "convention",
+    "check",
+    "printed_holds",
+    "residual",
+    "notebook",
+    "anchor",
+    "note",
+)
 KINDS = ("equation", "claim")
 VERDICTS = ("ok", "typo", "wrong")
 #: Classes of error a check may name for a refuted printed form: a slip of print (sign, factor,
@@ -88,16 +103,19 @@ def grade(finding):
     if not isinstance(finding, Finding):
         raise TypeError(f"finding must be a Finding, got {type(finding).__name__}")
     if not isinstance(finding.printed_holds, bool):
-        raise TypeError(f"printed_holds of row {finding.id!r} must be a bool (the outcome of the check), "
-                        f"got {finding.printed_holds!r}")
+        raise TypeError(
+            f"printed_holds of row {finding.id!r} must be a bool (the outcome of the check), "
+            f"got {finding.printed_holds!r}"
+        )
     if finding.printed_holds:
         return "ok"
     label = _label(finding.id)
     if not str(finding.corrected).strip() or finding.corrected_holds is not True:
         raise ValueError(f"{label}: the printed form is refuted ({finding.check}) but no corrected form was proven")
     if finding.severity not in SEVERITIES:
-        raise ValueError(f"{label}: the printed form is refuted; severity must be one of {SEVERITIES}, "
-                         f"got {finding.severity!r}")
+        raise ValueError(
+            f"{label}: the printed form is refuted; severity must be one of {SEVERITIES}, got {finding.severity!r}"
+        )
     if not str(finding.why).strip():
         raise ValueError(f"{label}: the printed form is refuted but 'why' is empty")
     return finding.severity

@@ -24,6 +24,7 @@ columns :data:`COLUMNS` (chapter 9 writes it, the build publishes it into ``figu
 :mod:`edition.physics.plot` draws the experiments; :mod:`edition.physics.exercises` holds chapter 9's
 exercises.
 """
+
 from __future__ import annotations
 
 import csv
@@ -40,8 +41,15 @@ from .resteer import resteer_experiment
 __all__ = ["COLUMNS", "EXPERIMENTS", "Outcome", "csv_text", "run_all", "write_csv"]
 
 #: the experiments, in the order of the chapter and the table
-EXPERIMENTS = (dead_zone_experiment, jam_experiment, steering_experiment, brake_experiment, reorient_experiment,
-               noise_experiment, resteer_experiment)
+EXPERIMENTS = (
+    dead_zone_experiment,
+    jam_experiment,
+    steering_experiment,
+    brake_experiment,
+    reorient_experiment,
+    noise_experiment,
+    resteer_experiment,
+)
 #: the columns of physics.csv
 COLUMNS = ("experiment", "claim", "prediction", "measurement", "agreement", "verdict", "parameters")
 
@@ -141,10 +149,14 @@ def findings_markdown(path):
 
     def cell(text):
         return text.replace("|", "\\|").replace("\n", " ")
-    head = (f"# Physical claims in a physics engine\n\nChapter 9 puts {len(rows)} of the paper's claims about real "
-            f"robots to MuJoCo: {len(rows) - len(fails)} hold, {len(fails)} do not "
-            f"({', '.join(r['experiment'] for r in fails) or 'none'}).\n\n")
-    table = ("| claim | verdict | prediction (wmr) | measurement (MuJoCo) |\n|---|---|---|---|\n"
-             + "".join(f"| {cell(r['claim'])} | {cell(r['verdict'])} | {cell(r['prediction'])} | "
-                       f"{cell(r['measurement'])} |\n" for r in rows))
+
+    head = (
+        f"# Physical claims in a physics engine\n\nChapter 9 puts {len(rows)} of the paper's claims about real "
+        f"robots to MuJoCo: {len(rows) - len(fails)} hold, {len(fails)} do not "
+        f"({', '.join(r['experiment'] for r in fails) or 'none'}).\n\n"
+    )
+    table = "| claim | verdict | prediction (wmr) | measurement (MuJoCo) |\n|---|---|---|---|\n" + "".join(
+        f"| {cell(r['claim'])} | {cell(r['verdict'])} | {cell(r['prediction'])} | {cell(r['measurement'])} |\n"
+        for r in rows
+    )
     return head + table

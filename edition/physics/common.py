@@ -11,6 +11,7 @@ amplify them, so every measurement that reaches a verdict or the table is rounde
 values.  The robots are the paper's, at a realistic size (:func:`paper`), with the default physical
 parameters of :class:`wmr.sim.Params` unless an experiment says otherwise.
 """
+
 from __future__ import annotations
 
 from dataclasses import dataclass, field
@@ -93,9 +94,15 @@ class Outcome:
 
     def row(self):
         """The row of ``physics.csv``: dict of str."""
-        return {"experiment": self.key, "claim": f"{self.claim} ({self.section})", "prediction": self.prediction,
-                "measurement": self.measurement, "agreement": self.agreement,
-                "verdict": f"{self.verdict} ({self.criterion})", "parameters": self.parameters}
+        return {
+            "experiment": self.key,
+            "claim": f"{self.claim} ({self.section})",
+            "prediction": self.prediction,
+            "measurement": self.measurement,
+            "agreement": self.agreement,
+            "verdict": f"{self.verdict} ({self.criterion})",
+            "parameters": self.parameters,
+        }
 
 
 def sig(x, digits=DIGITS):
@@ -250,9 +257,11 @@ def parameters(robot, params=None, **extra):
     p = params or Params()
     units = ", ".join(sorted({type(u).__name__ for u in robot.wheels}))
     size = f"{robot.w} x {units}, |d_i| <= {fmt(float(np.abs(robot.mount_points).max()), 3)} m"
-    phys = (f"mu = {p.sliding:g}, torsional = {p.torsional:g} r, rolling = {p.rolling:g}, "
-            f"platform {p.platform_mass:g} kg, wheel {p.wheel_mass:g} kg, steer limit {p.steer_torque:g} W r, "
-            f"drive limit {p.drive_torque:g} W r, step {p.timestep:g} s")
+    phys = (
+        f"mu = {p.sliding:g}, torsional = {p.torsional:g} r, rolling = {p.rolling:g}, "
+        f"platform {p.platform_mass:g} kg, wheel {p.wheel_mass:g} kg, steer limit {p.steer_torque:g} W r, "
+        f"drive limit {p.drive_torque:g} W r, step {p.timestep:g} s"
+    )
     more = "; ".join(f"{k.replace('_', ' ')} {v}" for k, v in extra.items())
     return f"{size}; {phys}" + (f"; {more}" if more else "")
 

@@ -18,6 +18,7 @@ maximum dissipation, the smallest dissipation over the motions that move C in th
 a convex piecewise-linear function of the two free components of :math:`\mathbf t`, smallest at a
 point where two of its terms vanish (:func:`weakest_push`): wmr's constraint rows, with friction added.
 """
+
 from __future__ import annotations
 
 import itertools
@@ -79,17 +80,24 @@ def steering_experiment(params=None, twist=TWIST, off=OFF, seconds=3.0):
         late = _late(rec)
         f = rec.force[late][..., :2]
         fight = np.linalg.norm(f, axis=-1).sum(axis=1) - np.linalg.norm(f.sum(axis=1), axis=-1)
-        out[name] = {"rank": int(wmr.rank_F(robot, beta)), "predicted_slip": float(np.linalg.norm(sol.residual)),
-                     "ls_twist": wmr.forward(robot, beta, sol.value).value,
-                     "slip": sig(np.linalg.norm(rec.slip[late].reshape(late.sum(), -1), axis=1).mean()),
-                     "fight": sig(fight.mean()), "twist": rec.twist[late].mean(axis=0), "rec": rec}
+        out[name] = {
+            "rank": int(wmr.rank_F(robot, beta)),
+            "predicted_slip": float(np.linalg.norm(sol.residual)),
+            "ls_twist": wmr.forward(robot, beta, sol.value).value,
+            "slip": sig(np.linalg.norm(rec.slip[late].reshape(late.sum(), -1), axis=1).mean()),
+            "fight": sig(fight.mean()),
+            "twist": rec.twist[late].mean(axis=0),
+            "rec": rec,
+        }
     c, i = out["coordinated"], out["incompatible"]
     holds = c["slip"] <= 0.1 * i["slip"] and i["fight"] >= 3 * c["fight"]
-    size = np.array([float(np.abs(robot.mount_points).max()), 1.0, 1.0])    # psi_dot as a speed at the wheels
+    size = np.array([float(np.abs(robot.mount_points).max()), 1.0, 1.0])  # psi_dot as a speed at the wheels
     twist_err = sig(np.abs((i["twist"] - i["ls_twist"]) * size).max() / np.abs(i["ls_twist"] * size).max())
     ratio = sig(i["slip"] / i["predicted_slip"])
     return Outcome(
-        "incompatible-steering", "incompatible steering", "5.2, 5.4, 6",
+        "incompatible-steering",
+        "incompatible steering",
+        "5.2, 5.4, 6",
         "steering angles and driving rates must be compatible to prevent skidding: with axles not concurrent "
         "(rank F = 6) the wheels skid and fight each other, with coordinated steering (rank F = 5) they do not",
         f"coordinated: rank F = {c['rank']}, slip {bound(c['predicted_slip'])} m/s; incompatible (angles off by "
@@ -99,10 +107,11 @@ def steering_experiment(params=None, twist=TWIST, off=OFF, seconds=3.0):
         f"{fmt(c['fight'])} N coordinated, {fmt(i['fight'])} N incompatible",
         f"incompatible slip {fmt(ratio)} times wmr's least-squares slip; platform twist within {pct(twist_err)} of "
         "wmr's least-squares twist",
-        HOLDS if holds else FAILS, "coordinated slip <= 1/10 of incompatible; incompatible fight >= 3 x coordinated",
-        parameters(robot, params, twist=twist_text(twist),
-                   averaged=f"t = 1 to {seconds:g} s"),
-        data=out | {"twist": twist})
+        HOLDS if holds else FAILS,
+        "coordinated slip <= 1/10 of incompatible; incompatible fight >= 3 x coordinated",
+        parameters(robot, params, twist=twist_text(twist), averaged=f"t = 1 to {seconds:g} s"),
+        data=out | {"twist": twist},
+    )
 
 
 def weakest_push(robot, beta, direction, mu=1.0, crr=0.01, load=None):
@@ -137,12 +146,12 @@ def weakest_push(robot, beta, direction, mu=1.0, crr=0.01, load=None):
     N = np.full(robot.w, 1.0 / robot.w) if load is None else np.asarray(load, dtype=float)
     rows, cost = [], []
     for i, d in enumerate(robot.mount_points):
-        P = point_row(d)                                                  # [E d_i  1]: p_dot_i = P t
+        P = point_row(d)  # [E d_i  1]: p_dot_i = P t
         ii, jj = np.array([np.cos(beta[i]), np.sin(beta[i])]), np.array([-np.sin(beta[i]), np.cos(beta[i])])
         rows += [ii @ P, jj @ P]
         cost += [mu * N[i], crr * N[i]]
     R, weights = np.array(rows), np.array(cost)
-    move = np.r_[0.0, u]                                                  # u . c_dot = 1
+    move = np.r_[0.0, u]  # u . c_dot = 1
     best = np.inf
     for k, m in itertools.combinations(range(len(R)), 2):
         A = np.array([R[k], R[m], move])
@@ -223,21 +232,38 @@ def brake_experiment(params=None, directions=DIRECTIONS):
     robot = paper("centred")
     p = params or Params()
     d = robot.mount_points
-    configs = {"fig12a": (np.arctan2(-d[:, 0], d[:, 1]), True),          # j_i along d_i: every wheel plane through C
-               "parked": (np.zeros(robot.w), True), "braked": (np.zeros(robot.w), False)}
+    configs = {
+        "fig12a": (np.arctan2(-d[:, 0], d[:, 1]), True),  # j_i along d_i: every wheel plane through C
+        "parked": (np.zeros(robot.w), True),
+        "braked": (np.zeros(robot.w), False),
+    }
     out = {}
     for name, (beta, free) in configs.items():
         measured = np.array([breakaway(robot, beta, np.radians(a), free, params) for a in directions])
-        predicted = None if not free else np.array([      # (braked drives: friction on |p_dot_i|, not modelled)
-            weakest_push(robot, beta, (np.cos(np.radians(a)), np.sin(np.radians(a))), p.sliding, p.rolling)
-            for a in directions])
-        out[name] = {"beta": beta, "rank": int(wmr.rank_F(robot, beta)), "measured": measured, "predicted": predicted,
-                     "weakest": sig(measured.min()),
-                     "predicted_weakest": None if predicted is None else sig(predicted.min())}
+        predicted = (
+            None
+            if not free
+            else np.array(
+                [  # (braked drives: friction on |p_dot_i|, not modelled)
+                    weakest_push(robot, beta, (np.cos(np.radians(a)), np.sin(np.radians(a))), p.sliding, p.rolling)
+                    for a in directions
+                ]
+            )
+        )
+        out[name] = {
+            "beta": beta,
+            "rank": int(wmr.rank_F(robot, beta)),
+            "measured": measured,
+            "predicted": predicted,
+            "weakest": sig(measured.min()),
+            "predicted_weakest": None if predicted is None else sig(predicted.min()),
+        }
     a, b, k = out["fig12a"], out["parked"], out["braked"]
     holds = a["weakest"] >= 10 * b["weakest"]
     return Outcome(
-        "braking", "braking by steering", "5.3, Fig. 12a",
+        "braking",
+        "braking by steering",
+        "5.3, Fig. 12a",
         "the singular configuration of Fig. 12a (every wheel plane through C) can be exploited for braking when the "
         "WMR is at rest",
         f"Fig. 12a: rank F = {a['rank']}, no motion without sliding; weakest push {fmt(a['predicted_weakest'])} W "
@@ -249,9 +275,14 @@ def brake_experiment(params=None, directions=DIRECTIONS):
         f"{pct(sig(a['weakest'] / k['weakest']))} of the braked one's; limit analysis within "
         f"{pct(sig(abs(a['weakest'] / a['predicted_weakest'] - 1)))} (Fig. 12a) and "
         f"{pct(sig(abs(b['weakest'] / b['predicted_weakest'] - 1)))} (parked)",
-        HOLDS if holds else FAILS, "Fig. 12a's weakest push >= 10 x the parked robot's",
-        parameters(robot, params, pushes=f"at C in {len(directions)} directions, force growing geometrically "
-                                         "from 0.001 W to 2 W in 3 s", moving="C faster than 5 mm/s",
-                   drives="free (switched off), or locked (braked)"),
-        data=out | {"directions": np.asarray(directions, dtype=float)})
-
+        HOLDS if holds else FAILS,
+        "Fig. 12a's weakest push >= 10 x the parked robot's",
+        parameters(
+            robot,
+            params,
+            pushes=f"at C in {len(directions)} directions, force growing geometrically from 0.001 W to 2 W in 3 s",
+            moving="C faster than 5 mm/s",
+            drives="free (switched off), or locked (braked)",
+        ),
+        data=out | {"directions": np.asarray(directions, dtype=float)},
+    )

@@ -10,6 +10,7 @@ translation), where :math:`\mathbf M` loses rank.  With every :math:`\beta_i` eq
 and C runs around the dead-zone circle (28)-(29); at generic angles :math:`\mathbf M` is nonsingular: no
 motion at all, and the steering servos can only stall.
 """
+
 from __future__ import annotations
 
 import numpy as np
@@ -97,14 +98,16 @@ def dead_zone_experiment(params=None):
     model = dead_zone(robot, beta0=0.0)
     rec = turn_locked(robot, beta0, params=params)
     C = rec.pose[:, 1:]
-    Cf = np.nanmean(rec.point[0, :, :2], axis=0)                       # centroid of the contacts at the start
+    Cf = np.nanmean(rec.point[0, :, :2], axis=0)  # centroid of the contacts at the start
     centre, radius = _circle(C)
     dist = np.linalg.norm(C - Cf, axis=1)
     err = max(abs(dist.max() - d), abs(dist.min() - d), float(np.linalg.norm(centre - Cf))) / d
     drift = float(np.nanmax(np.linalg.norm(rec.point[:, :, :2] - rec.point[0, :, :2], axis=-1)))
     v = verdict(err, RESOLVED, 0.10)
     return Outcome(
-        "dead-zone", "the dead zone", "4.2, Fig. 7, (28)-(29)",
+        "dead-zone",
+        "the dead zone",
+        "4.2, Fig. 7, (28)-(29)",
         "steered one full turn with the drives locked, C traces a circle of radius d about the centroid C_f of the "
         "contact points, which stay fixed",
         f"wmr.simulate: a circle of radius {fmt(model['radius'], 3)} m about C_f (d = {fmt(d)} m); contact points "
@@ -112,11 +115,21 @@ def dead_zone_experiment(params=None):
         f"|CC_f| from {fmt(dist.min(), 3)} to {fmt(dist.max(), 3)} m; fitted circle radius {fmt(radius, 3)} m, centre "
         f"{fmt(np.linalg.norm(centre - Cf) * 1000)} mm from C_f; contact points moved {fmt(drift * 1000)} mm; heading "
         f"{fmt(np.degrees(np.ptp(rec.pose[:, 0])))} deg",
-        f"largest deviation from the circle {pct(err)} of d", v,
+        f"largest deviation from the circle {pct(err)} of d",
+        v,
         f"error <= {pct(RESOLVED)} of d: holds; <= 10 %: holds within it",
         parameters(robot, params, start="beta = 0 for all", turn=f"2 pi in {TURN:g} s, drives locked"),
-        data={"C": C, "Cf": Cf, "centre": centre, "radius": radius, "model": model, "d": d, "t": rec.t,
-              "points": rec.point[:, :, :2]})
+        data={
+            "C": C,
+            "Cf": Cf,
+            "centre": centre,
+            "radius": radius,
+            "model": model,
+            "d": d,
+            "t": rec.t,
+            "points": rec.point[:, :, :2],
+        },
+    )
 
 
 def jam_experiment(params=None, generic=GENERIC):
@@ -150,17 +163,22 @@ def jam_experiment(params=None, generic=GENERIC):
         sim_limit = Params().steer_torque if params is None else params.steer_torque
         steer = [k for k, n in enumerate(rec.export.servo_names) if n.endswith("steer")]
         limit = sim_limit * rec.export.weight * SIZE["r"]
-        out[name] = {"rank": int(rank(locked_system(robot, beta0), scale=scale)),
-                     "travel": sig(np.abs(rec.beta[-1] - rec.beta[0]).max() / (2 * np.pi)),
-                     "moved": sig(np.linalg.norm(rec.pose[-1, 1:] - rec.pose[0, 1:]) / d),
-                     "torque": sig(np.abs(rec.torque[:, steer]).max() / limit), "rec": rec}
+        out[name] = {
+            "rank": int(rank(locked_system(robot, beta0), scale=scale)),
+            "travel": sig(np.abs(rec.beta[-1] - rec.beta[0]).max() / (2 * np.pi)),
+            "moved": sig(np.linalg.norm(rec.pose[-1, 1:] - rec.pose[0, 1:]) / d),
+            "torque": sig(np.abs(rec.torque[:, steer]).max() / limit),
+            "rec": rec,
+        }
     g, e = out["generic"], out["equal"]
     jam = g["travel"] <= 0.02 and g["moved"] <= 0.10 and g["torque"] >= 0.95
     free = e["travel"] >= 0.98
     v = HOLDS if jam and free else FAILS
     angles = ", ".join(f"{a:g}" for a in generic)
     return Outcome(
-        "jam", "jamming with the drives locked", "Abstract, 4.2, 5.4",
+        "jam",
+        "jamming with the drives locked",
+        "Abstract, 4.2, 5.4",
         "the steering angles require proper coordination to avoid jamming: with the drives locked at generic angles "
         "(arm lines neither concurrent nor parallel) the robot cannot steer",
         f"rank M = {g['rank']} at beta = ({angles}) deg: no motion; rank M = {e['rank']} with all beta equal: the "
@@ -169,7 +187,8 @@ def jam_experiment(params=None, generic=GENERIC):
         f"torque {pct(g['torque'])} of its limit; equal: steering turned {pct(e['travel'])}, torque "
         f"{pct(e['torque'])} of its limit",
         f"generic angles stall at the torque limit ({pct(g['torque'])}) with {pct(g['travel'])} of the turn made",
-        v, "generic: turn <= 2 %, C moved <= 10 % of d, torque >= 95 % of the limit; equal: turn >= 98 %",
+        v,
+        "generic: turn <= 2 %, C moved <= 10 % of d, torque >= 95 % of the limit; equal: turn >= 98 %",
         parameters(robot, params, turn=f"2 pi in {TURN:g} s, drives locked", generic=f"beta = ({angles}) deg"),
-        data={k: {kk: vv for kk, vv in val.items()} for k, val in out.items()} | {"d": d, "limit": sim_limit})
-
+        data={k: {kk: vv for kk, vv in val.items()} for k, val in out.items()} | {"d": d, "limit": sim_limit},
+    )

@@ -14,6 +14,7 @@ check                        the exercise
 
 :func:`describe_robot` runs a robot of the reader's own in MuJoCo ("your own robot" cell).
 """
+
 from __future__ import annotations
 
 import numpy as np
@@ -67,15 +68,24 @@ def jamming_angles(beta_deg):
     if r < 6:
         j = np.stack([-np.sin(beta), np.cos(beta)], axis=-1)
         parallel = rank(j, scale=[1.0, 1.0]) < 2
-        why = ("all parallel: the platform translates" if parallel
-               else "concurrent: the platform turns about their common point")
-        return Feedback(False, f"At these angles rank M = {r}: the arm lines (through $P_i$ along $\\mathbf j_i$) are "
-                               f"{why}, so the locked robot can still steer.")
+        why = (
+            "all parallel: the platform translates"
+            if parallel
+            else "concurrent: the platform turns about their common point"
+        )
+        return Feedback(
+            False,
+            f"At these angles rank M = {r}: the arm lines (through $P_i$ along $\\mathbf j_i$) are "
+            f"{why}, so the locked robot can still steer.",
+        )
     rec = turn_locked(robot, beta)
     turned = float(np.abs(rec.beta[-1] - rec.beta[0]).max()) / (2 * np.pi)
     moved = np.linalg.norm(rec.pose[-1, 1:] - rec.pose[0, 1:])
-    return Feedback(True, f"rank M = 6: no motion is possible. In MuJoCo the steering servos, commanded one full turn, "
-                          f"turned {pct(turned)} of it and C moved {fmt(moved * 1000)} mm.")
+    return Feedback(
+        True,
+        f"rank M = 6: no motion is possible. In MuJoCo the steering servos, commanded one full turn, "
+        f"turned {pct(turned)} of it and C moved {fmt(moved * 1000)} mm.",
+    )
 
 
 def braking_angles(beta_deg):
@@ -104,11 +114,17 @@ def braking_angles(beta_deg):
         return Feedback(False, "These are Fig. 12a's angles (every wheel plane through C): find others.")
     mob = int(wmr.mobility(robot, beta))
     if mob > 0:
-        return Feedback(False, f"Mobility {mob}: the axle lines meet in one point (or are parallel), so the robot "
-                               "rolls away under a small push.")
+        return Feedback(
+            False,
+            f"Mobility {mob}: the axle lines meet in one point (or are parallel), so the robot "
+            "rolls away under a small push.",
+        )
     worst = min(weakest_push(robot, beta, (np.cos(a), np.sin(a))) for a in np.radians(np.arange(0.0, 360.0, 5.0)))
-    return Feedback(True, f"Mobility 0: every push must slide the wheels. The weakest push (limit analysis, every "
-                          f"5 deg) is {fmt(worst)} W -- a brake, though not necessarily as good as Fig. 12a's.")
+    return Feedback(
+        True,
+        f"Mobility 0: every push must slide the wheels. The weakest push (limit analysis, every "
+        f"5 deg) is {fmt(worst)} W -- a brake, though not necessarily as good as Fig. 12a's.",
+    )
 
 
 def describe_robot(robot, twist=(0.4, 0.3, 0.1), seconds=2.0):
@@ -126,6 +142,7 @@ def describe_robot(robot, twist=(0.4, 0.3, 0.1), seconds=2.0):
     str
     """
     from wmr.sim import Simulation, run, start_angles, twist_schedule
+
     robot = V.numeric_robot(robot)
     try:
         sim = Simulation(robot, beta=start_angles(robot, twist))
@@ -135,7 +152,9 @@ def describe_robot(robot, twist=(0.4, 0.3, 0.1), seconds=2.0):
     late = rec.t >= seconds / 2
     got = rec.twist[late].mean(axis=0)
     adm = bool(wmr.inverse(robot, start_angles(robot, twist), twist).admissible)
-    return (f"Commanded $(\\dot\\psi, \\dot x, \\dot y) = ({', '.join(f'{x:g}' for x in twist)})$"
-            f"{'' if adm else ' (not admissible: wmr predicts slip)'}; MuJoCo: "
-            f"$({', '.join(fmt(x, 3) for x in got)})$, the wheels sliding at {fmt(rec.slip_speed[late].mean())} m/s "
-            f"on average.")
+    return (
+        f"Commanded $(\\dot\\psi, \\dot x, \\dot y) = ({', '.join(f'{x:g}' for x in twist)})$"
+        f"{'' if adm else ' (not admissible: wmr predicts slip)'}; MuJoCo: "
+        f"$({', '.join(fmt(x, 3) for x in got)})$, the wheels sliding at {fmt(rec.slip_speed[late].mean())} m/s "
+        f"on average."
+    )

@@ -13,6 +13,7 @@ rate :math:`\dot\beta`.  The torque needed is measured as the power the contacts
 turning rate: :math:`M = \sum_{\text{contacts}} P_{\text{diss}}/\dot\beta` (sliding, torsional and rolling
 friction together, whatever joint the actuators drive).
 """
+
 from __future__ import annotations
 
 import numpy as np
@@ -71,17 +72,21 @@ def reorient(kind, params=None, rate=RATE, seconds=3.0):
     s = Schedule(np.array([0.0, seconds]), np.array([beta0, beta0 + rate * seconds]), np.array([rates, rates]))
     sim = Simulation(robot, beta=beta0, params=params)
     if kind == "centred":
-        sim.lock(sim.export.drive_names)                           # rolling disabled
+        sim.lock(sim.export.drive_names)  # rolling disabled
     rec = run(sim, s, seconds)
     late = rec.t >= 1.0
     unit = sim.wheel_unit
     power = np.array([rec.dissipation[late][:, unit == i].sum(axis=1).mean() for i in range(robot.w)])
     load = np.array([rec.force[late][:, unit == i, 2].sum(axis=1).mean() for i in range(robot.w)])
     turned = np.diff(rec.beta[late], axis=0).sum(axis=0) / (rec.t[late][-1] - rec.t[late][0])
-    return {"torque": power / rate, "load": load, "rate": turned,
-            "servo": dict(zip(sim.servo_names, np.abs(rec.torque[late]).mean(axis=0))),
-            "still": float(np.linalg.norm(rec.pose[:, 1:] - rec.pose[0, 1:], axis=1).max()),
-            "weight": sim.export.weight}
+    return {
+        "torque": power / rate,
+        "load": load,
+        "rate": turned,
+        "servo": dict(zip(sim.servo_names, np.abs(rec.torque[late]).mean(axis=0))),
+        "still": float(np.linalg.norm(rec.pose[:, 1:] - rec.pose[0, 1:], axis=1).max()),
+        "weight": sim.export.weight,
+    }
 
 
 def reorient_experiment(params=None):
@@ -107,7 +112,7 @@ def reorient_experiment(params=None):
     off = p.replace(torsional=0.0)
     m = {(k, name): reorient(k, q) for k in ("centred", "dual") for name, q in (("on", p), ("off", off))}
     t = {key: sig(v["torque"].mean()) for key, v in m.items()}
-    floor = 0.01 * max(t.values())                  # a hundredth of the largest torque: creep, not friction
+    floor = 0.01 * max(t.values())  # a hundredth of the largest torque: creep, not friction
     t = {key: (v if v >= floor else 0.0) for key, v in t.items()}
     r, b = SIZE["r"], SIZE["r"]
     N = {k: m[(k, "on")]["weight"] / 3 for k in ("centred", "dual")}
@@ -119,7 +124,9 @@ def reorient_experiment(params=None):
     servo_c = sig(np.mean([v for n, v in m[("centred", "on")]["servo"].items() if n.endswith("steer")]))
     servo_d = sig(np.mean([v for n, v in m[("dual", "on")]["servo"].items() if "drive" in n]))
     return Outcome(
-        "dual-wheel", "dual wheel against centred wheel", "3.2, 5.4, 6",
+        "dual-wheel",
+        "dual wheel against centred wheel",
+        "3.2, 5.4, 6",
         "centred wheels need to overcome a dry-friction torque when reoriented with rolling disabled; dual wheels "
         "must overcome only rolling friction",
         f"centred: the dry-friction torque mu_t N = {fmt(pred_c)} N m; dual: rolling friction only, c_rr N b = "
@@ -131,8 +138,20 @@ def reorient_experiment(params=None):
         f"the dual wheel's torque is {fmt(sig(t[('dual', 'on')] / pred_d))} times its rolling friction; its "
         f"torsional part {fmt(dry_d)} N m is {pct(sig(dry_d / dry_c))} of the centred wheel's {fmt(dry_c)} N m: each "
         "of its wheels still turns about the vertical at the steering rate",
-        HOLDS if holds else FAILS, "the dual wheel's torsional part <= 1/10 of the centred wheel's",
-        parameters(paper("dual"), params, reorientation=f"every unit at {RATE:g} rad/s in place, platform free",
-                   dual="b = r", measured="contact dissipation / steering rate, t = 1 to 3 s"),
-        data={"torque": t, "predicted": {"centred": pred_c, "dual": pred_d}, "dry": {"centred": dry_c, "dual": dry_d},
-              "servo": {"centred": servo_c, "dual": servo_d}, "runs": m})
+        HOLDS if holds else FAILS,
+        "the dual wheel's torsional part <= 1/10 of the centred wheel's",
+        parameters(
+            paper("dual"),
+            params,
+            reorientation=f"every unit at {RATE:g} rad/s in place, platform free",
+            dual="b = r",
+            measured="contact dissipation / steering rate, t = 1 to 3 s",
+        ),
+        data={
+            "torque": t,
+            "predicted": {"centred": pred_c, "dual": pred_d},
+            "dry": {"centred": dry_c, "dual": dry_d},
+            "servo": {"centred": servo_c, "dual": servo_d},
+            "runs": m,
+        },
+    )

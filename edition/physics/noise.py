@@ -9,6 +9,7 @@ homogeneous units :math:`(L\dot\psi, \dot x, \dot y)` (:math:`L` the characteris
 whose principal standard deviations spread by a ratio; for the least-squares solution through an
 isotropic :math:`\mathbf J_{L1}` that ratio is :math:`\kappa(\mathbf J)`.
 """
+
 from __future__ import annotations
 
 import numpy as np
@@ -51,10 +52,13 @@ def designs():
     """
     r = SIZE["r"]
     off = [(-0.3, 0.0), (0.3, 0.25), (0.2, -0.3)]
-    return {"offset, d = r": paper("offset"), "offset, d = r/2": paper("offset", d=r / 2),
-            "offset, d = 2r": paper("offset", d=2 * r),
-            "offset, d = r, off-centre": wmr.Robot([wmr.OffsetWheel(p, r=r, d=r) for p in off], name="off-centre"),
-            "centred": paper("centred")}
+    return {
+        "offset, d = r": paper("offset"),
+        "offset, d = r/2": paper("offset", d=r / 2),
+        "offset, d = 2r": paper("offset", d=2 * r),
+        "offset, d = r, off-centre": wmr.Robot([wmr.OffsetWheel(p, r=r, d=r) for p in off], name="off-centre"),
+        "centred": paper("centred"),
+    }
 
 
 def noise_run(robot, params=None, seconds=3.0, rng=None):
@@ -81,15 +85,20 @@ def noise_run(robot, params=None, seconds=3.0, rng=None):
     keep = rec.t >= 0.5
     beta, rates, true = rec.beta[keep], rec.rates[keep], rec.twist[keep]
     L = wmr.characteristic_length(robot)
-    h = np.array([L, 1.0, 1.0])                                 # homogeneous units (L psi_dot, x_dot, y_dot)
+    h = np.array([L, 1.0, 1.0])  # homogeneous units (L psi_dot, x_dot, y_dot)
     noisy = rates[None] + SIGMA * rng.standard_normal((DRAWS,) + rates.shape)
     err = (wmr.forward(robot, beta[None], noisy).value - true[None]) * h
     cov = np.cov(err.reshape(-1, 3).T)
     std = np.sqrt(np.linalg.eigvalsh(cov))
     kappa = np.array([wmr.condition_number(J) for J in robot.J(beta, L=L)])
     bias = (wmr.forward(robot, beta, rates).value - true) * h
-    return {"kappa": float(kappa.mean()), "spread": float(std[-1] / std[0]), "std": std / SIGMA,
-            "bias": float(np.linalg.norm(bias, axis=1).mean()), "samples": int(err.shape[0] * err.shape[1])}
+    return {
+        "kappa": float(kappa.mean()),
+        "spread": float(std[-1] / std[0]),
+        "std": std / SIGMA,
+        "bias": float(np.linalg.norm(bias, axis=1).mean()),
+        "samples": int(err.shape[0] * err.shape[1]),
+    }
 
 
 def noise_experiment(params=None):
@@ -114,18 +123,28 @@ def noise_experiment(params=None):
     err = max(abs(v["spread"] / v["kappa"] - 1) for v in out.values())
     v = verdict(err, 0.05, 0.15)
     listing = "; ".join(f"{name}: {fmt(x['kappa'], 3)}" for name, x in out.items())
-    measured = "; ".join(f"{name}: {fmt(x['spread'], 3)} (std / sigma {', '.join(fmt(s) for s in x['std'])})"
-                         for name, x in out.items())
+    measured = "; ".join(
+        f"{name}: {fmt(x['spread'], 3)} (std / sigma {', '.join(fmt(s) for s in x['std'])})" for name, x in out.items()
+    )
     n = next(iter(out.values()))["samples"]
     return Outcome(
-        "isotropy-noise", "isotropy and encoder noise", "4.3, 5.3",
+        "isotropy-noise",
+        "isotropy and encoder noise",
+        "4.3, 5.3",
         r"the accuracy of the forward kinematics depends on the condition number: an isotropic design "
         r"($\kappa(\mathbf J) = 1$) spreads encoder noise evenly, $\kappa > 1$ by the ratio $\kappa$",
         rf"$\kappa(\mathbf J)$ along the run: {listing}",
         f"spread of the twist error (largest / smallest principal std): {measured}",
         rf"largest difference between the spread and $\kappa(\mathbf J)$: {pct(sig(err))}",
-        v, "<= 5 %: holds; <= 15 %: holds within it",
-        parameters(paper("offset"), params, twist=twist_text(TWIST),
-                   noise=f"sigma = {SIGMA:g} rad/s on every joint rate, {DRAWS} draws per sample, seed {SEED}",
-                   samples=f"{n} per design", units="turning rate times L and velocity of C, L = RMS mount distance"),
-        data={"runs": out, "sigma": SIGMA, "holds": v == HOLDS})
+        v,
+        "<= 5 %: holds; <= 15 %: holds within it",
+        parameters(
+            paper("offset"),
+            params,
+            twist=twist_text(TWIST),
+            noise=f"sigma = {SIGMA:g} rad/s on every joint rate, {DRAWS} draws per sample, seed {SEED}",
+            samples=f"{n} per design",
+            units="turning rate times L and velocity of C, L = RMS mount distance",
+        ),
+        data={"runs": out, "sigma": SIGMA, "holds": v == HOLDS},
+    )

@@ -3,6 +3,7 @@ r"""Drawing the seven experiments (matplotlib): the numbers come from the outcom
 Four figures of chapter 9, each of two panels: :func:`draw_drift` (experiments 1-2),
 :func:`draw_contacts` (3-4), :func:`draw_friction_noise` (5-6), :func:`draw_resteer` (7).
 """
+
 from __future__ import annotations
 
 import numpy as np
@@ -39,11 +40,17 @@ def draw_drift(dead, jam, fig=None):
     with style():
         fig, (a, b) = new_figure(1, 2, width=8.0, height=3.4, fig=fig, drawing=False)
         D = dead.data
-        s = 1000.0                                                        # mm
+        s = 1000.0  # mm
         C, Cf, d = D["C"] * s, D["Cf"] * s, D["d"] * s
         th = np.linspace(0, 2 * np.pi, 200)
-        a.plot(Cf[0] + d * np.cos(th), Cf[1] + d * np.sin(th), color=_MODEL, ls="--", lw=1.0,
-               label="wmr: radius d about $C_f$")
+        a.plot(
+            Cf[0] + d * np.cos(th),
+            Cf[1] + d * np.sin(th),
+            color=_MODEL,
+            ls="--",
+            lw=1.0,
+            label="wmr: radius d about $C_f$",
+        )
         a.plot(C[:, 0], C[:, 1], color=_SIM, lw=1.4, label="MuJoCo: path of C")
         a.plot(*Cf, marker="+", color=PALETTE["black"], ms=9)
         a.annotate("$C_f$", Cf, xytext=(4, 4), textcoords="offset points")
@@ -60,8 +67,14 @@ def draw_drift(dead, jam, fig=None):
             b.plot(rec.t, travel, color=colour, label=f"{name} angles: steering turned")
             steer = [k for k, n in enumerate(rec.export.servo_names) if n.endswith("steer")]
             torque = np.abs(rec.torque[:, steer]).max(axis=1)
-            b.plot(rec.t, 360 * torque / torque.max() if name == "generic" else np.nan * rec.t, color=colour, ls=":",
-                   lw=1.0, label="generic angles: steering torque (full scale = limit)" if name == "generic" else None)
+            b.plot(
+                rec.t,
+                360 * torque / torque.max() if name == "generic" else np.nan * rec.t,
+                color=colour,
+                ls=":",
+                lw=1.0,
+                label="generic angles: steering torque (full scale = limit)" if name == "generic" else None,
+            )
         t = jam.data["generic"]["rec"].t
         b.plot(t, np.minimum(t, 4.0) / 4.0 * 360, color=PALETTE["grey"], ls="--", lw=0.8, label="commanded")
         b.set_xlabel("t (s)")
@@ -94,8 +107,13 @@ def draw_contacts(steer, brake, fig=None):
             slip = np.linalg.norm(rec.slip.reshape(len(rec.t), -1), axis=1)
             a.plot(rec.t, slip, color=colour, label=f"{name} (rank F = {v['rank']})")
             a.axhline(v["predicted_slip"], color=colour, ls="--", lw=0.8)
-        a.annotate("wmr's least-squares slip", (0.05, steer.data["incompatible"]["predicted_slip"]), xytext=(0, 3),
-                   textcoords="offset points", fontsize=7)
+        a.annotate(
+            "wmr's least-squares slip",
+            (0.05, steer.data["incompatible"]["predicted_slip"]),
+            xytext=(0, 3),
+            textcoords="offset points",
+            fontsize=7,
+        )
         a.set_xlabel("t (s)")
         a.set_ylabel("slip of the wheels (m/s)")
         a.set_ylim(bottom=0)
@@ -103,8 +121,11 @@ def draw_contacts(steer, brake, fig=None):
         panel_title(a, "a", "slip: coordinated and incompatible")
         _grid(a)
         ang = brake.data["directions"]
-        styles = {"fig12a": (_SIM, "Fig. 12a, drives free"), "parked": (_MODEL, "parked, drives free"),
-                  "braked": (PALETTE["green"], "parked, drives locked")}
+        styles = {
+            "fig12a": (_SIM, "Fig. 12a, drives free"),
+            "parked": (_MODEL, "parked, drives free"),
+            "braked": (PALETTE["green"], "parked, drives locked"),
+        }
         for name, (colour, label) in styles.items():
             v = brake.data[name]
             b.semilogy(ang, v["measured"], "o-", color=colour, ms=3, lw=1.0, label=label)
@@ -138,11 +159,22 @@ def draw_friction_noise(reorient, noise, fig=None):
         T = reorient.data["torque"]
         x = np.arange(2)
         for k, (sw, colour) in enumerate((("on", _SIM), ("off", _MODEL))):
-            a.bar(x + (k - 0.5) * 0.35, [T[("centred", sw)], T[("dual", sw)]], width=0.35, color=colour,
-                  label=f"MuJoCo, torsional friction {sw}")
+            a.bar(
+                x + (k - 0.5) * 0.35,
+                [T[("centred", sw)], T[("dual", sw)]],
+                width=0.35,
+                color=colour,
+                label=f"MuJoCo, torsional friction {sw}",
+            )
         pred = reorient.data["predicted"]
-        a.plot([-0.4, 0.4], [pred["centred"]] * 2, color=PALETTE["black"], ls="--", lw=1.0,
-               label="paper: dry friction (centred), rolling only (dual)")
+        a.plot(
+            [-0.4, 0.4],
+            [pred["centred"]] * 2,
+            color=PALETTE["black"],
+            ls="--",
+            lw=1.0,
+            label="paper: dry friction (centred), rolling only (dual)",
+        )
         a.plot([0.6, 1.4], [pred["dual"]] * 2, color=PALETTE["black"], ls="--", lw=1.0)
         a.set_xticks(x, ["centred wheel", "dual wheel"])
         a.set_ylabel("torque to reorient (N m)")

@@ -12,6 +12,7 @@ The kinematic simulator assumes, as the paper does (Section 2), that friction is
 prevent slipping: the platform takes the least-squares twist at once.  A real platform needs a force to
 change its velocity, and its wheels can give at most :math:`\mu N`.
 """
+
 from __future__ import annotations
 
 import numpy as np
@@ -51,8 +52,8 @@ def replay(robot, transient, params=None, lead_in=1.0):
     n, dt = len(transient.speed), float(transient.t[1] - transient.t[0])
     t = transient.t
     knots = np.repeat(t[:-1], 2)
-    knots[1::2] += dt * (1 - 1e-6)                               # speeds held over each period
-    beta = np.stack([np.interp(knots, t, transient.beta[:, i]) for i in range(robot.w)], axis=-1)   # turning over it
+    knots[1::2] += dt * (1 - 1e-6)  # speeds held over each period
+    beta = np.stack([np.interp(knots, t, transient.beta[:, i]) for i in range(robot.w)], axis=-1)  # turning over it
     s = Schedule(knots, beta, np.repeat(transient.speed / r, 2, axis=0))
     sim = Simulation(robot, beta=transient.beta[0], params=params)
     run(sim, Schedule.constant(transient.beta[0], transient.speed[0] / r), lead_in, every=1000)
@@ -63,8 +64,14 @@ def replay(robot, transient, params=None, lead_in=1.0):
     err = np.hypot(*(pose[:, 1:] - ref[:, 1:]).T)
     slip = np.linalg.norm(rec.slip.reshape(len(tt), -1), axis=1)
     area = float(np.sum((slip[1:] + slip[:-1]) * np.diff(tt)) / 2)
-    return {"t": tt, "pose": pose, "slip": slip, "path_error": err, "slip_distance": area,
-            "final_path_error": float(err[-1])}
+    return {
+        "t": tt,
+        "pose": pose,
+        "slip": slip,
+        "path_error": err,
+        "slip_distance": area,
+        "final_path_error": float(err[-1]),
+    }
 
 
 def _best(values):
@@ -88,17 +95,27 @@ def resteer_experiment(params=None):
     Outcome
     """
     from .common import RESOLVED
+
     robot = swerve_robot(0.6, 0.4, r=SIZE["r"])
     profile = swerve.direction_change(**PROFILE)
     study = swerve.resteer_study(robot, profile, steer_rate=STEER_RATE)
     rows = {}
     for tr in study.runs:
         m = replay(robot, tr, params)
-        rows[tr.label] = {"wmr": (sig(tr.slip_distance), sig(tr.final_path_error)),
-                          "mujoco": (sig(m["slip_distance"]), sig(m["final_path_error"])), "run": m, "transient": tr}
+        rows[tr.label] = {
+            "wmr": (sig(tr.slip_distance), sig(tr.final_path_error)),
+            "mujoco": (sig(m["slip_distance"]), sig(m["final_path_error"])),
+            "run": m,
+            "transient": tr,
+        }
     err = max(abs(v["mujoco"][k] / v["wmr"][k] - 1) for v in rows.values() for k in (0, 1))
-    best = {who: {"slip": _best({s: v[who][0] for s, v in rows.items()}),
-                  "path": _best({s: v[who][1] for s, v in rows.items()})} for who in ("wmr", "mujoco")}
+    best = {
+        who: {
+            "slip": _best({s: v[who][0] for s, v in rows.items()}),
+            "path": _best({s: v[who][1] for s, v in rows.items()}),
+        }
+        for who in ("wmr", "mujoco")
+    }
     same = {k: bool(set(best["wmr"][k]) & set(best["mujoco"][k])) for k in ("slip", "path")}
 
     def listing(who):
@@ -106,8 +123,11 @@ def resteer_experiment(params=None):
 
     def names(x):
         return " = ".join(x)
+
     return Outcome(
-        "resteer", "swerve re-steering transients", "chapter 8 (wmr.swerve.transient)",
+        "resteer",
+        "swerve re-steering transients",
+        "chapter 8 (wmr.swerve.transient)",
         "wmr's rate-limited kinematic simulator predicts, strategy by strategy, how far a swerve's wheels slide and "
         "how far C strays when the modules re-steer",
         f"wmr.swerve.resteer_study: {listing('wmr')}",
@@ -116,8 +136,15 @@ def resteer_experiment(params=None):
         f"{names(best['mujoco']['slip'])} ({'the same' if same['slip'] else 'not the same'}); least path error: wmr "
         f"{names(best['wmr']['path'])}, MuJoCo {names(best['mujoco']['path'])} "
         f"({'the same' if same['path'] else 'not the same'})",
-        verdict(err, RESOLVED, 0.25), f"<= {pct(RESOLVED)}: holds; <= 25 %: holds within it",
-        parameters(robot, params, profile=f"{fmt(PROFILE['speed'])} m/s along x then along y, spin "
-                                          f"{PROFILE['spin']:g} rad/s, {PROFILE['dt'] * 1000:g} ms periods",
-                   steering=f"{np.degrees(STEER_RATE):g} deg/s", lead_in="1 s at the first command"),
-        data={"rows": rows, "best": best, "same": same, "study": study})
+        verdict(err, RESOLVED, 0.25),
+        f"<= {pct(RESOLVED)}: holds; <= 25 %: holds within it",
+        parameters(
+            robot,
+            params,
+            profile=f"{fmt(PROFILE['speed'])} m/s along x then along y, spin "
+            f"{PROFILE['spin']:g} rad/s, {PROFILE['dt'] * 1000:g} ms periods",
+            steering=f"{np.degrees(STEER_RATE):g} deg/s",
+            lead_in="1 s at the first command",
+        ),
+        data={"rows": rows, "best": best, "same": same, "study": study},
+    )

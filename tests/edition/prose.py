@@ -3,6 +3,7 @@ r"""The text rule of the edition's prose: math in ``$...$``, never ASCII pseudo-
 Used by the tests over the published ledger (``figures/ledger.csv``) and the transcription
 (``edition/printed.toml``): a rule of the text, checked where the text is, not at run time.
 """
+
 from __future__ import annotations
 
 import re
@@ -16,8 +17,10 @@ ASCII = [
     (re.compile(r"\^T\b"), "^T"),
     (re.compile(r"\b\d+\s*\*\s*(?:\d|1\b)"), "a * product"),
     (re.compile(r"\b(?:sqrt|atan2|arccos|acos)\("), "a function call"),
-    (re.compile(r"\b(?:alpha|beta|theta|phi|psi|kappa|sigma|lambda|nu|Upsilon)(?:_\w+)?\b"),
-     "a Greek letter spelled out"),
+    (
+        re.compile(r"\b(?:alpha|beta|theta|phi|psi|kappa|sigma|lambda|nu|Upsilon)(?:_\w+)?\b"),
+        "a Greek letter spelled out",
+    ),
 ]
 #: the ledger's fields written as Markdown (an equation's ``printed``/``corrected`` are LaTeX bodies)
 MARKDOWN_FIELDS = ("why", "convention", "check", "note")

@@ -13,6 +13,7 @@ step is one call of ``tools/build``; every fault below breaks a build that lacks
 Each test builds a small tree of its own (``make -C <repository> WMR_ROOT=<tree>``): notebooks of a
 line or two, Markdown only where no kernel is needed.
 """
+
 from __future__ import annotations
 
 import os
@@ -39,8 +40,9 @@ linux_only = pytest.mark.skipif(not LINUX, reason="process checks read /proc (Li
 
 
 # ----------------------------------------------------------------------------- trees
-def write_nb(path: Path, code: tuple[str, ...] | list[str] = (), markdown: str | None = None,
-             tags: tuple[str, ...] = ()) -> Path:
+def write_nb(
+    path: Path, code: tuple[str, ...] | list[str] = (), markdown: str | None = None, tags: tuple[str, ...] = ()
+) -> Path:
     nb = nbformat.v4.new_notebook()
     if markdown:
         nb.cells.append(nbformat.v4.new_markdown_cell(markdown, metadata={"tags": list(tags)} if tags else {}))
@@ -64,8 +66,14 @@ def tree(tmp_path: Path, *chapters: tuple[str, list[str]]) -> Path:
 def make(root: Path, *targets: str, marker: str = "", **kw) -> subprocess.Popen:
     env = dict(os.environ, WMR_TEST_MARKER=marker, **kw.pop("env", {}))
     env.pop("WMR_BUILD", None)
-    return subprocess.Popen(["make", "--no-print-directory", "-C", str(ROOT), f"WMR_ROOT={root}", *targets], env=env,
-                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, **kw)
+    return subprocess.Popen(
+        ["make", "--no-print-directory", "-C", str(ROOT), f"WMR_ROOT={root}", *targets],
+        env=env,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.STDOUT,
+        text=True,
+        **kw,
+    )
 
 
 def run_make(root: Path, *targets: str, **kw) -> tuple[int, str]:
@@ -123,8 +131,9 @@ def test_atomic_write_survives_sigkill(tmp_path):
         p.kill()
         p.wait()
         data = target.read_bytes()
-        assert len(data) == 2_000_000 and data in (b"a" * 2_000_000, b"b" * 2_000_000), \
+        assert len(data) == 2_000_000 and data in (b"a" * 2_000_000, b"b" * 2_000_000), (
             f"killed after {delay} s: the file is {len(data)} bytes, mixed or truncated"
+        )
     leftovers = [p.name for p in tmp_path.iterdir() if p.name != "out.bin"]
     # at most the temp file of each killed write: hidden, ignored by git (*.tmp)
     assert len(leftovers) <= 5 and all(re.fullmatch(r"\.out\.bin\..+\.tmp", n) for n in leftovers), leftovers
@@ -148,15 +157,17 @@ def test_stamp_records_the_key_and_every_output(tmp_path):
     out.write_text("{}")
     (chapter / "f.svg").write_text("<svg/>")
     stamp = out.with_suffix(".stamp")
-    stamp.write_text(f'{{"key": "k", "outputs": {{"notebooks/01_a.ipynb": "{X._sha(out)}", '
-                     f'"out/01_a/f.svg": "{X._sha(chapter / "f.svg")}"}}}}')
+    stamp.write_text(
+        f'{{"key": "k", "outputs": {{"notebooks/01_a.ipynb": "{X._sha(out)}", '
+        f'"out/01_a/f.svg": "{X._sha(chapter / "f.svg")}"}}}}'
+    )
     assert X.up_to_date(stamp, "k", out) and not X.up_to_date(stamp, "k2", out)
-    (chapter / "g.svg").write_text("<svg/>")                            # a file it did not write
+    (chapter / "g.svg").write_text("<svg/>")  # a file it did not write
     assert not X.up_to_date(stamp, "k", out)
     (chapter / "g.svg").unlink()
-    (chapter / "f.svg").write_text("<sv")                               # truncated
+    (chapter / "f.svg").write_text("<sv")  # truncated
     assert not X.up_to_date(stamp, "k", out)
-    (chapter / "f.svg").unlink()                                        # deleted
+    (chapter / "f.svg").unlink()  # deleted
     assert not X.up_to_date(stamp, "k", out)
     stamp.write_text("garbage{")
     assert not X.up_to_date(stamp, "k", out)
@@ -167,41 +178,50 @@ def test_cache_reexecutes_only_what_changed_and_the_build_publishes(tmp_path):
     in wmr/ runs every one; a damaged output runs it again; the chapter writes under build/ only,
     and publishing copies into figures/ only the bytes that changed."""
     nb = tmp_path / "notebooks"
-    a = write_nb(nb / "01_a.ipynb", ["import os\nos.getcwd()", "import sys\nsys.executable",
-                                     ("import pathlib\np = pathlib.Path(os.environ['WMR_OUT']) / 'f.svg'\n"
-                                      "p.parent.mkdir(parents=True, exist_ok=True)\n"
-                                      "p.write_text('<svg>complete</svg>')\nstr(p)")])
+    a = write_nb(
+        nb / "01_a.ipynb",
+        [
+            "import os\nos.getcwd()",
+            "import sys\nsys.executable",
+            (
+                "import pathlib\np = pathlib.Path(os.environ['WMR_OUT']) / 'f.svg'\n"
+                "p.parent.mkdir(parents=True, exist_ok=True)\n"
+                "p.write_text('<svg>complete</svg>')\nstr(p)"
+            ),
+        ],
+    )
     b = write_nb(nb / "02_b.ipynb", markdown="Markdown only: executed without a kernel.")
     out = {n: tmp_path / "build" / "notebooks" / n.name for n in (a, b)}
 
     def run(n):
         return X.execute(n, out[n], root=tmp_path)
+
     (tmp_path / "figures").mkdir()
     assert run(a) and run(b)
     cells = nbformat.read(out[a], as_version=4).cells
-    assert cells[0].outputs[0]["data"]["text/plain"].strip("'\"") == str(nb)          # its own folder
+    assert cells[0].outputs[0]["data"]["text/plain"].strip("'\"") == str(nb)  # its own folder
     assert Path(cells[1].outputs[0]["data"]["text/plain"].strip("'\"")).parent == Path(sys.executable).parent
     svg = tmp_path / "build" / "out" / "01_a" / "f.svg"
-    assert cells[2].outputs[0]["data"]["text/plain"].strip("'\"") == str(svg)         # WMR_OUT
+    assert cells[2].outputs[0]["data"]["text/plain"].strip("'\"") == str(svg)  # WMR_OUT
     assert not (tmp_path / "figures" / "f.svg").exists()
-    assert not run(a) and not run(b)                                    # nothing changed: nothing runs
+    assert not run(a) and not run(b)  # nothing changed: nothing runs
     os.utime(b)
-    assert not run(b)                                                   # a new mtime, same bytes
+    assert not run(b)  # a new mtime, same bytes
     write_nb(b, markdown="Edited.")
     assert not run(a) and run(b)
-    svg.write_text("<svg>tru")                                          # truncated by a crash
+    svg.write_text("<svg>tru")  # truncated by a crash
     assert run(a) and svg.read_text() == "<svg>complete</svg>"
-    out[a].write_bytes(out[a].read_bytes()[:200])                       # not JSON any more
+    out[a].write_bytes(out[a].read_bytes()[:200])  # not JSON any more
     out[a].with_suffix(".stamp").write_text("\x00\x01 not a stamp")
     assert run(a) and nbformat.read(out[a], as_version=4).cells
     (tmp_path / "wmr").mkdir()
     (tmp_path / "wmr" / "__init__.py").write_text("# package changed\n")
-    assert not X.up_to_date(out[a].with_suffix(".stamp"), X.key(a, tmp_path), out[a])   # wmr/ changed: every one
+    assert not X.up_to_date(out[a].with_suffix(".stamp"), X.key(a, tmp_path), out[a])  # wmr/ changed: every one
     assert run(b)
     executed = list(out.values())
     assert X.publish(tmp_path / "figures", executed) == [tmp_path / "figures" / "f.svg"]
     assert (tmp_path / "figures" / "f.svg").read_text() == "<svg>complete</svg>"
-    assert X.publish(tmp_path / "figures", executed) == []              # same bytes: nothing written
+    assert X.publish(tmp_path / "figures", executed) == []  # same bytes: nothing written
 
 
 def test_a_failing_notebook_says_where_and_leaves_no_report(tmp_path):
@@ -209,17 +229,27 @@ def test_a_failing_notebook_says_where_and_leaves_no_report(tmp_path):
     rc, log = run_make(root, f"{root}/build/report.html")
     build = root / "build"
     assert rc == 0 and (build / "report.html").exists(), log
-    write_nb(root / "notebooks" / "01_quick.ipynb",
-             ["x = 41", "def f(y):\n    raise ValueError(f'deliberate failure {y}')\nf(x + 1)"])
+    write_nb(
+        root / "notebooks" / "01_quick.ipynb",
+        ["x = 41", "def f(y):\n    raise ValueError(f'deliberate failure {y}')\nf(x + 1)"],
+    )
     rc, log = run_make(root, f"{root}/build/report.html")
     assert rc != 0
-    assert "01_quick.ipynb" in log                                      # which notebook
-    assert "raise ValueError(f'deliberate failure {y}')" in log        # the failing cell's source
-    assert "ValueError: deliberate failure 42" in log                  # the traceback
-    assert "\x1b[" not in log.split("BUILD FAILED", 1)[1]              # readable, no ANSI colours
-    left = [p.name for p in (build / "report.html", build / "report.pdf", build / "report.ipynb",
-                             build / "notebooks" / "01_quick.ipynb",
-                             build / "notebooks" / "01_quick.stamp") if p.exists()]
+    assert "01_quick.ipynb" in log  # which notebook
+    assert "raise ValueError(f'deliberate failure {y}')" in log  # the failing cell's source
+    assert "ValueError: deliberate failure 42" in log  # the traceback
+    assert "\x1b[" not in log.split("BUILD FAILED", 1)[1]  # readable, no ANSI colours
+    left = [
+        p.name
+        for p in (
+            build / "report.html",
+            build / "report.pdf",
+            build / "report.ipynb",
+            build / "notebooks" / "01_quick.ipynb",
+            build / "notebooks" / "01_quick.stamp",
+        )
+        if p.exists()
+    ]
     assert not left, f"a failed build left {left} behind"
 
 
@@ -231,7 +261,7 @@ def test_killing_make_leaves_no_process(tmp_path, sig):
     root = tree(tmp_path, ("01_slow.ipynb", ["import time\ntime.sleep(120)"]))
     p = make(root, "report", marker=marker, start_new_session=True)
     assert wait_for(lambda: kernel_running(marker)), "no kernel started"
-    os.kill(p.pid, sig)                                                # make itself, not its group
+    os.kill(p.pid, sig)  # make itself, not its group
     p.wait(timeout=60)
     left = wait_for(lambda: not marked_processes(marker), timeout=20) or marked_processes(marker)
     assert left is True, f"processes left after {sig.name} to make: {left}"
@@ -243,8 +273,13 @@ def test_sigint_stops_a_background_build(tmp_path):
     it); ``kill -INT`` to the job still stops the step that runs, and with it the build."""
     marker = uuid.uuid4().hex
     root = tree(tmp_path, ("01_slow.ipynb", ["import time\ntime.sleep(120)"]))
-    p = make(root, "report", marker=marker, start_new_session=True,
-             preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_IGN))
+    p = make(
+        root,
+        "report",
+        marker=marker,
+        start_new_session=True,
+        preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_IGN),
+    )
     assert wait_for(lambda: kernel_running(marker))
     t0 = time.monotonic()
     os.killpg(p.pid, signal.SIGINT)
@@ -260,10 +295,15 @@ def test_stop_during_pdf_export_removes_latex_dir(tmp_path):
     root = tree(tmp_path, ("01_quick.ipynb", []))
     fake = tmp_path / "bin"
     fake.mkdir()
-    (fake / "xelatex").write_text("#!/bin/sh\nexec sleep 300\n")        # one process, as xelatex is
+    (fake / "xelatex").write_text("#!/bin/sh\nexec sleep 300\n")  # one process, as xelatex is
     (fake / "xelatex").chmod(0o755)
-    p = make(root, f"{root}/build/report.pdf", marker=marker, start_new_session=True,
-             env={"PATH": f"{fake}{os.pathsep}{os.environ['PATH']}"})
+    p = make(
+        root,
+        f"{root}/build/report.pdf",
+        marker=marker,
+        start_new_session=True,
+        env={"PATH": f"{fake}{os.pathsep}{os.environ['PATH']}"},
+    )
     latex = root / "build" / "tmp" / "pdf"
     assert wait_for(lambda: [q for q in marked_processes(marker) if "sleep 300" in q[1]])
     assert list(latex.iterdir()), "the LaTeX directory should exist while xelatex runs"
@@ -290,8 +330,9 @@ def test_two_builds_of_one_tree_run_one_after_the_other(tmp_path):
 
 # ----------------------------------------------------------------------------- git status
 def _git(root: Path, *args):
-    subprocess.run(["git", "-C", str(root), "-c", "user.name=t", "-c", "user.email=t@t", *args], check=True,
-                   capture_output=True)
+    subprocess.run(
+        ["git", "-C", str(root), "-c", "user.name=t", "-c", "user.email=t@t", *args], check=True, capture_output=True
+    )
 
 
 def test_make_test_fails_when_the_build_modifies_tracked_files(tmp_path):
@@ -313,8 +354,12 @@ def test_make_test_fails_when_the_build_modifies_tracked_files(tmp_path):
     _git(root, "add", "-A")
     _git(root, "commit", "-qm", "init")
     (root / "notes.txt").write_text("an uncommitted edit: not the build's doing\n")
-    args = ("test", f"TEST_BUILD={root}/build/notebooks/findings.ipynb",
-            "LINTED=", "PYTEST_ARGS=-q -p no:cacheprovider -n 0")
+    args = (
+        "test",
+        f"TEST_BUILD={root}/build/notebooks/findings.ipynb",
+        "LINTED=",
+        "PYTEST_ARGS=-q -p no:cacheprovider -n 0",
+    )
     rc, out = run_make(root, *args)
     assert rc == 0 and "left git status as it found it" in out, out
     (root / "tests" / "test_w.py").write_text(writes % "str(__import__('time').time_ns())")
@@ -347,6 +392,7 @@ def test_the_build_is_glue():
 def test_build_modules_are_small_documented_and_doctested(name):
     import doctest
     import importlib
+
     mod = importlib.import_module(f"tools.build.{name}" if name != "__init__" else "tools.build")
     path = Path(str(mod.__file__))
     n = len(path.read_text().splitlines())

@@ -1,4 +1,5 @@
 """The dead zone that `wmr analyze` reports (wmr.analysis.overview) against the edition's simulation of it."""
+
 import numpy as np
 
 import wmr

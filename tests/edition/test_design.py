@@ -1,4 +1,5 @@
 """The design study: worst-case kappa(J) of a layout, the search over offset-wheel designs, kappa along motions."""
+
 from __future__ import annotations
 
 import numpy as np
@@ -30,7 +31,7 @@ def test_equilateral_worst_case_is_kappa_J2(ratio):
     assert res.kappa == pytest.approx(max(ratio, 1 / ratio), rel=1e-9)
     L = wmr.characteristic_length(bot)
     assert float(wmr.condition_number(bot.J(res.beta, L=L))) == pytest.approx(res.kappa, rel=1e-12)
-    assert res.grid_kappa <= res.kappa and res.count == D.FINE_STEPS ** 3
+    assert res.grid_kappa <= res.kappa and res.count == D.FINE_STEPS**3
 
 
 def test_worst_case_agrees_with_a_dense_random_sample():
@@ -79,16 +80,16 @@ def test_screening_kernel_matches_worst_kappa_on_the_same_grid():
 # ------------------------------------------------------------------------------------------ the search
 def test_search_is_at_least_as_good_as_the_paper(free):
     assert free.best_kappa <= free.paper_kappa * (1 + free.rtol)
-    assert free.best_kappa >= 1.0                                   # (31)
-    assert free.best.ratio == pytest.approx(1.0, abs=1e-3)          # it finds d = r
-    assert free.best.centroid_offset() < 1e-3                       # and C at the centroid
+    assert free.best_kappa >= 1.0  # (31)
+    assert free.best.ratio == pytest.approx(1.0, abs=1e-3)  # it finds d = r
+    assert free.best.centroid_offset() < 1e-3  # and C at the centroid
 
 
 def test_the_paper_design_is_optimal_computed(free):
     """kappa >= 1 (31) and the paper's worst case is 1: optimal; the search confirms it within rtol."""
     assert free.paper_kappa == pytest.approx(1.0, abs=1e-9)
     assert free.paper_optimal
-    s = np.sort(free.best.sides())                                  # ... and not the only optimum
+    s = np.sort(free.best.sides())  # ... and not the only optimum
     assert s[-1] - s[0] > 0.1 * s[-1]
 
 
@@ -136,7 +137,7 @@ def test_kappa_along_motions_of_a_rectangle():
     on = MK.motion_kappa(bot, MK.rotation_twists(R * np.stack([np.cos(ang), np.sin(ang)], -1)))
     off = MK.motion_kappa(bot, MK.rotation_twists(0.9 * R * np.stack([np.cos(ang), np.sin(ang)], -1)))
     assert np.isinf(on).all() and np.isfinite(off).all()
-    assert np.isinf(MK.motion_kappa(bot, [0.0, 0.3, -0.2]))          # translation
+    assert np.isinf(MK.motion_kappa(bot, [0.0, 0.3, -0.2]))  # translation
     assert float(MK.motion_kappa(bot, [1.0, 0.0, 0.0])) >= np.sqrt(2) - 1e-12
 
 
@@ -153,14 +154,15 @@ def test_motion_kappa_is_unit_invariant():
     big = study.swerve(600.0, 400.0, r=50.0)
     U = np.array([[0.1, 0.05], [0.5, -0.3], [-0.2, 0.6]])
     assert MK.motion_kappa(bot, MK.rotation_twists(U)) == pytest.approx(
-        MK.motion_kappa(big, MK.rotation_twists(U * 1000)), rel=1e-9)
+        MK.motion_kappa(big, MK.rotation_twists(U * 1000)), rel=1e-9
+    )
 
 
 # ------------------------------------------------------------------------------------------- exercises
 def test_describe_design():
-    assert "not concyclic" in study.describe_design(wmr.Robot([wmr.CentredWheel(p, r=0.05) for p in
-                                                               [(0.35, 0.2), (-0.3, 0.25), (-0.3, -0.25),
-                                                                (0.3, -0.2)]]))
+    assert "not concyclic" in study.describe_design(
+        wmr.Robot([wmr.CentredWheel(p, r=0.05) for p in [(0.35, 0.2), (-0.3, 0.25), (-0.3, -0.25), (0.3, -0.2)]])
+    )
     assert "worst-case" in study.describe_design(wmr.paper_robot("offset", L=0.3, r=0.05))
 
 
@@ -168,9 +170,11 @@ def test_describe_design():
 def test_figure_8_3_tells_every_strategy_apart():
     """plain and robot move alike here: the figure gives every run its own marker and names the coincident one."""
     import matplotlib
+
     matplotlib.use("Agg")
     from edition.transient_plot import coincident_runs, distinguished_transient_figure
     from wmr.swerve import direction_change, resteer_study
+
     tr = resteer_study(study.swerve(0.6, 0.4, r=0.05), direction_change(spin=0.5, dt=0.05), steer_rate=2 * np.pi)
     labels = [run.label for run in tr.runs]
     same = coincident_runs(tr)

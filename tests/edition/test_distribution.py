@@ -1,6 +1,7 @@
 """The tools of the release and the docs (tools/release_check.py, tools/mathjax.py, tools/docs.py,
 docs/_ext): their checks catch what they are for, without building anything or using the network.
 (`make test` then runs them for real: `make release`, `make docs`.)"""
+
 import doctest
 import importlib
 import io
@@ -16,7 +17,7 @@ from tools import release_check as rc
 
 from conftest import ROOT
 
-sys.path.insert(0, str(ROOT / "docs" / "_ext"))       # the Sphinx extensions, imported by name below
+sys.path.insert(0, str(ROOT / "docs" / "_ext"))  # the Sphinx extensions, imported by name below
 
 EXT = ("wmr_markdown", "wmr_aliases")
 
@@ -32,8 +33,9 @@ def test_examples_in_the_docstrings(module):
 def test_the_shipped_tests_need_nothing_of_the_repository():
     """What the release check refuses, checked here too (fast): a test in tests/ that imports the edition."""
     for f in sorted((ROOT / "tests").glob("*.py")):
-        assert rc.repo_only_imports(f.read_text(encoding="utf-8")) == [], \
+        assert rc.repo_only_imports(f.read_text(encoding="utf-8")) == [], (
             f"{f.name} imports the edition or the build: move it to tests/edition/"
+        )
 
 
 def test_version_and_name_read_without_importing():
@@ -41,14 +43,21 @@ def test_version_and_name_read_without_importing():
 
 
 def test_sdist_check_sees_what_is_missing_or_extra():
-    tree = {*rc.SDIST_FILES, *(f"tests/{p.name}" for p in (ROOT / "tests").glob("*.py")),
-            *(p.relative_to(ROOT).as_posix() for p in (ROOT / "examples").rglob("*") if p.is_file())}
+    tree = {
+        *rc.SDIST_FILES,
+        *(f"tests/{p.name}" for p in (ROOT / "tests").glob("*.py")),
+        *(p.relative_to(ROOT).as_posix() for p in (ROOT / "examples").rglob("*") if p.is_file()),
+    }
     assert rc.check_sdist(sorted(tree)) == []
-    missing = rc.check_sdist(sorted(tree - {"tests/conftest.py", "examples/swerve4.toml", "examples/urdf/swerve.urdf",
-                                            "LICENSE"}))
-    assert missing == ["missing from the sdist: LICENSE", "missing from the sdist: tests/conftest.py",
-                       "missing from the sdist: examples/swerve4.toml",
-                       "missing from the sdist: examples/urdf/swerve.urdf"]
+    missing = rc.check_sdist(
+        sorted(tree - {"tests/conftest.py", "examples/swerve4.toml", "examples/urdf/swerve.urdf", "LICENSE"})
+    )
+    assert missing == [
+        "missing from the sdist: LICENSE",
+        "missing from the sdist: tests/conftest.py",
+        "missing from the sdist: examples/swerve4.toml",
+        "missing from the sdist: examples/urdf/swerve.urdf",
+    ]
     extra = rc.check_sdist(sorted(tree | {"tests/edition/test_x.py", "notebooks/01.ipynb", "tests/__pycache__/a.pyc"}))
     assert any("tests/edition/" in p for p in extra) and any("notebooks/" in p for p in extra)
     assert any("compiled files" in p for p in extra)
@@ -63,8 +72,13 @@ Requires-Dist: numpy>=1.26
 Requires-Dist: sympy>=1.12
 Requires-Dist: dask>=2024.1; extra == "dask"
 """
-GOOD_NAMES = ["wmr/__init__.py", "wmr/py.typed", "wmr/_version.py", "wmr_kinematics-0.1.0.dist-info/METADATA",
-              "wmr_kinematics-0.1.0.dist-info/licenses/LICENSE"]
+GOOD_NAMES = [
+    "wmr/__init__.py",
+    "wmr/py.typed",
+    "wmr/_version.py",
+    "wmr_kinematics-0.1.0.dist-info/METADATA",
+    "wmr_kinematics-0.1.0.dist-info/licenses/LICENSE",
+]
 ENTRY = "[console_scripts]\nwmr = wmr.cli:main\n"
 
 
@@ -72,17 +86,20 @@ def test_wheel_check_accepts_a_good_wheel():
     assert rc.check_wheel(GOOD_NAMES, GOOD_METADATA, ENTRY, "0.1.0", "wmr-kinematics") == []
 
 
-@pytest.mark.parametrize("names, metadata, entry, words", [
-    (GOOD_NAMES + ["edition/__init__.py"], GOOD_METADATA, ENTRY, "more than wmr/"),
-    ([n for n in GOOD_NAMES if "py.typed" not in n], GOOD_METADATA, ENTRY, "wmr/py.typed"),
-    ([n for n in GOOD_NAMES if "LICENSE" not in n], GOOD_METADATA, ENTRY, "licenses/LICENSE"),
-    (GOOD_NAMES, GOOD_METADATA.replace("License-Expression: MIT\n", ""), ENTRY, "License-Expression"),
-    (GOOD_NAMES, GOOD_METADATA + "License: MIT\n", ENTRY, "deprecated License field"),
-    (GOOD_NAMES, GOOD_METADATA.replace("Name: wmr-kinematics", "Name: wmr"), ENTRY, "Name"),
-    (GOOD_NAMES, GOOD_METADATA.replace("Version: 0.1.0", "Version: 0.2.0"), ENTRY, "Version"),
-    (GOOD_NAMES, GOOD_METADATA + "Requires-Dist: pandas>=2\n", ENTRY, "pandas"),
-    (GOOD_NAMES, GOOD_METADATA, "[console_scripts]\nwmr = wmr.cli:run\n", "console script"),
-])
+@pytest.mark.parametrize(
+    "names, metadata, entry, words",
+    [
+        (GOOD_NAMES + ["edition/__init__.py"], GOOD_METADATA, ENTRY, "more than wmr/"),
+        ([n for n in GOOD_NAMES if "py.typed" not in n], GOOD_METADATA, ENTRY, "wmr/py.typed"),
+        ([n for n in GOOD_NAMES if "LICENSE" not in n], GOOD_METADATA, ENTRY, "licenses/LICENSE"),
+        (GOOD_NAMES, GOOD_METADATA.replace("License-Expression: MIT\n", ""), ENTRY, "License-Expression"),
+        (GOOD_NAMES, GOOD_METADATA + "License: MIT\n", ENTRY, "deprecated License field"),
+        (GOOD_NAMES, GOOD_METADATA.replace("Name: wmr-kinematics", "Name: wmr"), ENTRY, "Name"),
+        (GOOD_NAMES, GOOD_METADATA.replace("Version: 0.1.0", "Version: 0.2.0"), ENTRY, "Version"),
+        (GOOD_NAMES, GOOD_METADATA + "Requires-Dist: pandas>=2\n", ENTRY, "pandas"),
+        (GOOD_NAMES, GOOD_METADATA, "[console_scripts]\nwmr = wmr.cli:run\n", "console script"),
+    ],
+)
 def test_wheel_check_sees_each_defect(names, metadata, entry, words):
     problems = rc.check_wheel(names, metadata, entry, "0.1.0", "wmr-kinematics")
     assert len(problems) == 1 and words in problems[0], problems
@@ -97,7 +114,7 @@ def test_constraints_keep_every_pin_of_the_lock():
 
 def test_the_readme_has_python_examples_for_the_release_to_run():
     blocks = rc.python_blocks((ROOT / "README.md").read_text(encoding="utf-8"))
-    assert len(blocks) >= 2 and all("import wmr" in b for b in blocks)   # each one pastes on its own
+    assert len(blocks) >= 2 and all("import wmr" in b for b in blocks)  # each one pastes on its own
 
 
 def test_inputs_hash_follows_the_sdist_contents(tmp_path):
@@ -107,10 +124,10 @@ def test_inputs_hash_follows_the_sdist_contents(tmp_path):
     (tmp_path / "wmr" / "x.py").write_text("x = 1", encoding="utf-8")
     h1 = rc.inputs_hash(tmp_path)
     (tmp_path / "wmr" / "__pycache__").mkdir()
-    (tmp_path / "wmr" / "__pycache__" / "x.pyc").write_bytes(b"\0")       # not an input
+    (tmp_path / "wmr" / "__pycache__" / "x.pyc").write_bytes(b"\0")  # not an input
     assert rc.inputs_hash(tmp_path) == h1
     (tmp_path / "tests" / "edition").mkdir(parents=True)
-    (tmp_path / "tests" / "edition" / "test_x.py").write_text("", encoding="utf-8")   # not in the sdist
+    (tmp_path / "tests" / "edition" / "test_x.py").write_text("", encoding="utf-8")  # not in the sdist
     assert rc.inputs_hash(tmp_path) == h1
     (tmp_path / "wmr" / "x.py").write_text("x = 2", encoding="utf-8")
     assert rc.inputs_hash(tmp_path) != h1
@@ -130,14 +147,15 @@ def _tgz(files):
 def test_a_tarball_that_is_not_the_release_is_refused(tmp_path, monkeypatch):
     fake = _tgz({"package/es5/tex-svg-full.js": b"alert('not mathjax')"})
 
-    def pack(dest):                          # what npm would have fetched
+    def pack(dest):  # what npm would have fetched
         out = dest / ".download"
         out.write_bytes(fake)
         return out
+
     monkeypatch.setattr(mathjax, "_npm_pack", pack)
     with pytest.raises(mathjax.MathJaxError, match="integrity mismatch"):
         mathjax.bundle("tex-svg-full.js", cache=tmp_path)
-    assert not (tmp_path / f"mathjax-{mathjax.VERSION}.tgz").exists()       # never kept under its name
+    assert not (tmp_path / f"mathjax-{mathjax.VERSION}.tgz").exists()  # never kept under its name
     assert not list(tmp_path.rglob("tex-svg-full.js"))
 
 
@@ -145,8 +163,11 @@ def test_the_pinned_release_is_extracted_and_kept_equal(tmp_path, monkeypatch):
     """With the integrity of a tarball pinned, its bundle is extracted, and a changed copy is replaced."""
     data = _tgz({"package/es5/tex-svg-full.js": b"MathJax = {};", "package/es5/a11y/x.js": b""})
     (tmp_path / f"mathjax-{mathjax.VERSION}.tgz").write_bytes(data)
-    monkeypatch.setattr(mathjax, "INTEGRITY", "sha512-" + __import__("base64").b64encode(
-        __import__("hashlib").sha512(data).digest()).decode())
+    monkeypatch.setattr(
+        mathjax,
+        "INTEGRITY",
+        "sha512-" + __import__("base64").b64encode(__import__("hashlib").sha512(data).digest()).decode(),
+    )
     monkeypatch.setattr(mathjax, "_npm_pack", lambda dest: pytest.fail("fetched although the cache is good"))
     path = mathjax.bundle("tex-svg-full.js", cache=tmp_path)
     assert path.read_bytes() == b"MathJax = {};"
@@ -161,7 +182,7 @@ def test_the_pinned_release_is_extracted_and_kept_equal(tmp_path, monkeypatch):
 
 # ------------------------------------------------------------------------------------------ the docs
 def test_every_guide_page_names_a_readme_section_that_exists():
-    wmr_markdown = importlib.import_module("wmr_markdown")         # docs/_ext (on sys.path above)
+    wmr_markdown = importlib.import_module("wmr_markdown")  # docs/_ext (on sys.path above)
     pages = sorted((ROOT / "docs").rglob("*.rst"))
     used = 0
     for page in pages:
@@ -177,15 +198,22 @@ def test_every_guide_page_names_a_readme_section_that_exists():
 def _guide(tmp_path, readme):
     """Build a one-page guide from ``readme`` with the extension; return (exit status, log)."""
     import subprocess
+
     (tmp_path / "README.md").write_text(readme, encoding="utf-8")
     src = tmp_path / "src"
     src.mkdir()
-    (src / "conf.py").write_text(f"import sys; sys.path.insert(0, {str(ROOT / 'docs' / '_ext')!r})\n"
-                                 f"extensions = ['wmr_markdown']\nwmr_repository = {str(tmp_path)!r}\n",
-                                 encoding="utf-8")
+    (src / "conf.py").write_text(
+        f"import sys; sys.path.insert(0, {str(ROOT / 'docs' / '_ext')!r})\n"
+        f"extensions = ['wmr_markdown']\nwmr_repository = {str(tmp_path)!r}\n",
+        encoding="utf-8",
+    )
     (src / "index.rst").write_text("Guide\n=====\n\n.. markdown:: README.md\n   :section: Use\n", encoding="utf-8")
-    proc = subprocess.run([sys.executable, "-m", "sphinx", "-W", "-q", "-b", "html", str(src), str(tmp_path / "out")],
-                          capture_output=True, text=True, check=False)
+    proc = subprocess.run(
+        [sys.executable, "-m", "sphinx", "-W", "-q", "-b", "html", str(src), str(tmp_path / "out")],
+        capture_output=True,
+        text=True,
+        check=False,
+    )
     return proc.returncode, proc.stdout + proc.stderr
 
 
@@ -209,10 +237,11 @@ print("two:", 1 + 1)   # {claim}
 
 def test_the_guide_proves_its_examples(tmp_path):
     from wmr.cli import _version
+
     code, log = _guide(tmp_path, README.format(version=_version(), claim="2"))
     assert code == 0, log
     page = (tmp_path / "out" / "index.html").read_text(encoding="utf-8")
-    assert "two: 2" in page and "Next" not in page                   # the output shown; one section only
+    assert "two: 2" in page and "Next" not in page  # the output shown; one section only
 
 
 def test_a_drifted_console_example_or_a_false_comment_fails_the_build(tmp_path):
@@ -225,12 +254,16 @@ def test_a_drifted_console_example_or_a_false_comment_fails_the_build(tmp_path):
 def test_the_pages_may_load_nothing_from_the_network(tmp_path):
     (tmp_path / "_static").mkdir()
     (tmp_path / "_static" / "m.js").write_text("", encoding="utf-8")
-    (tmp_path / "ok.html").write_text('<script src="_static/m.js"></script><a href="ok.html#top">x</a>'
-                                      '<a href="https://example.org/">an outside link is fine</a>', encoding="utf-8")
+    (tmp_path / "ok.html").write_text(
+        '<script src="_static/m.js"></script><a href="ok.html#top">x</a>'
+        '<a href="https://example.org/">an outside link is fine</a>',
+        encoding="utf-8",
+    )
     assert docs.check_pages(tmp_path) == []
     (tmp_path / "bad.html").write_text('<link rel="stylesheet" href="//cdn.example/x.css">', encoding="utf-8")
     assert docs.check_pages(tmp_path) == ["bad.html loads //cdn.example/x.css from the network"]
-    (tmp_path / "bad.html").write_text("<p><strong>``wmr-kinematics``</strong></p><pre>``ok in code``</pre>",
-                                       encoding="utf-8")
+    (tmp_path / "bad.html").write_text(
+        "<p><strong>``wmr-kinematics``</strong></p><pre>``ok in code``</pre>", encoding="utf-8"
+    )
     (problem,) = docs.check_pages(tmp_path)
     assert problem.startswith("bad.html shows raw markup")

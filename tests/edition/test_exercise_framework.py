@@ -1,5 +1,6 @@
 """The fair-check framework (edition.exercises.framework and friends), tested with answer tables on small checks
 made here, and every registered exercise of the edition against missing and junk answers."""
+
 from __future__ import annotations
 
 import re
@@ -29,7 +30,7 @@ from edition.exercises.tolerance import angle_gap, decimals, sig_figs, unit_hint
 
 # ------------------------------------------------------------------ three checks built as the chapters build theirs
 TOL_ANG = decimals(2, "degrees")
-BETA = np.array([30.0, 150.0, 270.0])           # computed stand-ins: three lines 120 degrees apart
+BETA = np.array([30.0, 150.0, 270.0])  # computed stand-ins: three lines 120 degrees apart
 
 
 @exercise("T.1", answer="three steering angles in degrees", tolerance=TOL_ANG, units={"beta": "deg"}, register=False)
@@ -43,7 +44,7 @@ def angles_demo(beta):
 
 
 TOL_L = sig_figs(3)
-L_TRUE = float(np.sqrt(2) * 0.355894)           # a length with a scale: relative tolerance
+L_TRUE = float(np.sqrt(2) * 0.355894)  # a length with a scale: relative tolerance
 
 
 @exercise("T.2", answer="the length $L$ in metres", tolerance=TOL_L, register=False)
@@ -56,7 +57,7 @@ def length_demo(L):
     return wrong(f"With $L = {TOL_L.show(x)}$ m the matrix is not isotropic.")
 
 
-THETA = (S.r * S.theta_dot_i * sp.cos(S.beta_i) + S.d * S.phi_dot_i)
+THETA = S.r * S.theta_dot_i * sp.cos(S.beta_i) + S.d * S.phi_dot_i
 
 
 @exercise("T.3", answer="an expression in $r$, $d$, the rates and $\\beta_i$", register=False)
@@ -73,10 +74,10 @@ def symbolic_demo(expr):
 
 @exercise("T.4", answer="a number", register=False)
 def broken_demo(x):
-    return right(str(1 / (answers.number(x) - 1)))        # a defect: divides by zero at x = 1
+    return right(str(1 / (answers.number(x) - 1)))  # a defect: divides by zero at x = 1
 
 
-r_, d_, thd_, phd_, b_ = sp.symbols("r d thetadot_i phi_dot_i beta_i")     # the student's own, no assumptions
+r_, d_, thd_, phd_, b_ = sp.symbols("r d thetadot_i phi_dot_i beta_i")  # the student's own, no assumptions
 
 TABLE = {
     angles_demo: [
@@ -108,8 +109,9 @@ TABLE = {
     symbolic_demo: [
         right_case("the package's symbols", THETA),
         right_case("the student's own symbols, expanded differently", d_ * phd_ + r_ * thd_ * sp.cos(b_)),
-        right_case("an equivalent trigonometric form",
-                   S.d * S.phi_dot_i + S.r * S.theta_dot_i * sp.sin(S.beta_i + sp.pi / 2)),
+        right_case(
+            "an equivalent trigonometric form", S.d * S.phi_dot_i + S.r * S.theta_dot_i * sp.sin(S.beta_i + sp.pi / 2)
+        ),
         wrong_case("rolling term off", d_ * phd_ + r_ * thd_ * sp.sin(b_), says="not equal"),
         wrong_case("trivial zero", sp.Integer(0), says="depend"),
         malformed_case("a stranger symbol", sp.Symbol("q") * r_, says="does not have"),
@@ -120,8 +122,9 @@ TABLE = {
 }
 
 
-@pytest.mark.parametrize("check,case", [(c, k) for c, ks in TABLE.items() for k in ks],
-                         ids=lambda x: getattr(x, "__name__", str(x)))
+@pytest.mark.parametrize(
+    "check,case", [(c, k) for c, ks in TABLE.items() for k in ks], ids=lambda x: getattr(x, "__name__", str(x))
+)
 def test_answer_table(check, case):
     verify(check, case)
 
@@ -163,11 +166,15 @@ def test_result_points_and_markdown():
         angles_demo([1, 2, 3]).require()
 
 
-@pytest.mark.parametrize("bad", [
-    Result(True, "ok", max_points=2.0).__class__(False, "a\n\nb"),
-    Result(False, "the gap is 2.88e-16"),
-    Result(False, "one\ntwo", status="malformed"),
-], ids=["two paragraphs", "raw e-notation", "malformed on two lines"])
+@pytest.mark.parametrize(
+    "bad",
+    [
+        Result(True, "ok", max_points=2.0).__class__(False, "a\n\nb"),
+        Result(False, "the gap is 2.88e-16"),
+        Result(False, "one\ntwo", status="malformed"),
+    ],
+    ids=["two paragraphs", "raw e-notation", "malformed on two lines"],
+)
 def test_the_harness_catches_a_bad_verdict(bad):
     assert problems(bad)
 
@@ -204,7 +211,7 @@ def test_unit_hints_say_only_what_is_true():
     assert "degrees?" in unit_hint([30, 150, 270], "rad")
     assert "np.degrees" in unit_hint([0.5, 2.6, 4.7], "deg")
     assert unit_hint([30, 150, 270], "deg") == "" and unit_hint([0.5, 1.0], "rad") == ""
-    assert unit_hint([0, 90, 180], "deg") == ""          # whole numbers at most 2 pi are plausible degrees
+    assert unit_hint([0, 90, 180], "deg") == ""  # whole numbers at most 2 pi are plausible degrees
 
 
 def test_symbols_are_mapped_by_name_ignoring_assumptions():
@@ -239,6 +246,7 @@ def test_exercise_numbers_and_names_are_unique():
 @pytest.mark.parametrize("ex", EXERCISES, ids=lambda e: e.number)
 def test_every_exercise_survives_missing_and_junk_answers(ex):
     import inspect
+
     n = len([p for p in inspect.signature(ex.check).parameters.values() if p.default is inspect.Parameter.empty])
     verify(ex.check, missing_case("None", *([None] * n)))
     for case in junk_cases(n):

@@ -1,6 +1,7 @@
 """Answer tables of the exercises of chapters 4, 5, 6 and 8: right, rounded-right, wrong, trivial, the other angle
 unit, malformed -- and every case issue 20 names (4.2 trivial [30, 30, 30]; 5.1/5.2 rounded to 4 decimals; 5.3
 U = (-0.7, 0) without a false message; 8.3 U = (0, 0.3606) not told kappa = 1.21e4)."""
+
 from __future__ import annotations
 
 import numpy as np
@@ -24,7 +25,7 @@ def _turned_round(beta):
 
 
 # ----------------------------------------------------------------------------------------------- 4.1
-BETA_4_1 = [-60.0, 120.0, -60.0]            # every j_i along 30 deg, wheel 2 turned round: (i) and (iii) miss it
+BETA_4_1 = [-60.0, 120.0, -60.0]  # every j_i along 30 deg, wheel 2 turned round: (i) and (iii) miss it
 TABLE_4_1 = [
     right_case("a wheel turned round", BETA_4_1, says="misses a wheel turned by"),
     right_case("another wheel turned round", [120.0, -60.0, 120.0]),
@@ -72,8 +73,10 @@ TABLE_4_2 = [
     right_case("rounded to 0.01 degree", rounded(_beta_4_2(), TOL_4_2)),
     # rounding moves each line by up to 0.005 degree: it passes wherever on the circle D_P lies, also where a wheel
     # is close to the turning point (a student's rounded solution was once refused there)
-    *[right_case(f"rounded to 0.01 degree, D_P at {a} rad on the circle", np.round(_beta_4_2(a), 2))
-      for a in np.linspace(0.0, 2 * np.pi, 24, endpoint=False).round(3)],
+    *[
+        right_case(f"rounded to 0.01 degree, D_P at {a} rad on the circle", np.round(_beta_4_2(a), 2))
+        for a in np.linspace(0.0, 2 * np.pi, 24, endpoint=False).round(3)
+    ],
     right_case("each wheel turned round", _beta_4_2() + 180.0),
     wrong_case("trivial: [30, 30, 30]", [30.0, 30.0, 30.0], says="parallel", never_says="can turn about"),
     wrong_case("trivial: all zero", [0.0, 0.0, 0.0], says="cannot turn about a point"),
@@ -95,6 +98,7 @@ def test_4_2(case):
 def test_4_2_the_robot_is_not_the_papers_and_the_circle_matters():
     """The geometry the check uses agrees with wmr's classification on exact configurations."""
     from wmr.analysis.singularities import classify
+
     bot = X.robot_4_2()
     on = classify(bot, np.radians(_beta_4_2()))
     inside = classify(bot, np.radians(_beta_4_2_inside()))
@@ -156,8 +160,12 @@ def test_5_2(case):
 # ----------------------------------------------------------------------------------------------- 5.3
 TABLE_5_3 = [
     right_case("on the positive body x-axis", (0.7, 0.0), says="along the body axis"),
-    right_case("U = (-0.7, 0): on the negative half (issue 20: no false message)", (-0.7, 0.0), says="-\\\\mathbf i",
-               never_says="positive"),
+    right_case(
+        "U = (-0.7, 0): on the negative half (issue 20: no false message)",
+        (-0.7, 0.0),
+        says="-\\\\mathbf i",
+        never_says="positive",
+    ),
     right_case("within 1 mm of the axis", (0.7, 0.0009)),
     right_case("between C and wheel 1", (-0.2, 0.0)),
     wrong_case("trivial: U = C", (0.0, 0.0), says="0/0"),
@@ -180,6 +188,7 @@ def test_5_3_the_printed_rule_works_along_the_whole_axis_and_nowhere_else():
     """What the check accepts is where the printed (65) is exact: sampled on and off the body x-axis."""
     from edition.exercises.ch5_steering import printed_65_angles, rotation_twist
     from wmr.analysis.kinematics import inverse
+
     for x in (-1.5, -0.7, -0.2, 0.3, 0.7, 2.0):
         u = np.array([x, 0.0])
         assert inverse(PAPER, printed_65_angles(u, PAPER.mount_points), rotation_twist(u)).admissible
@@ -229,6 +238,7 @@ def test_6_2(case):
 
 def test_6_1_needed_rates_come_from_the_model():
     from edition.exercises.ch6_motion import needed_rates
+
     assert np.allclose(needed_rates(), 0.5, rtol=1e-6) and np.allclose(needed_rates(1.3), 0.5, rtol=1e-6)
 
 
@@ -291,6 +301,7 @@ def test_8_3(case):
 
 def test_8_3_the_circle_is_where_kappa_is_infinite():
     from wmr.analysis.motion_kappa import motion_kappa, rotation_twists
+
     bot = study.swerve(0.6, 0.4)
     assert np.isinf(motion_kappa(bot, rotation_twists(np.array([0.0, R_8_3]))))
     assert np.isfinite(motion_kappa(bot, rotation_twists(np.array([0.0, 0.3606]))))
@@ -301,6 +312,7 @@ def _markdown(name):
     import nbformat
 
     from conftest import ROOT
+
     nb = nbformat.read(ROOT / "notebooks" / f"{name}.ipynb", as_version=4)
     return " ".join(" ".join(c.source.split()) for c in nb.cells if c.cell_type == "markdown")
 

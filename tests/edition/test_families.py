@@ -1,5 +1,6 @@
 """The paper's singular families (edition.families): every sample, rank count and verdict checked
 against independent line geometry; the prose is Markdown with $...$ math; the CSV is deterministic."""
+
 import csv
 import re
 from typing import Any
@@ -13,7 +14,7 @@ from edition import families as fam
 from conftest import axle, rolling_dir
 
 DEG = np.pi / 180
-P = wmr.paper_robot("centred").mount_points                      # L = 1: the circumcircle has radius 1
+P = wmr.paper_robot("centred").mount_points  # L = 1: the circumcircle has radius 1
 
 
 def line_det(dirs):
@@ -46,7 +47,7 @@ def test_every_sample_has_concurrent_wheel_planes(families):
 def test_rank_counts_are_the_concurrent_axles(families):
     for f in families.values():
         counts = {int(r): int(k) for r, k, _ in re.findall(r"(\d) \((\d+)/(\d+)\)", f.rank_F)}
-        concurrent = int(np.sum(np.abs(line_det(axle(f.samples))) <= 1e-9))    # rank F = 5 iff axles concurrent
+        concurrent = int(np.sum(np.abs(line_det(axle(f.samples))) <= 1e-9))  # rank F = 5 iff axles concurrent
         assert counts.get(5, 0) == concurrent, f.key
         assert counts.get(5, 0) + counts.get(6, 0) == len(f.samples), f.key
 
@@ -54,14 +55,18 @@ def test_rank_counts_are_the_concurrent_axles(families):
 def test_rotation_about_a_point_of_the_circumcircle(families):
     b = families["v-circle"].samples
     i1, i2 = axle(b[:, 0]), axle(b[:, 1])
-    s = cross(P[1] - P[0], i2) / cross(i1, i2)                             # axle 1 meets axle 2 at U
+    s = cross(P[1] - P[0], i2) / cross(i1, i2)  # axle 1 meets axle 2 at U
     U = P[0] + s[:, None] * i1
-    assert np.allclose(np.linalg.norm(U, axis=1), 1.0, atol=1e-9)          # on the circle through the P_i
+    assert np.allclose(np.linalg.norm(U, axis=1), 1.0, atol=1e-9)  # on the circle through the P_i
     assert np.all(np.abs(line_det(axle(b))) <= 1e-9)
 
 
-PRINTED: dict[str, Any] = {"(i)": None, "(ii)": ((1, 3), (60, -120)), "(iii)": ((1, 2), (-60, 120)),
-                           "(iv)": ((2, 3), (0, 180))}
+PRINTED: dict[str, Any] = {
+    "(i)": None,
+    "(ii)": ((1, 3), (60, -120)),
+    "(iii)": ((1, 2), (-60, 120)),
+    "(iv)": ((2, 3), (0, 180)),
+}
 
 
 def printed_holds(item, b):
@@ -78,8 +83,13 @@ def test_listed_in_paper_agrees_with_the_printed_items(families):
         if item in PRINTED:
             holds = printed_holds(item, f.samples)
             assert holds.all() if f.listed_in_paper == "yes" else not holds.any(), key
-    assert {k for k, f in families.items() if f.listed_in_paper == "no"} == \
-        {"i'", "pair-13'", "pair-12'", "pair-23'", "v-circle"}
+    assert {k for k, f in families.items() if f.listed_in_paper == "no"} == {
+        "i'",
+        "pair-13'",
+        "pair-12'",
+        "pair-23'",
+        "v-circle",
+    }
 
 
 def test_check_paper_items_against_sampled_geometry():
@@ -90,7 +100,7 @@ def test_check_paper_items_against_sampled_geometry():
         if item == "(i)":
             b = np.stack([tau, tau, tau], axis=1)
         elif item == "(v)":
-            D = np.stack([np.cos(3 * tau), np.sin(2 * tau)], axis=1) * 2.3        # planes through D
+            D = np.stack([np.cos(3 * tau), np.sin(2 * tau)], axis=1) * 2.3  # planes through D
             v = D[:, None, :] - P
             b = np.arctan2(-v[..., 0], v[..., 1])
         else:
@@ -107,14 +117,14 @@ def test_prose_is_markdown_with_math(families):
             assert text.count("$") % 2 == 0, (f.key, text)
             prose = re.sub(r"\$[^$]*\$", "", text)
             assert not ascii_math.search(prose), (f.key, text)
-            assert "\\" not in prose, (f.key, text)                           # TeX only inside $...$
+            assert "\\" not in prose, (f.key, text)  # TeX only inside $...$
 
 
 def test_write_csv_is_deterministic_and_atomic(tmp_path):
     rows = fam.write_csv(tmp_path / "a.csv", n=12, exact=False)
     fam.write_csv(tmp_path / "b.csv", n=12, exact=False)
     assert (tmp_path / "a.csv").read_bytes() == (tmp_path / "b.csv").read_bytes()
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["a.csv", "b.csv"]       # no temporary files left
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["a.csv", "b.csv"]  # no temporary files left
     with open(tmp_path / "a.csv", newline="", encoding="utf-8") as f:
         back = list(csv.DictReader(f))
     assert back == [{k: str(v) for k, v in r.items()} for r in rows]

@@ -1,4 +1,5 @@
 """edition.ledger: verdicts computed from findings, a chapter's rows, assembling the ledger, the text of its rows."""
+
 import csv
 import math
 from pathlib import Path
@@ -37,12 +38,15 @@ def test_verdict_is_computed_from_the_finding():
     assert LG.grade(Finding("42", True, "proven", 0.0, corrected="d^2", corrected_holds=True, severity="typo")) == "ok"
 
 
-@pytest.mark.parametrize("kw, words", [
-    (dict(corrected=""), ["(15)", "refuted", "no corrected form"]),
-    (dict(corrected_holds=False), ["(15)", "no corrected form was proven"]),
-    (dict(severity="maybe"), ["(15)", "severity", "'maybe'"]),
-    (dict(why=""), ["(15)", "why"]),
-])
+@pytest.mark.parametrize(
+    "kw, words",
+    [
+        (dict(corrected=""), ["(15)", "refuted", "no corrected form"]),
+        (dict(corrected_holds=False), ["(15)", "no corrected form was proven"]),
+        (dict(severity="maybe"), ["(15)", "severity", "'maybe'"]),
+        (dict(why=""), ["(15)", "why"]),
+    ],
+)
 def test_refuted_without_proof_fails_loudly(kw, words):
     with pytest.raises(ValueError) as exc:
         LG.grade(refuted(15, **kw))
@@ -58,6 +62,7 @@ def test_printed_holds_must_be_a_bool():
 
 def test_row_has_the_contract_columns_and_the_transcribed_text():
     from edition.transcription import claim, printed
+
     led = LG.Ledger("01_x")
     row = led.add(refuted(15, severity="wrong"))
     assert tuple(row) == LG.COLUMNS
@@ -70,30 +75,39 @@ def test_row_has_the_contract_columns_and_the_transcribed_text():
 
 
 def test_ok_rows_drop_a_stale_correction():
-    row = LG.Ledger("nb").add(Finding("42", True, "proven", 0.0, corrected="d^2", corrected_holds=True,
-                                      severity="typo", why="sign"))
+    row = LG.Ledger("nb").add(
+        Finding("42", True, "proven", 0.0, corrected="d^2", corrected_holds=True, severity="typo", why="sign")
+    )
     assert row["verdict"] == "ok" and row["corrected"] == "" and row["why"] == ""
 
 
-@pytest.mark.parametrize("finding, words", [
-    (Finding("2", True, "ok", math.nan), ["residual", "nan"]),
-    (Finding("2", True, "ok", -1.0), ["residual", "-1.0"]),
-    (Finding("99", True, "ok", 0.0), ["(99)", "not transcribed"]),
-    (Finding("no-such-claim", True, "ok", 0.0), ["no-such-claim", "not transcribed"]),
-])
+@pytest.mark.parametrize(
+    "finding, words",
+    [
+        (Finding("2", True, "ok", math.nan), ["residual", "nan"]),
+        (Finding("2", True, "ok", -1.0), ["residual", "-1.0"]),
+        (Finding("99", True, "ok", 0.0), ["(99)", "not transcribed"]),
+        (Finding("no-such-claim", True, "ok", 0.0), ["no-such-claim", "not transcribed"]),
+    ],
+)
 def test_bad_rows_are_rejected_with_the_reason(finding, words):
     with pytest.raises(ValueError) as exc:
         LG.Ledger("nb").add(finding)
     assert all(w in str(exc.value) for w in words), str(exc.value)
 
 
-@pytest.mark.parametrize("finding, words", [
-    (Finding("2", True, "holds for psi_dot != 0", 0.0), ["check", "psi_dot", "!="]),
-    (Finding("2", True, "J^T J = 3*1", 0.0), ["check", "^T", "*"]),
-    (Finding("2", True, "ok", 0.0, convention="kappa <= 2"), ["convention", "Greek", "<="]),
-    (Finding("15", False, "refuted", 0.0, corrected=r"$x$", corrected_holds=True, severity="typo", why="slip"),
-     ["corrected", "'$'"]),
-])
+@pytest.mark.parametrize(
+    "finding, words",
+    [
+        (Finding("2", True, "holds for psi_dot != 0", 0.0), ["check", "psi_dot", "!="]),
+        (Finding("2", True, "J^T J = 3*1", 0.0), ["check", "^T", "*"]),
+        (Finding("2", True, "ok", 0.0, convention="kappa <= 2"), ["convention", "Greek", "<="]),
+        (
+            Finding("15", False, "refuted", 0.0, corrected=r"$x$", corrected_holds=True, severity="typo", why="slip"),
+            ["corrected", "'$'"],
+        ),
+    ],
+)
 def test_the_text_rules_find_pseudo_math_in_a_row(finding, words):
     """The rule the tests apply to the published ledger: each offence is named with its field."""
     row = LG.Ledger("nb").add(finding)
@@ -104,7 +118,7 @@ def test_the_text_rules_find_pseudo_math_in_a_row(finding, words):
 
 def test_math_in_dollars_is_not_ascii_math():
     assert ascii_math(r"holds for $\dot\psi \neq 0$ and $\mathbf J^{\mathrm T}$ with `psi_dot` in code") == []
-    assert ascii_math("the numeric check and a nucleus") == []            # words that start like Greek names
+    assert ascii_math("the numeric check and a nucleus") == []  # words that start like Greek names
     assert ascii_math("beta_1 and kappa") and ascii_math("a <=> b")
 
 
@@ -145,12 +159,12 @@ def test_assemble_orders_the_rows_of_all_chapters(tmp_path):
     b.add(Finding("omnidirectional", True, "ok", 0.0))
     pa, pb = a.write(tmp_path / "out" / "a"), b.write(tmp_path / "out" / "b")
     dest = tmp_path / "ledger.csv"
-    rows = LG.assemble(tmp_path / "out", dest)                     # a folder of chapter folders (the build's)
+    rows = LG.assemble(tmp_path / "out", dest)  # a folder of chapter folders (the build's)
     assert LG.read(dest) == rows
     assert [r["id"] for r in rows] == list(LG.EQUATIONS) + ["drift", "omnidirectional"]
     assert [r["notebook"] for r in rows[:3]] == ["a", "b", "a"]
-    assert LG.assemble([pb, tmp_path / "out" / "a"], dest) == rows   # files or chapter folders, any order
-    assert LG.fragments([pa, tmp_path / "out"]) == [pa, pb]          # each file once
+    assert LG.assemble([pb, tmp_path / "out" / "a"], dest) == rows  # files or chapter folders, any order
+    assert LG.fragments([pa, tmp_path / "out"]) == [pa, pb]  # each file once
 
 
 def test_assemble_reports_every_problem_and_writes_nothing(tmp_path):
@@ -207,7 +221,7 @@ def test_main_needs_the_chapters_and_the_destination(tmp_path, capsys):
     before = dest.stat().st_mtime_ns
     # the same bytes: the file is left untouched
     assert LG.main([str(tmp_path / "out"), str(dest)]) == 0 and dest.stat().st_mtime_ns == before
-    assert LG.main([str(tmp_path / "out" / "01" / "ledger.csv"), str(dest)]) == 0      # a chapter's file
+    assert LG.main([str(tmp_path / "out" / "01" / "ledger.csv"), str(dest)]) == 0  # a chapter's file
 
 
 def test_committed_ledger_is_complete_and_clean():

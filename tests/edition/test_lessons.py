@@ -1,5 +1,6 @@
 """The chapters as lessons: committed without outputs, thin, anchored, with exercises whose checks can say no,
 a student edition without solutions that still runs, and output paths that follow the notebook, not the package."""
+
 from __future__ import annotations
 
 import csv
@@ -47,8 +48,9 @@ def test_chapter_is_thin_and_prints_nothing(path):
         assert n <= MAX_CELL_LINES, f"{path.name}: a code cell of {n} lines:\n{c.source}"
         raw = re.search(r"\bprint\(|\bdisplay\(|DataFrame|\.to_frame\(", c.source)
         assert not raw, f"{path.name}: raw output in\n{c.source}"
-        assert "def " not in c.source or "widget" in tags(c), \
+        assert "def " not in c.source or "widget" in tags(c), (
             f"{path.name}: a helper defined in the chapter:\n{c.source}"
+        )
 
 
 def test_every_ledger_row_is_anchored_in_its_notebook():
@@ -80,7 +82,7 @@ def test_exercise_chapters_include_the_design_study():
 
 @pytest.mark.parametrize("path", EXERCISE_CHAPTERS, ids=lambda p: p.name)
 def test_chapter_has_exercises_with_checks_and_worked_solutions(path):
-    if any("check" in tags(c) for c in cells(path)):       # the cell convention (edition.exercises.framework)
+    if any("check" in tags(c) for c in cells(path)):  # the cell convention (edition.exercises.framework)
         return _exercises_in_four_cells(path)
     # chapters still in the older convention: the check called in a cell tagged "exercise"
     pattern = r"(?:exercises|study)\.(\w+)\("
@@ -90,8 +92,9 @@ def test_chapter_has_exercises_with_checks_and_worked_solutions(path):
     checks = {m for c in tagged for m in re.findall(pattern, c.source)} - named
     assert len(checks) >= 2, f"{path.name}: exercises {checks}"
     assert {m for c in sol for m in re.findall(pattern, c.source)} == checks
-    assert any(any(o in c.source for o in named) or "my_robot" in c.source for c in tagged), \
+    assert any(any(o in c.source for o in named) or "my_robot" in c.source for c in tagged), (
         f"{path.name}: no 'your own robot' cell"
+    )
     for c in tagged:
         if re.search(pattern, c.source) and "my_robot" not in c.source:
             assert "= None" in c.source, f"{path.name}: an exercise template without a placeholder:\n{c.source}"
@@ -102,8 +105,9 @@ def _exercises_in_four_cells(path):
     call of a registered check with the answer's names), in this order; and a "your own robot" cell."""
     from edition.exercises.framework import by_name
     from tools.assignments import assignment, check_call
+
     nb = nbformat.read(path, as_version=4)
-    assert assignment(nb, path.stem, lambda name: by_name(name).points) is not None     # order and roles
+    assert assignment(nb, path.stem, lambda name: by_name(name).points) is not None  # order and roles
     checks = [c for c in nb.cells if "check" in tags(c)]
     assert len(checks) >= 2, f"{path.name}: {len(checks)} exercises"
     for c in checks:
@@ -111,8 +115,9 @@ def _exercises_in_four_cells(path):
     for c in nb.cells:
         if "answer" in tags(c):
             assert re.fullmatch(r"\w+ = None +# .+", c.source.strip()), f"{path.name}: an answer template:\n{c.source}"
-    own = [c for c in nb.cells
-           if c.cell_type == "code" and tags(c) & {"explore", "exercise"} and "my_robot" in c.source]
+    own = [
+        c for c in nb.cells if c.cell_type == "code" and tags(c) & {"explore", "exercise"} and "my_robot" in c.source
+    ]
     assert own, f"{path.name}: no 'your own robot' cell"
 
 
@@ -122,6 +127,7 @@ def test_exercise_statements_carry_their_number_and_tolerance(path):
     tables of the checks test that the tolerance is the one applied)."""
     from edition.exercises.framework import by_name
     from tools.assignments import check_call
+
     cs = cells(path)
     for i, c in enumerate(cs):
         if "check" not in tags(c):
@@ -150,8 +156,17 @@ def test_each_figure_is_computed_in_its_chapter():
             for key in re.findall(r"ch\.figure\(\"(\w+)\"\)", c.source):
                 assert key not in where, f"{key} computed twice"
                 where[key] = path.name[:2]
-    assert where == {"conventions": "01", "fig07": "02", "fig08": "04", "fig09": "04", "fig10": "04", "fig11": "04",
-                     "fig12": "04", "detmap": "04", "fig13": "05"}
+    assert where == {
+        "conventions": "01",
+        "fig07": "02",
+        "fig08": "04",
+        "fig09": "04",
+        "fig10": "04",
+        "fig11": "04",
+        "fig12": "04",
+        "detmap": "04",
+        "fig13": "05",
+    }
 
 
 # ----------------------------------------------------------------------------------------------- student edition
@@ -159,9 +174,13 @@ def test_student_edition_has_no_solutions_and_still_runs():
     """``make student RUN=1`` (nbconvert's TagRemovePreprocessor, then the chapters' cached executor):
     every chapter without its solutions, its exercises kept, and every one still runs."""
     import subprocess
-    run = subprocess.run(["make", "-s", "--no-print-directory", "-C", str(ROOT), f"WMR_ROOT={ROOT}",
-                          "student", "RUN=1"],
-                         capture_output=True, text=True, check=False)
+
+    run = subprocess.run(
+        ["make", "-s", "--no-print-directory", "-C", str(ROOT), f"WMR_ROOT={ROOT}", "student", "RUN=1"],
+        capture_output=True,
+        text=True,
+        check=False,
+    )
     assert run.returncode == 0, "student notebooks fail:\n" + (run.stdout + run.stderr)[-4000:]
     out = ROOT / "build" / "student"
     paths = sorted(out.glob("*.ipynb"))
@@ -174,8 +193,9 @@ def test_student_edition_has_no_solutions_and_still_runs():
         assert sum("exercise" in tags(c) for c in nb.cells) == n_ex
     done = nbformat.read(ROOT / "build" / "student-run" / "notebooks" / paths[0].name, as_version=4)
     assert [c.source for c in done.cells] == [c.source for c in nbformat.read(paths[0], as_version=4).cells]
-    text = "\n".join(o.get("data", {}).get("text/markdown", "")
-                     for c in done.cells if c.cell_type == "code" for o in c.outputs)
+    text = "\n".join(
+        o.get("data", {}).get("text/markdown", "") for c in done.cells if c.cell_type == "code" for o in c.outputs
+    )
     assert "No answer yet" in text and "**Right.**" not in text
 
 
@@ -194,14 +214,14 @@ def test_project_from_the_notebook_location(monkeypatch, tmp_path):
     p = NB.project(tmp_path / "course" / "notebooks", "04_x")  # a chapter of a project: its build/scratch
     assert (p.root, p.out, p.source) == (course, course / "build" / "scratch" / "04_x", "scratch")
     assert NB.project(tmp_path / "course").root == course
-    copy = NB.project(tmp_path / "copy")                       # a copy elsewhere: a temporary folder ...
+    copy = NB.project(tmp_path / "copy")  # a copy elsewhere: a temporary folder ...
     assert copy.root is None and copy.source == "temporary" and tmp_path not in copy.out.parents
     assert not (tmp_path / "copy" / "figures").exists()
-    text = copy.where()                                        # ... and it says so
+    text = copy.where()  # ... and it says so
     assert str(copy.out) in text and "temporary" in text
     monkeypatch.chdir(tmp_path / "course" / "notebooks")
     assert NB.project().root == course
-    (tmp_path / "other" / "notebooks").mkdir(parents=True)     # notebooks/ without figures/: not a project
+    (tmp_path / "other" / "notebooks").mkdir(parents=True)  # notebooks/ without figures/: not a project
     assert NB.project(tmp_path / "other" / "notebooks").source == "temporary"
 
 
@@ -254,19 +274,32 @@ def test_mod_pi_and_latex():
 
 
 # ----------------------------------------------------------------------------------------------- exercise checks
-CHECKS = [X.offset_other_side, X.dual_counterexample, X.dual_spin_in_place, X.locked_steering, X.drift_of_c_general,
-          X.isotropic_placement, X.dual_upsilon, X.offset_for_kappa, X.unlisted_singularity, X.mobile_and_singular,
-          X.translation_angles, X.rotation_angles, X.printed_65_region, X.curved_translation, X.reversal]
+CHECKS = [
+    X.offset_other_side,
+    X.dual_counterexample,
+    X.dual_spin_in_place,
+    X.locked_steering,
+    X.drift_of_c_general,
+    X.isotropic_placement,
+    X.dual_upsilon,
+    X.offset_for_kappa,
+    X.unlisted_singularity,
+    X.mobile_and_singular,
+    X.translation_angles,
+    X.rotation_angles,
+    X.printed_65_region,
+    X.curved_translation,
+    X.reversal,
+]
 
 
 @pytest.mark.parametrize("check", CHECKS, ids=lambda f: f.__name__)
 def test_a_missing_answer_is_not_an_error(check):
     import inspect
+
     n = len([p for p in inspect.signature(check).parameters.values() if p.default is inspect.Parameter.empty])
     fb = check(*([None] * n))
     assert not fb and fb.message.startswith("No answer yet") and fb._repr_markdown_().startswith("**Not yet.**")
-
-
 
 
 def test_describe_robot():

@@ -4,6 +4,7 @@ JupyterLab marks a notebook modified when opening it changes the model: a kernel
 ``language_info`` differs from the saved one, a missing cell id.  Autosave then writes that change
 into the repository.  These tests keep the committed files equal to what JupyterLab's save writes.
 """
+
 from __future__ import annotations
 
 import subprocess
@@ -20,6 +21,7 @@ KERNELSPEC = {"display_name": "Python 3 (ipykernel)", "language": "python", "nam
 def language_info():
     """What the project's kernel (ipykernel) reports, and JupyterLab writes into the notebook."""
     from ipykernel.ipkernel import IPythonKernel
+
     return dict(IPythonKernel.language_info)
 
 
@@ -52,12 +54,18 @@ def test_a_chapter_run_outside_the_build_writes_nothing_tracked(monkeypatch):
     from nbclient import NotebookClient
 
     def status():
-        return subprocess.run(["git", "status", "--porcelain", "--untracked-files=all"], cwd=ROOT,
-                              capture_output=True, text=True, check=True).stdout
+        return subprocess.run(
+            ["git", "status", "--porcelain", "--untracked-files=all"],
+            cwd=ROOT,
+            capture_output=True,
+            text=True,
+            check=True,
+        ).stdout
+
     before = status()
-    path = ROOT / "notebooks" / "05_steering_and_instant_centre.ipynb"       # writes Fig. 13 and ledger rows
+    path = ROOT / "notebooks" / "05_steering_and_instant_centre.ipynb"  # writes Fig. 13 and ledger rows
     nb = nbformat.read(path, as_version=4)
-    monkeypatch.delenv("WMR_OUT", raising=False)            # the kernel inherits this environment
+    monkeypatch.delenv("WMR_OUT", raising=False)  # the kernel inherits this environment
     monkeypatch.setenv("MPLBACKEND", "Agg")
     NotebookClient(nb, timeout=300, kernel_name="python3").execute(cwd=str(path.parent))
     assert status() == before, "a chapter run outside the build changed the tracked tree"

@@ -1,5 +1,6 @@
 """edition.checks: verdicts follow the transcription -- a corrected transcription re-grades its row to ok,
 a broken one of a true equation stops the chapter -- and the claims record their own evidence."""
+
 from __future__ import annotations
 
 import dataclasses
@@ -25,6 +26,7 @@ def transcribe(monkeypatch):
         new = dataclasses.replace(old, expr=old.expr if expr is None else expr, extra={**old.extra, **extra})
         monkeypatch.setitem(equations, str(id), new)
         return new
+
     return set_
 
 
@@ -45,6 +47,7 @@ def verdicts(derivation):
 def det_J_paper():
     """det J of the paper's centred-wheel robot (symbolic L, r): what Chapter 4 derives and hands to its checks."""
     import wmr
+
     return wmr.paper_robot("centred", L=S.L, r=S.r, exact=True).J(L=S.L).det()
 
 
@@ -70,20 +73,30 @@ def test_a_corrected_transcription_regrades_59_to_ok(transcribe):
 def test_a_corrected_transcription_regrades_60_to_ok(transcribe):
     p = printed(60)
     transcribe(60, sp.Eq(p.expr.lhs, sp.atan2(S.Y_dot, S.X_dot) + sp.pi / 2))
-    with pytest.raises(AssertionError):          # the evidence that the printed angles slip no longer holds
-        steering.translation(S.X_dot * sp.cos(S.phi_i) + S.Y_dot * sp.sin(S.phi_i),
-                             sp.atan2(S.Y_dot, S.X_dot) + sp.pi / 2, n=50)
+    with pytest.raises(AssertionError):  # the evidence that the printed angles slip no longer holds
+        steering.translation(
+            S.X_dot * sp.cos(S.phi_i) + S.Y_dot * sp.sin(S.phi_i), sp.atan2(S.Y_dot, S.X_dot) + sp.pi / 2, n=50
+        )
 
 
-@pytest.mark.parametrize("id, expr, check", [
-    (63, lambda p: -p.expr, lambda: steering.instant_centre(sp.Matrix([-S.y_dot, S.x_dot]) / S.psi_dot,
-                                                           S.psi_dot**2, n=20)),
-    (6, lambda p: sp.Eq(p.expr.lhs, -p.expr.rhs, evaluate=False),
-     lambda: wheels.rolling_disk(*(derived("01_platform_and_wheels")[x] for x in ("h_dot", "i_i", "j_i")))),
-    (38, None, None),
-])
+@pytest.mark.parametrize(
+    "id, expr, check",
+    [
+        (
+            63,
+            lambda p: -p.expr,
+            lambda: steering.instant_centre(sp.Matrix([-S.y_dot, S.x_dot]) / S.psi_dot, S.psi_dot**2, n=20),
+        ),
+        (
+            6,
+            lambda p: sp.Eq(p.expr.lhs, -p.expr.rhs, evaluate=False),
+            lambda: wheels.rolling_disk(*(derived("01_platform_and_wheels")[x] for x in ("h_dot", "i_i", "j_i"))),
+        ),
+        (38, None, None),
+    ],
+)
 def test_a_broken_transcription_of_a_true_equation_fails_loudly(transcribe, id, expr, check):
-    if id == 38:          # (38) is judged wrong: transcribing the corrected condition re-grades it
+    if id == 38:  # (38) is judged wrong: transcribing the corrected condition re-grades it
         mean = sum((sp.Matrix(p).T * sp.Matrix(p))[0] for p in S.D) / 3
         assert verdicts(ch3_placement(10))["38"] == "wrong"
         transcribe(38, (sp.Eq(mean, S.L**2),))
@@ -166,12 +179,14 @@ def test_classify_lines_by_plain_geometry():
 
 def wmr_paper_points():
     import wmr
+
     return wmr.paper_robot("centred", L=1.0, r=1.0).mount_points
 
 
 def test_a_derivation_that_is_not_the_models_is_refused():
     """The chapters hand their derived objects to the checks: a wrong one stops the check instead of being graded."""
     from edition.checks import CheckError
+
     with pytest.raises(CheckError, match="determinant of the paper's J"):
         centred.printed_determinant(2 * det_J_paper(), n=5)
     with pytest.raises(CheckError, match="velocity vanishes"):

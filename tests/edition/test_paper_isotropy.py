@@ -3,6 +3,7 @@
 The expected values are computed from first principles (hand-built J_L1, rolling directions
 j_i = k x i_i, line geometry), so that a sign or numbering change in the model makes a test fail.
 """
+
 from __future__ import annotations
 
 import numpy as np
@@ -41,8 +42,13 @@ def _JL1(points, L):
 def _printed_det(beta):
     """(59) as printed in the paper."""
     b1, b2, b3 = np.moveaxis(np.asarray(beta, float), -1, 0)
-    return (-SQ3 / 2 * np.cos(b1 - b2 - b3) + 0.75 * np.sin(b1 - b2 + b3) - 0.75 * np.sin(b1 + b2 - b3)
-            + SQ3 / 4 * np.cos(b1 + b2 - b3) + SQ3 / 4 * np.cos(b1 - b2 + b3))
+    return (
+        -SQ3 / 2 * np.cos(b1 - b2 - b3)
+        + 0.75 * np.sin(b1 - b2 + b3)
+        - 0.75 * np.sin(b1 + b2 - b3)
+        + SQ3 / 4 * np.cos(b1 + b2 - b3)
+        + SQ3 / 4 * np.cos(b1 - b2 + b3)
+    )
 
 
 def test_printed_forms_registered():
@@ -65,14 +71,14 @@ def test_JL1_and_gram_general_placement():
         s = pts.sum(axis=0)
         Es = np.array([-s[1], s[0]])
         want = np.block([[np.array([[np.sum(pts**2) / L**2]]), Es[None, :] / L], [Es[:, None] / L, 3 * np.eye(2)]])
-        assert np.allclose(JL1.T @ JL1, want, atol=1e-12)                        # (34)
+        assert np.allclose(JL1.T @ JL1, want, atol=1e-12)  # (34)
         t = rng.normal(size=3)
-        assert np.allclose(bot.J1() @ t, JL1 @ (np.diag([L, 1, 1]) @ t))     # (33): J1 t = J_L1 t_L
+        assert np.allclose(bot.J1() @ t, JL1 @ (np.diag([L, 1, 1]) @ t))  # (33): J1 t = J_L1 t_L
 
 
 def test_isotropy_needs_centroid_and_rms_length_not_equilateral():
     ce = wmr.Robot([wmr.OffsetWheel(p, r=0.1, d=0.1) for p in [(2, 0), (-1, 1), (-1, -1)]])
-    assert abs(condition_number(ce.J1(np.sqrt(8 / 3))) - 1) <= TOL             # isosceles, isotropic
+    assert abs(condition_number(ce.J1(np.sqrt(8 / 3))) - 1) <= TOL  # isosceles, isotropic
     assert condition_number(ce.J1(np.sqrt(8 / 3) * 1.1)) > 1.01
     rng = np.random.default_rng(SEED)
     for _ in range(20):
@@ -81,8 +87,8 @@ def test_isotropy_needs_centroid_and_rms_length_not_equilateral():
         bot = wmr.Robot([wmr.CentredWheel(p, r=0.1) for p in pts])
         L = np.sqrt(np.mean(np.sum(pts**2, 1)))
         assert abs(condition_number(bot.J1(L)) - 1) <= 1e-9
-        shifted = wmr.Robot([wmr.CentredWheel(p + 0.3, r=0.1) for p in pts])    # C off the centroid
-        assert condition_number(shifted.J1(np.sqrt(np.mean(np.sum((pts + 0.3)**2, 1))))) > 1 + 1e-6
+        shifted = wmr.Robot([wmr.CentredWheel(p + 0.3, r=0.1) for p in pts])  # C off the centroid
+        assert condition_number(shifted.J1(np.sqrt(np.mean(np.sum((pts + 0.3) ** 2, 1))))) > 1 + 1e-6
 
 
 @pytest.mark.parametrize("d, r", [(0.1, 0.1), (0.05, 0.1), (0.1, 0.03), (0.0, 0.1)])
@@ -131,17 +137,17 @@ def test_det_J_is_the_concurrency_determinant_of_the_wheel_plane_lines():
         # first principles: J = J_L1^T J2 with J2 columns -r j_i
         J2 = np.zeros((6, 3))
         for k in range(3):
-            J2[2 * k:2 * k + 2, k] = -r * _j(beta[k])
+            J2[2 * k : 2 * k + 2, k] = -r * _j(beta[k])
         J = _JL1(pts, L).T @ J2
         assert np.allclose(bot.J(beta, L=L), J, atol=1e-13)
         i = _i(beta)
         lines = np.column_stack([i, np.sum(i * pts, 1)])
-        assert np.isclose(np.linalg.det(J), -r**3 / L * np.linalg.det(lines), atol=1e-12)
+        assert np.isclose(np.linalg.det(J), -(r**3) / L * np.linalg.det(lines), atol=1e-12)
 
 
 def _planes_through(points, U):
     w = U - points
-    return np.arctan2(-w[:, 0], w[:, 1])            # j_i parallel to U - P_i
+    return np.arctan2(-w[:, 0], w[:, 1])  # j_i parallel to U - P_i
 
 
 def test_singular_families_and_concurrency():
@@ -149,11 +155,15 @@ def test_singular_families_and_concurrency():
     rng = np.random.default_rng(SEED)
     b = rng.uniform(-np.pi, np.pi, 50)
     z = rng.uniform(-np.pi, np.pi, 50)
-    fams = [np.c_[b, b, b], np.c_[b, b + np.pi, b], np.c_[b, b, b + np.pi],            # (i) and mod pi
-            np.c_[np.full(50, np.pi / 3), z, np.full(50, -2 * np.pi / 3)],            # (ii), mixed values
-            np.c_[np.full(50, -np.pi / 3), np.full(50, 2 * np.pi / 3), z],            # (iii)
-            np.c_[z, np.zeros(50), np.full(50, np.pi)]]                                # (iv)
-    fams += [np.array([_planes_through(bot.mount_points, U) for U in rng.normal(size=(50, 2)) * 3])]   # (v)
+    fams = [
+        np.c_[b, b, b],
+        np.c_[b, b + np.pi, b],
+        np.c_[b, b, b + np.pi],  # (i) and mod pi
+        np.c_[np.full(50, np.pi / 3), z, np.full(50, -2 * np.pi / 3)],  # (ii), mixed values
+        np.c_[np.full(50, -np.pi / 3), np.full(50, 2 * np.pi / 3), z],  # (iii)
+        np.c_[z, np.zeros(50), np.full(50, np.pi)],
+    ]  # (iv)
+    fams += [np.array([_planes_through(bot.mount_points, U) for U in rng.normal(size=(50, 2)) * 3])]  # (v)
     for F in fams:
         assert np.max(np.abs(np.linalg.det(bot.J(F, L=1.0)))) < 1e-12
     assert np.min(np.abs(np.linalg.det(bot.J(rng.uniform(-np.pi, np.pi, (500, 3)), L=1.0)))) > 1e-6
@@ -200,10 +210,10 @@ def test_isotropic_kinematics_are_the_least_squares_of_forward_inverse(kind):
         beta = rng.uniform(-np.pi, np.pi, 3)
         J2 = bot.J2(beta)
         th = rng.normal(size=bot.n_rates)
-        tL = JL1.T @ J2 @ th / 3                                             # (49) / (55)
+        tL = JL1.T @ J2 @ th / 3  # (49) / (55)
         assert np.allclose(np.linalg.solve(S, tL), wmr.forward(bot, beta, th).value, atol=1e-12)
         t = rng.normal(size=3)
-        th_inv = J2.T @ JL1 @ (S @ t) / r**2                                 # (50) / (57)
+        th_inv = J2.T @ JL1 @ (S @ t) / r**2  # (50) / (57)
         inv = wmr.inverse(bot, beta, t)
         assert np.allclose(th_inv, inv.value, atol=1e-12)
         assert bool(inv.admissible) == (kind == "offset")

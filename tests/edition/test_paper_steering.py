@@ -4,6 +4,7 @@ Each test fails if the model (frames, no-slip blocks, steering law) changes in a
 change a verdict: the printed (60) and (65) must fail under the package's frames and the
 derived forms must hold.
 """
+
 import numpy as np
 import pytest
 import sympy as sp
@@ -62,8 +63,9 @@ def test_instantaneous_centre_limits():
 def test_centre_to_wheels_is_printed_64(rng):
     bot = wmr.paper_robot("centred", L=0.4, r=0.1)
     tw, d = rotations(rng), bot.mount_points
-    ui = np.stack([evaluate(printed(64).expr, (S.psi_dot, S.x_dot, S.y_dot, S.dx, S.dy), *tw.T, *d[i])
-                   for i in range(3)], axis=1)
+    ui = np.stack(
+        [evaluate(printed(64).expr, (S.psi_dot, S.x_dot, S.y_dot, S.dx, S.dy), *tw.T, *d[i]) for i in range(3)], axis=1
+    )
     assert np.max(np.abs(ui - wmr.centre_to_wheels(tw, d))) < TOL
 
 
@@ -82,7 +84,7 @@ def test_steering_angles_axles_point_at_centre(kind, rng):
     assert np.all(mobility(bot, beta) == 1 + (3 if kind == "dual" else 0))
     assert wmr.inverse(bot, beta, tw).admissible.all()
     ui = wmr.centre_to_wheels(tw, bot.mount_points)
-    cross = np.cos(beta) * ui[..., 1] - np.sin(beta) * ui[..., 0]     # i_i x u_i
+    cross = np.cos(beta) * ui[..., 1] - np.sin(beta) * ui[..., 0]  # i_i x u_i
     assert np.max(np.abs(cross) / np.linalg.norm(ui, axis=-1)) < TOL
 
 
@@ -100,7 +102,7 @@ def test_printed_60_puts_axle_along_velocity(rng):
         assert np.all(sol.admissible == ok)
     sol = wmr.inverse(bot, np.repeat((phi_printed - psi)[:, None], 3, axis=1), tw)
     slip = np.linalg.norm(sol.residual.reshape(N, 3, 2), axis=-1)
-    assert np.allclose(slip, np.linalg.norm(V, axis=-1)[:, None], atol=TOL)   # full speed sideways
+    assert np.allclose(slip, np.linalg.norm(V, axis=-1)[:, None], atol=TOL)  # full speed sideways
 
 
 def test_printed_65_jams_derived_does_not(rng):
@@ -145,10 +147,10 @@ def test_dual_corrected_steering_law_is_slip_free():
     beta0 = wmr.steering_angles(dual, tw)
     rates = wmr.inverse(dual, beta0, tw).value
     th = rates.reshape(3, 2)
-    assert np.allclose(th[:, 0] - th[:, 1], -(2 * 0.05 / 0.1) * tw[0])          # corrected (15)
+    assert np.allclose(th[:, 0] - th[:, 1], -(2 * 0.05 / 0.1) * tw[0])  # corrected (15)
     run = wmr.simulate(dual, rates, beta0, t_end=1.0, dt=0.02)
     assert run.slip.max() < TOL and np.abs(run.beta - beta0).max() < TOL
-    printed_law = np.repeat(th.mean(axis=1), 2)                                   # printed (15): no difference
+    printed_law = np.repeat(th.mean(axis=1), 2)  # printed (15): no difference
     run = wmr.simulate(dual, printed_law, beta0, t_end=1.0, dt=0.02)
     assert run.slip.max() > 0.01
 
@@ -159,5 +161,5 @@ def test_centred_needs_resteer_offset_does_not(rng):
     t0, t1 = rng.normal(size=(N, 3)), rng.normal(size=(N, 3))
     b0 = wmr.steering_angles(cen, t0)
     assert not wmr.inverse(cen, b0, t1).admissible.any()
-    assert wmr.inverse(cen, b0, -2.0 * t0).admissible.all()                       # reversal: no re-steering
+    assert wmr.inverse(cen, b0, -2.0 * t0).admissible.all()  # reversal: no re-steering
     assert wmr.inverse(off, rng.uniform(-np.pi, np.pi, (N, 3)), t1).admissible.all()

@@ -5,6 +5,7 @@ that every equation is there once, that every SymPy form reads against the paper
 misspelt name is an error, never a new symbol), that what it says the extraction shows is in the
 extraction verbatim, that its prose follows the text rules, and that the published ledger quotes it.
 """
+
 from __future__ import annotations
 
 import csv
@@ -31,40 +32,50 @@ def test_every_equation_once_in_order_with_its_section():
     for id, p in eqs.items():
         assert p.id == id and re.fullmatch(r"[3-5](\.\d){1,2}", p.section), (id, p.section)
         assert p.latex and "$" not in p.latex and p.extracted, id
-    assert [printed(n).section for n in (2, 6, 20, 28, 30, 51, 52, 54, 60, 61)] == \
-        ["3.1", "3.2", "4.1", "4.2", "4.3", "5.1", "5.2", "5.3", "5.4.1", "5.4.2"]
+    assert [printed(n).section for n in (2, 6, 20, 28, 30, 51, 52, 54, 60, 61)] == [
+        "3.1",
+        "3.2",
+        "4.1",
+        "4.2",
+        "4.3",
+        "5.1",
+        "5.2",
+        "5.3",
+        "5.4.1",
+        "5.4.2",
+    ]
 
 
 def test_the_sympy_forms_use_the_papers_symbols():
     """Every free symbol of a printed form is a symbol of edition.symbols (no stray name crept in)."""
     known = set()
     for v in vars(S).values():
-        for x in (v if isinstance(v, tuple) else (v,)):
+        for x in v if isinstance(v, tuple) else (v,):
             if isinstance(x, (sp.Basic, sp.MatrixBase)):
                 known |= {x} if isinstance(x, (sp.Symbol, sp.MatrixSymbol)) else set(x.free_symbols)
     for id, p in table().equations.items():
         forms = [p.expr, *[v for v in p.extra.values() if isinstance(v, (sp.Basic, sp.MatrixBase, tuple))]]
         free = set()
         for f in forms:
-            for x in (f if isinstance(f, tuple) else (f,)):
+            for x in f if isinstance(f, tuple) else (f,):
                 if isinstance(x, (sp.Basic, sp.MatrixBase)):
                     free |= {a for a in sp.sympify(x).atoms(sp.Symbol, sp.MatrixSymbol)}
         assert free <= known, (id, free - known)
-    assert printed(26).expr is None and printed(29).expr is None     # statements checked through their consequences
+    assert printed(26).expr is None and printed(29).expr is None  # statements checked through their consequences
 
 
 def test_identities_are_never_decided_when_read():
     eq11 = printed(11).expr
     assert isinstance(eq11, sp.Equality) and eq11.lhs == S.R_bwi
-    assert isinstance(printed(46).expr, sp.Equality)                   # Eq(d, r) stays a statement
+    assert isinstance(printed(46).expr, sp.Equality)  # Eq(d, r) stays a statement
     names = table().names
-    assert isinstance(names["Eq"](S.d, S.d), sp.Equality)               # even a trivially true one
-    assert isinstance(names["Eq"](sp.Matrix([1]), sp.Matrix([2])), sp.Equality)   # and a false one
+    assert isinstance(names["Eq"](S.d, S.d), sp.Equality)  # even a trivially true one
+    assert isinstance(names["Eq"](sp.Matrix([1]), sp.Matrix([2])), sp.Equality)  # and a false one
 
 
 def test_the_rotation_of_11_is_written_once():
     text = TABLE.read_text(encoding="utf-8")
-    assert text.count("cos(angle)") == 2 and text.count("-sin(angle)") == 1      # in [notation] R only
+    assert text.count("cos(angle)") == 2 and text.count("-sin(angle)") == 1  # in [notation] R only
     R = table().names["R"]
     assert printed(11).expr.rhs == R(S.beta_i)
     assert printed(10).expr.rhs == R(S.beta_i) * sp.Matrix([-S.d * S.phi_dot_i, -S.r * S.theta_dot_i])
@@ -79,8 +90,8 @@ def test_the_extraction_is_quoted_verbatim():
     missing = [(id, f[:60]) for id, p in table().equations.items() for f in p.extracted if f not in text]
     missing += [(slug, f[:60]) for slug, c in table().claims.items() for f in c.extracted if f not in text]
     assert not missing
-    for id, p in table().equations.items():       # and one of its fragments is the display numbered id
-        after = [f + text[text.index(f) + len(f):][:40] for f in p.extracted]
+    for id, p in table().equations.items():  # and one of its fragments is the display numbered id
+        after = [f + text[text.index(f) + len(f) :][:40] for f in p.extracted]
         assert any(rf"\tag{{{id}}}" in a or f"({id})" in a for a in after), id
 
 
@@ -125,18 +136,21 @@ text = "a claim"
 """
 
 
-@pytest.mark.parametrize("edit, words", [
-    (("twice(psi)", "twice(psii)"), ["equation.8.sympy", "psii", "NameError"]),        # a misspelt symbol
-    (("sympy =", "sympi ="), ["equation.8", "unknown keys ['sympi']"]),
-    (('latex = ', 'lates = '), ["equation.8", "unknown keys"]),
-    (('section = "3.2"\n', ''), ["equation.8", "'section' is missing"]),
-    (('twice = ', 'beta = '), ["notation.beta", "defined already"]),                 # a notation hiding a symbol
-    (("Eq(phi_i, twice(psi) + beta_i)", "Eq(phi_i,"), ["equation.8.sympy", "cannot read"]),
-    (('[claim.c]', '[claim.c]\nsource = "x"'), ["claim.c", "unknown keys ['source']"]),
-    (('title = "the claim"\n', ''), ["claim.c", "'title' is missing"]),                 # named by its slug
-    (('extracted = "x"', 'extracted = ["x", 3]'), ["equation.8.extracted"]),
-    (('[equation.8]', '[equations.8]'), ["top level", "equations"]),
-])
+@pytest.mark.parametrize(
+    "edit, words",
+    [
+        (("twice(psi)", "twice(psii)"), ["equation.8.sympy", "psii", "NameError"]),  # a misspelt symbol
+        (("sympy =", "sympi ="), ["equation.8", "unknown keys ['sympi']"]),
+        (("latex = ", "lates = "), ["equation.8", "unknown keys"]),
+        (('section = "3.2"\n', ""), ["equation.8", "'section' is missing"]),
+        (("twice = ", "beta = "), ["notation.beta", "defined already"]),  # a notation hiding a symbol
+        (("Eq(phi_i, twice(psi) + beta_i)", "Eq(phi_i,"), ["equation.8.sympy", "cannot read"]),
+        (("[claim.c]", '[claim.c]\nsource = "x"'), ["claim.c", "unknown keys ['source']"]),
+        (('title = "the claim"\n', ""), ["claim.c", "'title' is missing"]),  # named by its slug
+        (('extracted = "x"', 'extracted = ["x", 3]'), ["equation.8.extracted"]),
+        (("[equation.8]", "[equations.8]"), ["top level", "equations"]),
+    ],
+)
 def test_a_bad_table_is_an_error_naming_the_entry(tmp_path, edit, words):
     path = tmp_path / "t.toml"
     path.write_text(GOOD, encoding="utf-8")
@@ -159,8 +173,8 @@ def test_reading_the_table_has_no_side_effect():
     """Importing the edition does not read the table; reading it twice gives equal records."""
     import subprocess
     import sys
-    code = ("import edition, edition.transcription as T, edition.checks; "
-            "print(T.table.cache_info().currsize)")
+
+    code = "import edition, edition.transcription as T, edition.checks; print(T.table.cache_info().currsize)"
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, check=True)
     assert out.stdout.strip() == "0"
     assert load().equations["59"].latex == printed(59).latex

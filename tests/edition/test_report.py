@@ -7,6 +7,7 @@ ids, working links, each figure once, code collapsed, a contents sidebar with su
 family; an A4 PDF with nothing past the margins, no raw TeX or ASCII math in its text, no formula
 shrunk below a readable size, the build date from the commit; a second ``make report`` rebuilds nothing.
 """
+
 from __future__ import annotations
 
 import base64
@@ -33,8 +34,11 @@ ROOT = Path(__file__).resolve().parents[2]
 
 TREE = Path(os.environ.get("WMR_ROOT") or ROOT)  # WMR_ROOT: test another tree
 BUILD = Path(os.environ.get("WMR_BUILD") or TREE / "build")
-CHAPTERS = [p for p in sorted((TREE / "notebooks").glob("*.ipynb"))
-            if p.name not in ("findings.ipynb", "10_robot_classes.ipynb")]      # the Makefile's REPORTED
+CHAPTERS = [
+    p
+    for p in sorted((TREE / "notebooks").glob("*.ipynb"))
+    if p.name not in ("findings.ipynb", "10_robot_classes.ipynb")
+]  # the Makefile's REPORTED
 HAVE_TEX = bool(shutil.which("xelatex") and shutil.which("pandoc"))
 HAVE_POPPLER = bool(shutil.which("pdftotext") and shutil.which("pdfinfo"))
 REMOTE = re.compile(r"^\s*(https?:)?//", re.IGNORECASE)
@@ -44,8 +48,22 @@ MAX_HTML_BYTES = 4_000_000
 
 def make(*targets: str, build: Path = BUILD) -> str:
     """Run the build (cached: ``make test`` has just built the report); fail the test with its log."""
-    p = subprocess.run(["make", "-s", "--no-print-directory", "-j2", "-C", str(ROOT), f"WMR_ROOT={TREE}",
-                        f"WMR_BUILD={build}", *targets], capture_output=True, text=True, check=False)
+    p = subprocess.run(
+        [
+            "make",
+            "-s",
+            "--no-print-directory",
+            "-j2",
+            "-C",
+            str(ROOT),
+            f"WMR_ROOT={TREE}",
+            f"WMR_BUILD={build}",
+            *targets,
+        ],
+        capture_output=True,
+        text=True,
+        check=False,
+    )
     if p.returncode != 0:
         pytest.fail(p.stdout + p.stderr, pytrace=False)
     return p.stdout
@@ -56,8 +74,9 @@ def commit_epoch() -> int:
     env = os.environ.get("SOURCE_DATE_EPOCH", "")
     if env.isdigit():
         return int(env)
-    p = subprocess.run(["git", "-C", str(TREE), "log", "-1", "--format=%ct"],
-                       capture_output=True, text=True, check=False)
+    p = subprocess.run(
+        ["git", "-C", str(TREE), "log", "-1", "--format=%ct"], capture_output=True, text=True, check=False
+    )
     return int(p.stdout.strip()) if p.returncode == 0 else 0
 
 
@@ -139,11 +158,13 @@ def remote_references(page: str) -> list[str]:
 
 
 def test_remote_reference_detector_can_fail():
-    page = ('<html><head><script src="https://cdn.example/mathjax.js"></script>'
-            '<link rel="stylesheet" href="//fonts.example/css">'
-            '<style>@import url("https://x/y.css"); @font-face { font-family: F; src: url(/f.woff2) }'
-            ' body { background: url(http://x/bg.png) }</style></head><body>'
-            '<img src="data:image/png;base64,AAAA"><script>var a = "https://not-a-fetch";</script></body></html>')
+    page = (
+        '<html><head><script src="https://cdn.example/mathjax.js"></script>'
+        '<link rel="stylesheet" href="//fonts.example/css">'
+        '<style>@import url("https://x/y.css"); @font-face { font-family: F; src: url(/f.woff2) }'
+        " body { background: url(http://x/bg.png) }</style></head><body>"
+        '<img src="data:image/png;base64,AAAA"><script>var a = "https://not-a-fetch";</script></body></html>'
+    )
     bad = remote_references(page)
     assert len(bad) == 6, bad
     assert not any("not-a-fetch" in b or "data:" in b for b in bad)
@@ -170,8 +191,11 @@ def test_html_size(html_text):
 def test_html_keeps_punctuation_with_its_formula(html_text):
     # a comma after inline math must not start a line of a narrow table cell, nor "(" end one before it
     bound = r'(?<!<span class="nobr">)(?<!<span class="nobr">\()(?<!<span class="nobr">\[)'
-    loose = re.findall(bound + r'<span class="math inline">[^<]*</span>[,.;:)]'
-                       r'|(?<!<span class="nobr">)\(<span class="math inline">', html_text)
+    loose = re.findall(
+        bound + r'<span class="math inline">[^<]*</span>[,.;:)]'
+        r'|(?<!<span class="nobr">)\(<span class="math inline">',
+        html_text,
+    )
     assert not loose, f"{len(loose)} formulas whose punctuation may wrap to the next line: {loose[:3]}"
 
 
@@ -200,17 +224,23 @@ def test_each_figure_embedded_once(html_text):
     dup = len(srcs) - len(set(srcs))
     assert dup == 0, f"{dup} images embedded more than once"
     for key in figs:
-        block = re.findall(r'<figure class="wmr-figure" id="figure-' + re.escape(key) + r'">(.*?)</figure>',
-                           html_text, re.DOTALL)
+        block = re.findall(
+            r'<figure class="wmr-figure" id="figure-' + re.escape(key) + r'">(.*?)</figure>', html_text, re.DOTALL
+        )
         assert len(block) == 1, f"figure {key} shown {len(block)} times in the figures section"
         assert "data:image/svg+xml" in block[0], f"{key}: not shown from its SVG"
 
 
 def test_paper_figures_only_in_the_figures_section(html_text):
     """A chapter's figure cell is replaced by a reference: no chapter output repeats a figure."""
-    shown = [o["data"]["image/png"].replace("\n", "") for nb in CHAPTERS
-             for c in nbformat.read(BUILD / "notebooks" / nb.name, as_version=4).cells if c.cell_type == "code"
-             for o in c.outputs if o.get("metadata", {}).get("wmr_figure") and "image/png" in o.get("data", {})]
+    shown = [
+        o["data"]["image/png"].replace("\n", "")
+        for nb in CHAPTERS
+        for c in nbformat.read(BUILD / "notebooks" / nb.name, as_version=4).cells
+        if c.cell_type == "code"
+        for o in c.outputs
+        if o.get("metadata", {}).get("wmr_figure") and "image/png" in o.get("data", {})
+    ]
     assert len(shown) >= len(read_figures(TREE / "figures")) - 1, "the chapters no longer mark their figures"
     assert not [s for s in shown if s in html_text], "the chapters still show the paper's figures"
 
@@ -273,11 +303,28 @@ def test_html_typesets_offline_in_browser(html_text):
     """Open the page in headless Chromium with the network disabled; math is typeset, none in error."""
     with tempfile.TemporaryDirectory() as prof:
         p = subprocess.run(
-            [str(CHROMIUM), "--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
-             "--disable-background-networking", "--disable-component-update", "--disable-sync",
-             f"--user-data-dir={prof}", "--proxy-server=http://127.0.0.1:9", "--proxy-bypass-list=<-loopback>",
-             "--virtual-time-budget=30000", "--dump-dom", (BUILD / "report.html").as_uri()],
-            capture_output=True, text=True, timeout=240, check=False)
+            [
+                str(CHROMIUM),
+                "--headless",
+                "--no-sandbox",
+                "--disable-gpu",
+                "--disable-quic",
+                "--no-first-run",
+                "--disable-background-networking",
+                "--disable-component-update",
+                "--disable-sync",
+                f"--user-data-dir={prof}",
+                "--proxy-server=http://127.0.0.1:9",
+                "--proxy-bypass-list=<-loopback>",
+                "--virtual-time-budget=30000",
+                "--dump-dom",
+                (BUILD / "report.html").as_uri(),
+            ],
+            capture_output=True,
+            text=True,
+            timeout=240,
+            check=False,
+        )
     dom = p.stdout
     assert "<body" in dom, p.stderr[-2000:]
     dom = re.sub(r"<script.*?</script>|<style.*?</style>", "", dom, flags=re.DOTALL)
@@ -285,8 +332,12 @@ def test_html_typesets_offline_in_browser(html_text):
     assert n > 100, f"MathJax typeset only {n} formulas"
     errors = re.findall(r'data-mjx-error="([^"]*)"', dom) + re.findall(r"<mjx-merror", dom)
     assert not errors, f"{len(errors)} TeX errors: {errors[:5]}"
-    body = re.sub(r"<mjx-container.*?</mjx-container>|<code.*?</code>|<pre.*?</pre>|<details.*?</details>",
-                  "", dom, flags=re.DOTALL)
+    body = re.sub(
+        r"<mjx-container.*?</mjx-container>|<code.*?</code>|<pre.*?</pre>|<details.*?</details>",
+        "",
+        dom,
+        flags=re.DOTALL,
+    )
     text = re.sub(r"<[^>]+>", " ", body)
     leftovers = re.findall(r"\\\(|\\\[|\\[A-Za-z]+|\$", text)
     assert not leftovers, f"untypeset TeX left in the page: {leftovers[:5]}"
@@ -313,7 +364,7 @@ def test_pdf_is_a4_and_dated_from_the_commit(pdf_path):
 def test_pdf_words_inside_the_margins(pdf_path):
     if not HAVE_POPPLER:
         pytest.skip("poppler-utils not installed")
-    page_w, margin = 595.28, 2.4 / 2.54 * 72            # the template's A4 with 2.4 cm margins
+    page_w, margin = 595.28, 2.4 / 2.54 * 72  # the template's A4 with 2.4 cm margins
     bbox = _pdftext(pdf_path, "-bbox")
     out = []
     for page, body in enumerate(re.findall(r"<page[^>]*>(.*?)</page>", bbox, re.DOTALL), 1):
@@ -336,7 +387,7 @@ def test_pdf_text_has_no_raw_tex_or_ascii_math(pdf_path):
     if not HAVE_POPPLER:
         pytest.skip("poppler-utils not installed")
     text = unicodedata.normalize("NFKC", _pdftext(pdf_path, "-layout"))
-    raw = re.findall(r"\\[A-Za-z]+|\$", text)     # any TeX command or dollar left untypeset
+    raw = re.findall(r"\\[A-Za-z]+|\$", text)  # any TeX command or dollar left untypeset
     assert not raw, f"raw TeX in the PDF text: {raw[:10]}"
     ascii_math = re.findall(r"\w+_dot\b|!=|<=>|\^T\b|\b\d\*\d\b|\bkappa\b", text)
     assert not ascii_math, f"ASCII pseudo-math in the PDF text: {ascii_math[:10]}"

@@ -9,6 +9,7 @@ states counts computed from the data (they differ from the real ledger's), puts 
 beside ours, lists only the singular configurations the paper misses, and gives the PDF no escaped
 raw TeX.
 """
+
 from __future__ import annotations
 
 import base64
@@ -34,39 +35,85 @@ REPORT = ("report.html", "report.pdf") if shutil.which("xelatex") and shutil.whi
 
 def png(rgb=(200, 30, 30)) -> bytes:
     """A valid 2x2 PNG."""
+
     def chunk(kind, data):
         return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data) & 0xFFFFFFFF)
+
     raw = b"".join(b"\0" + bytes(rgb) * 2 for _ in range(2))
-    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", 2, 2, 8, 2, 0, 0, 0))
-            + chunk(b"IDAT", zlib.compress(raw)) + chunk(b"IEND", b""))
+    return (
+        b"\x89PNG\r\n\x1a\n"
+        + chunk(b"IHDR", struct.pack(">IIBBBBB", 2, 2, 8, 2, 0, 0, 0))
+        + chunk(b"IDAT", zlib.compress(raw))
+        + chunk(b"IEND", b"")
+    )
 
 
 FIG_PNG = png()
 LEDGER = [
-    {"id": "2", "kind": "equation", "section": "3.1", "verdict": "ok",
-         "printed": r"\dot{\mathbf p}_i = \dot{\mathbf c} + \dot\psi\,\mathbf E\mathbf d_i",
-         "corrected": "", "why": "",
-         "convention": r"$\dot\psi\times\mathbf d_i$ read as $(\dot\psi\mathbf k)\times\mathbf d_i$",
-         "check": "printed form proven equal to the derivation (SymPy)", "printed_holds": "yes", "residual": "< 1e-12",
-         "notebook": "01_first", "anchor": "eq-2", "note": ""},
-    {"id": "3", "kind": "equation", "section": "3.2", "verdict": "typo",
-         "printed": r"\det\mathbf J = -\tfrac{\sqrt3}{2}\cos\beta",
-         "corrected": r"\det\mathbf J = -r^3\tfrac{\sqrt3}{2}\cos\beta", "why": "the factor $r^3$ is missing",
-         "convention": "",
-         "check": "printed form refuted ($r = 2$); corrected form proven equal to the derivation (SymPy)",
-         "printed_holds": "no", "residual": "0", "notebook": "01_first", "anchor": "eq-3", "note": "FIXTURE-NOTE"},
-    {"id": "drift", "kind": "claim", "section": "4.2", "verdict": "wrong",
-         "printed": "“the WMR drifts when $\\dot\\theta_i = 0$” (FIXTURE-CLAIM)",
-         "corrected": r"with locked drives ($\dot\theta_i = 0$) the platform stands still: $\mathbf t = \mathbf 0$",
-         "why": "$\\det\\mathbf M \\ne 0$ at 2000 configurations",
-         "convention": "", "check": "refuted by counterexample", "printed_holds": "no", "residual": "0",
-         "notebook": "01_first", "anchor": "claim-drift", "note": ""},
+    {
+        "id": "2",
+        "kind": "equation",
+        "section": "3.1",
+        "verdict": "ok",
+        "printed": r"\dot{\mathbf p}_i = \dot{\mathbf c} + \dot\psi\,\mathbf E\mathbf d_i",
+        "corrected": "",
+        "why": "",
+        "convention": r"$\dot\psi\times\mathbf d_i$ read as $(\dot\psi\mathbf k)\times\mathbf d_i$",
+        "check": "printed form proven equal to the derivation (SymPy)",
+        "printed_holds": "yes",
+        "residual": "< 1e-12",
+        "notebook": "01_first",
+        "anchor": "eq-2",
+        "note": "",
+    },
+    {
+        "id": "3",
+        "kind": "equation",
+        "section": "3.2",
+        "verdict": "typo",
+        "printed": r"\det\mathbf J = -\tfrac{\sqrt3}{2}\cos\beta",
+        "corrected": r"\det\mathbf J = -r^3\tfrac{\sqrt3}{2}\cos\beta",
+        "why": "the factor $r^3$ is missing",
+        "convention": "",
+        "check": "printed form refuted ($r = 2$); corrected form proven equal to the derivation (SymPy)",
+        "printed_holds": "no",
+        "residual": "0",
+        "notebook": "01_first",
+        "anchor": "eq-3",
+        "note": "FIXTURE-NOTE",
+    },
+    {
+        "id": "drift",
+        "kind": "claim",
+        "section": "4.2",
+        "verdict": "wrong",
+        "printed": "“the WMR drifts when $\\dot\\theta_i = 0$” (FIXTURE-CLAIM)",
+        "corrected": r"with locked drives ($\dot\theta_i = 0$) the platform stands still: $\mathbf t = \mathbf 0$",
+        "why": "$\\det\\mathbf M \\ne 0$ at 2000 configurations",
+        "convention": "",
+        "check": "refuted by counterexample",
+        "printed_holds": "no",
+        "residual": "0",
+        "notebook": "01_first",
+        "anchor": "claim-drift",
+        "note": "",
+    },
 ]
 SINGULAR = [
-    {"family": "(i)", "configuration": "$\\beta_1=\\beta_2=\\beta_3$", "geometric_meaning": "parallel planes",
-         "listed_in_paper": "yes", "note": "LISTED-FAMILY"},
-    {"family": "(i')", "configuration": "$\\beta_i=\\beta+180^\\circ$", "geometric_meaning": "same planes",
-         "listed_in_paper": "no", "note": "MISSED-FAMILY"},
+    {
+        "family": "(i)",
+        "configuration": "$\\beta_1=\\beta_2=\\beta_3$",
+        "geometric_meaning": "parallel planes",
+        "listed_in_paper": "yes",
+        "note": "LISTED-FAMILY",
+    },
+    {
+        "family": "(i')",
+        "configuration": "$\\beta_i=\\beta+180^\\circ$",
+        "geometric_meaning": "same planes",
+        "listed_in_paper": "no",
+        "note": "MISSED-FAMILY",
+    },
 ]
 
 
@@ -84,7 +131,7 @@ def project(tmp_path_factory, worker_id):
         return build_project(tmp_path_factory.mktemp("project"))
     shared = tmp_path_factory.getbasetemp().parent / "report-content-project"
     with open(shared.with_suffix(".lock"), "w") as lock:
-        fcntl.flock(lock, fcntl.LOCK_EX)                  # the other worker waits for the build
+        fcntl.flock(lock, fcntl.LOCK_EX)  # the other worker waits for the build
         if not (shared / "built").exists():
             shutil.rmtree(shared, ignore_errors=True)
             shared.mkdir()
@@ -97,23 +144,30 @@ def build_project(root: Path) -> Path:
     nb = nbformat.v4.new_notebook()
     nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3", "language": "python"}
     nb.cells = [
-        _cell("md", "# 1. First chapter\n\nProse with $x^2$.\n\n<a id=\"eq-2\"></a>\n\n"
-                    "## 1.1 Equation (2)\n\n$$\\dot{\\mathbf p}_i \\tag{2}$$"),
+        _cell(
+            "md",
+            '# 1. First chapter\n\nProse with $x^2$.\n\n<a id="eq-2"></a>\n\n'
+            "## 1.1 Equation (2)\n\n$$\\dot{\\mathbf p}_i \\tag{2}$$",
+        ),
         _cell("code", "from IPython.display import Image, Markdown, Math, display\nimport base64"),
-        _cell("code", f"key = 'fig07'\nImage(data=base64.b64decode({base64.b64encode(FIG_PNG).decode()!r}))",
-              ["figure"]),
-        _cell("md", "<a id=\"eq-3\"></a>\n\n## 1.2 Equation (3)\n\nDerivation of (3)."),
+        _cell(
+            "code", f"key = 'fig07'\nImage(data=base64.b64decode({base64.b64encode(FIG_PNG).decode()!r}))", ["figure"]
+        ),
+        _cell("md", '<a id="eq-3"></a>\n\n## 1.2 Equation (3)\n\nDerivation of (3).'),
         _cell("code", "print('PRINTED-OUTPUT')\ndisplay(Markdown('Shown: $\\\\kappa = 1$ (MARKDOWN-OUTPUT)'))"),
         _cell("code", "Math(r'\\mathbf J = \\mathbf 1 \\quad (LATEX-OUTPUT)')"),
-        _cell("code", "class T:\n    def _repr_html_(self):\n"
-                      "        return '<table><tr><td>HTML-TABLE-OUTPUT</td></tr></table>'\nT()"),
+        _cell(
+            "code",
+            "class T:\n    def _repr_html_(self):\n"
+            "        return '<table><tr><td>HTML-TABLE-OUTPUT</td></tr></table>'\nT()",
+        ),
         _cell("md", "**Exercise.** EXERCISE-TEXT", ["exercise"]),
         _cell("code", "answer_1 = 'ANSWER-TEXT'", ["answer"]),
         _cell("code", "'SOLUTION-TEXT'", ["solution"]),
         _cell("code", "'CHECK-TEXT'", ["check"]),
         _cell("code", "display(Markdown('LEDGER-CELL-OUTPUT'))", ["ledger"]),
         _cell("code", "display(Markdown('WIDGET-STATIC-STATE'))", ["widget"]),
-        _cell("md", "<a id=\"claim-drift\"></a>\n\n## 1.3 The drift claim"),
+        _cell("md", '<a id="claim-drift"></a>\n\n## 1.3 The drift claim'),
     ]
     (root / "notebooks").mkdir()
     nbformat.write(nb, root / "notebooks" / "01_first.ipynb")
@@ -130,21 +184,42 @@ def build_project(root: Path) -> Path:
         w.writerows(SINGULAR)
     svg = '<svg xmlns="http://www.w3.org/2000/svg" width="10" height="10"><rect width="10" height="10"/></svg>'
     for key, number, paper_cap in (("fig07", "7", "PAPER-CAPTION-7"), ("conventions", "", "")):
-        (fig / f"{key}.svg").write_text(svg.replace("10\"/>", f"10\" id=\"{key}\"/>"))
-        shutil.copy(ROOT / "figures" / "conventions.pdf", fig / f"{key}.pdf")     # any vector figure will do
-        (fig / f"{key}.json").write_text(json.dumps({"key": key, "number": number, "title": f"Title of {key}",
-                                                     "paper_caption": paper_cap,
-                                                     "caption": f"OUR-CAPTION-{key} with $L = 1$",
-                                                     "numbers": {}}))
+        (fig / f"{key}.svg").write_text(svg.replace('10"/>', f'10" id="{key}"/>'))
+        shutil.copy(ROOT / "figures" / "conventions.pdf", fig / f"{key}.pdf")  # any vector figure will do
+        (fig / f"{key}.json").write_text(
+            json.dumps(
+                {
+                    "key": key,
+                    "number": number,
+                    "title": f"Title of {key}",
+                    "paper_caption": paper_cap,
+                    "caption": f"OUR-CAPTION-{key} with $L = 1$",
+                    "numbers": {},
+                }
+            )
+        )
     make(root, root / "build", *REPORT)
     return root
 
 
 def make(root: Path, build: Path, *files: str) -> str:
     """``make`` the given files of the report of ``root``, in the build directory ``build``."""
-    p = subprocess.run(["make", "-s", "--no-print-directory", "-j2", "-C", str(ROOT), f"WMR_ROOT={root}",
-                        f"WMR_BUILD={build}", *(str(build / f) for f in files)],
-                       capture_output=True, text=True, check=False)
+    p = subprocess.run(
+        [
+            "make",
+            "-s",
+            "--no-print-directory",
+            "-j2",
+            "-C",
+            str(ROOT),
+            f"WMR_ROOT={root}",
+            f"WMR_BUILD={build}",
+            *(str(build / f) for f in files),
+        ],
+        capture_output=True,
+        text=True,
+        check=False,
+    )
     assert p.returncode == 0, p.stdout + p.stderr
     return p.stdout
 
@@ -158,7 +233,7 @@ def test_tagged_cells_and_program_output_are_dropped(page):
     for gone in ("EXERCISE-TEXT", "ANSWER-TEXT", "SOLUTION-TEXT", "CHECK-TEXT", "LEDGER-CELL-OUTPUT"):  # not even code
         assert gone not in page
     no_code = re.sub(r'<details class="code">.*?</details>', "", page, flags=re.DOTALL)
-    for gone in ("PRINTED-OUTPUT", "HTML-TABLE-OUTPUT"):                      # the code stays, collapsed
+    for gone in ("PRINTED-OUTPUT", "HTML-TABLE-OUTPUT"):  # the code stays, collapsed
         assert gone not in no_code
     for kept in ("MARKDOWN-OUTPUT", "LATEX-OUTPUT", "WIDGET-STATIC-STATE", "Prose with"):
         assert kept in page
@@ -170,7 +245,7 @@ def test_figure_cell_becomes_a_link_and_the_figure_is_shown_once(page):
     block = re.findall(r'<figure class="wmr-figure" id="figure-fig07">(.*?)</figure>', page, re.DOTALL)
     assert len(block) == 1
     assert "PAPER-CAPTION-7" in block[0] and "OUR-CAPTION-fig07" in block[0], "the paper's caption beside ours"
-    assert page.count('id="figure-conventions"') == 1       # the conventions drawing, in the front matter
+    assert page.count('id="figure-conventions"') == 1  # the conventions drawing, in the front matter
     assert page.index('id="figure-conventions"') < page.index('id="errata"')
 
 
@@ -193,17 +268,20 @@ def test_counts_come_from_the_data(page):
     abstract = text(page.split('id="abstract"', 1)[1].split("<h1", 1)[0])
     # the number of equations the paper numbers comes from the transcription (printed.toml), the verdicts from
     # this ledger; the locked-drive claim is judged by edition.findings, the singular families by edition.families
-    assert "The paper numbers 65 equations; this edition judges 2 of the 65 ((1) and (4)–(65) are not judged" \
-        in abstract
+    assert (
+        "The paper numbers 65 equations; this edition judges 2 of the 65 ((1) and (4)–(65) are not judged" in abstract
+    )
     assert "Of those judged, 1 holds as printed, one carries a typo and none are wrong" in abstract
-    assert ("Of the one claim of its text that this edition checks by computation, none hold, none hold once "
-            "corrected and one fails") in abstract
+    assert (
+        "Of the one claim of its text that this edition checks by computation, none hold, none hold once "
+        "corrected and one fails"
+    ) in abstract
     assert "finds ten families of singular configurations" in abstract and "misses three" in abstract
     assert "Figure 7 of the paper is recomputed from the model, and this edition adds one figure of its own" in abstract
     part1 = text(page.split('id="part-i-findings"', 1)[1].split('id="part-ii-derivations"', 1)[0])
     assert "One equation of the paper does not hold as printed (one typo, none wrong)" in part1
     assert "What holds. 1 of the 2 numbered equations judged holds as printed, and one more holds" in part1
-    assert "§3 1 1 0 0 0 0 §4 0 0 0 0 0 1 all 1 1 0 0 0 1" in part1          # verdicts by section, and the totals
+    assert "§3 1 1 0 0 0 0 §4 0 0 0 0 0 1 all 1 1 0 0 0 1" in part1  # verdicts by section, and the totals
 
 
 def test_singular_families_are_counted_under_the_stated_reading(page):

@@ -1,5 +1,6 @@
 """What Part I computes itself (issue 19): the singular families counted under a stated reading, the
 locked-drive claim as Chapter 2 judges it, the number of equations the paper numbers, the apparatus."""
+
 from __future__ import annotations
 
 from pathlib import Path
@@ -39,7 +40,7 @@ def test_covering_items_can_say_no():
     for reading in READINGS:
         held = covering_items(bot, rng.uniform(-np.pi, np.pi, (200, 3)), reading)
         assert set(held) == set(ITEMS) and not any(h.any() for h in held.values()), "a regular configuration covered"
-    turned = np.array([[0.4, 0.4 + np.pi, 0.4]])                # (i) with wheel 2 turned half a turn
+    turned = np.array([[0.4, 0.4 + np.pi, 0.4]])  # (i) with wheel 2 turned half a turn
     assert covering_items(bot, turned)["(i)"].all()
     with pytest.raises(ValueError, match="reading"):
         covering_items(bot, turned, "literal")
@@ -53,6 +54,7 @@ def test_locked_drive_claim_is_judged_on_whenever():
     from edition.checks.assembly import drift, locked_steering
     from edition.derivations import derived
     from edition.ledger import read as read_ledger
+
     ch2 = derived("02_offset_wheels_and_mobility")
     locked = locked_steering(ch2["det_M"], ch2["plucker"], robots=20, per=5)
     quiet = SimpleNamespace(residual=0.0)
@@ -77,6 +79,7 @@ def test_equation_count_from_the_transcription():
 
 def test_readings_and_inferred_conventions_name_real_equations():
     from edition.transcription import table
+
     eqs = table().equations
     assert set(F.readings()) <= set(eqs) and {"13", "15", "21"} <= set(F.readings())
     assert set(F.INFERRED) <= set(eqs)

@@ -6,6 +6,7 @@ slug; every page's running head names the section that page opens with; every fi
 and a caption. The report is the one ``make test`` has just built (``test_report.py`` makes it).
 Each rule is also run on a small text that breaks it, so that it can fail.
 """
+
 from __future__ import annotations
 
 import re
@@ -36,8 +37,11 @@ PROGRAM_OUTPUT = {
 #: what is quoted (the paper's words, its citations "[25]" among them) is not program output
 QUOTED = re.compile(r"“[^”]{0,800}”", re.DOTALL)
 #: what a build leaves when it says where something is instead of showing it, or a note to itself
-PLACEHOLDER = re.compile(r"\bshown once\b|\bTODO\b|\bFIXME\b|\bTBD\b|\bplaceholder\b|\bXXX\b|lorem ipsum"
-                         r"|\(Section [A-Z][a-z]+[,)]|\bThe earlier reading\b", re.IGNORECASE)
+PLACEHOLDER = re.compile(
+    r"\bshown once\b|\bTODO\b|\bFIXME\b|\bTBD\b|\bplaceholder\b|\bXXX\b|lorem ipsum"
+    r"|\(Section [A-Z][a-z]+[,)]|\bThe earlier reading\b",
+    re.IGNORECASE,
+)
 
 
 def program_output(text: str) -> list[str]:
@@ -127,7 +131,7 @@ def uncaptioned_figures(tex: str) -> list[str]:
         if not re.search(r"\\wmrfigtitle\{\\textbf\{Figure [A-Z]?\d+\.\}", m.group(2)):
             bad.append(m.group(1))
     for m in re.finditer(r"\\wmrimage\{([^}]*)\}", tex):
-        after = re.sub(r"\\[a-z]+\{|[{}\s]", " ", tex[m.end():m.end() + 400]).split()
+        after = re.sub(r"\\[a-z]+\{|[{}\s]", " ", tex[m.end() : m.end() + 400]).split()
         number = re.match(r"([A-Z]?)(\d+)", after[1]) if after[:1] == ["Figure"] and len(after) > 1 else None
         if not number:
             bad.append(m.group(1))
@@ -139,26 +143,31 @@ def uncaptioned_figures(tex: str) -> list[str]:
 # ----------------------------------------------------------------------------- the rules can fail
 def test_the_rules_can_fail():
     assert len(program_output("dims [6] and [1, 1, 1]; {d3x: 2}; L in {rho}; u_c: inf, inf; = undefined")) >= 6
-    assert not program_output("the rank is 6 (see [the errata](#errata)), det J = 0 at beta = (10, 20, 30) deg,\n"
-                              "“computed using Maple [25], the”  license = {MIT},")
+    assert not program_output(
+        "the rank is 6 (see [the errata](#errata)), det J = 0 at beta = (10, 20, 30) deg,\n"
+        "“computed using Maple [25], the”  license = {MIT},"
+    )
     assert PLACEHOLDER.search("Figure 7: shown once, in Part I.") and PLACEHOLDER.search("(Section Abstract, 7)")
-    assert slugs_named("the claim isotropy d zero fails; singular-v-immobile too", ["isotropy-d-zero",
-                                                                                    "singular-v-immobile"])
+    assert slugs_named(
+        "the claim isotropy d zero fails; singular-v-immobile too", ["isotropy-d-zero", "singular-v-immobile"]
+    )
     assert not slugs_named("the dead-zone circle and the dead zone", ["dead-zone"])
     pages = ["Errata    head\nErrata\ntext", "Errata    head\ntext\nClaims\nmore", "Errata    head\nmore"]
     assert running_heads(pages, ["Errata", "Claims"]) == ["p. 3: head 'Errata', opens with 'Claims'"]
-    tex = (r"\begin{wmrfigure}{figure-x}\wmrfigtitle{\textbf{Conventions.}}\end{wmrfigure} \wmrimage{a.png} text"
-           r" \wmrimage{b.png} \emph{Figure 8.1. A plot.} \wmrimage{c.png} \emph{Figure D1. A plot.}")
-    assert uncaptioned_figures(tex) == ["figure-x", "a.png",
-                                        "b.png (Figure 8.1. clashes with the paper's Figure 8)"]
+    tex = (
+        r"\begin{wmrfigure}{figure-x}\wmrfigtitle{\textbf{Conventions.}}\end{wmrfigure} \wmrimage{a.png} text"
+        r" \wmrimage{b.png} \emph{Figure 8.1. A plot.} \wmrimage{c.png} \emph{Figure D1. A plot.}"
+    )
+    assert uncaptioned_figures(tex) == ["figure-x", "a.png", "b.png (Figure 8.1. clashes with the paper's Figure 8)"]
 
 
 # ----------------------------------------------------------------------------- the report
 @pytest.fixture(scope="module")
 def pdf_pages():
     make(str(BUILD / "report.pdf"))
-    text = subprocess.run(["pdftotext", "-layout", str(BUILD / "report.pdf"), "-"], capture_output=True,
-                          text=True, check=True).stdout
+    text = subprocess.run(
+        ["pdftotext", "-layout", str(BUILD / "report.pdf"), "-"], capture_output=True, text=True, check=True
+    ).stdout
     return [unicodedata.normalize("NFKC", p) for p in text.split("\f")]
 
 

@@ -6,6 +6,7 @@ ulp (``np.nextafter``, up and down: every float the figure's data holds, the rob
 included), with NumPy's transcendental functions moved by one ulp as well while it is drawn, and each
 committed file (SVG, PDF, JSON) must come out byte for byte the same.
 """
+
 from __future__ import annotations
 
 import contextlib
@@ -23,8 +24,7 @@ from conftest import ROOT
 
 FIGURES = ROOT / "figures"
 #: the NumPy functions whose last bit differs between CPUs (vectorised implementations and libm)
-TRANSCENDENTAL = ("sin", "cos", "tan", "arcsin", "arccos", "arctan", "arctan2", "hypot", "sqrt", "exp", "log",
-                  "log10")
+TRANSCENDENTAL = ("sin", "cos", "tan", "arcsin", "arccos", "arctan", "arctan2", "hypot", "sqrt", "exp", "log", "log10")
 
 
 def nudge(x, direction, magnitude=False):
@@ -32,9 +32,14 @@ def nudge(x, direction, magnitude=False):
     if isinstance(x, wmr.Robot):
         return wmr.Robot([nudge(u, direction) for u in x.wheels], name=x.name)
     if dataclasses.is_dataclass(x) and not isinstance(x, type):
-        return dataclasses.replace(x, **{f.name: nudge(getattr(x, f.name), direction,
-                                                       f.metadata.get("json") == "residual")
-                                         for f in dataclasses.fields(x) if f.init})
+        return dataclasses.replace(
+            x,
+            **{
+                f.name: nudge(getattr(x, f.name), direction, f.metadata.get("json") == "residual")
+                for f in dataclasses.fields(x)
+                if f.init
+            },
+        )
     if isinstance(x, np.ndarray) and x.dtype.kind == "f":
         y = np.where(np.isfinite(x), np.nextafter(x, direction), x)
         return np.abs(y) if magnitude else y
@@ -56,9 +61,14 @@ def another_cpu(direction):
     def off(fn):
         def f(*args, **kw):
             r = fn(*args, **kw)
-            return np.where(np.isfinite(r), np.nextafter(r, direction), r) if np.ndim(r) else (
-                np.nextafter(r, direction) if np.isfinite(r) else r)
+            return (
+                np.where(np.isfinite(r), np.nextafter(r, direction), r)
+                if np.ndim(r)
+                else (np.nextafter(r, direction) if np.isfinite(r) else r)
+            )
+
         return f
+
     try:
         for name, fn in saved.items():
             setattr(np, name, off(fn))

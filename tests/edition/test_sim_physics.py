@@ -1,5 +1,6 @@
 """Chapter 9's experiments: verdicts computed from the measurements (a different physics flips them), and
 ``figures/physics.csv`` the same file when every input is moved by one ulp (as another CPU would move it)."""
+
 from __future__ import annotations
 
 import csv
@@ -23,8 +24,15 @@ COMMITTED = ROOT / "figures" / "physics.csv"
 
 def test_table_has_one_row_per_experiment_and_the_columns_asked_for():
     rows = list(csv.DictReader(io.StringIO(COMMITTED.read_text(encoding="utf-8"))))
-    assert [r["experiment"] for r in rows] == ["dead-zone", "jam", "incompatible-steering", "braking", "dual-wheel",
-                                               "isotropy-noise", "resteer"]
+    assert [r["experiment"] for r in rows] == [
+        "dead-zone",
+        "jam",
+        "incompatible-steering",
+        "braking",
+        "dual-wheel",
+        "isotropy-noise",
+        "resteer",
+    ]
     assert list(rows[0]) == ["experiment", "claim", "prediction", "measurement", "agreement", "verdict", "parameters"]
     for r in rows:
         assert r["verdict"].split(" (")[0] in (HOLDS, FAILS) or r["verdict"].startswith("holds within ")
@@ -34,7 +42,7 @@ def test_table_has_one_row_per_experiment_and_the_columns_asked_for():
 def test_rounding_and_verdicts():
     assert sig(0.012345) == 0.012 and sig(-98765.0) == -99000.0 and fmt(0.049373) == "0.049"
     assert verdict(0.0149, 0.02, 0.1) == HOLDS and verdict(0.05, 0.02, 0.1) == "holds within 5.0 %"
-    assert verdict(0.1049, 0.02, 0.1) == "holds within 10 %" and verdict(0.106, 0.02, 0.1) == FAILS   # rounded first
+    assert verdict(0.1049, 0.02, 0.1) == "holds within 10 %" and verdict(0.106, 0.02, 0.1) == FAILS  # rounded first
 
 
 def test_a_stronger_servo_turns_the_jam_into_a_skid():
@@ -82,6 +90,7 @@ def test_physics_csv_does_not_depend_on_the_last_bits(monkeypatch, direction):
 def test_doctests_and_docstrings(module):
     import doctest
     import importlib
+
     mod = importlib.import_module(f"edition.physics.{module}")
     assert mod.__doc__ and mod.__all__
     assert doctest.testmod(mod, optionflags=doctest.ELLIPSIS).failed == 0

@@ -3,6 +3,7 @@
 The checks are tied to the model (Robot.J) and to the paper's statements; the mutant tests show
 that they fail when the model is wrong (a flipped rotation or a flipped sign in J2).
 """
+
 import dataclasses
 
 import numpy as np
@@ -37,6 +38,7 @@ def printed_59():
     b1, b2, b3 = sp.symbols("beta1:4", real=True)
     try:
         from edition import printed
+
         e = printed("59").expr
         if isinstance(e, sp.Equality):
             e = e.rhs
@@ -45,9 +47,13 @@ def printed_59():
     except (ValueError, ImportError):
         pass
     s3 = sp.sqrt(3)
-    return (-s3 / 2 * sp.cos(b1 - b2 - b3) + sp.Rational(3, 4) * sp.sin(b1 - b2 + b3)
-            - sp.Rational(3, 4) * sp.sin(b1 + b2 - b3) + s3 / 4 * sp.cos(b1 + b2 - b3)
-            + s3 / 4 * sp.cos(b1 - b2 + b3))
+    return (
+        -s3 / 2 * sp.cos(b1 - b2 - b3)
+        + sp.Rational(3, 4) * sp.sin(b1 - b2 + b3)
+        - sp.Rational(3, 4) * sp.sin(b1 + b2 - b3)
+        + s3 / 4 * sp.cos(b1 + b2 - b3)
+        + s3 / 4 * sp.cos(b1 - b2 + b3)
+    )
 
 
 # ----------------------------------------------------------------------------- exact statements
@@ -60,7 +66,7 @@ def test_printed_list_holds_for_every_free_angle():
 def test_characterisation_is_exact():
     S = edition.symbols
     ch = sg.characterisation(wmr.paper_robot("centred", L=S.L, r=S.r, exact=True), L=S.L)
-    assert ch["identity_general"]          # det J = -(r1 r2 r3 / L) det W for any three mount points
+    assert ch["identity_general"]  # det J = -(r1 r2 r3 / L) det W for any three mount points
     assert ch["identity_robot"]
     assert ch["independent_of_L"]
     assert ch["irreducible"]
@@ -69,14 +75,14 @@ def test_characterisation_is_exact():
 def test_det_J_is_r_cubed_times_printed_59():
     S = edition.symbols
     det = sg.det_J_symbolic(wmr.paper_robot("centred", L=S.L, r=S.r, exact=True), L=S.L)
-    assert symbolic_equal(det, S.r ** 3 * printed_59())
+    assert symbolic_equal(det, S.r**3 * printed_59())
 
 
 def test_det_J_numeric_matches_symbolic(bot):
     rng = np.random.default_rng(7)
     beta = rng.uniform(-np.pi, np.pi, (50, 3))
     b = edition.symbols.beta
-    f = sp.lambdify(b, 0.25 ** 3 * printed_59(), "numpy")
+    f = sp.lambdify(b, 0.25**3 * printed_59(), "numpy")
     assert np.allclose(sg.det_J(bot, beta), f(*beta.T), atol=1e-14)
     assert sg.det_J(bot, beta.reshape(5, 10, 3)).shape == (5, 10)
 
@@ -84,10 +90,10 @@ def test_det_J_numeric_matches_symbolic(bot):
 # ----------------------------------------------------------------------------- geometry
 def test_zero_set_is_concurrency_of_wheel_planes(bot, fams):
     rng = np.random.default_rng(11)
-    for beta in rng.uniform(-np.pi, np.pi, (200, 3)):          # generic: regular, lines not concurrent
+    for beta in rng.uniform(-np.pi, np.pi, (200, 3)):  # generic: regular, lines not concurrent
         assert not sg.is_singular(bot, beta)
         assert ln.concurrency_point(bot, beta).kind == ln.NONE
-    for f in fams.values():                                      # every family: concurrent, singular
+    for f in fams.values():  # every family: concurrent, singular
         for beta in f.samples[:: max(1, len(f.samples) // 40)]:
             assert sg.is_singular(bot, beta)
             assert ln.concurrency_point(bot, beta).kind != ln.NONE
@@ -120,15 +126,21 @@ def _cases(bot):
     P3 = bot.mount_points[2]
     vP = ln.planes_through(bot, P3)
     vP[2] = 17 * DEG
-    U = np.array([np.cos(40 * DEG), np.sin(40 * DEG)])        # on the circle through the P_i (radius L)
+    U = np.array([np.cos(40 * DEG), np.sin(40 * DEG)])  # on the circle through the P_i (radius L)
     return {
-        "i": [0.3, 0.3, 0.3], "i'": [0.3, 0.3 + np.pi, 0.3],
+        "i": [0.3, 0.3, 0.3],
+        "i'": [0.3, 0.3 + np.pi, 0.3],
         # the paper's items (ii)-(iv), their half-turn variants
-        "pair-13": np.array([60, 17, 60]) * DEG, "pair-13'": np.array([60, 17, -120]) * DEG,
-        "pair-12": np.array([-60, -60, 17]) * DEG, "pair-12'": np.array([120, -60, 17]) * DEG,
-        "pair-23": np.array([17, 0, 0]) * DEG, "pair-23'": np.array([17, 180, 0]) * DEG,
-        "v-C": np.array([90, -30, 30]) * DEG, "v-P": vP,
-        "v-circle": ln.axles_through(bot, U), "v": ln.planes_through(bot, [0.7, -1.9]),
+        "pair-13": np.array([60, 17, 60]) * DEG,
+        "pair-13'": np.array([60, 17, -120]) * DEG,
+        "pair-12": np.array([-60, -60, 17]) * DEG,
+        "pair-12'": np.array([120, -60, 17]) * DEG,
+        "pair-23": np.array([17, 0, 0]) * DEG,
+        "pair-23'": np.array([17, 180, 0]) * DEG,
+        "v-C": np.array([90, -30, 30]) * DEG,
+        "v-P": vP,
+        "v-circle": ln.axles_through(bot, U),
+        "v": ln.planes_through(bot, [0.7, -1.9]),
         "regular": [0.1, 0.5, -0.7],
     }
 
@@ -143,7 +155,7 @@ def test_classify(bot):
 def test_rank_F_of_the_families(bot):
     cases = _cases(bot)
     ranks = {k: int(wmr.rank_F(bot, np.asarray(v, dtype=float))) for k, v in cases.items()}
-    assert ranks["i"] == ranks["i'"] == ranks["v-circle"] == 5      # singular J, yet the robot can move
+    assert ranks["i"] == ranks["i'"] == ranks["v-circle"] == 5  # singular J, yet the robot can move
     for k in ("pair-13", "pair-13'", "pair-12", "pair-23", "v-C", "v-P", "v", "regular"):
         assert ranks[k] == 6, k
 
@@ -158,8 +170,20 @@ def test_singular_motions(bot):
 
 # ----------------------------------------------------------------------------- the table
 def test_families_table(fams):
-    assert set(fams) == {"i", "i'", "pair-13", "pair-13'", "pair-12", "pair-12'", "pair-23", "pair-23'",
-                         "v", "v-C", "v-P", "v-circle"}
+    assert set(fams) == {
+        "i",
+        "i'",
+        "pair-13",
+        "pair-13'",
+        "pair-12",
+        "pair-12'",
+        "pair-23",
+        "pair-23'",
+        "v",
+        "v-C",
+        "v-P",
+        "v-circle",
+    }
     for f in fams.values():
         assert f.det_J_exact_zero is True, f.key
         assert f.det_J_max <= 1e-12, f.key
@@ -175,6 +199,7 @@ def test_families_table(fams):
 
 def test_write_csv(tmp_path):
     import csv
+
     rows = catalogue.write_csv(tmp_path / "s.csv", n=12, exact=False)
     with open(tmp_path / "s.csv", newline="", encoding="utf-8") as f:
         back = list(csv.DictReader(f))
@@ -189,6 +214,7 @@ class _MirroredWheel(CentredWheel):
 
     def block(self, beta, backend=None):
         from wmr.model.backend import choose
+
         bk = choose(beta, self.r, *self.position, backend=backend)
         return rotation(-beta, bk) @ self.local_block(bk)
 
@@ -207,7 +233,7 @@ def _mutant(cls):
 
 def test_checks_fail_for_a_mirrored_model():
     res = catalogue.check_paper_items(_mutant(_MirroredWheel))
-    assert res["(i)"]                         # parallel planes stay singular under any model of this kind
+    assert res["(i)"]  # parallel planes stay singular under any model of this kind
     assert not all(res[k] for k in res if k.startswith(("(ii)", "(iii)", "(iv)")))
 
 

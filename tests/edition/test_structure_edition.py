@@ -1,6 +1,7 @@
 """The shape of the edition's code, read by the library's structure test (tests/test_structure.py) over
 ``edition/`` together with ``wmr/``: no import cycles through the edition, no private names imported
 across its modules (``wmr`` never imports the edition: tests/test_structure.py checks that alone)."""
+
 from conftest import ROOT
 from test_structure import WMR, cycles, graph, modules, private_imports
 
@@ -10,7 +11,7 @@ BOTH = {**WMR, **EDITION}
 
 def test_the_reader_sees_the_edition():
     assert {"edition.transcription", "edition.ledger", "edition.physics.common"} <= set(EDITION)
-    assert {"wmr", "wmr.sim"} <= graph(BOTH)["edition.physics.common"]        # edges into the library are seen
+    assert {"wmr", "wmr.sim"} <= graph(BOTH)["edition.physics.common"]  # edges into the library are seen
 
 
 def test_no_import_cycles_in_the_edition():

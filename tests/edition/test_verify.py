@@ -1,4 +1,5 @@
 """The edition's comparison helpers (edition.verify): exact equality and the largest numerical residual."""
+
 import pytest
 import sympy as sp
 from hypothesis import given
@@ -24,5 +25,5 @@ def test_max_residual(n):
     assert verify.max_residual(sp.sin(x) ** 2 + sp.cos(x) ** 2 - 1, n=n) < 1e-14
     assert verify.max_residual(sp.sin(x), sp.cos(x), n=n) > 0
     r1 = verify.max_residual(sp.sin(x) - x / 2, n=n)
-    assert r1 == verify.max_residual(sp.sin(x) - x / 2, n=n)              # fixed seed: deterministic
+    assert r1 == verify.max_residual(sp.sin(x) - x / 2, n=n)  # fixed seed: deterministic
     assert verify.max_residual(p - 2, ranges={p: (2.0, 2.0)}, n=n) == 0.0

@@ -27,6 +27,26 @@ r"""Analyses of any robot built with :mod:`wmr.model`.
 Every function takes a robot; none defaults to the paper's.
 """
 
-__all__ = ["linalg", "mobility", "isotropy", "kinematics", "steering", "simulation", "lines", "square", "singularities",
-           "det_exact", "sweep", "reference", "classes", "design", "motion_kappa", "overview", "actuation",
-           "limitations", "advice", "singular", "glossary"]
+__all__ = [
+    "linalg",
+    "mobility",
+    "isotropy",
+    "kinematics",
+    "steering",
+    "simulation",
+    "lines",
+    "square",
+    "singularities",
+    "det_exact",
+    "sweep",
+    "reference",
+    "classes",
+    "design",
+    "motion_kappa",
+    "overview",
+    "actuation",
+    "limitations",
+    "advice",
+    "singular",
+    "glossary",
+]

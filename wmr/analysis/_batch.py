@@ -12,6 +12,7 @@ The number of threads is ``os.cpu_count()`` unless the environment variable ``WM
 says otherwise or :func:`limit_threads` lowers it (Dask workers run their chunks with one
 thread each).  A kernel called from inside a chunk runs serially: no nested pools.
 """
+
 from __future__ import annotations
 
 import contextlib
@@ -131,6 +132,6 @@ def map_matrices(fn, A, chunk=_MATRIX_CHUNK):
     if flat.shape[0] <= chunk or n_threads() <= 1:
         res = fn(flat)
     else:
-        parts = [flat[i:i + chunk] for i in range(0, flat.shape[0], chunk)]
+        parts = [flat[i : i + chunk] for i in range(0, flat.shape[0], chunk)]
         res = np.concatenate(list(_get_pool().map(lambda X: _inside(fn, X), parts)), axis=0)
     return res.reshape(batch + res.shape[1:])

@@ -7,6 +7,7 @@ closed form cannot vouch for its result (a nearly rank-deficient member, a condi
 whose computed error bound is too large) it says so, and :mod:`wmr.analysis.linalg` sends that
 member to the SVD: every decision stays the SVD's.
 """
+
 from __future__ import annotations
 
 import numpy as np
@@ -22,7 +23,7 @@ _EPS = np.finfo(float).eps
 KAPPA_ERROR = 16.0
 _SAFE = (1e-100, 1e100)
 #: :func:`kappa_from_columns` accepts a relative error bound up to this, or the SVD's own if larger
-ACCURACY = 1e-12       # range of ||A||_F^2 where no product below over- or underflows
+ACCURACY = 1e-12  # range of ||A||_F^2 where no product below over- or underflows
 
 
 def _entries(A, a, b, scale=None):
@@ -34,9 +35,9 @@ def _entries(A, a, b, scale=None):
     """
     m, n = A.shape[1:]
     X = A[a:b].reshape(b - a, m * n).T
-    if scale is not None:                           # a new array (X may be a view of A)
+    if scale is not None:  # a new array (X may be a view of A)
         X = (X.reshape(m, n, b - a) / np.asarray(scale, dtype=float)[None, :, None]).reshape(m * n, b - a)
-    elif X.strides[1] != X.itemsize:                # not entry-major (see wmr.model.trig): copy once
+    elif X.strides[1] != X.itemsize:  # not entry-major (see wmr.model.trig): copy once
         X = np.ascontiguousarray(X)
     return [[X[i * n + j] for j in range(n)] for i in range(m)]
 
@@ -123,12 +124,12 @@ def certified_full_rank(A, scale=None):
             f = _dot([x for row in e for x in row], [x for row in e for x in row])
             if m == n:
                 D = np.abs(_det_entries(e))
-                err = (10 * p + 100) * _EPS * f ** (p / 2)                     # >> rounding of det A
+                err = (10 * p + 100) * _EPS * f ** (p / 2)  # >> rounding of det A
                 ok = (D - err) > 2 * TOL * np.sqrt(f) * f ** ((p - 1) / 2)
             else:
                 g = _gram_entries(e, rows=m < n)
                 G = [[g[min(i, j)][max(i, j)] for j in range(p)] for i in range(p)]
-                err = (10 * (m + n) + 100) * _EPS * f ** p                     # >> rounding of G and det G
+                err = (10 * (m + n) + 100) * _EPS * f**p  # >> rounding of G and det G
                 ok = (_det_entries(G) - err) > (2 * TOL) ** 2 * f * f ** (p - 1)
             out[a:b] = ok & np.isfinite(f) & (f > 0)
 
@@ -193,11 +194,11 @@ def _gram_eigen(g00, g01, g02, g11, g12, g22):
     Returns ``(f, lam1, lam2, E)``: the trace, :math:`\\lambda_1`, :math:`\\lambda_2` and the bound
     :math:`E` of their absolute rounding error.
     """
-    f = g00 + g11 + g22                                    # ||A||_F^2 = tr G
+    f = g00 + g11 + g22  # ||A||_F^2 = tr G
     q = f / 3
-    b00, b11, b22 = g00 - q, g11 - q, g22 - q              # B = G - q I
+    b00, b11, b22 = g00 - q, g11 - q, g22 - q  # B = G - q I
     p2 = _dot([b00, b11, b22, g01, g02, g12], [b00, b11, b22, 2 * g01, 2 * g02, 2 * g12])
-    p2 /= 6                                                # tr B^2 / 6
+    p2 /= 6  # tr B^2 / 6
     p = np.sqrt(p2)
     det_B = b00 * (b11 * b22 - g12 * g12) - g01 * (g01 * b22 - g12 * g02) + g02 * (g01 * g12 - b11 * g02)
     r = np.clip(det_B / np.where(p2 > 0, 2 * p * p2, 1.0), -1.0, 1.0)
@@ -205,8 +206,8 @@ def _gram_eigen(g00, g01, g02, g11, g12, g22):
     t = np.tan(np.arccos(r) / 6)
     h = 2 / (1 + t * t)
     c, s = h - 1, t * h
-    lam1 = q + 2 * p * c                                   # q + 2p cos(phi)
-    lam2 = q + p * (np.sqrt(3) * s - c)                    # q + 2p cos(phi - 2 pi / 3)
+    lam1 = q + 2 * p * c  # q + 2p cos(phi)
+    lam2 = q + p * (np.sqrt(3) * s - c)  # q + 2p cos(phi - 2 pi / 3)
     E = _EPS * q + np.minimum(2 * p, _EPS * q / np.sqrt(np.maximum(1 - r * r, 1e-300)))
     return f, lam1, lam2, E
 
@@ -214,21 +215,29 @@ def _gram_eigen(g00, g01, g02, g11, g12, g22):
 def _accept(kappa, f, lam1, lam2, E, det_error, accuracy=0.0):
     """The first-order error bound of kappa = lam1 sqrt(lam2) / |det| and the acceptance tests (see the docstring)."""
     bound = 0.5 * E * (1 / lam1 + 1 / lam2) + det_error
-    return ((4 * bound <= np.maximum(KAPPA_ERROR * _EPS * kappa, accuracy))
-            & (2 * TOL * kappa < 1.0)                                                  # sigma_3 > 2 TOL sigma_1
-            & (f > _SAFE[0]) & (f < _SAFE[1]) & (lam2 > 0) & np.isfinite(kappa))
+    return (
+        (4 * bound <= np.maximum(KAPPA_ERROR * _EPS * kappa, accuracy))
+        & (2 * TOL * kappa < 1.0)  # sigma_3 > 2 TOL sigma_1
+        & (f > _SAFE[0])
+        & (f < _SAFE[1])
+        & (lam2 > 0)
+        & np.isfinite(kappa)
+    )
 
 
 def _kappa_entries(e):
     (a0, a1, a2), (a3, a4, a5), (a6, a7, a8) = e
-    g = _gram_entries(e, rows=False)                       # G = A^T A, upper triangle
+    g = _gram_entries(e, rows=False)  # G = A^T A, upper triangle
     f, lam1, lam2, E = _gram_eigen(g[0][0], g[0][1], g[0][2], g[1][1], g[1][2], g[2][2])
     # det A by cofactors, and the permanent of |A| from the same products (its rounding bound)
     x48, x57, x56, x38, x37, x46 = a4 * a8, a5 * a7, a5 * a6, a3 * a8, a3 * a7, a4 * a6
     absD = np.abs(a0 * (x48 - x57) + a1 * (x56 - x38) + a2 * (x37 - x46))
-    per = (np.abs(a0) * (np.abs(x48) + np.abs(x57)) + np.abs(a1) * (np.abs(x56) + np.abs(x38))
-           + np.abs(a2) * (np.abs(x37) + np.abs(x46)))
-    kappa = lam1 * np.sqrt(lam2) / absD                    # sqrt(lam1 / lam3), lam3 = det^2 / (lam1 lam2)
+    per = (
+        np.abs(a0) * (np.abs(x48) + np.abs(x57))
+        + np.abs(a1) * (np.abs(x56) + np.abs(x38))
+        + np.abs(a2) * (np.abs(x37) + np.abs(x46))
+    )
+    kappa = lam1 * np.sqrt(lam2) / absD  # sqrt(lam1 / lam3), lam3 = det^2 / (lam1 lam2)
     return kappa, _accept(kappa, f, lam1, lam2, E, _EPS * per / absD)
 
 
@@ -268,7 +277,7 @@ def kappa_from_columns(cols, accuracy=ACCURACY):
     (True, True)
     """
     C = np.asarray(cols, dtype=float)
-    if not isinstance(cols, np.ndarray):                        # lists: column-major -> (3, n, k)
+    if not isinstance(cols, np.ndarray):  # lists: column-major -> (3, n, k)
         C = C.transpose(1, 0, 2)
     n = C.shape[1]
     # G = M M^T: each entry a sum over the columns (one reduction over the stacked columns)

@@ -30,6 +30,7 @@ A twist :math:`\mathbf t\in\mathcal T` is **commanded** by the motors when it ha
 :mod:`wmr.model.tolerance`): otherwise part of it is a motion that needs a passive joint to move
 by itself (:func:`uncontrolled`; :func:`wmr.inverse` then calls it not admissible).
 """
+
 from __future__ import annotations
 
 import numpy as np
@@ -69,7 +70,7 @@ def driven_columns(robot) -> np.ndarray:
 
 
 def _scale(robot):
-    return robot.F_column_norms[:3]            # the twist columns of F: the dimensionless coordinates
+    return robot.F_column_norms[:3]  # the twist columns of F: the dimensionless coordinates
 
 
 def actuated_mobility(robot, beta) -> np.ndarray:
@@ -132,8 +133,9 @@ def free_twists(robot, beta) -> np.ndarray:
     robot = V.numeric_robot(robot)
     beta = robot.effective_beta(beta)
     if beta.ndim != 1:
-        raise InputValueError(f"beta must be one configuration of shape ({robot.w},) for free_twists, "
-                              f"got shape {beta.shape}")
+        raise InputValueError(
+            f"beta must be one configuration of shape ({robot.w},) for free_twists, got shape {beta.shape}"
+        )
     Ap, _ = twist_constraints(robot, beta, free=~driven_columns(robot))
     s = _scale(robot)
     if Ap.shape[0] == 0:
@@ -180,7 +182,7 @@ def uncontrolled(robot, beta, twist) -> tuple[np.ndarray, np.ndarray]:
     mh = np.abs(h).max(axis=-1, keepdims=True)
     that = h / np.where(mh > 0, mh, 1.0)
     free = ~driven_columns(robot)
-    if not free.any() and rank(robot.J1() / s) == 3:      # every joint driven: the motors hold every twist
+    if not free.any() and rank(robot.J1() / s) == 3:  # every joint driven: the motors hold every twist
         part_hat = np.zeros(batch + (3,))
     else:
         Ap, _ = twist_constraints(robot, np.broadcast_to(beta, batch + (robot.w,)), free=free)
@@ -188,14 +190,14 @@ def uncontrolled(robot, beta, twist) -> tuple[np.ndarray, np.ndarray]:
             part_hat = that.copy()
         else:
             Ah = Ap / s
-            _, sv, Vt = np.linalg.svd(Ah, full_matrices=True)           # (..., k, 3): right vectors (..., 3, 3)
+            _, sv, Vt = np.linalg.svd(Ah, full_matrices=True)  # (..., k, 3): right vectors (..., 3, 3)
             k = sv.shape[-1]
-            null = np.ones(batch + (3,), dtype=bool)                   # rows of Vt beyond the rank
+            null = np.ones(batch + (3,), dtype=bool)  # rows of Vt beyond the rank
             null[..., :k] = sv <= TOL * sv[..., :1]
             coef = np.einsum("...ij,...j->...i", Vt, that) * null
             part_hat = np.einsum("...ij,...i->...j", Vt, coef)
     commanded = np.linalg.norm(part_hat, axis=-1) <= TOL * np.linalg.norm(that, axis=-1)
-    with np.errstate(over="ignore"):                      # (for display: a part beyond 1e308 is inf)
+    with np.errstate(over="ignore"):  # (for display: a part beyond 1e308 is inf)
         part = part_hat / s * mh * mt
     return part, commanded
 
@@ -226,13 +228,14 @@ def describe_twist(robot, twist) -> str:
     ('on the spot (turning about C)', 'in a turn about the point (1, 0) m')
     """
     from .steering import instantaneous_centre
+
     robot = V.numeric_robot(robot)
     t = V.twist_array("twist", twist)
     size = float(np.abs(robot.mount_points).max()) or 1.0
     ic = instantaneous_centre(t, length=size)
     if int(ic.kind) == AT_INFINITY:
         a = float(np.degrees(np.arctan2(t[2], t[1])))
-        a = (a + 90.0) % 180.0 - 90.0                    # a direction of travel: a line, either way
+        a = (a + 90.0) % 180.0 - 90.0  # a direction of travel: a line, either way
         if abs(a) < 0.5:
             return "straight ahead (along x)"
         if abs(abs(a) - 90.0) < 0.5:

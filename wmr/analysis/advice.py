@@ -21,6 +21,7 @@ robot).
 :math:`\mathbf J_2^T\mathbf J_2 = \mathrm{blockdiag}(\mathbf L_i^T\mathbf L_i)` does not depend on the
 configuration, so :math:`\kappa(\mathbf J_2)` is one number per robot.
 """
+
 from __future__ import annotations
 
 import dataclasses
@@ -97,13 +98,13 @@ def motor_conditioning(robot, beta) -> float:
     """
     robot = V.numeric_robot(robot)
     beta = robot.effective_beta(beta)
-    s = robot.F_column_norms[:3]                                      # dimensionless twist coordinates
-    T = admissible_twists(robot, beta) * s[:, None]                # dimensionless, then orthonormalised
+    s = robot.F_column_norms[:3]  # dimensionless twist coordinates
+    T = admissible_twists(robot, beta) * s[:, None]  # dimensionless, then orthonormalised
     if T.shape[1] == 0:
         return float("inf")
     Q, _ = np.linalg.qr(T)
-    rates = inverse(robot, beta, (Q / s[:, None]).T).value            # (m, n_rates)
-    M = rates[:, driven_columns(robot)].T                            # (n_driven, m)
+    rates = inverse(robot, beta, (Q / s[:, None]).T).value  # (m, n_rates)
+    M = rates[:, driven_columns(robot)].T  # (n_driven, m)
     if M.shape[0] < M.shape[1]:
         return float("inf")
     return float(condition_number(M))
@@ -133,9 +134,13 @@ def profile(robot) -> dict:
     robot = V.numeric_robot(robot)
     c = campion_class(robot)
     L = float(characteristic_length(robot))
-    return {"class": c.label, "actuated_mobility": int(actuated_mobility(robot, np.asarray(c.beta))), "L": L,
-            "kappa_JL1": float(condition_number(robot.J1(L=L))),
-            "kappa_J2": float(condition_number(robot.J2(np.zeros(robot.w))))}
+    return {
+        "class": c.label,
+        "actuated_mobility": int(actuated_mobility(robot, np.asarray(c.beta))),
+        "L": L,
+        "kappa_JL1": float(condition_number(robot.J1(L=L))),
+        "kappa_J2": float(condition_number(robot.J2(np.zeros(robot.w)))),
+    }
 
 
 def _g(x):
@@ -148,12 +153,17 @@ def _delta_m(label):
 
 def _lost(robot, changed, before, after):
     """Why a change is not advised (empty when it costs no motion and its motors drive every motion)."""
-    if (after["class"] == before["class"] and after["actuated_mobility"] >= before["actuated_mobility"]
-            and after["actuated_mobility"] == _delta_m(after["class"])):
+    if (
+        after["class"] == before["class"]
+        and after["actuated_mobility"] >= before["actuated_mobility"]
+        and after["actuated_mobility"] == _delta_m(after["class"])
+    ):
         return ""
     new = [s for s in limitations(changed) if s not in limitations(robot)] or limitations(changed)
-    why = f"class {after['class']} (now {before['class']}), actuated mobility {after['actuated_mobility']} " \
-          f"(now {before['actuated_mobility']})"
+    why = (
+        f"class {after['class']} (now {before['class']}), actuated mobility {after['actuated_mobility']} "
+        f"(now {before['actuated_mobility']})"
+    )
     return f"; not advised: {why}" + (f" -- {new[0]}" if new else "")
 
 
@@ -208,9 +218,17 @@ def actuation_advice(robot, before=None) -> list[Advice]:
     if after["class"] != before["class"] or after["actuated_mobility"] < dm:
         return []
     what = "; ".join(f"wheel {k + 1} {words}" for k, words, _ in pick)
-    return [Advice("actuation", f"actuation: build {what}: then actuated mobility {after['actuated_mobility']} "
-                   f"(now {before['actuated_mobility']}), the motors' map to the twist has condition number "
-                   f"{kappa:.4g}, kappa(J2) = {_g(after['kappa_J2'])}", True, before, after)]
+    return [
+        Advice(
+            "actuation",
+            f"actuation: build {what}: then actuated mobility {after['actuated_mobility']} "
+            f"(now {before['actuated_mobility']}), the motors' map to the twist has condition number "
+            f"{kappa:.4g}, kappa(J2) = {_g(after['kappa_J2'])}",
+            True,
+            before,
+            after,
+        )
+    ]
 
 
 def _change(robot, before, units, what):
@@ -219,8 +237,10 @@ def _change(robot, before, units, what):
     after = profile(changed)
     lost = _lost(robot, changed, before, after)
     gain = after["kappa_J2"] < before["kappa_J2"] * (1 - TOL)
-    text = (f"J2: {what}: then kappa(J2) = {_g(after['kappa_J2'])} (now {_g(before['kappa_J2'])})"
-            f"{lost or ('' if gain else ': no gain by itself')}")
+    text = (
+        f"J2: {what}: then kappa(J2) = {_g(after['kappa_J2'])} (now {_g(before['kappa_J2'])})"
+        f"{lost or ('' if gain else ': no gain by itself')}"
+    )
     return Advice("J2", text, gain and not lost, before, after)
 
 
@@ -262,21 +282,37 @@ def advice(robot, before=None) -> tuple[list[Advice], dict]:
         moved = robot.moved(origin=centroid)
         after = profile(moved)
         ok = after["kappa_JL1"] < before["kappa_JL1"]
-        out.append(Advice("J_L1", f"J_L1: move C to the centroid of the mount points, ({centroid[0]:.4g}, "
-                          f"{centroid[1]:.4g}) in this frame (subtract it from every position); then L = "
-                          f"{after['L']:.4g} gives kappa(J_L1) = {_g(after['kappa_JL1'])} (now "
-                          f"{_g(before['kappa_JL1'])} at L = {before['L']:.4g})", ok, before, after))
+        out.append(
+            Advice(
+                "J_L1",
+                f"J_L1: move C to the centroid of the mount points, ({centroid[0]:.4g}, "
+                f"{centroid[1]:.4g}) in this frame (subtract it from every position); then L = "
+                f"{after['L']:.4g} gives kappa(J_L1) = {_g(after['kappa_JL1'])} (now "
+                f"{_g(before['kappa_JL1'])} at L = {before['L']:.4g})",
+                ok,
+                before,
+                after,
+            )
+        )
     sv = [np.linalg.svd(np.asarray(u.block_terms(NUMERIC)[0], dtype=float), compute_uv=False) for u in robot.wheels]
     top = max(float(s.max()) for s in sv)
     deficient = [k for k, s in enumerate(sv, 1) if s.min() <= TOL * top]
     j2 = not deficient and all(np.all(np.abs(s - top) <= TOL * top) for s in sv)
     if deficient:
         kinds = sorted({robot.wheels[k - 1].kind for k in deficient})
-        out.append(Advice("J2", f"J2: singular at every configuration ({', '.join(kinds)} units: wheel "
-                          f"{', '.join(map(str, deficient))} drive their mount point through one direction only); "
-                          "no choice of lengths makes it isotropic", True, before, {}))
+        out.append(
+            Advice(
+                "J2",
+                f"J2: singular at every configuration ({', '.join(kinds)} units: wheel "
+                f"{', '.join(map(str, deficient))} drive their mount point through one direction only); "
+                "no choice of lengths makes it isotropic",
+                True,
+                before,
+                {},
+            )
+        )
     elif not j2:
-        groups: dict[str, list[int]] = {}                   # each unit's own advice, wheels grouped by it
+        groups: dict[str, list[int]] = {}  # each unit's own advice, wheels grouped by it
         for k, u in enumerate(robot.wheels):
             if u.isotropic_variant() is not None:
                 groups.setdefault(u.isotropy_advice(), []).append(k)
@@ -286,14 +322,28 @@ def advice(robot, before=None) -> tuple[list[Advice], dict]:
         radii = sorted({float(u.r) for u in robot.wheels})
         if len(radii) > 1:
             same = {k: dataclasses.replace(u, r=radii[-1]) for k, u in enumerate(robot.wheels)}
-            out.append(_change(robot, before, same, f"give every wheel the radius {radii[-1]:.4g} (now "
-                               f"{', '.join(f'{r:.4g}' for r in radii)})"))
+            out.append(
+                _change(
+                    robot,
+                    before,
+                    same,
+                    f"give every wheel the radius {radii[-1]:.4g} (now {', '.join(f'{r:.4g}' for r in radii)})",
+                )
+            )
             if groups:
                 both = {k: u.isotropic_variant() or u for k, u in same.items()}
                 out.append(_change(robot, before, both, "both changes together"))
         if not groups and len(radii) == 1:
-            out.append(Advice("J2", f"J2: kappa(J2) = {_g(before['kappa_J2'])}: make the singular values of every "
-                              "unit's block equal (" + "; ".join(f"wheel {k}: {', '.join(f'{x:.4g}' for x in s)}"
-                                                                  for k, s in enumerate(sv, 1)) + ")",
-                              True, before, {}))
+            out.append(
+                Advice(
+                    "J2",
+                    f"J2: kappa(J2) = {_g(before['kappa_J2'])}: make the singular values of every "
+                    "unit's block equal ("
+                    + "; ".join(f"wheel {k}: {', '.join(f'{x:.4g}' for x in s)}" for k, s in enumerate(sv, 1))
+                    + ")",
+                    True,
+                    before,
+                    {},
+                )
+            )
     return out, {"J_L1": jl1, "J2": bool(j2)}

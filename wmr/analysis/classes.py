@@ -46,6 +46,7 @@ special configurations (all wheels parallel, a wheel at the centre) do not count
 :func:`wmr.rank` with the columns of :math:`\mathbf F`'s twist part
 (:attr:`wmr.Robot.F_column_norms`): the class does not depend on the unit of length.
 """
+
 from __future__ import annotations
 
 from dataclasses import dataclass
@@ -70,7 +71,7 @@ CLASS_NAMES = {
     (1, 2): "independently steered wheels",
 }
 
-_SEED = 1996            # the generic draws: fixed, so that the class of a robot never changes
+_SEED = 1996  # the generic draws: fixed, so that the class of a robot never changes
 _DRAWS = 3
 
 
@@ -123,7 +124,7 @@ def _rows(robot, keep, beta):
     """The twist-constraint rows (k, 3) of the units ``keep`` (indices) at ``beta`` (w,): C1f or C1s."""
     if not keep:
         return np.zeros((0, 3))
-    sub = Robot([robot.wheels[i] for i in keep], name="part")     # same mount points, same operation point C
+    sub = Robot([robot.wheels[i] for i in keep], name="part")  # same mount points, same operation point C
     A, _ = twist_constraints(sub, beta[keep])
     return A
 
@@ -172,7 +173,7 @@ def campion_class(robot: Robot) -> CampionClass:
     """
     robot = V.numeric_robot(robot)
     w = robot.w
-    scale = robot.F_column_norms[:3]                     # the twist columns of F (wmr.model.tolerance)
+    scale = robot.F_column_norms[:3]  # the twist columns of F (wmr.model.tolerance)
     fixed = [i for i, u in enumerate(robot.wheels) if not u.steered]
     steered = [i for i, u in enumerate(robot.wheels) if u.steered]
     rng = np.random.default_rng(_SEED)
@@ -183,26 +184,35 @@ def campion_class(robot: Robot) -> CampionClass:
     best: tuple | None = None
     for _ in range(_DRAWS):
         g, current = rng.normal(size=3), rng.uniform(-np.pi, np.pi, w)
-        t = (N @ (N.T @ g)) / scale                      # projection onto N(C1f): any basis gives the same t
+        t = (N @ (N.T @ g)) / scale  # projection onto N(C1f): any basis gives the same t
         beta = steering_angles(robot, t, current=current)
         Cs = _rows(robot, steered, beta)
-        r_star = _rank(np.vstack([Cf, Cs]), scale)       # rank C1*
+        r_star = _rank(np.vstack([Cf, Cs]), scale)  # rank C1*
         dm, ds, rs = 3 - r_star, r_star - rf, _rank(Cs, scale)
         if best is None or (dm, -ds) < (best[0], -best[1]):
             best = (dm, ds, rs, t, beta)
-    assert best is not None                              # (_DRAWS >= 1)
+    assert best is not None  # (_DRAWS >= 1)
     dm, ds, rs, t, beta = best
     standard = (dm, ds) in CLASS_NAMES and rf <= 1
     if standard:
         name = CLASS_NAMES[(dm, ds)]
     elif dm == 0:
         name = "degenerate: the wheels admit no motion"
-    elif rf >= 2:                                        # one twist left: a translation or a rotation
+    elif rf >= 2:  # one twist left: a translation or a rotation
         name = "degenerate: the fixed wheels allow only " + (
-            "a translation along one direction (no turning)" if _translation(t, scale)
-            else "a rotation about one point")
+            "a translation along one direction (no turning)" if _translation(t, scale) else "a rotation about one point"
+        )
     else:
         name = "outside Campion's five classes"
-    return CampionClass(delta_m=int(dm), delta_s=int(ds), label=f"({dm},{ds})", name=name, standard=standard,
-                        maneuverability=int(dm + ds), rank_C1f=int(rf), rank_C1s=int(rs),
-                        twist=tuple(float(x) for x in t), beta=tuple(float(b) for b in beta))
+    return CampionClass(
+        delta_m=int(dm),
+        delta_s=int(ds),
+        label=f"({dm},{ds})",
+        name=name,
+        standard=standard,
+        maneuverability=int(dm + ds),
+        rank_C1f=int(rf),
+        rank_C1s=int(rs),
+        twist=tuple(float(x) for x in t),
+        beta=tuple(float(b) for b in beta),
+    )

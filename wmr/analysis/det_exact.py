@@ -4,6 +4,7 @@ for the numeric side: batched determinants, singularity tests and the classifica
 
 Everything is derived from :meth:`wmr.Robot.J`; nothing is copied from the paper.
 """
+
 from __future__ import annotations
 
 from collections.abc import Sequence
@@ -68,17 +69,24 @@ def plane_line_matrix(robot: Robot, beta: Numbers, L: Numbers = 1, backend: Back
     -------
     numpy.ndarray (..., 3, w) or sympy.Matrix (3, w)
     """
-    symbolic = beta is None or V.robot(robot).is_symbolic or any(
-        isinstance(b, sp.Basic) for b in np.ravel(np.asarray(beta, dtype=object)))
+    symbolic = (
+        beta is None
+        or V.robot(robot).is_symbolic
+        or any(isinstance(b, sp.Basic) for b in np.ravel(np.asarray(beta, dtype=object)))
+    )
     bk = choose(backend=backend) if backend is not None else (SYMBOLIC if symbolic else NUMERIC)
     if symbolic and bk is NUMERIC:
-        raise InputValueError(f"backend NUMERIC needs numeric beta and a numeric robot, got beta = {V.show(beta)}, "
-                         f"robot = {V.show(robot)}")
+        raise InputValueError(
+            f"backend NUMERIC needs numeric beta and a numeric robot, got beta = {V.show(beta)}, "
+            f"robot = {V.show(robot)}"
+        )
     symbolic = bk is SYMBOLIC
     if symbolic:
         b = list(robot.beta_symbols) if beta is None else list(V.symbolic_vector("beta", beta, robot.w))
-        b = [bi if u.steered else sp.sympify(u.constant_angle)            # unsteered: its own angle
-             for bi, u in zip(b, robot.wheels)]
+        b = [
+            bi if u.steered else sp.sympify(u.constant_angle)  # unsteered: its own angle
+            for bi, u in zip(b, robot.wheels)
+        ]
     else:
         beta = V.robot(robot).effective_beta(beta)
         b = [beta[..., i] for i in range(robot.w)]
@@ -86,9 +94,9 @@ def plane_line_matrix(robot: Robot, beta: Numbers, L: Numbers = 1, backend: Back
     columns = []
     with np.errstate(over="ignore", invalid="ignore"):
         for u, bi in zip(robot.wheels, b):
-            jx, jy = -bk.sin(bi), bk.cos(bi)                       # j_i = R_bwi [0 1]^T, (11)
+            jx, jy = -bk.sin(bi), bk.cos(bi)  # j_i = R_bwi [0 1]^T, (11)
             px, py = u.position
-            columns.append([(px * jy - py * jx) / L, jx, jy])      # [m_i / L, j_i], m_i = d_i x j_i
+            columns.append([(px * jy - py * jx) / L, jx, jy])  # [m_i / L, j_i], m_i = d_i x j_i
         W = bk.matrix([list(row) for row in zip(*columns)])
     if bk is NUMERIC and not np.isfinite(W).all():
         raise InputValueError(f"L = {L!r} is too small for the mount points: the moments m_i / L overflow")
@@ -140,17 +148,25 @@ def characterisation(robot: Robot, L: Numbers | None = None) -> dict[str, Any]:
     # irreducibility: write det J as a polynomial in c_i, s_i and factor over Q(sqrt 3)
     cs = sp.symbols("c1:4 s1:4", real=True)
     b = robot.beta_symbols
-    poly = sp.expand(sp.expand_trig(det)).subs({**{sp.cos(bi): cs[i] for i, bi in enumerate(b)},
-                                                **{sp.sin(bi): cs[3 + i] for i, bi in enumerate(b)}})
+    poly = sp.expand(sp.expand_trig(det)).subs(
+        {**{sp.cos(bi): cs[i] for i, bi in enumerate(b)}, **{sp.sin(bi): cs[3 + i] for i, bi in enumerate(b)}}
+    )
     fl = sp.factor_list(sp.expand(poly), extension=sp.sqrt(3))
     nontrivial = [f for f, _ in fl[1] if f.free_symbols & set(cs)]
-    return {"det_J": det, "lines_form": lf, "identity_general": bool(ident_general and ident_w),
-            "identity_robot": bool(ident_robot), "independent_of_L": Ls not in det.free_symbols,
-            "irreducible": len(nontrivial) == 1, "polynomial": poly}
+    return {
+        "det_J": det,
+        "lines_form": lf,
+        "identity_general": bool(ident_general and ident_w),
+        "identity_robot": bool(ident_robot),
+        "independent_of_L": Ls not in det.free_symbols,
+        "irreducible": len(nontrivial) == 1,
+        "polynomial": poly,
+    }
 
 
-def det_J_polynomial(robot: Robot,
-                     L: Numbers | None = None) -> tuple[Symbolic, tuple[Symbolic, ...], tuple[Symbolic, ...]]:
+def det_J_polynomial(
+    robot: Robot, L: Numbers | None = None
+) -> tuple[Symbolic, tuple[Symbolic, ...], tuple[Symbolic, ...]]:
     r""":math:`\det\mathbf J` as a polynomial in :math:`c_i = \cos\beta_i`, :math:`s_i = \sin\beta_i`.
 
     Of degree 1 in each pair :math:`(c_i, s_i)`.
@@ -194,8 +210,7 @@ def exact_zero(poly: Symbolic, c: Sequence[Symbolic], s: Sequence[Symbolic], dir
     -------
     bool
     """
-    e = poly.subs({**{c[i]: dirs[i][0] for i in range(3)}, **{s[i]: dirs[i][1] for i in range(3)}},
-                  simultaneous=True)
+    e = poly.subs({**{c[i]: dirs[i][0] for i in range(3)}, **{s[i]: dirs[i][1] for i in range(3)}}, simultaneous=True)
     e = sp.expand(sp.expand_trig(e))
     if e == 0:
         return True

@@ -5,6 +5,7 @@ The condition number :math:`\kappa = \sigma_l / \sigma_s` (30) of an :math:`m\ti
 :math:`\mathbf A^T\mathbf A` (for :math:`m\ge n`) or :math:`\mathbf A\mathbf A^T` (for :math:`m<n`) is a
 multiple of the identity.
 """
+
 from __future__ import annotations
 
 import numpy as np
@@ -67,9 +68,10 @@ def characteristic_length(robot: Robot) -> float:
     2.666666666667
     """
     d = V.numeric_robot(robot).mount_points
-    big = float(np.abs(d).max())                      # scaled first: no overflow at 1e300, no underflow at 1e-300
+    big = float(np.abs(d).max())  # scaled first: no overflow at 1e300, no underflow at 1e-300
     L = big * float(np.sqrt(np.mean(np.sum((d / big) ** 2, axis=1)))) if big > 0 else 0.0
     if L == 0:
-        raise InputValueError(f"robot has all its mount points at C: no characteristic length exists (got L = 0): "
-                              f"{V.show(robot)}")
+        raise InputValueError(
+            f"robot has all its mount points at C: no characteristic length exists (got L = 0): {V.show(robot)}"
+        )
     return L

@@ -15,6 +15,7 @@ Both problems solve (21), :math:`\mathbf J_1\mathbf t = \mathbf J_2\dot{\boldsym
 
 With isotropic Jacobians these reduce to the paper's (49)-(50) and (55)-(57).
 """
+
 from __future__ import annotations
 
 import contextlib
@@ -141,22 +142,22 @@ def _constants(robot):
 
 def _from_model(robot):
     w, n = robot.w, robot.n_rates
-    check("memory_mb", 3 * 8 * 2 * w * n / 2 ** 20, f"the kinematics of this robot ({w} wheel units, {n} rates)")
+    check("memory_mb", 3 * 8 * 2 * w * n / 2**20, f"the kinematics of this robot ({w} wheel units, {n} rates)")
     J1 = robot.J1(backend=NUMERIC)
     L, EL, Lp = np.zeros((2 * w, n)), np.zeros((2 * w, n)), np.zeros((n, 2 * w))
     steer = []
     for i, (u, sl) in enumerate(zip(robot.wheels, robot.rate_slices)):
-        L[2 * i:2 * i + 2, sl], EL[2 * i:2 * i + 2, sl] = u.block_terms(NUMERIC)   # B = cos L + sin E L
-        Lp[sl, 2 * i:2 * i + 2] = _pinv_rank(L[2 * i:2 * i + 2, sl])[0]
-        c = u.steering_row()                                # c theta_i = psi_dot + beta_dot_i, L_i c^T = 0
+        L[2 * i : 2 * i + 2, sl], EL[2 * i : 2 * i + 2, sl] = u.block_terms(NUMERIC)  # B = cos L + sin E L
+        Lp[sl, 2 * i : 2 * i + 2] = _pinv_rank(L[2 * i : 2 * i + 2, sl])[0]
+        c = u.steering_row()  # c theta_i = psi_dot + beta_dot_i, L_i c^T = 0
         if c is not None:
             steer.append((i, sl, c, c / (c @ c)))
     # J1's psi_dot column is a length, the others pure numbers: rank and pseudo-inverse with the
     # columns scaled (wmr.model.tolerance), so a robot 1e300 or 1e-300 in size is still determined
     pinv_J1, rank_J1 = _pinv_rank(J1)
     # chunks small enough that the (2w x n) @ (n x chunk) products stay single-threaded in BLAS
-    chunk = int(max(256, min(8192, 2 ** 18 // max(1, 2 * w * max(n, 3)))))
-    passive = bool((~driven_columns(robot)).any()) or rank_J1 < 3      # some motion may need no motor
+    chunk = int(max(256, min(8192, 2**18 // max(1, 2 * w * max(n, 3)))))
+    passive = bool((~driven_columns(robot)).any()) or rank_J1 < 3  # some motion may need no motor
     return _Constants(J1, pinv_J1, rank_J1 == 3, L, EL, Lp, tuple(steer), chunk, passive)
 
 
@@ -191,8 +192,10 @@ def _admissible(res, terms):
 def _finite(name, given, *results):
     """Overflow is detected, not propagated: finite input must give finite results."""
     if not all(np.isfinite(r).all() for r in results):
-        raise InputValueError(f"{name} is too large: the kinematics overflow double precision "
-                         f"(largest |{name}| = {np.abs(given).max():.3g})")
+        raise InputValueError(
+            f"{name} is too large: the kinematics overflow double precision "
+            f"(largest |{name}| = {np.abs(given).max():.3g})"
+        )
 
 
 def _flat(batch, *arrays):
@@ -200,7 +203,7 @@ def _flat(batch, *arrays):
     return [np.broadcast_to(a, batch + a.shape[-1:]).reshape(-1, a.shape[-1]) for a in arrays]
 
 
-@np.errstate(over="ignore", invalid="ignore")        # overflow is checked on the results (_finite)
+@np.errstate(over="ignore", invalid="ignore")  # overflow is checked on the results (_finite)
 def forward(robot: Robot, beta: ArrayLike, rates: ArrayLike, slip_tolerance: float | None = None) -> Solution:
     r"""Platform twist from joint rates (least squares on (21)).
 
@@ -252,7 +255,8 @@ def forward(robot: Robot, beta: ArrayLike, rates: ArrayLike, slip_tolerance: flo
     if not K.full_rank:
         raise InputValueError(
             f"robot has J1 of rank < 3 (fewer than two distinct mount points: {robot.mount_points.tolist()}): "
-            "the twist is not determined")
+            "the twist is not determined"
+        )
     batch = V.batch_shape({"beta": beta, "rates": rates})
     b, th = _flat(batch, beta, rates)
     N, w = b.shape[0], robot.w
@@ -262,18 +266,23 @@ def forward(robot: Robot, beta: ArrayLike, rates: ArrayLike, slip_tolerance: flo
         # configurations are columns here: (rows, k) arrays
         c, s = _wheel_rows(*cos_sin(b[a:z].T))
         th_k = th[a:z].T
-        rhs = rotated((c, s), K.L @ th_k, K.EL @ th_k, axes=0)   # J2 theta_dot = sum_i R(beta_i) L_i theta_i (21)
-        t_k = K.pinv_J1 @ rhs                               # t = J1^+ J2 theta_dot
+        rhs = rotated((c, s), K.L @ th_k, K.EL @ th_k, axes=0)  # J2 theta_dot = sum_i R(beta_i) L_i theta_i (21)
+        t_k = K.pinv_J1 @ rhs  # t = J1^+ J2 theta_dot
         r_k = K.J1 @ t_k
-        r_k -= rhs                                          # J1 t - J2 theta_dot
+        r_k -= rhs  # J1 t - J2 theta_dot
         t[a:z], res[a:z], adm[a:z] = t_k.T, r_k.T, _admissible(r_k, rhs)
 
     for_chunks(chunk, N, K.chunk)
     _finite("rates", rates, t, res)
-    if slip_tolerance is not None:                          # each unit's slip speed against the user's bound
+    if slip_tolerance is not None:  # each unit's slip speed against the user's bound
         adm = np.hypot(res[:, 0::2], res[:, 1::2]).max(axis=1, initial=0.0) <= slip_tolerance
-    return Solution(t.reshape(batch + (3,)), res.reshape(batch + (2 * w,)), adm.reshape(batch), adm.reshape(batch),
-                    np.ones(batch, dtype=bool))
+    return Solution(
+        t.reshape(batch + (3,)),
+        res.reshape(batch + (2 * w,)),
+        adm.reshape(batch),
+        adm.reshape(batch),
+        np.ones(batch, dtype=bool),
+    )
 
 
 @np.errstate(over="ignore", invalid="ignore")
@@ -344,24 +353,29 @@ def inverse(robot: Robot, beta: ArrayLike, twist: Twist, beta_dot: ArrayLike | N
     def chunk(a, z):
         # configurations are columns here: (rows, k) arrays
         c, s = _wheel_rows(*cos_sin(b[a:z].T))
-        v = K.J1 @ tw[a:z].T                                # (5): v_i = [E d_i 1] t, (2w, k)
-        Ev = np.empty_like(v)                               # E v_i, unit by unit
+        v = K.J1 @ tw[a:z].T  # (5): v_i = [E d_i 1] t, (2w, k)
+        Ev = np.empty_like(v)  # E v_i, unit by unit
         Ev[0::2], Ev[1::2] = -v[1::2], v[0::2]
-        local = rotated((c, -s), v, Ev, axes=0)             # R(beta_i)^T v_i = R(-beta_i) v_i (11)
-        th = K.Lp @ local                                   # theta_i = L_i^+ R^T v_i
+        local = rotated((c, -s), v, Ev, axes=0)  # R(beta_i)^T v_i = R(-beta_i) v_i (11)
+        th = K.Lp @ local  # theta_i = L_i^+ R^T v_i
         for i, sl, row, gain in K.steer:
             # the rates the block leaves free (L_i c^T = 0) set by the steering wanted: c theta_i = phi_dot_i,
             # phi_dot_i = psi_dot + beta_dot_i (a dual wheel: theta_1 - theta_2 = -(2b/r) phi_dot, corrected (15))
             phi = tw[a:z, 0] if bd is None else tw[a:z, 0] + bd[a:z, i]
             th[sl] += gain[:, None] * (phi - row @ th[sl])
-        r_k = v - rotated((c, s), K.L @ th, K.EL @ th, axes=0)   # J1 t - J2 theta_dot
+        r_k = v - rotated((c, s), K.L @ th, K.EL @ th, axes=0)  # J1 t - J2 theta_dot
         rates[a:z], res[a:z], adm[a:z] = th.T, r_k.T, _admissible(r_k, v)
 
     for_chunks(chunk, N, K.chunk)
     _finite("twist", twist, rates, res)
-    if K.passive:                                           # a motion with every motor stopped is not commanded
+    if K.passive:  # a motion with every motor stopped is not commanded
         actuated = uncontrolled(robot, b, tw)[1]
-    else:                                                   # every joint driven, J1 of rank 3: no such motion
+    else:  # every joint driven, J1 of rank 3: no such motion
         actuated = np.ones(N, dtype=bool)
-    return Solution(rates.reshape(batch + (robot.n_rates,)), res.reshape(batch + (2 * w,)),
-                    (adm & actuated).reshape(batch), adm.reshape(batch), actuated.reshape(batch))
+    return Solution(
+        rates.reshape(batch + (robot.n_rates,)),
+        res.reshape(batch + (2 * w,)),
+        (adm & actuated).reshape(batch),
+        adm.reshape(batch),
+        actuated.reshape(batch),
+    )

@@ -22,6 +22,7 @@ Examples
 >>> limitations(skid)
 ['turning requires skidding: it can only drive straight ahead (along x)']
 """
+
 from __future__ import annotations
 
 import numpy as np
@@ -47,21 +48,26 @@ def _class_sentences(robot, c) -> list[str]:
             return [f"turning requires skidding: it can only drive {motion}"]
         return [f"driving straight requires skidding: it can only move {motion}"]
     if c.delta_m == 1 and c.rank_C1f >= 1:
-        return ["it cannot move sideways or choose its centre of rotation freely: every motion turns about a "
-                "point on the line of its fixed wheels' axles (or drives straight along their planes), "
-                "and steering picks the point (car-like)"]
+        return [
+            "it cannot move sideways or choose its centre of rotation freely: every motion turns about a "
+            "point on the line of its fixed wheels' axles (or drives straight along their planes), "
+            "and steering picks the point (car-like)"
+        ]
     if c.delta_m == 1:
-        return ["at any one steering it has a single motion: to change the direction of motion it must re-steer "
-                "its wheels first (it cannot change direction instantly)"]
+        return [
+            "at any one steering it has a single motion: to change the direction of motion it must re-steer "
+            "its wheels first (it cannot change direction instantly)"
+        ]
     if c.delta_m == 2:
         beta = np.asarray(c.beta)
-        A, _ = twist_constraints(robot, beta)               # the rows of C1*
+        A, _ = twist_constraints(robot, beta)  # the rows of C1*
         normals = null_space(null_space(A / s, scale=np.ones(3)).T, scale=np.ones(3)) if A.size else np.zeros((3, 0))
         words = [describe_twist(robot, normals[:, k] / s) for k in range(normals.shape[1])]
         what = " or ".join(words) or "one direction"
         if c.delta_s == 0:
-            return [f"it cannot move {what}: no motion may have a part of that (non-holonomic, like a "
-                    "differential drive)"]
+            return [
+                f"it cannot move {what}: no motion may have a part of that (non-holonomic, like a differential drive)"
+            ]
         return [f"at any one steering it cannot move {what}: that needs its steered wheel re-steered first"]
     return []
 
@@ -90,8 +96,10 @@ def steering_limitations(robot) -> list[str]:
     for k, u in enumerate(robot.wheels, 1):
         passive_steer = any(j.steering and not j.driven for j in u.joints)
         if passive_steer and u.rolls_in_plane and u.steering_row() is None:
-            out.append(f"wheel {k}: its steering joint is passive and nothing turns it (no motor, no offset to "
-                       "trail behind): its angle is not under control")
+            out.append(
+                f"wheel {k}: its steering joint is passive and nothing turns it (no motor, no offset to "
+                "trail behind): its angle is not under control"
+            )
     return out
 
 
@@ -117,7 +125,9 @@ def limitations(robot, campion=None) -> list[str]:
     if da < c.delta_m:
         U = free_twists(robot, beta)
         for k in range(U.shape[1]):
-            out.append(f"the motors cannot move it {describe_twist(robot, U[:, k])}: it moves that way with every "
-                       f"motor stopped (its passive joints roll freely), so the motors can neither drive nor stop "
-                       f"that motion (actuated mobility {da} < delta_m = {c.delta_m})")
+            out.append(
+                f"the motors cannot move it {describe_twist(robot, U[:, k])}: it moves that way with every "
+                f"motor stopped (its passive joints roll freely), so the motors can neither drive nor stop "
+                f"that motion (actuated mobility {da} < delta_m = {c.delta_m})"
+            )
     return out + steering_limitations(robot)

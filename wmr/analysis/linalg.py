@@ -9,6 +9,7 @@ or columns, :func:`det`, :func:`rank` and :func:`condition_number` use closed fo
 (:mod:`wmr.analysis._closed`) for every member they can vouch for and the SVD for the others, so
 their decisions are the SVD's.
 """
+
 from __future__ import annotations
 
 import numpy as np
@@ -20,8 +21,20 @@ from ..model.types import ArrayLike, FloatArray, IntArray
 from . import _closed
 from ._batch import map_matrices
 
-__all__ = ["singular_values", "column_norms", "rank", "nullity", "null_space", "left_null_space", "pinv_columns",
-           "condition_number", "gram", "det", "rank_from_singular_values", "kappa_from_singular_values"]
+__all__ = [
+    "singular_values",
+    "column_norms",
+    "rank",
+    "nullity",
+    "null_space",
+    "left_null_space",
+    "pinv_columns",
+    "condition_number",
+    "gram",
+    "det",
+    "rank_from_singular_values",
+    "kappa_from_singular_values",
+]
 
 
 def _as_stack(A: ArrayLike) -> FloatArray:
@@ -52,9 +65,9 @@ def singular_values(A: ArrayLike) -> FloatArray:
     if min(A.shape[-2:]) == 0:
         return np.zeros(A.shape[:-2] + (0,))
     big = np.max(np.abs(A), axis=(-2, -1))
-    if np.any(big > 1e150) or np.any((big < 1e-150) & (big > 0)):   # far from 1: scaled, so LAPACK sees no overflow
+    if np.any(big > 1e150) or np.any((big < 1e-150) & (big > 0)):  # far from 1: scaled, so LAPACK sees no overflow
         m = np.where(big > 0, big, 1.0)[..., None]
-        with np.errstate(over="ignore"):                             # overflow is reported by _finite
+        with np.errstate(over="ignore"):  # overflow is reported by _finite
             sv = singular_values(A / m[..., None]) * m
         return _finite("A", sv, "its singular values")
     return map_matrices(lambda X: np.linalg.svd(X, compute_uv=False), A)
@@ -142,11 +155,11 @@ def rank(A: ArrayLike, scale: ArrayLike | None = None) -> IntArray:
     p = min(A.shape[-2:])
     constant = scale is not None and np.ndim(scale) == 1
     if p == 0 or p > 3 or not constant:
-        A = _scaled(A, scale)                        # column sizes per matrix: one pass over the stack
+        A = _scaled(A, scale)  # column sizes per matrix: one pass over the stack
         scale = None
     else:
-        assert scale is not None                     # (constant)
-        scale = _check_scale(scale, A.shape[-1])     # one size per column: applied chunk by chunk
+        assert scale is not None  # (constant)
+        scale = _check_scale(scale, A.shape[-1])  # one size per column: applied chunk by chunk
     if p == 0 or p > 3:
         return rank_from_singular_values(singular_values(A))
     flat = A.reshape((-1,) + A.shape[-2:])
@@ -208,7 +221,7 @@ def null_space(A: ArrayLike, scale: ArrayLike | None = None) -> FloatArray:
         raise InputValueError(f"A must be one matrix (m, n) for null_space, got shape {A.shape} (loop over a batch)")
     r = int(rank(A, scale))
     if A.shape[0] == 0:
-        return np.eye(A.shape[1])                        # no equations: every vector
+        return np.eye(A.shape[1])  # no equations: every vector
     big = np.abs(A).max() if A.size else 0.0
     _, _, Vt = np.linalg.svd(A / big if big > 0 else A)  # (scaled: the same vectors, no overflow)
     return Vt[r:].T.copy()
@@ -297,8 +310,9 @@ def condition_number(A: ArrayLike) -> FloatArray:
     """
     A = _as_stack(A)
     if min(A.shape[-2:]) == 0:
-        raise InputValueError(f"A must have at least one row and one column for a condition number, "
-                              f"got shape {A.shape}")
+        raise InputValueError(
+            f"A must have at least one row and one column for a condition number, got shape {A.shape}"
+        )
     if A.shape[-2:] != (3, 3):
         return kappa_from_singular_values(singular_values(A))
     flat = A.reshape(-1, 3, 3)

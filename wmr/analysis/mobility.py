@@ -23,6 +23,7 @@ whose twist columns are those of :math:`\mathbf F` divided by their lengths: :fu
 :math:`\hat{\mathbf F}` directly, and the two agree.  The rows of :math:`\mathbf A` are the constraints the
 platform twist must satisfy; :math:`\mathbf A` is :math:`k\times 3` with :math:`k` small.
 """
+
 from __future__ import annotations
 
 import numpy as np
@@ -80,17 +81,17 @@ def twist_constraints(robot: Robot, beta: ArrayLike, free: ArrayLike | None = No
     free = np.ones(robot.n_rates, dtype=bool) if free is None else np.asarray(free, dtype=bool)
     for i, (u, sl) in enumerate(zip(robot.wheels, robot.rate_slices)):
         Lf = np.asarray(u.local_block(NUMERIC), dtype=float)[:, free[sl]]
-        N = left_null_space(Lf) if Lf.shape[1] else np.eye(2)       # (2, k_i), constant
-        base_rank += 2 - N.shape[1]             # rank L_i (of its free columns)
+        N = left_null_space(Lf) if Lf.shape[1] else np.eye(2)  # (2, k_i), constant
+        base_rank += 2 - N.shape[1]  # rank L_i (of its free columns)
         if N.shape[1] == 0:
             continue
-        Ji = J1[2 * i:2 * i + 2]
+        Ji = J1[2 * i : 2 * i + 2]
         parts.append((i, N.T @ Ji, N.T @ Et @ Ji))
     k = sum(P.shape[0] for _, P, _ in parts)
     Ps, Qs = np.zeros((robot.w, k, 3)), np.zeros((robot.w, k, 3))
     row = 0
-    for i, P, Q in parts:                      # N_i^T R(beta_i)^T J_{1,i} at unit i's rows
-        Ps[i, row:row + P.shape[0]], Qs[i, row:row + P.shape[0]] = P, Q
+    for i, P, Q in parts:  # N_i^T R(beta_i)^T J_{1,i} at unit i's rows
+        Ps[i, row : row + P.shape[0]], Qs[i, row : row + P.shape[0]] = P, Q
         row += P.shape[0]
     return trig_combination(beta, Ps, Qs), base_rank
 
@@ -115,7 +116,7 @@ def rank_F(robot: Robot, beta: ArrayLike) -> IntArray:
     """
     robot = V.numeric_robot(robot)
     A, base = twist_constraints(robot, beta)
-    return base + rank(A, scale=robot.F_column_norms[:3])     # the twist columns of F, scaled as in rank(F)
+    return base + rank(A, scale=robot.F_column_norms[:3])  # the twist columns of F, scaled as in rank(F)
 
 
 def mobility(robot: Robot, beta: ArrayLike) -> IntArray:
@@ -169,8 +170,9 @@ def admissible_twists(robot: Robot, beta: ArrayLike) -> FloatArray:
     robot = V.numeric_robot(robot)
     beta = robot.effective_beta(beta)
     if beta.ndim != 1:
-        raise InputValueError(f"beta must be one configuration of shape ({robot.w},) for admissible_twists, "
-                         f"got shape {beta.shape}")
+        raise InputValueError(
+            f"beta must be one configuration of shape ({robot.w},) for admissible_twists, got shape {beta.shape}"
+        )
     A, _ = twist_constraints(robot, beta)
     if A.shape[0] == 0:
         return np.eye(3)

@@ -19,6 +19,7 @@ of diameter UD.  So a layout whose mount points are concyclic (three wheels; fou
 a rectangle) is singular for every rotation centre on that circle; a layout with four or more
 mount points not on one circle is singular only in translation.
 """
+
 from __future__ import annotations
 
 from dataclasses import dataclass
@@ -104,7 +105,7 @@ def mount_circle(robot: Robot) -> tuple[FloatArray, float] | None:
         return None
     try:
         centre, R = circumcircle(d[:3])
-    except ValueError:                                          # collinear
+    except ValueError:  # collinear
         return None
     on = near_zero(np.linalg.norm(d - centre, axis=1) - R, R)
     return (centre, float(R)) if bool(np.all(on)) else None
@@ -170,9 +171,16 @@ def motion_map(robot: Robot, n: int = 121, half_width: float | None = None, L: f
     else:
         h = float(V.number("half_width", V.positive("half_width", half_width)))
     x = y = np.linspace(-h, h, n)
-    U = np.stack(np.meshgrid(x, y), axis=-1)                      # (n, n, 2)
+    U = np.stack(np.meshgrid(x, y), axis=-1)  # (n, n, 2)
     K = motion_kappa(robot, rotation_twists(U), L=L)
     k = int(np.argmin(K))
-    return MotionMap(x=x, y=y, kappa=K, mounts=d, circle=mount_circle(robot), kappa_min=float(K.flat[k]),
-                     argmin=U.reshape(-1, 2)[k].copy(),
-                     kappa_translation=float(motion_kappa(robot, [0.0, 1.0, 0.0], L=L)))
+    return MotionMap(
+        x=x,
+        y=y,
+        kappa=K,
+        mounts=d,
+        circle=mount_circle(robot),
+        kappa_min=float(K.flat[k]),
+        argmin=U.reshape(-1, 2)[k].copy(),
+        kappa_translation=float(motion_kappa(robot, [0.0, 1.0, 0.0], L=L)),
+    )

@@ -23,6 +23,7 @@ whose eigenvalues are :math:`w` and :math:`\mu_\pm` with :math:`\mu_+ + \mu_- = 
 :math:`\kappa(\mathbf J_{L1}) = \sqrt{(w + c)/(w - c)}`, :math:`c = \|\sum_i\mathbf d_i\|\sqrt{w/a}`:
 isotropic exactly when C is the centroid of the mount points.
 """
+
 from __future__ import annotations
 
 from dataclasses import dataclass, field
@@ -45,8 +46,16 @@ from .singular import FAMILIES, MEANINGS, singular_families
 from .steering import steering_angles
 from .sweep import Drivable, Grid, Sample, sweep
 
-__all__ = ["FAMILIES", "MEANINGS", "Overview", "configurations", "special_twists", "dead_zone_radius",
-           "singular_families", "overview"]
+__all__ = [
+    "FAMILIES",
+    "MEANINGS",
+    "Overview",
+    "configurations",
+    "special_twists",
+    "dead_zone_radius",
+    "singular_families",
+    "overview",
+]
 
 #: about this many grid configurations are examined (the grid has at least 4 values per steered angle)
 GRID_SIZE = 20000
@@ -67,7 +76,7 @@ def special_twists(robot):
     """
     robot = V.numeric_robot(robot)
     special = [[0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [0.0, 1.0, 1.0], [1.0, 0.0, 0.0]]
-    special += [[1.0, d[1], -d[0]] for d in robot.mount_points]           # spin about P_i: c_dot = -psi E d_i
+    special += [[1.0, d[1], -d[0]] for d in robot.mount_points]  # spin about P_i: c_dot = -psi E d_i
     return np.array(special)
 
 
@@ -104,25 +113,26 @@ def configurations(robot: Robot, grid: int = GRID_SIZE, twists: int = TWISTS, se
     twists = V.integer("twists", twists, minimum=0)
     seed = V.integer("seed", seed, minimum=0)
     w, steered = robot.w, np.array(robot.steered, dtype=bool)
-    most = 4 * grid + twists + w + 4                         # held in memory at once, with their analyses
+    most = 4 * grid + twists + w + 4  # held in memory at once, with their analyses
     check("configurations", most, "the overview (grid and twists)")
-    check("memory_mb", most * 8 * (3 * w + 3 * robot.n_rates + 16) / 2 ** 20, "the overview (grid and twists)")
+    check("memory_mb", most * 8 * (3 * w + 3 * robot.n_rates + 16) / 2**20, "the overview (grid and twists)")
     s = int(steered.sum())
     parts: list[FloatArray] = []
     if s:
         steps = max(4, int(np.floor(grid ** (1.0 / s) + 1e-9)))
-        if steps ** s <= 4 * grid:
+        if steps**s <= 4 * grid:
             g = Grid(steps)
             sub = g.configurations(s, 0, g.size(s))
-        else:                                        # many steered units: a seeded sample of the same size
+        else:  # many steered units: a seeded sample of the same size
             sub = Sample(grid, seed=seed).configurations(s, 0, grid)
         full = np.zeros((sub.shape[0], w))
         full[:, steered] = sub
         parts.append(full)
     size = float(np.abs(robot.mount_points).max()) or 1.0
     rng = np.random.default_rng(seed)
-    tw = np.concatenate([special_twists(robot), np.c_[rng.uniform(-1, 1, (twists, 1)) / size,
-                                                      rng.uniform(-1, 1, (twists, 2))]])
+    tw = np.concatenate(
+        [special_twists(robot), np.c_[rng.uniform(-1, 1, (twists, 1)) / size, rng.uniform(-1, 1, (twists, 2))]]
+    )
     parts.append(steering_angles(robot, tw))
     return np.concatenate(parts)
 
@@ -282,7 +292,7 @@ def overview(robot: Robot, grid: int = GRID_SIZE, twists: int = TWISTS, seed: in
     L = before["L"]
     drive = Drivable(max(100, twists), seed=seed)
     kj = sweep(robot, "kappa_J", drive, L=L, quantiles=(0.5, 0.95))
-    special = special_twists(robot)                       # and the special motions the robot can make
+    special = special_twists(robot)  # and the special motions the robot can make
     sb = steering_angles(robot, special)
     sb = sb[inverse(robot, sb, special).no_slip]
     ks = condition_number(robot.J(sb, L=L)) if sb.size else np.zeros(0)
@@ -291,15 +301,32 @@ def overview(robot: Robot, grid: int = GRID_SIZE, twists: int = TWISTS, seed: in
     cbeta = np.asarray(c.beta)
     U = free_twists(robot, cbeta) if before["actuated_mobility"] < c.delta_m else np.zeros((3, 0))
     return Overview(
-        name=robot.name, kinds=tuple(u.kind for u in robot.wheels),
+        name=robot.name,
+        kinds=tuple(u.kind for u in robot.wheels),
         campion={"delta_m": int(c.delta_m), "delta_s": int(c.delta_s), "label": str(c.label), "name": str(c.name)},
         actuated_mobility=before["actuated_mobility"],
         uncontrolled=[describe_twist(robot, U[:, k]) for k in range(U.shape[1])],
-        limitations=limitations(robot, c), rank_F=rf, nullity=n - rf,
-        rank_F_range=(int(ranks.min), int(ranks.max)), nullity_range=(n - int(ranks.max), n - int(ranks.min)),
-        configurations=int(beta.shape[0]), L=float(L), kappa_JL1=before["kappa_JL1"], kappa_J2=before["kappa_J2"],
-        kappa_J={"min": float(min(kj.min, ks.min(initial=np.inf))), "median": float(kj.quantiles[0.5]),
-                 "p95": float(kj.quantiles[0.95]), "max": float(max(kj.max, ks.max(initial=0.0)))},
-        isotropic=iso, advice=[t.text for t in tips], advised=[t.advised for t in tips],
-        dead_zone=dead_zone_radius(robot), singular=singular_families(robot, L), steered=robot.steered,
-        dead_zones=tuple(u.dead_zone() for u in robot.wheels), drivable=int(kj.count + sb.shape[0]))
+        limitations=limitations(robot, c),
+        rank_F=rf,
+        nullity=n - rf,
+        rank_F_range=(int(ranks.min), int(ranks.max)),
+        nullity_range=(n - int(ranks.max), n - int(ranks.min)),
+        configurations=int(beta.shape[0]),
+        L=float(L),
+        kappa_JL1=before["kappa_JL1"],
+        kappa_J2=before["kappa_J2"],
+        kappa_J={
+            "min": float(min(kj.min, ks.min(initial=np.inf))),
+            "median": float(kj.quantiles[0.5]),
+            "p95": float(kj.quantiles[0.95]),
+            "max": float(max(kj.max, ks.max(initial=0.0))),
+        },
+        isotropic=iso,
+        advice=[t.text for t in tips],
+        advised=[t.advised for t in tips],
+        dead_zone=dead_zone_radius(robot),
+        singular=singular_families(robot, L),
+        steered=robot.steered,
+        dead_zones=tuple(u.dead_zone() for u in robot.wheels),
+        drivable=int(kj.count + sb.shape[0]),
+    )

@@ -14,6 +14,7 @@ of the whole system (21).  The tests and ``make bench`` compare the batched kern
 :func:`wmr.condition_number`, :func:`wmr.forward`, :func:`wmr.inverse`) with these on random,
 singular and nearly singular configurations.
 """
+
 from __future__ import annotations
 
 import numpy as np
@@ -47,11 +48,11 @@ def J2(robot: Robot, beta: ArrayLike) -> FloatArray:
     beta = V.finite_array("beta", beta, last=robot.w)
     out = np.zeros(beta.shape[:-1] + (2 * robot.w, robot.n_rates))
     for i, (u, sl) in enumerate(zip(robot.wheels, robot.rate_slices)):
-        own = u.constant_angle                                                 # unsteered: own angle
+        own = u.constant_angle  # unsteered: own angle
         b = beta[..., i] if own is None else np.full(beta.shape[:-1], float(own))
         c, s = np.cos(b), np.sin(b)
-        R = np.stack([np.stack([c, -s], -1), np.stack([s, c], -1)], -2)        # (11)
-        out[..., 2 * i:2 * i + 2, sl] = R @ np.asarray(u.local_block(NUMERIC), dtype=float)
+        R = np.stack([np.stack([c, -s], -1), np.stack([s, c], -1)], -2)  # (11)
+        out[..., 2 * i : 2 * i + 2, sl] = R @ np.asarray(u.local_block(NUMERIC), dtype=float)
     return out
 
 
@@ -94,8 +95,9 @@ def J(robot: Robot, beta: ArrayLike, L: float = 1.0) -> FloatArray:
 def _matrices(A: ArrayLike, square: bool = False) -> FloatArray:
     A = V.finite_array("A", A)
     if A.ndim < 2 or min(A.shape[-2:]) == 0 or (square and A.shape[-1] != A.shape[-2]):
-        raise InputValueError(f"A must have shape (..., m, n) with m, n >= 1{' and m = n' if square else ''}, "
-                              f"got {A.shape}")
+        raise InputValueError(
+            f"A must have shape (..., m, n) with m, n >= 1{' and m = n' if square else ''}, got {A.shape}"
+        )
     return A
 
 
@@ -174,7 +176,7 @@ def condition_number(A: ArrayLike) -> FloatArray:
     return kappa_from_singular_values(_sv(A))
 
 
-@np.errstate(over="ignore", invalid="ignore")       # overflow is checked on the results
+@np.errstate(over="ignore", invalid="ignore")  # overflow is checked on the results
 def forward(robot: Robot, beta: ArrayLike, rates: ArrayLike) -> tuple[FloatArray, FloatArray, BoolArray]:
     r"""Least-squares twist :math:`\mathbf t = \mathbf J_1^+\mathbf J_2\dot{\boldsymbol\theta}` and the slip.
 
@@ -204,8 +206,9 @@ def forward(robot: Robot, beta: ArrayLike, rates: ArrayLike) -> tuple[FloatArray
 
 
 @np.errstate(over="ignore", invalid="ignore")
-def inverse(robot: Robot, beta: ArrayLike, twist: Twist,
-            beta_dot: ArrayLike | None = None) -> tuple[FloatArray, FloatArray, BoolArray]:
+def inverse(
+    robot: Robot, beta: ArrayLike, twist: Twist, beta_dot: ArrayLike | None = None
+) -> tuple[FloatArray, FloatArray, BoolArray]:
     r"""Joint rates from the pseudo-inverse of the whole system, the units' steering rows appended.
 
     Solves, in the least-squares sense, :math:`\mathbf J_2\dot{\boldsymbol\theta} = \mathbf J_1\mathbf t`
@@ -238,12 +241,12 @@ def inverse(robot: Robot, beta: ArrayLike, twist: Twist,
     rows, rhs = [np.broadcast_to(B, batch + B.shape[-2:])], [np.broadcast_to(v, batch + v.shape[-1:])]
     bd = np.zeros(robot.w) if beta_dot is None else beta_dot
     for i, (u, sl) in enumerate(zip(robot.wheels, robot.rate_slices)):
-        c = u.steering_row()                                # c theta_i = psi_dot + beta_dot_i, e.g. (15)
+        c = u.steering_row()  # c theta_i = psi_dot + beta_dot_i, e.g. (15)
         if c is not None:
             row = np.zeros(robot.n_rates)
             row[sl] = c
             rows.append(np.broadcast_to(row, batch + (1, robot.n_rates)))
-            rhs.append(np.broadcast_to(twist[..., :1] + bd[..., i:i + 1], batch + (1,)))
+            rhs.append(np.broadcast_to(twist[..., :1] + bd[..., i : i + 1], batch + (1,)))
     A, y = np.concatenate(rows, axis=-2), np.concatenate(rhs, axis=-1)
     rates = (np.linalg.pinv(A) @ y[..., None])[..., 0]
     res = rhs[0] - (rows[0] @ rates[..., None])[..., 0]

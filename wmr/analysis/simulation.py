@@ -8,6 +8,7 @@ rotated by :math:`\psi`; and each :math:`\dot\beta_i` follows its unit's law: (7
 corrected (15) for dual wheels.  A fixed-step classical Runge-Kutta scheme keeps runs
 deterministic.
 """
+
 from __future__ import annotations
 
 from collections.abc import Callable
@@ -74,8 +75,10 @@ class Trajectory:
             X = c * p[..., 0] - s * p[..., 1] + XY[:, 0].reshape(shape)
             Y = s * p[..., 0] + c * p[..., 1] + XY[:, 1].reshape(shape)
         if not (np.isfinite(X).all() and np.isfinite(Y).all()):
-            raise InputValueError(f"body_points are too large: their fixed-frame positions overflow "
-                             f"(largest |body_points| = {np.abs(p).max():.3g})")
+            raise InputValueError(
+                f"body_points are too large: their fixed-frame positions overflow "
+                f"(largest |body_points| = {np.abs(p).max():.3g})"
+            )
         return np.stack([X, Y], axis=-1)
 
     def unit_points(self, i: int, key: str) -> FloatArray:
@@ -98,7 +101,8 @@ class Trajectory:
         pts = self.robot.wheels[i].points(self.beta[:, i])
         if not isinstance(key, str) or key not in pts:
             raise (InputTypeError if not isinstance(key, str) else InputValueError)(
-                f"key must be one of {sorted(pts)}, got {V.show(key)}")
+                f"key must be one of {sorted(pts)}, got {V.show(key)}"
+            )
         return self.world(pts[key])
 
 
@@ -111,11 +115,13 @@ def _one(name, value, size):
 
 def _as_input(f, size, name):
     if callable(f):
+
         def call(t, state):
             try:
                 return f(t, state)
-            except (TypeError, ValueError) as e:        # the caller's function: say which one failed
+            except (TypeError, ValueError) as e:  # the caller's function: say which one failed
                 raise type(e)(f"{name}(t, state) raised {type(e).__name__}: {e}") from e
+
         return call
     arr = _one(name, f, size)
     return lambda t, state: arr
@@ -125,9 +131,16 @@ def _as_input(f, size, name):
 MAX_STEPS = 1_000_000
 
 
-def simulate(robot: Robot, rates: ArrayLike | Callable[[float, FloatArray], ArrayLike], beta0: ArrayLike, t_end: float,
-             dt: float, steer: ArrayLike | Callable[[float, FloatArray], ArrayLike] | None = None,
-             pose0: ArrayLike = (0.0, 0.0, 0.0), max_steps: int = MAX_STEPS) -> Trajectory:
+def simulate(
+    robot: Robot,
+    rates: ArrayLike | Callable[[float, FloatArray], ArrayLike],
+    beta0: ArrayLike,
+    t_end: float,
+    dt: float,
+    steer: ArrayLike | Callable[[float, FloatArray], ArrayLike] | None = None,
+    pose0: ArrayLike = (0.0, 0.0, 0.0),
+    max_steps: int = MAX_STEPS,
+) -> Trajectory:
     r"""Integrate the robot's motion under joint-rate (and steering) inputs.
 
     Parameters
@@ -169,14 +182,17 @@ def simulate(robot: Robot, rates: ArrayLike | Callable[[float, FloatArray], Arra
     with np.errstate(over="ignore"):
         steps = np.ceil(t_end / dt - 1e-9)
     if not steps <= max_steps:
-        raise InputValueError(f"dt = {dt!r} needs {steps:.3g} steps to reach t_end = {t_end!r}, more than "
-                         f"max_steps = {max_steps}: take a larger dt (or raise max_steps)")
+        raise InputValueError(
+            f"dt = {dt!r} needs {steps:.3g} steps to reach t_end = {t_end!r}, more than "
+            f"max_steps = {max_steps}: take a larger dt (or raise max_steps)"
+        )
     rate_fn = _as_input(rates, robot.n_rates, "rates")
     steer_fn = _as_input(np.zeros(robot.w) if steer is None else steer, robot.w, "steer")
 
     def overflow(t):
-        return InputValueError(f"rates or steer are too large for this run: the pose or the steering angles overflow "
-                          f"at t = {t:.6g}")
+        return InputValueError(
+            f"rates or steer are too large for this run: the pose or the steering angles overflow at t = {t:.6g}"
+        )
 
     def deriv(t, pose, beta):
         if not (np.isfinite(pose).all() and np.isfinite(beta).all()):
@@ -187,13 +203,14 @@ def simulate(robot: Robot, rates: ArrayLike | Callable[[float, FloatArray], Arra
         tw = sol.value
         c, s = np.cos(pose[0]), np.sin(pose[0])
         dpose = np.array([tw[0], c * tw[1] - s * tw[2], s * tw[1] + c * tw[2]])
-        dbeta = np.array([u.beta_rate(tw[0], th[sl], st[i])
-                          for i, (u, sl) in enumerate(zip(robot.wheels, robot.rate_slices))])
+        dbeta = np.array(
+            [u.beta_rate(tw[0], th[sl], st[i]) for i, (u, sl) in enumerate(zip(robot.wheels, robot.rate_slices))]
+        )
         if not (np.isfinite(dpose).all() and np.isfinite(dbeta).all()):
             raise overflow(t)
         return dpose, dbeta, tw, float(np.linalg.norm(sol.residual))
 
-    n = max(1, int(steps))                          # steps of t_end / n <= dt: the run ends at t_end
+    n = max(1, int(steps))  # steps of t_end / n <= dt: the run ends at t_end
     dt = t_end / n
     ts = np.arange(n + 1) * dt
     pose, beta = np.empty((n + 1, 3)), np.empty((n + 1, robot.w))

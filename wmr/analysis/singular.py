@@ -7,6 +7,7 @@ robot can move that way (a robot without steering cannot move that way at all wi
 skidding).  :func:`singular_families` finds one example of each family; :data:`FAMILIES` names
 them in geometric words and :data:`MEANINGS` says what they mean for driving.
 """
+
 from __future__ import annotations
 
 import numpy as np
@@ -40,18 +41,28 @@ FAMILIES = {
 }
 
 
-_PARALLEL = ("the wheels all point the same way: it drives along them, but to turn or move any other way it must "
-             "steer first (a car driving straight ahead is here; without steering it cannot leave without skidding)")
-_CENTRE = ("the axles meet at one point and the robot turns about it: to move its turning centre (or to drive "
-           "straight) it must re-steer first")
+_PARALLEL = (
+    "the wheels all point the same way: it drives along them, but to turn or move any other way it must "
+    "steer first (a car driving straight ahead is here; without steering it cannot leave without skidding)"
+)
+_CENTRE = (
+    "the axles meet at one point and the robot turns about it: to move its turning centre (or to drive "
+    "straight) it must re-steer first"
+)
 #: what each family means to a driver (keys as in :data:`FAMILIES`)
 MEANINGS = {
-    "i": _PARALLEL, "i'": _PARALLEL, "parallel": _PARALLEL,
+    "i": _PARALLEL,
+    "i'": _PARALLEL,
+    "parallel": _PARALLEL,
     "pair": "two wheels pull along the line joining them: the rates cannot turn the robot about a point of that line "
-            "without re-steering",
-    "v-C": _CENTRE, "through-C": _CENTRE, "v": _CENTRE, "through-point": _CENTRE, "v-circle": _CENTRE,
-    "v-P": _CENTRE + "; the wheel at that mount point stands still", "through-P": _CENTRE + "; the wheel at that "
-    "mount point stands still",
+    "without re-steering",
+    "v-C": _CENTRE,
+    "through-C": _CENTRE,
+    "v": _CENTRE,
+    "through-point": _CENTRE,
+    "v-circle": _CENTRE,
+    "v-P": _CENTRE + "; the wheel at that mount point stands still",
+    "through-P": _CENTRE + "; the wheel at that mount point stands still",
     "other": "the wheel rates cannot make every change of motion here: some need the wheels re-steered first",
 }
 
@@ -59,9 +70,9 @@ MEANINGS = {
 def _family(robot, beta):
     """Short name of the family of a singular configuration, from where its wheel-plane lines meet."""
     if robot.w == 3 and robot.n_rates == 3 and all(u.steered and u.rolls_in_plane for u in robot.wheels):
-        return classify(robot, beta).family                     # three centred wheels: the paper's families
+        return classify(robot, beta).family  # three centred wheels: the paper's families
     P, u = wheel_plane_lines(robot, beta)
-    lined = [k for k, unit in enumerate(robot.wheels) if unit.rolls_in_plane]     # their planes constrain
+    lined = [k for k, unit in enumerate(robot.wheels) if unit.rolls_in_plane]  # their planes constrain
     if len(lined) < 2:
         return "other"
     meet = lines_concurrency(P[lined], u[lined])
@@ -70,7 +81,7 @@ def _family(robot, beta):
     if meet.kind != FINITE:
         return "other"
     scale = float(np.abs(robot.mount_points).max())
-    if np.hypot(*meet.point) <= TOL * scale:                   # hypot: no overflow of the squares
+    if np.hypot(*meet.point) <= TOL * scale:  # hypot: no overflow of the squares
         return "through-C"
     gap = robot.mount_points - meet.point
     if np.any(np.hypot(gap[:, 0], gap[:, 1]) <= TOL * scale):
@@ -122,19 +133,22 @@ def singular_families(robot, L=None):
     steered = np.array(robot.steered, dtype=bool)
     pts = robot.mount_points
     size = float(np.abs(pts).max()) or 1.0
-    fixed_dirs = [[-np.sin(float(u.constant_angle)), np.cos(float(u.constant_angle))] for u in robot.wheels
-                  if u.constant_angle is not None]
+    fixed_dirs = [
+        [-np.sin(float(u.constant_angle)), np.cos(float(u.constant_angle))]
+        for u in robot.wheels
+        if u.constant_angle is not None
+    ]
     dirs = np.array([[1.0, 0.0], [0.0, 1.0], [0.6, 0.8]] + fixed_dirs)
     finite = np.array([[0.0, 0.0], *pts, [0.37 * size, 0.61 * size]])
-    beta_inf = np.arctan2(-dirs[:, :1], dirs[:, 1:]) * np.ones(robot.w)      # j_i || direction, every unit
+    beta_inf = np.arctan2(-dirs[:, :1], dirs[:, 1:]) * np.ones(robot.w)  # j_i || direction, every unit
     beta_fin = planes_through(robot, finite)
-    for k in range(len(pts)):                                                 # D = P_k: wheel k's angle is free;
-        beta_fin[1 + k, k] = 0.4                                              # a generic value, not 0
+    for k in range(len(pts)):  # D = P_k: wheel k's angle is free;
+        beta_fin[1 + k, k] = 0.4  # a generic value, not 0
     cands = np.concatenate([beta_inf, beta_fin])
     flip = cands.copy()
-    flip[:, np.flatnonzero(steered)[:1]] += np.pi                             # one wheel turned by pi: the "'" families
+    flip[:, np.flatnonzero(steered)[:1]] += np.pi  # one wheel turned by pi: the "'" families
     cands = np.concatenate([cands, flip])
-    cands = robot.effective_beta(cands)                                      # unsteered units at their own angle
+    cands = robot.effective_beta(cands)  # unsteered units at their own angle
     rk = rank(robot.J(cands, L=L))
     rf = rank_F(robot, cands)
     out, seen = [], set()
@@ -145,7 +159,14 @@ def singular_families(robot, L=None):
         if fam in seen:
             continue
         seen.add(fam)
-        out.append({"family": fam, "description": _describe(fam), "meaning": MEANINGS[fam.split("-")[0]
-                    if fam.startswith("pair-") else fam], "beta": wrap_angle(b).tolist(), "rank_J": int(r),
-                    "rank_F": int(f)})
+        out.append(
+            {
+                "family": fam,
+                "description": _describe(fam),
+                "meaning": MEANINGS[fam.split("-")[0] if fam.startswith("pair-") else fam],
+                "beta": wrap_angle(b).tolist(),
+                "rank_J": int(r),
+                "rank_F": int(f),
+            }
+        )
     return out

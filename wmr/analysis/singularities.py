@@ -34,6 +34,7 @@ of that circle passes through a singular :math:`\mathbf J` (:func:`classify` cal
 Everything here is computed from :meth:`wmr.Robot.J` and :func:`wmr.analysis.mobility.rank_F`; nothing is
 copied from the paper.
 """
+
 from __future__ import annotations
 
 from dataclasses import dataclass, field
@@ -64,10 +65,24 @@ from .lines import (
 from .mobility import rank_F
 from .square import default_L, exact_robot, require_square
 
-__all__ = ["det_J", "det_J_scale", "is_singular", "Classification", "classify", "singular_motions",
-           "exact_robot", "numeric_robot", "require_square",
-           # the exact side of det J, from wmr.analysis.det_exact
-           "det_J_symbolic", "det_J_polynomial", "exact_zero", "plane_line_matrix", "characterisation"]
+__all__ = [
+    "det_J",
+    "det_J_scale",
+    "is_singular",
+    "Classification",
+    "classify",
+    "singular_motions",
+    "exact_robot",
+    "numeric_robot",
+    "require_square",
+    # the exact side of det J, from wmr.analysis.det_exact
+    "det_J_symbolic",
+    "det_J_polynomial",
+    "exact_zero",
+    "plane_line_matrix",
+    "characterisation",
+]
+
 
 def numeric_robot(robot: Robot) -> Robot:
     """The same robot with float coordinates and radii (from an exact one).
@@ -110,7 +125,7 @@ def det_J(robot: Robot, beta: ArrayLike, L: float | None = None) -> FloatArray:
     """
     robot = V.numeric_robot(robot)
     require_square(robot)
-    return det(robot.J(beta, L=default_L(robot, L)))                 # closed form, batched
+    return det(robot.J(beta, L=default_L(robot, L)))  # closed form, batched
 
 
 def det_J_scale(robot: Robot, beta: ArrayLike, L: float | None = None) -> FloatArray:

@@ -4,6 +4,7 @@ What the numeric side of :math:`\det\mathbf J` (:mod:`wmr.analysis.singularities
 (:mod:`wmr.analysis.det_exact`) share: the check that :math:`\mathbf J` is square, the characteristic
 length used by default, and the exact (SymPy) counterpart of a numeric robot.
 """
+
 from __future__ import annotations
 
 import dataclasses
@@ -39,7 +40,8 @@ def require_square(robot: Robot) -> None:
     if robot.n_rates != 3 or robot.w != 3:
         raise InputValueError(
             f"det J needs a square J (three centred wheels, n_rates = 3); got a robot with w = {robot.w}, "
-            f"n_rates = {robot.n_rates} (for dual wheels analyse the kinematically equivalent centred robot)")
+            f"n_rates = {robot.n_rates} (for dual wheels analyse the kinematically equivalent centred robot)"
+        )
 
 
 def default_L(robot: Robot, L: Numbers | None, numeric: bool = True) -> Numbers:
@@ -61,8 +63,9 @@ def default_L(robot: Robot, L: Numbers | None, numeric: bool = True) -> Numbers:
         L = V.positive("L", L)
         return V.number("L", L) if numeric else L
     if V.free_symbols(V.robot(robot)):
-        raise InputValueError(f"L must be given explicitly for a robot with symbolic mount points, got L = None "
-                              f"for {V.show(robot)}")
+        raise InputValueError(
+            f"L must be given explicitly for a robot with symbolic mount points, got L = None for {V.show(robot)}"
+        )
     return characteristic_length(robot)
 
 
@@ -81,6 +84,8 @@ def exact_robot(robot: Robot) -> Robot:
     if V.robot(robot).is_symbolic:
         return robot
     ns = [sp.sqrt(2), sp.sqrt(3)]
-    units = [dataclasses.replace(u, position=tuple(sp.nsimplify(v, ns) for v in u.position),
-                                 r=sp.nsimplify(u.r, ns)) for u in robot.wheels]
+    units = [
+        dataclasses.replace(u, position=tuple(sp.nsimplify(v, ns) for v in u.position), r=sp.nsimplify(u.r, ns))
+        for u in robot.wheels
+    ]
     return Robot(units, name=robot.name)

@@ -8,6 +8,7 @@ when its rolling direction :math:`\mathbf j_i` is parallel to the velocity of :m
 axle :math:`\mathbf i_i` points at U (or, in translation, all wheel planes are parallel to
 :math:`\dot{\mathbf c}`).
 """
+
 from __future__ import annotations
 
 from dataclasses import dataclass
@@ -23,8 +24,15 @@ from ..model.types import ArrayLike, FloatArray, Twist
 from ._batch import for_chunks
 from .lines import AT_INFINITY, FINITE, STILL
 
-__all__ = ["InstantCentre", "instantaneous_centre", "steering_angles", "centre_to_wheels", "FINITE", "AT_INFINITY",
-           "STILL"]
+__all__ = [
+    "InstantCentre",
+    "instantaneous_centre",
+    "steering_angles",
+    "centre_to_wheels",
+    "FINITE",
+    "AT_INFINITY",
+    "STILL",
+]
 
 
 @dataclass(frozen=True)
@@ -82,15 +90,15 @@ def instantaneous_centre(twist: Twist, length: float | None = None) -> InstantCe
     t = V.twist_array("twist", twist)
     length = None if length is None else V.number("length", V.positive("length", length))
     psi, c = t[..., 0], t[..., 1:]
-    big = np.max(np.abs(c), axis=-1)                                 # speeds up to 2.4e308: scaled first
+    big = np.max(np.abs(c), axis=-1)  # speeds up to 2.4e308: scaled first
     m = np.where(big > 0, big, 1.0)
-    speed = np.hypot(c[..., 0] / m, c[..., 1] / m)                   # |c_dot| / m
-    Ec = np.stack([-c[..., 1], c[..., 0]], axis=-1)                  # E c_dot
+    speed = np.hypot(c[..., 0] / m, c[..., 1] / m)  # |c_dot| / m
+    Ec = np.stack([-c[..., 1], c[..., 0]], axis=-1)  # E c_dot
     still = (psi == 0) & (big == 0)
     if length is None:
         infinite = (psi == 0) & ~still
     else:
-        with np.errstate(over="ignore", under="ignore"):             # the rule of near_zero: |psi| l <= TOL |c_dot|
+        with np.errstate(over="ignore", under="ignore"):  # the rule of near_zero: |psi| l <= TOL |c_dot|
             infinite = (np.abs(psi) * (length / m) <= TOL * speed) & ~still
     kind = np.where(still, STILL, np.where(infinite, AT_INFINITY, FINITE))
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
@@ -98,9 +106,11 @@ def instantaneous_centre(twist: Twist, length: float | None = None) -> InstantCe
         sign = np.where(kind == FINITE, np.sign(psi), 1.0)
         direction = (sign / np.where(speed == 0, 1.0, speed))[..., None] * (Ec / m[..., None])
     if not np.isfinite(point[kind == FINITE]).all():
-        raise InputValueError("twist has a centre |c_dot| / |psi_dot| beyond double precision: give length (the "
-                              "robot's "
-                         "size) to call it at infinity")
+        raise InputValueError(
+            "twist has a centre |c_dot| / |psi_dot| beyond double precision: give length (the "
+            "robot's "
+            "size) to call it at infinity"
+        )
     point = np.where((kind == AT_INFINITY)[..., None], np.inf, point)
     point = np.where((kind == STILL)[..., None], np.nan, point)
     direction = np.where(still[..., None], np.nan, direction)
@@ -149,17 +159,17 @@ def steering_angles(robot: Robot, twist: Twist, current: ArrayLike | None = None
     batch = V.batch_shape({"twist": t, "current": current})
     tw = np.broadcast_to(t, batch + (3,)).reshape(-1, 3)
     cur = None if current is None else np.broadcast_to(current, batch + (w,)).reshape(-1, w)
-    d = robot.mount_points                                             # (w, 2)
+    d = robot.mount_points  # (w, 2)
     dmax = float(np.abs(d).max())
-    keep = np.array([not (u.steered and u.rolls_in_plane) for u in robot.wheels])    # free, or their own angle
+    keep = np.array([not (u.steered and u.rolls_in_plane) for u in robot.wheels])  # free, or their own angle
     own = [(i, float(u.constant_angle)) for i, u in enumerate(robot.wheels) if u.constant_angle is not None]
     N = tw.shape[0]
     beta = np.empty((N, w))
 
     def chunk(a, b):
         psi, cx, cy = tw[a:b, 0:1], tw[a:b, 1:2], tw[a:b, 2:3]
-        pdot = point_velocity(tw[a:b, None, :], d)                     # (2): c_dot + psi_dot E d_i
-        px, py = pdot[..., 0], np.negative(pdot[..., 1])               # j_i = -p_dot_i / |p_dot_i|
+        pdot = point_velocity(tw[a:b, None, :], d)  # (2): c_dot + psi_dot E d_i
+        px, py = pdot[..., 0], np.negative(pdot[..., 1])  # j_i = -p_dot_i / |p_dot_i|
         # the mount point is still when |p_dot| <= TOL scale (relative); hypot: no overflow of squares
         scale = np.maximum(np.abs(cx), np.abs(cy))
         scale += np.abs(psi) * dmax
@@ -168,7 +178,7 @@ def steering_angles(robot: Robot, twist: Twist, current: ArrayLike | None = None
         free |= keep
         np.arctan2(px, py, out=beta[a:b])
         np.copyto(beta[a:b], 0.0 if cur is None else cur[a:b], where=free)
-        for i, angle in own:                                           # fixed and Swedish: their own angle
+        for i, angle in own:  # fixed and Swedish: their own angle
             beta[a:b, i] = angle
 
     for_chunks(chunk, N)

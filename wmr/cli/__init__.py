@@ -13,6 +13,7 @@ Each command lives in its own module of this package (one file per command) and 
 
 :data:`COMMANDS` lists them in the order ``wmr --help`` shows.
 """
+
 from __future__ import annotations
 
 import argparse
@@ -43,6 +44,7 @@ def _version():
     import platform
 
     from .._version import DISTRIBUTION, __version__
+
     where = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
     return f"wmr {__version__} ({DISTRIBUTION}, {where}, Python {platform.python_version()})"
 
@@ -51,8 +53,13 @@ class _Version(argparse.Action):
     """``--version``: print :func:`_version` on one line (argparse's own action wraps it) and exit."""
 
     def __init__(self, option_strings, dest, **kwargs):
-        super().__init__(option_strings, dest, nargs=0, default=argparse.SUPPRESS,
-                         help="show the version, the distribution and where it is installed, and exit")
+        super().__init__(
+            option_strings,
+            dest,
+            nargs=0,
+            default=argparse.SUPPRESS,
+            help="show the version, the distribution and where it is installed, and exit",
+        )
 
     def __call__(self, parser, namespace, values, option_string=None):
         print(_version())
@@ -60,8 +67,11 @@ class _Version(argparse.Action):
 
 
 def _parser():
-    p = argparse.ArgumentParser(prog="wmr", description="Kinematics of wheeled mobile robots: mobility, "
-                                "isotropy, singularities and kinematics of a robot described in a TOML file.")
+    p = argparse.ArgumentParser(
+        prog="wmr",
+        description="Kinematics of wheeled mobile robots: mobility, "
+        "isotropy, singularities and kinematics of a robot described in a TOML file.",
+    )
     p.add_argument("--version", action=_Version)
     sub = p.add_subparsers(dest="command", metavar="COMMAND", required=True)
     for name, module in COMMANDS.items():
@@ -87,14 +97,17 @@ def main(argv: Sequence[str] | None = None) -> int:
     mod = importlib.import_module(f"{__name__}.{COMMANDS[args.command]}")
     try:
         return mod.run(args)
-    except BrokenPipeError:                                       # the reader stopped (wmr ... | head): not an error
+    except BrokenPipeError:  # the reader stopped (wmr ... | head): not an error
         sys.stderr.close()
         return 0
     except (InputError, MissingDependencyError, OSError) as exc:  # bad input, a missing extra: one line
         print(f"wmr {args.command}: {' '.join(str(exc).split())}", file=sys.stderr)
         return 2
-    except Exception:                                             # a bug in wmr: show it, ask for a report
+    except Exception:  # a bug in wmr: show it, ask for a report
         traceback.print_exc()
-        print(f"wmr {args.command}: internal error: this is a bug in wmr, not a problem with your input; please "
-              f"report it with the command line and the robot file", file=sys.stderr)
+        print(
+            f"wmr {args.command}: internal error: this is a bug in wmr, not a problem with your input; please "
+            f"report it with the command line and the robot file",
+            file=sys.stderr,
+        )
         return 1

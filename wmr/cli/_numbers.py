@@ -1,4 +1,5 @@
 """Numbers on the command line: one number, or a list (space- or comma-separated), checked with a one-line message."""
+
 from __future__ import annotations
 
 import math
@@ -38,5 +39,6 @@ def clean(values, scale):
     import numpy as np
 
     from ..model.tolerance import near_zero
+
     values = np.asarray(values, dtype=float)
     return np.where(near_zero(values, scale), 0.0, values)

@@ -1,4 +1,5 @@
 """Options several commands share: ``--convention`` (how angles and twists are written)."""
+
 from __future__ import annotations
 
 import argparse
@@ -21,10 +22,15 @@ def add_convention(parser: argparse.ArgumentParser) -> None:
     None
     """
     from ..model.conventions import CONVENTIONS
-    parser.add_argument("--convention", choices=list(CONVENTIONS), default="wmr",
-                        help="how angles and twists are written, in and out: "
-                             + "; ".join(f"{k}: {v}" for k, v in CONVENTIONS.items())
-                             + " (default wmr; angles in degrees on the command line)")
+
+    parser.add_argument(
+        "--convention",
+        choices=list(CONVENTIONS),
+        default="wmr",
+        help="how angles and twists are written, in and out: "
+        + "; ".join(f"{k}: {v}" for k, v in CONVENTIONS.items())
+        + " (default wmr; angles in degrees on the command line)",
+    )
 
 
 def twist_words(twist, convention: str) -> dict:
@@ -40,5 +46,6 @@ def twist_words(twist, convention: str) -> dict:
     dict of str to float
     """
     from ..model.conventions import TWIST_ORDER
+
     named = dict(zip(("omega", "vx", "vy"), (float(x) for x in twist)))
     return {k: named[k] for k in TWIST_ORDER[convention]}

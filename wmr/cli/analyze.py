@@ -12,6 +12,7 @@ leaves them out; ``wmr explain TERM`` says more); ``--json`` prints the same num
 ``nullity``, ``kappa_J_L1``, ...; infinities as the string ``"inf"``; angles in degrees, in the
 convention chosen).  The computation is :func:`wmr.analysis.overview.overview`.
 """
+
 from __future__ import annotations
 
 import argparse
@@ -23,7 +24,7 @@ import numpy as np
 
 from ._options import ROBOT_FILE
 
-if TYPE_CHECKING:                                   # (the command imports the library when it runs)
+if TYPE_CHECKING:  # (the command imports the library when it runs)
     from ..analysis.overview import Overview
 
 __all__ = ["HELP", "add_arguments", "run", "as_json", "table", "notes"]
@@ -45,15 +46,27 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     """
     from ..analysis.overview import GRID_SIZE, TWISTS
     from ._options import add_convention
+
     parser.add_argument("robot", help=ROBOT_FILE)
     parser.add_argument("--wheel-joints", metavar="NAMES", help="URDF only: the wheel joints, NAME[=RADIUS],...")
     parser.add_argument("--json", action="store_true", help="print JSON instead of a table")
-    parser.add_argument("--grid", type=int, default=GRID_SIZE, metavar="N",
-                        help=f"about N grid configurations of the steered angles (default {GRID_SIZE})")
-    parser.add_argument("--twists", type=int, default=TWISTS, metavar="N",
-                        help=f"sample N twists for the drivable configurations (default {TWISTS})")
-    parser.add_argument("--seed", type=int, default=0,
-                        help="seed of the random twists and of the generic configuration")
+    parser.add_argument(
+        "--grid",
+        type=int,
+        default=GRID_SIZE,
+        metavar="N",
+        help=f"about N grid configurations of the steered angles (default {GRID_SIZE})",
+    )
+    parser.add_argument(
+        "--twists",
+        type=int,
+        default=TWISTS,
+        metavar="N",
+        help=f"sample N twists for the drivable configurations (default {TWISTS})",
+    )
+    parser.add_argument(
+        "--seed", type=int, default=0, help="seed of the random twists and of the generic configuration"
+    )
     parser.add_argument("--brief", action="store_true", help="the table without the notes under it")
     add_convention(parser)
 
@@ -68,6 +81,7 @@ def _g(x):
 
 def _angles(beta, convention):
     from ..model.conventions import angle_to
+
     return [round(math.degrees(b), 6) + 0.0 for b in angle_to(np.asarray(beta, dtype=float), convention)]
 
 
@@ -85,19 +99,40 @@ def as_json(ov: Overview, convention: str = "wmr") -> dict[str, Any]:
     dict
     """
     c = ov.campion
-    return {"name": ov.name, "wheels": list(ov.kinds), "delta_m": c["delta_m"], "delta_s": c["delta_s"],
-            "class": c["label"], "class_name": c["name"], "actuated_mobility": ov.actuated_mobility,
-            "uncontrolled": list(ov.uncontrolled), "limitations": list(ov.limitations),
-            "rank_F": {"generic": ov.rank_F, "min": ov.rank_F_range[0], "max": ov.rank_F_range[1]},
-            "nullity": {"generic": ov.nullity, "min": ov.nullity_range[0], "max": ov.nullity_range[1]},
-            "configurations": ov.configurations, "L": ov.L, "kappa_J_L1": _num(ov.kappa_JL1),
-            "kappa_J2": _num(ov.kappa_J2),
-            "kappa_J": {**{k: _num(v) for k, v in ov.kappa_J.items()}, "drivable_configurations": ov.drivable},
-            "isotropic": dict(ov.isotropic), "advice": list(ov.advice), "advised": list(ov.advised),
-            "dead_zone": ov.dead_zone, "convention": convention,
-            "singular": [{"family": f["family"], "description": f["description"], "meaning": f["meaning"],
-                          "angles_deg": _angles(f["beta"], convention), "rank_J": f["rank_J"],
-                          "rank_F": f["rank_F"]} for f in ov.singular]}
+    return {
+        "name": ov.name,
+        "wheels": list(ov.kinds),
+        "delta_m": c["delta_m"],
+        "delta_s": c["delta_s"],
+        "class": c["label"],
+        "class_name": c["name"],
+        "actuated_mobility": ov.actuated_mobility,
+        "uncontrolled": list(ov.uncontrolled),
+        "limitations": list(ov.limitations),
+        "rank_F": {"generic": ov.rank_F, "min": ov.rank_F_range[0], "max": ov.rank_F_range[1]},
+        "nullity": {"generic": ov.nullity, "min": ov.nullity_range[0], "max": ov.nullity_range[1]},
+        "configurations": ov.configurations,
+        "L": ov.L,
+        "kappa_J_L1": _num(ov.kappa_JL1),
+        "kappa_J2": _num(ov.kappa_J2),
+        "kappa_J": {**{k: _num(v) for k, v in ov.kappa_J.items()}, "drivable_configurations": ov.drivable},
+        "isotropic": dict(ov.isotropic),
+        "advice": list(ov.advice),
+        "advised": list(ov.advised),
+        "dead_zone": ov.dead_zone,
+        "convention": convention,
+        "singular": [
+            {
+                "family": f["family"],
+                "description": f["description"],
+                "meaning": f["meaning"],
+                "angles_deg": _angles(f["beta"], convention),
+                "rank_J": f["rank_J"],
+                "rank_F": f["rank_F"],
+            }
+            for f in ov.singular
+        ],
+    }
 
 
 def table(ov: Overview, convention: str = "wmr") -> str:
@@ -119,27 +154,45 @@ def table(ov: Overview, convention: str = "wmr") -> str:
     c = ov.campion
     kj = ov.kappa_J
     if ov.actuated_mobility < c["delta_m"]:
-        actuated = (f"{ov.actuated_mobility} of delta_m = {c['delta_m']}: the motors cannot move it "
-                    + " or ".join(ov.uncontrolled))
+        actuated = f"{ov.actuated_mobility} of delta_m = {c['delta_m']}: the motors cannot move it " + " or ".join(
+            ov.uncontrolled
+        )
     else:
         actuated = f"{ov.actuated_mobility}: the motors command every motion it can make"
-    rows = [("robot", ov.name), ("wheels", ", ".join(f"{n} {k}" for k, n in counts.items())),
-            ("class", f"{c['label']}: delta_m = {c['delta_m']}, delta_s = {c['delta_s']}, {c['name']} "
-                      "(Campion et al. 1996)"),
-            ("actuated", actuated)]
+    rows = [
+        ("robot", ov.name),
+        ("wheels", ", ".join(f"{n} {k}" for k, n in counts.items())),
+        (
+            "class",
+            f"{c['label']}: delta_m = {c['delta_m']}, delta_s = {c['delta_s']}, {c['name']} (Campion et al. 1996)",
+        ),
+        ("actuated", actuated),
+    ]
     rows += [("limitation" if n == 0 else "", s) for n, s in enumerate(ov.limitations)]
-    rows += [("rank F", f"{ov.rank_F} generic, {ov.rank_F_range[0]}..{ov.rank_F_range[1]} over "
-                        f"{ov.configurations:,} configurations"),
-             ("nullity F", f"{ov.nullity} generic, {ov.nullity_range[0]}..{ov.nullity_range[1]}"),
-             ("L", f"{ov.L:.4g} (the characteristic length minimising kappa(J_L1) with C where it is)"),
-             ("kappa(J_L1)", _g(ov.kappa_JL1) + (" isotropic" if ov.isotropic["J_L1"] else "")),
-             ("kappa(J2)", _g(ov.kappa_J2) + (" isotropic" if ov.isotropic["J2"] else "")
-              + ", at every configuration"),
-             ("kappa(J)", f"{_g(kj['min'])} .. {_g(kj['max'])}, median {_g(kj['median'])}, 95% below "
-                          f"{_g(kj['p95'])}, over {ov.drivable:,} drivable configurations")]
+    rows += [
+        (
+            "rank F",
+            f"{ov.rank_F} generic, {ov.rank_F_range[0]}..{ov.rank_F_range[1]} over "
+            f"{ov.configurations:,} configurations",
+        ),
+        ("nullity F", f"{ov.nullity} generic, {ov.nullity_range[0]}..{ov.nullity_range[1]}"),
+        ("L", f"{ov.L:.4g} (the characteristic length minimising kappa(J_L1) with C where it is)"),
+        ("kappa(J_L1)", _g(ov.kappa_JL1) + (" isotropic" if ov.isotropic["J_L1"] else "")),
+        ("kappa(J2)", _g(ov.kappa_J2) + (" isotropic" if ov.isotropic["J2"] else "") + ", at every configuration"),
+        (
+            "kappa(J)",
+            f"{_g(kj['min'])} .. {_g(kj['max'])}, median {_g(kj['median'])}, 95% below "
+            f"{_g(kj['p95'])}, over {ov.drivable:,} drivable configurations",
+        ),
+    ]
     if ov.dead_zone is not None:
-        rows.append(("dead zone", f"radius {ov.dead_zone:.4g}: C's circle when the units are steered without driving "
-                                  "(drift-free only for offset 0)"))
+        rows.append(
+            (
+                "dead zone",
+                f"radius {ov.dead_zone:.4g}: C's circle when the units are steered without driving "
+                "(drift-free only for offset 0)",
+            )
+        )
     if ov.dead_zone is None and ov.dead_zones and all(z is not None for z in ov.dead_zones):
         rows.append(("dead zone", "none: the offsets differ, the locked units cannot be steered together"))
     if any(ov.steered) and not ov.singular:
@@ -147,8 +200,12 @@ def table(ov: Overview, convention: str = "wmr") -> str:
     unit = "axle angles" if convention == "wmr" else f"{convention} module angles"
     for n, f in enumerate(ov.singular):
         beta = ", ".join(f"{a:.4g}" for a in _angles(f["beta"], convention))
-        rows.append(("singular" if n == 0 else "", f"{f['family']}: {f['description']}; e.g. ({beta}) deg "
-                                                   f"{unit}, rank J = {f['rank_J']}"))
+        rows.append(
+            (
+                "singular" if n == 0 else "",
+                f"{f['family']}: {f['description']}; e.g. ({beta}) deg {unit}, rank J = {f['rank_J']}",
+            )
+        )
         rows.append(("", f"  means: {f['meaning']}"))
     if not ov.advice:
         rows.append(("isotropy", "J_L1 and J2 are isotropic as designed"))
@@ -174,6 +231,7 @@ def notes(ov) -> str:
     str
     """
     from ..analysis.glossary import lookup
+
     used = [t for t in TERMS if t != "singular" or ov.singular]
     lines = ["", "What the rows mean (wmr explain TERM for more):"]
     lines += [f"  {lookup(t).term:<18} {lookup(t).short}" for t in used]
@@ -195,6 +253,7 @@ def run(args: argparse.Namespace) -> int:
     import wmr
 
     from ..analysis.overview import overview
+
     robot = wmr.load(args.robot, wheel_joints=args.wheel_joints)
     ov = overview(robot, grid=args.grid, twists=args.twists, seed=args.seed)
     if args.json:

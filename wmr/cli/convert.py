@@ -11,6 +11,7 @@ Each file's format is its suffix (``.toml``; ``.urdf`` or ``.xml``; ``.yaml`` or
 names.  A format that cannot express the robot (ROS 2 parameters for a robot that is no
 controller's layout) is refused with a one-line reason (exit status 2).
 """
+
 from __future__ import annotations
 
 from typing import TYPE_CHECKING
@@ -36,13 +37,20 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     None
     """
     parser.add_argument("robot", help="robot file: .toml, .urdf/.xml or .yaml/.yml (ROS 2 parameters)")
-    parser.add_argument("output", nargs="?", help="file to write (its suffix chooses the format); default: "
-                        "standard output in the format of --to")
+    parser.add_argument(
+        "output",
+        nargs="?",
+        help="file to write (its suffix chooses the format); default: standard output in the format of --to",
+    )
     parser.add_argument("--to", choices=("toml", "urdf", "ros2"), help="output format (default: the output's suffix)")
-    parser.add_argument("--wheel-joints", metavar="NAMES", help="URDF input: the wheel joints, comma-separated, each "
-                        "NAME or NAME=RADIUS (for wheels without a cylinder)")
-    parser.add_argument("--controller", metavar="NAME", help="ROS 2 input: the drive controller's node name, when the "
-                        "file has several")
+    parser.add_argument(
+        "--wheel-joints",
+        metavar="NAMES",
+        help="URDF input: the wheel joints, comma-separated, each NAME or NAME=RADIUS (for wheels without a cylinder)",
+    )
+    parser.add_argument(
+        "--controller", metavar="NAME", help="ROS 2 input: the drive controller's node name, when the file has several"
+    )
 
 
 def run(args: argparse.Namespace) -> int:
@@ -60,10 +68,11 @@ def run(args: argparse.Namespace) -> int:
     from ..errors import InputValueError
     from ..io import dump, format_of, load
     from ..io.urdf_read import read_urdf
+
     if args.output is None and args.to is None:
         raise InputValueError("give an output file or --to FORMAT (toml, urdf, ros2) to print it")
     names = None
-    if format_of(args.robot) == "urdf":                       # a URDF's joint names go on into ROS 2 parameters
+    if format_of(args.robot) == "urdf":  # a URDF's joint names go on into ROS 2 parameters
         robot, names = read_urdf(args.robot, args.wheel_joints)
     else:
         robot = load(args.robot, wheel_joints=args.wheel_joints, controller=args.controller)

@@ -10,6 +10,7 @@ Examples::
 The glossary is :mod:`wmr.analysis.glossary`; ``wmr analyze`` prints the lines of the terms its
 table uses under the table.
 """
+
 from __future__ import annotations
 
 import argparse
@@ -31,8 +32,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     -------
     None
     """
-    parser.add_argument("term", nargs="?", default=None,
-                        help="the term (case, spaces, - and _ do not matter); none: list every term")
+    parser.add_argument(
+        "term", nargs="?", default=None, help="the term (case, spaces, - and _ do not matter); none: list every term"
+    )
 
 
 def run(args: argparse.Namespace) -> int:
@@ -48,6 +50,7 @@ def run(args: argparse.Namespace) -> int:
         0; an unknown term raises an input error (one line, with the closest term; status 2).
     """
     from ..analysis.glossary import GLOSSARY, lookup
+
     if args.term is None:
         width = max(len(t) for t in GLOSSARY)
         for term, e in GLOSSARY.items():

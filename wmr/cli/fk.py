@@ -19,6 +19,7 @@ the encoder per control period at the largest wheel's rim, :math:`r\\,2\\pi/(N\\
 ``--encoder-counts`` (default 2048 per revolution) and ``T`` = ``--period`` (default 0.02 s): about
 7.8 mm/s for a 4-inch swerve wheel.  ``--slip-tolerance 0`` asks for exactly compatible rates.
 """
+
 from __future__ import annotations
 
 import argparse
@@ -57,19 +58,39 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     None
     """
     parser.add_argument("robot", help=ROBOT_FILE)
-    parser.add_argument("--angles", nargs="+", metavar="DEG", required=True,
-                        help="steering angles in degrees, one per unit (space- or comma-separated), in the "
-                             "convention chosen")
-    parser.add_argument("--rates", nargs="+", metavar="RATE", required=True,
-                        help="joint rates in rad/s, in the order of the robot's rate names")
-    parser.add_argument("--slip-tolerance", metavar="M_PER_S", default=None,
-                        help="slip speed (m/s) below which a wheel counts as not slipping (default: one encoder "
-                             "count per control period at the largest wheel's rim, see --encoder-counts, --period)")
-    parser.add_argument("--encoder-counts", metavar="N", default=str(ENCODER_COUNTS),
-                        help=f"encoder counts per wheel revolution for the default slip tolerance "
-                             f"(default {ENCODER_COUNTS})")
-    parser.add_argument("--period", metavar="S", default=str(PERIOD),
-                        help=f"control period in seconds for the default slip tolerance (default {PERIOD})")
+    parser.add_argument(
+        "--angles",
+        nargs="+",
+        metavar="DEG",
+        required=True,
+        help="steering angles in degrees, one per unit (space- or comma-separated), in the convention chosen",
+    )
+    parser.add_argument(
+        "--rates",
+        nargs="+",
+        metavar="RATE",
+        required=True,
+        help="joint rates in rad/s, in the order of the robot's rate names",
+    )
+    parser.add_argument(
+        "--slip-tolerance",
+        metavar="M_PER_S",
+        default=None,
+        help="slip speed (m/s) below which a wheel counts as not slipping (default: one encoder "
+        "count per control period at the largest wheel's rim, see --encoder-counts, --period)",
+    )
+    parser.add_argument(
+        "--encoder-counts",
+        metavar="N",
+        default=str(ENCODER_COUNTS),
+        help=f"encoder counts per wheel revolution for the default slip tolerance (default {ENCODER_COUNTS})",
+    )
+    parser.add_argument(
+        "--period",
+        metavar="S",
+        default=str(PERIOD),
+        help=f"control period in seconds for the default slip tolerance (default {PERIOD})",
+    )
     parser.add_argument("--json", action="store_true", help="print JSON instead of a table")
     add_convention(parser)
 
@@ -114,39 +135,56 @@ def run(args: argparse.Namespace) -> int:
 
     from ..errors import InputValueError
     from ..model.conventions import angle_from
+
     robot = wmr.load(args.robot)
     given = np.radians(numbers(args.angles, "--angles", robot.w, "one angle in degrees per wheel unit"))
     beta = angle_from(given, args.convention)
     rates = np.array(numbers(args.rates, "--rates", robot.n_rates, " ".join(robot.rate_names)))
     counts, period = number(args.encoder_counts, "--encoder-counts"), number(args.period, "--period")
     if counts <= 0 or period <= 0:
-        raise InputValueError(f"--encoder-counts and --period must be positive, got {args.encoder_counts!r} "
-                              f"and {args.period!r}")
+        raise InputValueError(
+            f"--encoder-counts and --period must be positive, got {args.encoder_counts!r} and {args.period!r}"
+        )
     if args.slip_tolerance is None:
-        tol, why = default_slip_tolerance(robot, counts, period), (f"one count of a {counts:g}-count encoder per "
-                                                                   f"{period:g} s at the wheel rim")
+        tol, why = (
+            default_slip_tolerance(robot, counts, period),
+            (f"one count of a {counts:g}-count encoder per {period:g} s at the wheel rim"),
+        )
     else:
         tol, why = number(args.slip_tolerance, "--slip-tolerance"), "--slip-tolerance"
         if tol < 0:
             raise InputValueError(f"--slip-tolerance must be >= 0 (m/s), got {args.slip_tolerance!r}")
     sol = wmr.forward(robot, beta, rates, slip_tolerance=tol if tol > 0 else None)
     size = float(np.abs(robot.mount_points).max())
-    t = clean(sol.value, max(abs(sol.value[0]) * size, *np.abs(sol.value[1:])))      # rounding noise shown as 0
+    t = clean(sol.value, max(abs(sol.value[0]) * size, *np.abs(sol.value[1:])))  # rounding noise shown as 0
     res = clean(sol.residual, float(np.abs(robot.J2(beta) @ rates).max()))
     per_wheel = np.hypot(sol.residual[0::2], sol.residual[1::2])
-    out = {**twist_words(t, args.convention), "convention": args.convention, "admissible": bool(sol.admissible),
-           "slip": float(np.linalg.norm(sol.residual)), "slip_max_wheel": float(per_wheel.max()),
-           "slip_tolerance": tol, "residual": sol.residual.tolist()}
+    out = {
+        **twist_words(t, args.convention),
+        "convention": args.convention,
+        "admissible": bool(sol.admissible),
+        "slip": float(np.linalg.norm(sol.residual)),
+        "slip_max_wheel": float(per_wheel.max()),
+        "slip_tolerance": tol,
+        "residual": sol.residual.tolist(),
+    }
     if args.json:
         print(json.dumps(out, indent=2))
         return 0
     units = {"omega": "rad/s", "vx": "m/s", "vy": "m/s"}
     rows = [(k, f"{fmt(out[k])} {units[k]}") for k in twist_words(t, args.convention)]
-    rows += [("slip", f"{fmt(float(np.linalg.norm(res)), 3)} m/s (norm of J1 t - J2 theta_dot); largest wheel "
-                      f"{fmt(float(per_wheel.max()), 3)} m/s"),
-             ("tolerance", f"{fmt(tol, 3)} m/s ({why})"),
-             ("admissible", "yes: no wheel slips more than the tolerance" if sol.admissible
-              else "no: the wheels would slip")]
+    rows += [
+        (
+            "slip",
+            f"{fmt(float(np.linalg.norm(res)), 3)} m/s (norm of J1 t - J2 theta_dot); largest wheel "
+            f"{fmt(float(per_wheel.max()), 3)} m/s",
+        ),
+        ("tolerance", f"{fmt(tol, 3)} m/s ({why})"),
+        (
+            "admissible",
+            "yes: no wheel slips more than the tolerance" if sol.admissible else "no: the wheels would slip",
+        ),
+    ]
     for k, _ in enumerate(robot.wheels):
         rows.append((f"residual {k + 1}", f"({fmt(res[2 * k], 3)}, {fmt(res[2 * k + 1], 3)}) m/s"))
     width = max(len(k) for k, _ in rows)

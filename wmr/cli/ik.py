@@ -21,6 +21,7 @@ that the passive joints (rollers, castors) would make by themselves with every m
 not (:mod:`wmr.analysis.actuation`).  It is admissible *without re-steering* when that holds at the
 current angles.
 """
+
 from __future__ import annotations
 
 import argparse
@@ -57,9 +58,14 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--vx", default="0", help="velocity of C along the body x axis (forward), m/s (default 0)")
     parser.add_argument("--vy", default="0", help="velocity of C along the body y axis (left), m/s (default 0)")
     parser.add_argument("--omega", default="0", help="turning rate, rad/s, counter-clockwise (default 0)")
-    parser.add_argument("--current-angles", nargs="+", metavar="DEG", default=None,
-                        help="the units' current steering angles in degrees, one per unit, in the convention "
-                             "chosen (default: 0 for every unit, the same as giving 0 0 ...)")
+    parser.add_argument(
+        "--current-angles",
+        nargs="+",
+        metavar="DEG",
+        default=None,
+        help="the units' current steering angles in degrees, one per unit, in the convention "
+        "chosen (default: 0 for every unit, the same as giving 0 0 ...)",
+    )
     parser.add_argument("--json", action="store_true", help="print JSON instead of a table")
     add_convention(parser)
 
@@ -71,6 +77,7 @@ def _nearest(robot, beta, current):
     plane along the mount point's velocity.
     """
     from ..model.platform import wrap_angle
+
     turnable = np.array([u.steered and u.rolls_in_plane for u in robot.wheels])
     flip = turnable & (np.abs(wrap_angle(beta + np.pi - current)) < np.abs(wrap_angle(beta - current)))
     return wrap_angle(np.where(flip, beta + np.pi, beta))
@@ -82,12 +89,15 @@ def _slip(sol):
 
 def _verdict(robot, sol, part):
     from ..analysis.actuation import describe_twist
+
     if sol.admissible:
         return "yes"
     if not sol.no_slip:
         return "no: the wheels would slip"
-    return (f"no: the motors do not command it (moving {describe_twist(robot, part)} needs the passive joints "
-            "to move by themselves)")
+    return (
+        f"no: the motors do not command it (moving {describe_twist(robot, part)} needs the passive joints "
+        "to move by themselves)"
+    )
 
 
 def run(args: argparse.Namespace) -> int:
@@ -107,12 +117,18 @@ def run(args: argparse.Namespace) -> int:
     from ..analysis.actuation import uncontrolled
     from ..model.conventions import angle_from, angle_to
     from ..model.platform import wrap_angle
+
     conv = args.convention
     robot = wmr.load(args.robot)
     twist = np.array([number(args.omega, "--omega"), number(args.vx, "--vx"), number(args.vy, "--vy")])
-    given = np.zeros(robot.w) if args.current_angles is None else np.radians(
-        numbers(args.current_angles, "--current-angles", robot.w, "one angle in degrees per wheel unit"))
-    current = robot.effective_beta(angle_from(given, conv))     # fixed and Swedish wheels: their own angle
+    given = (
+        np.zeros(robot.w)
+        if args.current_angles is None
+        else np.radians(
+            numbers(args.current_angles, "--current-angles", robot.w, "one angle in degrees per wheel unit")
+        )
+    )
+    current = robot.effective_beta(angle_from(given, conv))  # fixed and Swedish wheels: their own angle
     beta = _nearest(robot, wmr.steering_angles(robot, twist, current), current)
     sol = wmr.inverse(robot, beta, twist)
     now = wmr.inverse(robot, current, twist)
@@ -120,21 +136,33 @@ def run(args: argparse.Namespace) -> int:
     part_now, _ = uncontrolled(robot, current, twist)
     change = wrap_angle(beta - current)
     shown_beta, shown_current = np.degrees(angle_to(beta, conv)), np.degrees(angle_to(current, conv))
-    out = {"convention": conv, "twist": twist_words(twist, conv), "angles_deg": shown_beta.tolist(),
-           "rates": dict(zip(robot.rate_names, sol.value.tolist())), "admissible": bool(sol.admissible),
-           "no_slip": bool(sol.no_slip), "actuated": bool(sol.actuated), "slip": _slip(sol),
-           "uncommanded_twist": twist_words(part, conv), "current_deg": shown_current.tolist(),
-           "resteer_deg": np.degrees(change).tolist(), "admissible_without_resteering": bool(now.admissible),
-           "slip_without_resteering": _slip(now)}
+    out = {
+        "convention": conv,
+        "twist": twist_words(twist, conv),
+        "angles_deg": shown_beta.tolist(),
+        "rates": dict(zip(robot.rate_names, sol.value.tolist())),
+        "admissible": bool(sol.admissible),
+        "no_slip": bool(sol.no_slip),
+        "actuated": bool(sol.actuated),
+        "slip": _slip(sol),
+        "uncommanded_twist": twist_words(part, conv),
+        "current_deg": shown_current.tolist(),
+        "resteer_deg": np.degrees(change).tolist(),
+        "admissible_without_resteering": bool(now.admissible),
+        "slip_without_resteering": _slip(now),
+    }
     if args.json:
         print(json.dumps(out, indent=2))
         return 0
     unit = {"m/s": ("vx", "vy"), "rad/s": ("omega",)}
-    print("twist: " + ", ".join(f"{k} = {fmt(v)} {'rad/s' if k in unit['rad/s'] else 'm/s'}"
-                                for k, v in out["twist"].items()) + " (body frame: x forward, y left)")
+    print(
+        "twist: "
+        + ", ".join(f"{k} = {fmt(v)} {'rad/s' if k in unit['rad/s'] else 'm/s'}" for k, v in out["twist"].items())
+        + " (body frame: x forward, y left)"
+    )
     head = "axle_deg" if conv == "wmr" else "heading_deg"
     rows = [("wheel", "type", head, "resteer_deg", "rates (rad/s)")]
-    shown = clean(sol.value, float(np.abs(sol.value).max(initial=0.0)))           # rounding noise shown as 0
+    shown = clean(sol.value, float(np.abs(sol.value).max(initial=0.0)))  # rounding noise shown as 0
     for k, (u, sl) in enumerate(zip(robot.wheels, robot.rate_slices)):
         rates = ", ".join(f"{n} = {fmt(v)}" for n, v in zip(robot.rate_names[sl], shown[sl]))
         rows.append((str(k + 1), u.kind, fmt(shown_beta[k], 5), fmt(math.degrees(change[k]), 5), rates))
@@ -145,6 +173,8 @@ def run(args: argparse.Namespace) -> int:
     slip = clean(out["slip"], float(np.abs(robot.J2(beta) @ sol.value).max(initial=0.0)))
     slip_now = clean(out["slip_without_resteering"], float(np.abs(robot.J2(current) @ now.value).max(initial=0.0)))
     print(f"admissible: {_verdict(robot, sol, part)} at these angles (largest slip residual {fmt(slip, 3)} m/s)")
-    print(f"without re-steering: {_verdict(robot, now, part_now)} at the current angles "
-          f"({', '.join(fmt(a, 5) for a in out['current_deg'])}) deg (largest slip residual {fmt(slip_now, 3)} m/s)")
+    print(
+        f"without re-steering: {_verdict(robot, now, part_now)} at the current angles "
+        f"({', '.join(fmt(a, 5) for a in out['current_deg'])}) deg (largest slip residual {fmt(slip_now, 3)} m/s)"
+    )
     return 0

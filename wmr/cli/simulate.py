@@ -14,6 +14,7 @@ forward kinematics recovers from the simulated encoders and its slip residual; t
 speed of the wheels at their contacts; the largest servo torque as a fraction of its limit.
 Needs MuJoCo (``pip install 'wmr-kinematics[sim]'``).  Swedish wheels are refused (exit status 2).
 """
+
 from __future__ import annotations
 
 import json
@@ -52,19 +53,26 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--omega", default="0", help="turning rate, rad/s, counter-clockwise (default 0)")
     parser.add_argument("--seconds", default="3", help="simulated time, s (default 3; 0: only write --mjcf)")
     parser.add_argument("--mjcf", metavar="FILE", default=None, help="write the MuJoCo model (MJCF) to FILE")
-    parser.add_argument("--param", nargs="+", metavar="NAME=VALUE", default=(),
-                        help="change physical parameters (wmr.sim.Params), e.g. sliding=0.6 torsional=0")
+    parser.add_argument(
+        "--param",
+        nargs="+",
+        metavar="NAME=VALUE",
+        default=(),
+        help="change physical parameters (wmr.sim.Params), e.g. sliding=0.6 torsional=0",
+    )
     parser.add_argument("--json", action="store_true", help="print JSON instead of a table")
 
 
 def _params(items):
     from ..sim import Params
+
     out = {}
     for item in items:
         name, eq, value = str(item).partition("=")
         if not eq or name not in Params.__dataclass_fields__:
-            raise InputValueError(f"--param must be NAME=VALUE with NAME one of "
-                                  f"{sorted(Params.__dataclass_fields__)}, got {item!r}")
+            raise InputValueError(
+                f"--param must be NAME=VALUE with NAME one of {sorted(Params.__dataclass_fields__)}, got {item!r}"
+            )
         out[name] = number(value, f"--param {name}")
     return Params(**out)
 
@@ -85,6 +93,7 @@ def run(args: argparse.Namespace) -> int:
     import wmr
 
     from .. import sim
+
     robot = wmr.load(args.robot)
     twist = np.array([number(args.omega, "--omega"), number(args.vx, "--vx"), number(args.vy, "--vy")])
     seconds = number(args.seconds, "--seconds")
@@ -111,27 +120,36 @@ def run(args: argparse.Namespace) -> int:
     fk, residual = rec.kinematic_slip()
     limits = np.abs(s.model.actuator_forcerange[:, 1]) if s.model.nu else np.ones(0)
     load = float((np.abs(rec.torque[late]) / limits).max()) if s.model.nu else 0.0
-    out = {"commanded": dict(zip(("omega", "vx", "vy"), twist.tolist())),
-           "simulated": dict(zip(("omega", "vx", "vy"), rec.twist[late].mean(axis=0).tolist())),
-           "forward_from_encoders": dict(zip(("omega", "vx", "vy"), fk[late].mean(axis=0).tolist())),
-           "encoder_slip_residual": float(residual[late].mean()),
-           "contact_slip_speed": float(rec.slip_speed[late].mean()),
-           "final_pose": dict(zip(("psi", "X", "Y"), rec.pose[-1].tolist())), "servo_load": load, "seconds": seconds,
-           "mjcf": args.mjcf}
+    out = {
+        "commanded": dict(zip(("omega", "vx", "vy"), twist.tolist())),
+        "simulated": dict(zip(("omega", "vx", "vy"), rec.twist[late].mean(axis=0).tolist())),
+        "forward_from_encoders": dict(zip(("omega", "vx", "vy"), fk[late].mean(axis=0).tolist())),
+        "encoder_slip_residual": float(residual[late].mean()),
+        "contact_slip_speed": float(rec.slip_speed[late].mean()),
+        "final_pose": dict(zip(("psi", "X", "Y"), rec.pose[-1].tolist())),
+        "servo_load": load,
+        "seconds": seconds,
+        "mjcf": args.mjcf,
+    }
     if args.json:
         print(json.dumps(out, indent=2))
         return 0
 
     def tw(d):
         return f"omega = {fmt(d['omega'], 4)} rad/s, vx = {fmt(d['vx'], 4)} m/s, vy = {fmt(d['vy'], 4)} m/s"
-    rows = [("commanded", tw(out["commanded"])),
-            ("simulated", tw(out["simulated"]) + f" (mean over t >= {fmt(seconds / 2)} s)"),
-            ("from encoders", tw(out["forward_from_encoders"]) + " (wmr.forward)"),
-            ("slip residual", f"{fmt(out['encoder_slip_residual'], 3)} m/s (encoders, J1 t - J2 theta_dot)"),
-            ("contact slip", f"{fmt(out['contact_slip_speed'], 3)} m/s (mean slip speed of the wheels)"),
-            ("final pose", f"psi = {fmt(rec.pose[-1, 0], 4)} rad, X = {fmt(rec.pose[-1, 1], 4)} m, "
-                           f"Y = {fmt(rec.pose[-1, 2], 4)} m"),
-            ("servo load", f"{fmt(100 * load, 3)} % of the torque limit at most")]
+
+    rows = [
+        ("commanded", tw(out["commanded"])),
+        ("simulated", tw(out["simulated"]) + f" (mean over t >= {fmt(seconds / 2)} s)"),
+        ("from encoders", tw(out["forward_from_encoders"]) + " (wmr.forward)"),
+        ("slip residual", f"{fmt(out['encoder_slip_residual'], 3)} m/s (encoders, J1 t - J2 theta_dot)"),
+        ("contact slip", f"{fmt(out['contact_slip_speed'], 3)} m/s (mean slip speed of the wheels)"),
+        (
+            "final pose",
+            f"psi = {fmt(rec.pose[-1, 0], 4)} rad, X = {fmt(rec.pose[-1, 1], 4)} m, Y = {fmt(rec.pose[-1, 2], 4)} m",
+        ),
+        ("servo load", f"{fmt(100 * load, 3)} % of the torque limit at most"),
+    ]
     if args.mjcf:
         rows.append(("model", args.mjcf))
     width = max(len(k) for k, _ in rows)

@@ -22,6 +22,7 @@ Limits (:mod:`wmr.model.limits`) are checked before the sweep starts: at most 1e
 sweep after the chunk in progress and prints the result over the configurations done so far
 (marked INTERRUPTED), with exit status 130; a second Ctrl-C stops at once.
 """
+
 from __future__ import annotations
 
 import argparse
@@ -33,8 +34,10 @@ import time
 from ..errors import InputValueError
 from ._options import ROBOT_FILE, add_convention
 
-HELP = ("evaluate rank F, mobility, actuated mobility, det J or a condition number over the drivable "
-        "configurations (or all)")
+HELP = (
+    "evaluate rank F, mobility, actuated mobility, det J or a condition number over the drivable "
+    "configurations (or all)"
+)
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -50,30 +53,61 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     None
     """
     from ..analysis.sweep import ANALYSES, CHUNK, QUANTILES
+
     parser.add_argument("robot", help=ROBOT_FILE)
     parser.add_argument("analysis", choices=sorted(ANALYSES), help="what to evaluate at each configuration")
-    parser.add_argument("--angles", choices=("drivable", "any"), default=None,
-                        help="drivable: the steering angles of sampled twists, where the robot can move (the "
-                             "default); any: every steering angle, drivable or not (the default with --grid)")
+    parser.add_argument(
+        "--angles",
+        choices=("drivable", "any"),
+        default=None,
+        help="drivable: the steering angles of sampled twists, where the robot can move (the "
+        "default); any: every steering angle, drivable or not (the default with --grid)",
+    )
     which = parser.add_mutually_exclusive_group()
-    which.add_argument("--grid", metavar="STEPS", help="with --angles any: a regular grid of STEPS values per "
-                       "steered angle (default 36), or one count per wheel separated by commas")
-    which.add_argument("--sample", metavar="N", help="N sampled twists (drivable, default 1e6) or N random "
-                       "configurations (any), e.g. 1e6")
+    which.add_argument(
+        "--grid",
+        metavar="STEPS",
+        help="with --angles any: a regular grid of STEPS values per "
+        "steered angle (default 36), or one count per wheel separated by commas",
+    )
+    which.add_argument(
+        "--sample",
+        metavar="N",
+        help="N sampled twists (drivable, default 1e6) or N random configurations (any), e.g. 1e6",
+    )
     parser.add_argument("--seed", type=int, default=0, help="seed of --sample (default 0)")
-    parser.add_argument("--range", nargs=2, type=float, metavar=("LO", "HI"), default=None,
-                        help="with --angles any: range of every steering angle in degrees, in the convention "
-                             "chosen (default -180 180)")
-    parser.add_argument("--length", type=float, default=None, metavar="L",
-                        help="characteristic length of J_L1 (default: the robot's characteristic length)")
-    parser.add_argument("--quantiles", default=",".join(f"{q:g}" for q in QUANTILES),
-                        help="quantile levels, comma-separated")
+    parser.add_argument(
+        "--range",
+        nargs=2,
+        type=float,
+        metavar=("LO", "HI"),
+        default=None,
+        help="with --angles any: range of every steering angle in degrees, in the convention chosen (default -180 180)",
+    )
+    parser.add_argument(
+        "--length",
+        type=float,
+        default=None,
+        metavar="L",
+        help="characteristic length of J_L1 (default: the robot's characteristic length)",
+    )
+    parser.add_argument(
+        "--quantiles", default=",".join(f"{q:g}" for q in QUANTILES), help="quantile levels, comma-separated"
+    )
     parser.add_argument("--chunk", type=int, default=CHUNK, help=f"configurations per chunk (default {CHUNK})")
-    parser.add_argument("--dask", metavar="SCHEDULER", default=None,
-                        help="run the chunks on Dask: a scheduler address, or local:N for N local workers")
+    parser.add_argument(
+        "--dask",
+        metavar="SCHEDULER",
+        default=None,
+        help="run the chunks on Dask: a scheduler address, or local:N for N local workers",
+    )
     parser.add_argument("--json", action="store_true", help="print JSON instead of a table")
-    parser.add_argument("--progress", action=argparse.BooleanOptionalAction, default=None,
-                        help="show a progress bar on stderr (default: when stderr is a terminal)")
+    parser.add_argument(
+        "--progress",
+        action=argparse.BooleanOptionalAction,
+        default=None,
+        help="show a progress bar on stderr (default: when stderr is a terminal)",
+    )
     add_convention(parser)
 
 
@@ -97,19 +131,22 @@ def _level(text):
 def _angles(args, robot):
     from ..analysis.sweep import Drivable, Grid, Sample
     from ..model.conventions import angle_from
+
     mode = args.angles or ("any" if args.grid is not None or args.range is not None else "drivable")
     if mode == "drivable":
         if args.grid is not None or args.range is not None:
-            raise InputValueError("--grid and --range cover every steering angle: give --angles any with them "
-                                  "(the drivable configurations are sampled: --sample N)")
+            raise InputValueError(
+                "--grid and --range cover every steering angle: give --angles any with them "
+                "(the drivable configurations are sampled: --sample N)"
+            )
         return Drivable(_number(args.sample or "1e6", "sample"), seed=args.seed)
     lo_deg, hi_deg = args.range or (-180.0, 180.0)
-    lo = math.radians(lo_deg) + float(angle_from(0.0, args.convention))      # the convention's 0 in wmr's angles
+    lo = math.radians(lo_deg) + float(angle_from(0.0, args.convention))  # the convention's 0 in wmr's angles
     hi = lo + math.radians(hi_deg - lo_deg)
     if args.sample is not None:
         return Sample(_number(args.sample, "sample"), seed=args.seed, lo=lo, hi=hi)
     steps = [_number(s, "grid") for s in (args.grid or "36").split(",")]
-    if len(steps) == 1:                          # unsteered units keep their own angle: one value is enough
+    if len(steps) == 1:  # unsteered units keep their own angle: one value is enough
         steps = [steps[0] if steered else 1 for steered in robot.steered]
     return Grid(tuple(steps), lo=lo, hi=hi)
 
@@ -129,8 +166,10 @@ class _Bar:
         fill = int(round(frac * self.width))
         el = now - self.t0
         left = el * (1 - frac) / frac if frac > 0 else math.nan
-        self.stream.write(f"\r[{'#' * fill}{'.' * (self.width - fill)}] {100 * frac:3.0f}%  "
-                          f"{done:.3g}/{total:.3g}  {el:.0f} s, {left:.0f} s left ")
+        self.stream.write(
+            f"\r[{'#' * fill}{'.' * (self.width - fill)}] {100 * frac:3.0f}%  "
+            f"{done:.3g}/{total:.3g}  {el:.0f} s, {left:.0f} s left "
+        )
         if done >= total:
             self.stream.write("\n")
         self.stream.flush()
@@ -141,6 +180,7 @@ def _client(spec):
         from dask.distributed import Client, LocalCluster
     except ImportError:
         from .._version import DISTRIBUTION
+
         raise InputValueError(f"--dask needs dask and distributed: pip install '{DISTRIBUTION}[dask]'") from None
     if spec.startswith("local"):
         n = _number(spec.partition(":")[2] or "2", "dask local:N")
@@ -158,13 +198,25 @@ def _as_json(res, convention="wmr"):
 
     def deg(beta):
         return [math.degrees(a) for a in angle_to(beta, convention)]
-    return {"analysis": res.analysis, "covers": res.covers, "complete": res.complete, "count": res.count,
-            "convention": convention, "min": num(res.min), "max": num(res.max),
-            "argmin_deg": deg(res.argmin), "argmax_deg": deg(res.argmax),
-            "worst": num(res.worst), "worst_is": ANALYSES[res.analysis].worst, "worst_index": res.worst_index,
-            "worst_deg": deg(res.worst_angles),
-            "quantiles": {f"{q:g}": num(v) for q, v in res.quantiles.items()},
-            "counts": {str(k): n for k, n in res.counts.items()}, "infinite": res.infinite}
+
+    return {
+        "analysis": res.analysis,
+        "covers": res.covers,
+        "complete": res.complete,
+        "count": res.count,
+        "convention": convention,
+        "min": num(res.min),
+        "max": num(res.max),
+        "argmin_deg": deg(res.argmin),
+        "argmax_deg": deg(res.argmax),
+        "worst": num(res.worst),
+        "worst_is": ANALYSES[res.analysis].worst,
+        "worst_index": res.worst_index,
+        "worst_deg": deg(res.worst_angles),
+        "quantiles": {f"{q:g}": num(v) for q, v in res.quantiles.items()},
+        "counts": {str(k): n for k, n in res.counts.items()},
+        "infinite": res.infinite,
+    }
 
 
 def run(args: argparse.Namespace) -> int:
@@ -182,6 +234,7 @@ def run(args: argparse.Namespace) -> int:
     import wmr
 
     from ..analysis.sweep import sweep
+
     client = cluster = None
     try:
         robot = wmr.load(args.robot)
@@ -190,8 +243,17 @@ def run(args: argparse.Namespace) -> int:
         show = sys.stderr.isatty() if args.progress is None else args.progress
         if args.dask:
             client, cluster = _client(args.dask)
-        res = sweep(robot, args.analysis, angles, L=args.length, quantiles=qs, chunk=args.chunk,
-                    progress=_Bar(sys.stderr) if show else None, client=client, interruptible=True)
+        res = sweep(
+            robot,
+            args.analysis,
+            angles,
+            L=args.length,
+            quantiles=qs,
+            chunk=args.chunk,
+            progress=_Bar(sys.stderr) if show else None,
+            client=client,
+            interruptible=True,
+        )
     finally:
         if client is not None:
             client.close()
@@ -202,7 +264,9 @@ def run(args: argparse.Namespace) -> int:
         return 130
     print(json.dumps(_as_json(res, args.convention), indent=2) if args.json else res.summary(args.convention))
     if not res.complete:
-        print(f"wmr sweep: interrupted (Ctrl-C) after {res.count:,} configurations: the result above covers "
-              "those only", file=sys.stderr)
+        print(
+            f"wmr sweep: interrupted (Ctrl-C) after {res.count:,} configurations: the result above covers those only",
+            file=sys.stderr,
+        )
         return 130
     return 0

@@ -45,6 +45,7 @@ Examples
 >>> [u.kind for u in back.wheels], wmr.campion_class(back).label
 (['dual', 'dual', 'dual'], '(1,2)')
 """
+
 from .files import FORMATS, dump, format_of, load
 from .ros2 import from_ros2, to_ros2
 from .toml import RobotFileError, loads, wheel_keys
@@ -52,5 +53,18 @@ from .urdf_read import from_urdf
 from .urdf_write import to_urdf
 from .wpilib import from_wpilib, to_wpilib
 
-__all__ = ["RobotFileError", "wheel_keys", "load", "loads", "dump", "FORMATS", "format_of", "from_urdf", "to_urdf",
-           "from_ros2", "to_ros2", "from_wpilib", "to_wpilib"]
+__all__ = [
+    "RobotFileError",
+    "wheel_keys",
+    "load",
+    "loads",
+    "dump",
+    "FORMATS",
+    "format_of",
+    "from_urdf",
+    "to_urdf",
+    "from_ros2",
+    "to_ros2",
+    "from_wpilib",
+    "to_wpilib",
+]

@@ -14,6 +14,7 @@ Examples
 >>> twist_of(speeds).tolist(), is_chassis_speeds(speeds), is_chassis_speeds([3.0, 1.0, 2.0])
 ([3.0, 1.0, 2.0], True, False)
 """
+
 from __future__ import annotations
 
 from collections.abc import Sequence
@@ -66,8 +67,10 @@ def twist_of(speeds: Any) -> FloatArray:
         If ``speeds`` is neither (an array is not accepted: its order would be a guess).
     """
     if not is_chassis_speeds(speeds):
-        raise InputTypeError(f"speeds must be a WPILib ChassisSpeeds(vx, vy, omega) or Twist2d(dx, dy, dtheta), "
-                             f"or a sequence of them, got {V.show(speeds)}")
+        raise InputTypeError(
+            f"speeds must be a WPILib ChassisSpeeds(vx, vy, omega) or Twist2d(dx, dy, dtheta), "
+            f"or a sequence of them, got {V.show(speeds)}"
+        )
     return V.twist_array("speeds", speeds)
 
 

@@ -5,6 +5,7 @@ parameter files need PyYAML, WPILib objects need robotpy-wpimath; each is an ext
 distribution (``pip install 'wmr-kinematics[urdf]'``, ``[ros]``, ``[wpilib]``), and a bridge
 used without its package raises :class:`~wmr.errors.MissingDependencyError` naming the extra.
 """
+
 from __future__ import annotations
 
 import importlib
@@ -53,5 +54,7 @@ def require(extra: str, what: str, module: str | None = None) -> ModuleType:
     try:
         return importlib.import_module(module or top)
     except ImportError as exc:
-        raise MissingDependencyError(f"{what} needs the package {dist}, which is not installed ({exc}): "
-                                     f"pip install '{DISTRIBUTION}[{extra}]' (or pip install {dist})") from None
+        raise MissingDependencyError(
+            f"{what} needs the package {dist}, which is not installed ({exc}): "
+            f"pip install '{DISTRIBUTION}[{extra}]' (or pip install {dist})"
+        ) from None

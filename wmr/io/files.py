@@ -12,6 +12,7 @@ format          suffix                   reader / writer
 So ``wmr analyze robot.urdf`` and ``wmr analyze controllers.yaml`` read the robot as
 ``wmr analyze robot.toml`` does.
 """
+
 from __future__ import annotations
 
 import os
@@ -88,8 +89,9 @@ def load(path: PathLike, wheel_joints: WheelJoints | None = None, controller: st
     return toml.load(path)
 
 
-def dump(robot: Robot, path: PathLike | None = None, format: str | None = None,
-         joint_names: JointNames | None = None) -> str:
+def dump(
+    robot: Robot, path: PathLike | None = None, format: str | None = None, joint_names: JointNames | None = None
+) -> str:
     """The text of a robot file for ``robot`` (and write it to ``path`` if given), TOML unless told otherwise.
 
     Parameters

@@ -24,6 +24,7 @@ The mecanum rollers are those whose wheel speeds WPILib's ``MecanumDriveKinemati
 ``mecanum_drive_controller`` compute (FL: :math:`v_x - v_y - (l_x + l_y)\omega`, ...): an X seen from
 above.
 """
+
 from __future__ import annotations
 
 import numpy as np
@@ -59,8 +60,9 @@ def _radii(radius, n):
     return np.broadcast_to(r.reshape(-1), (n,))
 
 
-def differential(track: float, radius: float, radius_right: float | None = None,
-                 name: str = "differential drive") -> Robot:
+def differential(
+    track: float, radius: float, radius_right: float | None = None, name: str = "differential drive"
+) -> Robot:
     """A differential drive: left and right fixed wheels at ``(0, +-track/2)``, rolling along x.
 
     Parameters
@@ -84,8 +86,10 @@ def differential(track: float, radius: float, radius_right: float | None = None,
     """
     half = V.positive("track", track) / 2
     right = radius if radius_right is None else radius_right
-    return Robot([FixedWheel((0.0, half), r=radius, angle=_HALF_PI),
-                  FixedWheel((0.0, -half), r=right, angle=_HALF_PI)], name=name)
+    return Robot(
+        [FixedWheel((0.0, half), r=radius, angle=_HALF_PI), FixedWheel((0.0, -half), r=right, angle=_HALF_PI)],
+        name=name,
+    )
 
 
 def rectangle(length: float, width: float, centre: Point = (0.0, 0.0)) -> FloatArray:
@@ -130,8 +134,10 @@ def mecanum(positions: ArrayLike, radius: ArrayLike, name: str = "mecanum drive"
         raise InputValueError(f"positions must be the four mount points FL, FR, RL, RR, got shape {positions.shape}")
     radii = _radii(radius, 4)
     rollers = (_QUARTER_PI, -_QUARTER_PI, -_QUARTER_PI, _QUARTER_PI)
-    return Robot([SwedishWheel(tuple(p), r=float(r), angle=_HALF_PI, roller=g)
-                  for p, r, g in zip(positions, radii, rollers)], name=name)
+    return Robot(
+        [SwedishWheel(tuple(p), r=float(r), angle=_HALF_PI, roller=g) for p, r, g in zip(positions, radii, rollers)],
+        name=name,
+    )
 
 
 def omni(n: int, ring: float, radius: float, offset: float = 0.0, name: str = "omni drive") -> Robot:
@@ -164,8 +170,10 @@ def omni(n: int, ring: float, radius: float, offset: float = 0.0, name: str = "o
     n = V.integer("n", n, minimum=3)
     ring = V.positive("ring", ring)
     angles = wrap_angle(V.number("offset", offset) + 2 * np.pi * np.arange(n) / n)
-    return Robot([SwedishWheel((ring * np.cos(a), ring * np.sin(a)), r=radius, angle=float(a), roller=_HALF_PI)
-                  for a in angles], name=name)
+    return Robot(
+        [SwedishWheel((ring * np.cos(a), ring * np.sin(a)), r=radius, angle=float(a), roller=_HALF_PI) for a in angles],
+        name=name,
+    )
 
 
 def swerve(positions: ArrayLike, radius: ArrayLike, name: str = "swerve drive") -> Robot:
@@ -186,8 +194,14 @@ def swerve(positions: ArrayLike, radius: ArrayLike, name: str = "swerve drive") 
     return Robot([CentredWheel(tuple(p), r=float(r)) for p, r in zip(positions, radii)], name=name)
 
 
-def car(wheelbase: float, traction_track: float, steering_track: float, traction_radius: float,
-        steering_radius: float | None = None, name: str = "car-like robot") -> Robot:
+def car(
+    wheelbase: float,
+    traction_track: float,
+    steering_track: float,
+    traction_radius: float,
+    steering_radius: float | None = None,
+    name: str = "car-like robot",
+) -> Robot:
     """A car-like robot: steered centred wheels ``wheelbase`` ahead of fixed wheels on an axle through C.
 
     A track of 0 puts one wheel on that axle (bicycle: both 0; tricycle: ``steering_track`` 0;

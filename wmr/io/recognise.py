@@ -8,6 +8,7 @@ and they constrain nothing, so :func:`recognise` leaves them out (:attr:`Layout.
 read back has none.  Positions and angles are compared with :data:`~wmr.model.tolerance.TOL`,
 relative to the robot's size.
 """
+
 from __future__ import annotations
 
 from collections.abc import Sequence
@@ -118,8 +119,10 @@ def _differential(units, scale):
     left, right = sorted(fixed, key=lambda i: -u[i].position[1])
     (xl, yl), (xr, yr) = u[left].position, u[right].position
     if not (_same([xl, xr, yl + yr], 0.0, scale) and yl > 0):
-        raise _NotIt(f"the wheels must be at (0, +-t/2), the axle's midpoint at C; they are at ({xl:g}, {yl:g}) and "
-                     f"({xr:g}, {yr:g})")
+        raise _NotIt(
+            f"the wheels must be at (0, +-t/2), the axle's midpoint at C; they are at ({xl:g}, {yl:g}) and "
+            f"({xr:g}, {yr:g})"
+        )
     return (left, right), {"track": float(yl - yr)}
 
 
@@ -132,8 +135,10 @@ def _mecanum(units, scale):
     plus = [i for i in sw if _angle_is(u[i].roller, _QUARTER_PI)]
     minus = [i for i in sw if _angle_is(u[i].roller, -_QUARTER_PI)]
     if len(plus) != 2 or len(minus) != 2:
-        raise _NotIt("needs two wheels with rollers at +45 deg and two at -45 deg, has rollers "
-                     f"{[round(float(np.degrees(u[i].roller)), 6) for i in sw]} deg")
+        raise _NotIt(
+            "needs two wheels with rollers at +45 deg and two at -45 deg, has rollers "
+            f"{[round(float(np.degrees(u[i].roller)), 6) for i in sw]} deg"
+        )
     fl, rr = sorted(plus, key=lambda i: (-u[i].position[0], -u[i].position[1]))
     fr, rl = sorted(minus, key=lambda i: (-u[i].position[0], -u[i].position[1]))
     return (fl, fr, rl, rr), {}
@@ -169,8 +174,10 @@ def _swerve(units, scale):
 def _car(units, scale, n_steered, n_traction):
     steered, fixed = _of(units, CentredWheel), _of(units, FixedWheel)
     if (len(steered), len(fixed), len(units)) != (n_steered, n_traction, n_steered + n_traction):
-        raise _NotIt(f"needs {n_steered} centred and {n_traction} fixed wheels, has {len(steered)} centred and "
-                     f"{len(fixed)} fixed of {len(units)} units")
+        raise _NotIt(
+            f"needs {n_steered} centred and {n_traction} fixed wheels, has {len(steered)} centred and "
+            f"{len(fixed)} fixed of {len(units)} units"
+        )
     _rolling_along_x(units, fixed, "the fixed wheels")
     u = dict(units)
     steered = sorted(steered, key=lambda i: -u[i].position[1])
@@ -181,8 +188,11 @@ def _car(units, scale, n_steered, n_traction):
         raise _NotIt("the fixed wheels must be on the y axis, symmetric about C (C at the traction axle's middle)")
     if not (_same(ps[:, 0], base, scale) and _same(ps[:, 1].sum(), 0.0, scale) and base > 0):
         raise _NotIt("the steered wheels must be on one axle ahead of C (x > 0), symmetric about the x axis")
-    numbers = {"wheelbase": base, "traction_track": float(pf[0, 1] - pf[-1, 1]),
-               "steering_track": float(ps[0, 1] - ps[-1, 1])}
+    numbers = {
+        "wheelbase": base,
+        "traction_track": float(pf[0, 1] - pf[-1, 1]),
+        "steering_track": float(ps[0, 1] - ps[-1, 1]),
+    }
     apart = (numbers["traction_track"] > 0 or n_traction == 1) and (numbers["steering_track"] > 0 or n_steered == 1)
     if not apart:
         raise _NotIt("two wheels on one axle must be apart")
@@ -190,7 +200,10 @@ def _car(units, scale, n_steered, n_traction):
 
 
 _RECOGNISERS = {
-    "differential": _differential, "mecanum": _mecanum, "omni": _omni, "swerve": _swerve,
+    "differential": _differential,
+    "mecanum": _mecanum,
+    "omni": _omni,
+    "swerve": _swerve,
     "bicycle": lambda units, scale: _car(units, scale, 1, 1),
     "tricycle": lambda units, scale: _car(units, scale, 1, 2),
     "ackermann": lambda units, scale: _car(units, scale, 2, 2),
@@ -238,15 +251,30 @@ def recognise(robot: Robot, names: Sequence[str], where: str = "this format") ->
             why.append(f"not {name}: {exc}")
             continue
         u = dict(units)
-        return Layout(name, tuple(wheels), np.array([u[i].position for i in wheels], dtype=float),
-                      np.array([float(u[i].r) for i in wheels]), numbers, dropped)
+        return Layout(
+            name,
+            tuple(wheels),
+            np.array([u[i].position for i in wheels], dtype=float),
+            np.array([float(u[i].r) for i in wheels]),
+            numbers,
+            dropped,
+        )
     kinds = [u.kind for u in robot.wheels]
     motors = [i + 1 for i, u in units if u.steered and int(rank(np.asarray(u.local_block(), dtype=float))) == 2]
-    hint = (f" (wheel {', '.join(map(str, motors))} constrains nothing but has motors: a castor has every joint "
-            "passive, e.g. driven = {steer = false, drive = false})") if motors else ""
-    raise InputValueError(f"{where} cannot express robot {robot.name!r} (units {kinds}"
-                          + (f", passive castors {[i + 1 for i in dropped]} left out" if dropped else "")
-                          + f"){hint}: " + "; ".join(why))
+    hint = (
+        (
+            f" (wheel {', '.join(map(str, motors))} constrains nothing but has motors: a castor has every joint "
+            "passive, e.g. driven = {steer = false, drive = false})"
+        )
+        if motors
+        else ""
+    )
+    raise InputValueError(
+        f"{where} cannot express robot {robot.name!r} (units {kinds}"
+        + (f", passive castors {[i + 1 for i in dropped]} left out" if dropped else "")
+        + f"){hint}: "
+        + "; ".join(why)
+    )
 
 
 def rectangle_of(positions: ArrayLike) -> tuple[tuple[int, int, int, int], float, float, FloatArray]:
@@ -287,6 +315,7 @@ def rectangle_of(positions: ArrayLike) -> tuple[tuple[int, int, int, int], float
     length, width = float(c[0, 0] - c[2, 0]), float(c[0, 1] - c[1, 1])
     scale = float(np.abs(p).max())
     if not (length > 0 and width > 0 and _same(c, rectangle(length, width, centre), scale)):
-        raise InputValueError(f"the four mount points {p.tolist()} are not the corners of a rectangle with sides "
-                              "along x and y")
+        raise InputValueError(
+            f"the four mount points {p.tolist()} are not the corners of a rectangle with sides along x and y"
+        )
     return order, length, width, centre

@@ -14,6 +14,7 @@ Examples
 >>> [line.strip() for line in text.splitlines() if "wheel_separation" in line or "DiffDrive" in line]
 ['type: diff_drive_controller/DiffDriveController', 'wheel_separation: 0.4']
 """
+
 from __future__ import annotations
 
 import difflib
@@ -40,8 +41,9 @@ def _controllers(blocks, source):
     types = {}
     for b in blocks:
         if b.node.split("/")[-1] == "controller_manager":
-            types.update({k: v["type"] for k, v in b.params.items() if isinstance(v, dict) and isinstance(
-                v.get("type"), str)})
+            types.update(
+                {k: v["type"] for k, v in b.params.items() if isinstance(v, dict) and isinstance(v.get("type"), str)}
+            )
     by_plugin = {c.plugin.split("/")[0]: c for c in CONTROLLERS.values()}
     out = []
     for b in blocks:
@@ -50,15 +52,21 @@ def _controllers(blocks, source):
         if b.node in types:
             c = by_plugin.get(types[b.node].split("/")[0])
         else:
-            c = next((c for c in CONTROLLERS.values() if any(all(_has(b.params, k) for k in keys)
-                                                             for keys in c.signature)), None)
+            c = next(
+                (c for c in CONTROLLERS.values() if any(all(_has(b.params, k) for k in keys) for keys in c.signature)),
+                None,
+            )
         if c is not None:
             out.append((b, c))
     named = {b.node for b, _ in out}
     for node, plugin in types.items():
         if plugin.split("/")[0] in by_plugin and node not in named:
-            raise RobotFileError(source, 1, node, f"the controller manager names a {plugin} {node!r}, but the file "
-                                 "has no parameters for it")
+            raise RobotFileError(
+                source,
+                1,
+                node,
+                f"the controller manager names a {plugin} {node!r}, but the file has no parameters for it",
+            )
     return out
 
 
@@ -105,15 +113,31 @@ def from_ros2(path: PathLike, controller: str | None = None) -> Robot:
         if not chosen:
             names = [b.node for b, _ in found]
             close = difflib.get_close_matches(controller, names, n=1)
-            raise RobotFileError(source, 1, controller, f"no drive controller of that name (the file has "
-                                 f"{names or 'none'})" + (f" (did you mean {close[0]!r}?)" if close else ""))
+            raise RobotFileError(
+                source,
+                1,
+                controller,
+                f"no drive controller of that name (the file has "
+                f"{names or 'none'})" + (f" (did you mean {close[0]!r}?)" if close else ""),
+            )
         found = chosen
     if not found:
-        raise RobotFileError(source, blocks[0].line, blocks[0].node, "no drive controller wmr reads in the file "
-                             f"(nodes: {', '.join(b.node for b in blocks)}; wmr reads {', '.join(CONTROLLERS)})")
+        raise RobotFileError(
+            source,
+            blocks[0].line,
+            blocks[0].node,
+            "no drive controller wmr reads in the file "
+            f"(nodes: {', '.join(b.node for b in blocks)}; wmr reads {', '.join(CONTROLLERS)})",
+        )
     if len(found) > 1:
-        raise RobotFileError(source, found[1][0].line, found[1][0].node, "the file has several drive controllers ("
-                             + ", ".join(b.node for b, _ in found) + "): choose one (controller=NAME)")
+        raise RobotFileError(
+            source,
+            found[1][0].line,
+            found[1][0].node,
+            "the file has several drive controllers ("
+            + ", ".join(b.node for b, _ in found)
+            + "): choose one (controller=NAME)",
+        )
     block, ctrl = found[0]
     params = Params(source, block)
     try:
@@ -127,7 +151,7 @@ def from_ros2(path: PathLike, controller: str | None = None) -> Robot:
 
 # ------------------------------------------------------------------------------------------ writing
 _PLAIN = re.compile(r"[A-Za-z_][A-Za-z0-9_/]*")
-_KEYWORDS = {"yes", "no", "on", "off", "true", "false", "null", "y", "n"}      # YAML 1.1 reads these as bool/null
+_KEYWORDS = {"yes", "no", "on", "off", "true", "false", "null", "y", "n"}  # YAML 1.1 reads these as bool/null
 
 
 def _scalar(v):
@@ -135,10 +159,10 @@ def _scalar(v):
         return "true" if v else "false"
     if isinstance(v, str):
         return v if _PLAIN.fullmatch(v) and v.lower() not in _KEYWORDS else json.dumps(v)
-    if isinstance(v, int):                                   # ROS 2 parameters are typed: an int stays an int
+    if isinstance(v, int):  # ROS 2 parameters are typed: an int stays an int
         return str(v)
     text = repr(float(v))
-    if "." not in text and "inf" not in text and "nan" not in text:       # YAML 1.1 floats have a '.'
+    if "." not in text and "inf" not in text and "nan" not in text:  # YAML 1.1 floats have a '.'
         text = text.replace("e", ".0e") if "e" in text else text + ".0"
     return text
 
@@ -161,20 +185,26 @@ def _namer(robot, joint_names):
     """``names(i, joint)``: the given names (checked), or wmr's URDF names."""
     if joint_names is None:
         return joint_name
-    if isinstance(joint_names, (str, bytes)) or len(joint_names) != robot.w or not all(
-            isinstance(m, Mapping) and all(isinstance(v, str) and v for v in m.values()) for m in joint_names):
-        raise InputTypeError(f"joint_names must be one mapping {{joint: name}} per wheel unit ({robot.w}), got "
-                             f"{V.show(joint_names)}")
+    if (
+        isinstance(joint_names, (str, bytes))
+        or len(joint_names) != robot.w
+        or not all(isinstance(m, Mapping) and all(isinstance(v, str) and v for v in m.values()) for m in joint_names)
+    ):
+        raise InputTypeError(
+            f"joint_names must be one mapping {{joint: name}} per wheel unit ({robot.w}), got {V.show(joint_names)}"
+        )
 
     def names(i, joint):
         if joint not in joint_names[i - 1]:
             raise InputValueError(f"joint_names[{i - 1}] has no name for joint {joint!r} of wheel {i}")
         return joint_names[i - 1][joint]
+
     return names
 
 
-def to_ros2(robot: Robot, path: PathLike | None = None, controller: str | None = None,
-            joint_names: JointNames | None = None) -> str:
+def to_ros2(
+    robot: Robot, path: PathLike | None = None, controller: str | None = None, joint_names: JointNames | None = None
+) -> str:
     """The ROS 2 parameters of the drive controller that fits ``robot`` (and write them to ``path`` if given).
 
     Parameters
@@ -207,19 +237,33 @@ def to_ros2(robot: Robot, path: PathLike | None = None, controller: str | None =
     if controller is not None and controller not in CONTROLLERS:
         raise InputValueError(f"controller must be one of {', '.join(CONTROLLERS)}, got {V.show(controller)}")
     chosen = [CONTROLLERS[controller]] if controller else list(CONTROLLERS.values())
-    layout = recognise(robot, [c.layout for c in chosen],
-                       where=controller or "ROS 2's drive controllers (" + ", ".join(CONTROLLERS) + ")")
+    layout = recognise(
+        robot,
+        [c.layout for c in chosen],
+        where=controller or "ROS 2's drive controllers (" + ", ".join(CONTROLLERS) + ")",
+    )
     ctrl = next(c for c in chosen if c.layout == layout.name)
     params, notes = ctrl.write(layout, robot, _namer(robot, joint_names))
-    notes = notes + ([f"passive castors (wheel {', '.join(str(i + 1) for i in layout.dropped)}) are not joints of the "
-                      "controller"] if layout.dropped else [])
+    notes = notes + (
+        [f"passive castors (wheel {', '.join(str(i + 1) for i in layout.dropped)}) are not joints of the controller"]
+        if layout.dropped
+        else []
+    )
     params.update({"base_frame_id": "base_link", "odom_frame_id": "odom"})
     origin = "given" if joint_names is not None else "as in wmr.io.to_urdf"
-    head = [f"# ROS 2 parameters written by wmr (wmr.io.to_ros2) for the robot {json.dumps(robot.name)}",
-            f"# {ctrl.name}: layout {layout.name}; joint names {origin}"] + [f"# {n}" for n in notes]
-    manager = {"controller_manager": {"ros__parameters": {
-        "update_rate": 100, "joint_state_broadcaster": {"type": "joint_state_broadcaster/JointStateBroadcaster"},
-        ctrl.name: {"type": ctrl.plugin}}}}
+    head = [
+        f"# ROS 2 parameters written by wmr (wmr.io.to_ros2) for the robot {json.dumps(robot.name)}",
+        f"# {ctrl.name}: layout {layout.name}; joint names {origin}",
+    ] + [f"# {n}" for n in notes]
+    manager = {
+        "controller_manager": {
+            "ros__parameters": {
+                "update_rate": 100,
+                "joint_state_broadcaster": {"type": "joint_state_broadcaster/JointStateBroadcaster"},
+                ctrl.name: {"type": ctrl.plugin},
+            }
+        }
+    }
     text = "\n".join(head + _yaml(manager, 0) + [""] + _yaml({ctrl.name: {"ros__parameters": params}}, 0)) + "\n"
     if path is not None:
         Path(path).write_text(text, encoding="utf-8")

@@ -6,6 +6,7 @@ under namespaces or the wildcard ``/**``; the ``controller_manager`` block gives
 and keeps the line of every key, so that :class:`Params` can say ``FILE:LINE: node.key: what is wrong``
 (:class:`~wmr.errors.RobotFileError`).
 """
+
 from __future__ import annotations
 
 import difflib
@@ -53,7 +54,7 @@ def _loader(yaml):
     """PyYAML's SafeLoader, reading ``1e-3`` as a float as ROS 2 does."""
     import re
 
-    Loader: Any = type("Loader", (yaml.SafeLoader,), {})            # a subclass: SafeLoader itself stays as it is
+    Loader: Any = type("Loader", (yaml.SafeLoader,), {})  # a subclass: SafeLoader itself stays as it is
     Loader.add_implicit_resolver("tag:yaml.org,2002:float", re.compile(_FLOAT), list("-+0123456789."))
     return Loader
 
@@ -90,7 +91,7 @@ def parse(raw: bytes, source: str) -> list[Block]:
     try:
         text = raw.decode("utf-8-sig")
     except UnicodeDecodeError as exc:
-        raise RobotFileError(source, raw[:exc.start].count(b"\n") + 1, "file", "not UTF-8 text") from None
+        raise RobotFileError(source, raw[: exc.start].count(b"\n") + 1, "file", "not UTF-8 text") from None
     try:
         loader = _loader(yaml)
         data, tree = yaml.load(text, Loader=loader), yaml.compose(text, Loader=loader)
@@ -113,10 +114,14 @@ def parse(raw: bytes, source: str) -> list[Block]:
         if "ros__parameters" in value and path:
             params = value["ros__parameters"]
             here = path + ("ros__parameters",)
-            sub = {k[len(here):]: n for k, n in lines.items() if k[:len(here)] == here and len(k) > len(here)}
+            sub = {k[len(here) :]: n for k, n in lines.items() if k[: len(here)] == here and len(k) > len(here)}
             if not isinstance(params, dict):
-                raise RobotFileError(source, lines.get(here, 1), f"{path[-1]}.ros__parameters",
-                                     f"must be a mapping of parameters, got {toml_text(params)}")
+                raise RobotFileError(
+                    source,
+                    lines.get(here, 1),
+                    f"{path[-1]}.ros__parameters",
+                    f"must be a mapping of parameters, got {toml_text(params)}",
+                )
             blocks.append(Block(str(path[-1]), params, lines.get(here, 1), sub))
             return
         for key, sub in value.items():
@@ -124,8 +129,12 @@ def parse(raw: bytes, source: str) -> list[Block]:
 
     walk(data, ())
     if not blocks:
-        raise RobotFileError(source, 1, "ros__parameters", "no node parameters in the file (a ROS 2 parameter file "
-                             "holds NODE: {ros__parameters: {...}})")
+        raise RobotFileError(
+            source,
+            1,
+            "ros__parameters",
+            "no node parameters in the file (a ROS 2 parameter file holds NODE: {ros__parameters: {...}})",
+        )
     return blocks
 
 
@@ -245,8 +254,11 @@ class Params:
                 self.fail(key, f"must be a list of joint names ({meaning}), got {toml_text(value)}")
             return list(value)
         if check == "pair":
-            if not isinstance(value, list) or len(value) != 2 or not all(
-                    isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v) for v in value):
+            if (
+                not isinstance(value, list)
+                or len(value) != 2
+                or not all(isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v) for v in value)
+            ):
                 self.fail(key, f"must be two numbers [x, y] ({meaning}), got {toml_text(value)}")
             return (float(value[0]), float(value[1]))
         raise AssertionError(check)

@@ -29,6 +29,7 @@ Examples
 >>> bool(np.allclose(bot.F([0.1, 0.2, 0.3]), wmr.paper_robot("offset", L=0.5, r=0.1).F([0.1, 0.2, 0.3])))
 True
 """
+
 from __future__ import annotations
 
 import difflib
@@ -83,8 +84,8 @@ class _Lines:
 
     def __init__(self, text):
         self.top: dict[str, int] = {}
-        self.wheels: list[tuple[int, dict[str, int]]] = []          # [(header line, {key: line})]
-        self.owner: list[int | None] = [None]                       # line -> its wheel table (0-based) or None
+        self.wheels: list[tuple[int, dict[str, int]]] = []  # [(header line, {key: line})]
+        self.owner: list[int | None] = [None]  # line -> its wheel table (0-based) or None
         where, wheel = self.top, None
         for n, line in enumerate(text.splitlines(), 1):
             if _WHEEL_HEADER.match(line):
@@ -111,7 +112,7 @@ class _Lines:
         if k < len(self.wheels):
             head, keys = self.wheels[k]
             return keys.get(key, head)
-        return self.top.get("wheel", 1)             # an inline array of tables: the line of `wheel =`
+        return self.top.get("wheel", 1)  # an inline array of tables: the line of `wheel =`
 
 
 # ------------------------------------------------------------------------------------ values
@@ -129,12 +130,17 @@ def _driven(value, cls, where, fail):
     """The ``driven`` table of a wheel: {joint name: bool}, joints of the kind only."""
     names = [j.name for j in cls.JOINTS]
     if not isinstance(value, dict):
-        fail(*where, f"must be a table {{joint = true or false}} (joints of {_a(cls.kind)} wheel: "
-             f"{', '.join(names)}), got {toml_text(value)}")
+        fail(
+            *where,
+            f"must be a table {{joint = true or false}} (joints of {_a(cls.kind)} wheel: "
+            f"{', '.join(names)}), got {toml_text(value)}",
+        )
     for name, flag in value.items():
         if name not in names:
-            fail(*where, f"{_a(cls.kind)} wheel has no joint {name!r} (its joints: {', '.join(names)})"
-                 + _suggest(name, names))
+            fail(
+                *where,
+                f"{_a(cls.kind)} wheel has no joint {name!r} (its joints: {', '.join(names)})" + _suggest(name, names),
+            )
         if not isinstance(flag, bool):
             fail(*where, f"{name} must be true or false, got {toml_text(flag)}")
     return value
@@ -150,8 +156,12 @@ def _wheel(k, table, lines, fail):
         fail(lines.of(k), f"{name}.type", f"missing (one of {', '.join(kinds)})")
     kind = table["type"]
     if not isinstance(kind, str) or kind not in kinds:
-        fail(lines.of(k, "type"), f"{name}.type", f"must be one of {', '.join(kinds)}, got {toml_text(kind)}"
-             + (_suggest(kind, list(kinds)) if isinstance(kind, str) else ""))
+        fail(
+            lines.of(k, "type"),
+            f"{name}.type",
+            f"must be one of {', '.join(kinds)}, got {toml_text(kind)}"
+            + (_suggest(kind, list(kinds)) if isinstance(kind, str) else ""),
+        )
     cls = kinds[kind]
     keys = {key.name: key for key in cls.file_keys()}
     every = ["type", *dict.fromkeys(key.name for c in kinds.values() for key in c.file_keys()), _DRIVEN]
@@ -159,8 +169,11 @@ def _wheel(k, table, lines, fail):
         if key not in every:
             fail(lines.of(k, key), f"{name}.{key}", "unknown key" + _suggest(key, every))
         if key not in keys and key not in ("type", _DRIVEN):
-            fail(lines.of(k, key), f"{name}.{key}",
-                 f"not a key of {_a(kind)} wheel ({_a(kind)} wheel takes {', '.join(['type', *keys])})")
+            fail(
+                lines.of(k, key),
+                f"{name}.{key}",
+                f"not a key of {_a(kind)} wheel ({_a(kind)} wheel takes {', '.join(['type', *keys])})",
+            )
     fields = {}
     for key in keys.values():
         if key.name not in table:
@@ -173,7 +186,7 @@ def _wheel(k, table, lines, fail):
         fields["driven"] = _driven(table[_DRIVEN], cls, (lines.of(k, _DRIVEN), f"{name}.{_DRIVEN}"), fail)
     try:
         return cls(**fields)
-    except InputError as exc:                  # the key whose field the message names first, else the table
+    except InputError as exc:  # the key whose field the message names first, else the table
         first = str(exc).split(" ", 1)[0]
         at = next((key.name for key in keys.values() if key.field == first), None)
         fail(lines.of(k, at), f"{name}.{at}" if at else name, str(exc))
@@ -213,13 +226,13 @@ def loads(text: str, source: str = "<string>") -> Robot:
         raise InputTypeError(f"text must be the TOML text of a robot file (str), got {V.show(text)}")
     if not isinstance(source, str):
         raise InputTypeError(f"source must be a file name (str), got {V.show(source)}")
-    text = text.removeprefix("\ufeff")                     # a byte-order mark (some editors write one)
+    text = text.removeprefix("\ufeff")  # a byte-order mark (some editors write one)
     lines = _Lines(text)
 
     def fail(line: int, key: str, reason: str) -> NoReturn:
         raise RobotFileError(source, line, key, reason)
 
-    def too_many(count: int, line: int) -> None:          # before any work: parsing, units, the robot
+    def too_many(count: int, line: int) -> None:  # before any work: parsing, units, the robot
         try:
             check("wheels", count, "the file")
         except LimitError as exc:
@@ -232,7 +245,7 @@ def loads(text: str, source: str = "<string>") -> Robot:
         data, msg = tomllib.loads(text), None
     except tomllib.TOMLDecodeError as exc:
         data, msg = None, str(exc)
-    if msg is not None:                                   # outside the except: no chained traceback
+    if msg is not None:  # outside the except: no chained traceback
         m = re.search(r"\(at line (\d+), column (\d+)\)", msg)
         line = int(m.group(1)) if m else lines.end
         head = re.sub(r"\s*\(at .*\)$", "", msg) + (" (a key given twice?)" if "overwrite" in msg else "")
@@ -243,8 +256,11 @@ def loads(text: str, source: str = "<string>") -> Robot:
     assert data is not None
     for key in data:
         if key not in _TOP_KEYS:
-            fail(lines.of(None, key), key, "unknown key" + _suggest(key, _TOP_KEYS)
-                 + " (a robot file holds name and [[wheel]] tables)")
+            fail(
+                lines.of(None, key),
+                key,
+                "unknown key" + _suggest(key, _TOP_KEYS) + " (a robot file holds name and [[wheel]] tables)",
+            )
     name = data.get("name", "robot" if source.startswith("<") else Path(source).stem or "robot")
     if not isinstance(name, str):
         fail(lines.of(None, "name"), "name", f"must be a string, got {toml_text(name)}")
@@ -260,8 +276,12 @@ def loads(text: str, source: str = "<string>") -> Robot:
     for k in range(1, len(units)):
         same = np.flatnonzero(near_zero(np.abs(points[:k] - points[k]).max(axis=1), size))
         if same.size:
-            fail(lines.of(k, "position"), f"wheel[{k + 1}].position", f"the same mount point as wheel[{same[0] + 1}] "
-                 f"({points[k, 0]:g}, {points[k, 1]:g}): two units cannot share a steering axis")
+            fail(
+                lines.of(k, "position"),
+                f"wheel[{k + 1}].position",
+                f"the same mount point as wheel[{same[0] + 1}] "
+                f"({points[k, 0]:g}, {points[k, 1]:g}): two units cannot share a steering axis",
+            )
     try:
         return Robot(units, name=name)
     except InputError as exc:
@@ -296,7 +316,7 @@ def load(path: PathLike) -> Robot:
     try:
         text = raw.decode("utf-8")
     except UnicodeDecodeError as exc:
-        line = raw[:exc.start].count(b"\n") + 1
+        line = raw[: exc.start].count(b"\n") + 1
         raise RobotFileError(os.fspath(path), line, "file", "not UTF-8 text (TOML files are UTF-8)") from None
     return loads(text, os.fspath(path))
 
@@ -348,17 +368,22 @@ def dump(robot: Robot, path: PathLike | None = None) -> str:
     if path is not None and not isinstance(path, (str, os.PathLike)):
         raise InputTypeError(f"path must be a file name (str or os.PathLike) or None, got {V.show(path)}")
     robot = robot.numeric()
-    out = ["# wmr robot file: lengths in metres, angles in degrees (schema: wmr.io)",
-           f"name = {toml_string(robot.name)}"]
+    out = [
+        "# wmr robot file: lengths in metres, angles in degrees (schema: wmr.io)",
+        f"name = {toml_string(robot.name)}",
+    ]
     kinds = wheel_kinds()
     for k, u in enumerate(robot.wheels, 1):
         if kinds.get(u.kind) is not type(u):
-            raise InputValueError(f"robot has wheel {k} of kind {u.kind!r} ({type(u).__name__}), which is not a "
-                                  f"registered wheel kind: robot files cannot describe it (kinds: {', '.join(kinds)})")
+            raise InputValueError(
+                f"robot has wheel {k} of kind {u.kind!r} ({type(u).__name__}), which is not a "
+                f"registered wheel kind: robot files cannot describe it (kinds: {', '.join(kinds)})"
+            )
         out += ["", "[[wheel]]", f"type = {toml_string(u.kind)}"]
         out += [f"{key.name} = {_value(key.write(u))}" for key in u.file_keys()]
-        changed = [(j.name, j.driven) for j, default in zip(u.joints, u.JOINTS, strict=True)
-                   if j.driven != default.driven]
+        changed = [
+            (j.name, j.driven) for j, default in zip(u.joints, u.JOINTS, strict=True) if j.driven != default.driven
+        ]
         if changed:
             out.append(f"{_DRIVEN} = {{" + ", ".join(f"{n} = {'true' if d else 'false'}" for n, d in changed) + "}")
     text = "\n".join(out) + "\n"

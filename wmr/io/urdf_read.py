@@ -41,6 +41,7 @@ Bad input raises :class:`~wmr.errors.RobotFileError` naming the file, the line o
 and what is wrong: no wheels, a wheel without a cylinder, an axle that is not horizontal, a
 cylinder across its axle, a steering joint over three wheels, ...
 """
+
 from __future__ import annotations
 
 import os
@@ -57,7 +58,6 @@ from ..model.wheels import CentredWheel, DualWheel, FixedWheel, OffsetWheel, Swe
 from .urdf_tree import AXIS_SNAP, UrdfTree, is_horizontal, is_vertical, suggest
 
 __all__ = ["from_urdf", "read_urdf", "parse_wheel_joints"]
-
 
 
 def parse_wheel_joints(text):
@@ -98,8 +98,11 @@ def _wheels(rd: UrdfTree, wheel_joints):
         out = []
         for name, radius in wheel_joints.items():
             if name not in rd.joints:
-                rd.fail(rd.line("robot", ""), f"joint {name!r}", "wheel_joints names a joint the file does not "
-                        "define" + suggest(name, rd.joints))
+                rd.fail(
+                    rd.line("robot", ""),
+                    f"joint {name!r}",
+                    "wheel_joints names a joint the file does not define" + suggest(name, rd.joints),
+                )
             out.append((name, radius))
         order = list(rd.joints)
         return sorted(out, key=lambda item: order.index(item[0]))
@@ -108,7 +111,7 @@ def _wheels(rd: UrdfTree, wheel_joints):
         if j.type != "continuous" or not is_horizontal(rd.axis(name)):
             continue
         if any(p.name in {w for w, _ in out} for p in rd.path(name)):
-            continue                                                   # a roller of a wheel above it
+            continue  # a roller of a wheel above it
         radius, shapes = rd.cylinder(name)
         if radius is None:
             seen.append((name, shapes))
@@ -118,10 +121,14 @@ def _wheels(rd: UrdfTree, wheel_joints):
     for name, shapes in seen:
         if not any(p.name in rollers_of for p in rd.path(name)):
             what = f"a {shapes[0]}" if shapes else "no geometry"
-            rd.fail(rd.line("joint", name), f"joint {name!r}", f"turns about a horizontal axis like a wheel, but its "
-                    f"link {rd.joints[name].child!r} has {what}, no <cylinder>: wmr reads a wheel's radius from its "
-                    f"cylinder; name the wheel joints and radii instead (wheel_joints={{{name!r}: RADIUS, ...}}, on "
-                    f"the command line --wheel-joints {name}=RADIUS,...)")
+            rd.fail(
+                rd.line("joint", name),
+                f"joint {name!r}",
+                f"turns about a horizontal axis like a wheel, but its "
+                f"link {rd.joints[name].child!r} has {what}, no <cylinder>: wmr reads a wheel's radius from its "
+                f"cylinder; name the wheel joints and radii instead (wheel_joints={{{name!r}: RADIUS, ...}}, on "
+                f"the command line --wheel-joints {name}=RADIUS,...)",
+            )
     return out
 
 
@@ -132,18 +139,29 @@ def _wheel(rd: UrdfTree, name, radius):
         rd.fail(line, key, f"a wheel joint must be continuous (or revolute), got {j.type!r}")
     axle = rd.axis(name)
     if not is_horizontal(axle):
-        rd.fail(line, key, f"a wheel's axis must be horizontal (the platform's z is up), got {axle.round(6).tolist()} "
-                "in the platform frame")
+        rd.fail(
+            line,
+            key,
+            f"a wheel's axis must be horizontal (the platform's z is up), got {axle.round(6).tolist()} "
+            "in the platform frame",
+        )
     cyl_r, cyl_axis = rd.cylinder(name)
     if radius is None:
         if cyl_r is None:
             what = f"a {cyl_axis[0]}" if cyl_axis else "no geometry"
-            rd.fail(rd.line("link", j.child), f"link {j.child!r}", f"the wheel of joint {name!r} has {what}, no "
-                    f"<cylinder>: give its radius ({name}=RADIUS)")
+            rd.fail(
+                rd.line("link", j.child),
+                f"link {j.child!r}",
+                f"the wheel of joint {name!r} has {what}, no <cylinder>: give its radius ({name}=RADIUS)",
+            )
         if np.linalg.norm(np.cross(cyl_axis, axle)) > AXIS_SNAP:
-            rd.fail(rd.line("link", j.child), f"link {j.child!r}", f"its cylinder lies along "
-                    f"{cyl_axis.round(6).tolist()}, not along the axis of its joint {name!r} "
-                    f"({axle.round(6).tolist()}): a wheel's cylinder lies along its axle (turn its <origin rpy>)")
+            rd.fail(
+                rd.line("link", j.child),
+                f"link {j.child!r}",
+                f"its cylinder lies along "
+                f"{cyl_axis.round(6).tolist()}, not along the axis of its joint {name!r} "
+                f"({axle.round(6).tolist()}): a wheel's cylinder lies along its axle (turn its <origin rpy>)",
+            )
         radius = cyl_r
     if not radius > 0:
         rd.fail(rd.line("link", j.child), f"link {j.child!r}", f"the wheel's radius must be positive, got {radius!r}")
@@ -153,13 +171,20 @@ def _wheel(rd: UrdfTree, name, radius):
             continue
         if p.type in ("revolute", "continuous") and is_vertical(rd.axis(p.name)):
             if steering is not None:
-                rd.fail(rd.line("joint", p.name), f"joint {p.name!r}", f"a second steering joint above wheel joint "
-                        f"{name!r} (after {steering!r}): a wheel unit has one")
+                rd.fail(
+                    rd.line("joint", p.name),
+                    f"joint {p.name!r}",
+                    f"a second steering joint above wheel joint {name!r} (after {steering!r}): a wheel unit has one",
+                )
             steering = p.name
             continue
-        rd.fail(rd.line("joint", p.name), f"joint {p.name!r}", f"a {p.type} joint about "
-                f"{rd.axis(p.name).round(6).tolist()} between the platform and wheel joint {name!r}: only a vertical "
-                "steering joint (and prismatic suspension) can be there")
+        rd.fail(
+            rd.line("joint", p.name),
+            f"joint {p.name!r}",
+            f"a {p.type} joint about "
+            f"{rd.axis(p.name).round(6).tolist()} between the platform and wheel joint {name!r}: only a vertical "
+            "steering joint (and prismatic suspension) can be there",
+        )
     return rd.centre(name), axle, float(radius), steering, _rollers(rd, name, axle)
 
 
@@ -177,19 +202,26 @@ def _rollers(rd: UrdfTree, wheel, axle):
         p = rd.centre(name) - rd.centre(wheel)
         p = p - (p @ axle) * axle
         if np.linalg.norm(p) == 0:
-            rd.fail(rd.line("joint", name), f"joint {name!r}", f"a roller of wheel {wheel!r} on its axle: rollers sit "
-                    "on the rim")
-        t = np.cross(axle, p / np.linalg.norm(p))                  # the rim's direction of motion at the roller
+            rd.fail(
+                rd.line("joint", name),
+                f"joint {name!r}",
+                f"a roller of wheel {wheel!r} on its axle: rollers sit on the rim",
+            )
+        t = np.cross(axle, p / np.linalg.norm(p))  # the rim's direction of motion at the roller
         g = float(np.arctan2(a @ t, a @ axle))
-        g = g - np.pi if g > np.pi / 2 + AXIS_SNAP else g + np.pi if g <= -np.pi / 2 + AXIS_SNAP else g   # a line
+        g = g - np.pi if g > np.pi / 2 + AXIS_SNAP else g + np.pi if g <= -np.pi / 2 + AXIS_SNAP else g  # a line
         gammas.append((name, g))
     if not gammas:
         return None
     name0, g0 = gammas[0]
     for name, g in gammas[1:]:
         if abs(g - g0) > AXIS_SNAP:
-            rd.fail(rd.line("joint", name), f"joint {name!r}", f"roller at {np.degrees(g):.6g} deg to the axle, "
-                    f"{name0!r} at {np.degrees(g0):.6g} deg: the rollers of one wheel are all at one angle")
+            rd.fail(
+                rd.line("joint", name),
+                f"joint {name!r}",
+                f"roller at {np.degrees(g):.6g} deg to the axle, "
+                f"{name0!r} at {np.degrees(g0):.6g} deg: the rollers of one wheel are all at one angle",
+            )
     if abs(g0) <= AXIS_SNAP:
         rd.fail(rd.line("joint", name0), f"joint {name0!r}", "rollers parallel to the axle roll nothing")
     return g0
@@ -198,16 +230,19 @@ def _rollers(rd: UrdfTree, wheel, axle):
 def _joints_of(cls, steering, wheels, roller_joints):
     """``{kind's joint name: [URDF joints]}``: the steering joint, the wheels in order, the rollers."""
     drives = iter(wheels)
-    return {j.name: [steering] if j.steering else [next(drives)] if j.kind == "drive" else list(roller_joints)
-            for j in cls.JOINTS}
+    return {
+        j.name: [steering] if j.steering else [next(drives)] if j.kind == "drive" else list(roller_joints)
+        for j in cls.JOINTS
+    }
 
 
 def _driven(rd: UrdfTree, cls, steering, wheels, roller_joints):
     """The ``driven`` of a unit: its joints commanded in the file (None: no ros2_control, kind defaults)."""
     if rd.commanded is None:
         return None
-    return {name: bool(set(urdf) & rd.commanded) for name, urdf in _joints_of(cls, steering, wheels,
-                                                                             roller_joints).items()}
+    return {
+        name: bool(set(urdf) & rd.commanded) for name, urdf in _joints_of(cls, steering, wheels, roller_joints).items()
+    }
 
 
 def _unit(rd: UrdfTree, steering, wheels, info):
@@ -220,10 +255,16 @@ def _unit(rd: UrdfTree, steering, wheels, info):
     if steering is None:
         angle = float(np.arctan2(a[1], a[0]))
         if gamma is None:
-            return FixedWheel(tuple(centre[:2]), r=radius, angle=angle,
-                              driven=_driven(rd, FixedWheel, None, wheels, ()))
-        return SwedishWheel(tuple(centre[:2]), r=radius, angle=angle, roller=gamma,
-                            driven=_driven(rd, SwedishWheel, None, wheels, rollers))
+            return FixedWheel(
+                tuple(centre[:2]), r=radius, angle=angle, driven=_driven(rd, FixedWheel, None, wheels, ())
+            )
+        return SwedishWheel(
+            tuple(centre[:2]),
+            r=radius,
+            angle=angle,
+            roller=gamma,
+            driven=_driven(rd, SwedishWheel, None, wheels, rollers),
+        )
     P = rd.centre(steering)[:2]
     skey, sline = f"joint {steering!r}", rd.line("joint", steering)
     if any(info[w][4] is not None for w in wheels):
@@ -233,8 +274,12 @@ def _unit(rd: UrdfTree, steering, wheels, info):
         v = centre[:2] - P
         lateral, along = float(v @ a), float(v @ np.array([-a[1], a[0]]))
         if abs(lateral) > AXIS_SNAP * size:
-            rd.fail(line, key, f"the wheel's centre is {lateral:.6g} along its axle from the steering axis of "
-                    f"{steering!r}: wmr's steered wheels have their centre on the axis or behind it")
+            rd.fail(
+                line,
+                key,
+                f"the wheel's centre is {lateral:.6g} along its axle from the steering axis of "
+                f"{steering!r}: wmr's steered wheels have their centre on the axis or behind it",
+            )
         if abs(along) <= AXIS_SNAP * size:
             return CentredWheel(tuple(P), r=radius, driven=_driven(rd, CentredWheel, steering, wheels, ()))
         return OffsetWheel(tuple(P), r=radius, d=abs(along), driven=_driven(rd, OffsetWheel, steering, wheels, ()))
@@ -243,11 +288,19 @@ def _unit(rd: UrdfTree, steering, wheels, info):
     (c1, a1, r1, *_), (c2, a2, r2, *_) = info[wheels[0]], info[wheels[1]]
     axis = (c1 - c2)[:2]
     b = float(np.linalg.norm(axis)) / 2
-    if not b > 0 or abs(r1 - r2) > AXIS_SNAP * r1 or np.linalg.norm(np.cross(a1, a2)) > AXIS_SNAP \
-            or np.linalg.norm(np.cross(np.append(axis / (2 * b), 0.0), a1)) > AXIS_SNAP \
-            or np.linalg.norm((c1 + c2)[:2] / 2 - P) > AXIS_SNAP * b:
-        rd.fail(sline, skey, f"steers two wheels ({wheels[0]!r}, {wheels[1]!r}) that are not a dual-wheel unit: one "
-                "radius, one axle, centres symmetric about the steering axis")
+    if (
+        not b > 0
+        or abs(r1 - r2) > AXIS_SNAP * r1
+        or np.linalg.norm(np.cross(a1, a2)) > AXIS_SNAP
+        or np.linalg.norm(np.cross(np.append(axis / (2 * b), 0.0), a1)) > AXIS_SNAP
+        or np.linalg.norm((c1 + c2)[:2] / 2 - P) > AXIS_SNAP * b
+    ):
+        rd.fail(
+            sline,
+            skey,
+            f"steers two wheels ({wheels[0]!r}, {wheels[1]!r}) that are not a dual-wheel unit: one "
+            "radius, one axle, centres symmetric about the steering axis",
+        )
     return DualWheel(tuple(P), r=radius, b=b, driven=_driven(rd, DualWheel, steering, wheels, ()))
 
 
@@ -320,11 +373,16 @@ def read_urdf(path: PathLike, wheel_joints: WheelJoints | None = None) -> tuple[
     rd = UrdfTree(Path(path).read_bytes(), source)
     wheels = _wheels(rd, wheel_joints)
     if not wheels:
-        moving = [f"{n} ({j.type}, axis {rd.axis(n).round(3).tolist()})"
-                  for n, j in rd.joints.items() if j.type != "fixed"]
+        moving = [
+            f"{n} ({j.type}, axis {rd.axis(n).round(3).tolist()})" for n, j in rd.joints.items() if j.type != "fixed"
+        ]
         seen = f"moving joints: {', '.join(moving)}" if moving else "the file has no moving joints"
-        rd.fail(rd.line("robot", ""), "robot", "no wheels: no continuous joint with a horizontal axis turns a link "
-                f"with a <cylinder> ({seen}); name them with wheel_joints (--wheel-joints)")
+        rd.fail(
+            rd.line("robot", ""),
+            "robot",
+            "no wheels: no continuous joint with a horizontal axis turns a link "
+            f"with a <cylinder> ({seen}); name them with wheel_joints (--wheel-joints)",
+        )
     info = {name: _wheel(rd, name, radius) for name, radius in wheels}
     groups: dict[str, list[str]] = {}
     for name, *_ in wheels:
@@ -340,8 +398,9 @@ def read_urdf(path: PathLike, wheel_joints: WheelJoints | None = None) -> tuple[
                 raise
             rd.fail(rd.line("joint", head), f"joint {head!r}", str(exc))
         rollers = _below(rd, members[0])
-        names.append({j: urdf[0] for j, urdf in _joints_of(type(units[-1]), steering, members, rollers).items()
-                      if urdf})
+        names.append(
+            {j: urdf[0] for j, urdf in _joints_of(type(units[-1]), steering, members, rollers).items() if urdf}
+        )
     try:
         return Robot(units, name=rd.name), names
     except InputError as exc:

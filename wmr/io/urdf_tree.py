@@ -5,6 +5,7 @@
 the model (origins, axes, geometry).  Every error is a :class:`~wmr.errors.RobotFileError`
 ``FILE:LINE: key: what is wrong``.  :mod:`wmr.io.urdf_read` reads the robot from it.
 """
+
 from __future__ import annotations
 
 import difflib
@@ -67,8 +68,9 @@ class UrdfTree:
                     values = []
                 if not values or not np.isfinite(values).all() or min(values) < 0:
                     what = "numbers" if attr == "size" else "a number"
-                    self.fail(shape.sourceline, f"<{shape.tag} {attr}>", f"must be {what} >= 0, got "
-                              f"{shape.get(attr)!r}")
+                    self.fail(
+                        shape.sourceline, f"<{shape.tag} {attr}>", f"must be {what} >= 0, got {shape.get(attr)!r}"
+                    )
         self.lines = {("robot", ""): root.sourceline or 1}
         for tag in ("link", "joint"):
             for el in root.iter(tag):
@@ -81,22 +83,34 @@ class UrdfTree:
             self._check_joint(el)
         yourdfpy = require("urdf", "reading URDF")
         try:
-            model = yourdfpy.URDF.load(io.BytesIO(raw), build_scene_graph=False, load_meshes=False,
-                                       build_collision_scene_graph=False, load_collision_meshes=False)
-        except (ValueError, KeyError, AttributeError, TypeError) as exc:        # what yourdfpy raises on bad elements
+            model = yourdfpy.URDF.load(
+                io.BytesIO(raw),
+                build_scene_graph=False,
+                load_meshes=False,
+                build_collision_scene_graph=False,
+                load_collision_meshes=False,
+            )
+        except (ValueError, KeyError, AttributeError, TypeError) as exc:  # what yourdfpy raises on bad elements
             self.fail(self.lines[("robot", "")], "robot", f"yourdfpy cannot read it: {exc}")
         self.name = model.robot.name or Path(source).stem
         self.joints = {j.name: j for j in model.robot.joints}
         self.links = {link.name: link for link in model.robot.links}
-        self.child_of: dict[str, Any] = {}                   # link -> joint whose child it is
+        self.child_of: dict[str, Any] = {}  # link -> joint whose child it is
         for j in model.robot.joints:
             for end in (j.parent, j.child):
                 if end not in self.links:
-                    self.fail(self.line("joint", j.name), f"joint {j.name!r}", f"names the link {end!r}, which the "
-                              "file does not define" + suggest(end, self.links))
+                    self.fail(
+                        self.line("joint", j.name),
+                        f"joint {j.name!r}",
+                        f"names the link {end!r}, which the file does not define" + suggest(end, self.links),
+                    )
             if j.child in self.child_of:
-                self.fail(self.line("joint", j.name), f"joint {j.name!r}", f"link {j.child!r} is the child of two "
-                          f"joints ({self.child_of[j.child].name!r} too): a URDF is a tree")
+                self.fail(
+                    self.line("joint", j.name),
+                    f"joint {j.name!r}",
+                    f"link {j.child!r} is the child of two "
+                    f"joints ({self.child_of[j.child].name!r} too): a URDF is a tree",
+                )
             self.child_of[j.child] = j
         roots = [name for name in self.links if name not in self.child_of]
         if len(roots) != 1:
@@ -152,8 +166,9 @@ class UrdfTree:
         """The parts of a ``<joint>`` wmr reads, with the joint's line when one is missing or malformed."""
         name, line = el.get("name"), el.sourceline
         if el.get("type") not in ("fixed",) + _MOVING:
-            self.fail(line, f"joint {name!r}", f"type must be one of fixed, {', '.join(_MOVING)}, "
-                      f"got {el.get('type')!r}")
+            self.fail(
+                line, f"joint {name!r}", f"type must be one of fixed, {', '.join(_MOVING)}, got {el.get('type')!r}"
+            )
         for end in ("parent", "child"):
             if el.find(end) is None or not el.find(end).get("link"):
                 self.fail(line, f"joint {name!r}", f"has no <{end} link=...>")

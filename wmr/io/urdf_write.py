@@ -23,6 +23,7 @@ URDF can still say what it is: the wheel on its drive joint as a fixed wheel's, 
 The file is kinematic (no inertias, no meshes); numbers are written as the shortest text that reads
 back as the same double, so writing a robot twice gives the same bytes.
 """
+
 from __future__ import annotations
 
 import os
@@ -87,17 +88,23 @@ def _rpy_z_to(a):
 
 def _cylinder_link(name, radius, length, rpy, collision=True):
     geometry = f'<geometry><cylinder radius="{_f(radius)}" length="{_f(length)}"/></geometry>'
-    body = [f'    <visual>{_origin((0, 0, 0), rpy)}{geometry}</visual>']
+    body = [f"    <visual>{_origin((0, 0, 0), rpy)}{geometry}</visual>"]
     if collision:
-        body.append(f'    <collision>{_origin((0, 0, 0), rpy)}{geometry}</collision>')
+        body.append(f"    <collision>{_origin((0, 0, 0), rpy)}{geometry}</collision>")
     return [f"  <link name={quoteattr(name)}>", *body, "  </link>"]
 
 
 def _joint(name, parent, child, xyz, axis, rpy=(0.0, 0.0, 0.0)):
-    head = f"  <joint name={quoteattr(name)} type=\"{'fixed' if axis is None else 'continuous'}\">"
+    head = f'  <joint name={quoteattr(name)} type="{"fixed" if axis is None else "continuous"}">'
     axis_line = [f'    <axis xyz="{_v(*axis)}"/>'] if axis is not None else []
-    return [head, f"    <parent link={quoteattr(parent)}/>", f"    <child link={quoteattr(child)}/>",
-            f"    {_origin(xyz, rpy)}", *axis_line, "  </joint>"]
+    return [
+        head,
+        f"    <parent link={quoteattr(parent)}/>",
+        f"    <child link={quoteattr(child)}/>",
+        f"    {_origin(xyz, rpy)}",
+        *axis_line,
+        "  </joint>",
+    ]
 
 
 def _rod(a, b, radius):
@@ -105,19 +112,21 @@ def _rod(a, b, radius):
     a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
     length = float(np.linalg.norm(b - a))
     rpy = _rpy_z_to((b - a) / length)
-    return (f'    <visual>{_origin((a + b) / 2, rpy)}<geometry><cylinder radius="{_f(radius)}" '
-            f'length="{_f(length)}"/></geometry></visual>')
+    return (
+        f'    <visual>{_origin((a + b) / 2, rpy)}<geometry><cylinder radius="{_f(radius)}" '
+        f'length="{_f(length)}"/></geometry></visual>'
+    )
 
 
 def _rollers(i, wheel_link, r, gamma):
     """The roller joints and links of a Swedish wheel (wheel frame: x the axle, the bottom roller at -z)."""
-    out, rho = [], r / 5                                   # roller radius; its centre r - rho from the axle
+    out, rho = [], r / 5  # roller radius; its centre r - rho from the axle
     for k in range(ROLLERS):
         phi = 2 * np.pi * k / ROLLERS
         p = (r - rho) * np.array([0.0, np.sin(phi), -np.cos(phi)])
-        t = np.array([0.0, np.cos(phi), np.sin(phi)])       # x cross p/|p|: the rim's motion at the roller
+        t = np.array([0.0, np.cos(phi), np.sin(phi)])  # x cross p/|p|: the rim's motion at the roller
         a = np.cos(gamma) * np.array([1.0, 0.0, 0.0]) + np.sin(gamma) * t
-        p, a = np.where(np.abs(p) < 1e-12 * r, 0.0, p), np.where(np.abs(a) < 1e-12, 0.0, a)   # round-off: 0
+        p, a = np.where(np.abs(p) < 1e-12 * r, 0.0, p), np.where(np.abs(a) < 1e-12, 0.0, a)  # round-off: 0
         name = joint_name(i, f"roller{k}")
         out += _joint(name, wheel_link, name + "_link", p, a)
         out += _cylinder_link(name + "_link", rho, 2 * rho, _rpy_z_to(a), collision=False)
@@ -158,8 +167,11 @@ def _unit(i, u, height):
                     commanded.extend((joint_name(i, f"roller{k}"), "velocity") for k in range(ROLLERS))
         else:
             rods = [_rod(a, c, float(u.r) / 8) for a, c in b.rods if np.linalg.norm(np.subtract(c, a)) > 0]
-            lines.extend([f"  <link name={quoteattr(link)}>", *rods, "  </link>"] if rods else
-                         [f"  <link name={quoteattr(link)}/>"])
+            lines.extend(
+                [f"  <link name={quoteattr(link)}>", *rods, "  </link>"]
+                if rods
+                else [f"  <link name={quoteattr(link)}/>"]
+            )
         for child in b.children:
             body(child, link)
 
@@ -193,25 +205,37 @@ def to_urdf(robot: Robot, path: PathLike | None = None) -> str:
         raise InputTypeError(f"path must be a file name (str or os.PathLike) or None, got {V.show(path)}")
     height = max(float(u.r) for u in robot.wheels)
     span = np.abs(robot.mount_points).max(axis=0) * 2 + height
-    lines = ['<?xml version="1.0"?>',
-             "<!-- written by wmr (wmr.io.to_urdf): x forward, y left, z up; the joints at zero are beta = 0 -->",
-             f"<robot name={quoteattr(robot.name)}>", '  <link name="base_footprint"/>',
-             '  <joint name="base_joint" type="fixed">', '    <parent link="base_footprint"/>',
-             '    <child link="base_link"/>', f"    {_origin((0.0, 0.0, height))}", "  </joint>",
-             '  <link name="base_link">',
-             f'    <visual><geometry><box size="{_v(span[0], span[1], height / 2)}"/></geometry></visual>',
-             "  </link>"]
+    lines = [
+        '<?xml version="1.0"?>',
+        "<!-- written by wmr (wmr.io.to_urdf): x forward, y left, z up; the joints at zero are beta = 0 -->",
+        f"<robot name={quoteattr(robot.name)}>",
+        '  <link name="base_footprint"/>',
+        '  <joint name="base_joint" type="fixed">',
+        '    <parent link="base_footprint"/>',
+        '    <child link="base_link"/>',
+        f"    {_origin((0.0, 0.0, height))}",
+        "  </joint>",
+        '  <link name="base_link">',
+        f'    <visual><geometry><box size="{_v(span[0], span[1], height / 2)}"/></geometry></visual>',
+        "  </link>",
+    ]
     commanded = []
     for i, u in enumerate(robot.wheels, 1):
         unit_lines, unit_commanded = _unit(i, u, height)
         lines += unit_lines
         commanded += unit_commanded
-    lines += ['  <ros2_control name="wmr" type="system">',
-              "    <hardware><plugin>mock_components/GenericSystem</plugin></hardware>"]
+    lines += [
+        '  <ros2_control name="wmr" type="system">',
+        "    <hardware><plugin>mock_components/GenericSystem</plugin></hardware>",
+    ]
     for name, interface in commanded:
-        lines += [f"    <joint name={quoteattr(name)}>", f'      <command_interface name="{interface}"/>',
-                  '      <state_interface name="position"/>', '      <state_interface name="velocity"/>',
-                  "    </joint>"]
+        lines += [
+            f"    <joint name={quoteattr(name)}>",
+            f'      <command_interface name="{interface}"/>',
+            '      <state_interface name="position"/>',
+            '      <state_interface name="velocity"/>',
+            "    </joint>",
+        ]
     lines += ["  </ros2_control>", "</robot>"]
     text = "\n".join(lines) + "\n"
     if path is not None:

@@ -22,6 +22,7 @@ A ``ChassisSpeeds`` is ``(vx, vy, omega)``; wmr's twist puts :math:`\dot\psi` fi
 where a twist is expected reads :math:`v_x` as the turning rate: :func:`twist_of` is the conversion
 (:mod:`wmr.io.chassis`, re-exported here).
 """
+
 from __future__ import annotations
 
 from collections.abc import Sequence
@@ -38,8 +39,15 @@ from .extras import require
 from .layouts import differential, mecanum, swerve
 from .recognise import recognise
 
-__all__ = ["from_wpilib", "to_wpilib", "twist_of", "chassis_speeds", "module_states", "module_positions",
-           "from_module_states"]
+__all__ = [
+    "from_wpilib",
+    "to_wpilib",
+    "twist_of",
+    "chassis_speeds",
+    "module_states",
+    "module_positions",
+    "from_module_states",
+]
 
 
 def _angles():
@@ -47,7 +55,9 @@ def _angles():
     :mod:`wmr.io.chassis` (and so this package) while it is being imported itself."""
     from ..swerve.modules import from_wpilib as beta_of_alpha
     from ..swerve.modules import to_wpilib as alpha_of_beta
+
     return alpha_of_beta, beta_of_alpha
+
 
 _SWERVE_SIZES = (2, 3, 4, 6)
 
@@ -88,9 +98,11 @@ def from_wpilib(kinematics: Any, wheel_radius: ArrayLike) -> Robot:
     """
     module = type(kinematics).__module__ or ""
     if not module.startswith("wpimath"):
-        raise InputTypeError(f"kinematics must be a WPILib kinematics object (wpimath.kinematics "
-                             f"SwerveDrive*Kinematics, MecanumDriveKinematics or DifferentialDriveKinematics), got "
-                             f"{V.show(kinematics)}")
+        raise InputTypeError(
+            f"kinematics must be a WPILib kinematics object (wpimath.kinematics "
+            f"SwerveDrive*Kinematics, MecanumDriveKinematics or DifferentialDriveKinematics), got "
+            f"{V.show(kinematics)}"
+        )
     k = _kinematics()
     radius = V.finite_array("wheel_radius", wheel_radius)
     if isinstance(kinematics, k.DifferentialDriveKinematics):
@@ -99,14 +111,20 @@ def from_wpilib(kinematics: Any, wheel_radius: ArrayLike) -> Robot:
         r = np.broadcast_to(radius.reshape(-1), (2,))
         return differential(float(kinematics.trackWidth), float(r[0]), float(r[1]), name="WPILib differential drive")
     if isinstance(kinematics, k.MecanumDriveKinematics):
-        corners = (kinematics.getFrontLeft(), kinematics.getFrontRight(), kinematics.getRearLeft(),
-                   kinematics.getRearRight())
+        corners = (
+            kinematics.getFrontLeft(),
+            kinematics.getFrontRight(),
+            kinematics.getRearLeft(),
+            kinematics.getRearRight(),
+        )
         return mecanum([(t.x, t.y) for t in corners], radius, name="WPILib mecanum drive")
     if hasattr(kinematics, "getModules") and type(kinematics).__name__.startswith("SwerveDrive"):
         modules = kinematics.getModules()
         return swerve([(t.x, t.y) for t in modules], radius, name="WPILib swerve drive")
-    raise InputTypeError(f"kinematics must be SwerveDrive*Kinematics, MecanumDriveKinematics or "
-                         f"DifferentialDriveKinematics, got {type(kinematics).__name__}")
+    raise InputTypeError(
+        f"kinematics must be SwerveDrive*Kinematics, MecanumDriveKinematics or "
+        f"DifferentialDriveKinematics, got {type(kinematics).__name__}"
+    )
 
 
 def to_wpilib(robot: Robot) -> Any:
@@ -127,8 +145,11 @@ def to_wpilib(robot: Robot) -> Any:
     wmr.errors.InputValueError
         If the robot is none of these layouts (the message says why, layout by layout).
     """
-    layout = recognise(robot, ["swerve", "mecanum", "differential"],
-                       where="WPILib (SwerveDriveKinematics, MecanumDriveKinematics, DifferentialDriveKinematics)")
+    layout = recognise(
+        robot,
+        ["swerve", "mecanum", "differential"],
+        where="WPILib (SwerveDriveKinematics, MecanumDriveKinematics, DifferentialDriveKinematics)",
+    )
     k = _kinematics()
     geometry = require("wpilib", "WPILib kinematics objects", "wpimath.geometry")
     points = [geometry.Translation2d(float(x), float(y)) for x, y in layout.positions]
@@ -137,8 +158,10 @@ def to_wpilib(robot: Robot) -> Any:
     if layout.name == "mecanum":
         return k.MecanumDriveKinematics(*points)
     if len(points) not in _SWERVE_SIZES:
-        raise InputValueError(f"WPILib has swerve kinematics for {', '.join(map(str, _SWERVE_SIZES))} modules; the "
-                              f"robot has {len(points)}")
+        raise InputValueError(
+            f"WPILib has swerve kinematics for {', '.join(map(str, _SWERVE_SIZES))} modules; the "
+            f"robot has {len(points)}"
+        )
     return getattr(k, f"SwerveDrive{len(points)}Kinematics")(*points)
 
 

@@ -17,5 +17,18 @@ r"""The model: what a wheeled mobile robot *is* (no analysis here).
 ==============================  ==================================================================================
 """
 
-__all__ = ["backend", "tolerance", "types", "checks", "arrays", "robot_checks", "validation", "platform", "trig",
-           "wheels", "robot", "robots", "conventions"]
+__all__ = [
+    "backend",
+    "tolerance",
+    "types",
+    "checks",
+    "arrays",
+    "robot_checks",
+    "validation",
+    "platform",
+    "trig",
+    "wheels",
+    "robot",
+    "robots",
+    "conventions",
+]

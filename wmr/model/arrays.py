@@ -10,6 +10,7 @@ Traceback (most recent call last):
     ...
 wmr.errors.InputTypeError: beta must be an array of real numbers, got strings: ['0.7', '0.1']
 """
+
 from __future__ import annotations
 
 import numbers
@@ -22,16 +23,25 @@ from ..errors import InputTypeError, InputValueError
 from .checks import finite_float, kind_error, real, show
 from .types import ArrayLike, FloatArray, Numbers, Symbolic, Twist
 
-__all__ = ["finite_array", "twist_array", "twist_kind", "TWIST_OBJECTS", "batch_shape", "symbolic_vector",
-           "symbolic_matrix"]
+__all__ = [
+    "finite_array",
+    "twist_array",
+    "twist_kind",
+    "TWIST_OBJECTS",
+    "batch_shape",
+    "symbolic_vector",
+    "symbolic_matrix",
+]
 
 #: twist objects of other libraries, read by their fields into wmr's order [psi_dot, x_dot, y_dot]:
 #: name -> (the fields that identify it, how to read it)
 TWIST_OBJECTS = {
     "WPILib ChassisSpeeds(vx, vy, omega)": (("vx", "vy", "omega"), lambda o: (o.omega, o.vx, o.vy)),
     "WPILib Twist2d(dx, dy, dtheta)": (("dx", "dy", "dtheta"), lambda o: (o.dtheta, o.dx, o.dy)),
-    "ROS geometry_msgs/Twist (linear, angular)": (("linear", "angular"),
-                                                  lambda o: (o.angular.z, o.linear.x, o.linear.y)),
+    "ROS geometry_msgs/Twist (linear, angular)": (
+        ("linear", "angular"),
+        lambda o: (o.angular.z, o.linear.x, o.linear.y),
+    ),
 }
 
 
@@ -60,8 +70,10 @@ def _object_array(name, raw, value):
     flat = out.reshape(-1)
     for k, v in enumerate(raw.flat):
         if isinstance(v, sp.Basic):
-            raise InputTypeError(f"{name} must be an array of numbers, got SymPy entries in {show(value)} "
-                            "(use the SymPy backend for symbolic work)")
+            raise InputTypeError(
+                f"{name} must be an array of numbers, got SymPy entries in {show(value)} "
+                "(use the SymPy backend for symbolic work)"
+            )
         if isinstance(v, (bool, np.bool_)) or not isinstance(v, numbers.Real):
             raise kind_error(name, value, "an array of real numbers") from None
         flat[k] = finite_float(name, v)
@@ -100,14 +112,17 @@ def finite_array(name: str, value: ArrayLike, last: int | None = None) -> FloatA
         if value is None or isinstance(value, (str, bytes)):
             raise kind_error(name, value, "an array of real numbers")
         kind = twist_kind(value)
-        if kind is not None:                # never read a twist object's fields in an order of its own
-            raise InputTypeError(f"{name} must be an array of real numbers, got a {kind.split('(')[0].strip()} "
-                                 f"(twist objects are accepted where a twist is expected): {show(value)}")
+        if kind is not None:  # never read a twist object's fields in an order of its own
+            raise InputTypeError(
+                f"{name} must be an array of real numbers, got a {kind.split('(')[0].strip()} "
+                f"(twist objects are accepted where a twist is expected): {show(value)}"
+            )
         try:
             raw = np.asarray(value)
         except (ValueError, TypeError):
-            raise InputValueError(f"{name} must be a regular (not ragged) array of real numbers, "
-                                  f"got {show(value)}") from None
+            raise InputValueError(
+                f"{name} must be a regular (not ragged) array of real numbers, got {show(value)}"
+            ) from None
         kind = raw.dtype.kind
         if kind in "iuf":
             with np.errstate(over="ignore"):
@@ -183,12 +198,13 @@ def batch_shape(arrays: Mapping[str, FloatArray | None], core: int = 1) -> tuple
     """
     given = {k: v for k, v in arrays.items() if v is not None}
     try:
-        return np.broadcast_shapes(*[np.shape(v)[:np.ndim(v) - core] for v in given.values()])
+        return np.broadcast_shapes(*[np.shape(v)[: np.ndim(v) - core] for v in given.values()])
     except ValueError:
         names = list(given)
-        shapes = " and ".join(f"{k} {np.shape(v)[:np.ndim(v) - core]}" for k, v in given.items())
-        raise InputValueError(f"{', '.join(names[:-1])} and {names[-1]} must have broadcastable batch shapes, "
-                         f"got {shapes}") from None
+        shapes = " and ".join(f"{k} {np.shape(v)[: np.ndim(v) - core]}" for k, v in given.items())
+        raise InputValueError(
+            f"{', '.join(names[:-1])} and {names[-1]} must have broadcastable batch shapes, got {shapes}"
+        ) from None
 
 
 def symbolic_vector(name: str, value: Numbers, size: int) -> Symbolic:
@@ -246,7 +262,8 @@ def symbolic_matrix(name: str, value: Numbers) -> Symbolic:
         raise kind_error(name, value, "a matrix")
     try:
         if not isinstance(value, sp.MatrixBase) and any(
-                isinstance(e, (str, bytes)) for e in np.asarray(value, dtype=object).ravel()):
+            isinstance(e, (str, bytes)) for e in np.asarray(value, dtype=object).ravel()
+        ):
             raise kind_error(name, value, "a matrix of numbers or SymPy expressions")
         M = sp.Matrix(value)
     except (TypeError, ValueError, NotImplementedError, sp.SympifyError):

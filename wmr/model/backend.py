@@ -6,6 +6,7 @@ batched NumPy arrays whose last two axes are the matrix axes; passing :data:`SYM
 gives a :class:`sympy.Matrix`.  Neither form is written by hand anywhere else, so the
 derivation notebooks and the numeric kernels cannot drift apart.
 """
+
 from __future__ import annotations
 
 from collections.abc import Sequence
@@ -47,7 +48,7 @@ class NumericBackend:
     @staticmethod
     def set_block(M: FloatArray, i: int, j: int, B: ArrayLike) -> FloatArray:
         B = np.asarray(B, dtype=float)
-        M[..., i:i + B.shape[-2], j:j + B.shape[-1]] = B
+        M[..., i : i + B.shape[-2], j : j + B.shape[-1]] = B
         return M
 
     @staticmethod
@@ -92,7 +93,7 @@ class SymbolicBackend:
     @staticmethod
     def set_block(M: Symbolic, i: int, j: int, B: Symbolic) -> Symbolic:
         B = sp.Matrix(B)
-        M[i:i + B.rows, j:j + B.cols] = B
+        M[i : i + B.rows, j : j + B.cols] = B
         return M
 
     @staticmethod

@@ -28,6 +28,7 @@ Traceback (most recent call last):
     ...
 wmr.errors.InputTypeError: angle must be a real number, got '0.7' (str)
 """
+
 from __future__ import annotations
 
 import math
@@ -40,8 +41,19 @@ import sympy as sp
 from ..errors import InputTypeError, InputValueError
 from .types import Numbers
 
-__all__ = ["real", "number", "positive", "nonnegative", "point", "flag", "optional_text", "integer", "show",
-           "kind_error", "finite_float"]
+__all__ = [
+    "real",
+    "number",
+    "positive",
+    "nonnegative",
+    "point",
+    "flag",
+    "optional_text",
+    "integer",
+    "show",
+    "kind_error",
+    "finite_float",
+]
 
 _NON_FINITE = (sp.nan, sp.zoo, sp.oo, -sp.oo)
 
@@ -73,10 +85,10 @@ def show(value: Any, limit: int = 80) -> str:
     else:
         try:
             text = repr(value)
-        except Exception:                                   # a broken __repr__ must not hide the error
+        except Exception:  # a broken __repr__ must not hide the error
             text = f"<{type(value).__name__} object>"
     text = " ".join(text.split())
-    return text if len(text) <= limit else text[:limit - 3] + "..."
+    return text if len(text) <= limit else text[: limit - 3] + "..."
 
 
 def _scalar(value):
@@ -141,10 +153,15 @@ def finite_float(name: str, value: Any) -> float:
         except OverflowError:
             f = math.inf
     if not math.isfinite(f):
-        big = (isinstance(value, numbers.Rational) or (isinstance(value, np.floating) and bool(np.isfinite(value)))
-               or (isinstance(value, sp.Basic) and value.is_finite))          # finite as written: 10**400, 1e400L
-        raise InputValueError(f"{name} must be a finite real number, got {show(value)}"
-                         + (" (too large for double precision)" if big else ""))
+        big = (
+            isinstance(value, numbers.Rational)
+            or (isinstance(value, np.floating) and bool(np.isfinite(value)))
+            or (isinstance(value, sp.Basic) and value.is_finite)
+        )  # finite as written: 10**400, 1e400L
+        raise InputValueError(
+            f"{name} must be a finite real number, got {show(value)}"
+            + (" (too large for double precision)" if big else "")
+        )
     return f
 
 
@@ -166,7 +183,7 @@ def _symbolic(name, value, wanted="a real number"):
     if value.is_real is False or (value.is_real is None and value.has(sp.I)):
         raise InputValueError(f"{name} must be real, got {show(value)}")
     if value.is_number:
-        finite_float(name, value)                              # exact numbers must fit a double too
+        finite_float(name, value)  # exact numbers must fit a double too
     return value
 
 

@@ -22,6 +22,7 @@ Traceback (most recent call last):
     ...
 wmr.errors.LimitError: the robot file bot.toml has 10,000 wheel units, more than the limit of 100 (set ...
 """
+
 from __future__ import annotations
 
 import math
@@ -35,7 +36,7 @@ __all__ = ["LIMITS", "limit", "check"]
 #: name -> (default, environment variable, what a request is said to have)
 LIMITS = {
     "wheels": (100, "WMR_MAX_WHEELS", "has {} wheel units"),
-    "configurations": (10 ** 9, "WMR_MAX_CONFIGURATIONS", "has {} configurations"),
+    "configurations": (10**9, "WMR_MAX_CONFIGURATIONS", "has {} configurations"),
     "memory_mb": (1024, "WMR_MAX_MEMORY_MB", "needs {} MB of working memory"),
 }
 
@@ -85,15 +86,17 @@ def check(name: str, amount: float, what: str) -> None:
     wmr.errors.LimitError
     """
     most = limit(name)
-    if isinstance(amount, bool) or not isinstance(amount, int):          # (an int may be beyond a float)
+    if isinstance(amount, bool) or not isinstance(amount, int):  # (an int may be beyond a float)
         amount = number("amount", amount)
     if amount <= most:
         return
     _, env, unit = LIMITS[name]
     if amount < 1e15:
         shown, wanted = f"{amount:,.0f}", f"{math.ceil(amount)}"
-    else:                                               # (an int may be beyond a float: its digits)
+    else:  # (an int may be beyond a float: its digits)
         digits = str(int(amount))
         shown = wanted = f"{digits[0]}.{digits[1:3]}e+{len(digits) - 1}"
-    raise LimitError(f"{what} {unit.format(shown)}, more than the limit of {most:,} (set the environment variable "
-                     f"{env} to raise it, e.g. {env}={wanted})")
+    raise LimitError(
+        f"{what} {unit.format(shown)}, more than the limit of {most:,} (set the environment variable "
+        f"{env} to raise it, e.g. {env}={wanted})"
+    )

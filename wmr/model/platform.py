@@ -12,6 +12,7 @@ The velocity of a platform point :math:`P_i` with :math:`\mathbf d_i = \overrigh
 
 (equations (2), (3) and (5) of the paper).
 """
+
 from __future__ import annotations
 
 import numpy as np
@@ -103,14 +104,17 @@ def cos_sin(beta: ArrayLike, out: tuple[FloatArray, FloatArray] | None = None) -
     True
     """
     beta = finite_array("beta", beta)
-    if out is not None and not (isinstance(out, tuple) and len(out) == 2 and all(
-            isinstance(o, np.ndarray) and o.dtype == np.float64 and o.shape == beta.shape for o in out)):
+    if out is not None and not (
+        isinstance(out, tuple)
+        and len(out) == 2
+        and all(isinstance(o, np.ndarray) and o.dtype == np.float64 and o.shape == beta.shape for o in out)
+    ):
         raise InputTypeError(f"out must be a pair of float arrays of shape {beta.shape}, got {type(out).__name__}")
-    t = np.multiply(beta, 0.5, out=np.empty(np.shape(beta)))     # arrays even when 0-d
+    t = np.multiply(beta, 0.5, out=np.empty(np.shape(beta)))  # arrays even when 0-d
     np.tan(t, out=t)
     h = np.multiply(t, t, out=np.empty_like(t))
     h += 1.0
-    np.divide(2.0, h, out=h)                       # h = 2 / (1 + t^2)
+    np.divide(2.0, h, out=h)  # h = 2 / (1 + t^2)
     if out is None:
         out = (np.empty_like(h), np.empty_like(h))
     c, s = out
@@ -158,15 +162,17 @@ def rotated(beta: Numbers, M: Matrix, EM: Matrix, axes: int = 2, backend: Backen
     (4, 2, 1)
     """
     checked = False
-    if isinstance(beta, tuple):                    # (cos, sin) from the caller: the kernels' inner loops
+    if isinstance(beta, tuple):  # (cos, sin) from the caller: the kernels' inner loops
         c, s = beta
     else:
         bk = choose(beta, backend=backend)
         if bk is NUMERIC:
             beta, M, EM = (finite_array(n, a) for n, a in (("beta", beta), ("M", M), ("EM", EM)))
             if np.shape(M) != np.shape(EM) or np.ndim(M) < integer("axes", axes, minimum=0):
-                raise InputValueError(f"M and EM must be blocks of one shape with at least axes = {axes} axes, "
-                                 f"got shapes {np.shape(M)} and {np.shape(EM)}")
+                raise InputValueError(
+                    f"M and EM must be blocks of one shape with at least axes = {axes} axes, "
+                    f"got shapes {np.shape(M)} and {np.shape(EM)}"
+                )
             c, s = cos_sin(beta)
             checked = True
         else:
@@ -182,15 +188,17 @@ def rotated(beta: Numbers, M: Matrix, EM: Matrix, axes: int = 2, backend: Backen
         try:
             out = _combination(c, s, M, EM)
         except ValueError:
-            raise InputValueError(f"beta {np.shape(beta)} and the blocks M, EM {np.shape(M)} must broadcast "
-                             f"(beta's axes, then {axes} block axes)") from None
+            raise InputValueError(
+                f"beta {np.shape(beta)} and the blocks M, EM {np.shape(M)} must broadcast "
+                f"(beta's axes, then {axes} block axes)"
+            ) from None
     if not np.isfinite(out).all():
         raise InputValueError(f"M and EM are too large: R(beta) M overflows (largest |M| = {np.abs(M).max():.3g})")
     return out
 
 
 def _combination(c, s, M, EM):
-    return c * M + s * EM                          # (11): R(beta) M = cos(beta) M + sin(beta) E M
+    return c * M + s * EM  # (11): R(beta) M = cos(beta) M + sin(beta) E M
 
 
 def wrap_angle(angle: ArrayLike) -> FloatArray:
@@ -300,7 +308,9 @@ def point_velocity(twist: Twist, d: ArrayLike) -> FloatArray:
     with np.errstate(over="ignore", invalid="ignore"):
         v = np.stack([t[..., 1] - t[..., 0] * d[..., 1], t[..., 2] + t[..., 0] * d[..., 0]], axis=-1)
     if not np.isfinite(v).all():
-        raise InputValueError(f"twist and d are too large: the velocity overflows "
-                              f"(largest |twist| = {np.abs(t).max():.3g}, "
-                         f"|d| = {np.abs(d).max():.3g})")
+        raise InputValueError(
+            f"twist and d are too large: the velocity overflows "
+            f"(largest |twist| = {np.abs(t).max():.3g}, "
+            f"|d| = {np.abs(d).max():.3g})"
+        )
     return v

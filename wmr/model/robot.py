@@ -8,6 +8,7 @@ Stacking the no-slip equation of every unit gives (21),
 :math:`\dot{\mathbf q}` is named (:attr:`Robot.qdot_names`) so that a reader can see which column
 of :math:`\mathbf F` is which rate.
 """
+
 from __future__ import annotations
 
 from collections.abc import Iterable
@@ -171,7 +172,7 @@ class Robot:
         """
         beta = A.finite_array("beta", beta, last=self.w)
         own = [i for i, u in enumerate(self.wheels) if u.constant_angle is not None]
-        if own:                                             # (a copy: the caller's array is not changed)
+        if own:  # (a copy: the caller's array is not changed)
             beta = beta.copy()
             beta[..., own] = [C.number("angle", self.wheels[i].constant_angle) for i in own]
         return beta
@@ -179,8 +180,9 @@ class Robot:
     def _beta(self, beta, bk):
         if bk is SYMBOLIC:
             b = list(self.beta_symbols) if beta is None else list(A.symbolic_vector("beta", beta, self.w))
-            return [b[i] if u.constant_angle is None else sp.sympify(u.constant_angle)
-                    for i, u in enumerate(self.wheels)]
+            return [
+                b[i] if u.constant_angle is None else sp.sympify(u.constant_angle) for i, u in enumerate(self.wheels)
+            ]
         return self.effective_beta(beta)
 
     def J1(self, L: Numbers = 1, backend: Backend | None = None) -> Matrix:
@@ -215,8 +217,10 @@ class Robot:
             for i, u in enumerate(self.wheels):
                 bk.set_block(M, 2 * i, 0, point_row(u.position, L, backend=bk))  # (32): [E d_i / L, 1]
         if bk is NUMERIC and not np.isfinite(M).all():
-            raise InputValueError(f"L (characteristic length) = {L!r} is too small for mount points of size "
-                                  f"{np.abs(self.mount_points).max():.3g}: d_i / L overflows")
+            raise InputValueError(
+                f"L (characteristic length) = {L!r} is too small for mount points of size "
+                f"{np.abs(self.mount_points).max():.3g}: d_i / L overflows"
+            )
         return M
 
     def _backend(self, beta, backend):
@@ -253,7 +257,7 @@ class Robot:
         P = np.zeros((self.w, 2 * self.w, self.n_rates))
         Q = np.zeros_like(P)
         for i, (u, sl) in enumerate(zip(self.wheels, self.rate_slices)):
-            P[i, 2 * i:2 * i + 2, sl], Q[i, 2 * i:2 * i + 2, sl] = u.block_terms(NUMERIC)
+            P[i, 2 * i : 2 * i + 2, sl], Q[i, 2 * i : 2 * i + 2, sl] = u.block_terms(NUMERIC)
         return P, Q
 
     def F(self, beta: Numbers | None = None, backend: Backend | None = None) -> Matrix:
@@ -276,7 +280,7 @@ class Robot:
         if bk is SYMBOLIC:
             return bk.broadcast_hstack(self.J1(backend=SYMBOLIC), -self.J2(beta, SYMBOLIC))
         b = self._beta(beta, bk)
-        P, Q = self._wheel_terms()                                    # J2 = sum cos P_i + sin Q_i
+        P, Q = self._wheel_terms()  # J2 = sum cos P_i + sin Q_i
         const = np.concatenate([self.J1(backend=NUMERIC), np.zeros(P.shape[1:])], axis=-1)
         pad = np.zeros(P.shape[:2] + (3,))
         return trig_combination(b, np.concatenate([pad, -P], -1), np.concatenate([pad, -Q], -1), const)
@@ -310,13 +314,15 @@ class Robot:
             return self.J1(L, backend=SYMBOLIC).T * self.J2(beta, SYMBOLIC)
         b = self._beta(beta, bk)
         JL1T = self.J1(L, backend=NUMERIC).T
-        P, Q = self._wheel_terms()                                    # J = J_L1^T J2, term by term
+        P, Q = self._wheel_terms()  # J = J_L1^T J2, term by term
         with np.errstate(over="ignore", invalid="ignore"):
             P, Q = JL1T @ P, JL1T @ Q
-            ok = np.isfinite(2 * np.abs(P).sum(0) + 2 * np.abs(Q).sum(0)).all()   # |entry| <= sum |P_i| + |Q_i|
+            ok = np.isfinite(2 * np.abs(P).sum(0) + 2 * np.abs(Q).sum(0)).all()  # |entry| <= sum |P_i| + |Q_i|
         if not ok:
-            raise InputValueError(f"J overflows for this robot and L = {L!r}: the wheel radii times d_i / L exceed "
-                             "the double-precision range")
+            raise InputValueError(
+                f"J overflows for this robot and L = {L!r}: the wheel radii times d_i / L exceed "
+                "the double-precision range"
+            )
         return trig_combination(b, P, Q)
 
     def numeric(self) -> Robot:
@@ -343,8 +349,10 @@ class Robot:
         if not self.is_symbolic:
             return self
         if self.free_symbols:
-            raise InputValueError(f"robot has free symbols {sorted(map(str, self.free_symbols))}: it has no numeric "
-                                  f"counterpart ({C.show(self)})")
+            raise InputValueError(
+                f"robot has free symbols {sorted(map(str, self.free_symbols))}: it has no numeric "
+                f"counterpart ({C.show(self)})"
+            )
         return Robot([u.numeric() for u in self.wheels], name=self.name)
 
     @property

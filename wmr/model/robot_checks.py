@@ -3,6 +3,7 @@ r"""Input checks for robots: a :class:`wmr.Robot` instance, a numeric one, and t
 The rule of the two exception types and the scalar checks are in :mod:`wmr.model.checks`;
 :mod:`wmr.model.validation` gathers these with them (``validation.numeric_robot``).
 """
+
 from __future__ import annotations
 
 from ..errors import InputTypeError, InputValueError
@@ -36,8 +37,10 @@ def robot(value: object, name: str = "robot") -> Robot:
     if isinstance(value, Robot):
         return value
     if isinstance(value, type) and issubclass(value, Robot):
-        raise InputTypeError(f"{name} must be a wmr.Robot instance, got the class {value.__name__} itself "
-                        "(build one, e.g. wmr.Robot([...]) or wmr.paper_robot())")
+        raise InputTypeError(
+            f"{name} must be a wmr.Robot instance, got the class {value.__name__} itself "
+            "(build one, e.g. wmr.Robot([...]) or wmr.paper_robot())"
+        )
     raise kind_error(name, value, "a wmr.Robot")
 
 
@@ -56,8 +59,10 @@ def numeric_robot(value: object, name: str = "robot") -> Robot:
     """
     value = robot(value, name)
     if free_symbols(value):
-        raise InputValueError(f"{name} must have numeric mount points and lengths here, got a robot with the symbols "
-                         f"{sorted(map(str, free_symbols(value)))}: {show(value)}")
+        raise InputValueError(
+            f"{name} must have numeric mount points and lengths here, got a robot with the symbols "
+            f"{sorted(map(str, free_symbols(value)))}: {show(value)}"
+        )
     return value.numeric() if value.is_symbolic else value
 
 

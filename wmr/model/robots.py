@@ -7,6 +7,7 @@ exactly): the three mount points are the vertices of an equilateral triangle cen
 .. math:: \mathbf d_1 = L(-1, 0),\quad \mathbf d_2 = L(\tfrac12, \tfrac{\sqrt3}2),\quad
           \mathbf d_3 = L(\tfrac12, -\tfrac{\sqrt3}2).
 """
+
 from __future__ import annotations
 
 import dataclasses
@@ -38,8 +39,9 @@ class Dimensions(TypedDict, total=False):
     b: float
 
 
-def equilateral_mounts(L: Numbers = 1.0, first_deg: float = 180.0, clockwise: bool = True,
-                       exact: bool = False) -> list[tuple[Numbers, Numbers]]:
+def equilateral_mounts(
+    L: Numbers = 1.0, first_deg: float = 180.0, clockwise: bool = True, exact: bool = False
+) -> list[tuple[Numbers, Numbers]]:
     r"""Mount points at the vertices of an equilateral triangle with centroid C and circumradius L.
 
     Parameters
@@ -78,13 +80,19 @@ def equilateral_mounts(L: Numbers = 1.0, first_deg: float = 180.0, clockwise: bo
         ang = sp.pi * (first + k * step) / 180
         if exact or isinstance(L, sp.Basic) or isinstance(first_deg, sp.Basic):
             out.append((sp.nsimplify(L * sp.cos(ang)), sp.nsimplify(L * sp.sin(ang))))
-        else:                                                              # exact, then float:
+        else:  # exact, then float:
             out.append((float(L * sp.cos(ang)), float(L * sp.sin(ang))))  # no 1e-17 residue
     return out
 
 
-def paper_robot(kind: str = "centred", L: Numbers = 1.0, r: Numbers = 1.0, d: Numbers | None = None,
-                b: Numbers | None = None, exact: bool = False) -> Robot:
+def paper_robot(
+    kind: str = "centred",
+    L: Numbers = 1.0,
+    r: Numbers = 1.0,
+    d: Numbers | None = None,
+    b: Numbers | None = None,
+    exact: bool = False,
+) -> Robot:
     """The paper's three-wheel robot with its wheel numbering (see module docstring).
 
     Parameters
@@ -114,11 +122,13 @@ def paper_robot(kind: str = "centred", L: Numbers = 1.0, r: Numbers = 1.0, d: Nu
         raise V.kind_error("kind", kind, "'centred', 'offset' or 'dual'")
     if kind not in PAPER_KINDS:
         raise InputValueError(f"kind must be 'centred', 'offset' or 'dual', got {kind!r}")
-    lengths = {"d": None if d is None else V.nonnegative("d (offset)", d),       # checked even where unused
-               "b": None if b is None else V.positive("b (half wheel separation)", b)}
+    lengths = {
+        "d": None if d is None else V.nonnegative("d (offset)", d),  # checked even where unused
+        "b": None if b is None else V.positive("b (half wheel separation)", b),
+    }
     pts = equilateral_mounts(L, exact=V.flag("exact", exact))
     cls = wheel_kind(kind)
     fields = {f.name for f in dataclasses.fields(cls)}
-    own = {f: (r if v is None else v) for f, v in lengths.items() if f in fields}     # default r, as (46)
+    own = {f: (r if v is None else v) for f, v in lengths.items() if f in fields}  # default r, as (46)
     units = [cls(p, r=r, **own) for p in pts]
     return Robot(units, name=f"paper-{kind}")

@@ -64,6 +64,7 @@ Examples
 >>> bool(near_zero(1e-12, scale=1e-6))          # relative: 1e-12 is not small next to 1e-6
 False
 """
+
 from __future__ import annotations
 
 import numpy as np
@@ -107,8 +108,9 @@ def near_zero(x: ArrayLike, scale: ArrayLike = 1.0) -> BoolArray:
     x = np.abs(finite_array("x", x))
     scale = finite_array("scale", scale)
     if np.any(scale < 0):
-        raise InputValueError(f"scale must be a size (>= 0), got negative values "
-                              f"{scale[scale < 0].ravel()[:3].tolist()}")
+        raise InputValueError(
+            f"scale must be a size (>= 0), got negative values {scale[scale < 0].ravel()[:3].tolist()}"
+        )
     try:
         return x <= TOL * scale
     except ValueError:

@@ -7,6 +7,7 @@ Every steering-dependent matrix of the model is a constant plus a sum of wheel b
 constraints of :mod:`wmr.analysis.mobility`.  :func:`trig_combination` evaluates such a sum for a
 batch of configurations.
 """
+
 from __future__ import annotations
 
 import numpy as np
@@ -67,19 +68,18 @@ def trig_combination(beta: ArrayLike, P: FloatArray, Q: FloatArray, const: Float
     Pf, Qf = np.asarray(P, dtype=float).reshape(w, m), np.asarray(Q, dtype=float).reshape(w, m)
     flat = beta.reshape(-1, w)
     N = flat.shape[0]
-    out = np.empty((m, N))                              # entry-major: see Notes
+    out = np.empty((m, N))  # entry-major: see Notes
     const = np.zeros(m) if const is None else np.asarray(const, dtype=float).reshape(m)
     # for each entry, the angles that enter it and their two coefficients (most pairs are zero:
     # a unit touches only its own rows or columns)
-    terms = [[(i, Pf[i, j], Qf[i, j]) for i in range(w) if Pf[i, j] != 0.0 or Qf[i, j] != 0.0]
-             for j in range(m)]
+    terms = [[(i, Pf[i, j], Qf[i, j]) for i in range(w) if Pf[i, j] != 0.0 or Qf[i, j] != 0.0] for j in range(m)]
     ct, st = np.empty((w, CHUNK)), np.empty((w, CHUNK))
     for a in range(0, N, CHUNK):
         z = min(a + CHUNK, N)
-        c, s = cos_sin(flat[a:z].T, out=(ct[:, :z - a], st[:, :z - a]))
-        r = out[:, a:z]                                 # every update below is contiguous
+        c, s = cos_sin(flat[a:z].T, out=(ct[:, : z - a], st[:, : z - a]))
+        r = out[:, a:z]  # every update below is contiguous
         r[...] = const[:, None]
         for j, tj in enumerate(terms):
-            for i, p, q in tj:                          # (11): R(beta_i) M_i = cos M_i + sin E M_i
+            for i, p, q in tj:  # (11): R(beta_i) M_i = cos M_i + sin E M_i
                 r[j] += rotated((c[i], s[i]), p, q, axes=0)
     return out.T.reshape(beta.shape[:-1] + shape)

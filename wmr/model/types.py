@@ -22,6 +22,7 @@ mypy a SymPy object is ``Any``, and so is every type that admits one (``Symbolic
 ``Matrix``, ``Point``): the names say what is meant, the docstrings say the shapes, and the code that
 takes such a value converts it (:mod:`wmr.model.validation`) before it computes with it.
 """
+
 from __future__ import annotations
 
 import os
@@ -32,13 +33,25 @@ import numpy as np
 from numpy.typing import ArrayLike as _ArrayLike
 from numpy.typing import NDArray
 
-__all__ = ["ArrayLike", "BoolArray", "FloatArray", "IntArray", "JointNames", "Matrix", "Numbers", "PathLike", "Point",
-           "Symbolic", "Twist", "WheelJoints"]
+__all__ = [
+    "ArrayLike",
+    "BoolArray",
+    "FloatArray",
+    "IntArray",
+    "JointNames",
+    "Matrix",
+    "Numbers",
+    "PathLike",
+    "Point",
+    "Symbolic",
+    "Twist",
+    "WheelJoints",
+]
 
 #: what NumPy converts to an array: numbers, nested sequences, arrays (``numpy.typing.ArrayLike``)
 ArrayLike: TypeAlias = _ArrayLike
 #: a NumPy array of floats
-FloatArray: TypeAlias = "NDArray[np.floating[Any]]"       # (a string: Sphinx documents it as data)
+FloatArray: TypeAlias = "NDArray[np.floating[Any]]"  # (a string: Sphinx documents it as data)
 #: a NumPy array of integers
 IntArray: TypeAlias = "NDArray[np.integer[Any]]"
 #: a NumPy array of bools

@@ -19,25 +19,44 @@ Examples
 >>> positive("r", 0.1), finite_array("beta", [0.5, 1]).tolist()
 (0.1, [0.5, 1.0])
 """
+
 from __future__ import annotations
 
 from .arrays import batch_shape, finite_array, symbolic_matrix, symbolic_vector, twist_array, twist_kind
 from .checks import (
-                     finite_float,
-                     flag,
-                     integer,
-                     kind_error,
-                     nonnegative,
-                     number,
-                     optional_text,
-                     point,
-                     positive,
-                     real,
-                     show,
+    finite_float,
+    flag,
+    integer,
+    kind_error,
+    nonnegative,
+    number,
+    optional_text,
+    point,
+    positive,
+    real,
+    show,
 )
 from .robot_checks import free_symbols, numeric_robot, robot
 
-__all__ = ["real", "number", "positive", "nonnegative", "point", "flag", "optional_text", "integer", "show",
-           "kind_error", "finite_float", "finite_array", "twist_array", "twist_kind", "batch_shape",
-           "symbolic_vector", "symbolic_matrix",
-           "robot", "numeric_robot", "free_symbols"]
+__all__ = [
+    "real",
+    "number",
+    "positive",
+    "nonnegative",
+    "point",
+    "flag",
+    "optional_text",
+    "integer",
+    "show",
+    "kind_error",
+    "finite_float",
+    "finite_array",
+    "twist_array",
+    "twist_kind",
+    "batch_shape",
+    "symbolic_vector",
+    "symbolic_matrix",
+    "robot",
+    "numeric_robot",
+    "free_symbols",
+]

@@ -5,4 +5,5 @@
 - :mod:`wmr.plot.robot`: the robot seen from above (platform, wheel units, axle and wheel-plane lines);
 - :mod:`wmr.plot.snapping`: coordinates snapped so that a saved figure is the same file on every machine.
 """
+
 __all__ = ["style", "annotate", "robot", "snapping"]

@@ -3,6 +3,7 @@ r"""Annotations of a drawing: labels, points, arrows, frames, angles, constructi
 All positions are in data coordinates of the axes (lengths in the robot's unit); offsets of
 labels are in points.  Colours and dash patterns come from :mod:`wmr.plot.style`.
 """
+
 from __future__ import annotations
 
 import numpy as np
@@ -14,12 +15,24 @@ from ..model.backend import NUMERIC
 from ..model.platform import rotation
 from .style import DASHES, FONT_LABEL, FONT_SMALL, HALO, PALETTE, ROLE
 
-__all__ = ["label", "draw_point", "draw_arrow", "draw_frame", "draw_angle", "segment_through", "draw_line",
-           "draw_path", "scale_bar", "info_box", "legend_handles"]
+__all__ = [
+    "label",
+    "draw_point",
+    "draw_arrow",
+    "draw_frame",
+    "draw_angle",
+    "segment_through",
+    "draw_line",
+    "draw_path",
+    "scale_bar",
+    "info_box",
+    "legend_handles",
+]
 
 
-def label(ax, xy, text, *, offset=(4, 4), color=None, ha="left", va="bottom", fontsize=FONT_LABEL,
-          zorder=9.0, halo=True, **kw):
+def label(
+    ax, xy, text, *, offset=(4, 4), color=None, ha="left", va="bottom", fontsize=FONT_LABEL, zorder=9.0, halo=True, **kw
+):
     """A text label at ``xy`` shifted by ``offset`` points, with a white halo for legibility.
 
     Parameters
@@ -45,15 +58,38 @@ def label(ax, xy, text, *, offset=(4, 4), color=None, ha="left", va="bottom", fo
     -------
     matplotlib.text.Annotation
     """
-    t = ax.annotate(text, xy=tuple(np.asarray(xy, dtype=float)), xytext=offset, textcoords="offset points",
-                    ha=ha, va=va, color=color or ROLE["annotation"], fontsize=fontsize, zorder=zorder, **kw)
+    t = ax.annotate(
+        text,
+        xy=tuple(np.asarray(xy, dtype=float)),
+        xytext=offset,
+        textcoords="offset points",
+        ha=ha,
+        va=va,
+        color=color or ROLE["annotation"],
+        fontsize=fontsize,
+        zorder=zorder,
+        **kw,
+    )
     if halo:
         t.set_path_effects(HALO)
     return t
 
 
-def draw_point(ax, xy, text=None, *, marker="o", color=None, size=4.0, offset=(4, 4), ha="left", va="bottom",
-               zorder=8.0, fontsize=FONT_LABEL, face=None):
+def draw_point(
+    ax,
+    xy,
+    text=None,
+    *,
+    marker="o",
+    color=None,
+    size=4.0,
+    offset=(4, 4),
+    ha="left",
+    va="bottom",
+    zorder=8.0,
+    fontsize=FONT_LABEL,
+    face=None,
+):
     """A marked point with an optional label (in the point's colour).
 
     Parameters
@@ -80,11 +116,19 @@ def draw_point(ax, xy, text=None, *, marker="o", color=None, size=4.0, offset=(4
     None
     """
     col = color or ROLE["point"]
-    ax.plot([xy[0]], [xy[1]], marker=marker, markersize=size, color=col, markerfacecolor=face or col,
-            markeredgewidth=0.8, linestyle="none", zorder=zorder)
+    ax.plot(
+        [xy[0]],
+        [xy[1]],
+        marker=marker,
+        markersize=size,
+        color=col,
+        markerfacecolor=face or col,
+        markeredgewidth=0.8,
+        linestyle="none",
+        zorder=zorder,
+    )
     if text:
-        label(ax, xy, text, offset=offset, color=col if col != ROLE["point"] else None, ha=ha, va=va,
-              fontsize=fontsize)
+        label(ax, xy, text, offset=offset, color=col if col != ROLE["point"] else None, ha=ha, va=va, fontsize=fontsize)
 
 
 def draw_arrow(ax, start, vec, *, color=None, lw=1.1, zorder=6.0, head=7.0, style="-|>", ls="-"):
@@ -112,15 +156,34 @@ def draw_arrow(ax, start, vec, *, color=None, lw=1.1, zorder=6.0, head=7.0, styl
     """
     s = np.asarray(start, dtype=float)
     e = s + np.asarray(vec, dtype=float)
-    a = FancyArrowPatch((float(s[0]), float(s[1])), (float(e[0]), float(e[1])), arrowstyle=style, mutation_scale=head,
-                        color=color or ROLE["frame"], linewidth=lw, linestyle=ls, shrinkA=0, shrinkB=0,
-                        zorder=zorder)
+    a = FancyArrowPatch(
+        (float(s[0]), float(s[1])),
+        (float(e[0]), float(e[1])),
+        arrowstyle=style,
+        mutation_scale=head,
+        color=color or ROLE["frame"],
+        linewidth=lw,
+        linestyle=ls,
+        shrinkA=0,
+        shrinkB=0,
+        zorder=zorder,
+    )
     ax.add_patch(a)
     return a
 
 
-def draw_frame(ax, origin, angle, length, labels=(r"$\mathbf{i}$", r"$\mathbf{j}$"), *, color=None,
-               zorder=6.0, fontsize=FONT_LABEL, lw=1.1):
+def draw_frame(
+    ax,
+    origin,
+    angle,
+    length,
+    labels=(r"$\mathbf{i}$", r"$\mathbf{j}$"),
+    *,
+    color=None,
+    zorder=6.0,
+    fontsize=FONT_LABEL,
+    lw=1.1,
+):
     r"""Two arrows (a frame) at ``origin``: the columns of :math:`\mathbf R(\text{angle})` times ``length``.
 
     Parameters
@@ -148,12 +211,24 @@ def draw_frame(ax, origin, angle, length, labels=(r"$\mathbf{i}$", r"$\mathbf{j}
     for e, lab in zip(R.T, labels):
         draw_arrow(ax, o, length * e, color=col, zorder=zorder, lw=lw)
         if lab:
-            label(ax, o + 1.12 * length * e, lab, color=col, offset=(0, 0), ha="center", va="center",
-                  fontsize=fontsize)
+            label(ax, o + 1.12 * length * e, lab, color=col, offset=(0, 0), ha="center", va="center", fontsize=fontsize)
 
 
-def draw_angle(ax, centre, radius, a0, a1, text=None, *, color=None, lw=0.9, text_radius=1.35, fontsize=FONT_LABEL,
-               arrow=True, zorder=6.0):
+def draw_angle(
+    ax,
+    centre,
+    radius,
+    a0,
+    a1,
+    text=None,
+    *,
+    color=None,
+    lw=0.9,
+    text_radius=1.35,
+    fontsize=FONT_LABEL,
+    arrow=True,
+    zorder=6.0,
+):
     """An arc from angle ``a0`` to ``a1`` (radians, counter-clockwise if a1 > a0) with a label.
 
     Parameters
@@ -183,17 +258,35 @@ def draw_angle(ax, centre, radius, a0, a1, text=None, *, color=None, lw=0.9, tex
     """
     col = color or ROLE["annotation"]
     lo, hi = (a0, a1) if a1 >= a0 else (a1, a0)
-    ax.add_patch(Arc(centre, 2 * radius, 2 * radius, theta1=np.degrees(lo), theta2=np.degrees(hi), color=col,
-                     linewidth=lw, zorder=zorder))
-    if arrow and abs(a1 - a0) > 0.12:                       # head at a1, along the arc
+    ax.add_patch(
+        Arc(
+            centre,
+            2 * radius,
+            2 * radius,
+            theta1=np.degrees(lo),
+            theta2=np.degrees(hi),
+            color=col,
+            linewidth=lw,
+            zorder=zorder,
+        )
+    )
+    if arrow and abs(a1 - a0) > 0.12:  # head at a1, along the arc
         e = np.array([np.cos(a1), np.sin(a1)])
         tdir = np.sign(a1 - a0) * np.array([-np.sin(a1), np.cos(a1)])
         tip = np.asarray(centre) + radius * e
         draw_arrow(ax, tip - 0.06 * radius * tdir, 0.06 * radius * tdir, color=col, lw=lw, head=6, zorder=zorder)
     if text:
         am = 0.5 * (a0 + a1)
-        label(ax, np.asarray(centre) + text_radius * radius * np.array([np.cos(am), np.sin(am)]), text,
-              offset=(0, 0), ha="center", va="center", color=col, fontsize=fontsize)
+        label(
+            ax,
+            np.asarray(centre) + text_radius * radius * np.array([np.cos(am), np.sin(am)]),
+            text,
+            offset=(0, 0),
+            ha="center",
+            va="center",
+            color=col,
+            fontsize=fontsize,
+        )
 
 
 def segment_through(p, u, include=(), margin=0.3, min_half=0.5):
@@ -230,8 +323,9 @@ def segment_through(p, u, include=(), margin=0.3, min_half=0.5):
     return min(ts) - margin, max(ts) + margin
 
 
-def draw_line(ax, p, u, include=(), *, kind="axle", margin=0.3, min_half=0.5, zorder=3.0, color=None, lw=None,
-              alpha=1.0):
+def draw_line(
+    ax, p, u, include=(), *, kind="axle", margin=0.3, min_half=0.5, zorder=3.0, color=None, lw=None, alpha=1.0
+):
     r"""A construction line through ``p`` along ``u``, long enough to reach the points ``include``.
 
     Parameters
@@ -289,8 +383,9 @@ def draw_path(ax, xy, *, color=None, lw=1.3, ls="-", zorder=2.5, alpha=1.0):
     matplotlib.lines.Line2D
     """
     xy = np.asarray(xy, dtype=float)
-    return ax.plot(xy[:, 0], xy[:, 1], color=color or ROLE["path"][0], linewidth=lw, linestyle=ls, zorder=zorder,
-                   alpha=alpha)[0]
+    return ax.plot(
+        xy[:, 0], xy[:, 1], color=color or ROLE["path"][0], linewidth=lw, linestyle=ls, zorder=zorder, alpha=alpha
+    )[0]
 
 
 def scale_bar(ax, length, text, *, loc=(0.04, 0.05), color=None):
@@ -343,9 +438,20 @@ def info_box(ax, lines, *, loc=(0.98, 0.98), ha="right", va="top", fontsize=FONT
     """
     if below:
         loc, ha, va = (0.5, -0.015), "center", "top"
-    ax.text(loc[0], loc[1], "\n".join(lines), transform=ax.transAxes, ha=ha, va=va, fontsize=fontsize,
-            color=PALETTE["dark"], zorder=10, linespacing=1.35, clip_on=False,
-            bbox=dict(boxstyle="round,pad=0.35", facecolor="white", edgecolor="#BBBBBB", linewidth=0.6, alpha=0.92))
+    ax.text(
+        loc[0],
+        loc[1],
+        "\n".join(lines),
+        transform=ax.transAxes,
+        ha=ha,
+        va=va,
+        fontsize=fontsize,
+        color=PALETTE["dark"],
+        zorder=10,
+        linespacing=1.35,
+        clip_on=False,
+        bbox=dict(boxstyle="round,pad=0.35", facecolor="white", edgecolor="#BBBBBB", linewidth=0.6, alpha=0.92),
+    )
 
 
 def legend_handles(items):
@@ -372,9 +478,20 @@ def legend_handles(items):
             hs.append(Line2D([], [], color=kind[6:], marker="o", markersize=4, linestyle="none", label=text))
         elif kind.startswith(("marker:", "open:")):
             how, m, c = kind.split(":")
-            hs.append(Line2D([], [], color=c, marker=m, markersize=5, linestyle="none", label=text,
-                             markerfacecolor="white" if how == "open" else c))
+            hs.append(
+                Line2D(
+                    [],
+                    [],
+                    color=c,
+                    marker=m,
+                    markersize=5,
+                    linestyle="none",
+                    label=text,
+                    markerfacecolor="white" if how == "open" else c,
+                )
+            )
         else:
-            raise InputValueError(f"legend item kind must be axle, plane, thin, path:, point:, marker: or open:, "
-                                  f"got {kind!r}")
+            raise InputValueError(
+                f"legend item kind must be axle, plane, thin, path:, point:, marker: or open:, got {kind!r}"
+            )
     return hs

@@ -3,6 +3,7 @@ r"""Drawing the design study: worst-case :math:`\kappa(\mathbf J)` over the desi
 The numbers come from :func:`wmr.analysis.design.landscape` and
 :func:`wmr.analysis.motion_kappa.motion_map`; these functions only draw them.
 """
+
 from __future__ import annotations
 
 import numpy as np
@@ -52,8 +53,13 @@ def draw_landscape(data, fig=None):
     with style():
         fig, (a, b) = new_figure(1, 2, width=7.2, height=3.2, fig=fig, drawing=False)
         a.loglog(data.ratios, data.kappa_paper, color=PALETTE["blue"], label="equilateral, C at the centroid")
-        a.loglog(data.ratios, data.kappa_moved, color=PALETTE["vermillion"], ls="--",
-                 label=f"wheel 2 moved to ({data.moved[0]:g}, {data.moved[1]:g})")
+        a.loglog(
+            data.ratios,
+            data.kappa_moved,
+            color=PALETTE["vermillion"],
+            ls="--",
+            label=f"wheel 2 moved to ({data.moved[0]:g}, {data.moved[1]:g})",
+        )
         a.axvline(1.0, color=PALETTE["grey"], lw=0.6, ls=":")
         a.set_xticks([0.25, 0.5, 1, 2, 4], ["1/4", "1/2", "1", "2", "4"])
         a.set_yticks([1, 1.5, 2, 3, 4], ["1", "1.5", "2", "3", "4"])
@@ -103,8 +109,13 @@ def draw_motion_maps(maps, titles, fig=None):
             if mm.circle is not None:
                 c, R = mm.circle
                 t = np.linspace(0, 2 * np.pi, 200)
-                ax.plot(c[0] + R * np.cos(t), c[1] + R * np.sin(t), color=PALETTE["vermillion"], lw=1.0,
-                        label=r"$\kappa = \infty$")
+                ax.plot(
+                    c[0] + R * np.cos(t),
+                    c[1] + R * np.sin(t),
+                    color=PALETTE["vermillion"],
+                    lw=1.0,
+                    label=r"$\kappa = \infty$",
+                )
                 ax.legend(loc="lower right", frameon=True, framealpha=0.9)
             ax.plot(*mm.argmin, "*", color=PALETTE["yellow"], ms=9, mec="black", mew=0.5)
             ax.set_xlabel("$U_x$")
@@ -149,6 +160,7 @@ def picture_bundle(data, alt, width=None):
     import html
 
     from ..errors import InputValueError
+
     if not isinstance(alt, str) or not alt.strip():
         raise InputValueError(f"alt must be a non-empty description of the picture, got {alt!r}")
     b64 = base64.b64encode(data).decode("ascii")
@@ -182,12 +194,14 @@ def show_figure(fig, caption, width=None, dpi=150, colours=None, alt=None):
     import io
 
     from IPython.display import Image, Markdown, display
+
     buf = io.BytesIO()
     with style():
         fig.savefig(buf, format="png", dpi=dpi)
     png = buf.getvalue()
     if colours:
         from PIL import Image as Picture
+
         small = io.BytesIO()
         picture = Picture.open(io.BytesIO(png)).convert("RGB").quantize(colors=int(colours))
         picture.save(small, format="PNG", optimize=True)

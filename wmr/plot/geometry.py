@@ -4,6 +4,7 @@ No matplotlib: :func:`robot_geometry` computes what :func:`wmr.plot.robot.draw_r
 :class:`RobotDrawing`), from the units' :meth:`~wmr.model.wheels.WheelUnit.points`, so the
 labels and construction lines of a figure can be placed before anything is drawn.
 """
+
 from __future__ import annotations
 
 from dataclasses import dataclass
@@ -96,8 +97,9 @@ def robot_geometry(robot, beta, pose=(0.0, 0.0, 0.0)):
         wheels.append(to_world(pose, pts["wheels"]))
         ii.append(R @ pts["i"])
         jj.append(R @ pts["j"])
-    return RobotDrawing(np.array(pose[1:], dtype=float), np.array(P), np.array(H), wheels,
-                        np.array(ii), np.array(jj), float(pose[0]))
+    return RobotDrawing(
+        np.array(pose[1:], dtype=float), np.array(P), np.array(H), wheels, np.array(ii), np.array(jj), float(pose[0])
+    )
 
 
 def platform_radius(robot):
@@ -114,8 +116,6 @@ def platform_radius(robot):
     d = np.linalg.norm(robot.mount_points, axis=1).max()
     r = max(float(u.r) for u in robot.wheels)
     return float(d + 0.9 * r)
-
-
 
 
 def robot_extent(g, radius):

@@ -12,6 +12,7 @@ and :meth:`~wmr.model.wheels.WheelUnit.parts`), so the pictures obey :mod:`wmr.c
 construction and any wheel kind is drawn; it is computed without matplotlib in :mod:`wmr.plot.geometry`
 (:func:`robot_geometry` and its companions are re-exported here).
 """
+
 from __future__ import annotations
 
 import numpy as np
@@ -25,8 +26,20 @@ from .geometry import RobotDrawing, platform_radius, robot_extent, robot_geometr
 from .snapping import snap
 from .style import PALETTE, ROLE
 
-__all__ = ["RobotDrawing", "to_world", "robot_geometry", "platform_radius", "draw_platform", "draw_wheel",
-           "draw_pivot", "draw_unit", "draw_robot", "robot_extent", "draw_axles", "draw_planes"]
+__all__ = [
+    "RobotDrawing",
+    "to_world",
+    "robot_geometry",
+    "platform_radius",
+    "draw_platform",
+    "draw_wheel",
+    "draw_pivot",
+    "draw_unit",
+    "draw_robot",
+    "robot_extent",
+    "draw_axles",
+    "draw_planes",
+]
 
 
 # ----------------------------------------------------------------------------- primitives
@@ -47,15 +60,44 @@ def draw_platform(ax, centre, radius, *, ghost=False, zorder=1.0):
     None
     """
     if ghost:
-        ax.add_patch(Circle(centre, radius, facecolor="none", edgecolor=ROLE["platform_edge"],
-                            linewidth=0.8, linestyle=(0, (4, 3)), zorder=zorder))
+        ax.add_patch(
+            Circle(
+                centre,
+                radius,
+                facecolor="none",
+                edgecolor=ROLE["platform_edge"],
+                linewidth=0.8,
+                linestyle=(0, (4, 3)),
+                zorder=zorder,
+            )
+        )
     else:
-        ax.add_patch(Circle(centre, radius, facecolor=ROLE["platform_face"], edgecolor=ROLE["platform_edge"],
-                            linewidth=0.9, zorder=zorder))
+        ax.add_patch(
+            Circle(
+                centre,
+                radius,
+                facecolor=ROLE["platform_face"],
+                edgecolor=ROLE["platform_edge"],
+                linewidth=0.9,
+                zorder=zorder,
+            )
+        )
 
 
-def draw_wheel(ax, centre, heading, r, width=None, *, ghost=False, arrow=True, zorder=4.0, color=None, light=False,
-               towards="travel"):
+def draw_wheel(
+    ax,
+    centre,
+    heading,
+    r,
+    width=None,
+    *,
+    ghost=False,
+    arrow=True,
+    zorder=4.0,
+    color=None,
+    light=False,
+    towards="travel",
+):
     r"""A wheel disc seen from above: a rounded rectangle, length 2r along ``heading`` (:math:`\mathbf j_i`).
 
     Parameters
@@ -90,9 +132,17 @@ def draw_wheel(ax, centre, heading, r, width=None, *, ghost=False, arrow=True, z
     w = 0.42 * r if width is None else width
     col = color or ROLE["wheel"]
     face = "none" if ghost else ("#D4D4D4" if light else col)
-    box = FancyBboxPatch((-w / 2, -r), w, 2 * r, boxstyle=f"round,pad=0,rounding_size={0.45 * w}",
-                         facecolor=face, edgecolor=col,
-                         linewidth=0.8, linestyle=(0, (3, 2)) if ghost else "-", zorder=zorder)
+    box = FancyBboxPatch(
+        (-w / 2, -r),
+        w,
+        2 * r,
+        boxstyle=f"round,pad=0,rounding_size={0.45 * w}",
+        facecolor=face,
+        edgecolor=col,
+        linewidth=0.8,
+        linestyle=(0, (3, 2)) if ghost else "-",
+        zorder=zorder,
+    )
     # the placement is snapped here: snap_figure sees the box in its own frame, not this transform
     box.set_transform(Affine2D().rotate(float(snap(heading))).translate(*snap(centre).tolist()) + ax.transData)
     ax.add_patch(box)
@@ -101,9 +151,19 @@ def draw_wheel(ax, centre, heading, r, width=None, *, ghost=False, arrow=True, z
             raise InputValueError(f"towards must be 'travel' or 'j', got {towards!r}")
         jdir = np.array([-np.sin(heading), np.cos(heading)]) * (1.0 if towards == "j" else -1.0)
         c = np.asarray(centre, dtype=float)
-        ax.add_patch(FancyArrowPatch(c - 0.62 * r * jdir, c + 0.72 * r * jdir, arrowstyle="-|>",
-                                     mutation_scale=5.5, color=PALETTE["dark"] if light else "white", linewidth=0.8,
-                                     shrinkA=0, shrinkB=0, zorder=zorder + 0.1))
+        ax.add_patch(
+            FancyArrowPatch(
+                c - 0.62 * r * jdir,
+                c + 0.72 * r * jdir,
+                arrowstyle="-|>",
+                mutation_scale=5.5,
+                color=PALETTE["dark"] if light else "white",
+                linewidth=0.8,
+                shrinkA=0,
+                shrinkB=0,
+                zorder=zorder + 0.1,
+            )
+        )
 
 
 def draw_pivot(ax, p, size, *, ghost=False, zorder=5.0):
@@ -123,14 +183,18 @@ def draw_pivot(ax, p, size, *, ghost=False, zorder=5.0):
     -------
     None
     """
-    ax.add_patch(Circle(p, size, facecolor="white" if not ghost else "none", edgecolor=PALETTE["dark"],
-                        linewidth=0.8, zorder=zorder))
+    ax.add_patch(
+        Circle(
+            p, size, facecolor="white" if not ghost else "none", edgecolor=PALETTE["dark"], linewidth=0.8, zorder=zorder
+        )
+    )
     if not ghost:
         ax.add_patch(Circle(p, 0.28 * size, facecolor=PALETTE["dark"], edgecolor="none", zorder=zorder + 0.1))
 
 
-def draw_unit(ax, unit, beta, pose=(0.0, 0.0, 0.0), *, ghost=False, zorder=4.0, show_j=True, light=False,
-              arrows="travel"):
+def draw_unit(
+    ax, unit, beta, pose=(0.0, 0.0, 0.0), *, ghost=False, zorder=4.0, show_j=True, light=False, arrows="travel"
+):
     r"""One wheel unit: its parts (:meth:`wmr.model.wheels.WheelUnit.parts`) in world coordinates from ``pose``.
 
     Each part is drawn by its type, whatever the unit's kind: a :class:`~wmr.model.wheels.parts.Link`
@@ -172,28 +236,44 @@ def draw_unit(ax, unit, beta, pose=(0.0, 0.0, 0.0), *, ghost=False, zorder=4.0, 
     for part in unit.parts(beta):
         if isinstance(part, Link):
             ends = to_world(pose, part.ends)
-            if part.over:                                   # an arm, over the wheel
-                ax.plot(*ends.T, color=ROLE["body"] if not light else PALETTE["dark"], linewidth=lw,
-                        linestyle=ls, solid_capstyle="round", zorder=zorder + 0.5)
-            else:                                           # a bar between wheels, under them
+            if part.over:  # an arm, over the wheel
+                ax.plot(
+                    *ends.T,
+                    color=ROLE["body"] if not light else PALETTE["dark"],
+                    linewidth=lw,
+                    linestyle=ls,
+                    solid_capstyle="round",
+                    zorder=zorder + 0.5,
+                )
+            else:  # a bar between wheels, under them
                 ax.plot(*ends.T, color=ROLE["body"], linewidth=lw, linestyle=ls, zorder=zorder - 0.1)
         elif isinstance(part, Disc):
-            draw_wheel(ax, to_world(pose, part.centre), pose[0] + part.heading, part.r, ghost=ghost,
-                       arrow=show_j and part.arrow, zorder=zorder, light=light, towards=arrows)
+            draw_wheel(
+                ax,
+                to_world(pose, part.centre),
+                pose[0] + part.heading,
+                part.r,
+                ghost=ghost,
+                arrow=show_j and part.arrow,
+                zorder=zorder,
+                light=light,
+                towards=arrows,
+            )
         elif isinstance(part, Rollers):
             _draw_rollers(ax, to_world(pose, part.centre), pose[0] + part.heading, part.r, part.angle, zorder + 0.1)
         elif isinstance(part, Pivot):
             draw_pivot(ax, to_world(pose, part.point), 0.16 * part.r, ghost=ghost, zorder=zorder + 1)
         else:
-            raise InputTypeError(f"unit.parts() must give Disc, Link, Rollers or Pivot parts, "
-                                 f"got {type(part).__name__}")
+            raise InputTypeError(
+                f"unit.parts() must give Disc, Link, Rollers or Pivot parts, got {type(part).__name__}"
+            )
     return to_world(pose, pts["P"]), to_world(pose, pts["H"])
 
 
 def _draw_rollers(ax, centre, heading, r, angle, zorder):
     """Three white strokes across a wheel disc along its roller axes (world angle ``heading + angle``)."""
     a = heading + angle
-    half = min(0.21 * r / max(abs(np.cos(angle)), 1e-3), 0.25 * r)     # across the tyre
+    half = min(0.21 * r / max(abs(np.cos(angle)), 1e-3), 0.25 * r)  # across the tyre
     ends = half * np.array([np.cos(a), np.sin(a)])
     jdir = np.array([-np.sin(heading), np.cos(heading)])
     for k in (-0.6, 0.0, 0.6):
@@ -202,9 +282,26 @@ def _draw_rollers(ax, centre, heading, r, angle, zorder):
 
 
 # ----------------------------------------------------------------------------- the robot
-def draw_robot(ax, robot, beta, pose=(0.0, 0.0, 0.0), *, ghost=False, labels=True, suffix="", frame=True,
-               frame_length=None, platform=True, radius=None, show_C=True, show_j=True, arrows="travel", zorder=4.0,
-               wheel_labels=True, label_offsets=None):
+def draw_robot(
+    ax,
+    robot,
+    beta,
+    pose=(0.0, 0.0, 0.0),
+    *,
+    ghost=False,
+    labels=True,
+    suffix="",
+    frame=True,
+    frame_length=None,
+    platform=True,
+    radius=None,
+    show_C=True,
+    show_j=True,
+    arrows="travel",
+    zorder=4.0,
+    wheel_labels=True,
+    label_offsets=None,
+):
     r"""Draw a whole robot: platform disc, operation point C, body frame, wheel units, labels.
 
     Parameters
@@ -265,21 +362,23 @@ def draw_robot(ax, robot, beta, pose=(0.0, 0.0, 0.0), *, ghost=False, labels=Tru
         label(ax, g.C, f"$C{suffix}$", offset=offs.get("C", (-5, -5)), ha="right", va="top")
         if wheel_labels:
             for k in range(robot.w):
-                out = g.P[k] - g.C              # beside the wheel, off the axle line, away from C
+                out = g.P[k] - g.C  # beside the wheel, off the axle line, away from C
                 # the sides are decided on snapped products: a product that is zero but for round-off
                 # (a wheel plane through C) picks the same side on every machine
-                e = (17 * g.i[k] * (1 if snap(g.i[k] @ out) >= 0 else -1)
-                     + 10 * g.j[k] * (1 if snap(g.j[k] @ out) >= 0 else -1))
+                e = 17 * g.i[k] * (1 if snap(g.i[k] @ out) >= 0 else -1) + 10 * g.j[k] * (
+                    1 if snap(g.j[k] @ out) >= 0 else -1
+                )
                 dflt = (float(e[0]), float(e[1]))
-                label(ax, g.P[k], f"$P_{{{k + 1}}}{suffix}$", offset=offs.get(k + 1, dflt), ha="center",
-                      va="center")
+                label(ax, g.P[k], f"$P_{{{k + 1}}}{suffix}$", offset=offs.get(k + 1, dflt), ha="center", va="center")
     return g
 
 
 def _draw_lines(ax, points, directions, include, kind, **kw):
     """One line per unit through ``points[k]`` along ``directions[k]``, extended to the points ``include[k]``."""
-    return [draw_line(ax, p, u, () if include is None else include[k], kind=kind, **kw)
-            for k, (p, u) in enumerate(zip(points, directions))]
+    return [
+        draw_line(ax, p, u, () if include is None else include[k], kind=kind, **kw)
+        for k, (p, u) in enumerate(zip(points, directions))
+    ]
 
 
 def draw_axles(ax, g, include=None, **kw):

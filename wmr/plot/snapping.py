@@ -7,6 +7,7 @@ anti-aliased.  :func:`snap` removes the round-off from values a drawing receives
 :func:`snap_figure` from every coordinate a finished figure hands to the renderer.  NumPy only:
 matplotlib is imported by :func:`snap_figure` alone.
 """
+
 from __future__ import annotations
 
 import numpy as np
@@ -92,7 +93,7 @@ def snap_figure(fig):
             art.set_position(_snap_xy(art.get_position()))
         elif isinstance(art, Text):
             art.set_position(_snap_xy(art.get_position()))
-        elif isinstance(art, Arc):              # before Circle's base Ellipse: an Arc is an Ellipse
+        elif isinstance(art, Arc):  # before Circle's base Ellipse: an Arc is an Ellipse
             art.set_center(_snap_xy(art.get_center()))
             art.set_width(float(snap(art.get_width())))
             art.set_height(float(snap(art.get_height())))
@@ -105,7 +106,7 @@ def snap_figure(fig):
         elif isinstance(art, FancyBboxPatch):
             art.set_bounds(*snap(art.get_bbox().bounds).tolist())
         elif isinstance(art, FancyArrowPatch):
-            ends = art._posA_posB          # type: ignore[attr-defined]  # matplotlib has no public getter
+            ends = art._posA_posB  # type: ignore[attr-defined]  # matplotlib has no public getter
             if ends is not None:
                 art.set_positions(*(_snap_xy(p) for p in ends))
     return fig

@@ -8,6 +8,7 @@ nothing accumulates and a notebook's backend is left alone); saving renders PNG 
 SVG/PDF with matplotlib's vector backends, whatever backend is active.  :data:`RC` also holds
 what makes saved files deterministic (a fixed SVG hash salt, text as paths).
 """
+
 from __future__ import annotations
 
 from contextlib import contextmanager
@@ -18,27 +19,56 @@ import matplotlib.patheffects as pe
 import numpy as np
 from matplotlib.figure import Figure
 
-__all__ = ["PALETTE", "ROLE", "DASHES", "RC", "FONT_LABEL", "FONT_SMALL", "HALO", "style", "new_figure",
-           "plain_axes", "panel_title", "fit_view", "common_view"]
+__all__ = [
+    "PALETTE",
+    "ROLE",
+    "DASHES",
+    "RC",
+    "FONT_LABEL",
+    "FONT_SMALL",
+    "HALO",
+    "style",
+    "new_figure",
+    "plain_axes",
+    "panel_title",
+    "fit_view",
+    "common_view",
+]
 
 #: Okabe & Ito (2008) colour-blind-safe palette, by name.
 PALETTE = {
-    "black": "#000000", "orange": "#E69F00", "sky": "#56B4E9", "green": "#009E73",
-    "yellow": "#F0E442", "blue": "#0072B2", "vermillion": "#D55E00", "purple": "#CC79A7",
-    "grey": "#7F7F7F", "light": "#EDEDED", "dark": "#2B2B2B",
+    "black": "#000000",
+    "orange": "#E69F00",
+    "sky": "#56B4E9",
+    "green": "#009E73",
+    "yellow": "#F0E442",
+    "blue": "#0072B2",
+    "vermillion": "#D55E00",
+    "purple": "#CC79A7",
+    "grey": "#7F7F7F",
+    "light": "#EDEDED",
+    "dark": "#2B2B2B",
 }
 #: Colours by what they show.
 ROLE: dict[str, Any] = {
-    "platform_face": "#EEEEEE", "platform_edge": "#8C8C8C", "wheel": PALETTE["dark"],
-    "body": "#6E6E6E", "axle": PALETTE["blue"], "plane": PALETTE["vermillion"],
-    "frame": PALETTE["black"], "fixed_frame": PALETTE["grey"], "point": PALETTE["black"],
+    "platform_face": "#EEEEEE",
+    "platform_edge": "#8C8C8C",
+    "wheel": PALETTE["dark"],
+    "body": "#6E6E6E",
+    "axle": PALETTE["blue"],
+    "plane": PALETTE["vermillion"],
+    "frame": PALETTE["black"],
+    "fixed_frame": PALETTE["grey"],
+    "point": PALETTE["black"],
     "path": (PALETTE["orange"], PALETTE["sky"], PALETTE["green"], PALETTE["purple"], PALETTE["vermillion"]),
-    "ic": PALETTE["blue"], "dp": PALETTE["vermillion"], "annotation": PALETTE["dark"],
+    "ic": PALETTE["blue"],
+    "dp": PALETTE["vermillion"],
+    "annotation": PALETTE["dark"],
 }
 #: Construction lines: kind -> (colour, dash pattern, line width).
 DASHES: dict[str, tuple[str, Any, float]] = {
-    "axle": (ROLE["axle"], (0, (5, 3)), 0.9),                    # along i_i
-    "plane": (ROLE["plane"], (0, (8, 2, 1.5, 2)), 0.9),          # along j_i
+    "axle": (ROLE["axle"], (0, (5, 3)), 0.9),  # along i_i
+    "plane": (ROLE["plane"], (0, (8, 2, 1.5, 2)), 0.9),  # along j_i
     "thin": (PALETTE["grey"], (0, (2, 2)), 0.6),
 }
 
@@ -197,4 +227,3 @@ def common_view(axes, point_sets, pad=0.05):
         c = (lo + hi) / 2
         ax.set_xlim(c[0] - hw, c[0] + hw)
         ax.set_ylim(c[1] - hh, c[1] + hh)
-

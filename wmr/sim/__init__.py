@@ -29,6 +29,7 @@ Examples
 >>> '<freejoint name="platform"/>' in to_mjcf(wmr.load("examples/swerve4.toml"))   # doctest: +SKIP
 True
 """
+
 from .bodies import POSITION, VELOCITY, servo
 from .commands import start_angles, twist_schedule
 from .mjcf import Export, export, to_mjcf
@@ -38,18 +39,18 @@ from .runner import run
 from .simulation import Simulation
 
 __all__ = [
-           "POSITION",
-           "VELOCITY",
-           "Export",
-           "Params",
-           "Recording",
-           "Sample",
-           "Schedule",
-           "Simulation",
-           "export",
-           "run",
-           "servo",
-           "start_angles",
-           "to_mjcf",
-           "twist_schedule",
+    "POSITION",
+    "VELOCITY",
+    "Export",
+    "Params",
+    "Recording",
+    "Sample",
+    "Schedule",
+    "Simulation",
+    "export",
+    "run",
+    "servo",
+    "start_angles",
+    "to_mjcf",
+    "twist_schedule",
 ]

@@ -13,6 +13,7 @@ any such tree into MJCF bodies, knowing no wheel kind:
   contact point directly below the centre, the paper's thin disk (:mod:`wmr.sim.params` for its
   friction); a drawn disk (no contact) shows the wheel and drawn rods the intermediate bodies.
 """
+
 from __future__ import annotations
 
 import numpy as np
@@ -154,15 +155,21 @@ def _geoms(body, name, r_unit, params, pad):
     if body.wheel is not None:
         r = body.wheel
         mu_t, mu_r = params.torsional * r, params.rolling * r
-        out.append(f'{pad}<geom name="{name}" type="sphere" size="{num(r)}" condim="6" '
-                   f'friction="{nums(params.sliding, mu_t, mu_r)}" solref="{nums(params.contact_time, 1.0)}" '
-                   f'contype="1" conaffinity="0" group="3"/>')
-        out.append(f'{pad}<geom type="cylinder" size="{num(r)}" fromto="{nums(-r / 4, 0.0, 0.0, r / 4, 0.0, 0.0)}" '
-                   f'contype="0" conaffinity="0" group="1"/>')
+        out.append(
+            f'{pad}<geom name="{name}" type="sphere" size="{num(r)}" condim="6" '
+            f'friction="{nums(params.sliding, mu_t, mu_r)}" solref="{nums(params.contact_time, 1.0)}" '
+            f'contype="1" conaffinity="0" group="3"/>'
+        )
+        out.append(
+            f'{pad}<geom type="cylinder" size="{num(r)}" fromto="{nums(-r / 4, 0.0, 0.0, r / 4, 0.0, 0.0)}" '
+            f'contype="0" conaffinity="0" group="1"/>'
+        )
     for a, b in body.rods:
         if np.hypot.reduce(np.subtract(a, b)) > 1e-6 * r_unit:
-            out.append(f'{pad}<geom type="capsule" size="{num(r_unit / 8)}" fromto="{nums(*a, *b)}" '
-                       f'contype="0" conaffinity="0" group="1"/>')
+            out.append(
+                f'{pad}<geom type="capsule" size="{num(r_unit / 8)}" fromto="{nums(*a, *b)}" '
+                f'contype="0" conaffinity="0" group="1"/>'
+            )
     return out
 
 

@@ -6,6 +6,7 @@ dual wheels keep the steering angles of :func:`wmr.steering_angles`; an offset w
 rate its inverse kinematics gives, :math:`\dot\beta_i = \dot\phi_i - \dot\psi` (7).  The steering
 angles along that run are the targets of the steering servos, the rates those of the drive servos.
 """
+
 from __future__ import annotations
 
 import numpy as np
@@ -44,15 +45,16 @@ def start_angles(robot: Robot, twist: Twist) -> FloatArray:
     robot = V.numeric_robot(robot)
     twist = V.finite_array("twist", twist, last=3).reshape(3)
     beta = np.array(steering_angles(robot, twist), dtype=float)
-    pdot = point_velocity(twist, robot.mount_points)                    # (2): c_dot + psi_dot E d_i
+    pdot = point_velocity(twist, robot.mount_points)  # (2): c_dot + psi_dot E d_i
     for i, u in enumerate(robot.wheels):
         if u.steered and not u.rolls_in_plane and np.hypot(*pdot[i]) > 0:
-            beta[i] = np.arctan2(-pdot[i, 0], pdot[i, 1])               # j_i = (-sin, cos) along p_dot_i
+            beta[i] = np.arctan2(-pdot[i, 0], pdot[i, 1])  # j_i = (-sin, cos) along p_dot_i
     return beta
 
 
-def twist_schedule(robot: Robot, twist: Twist, seconds: float, beta0: ArrayLike | None = None,
-                   dt: float = 0.05) -> Schedule:
+def twist_schedule(
+    robot: Robot, twist: Twist, seconds: float, beta0: ArrayLike | None = None, dt: float = 0.05
+) -> Schedule:
     r"""The joint commands of a constant body twist, from wmr's inverse kinematics.
 
     Parameters

@@ -14,6 +14,7 @@ the ground is named after its body (``u2_wheel``; ``u3_wheel1``, ``u3_wheel2`` f
 Nothing here imports MuJoCo, and nothing here knows a wheel kind: the text is written from the units'
 mechanisms, deterministically (the same robot and parameters give the same bytes).
 """
+
 from __future__ import annotations
 
 import functools
@@ -122,16 +123,18 @@ def _platform(robot, params, height):
     """Inertial and drawn plate of the platform: a uniform plate over the mount points' bounding box."""
     P = robot.mount_points
     lo, hi = P.min(axis=0), P.max(axis=0)
-    size = np.maximum(hi - lo, 0.2 * max(float(np.abs(P).max()), height))          # a pair of wheels: still a plate
+    size = np.maximum(hi - lo, 0.2 * max(float(np.abs(P).max()), height))  # a pair of wheels: still a plate
     t = 0.1 * float(size.min())
     a, b = size
     m = params.platform_mass
     inertia = (m * (b * b + t * t) / 12, m * (a * a + t * t) / 12, m * (a * a + b * b) / 12)
     com = P.mean(axis=0)
     centre = (lo + hi) / 2
-    return (f'    <inertial pos="{nums(com[0], com[1], 0.0)}" mass="{num(m)}" diaginertia="{nums(*inertia)}"/>\n'
-            f'    <geom type="box" pos="{nums(centre[0], centre[1], t)}" size="{nums(a / 2, b / 2, t / 2)}" '
-            f'contype="0" conaffinity="0" group="1" rgba="0.6 0.6 0.7 0.5"/>')
+    return (
+        f'    <inertial pos="{nums(com[0], com[1], 0.0)}" mass="{num(m)}" diaginertia="{nums(*inertia)}"/>\n'
+        f'    <geom type="box" pos="{nums(centre[0], centre[1], t)}" size="{nums(a / 2, b / 2, t / 2)}" '
+        f'contype="0" conaffinity="0" group="1" rgba="0.6 0.6 0.7 0.5"/>'
+    )
 
 
 def export(robot: Robot, beta: ArrayLike | None = None, params: Params | None = None, **changes: float) -> Export:
@@ -220,24 +223,30 @@ def _actuator(name, kind, r, params, weight):
     """A servo: its torque limit a fraction of W r, its gain per unit of that limit (:mod:`wmr.sim.params`)."""
     if kind == POSITION:
         tau = params.steer_torque * weight * r
-        return (f'    <position name="{name}" joint="{name}" kp="{num(params.steer_kp * tau)}" '
-                f'dampratio="{num(params.steer_damping)}" forcerange="{nums(-tau, tau)}"/>')
+        return (
+            f'    <position name="{name}" joint="{name}" kp="{num(params.steer_kp * tau)}" '
+            f'dampratio="{num(params.steer_damping)}" forcerange="{nums(-tau, tau)}"/>'
+        )
     tau = params.drive_torque * weight * r
-    return (f'    <velocity name="{name}" joint="{name}" kv="{num(params.drive_kv * tau)}" '
-            f'forcerange="{nums(-tau, tau)}"/>')
+    return (
+        f'    <velocity name="{name}" joint="{name}" kv="{num(params.drive_kv * tau)}" forcerange="{nums(-tau, tau)}"/>'
+    )
 
 
 def _write(robot, params, mechs, height, beta0, weight):
-    lines = [f'<mujoco model="{_escape(robot.name)}">',
-             '  <compiler angle="radian" autolimits="true"/>',
-             (f'  <option timestep="{num(params.timestep)}" integrator="implicitfast" cone="elliptic" '
-              f'impratio="{num(params.impratio)}" jacobian="dense" gravity="0 0 {num(-GRAVITY)}"/>'),
-             "  <worldbody>",
-             ('    <geom name="ground" type="plane" size="0 0 1" friction="0 0 0" contype="0" conaffinity="1" '
-              'condim="6"/>'),
-             f'    <body name="platform" pos="0 0 {num(height)}">',
-             '      <freejoint name="platform"/>',
-             "  " + _platform(robot, params, height).replace("\n", "\n  ")]
+    lines = [
+        f'<mujoco model="{_escape(robot.name)}">',
+        '  <compiler angle="radian" autolimits="true"/>',
+        (
+            f'  <option timestep="{num(params.timestep)}" integrator="implicitfast" cone="elliptic" '
+            f'impratio="{num(params.impratio)}" jacobian="dense" gravity="0 0 {num(-GRAVITY)}"/>'
+        ),
+        "  <worldbody>",
+        ('    <geom name="ground" type="plane" size="0 0 1" friction="0 0 0" contype="0" conaffinity="1" condim="6"/>'),
+        f'    <body name="platform" pos="0 0 {num(height)}">',
+        '      <freejoint name="platform"/>',
+        "  " + _platform(robot, params, height).replace("\n", "\n  "),
+    ]
     for i, (u, m) in enumerate(zip(robot.wheels, mechs)):
         lines += body_xml(m.root, functools.partial(Export.name, i), float(u.r), params, 3)
     lines += ["    </body>", "  </worldbody>", "  <actuator>"]
@@ -245,9 +254,12 @@ def _write(robot, params, mechs, height, beta0, weight):
         lines += [_actuator(Export.name(i, j.name), servo(j), float(u.r), params, weight) for j in m.joints if servo(j)]
     lines.append("  </actuator>")
     drives = drive_names(mechs)
-    if drives:                       # a lock per drive hinge, off until Simulation.lock switches it on (a brake)
-        lines += (["  <equality>"] + [f'    <joint name="{n}_lock" joint1="{n}" polycoef="0 0 0 0 0" active="false"/>'
-                                       for n in drives] + ["  </equality>"])
+    if drives:  # a lock per drive hinge, off until Simulation.lock switches it on (a brake)
+        lines += (
+            ["  <equality>"]
+            + [f'    <joint name="{n}_lock" joint1="{n}" polycoef="0 0 0 0 0" active="false"/>' for n in drives]
+            + ["  </equality>"]
+        )
     qpos = [0.0, 0.0, height, 1.0, 0.0, 0.0, 0.0]
     for i, m in enumerate(mechs):
         qpos += [float(beta0[i]) if j.steering else 0.0 for j in m.joints]

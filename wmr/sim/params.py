@@ -34,6 +34,7 @@ saturates at an error of ``1 / gain``.  The runner feeds a steering servo its ta
 ``kv / kp`` times the target's rate, so that it tracks a turning target without lag (a PD law on the
 error).
 """
+
 from __future__ import annotations
 
 import dataclasses

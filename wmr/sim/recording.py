@@ -6,6 +6,7 @@ the drive servos -- interpolated linearly between knots.  A :class:`Sample` is w
 :meth:`wmr.sim.Simulation.sample` measures at one instant; a :class:`Recording` stacks the samples of a run
 (:func:`wmr.sim.runner.run`).
 """
+
 from __future__ import annotations
 
 from dataclasses import dataclass
@@ -130,6 +131,7 @@ class Recording:
             The twist from the encoders (N, 3) and the residual's norm (N,).
         """
         from ..analysis.kinematics import forward
+
         sol = forward(self.export.robot, self.beta, self.rates)
         return sol.value, np.linalg.norm(sol.residual, axis=-1)
 
@@ -159,8 +161,9 @@ class Schedule:
         beta = V.finite_array("beta", self.beta)
         rates = V.finite_array("rates", self.rates)
         if beta.ndim != 2 or rates.ndim != 2 or len(beta) != len(t) or len(rates) != len(t):
-            raise InputValueError(f"beta and rates must have one row per knot ({len(t)}), got shapes "
-                                  f"{beta.shape} and {rates.shape}")
+            raise InputValueError(
+                f"beta and rates must have one row per knot ({len(t)}), got shapes {beta.shape} and {rates.shape}"
+            )
         object.__setattr__(self, "t", t)
         object.__setattr__(self, "beta", beta)
         object.__setattr__(self, "rates", rates)
@@ -178,8 +181,9 @@ class Schedule:
         -------
         Schedule
         """
-        return cls(np.zeros(1), np.atleast_2d(np.asarray(beta, dtype=float)),
-                   np.atleast_2d(np.asarray(rates, dtype=float)))
+        return cls(
+            np.zeros(1), np.atleast_2d(np.asarray(beta, dtype=float)), np.atleast_2d(np.asarray(rates, dtype=float))
+        )
 
     def at(self, t: ArrayLike) -> tuple[FloatArray, FloatArray]:
         """The commands at times ``t``.

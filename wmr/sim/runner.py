@@ -1,4 +1,5 @@
 r"""Driving a :class:`~wmr.sim.Simulation` along a :class:`~wmr.sim.Schedule`: :func:`run`, and what it records."""
+
 from __future__ import annotations
 
 from collections.abc import Callable
@@ -13,8 +14,14 @@ from .simulation import MAX_STEPS, Simulation
 __all__ = ["run"]
 
 
-def run(sim: Simulation, schedule: Schedule | None, seconds: float, control_dt: float = 0.001, every: int = 10,
-        on_step: Callable[[Simulation], object] | None = None) -> Recording:
+def run(
+    sim: Simulation,
+    schedule: Schedule | None,
+    seconds: float,
+    control_dt: float = 0.001,
+    every: int = 10,
+    on_step: Callable[[Simulation], object] | None = None,
+) -> Recording:
     """Drive a simulation along a schedule and record it.
 
     Each control period the servos get the schedule's command at the period's start (as
@@ -55,7 +62,7 @@ def run(sim: Simulation, schedule: Schedule | None, seconds: float, control_dt: 
     if schedule is not None:
         beta, rates = schedule.at(times)
         turning = schedule.beta_rate(times)
-        ctrl = sim.targets(beta, rates, turning)                 # every servo's target, every period
+        ctrl = sim.targets(beta, rates, turning)  # every servo's target, every period
     samples = []
     for k in range(n):
         if on_step is not None:
@@ -63,15 +70,28 @@ def run(sim: Simulation, schedule: Schedule | None, seconds: float, control_dt: 
         if schedule is not None:
             sim.data.ctrl[:] = ctrl[k]
         if k % every == 0:
-            samples.append(sim.sample())                 # the state at the period's start, with its commands
+            samples.append(sim.sample())  # the state at the period's start, with its commands
         sim.step(steps)
     if schedule is not None:
-        sim.command(beta[-1], rates[-1], turning[-1])    # the last command stays (as command() would have set it)
+        sim.command(beta[-1], rates[-1], turning[-1])  # the last command stays (as command() would have set it)
     samples.append(sim.sample())
     return _stack(sim.export, samples)
 
 
 def _stack(ex, samples):
-    fields = ("t", "pose", "twist", "beta", "rates", "torque", "joint_pos", "joint_vel", "point", "force", "moment",
-              "slip", "dissipation")
+    fields = (
+        "t",
+        "pose",
+        "twist",
+        "beta",
+        "rates",
+        "torque",
+        "joint_pos",
+        "joint_vel",
+        "point",
+        "force",
+        "moment",
+        "slip",
+        "dissipation",
+    )
     return Recording(ex, *(np.array([getattr(s, f) for s in samples]) for f in fields))

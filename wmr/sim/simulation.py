@@ -18,6 +18,7 @@ slipping, (6)), and the power the contact takes from it (:class:`~wmr.sim.record
 
 MuJoCo is imported here only (``pip install 'wmr-kinematics[sim]'``); ``import wmr`` does not import it.
 """
+
 from __future__ import annotations
 
 from collections.abc import Iterable
@@ -43,9 +44,10 @@ MAX_STEPS = 5_000_000
 def _mujoco():
     try:
         import mujoco
-    except ImportError as e:                        # pragma: no cover - the edition's venv has it
-        raise MissingDependencyError(f"wmr.sim needs MuJoCo: pip install '{DISTRIBUTION}[sim]' "
-                                     "(or pip install mujoco)") from e
+    except ImportError as e:  # pragma: no cover - the edition's venv has it
+        raise MissingDependencyError(
+            f"wmr.sim needs MuJoCo: pip install '{DISTRIBUTION}[sim]' (or pip install mujoco)"
+        ) from e
     return mujoco
 
 
@@ -84,8 +86,14 @@ class Simulation:
         The unit (0-based) of each wheel.
     """
 
-    def __init__(self, robot: Robot | Export, beta: ArrayLike | None = None, params: Params | None = None,
-                 settle: float = 0.2, **changes: float) -> None:
+    def __init__(
+        self,
+        robot: Robot | Export,
+        beta: ArrayLike | None = None,
+        params: Params | None = None,
+        settle: float = 0.2,
+        **changes: float,
+    ) -> None:
         mj = _mujoco()
         self._mj = mj
         self.export = robot if isinstance(robot, Export) else export(robot, beta, params, **changes)
@@ -118,7 +126,7 @@ class Simulation:
         self._from_beta, self._from_rates = np.zeros((m.nu, self.robot.w)), np.zeros((m.nu, self.robot.n_rates))
         for i, j, col, _, _ in self._hinges:
             a, kind = self._servo.get(ex.name(i, j.name)), servo(j)
-            if a is not None and kind == POSITION:                  # a driven steering joint
+            if a is not None and kind == POSITION:  # a driven steering joint
                 self._from_beta[a, i] = 1.0
             elif a is not None and kind == VELOCITY and col is not None:
                 self._from_rates[a, col] = 1.0
@@ -134,12 +142,13 @@ class Simulation:
         if settle > 0:
             self.advance(settle)
             self.data.time = 0.0
-            self.data.qpos[0:2] = 0.0                                  # C back at the origin, heading kept
+            self.data.qpos[0:2] = 0.0  # C back at the origin, heading kept
         mj.mj_forward(m, self.data)
 
     # --- commands --------------------------------------------------------------------------
-    def command(self, beta: ArrayLike | None = None, rates: ArrayLike | None = None,
-                beta_rate: ArrayLike | None = None) -> None:
+    def command(
+        self, beta: ArrayLike | None = None, rates: ArrayLike | None = None, beta_rate: ArrayLike | None = None
+    ) -> None:
         r"""Set the servos' targets from steering angles and joint rates (wmr's variables).
 
         Parameters
@@ -241,8 +250,9 @@ class Simulation:
         for n in names:
             eq = self._id(mj.mjtObj.mjOBJ_EQUALITY, f"{n}_lock")
             if eq < 0:
-                raise InputValueError(f"no lockable drive hinge named {V.show(n)}; drives: "
-                                      f"{list(self.export.drive_names)}")
+                raise InputValueError(
+                    f"no lockable drive hinge named {V.show(n)}; drives: {list(self.export.drive_names)}"
+                )
             m.eq_data[eq, 0] = d.qpos[m.jnt_qposadr[m.eq_obj1id[eq]]]
             d.eq_active[eq] = 1
             if n in self._servo:
@@ -352,12 +362,12 @@ class Simulation:
         Sample
         """
         mj, m, d = self._mj, self.model, self.data
-        mj.mj_forward(m, d)                                      # positions, contacts and forces of this state
+        mj.mj_forward(m, d)  # positions, contacts and forces of this state
         q = d.qpos
         psi = _yaw(q[3:7])
         c, s = np.cos(psi), np.sin(psi)
-        v = d.qvel[0:3]                                          # world-frame velocity of C
-        wz = float(d.xmat[self._platform].reshape(3, 3)[:, 2] @ d.qvel[3:6])   # turning rate (body -> world z)
+        v = d.qvel[0:3]  # world-frame velocity of C
+        wz = float(d.xmat[self._platform].reshape(3, 3)[:, 2] @ d.qvel[3:6])  # turning rate (body -> world z)
         twist = np.array([wz, c * v[0] + s * v[1], -s * v[0] + c * v[1]])
         beta = np.array(self.robot.effective_beta(np.zeros(self.robot.w)), dtype=float)
         rates = np.zeros(self.robot.n_rates)
@@ -377,18 +387,31 @@ class Simulation:
             if w is None:
                 continue
             mj.mj_contactForce(m, d, k, self._f6)
-            frame = con.frame.reshape(3, 3)                      # rows: normal (geom1 -> geom2), tangents
-            sign = 1.0 if g2 in self._geom else -1.0             # the force on geom2 is +, on geom1 -
+            frame = con.frame.reshape(3, 3)  # rows: normal (geom1 -> geom2), tangents
+            sign = 1.0 if g2 in self._geom else -1.0  # the force on geom2 is +, on geom1 -
             f = sign * (frame.T @ self._f6[:3])
             tq = sign * (frame.T @ self._f6[3:6])
             p = np.array(con.pos)
             mj.mj_jac(m, d, self._jacp, self._jacr, p, self._wheel_body[w])
-            u, om = self._jacp @ d.qvel, self._jacr @ d.qvel         # the wheel's point at p, the wheel's spin
+            u, om = self._jacp @ d.qvel, self._jacr @ d.qvel  # the wheel's point at p, the wheel's spin
             force[w] += f
             moment[w] += tq
             point[w] = p
             slip[w] = u[:2]
             power[w] -= f @ u + tq @ om
         torque = np.array(d.actuator_force, dtype=float)
-        return Sample(float(d.time), np.array([psi, q[0], q[1]]), twist, beta, rates, torque, q[self._qa].copy(),
-                      d.qvel[self._da].copy(), point, force, moment, slip, power)
+        return Sample(
+            float(d.time),
+            np.array([psi, q[0], q[1]]),
+            twist,
+            beta,
+            rates,
+            torque,
+            q[self._qa].copy(),
+            d.qvel[self._da].copy(),
+            point,
+            force,
+            moment,
+            slip,
+            power,
+        )

@@ -25,6 +25,7 @@ Discretisation
     ends at :math:`(\dot\psi\Delta t, \dot x\Delta t, \dot y\Delta t)`, i.e. :func:`se2_log` of that
     pose over :math:`\Delta t` (WPILib's ``ChassisSpeeds.discretize``).
 """
+
 from __future__ import annotations
 
 import numpy as np
@@ -69,8 +70,9 @@ def desaturation_scale(robot: Robot, twist: Twist, max_speed: float) -> FloatArr
         peak = np.hypot(px, py).max(axis=-1) * m[..., 0]
         k = np.where(peak > max_speed, max_speed / np.where(peak > 0, peak, 1.0), 1.0)
     if not np.isfinite(k).all():
-        raise InputValueError(f"twist is too large: the module speeds overflow "
-                              f"(largest |twist| = {np.abs(t).max():.3g})")
+        raise InputValueError(
+            f"twist is too large: the module speeds overflow (largest |twist| = {np.abs(t).max():.3g})"
+        )
     return k
 
 
@@ -170,9 +172,9 @@ def se2_exp(twist: Twist, dt: float = 1.0) -> FloatArray:
         A, B = _coefficients(g[..., 0])
         out = np.stack([g[..., 0], A * g[..., 1] - B * g[..., 2], B * g[..., 1] + A * g[..., 2]], axis=-1)
     if not np.isfinite(out).all():
-        raise InputValueError(f"twist and dt are too large: the pose overflows "
-                              f"(largest |twist| = {np.abs(t).max():.3g}, "
-                         f"dt = {dt!r})")
+        raise InputValueError(
+            f"twist and dt are too large: the pose overflows (largest |twist| = {np.abs(t).max():.3g}, dt = {dt!r})"
+        )
     return out
 
 
@@ -204,13 +206,17 @@ def se2_log(delta: ArrayLike, dt: float = 1.0) -> FloatArray:
     g = V.finite_array("delta", delta, last=3)
     dt = V.number("dt", V.positive("dt", dt))
     if np.any(np.abs(g[..., 0]) >= 2 * np.pi):
-        raise InputValueError(f"delta must turn by less than 2 pi (the logarithm is not unique), got "
-                         f"|delta psi| up to {np.abs(g[..., 0]).max():.6g}")
+        raise InputValueError(
+            f"delta must turn by less than 2 pi (the logarithm is not unique), got "
+            f"|delta psi| up to {np.abs(g[..., 0]).max():.6g}"
+        )
     A, B = _coefficients(g[..., 0])
     n = A * A + B * B
     with np.errstate(over="ignore", invalid="ignore", under="ignore"):
-        out = np.stack([g[..., 0], (A * g[..., 1] + B * g[..., 2]) / n, (A * g[..., 2] - B * g[..., 1]) / n],
-                       axis=-1) / dt
+        out = (
+            np.stack([g[..., 0], (A * g[..., 1] + B * g[..., 2]) / n, (A * g[..., 2] - B * g[..., 1]) / n], axis=-1)
+            / dt
+        )
     if not np.isfinite(out).all():
         raise InputValueError(f"delta and dt give a twist beyond double precision (dt = {dt!r})")
     return out

@@ -31,6 +31,7 @@ Speed
     along :math:`-\mathbf j_i`, m/s); turning the module by :math:`\pi` and negating :math:`s_i` gives
     the same wheel velocity.
 """
+
 from __future__ import annotations
 
 from dataclasses import dataclass
@@ -45,8 +46,18 @@ from ..model.conventions import angle_from, angle_to
 from ..model.robot import Robot
 from ..model.types import ArrayLike, FloatArray, Twist
 
-__all__ = ["ModuleCommand", "swerve_robot", "radii", "module_commands", "module_speeds", "chassis_twist",
-           "to_wpilib", "from_wpilib", "to_chassis", "from_chassis"]
+__all__ = [
+    "ModuleCommand",
+    "swerve_robot",
+    "radii",
+    "module_commands",
+    "module_speeds",
+    "chassis_twist",
+    "to_wpilib",
+    "from_wpilib",
+    "to_chassis",
+    "from_chassis",
+]
 
 
 @dataclass(frozen=True)
@@ -171,7 +182,7 @@ def module_commands(robot: Robot, twist: Twist, current: ArrayLike | None = None
     robot = swerve_robot(robot)
     twist = V.twist_array("twist", twist)
     m = np.abs(twist).max(axis=-1, keepdims=True)
-    beta = steering_angles(robot, twist / np.where(m > 0, m, 1.0), current)   # angles: scale-free, no overflow
+    beta = steering_angles(robot, twist / np.where(m > 0, m, 1.0), current)  # angles: scale-free, no overflow
     return ModuleCommand(beta, module_speeds(robot, beta, twist))
 
 
@@ -200,8 +211,10 @@ def chassis_twist(robot: Robot, beta: ArrayLike, speed: ArrayLike) -> Solution:
     with np.errstate(over="ignore"):
         rates = speed / radii(robot)
     if not np.isfinite(rates).all():
-        raise InputValueError(f"speed is too large for these wheel radii: the rolling rates overflow "
-                         f"(largest |speed| = {np.abs(speed).max():.3g})")
+        raise InputValueError(
+            f"speed is too large for these wheel radii: the rolling rates overflow "
+            f"(largest |speed| = {np.abs(speed).max():.3g})"
+        )
     return forward(robot, beta, rates)
 
 

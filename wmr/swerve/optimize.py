@@ -23,6 +23,7 @@ no twist can absorb (the residual of (21), :func:`wmr.forward`).  A pattern whos
 completely throughout costs as much as one radian more of turning per module.  Ties go to the
 fewest flips.
 """
+
 from __future__ import annotations
 
 from dataclasses import dataclass
@@ -68,8 +69,9 @@ class SteeringChoice:
     slip: np.ndarray
 
 
-def transition_slip(robot: Robot, current: ArrayLike, beta: ArrayLike, speed: ArrayLike,
-                    samples: int = 8) -> FloatArray:
+def transition_slip(
+    robot: Robot, current: ArrayLike, beta: ArrayLike, speed: ArrayLike, samples: int = 8
+) -> FloatArray:
     r"""Mean relative slip while the modules turn from ``current`` to ``beta`` at one common rate.
 
     Module :math:`i` turns along its shorter arc :math:`\Delta_i = \operatorname{wrap}(\beta_i -
@@ -114,15 +116,15 @@ def transition_slip(robot: Robot, current: ArrayLike, beta: ArrayLike, speed: Ar
     speed = V.finite_array("speed", speed, last=w)
     samples = V.integer("samples", samples, minimum=1)
     batch = V.batch_shape({"current": current, "beta": beta, "speed": speed})
-    delta = wrap_angle(beta - current)                                  # (..., w), shorter arcs
-    span = np.abs(delta).max(axis=-1, keepdims=True)                    # (..., 1)
-    tau = (np.arange(samples) + 0.5) / samples * span                    # (..., K)
-    path = current[..., None, :] + np.clip(delta[..., None, :], -tau[..., None], tau[..., None])   # (..., K, w)
+    delta = wrap_angle(beta - current)  # (..., w), shorter arcs
+    span = np.abs(delta).max(axis=-1, keepdims=True)  # (..., 1)
+    tau = (np.arange(samples) + 0.5) / samples * span  # (..., K)
+    path = current[..., None, :] + np.clip(delta[..., None, :], -tau[..., None], tau[..., None])  # (..., K, w)
     s = np.broadcast_to(speed, batch + (w,))[..., None, :]
     m = np.abs(s).max(axis=-1, keepdims=True)
-    s = s / np.where(m > 0, m, 1.0)                                     # the ratio is scale-free: no overflow
-    sol = chassis_twist(robot, path, s)                                 # (21) least squares at each sample
-    size = np.linalg.norm(s, axis=-1)                                   # |J2 theta_dot| = |s|
+    s = s / np.where(m > 0, m, 1.0)  # the ratio is scale-free: no overflow
+    sol = chassis_twist(robot, path, s)  # (21) least squares at each sample
+    size = np.linalg.norm(s, axis=-1)  # |J2 theta_dot| = |s|
     rel = np.linalg.norm(sol.residual, axis=-1) / np.where(size > 0, size, 1.0)
     return np.minimum(rel, 1.0).mean(axis=-1)
 
@@ -213,21 +215,22 @@ def optimize_robot(robot: Robot, twist: Twist, current: ArrayLike, samples: int 
     robot, cmd, cur = _targets(robot, twist, current)
     w = robot.w
     if w > MAX_MODULES:
-        raise InputValueError(f"robot has {w} modules: optimize_robot enumerates 2^w patterns, at most "
-                         f"{MAX_MODULES} modules")
+        raise InputValueError(
+            f"robot has {w} modules: optimize_robot enumerates 2^w patterns, at most {MAX_MODULES} modules"
+        )
     samples = V.integer("samples", samples, minimum=1)
-    flips = ((np.arange(2 ** w)[:, None] >> np.arange(w)) & 1).astype(bool)           # (P, w), P = 2^w
-    flips = flips[np.argsort(flips.sum(axis=1), kind="stable")]                      # fewest flips first
-    beta = wrap_angle(cmd.beta[..., None, :] + np.pi * flips)                        # (..., P, w)
+    flips = ((np.arange(2**w)[:, None] >> np.arange(w)) & 1).astype(bool)  # (P, w), P = 2^w
+    flips = flips[np.argsort(flips.sum(axis=1), kind="stable")]  # fewest flips first
+    beta = wrap_angle(cmd.beta[..., None, :] + np.pi * flips)  # (..., P, w)
     speed = np.where(flips, -cmd.speed[..., None, :], cmd.speed[..., None, :])
-    resteer = np.abs(wrap_angle(beta - cur[..., None, :])).sum(axis=-1)             # (..., P)
+    resteer = np.abs(wrap_angle(beta - cur[..., None, :])).sum(axis=-1)  # (..., P)
     slip = transition_slip(robot, cur[..., None, :], beta, speed, samples)
-    best = np.argmin(resteer + w * slip, axis=-1)                                    # J(f), first minimum
+    best = np.argmin(resteer + w * slip, axis=-1)  # J(f), first minimum
 
-    def take(a):                                           # the best pattern's row of a (..., P, w) array
+    def take(a):  # the best pattern's row of a (..., P, w) array
         return np.take_along_axis(a, best[..., None, None], axis=-2)[..., 0, :]
 
-    def pick(a):                                           # its entry of a (..., P) array
+    def pick(a):  # its entry of a (..., P) array
         return np.take_along_axis(a, best[..., None], axis=-1)[..., 0]
 
     flip = np.broadcast_to(flips, beta.shape)

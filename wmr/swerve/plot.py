@@ -2,6 +2,7 @@ r"""Drawing re-steering studies (matplotlib, imported here only: ``import wmr`` 
 
 The data come from :func:`wmr.swerve.transient.resteer_study`; this module only draws them.
 """
+
 from __future__ import annotations
 
 from typing import TYPE_CHECKING
@@ -11,7 +12,7 @@ import numpy as np
 from ..errors import InputTypeError
 from .transient import TransientStudy
 
-if TYPE_CHECKING:                                   # matplotlib is imported when a figure is drawn
+if TYPE_CHECKING:  # matplotlib is imported when a figure is drawn
     from matplotlib.figure import Figure
 
 __all__ = ["transient_figure"]
@@ -36,6 +37,7 @@ def transient_figure(study: TransientStudy, fig: Figure | None = None) -> Figure
     """
     from ..plot.style import PALETTE, ROLE, new_figure, panel_title, style
     from .transient import TransientStudy
+
     if not isinstance(study, TransientStudy):
         raise InputTypeError(f"study must be a TransientStudy (wmr.swerve.resteer_study), got {type(study).__name__}")
     colours = list(ROLE["path"]) + [PALETTE["blue"], PALETTE["grey"]]
@@ -46,7 +48,7 @@ def transient_figure(study: TransientStudy, fig: Figure | None = None) -> Figure
         for i, run in enumerate(study.runs):
             c = colours[i % len(colours)]
             ls = ":" if run.label.endswith("cos") else "-"
-            lw = 2.8 if i == 0 else 1.2                           # the first run wide: others may run on it
+            lw = 2.8 if i == 0 else 1.2  # the first run wide: others may run on it
             ax_p.plot(run.pose[:, 1], run.pose[:, 2], color=c, ls=ls, lw=lw, label=run.label)
             ax_s.plot(run.t[1:], run.slip, color=c, ls=ls, lw=lw, label=run.label)
             ax_e.plot(run.t, run.path_error, color=c, ls=ls, lw=lw, label=run.label)
@@ -64,6 +66,5 @@ def transient_figure(study: TransientStudy, fig: Figure | None = None) -> Figure
             ax.set_ylim(bottom=0.0)
             ax.grid(True, lw=0.3, color=PALETTE["light"])
         ax_p.legend(loc="best")
-        fig.suptitle(f"{study.profile.name}: steering rate {np.degrees(study.steer_rate):.0f} deg/s",
-                     fontsize=10.0)
+        fig.suptitle(f"{study.profile.name}: steering rate {np.degrees(study.steer_rate):.0f} deg/s", fontsize=10.0)
     return fig

@@ -25,6 +25,7 @@ Model, one control period :math:`\Delta t` after another (step :math:`k`):
 A run is deterministic (no random input, a fixed step); data functions return dataclasses and
 :mod:`wmr.swerve.plot` draws them.
 """
+
 from __future__ import annotations
 
 from collections.abc import Sequence
@@ -42,8 +43,17 @@ from .limits import cosine_compensate, se2_exp
 from .modules import chassis_twist, module_commands, swerve_robot
 from .optimize import optimize_modules, optimize_robot
 
-__all__ = ["TwistProfile", "Transient", "TransientStudy", "direction_change", "spin_and_translate",
-           "resteer_transient", "resteer_study", "STRATEGIES", "MAX_STEPS"]
+__all__ = [
+    "TwistProfile",
+    "Transient",
+    "TransientStudy",
+    "direction_change",
+    "spin_and_translate",
+    "resteer_transient",
+    "resteer_study",
+    "STRATEGIES",
+    "MAX_STEPS",
+]
 
 #: The strategies compared by :func:`resteer_study`: (strategy, cosine compensation).
 STRATEGIES = (("plain", False), ("module", False), ("module", True), ("robot", False), ("robot", True))
@@ -92,14 +102,20 @@ def _body(field_velocity, psi_dot, t, names):
         psi = np.concatenate([[0.0], np.cumsum(psi_dot[:-1])]) * (t[1] - t[0] if len(t) > 1 else 0.0)
         c, s = np.cos(psi), np.sin(psi)
         vx, vy = field_velocity[:, 0], field_velocity[:, 1]
-        out = np.column_stack([psi_dot, c * vx + s * vy, -s * vx + c * vy])        # R(-psi) v
+        out = np.column_stack([psi_dot, c * vx + s * vy, -s * vx + c * vy])  # R(-psi) v
     if not np.isfinite(out).all():
         raise InputValueError(f"{names} are too large: the commanded twist or heading overflows double precision")
     return out
 
 
-def direction_change(speed: float = 1.0, angle: float = np.pi / 2, spin: float = 0.0, t_change: float = 0.25,
-                     t_end: float = 1.0, dt: float = 0.01) -> TwistProfile:
+def direction_change(
+    speed: float = 1.0,
+    angle: float = np.pi / 2,
+    spin: float = 0.0,
+    t_change: float = 0.25,
+    t_end: float = 1.0,
+    dt: float = 0.01,
+) -> TwistProfile:
     r"""Drive along the fixed x axis, then, at ``t_change``, along the direction ``angle``.
 
     Parameters
@@ -136,8 +152,9 @@ def direction_change(speed: float = 1.0, angle: float = np.pi / 2, spin: float =
     return TwistProfile(name, dt, _body(v, np.full(len(t), spin), t, "speed and spin"))
 
 
-def spin_and_translate(speed: float = 1.0, rate: float = 3.0, t_start: float = 0.25, t_end: float = 1.0,
-                       dt: float = 0.01) -> TwistProfile:
+def spin_and_translate(
+    speed: float = 1.0, rate: float = 3.0, t_start: float = 0.25, t_end: float = 1.0, dt: float = 0.01
+) -> TwistProfile:
     r"""Drive along the fixed x axis; from ``t_start`` on, keep doing so while spinning at ``rate``.
 
     In the body frame the velocity of C turns at :math:`-\dot\psi`: every module must keep steering.
@@ -239,8 +256,14 @@ def _targets(robot, strategy, twist, beta):
     return ch.beta, ch.speed
 
 
-def resteer_transient(robot: Robot, profile: TwistProfile, strategy: str = "robot", cosine: bool = False,
-                      steer_rate: float = 2 * np.pi, beta0: ArrayLike | None = None) -> Transient:
+def resteer_transient(
+    robot: Robot,
+    profile: TwistProfile,
+    strategy: str = "robot",
+    cosine: bool = False,
+    steer_rate: float = 2 * np.pi,
+    beta0: ArrayLike | None = None,
+) -> Transient:
     r"""Simulate rate-limited modules following ``profile`` (module docstring: the four steps).
 
     Parameters
@@ -271,8 +294,9 @@ def resteer_transient(robot: Robot, profile: TwistProfile, strategy: str = "robo
     """
     robot = swerve_robot(robot)
     if not isinstance(profile, TwistProfile):
-        raise InputTypeError(f"profile must be a TwistProfile (direction_change(), spin_and_translate()), "
-                        f"got {V.show(profile)}")
+        raise InputTypeError(
+            f"profile must be a TwistProfile (direction_change(), spin_and_translate()), got {V.show(profile)}"
+        )
     if not isinstance(strategy, str) or strategy not in ("plain", "module", "robot"):
         raise InputValueError(f"strategy must be 'plain', 'module' or 'robot', got {V.show(strategy)}")
     cosine = V.flag("cosine", cosine)
@@ -289,18 +313,18 @@ def resteer_transient(robot: Robot, profile: TwistProfile, strategy: str = "robo
     k = 0
     try:
         with np.errstate(over="ignore", invalid="ignore"), constants_kept(robot):
-            for k, t_k in enumerate(tw):                          # time steps (each kernel call is batched)
+            for k, t_k in enumerate(tw):  # time steps (each kernel call is batched)
                 target, speed = _targets(robot, strategy, t_k, beta[k])
-                beta[k + 1] = beta[k] + np.clip(wrap_angle(target - beta[k]), -step, step)   # |beta_dot| <= omega_s
+                beta[k + 1] = beta[k] + np.clip(wrap_angle(target - beta[k]), -step, step)  # |beta_dot| <= omega_s
                 if cosine:
                     speed = cosine_compensate(speed, beta[k + 1], target)
                 speeds[k] = speed
-                sol = chassis_twist(robot, beta[k + 1], speed)   # (21): least squares; residual = slip
+                sol = chassis_twist(robot, beta[k + 1], speed)  # (21): least squares; residual = slip
                 twist[k], slip[k] = sol.value, np.hypot.reduce(sol.residual)
                 pose[k + 1] = _compose(pose[k], se2_exp(sol.value, dt))
                 ref[k + 1] = _compose(ref[k], se2_exp(t_k, dt))
             err = np.hypot(*(pose[:, 1:] - ref[:, 1:]).T)
-    except ValueError as e:                                       # a kernel's check, said of the profile
+    except ValueError as e:  # a kernel's check, said of the profile
         raise InputValueError(f"profile commands a twist this simulation cannot follow (period {k}): {e}") from None
     if not all(np.isfinite(a).all() for a in (pose, ref, slip, err)):
         raise InputValueError("profile commands twists too large: the simulated poses overflow double precision")
@@ -334,9 +358,17 @@ class TransientStudy:
             Keys ``strategy``, ``slip_distance_m``, ``peak_slip_m_s``, ``max_path_error_m``,
             ``final_path_error_m``, ``steering_travel_rad``.
         """
-        return [{"strategy": r.label, "slip_distance_m": r.slip_distance, "peak_slip_m_s": r.peak_slip,
-                 "max_path_error_m": r.max_path_error, "final_path_error_m": r.final_path_error,
-                 "steering_travel_rad": r.steering_travel} for r in self.runs]
+        return [
+            {
+                "strategy": r.label,
+                "slip_distance_m": r.slip_distance,
+                "peak_slip_m_s": r.peak_slip,
+                "max_path_error_m": r.max_path_error,
+                "final_path_error_m": r.final_path_error,
+                "steering_travel_rad": r.steering_travel,
+            }
+            for r in self.runs
+        ]
 
     def run(self, label: str) -> Transient:
         """The run of one strategy.
@@ -356,8 +388,12 @@ class TransientStudy:
         raise InputValueError(f"label must be one of {[r.label for r in self.runs]}, got {V.show(label)}")
 
 
-def resteer_study(robot: Robot, profile: TwistProfile, steer_rate: float = 2 * np.pi,
-                  strategies: Sequence[tuple[str, bool]] = STRATEGIES) -> TransientStudy:
+def resteer_study(
+    robot: Robot,
+    profile: TwistProfile,
+    steer_rate: float = 2 * np.pi,
+    strategies: Sequence[tuple[str, bool]] = STRATEGIES,
+) -> TransientStudy:
     r"""Run every strategy on one profile: the data of the figure and table of the design notebook.
 
     Parameters

@@ -17,11 +17,28 @@ The checks, by equation group:
 :mod:`.dead_zone`  the dead zone: the circle C traces when every unit turns with the drives locked
 =================  =======================================================================================
 """
+
 from .dead_zone import dead_zone, dead_zone_claim
 from .drift import drift, drift_of_c, drift_of_psi
 from .locked import concurrent_angles, drift_motions, locked_motion, locked_steering, locked_system
 from .matrices import PAPER, functional_matrix, general_robot, mobility_offset, null_space_of_F, one_unit, stacking
 
-__all__ = ["PAPER", "general_robot", "one_unit", "stacking", "functional_matrix", "null_space_of_F", "mobility_offset",
-           "locked_system", "locked_motion", "concurrent_angles", "locked_steering", "drift_motions",
-           "drift_of_c", "drift_of_psi", "drift", "dead_zone", "dead_zone_claim"]
+__all__ = [
+    "PAPER",
+    "general_robot",
+    "one_unit",
+    "stacking",
+    "functional_matrix",
+    "null_space_of_F",
+    "mobility_offset",
+    "locked_system",
+    "locked_motion",
+    "concurrent_angles",
+    "locked_steering",
+    "drift_motions",
+    "drift_of_c",
+    "drift_of_psi",
+    "drift",
+    "dead_zone",
+    "dead_zone_claim",
+]

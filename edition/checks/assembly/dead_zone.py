@@ -2,6 +2,7 @@ r"""The dead zone: the circle C traces when every unit turns with the drives loc
 
 Chapter 2's checks live in :mod:`edition.checks.assembly`; this module holds one group of them.
 """
+
 from __future__ import annotations
 
 import numpy as np
@@ -45,11 +46,16 @@ def dead_zone(robot, beta0=0.4, T=2 * np.pi, steps=200):
     centre, radius = np.array([a, b]), float(np.sqrt(c + a * a + b * b))
     G = np.stack([run.unit_points(i, "H") for i in range(robot.w)], axis=1)
     Cf = G.mean(axis=1)
-    return {"radius": radius, "circle_fit": float(np.abs(np.linalg.norm(C - centre, axis=1) - radius).max()),
-            "contact_drift": float(np.ptp(G, axis=0).max()), "centre_minus_Cf": float(np.linalg.norm(centre - Cf[0])),
-            "CCf_min": float(np.linalg.norm(C - Cf, axis=1).min()), "CCf_max": float(np.linalg.norm(C - Cf,
-                                                                                                    axis=1).max()),
-            "psi_drift": float(np.ptp(run.pose[:, 0])), "max_slip": float(run.slip.max())}
+    return {
+        "radius": radius,
+        "circle_fit": float(np.abs(np.linalg.norm(C - centre, axis=1) - radius).max()),
+        "contact_drift": float(np.ptp(G, axis=0).max()),
+        "centre_minus_Cf": float(np.linalg.norm(centre - Cf[0])),
+        "CCf_min": float(np.linalg.norm(C - Cf, axis=1).min()),
+        "CCf_max": float(np.linalg.norm(C - Cf, axis=1).max()),
+        "psi_drift": float(np.ptp(run.pose[:, 0])),
+        "max_slip": float(run.slip.max()),
+    }
 
 
 def dead_zone_claim(origin=(0.06, -0.04), steps=200):
@@ -75,19 +81,42 @@ def dead_zone_claim(origin=(0.06, -0.04), steps=200):
     d = PAPER["d"]
     on, off = dead_zone(paper, steps=steps), dead_zone(moved, steps=steps)
     shift = float(np.linalg.norm(moved.mount_points.mean(0)))
-    holds = (abs(on["radius"] - d) < TOL and on["contact_drift"] < TOL and on["centre_minus_Cf"] < TOL
-             and abs(on["CCf_max"] - d) < TOL and abs(on["CCf_min"] - d) < TOL and on["max_slip"] < TOL
-             and on["psi_drift"] < TOL and on["circle_fit"] < TOL)
-    require(abs(off["radius"] - d) < TOL and off["contact_drift"] < TOL and abs(off["centre_minus_Cf"] - shift) < TOL
-            and abs(off["CCf_min"] - abs(shift - d)) < 1e-3 and abs(off["CCf_max"] - (shift + d)) < 1e-3,
-            "with C off the centroid: radius d, centre shifted by |C - centroid|")
+    holds = (
+        abs(on["radius"] - d) < TOL
+        and on["contact_drift"] < TOL
+        and on["centre_minus_Cf"] < TOL
+        and abs(on["CCf_max"] - d) < TOL
+        and abs(on["CCf_min"] - d) < TOL
+        and on["max_slip"] < TOL
+        and on["psi_drift"] < TOL
+        and on["circle_fit"] < TOL
+    )
+    require(
+        abs(off["radius"] - d) < TOL
+        and off["contact_drift"] < TOL
+        and abs(off["centre_minus_Cf"] - shift) < TOL
+        and abs(off["CCf_min"] - abs(shift - d)) < 1e-3
+        and abs(off["CCf_max"] - (shift + d)) < 1e-3,
+        "with C off the centroid: radius d, centre shifted by |C - centroid|",
+    )
     res = max(abs(on["radius"] - d), on["centre_minus_Cf"], on["contact_drift"])
-    return Derivation(on=on, off=off, shift=shift, findings=[claim(
-        "dead-zone", holds, f"`wmr.simulate` ({steps} RK4 steps), all units steered one full turn with the drives "
-                            "locked: the contact points stay fixed, the platform does not turn, and C runs once "
-                            "around a circle of radius $d$ about their centroid $C_f$, so $|CC_f| = d$ "
-                            "throughout", res,
-        convention=r"all $\beta_i$ equal (parallel arms), C at the centroid of the $P_i$",
-        note=rf"with C moved off the centroid by ${shift:.3f}$ the radius is still $d$, but the centre is "
-             r"$C_f + (C - \bar P)$ and $|CC_f|$ runs from "
-             rf"${off['CCf_min']:.3f}$ to ${off['CCf_max']:.3f}$")])
+    return Derivation(
+        on=on,
+        off=off,
+        shift=shift,
+        findings=[
+            claim(
+                "dead-zone",
+                holds,
+                f"`wmr.simulate` ({steps} RK4 steps), all units steered one full turn with the drives "
+                "locked: the contact points stay fixed, the platform does not turn, and C runs once "
+                "around a circle of radius $d$ about their centroid $C_f$, so $|CC_f| = d$ "
+                "throughout",
+                res,
+                convention=r"all $\beta_i$ equal (parallel arms), C at the centroid of the $P_i$",
+                note=rf"with C moved off the centroid by ${shift:.3f}$ the radius is still $d$, but the centre is "
+                r"$C_f + (C - \bar P)$ and $|CC_f|$ runs from "
+                rf"${off['CCf_min']:.3f}$ to ${off['CCf_max']:.3f}$",
+            )
+        ],
+    )

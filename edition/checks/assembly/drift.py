@@ -2,6 +2,7 @@ r"""Drift, (28)-(29): how C and psi move when the drives are locked.
 
 Chapter 2's checks live in :mod:`edition.checks.assembly`; this module holds one group of them.
 """
+
 from __future__ import annotations
 
 import numpy as np
@@ -72,16 +73,26 @@ def drift_of_c(c_dot, n=100, origin=(0.06, -0.04), seed=SEED):
             else:
                 res_off = max(res_off, e)
     require(needs_centroid and res_off > 1e-3, "the printed (28) fails with C off the centroid")
-    return Derivation(extra=extra, off_centroid=res_off, findings=[equation(
-        28, holds, r"the sum of the block rows of (21) with $\dot\theta_i = 0$, solved for $\dot{\mathbf c}$, is the "
-                   r"printed form when $\sum_i\mathbf d_i = \mathbf 0$ (SymPy); it holds on "
-                   f"{n} simulated drift motions of the paper's robot", res,
-        convention=r"$\sum_i\mathbf d_i = \mathbf 0$ (C at the centroid of the $P_i$); $\dot{\mathbf c}$ in body "
-                   r"components",
-        note=r"in general $\dot{\mathbf c}$ gains $-\tfrac{\dot\psi}{3}\mathbf E\sum_i\mathbf d_i$: with C moved off "
-             r"the "
-             f"centroid the printed form is off by up to ${res_off:.2f}$ on the same motions. It holds on every "
-             "solution, but solutions exist only for concurrent or parallel arms (see the claim `drift`)")])
+    return Derivation(
+        extra=extra,
+        off_centroid=res_off,
+        findings=[
+            equation(
+                28,
+                holds,
+                r"the sum of the block rows of (21) with $\dot\theta_i = 0$, solved for $\dot{\mathbf c}$, is the "
+                r"printed form when $\sum_i\mathbf d_i = \mathbf 0$ (SymPy); it holds on "
+                f"{n} simulated drift motions of the paper's robot",
+                res,
+                convention=r"$\sum_i\mathbf d_i = \mathbf 0$ (C at the centroid of the $P_i$); $\dot{\mathbf c}$ in body "
+                r"components",
+                note=r"in general $\dot{\mathbf c}$ gains $-\tfrac{\dot\psi}{3}\mathbf E\sum_i\mathbf d_i$: with C moved off "
+                r"the "
+                f"centroid the printed form is off by up to ${res_off:.2f}$ on the same motions. It holds on every "
+                "solution, but solutions exist only for concurrent or parallel arms (see the claim `drift`)",
+            )
+        ],
+    )
 
 
 def drift_of_psi(a, b, c, J1, n=100, seed=SEED):
@@ -119,8 +130,9 @@ def drift_of_psi(a, b, c, J1, n=100, seed=SEED):
     centroid = {S.D[2][0]: -S.D[0][0] - S.D[1][0], S.D[2][1]: -S.D[0][1] - S.D[1][1]}
     b_vanishes = symbolic_equal(b.subs(centroid), sp.zeros(2, 1))
     psi_dot = sp.expand((-(b.T * cdot)[0] - c).subs(centroid)) / sp.expand(a.subs(centroid))
-    paper_route = symbolic_equal((cdot.T * E(SYMBOLIC) * (J1 * t)[0:2, :])[0],
-                                 -S.psi_dot * (cdot.T * sp.Matrix(S.D[0]))[0])
+    paper_route = symbolic_equal(
+        (cdot.T * E(SYMBOLIC) * (J1 * t)[0:2, :])[0], -S.psi_dot * (cdot.T * sp.Matrix(S.D[0]))[0]
+    )
     f = sp.lambdify([*sum(S.D, ()), *S.beta, *S.phi_dot, S.d], psi_dot, "numpy")
     rng = np.random.default_rng(seed)
     res, gap = 0.0, 0.0
@@ -137,23 +149,38 @@ def drift_of_psi(a, b, c, J1, n=100, seed=SEED):
         reading = d / 3 * sum(Dk @ tk / (Dk @ Dk) for Dk, tk in zip(D, terms, strict=True))
         res = max(res, abs(x[0] - f(*D.ravel(), *bc, *x[3:], d)))
         gap = max(gap, abs(x[0] - reading))
-    corrected = (r"\dot\psi = \frac{d\sum_{i=1}^{3}(\mathbf E\mathbf d_i)^{\mathrm T}\mathbf R_{bwi}"
-                 r"\begin{bmatrix}-\dot\phi_i\\ 0\end{bmatrix}}{\sum_{i=1}^{3}\mathbf d_i^{\mathrm T}\mathbf d_i}")
-    return Derivation(error=error, psi_dot=psi_dot, gap=gap, findings=[equation(
-        29, error is None, r"projecting (20) on $(\mathbf E\mathbf d_i)^{\mathrm T}$ and summing with "
-                           r"$\dot\theta_i = 0$ gives the corrected form when $\sum_i\mathbf d_i = \mathbf 0$ (SymPy); "
-                           r"it equals the true "
-                           rf"$\dot\psi$ on {n} simulated drift motions of random triangles", res,
-        refuted=r"the right side divides the 2-vector $\mathbf R_{bwi}[-\dot\phi_i\ \ 0]^{\mathrm T}$ by the 2-vector "
+    corrected = (
+        r"\dot\psi = \frac{d\sum_{i=1}^{3}(\mathbf E\mathbf d_i)^{\mathrm T}\mathbf R_{bwi}"
+        r"\begin{bmatrix}-\dot\phi_i\\ 0\end{bmatrix}}{\sum_{i=1}^{3}\mathbf d_i^{\mathrm T}\mathbf d_i}"
+    )
+    return Derivation(
+        error=error,
+        psi_dot=psi_dot,
+        gap=gap,
+        findings=[
+            equation(
+                29,
+                error is None,
+                r"projecting (20) on $(\mathbf E\mathbf d_i)^{\mathrm T}$ and summing with "
+                r"$\dot\theta_i = 0$ gives the corrected form when $\sum_i\mathbf d_i = \mathbf 0$ (SymPy); "
+                r"it equals the true "
+                rf"$\dot\psi$ on {n} simulated drift motions of random triangles",
+                res,
+                refuted=r"the right side divides the 2-vector $\mathbf R_{bwi}[-\dot\phi_i\ \ 0]^{\mathrm T}$ by the 2-vector "
                 r"$\mathbf d_i$, which SymPy rejects; read with $\mathbf d_i^{\mathrm T}/\|\mathbf d_i\|^2$ it is off "
                 r"by up "
                 rf"to ${gap:.2f}$ rad/s when $\dot\psi = 1$",
-        corrected=corrected, corrected_holds=b_vanishes and paper_route and res < TOL, severity="wrong",
-        why=r"the printed form divides a vector by a vector; multiplying (20) by "
-            r"$\dot{\mathbf c}^{\mathrm T}\mathbf E$ eliminates $\dot{\mathbf c}$, not $\dot\theta_i$",
-        convention=r"$\dot\theta_i = 0$, $\sum_i\mathbf d_i = \mathbf 0$",
-        note=r"for the paper's equilateral placement ($\mathbf d_i^{\mathrm T}\mathbf d_i = L^2$) the denominator is "
-             r"$3L^2$")])
+                corrected=corrected,
+                corrected_holds=b_vanishes and paper_route and res < TOL,
+                severity="wrong",
+                why=r"the printed form divides a vector by a vector; multiplying (20) by "
+                r"$\dot{\mathbf c}^{\mathrm T}\mathbf E$ eliminates $\dot{\mathbf c}$, not $\dot\theta_i$",
+                convention=r"$\dot\theta_i = 0$, $\sum_i\mathbf d_i = \mathbf 0$",
+                note=r"for the paper's equilateral placement ($\mathbf d_i^{\mathrm T}\mathbf d_i = L^2$) the denominator is "
+                r"$3L^2$",
+            )
+        ],
+    )
 
 
 def drift(row28, row29, n_locked, J2, per=2000, seed=SEED):
@@ -188,35 +215,55 @@ def drift(row28, row29, n_locked, J2, per=2000, seed=SEED):
     """
     locked = n_locked
     steer_only = sp.Matrix([S.phi_dot[0], 0, S.phi_dot[1], 0, S.phi_dot[2], 0])
-    moved = J2 * steer_only                                   # = J1 t must vanish if t = 0
+    moved = J2 * steer_only  # = J1 t must vanish if t = 0
     forced = sp.solve(list(moved), list(S.phi_dot), dict=True) == [{p: 0 for p in S.phi_dot}]
     bot = paper_robot("offset")
     rng = np.random.default_rng(seed)
     generic = sorted(set(rank(locked_system(bot, rng.uniform(-np.pi, np.pi, (per, 3)))).tolist()))
     equal = int(rank(locked_system(bot, np.full(3, rng.uniform(-np.pi, np.pi)))))
-    u = rng.uniform(-0.5, 0.5, 2) * np.abs(bot.mount_points).max()          # a point inside the platform
+    u = rng.uniform(-0.5, 0.5, 2) * np.abs(bot.mount_points).max()  # a point inside the platform
     conc = int(rank(locked_system(bot, concurrent_angles(bot, u))))
     jams = bool(locked.proven) and locked.ranks == {6} and generic == [6]
-    evidence = (r"the locked-drive system $\mathbf M(\boldsymbol\beta)[\mathbf t;\dot{\boldsymbol\phi}] = "
-                r"\mathbf 0$ is $6\times6$ with $\det\mathbf M = d^3\det[\mathbf d_i\times\mathbf j_i\ \ "
-                r"\mathbf j_i^{\mathrm T}]$" + (" (SymPy)" if locked.proven else "")
-                + r", which vanishes exactly when the arm lines are concurrent or parallel; $\mathbf M$ has rank "
-                rf"{' or '.join(map(str, generic))} at all {per} random configurations of the paper's robot and "
-                rf"{' or '.join(map(str, sorted(locked.ranks)))} at {locked.n} configurations of random robots, rank "
-                rf"{equal} with all $\beta_i$ equal and {conc} with concurrent arms")
-    return Derivation(ranks=generic, equal_rank=equal, concurrent_rank=conc, n=per, findings=[claim(
-        "drift", not jams, evidence, max(row28.residual, row29.residual),
-        refuted=r"at generic steering angles the robot cannot be steered with the drives locked at all: it jams",
-        corrected=(r"With the drives locked ($\dot\theta_i = 0$) three offset wheels can be steered only while "
-                   r"their arm lines (through $P_i$ along $\mathbf j_i$) are concurrent or all parallel; at any other "
-                   r"steering angles the robot jams: no twist and no steering rate satisfy the no-slip equations. "
-                   r"The dead-zone circle of (28)-(29) and Fig. 7 needs all $\beta_i$ equal (parallel arms, a "
-                   r"translation); concurrent arms allow a rotation for an instant only"),
-        corrected_holds=bool(locked.proven) and equal == 5 and conc == 5, severity="wrong",
-        why=r"the paper's *whenever*: steering without driving moves the platform only where $\det\mathbf M = 0$; "
-            r"elsewhere the wheels cannot be steered at all",
-        convention=r"steering without driving read as $\dot\theta_i = 0$ with the steering servos commanding "
-                   r"$\dot\phi_i \neq 0$; offset $d > 0$; residual of rows (28) and (29)",
-        note=(r"where steering without driving is possible it does move the platform: with $\mathbf t = \mathbf 0$, "
-              r"(21) leaves only $\dot\phi_i = 0$ since $\det\mathbf J_2 = d^3r^3 \neq 0$"
-              + (" (SymPy)" if forced and symbolic_equal(sp.trigsimp(J2.det()), S.d**3 * S.r**3) else "")))])
+    evidence = (
+        r"the locked-drive system $\mathbf M(\boldsymbol\beta)[\mathbf t;\dot{\boldsymbol\phi}] = "
+        r"\mathbf 0$ is $6\times6$ with $\det\mathbf M = d^3\det[\mathbf d_i\times\mathbf j_i\ \ "
+        r"\mathbf j_i^{\mathrm T}]$"
+        + (" (SymPy)" if locked.proven else "")
+        + r", which vanishes exactly when the arm lines are concurrent or parallel; $\mathbf M$ has rank "
+        rf"{' or '.join(map(str, generic))} at all {per} random configurations of the paper's robot and "
+        rf"{' or '.join(map(str, sorted(locked.ranks)))} at {locked.n} configurations of random robots, rank "
+        rf"{equal} with all $\beta_i$ equal and {conc} with concurrent arms"
+    )
+    return Derivation(
+        ranks=generic,
+        equal_rank=equal,
+        concurrent_rank=conc,
+        n=per,
+        findings=[
+            claim(
+                "drift",
+                not jams,
+                evidence,
+                max(row28.residual, row29.residual),
+                refuted=r"at generic steering angles the robot cannot be steered with the drives locked at all: it jams",
+                corrected=(
+                    r"With the drives locked ($\dot\theta_i = 0$) three offset wheels can be steered only while "
+                    r"their arm lines (through $P_i$ along $\mathbf j_i$) are concurrent or all parallel; at any other "
+                    r"steering angles the robot jams: no twist and no steering rate satisfy the no-slip equations. "
+                    r"The dead-zone circle of (28)-(29) and Fig. 7 needs all $\beta_i$ equal (parallel arms, a "
+                    r"translation); concurrent arms allow a rotation for an instant only"
+                ),
+                corrected_holds=bool(locked.proven) and equal == 5 and conc == 5,
+                severity="wrong",
+                why=r"the paper's *whenever*: steering without driving moves the platform only where $\det\mathbf M = 0$; "
+                r"elsewhere the wheels cannot be steered at all",
+                convention=r"steering without driving read as $\dot\theta_i = 0$ with the steering servos commanding "
+                r"$\dot\phi_i \neq 0$; offset $d > 0$; residual of rows (28) and (29)",
+                note=(
+                    r"where steering without driving is possible it does move the platform: with $\mathbf t = \mathbf 0$, "
+                    r"(21) leaves only $\dot\phi_i = 0$ since $\det\mathbf J_2 = d^3r^3 \neq 0$"
+                    + (" (SymPy)" if forced and symbolic_equal(sp.trigsimp(J2.det()), S.d**3 * S.r**3) else "")
+                ),
+            )
+        ],
+    )

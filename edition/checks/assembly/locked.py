@@ -2,6 +2,7 @@ r"""The drives locked: the system M(beta), its motion, and when the robot can st
 
 Chapter 2's checks live in :mod:`edition.checks.assembly`; this module holds one group of them.
 """
+
 from __future__ import annotations
 
 import numpy as np
@@ -81,7 +82,7 @@ def concurrent_angles(robot, u):
     numpy.ndarray (w,)
     """
     v = robot.mount_points - np.asarray(u, dtype=float)
-    return np.arctan2(-v[:, 0], v[:, 1])               # j_i = (-sin b, cos b) parallel to d_i - u
+    return np.arctan2(-v[:, 0], v[:, 1])  # j_i = (-sin b, cos b) parallel to d_i - u
 
 
 def locked_steering(det_M, plucker, robots=200, per=10, seed=SEED):
@@ -118,14 +119,15 @@ def locked_steering(det_M, plucker, robots=200, per=10, seed=SEED):
     sub = dict(zip(sum(S.D, ()), sum((tuple(v) for v in lines), ()), strict=True))
     det_conc = sp.factor(sp.trigsimp(sp.expand(det_M.subs(sub))))
     det_par = sp.simplify(det_M.subs({S.beta[1]: S.beta[0], S.beta[2]: S.beta[0]}))
-    geometry = symbolic_equal(det_conc, -S.d**3 * n3 * sp.sin(S.beta[0] - S.beta[1])) and det_par == 0
+    geometry = symbolic_equal(det_conc, -(S.d**3) * n3 * sp.sin(S.beta[0] - S.beta[1])) and det_par == 0
     rng = np.random.default_rng(seed)
     ranks = set()
     for _ in range(robots):
         b = Robot([OffsetWheel(tuple(p), r=0.1, d=0.05) for p in rng.uniform(-1, 1, (3, 2))])
         ranks |= set(rank(locked_system(b, rng.uniform(-np.pi, np.pi, (per, 3)))).tolist())
-    return Derivation(det_concurrent=det_conc, det_parallel=det_par, ranks=ranks, n=robots * per,
-                      proven=plucker_ok and geometry)
+    return Derivation(
+        det_concurrent=det_conc, det_parallel=det_par, ranks=ranks, n=robots * per, proven=plucker_ok and geometry
+    )
 
 
 def drift_motions(u=(0.1, 0.05), beta_parallel=0.4, t_end=0.2, dt=0.002):
@@ -154,10 +156,10 @@ def drift_motions(u=(0.1, 0.05), beta_parallel=0.4, t_end=0.2, dt=0.002):
     d = PAPER["d"]
     u = np.asarray(u, dtype=float)
     x_par = locked_motion(paper, np.full(3, beta_parallel))
-    x_par = x_par / x_par[3]                                  # phi_dot_1 = 1
+    x_par = x_par / x_par[3]  # phi_dot_1 = 1
     beta_c = concurrent_angles(paper, u)
     x_con = locked_motion(paper, beta_c)
-    x_con = x_con / x_con[0]                                  # psi_dot = 1
+    x_con = x_con / x_con[0]  # psi_dot = 1
     lam = np.einsum("ij,ij->i", paper.mount_points - u, np.stack([-np.sin(beta_c), np.cos(beta_c)], -1))
     pred_par = np.array([0.0, *(-d * np.array([np.cos(beta_parallel), np.sin(beta_parallel)]))])
     require(np.allclose(x_par[:3], pred_par) and np.allclose(x_par[3:], 1), "parallel arms: a translation -d phi_dot i")
@@ -167,8 +169,15 @@ def drift_motions(u=(0.1, 0.05), beta_parallel=0.4, t_end=0.2, dt=0.002):
     run_con = simulate(paper, r_con, beta_c, t_end=t_end, dt=dt)
     run_par = simulate(paper, r_par, np.full(3, beta_parallel), t_end=t_end, dt=dt)
     require(run_con.slip[0] < TOL < run_con.slip[-1] and run_par.slip.max() < TOL, "concurrent drift needs slip later")
-    return Derivation(parallel={"twist": x_par[:3], "phi_dot": x_par[3:], "predicted": pred_par},
-                      concurrent={"twist": x_con[:3], "phi_dot": x_con[3:], "predicted": np.r_[1.0, -E() @ u],
-                                  "lambda_over_d": lam / d},
-                      slip_concurrent=(float(run_con.slip[0]), float(run_con.slip[-1])), t_end=t_end,
-                      slip_parallel=float(run_par.slip.max()))
+    return Derivation(
+        parallel={"twist": x_par[:3], "phi_dot": x_par[3:], "predicted": pred_par},
+        concurrent={
+            "twist": x_con[:3],
+            "phi_dot": x_con[3:],
+            "predicted": np.r_[1.0, -E() @ u],
+            "lambda_over_d": lam / d,
+        },
+        slip_concurrent=(float(run_con.slip[0]), float(run_con.slip[-1])),
+        t_end=t_end,
+        slip_parallel=float(run_par.slip.max()),
+    )

@@ -4,6 +4,7 @@ Chapter 2's checks live in :mod:`edition.checks.assembly`; this module holds one
 builds :math:`\mathbf J_1`, :math:`\mathbf J_2`, :math:`\mathbf F` and :math:`\mathbf N` from Chapter 1's rows; each
 check compares them with the printed forms and with the package's :class:`wmr.Robot` (the library's route).
 """
+
 from __future__ import annotations
 
 from functools import cache
@@ -61,17 +62,27 @@ def one_unit(lhs, rhs):
     """
     P = printed(20)
     one = Robot([OffsetWheel(S.d_i, r=S.r, d=S.d)])
-    require(symbolic_equal(exact_matrix(one.J1()) * sp.Matrix(one.twist_symbols), lhs)
-            and symbolic_equal(one.J2([S.beta_i]) * sp.Matrix([S.phi_dot_i, S.theta_dot_i]), rhs),
-            "a one-unit wmr.Robot gives the derived sides")
+    require(
+        symbolic_equal(exact_matrix(one.J1()) * sp.Matrix(one.twist_symbols), lhs)
+        and symbolic_equal(one.J2([S.beta_i]) * sp.Matrix([S.phi_dot_i, S.theta_dot_i]), rhs),
+        "a one-unit wmr.Robot gives the derived sides",
+    )
     holds = symbolic_equal(lhs, P.expr.lhs) and symbolic_equal(rhs, P.expr.rhs)
     res = max(max_residual(lhs, P.expr.lhs), max_residual(rhs, P.expr.rhs))
-    return Derivation(findings=[equation(
-        20, holds, r"the printed sides equal the derived $[\mathbf E\mathbf d_i\ \ \mathbf 1]\mathbf t$ and "
-                   r"$\mathbf R_{bwi}\tilde{\mathbf p}[\dot\phi_i\ \dot\theta_i]^{\mathrm T}$, as do a one-unit "
-                   r"`wmr.Robot`'s (SymPy): the velocity of $P_i$ through the platform and "
-                   r"through the wheel", res,
-        convention=r"as (5) and (10): $H_i = P_i - d\,\mathbf j_i$, $\dot\phi_i$ absolute")])
+    return Derivation(
+        findings=[
+            equation(
+                20,
+                holds,
+                r"the printed sides equal the derived $[\mathbf E\mathbf d_i\ \ \mathbf 1]\mathbf t$ and "
+                r"$\mathbf R_{bwi}\tilde{\mathbf p}[\dot\phi_i\ \dot\theta_i]^{\mathrm T}$, as do a one-unit "
+                r"`wmr.Robot`'s (SymPy): the velocity of $P_i$ through the platform and "
+                r"through the wheel",
+                res,
+                convention=r"as (5) and (10): $H_i = P_i - d\,\mathbf j_i$, $\dot\phi_i$ absolute",
+            )
+        ]
+    )
 
 
 def stacking(J1, J2, theta_dot, ws=(1, 2, 3, 4, 5), seed=SEED):
@@ -97,22 +108,38 @@ def stacking(J1, J2, theta_dot, ws=(1, 2, 3, 4, 5), seed=SEED):
     P = printed(21)
     bot = general_robot()
     t, th = sp.Matrix(bot.twist_symbols), sp.Matrix(theta_dot)
-    require(symbolic_equal(exact_matrix(bot.J1()), J1) and symbolic_equal(bot.J2(), J2)
-            and list(th) == list(bot.rate_symbols), "wmr.Robot stacks the units as derived")
-    holds = (symbolic_equal(J1, P.extra["J1"]) and symbolic_equal(J2, P.extra["J2"])
-             and list(th) == list(P.extra["theta_dot"]) and symbolic_equal(J1 * t - J2 * th, P.expr.lhs - P.expr.rhs))
+    require(
+        symbolic_equal(exact_matrix(bot.J1()), J1)
+        and symbolic_equal(bot.J2(), J2)
+        and list(th) == list(bot.rate_symbols),
+        "wmr.Robot stacks the units as derived",
+    )
+    holds = (
+        symbolic_equal(J1, P.extra["J1"])
+        and symbolic_equal(J2, P.extra["J2"])
+        and list(th) == list(P.extra["theta_dot"])
+        and symbolic_equal(J1 * t - J2 * th, P.expr.lhs - P.expr.rhs)
+    )
     rng = np.random.default_rng(seed)
     sizes = True
     for w in ws:
         b = Robot([OffsetWheel(tuple(rng.uniform(-1, 1, 2)), r=0.1, d=0.05) for _ in range(w)])
         sizes &= b.J1().shape == (2 * w, 3) and b.J2(np.zeros(w)).shape == (2 * w, 2 * w) and b.n_rates == 2 * w
     res = max_residual(J1 * t - J2 * th, P.expr.lhs - P.expr.rhs)
-    return Derivation(findings=[equation(
-        21, holds and sizes, r"the stacked $\mathbf J_1$, $\mathbf J_2$, `Robot.J1`, `Robot.J2` and the rates "
-                             r"equal the printed $\mathbf J_1$, "
-                             r"$\mathbf J_2$ and the reconstructed rate vector for three units at general mount points "
-                             rf"(SymPy); sizes $2w\times3$ and $2w\times2w$ for $w = {min(ws)}, \dots, {max(ws)}$", res,
-        convention=r"units stacked in numbering order; rates $(\dot\phi_i, \dot\theta_i)$ per unit")])
+    return Derivation(
+        findings=[
+            equation(
+                21,
+                holds and sizes,
+                r"the stacked $\mathbf J_1$, $\mathbf J_2$, `Robot.J1`, `Robot.J2` and the rates "
+                r"equal the printed $\mathbf J_1$, "
+                r"$\mathbf J_2$ and the reconstructed rate vector for three units at general mount points "
+                rf"(SymPy); sizes $2w\times3$ and $2w\times2w$ for $w = {min(ws)}, \dots, {max(ws)}$",
+                res,
+                convention=r"units stacked in numbering order; rates $(\dot\phi_i, \dot\theta_i)$ per unit",
+            )
+        ]
+    )
 
 
 def functional_matrix(F, q, J1, J2, ws=(1, 2, 3, 4, 5)):
@@ -138,45 +165,79 @@ def functional_matrix(F, q, J1, J2, ws=(1, 2, 3, 4, 5)):
     P22, P23, P24, P25 = (printed(i) for i in (22, 23, 24, 25))
     bot = general_robot()
     t, th = sp.Matrix(q[:3]), sp.Matrix(q[3:])
-    require(symbolic_equal(exact_matrix(bot.F()), F) and list(q) == list(bot.qdot_symbols),
-            "Robot.F and Robot.qdot_symbols are the derived F and q")
+    require(
+        symbolic_equal(exact_matrix(bot.F()), F) and list(q) == list(bot.qdot_symbols),
+        "Robot.F and Robot.qdot_symbols are the derived F and q",
+    )
     Fq = F * q
     sizes = []
     for w in ws:
         b = Robot([OffsetWheel((float(w), 0.0), r=0.1, d=0.05)] * w)
         Fw = b.F(np.zeros(w))
-        sizes.append({"w": w, "F": f"${Fw.shape[0]}\\times{Fw.shape[1]}$",
-                      "entries": int((Fw @ np.ones(Fw.shape[1])).shape[0]),
-                      "printed": int(P22.extra["zero_dim"].subs(S.w, w)), "shape_ok": Fw.shape == (2 * w, 3 + 2 * w)})
+        sizes.append(
+            {
+                "w": w,
+                "F": f"${Fw.shape[0]}\\times{Fw.shape[1]}$",
+                "entries": int((Fw @ np.ones(Fw.shape[1])).shape[0]),
+                "printed": int(P22.extra["zero_dim"].subs(S.w, w)),
+                "shape_ok": Fw.shape == (2 * w, 3 + 2 * w),
+            }
+        )
     dim_as_printed = all(s["entries"] == s["printed"] for s in sizes)
     dim_2w = all(s["entries"] == 2 * s["w"] for s in sizes)
     shapes = all(s["shape_ok"] for s in sizes)
     holds22 = symbolic_equal(Fq, P22.expr.lhs) and dim_as_printed
     res22 = max_residual(Fq, P22.expr.lhs)
     wlist = rf"$w = {min(ws)}, \dots, {max(ws)}$"
-    return Derivation(sizes=sizes, findings=[
-        equation(22, holds22, r"$[\mathbf J_1\ \ -\mathbf J_2]\,\dot{\mathbf q}$ is the left side of (21) (SymPy) and "
-                              r"has "
-                              f"$2w$ entries ({wlist})", res22,
-                 refuted=r"the text calls the zero vector $(3+2w)$-dimensional; $\mathbf F\dot{\mathbf q}$ has $2w$ "
-                         r"entries",
-                 corrected=r"[\mathbf J_1\ \ -\mathbf J_2]\begin{bmatrix}\mathbf t\\ "
-                           r"\dot{\boldsymbol\theta}\end{bmatrix} = \mathbf 0, \quad \mathbf 0 \in \mathbb R^{2w}",
-                 corrected_holds=symbolic_equal(Fq, P22.expr.lhs) and dim_2w, severity="typo",
-                 why="the equation holds, but the sentence after it gives the zero vector $3+2w$ entries instead of "
-                     "$2w$ (one pair of no-slip equations per unit)",
-                 convention=r"$\mathbf F$ is $2w\times(3+2w)$"),
-        equation(23, symbolic_equal(Fq, J1 * t - J2 * th), r"$\mathbf F\dot{\mathbf q}$ equals "
-                 r"$\mathbf J_1\mathbf t - \mathbf J_2\dot{\boldsymbol\theta}$ "
-                 r"(SymPy)", max_residual(Fq, J1 * t - J2 * th),
-                 convention=r"$\dot{\mathbf q}$ ordered as (25)"),
-        equation(24, symbolic_equal(F, P24.expr.rhs) and F.shape == (6, 9) and shapes,
-                 r"the derived $\mathbf F$ and `Robot.F` equal the printed block matrix for three units at "
-                 r"general mount points (SymPy); shape "
-                 rf"$2w\times(3+2w)$ for {wlist}", max_residual(F, P24.expr.rhs), convention="columns ordered as (25)"),
-        equation(25, list(q) == list(P25.expr.rhs), r"the derived $\dot{\mathbf q}$ is the printed vector, the "
-                 r"column order of "
-                 r"$\mathbf F$", 0.0, convention="definition")])
+    return Derivation(
+        sizes=sizes,
+        findings=[
+            equation(
+                22,
+                holds22,
+                r"$[\mathbf J_1\ \ -\mathbf J_2]\,\dot{\mathbf q}$ is the left side of (21) (SymPy) and "
+                r"has "
+                f"$2w$ entries ({wlist})",
+                res22,
+                refuted=r"the text calls the zero vector $(3+2w)$-dimensional; $\mathbf F\dot{\mathbf q}$ has $2w$ "
+                r"entries",
+                corrected=r"[\mathbf J_1\ \ -\mathbf J_2]\begin{bmatrix}\mathbf t\\ "
+                r"\dot{\boldsymbol\theta}\end{bmatrix} = \mathbf 0, \quad \mathbf 0 \in \mathbb R^{2w}",
+                corrected_holds=symbolic_equal(Fq, P22.expr.lhs) and dim_2w,
+                severity="typo",
+                why="the equation holds, but the sentence after it gives the zero vector $3+2w$ entries instead of "
+                "$2w$ (one pair of no-slip equations per unit)",
+                convention=r"$\mathbf F$ is $2w\times(3+2w)$",
+            ),
+            equation(
+                23,
+                symbolic_equal(Fq, J1 * t - J2 * th),
+                r"$\mathbf F\dot{\mathbf q}$ equals "
+                r"$\mathbf J_1\mathbf t - \mathbf J_2\dot{\boldsymbol\theta}$ "
+                r"(SymPy)",
+                max_residual(Fq, J1 * t - J2 * th),
+                convention=r"$\dot{\mathbf q}$ ordered as (25)",
+            ),
+            equation(
+                24,
+                symbolic_equal(F, P24.expr.rhs) and F.shape == (6, 9) and shapes,
+                r"the derived $\mathbf F$ and `Robot.F` equal the printed block matrix for three units at "
+                r"general mount points (SymPy); shape "
+                rf"$2w\times(3+2w)$ for {wlist}",
+                max_residual(F, P24.expr.rhs),
+                convention="columns ordered as (25)",
+            ),
+            equation(
+                25,
+                list(q) == list(P25.expr.rhs),
+                r"the derived $\dot{\mathbf q}$ is the printed vector, the "
+                r"column order of "
+                r"$\mathbf F$",
+                0.0,
+                convention="definition",
+            ),
+        ],
+    )
 
 
 def null_space_of_F(N, det_J2, F, J2, n=300, seed=SEED):
@@ -200,9 +261,13 @@ def null_space_of_F(N, det_J2, F, J2, n=300, seed=SEED):
     Derivation
         ``nullities``, findings (26) and (27).
     """
-    P27 = printed(27)                              # (26) is a statement: checked through its consequences
-    exact = (symbolic_equal(F * N, sp.zeros(6, 3)) and N[:3, :] == sp.eye(3)
-             and symbolic_equal(J2.det(), det_J2) and symbolic_equal(det_J2, S.d**3 * S.r**3))
+    P27 = printed(27)  # (26) is a statement: checked through its consequences
+    exact = (
+        symbolic_equal(F * N, sp.zeros(6, 3))
+        and N[:3, :] == sp.eye(3)
+        and symbolic_equal(J2.det(), det_J2)
+        and symbolic_equal(det_J2, S.d**3 * S.r**3)
+    )
     rng = np.random.default_rng(seed)
     nullities, mob, res = set(), set(), 0.0
     for _ in range(n):
@@ -214,19 +279,33 @@ def null_space_of_F(N, det_J2, F, J2, n=300, seed=SEED):
         res = max(res, float(np.abs(b.J1() @ Nn[:3] - b.J2(beta) @ Nn[3:]).max()))
         mob.add(int(mobility(b, beta)))
     require(res < TOL, "the numeric null vectors satisfy (21)")
-    return Derivation(nullities=nullities, findings=[
-        equation(26, exact, r"$\mathbf N = [\mathbf 1_3;\ \mathbf J_2^{-1}\mathbf J_1]$ satisfies "
-                            r"$\mathbf F\mathbf N = \mathbf 0$ "
-                            rf"with $\det\mathbf J_2 = {sp.latex(det_J2)} \neq 0$ (SymPy); the SVD null vectors at {n} "
-                            r"random configurations satisfy "
-                            r"(21)", res, convention=r"$\dot{\mathbf q}$ ordered as (25); $d > 0$"),
-        equation(27,
-                 exact and nullities == mob == {P27.extra["claim"]["nullity"]}
-                 and F.shape[1] == P27.extra["claim"]["q_dim"]
-                 and F.shape[1] - P27.extra["claim"]["nullity"] == P27.extra["claim"]["rank_F"],
-                 rf"the nullity from the SVD is 3 at all {n} random "
-                 r"configurations and equals `wmr.mobility` (structured rank)", 0.0,
-                 convention="definition (nullity = mobility)")])
+    return Derivation(
+        nullities=nullities,
+        findings=[
+            equation(
+                26,
+                exact,
+                r"$\mathbf N = [\mathbf 1_3;\ \mathbf J_2^{-1}\mathbf J_1]$ satisfies "
+                r"$\mathbf F\mathbf N = \mathbf 0$ "
+                rf"with $\det\mathbf J_2 = {sp.latex(det_J2)} \neq 0$ (SymPy); the SVD null vectors at {n} "
+                r"random configurations satisfy "
+                r"(21)",
+                res,
+                convention=r"$\dot{\mathbf q}$ ordered as (25); $d > 0$",
+            ),
+            equation(
+                27,
+                exact
+                and nullities == mob == {P27.extra["claim"]["nullity"]}
+                and F.shape[1] == P27.extra["claim"]["q_dim"]
+                and F.shape[1] - P27.extra["claim"]["nullity"] == P27.extra["claim"]["rank_F"],
+                rf"the nullity from the SVD is 3 at all {n} random "
+                r"configurations and equals `wmr.mobility` (structured rank)",
+                0.0,
+                convention="definition (nullity = mobility)",
+            ),
+        ],
+    )
 
 
 def mobility_offset(row26, n=200, seed=SEED):
@@ -254,22 +333,39 @@ def mobility_offset(row26, n=200, seed=SEED):
     beta = np.random.default_rng(seed).uniform(-np.pi, np.pi, (n, 3))
     conc = steering_angles(paper_robot("centred", L=PAPER["L"], r=PAPER["r"]), [1.0, 0.2, -0.1])[None, :]
     cases = []
-    for name, b, betas in ((f"$d > 0$, {n} random $\\boldsymbol\\beta$", paper, beta),
-                           (f"$d = 0$, {n} random $\\boldsymbol\\beta$", flat, beta),
-                           ("$d = 0$, axles concurrent", flat, conc)):
+    for name, b, betas in (
+        (f"$d > 0$, {n} random $\\boldsymbol\\beta$", paper, beta),
+        (f"$d = 0$, {n} random $\\boldsymbol\\beta$", flat, beta),
+        ("$d = 0$, axles concurrent", flat, conc),
+    ):
         nul = mobility(b, betas)
-        cases.append({"case": name, r"rank $\mathbf F$": sorted(set((9 - nul).tolist())),
-                      "nullity": sorted(set(nul.tolist())),
-                      "admissible twists (dim)": sorted({admissible_twists(b, x).shape[1] for x in betas})})
-    holds = (exact.printed_holds and cases[0]["nullity"] == [3] and cases[0]["admissible twists (dim)"] == [3])
+        cases.append(
+            {
+                "case": name,
+                r"rank $\mathbf F$": sorted(set((9 - nul).tolist())),
+                "nullity": sorted(set(nul.tolist())),
+                "admissible twists (dim)": sorted({admissible_twists(b, x).shape[1] for x in betas}),
+            }
+        )
+    holds = exact.printed_holds and cases[0]["nullity"] == [3] and cases[0]["admissible twists (dim)"] == [3]
     require(cases[1]["nullity"] == [3] and cases[1]["admissible twists (dim)"] == [0], "d = 0: nullity 3, immobile")
-    require(cases[2]["nullity"] == [4] and cases[2]["admissible twists "
-                                                    "(dim)"] == [1], "d = 0, concurrent axles: nullity 4")
-    return Derivation(cases=cases, findings=[claim(
-        "mobility-offset", holds, r"for $d > 0$, $\mathbf N = [\mathbf 1_3;\ \mathbf J_2^{-1}\mathbf J_1]$ spans "
-        r"$\mathcal N(\mathbf F)$ at every configuration (SymPy), so rank 6, nullity 3 and every twist admissible "
-        rf"(confirmed at {n} random configurations)", exact.residual,
-        convention=r"offset $d > 0$, any mount points, any steering angles",
-        note=r"the count alone is not the whole story: at $d = 0$ the nullity is also 3 but the null space is pure "
-             r"steering (the platform cannot move), and 4 with a one-dimensional family of twists when the axles are "
-             r"concurrent")])
+    require(
+        cases[2]["nullity"] == [4] and cases[2]["admissible twists (dim)"] == [1], "d = 0, concurrent axles: nullity 4"
+    )
+    return Derivation(
+        cases=cases,
+        findings=[
+            claim(
+                "mobility-offset",
+                holds,
+                r"for $d > 0$, $\mathbf N = [\mathbf 1_3;\ \mathbf J_2^{-1}\mathbf J_1]$ spans "
+                r"$\mathcal N(\mathbf F)$ at every configuration (SymPy), so rank 6, nullity 3 and every twist admissible "
+                rf"(confirmed at {n} random configurations)",
+                exact.residual,
+                convention=r"offset $d > 0$, any mount points, any steering angles",
+                note=r"the count alone is not the whole story: at $d = 0$ the nullity is also 3 but the null space is pure "
+                r"steering (the platform cannot move), and 4 with a one-dimensional family of twists when the axles are "
+                r"concurrent",
+            )
+        ],
+    )

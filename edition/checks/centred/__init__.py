@@ -14,18 +14,30 @@ The checks, by equation group:
 :mod:`.singular`  singular configurations, (58)-(59): det J, the printed determinant, line classes, the paper's list
 ================  ==================================================================================================
 """
+
 from .mobility import L_NUM, R_NUM, functional_matrix, isotropic_kinematics, kinematics, mobility_centred
 from .singular import (
-                       LINE_CLASSES,
-                       classify_lines,
-                       planes_through,
-                       printed_determinant,
-                       singular_configurations,
-                       singular_list,
-                       singular_v,
+    LINE_CLASSES,
+    classify_lines,
+    planes_through,
+    printed_determinant,
+    singular_configurations,
+    singular_list,
+    singular_v,
 )
 
-__all__ = ["L_NUM", "R_NUM", "kinematics", "functional_matrix", "mobility_centred",
-           "isotropic_kinematics",
-           "singular_configurations", "printed_determinant", "classify_lines", "singular_list", "singular_v",
-           "planes_through", "LINE_CLASSES"]
+__all__ = [
+    "L_NUM",
+    "R_NUM",
+    "kinematics",
+    "functional_matrix",
+    "mobility_centred",
+    "isotropic_kinematics",
+    "singular_configurations",
+    "printed_determinant",
+    "classify_lines",
+    "singular_list",
+    "singular_v",
+    "planes_through",
+    "LINE_CLASSES",
+]

@@ -2,6 +2,7 @@ r"""Singular configurations, (58)-(59): det J, the printed determinant, line cla
 
 Chapter 4's checks live in :mod:`edition.checks.centred`; this module holds one group of them.
 """
+
 from __future__ import annotations
 
 import re
@@ -24,8 +25,15 @@ from ...verify import SEED, max_residual, symbolic_equal
 from .. import Derivation, claim, equation, require
 from .mobility import L_NUM, R_NUM, u_point
 
-__all__ = ["singular_configurations", "printed_determinant", "classify_lines", "singular_list", "singular_v",
-           "planes_through", "LINE_CLASSES"]
+__all__ = [
+    "singular_configurations",
+    "printed_determinant",
+    "classify_lines",
+    "singular_list",
+    "singular_v",
+    "planes_through",
+    "LINE_CLASSES",
+]
 
 
 def singular_configurations(det_J, lines, robot, n=20000, seed=SEED):
@@ -53,23 +61,31 @@ def singular_configurations(det_J, lines, robot, n=20000, seed=SEED):
     Jg = robot.J(L=S.L)
     require(symbolic_equal(det_J, Jg.det()), "det_J is the determinant of Robot.J")
     tL_rot = sp.Matrix([S.L * S.psi_dot, *(-S.psi_dot * E(SYMBOLIC) * u_point)])
-    rows = symbolic_equal(Jg.T * tL_rot,
-                          sp.Matrix([-S.r * S.psi_dot * (axle[k].T * (sp.Matrix(S.D[k]) - u_point))[0]
-                                     for k in range(3)]))
-    holds = rows and symbolic_equal(det_J, -S.r**3 / S.L * lines.det())
+    rows = symbolic_equal(
+        Jg.T * tL_rot, sp.Matrix([-S.r * S.psi_dot * (axle[k].T * (sp.Matrix(S.D[k]) - u_point))[0] for k in range(3)])
+    )
+    holds = rows and symbolic_equal(det_J, -(S.r**3) / S.L * lines.det())
     bot = paper_robot("centred", L=L_NUM, r=R_NUM)
     B = np.random.default_rng(seed).uniform(-np.pi, np.pi, (n, 3))
     k_par = condition_number(bot.J(np.c_[B[:, :1], B[:, :1] + np.pi, B[:, :1]], L=L_NUM))
     k_gen = condition_number(bot.J(B, L=L_NUM))
     require(np.all(np.isinf(k_par)) and np.all(np.isfinite(k_gen)), "kappa is infinite exactly on the singular set")
-    return Derivation(findings=[equation(
-        58, holds, r"$\mathbf J^{\mathrm T}\mathbf t_L$ of the rotation about $U$ has rows "
-                   r"$-r\dot\psi\,\mathbf i_i\cdot(\mathbf d_i - \mathbf u)$, and "
-                   r"$\det\mathbf J = -\tfrac{r^3}{L}\det[\mathbf i_i^{\mathrm T}\ \ \mathbf i_i\cdot\mathbf d_i]$ for "
-                   r"general mount points (SymPy): zero iff the wheel-plane lines are concurrent or all parallel; "
-                   rf"$\kappa(\mathbf J)$ is infinite on {n} parallel configurations and finite on {n} random ones",
-        max_residual(det_J, -S.r**3 / S.L * lines.det()), convention=r"$\mathbf J = \mathbf J_{L1}^{\mathrm T}\mathbf "
-                                                                       r"J_2$ (56), three centred wheels")])
+    return Derivation(
+        findings=[
+            equation(
+                58,
+                holds,
+                r"$\mathbf J^{\mathrm T}\mathbf t_L$ of the rotation about $U$ has rows "
+                r"$-r\dot\psi\,\mathbf i_i\cdot(\mathbf d_i - \mathbf u)$, and "
+                r"$\det\mathbf J = -\tfrac{r^3}{L}\det[\mathbf i_i^{\mathrm T}\ \ \mathbf i_i\cdot\mathbf d_i]$ for "
+                r"general mount points (SymPy): zero iff the wheel-plane lines are concurrent or all parallel; "
+                rf"$\kappa(\mathbf J)$ is infinite on {n} parallel configurations and finite on {n} random ones",
+                max_residual(det_J, -(S.r**3) / S.L * lines.det()),
+                convention=r"$\mathbf J = \mathbf J_{L1}^{\mathrm T}\mathbf "
+                r"J_2$ (56), three centred wheels",
+            )
+        ]
+    )
 
 
 def printed_determinant(det_J, n=200, seed=SEED):
@@ -95,7 +111,7 @@ def printed_determinant(det_J, n=200, seed=SEED):
         hold with the printed sign), finding (59).
     """
     p59 = printed(59)
-    f59 = sp.lambdify(S.beta, p59.expr.rhs.subs(S.r, 1), "numpy")          # the search robots have r = 1
+    f59 = sp.lambdify(S.beta, p59.expr.rhs.subs(S.r, 1), "numpy")  # the search robots have r = 1
     Bs = np.random.default_rng(seed).uniform(-np.pi, np.pi, (n, 3))
     P59 = f59(*Bs.T)
     rows: list[dict] = []
@@ -103,25 +119,51 @@ def printed_determinant(det_J, n=200, seed=SEED):
         for cw in (True, False):
             rb = Robot([CentredWheel(q, r=1.0) for q in equilateral_mounts(1.0, first, cw)])
             dJ = np.linalg.det(rb.J(Bs, L=1.0))
-            rows.append({"first": first, "sense": "clockwise" if cw else "counter-clockwise",
-                         "plus": float(np.max(np.abs(dJ - P59))), "minus": float(np.max(np.abs(dJ + P59)))})
+            rows.append(
+                {
+                    "first": first,
+                    "sense": "clockwise" if cw else "counter-clockwise",
+                    "plus": float(np.max(np.abs(dJ - P59))),
+                    "minus": float(np.max(np.abs(dJ + P59))),
+                }
+            )
     matches = [(x["first"], x["sense"]) for x in rows if x["plus"] < 1e-9]
     paper = paper_robot("centred", L=S.L, r=S.r, exact=True)
     require(symbolic_equal(det_J, paper.J(L=S.L).det()), "det_J is the determinant of the paper's J")
     det_paper = sp.expand(sp.expand_trig(det_J))
     holds = symbolic_equal(det_paper, p59.expr.rhs)
-    r3 = (symbolic_equal(det_paper, S.r**3 * p59.expr.rhs) and S.L not in det_paper.free_symbols
-          and symbolic_equal(det_paper.subs(S.r, 1), p59.expr.rhs))
-    return Derivation(placements=rows, matches=matches, findings=[equation(
-        59, holds, r"for the paper's placement, $\det\mathbf J$ with symbolic $L$ and $r$ is $r^3$ times the printed "
-                   r"form and does not depend on $L$ (SymPy)", max_residual(det_paper, S.r**3 * p59.expr.rhs),
-        refuted=r"the printed form is $\det\mathbf J$ at $r = 1$ only",
-        corrected=factored_sum(p59.latex, r"\det(\mathbf "
-                                          r"J)", "r^3", per_line=2), corrected_holds=r3 and len(matches) == 1,
-        severity="typo", why=r"the factor $r^3$ is missing: the printed form is the determinant for $r = 1$",
-        convention=rf"wheel 1 at $L(-1, 0)$, numbered clockwise: $\mathbf d_2 = L(\tfrac12, \tfrac{{\sqrt3}}{{2}})$, "
-                   rf"$\mathbf d_3 = L(\tfrac12, -\tfrac{{\sqrt3}}{{2}})$, the only one of the {len(rows)} placements "
-                   r"tried that gives the printed sign; $\det\mathbf J$ does not depend on $L$")])
+    r3 = (
+        symbolic_equal(det_paper, S.r**3 * p59.expr.rhs)
+        and S.L not in det_paper.free_symbols
+        and symbolic_equal(det_paper.subs(S.r, 1), p59.expr.rhs)
+    )
+    return Derivation(
+        placements=rows,
+        matches=matches,
+        findings=[
+            equation(
+                59,
+                holds,
+                r"for the paper's placement, $\det\mathbf J$ with symbolic $L$ and $r$ is $r^3$ times the printed "
+                r"form and does not depend on $L$ (SymPy)",
+                max_residual(det_paper, S.r**3 * p59.expr.rhs),
+                refuted=r"the printed form is $\det\mathbf J$ at $r = 1$ only",
+                corrected=factored_sum(
+                    p59.latex,
+                    r"\det(\mathbf "
+                    r"J)",
+                    "r^3",
+                    per_line=2,
+                ),
+                corrected_holds=r3 and len(matches) == 1,
+                severity="typo",
+                why=r"the factor $r^3$ is missing: the printed form is the determinant for $r = 1$",
+                convention=rf"wheel 1 at $L(-1, 0)$, numbered clockwise: $\mathbf d_2 = L(\tfrac12, \tfrac{{\sqrt3}}{{2}})$, "
+                rf"$\mathbf d_3 = L(\tfrac12, -\tfrac{{\sqrt3}}{{2}})$, the only one of the {len(rows)} placements "
+                r"tried that gives the printed sign; $\det\mathbf J$ does not depend on $L$",
+            )
+        ],
+    )
 
 
 def factored_sum(latex, lhs, factor, per_line):
@@ -154,13 +196,18 @@ def factored_sum(latex, lhs, factor, per_line):
     """
     body = latex.removeprefix(r"\begin{aligned}").removesuffix(r"\end{aligned}")
     terms = re.split(r" (?=[+-] )", body.split(" = &", 1)[1].replace(r"\\ &", " "))
-    lines = [" ".join(terms[i:i + per_line]) for i in range(0, len(terms), per_line)]
+    lines = [" ".join(terms[i : i + per_line]) for i in range(0, len(terms), per_line)]
     return rf"\begin{{aligned}}{lhs} = {factor}\Big(&" + r"\\ &".join(lines) + r"\Big)\end{aligned}"
 
 
 #: classes of three wheel-plane lines (see :func:`classify_lines`)
-LINE_CLASSES = ("(i) all parallel, equal angles", "all parallel, some angles differ by 180 degrees",
-                "(ii)-(iv) two planes coincident", "(v) concurrent at a finite point", "not concurrent, not parallel")
+LINE_CLASSES = (
+    "(i) all parallel, equal angles",
+    "all parallel, some angles differ by 180 degrees",
+    "(ii)-(iv) two planes coincident",
+    "(v) concurrent at a finite point",
+    "not concurrent, not parallel",
+)
 
 
 def classify_lines(beta, points):
@@ -247,12 +294,13 @@ def singular_list(det_J, n=1000, n_family=200, n_item=100, seed=SEED):
         for vi in vals:
             for vk in vals:
                 fams[rf"({item}) $\beta_{i} = {vi}^\circ$, $\beta_{k} = {vk}^\circ$"] = det_paper.subs(
-                    {S.beta[i - 1]: sp.rad(vi), S.beta[k - 1]: sp.rad(vk)})
+                    {S.beta[i - 1]: sp.rad(vi), S.beta[k - 1]: sp.rad(vk)}
+                )
     paper = paper_robot("centred", L=S.L, r=S.r, exact=True)
     dets, rhos = det_paper, []
     for k, q in enumerate(paper.wheels):
         w = u_point - sp.Matrix(q.position)
-        rhos.append(sp.sqrt(w[0]**2 + w[1]**2))
+        rhos.append(sp.sqrt(w[0] ** 2 + w[1] ** 2))
         dets = dets.subs({sp.sin(S.beta[k]): -w[0] / rhos[k], sp.cos(S.beta[k]): w[1] / rhos[k]})
     fams["(v) planes concurrent at $U = (u_x, u_y)$"] = sp.expand(dets * sp.prod(rhos))
     families = {name: symbolic_equal(v, 0) for name, v in fams.items()}
@@ -264,8 +312,9 @@ def singular_list(det_J, n=1000, n_family=200, n_item=100, seed=SEED):
     c_ = np.linalg.det(unit.J(np.c_[b12, np.full(n, np.pi / 2)], L=1.0))
     zeros = [np.c_[b12, np.arctan2(-a_, c_)]]
     bb = rng.uniform(-np.pi, np.pi, (n_family, 1))
-    zeros.append(np.c_[bb, bb + np.pi * rng.integers(0, 2, (n_family, 1)), bb + np.pi * rng.integers(0, 2, (n_family,
-                                                                                                            1))])
+    zeros.append(
+        np.c_[bb, bb + np.pi * rng.integers(0, 2, (n_family, 1)), bb + np.pi * rng.integers(0, 2, (n_family, 1))]
+    )
     for _item, ((i, k), vals) in p59.extra["singular_sets"].items():
         z = rng.uniform(-np.pi, np.pi, (n_item, 3))
         z[:, i - 1], z[:, k - 1] = np.deg2rad(rng.choice(vals, n_item)), np.deg2rad(rng.choice(vals, n_item))
@@ -281,28 +330,43 @@ def singular_list(det_J, n=1000, n_family=200, n_item=100, seed=SEED):
         control[classify_lines(z, pts)] += 1
     ex = np.array([0.3, 0.3 + np.pi, 0.3])
     bot = paper_robot("centred", L=L_NUM, r=R_NUM)
-    missed = {"beta": np.degrees(ex), "det": float(np.linalg.det(unit.J(ex, L=1.0))),
-              "kappa": float(condition_number(bot.J(ex, L=L_NUM)))}
+    missed = {
+        "beta": np.degrees(ex),
+        "det": float(np.linalg.det(unit.J(ex, L=1.0))),
+        "kappa": float(condition_number(bot.J(ex, L=L_NUM))),
+    }
     complete = all(families.values()) and res < 1e-9 and classes[LINE_CLASSES[4]] == 0 and control[LINE_CLASSES[4]] == n
     # as printed, (i) is "all angles equal" and (v) a finite point: the half-turned parallel family is outside both
     items_as_printed = complete and classes[LINE_CLASSES[1]] == 0
-    return Derivation(families=families, classes=classes, control=control, missed=missed, n_zero=len(Z),
-                      findings=[claim(
-        "singular-list-complete", items_as_printed,
-        r"every item vanishes for every value of its free angle, and so does each $\pi$-turned variant of (i) (SymPy); "
-        rf"all {len(Z)} samples of the zero set are concurrent or parallel wheel planes, none of {n} random "
-        r"configurations is", res,
-        refuted=r"item (i) as printed, $\beta_1 = \beta_2 = \beta_3$, misses the parallel configurations with a wheel "
+    return Derivation(
+        families=families,
+        classes=classes,
+        control=control,
+        missed=missed,
+        n_zero=len(Z),
+        findings=[
+            claim(
+                "singular-list-complete",
+                items_as_printed,
+                r"every item vanishes for every value of its free angle, and so does each $\pi$-turned variant of (i) (SymPy); "
+                rf"all {len(Z)} samples of the zero set are concurrent or parallel wheel planes, none of {n} random "
+                r"configurations is",
+                res,
+                refuted=r"item (i) as printed, $\beta_1 = \beta_2 = \beta_3$, misses the parallel configurations with a wheel "
                 r"turned by $180^\circ$, e.g. "
                 rf"$\boldsymbol\beta = ({missed['beta'][0]:.1f}^\circ, {missed['beta'][1]:.1f}^\circ, "
                 rf"{missed['beta'][2]:.1f}^\circ)$ where $\kappa(\mathbf J) = \infty$",
-        corrected=r"$\det\mathbf J = 0$ if and only if the three wheel-plane lines are concurrent or all parallel; "
-                  r"item (i) must read $\beta_1 \equiv \beta_2 \equiv \beta_3 \pmod{\pi}$, and (ii)-(iv) are special "
-                  r"cases of (v)",
-        corrected_holds=complete, severity="typo",
-        why=r"the list is right up to item (i), which omits the wheels turned by $180^\circ$ (unless parallel planes "
-            r"count as meeting at infinity in (v))",
-        convention=r"the paper's numbering of (59); 'intersect' read as meeting in one finite point")])
+                corrected=r"$\det\mathbf J = 0$ if and only if the three wheel-plane lines are concurrent or all parallel; "
+                r"item (i) must read $\beta_1 \equiv \beta_2 \equiv \beta_3 \pmod{\pi}$, and (ii)-(iv) are special "
+                r"cases of (v)",
+                corrected_holds=complete,
+                severity="typo",
+                why=r"the list is right up to item (i), which omits the wheels turned by $180^\circ$ (unless parallel planes "
+                r"count as meeting at infinity in (v))",
+                convention=r"the paper's numbering of (59); 'intersect' read as meeting in one finite point",
+            )
+        ],
+    )
 
 
 def singular_v(thales, angles_deg=(10, 45, 100, 200, 290), n_inside=50, seed=SEED):
@@ -337,17 +401,28 @@ def singular_v(thales, angles_deg=(10, 45, 100, 200, 290), n_inside=50, seed=SEE
     det_on = float(np.abs(np.linalg.det(bot.J(on, L=L_NUM))).max())
     at_C = int(mobility(bot, planes_through(bot, np.zeros(2))))
     holds = bool(np.all(mob_on == 0))
-    return Derivation(on_circle=mob_on.tolist(), inside=set(mob_in.tolist()), at_C=at_C, n_inside=n_inside,
-                      findings=[claim(
-        "singular-v-immobile", holds, r"with $D_P$ on the circle through $P_1, P_2, P_3$, every axle passes through "
-        rf"the antipode of $D_P$ (SymPy, Thales); numerically, $D_P$ at {len(angles_deg)} points of the circle gives "
-        rf"$\det\mathbf J = 0$ and mobility 1, at {n_inside} random points inside it mobility 0", det_on,
-        refuted=rf"$D_P$ on the circumcircle: $\det\mathbf J = 0$ yet mobility "
+    return Derivation(
+        on_circle=mob_on.tolist(),
+        inside=set(mob_in.tolist()),
+        at_C=at_C,
+        n_inside=n_inside,
+        findings=[
+            claim(
+                "singular-v-immobile",
+                holds,
+                r"with $D_P$ on the circle through $P_1, P_2, P_3$, every axle passes through "
+                rf"the antipode of $D_P$ (SymPy, Thales); numerically, $D_P$ at {len(angles_deg)} points of the circle gives "
+                rf"$\det\mathbf J = 0$ and mobility 1, at {n_inside} random points inside it mobility 0",
+                det_on,
+                refuted=rf"$D_P$ on the circumcircle: $\det\mathbf J = 0$ yet mobility "
                 f"{' or '.join(map(str, sorted(set(mob_on.tolist()))))}",
-        corrected="Concurrent wheel planes cost all mobility unless $D_P$ lies on the circle through $P_1, P_2, P_3$: "
-                  "then the axles meet at the antipode of $D_P$ and the robot can turn about it (mobility 1)",
-        corrected_holds=thales and bool(np.all(mob_on == 1)) and set(mob_in.tolist()) == {0} and det_on < 1e-12,
-        severity="wrong", why="mobility needs concurrent axle lines, and concurrent wheel-plane lines do not exclude "
-                              "them",
-        convention="paper placement (mount points on a circle of radius $L$ about C)",
-        note=rf"$D_P$ at C (Fig. 12a, braking) indeed gives mobility {at_C}")])
+                corrected="Concurrent wheel planes cost all mobility unless $D_P$ lies on the circle through $P_1, P_2, P_3$: "
+                "then the axles meet at the antipode of $D_P$ and the robot can turn about it (mobility 1)",
+                corrected_holds=thales and bool(np.all(mob_on == 1)) and set(mob_in.tolist()) == {0} and det_on < 1e-12,
+                severity="wrong",
+                why="mobility needs concurrent axle lines, and concurrent wheel-plane lines do not exclude them",
+                convention="paper placement (mount points on a circle of radius $L$ about C)",
+                note=rf"$D_P$ at C (Fig. 12a, braking) indeed gives mobility {at_C}",
+            )
+        ],
+    )

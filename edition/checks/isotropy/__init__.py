@@ -16,19 +16,32 @@ The checks, by equation group:
 :mod:`.robust`  robust control: J = J_L1^T J2 isotropic for offset wheels (d = r), kappa >= sqrt 2 for centred
 ==============  ==================================================================================================
 """
+
 from .j2 import J2_isotropy, J2_product, dead_zone_of_isotropy, isotropic_kinematics
 from .jl1 import (
-           RHO,
-           condition_number_def,
-           general_robot,
-           gram,
-           homogeneous_jacobian,
-           isotropic_gram,
-           isotropy_conditions,
-           placement,
+    RHO,
+    condition_number_def,
+    general_robot,
+    gram,
+    homogeneous_jacobian,
+    isotropic_gram,
+    isotropy_conditions,
+    placement,
 )
 from .robust import robust_control
 
-__all__ = ["general_robot", "condition_number_def", "homogeneous_jacobian", "gram", "isotropy_conditions",
-           "placement", "isotropic_gram", "J2_product", "J2_isotropy", "dead_zone_of_isotropy",
-           "isotropic_kinematics", "robust_control", "RHO"]
+__all__ = [
+    "general_robot",
+    "condition_number_def",
+    "homogeneous_jacobian",
+    "gram",
+    "isotropy_conditions",
+    "placement",
+    "isotropic_gram",
+    "J2_product",
+    "J2_isotropy",
+    "dead_zone_of_isotropy",
+    "isotropic_kinematics",
+    "robust_control",
+    "RHO",
+]

@@ -4,6 +4,7 @@ Chapter 3's checks live in :mod:`edition.checks.isotropy`; this module holds one
 derives :math:`\mathbf J_{L1}`, its Gram matrix and the isotropy conditions; each check compares them with the
 printed forms and the package, and adds the numerical evidence.
 """
+
 from __future__ import annotations
 
 from functools import cache
@@ -23,8 +24,16 @@ from ...transcription import printed
 from ...verify import SEED, max_residual, symbolic_equal
 from .. import Derivation, claim, equation, require
 
-__all__ = ["general_robot", "condition_number_def", "homogeneous_jacobian", "gram", "isotropy_conditions",
-           "placement", "isotropic_gram", "RHO"]
+__all__ = [
+    "general_robot",
+    "condition_number_def",
+    "homogeneous_jacobian",
+    "gram",
+    "isotropy_conditions",
+    "placement",
+    "isotropic_gram",
+    "RHO",
+]
 
 
 #: the mount radius symbol of the paper's placement with L left free
@@ -69,13 +78,19 @@ def condition_number_def(JL1, sv, kappa, n_pairs=50, n_random=2000, seed=SEED):
         findings (30) and (31).
     """
     p30, p31 = printed(30), printed(31)
-    require(symbolic_equal(paper_robot("offset", L=RHO, r=S.r, exact=True).J1(S.L), JL1),
-            "wmr's J1(L) of the paper's placement is the derived J_L1")
-    require(symbolic_equal(p30.expr.rhs.subs({S.sigma_l: sp.Max(*sv), S.sigma_s: sp.Min(*sv)}), kappa),
-            "the derived kappa is (30) applied to the derived singular values")
+    require(
+        symbolic_equal(paper_robot("offset", L=RHO, r=S.r, exact=True).J1(S.L), JL1),
+        "wmr's J1(L) of the paper's placement is the derived J_L1",
+    )
+    require(
+        symbolic_equal(p30.expr.rhs.subs({S.sigma_l: sp.Max(*sv), S.sigma_s: sp.Min(*sv)}), kappa),
+        "the derived kappa is (30) applied to the derived singular values",
+    )
     key = sp.default_sort_key
-    holds30 = symbolic_equal(sp.Matrix(sorted([s**2 for s in sv], key=key)),
-                             sp.Matrix(sorted((JL1.T * JL1).eigenvals(multiple=True), key=key)))
+    holds30 = symbolic_equal(
+        sp.Matrix(sorted([s**2 for s in sv], key=key)),
+        sp.Matrix(sorted((JL1.T * JL1).eigenvals(multiple=True), key=key)),
+    )
     kfun = sp.lambdify((RHO, S.L), kappa, "numpy")
     rng = np.random.default_rng(seed)
     res = 0.0
@@ -87,19 +102,38 @@ def condition_number_def(JL1, sv, kappa, n_pairs=50, n_random=2000, seed=SEED):
     sv0 = Robot([CentredWheel((0, 0), r=1)] * 3).J1(sp.Integer(1)).singular_values()
     k_iso = condition_number(paper_robot("offset", L=0.4, r=0.1).J1(0.4))
     lower, upper = p31.expr
-    holds31 = (min(sv0) == 0 and upper == sp.oo and sp.simplify(kappa.subs(S.L, RHO)) == lower
-               and bool(np.all(k_rand >= lower)) and abs(k_iso - 1) <= TOL)
-    return Derivation(k_min=float(k_rand.min()), findings=[
-        equation(30, holds30, r"the squared singular values of $\mathbf J_{L1}$ (paper placement, radius $\rho$, $L$ "
-                              r"free) are the eigenvalues of $\mathbf J_{L1}^{\mathrm T}\mathbf J_{L1}$ (SymPy), "
-                              r"giving $\kappa = \max(\rho/L, L/\rho)$; `wmr.condition_number` agrees at "
-                              rf"{n_pairs} random $(\rho, L)$ and with `numpy.linalg.cond` on {n_random} random "
-                              r"matrices",
-                 res, convention=r"$\sigma_l$, $\sigma_s$ the largest and smallest singular values",
-                 note=r"`wmr.condition_number` returns $\infty$ when $\sigma_s \le 10^{-9}\sigma_l$"),
-        equation(31, holds31, r"$\kappa = 1$ is attained ($\mathbf J_{L1}$ at $L = \rho$) and $\kappa = \infty$ too "
-                              r"(all mount points at C: $\sigma_s = 0$ exactly); every random matrix has "
-                              r"$\kappa \geq 1$", 0.0)])
+    holds31 = (
+        min(sv0) == 0
+        and upper == sp.oo
+        and sp.simplify(kappa.subs(S.L, RHO)) == lower
+        and bool(np.all(k_rand >= lower))
+        and abs(k_iso - 1) <= TOL
+    )
+    return Derivation(
+        k_min=float(k_rand.min()),
+        findings=[
+            equation(
+                30,
+                holds30,
+                r"the squared singular values of $\mathbf J_{L1}$ (paper placement, radius $\rho$, $L$ "
+                r"free) are the eigenvalues of $\mathbf J_{L1}^{\mathrm T}\mathbf J_{L1}$ (SymPy), "
+                r"giving $\kappa = \max(\rho/L, L/\rho)$; `wmr.condition_number` agrees at "
+                rf"{n_pairs} random $(\rho, L)$ and with `numpy.linalg.cond` on {n_random} random "
+                r"matrices",
+                res,
+                convention=r"$\sigma_l$, $\sigma_s$ the largest and smallest singular values",
+                note=r"`wmr.condition_number` returns $\infty$ when $\sigma_s \le 10^{-9}\sigma_l$",
+            ),
+            equation(
+                31,
+                holds31,
+                r"$\kappa = 1$ is attained ($\mathbf J_{L1}$ at $L = \rho$) and $\kappa = \infty$ too "
+                r"(all mount points at C: $\sigma_s = 0$ exactly); every random matrix has "
+                r"$\kappa \geq 1$",
+                0.0,
+            ),
+        ],
+    )
 
 
 def homogeneous_jacobian(JL1, tL):
@@ -123,17 +157,29 @@ def homogeneous_jacobian(JL1, tL):
     require(symbolic_equal(gen.J1(S.L), JL1), "Robot.J1(L) is the derived J_L1")
     J1 = JL1.subs(S.L, 1)
     t = sp.Matrix(gen.twist_symbols)
-    return Derivation(findings=[
-        equation(32, symbolic_equal(JL1, p32.expr.rhs), r"the derived $\mathbf J_{L1}$ and `Robot.J1(L)` for three "
-                 r"general mount points equal the printed matrix (SymPy)", max_residual(JL1, p32.expr.rhs),
-                 convention=r"rows $[\mathbf E\mathbf d_i/L\ \ \mathbf 1]$ in the wheel numbering; "
-                            r"$\mathbf d_i = \overrightarrow{CP_i}$ in the body frame"),
-        equation(33, symbolic_equal(J1 * t, JL1 * tL) and symbolic_equal(tL, p33.expr.rhs),
-                 r"$\mathbf J_1\mathbf t = \mathbf J_{L1}\mathbf t_L$ for every "
-                 r"twist, placement and $L$ (SymPy), so (21) reads "
-                 r"$\mathbf J_{L1}\mathbf t_L = \mathbf J_2\dot{\boldsymbol\theta}$",
-                 max_residual(J1 * t, JL1 * tL), convention=r"$\mathbf t = [\dot\psi\ \dot x\ \dot y]^{\mathrm T}$, "
-                                                            r"body frame")])
+    return Derivation(
+        findings=[
+            equation(
+                32,
+                symbolic_equal(JL1, p32.expr.rhs),
+                r"the derived $\mathbf J_{L1}$ and `Robot.J1(L)` for three "
+                r"general mount points equal the printed matrix (SymPy)",
+                max_residual(JL1, p32.expr.rhs),
+                convention=r"rows $[\mathbf E\mathbf d_i/L\ \ \mathbf 1]$ in the wheel numbering; "
+                r"$\mathbf d_i = \overrightarrow{CP_i}$ in the body frame",
+            ),
+            equation(
+                33,
+                symbolic_equal(J1 * t, JL1 * tL) and symbolic_equal(tL, p33.expr.rhs),
+                r"$\mathbf J_1\mathbf t = \mathbf J_{L1}\mathbf t_L$ for every "
+                r"twist, placement and $L$ (SymPy), so (21) reads "
+                r"$\mathbf J_{L1}\mathbf t_L = \mathbf J_2\dot{\boldsymbol\theta}$",
+                max_residual(J1 * t, JL1 * tL),
+                convention=r"$\mathbf t = [\dot\psi\ \dot x\ \dot y]^{\mathrm T}$, "
+                r"body frame",
+            ),
+        ]
+    )
 
 
 def gram(G):
@@ -152,10 +198,19 @@ def gram(G):
     p34 = printed(34)
     JL1 = general_robot().J1(S.L)
     require(symbolic_equal(JL1.T * JL1, G), "the Gram matrix of Robot.J1(L) is the derived one")
-    return Derivation(findings=[equation(34, symbolic_equal(G, p34.expr.rhs), r"the product of the model's "
-                                              r"$\mathbf J_{L1}$ (general mount points) with its transpose equals the "
-                                              r"printed blocks (SymPy)", max_residual(G, p34.expr.rhs),
-                                              convention="general mount points, three wheels")])
+    return Derivation(
+        findings=[
+            equation(
+                34,
+                symbolic_equal(G, p34.expr.rhs),
+                r"the product of the model's "
+                r"$\mathbf J_{L1}$ (general mount points) with its transpose equals the "
+                r"printed blocks (SymPy)",
+                max_residual(G, p34.expr.rhs),
+                convention="general mount points, three wheels",
+            )
+        ]
+    )
 
 
 def isotropy_conditions(G, solution):
@@ -182,17 +237,32 @@ def isotropy_conditions(G, solution):
     require(symbolic_equal(off_col.subs(solution), sp.zeros(2, 1)), "the derived d_3 solves (35)")
     sol37 = sp.solve(list(p37.expr.lhs - p37.expr.rhs), d3, dict=True)
     res37 = max_residual((p37.expr.lhs - p37.expr.rhs).subs(sol35[0]))
-    return Derivation(findings=[
-        equation(35, symbolic_equal(off_col, p35.expr.lhs) and symbolic_equal(off_row, p35.extra["row_form"].lhs),
-                 r"the off-diagonal blocks of (34) are the printed expressions (SymPy); with (36), necessary and "
-                 r"sufficient for isotropy", max_residual(off_col, p35.expr.lhs)),
-        equation(36, symbolic_equal(corner.lhs - corner.rhs, p36.expr.lhs - p36.expr.rhs),
-                 "the corner entry of (34) equal to the 3 of its lower block (SymPy); with (35), necessary and "
-                 "sufficient",
-                 max_residual(corner.lhs - corner.rhs, p36.expr.lhs - p36.expr.rhs)),
-        equation(37, sol35 == sol37, r"(35) and (37) have the same solution for $\mathbf d_3$ given "
-                 r"$\mathbf d_1, \mathbf d_2$ (SymPy): equivalent since $\mathbf E$ is invertible and $L > 0$", res37,
-                 convention=r"C at the centroid of $P_1P_2P_3$")])
+    return Derivation(
+        findings=[
+            equation(
+                35,
+                symbolic_equal(off_col, p35.expr.lhs) and symbolic_equal(off_row, p35.extra["row_form"].lhs),
+                r"the off-diagonal blocks of (34) are the printed expressions (SymPy); with (36), necessary and "
+                r"sufficient for isotropy",
+                max_residual(off_col, p35.expr.lhs),
+            ),
+            equation(
+                36,
+                symbolic_equal(corner.lhs - corner.rhs, p36.expr.lhs - p36.expr.rhs),
+                "the corner entry of (34) equal to the 3 of its lower block (SymPy); with (35), necessary and "
+                "sufficient",
+                max_residual(corner.lhs - corner.rhs, p36.expr.lhs - p36.expr.rhs),
+            ),
+            equation(
+                37,
+                sol35 == sol37,
+                r"(35) and (37) have the same solution for $\mathbf d_3$ given "
+                r"$\mathbf d_1, \mathbf d_2$ (SymPy): equivalent since $\mathbf E$ is invertible and $L > 0$",
+                res37,
+                convention=r"C at the centroid of $P_1P_2P_3$",
+            ),
+        ]
+    )
 
 
 def placement(counterexample, G, L2, n=200, seed=SEED):
@@ -224,7 +294,9 @@ def placement(counterexample, G, L2, n=200, seed=SEED):
     require(L2 == sp.Rational(sum(norms), 3), "L^2 is the mean squared distance")
     ce = Robot([OffsetWheel(q, r=S.r, d=S.d) for q in pts])
     require(symbolic_equal(ce.J1(sp.sqrt(L2)).T * ce.J1(sp.sqrt(L2)), G), "wmr gives the derived Gram matrix")
-    sides = [sp.sqrt(sum((a - b)**2 for a, b in zip(pts[i], pts[j], strict=True))) for i, j in ((0, 1), (1, 2), (2, 0))]
+    sides = [
+        sp.sqrt(sum((a - b) ** 2 for a, b in zip(pts[i], pts[j], strict=True))) for i, j in ((0, 1), (1, 2), (2, 0))
+    ]
     num = Robot([OffsetWheel(tuple(map(float, q)), r=0.1, d=0.1) for q in counterexample])
     L_num = characteristic_length(num)
     k_ce = float(condition_number(num.J1(L_num)))
@@ -240,26 +312,51 @@ def placement(counterexample, G, L2, n=200, seed=SEED):
         res = max(res, abs(float(condition_number(bot.J1(np.sqrt(np.mean(np.sum(tri**2, axis=1)))))) - 1.0))
     proven = G == 3 * sp.eye(3) and abs(k_ce - 1) <= TOL and res < 1e-9 and abs(L_num**2 - float(L2)) < 1e-12
     ce_text = ", ".join(f"$({a}, {b})$" for a, b in counterexample)
-    refuted = (rf"$P_i$ = {ce_text}, an isosceles triangle with sides ${', '.join(sp.latex(s) for s in sides)}$ and "
-               rf"centroid C, has $\mathbf J_{{L1}}^{{\mathrm T}}\mathbf J_{{L1}} = 3\cdot\mathbf 1$ exactly at "
-               rf"$L^2 = {sp.latex(L2)}$ while $\mathbf d_i^{{\mathrm T}}\mathbf d_i = {', '.join(map(str, norms))}$")
-    proof = (r"with (37), $\mathbf J_{L1}$ is isotropic iff $L^2 = \tfrac13\sum_i\mathbf d_i^{\mathrm T}\mathbf d_i$ "
-             r"(SymPy on the "
-             rf"counterexample); $\kappa(\mathbf J_{{L1}}) = 1$ at {n} random triangles with centroid C and $L$ their "
-             r"RMS distance")
-    return Derivation(norms=norms, sides=sides, kappa=k_ce, findings=[
-        equation(38, printed_holds, proof, res, refuted=refuted,
-                 corrected=r"L^2 = \frac13\sum_{i=1}^{3}\mathbf d_i^{\mathrm T}\mathbf d_i",
-                 corrected_holds=proven, severity="wrong",
-                 why=r"(36) with (37) fixes only the mean of $\mathbf d_i^{\mathrm T}\mathbf d_i$: equal distances are "
-                     r"sufficient, not necessary", convention="C at the centroid (37)"),
-        claim("isotropy-placement", len(set(sides)) == 1 and proven, proof, res, refuted=refuted,
-              corrected=r"$\mathbf J_{L1}$ is isotropic if and only if $\sum_i\mathbf d_i = \mathbf 0$ and "
-                        r"$L^2 = \tfrac13\sum_i\|\mathbf d_i\|^2$: any triangle with its centroid at C will do; the "
-                        r"equilateral triangle is the special case with $L$ its circumradius",
-              corrected_holds=proven, severity="wrong",
-              why="isotropy does not need an equilateral triangle, only the centroid at C and the right $L$",
-              convention=r"isotropy of $\mathbf J_{L1}$ with the characteristic length $L$ free")])
+    refuted = (
+        rf"$P_i$ = {ce_text}, an isosceles triangle with sides ${', '.join(sp.latex(s) for s in sides)}$ and "
+        rf"centroid C, has $\mathbf J_{{L1}}^{{\mathrm T}}\mathbf J_{{L1}} = 3\cdot\mathbf 1$ exactly at "
+        rf"$L^2 = {sp.latex(L2)}$ while $\mathbf d_i^{{\mathrm T}}\mathbf d_i = {', '.join(map(str, norms))}$"
+    )
+    proof = (
+        r"with (37), $\mathbf J_{L1}$ is isotropic iff $L^2 = \tfrac13\sum_i\mathbf d_i^{\mathrm T}\mathbf d_i$ "
+        r"(SymPy on the "
+        rf"counterexample); $\kappa(\mathbf J_{{L1}}) = 1$ at {n} random triangles with centroid C and $L$ their "
+        r"RMS distance"
+    )
+    return Derivation(
+        norms=norms,
+        sides=sides,
+        kappa=k_ce,
+        findings=[
+            equation(
+                38,
+                printed_holds,
+                proof,
+                res,
+                refuted=refuted,
+                corrected=r"L^2 = \frac13\sum_{i=1}^{3}\mathbf d_i^{\mathrm T}\mathbf d_i",
+                corrected_holds=proven,
+                severity="wrong",
+                why=r"(36) with (37) fixes only the mean of $\mathbf d_i^{\mathrm T}\mathbf d_i$: equal distances are "
+                r"sufficient, not necessary",
+                convention="C at the centroid (37)",
+            ),
+            claim(
+                "isotropy-placement",
+                len(set(sides)) == 1 and proven,
+                proof,
+                res,
+                refuted=refuted,
+                corrected=r"$\mathbf J_{L1}$ is isotropic if and only if $\sum_i\mathbf d_i = \mathbf 0$ and "
+                r"$L^2 = \tfrac13\sum_i\|\mathbf d_i\|^2$: any triangle with its centroid at C will do; the "
+                r"equilateral triangle is the special case with $L$ its circumradius",
+                corrected_holds=proven,
+                severity="wrong",
+                why="isotropy does not need an equilateral triangle, only the centroid at C and the right $L$",
+                convention=r"isotropy of $\mathbf J_{L1}$ with the characteristic length $L$ free",
+            ),
+        ],
+    )
 
 
 def isotropic_gram(G, L_iso, rho=0.4, n=20, seed=SEED):
@@ -296,16 +393,30 @@ def isotropic_gram(G, L_iso, rho=0.4, n=20, seed=SEED):
     kap = np.array([condition_number(bot.J1(L)) for L in grid])
     resL = abs(characteristic_length(bot) - rho)
     at = float(grid[kap.argmin()])
-    return Derivation(L_grid=grid, kappa_grid=kap, findings=[
-        equation(39, symbolic_equal(G, p39.expr.rhs),
-                 r"$\mathbf J_{L1}^{\mathrm T}\mathbf J_{L1}$ of the paper's placement "
-                 r"with symbolic $L$ equals $3\cdot\mathbf 1$ (SymPy); numerically at " rf"{n} random $L$", res39,
-                 convention=r"paper placement $\mathbf d_1 = L(-1, 0)$, "
-                            r"$\mathbf d_{2,3} = L(\tfrac12, \pm\tfrac{\sqrt3}{2})$; holds for every placement "
-                            r"satisfying (35)-(36)"),
-        claim("isotropy-L", L_iso == [RHO] and abs(at - rho) < 1e-12 and resL < 1e-12,
-              r"$\kappa(\mathbf J_{L1}) = \max(\rho/L, L/\rho)$ exactly, which is 1 only at $L = \rho$; on a grid of "
-              rf"{len(grid)} values of $L$ the minimum is at $L = {at:g} = \rho$; `wmr.characteristic_length` returns "
-              r"it", resL,
-              convention=r"equilateral placement with centroid C; in general $L$ is the RMS distance "
-                         r"$\sqrt{\tfrac13\sum_i\|\mathbf d_i\|^2}$")])
+    return Derivation(
+        L_grid=grid,
+        kappa_grid=kap,
+        findings=[
+            equation(
+                39,
+                symbolic_equal(G, p39.expr.rhs),
+                r"$\mathbf J_{L1}^{\mathrm T}\mathbf J_{L1}$ of the paper's placement "
+                r"with symbolic $L$ equals $3\cdot\mathbf 1$ (SymPy); numerically at "
+                rf"{n} random $L$",
+                res39,
+                convention=r"paper placement $\mathbf d_1 = L(-1, 0)$, "
+                r"$\mathbf d_{2,3} = L(\tfrac12, \pm\tfrac{\sqrt3}{2})$; holds for every placement "
+                r"satisfying (35)-(36)",
+            ),
+            claim(
+                "isotropy-L",
+                L_iso == [RHO] and abs(at - rho) < 1e-12 and resL < 1e-12,
+                r"$\kappa(\mathbf J_{L1}) = \max(\rho/L, L/\rho)$ exactly, which is 1 only at $L = \rho$; on a grid of "
+                rf"{len(grid)} values of $L$ the minimum is at $L = {at:g} = \rho$; `wmr.characteristic_length` returns "
+                r"it",
+                resL,
+                convention=r"equilateral placement with centroid C; in general $L$ is the RMS distance "
+                r"$\sqrt{\tfrac13\sum_i\|\mathbf d_i\|^2}$",
+            ),
+        ],
+    )

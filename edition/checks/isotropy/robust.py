@@ -3,6 +3,7 @@ wherever they move.
 
 Chapter 3's checks live in :mod:`edition.checks.isotropy`; this module holds one group of them.
 """
+
 from __future__ import annotations
 
 import numpy as np
@@ -29,7 +30,7 @@ def _mobile_configurations(bot, n, seed):
     """
     rng = np.random.default_rng(seed)
     tw = rng.normal(size=(2 * n, 3))
-    tw[n:, 0] = 0.0                                             # translations
+    tw[n:, 0] = 0.0  # translations
     return steering_angles(bot, tw), tw
 
 
@@ -84,7 +85,7 @@ def robust_control(n=100000, seed=SEED):
     J, JL1 = gen.J(L=S.L), gen.J1(S.L)
     beta = gen.beta_symbols
     axle = [sp.Matrix([sp.cos(b), sp.sin(b)]) for b in beta]
-    A = sp.Matrix.vstack(*[axle[k].T * JL1[2 * k:2 * k + 2, :] for k in range(3)])
+    A = sp.Matrix.vstack(*[axle[k].T * JL1[2 * k : 2 * k + 2, :] for k in range(3)])
     identity = symbolic_equal(J * J.T, S.r**2 * (JL1.T * JL1 - A.T * A))
     # numbers on the paper's robot
     bot = paper_robot("centred", L=1.0, r=1.0)
@@ -105,44 +106,61 @@ def robust_control(n=100000, seed=SEED):
     ex = np.radians([-135.0, 105.0, -15.0])
     example = {"kappa": float(condition_number(bot.J(ex, L=1.0))), "rank_F": int(rank_F(bot, ex))}
     bound_holds = bool(rot.min() >= np.sqrt(2) - 1e-9) and bool(np.all(np.isinf(tra)))
-    require(mobile and bool(np.all(np.abs(smax - np.sqrt(3)) < 1e-9)), "at mobile configurations sigma_max(J) = "
-                                                                       "sqrt(3) r")
+    require(
+        mobile and bool(np.all(np.abs(smax - np.sqrt(3)) < 1e-9)), "at mobile configurations sigma_max(J) = sqrt(3) r"
+    )
     offset_holds = offset_robust and off_res < 1e-9
-    return Derivation(offset_kappa_max=off_kappa, identity=identity, kappa_mobile_min=float(rot.min()),
-                      at=np.degrees(B[i]), kappa_about_C=k_about_C, translations_infinite=bool(np.all(np.isinf(tra))),
-                      example=example, n=n, findings=[claim(
-        "robust-offset", offset_holds,
-        r"offset wheels, $d = r$: $\mathbf J\mathbf J^{\mathrm T} = \mathbf J_{L1}^{\mathrm T}(\mathbf J_2"
-        r"\mathbf J_2^{\mathrm T})\mathbf J_{L1} = 3r^2\mathbf 1$ at every $\boldsymbol\beta$ (SymPy); at "
-        rf"{n} random steering angles of the paper's robot the largest $\kappa(\mathbf J)$ is "
-        rf"${1 + round(off_kappa - 1, 9):g}$", off_res,
-        refuted=r"$\mathbf J\mathbf J^{\mathrm T} \neq 3r^2\mathbf 1$",
-        convention=r"robustness read as the condition number of the composite "
-                   r"$\mathbf J = \mathbf J_{L1}^{\mathrm T}\mathbf J_2$ (56); paper placement, $L$ the mount radius"),
-        claim(
-        "robust-centred", bool(np.all(np.abs(rot - 1) < 1e-9)) and not np.any(np.isinf(tra)),
-        r"$\mathbf J\mathbf J^{\mathrm T} = r^2(\mathbf J_{L1}^{\mathrm T}\mathbf J_{L1} - \mathbf A^{\mathrm "
-        r"T}\mathbf A)$ for general mount points (SymPy), hence $\kappa(\mathbf J) \geq \sqrt2$ wherever the robot "
-        r"can move; "
-        rf"$\kappa(\mathbf J) = {sp.latex(k_about_C)}$ exactly for the rotation about C; over {n} random rotations "
-        rf"the smallest $\kappa$ is ${rot.min():.4f}$ and all {n} random translations give $\kappa = \infty$",
-        res,
-        refuted=r"three centred wheels with isotropic $\mathbf J_{L1}$ and $\mathbf J_2$ have "
+    return Derivation(
+        offset_kappa_max=off_kappa,
+        identity=identity,
+        kappa_mobile_min=float(rot.min()),
+        at=np.degrees(B[i]),
+        kappa_about_C=k_about_C,
+        translations_infinite=bool(np.all(np.isinf(tra))),
+        example=example,
+        n=n,
+        findings=[
+            claim(
+                "robust-offset",
+                offset_holds,
+                r"offset wheels, $d = r$: $\mathbf J\mathbf J^{\mathrm T} = \mathbf J_{L1}^{\mathrm T}(\mathbf J_2"
+                r"\mathbf J_2^{\mathrm T})\mathbf J_{L1} = 3r^2\mathbf 1$ at every $\boldsymbol\beta$ (SymPy); at "
+                rf"{n} random steering angles of the paper's robot the largest $\kappa(\mathbf J)$ is "
+                rf"${1 + round(off_kappa - 1, 9):g}$",
+                off_res,
+                refuted=r"$\mathbf J\mathbf J^{\mathrm T} \neq 3r^2\mathbf 1$",
+                convention=r"robustness read as the condition number of the composite "
+                r"$\mathbf J = \mathbf J_{L1}^{\mathrm T}\mathbf J_2$ (56); paper placement, $L$ the mount radius",
+            ),
+            claim(
+                "robust-centred",
+                bool(np.all(np.abs(rot - 1) < 1e-9)) and not np.any(np.isinf(tra)),
+                r"$\mathbf J\mathbf J^{\mathrm T} = r^2(\mathbf J_{L1}^{\mathrm T}\mathbf J_{L1} - \mathbf A^{\mathrm "
+                r"T}\mathbf A)$ for general mount points (SymPy), hence $\kappa(\mathbf J) \geq \sqrt2$ wherever the robot "
+                r"can move; "
+                rf"$\kappa(\mathbf J) = {sp.latex(k_about_C)}$ exactly for the rotation about C; over {n} random rotations "
+                rf"the smallest $\kappa$ is ${rot.min():.4f}$ and all {n} random translations give $\kappa = \infty$",
+                res,
+                refuted=r"three centred wheels with isotropic $\mathbf J_{L1}$ and $\mathbf J_2$ have "
                 r"$\kappa(\mathbf J) \geq \sqrt2$ at every configuration where they can move, and "
                 r"$\kappa(\mathbf J) = \infty$ in every translation",
-        corrected=r"Centred wheels: "
-                  r"$\mathbf J\mathbf J^{\mathrm T} = r^2(3\cdot\mathbf 1 - \mathbf A^{\mathrm T}\mathbf A)$ with "
-                  r"$\mathbf A$ the axle constraints, so wherever the robot can move (axles concurrent, "
-                  r"$\operatorname{rank}\mathbf F = 5$) $\kappa(\mathbf J) \geq \sqrt2$, with equality only for the "
-                  r"rotation about C, and $\kappa(\mathbf J) = \infty$ in every translation (all wheel planes "
-                  r"parallel); $\mathbf J$ is isotropic only at configurations where the robot cannot move",
-        corrected_holds=identity and bound_holds and k_about_C == sp.sqrt(2), severity="wrong",
-        why=r"isotropy of the factors $\mathbf J_{L1}$ and $\mathbf J_2$ does not make the composite $\mathbf J$ "
-            r"isotropic for centred wheels: it depends on $\boldsymbol\beta$ and is never better than $\sqrt2$ where "
-            r"the robot moves",
-        convention=r"robustness read as the condition number of the composite "
-                   r"$\mathbf J = \mathbf J_{L1}^{\mathrm T}\mathbf J_2$ (56) used by (49) and (55); paper placement, "
-                   r"$L$ the mount radius",
-        note=r"$\kappa(\mathbf J) = 1$ does occur, e.g. at $(-135^\circ, 105^\circ, -15^\circ)$ "
-             rf"($\kappa = {example['kappa']:.3f}$), but there $\operatorname{{rank}}\mathbf F = {example['rank_F']}$: "
-             r"the robot cannot move")])
+                corrected=r"Centred wheels: "
+                r"$\mathbf J\mathbf J^{\mathrm T} = r^2(3\cdot\mathbf 1 - \mathbf A^{\mathrm T}\mathbf A)$ with "
+                r"$\mathbf A$ the axle constraints, so wherever the robot can move (axles concurrent, "
+                r"$\operatorname{rank}\mathbf F = 5$) $\kappa(\mathbf J) \geq \sqrt2$, with equality only for the "
+                r"rotation about C, and $\kappa(\mathbf J) = \infty$ in every translation (all wheel planes "
+                r"parallel); $\mathbf J$ is isotropic only at configurations where the robot cannot move",
+                corrected_holds=identity and bound_holds and k_about_C == sp.sqrt(2),
+                severity="wrong",
+                why=r"isotropy of the factors $\mathbf J_{L1}$ and $\mathbf J_2$ does not make the composite $\mathbf J$ "
+                r"isotropic for centred wheels: it depends on $\boldsymbol\beta$ and is never better than $\sqrt2$ where "
+                r"the robot moves",
+                convention=r"robustness read as the condition number of the composite "
+                r"$\mathbf J = \mathbf J_{L1}^{\mathrm T}\mathbf J_2$ (56) used by (49) and (55); paper placement, "
+                r"$L$ the mount radius",
+                note=r"$\kappa(\mathbf J) = 1$ does occur, e.g. at $(-135^\circ, 105^\circ, -15^\circ)$ "
+                rf"($\kappa = {example['kappa']:.3f}$), but there $\operatorname{{rank}}\mathbf F = {example['rank_F']}$: "
+                r"the robot cannot move",
+            ),
+        ],
+    )

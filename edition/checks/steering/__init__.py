@@ -15,9 +15,21 @@ The checks, by equation group:
 :mod:`.centre`      the instantaneous centre, (61)-(64)
 ==================  =========================================================================
 """
+
 from .centre import centre_to_wheel, instant_centre, instant_centre_velocity
 from .constraint import KIND_NAMES, TWIST, evaluate, feasibility, no_slip, robot
 from .laws import rotation_angles, translation
 
-__all__ = ["robot", "TWIST", "no_slip", "feasibility", "evaluate", "translation",
-           "instant_centre_velocity", "instant_centre", "centre_to_wheel", "rotation_angles", "KIND_NAMES"]
+__all__ = [
+    "robot",
+    "TWIST",
+    "no_slip",
+    "feasibility",
+    "evaluate",
+    "translation",
+    "instant_centre_velocity",
+    "instant_centre",
+    "centre_to_wheel",
+    "rotation_angles",
+    "KIND_NAMES",
+]

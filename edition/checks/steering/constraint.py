@@ -2,6 +2,7 @@ r"""The no-slip constraint of a centred wheel and the feasibility of a twist.
 
 Chapter 5's checks live in :mod:`edition.checks.steering`; this module holds one group of them.
 """
+
 from __future__ import annotations
 
 import numpy as np
@@ -121,9 +122,11 @@ def feasibility(beta, twist, bot=None):
     J2 = bot.J2(beta)
     J1t = np.asarray(twist) @ bot.J1().T
     speed = np.linalg.norm(J1t, axis=-1)
-    return {"rank_F": set(np.atleast_1d(rank_F(bot, beta)).tolist()),
-            "rank_J2": set(np.atleast_1d(rank(J2)).tolist()),
-            "rank_J2_J1t": set(np.atleast_1d(rank(np.concatenate([J2, J1t[..., None]], -1))).tolist()),
-            "admissible": float(np.mean(sol.admissible)),
-            "min_rel_residual": float(np.min(np.linalg.norm(sol.residual, axis=-1) / speed)),
-            "max_residual": float(np.max(np.abs(sol.residual)))}
+    return {
+        "rank_F": set(np.atleast_1d(rank_F(bot, beta)).tolist()),
+        "rank_J2": set(np.atleast_1d(rank(J2)).tolist()),
+        "rank_J2_J1t": set(np.atleast_1d(rank(np.concatenate([J2, J1t[..., None]], -1))).tolist()),
+        "admissible": float(np.mean(sol.admissible)),
+        "min_rel_residual": float(np.min(np.linalg.norm(sol.residual, axis=-1) / speed)),
+        "max_residual": float(np.max(np.abs(sol.residual))),
+    }

@@ -17,12 +17,30 @@ what the chapter derived.  The checks, by equation group:
 :mod:`.dual`      the dual wheel, (13)-(19): no slip, the turning rate, its integral and the average
 ================  ================================================================================================
 """
+
 from .dual import dual_average, dual_average_angle, dual_integrated, dual_no_slip, dual_steering
 from .frames import k, lift, planar, time
 from .platform import platform_point, platform_row, skew_matrix, twist_layout
 from .wheel import centred_wheel, offset_in_body, offset_wheel, rolling_disk, steering_composition, wheel_frame
 
-__all__ = ["k", "lift", "planar", "time", "platform_point", "skew_matrix", "twist_layout",
-           "platform_row", "rolling_disk", "steering_composition", "offset_wheel", "wheel_frame",
-           "offset_in_body", "centred_wheel", "dual_no_slip", "dual_steering", "dual_integrated", "dual_average",
-           "dual_average_angle"]
+__all__ = [
+    "k",
+    "lift",
+    "planar",
+    "time",
+    "platform_point",
+    "skew_matrix",
+    "twist_layout",
+    "platform_row",
+    "rolling_disk",
+    "steering_composition",
+    "offset_wheel",
+    "wheel_frame",
+    "offset_in_body",
+    "centred_wheel",
+    "dual_no_slip",
+    "dual_steering",
+    "dual_integrated",
+    "dual_average",
+    "dual_average_angle",
+]

@@ -3,6 +3,7 @@ r"""3D lifting, the vertical axis, time, and the printed symbols of the wheel ax
 Chapter 1's checks live in :mod:`edition.checks.wheels`; this module holds one group of them.  The
 derivations themselves (the rolling disk, the offset wheel, ...) are in the chapter's notebook.
 """
+
 from __future__ import annotations
 
 import sympy as sp

@@ -3,6 +3,7 @@ r"""The platform, (2)-(5): point velocities, E, the twist layout, the row of a p
 Chapter 1's checks live in :mod:`edition.checks.wheels`; this module holds one group of them.  Each check
 takes what the chapter derived and compares it with the printed form and the package.
 """
+
 from __future__ import annotations
 
 import numpy as np
@@ -48,12 +49,21 @@ def platform_point(p_dot, n=500, seed=SEED):
     f = sp.lambdify([S.psi_dot, S.x_dot, S.y_dot, *S.d_i], p_dot, "numpy")
     num = float(np.abs(point_velocity(tw, dd) - np.moveaxis(f(*tw.T, *dd.T)[:, 0], 0, -1)).max())
     require(num < TOL, "wmr.point_velocity equals the rigid-body velocity")
-    return Derivation(p_dot=p_dot, findings=[equation(
-        2, holds, rf"equal to $\dot{{\mathbf c}} + \dot\psi\,\mathbf k\times\mathbf d_i$ (3D cross product, SymPy); "
-                  rf"`wmr.point_velocity` agrees at {n} random twists and points", max(res, num),
-        convention=r"$\dot\psi\times\mathbf d_i$ read as $(\dot\psi\mathbf k)\times\mathbf d_i$; body-frame components",
-        note=r"the extraction's undefined middle term $\dot{\mathbf c}_w$ dropped; the relation is frame-free "
-             r"because $\mathbf E$ commutes with rotations")])
+    return Derivation(
+        p_dot=p_dot,
+        findings=[
+            equation(
+                2,
+                holds,
+                rf"equal to $\dot{{\mathbf c}} + \dot\psi\,\mathbf k\times\mathbf d_i$ (3D cross product, SymPy); "
+                rf"`wmr.point_velocity` agrees at {n} random twists and points",
+                max(res, num),
+                convention=r"$\dot\psi\times\mathbf d_i$ read as $(\dot\psi\mathbf k)\times\mathbf d_i$; body-frame components",
+                note=r"the extraction's undefined middle term $\dot{\mathbf c}_w$ dropped; the relation is frame-free "
+                r"because $\mathbf E$ commutes with rotations",
+            )
+        ],
+    )
 
 
 def skew_matrix(E_derived):
@@ -72,14 +82,24 @@ def skew_matrix(E_derived):
     P = printed(3)
     E_derived = sp.Matrix(E_derived)
     M = P.expr.rhs
-    holds = (symbolic_equal(E_derived, M) and symbolic_equal(M.T, -M) and symbolic_equal(rotation(sp.pi / 2, SYMBOLIC),
-                                                                                         M))
+    holds = (
+        symbolic_equal(E_derived, M) and symbolic_equal(M.T, -M) and symbolic_equal(rotation(sp.pi / 2, SYMBOLIC), M)
+    )
     require(symbolic_equal(E(SYMBOLIC), E_derived), "wmr.E is the derived matrix")
     res = float(np.abs(E() - np.array(E_derived, dtype=float)).max())
-    return Derivation(E=E_derived, findings=[equation(
-        3, holds, r"the columns $\mathbf k\times\mathbf e_1$, $\mathbf k\times\mathbf e_2$ (SymPy); skew-symmetric and "
-                  r"equal to the rotation through $+90^\circ$; `wmr.E` is the same matrix", res,
-        convention=r"$\mathbf k$ up, angles counter-clockwise positive")])
+    return Derivation(
+        E=E_derived,
+        findings=[
+            equation(
+                3,
+                holds,
+                r"the columns $\mathbf k\times\mathbf e_1$, $\mathbf k\times\mathbf e_2$ (SymPy); skew-symmetric and "
+                r"equal to the rotation through $+90^\circ$; `wmr.E` is the same matrix",
+                res,
+                convention=r"$\mathbf k$ up, angles counter-clockwise positive",
+            )
+        ],
+    )
 
 
 def twist_layout():
@@ -93,10 +113,19 @@ def twist_layout():
     P = printed(4)
     bot = Robot([CentredWheel(S.d_i, r=S.r)])
     holds = list(bot.twist_symbols) == list(P.expr.rhs)
-    return Derivation(names=bot.qdot_names[:3], findings=[equation(
-        4, holds, r"`Robot.twist_symbols` is $[\dot\psi\ \dot x\ \dot y]$, the order used by "
-                  r"$\mathbf J_1$, $\mathbf F$ and the kinematics", 0.0,
-        convention=r"$\mathbf t = [\dot\psi\ \dot x\ \dot y]^{\mathrm T}$, $\dot{\mathbf c}$ in body components")])
+    return Derivation(
+        names=bot.qdot_names[:3],
+        findings=[
+            equation(
+                4,
+                holds,
+                r"`Robot.twist_symbols` is $[\dot\psi\ \dot x\ \dot y]$, the order used by "
+                r"$\mathbf J_1$, $\mathbf F$ and the kinematics",
+                0.0,
+                convention=r"$\mathbf t = [\dot\psi\ \dot x\ \dot y]^{\mathrm T}$, $\dot{\mathbf c}$ in body components",
+            )
+        ],
+    )
 
 
 def platform_row(row, p_dot, n=5, samples=500, seed=SEED):
@@ -124,16 +153,28 @@ def platform_row(row, p_dot, n=5, samples=500, seed=SEED):
     bot = Robot([CentredWheel(S.d_i, r=S.r)])
     t = sp.Matrix(bot.twist_symbols)
     require(symbolic_equal(point_row(S.d_i, backend=SYMBOLIC), row), "wmr's point_row is the derived row")
-    holds = (symbolic_equal(row, P.extra["matrix"]) and symbolic_equal(row * t, p_dot)
-             and symbolic_equal(sp.nsimplify(bot.J1()), P.extra["matrix"]))
+    holds = (
+        symbolic_equal(row, P.extra["matrix"])
+        and symbolic_equal(row * t, p_dot)
+        and symbolic_equal(sp.nsimplify(bot.J1()), P.extra["matrix"])
+    )
     res = max_residual(row * t, P.expr.rhs)
     rng = np.random.default_rng(seed)
     tw, dd = rng.uniform(-2, 2, (samples, 3)), rng.uniform(-2, 2, (n, 2))
     J1 = Robot([CentredWheel(p, r=1.0) for p in dd]).J1()
     num = float(np.abs((tw[:, None, :] @ J1.T)[:, 0].reshape(-1, n, 2) - point_velocity(tw[:, None, :], dd)).max())
     require(num < TOL, "the numeric J1 times a twist equals wmr.point_velocity")
-    return Derivation(row=row, findings=[equation(
-        5, holds, r"the derived row, `point_row` and the blocks of `Robot.J1` equal the printed row, and the row "
-                  rf"times $\mathbf t$ equals the derived (2) (SymPy); the numeric $\mathbf J_1$ of a {n}-unit robot "
-                  rf"agrees with `wmr.point_velocity` at {samples} random twists", max(res, num),
-        convention=r"$\mathbf t$ ordered as (4)")])
+    return Derivation(
+        row=row,
+        findings=[
+            equation(
+                5,
+                holds,
+                r"the derived row, `point_row` and the blocks of `Robot.J1` equal the printed row, and the row "
+                rf"times $\mathbf t$ equals the derived (2) (SymPy); the numeric $\mathbf J_1$ of a {n}-unit robot "
+                rf"agrees with `wmr.point_velocity` at {samples} random twists",
+                max(res, num),
+                convention=r"$\mathbf t$ ordered as (4)",
+            )
+        ],
+    )

@@ -4,6 +4,7 @@ Chapter 1's checks live in :mod:`edition.checks.wheels`; this module holds one g
 takes what the chapter derived (the rolling disk's ``h_dot`` and axes ``i3``, ``j3``, ...) and compares it
 with the printed form and the package.
 """
+
 from __future__ import annotations
 
 import numpy as np
@@ -44,12 +45,20 @@ def rolling_disk(h_dot, i3, j3):
     rhs = explicit(P.expr.rhs, unit_axes(i3, j3))
     holds = symbolic_equal(planar(h_dot), rhs)
     res = max_residual(planar(h_dot), rhs)
-    return Derivation(findings=[equation(
-        6, holds, r"solving $\dot{\mathbf h}_i + \boldsymbol\Omega\times(-r\mathbf k) = \mathbf 0$ with "
-                  r"$\boldsymbol\Omega = \dot\theta_i\mathbf i_i + \dot\phi_i\mathbf k$ gives the printed form "
-                  r"(SymPy)", res,
-        convention=r"$\dot\theta_i$ positive about $+\mathbf i_i$ (right-hand rule); "
-                   r"$\mathbf j_i = \mathbf k\times\mathbf i_i$")])
+    return Derivation(
+        findings=[
+            equation(
+                6,
+                holds,
+                r"solving $\dot{\mathbf h}_i + \boldsymbol\Omega\times(-r\mathbf k) = \mathbf 0$ with "
+                r"$\boldsymbol\Omega = \dot\theta_i\mathbf i_i + \dot\phi_i\mathbf k$ gives the printed form "
+                r"(SymPy)",
+                res,
+                convention=r"$\dot\theta_i$ positive about $+\mathbf i_i$ (right-hand rule); "
+                r"$\mathbf j_i = \mathbf k\times\mathbf i_i$",
+            )
+        ]
+    )
 
 
 def steering_composition(R_wheel, W, n=200, seed=SEED):
@@ -85,13 +94,28 @@ def steering_composition(R_wheel, W, n=200, seed=SEED):
     num7 = float(np.abs(psi_d + unit.beta_rate(psi_d, np.stack([phi_d, 0 * phi_d], -1)) - phi_d).max())
     require(num7 < TOL, "OffsetWheel.beta_rate implements (7)")
     conv = r"$\beta_i$ relative to the platform, $\phi_i$ absolute"
-    return Derivation(findings=[
-        equation(7, holds7, r"$\dot{\mathbf R}\mathbf R^{\mathrm T} = (\dot\psi + \dot\beta_i)\mathbf E$ for "
-                            r"$\mathbf R = \mathbf R(\psi(t))\mathbf R(\beta_i(t))$ (SymPy); `OffsetWheel.beta_rate` "
-                            rf"implements it ({n} random rates)", num7, convention=conv),
-        equation(8, holds8, r"$\mathbf R(\psi)\mathbf R(\beta_i) = \mathbf R(\psi + \beta_i)$ (SymPy)", res8,
-                 convention=conv, note=r"the gloss after (8), '$\psi$ and $\beta_i$ are both zero if $\phi_i = 0$', "
-                                       r"states the converse of the intended zero integration constant")])
+    return Derivation(
+        findings=[
+            equation(
+                7,
+                holds7,
+                r"$\dot{\mathbf R}\mathbf R^{\mathrm T} = (\dot\psi + \dot\beta_i)\mathbf E$ for "
+                r"$\mathbf R = \mathbf R(\psi(t))\mathbf R(\beta_i(t))$ (SymPy); `OffsetWheel.beta_rate` "
+                rf"implements it ({n} random rates)",
+                num7,
+                convention=conv,
+            ),
+            equation(
+                8,
+                holds8,
+                r"$\mathbf R(\psi)\mathbf R(\beta_i) = \mathbf R(\psi + \beta_i)$ (SymPy)",
+                res8,
+                convention=conv,
+                note=r"the gloss after (8), '$\psi$ and $\beta_i$ are both zero if $\phi_i = 0$', "
+                r"states the converse of the intended zero integration constant",
+            ),
+        ]
+    )
 
 
 def offset_wheel(p_dot, i3, j3, n=50):
@@ -125,13 +149,21 @@ def offset_wheel(p_dot, i3, j3, n=50):
     pts = OffsetWheel((0.4, -0.2), r=0.1, d=0.07).points(betas)
     require(np.abs(pts["H"] - (pts["P"] - 0.07 * pts["j"])).max() < TOL, "the package puts H_i at P_i - d j_i")
     require(other_fails, "the other side of the offset gives another sign")
-    return Derivation(findings=[equation(
-        9, holds, r"$\dot{\mathbf h}_i + \dot\phi_i\mathbf k\times d\,\mathbf j_i$ with (6) equals the printed form "
-                  r"(SymPy); the centre on the other side of the steering axis gives another sign; "
-                  r"`OffsetWheel.points` puts the centre at $P_i - d\,\mathbf j_i$", res,
-        convention=r"wheel centre $H_i = P_i - d\,\mathbf j_i$; $\dot\phi_i$ the absolute steering rate",
-        note="the side of the offset is not stated in the text (Fig. 4 is missing); this is the side that gives the "
-             "printed sign")])
+    return Derivation(
+        findings=[
+            equation(
+                9,
+                holds,
+                r"$\dot{\mathbf h}_i + \dot\phi_i\mathbf k\times d\,\mathbf j_i$ with (6) equals the printed form "
+                r"(SymPy); the centre on the other side of the steering axis gives another sign; "
+                r"`OffsetWheel.points` puts the centre at $P_i - d\,\mathbf j_i$",
+                res,
+                convention=r"wheel centre $H_i = P_i - d\,\mathbf j_i$; $\dot\phi_i$ the absolute steering rate",
+                note="the side of the offset is not stated in the text (Fig. 4 is missing); this is the side that gives the "
+                "printed sign",
+            )
+        ]
+    )
 
 
 def wheel_frame(R):
@@ -149,12 +181,24 @@ def wheel_frame(R):
     """
     P = printed(11)
     M = P.expr.rhs
-    holds = (symbolic_equal(R, M) and symbolic_equal(rotation(S.beta_i, SYMBOLIC), M)
-             and symbolic_equal(M.T * M, sp.eye(2)) and symbolic_equal(M.det(), 1))
-    return Derivation(findings=[equation(
-        11, holds, r"the wheel axes at $\phi_i = \psi + \beta_i$ rotated back by $\psi$ are the printed columns "
-                   r"(SymPy); orthogonal with determinant 1, equal to `wmr.rotation`", max_residual(R, M),
-        convention=r"$\beta_i$ counter-clockwise from $\mathbf i$ to $\mathbf i_i$")])
+    holds = (
+        symbolic_equal(R, M)
+        and symbolic_equal(rotation(S.beta_i, SYMBOLIC), M)
+        and symbolic_equal(M.T * M, sp.eye(2))
+        and symbolic_equal(M.det(), 1)
+    )
+    return Derivation(
+        findings=[
+            equation(
+                11,
+                holds,
+                r"the wheel axes at $\phi_i = \psi + \beta_i$ rotated back by $\psi$ are the printed columns "
+                r"(SymPy); orthogonal with determinant 1, equal to `wmr.rotation`",
+                max_residual(R, M),
+                convention=r"$\beta_i$ counter-clockwise from $\mathbf i$ to $\mathbf i_i$",
+            )
+        ]
+    )
 
 
 def offset_in_body(p_B, in_wheel):
@@ -176,14 +220,25 @@ def offset_in_body(p_B, in_wheel):
     unit = OffsetWheel(S.d_i, r=S.r, d=S.d)
     require(unit.rate_names(1) == ("phi_dot_1", "theta_dot_1"), "the offset unit's rates are (phi_dot, theta_dot)")
     p_wmr = unit.block(S.beta_i) * sp.Matrix([S.phi_dot_i, S.theta_dot_i])
-    holds = (symbolic_equal(p_B, P.expr.rhs) and symbolic_equal(p_wmr, P.expr.rhs)
-             and symbolic_equal(in_wheel, sp.Matrix([-S.d * S.phi_dot_i, -S.r * S.theta_dot_i])))
+    holds = (
+        symbolic_equal(p_B, P.expr.rhs)
+        and symbolic_equal(p_wmr, P.expr.rhs)
+        and symbolic_equal(in_wheel, sp.Matrix([-S.d * S.phi_dot_i, -S.r * S.theta_dot_i]))
+    )
     res = max(max_residual(p_B, P.expr.rhs), max_residual(p_wmr, P.expr.rhs))
-    return Derivation(findings=[equation(
-        10, holds, r"(9) rotated into the body frame equals "
-                   r"$\mathbf R_{bwi}[-d\dot\phi_i\ \ -r\dot\theta_i]^{\mathrm T}$ and `OffsetWheel.block` times the "
-                   r"rates (SymPy)", res,
-        convention=r"$H_i = P_i - d\,\mathbf j_i$; $[\dot{\mathbf p}_i]$ in wheel-frame components")])
+    return Derivation(
+        findings=[
+            equation(
+                10,
+                holds,
+                r"(9) rotated into the body frame equals "
+                r"$\mathbf R_{bwi}[-d\dot\phi_i\ \ -r\dot\theta_i]^{\mathrm T}$ and `OffsetWheel.block` times the "
+                r"rates (SymPy)",
+                res,
+                convention=r"$H_i = P_i - d\,\mathbf j_i$; $[\dot{\mathbf p}_i]$ in wheel-frame components",
+            )
+        ]
+    )
 
 
 def centred_wheel(p_B):
@@ -203,6 +258,14 @@ def centred_wheel(p_B):
     p_wmr = CentredWheel(S.d_i, r=S.r).block(S.beta_i) * sp.Matrix([S.theta_dot_i])
     holds = symbolic_equal(p_B, P.expr.rhs) and symbolic_equal(p_wmr, P.expr.rhs)
     res = max(max_residual(p_B, P.expr.rhs), max_residual(p_wmr, P.expr.rhs))
-    return Derivation(findings=[equation(
-        12, holds, r"the derived (10) at $d = 0$ and `CentredWheel.block` equal the printed form (SymPy)", res,
-        convention="(10) with $d = 0$")])
+    return Derivation(
+        findings=[
+            equation(
+                12,
+                holds,
+                r"the derived (10) at $d = 0$ and `CentredWheel.block` equal the printed form (SymPy)",
+                res,
+                convention="(10) with $d = 0$",
+            )
+        ]
+    )

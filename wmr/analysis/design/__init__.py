@@ -36,16 +36,28 @@ triangle centred at C with :math:`d = r` ((37), (38), (46)) -- with :func:`worst
 Modules: :mod:`~wmr.analysis.design.worst_case` (the measure, designs, the screening kernel) and
 :mod:`~wmr.analysis.design.space` (the search, slices of the design space).
 """
+
 from .space import DesignSearch, Landscape, landscape, search
 from .worst_case import (
-                         COARSE_STEPS,
-                         FINE_STEPS,
-                         WheelDesign,
-                         WorstCase,
-                         equilateral_design,
-                         worst_kappa,
-                         worst_kappa_designs,
+    COARSE_STEPS,
+    FINE_STEPS,
+    WheelDesign,
+    WorstCase,
+    equilateral_design,
+    worst_kappa,
+    worst_kappa_designs,
 )
 
-__all__ = ["WorstCase", "worst_kappa", "WheelDesign", "equilateral_design", "worst_kappa_designs", "DesignSearch",
-           "search", "Landscape", "landscape", "COARSE_STEPS", "FINE_STEPS"]
+__all__ = [
+    "WorstCase",
+    "worst_kappa",
+    "WheelDesign",
+    "equilateral_design",
+    "worst_kappa_designs",
+    "DesignSearch",
+    "search",
+    "Landscape",
+    "landscape",
+    "COARSE_STEPS",
+    "FINE_STEPS",
+]

@@ -2,6 +2,7 @@ r"""The search over designs of three offset wheels, and two slices of the design
 
 See :mod:`wmr.analysis.design` for the measure and the parametrisation.
 """
+
 from __future__ import annotations
 
 from dataclasses import dataclass
@@ -15,7 +16,7 @@ from .worst_case import COARSE_STEPS, WheelDesign, compass_search, equilateral_d
 
 __all__ = ["DesignSearch", "search", "Landscape", "landscape"]
 
-_P1 = (-1.0, 0.0)                      # wheel 1 of every searched design (fixes rotation and scale)
+_P1 = (-1.0, 0.0)  # wheel 1 of every searched design (fixes rotation and scale)
 
 
 def _design(p, ratio):
@@ -72,8 +73,9 @@ class DesignSearch:
         return bool(self.reference_kappa <= self.best_kappa * (1.0 + self.rtol))
 
 
-def search(ratio: float | None = None, n: int = 600, starts: int = 3, seed: int = 0,
-           rtol: float = 0.001) -> DesignSearch:
+def search(
+    ratio: float | None = None, n: int = 600, starts: int = 3, seed: int = 0, rtol: float = 0.001
+) -> DesignSearch:
     r"""Search three-offset-wheel designs for the smallest worst-case :math:`\kappa(\mathbf J)`.
 
     1. ``n`` designs :math:`\mathbf p = (x_2, y_2, x_3, y_3, \log_2 d/r)` drawn uniformly from
@@ -113,7 +115,7 @@ def search(ratio: float | None = None, n: int = 600, starts: int = 3, seed: int 
     seed = V.integer("seed", seed, minimum=0)
     rtol = float(V.number("rtol", V.positive("rtol", rtol)))
     dim = 4 if ratio is not None else 5
-    beta = Grid(COARSE_STEPS, 0.0, np.pi).configurations(3, 0, COARSE_STEPS ** 3)
+    beta = Grid(COARSE_STEPS, 0.0, np.pi).configurations(3, 0, COARSE_STEPS**3)
     count = [0]
 
     def f(P):
@@ -126,10 +128,17 @@ def search(ratio: float | None = None, n: int = 600, starts: int = 3, seed: int 
     p_best = min(refined, key=lambda xf: xf[1])[0]
     best = _design(p_best, ratio)
     paper, reference = equilateral_design(1.0), equilateral_design(best.ratio)
-    return DesignSearch(best=best, best_kappa=worst_kappa(best.robot()).kappa,
-                        paper=paper, paper_kappa=worst_kappa(paper.robot()).kappa,
-                        reference=reference, reference_kappa=worst_kappa(reference.robot()).kappa,
-                        ratio_fixed=ratio is not None, evaluated=count[0], rtol=rtol)
+    return DesignSearch(
+        best=best,
+        best_kappa=worst_kappa(best.robot()).kappa,
+        paper=paper,
+        paper_kappa=worst_kappa(paper.robot()).kappa,
+        reference=reference,
+        reference_kappa=worst_kappa(reference.robot()).kappa,
+        ratio_fixed=ratio is not None,
+        evaluated=count[0],
+        rtol=rtol,
+    )
 
 
 # ------------------------------------------------------------------------------------ the design space
@@ -188,7 +197,7 @@ def landscape(n: int = 41, m: int = 41, moved: ArrayLike = (0.2, 1.2)) -> Landsc
     """
     n, m = V.integer("n", n, minimum=2), V.integer("m", m, minimum=2)
     moved = np.array(V.point("moved", moved), dtype=float)
-    beta = Grid(COARSE_STEPS, 0.0, np.pi).configurations(3, 0, COARSE_STEPS ** 3)
+    beta = Grid(COARSE_STEPS, 0.0, np.pi).configurations(3, 0, COARSE_STEPS**3)
     paper = equilateral_design(1.0)
     ratios = np.logspace(-2, 2, n, base=2.0)
     shifted = paper.mounts.copy()
@@ -197,8 +206,10 @@ def landscape(n: int = 41, m: int = 41, moved: ArrayLike = (0.2, 1.2)) -> Landsc
     km = worst_kappa_designs([WheelDesign(shifted, q) for q in ratios], beta)
     x, y = np.linspace(-1.4, 2.0, m), np.linspace(-1.2, 2.2, m)
     X, Y = np.meshgrid(x, y)
-    designs = [WheelDesign(np.array([paper.mounts[0], (a, b), paper.mounts[2]]), 1.0)
-               for a, b in zip(X.ravel(), Y.ravel())]
+    designs = [
+        WheelDesign(np.array([paper.mounts[0], (a, b), paper.mounts[2]]), 1.0) for a, b in zip(X.ravel(), Y.ravel())
+    ]
     K = worst_kappa_designs(designs, beta).reshape(m, m)
-    return Landscape(ratios=ratios, kappa_paper=kp, kappa_moved=km, moved=moved, x=x, y=y, kappa_map=K,
-                     mounts=paper.mounts)
+    return Landscape(
+        ratios=ratios, kappa_paper=kp, kappa_moved=km, moved=moved, x=x, y=y, kappa_map=K, mounts=paper.mounts
+    )

@@ -2,6 +2,7 @@ r"""The worst-case :math:`\kappa(\mathbf J)` of one robot, layouts of offset whe
 
 See :mod:`wmr.analysis.design` for the measure and its notation.
 """
+
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
@@ -19,8 +20,15 @@ from ..linalg import condition_number
 from ..sweep import Grid, sweep
 from ..sweep.execute import Angles
 
-__all__ = ["WorstCase", "worst_kappa", "WheelDesign", "equilateral_design", "worst_kappa_designs", "COARSE_STEPS",
-           "FINE_STEPS"]
+__all__ = [
+    "WorstCase",
+    "worst_kappa",
+    "WheelDesign",
+    "equilateral_design",
+    "worst_kappa_designs",
+    "COARSE_STEPS",
+    "FINE_STEPS",
+]
 
 #: configurations of the screening grid (per angle, over [0, pi)) and of the final evaluation
 COARSE_STEPS, FINE_STEPS = 6, 24
@@ -49,8 +57,15 @@ class WorstCase:
     count: int
 
 
-def compass_search(f: Callable[[FloatArray], FloatArray], x0: ArrayLike, step: ArrayLike, lo: ArrayLike, hi: ArrayLike,
-                   tol: float, max_iter: int = 400) -> tuple[FloatArray, float]:
+def compass_search(
+    f: Callable[[FloatArray], FloatArray],
+    x0: ArrayLike,
+    step: ArrayLike,
+    lo: ArrayLike,
+    hi: ArrayLike,
+    tol: float,
+    max_iter: int = 400,
+) -> tuple[FloatArray, float]:
     """Minimise ``f`` from ``x0`` by compass search: the 2n axis moves of the current step are evaluated at
     once; the best improving move is taken, else the step is halved.
 
@@ -130,9 +145,11 @@ def worst_kappa(robot: Robot, angles: Angles | None = None, L: float | None = No
     res = sweep(robot, "kappa_J", angles, L=L, quantiles=(1.0,))
     beta, kappa = np.array(res.worst_angles, dtype=float), float(res.worst)
     if V.flag("refine", refine) and np.isfinite(kappa):
+
         def f(b):
             k = condition_number(robot.J(b, L=L))
             return -np.where(np.isfinite(k), k, 1.0 / np.finfo(float).eps)
+
         beta, neg = compass_search(f, beta, np.pi / 24, -np.inf, np.inf, 1e-7)
         kappa = max(kappa, -neg)
     return WorstCase(kappa=kappa, beta=np.mod(beta, np.pi), grid_kappa=float(res.worst), count=res.count)
@@ -205,7 +222,7 @@ class WheelDesign:
         -------
         float
         """
-        rms = float(np.sqrt(np.mean(np.sum(self.mounts ** 2, axis=1))))
+        rms = float(np.sqrt(np.mean(np.sum(self.mounts**2, axis=1))))
         return float(np.linalg.norm(self.mounts.mean(axis=0))) / rms
 
     def sides(self) -> FloatArray:
@@ -236,6 +253,7 @@ def equilateral_design(ratio: float = 1.0) -> WheelDesign:
     WheelDesign
     """
     from ...model.robots import equilateral_mounts
+
     return WheelDesign(np.array(equilateral_mounts(1.0)), V.number("ratio", V.nonnegative("ratio", ratio)), 1.0)
 
 
@@ -266,13 +284,13 @@ def worst_kappa_designs(designs: Sequence[WheelDesign], beta: ArrayLike) -> Floa
     if beta.shape[0] == 0:
         raise InputValueError(f"beta must hold at least one configuration, got shape {np.shape(beta)}")
     out = np.empty(len(designs))
-    step = max(1, (1 << 17) // beta.shape[0])                      # designs per chunk: bounded memory
+    step = max(1, (1 << 17) // beta.shape[0])  # designs per chunk: bounded memory
     for a in range(0, len(designs), step):
         Js = []
-        for x in designs[a:a + step]:
+        for x in designs[a : a + step]:
             bot = x.robot()
             Js.append(bot.J(beta, L=characteristic_length(bot)))
-        J = np.stack(Js)                                           # (chunk, K, 3, n_rates)
-        G = J @ np.swapaxes(J, -1, -2)                             # J J^T (chunk, K, 3, 3)
-        out[a:a + step] = np.sqrt(condition_number(G)).max(axis=1)
+        J = np.stack(Js)  # (chunk, K, 3, n_rates)
+        G = J @ np.swapaxes(J, -1, -2)  # J J^T (chunk, K, 3, 3)
+        out[a : a + step] = np.sqrt(condition_number(G)).max(axis=1)
     return out

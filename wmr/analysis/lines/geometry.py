@@ -2,6 +2,7 @@ r"""2-D line geometry: where two lines meet, whether several are concurrent (PlÃ
 
 Part of :mod:`wmr.analysis.lines`; nothing here knows about robots.
 """
+
 from __future__ import annotations
 
 import enum
@@ -15,8 +16,20 @@ from ...model import validation as V
 from ...model.tolerance import near_zero
 from ...model.types import ArrayLike, FloatArray, Numbers, Point
 
-__all__ = ["Meet", "FINITE", "AT_INFINITY", "STILL", "NONE", "COINCIDENT", "PARALLEL", "Concurrency",
-           "line_intersection", "pair_intersections", "lines_concurrency", "circumcircle"]
+__all__ = [
+    "Meet",
+    "FINITE",
+    "AT_INFINITY",
+    "STILL",
+    "NONE",
+    "COINCIDENT",
+    "PARALLEL",
+    "Concurrency",
+    "line_intersection",
+    "pair_intersections",
+    "lines_concurrency",
+    "circumcircle",
+]
 
 
 class Meet(enum.IntEnum):
@@ -28,16 +41,22 @@ class Meet(enum.IntEnum):
     (True, 'FINITE')
     """
 
-    FINITE = 0        #: at a finite point
-    AT_INFINITY = 1   #: all parallel: they meet at a point at infinity (a translation's centre)
-    STILL = 2         #: no motion, no centre (instantaneous centre of a zero twist)
-    NONE = 3          #: nowhere: the lines are not concurrent
-    COINCIDENT = 4    #: two lines that are the same line
-    PARALLEL = 5      #: two distinct parallel lines
+    FINITE = 0  #: at a finite point
+    AT_INFINITY = 1  #: all parallel: they meet at a point at infinity (a translation's centre)
+    STILL = 2  #: no motion, no centre (instantaneous centre of a zero twist)
+    NONE = 3  #: nowhere: the lines are not concurrent
+    COINCIDENT = 4  #: two lines that are the same line
+    PARALLEL = 5  #: two distinct parallel lines
 
 
 FINITE, AT_INFINITY, STILL, NONE, COINCIDENT, PARALLEL = (
-    Meet.FINITE, Meet.AT_INFINITY, Meet.STILL, Meet.NONE, Meet.COINCIDENT, Meet.PARALLEL)
+    Meet.FINITE,
+    Meet.AT_INFINITY,
+    Meet.STILL,
+    Meet.NONE,
+    Meet.COINCIDENT,
+    Meet.PARALLEL,
+)
 
 
 def line_intersection(p1: ArrayLike, u1: ArrayLike, p2: ArrayLike, u2: ArrayLike) -> tuple[Meet, FloatArray | None]:
@@ -67,23 +86,25 @@ def line_intersection(p1: ArrayLike, u1: ArrayLike, p2: ArrayLike, u2: ArrayLike
         if not np.any(u):
             raise InputValueError(f"{name} must be a non-zero direction, got {V.show(u)}")
     n1, n2 = u1 / np.hypot(*u1), u2 / np.hypot(*u2)
-    cross = n1[0] * n2[1] - n1[1] * n2[0]                     # sine of the angle between the lines
+    cross = n1[0] * n2[1] - n1[1] * n2[0]  # sine of the angle between the lines
     w = p2 - p1
     if near_zero(cross):
-        off = n1[0] * w[1] - n1[1] * w[0]                     # distance of p2 from line 1
+        off = n1[0] * w[1] - n1[1] * w[0]  # distance of p2 from line 1
         size = float(max(np.abs(p1).max(), np.abs(p2).max()))  # relative to where the lines are
         return (COINCIDENT, None) if near_zero(off, size) else (PARALLEL, None)
     with np.errstate(over="ignore", invalid="ignore"):
         s = (w[0] * n2[1] - w[1] * n2[0]) / cross
         point = p1 + s * n1
     if not np.isfinite(point).all():
-        raise InputValueError(f"p1, u1, p2, u2: the intersection is beyond double precision (p1 = {V.show(p1)}, "
-                         f"p2 = {V.show(p2)})")
+        raise InputValueError(
+            f"p1, u1, p2, u2: the intersection is beyond double precision (p1 = {V.show(p1)}, p2 = {V.show(p2)})"
+        )
     return FINITE, point
 
 
-def pair_intersections(points: ArrayLike,
-                       directions: ArrayLike) -> dict[tuple[int, int], tuple[Meet, FloatArray | None]]:
+def pair_intersections(
+    points: ArrayLike, directions: ArrayLike
+) -> dict[tuple[int, int], tuple[Meet, FloatArray | None]]:
     r"""All pairwise intersections :math:`D_{ij}` of lines (one configuration).
 
     Parameters
@@ -98,8 +119,9 @@ def pair_intersections(points: ArrayLike,
     points = V.finite_array("points", points, last=2)
     directions = V.finite_array("directions", directions, last=2)
     if points.ndim != 2 or points.shape != directions.shape:
-        raise InputValueError(f"points and directions must both have shape (w, 2), got {points.shape} and "
-                              f"{directions.shape}")
+        raise InputValueError(
+            f"points and directions must both have shape (w, 2), got {points.shape} and {directions.shape}"
+        )
     if not np.all(np.any(directions != 0, axis=-1)):
         raise InputValueError(f"directions must be non-zero vectors, got {V.show(directions)}")
     out = {}
@@ -125,8 +147,8 @@ class Concurrency:
     """
 
     kind: Meet
-    point: Any                 # numpy.ndarray (2,) when kind is FINITE, else None
-    direction: Any             # numpy.ndarray (2,) when kind is AT_INFINITY, else None
+    point: Any  # numpy.ndarray (2,) when kind is FINITE, else None
+    direction: Any  # numpy.ndarray (2,) when kind is AT_INFINITY, else None
     residual: float
 
 
@@ -155,16 +177,17 @@ def lines_concurrency(points: ArrayLike, directions: ArrayLike) -> Concurrency:
     p = V.finite_array("points", points, last=2)
     u = V.finite_array("directions", directions, last=2)
     if p.ndim != 2 or p.shape != u.shape or len(p) < 2:
-        raise InputValueError(f"points and directions must both have shape (n, 2) with n >= 2, "
-                         f"got {p.shape} and {u.shape}")
+        raise InputValueError(
+            f"points and directions must both have shape (n, 2) with n >= 2, got {p.shape} and {u.shape}"
+        )
     big = np.abs(u).max(axis=-1, keepdims=True)
     if np.any(big == 0):
         raise InputValueError(f"directions must be non-zero vectors, got {u.tolist()}")
-    u = u / big                                         # (scaled first: no overflow for huge directions)
+    u = u / big  # (scaled first: no overflow for huge directions)
     u = u / np.linalg.norm(u, axis=-1, keepdims=True)
-    scale = float(np.abs(p).max()) or 1.0              # the size of the figure, in its own unit
+    scale = float(np.abs(p).max()) or 1.0  # the size of the figure, in its own unit
     m = (p[:, 0] * u[:, 1] - p[:, 1] * u[:, 0]) / scale
-    W = np.stack([m, u[:, 0], u[:, 1]])                 # (3, n)
+    W = np.stack([m, u[:, 0], u[:, 1]])  # (3, n)
     U, s, _ = np.linalg.svd(W)
     res = float(s[-1]) if W.shape[1] >= 3 else 0.0
     if W.shape[1] >= 3 and not near_zero(res):
@@ -208,19 +231,20 @@ def circumcircle(points: Numbers) -> tuple[Point, Numbers]:
     ((0, 0), 1)
     """
     import sympy as sp
+
     if isinstance(points, (str, bytes)) or not hasattr(points, "__len__") or isinstance(points, sp.Basic):
         raise InputTypeError(f"points must be three points (pairs), got {V.show(points)}")
     pts = [V.point(f"points[{k}]", q) for k, q in enumerate(points)]
     if len(pts) != 3:
         raise InputValueError(f"points must be three points, got {len(pts)}")
     if not any(isinstance(v, sp.Basic) for q in pts for v in q):
-        size = float(np.abs(pts).max()) or 1.0         # scaled to the figure's size: no overflow, any unit
+        size = float(np.abs(pts).max()) or 1.0  # scaled to the figure's size: no overflow, any unit
         (ux, uy), R2 = _circle([(x / size, y / size) for x, y in pts], near_zero, pts)
         centre, radius = np.array([ux, uy]) * size, float(np.sqrt(R2)) * size
         if not (np.isfinite(centre).all() and np.isfinite(radius)):
             raise InputValueError(f"points are too large: their circumcircle overflows, got {pts}")
         return centre, radius
-    exact = [tuple(sp.sympify(v) for v in q) for q in points]                 # ints stay exact
+    exact = [tuple(sp.sympify(v) for v in q) for q in points]  # ints stay exact
     (ux, uy), R2 = _circle(exact, lambda dd: sp.simplify(dd) == 0, pts)
     ux, uy = sp.radsimp(ux), sp.radsimp(uy)
     return (ux, uy), sp.sqrt(sp.radsimp((exact[0][0] - ux) ** 2 + (exact[0][1] - uy) ** 2))

@@ -2,6 +2,7 @@ r"""A robot's lines: axle and wheel-plane lines, where they meet, and the angles
 
 Part of :mod:`wmr.analysis.lines`.
 """
+
 from __future__ import annotations
 
 import numpy as np
@@ -14,8 +15,15 @@ from ...model.tolerance import TOL
 from ...model.types import ArrayLike, FloatArray
 from .geometry import Concurrency, lines_concurrency
 
-__all__ = ["wheel_plane_lines", "axle_lines", "concurrency_point", "axles_concurrency", "planes_through",
-           "axles_through", "pair_line_angle"]
+__all__ = [
+    "wheel_plane_lines",
+    "axle_lines",
+    "concurrency_point",
+    "axles_concurrency",
+    "planes_through",
+    "axles_through",
+    "pair_line_angle",
+]
 
 
 def _unit_points(robot, beta):
@@ -67,12 +75,14 @@ def axle_lines(robot: Robot, beta: ArrayLike) -> tuple[FloatArray, FloatArray]:
 def _one(robot, beta, what):
     robot = V.numeric_robot(robot)
     if robot.w < 2:
-        raise InputValueError(f"robot must have at least two wheel units for {what} (lines to meet), "
-                              f"got {V.show(robot)}")
+        raise InputValueError(
+            f"robot must have at least two wheel units for {what} (lines to meet), got {V.show(robot)}"
+        )
     beta = robot.effective_beta(beta)
     if beta.ndim != 1:
-        raise InputValueError(f"beta must be one configuration of shape ({robot.w},) for {what}, "
-                              f"got shape {beta.shape}")
+        raise InputValueError(
+            f"beta must be one configuration of shape ({robot.w},) for {what}, got shape {beta.shape}"
+        )
     return beta
 
 
@@ -126,10 +136,10 @@ def planes_through(robot: Robot, D: ArrayLike) -> FloatArray:
     """
     robot = V.numeric_robot(robot)
     D = V.finite_array("D", D, last=2)
-    v = D[..., None, :] - robot.mount_points                        # (..., w, 2)
-    beta = np.arctan2(-v[..., 0], v[..., 1])                       # j = (-sin b, cos b) || v
+    v = D[..., None, :] - robot.mount_points  # (..., w, 2)
+    beta = np.arctan2(-v[..., 0], v[..., 1])  # j = (-sin b, cos b) || v
     beta = np.where(_at(v, robot, D), 0.0, beta)
-    return robot.effective_beta(line_angle(beta))                 # fixed, Swedish: their own angle
+    return robot.effective_beta(line_angle(beta))  # fixed, Swedish: their own angle
 
 
 def axles_through(robot: Robot, U: ArrayLike) -> FloatArray:
@@ -148,9 +158,9 @@ def axles_through(robot: Robot, U: ArrayLike) -> FloatArray:
     robot = V.numeric_robot(robot)
     U = V.finite_array("U", U, last=2)
     v = U[..., None, :] - robot.mount_points
-    beta = np.arctan2(v[..., 1], v[..., 0])                        # i = (cos b, sin b) || v
+    beta = np.arctan2(v[..., 1], v[..., 0])  # i = (cos b, sin b) || v
     beta = np.where(_at(v, robot, U), 0.0, beta)
-    return robot.effective_beta(line_angle(beta))                 # fixed, Swedish: their own angle
+    return robot.effective_beta(line_angle(beta))  # fixed, Swedish: their own angle
 
 
 def _at(v, robot, X):

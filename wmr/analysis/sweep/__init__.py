@@ -38,6 +38,7 @@ Where the parts live:
 :mod:`~wmr.analysis.sweep.result`          the result, :class:`Sweep`
 =========================================  =====================================================================
 """
+
 from .analyses import ANALYSES
 from .configurations import Grid, Sample
 from .execute import CHUNK, QUANTILES, sweep

@@ -3,6 +3,7 @@ r"""The analyses a sweep evaluates, by name (:data:`ANALYSES`; the table is in :
 Each one maps a robot and a chunk of configurations :math:`\boldsymbol\beta` (shape ``(k, w)``) to
 one value per configuration (shape ``(k,)``) with the batched kernels.
 """
+
 from __future__ import annotations
 
 from collections.abc import Callable
@@ -32,54 +33,62 @@ def J_length(robot: Robot, L: float | None) -> float:
     float
     """
     from ..isotropy import characteristic_length
+
     V.numeric_robot(robot)
     return characteristic_length(robot) if L is None else V.number("L", V.positive("L", L))
 
 
 def _rank_F(robot, beta, L):
     from ..mobility import rank_F
+
     return rank_F(robot, beta)
 
 
 def _mobility(robot, beta, L):
     from ..mobility import mobility
+
     return mobility(robot, beta)
 
 
 def _det_J(robot, beta, L):
     from ..linalg import det
+
     return det(robot.J(beta, L=L))
 
 
 def _kappa_J(robot, beta, L):
     from ..linalg import condition_number
+
     return condition_number(robot.J(beta, L=L))
 
 
 def _kappa_J_drivable(source, start, stop, L, fold):
     from .motions import kappa_J_drivable
+
     return kappa_J_drivable(source, start, stop, L, fold)
 
 
 def _actuated(robot, beta, L):
     from ..actuation import actuated_mobility
+
     return actuated_mobility(robot, beta)
 
 
 def _kappa_JL1(robot, beta, L):
     from ..linalg import condition_number
+
     return np.full(beta.shape[:-1], float(condition_number(robot.J1(L))))
 
 
 @dataclass(frozen=True)
 class _Analysis:
     title: str
-    evaluate: Callable[..., Any]      # (robot, beta (k, w), L) -> (k,)
+    evaluate: Callable[..., Any]  # (robot, beta (k, w), L) -> (k,)
     integer: bool
-    worst: str                # "min", "max" or "min_abs"
+    worst: str  # "min", "max" or "min_abs"
     uses_L: bool = False
     square: bool = False
-    drivable: Callable[..., Any] | None = None      # (source, start, stop, L, fold) -> bool: a fused kernel
+    drivable: Callable[..., Any] | None = None  # (source, start, stop, L, fold) -> bool: a fused kernel
 
 
 #: The analyses :func:`sweep` knows, by name.

@@ -4,6 +4,7 @@ Every source numbers its configurations ``0 .. size(w) - 1`` and hands out any r
 (``configurations(w, start, stop)``, shape ``(stop - start, w)``) without generating the others,
 so chunks can be made anywhere, in any order.
 """
+
 from __future__ import annotations
 
 import math
@@ -103,8 +104,10 @@ class Grid:
     def covers(self):
         """The set of configurations, in words (for the reductions)."""
         steps = "x".join(map(str, self.steps)) if isinstance(self.steps, tuple) else f"{self.steps} per angle"
-        return (f"all steering angles (drivable or not): a grid of {steps} over "
-                f"[{math.degrees(self.lo):g}, {math.degrees(self.hi):g}) deg")
+        return (
+            f"all steering angles (drivable or not): a grid of {steps} over "
+            f"[{math.degrees(self.lo):g}, {math.degrees(self.hi):g}) deg"
+        )
 
     def shape(self, w: int) -> tuple[int, ...]:
         """Values per angle.
@@ -121,7 +124,7 @@ class Grid:
         if isinstance(self.steps, tuple):
             if len(self.steps) != w:
                 raise InputValueError(f"Grid.steps has {len(self.steps)} entries, the robot has w = {w} angles")
-            return cast(tuple[int, ...], self.steps)      # (ints: checked when the grid was made)
+            return cast(tuple[int, ...], self.steps)  # (ints: checked when the grid was made)
         return (cast(int, self.steps),) * w
 
     def size(self, w: int) -> int:
@@ -201,8 +204,10 @@ class Sample:
     @property
     def covers(self):
         """The set of configurations, in words (for the reductions)."""
-        return (f"all steering angles (drivable or not): {self.n:,} configurations drawn uniformly from "
-                f"[{math.degrees(self.lo):g}, {math.degrees(self.hi):g}) deg per angle (seed {self.seed})")
+        return (
+            f"all steering angles (drivable or not): {self.n:,} configurations drawn uniformly from "
+            f"[{math.degrees(self.lo):g}, {math.degrees(self.hi):g}) deg per angle (seed {self.seed})"
+        )
 
     def size(self, w: int) -> int:
         """Number of configurations (``n``, whatever ``w``).
@@ -233,9 +238,10 @@ class Sample:
         numpy.ndarray (stop - start, w)
         """
         first, last = start // BLOCK, (stop - 1) // BLOCK
-        blocks = [np.random.default_rng([self.seed, j]).uniform(self.lo, self.hi, (BLOCK, w))
-                  for j in range(first, last + 1)]
-        return np.concatenate(blocks)[start - first * BLOCK: stop - first * BLOCK]
+        blocks = [
+            np.random.default_rng([self.seed, j]).uniform(self.lo, self.hi, (BLOCK, w)) for j in range(first, last + 1)
+        ]
+        return np.concatenate(blocks)[start - first * BLOCK : stop - first * BLOCK]
 
 
 @dataclass(frozen=True)

@@ -4,6 +4,7 @@ The configurations ``0 .. N-1`` are cut into chunks of ``chunk`` consecutive num
 is generated, evaluated with the batched kernels and reduced (:func:`_evaluate`, which is what a
 Dask worker runs), and the partial reductions are merged as they arrive.
 """
+
 from __future__ import annotations
 
 import signal
@@ -45,6 +46,7 @@ def _evaluate(task, start, stop, threads):
     Runs in this process or on a Dask worker; ``threads`` limits the kernels' threads.
     """
     from .._batch import limit_threads
+
     robot, name, source, w, L, keep = task
     an = ANALYSES[name]
 
@@ -52,12 +54,14 @@ def _evaluate(task, start, stop, threads):
         part = Partial()
         part.add(first, x.astype(np.int64) if an.integer else x.astype(float), an.integer, keep)
         return part
+
     with limit_threads(threads):
-        if an.drivable is not None and isinstance(source, Motions):      # a fused kernel from the twists,
-            parts: dict[int, Partial] = {}                                # reduced block by block on any core
+        if an.drivable is not None and isinstance(source, Motions):  # a fused kernel from the twists,
+            parts: dict[int, Partial] = {}  # reduced block by block on any core
 
             def fold(first, x):
                 parts[first] = reduced(first, x)
+
             if an.drivable(source, start, stop, L, fold):
                 whole = Partial()
                 for first in sorted(parts):
@@ -67,10 +71,19 @@ def _evaluate(task, start, stop, threads):
     return reduced(start, x)
 
 
-def sweep(robot: Robot, analysis: str, angles: Angles, *, L: float | None = None,
-          quantiles: Sequence[float] = QUANTILES, keep: bool = False, chunk: int = CHUNK,
-          progress: Callable[[int, int], object] | None = None, client: Any = None,
-          interruptible: bool = False) -> Sweep:
+def sweep(
+    robot: Robot,
+    analysis: str,
+    angles: Angles,
+    *,
+    L: float | None = None,
+    quantiles: Sequence[float] = QUANTILES,
+    keep: bool = False,
+    chunk: int = CHUNK,
+    progress: Callable[[int, int], object] | None = None,
+    client: Any = None,
+    interruptible: bool = False,
+) -> Sweep:
     r"""Evaluate an analysis over a grid or sample of configurations, chunk by chunk.
 
     Each chunk of configurations :math:`\boldsymbol\beta_k\in\mathbb R^w` is evaluated with the
@@ -138,6 +151,7 @@ def sweep(robot: Robot, analysis: str, angles: Angles, *, L: float | None = None
     0.0
     """
     from ...model.robot import Robot
+
     if not isinstance(robot, Robot):
         raise InputTypeError(f"robot must be a wmr.Robot, got {robot!r}")
     if robot.is_symbolic:
@@ -148,8 +162,10 @@ def sweep(robot: Robot, analysis: str, angles: Angles, *, L: float | None = None
         raise InputValueError(f"analysis must be one of {sorted(ANALYSES)}, got {analysis!r}")
     an = ANALYSES[analysis]
     if an.square and robot.n_rates != 3:
-        raise InputValueError(f"analysis 'det_J' needs a square J (n_rates = 3), got n_rates = {robot.n_rates} "
-                         f"for {robot!r}; use 'kappa_J' for a non-square J")
+        raise InputValueError(
+            f"analysis 'det_J' needs a square J (n_rates = 3), got n_rates = {robot.n_rates} "
+            f"for {robot!r}; use 'kappa_J' for a non-square J"
+        )
     w = robot.w
     source = angles if isinstance(angles, Drivable) else as_source(angles, w)
     qs = tuple(float(V.real("quantiles", q)) for q in np.atleast_1d(np.asarray(quantiles, dtype=object)))
@@ -165,7 +181,7 @@ def sweep(robot: Robot, analysis: str, angles: Angles, *, L: float | None = None
         raise InputTypeError(f"client must be a dask.distributed.Client, got {client!r}")
     keep = bool(keep)
 
-    total = source.size(w)                        # the limits, before any work on the robot
+    total = source.size(w)  # the limits, before any work on the robot
     check("configurations", total, "this sweep")
     chunk = _fit_memory(chunk, total, robot, analysis, keep, blocks)
     if isinstance(source, Drivable):
@@ -194,24 +210,30 @@ def bytes_per_configuration(robot, analysis) -> int:
     if analysis not in ANALYSES:
         raise InputValueError(f"analysis must be one of {sorted(ANALYSES)}, got {analysis!r}")
     w, n = robot.w, robot.n_rates
-    own = {"rank_F": 40 * w, "mobility": 40 * w, "actuated_mobility": 80 * w, "det_J": 24 * n + 32,
-           "kappa_J": 24 * n + 64, "kappa_JL1": 8}[analysis]
+    own = {
+        "rank_F": 40 * w,
+        "mobility": 40 * w,
+        "actuated_mobility": 80 * w,
+        "det_J": 24 * n + 32,
+        "kappa_J": 24 * n + 64,
+        "kappa_JL1": 8,
+    }[analysis]
     return 8 * (6 * w + 48 + own)
 
 
 def _fit_memory(chunk, total, robot, analysis, keep, blocks):
     """The chunk, made small enough for the memory limit (:mod:`wmr.model.limits`), or a LimitError."""
-    budget = limit("memory_mb") * 2 ** 20
+    budget = limit("memory_mb") * 2**20
     if keep:
-        check("memory_mb", (8 * total + 64 * 2 ** 20) / 2 ** 20, "the sweep's kept values (keep=True)")
+        check("memory_mb", (8 * total + 64 * 2**20) / 2**20, "the sweep's kept values (keep=True)")
         budget -= 8 * total
     per = bytes_per_configuration(robot, analysis) + (3 * 8 * BLOCK * robot.w // chunk if blocks else 0)
-    fits = int(budget // 2 // per)                # half the budget: the reduction, Python and NumPy themselves
+    fits = int(budget // 2 // per)  # half the budget: the reduction, Python and NumPy themselves
     if fits < 256:
-        check("memory_mb", 512 * per / 2 ** 20, f"a sweep of {analysis} for this robot ({robot.w} wheel units)")
+        check("memory_mb", 512 * per / 2**20, f"a sweep of {analysis} for this robot ({robot.w} wheel units)")
     chunk = max(256, min(chunk, fits))
     if blocks and chunk >= BLOCK:
-        chunk = chunk // BLOCK * BLOCK            # whole blocks of a sample, none drawn twice
+        chunk = chunk // BLOCK * BLOCK  # whole blocks of a sample, none drawn twice
     return chunk
 
 
@@ -256,10 +278,10 @@ def _run_local(bounds, total, progress, client, stop, *task):
 def _run_dask(bounds, total, progress, client, stop, *task):
     """Evaluate the chunks on a Dask cluster (one kernel thread per task), merged as they finish."""
     from dask.distributed import as_completed
+
     bounds = list(bounds)
     n = len(bounds)
-    futures = client.map(_evaluate, [task] * n, [a for a, _ in bounds], [b for _, b in bounds],
-                         [1] * n, pure=False)
+    futures = client.map(_evaluate, [task] * n, [a for a, _ in bounds], [b for _, b in bounds], [1] * n, pure=False)
     result, done = Partial(), 0
     for fut in as_completed(futures):
         if stop.requested:

@@ -26,6 +26,7 @@ so no angle is formed, and the condition number is the closed form of
 :func:`wmr.analysis._closed.kappa_from_columns`; a member it cannot certify, or one with a wheel at
 the centre of rotation, goes through the general kernels.
 """
+
 from __future__ import annotations
 
 import math
@@ -117,7 +118,7 @@ class Motions:
         self.robot, self.n, self.seed = robot, count("n", n), count("seed", seed, minimum=0)
         self.scale = robot.F_column_norms[:3]
         fixed = [i for i, u in enumerate(robot.wheels) if not u.steered]
-        if fixed:                                   # the directions the fixed wheels allow: N(C1f), dimensionless
+        if fixed:  # the directions the fixed wheels allow: N(C1f), dimensionless
             sub = type(robot)([robot.wheels[i] for i in fixed], name="fixed")
             Cf, _ = twist_constraints(sub, np.zeros(len(fixed)))
             self.basis = null_space(Cf / self.scale, scale=np.ones(3)) if Cf.shape[0] else np.eye(3)
@@ -128,8 +129,10 @@ class Motions:
     @property
     def covers(self):
         """The set of configurations, in words (for the reductions)."""
-        return (f"drivable configurations: the steering angles of {self.n:,} twists sampled over the directions "
-                f"the robot can move in (seed {self.seed})")
+        return (
+            f"drivable configurations: the steering angles of {self.n:,} twists sampled over the directions "
+            f"the robot can move in (seed {self.seed})"
+        )
 
     def size(self, w):
         """Number of configurations (``n``).
@@ -168,9 +171,9 @@ class Motions:
         g = np.concatenate(tws, axis=1)[:, a:b] if len(tws) > 1 else tws[0][:, a:b]
         # t = (N g) / s, written out (a BLAS product of (m, k) by (3, m) would start threads for nothing);
         # entry-major: each component of the twists is one contiguous vector
-        M = self.basis / self.scale[:, None]                       # (3, m)
-        if m == 3 and not np.any(M - np.diag(np.diag(M))):        # no fixed wheel: a diagonal map, in place
-            g *= np.diag(M)[:, None]                               # (g is a fresh draw: changed in place)
+        M = self.basis / self.scale[:, None]  # (3, m)
+        if m == 3 and not np.any(M - np.diag(np.diag(M))):  # no fixed wheel: a diagonal map, in place
+            g *= np.diag(M)[:, None]  # (g is a fresh draw: changed in place)
             return g.T, None if not self.free else self._current(curs, a, b)
         tw = np.zeros((3, b - a))
         for c in range(3):
@@ -202,8 +205,9 @@ class Motions:
 
 
 def _swerve_like(robot):
-    return 3 <= robot.w <= 6 and all(u.steered and u.rolls_in_plane and u.n_rates == 1 and u.steering_row() is None
-                                      for u in robot.wheels)
+    return 3 <= robot.w <= 6 and all(
+        u.steered and u.rolls_in_plane and u.n_rates == 1 and u.steering_row() is None for u in robot.wheels
+    )
 
 
 def kappa_J_drivable(source, start, stop, L, fold):
@@ -276,11 +280,16 @@ def kappa_J_of_twists(robot, twist, L):
     d = robot.mount_points
     dmax = float(np.abs(d).max())
     # column i of J = cos(beta_i) a_i + sin(beta_i) b_i, a_i = J_L1,i^T L_i, b_i = J_L1,i^T E L_i (3,)
-    ab = [(JL1[2 * i:2 * i + 2].T @ np.asarray(Li, dtype=float)[:, 0], JL1[2 * i:2 * i + 2].T @ np.asarray(ELi,
-          dtype=float)[:, 0]) for i, (Li, ELi) in enumerate(u.block_terms(NUMERIC) for u in robot.wheels)]
-    a = np.array([x for x, _ in ab]).T[:, :, None]            # (3, w, 1)
+    ab = [
+        (
+            JL1[2 * i : 2 * i + 2].T @ np.asarray(Li, dtype=float)[:, 0],
+            JL1[2 * i : 2 * i + 2].T @ np.asarray(ELi, dtype=float)[:, 0],
+        )
+        for i, (Li, ELi) in enumerate(u.block_terms(NUMERIC) for u in robot.wheels)
+    ]
+    a = np.array([x for x, _ in ab]).T[:, :, None]  # (3, w, 1)
     b = np.array([y for _, y in ab]).T[:, :, None]
-    dx, dy = d[:, :1], d[:, 1:]                                 # (w, 1)
+    dx, dy = d[:, :1], d[:, 1:]  # (w, 1)
     out = np.empty(twist.shape[0])
     redo = np.zeros(twist.shape[0], dtype=bool)
 
@@ -288,9 +297,9 @@ def kappa_J_of_twists(robot, twist, L):
         psi, vx, vy = twist[lo:hi, 0], twist[lo:hi, 1], twist[lo:hi, 2]
         scale = np.maximum(np.abs(vx), np.abs(vy))
         scale += np.abs(psi) * dmax
-        scale *= TOL                                # a wheel at the centre: |p_dot| <= TOL scale (steering_angles)
-        s = vx - dy * psi                           # (w, k): p_dot = c_dot + psi_dot E d_i (2), then
-        c = -vy - dx * psi                          # sin(beta_i) = p_x / |p|, cos(beta_i) = -p_y / |p|
+        scale *= TOL  # a wheel at the centre: |p_dot| <= TOL scale (steering_angles)
+        s = vx - dy * psi  # (w, k): p_dot = c_dot + psi_dot E d_i (2), then
+        c = -vy - dx * psi  # sin(beta_i) = p_x / |p|, cos(beta_i) = -p_y / |p|
         n = s * s
         n += c * c
         np.sqrt(n, out=n)
@@ -298,7 +307,7 @@ def kappa_J_of_twists(robot, twist, L):
         np.divide(1.0, n, out=n)
         s *= n
         c *= n
-        C = c * a                                   # (3, w, k): the columns of J
+        C = c * a  # (3, w, k): the columns of J
         C += s * b
         k, ok = kappa_from_columns(C)
         out[lo:hi] = k

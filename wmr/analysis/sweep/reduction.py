@@ -5,6 +5,7 @@ Count, minimum, maximum and minimum magnitude with the first configuration attai
 a logarithmic bucket sketch whose quantiles are within a relative :data:`SKETCH_ACCURACY`.
 Merging is associative, so the result does not depend on how the configurations were chunked.
 """
+
 from __future__ import annotations
 
 import math
@@ -44,9 +45,9 @@ class _Counts:
         new_hi = max(lo + part.size, self.offset + self.counts.size)
         if new_lo != self.offset or new_hi != self.offset + self.counts.size:
             grown = np.zeros(new_hi - new_lo, dtype=np.int64)
-            grown[self.offset - new_lo: self.offset - new_lo + self.counts.size] = self.counts
+            grown[self.offset - new_lo : self.offset - new_lo + self.counts.size] = self.counts
             self.offset, self.counts = new_lo, grown
-        self.counts[lo - self.offset: lo - self.offset + part.size] += part
+        self.counts[lo - self.offset : lo - self.offset + part.size] += part
 
     def merge(self, other):
         self._add_dense(other.offset, other.counts)
@@ -114,18 +115,18 @@ class Partial:
     """
 
     count: int = 0
-    lo: float = math.nan           # minimum and its configuration index (nan: nothing yet)
+    lo: float = math.nan  # minimum and its configuration index (nan: nothing yet)
     lo_at: int = -1
-    hi: float = math.nan           # maximum
+    hi: float = math.nan  # maximum
     hi_at: int = -1
-    small: float = math.nan        # minimum magnitude
+    small: float = math.nan  # minimum magnitude
     small_at: int = -1
-    integers: _Counts = field(default_factory=_Counts)     # integer analyses: value -> count
-    positive: _Counts = field(default_factory=_Counts)     # real analyses: bucket -> count
+    integers: _Counts = field(default_factory=_Counts)  # integer analyses: value -> count
+    positive: _Counts = field(default_factory=_Counts)  # real analyses: bucket -> count
     negative: _Counts = field(default_factory=_Counts)
     zeros: int = 0
-    infinite: int = 0              # +inf (a condition number at a singular configuration)
-    values: list = field(default_factory=list)             # (start, array) when kept
+    infinite: int = 0  # +inf (a condition number at a singular configuration)
+    values: list = field(default_factory=list)  # (start, array) when kept
 
     def add(self, start: int, x: FloatArray, integer: bool, keep: bool) -> None:
         """Fold in the values of the configurations ``start .. start + len(x) - 1``.
@@ -232,7 +233,7 @@ class Partial:
         rank = math.floor(q * (self.count - 1))
         if integer:
             return float(self.integers.locate(rank)[0])
-        k, rank = self.negative.locate(rank, descending=True)   # most negative first
+        k, rank = self.negative.locate(rank, descending=True)  # most negative first
         if k is not None:
             return -_bucket_value(k)
         if rank < self.zeros:

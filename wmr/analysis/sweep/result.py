@@ -1,4 +1,5 @@
 r"""The result of a sweep (:class:`Sweep`), assembled from the final reduction."""
+
 from __future__ import annotations
 
 from dataclasses import dataclass
@@ -84,22 +85,27 @@ class Sweep:
         str
         """
         from ...model.conventions import angle_to
+
         an = ANALYSES[self.analysis]
         deg = np.degrees(angle_to(self.worst_angles, convention))
         head = f"{an.title} over {self.count:,} configurations" + ("" if self.complete else " (INTERRUPTED: partial)")
-        lines = [head + (f": {self.covers}" if self.covers else ""),
-                 f"  min {self.min:.6g}   max {self.max:.6g}",
-                 "  quantiles  " + "   ".join(f"{q:g}: {v:.6g}" for q, v in self.quantiles.items())]
+        lines = [
+            head + (f": {self.covers}" if self.covers else ""),
+            f"  min {self.min:.6g}   max {self.max:.6g}",
+            "  quantiles  " + "   ".join(f"{q:g}: {v:.6g}" for q, v in self.quantiles.items()),
+        ]
         if self.counts:
             lines.append("  counts     " + "   ".join(f"{k}: {n:,}" for k, n in self.counts.items()))
         if self.infinite:
             lines.append(f"  singular (inf) at {self.infinite:,} configurations")
         end = {"min": "the minimum", "max": "the maximum", "min_abs": "the smallest magnitude"}[an.worst]
         what = "axle angles" if convention == "wmr" else f"{convention} angles"
-        lines.append(f"  worst {self.worst:.6g} ({end}) at configuration {self.worst_index}: {what} ("
-                     + ", ".join(f"{a:.4f}" for a in deg) + ") deg")
+        lines.append(
+            f"  worst {self.worst:.6g} ({end}) at configuration {self.worst_index}: {what} ("
+            + ", ".join(f"{a:.4f}" for a in deg)
+            + ") deg"
+        )
         return "\n".join(lines)
-
 
 
 def finish(part, name, an, source, w, qs, keep, complete=True):
@@ -128,20 +134,32 @@ def finish(part, name, an, source, w, qs, keep, complete=True):
     -------
     Sweep
     """
+
     def angles_at(k):
         return source.configurations(w, k, k + 1)[0]
 
-    worst, at = {"min": (part.lo, part.lo_at), "max": (part.hi, part.hi_at),
-                 "min_abs": (part.small, part.small_at)}[an.worst]
+    worst, at = {"min": (part.lo, part.lo_at), "max": (part.hi, part.hi_at), "min_abs": (part.small, part.small_at)}[
+        an.worst
+    ]
     values = None
     if keep:
         values = np.empty(part.count)
         for start, x in part.values:
-            values[start:start + x.size] = x
+            values[start : start + x.size] = x
     return Sweep(
-        analysis=name, count=part.count, min=part.lo, max=part.hi,
-        argmin=angles_at(part.lo_at), argmax=angles_at(part.hi_at),
-        worst=worst, worst_angles=angles_at(at), worst_index=at,
+        analysis=name,
+        count=part.count,
+        min=part.lo,
+        max=part.hi,
+        argmin=angles_at(part.lo_at),
+        argmax=angles_at(part.hi_at),
+        worst=worst,
+        worst_angles=angles_at(at),
+        worst_index=at,
         quantiles={q: part.quantile(q, an.integer) for q in qs},
         counts=dict(part.integers.items()) if an.integer else {},
-        infinite=part.infinite, values=values, covers=str(getattr(source, "covers", "")), complete=complete)
+        infinite=part.infinite,
+        values=values,
+        covers=str(getattr(source, "covers", "")),
+        complete=complete,
+    )

@@ -39,6 +39,7 @@ modules above, never from this package's ``__init__``.
 
 The kinds registered (built from the classes themselves, :func:`wheel_kinds`):
 """
+
 from __future__ import annotations
 
 import importlib
@@ -53,8 +54,19 @@ from .registry import wheel_kind, wheel_kinds
 from .swedish import SwedishWheel
 from .unit import WheelUnit
 
-__all__ = ["WheelUnit", "Joint", "JOINT_KINDS", "OffsetWheel", "CentredWheel", "DualWheel", "FixedWheel",
-           "SwedishWheel", "wheel_kinds", "wheel_kind", "kinds_table"]
+__all__ = [
+    "WheelUnit",
+    "Joint",
+    "JOINT_KINDS",
+    "OffsetWheel",
+    "CentredWheel",
+    "DualWheel",
+    "FixedWheel",
+    "SwedishWheel",
+    "wheel_kinds",
+    "wheel_kind",
+    "kinds_table",
+]
 
 # a kind is registered by being defined: import every module of this package, so that a new module
 # is all a new kind needs

@@ -12,6 +12,7 @@ In a robot file::
     position = [0.3, 0.0]     # d_i, metres
     radius = 0.05             # r > 0
 """
+
 from __future__ import annotations
 
 from dataclasses import dataclass
@@ -97,5 +98,12 @@ class CentredWheel(WheelUnit):
         """
         r = float(self.r)
         steer, drive = self.joints
-        return Body("steer", mount(self.position), 0.0, steer, VERTICAL, size=r / 2,
-                    children=(wheel("wheel", (0.0, 0.0, r - height), r, drive),))
+        return Body(
+            "steer",
+            mount(self.position),
+            0.0,
+            steer,
+            VERTICAL,
+            size=r / 2,
+            children=(wheel("wheel", (0.0, 0.0, r - height), r, drive),),
+        )

@@ -5,6 +5,7 @@ build) are here; a kind with something to say overrides them (an offset wheel: i
 ``d = r``; a Swedish wheel: omni rollers, the other hand).  The advice of ``wmr analyze`` applies
 the changes to a copy of the robot and re-analyses it (:mod:`wmr.analysis.advice`).
 """
+
 from __future__ import annotations
 
 from typing import Self

@@ -14,6 +14,7 @@ In a robot file::
     radius = 0.05             # r > 0
     half_separation = 0.04    # b > 0
 """
+
 from __future__ import annotations
 
 from dataclasses import dataclass
@@ -58,9 +59,11 @@ class DualWheel(WheelUnit):
 
     b: float = 1.0
     kind = "dual"
-    JOINTS = (Joint("swivel", "swivel", driven=False),
-              Joint("drive1", "drive", driven=True, rate=("theta", r"\theta", "1")),
-              Joint("drive2", "drive", driven=True, rate=("theta", r"\theta", "2")))
+    JOINTS = (
+        Joint("swivel", "swivel", driven=False),
+        Joint("drive1", "drive", driven=True, rate=("theta", r"\theta", "1")),
+        Joint("drive2", "drive", driven=True, rate=("theta", r"\theta", "2")),
+    )
     FILE_KEYS = (FileKey("half_separation", "b", "half the wheel separation b in metres, > 0", check="positive"),)
     rolls_in_plane = True
 
@@ -83,7 +86,7 @@ class DualWheel(WheelUnit):
         half = self.r / 2
         return backend.matrix([[0, 0], [-half, -half]])
 
-    @np.errstate(over="ignore", invalid="ignore")       # overflow is checked on the result
+    @np.errstate(over="ignore", invalid="ignore")  # overflow is checked on the result
     def beta_rate(self, psi_dot: ArrayLike, rates: ArrayLike, steer: ArrayLike | None = None) -> FloatArray:
         r"""Corrected (15): :math:`\dot\beta_i = -\tfrac{r}{2b}(\dot\theta_{i1} - \dot\theta_{i2}) - \dot\psi`.
 
@@ -157,9 +160,8 @@ class DualWheel(WheelUnit):
         Body
         """
         r, b = float(self.r), float(self.b)
-        z = r - height                                             # the wheel centres at height r
+        z = r - height  # the wheel centres at height r
         swivel, drive1, drive2 = self.joints
         wheels = (wheel("wheel1", (b, 0.0, z), r, drive1), wheel("wheel2", (-b, 0.0, z), r, drive2))
-        rods = (((b, 0.0, z), (-b, 0.0, z)), ((0.0, 0.0, 0.0), (0.0, 0.0, z)))      # the axle, the post to it
-        return Body("swivel", mount(self.position), 0.0, swivel, VERTICAL, size=r / 2, rods=rods,
-                    children=wheels)
+        rods = (((b, 0.0, z), (-b, 0.0, z)), ((0.0, 0.0, 0.0), (0.0, 0.0, z)))  # the axle, the post to it
+        return Body("swivel", mount(self.position), 0.0, swivel, VERTICAL, size=r / 2, rods=rods, children=wheels)

@@ -16,6 +16,7 @@ Traceback (most recent call last):
     ...
 wmr.errors.InputValueError: must not be negative (the offset d in metres, >= 0), got -1
 """
+
 from __future__ import annotations
 
 import math
@@ -47,8 +48,11 @@ def toml_string(s: str) -> str:
     >>> print(toml_string('a "b"\\n'))
     "a \\"b\\"\\n"
     """
-    return '"' + "".join(_ESCAPES.get(c) or (f"\\u{ord(c):04X}" if ord(c) < 0x20 or ord(c) == 0x7F else c)
-                         for c in s) + '"'
+    return (
+        '"'
+        + "".join(_ESCAPES.get(c) or (f"\\u{ord(c):04X}" if ord(c) < 0x20 or ord(c) == 0x7F else c) for c in s)
+        + '"'
+    )
 
 
 def toml_text(v: Any) -> str:

@@ -14,6 +14,7 @@ In a robot file::
     radius = 0.05             # r > 0
     angle_deg = 90.0          # the constant angle beta_i (0: axle along body x, rolls along body y)
 """
+
 from __future__ import annotations
 
 from dataclasses import dataclass

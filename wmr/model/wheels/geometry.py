@@ -6,6 +6,7 @@ the axle and rolling directions :math:`\mathbf i_i = \mathbf R(\beta_i)[1\ 0]^T`
 points (an offset wheel's centre :math:`H_i`, a dual wheel's two wheels) or other parts (an arm,
 rollers) extends :meth:`UnitGeometry._points` and :meth:`UnitGeometry.parts`.
 """
+
 from __future__ import annotations
 
 from typing import Any, ClassVar

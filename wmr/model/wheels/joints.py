@@ -27,6 +27,7 @@ Examples
 >>> Joint("drive", "drive", driven=True, rate=("theta", r"\theta", ""))
 Joint(name='drive', kind='drive', driven=True, rate=('theta', '\\theta', ''), absolute=False)
 """
+
 from __future__ import annotations
 
 from collections.abc import Mapping
@@ -128,8 +129,9 @@ def actuation(joints: tuple[Joint, ...], driven: Any, owner: str = "unit") -> tu
     if isinstance(driven, Mapping):
         for name, value in driven.items():
             if name not in names:
-                raise InputValueError(f"driven names a joint {name!r} that {owner} does not have "
-                                      f"(its joints: {', '.join(names)})")
+                raise InputValueError(
+                    f"driven names a joint {name!r} that {owner} does not have (its joints: {', '.join(names)})"
+                )
             out[names.index(name)] = flag(f"driven[{name!r}]", value)
         return tuple(out)
     if isinstance(driven, (str, bytes)) or not hasattr(driven, "__len__"):

@@ -40,6 +40,7 @@ Examples
 >>> m.wheels[0].pos                        # H = P - d j, at the wheel's height (the mount plane's)
 (0.0, -0.02, 0.0)
 """
+
 from __future__ import annotations
 
 from collections.abc import Callable
@@ -127,8 +128,9 @@ class Mechanism:
         names = [b.name for b in self.bodies]
         joints = [j.name for j in self.joints]
         if len(set(names)) != len(names) or len(set(joints)) != len(joints):
-            raise InputValueError(f"a mechanism's bodies and joints must have distinct names, got bodies {names}, "
-                                  f"joints {joints}")
+            raise InputValueError(
+                f"a mechanism's bodies and joints must have distinct names, got bodies {names}, joints {joints}"
+            )
         for b in self.bodies:
             if b.joint is not None and (b.axis is None or len(b.axis) != 3):
                 raise InputValueError(f"body {b.name!r} turns on joint {b.joint.name!r} about no axis: {show(b.axis)}")
@@ -224,8 +226,10 @@ class UnitMechanism:
         unit = self.numeric()
         height = number("height", height)
         if not height >= unit.r:
-            raise InputValueError(f"height (of the mount plane above the ground) must be at least the wheel radius "
-                                  f"r = {unit.r!r}, got {show(height)}")
+            raise InputValueError(
+                f"height (of the mount plane above the ground) must be at least the wheel radius "
+                f"r = {unit.r!r}, got {show(height)}"
+            )
         return Mechanism(unit.root_body(height))
 
     def root_body(self, height: float) -> Body:
@@ -245,5 +249,7 @@ class UnitMechanism:
         NotImplementedError
             Unless the kind describes its mechanism (or says why it cannot).
         """
-        raise NotImplementedError(f"{type(self).__name__} does not describe its mechanism (its bodies and joints: "
-                                  "WheelUnit.root_body), so no physics engine can take it")
+        raise NotImplementedError(
+            f"{type(self).__name__} does not describe its mechanism (its bodies and joints: "
+            "WheelUnit.root_body), so no physics engine can take it"
+        )

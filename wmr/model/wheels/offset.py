@@ -15,6 +15,7 @@ In a robot file::
     radius = 0.05             # r > 0
     offset = 0.03             # d >= 0
 """
+
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
@@ -64,8 +65,10 @@ class OffsetWheel(WheelUnit):
 
     d: float = 0.0
     kind = "offset"
-    JOINTS = (Joint("steer", "steer", driven=True, rate=("phi", r"\phi", ""), absolute=True),    # phi = psi + beta (7)
-              Joint("drive", "drive", driven=True, rate=("theta", r"\theta", "")))
+    JOINTS = (
+        Joint("steer", "steer", driven=True, rate=("phi", r"\phi", ""), absolute=True),  # phi = psi + beta (7)
+        Joint("drive", "drive", driven=True, rate=("theta", r"\theta", "")),
+    )
     FILE_KEYS = (FileKey("offset", "d", "the offset d in metres, >= 0", check="nonnegative"),)
 
     def _validate(self):
@@ -85,7 +88,7 @@ class OffsetWheel(WheelUnit):
         """
         return backend.matrix([[-self.d, 0], [0, -self.r]])
 
-    @np.errstate(over="ignore", invalid="ignore")       # overflow is checked on the result
+    @np.errstate(over="ignore", invalid="ignore")  # overflow is checked on the result
     def beta_rate(self, psi_dot: ArrayLike, rates: ArrayLike, steer: ArrayLike | None = None) -> FloatArray:
         r"""(7): :math:`\dot\beta_i = \dot\phi_i - \dot\psi`, with :math:`\dot\phi_i` = ``rates[..., 0]``.
 
@@ -145,10 +148,18 @@ class OffsetWheel(WheelUnit):
         Body
         """
         r, d = float(self.r), float(self.d)
-        H = (0.0, -d, r - height)                                  # H = P - d j, the wheel centre at height r
+        H = (0.0, -d, r - height)  # H = P - d j, the wheel centre at height r
         steer, drive = self.joints
-        return Body("steer", mount(self.position), 0.0, steer, VERTICAL, size=max(d, r / 2),
-                    rods=(((0.0, 0.0, 0.0), H),), children=(wheel("wheel", H, r, drive),))
+        return Body(
+            "steer",
+            mount(self.position),
+            0.0,
+            steer,
+            VERTICAL,
+            size=max(d, r / 2),
+            rods=(((0.0, 0.0, 0.0), H),),
+            children=(wheel("wheel", H, r, drive),),
+        )
 
     def dead_zone(self) -> float | None:
         """The offset d: steered with the drives locked, offset wheels carry C on a circle of radius d.

@@ -20,6 +20,7 @@ Examples
 >>> [type(p).__name__ for p in OffsetWheel((1.0, 0.0), r=0.1, d=0.2).parts(0.0)]
 ['Link', 'Disc', 'Pivot']
 """
+
 from __future__ import annotations
 
 from dataclasses import dataclass

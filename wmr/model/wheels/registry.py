@@ -5,6 +5,7 @@ name when its class is defined (:func:`register`); :func:`wheel_kinds` and :func
 the registry, which is how :class:`wmr.Robot`, :mod:`wmr.io` and the messages know every kind
 without a list written by hand.
 """
+
 from __future__ import annotations
 
 import difflib
@@ -15,7 +16,7 @@ from .. import checks as C
 
 __all__ = ["register", "wheel_kinds", "wheel_kind"]
 
-_KINDS: dict[str, Any] = {}            # kind -> its class (a WheelUnit subclass)
+_KINDS: dict[str, Any] = {}  # kind -> its class (a WheelUnit subclass)
 
 
 def wheel_kinds() -> dict[str, Any]:
@@ -58,8 +59,10 @@ def wheel_kind(name: str) -> Any:
         raise C.kind_error("kind", name, f"a wheel kind ({', '.join(sorted(_KINDS))})")
     if name not in _KINDS:
         close = difflib.get_close_matches(name, sorted(_KINDS), n=1)
-        raise InputValueError(f"kind must be one of {', '.join(sorted(_KINDS))}, got {name!r}"
-                              + (f" (did you mean {close[0]!r}?)" if close else ""))
+        raise InputValueError(
+            f"kind must be one of {', '.join(sorted(_KINDS))}, got {name!r}"
+            + (f" (did you mean {close[0]!r}?)" if close else "")
+        )
     return _KINDS[name]
 
 
@@ -83,6 +86,7 @@ def register(cls: type) -> None:
     """
     kind = getattr(cls, "kind", "")
     if kind in _KINDS and _KINDS[kind].__qualname__ != cls.__qualname__:
-        raise InputValueError(f"wheel kind {kind!r} is already {_KINDS[kind].__name__}: {cls.__name__} needs "
-                              "another name")
+        raise InputValueError(
+            f"wheel kind {kind!r} is already {_KINDS[kind].__name__}: {cls.__name__} needs another name"
+        )
     _KINDS[kind] = cls

@@ -15,6 +15,7 @@ In a robot file::
     angle_deg = 90.0          # the constant angle beta_i
     roller_deg = 45.0         # the rollers' angle to the axle (90: omni wheel, +-45: mecanum wheel)
 """
+
 from __future__ import annotations
 
 from dataclasses import InitVar, dataclass, field, replace
@@ -42,7 +43,8 @@ NO_FAITHFUL_MECHANISM = (
     "(a convex barrel mesh) so that the rollers' envelope is the wheel's circle, with the contact passing from roller "
     "to roller and no encoder for the roller rate sigma_dot. wmr does not build that, and a sphere with anisotropic "
     "friction would not be a roller at all: the wheel is refused rather than simulated as something else under its "
-    "name")
+    "name"
+)
 
 
 @dataclass(frozen=True)
@@ -118,10 +120,13 @@ class SwedishWheel(UnsteeredUnit):
     roller_deg: InitVar[float | None] = field(default=None, kw_only=True)
 
     kind = "swedish"
-    JOINTS = (Joint("drive", "drive", driven=True, rate=("theta", r"\theta", "")),
-              Joint("roller", "roller", driven=False, rate=("sigma", r"\sigma", "")))
+    JOINTS = (
+        Joint("drive", "drive", driven=True, rate=("theta", r"\theta", "")),
+        Joint("roller", "roller", driven=False, rate=("sigma", r"\sigma", "")),
+    )
     FILE_KEYS = UnsteeredUnit.FILE_KEYS + (
-        FileKey("roller_deg", "roller", "the roller angle in degrees (90 omni, 45 mecanum)", degrees=True),)
+        FileKey("roller_deg", "roller", "the roller angle in degrees (90 omni, 45 mecanum)", degrees=True),
+    )
 
     def _init_degrees(self, roller_deg=None, *more):
         super()._init_degrees(*more)
@@ -132,8 +137,10 @@ class SwedishWheel(UnsteeredUnit):
         name = "roller (angle of the rollers to the axle, radians)"
         g = radians("roller", self.roller)
         if not -np.pi / 2 < float(g) <= np.pi / 2 or abs(float(g)) <= TOL:
-            raise InputValueError(f"{name} must be in (-pi/2, pi/2] and not 0 (0: rollers parallel to the axle, "
-                                  f"a conventional wheel: use FixedWheel), got {C.show(self.roller)}")
+            raise InputValueError(
+                f"{name} must be in (-pi/2, pi/2] and not 0 (0: rollers parallel to the axle, "
+                f"a conventional wheel: use FixedWheel), got {C.show(self.roller)}"
+            )
         object.__setattr__(self, "roller", g)
 
     def local_block(self, backend: Backend = NUMERIC) -> Matrix:
@@ -212,8 +219,10 @@ class SwedishWheel(UnsteeredUnit):
         """
         if abs(np.cos(float(self.roller))) <= TOL:
             return None
-        return ("use omni wheels (rollers at 90 deg) on wheel {wheels}: a Swedish wheel's block "
-                "r[[0, sin g], [-1, -cos g]] has singular values r sqrt(1 +- cos g)")
+        return (
+            "use omni wheels (rollers at 90 deg) on wheel {wheels}: a Swedish wheel's block "
+            "r[[0, sin g], [-1, -cos g]] has singular values r sqrt(1 +- cos g)"
+        )
 
     def isotropic_variant(self) -> Self | None:
         """The same wheel with omni rollers (:math:`\\gamma = \\pi/2`); None when it has them already.
@@ -238,5 +247,9 @@ class SwedishWheel(UnsteeredUnit):
         """
         if abs(np.cos(float(self.roller))) <= TOL:
             return ()
-        return ((f"of the other hand (rollers at {np.degrees(-float(self.roller)):.0f} deg)",
-                 replace(self, roller=-self.roller)),)
+        return (
+            (
+                f"of the other hand (rollers at {np.degrees(-float(self.roller)):.0f} deg)",
+                replace(self, roller=-self.roller),
+            ),
+        )

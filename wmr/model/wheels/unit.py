@@ -34,6 +34,7 @@ its design hints         :meth:`~WheelUnit.dead_zone`, :meth:`~WheelUnit.isotrop
 Defining the subclass registers the kind (:mod:`~wmr.model.wheels.registry`); the robot, the analyses,
 the robot files and the drawings then take it without a change.
 """
+
 from __future__ import annotations
 
 import dataclasses
@@ -114,18 +115,24 @@ class WheelUnit(UnitGeometry, UnitMechanism, DesignHints):
         if not self.is_symbolic:
             with np.errstate(over="ignore", invalid="ignore"):
                 if not np.isfinite(4 * np.abs(np.asarray(self.position, dtype=float))).all():
-                    raise InputValueError(f"position is too large for double-precision kinematics (4 |d_i| "
-                                          f"overflows): {C.show(self.position)}")
-                for key in self.file_keys():          # a length whose reciprocal overflows (a subnormal)
+                    raise InputValueError(
+                        f"position is too large for double-precision kinematics (4 |d_i| "
+                        f"overflows): {C.show(self.position)}"
+                    )
+                for key in self.file_keys():  # a length whose reciprocal overflows (a subnormal)
                     v = getattr(self, key.field)
                     if key.check != "pair" and not key.degrees and v != 0 and not np.isfinite(1.0 / abs(float(v))):
-                        raise InputValueError(f"{key.field} is too small for double-precision kinematics "
-                                              f"(1/{key.field} overflows): {C.show(v)}")
+                        raise InputValueError(
+                            f"{key.field} is too small for double-precision kinematics "
+                            f"(1/{key.field} overflows): {C.show(v)}"
+                        )
                 L, EL = (np.asarray(m, dtype=float) for m in self.block_terms(NUMERIC))
                 ok = np.isfinite(2 * np.abs(L) + 2 * np.abs(EL)).all()
             if not ok:
-                raise InputValueError(f"{type(self).__name__} has lengths too large for double-precision "
-                                      f"kinematics (R(beta) L_i would overflow): {C.show(self)}")
+                raise InputValueError(
+                    f"{type(self).__name__} has lengths too large for double-precision "
+                    f"kinematics (R(beta) L_i would overflow): {C.show(self)}"
+                )
 
     def _validate(self) -> None:
         """Check and convert the kind's own fields (a kind with fields of its own extends this)."""
@@ -217,8 +224,9 @@ class WheelUnit(UnitGeometry, UnitMechanism, DesignHints):
         """
         return None
 
-    def _rates_in(self, psi_dot: ArrayLike, rates: ArrayLike,
-                  steer: ArrayLike | None) -> tuple[FloatArray, FloatArray, FloatArray | None, tuple[int, ...]]:
+    def _rates_in(
+        self, psi_dot: ArrayLike, rates: ArrayLike, steer: ArrayLike | None
+    ) -> tuple[FloatArray, FloatArray, FloatArray | None, tuple[int, ...]]:
         """``psi_dot`` (...), ``rates`` (..., n_rates) and ``steer`` (... or None), checked, and their batch shape."""
         psi_dot = A.finite_array("psi_dot", psi_dot)
         rates = A.finite_array("rates", rates, last=self.n_rates)
@@ -229,8 +237,10 @@ class WheelUnit(UnitGeometry, UnitMechanism, DesignHints):
     @staticmethod
     def _finite_rate(out: FloatArray, rates: FloatArray) -> FloatArray:
         if not np.isfinite(out).all():
-            raise InputValueError(f"rates or psi_dot are too large: the steering rate overflows "
-                                  f"(largest |rates| = {np.abs(rates).max():.3g})")
+            raise InputValueError(
+                f"rates or psi_dot are too large: the steering rate overflows "
+                f"(largest |rates| = {np.abs(rates).max():.3g})"
+            )
         return out
 
     # --- parameters --------------------------------------------------------------------------------
@@ -270,14 +280,17 @@ class WheelUnit(UnitGeometry, UnitMechanism, DesignHints):
         if not self.is_symbolic:
             return self
         if self.free_symbols:
-            raise InputValueError(f"{type(self).__name__} has free symbols {sorted(map(str, self.free_symbols))}: it "
-                                  f"has no numeric counterpart ({C.show(self)})")
+            raise InputValueError(
+                f"{type(self).__name__} has free symbols {sorted(map(str, self.free_symbols))}: it "
+                f"has no numeric counterpart ({C.show(self)})"
+            )
 
         def num(v):
             return float(v) if isinstance(v, sp.Basic) else v
 
-        return dataclasses.replace(self, position=tuple(map(num, self.position)),
-                                   **{k: num(v) for k, v in self.parameters().items()})
+        return dataclasses.replace(
+            self, position=tuple(map(num, self.position)), **{k: num(v) for k, v in self.parameters().items()}
+        )
 
     @property
     def is_symbolic(self) -> bool:
@@ -347,7 +360,7 @@ class WheelUnit(UnitGeometry, UnitMechanism, DesignHints):
         if bk is NUMERIC:
             beta = A.finite_array("beta", beta)
         L, EL = self.block_terms(bk)
-        return rotated(beta, L, EL, backend=bk)                     # (11): R(beta) L = cos L + sin E L
+        return rotated(beta, L, EL, backend=bk)  # (11): R(beta) L = cos L + sin E L
 
     def block_terms(self, backend: Backend = NUMERIC) -> tuple[Matrix, Matrix]:
         r"""The constant pair :math:`(\mathbf L_i, \mathbf E\mathbf L_i)` with

@@ -12,6 +12,7 @@ package (:math:`\mathbf J_2`, :math:`\mathbf F`, :math:`\mathbf J`, mobility, ki
 unchanged.  A robot's configuration keeps one entry per unit; the entry of a unit without a
 steering joint is ignored and its own ``angle`` used (:meth:`wmr.Robot.effective_beta`).
 """
+
 from __future__ import annotations
 
 import math
@@ -51,7 +52,7 @@ def constant(name: str, value: Numbers) -> Numbers:
     >>> constant("angle", sp.pi / 2), constant("angle", 1)
     (pi/2, 1.0)
     """
-    f = C.number(name, value)                       # an input error for symbols, NaN, inf, 10**400
+    f = C.number(name, value)  # an input error for symbols, NaN, inf, 10**400
     value = C.real(name, value)
     return value if isinstance(value, sp.Basic) else f
 
@@ -94,8 +95,10 @@ def radians(name, value):
     """
     value = constant(name, value)
     if abs(float(value)) > 2 * np.pi + 1e-9:
-        raise InputValueError(f"{name} is in radians and must be within +-2 pi, got {C.show(value)} (degrees? write "
-                              f"{name}=math.radians({C.show(value)}) or {name}_deg={C.show(value)})")
+        raise InputValueError(
+            f"{name} is in radians and must be within +-2 pi, got {C.show(value)} (degrees? write "
+            f"{name}=math.radians({C.show(value)}) or {name}_deg={C.show(value)})"
+        )
     return value
 
 
@@ -121,8 +124,9 @@ class UnsteeredUnit(WheelUnit):
     angle: float = None  # type: ignore[assignment]
     angle_deg: InitVar[float | None] = field(default=None, kw_only=True)
     #: the angle, written in degrees in a robot file
-    FILE_KEYS: ClassVar[tuple[FileKey, ...]] = (FileKey("angle_deg", "angle", "the steering angle in degrees",
-                                                        degrees=True),)
+    FILE_KEYS: ClassVar[tuple[FileKey, ...]] = (
+        FileKey("angle_deg", "angle", "the steering angle in degrees", degrees=True),
+    )
 
     def __post_init__(self, angle_deg=None, *more) -> None:
         object.__setattr__(self, "angle", in_degrees(type(self).__name__, "angle", self.angle, angle_deg))
