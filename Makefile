@@ -1,6 +1,7 @@
 # wmr — executable edition of Leow, Low & Loh (2002).
 #
-#   make test      set up .venv + TeX, build the report and the student edition (cached), run pytest
+#   make test      set up .venv + TeX, build the report, the student edition and the lessons' grades
+#                  through nbgrader (each cached), run pytest
 #                  (two workers; tests/ and tests/edition/), ruff and mypy, make release and make docs
 #                  (each cached), and fail if the build modified files that git tracks
 #   make report    build/report.html (self-contained, offline math) + build/report.pdf
@@ -43,6 +44,7 @@ BEYOND   := $(wildcard $(NB)/10_robot_classes.ipynb)
 REPORTED := $(filter-out $(BEYOND:$(NB)/%=$(B)/notebooks/%),$(EXECUTED))
 STUDENT  := $(LESSONS:$(NB)/%=$(B)/student/%)
 STUDENT_RUN := $(LESSONS:$(NB)/%=$(B)/student-run/notebooks/%)
+GRADES   := $(patsubst $(NB)/%.ipynb,$(B)/assignments/grades/%.json,$(LESSONS))
 FIGURES  := $(wildcard $(WMR_ROOT)/figures/*)
 TOOL     := $(wildcard $(CURDIR)/tools/build/*.py)
 TEMPLATES := $(wildcard $(CURDIR)/tools/build/templates/*/*)
@@ -50,7 +52,7 @@ LINTED   := $(wildcard $(addprefix $(WMR_ROOT)/,wmr edition tools tests))
 # make test also checks the release and the docs of this repository (not of another tree, WMR_ROOT=...)
 RELEASED := $(if $(filter $(CURDIR),$(WMR_ROOT)),yes)
 # what make test builds before pytest runs (the tests find it cached)
-TEST_BUILD = $(B)/report.html $(B)/report.pdf $(STUDENT_RUN)
+TEST_BUILD = $(B)/report.html $(B)/report.pdf $(STUDENT_RUN) $(GRADES)
 
 PDEATH := $(shell command -v setpriv >/dev/null 2>&1 && echo setpriv --pdeathsig TERM --)
 BUILD  := $(PDEATH) $(VPY) -m tools.build
@@ -68,7 +70,7 @@ TEX_DEBS := texlive-xetex texlive-fonts-recommended texlive-plain-generic \
             texlive-latex-extra lmodern fonts-lmodern pandoc poppler-utils
 TEX_CMDS := xelatex pandoc pdftotext pdfinfo
 
-.PHONY: help venv tex browser test report figures notebooks publish student assignments bench clean lock docs release FORCE
+.PHONY: help venv tex browser test report figures notebooks publish student assignments grades bench clean lock docs release FORCE
 
 help: ## show this help
 	@echo "wmr — reproducible edition of Leow, Low & Loh (2002)"
@@ -137,6 +139,9 @@ student: venv ## build/student/*.ipynb: the chapters without worked solutions (R
 assignments: venv ## build/assignments: nbgrader source notebooks from the exercise cells (tools/assignments.py)
 	@$(VPY) -m tools.assignments $(B)/assignments $(LESSONS)
 
+grades: venv ## build/assignments/grades: each lesson through nbgrader, solved and blank (cached, like a chapter)
+	@$(LOCK) exec $(SUB) $(GRADES)
+
 figures: venv ## regenerate figures/ outside the notebooks (python -m edition.figures figures/)
 	@cd $(WMR_ROOT) && $(VPY) -m edition.figures figures
 
@@ -181,6 +186,11 @@ $(STUDENT) &: $(LESSONS)
 
 $(B)/student-run/notebooks/%.ipynb: $(B)/student/%.ipynb FORCE
 	@$(BUILD) execute $< $@
+
+# the nbgrader round trip of a lesson (tools/grades.py): generate, autograde the solved and the blank notebook;
+# cached like a chapter (its key: the chapter, notebooks/, wmr/, edition/, tools/{grades,assignments}.py, the lock)
+$(B)/assignments/grades/%.json: $(NB)/%.ipynb FORCE
+	@$(PDEATH) $(VPY) -m tools.grades $< $@
 
 # ------------------------------------------------------------------------------------- the tests
 test: venv tex browser ## build (cached), pytest -n 2 (tests/ and tests/edition/), ruff, mypy, release, docs; fail if the build modified tracked files
