@@ -2,7 +2,7 @@
 #
 #   make test      set up .venv + TeX, build the report, the student edition and the lessons' grades
 #                  through nbgrader (each cached), run pytest
-#                  (two workers; tests/ and tests/edition/), ruff and mypy, make release and make docs
+#                  (two workers; tests/ and tests/edition/), ruff (check, format --check) and mypy, make release and make docs
 #                  (each cached), and fail if the build modified files that git tracks
 #   make report    build/report.html (self-contained, offline math) + build/report.pdf
 #   make docs      build/docs/html: the API reference and the user guide
@@ -199,8 +199,9 @@ test: venv tex browser ## build (cached), pytest -n 2 (tests/ and tests/edition/
 	@rc=0; \
 	cd $(WMR_ROOT) && $(PDEATH) $(VPY) -m pytest -n 2 --dist worksteal $(PYTEST_ARGS) || rc=$$?; \
 	if [ -n "$(LINTED)" ]; then \
-	  echo "[lint] ruff check, mypy: $(notdir $(LINTED))"; \
+	  echo "[lint] ruff check, ruff format --check, mypy: $(notdir $(LINTED))"; \
 	  $(VPY) -m ruff check --quiet $(LINTED) || rc=1; \
+	  $(VPY) -m ruff format --check --quiet $(LINTED) || rc=1; \
 	  $(VPY) -m mypy --no-error-summary $(LINTED) || rc=1; \
 	fi; \
 	if [ -n "$(RELEASED)" ]; then \

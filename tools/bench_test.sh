@@ -4,7 +4,7 @@
 # `make test` once to warm up, then RUNS timed runs (default 2), each with the load average read
 # just before it (other users of the two cores slow it down) and the CPU time it used (user + sys
 # of make and everything it started: on an idle 2-core machine the wall time is about half of it),
-# and the slowest tests of the last run.
+# the slowest tests of the last run, and its CPU seconds per test file (the plugin tools/pytest_cpu.py).
 #   usage: tools/bench_test.sh [RUNS]            (from the repository root)
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -21,11 +21,16 @@ echo "| run | warm make test, wall (s) | CPU, user + sys (s) | load before | res
 echo "| --- | --- | --- | --- | --- |"
 for i in $(seq "$runs"); do
   l=$(load)
-  /usr/bin/time -f "%e %U %S" -o build/bench-test.time make test PYTEST_ARGS="--durations=12" > "$log" 2>&1 || true
+  rm -rf build/cpu
+  /usr/bin/time -f "%e %U %S" -o build/bench-test.time make test PYTEST_ARGS="--durations=12 -p tools.pytest_cpu" \
+    > "$log" 2>&1 || true
   read -r wall user sys < <(tail -1 build/bench-test.time)
   printf '| %d | %.1f | %.1f | %s | %s |\n' "$i" "$wall" "$(echo "$user + $sys" | bc)" "$l" "$(status)"
 done
 echo
 echo "Slowest tests of the last run:"
 sed -n '/slowest .* durations/,/^[(=]/p' "$log" | sed '1d;$d' | sed 's/^/    /'
+echo
+echo "CPU per test file of the last run (user + sys, with child processes; tools/pytest_cpu.py):"
+.venv/bin/python -m tools.pytest_cpu build/cpu
 echo "Cores: $(nproc); load average now: $(cut -d' ' -f1-3 /proc/loadavg)"
