@@ -33,4 +33,7 @@ sed -n '/slowest .* durations/,/^[(=]/p' "$log" | sed '1d;$d' | sed 's/^/    /'
 echo
 echo "CPU per test file of the last run (user + sys, with child processes; tools/pytest_cpu.py):"
 .venv/bin/python -m tools.pytest_cpu build/cpu
+echo
+echo "The 25 tests that cost most CPU:"
+.venv/bin/python -m tools.pytest_cpu build/cpu --tests 25
 echo "Cores: $(nproc); load average now: $(cut -d' ' -f1-3 /proc/loadavg)"

@@ -4,8 +4,9 @@
 that runs tests (each pytest-xdist worker, or pytest alone), the CPU seconds -- user + sys of the process and of the
 child processes it waited for -- from the start of each test to its end (fixture set-up and teardown included,
 so a module's fixtures count for the module), and the seconds the process spent before its first test (interpreter,
-imports, collection).  Each process writes ``build/cpu/<worker>.tsv``; ``python -m tools.pytest_cpu [DIR]`` sums
-them per file and prints a Markdown table, largest first.
+imports, collection).  Each process writes ``build/cpu/<worker>.tsv`` (per file) and ``<worker>.tests`` (per test);
+``python -m tools.pytest_cpu [DIR] [--tests N]`` sums them per file and prints a Markdown table, largest first
+(with ``--tests``: the N tests that cost most).
 """
 
 from __future__ import annotations
@@ -21,6 +22,7 @@ import pytest
 __all__ = ["cpu_seconds", "main", "table"]
 
 _FILES: defaultdict[str, float] = defaultdict(float)
+_TESTS: dict[str, float] = {}
 _COLLECTED: list[float] = []
 
 
@@ -38,7 +40,8 @@ def pytest_collection_finish(session):
 def pytest_runtest_protocol(item, nextitem):
     c0 = cpu_seconds()
     yield
-    _FILES[item.nodeid.split("::", 1)[0]] += cpu_seconds() - c0
+    _TESTS[item.nodeid] = cpu_seconds() - c0
+    _FILES[item.nodeid.split("::", 1)[0]] += _TESTS[item.nodeid]
 
 
 def pytest_sessionfinish(session):
@@ -49,24 +52,30 @@ def pytest_sessionfinish(session):
     out.parent.mkdir(parents=True, exist_ok=True)
     rows = [("(start-up and collection)", _COLLECTED[0] if _COLLECTED else 0.0), *sorted(_FILES.items())]
     out.write_text("".join(f"{name}\t{s:.3f}\n" for name, s in rows), encoding="utf-8")
+    out.with_suffix(".tests").write_text("".join(f"{n}\t{s:.3f}\n" for n, s in _TESTS.items()), encoding="utf-8")
 
 
-def table(folder: Path) -> str:
-    """The Markdown table of the CPU seconds per test file, summed over the processes' files in ``folder``."""
+def table(folder: Path, tests: int = 0) -> str:
+    """The Markdown table of the CPU seconds per test file, summed over the processes' files in ``folder``
+    (``tests`` > 0: of the ``tests`` tests that cost most)."""
     total: defaultdict[str, float] = defaultdict(float)
-    for f in sorted(Path(folder).glob("*.tsv")):
+    for f in sorted(Path(folder).glob("*.tests" if tests else "*.tsv")):
         for line in f.read_text(encoding="utf-8").splitlines():
             name, s = line.rsplit("\t", 1)
             total[name] += float(s)
     lines = ["| tests | CPU (s) |", "| --- | --- |"]
-    lines += [f"| {name} | {s:.1f} |" for name, s in sorted(total.items(), key=lambda kv: -kv[1])]
+    lines += [f"| {name} | {s:.1f} |" for name, s in sorted(total.items(), key=lambda kv: -kv[1])[: tests or None]]
+    if tests:
+        return "\n".join(lines)
     return "\n".join([*lines, f"| all ({len(total)} rows) | {sum(total.values()):.1f} |"])
 
 
 def main(argv: list[str] | None = None) -> int:
-    """``python -m tools.pytest_cpu [DIR]`` (default ``build/cpu``): print the table."""
-    args = sys.argv[1:] if argv is None else argv
-    print(table(Path(args[0] if args else "build/cpu")))
+    """``python -m tools.pytest_cpu [DIR] [--tests N]`` (default ``build/cpu``): print the table."""
+    args = list(sys.argv[1:] if argv is None else argv)
+    n = int(args.pop(args.index("--tests") + 1)) if "--tests" in args else 0
+    args = [a for a in args if a != "--tests"]
+    print(table(Path(args[0] if args else "build/cpu"), n))
     return 0
 
 
