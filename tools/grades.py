@@ -87,7 +87,8 @@ def _round_trip(chapter: Path, course: Path, root: Path) -> dict:
     from nbgrader.api import Gradebook  # type: ignore[import-untyped]
 
     with Gradebook(f"sqlite:///{course / 'gradebook.db'}") as gb:
-        scores, total = {}, {}
+        scores: dict[str, dict[str, tuple[float, float]]] = {}
+        total: dict[str, float] = {}
         for student in ("solved", "blank"):
             sub = gb.find_submission(name, student)
             (nb,) = sub.notebooks
