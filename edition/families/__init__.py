@@ -13,12 +13,12 @@ The package, by job:
 ==================  ===========================================================================================
 :mod:`.family`      :class:`Family` (a row of ``singularities.csv``) and the paper's items (:func:`paper_item`)
 :mod:`.catalogue`   :func:`families`, sampled and checked exactly; :func:`check_paper_items`, the printed list
-:mod:`.accounting`  the families modulo a half turn and the items that cover them; ``singularities.csv``
+:mod:`.coverage`    the families modulo a half turn and the items that cover them; ``singularities.csv``
 ==================  ===========================================================================================
 """
 
-from .accounting import ITEMS, READINGS, accounting, covering_items, table, write_csv
 from .catalogue import check_paper_items, families
+from .coverage import ITEMS, READINGS, accounting, covering_items, table, write_csv
 from .family import COLUMNS, PAPER_PAIR_ITEMS, Family, paper_item
 
 __all__ = [

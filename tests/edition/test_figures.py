@@ -352,7 +352,7 @@ def test_data_paths_do_not_import_matplotlib():
         "edition.families",
         "edition.families.family",
         "edition.families.catalogue",
-        "edition.families.accounting",
+        "edition.families.coverage",
         "edition.figures",
         "edition.figures.common",
         "edition.figures.output",
