@@ -358,7 +358,11 @@ def test_data_paths_do_not_import_matplotlib():
         "edition.figures.output",
         "wmr.plot.style",
         "wmr.plot.annotate",
+        "wmr.plot.marks",
+        "wmr.plot.lines",
+        "wmr.plot.legend",
         "wmr.plot.robot",
+        "wmr.plot.units",
     ],
 )
 def test_doctests(module):
