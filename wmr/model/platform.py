@@ -352,12 +352,15 @@ def moved_points(points: ArrayLike, origin: Point = (0.0, 0.0), angle: Numbers =
     >>> [tuple(round(float(v), 12) + 0.0 for v in p) for p in moved_points([(1.0, 0.0), (-1.0, 0.0)], (1.0, 0.0), np.pi / 2)]
     [(0.0, 0.0), (0.0, 2.0)]
     """
+    if isinstance(points, (str, bytes)) or not hasattr(points, "__iter__"):
+        raise InputTypeError(f"points must be a sequence of pairs (n, 2), got {show(points)}")
+    pts = [point(f"points[{k}]", p) for k, p in enumerate(points)]
     ox, oy = point("origin", origin)
     angle = number("angle", angle)
     c, s = np.cos(angle), np.sin(angle)
     out = []
     with np.errstate(over="ignore", invalid="ignore"):
-        for px, py in points:
+        for px, py in pts:
             x, y = px - ox, py - oy
             out.append((c * x + s * y, -s * x + c * y))
     if not all(np.isfinite(float(v)) for p in out for v in p if not isinstance(v, sp.Basic)):
