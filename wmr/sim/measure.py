@@ -44,7 +44,7 @@ def yaw(q):
 
 
 class Probe:
-    r"""Reads the state of one compiled model in wmr's variables (:meth:`sample`).
+    r"""Reads the state of one compiled model in wmr's variables (:meth:`Probe.sample`).
 
     Parameters
     ----------
