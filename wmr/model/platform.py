@@ -15,6 +15,8 @@ The velocity of a platform point :math:`P_i` with :math:`\mathbf d_i = \overrigh
 
 from __future__ import annotations
 
+from collections.abc import Iterable
+
 import numpy as np
 import sympy as sp
 
@@ -327,7 +329,9 @@ def point_velocity(twist: Twist, d: ArrayLike) -> FloatArray:
     return v
 
 
-def moved_points(points: ArrayLike, origin: Point = (0.0, 0.0), angle: Numbers = 0.0) -> list[tuple[Numbers, Numbers]]:
+def moved_points(
+    points: Iterable[Point] | FloatArray, origin: Point = (0.0, 0.0), angle: Numbers = 0.0
+) -> list[tuple[Numbers, Numbers]]:
     r"""Points of the body frame described from another body frame, moved to ``origin`` and turned by ``angle``.
 
     :math:`\mathbf d' = \mathbf R(-\text{angle})(\mathbf d - \text{origin})`; SymPy coordinates stay SymPy
