@@ -1,4 +1,4 @@
-r"""The robots of Chapter 6: three centred, dual and offset wheel units on the same mount points."""
+r"""The robots of Chapter 6: the same three mount points with centred, dual (b = 0.05) and offset (d = r) wheels."""
 
 from __future__ import annotations
 
