@@ -25,6 +25,7 @@ Examples
 >>> d.rank_F, d.admissible
 (5, True)
 """
+
 from __future__ import annotations
 
 import importlib
@@ -80,14 +81,19 @@ def module(key):
 def _draw(key, data):
     """Draw from the snapped data, then snap what the figure hands to the renderer (the same file anywhere)."""
     from wmr.plot.snapping import snap_figure
+
     return snap_figure(module(key).draw(snapped(data)))
 
 
 def _render(key, data, fig=None, fmts=None):
     mod = module(key)
     fig = _draw(key, data) if fig is None else fig
-    return output.render(fig, output.formats(mod) if fmts is None else fmts,
-                         title=f"{key}: {mod.TITLE}", creator=f"edition.figures.{key}")
+    return output.render(
+        fig,
+        output.formats(mod) if fmts is None else fmts,
+        title=f"{key}: {mod.TITLE}",
+        creator=f"edition.figures.{key}",
+    )
 
 
 def save(key, data, outdir, *, fig=None):
@@ -137,6 +143,7 @@ def show(key, data=None, *, outdir=None, width=None):
     from IPython.display import Markdown, display
 
     from ..display import image
+
     mod = module(key)
     data = mod.data() if data is None else data
     fig = _draw(key, data)
@@ -178,7 +185,7 @@ def write_all(outdir, keys=None, *, csv=True, verbose=False):
     outdir = Path(outdir)
     keys = list(KEYS) if keys is None else list(keys)
     for key in keys:
-        module(key)                                         # a clear error before any work
+        module(key)  # a clear error before any work
     out = {}
     for key in keys:
         t0 = time.perf_counter()
@@ -188,6 +195,7 @@ def write_all(outdir, keys=None, *, csv=True, verbose=False):
             print(f"  {key:12s} {time.perf_counter() - t0:5.2f} s", file=sys.stderr)
     if csv:
         from ..families import write_csv
+
         t0 = time.perf_counter()
         write_csv(outdir / "singularities.csv")
         if verbose:

@@ -12,6 +12,7 @@ digits), an ordinary value (rounded by :func:`edition.text.rounded`), or a :func
 field (arrays for the picture, not written).  Arrays for the picture are :func:`snap`-ped, so
 that round-off differences between machines do not reach the coordinates in the SVG and PDF files.
 """
+
 from __future__ import annotations
 
 import dataclasses
@@ -26,12 +27,27 @@ from wmr.plot.snapping import snap
 
 from ..text import bound, rounded
 
-__all__ = ["L_PAPER", "R_CENTRED", "R_OFFSET", "DEG", "ABS_DET_J", "MAX_PSI", "centred_robot",
-           "exact_det_J", "fit_circle", "snap", "snapped", "residual", "small", "drawing", "numbers"]
+__all__ = [
+    "L_PAPER",
+    "R_CENTRED",
+    "R_OFFSET",
+    "DEG",
+    "ABS_DET_J",
+    "MAX_PSI",
+    "centred_robot",
+    "exact_det_J",
+    "fit_circle",
+    "snap",
+    "snapped",
+    "residual",
+    "small",
+    "drawing",
+    "numbers",
+]
 
-L_PAPER = 1.0      #: distance of the mount points from C in the figures (the unit of length)
-R_CENTRED = 0.25   #: wheel radius of the centred-wheel robot in the figures
-R_OFFSET = 0.3     #: wheel radius (= offset d) of the offset-wheel robot in Fig. 7
+L_PAPER = 1.0  #: distance of the mount points from C in the figures (the unit of length)
+R_CENTRED = 0.25  #: wheel radius of the centred-wheel robot in the figures
+R_OFFSET = 0.3  #: wheel radius (= offset d) of the offset-wheel robot in Fig. 7
 DEG = np.pi / 180
 #: LaTeX of quantities the captions bound.
 ABS_DET_J = r"|\det\mathbf{J}|"
@@ -75,6 +91,7 @@ def exact_det_J(beta_deg, r=R_CENTRED):
     (0, 3/2)
     """
     import sympy as sp
+
     poly, c, s = _exact_poly()
     ang = [sp.nsimplify(b) * sp.pi / 180 for b in beta_deg]
     v = poly.subs({**{c[i]: sp.cos(a) for i, a in enumerate(ang)}, **{s[i]: sp.sin(a) for i, a in enumerate(ang)}})
@@ -106,7 +123,7 @@ def fit_circle(xy):
     """
     xy = np.asarray(xy, dtype=float)
     A = np.column_stack([xy[:, 0], xy[:, 1], np.ones(len(xy))])
-    rhs = np.sum(xy ** 2, axis=1)
+    rhs = np.sum(xy**2, axis=1)
     (a, b, c), *_ = np.linalg.lstsq(A, rhs, rcond=None)
     centre = np.array([a / 2, b / 2])
     return centre, float(np.sqrt(c + centre @ centre))
@@ -144,8 +161,14 @@ def _snapped(x):
         if not type(x).__module__.startswith(__package__):
             return x
         kept = ("residual", "small")
-        return dataclasses.replace(x, **{f.name: getattr(x, f.name) if f.metadata.get("json") in kept
-                                         else _snapped(getattr(x, f.name)) for f in dataclasses.fields(x) if f.init})
+        return dataclasses.replace(
+            x,
+            **{
+                f.name: getattr(x, f.name) if f.metadata.get("json") in kept else _snapped(getattr(x, f.name))
+                for f in dataclasses.fields(x)
+                if f.init
+            },
+        )
     if isinstance(x, (float, np.floating)):
         return float(snap(x))
     if isinstance(x, np.ndarray):

@@ -5,6 +5,7 @@ asked for (Figs. 9 and 13); :class:`SingularConfig` (:func:`singular_config`) ho
 state about a configuration of the three-centred-wheel robot, and :func:`beta_text`,
 :func:`config_lines` say it in Markdown.  No matplotlib.
 """
+
 from __future__ import annotations
 
 from dataclasses import dataclass
@@ -60,8 +61,11 @@ def axles_meet(robot, beta, target):
     meet = ln.axles_concurrency(robot, beta)
     if meet.point is None:
         return AxleMeet(meet.kind.name.lower(), None, float("inf"))
-    return AxleMeet(meet.kind.name.lower(), tuple(map(float, meet.point)),
-                    float(np.linalg.norm(meet.point - np.asarray(target, dtype=float))))
+    return AxleMeet(
+        meet.kind.name.lower(),
+        tuple(map(float, meet.point)),
+        float(np.linalg.norm(meet.point - np.asarray(target, dtype=float))),
+    )
 
 
 @dataclass(frozen=True)
@@ -148,7 +152,7 @@ def singular_config(robot, beta, exact_deg=None, reach=3.2):
     axles = ln.pair_intersections(H, iv)
     plane_reach = [[conc.point] if conc.kind == ln.FINITE else [] for _ in range(3)]
     for (i, j), (kind, _) in planes.items():
-        if kind == ln.COINCIDENT:                       # a coincident pair: each line reaches the other's P
+        if kind == ln.COINCIDENT:  # a coincident pair: each line reaches the other's P
             plane_reach[i - 1].append(P[j - 1])
             plane_reach[j - 1].append(P[i - 1])
     axle_reach: list[list] = [[] for _ in range(3)]
@@ -162,15 +166,22 @@ def singular_config(robot, beta, exact_deg=None, reach=3.2):
     exact = "" if exact_deg is None else str(exact_det_J(exact_deg, r=robot.wheels[0].r))
     return SingularConfig(
         beta_deg=tuple(float(v) for v in (np.degrees(b) if exact_deg is None else exact_deg)),
-        det_J=float(sg.det_J(robot, b)), det_J_exact=exact, rank_F=rk, mobility=3 + robot.n_rates - rk,
-        kappa_J=float(condition_number(robot.J(b, L=L_PAPER))), singular=bool(sg.is_singular(robot, b)),
-        planes_meet=conc.kind.name.lower(), D_P=None if conc.point is None else tuple(map(float, conc.point)),
+        det_J=float(sg.det_J(robot, b)),
+        det_J_exact=exact,
+        rank_F=rk,
+        mobility=3 + robot.n_rates - rk,
+        kappa_J=float(condition_number(robot.J(b, L=L_PAPER))),
+        singular=bool(sg.is_singular(robot, b)),
+        planes_meet=conc.kind.name.lower(),
+        D_P=None if conc.point is None else tuple(map(float, conc.point)),
         axles_meet=ln.axles_concurrency(robot, b).kind.name.lower(),
         axle_crossings=tuple(tuple(map(float, p)) for p in crossings),
         coincident=tuple(k for k, v in planes.items() if v[0] == ln.COINCIDENT),
-        family=sg.classify(robot, b).family, beta=snap(b),
+        family=sg.classify(robot, b).family,
+        beta=snap(b),
         plane_reach=tuple(snap(np.reshape(r_, (-1, 2))) for r_ in plane_reach),
-        axle_reach=tuple(snap(np.reshape(r_, (-1, 2))) for r_ in axle_reach))
+        axle_reach=tuple(snap(np.reshape(r_, (-1, 2))) for r_ in axle_reach),
+    )
 
 
 def beta_text(beta_deg, digits=6):
@@ -212,9 +223,10 @@ def config_lines(cfg, kappa=True):
         Markdown with ``$...$`` math, one line each.
     """
     det = residual_text(ABS_DET_J, abs(cfg.det_J))
-    lines = [rf"$\det\mathbf{{J}} = {cfg.det_J_exact}$ (exact), ${det}$ (float)" if cfg.det_J_exact
-             else rf"${det}$ (float)",
-             rf"rank $\mathbf{{F}}$ = {cfg.rank_F}, mobility {cfg.mobility}"]
+    lines = [
+        rf"$\det\mathbf{{J}} = {cfg.det_J_exact}$ (exact), ${det}$ (float)" if cfg.det_J_exact else rf"${det}$ (float)",
+        rf"rank $\mathbf{{F}}$ = {cfg.rank_F}, mobility {cfg.mobility}",
+    ]
     if kappa:
         k = cfg.kappa_J
         lines.append(r"$\kappa(\mathbf{J}) = \infty$" if not np.isfinite(k) else rf"$\kappa(\mathbf{{J}}) = {k:.3g}$")

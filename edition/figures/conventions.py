@@ -7,6 +7,7 @@ r"""A drawing of the package's conventions (:mod:`wmr.conventions`), computed fr
 The points and unit vectors are those of :meth:`wmr.OffsetWheel.points` and
 :meth:`wmr.DualWheel.points`, not drawn by hand.
 """
+
 from __future__ import annotations
 
 from dataclasses import dataclass
@@ -20,7 +21,7 @@ from .common import DEG, L_PAPER, R_CENTRED, drawing, snap
 
 __all__ = ["NUMBER", "TITLE", "PAPER_CAPTION", "ConventionsData", "data", "draw", "caption"]
 
-NUMBER = "E1"   # this edition's own figures: E1, E2 (the paper's are 1-14)
+NUMBER = "E1"  # this edition's own figures: E1, E2 (the paper's are 1-14)
 TITLE = "Conventions"
 PAPER_CAPTION = ""
 
@@ -94,9 +95,19 @@ def data(psi=25.0, beta=35.0, r=0.3, b=0.45):
     dw = DualWheel((0.0, 0.0), r=r, b=b)
     po, pd = ow.points(beta * DEG), dw.points(beta * DEG)
     return ConventionsData(
-        psi=psi, beta=beta, r=r, d=r, b=b, i=tuple(po["i"].tolist()), j=tuple(po["j"].tolist()),
-        H_minus_P=tuple((po["H"] - po["P"]).tolist()), dual_wheels=tuple(map(tuple, pd["wheels"].tolist())),
-        mount_points=tuple(map(tuple, bot.mount_points.tolist())), robot=bot, units=(ow, dw))
+        psi=psi,
+        beta=beta,
+        r=r,
+        d=r,
+        b=b,
+        i=tuple(po["i"].tolist()),
+        j=tuple(po["j"].tolist()),
+        H_minus_P=tuple((po["H"] - po["P"]).tolist()),
+        dual_wheels=tuple(map(tuple, pd["wheels"].tolist())),
+        mount_points=tuple(map(tuple, bot.mount_points.tolist())),
+        robot=bot,
+        units=(ow, dw),
+    )
 
 
 def draw(data, fig=None):
@@ -116,6 +127,7 @@ def draw(data, fig=None):
     from wmr.plot import annotate as an
     from wmr.plot import robot as rd
     from wmr.plot.style import FONT_SMALL, PALETTE, ROLE, fit_view, new_figure, panel_title, style
+
     bot, (ow, dw) = data.robot, data.units
     psi, beta = data.psi * DEG, data.beta * DEG
     P = np.zeros(2)
@@ -124,17 +136,37 @@ def draw(data, fig=None):
         fig, axes = new_figure(1, 3, width=7.4, height=2.3, fig=fig)
         # (a) frames
         ax = axes[0]
-        an.draw_frame(ax, (0, 0), 0.0, 0.5, labels=(r"$\mathbf{i}_\mathcal{F}$", r"$\mathbf{j}_\mathcal{F}$"),
-                      color=ROLE["fixed_frame"])
+        an.draw_frame(
+            ax,
+            (0, 0),
+            0.0,
+            0.5,
+            labels=(r"$\mathbf{i}_\mathcal{F}$", r"$\mathbf{j}_\mathcal{F}$"),
+            color=ROLE["fixed_frame"],
+        )
         an.label(ax, (0, 0), r"$\mathcal{F}$", offset=(-4, -4), ha="right", va="top", color=ROLE["fixed_frame"])
-        g = rd.draw_robot(ax, bot, np.zeros(3), (psi, 1.55, 1.1), frame=False,
-                          label_offsets={"C": (-2, -7), 2: (-12, 6), 1: (-13, 0), 3: (13, 0)}, arrows="j")
+        g = rd.draw_robot(
+            ax,
+            bot,
+            np.zeros(3),
+            (psi, 1.55, 1.1),
+            frame=False,
+            label_offsets={"C": (-2, -7), 2: (-12, 6), 1: (-13, 0), 3: (13, 0)},
+            arrows="j",
+        )
         an.draw_frame(ax, g.C, psi, 0.6, zorder=8)
         ax.plot(*np.stack([g.C, g.C + [0.9, 0.0]]).T, color=PALETTE["grey"], lw=0.6, ls=(0, (2, 2)))
         an.draw_angle(ax, g.C, 0.82, 0.0, psi, r"$\psi$", text_radius=1.2)
         an.draw_arrow(ax, g.C, g.P[1] - g.C, color=PALETTE["blue"], lw=1.1, head=7, zorder=8)
-        an.label(ax, g.C + 0.62 * (g.P[1] - g.C), r"$\mathbf{d}_2$", offset=(7, -2), ha="left", va="center",
-                 color=PALETTE["blue"])
+        an.label(
+            ax,
+            g.C + 0.62 * (g.P[1] - g.C),
+            r"$\mathbf{d}_2$",
+            offset=(7, -2),
+            ha="left",
+            va="center",
+            color=PALETTE["blue"],
+        )
         an.draw_arrow(ax, (0, 0), g.C, color=PALETTE["grey"], lw=0.8, head=6, zorder=3)
         an.label(ax, 0.35 * g.C, r"$\mathbf{c}$", offset=(4, -4), ha="left", va="top", color=PALETTE["grey"])
         fit_view(ax, np.vstack([rd.robot_extent(g, rd.platform_radius(bot)), [[-0.35, -0.35]]]), pad=0.02)
@@ -142,14 +174,32 @@ def draw(data, fig=None):
         # (b) offset wheel, (c) dual wheel
         for ax, unit in ((axes[1], ow), (axes[2], dw)):
             ax.plot(*np.stack([P, P + [0.8, 0.0]]).T, color=PALETTE["grey"], lw=0.6, ls=(0, (2, 2)))
-            an.label(ax, P + [0.8, 0.0], r"$\mathbf{i}$", offset=(3, 0), ha="left", va="center",
-                     color=PALETTE["grey"], fontsize=FONT_SMALL)
+            an.label(
+                ax,
+                P + [0.8, 0.0],
+                r"$\mathbf{i}$",
+                offset=(3, 0),
+                ha="left",
+                va="center",
+                color=PALETTE["grey"],
+                fontsize=FONT_SMALL,
+            )
             rd.draw_unit(ax, unit, beta, light=True, zorder=3, arrows="j")
-            an.draw_frame(ax, P, beta, 0.62, labels=(r"$\mathbf{i}_i$", r"$\mathbf{j}_i$"), color=PALETTE["blue"],
-                          zorder=7)
-            arc = 0.42 if unit is ow else 0.27                 # inside wheel 1 of the dual wheel
-            an.draw_angle(ax, P, arc, 0.0, beta, r"$\beta_i$", text_radius=1.35 if unit is ow else 1.5,
-                          color=PALETTE["purple"], zorder=7)
+            an.draw_frame(
+                ax, P, beta, 0.62, labels=(r"$\mathbf{i}_i$", r"$\mathbf{j}_i$"), color=PALETTE["blue"], zorder=7
+            )
+            arc = 0.42 if unit is ow else 0.27  # inside wheel 1 of the dual wheel
+            an.draw_angle(
+                ax,
+                P,
+                arc,
+                0.0,
+                beta,
+                r"$\beta_i$",
+                text_radius=1.35 if unit is ow else 1.5,
+                color=PALETTE["purple"],
+                zorder=7,
+            )
             an.label(ax, P, "$P_i$", offset=(-7, 4), ha="right", va="bottom")
             fit_view(ax, np.array([[-0.72, -0.78], [0.95, 0.72]]), pad=0.0)
         ax = axes[1]
@@ -161,8 +211,15 @@ def draw(data, fig=None):
         panel_title(ax, "b", r"offset wheel: $H_i = P_i - d\,\mathbf{j}_i$")
         ax = axes[2]
         for k, w_ in enumerate(snap(data.dual_wheels)):
-            an.label(ax, w_ + (data.r + 0.1) * j_, f"wheel {k + 1}", offset=(0, 0), ha="center", va="center",
-                     fontsize=FONT_SMALL)
+            an.label(
+                ax,
+                w_ + (data.r + 0.1) * j_,
+                f"wheel {k + 1}",
+                offset=(0, 0),
+                ha="center",
+                va="center",
+                fontsize=FONT_SMALL,
+            )
         panel_title(ax, "c", r"dual wheel: wheels at $P_i \pm b\,\mathbf{i}_i$")
     return fig
 
@@ -170,6 +227,7 @@ def draw(data, fig=None):
 def _exact(point):
     """A mount point (units of L) as exact LaTeX, e.g. ``L\\left(\\frac{1}{2}, \\frac{\\sqrt{3}}{2}\\right)``."""
     import sympy as sp
+
     xy = [sp.latex(sp.nsimplify(v / L_PAPER, [sp.sqrt(3)], tolerance=1e-12)) for v in point]
     return rf"L\left({xy[0]}, {xy[1]}\right)"
 
@@ -187,14 +245,17 @@ def caption(data):
     str
         Markdown with ``$...$`` math.
     """
-    return (r"Conventions of the package. (a) Fixed frame $\mathcal{F}$ and body frame $\mathcal{B}$ "
-            r"($\mathbf{i}$, $\mathbf{j}$) at the operation point $C$, turned by $\psi$ (counter-clockwise positive, "
-            rf"here {data.psi:g}$^\circ$); $\mathbf{{c}}$ locates $C$ in $\mathcal{{F}}$ and "
-            r"$\mathbf{d}_i = \overrightarrow{CP_i}$ is resolved in $\mathcal{B}$; the numbering inferred from (59) (the "
-            r"paper does not state it; the only one of 24 for which (59) holds) "
-            + ", ".join(rf"$\mathbf{{d}}_{k + 1} = {_exact(p)}$" for k, p in enumerate(data.mount_points)) + ". "
-            rf"(b) Offset wheel: the intermediate body turns by $\beta_i$ (here {data.beta:g}$^\circ$) from "
-            r"$\mathbf{i}$ to the axle $\mathbf{i}_i$; $\mathbf{j}_i$ is the rolling direction (arrows on the wheels) "
-            r"and the wheel centre is $H_i = P_i - d\,\mathbf{j}_i$ (a centred wheel has $d = 0$). (c) Dual wheel: "
-            r"wheel 1 at $P_i + b\,\mathbf{i}_i$, wheel 2 at $P_i - b\,\mathbf{i}_i$. No slip: "
-            r"$\dot{\mathbf{h}}_i = -r\dot\theta_i\mathbf{j}_i$.")
+    return (
+        r"Conventions of the package. (a) Fixed frame $\mathcal{F}$ and body frame $\mathcal{B}$ "
+        r"($\mathbf{i}$, $\mathbf{j}$) at the operation point $C$, turned by $\psi$ (counter-clockwise positive, "
+        rf"here {data.psi:g}$^\circ$); $\mathbf{{c}}$ locates $C$ in $\mathcal{{F}}$ and "
+        r"$\mathbf{d}_i = \overrightarrow{CP_i}$ is resolved in $\mathcal{B}$; the numbering inferred from (59) (the "
+        r"paper does not state it; the only one of 24 for which (59) holds) "
+        + ", ".join(rf"$\mathbf{{d}}_{k + 1} = {_exact(p)}$" for k, p in enumerate(data.mount_points))
+        + ". "
+        rf"(b) Offset wheel: the intermediate body turns by $\beta_i$ (here {data.beta:g}$^\circ$) from "
+        r"$\mathbf{i}$ to the axle $\mathbf{i}_i$; $\mathbf{j}_i$ is the rolling direction (arrows on the wheels) "
+        r"and the wheel centre is $H_i = P_i - d\,\mathbf{j}_i$ (a centred wheel has $d = 0$). (c) Dual wheel: "
+        r"wheel 1 at $P_i + b\,\mathbf{i}_i$, wheel 2 at $P_i - b\,\mathbf{i}_i$. No slip: "
+        r"$\dot{\mathbf{h}}_i = -r\dot\theta_i\mathbf{j}_i$."
+    )

@@ -10,6 +10,7 @@ Files: SVG and PDF, like every figure.  The colour maps are drawn unresampled
 (``interpolation="none"``): each file embeds the grid's cells once, as a small image of snapped values,
 and the viewer scales it, so the file does not depend on how a renderer anti-aliases.
 """
+
 from __future__ import annotations
 
 from dataclasses import dataclass
@@ -27,10 +28,21 @@ from ..text import degrees
 from ..text import residual as residual_text
 from .common import ABS_DET_J, DEG, L_PAPER, centred_robot, drawing, residual, snap
 
-__all__ = ["NUMBER", "TITLE", "PAPER_CAPTION", "MOBILE_TWISTS", "MOBILE_SEED", "DetSlice", "DetMapData",
-           "refine_kappa_min", "data", "draw", "caption"]
+__all__ = [
+    "NUMBER",
+    "TITLE",
+    "PAPER_CAPTION",
+    "MOBILE_TWISTS",
+    "MOBILE_SEED",
+    "DetSlice",
+    "DetMapData",
+    "refine_kappa_min",
+    "data",
+    "draw",
+    "caption",
+]
 
-NUMBER = "E2"   # this edition's own figures: E1, E2 (the paper's are 1-14)
+NUMBER = "E2"  # this edition's own figures: E1, E2 (the paper's are 1-14)
 TITLE = "Singular configurations and conditioning of J"
 PAPER_CAPTION = ""
 #: Largest :math:`\log_{10}\kappa` shown (the colour scale is clipped there).
@@ -81,9 +93,9 @@ class DetSlice:
     singular_motions: tuple
     singular_motion_det_max: float = residual()
     singular_motion_ranks: tuple = ()
-    det: np.ndarray = drawing(default=None)          # (n, n) det J / r^3, rows beta3, columns beta2
-    log_kappa: np.ndarray = drawing(default=None)    # (n, n) log10 kappa, clipped to [0, 16]
-    det_A: np.ndarray = drawing(default=None)        # (n, n) det of the twist-constraint matrix
+    det: np.ndarray = drawing(default=None)  # (n, n) det J / r^3, rows beta3, columns beta2
+    log_kappa: np.ndarray = drawing(default=None)  # (n, n) log10 kappa, clipped to [0, 16]
+    det_A: np.ndarray = drawing(default=None)  # (n, n) det of the twist-constraint matrix
 
 
 @dataclass(frozen=True)
@@ -130,8 +142,8 @@ class DetMapData:
     vortex_rank_F: int = 0
     mobile_twists: int = 0
     kappa_mobile_min: float = 0.0
-    grid: np.ndarray = drawing(default=None)         # (n,) degrees, cell centres
-    lim: float = drawing(default=1.0)                # colour range of det J / r^3
+    grid: np.ndarray = drawing(default=None)  # (n,) degrees, cell centres
+    lim: float = drawing(default=1.0)  # colour range of det J / r^3
 
 
 def _slice(bot, beta1, g):
@@ -144,16 +156,21 @@ def _slice(bot, beta1, g):
     mb, fams = sg.singular_motions(bot, beta1 * DEG)
     mdeg = np.degrees(mb)
     finite = kap[np.isfinite(kap)]
-    k = np.argmin(snap(np.where(np.isfinite(kap), kap, np.inf)))     # snapped: ties (symmetry) go to the first
+    k = np.argmin(snap(np.where(np.isfinite(kap), kap, np.inf)))  # snapped: ties (symmetry) go to the first
     return DetSlice(
-        beta1=float(beta1), det_min=float(D.min()), det_max=float(D.max()), kappa_min=float(finite.min()),
+        beta1=float(beta1),
+        det_min=float(D.min()),
+        det_max=float(D.max()),
+        kappa_min=float(finite.min()),
         kappa_min_refined=refine_kappa_min(bot, beta1, B2.flat[k], B3.flat[k], g[1] - g[0]),
         singular_fraction=float(np.mean(~np.isfinite(kap))),
         singular_motions=tuple((float(a), float(b), f) for (_, a, b), f in zip(mdeg, fams, strict=True)),
         singular_motion_det_max=float(np.abs(sg.det_J(bot, mb)).max()),
         singular_motion_ranks=tuple(sorted(set(int(v) for v in rank_F(bot, mb)))),
-        det=snap(D), log_kappa=snap(np.log10(np.clip(np.where(np.isfinite(kap), kap, 1e16), 1, 1e16))),
-        det_A=snap(np.linalg.det(A)))
+        det=snap(D),
+        log_kappa=snap(np.log10(np.clip(np.where(np.isfinite(kap), kap, 1e16), 1, 1e16))),
+        det_A=snap(np.linalg.det(A)),
+    )
 
 
 def refine_kappa_min(bot, beta1, beta2, beta3, step, rounds=4, m=41):
@@ -226,18 +243,25 @@ def data(beta1s=(60.0, 20.0), n=400):
     DetMapData
     """
     bot = centred_robot()
-    g = -180.0 + (np.arange(n) + 0.5) * 360.0 / n          # cell centres: no sample sits exactly on a zero
+    g = -180.0 + (np.arange(n) + 0.5) * 360.0 / n  # cell centres: no sample sits exactly on a zero
     slices = tuple(_slice(bot, float(b1), g) for b1 in beta1s)
-    alpha = np.arctan2(bot.mount_points[:, 1], bot.mount_points[:, 0])      # polar angles of the P_i
+    alpha = np.arctan2(bot.mount_points[:, 1], bot.mount_points[:, 0])  # polar angles of the P_i
     kv = {sgn: float(condition_number(bot.J(alpha + sgn * 45 * DEG, L=L_PAPER))) for sgn in (1, -1)}
     return DetMapData(
-        n=n, slices=slices, a13=float(np.degrees(ln.pair_line_angle(bot, 1, 3))),
+        n=n,
+        slices=slices,
+        a13=float(np.degrees(ln.pair_line_angle(bot, 1, 3))),
         a23=float(np.degrees(ln.pair_line_angle(bot, 2, 3))),
-        vortex_beta_deg=tuple(np.degrees(wrap_angle(alpha + 45 * DEG)).tolist()), kappa_vortex=kv[1],
-        kappa_vortex_minus=kv[-1], vortex_error=max(abs(k - 1) for k in kv.values()),
-        vortex_rank_F=int(rank_F(bot, alpha + 45 * DEG)), mobile_twists=MOBILE_TWISTS,
-        kappa_mobile_min=_kappa_mobile_min(bot), grid=g,
-        lim=float(np.round(max(max(abs(s.det_min), abs(s.det_max)) for s in slices), 3)))
+        vortex_beta_deg=tuple(np.degrees(wrap_angle(alpha + 45 * DEG)).tolist()),
+        kappa_vortex=kv[1],
+        kappa_vortex_minus=kv[-1],
+        vortex_error=max(abs(k - 1) for k in kv.values()),
+        vortex_rank_F=int(rank_F(bot, alpha + 45 * DEG)),
+        mobile_twists=MOBILE_TWISTS,
+        kappa_mobile_min=_kappa_mobile_min(bot),
+        grid=g,
+        lim=float(np.round(max(max(abs(s.det_min), abs(s.det_max)) for s in slices), 3)),
+    )
 
 
 #: Marker and colour of the families in :attr:`DetSlice.singular_motions`.
@@ -262,24 +286,38 @@ def draw(data, fig=None):
     from matplotlib.lines import Line2D
 
     from wmr.plot.style import FONT_SMALL, PALETTE, new_figure, style
+
     g, ns = data.grid, len(data.slices)
     with style():
         fig, axes = new_figure(2, ns, width=7.2, height=6.6, fig=fig, drawing=False)
         axes = np.reshape(axes, (2, ns))
         for col, sl in enumerate(data.slices):
-            maps = ((sl.det, dict(cmap=colormaps["PuOr"].resampled(64), vmin=-data.lim, vmax=data.lim)),
-                    (sl.log_kappa, dict(cmap=colormaps["cividis"].resampled(64), vmin=0, vmax=LOG_KAPPA_MAX)))
+            maps = (
+                (sl.det, dict(cmap=colormaps["PuOr"].resampled(64), vmin=-data.lim, vmax=data.lim)),
+                (sl.log_kappa, dict(cmap=colormaps["cividis"].resampled(64), vmin=0, vmax=LOG_KAPPA_MAX)),
+            )
             for row, (Z, kw) in enumerate(maps):
                 ax = axes[row, col]
-                m = ax.imshow(Z, extent=(-180, 180, -180, 180), origin="lower", interpolation="none",
-                              aspect="equal", **kw)
+                m = ax.imshow(
+                    Z, extent=(-180, 180, -180, 180), origin="lower", interpolation="none", aspect="equal", **kw
+                )
                 ax.contour(g, g, sl.det, levels=[0.0], colors=[PALETTE["black"]], linewidths=1.2)
-                ax.contour(g, g, sl.det_A, levels=[0.0], colors=[PALETTE["sky"]], linewidths=1.0,
-                           linestyles=[(0, (4, 2))])
+                ax.contour(
+                    g, g, sl.det_A, levels=[0.0], colors=[PALETTE["sky"]], linewidths=1.0, linestyles=[(0, (4, 2))]
+                )
                 for a, b, f in sl.singular_motions:
                     mk, c = _FAMILY_STYLE.get(f, ("x", "black"))
-                    ax.plot(*snap([a, b]), marker=mk, color=PALETTE[c], markersize=6, markeredgecolor=PALETTE["black"],
-                            markeredgewidth=0.7, linestyle="none", zorder=5, clip_on=False)
+                    ax.plot(
+                        *snap([a, b]),
+                        marker=mk,
+                        color=PALETTE[c],
+                        markersize=6,
+                        markeredgecolor=PALETTE["black"],
+                        markeredgewidth=0.7,
+                        linestyle="none",
+                        zorder=5,
+                        clip_on=False,
+                    )
                 ax.set_xlim(-180, 180)
                 ax.set_ylim(-180, 180)
                 ax.set_xticks(np.arange(-180, 181, 90))
@@ -291,15 +329,30 @@ def draw(data, fig=None):
                 what = r"$\det\mathbf{J}/r^3$" if row == 0 else r"$\log_{10}\kappa(\mathbf{J})$"
                 ax.set_title(f"({'abcd'[row * ns + col]}) {what}, $\\beta_1 = {sl.beta1:g}^\\circ$", loc="left")
                 if col == ns - 1:
-                    fig.colorbar(m, ax=axes[row, :].tolist(), shrink=0.9, label=what,
-                                 extend="neither" if row == 0 else "max")
-        handles = [Line2D([], [], color=PALETTE["black"], lw=1.2, label=r"$\det\mathbf{J} = 0$"),
-                   Line2D([], [], color=PALETTE["sky"], lw=1.0, ls=(0, (4, 2)),
-                          label=r"axles concurrent (rank $\mathbf{F}=5$)")]
+                    fig.colorbar(
+                        m, ax=axes[row, :].tolist(), shrink=0.9, label=what, extend="neither" if row == 0 else "max"
+                    )
+        handles = [
+            Line2D([], [], color=PALETTE["black"], lw=1.2, label=r"$\det\mathbf{J} = 0$"),
+            Line2D(
+                [], [], color=PALETTE["sky"], lw=1.0, ls=(0, (4, 2)), label=r"axles concurrent (rank $\mathbf{F}=5$)"
+            ),
+        ]
         for f, lab in (("i", "(i)"), ("i'", "(i')"), ("v-circle", "IC on the circle through the $P_i$")):
             mk, c = _FAMILY_STYLE[f]
-            handles.append(Line2D([], [], marker=mk, color=PALETTE[c], markeredgecolor=PALETTE["black"],
-                                  markeredgewidth=0.7, linestyle="none", markersize=6, label=lab))
+            handles.append(
+                Line2D(
+                    [],
+                    [],
+                    marker=mk,
+                    color=PALETTE[c],
+                    markeredgecolor=PALETTE["black"],
+                    markeredgewidth=0.7,
+                    linestyle="none",
+                    markersize=6,
+                    label=lab,
+                )
+            )
         fig.legend(handles=handles, loc="outside lower center", ncols=3)
     return fig
 
@@ -321,22 +374,24 @@ def caption(data):
     det_max = max(s.singular_motion_det_max for s in data.slices)
     kmin = min(s.kappa_min_refined for s in data.slices)
     vortex = ", ".join(degrees(np.radians(b)) for b in data.vortex_beta_deg)
-    return (rf"$\det\mathbf{{J}}/r^3$ (top) and $\log_{{10}}\kappa(\mathbf{{J}})$ (bottom, clipped at "
-            rf"{LOG_KAPPA_MAX:g}) of the WMR with three centred wheels over $(\beta_2, \beta_3)$ for "
-            rf"$\beta_1 = {b1[0]:g}^\circ$ (left) and ${b1[1]:g}^\circ$ (right), each on a {data.n}$\times${data.n} "
-            r"grid evaluated in one batch. Black: the singular curves $\det\mathbf{J} = 0$. For $\beta_1 = "
-            rf"{b1[0]:g}^\circ$ plane 1 lies on the side $P_1P_3$, and the singular set is the straight lines $\beta_3 "
-            rf"\equiv {degrees(np.radians(data.a13))}^\circ$ (item (ii) and its half-turn variant) and $\beta_2 \equiv "
-            rf"{degrees(np.radians(data.a23))}^\circ$ (mod $180^\circ$; planes 1 and 2 through $P_3$, $\beta_3$ free); "
-            r"for a generic $\beta_1$ it is a curve. Dashed: configurations with concurrent axles, the "
-            r"only ones in which the robot can move (rank $\mathbf{F} = 5$). Markers: where the robot can move "
-            r"although "
-            rf"$\mathbf{{J}}$ is singular (computed ${residual_text(ABS_DET_J, det_max)}$, rank "
-            r"$\mathbf{F} = 5$): all planes parallel ((i), (i')) and rotations about a point of the circle through the "
-            rf"$P_i$. On these slices the smallest $\kappa(\mathbf{{J}})$ is {kmin:.4f} (the grid minimum, "
-            r"refined): although $\mathbf{J}_{L1}$ and $\mathbf{J}_2$ are isotropic, $\mathbf{J}$ is isotropic only at "
-            r"special configurations, e.g. with every wheel turned by the same $45^\circ$ from its radial line $CP_i$ "
-            rf"(computed ${residual_text(KAPPA_ERROR, data.vortex_error)}$ at $\beta = ({vortex})^\circ$), where rank "
-            rf"$\mathbf{{F}} = {data.vortex_rank_F}$ and the robot cannot move. Where it can move (dashed), "
-            rf"$\kappa(\mathbf{{J}}) \geq \sqrt2$: the smallest value at the steering angles of {data.mobile_twists} "
-            rf"random twists and of a spin about $C$ is {data.kappa_mobile_min:.4f}.")
+    return (
+        rf"$\det\mathbf{{J}}/r^3$ (top) and $\log_{{10}}\kappa(\mathbf{{J}})$ (bottom, clipped at "
+        rf"{LOG_KAPPA_MAX:g}) of the WMR with three centred wheels over $(\beta_2, \beta_3)$ for "
+        rf"$\beta_1 = {b1[0]:g}^\circ$ (left) and ${b1[1]:g}^\circ$ (right), each on a {data.n}$\times${data.n} "
+        r"grid evaluated in one batch. Black: the singular curves $\det\mathbf{J} = 0$. For $\beta_1 = "
+        rf"{b1[0]:g}^\circ$ plane 1 lies on the side $P_1P_3$, and the singular set is the straight lines $\beta_3 "
+        rf"\equiv {degrees(np.radians(data.a13))}^\circ$ (item (ii) and its half-turn variant) and $\beta_2 \equiv "
+        rf"{degrees(np.radians(data.a23))}^\circ$ (mod $180^\circ$; planes 1 and 2 through $P_3$, $\beta_3$ free); "
+        r"for a generic $\beta_1$ it is a curve. Dashed: configurations with concurrent axles, the "
+        r"only ones in which the robot can move (rank $\mathbf{F} = 5$). Markers: where the robot can move "
+        r"although "
+        rf"$\mathbf{{J}}$ is singular (computed ${residual_text(ABS_DET_J, det_max)}$, rank "
+        r"$\mathbf{F} = 5$): all planes parallel ((i), (i')) and rotations about a point of the circle through the "
+        rf"$P_i$. On these slices the smallest $\kappa(\mathbf{{J}})$ is {kmin:.4f} (the grid minimum, "
+        r"refined): although $\mathbf{J}_{L1}$ and $\mathbf{J}_2$ are isotropic, $\mathbf{J}$ is isotropic only at "
+        r"special configurations, e.g. with every wheel turned by the same $45^\circ$ from its radial line $CP_i$ "
+        rf"(computed ${residual_text(KAPPA_ERROR, data.vortex_error)}$ at $\beta = ({vortex})^\circ$), where rank "
+        rf"$\mathbf{{F}} = {data.vortex_rank_F}$ and the robot cannot move. Where it can move (dashed), "
+        rf"$\kappa(\mathbf{{J}}) \geq \sqrt2$: the smallest value at the steering angles of {data.mobile_twists} "
+        rf"random twists and of a spin about $C$ is {data.kappa_mobile_min:.4f}."
+    )

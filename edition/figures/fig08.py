@@ -5,6 +5,7 @@ r"""Fig. 8: rectilinear and curvilinear translation of the centred-wheel robot (
 along a congruent curve: the congruence error is
 :math:`\max_{k,t}\|\mathbf p_k(t) - \mathbf c(t) - \mathbf d_k\|`.
 """
+
 from __future__ import annotations
 
 from dataclasses import dataclass
@@ -57,9 +58,9 @@ class TranslationRun:
     rank_F: tuple = ()
     distance: float = 0.0
     straightness: float | None = residual(default=None)
-    beta: np.ndarray = drawing(default=None)       # (N, 3)
-    pose: np.ndarray = drawing(default=None)       # (N, 3)
-    pivots: np.ndarray = drawing(default=None)     # (N, 3, 2)
+    beta: np.ndarray = drawing(default=None)  # (N, 3)
+    pose: np.ndarray = drawing(default=None)  # (N, 3)
+    pivots: np.ndarray = drawing(default=None)  # (N, 3, 2)
 
 
 @dataclass(frozen=True)
@@ -98,7 +99,7 @@ def _run(bot, beta0, steer, speed, t_end, dt, straight):
     rates = np.full(bot.w, speed / bot.wheels[0].r)
     tr = simulate(bot, rates, np.full(bot.w, beta0), t_end, dt, steer=steer)
     C = tr.pose[:, 1:]
-    P = np.stack([tr.unit_points(k, "P") for k in range(bot.w)], axis=1)          # (N, w, 2)
+    P = np.stack([tr.unit_points(k, "P") for k in range(bot.w)], axis=1)  # (N, w, 2)
     dev = float(np.max(np.linalg.norm(P - C[:, None, :] - bot.mount_points, axis=-1)))
     st = None
     if straight:
@@ -106,9 +107,16 @@ def _run(bot, beta0, steer, speed, t_end, dt, straight):
         u = xy[-1] / np.linalg.norm(xy[-1])
         st = float(np.max(np.abs(xy[:, 0] * u[1] - xy[:, 1] * u[0])))
     return TranslationRun(
-        psi_max=float(np.abs(tr.pose[:, 0]).max()), congruence_error=dev, slip_max=float(tr.slip.max()),
-        rank_F=tuple(sorted(set(int(v) for v in rank_F(bot, tr.beta)))), distance=float(np.linalg.norm(C[-1] - C[0])),
-        straightness=st, beta=snap(tr.beta), pose=snap(tr.pose), pivots=snap(P))
+        psi_max=float(np.abs(tr.pose[:, 0]).max()),
+        congruence_error=dev,
+        slip_max=float(tr.slip.max()),
+        rank_F=tuple(sorted(set(int(v) for v in rank_F(bot, tr.beta)))),
+        distance=float(np.linalg.norm(C[-1] - C[0])),
+        straightness=st,
+        beta=snap(tr.beta),
+        pose=snap(tr.pose),
+        pivots=snap(P),
+    )
 
 
 def data(speed=1.0, t_end=6.0, dt=0.02, beta_rect=100.0, amplitude=45.0):
@@ -134,9 +142,17 @@ def data(speed=1.0, t_end=6.0, dt=0.02, beta_rect=100.0, amplitude=45.0):
 
     def steer(t, state):
         return np.full(bot.w, amp * 2 * np.pi / t_end * np.cos(2 * np.pi * t / t_end))
-    return Fig08Data(speed=speed, t_end=t_end, dt=dt, beta_rect=beta_rect, amplitude=amplitude,
-                     rectilinear=_run(bot, beta_rect * DEG, None, speed, t_end, dt, True),
-                     curvilinear=_run(bot, 90 * DEG, steer, speed, t_end, dt, False), robot=bot)
+
+    return Fig08Data(
+        speed=speed,
+        t_end=t_end,
+        dt=dt,
+        beta_rect=beta_rect,
+        amplitude=amplitude,
+        rectilinear=_run(bot, beta_rect * DEG, None, speed, t_end, dt, True),
+        curvilinear=_run(bot, 90 * DEG, steer, speed, t_end, dt, False),
+        robot=bot,
+    )
 
 
 def draw(data, fig=None):
@@ -156,6 +172,7 @@ def draw(data, fig=None):
     from wmr.plot import annotate as an
     from wmr.plot import robot as rd
     from wmr.plot.style import ROLE, common_view, new_figure, panel_title, style
+
     bot = data.robot
     cols = ROLE["path"][:4]
     R = rd.platform_radius(bot)
@@ -168,22 +185,37 @@ def draw(data, fig=None):
             idx = [0, n // 3, 2 * n // 3, n - 1]
             ext = []
             for q, kk in enumerate(idx):
-                g = rd.draw_robot(ax, bot, run.beta[kk], run.pose[kk], ghost=0 < q < len(idx) - 1,
-                                  labels=q == 0, frame=q in (0, len(idx) - 1),
-                                  label_offsets={2: (-16, 4)} if letter == "b" else None, arrows="j")
+                g = rd.draw_robot(
+                    ax,
+                    bot,
+                    run.beta[kk],
+                    run.pose[kk],
+                    ghost=0 < q < len(idx) - 1,
+                    labels=q == 0,
+                    frame=q in (0, len(idx) - 1),
+                    label_offsets={2: (-16, 4)} if letter == "b" else None,
+                    arrows="j",
+                )
                 ext.append(rd.robot_extent(g, R))
             for xy, col in zip([run.pose[:, 1:]] + [run.pivots[:, k] for k in range(bot.w)], cols, strict=False):
                 an.draw_path(ax, xy, color=col, lw=1.5, zorder=7)
             views.append(np.vstack(ext))
-            title = (rf"rectilinear: constant $\beta_i = {data.beta_rect:g}^\circ$" if letter == "a" else
-                     rf"curvilinear: $\beta_i(t) = 90^\circ + {data.amplitude:g}^\circ\sin(2\pi t/T)$")
+            title = (
+                rf"rectilinear: constant $\beta_i = {data.beta_rect:g}^\circ$"
+                if letter == "a"
+                else rf"curvilinear: $\beta_i(t) = 90^\circ + {data.amplitude:g}^\circ\sin(2\pi t/T)$"
+            )
             panel_title(ax, letter, title)
         common_view(axes, [np.vstack([v, v.min(axis=0) - [0, 0.45]]) for v in views], pad=0.02)
         for ax in axes:
             an.scale_bar(ax, L_PAPER, "$L$", loc=(0.02, 0.04))
-        fig.legend(handles=an.legend_handles([("path of $C$", f"path:{cols[0]}")] +
-                                             [(f"$P_{k + 1}$", f"path:{cols[k + 1]}") for k in range(bot.w)]),
-                   loc="outside lower center", ncols=4)
+        fig.legend(
+            handles=an.legend_handles(
+                [("path of $C$", f"path:{cols[0]}")] + [(f"$P_{k + 1}$", f"path:{cols[k + 1]}") for k in range(bot.w)]
+            ),
+            loc="outside lower center",
+            ncols=4,
+        )
     return fig
 
 
@@ -202,11 +234,13 @@ def caption(data):
     """
     a, b = data.rectilinear, data.curvilinear
     ranks = sorted(set(a.rank_F) | set(b.rank_F))
-    return (r"Rectilinear (a) and curvilinear (b) translation of the WMR with three centred wheels, simulated: all "
-            rf"wheels parallel and driven at $r\dot\theta_i = {data.speed:g}\,L/\mathrm{{s}}$ for $T = {data.t_end:g}$ "
-            r"s; in (b) they are steered together. Paths of $C$ and the $P_i$; platform at the start and end (solid) "
-            r"and two intermediate poses (dashed). The platform does not turn "
-            rf"(${residual_text(MAX_PSI, max(a.psi_max, b.psi_max))}$), the paths are congruent (translates of one "
-            rf"another: largest deviation ${bound(max(a.congruence_error, b.congruence_error), latex=True)}$), rank "
-            rf"$\mathbf{{F}} = {', '.join(map(str, ranks))}$ (mobility 1) throughout, and no slip is needed (residual "
-            rf"of (21): ${bound(max(a.slip_max, b.slip_max), latex=True)}$).")
+    return (
+        r"Rectilinear (a) and curvilinear (b) translation of the WMR with three centred wheels, simulated: all "
+        rf"wheels parallel and driven at $r\dot\theta_i = {data.speed:g}\,L/\mathrm{{s}}$ for $T = {data.t_end:g}$ "
+        r"s; in (b) they are steered together. Paths of $C$ and the $P_i$; platform at the start and end (solid) "
+        r"and two intermediate poses (dashed). The platform does not turn "
+        rf"(${residual_text(MAX_PSI, max(a.psi_max, b.psi_max))}$), the paths are congruent (translates of one "
+        rf"another: largest deviation ${bound(max(a.congruence_error, b.congruence_error), latex=True)}$), rank "
+        rf"$\mathbf{{F}} = {', '.join(map(str, ranks))}$ (mobility 1) throughout, and no slip is needed (residual "
+        rf"of (21): ${bound(max(a.slip_max, b.slip_max), latex=True)}$)."
+    )

@@ -4,6 +4,7 @@ Steering angles from :func:`wmr.steering_angles` (axles through the IC), joint r
 :func:`wmr.inverse`, motion from :func:`wmr.simulate` with :math:`\dot\psi = 1`; the twist of a
 rotation about the body point :math:`\mathbf u_c` is :math:`(\dot\psi, -\dot\psi\mathbf E\mathbf u_c)` (63).
 """
+
 from __future__ import annotations
 
 from dataclasses import dataclass
@@ -23,8 +24,7 @@ __all__ = ["NUMBER", "TITLE", "PAPER_CAPTION", "RotationRun", "Fig09Data", "data
 
 NUMBER = "9"
 TITLE = "WMR in rotation about C and about U"
-PAPER_CAPTION = ("WMR in rotation with IC located at the operating point C and with IC located at an arbitrary "
-                 "point U.")
+PAPER_CAPTION = "WMR in rotation with IC located at the operating point C and with IC located at an arbitrary point U."
 
 
 @dataclass(frozen=True)
@@ -71,9 +71,9 @@ class RotationRun:
     psi_rate: float = 0.0
     turn_deg: float = 0.0
     slip_max: float = residual(default=0.0)
-    beta: np.ndarray = drawing(default=None)       # (N, 3)
-    pose: np.ndarray = drawing(default=None)       # (N, 3)
-    pivots: np.ndarray = drawing(default=None)     # (N, 3, 2)
+    beta: np.ndarray = drawing(default=None)  # (N, 3)
+    pose: np.ndarray = drawing(default=None)  # (N, 3)
+    pivots: np.ndarray = drawing(default=None)  # (N, 3, 2)
 
 
 @dataclass(frozen=True)
@@ -103,7 +103,7 @@ class Fig09Data:
 
 def _run(bot, uc, turn, steps=120):
     uc = np.asarray(uc, dtype=float)
-    twist = np.array([1.0, uc[1], -uc[0]])                 # (63): c_dot = -psi_dot E u_c
+    twist = np.array([1.0, uc[1], -uc[0]])  # (63): c_dot = -psi_dot E u_c
     beta = steering_angles(bot, twist)
     rates = inverse(bot, beta, twist).value
     tr = simulate(bot, rates, beta, turn, turn / steps)
@@ -111,12 +111,20 @@ def _run(bot, uc, turn, steps=120):
     C = tr.pose[:, 1:]
     rad = fit_circle(C)[1] if np.linalg.norm(uc) > 0 else float(np.max(np.linalg.norm(C - uc, axis=1)))
     return RotationRun(
-        u_c=tuple(uc.tolist()), beta_deg=tuple(np.degrees(beta).tolist()), rank_F=rk, mobility=3 + bot.n_rates - rk,
-        axles=axles_meet(bot, beta, uc), radius=rad, radius_expected=float(np.linalg.norm(uc)),
+        u_c=tuple(uc.tolist()),
+        beta_deg=tuple(np.degrees(beta).tolist()),
+        rank_F=rk,
+        mobility=3 + bot.n_rates - rk,
+        axles=axles_meet(bot, beta, uc),
+        radius=rad,
+        radius_expected=float(np.linalg.norm(uc)),
         psi_rate=float(np.mean(tr.twist[:, 0])),
-        turn_deg=float(np.degrees(tr.pose[-1, 0])), slip_max=float(tr.slip.max()),
-        beta=snap(tr.beta), pose=snap(tr.pose),
-        pivots=snap(np.stack([tr.unit_points(k, "P") for k in range(bot.w)], axis=1)))
+        turn_deg=float(np.degrees(tr.pose[-1, 0])),
+        slip_max=float(tr.slip.max()),
+        beta=snap(tr.beta),
+        pose=snap(tr.pose),
+        pivots=snap(np.stack([tr.unit_points(k, "P") for k in range(bot.w)], axis=1)),
+    )
 
 
 def data(uc_U=(-0.7, 1.8), turn=60.0):
@@ -134,8 +142,13 @@ def data(uc_U=(-0.7, 1.8), turn=60.0):
     Fig09Data
     """
     bot = centred_robot()
-    return Fig09Data(uc_U=tuple(map(float, uc_U)), turn=turn, C=_run(bot, (0.0, 0.0), turn * DEG),
-                     U=_run(bot, uc_U, turn * DEG), robot=bot)
+    return Fig09Data(
+        uc_U=tuple(map(float, uc_U)),
+        turn=turn,
+        C=_run(bot, (0.0, 0.0), turn * DEG),
+        U=_run(bot, uc_U, turn * DEG),
+        robot=bot,
+    )
 
 
 def draw(data, fig=None):
@@ -155,6 +168,7 @@ def draw(data, fig=None):
     from wmr.plot import annotate as an
     from wmr.plot import robot as rd
     from wmr.plot.style import PALETTE, ROLE, common_view, new_figure, panel_title, style
+
     bot = data.robot
     R = rd.platform_radius(bot)
     with style():
@@ -177,15 +191,24 @@ def draw(data, fig=None):
             else:
                 an.draw_point(ax, U, None, marker="*", color=ROLE["ic"], size=10, zorder=9)
                 an.label(ax, U, "IC", offset=(-10, -12), ha="right", va="top", color=ROLE["ic"])
-                an.draw_angle(ax, g0.C, 0.62, 0.0, float(run.pose[-1, 0]), r"$\psi$", text_radius=1.22,
-                              color=PALETTE["grey"])
+                an.draw_angle(
+                    ax, g0.C, 0.62, 0.0, float(run.pose[-1, 0]), r"$\psi$", text_radius=1.22, color=PALETTE["grey"]
+                )
             views.append(np.vstack([rd.robot_extent(g0, R), rd.robot_extent(g1, R), U[None]]))
             panel_title(ax, letter, "IC at the operation point $C$" if name == "C" else "IC at a point $U$")
         common_view(axes, views, pad=0.03)
         an.scale_bar(axes[0], L_PAPER, "$L$", loc=(0.03, 0.03))
-        fig.legend(handles=an.legend_handles([("axle", "axle"), ("paths of the $P_i$", f"path:{ROLE['path'][1]}"),
-                                              ("path of $C$", f"path:{ROLE['path'][0]}")]),
-                   loc="outside upper center", ncols=3)
+        fig.legend(
+            handles=an.legend_handles(
+                [
+                    ("axle", "axle"),
+                    ("paths of the $P_i$", f"path:{ROLE['path'][1]}"),
+                    ("path of $C$", f"path:{ROLE['path'][0]}"),
+                ]
+            ),
+            loc="outside upper center",
+            ncols=3,
+        )
     return fig
 
 
@@ -203,11 +226,13 @@ def caption(data):
         Markdown with ``$...$`` math.
     """
     a, b = data.C, data.U
-    return (r"Rotation of the WMR with three centred wheels (simulated, $\dot\psi = 1$, turned "
-            rf"{a.turn_deg:.4g}$^\circ$; dashed: final pose): (a) IC at the operation point $C$, which stays fixed; "
-            rf"(b) IC at $U$, $\mathbf{{u}}_c = ({data.uc_U[0]:g}, {data.uc_U[1]:g})L$, about which $C$ moves on a "
-            rf"circle of radius $\|\mathbf{{u}}_c\| = {b.radius_expected:.4f}$ (the fitted radius differs by "
-            rf"${bound(abs(b.radius - b.radius_expected), latex=True)}$). Steering angles from `wmr.steering_angles`: "
-            r"the axles (dashed) all pass through the IC (distance of their computed intersection from the IC "
-            rf"${bound(max(a.axles.error, b.axles.error), latex=True)}$); rank $\mathbf{{F}} = {a.rank_F}$ (mobility "
-            r"1) in both cases.")
+    return (
+        r"Rotation of the WMR with three centred wheels (simulated, $\dot\psi = 1$, turned "
+        rf"{a.turn_deg:.4g}$^\circ$; dashed: final pose): (a) IC at the operation point $C$, which stays fixed; "
+        rf"(b) IC at $U$, $\mathbf{{u}}_c = ({data.uc_U[0]:g}, {data.uc_U[1]:g})L$, about which $C$ moves on a "
+        rf"circle of radius $\|\mathbf{{u}}_c\| = {b.radius_expected:.4f}$ (the fitted radius differs by "
+        rf"${bound(abs(b.radius - b.radius_expected), latex=True)}$). Steering angles from `wmr.steering_angles`: "
+        r"the axles (dashed) all pass through the IC (distance of their computed intersection from the IC "
+        rf"${bound(max(a.axles.error, b.axles.error), latex=True)}$); rank $\mathbf{{F}} = {a.rank_F}$ (mobility "
+        r"1) in both cases."
+    )

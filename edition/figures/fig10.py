@@ -2,6 +2,7 @@ r"""Fig. 10: the singular configuration :math:`\beta_1=\beta_2=\beta_3` (item (i
 
 With the computed :math:`\det\mathbf J` (exact and float), rank F and the admissible twist.
 """
+
 from __future__ import annotations
 
 from dataclasses import dataclass
@@ -69,12 +70,13 @@ def data(beta=15.0):
     if A.shape[1] != 1:
         raise ValueError(f"expected one admissible direction at beta = {beta!r} deg, found {A.shape[1]}")
     t = A[:, 0] / np.linalg.norm(A[:, 0])
-    t = t if t[np.argmax(snap(np.abs(t)))] > 0 else -t      # snapped: equal components tie to the first
-    i = np.array([np.cos(b[0]), np.sin(b[0])])                # axle direction, the same for every wheel
-    offsets = (bot.mount_points @ (E() @ i), bot.mount_points @ i)   # where each axle / plane line lies
+    t = t if t[np.argmax(snap(np.abs(t)))] > 0 else -t  # snapped: equal components tie to the first
+    i = np.array([np.cos(b[0]), np.sin(b[0])])  # axle direction, the same for every wheel
+    offsets = (bot.mount_points @ (E() @ i), bot.mount_points @ i)  # where each axle / plane line lies
     gap = min(float(np.diff(np.sort(o)).min()) for o in offsets) / L_PAPER
-    return Fig10Data(beta=beta, config=singular_config(bot, b, exact_deg=bdeg), admissible=tuple(t.tolist()),
-                     line_gap=gap, robot=bot)
+    return Fig10Data(
+        beta=beta, config=singular_config(bot, b, exact_deg=bdeg), admissible=tuple(t.tolist()), line_gap=gap, robot=bot
+    )
 
 
 def draw(data, fig=None):
@@ -95,6 +97,7 @@ def draw(data, fig=None):
     from wmr.plot.style import PALETTE, fit_view, new_figure, style
 
     from .sketch import LINES_LEGEND, draw_singular
+
     cfg = data.config
     with style():
         fig, (ax,) = new_figure(1, 1, width=5.0, height=4.6, fig=fig)
@@ -103,11 +106,15 @@ def draw(data, fig=None):
         v = v if v[1] >= 0 else -v
         for sgn in (1, -1):
             an.draw_arrow(ax, g.C + sgn * 0.06 * v, sgn * 0.5 * v, color=PALETTE["green"], lw=2.0, head=11, zorder=9)
-        an.label(ax, g.C + 0.5 * v, r"$\dot{\mathbf{c}}$", offset=(-7, 0), ha="right", va="center",
-                 color=PALETTE["green"])
+        an.label(
+            ax, g.C + 0.5 * v, r"$\dot{\mathbf{c}}$", offset=(-7, 0), ha="right", va="center", color=PALETTE["green"]
+        )
         fit_view(ax, ext, pad=0.06)
-        fig.legend(handles=an.legend_handles(LINES_LEGEND[:2] + [("admissible motion", f"path:{PALETTE['green']}")]),
-                   loc="outside upper center", ncols=3)
+        fig.legend(
+            handles=an.legend_handles(LINES_LEGEND[:2] + [("admissible motion", f"path:{PALETTE['green']}")]),
+            loc="outside upper center",
+            ncols=3,
+        )
         an.scale_bar(ax, L_PAPER, "$L$", loc=(0.03, 0.03))
     return fig
 
@@ -126,8 +133,10 @@ def caption(data):
         Markdown with ``$...$`` math.
     """
     cfg = data.config
-    return (rf"Singular configuration with the IC at infinity, $\beta_1 = \beta_2 = \beta_3 = {data.beta:g}^\circ$ "
-            rf"(item (i)). Computed: $\det\mathbf{{J}} = {cfg.det_J_exact}$ exactly "
-            rf"(${residual_text(ABS_DET_J, abs(cfg.det_J))}$ in floating point), rank $\mathbf{{F}} = "
-            rf"{cfg.rank_F}$ (mobility {cfg.mobility}): the wheel planes (dash-dotted) and the axles (dashed) are "
-            r"parallel, and the only admissible motion is the translation along the wheel planes (green).")
+    return (
+        rf"Singular configuration with the IC at infinity, $\beta_1 = \beta_2 = \beta_3 = {data.beta:g}^\circ$ "
+        rf"(item (i)). Computed: $\det\mathbf{{J}} = {cfg.det_J_exact}$ exactly "
+        rf"(${residual_text(ABS_DET_J, abs(cfg.det_J))}$ in floating point), rank $\mathbf{{F}} = "
+        rf"{cfg.rank_F}$ (mobility {cfg.mobility}): the wheel planes (dash-dotted) and the axles (dashed) are "
+        r"parallel, and the only admissible motion is the translation along the wheel planes (green)."
+    )

@@ -5,6 +5,7 @@ Defaults: (a) :math:`\beta_1=\beta_3=60^\circ`, :math:`\beta_2=140^\circ`; (b)
 :math:`\beta_1=80^\circ` (the same picture turned by 120 degrees each time, up to a half turn of
 wheel 1 in (c)).  For each: :math:`D_{ij}`, :math:`\det\mathbf J` (exact and float), rank F.
 """
+
 from __future__ import annotations
 
 from dataclasses import dataclass
@@ -89,6 +90,7 @@ def draw(data, fig=None):
     from wmr.plot.style import ROLE, common_view, new_figure, panel_title, style
 
     from .sketch import LINES_LEGEND, draw_singular
+
     with style():
         fig, axes = new_figure(1, 3, width=7.4, height=3.5, fig=fig)
         views = []
@@ -100,8 +102,11 @@ def draw(data, fig=None):
             b = data.configs[letter]
             panel_title(ax, letter, rf"$\beta_{i} = \beta_{j} = {b[i - 1]:g}^\circ$, $\beta_{k} = {b[k - 1]:g}^\circ$")
         common_view(axes, views, pad=0.08)
-        fig.legend(handles=an.legend_handles(LINES_LEGEND + [("planes meet", f"marker:D:{ROLE['dp']}")]),
-                   loc="outside lower center", ncols=4)
+        fig.legend(
+            handles=an.legend_handles(LINES_LEGEND + [("planes meet", f"marker:D:{ROLE['dp']}")]),
+            loc="outside lower center",
+            ncols=4,
+        )
     return fig
 
 
@@ -121,11 +126,19 @@ def caption(data):
     cfgs = data.panels.values()
     ranks = sorted(set(c.rank_F for c in cfgs))
     exact = sorted(set(c.det_J_exact for c in cfgs))
-    return ("Singular configurations with two wheel planes coincident (items (ii)-(iv)): "
-            + "; ".join(rf"({k}) {beta_text(c)}" for k, c in data.configs.items())
-            + r". The planes of two wheels lie on one side $P_iP_j$ of the mount triangle and the third plane crosses "
-            r"it at $D_{ik} = D_{jk}$. Computed for each: $\det\mathbf{J} = " + ", ".join(exact) + r"$ exactly ($"
-            + residual_text(ABS_DET_J, max(abs(c.det_J) for c in cfgs)) + r"$ in floating point), "
-            r"rank $\mathbf{F} = " + ", ".join(map(str, ranks)) + r"$ (mobility "
-            + ", ".join(sorted(set(str(c.mobility) for c in cfgs))) + r"): the two coincident wheels have parallel "
-            r"axles, which the third axle crosses at two different points (open circles), so there is no IC.")
+    return (
+        "Singular configurations with two wheel planes coincident (items (ii)-(iv)): "
+        + "; ".join(rf"({k}) {beta_text(c)}" for k, c in data.configs.items())
+        + r". The planes of two wheels lie on one side $P_iP_j$ of the mount triangle and the third plane crosses "
+        r"it at $D_{ik} = D_{jk}$. Computed for each: $\det\mathbf{J} = "
+        + ", ".join(exact)
+        + r"$ exactly ($"
+        + residual_text(ABS_DET_J, max(abs(c.det_J) for c in cfgs))
+        + r"$ in floating point), "
+        r"rank $\mathbf{F} = "
+        + ", ".join(map(str, ranks))
+        + r"$ (mobility "
+        + ", ".join(sorted(set(str(c.mobility) for c in cfgs)))
+        + r"): the two coincident wheels have parallel "
+        r"axles, which the third axle crosses at two different points (open circles), so there is no IC."
+    )

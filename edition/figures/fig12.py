@@ -3,6 +3,7 @@ r"""Fig. 12: all three wheel planes through one point (item (v)): (a) the operat
 Angles from :func:`wmr.analysis.lines.planes_through`; :math:`D_P` is then recomputed as the
 concurrency point of the three wheel-plane lines and compared with the point asked for.
 """
+
 from __future__ import annotations
 
 from dataclasses import dataclass
@@ -20,8 +21,10 @@ __all__ = ["NUMBER", "TITLE", "PAPER_CAPTION", "Fig12Data", "data", "draw", "cap
 
 NUMBER = "12"
 TITLE = "Singular configurations: all wheel planes through one point"
-PAPER_CAPTION = ("Singular configurations for the intersection of the planes of all the wheels: (a) at the operation "
-                 "point and (b) at an arbitrary point.")
+PAPER_CAPTION = (
+    "Singular configurations for the intersection of the planes of all the wheels: (a) at the operation "
+    "point and (b) at an arbitrary point."
+)
 
 
 @dataclass(frozen=True)
@@ -92,19 +95,32 @@ def draw(data, fig=None):
     from wmr.plot.style import ROLE, common_view, new_figure, panel_title, style
 
     from .sketch import LINES_LEGEND, draw_singular
+
     with style():
         fig, axes = new_figure(1, 2, width=7.2, height=4.1, fig=fig)
         views = []
         for ax, (letter, cfg) in zip(axes, data.panels.items(), strict=True):
             at_C = letter == "a"
-            g, ext = draw_singular(ax, data.robot, cfg, dp_label="$D_P = C$" if at_C else "$D_P$",
-                                   dp_offset=(8, 6) if at_C else (8, 2), frame=not at_C)
+            g, ext = draw_singular(
+                ax,
+                data.robot,
+                cfg,
+                dp_label="$D_P = C$" if at_C else "$D_P$",
+                dp_offset=(8, 6) if at_C else (8, 2),
+                frame=not at_C,
+            )
             views.append(ext)
-            panel_title(ax, letter, "planes meet at the operation point $C$" if at_C
-                        else "planes meet at an arbitrary point $D_P$")
+            panel_title(
+                ax,
+                letter,
+                "planes meet at the operation point $C$" if at_C else "planes meet at an arbitrary point $D_P$",
+            )
         common_view(axes, views, pad=0.1)
-        fig.legend(handles=an.legend_handles(LINES_LEGEND + [("$D_P$", f"marker:D:{ROLE['dp']}")]),
-                   loc="outside lower center", ncols=4)
+        fig.legend(
+            handles=an.legend_handles(LINES_LEGEND + [("$D_P$", f"marker:D:{ROLE['dp']}")]),
+            loc="outside lower center",
+            ncols=4,
+        )
     return fig
 
 
@@ -125,10 +141,12 @@ def caption(data):
     D = data.D_arbitrary
     ranks = " and ".join(sorted(set(str(c.rank_F) for c in (a, b))))
     mobs = " and ".join(sorted(set(str(c.mobility) for c in (a, b))))
-    return (r"Singular configurations with the planes of all three wheels through one point $D_P$ (item (v)): (a) the "
-            rf"operation point $C$ ({beta_text(a.beta_deg)}; $\det\mathbf{{J}} = {a.det_J_exact}$ exactly), "
-            rf"(b) an arbitrary point $D_P = ({D[0]:g}, {D[1]:g})L$ (angles from `planes_through`: "
-            rf"{beta_text(b.beta_deg, 4)}; computed ${residual_text(ABS_DET_J, abs(b.det_J))}$; distance of the "
-            rf"computed concurrency point from $D_P$: ${bound(data.D_P_error['b'], latex=True)}$). The axles cross "
-            rf"pairwise at three different points (open circles), so rank $\mathbf{{F}} = {ranks}$: mobility {mobs}, "
-            r"the robot cannot move; (a) can serve as a brake.")
+    return (
+        r"Singular configurations with the planes of all three wheels through one point $D_P$ (item (v)): (a) the "
+        rf"operation point $C$ ({beta_text(a.beta_deg)}; $\det\mathbf{{J}} = {a.det_J_exact}$ exactly), "
+        rf"(b) an arbitrary point $D_P = ({D[0]:g}, {D[1]:g})L$ (angles from `planes_through`: "
+        rf"{beta_text(b.beta_deg, 4)}; computed ${residual_text(ABS_DET_J, abs(b.det_J))}$; distance of the "
+        rf"computed concurrency point from $D_P$: ${bound(data.D_P_error['b'], latex=True)}$). The axles cross "
+        rf"pairwise at three different points (open circles), so rank $\mathbf{{F}} = {ranks}$: mobility {mobs}, "
+        r"the robot cannot move; (a) can serve as a brake."
+    )

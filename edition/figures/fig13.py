@@ -4,6 +4,7 @@ r"""Fig. 13: steering angles that make a commanded rotation about U admissible.
 :func:`wmr.steering_angles` (axles through U) and, for comparison, the printed (65)
 :math:`\arccos(\mathbf u_c^T\mathbf u_i/\|\mathbf u_c\|\|\mathbf u_i\|)`.
 """
+
 from __future__ import annotations
 
 from dataclasses import dataclass
@@ -85,7 +86,7 @@ def data(uc=(1.7, 1.1)):
     """
     bot = centred_robot()
     uc = np.asarray(uc, dtype=float)
-    twist = np.array([1.0, uc[1], -uc[0]])                 # (63): c_dot = -psi_dot E u_c
+    twist = np.array([1.0, uc[1], -uc[0]])  # (63): c_dot = -psi_dot E u_c
     U = instantaneous_centre(twist).point
     ui = centre_to_wheels(twist, bot.mount_points)
     beta = steering_angles(bot, twist)
@@ -93,11 +94,19 @@ def data(uc=(1.7, 1.1)):
     sol = inverse(bot, beta, twist)
     rk = int(rank_F(bot, beta))
     return Fig13Data(
-        twist=tuple(twist.tolist()), u_c=tuple(U.tolist()), u_i=tuple(map(tuple, ui.tolist())),
-        beta_deg=tuple(np.degrees(beta).tolist()), printed65_deg=tuple(p65.tolist()),
-        axles=axles_meet(bot, beta, U), rank_F=rk, mobility=3 + bot.n_rates - rk,
+        twist=tuple(twist.tolist()),
+        u_c=tuple(U.tolist()),
+        u_i=tuple(map(tuple, ui.tolist())),
+        beta_deg=tuple(np.degrees(beta).tolist()),
+        printed65_deg=tuple(p65.tolist()),
+        axles=axles_meet(bot, beta, U),
+        rank_F=rk,
+        mobility=3 + bot.n_rates - rk,
         slip=float(np.abs(sol.residual).max()),
-        admissible=bool(sol.admissible), robot=bot, beta=snap(beta))
+        admissible=bool(sol.admissible),
+        robot=bot,
+        beta=snap(beta),
+    )
 
 
 def _angles(values, symbol=r"\beta"):
@@ -121,6 +130,7 @@ def draw(data, fig=None):
     from wmr.plot import annotate as an
     from wmr.plot import robot as rd
     from wmr.plot.style import PALETTE, ROLE, fit_view, new_figure, style
+
     bot = data.robot
     U = snap(data.u_c)
     ui = snap(data.u_i)
@@ -133,14 +143,30 @@ def draw(data, fig=None):
         an.label(ax, 0.42 * U, r"$\mathbf{u}_c$", offset=(4, -4), ha="left", va="top")
         for k in range(bot.w):
             an.draw_arrow(ax, g.P[k], ui[k], color=PALETTE["green"], lw=1.0, head=7, zorder=7.5)
-            nrm = np.array([-ui[k][1], ui[k][0]]) / np.linalg.norm(ui[k])      # left normal of u_i
-            an.label(ax, g.P[k] + 0.45 * ui[k], rf"$\mathbf{{u}}_{k + 1}$", offset=(7 * nrm[0], 7 * nrm[1]),
-                     ha="center", va="center", color=PALETTE["green"])
+            nrm = np.array([-ui[k][1], ui[k][0]]) / np.linalg.norm(ui[k])  # left normal of u_i
+            an.label(
+                ax,
+                g.P[k] + 0.45 * ui[k],
+                rf"$\mathbf{{u}}_{k + 1}$",
+                offset=(7 * nrm[0], 7 * nrm[1]),
+                ha="center",
+                va="center",
+                color=PALETTE["green"],
+            )
             # beta_i: from the body x-direction to the axle i_i
-            ax.plot(*np.stack([g.P[k], g.P[k] + [0.6, 0.0]]).T, color=PALETTE["grey"], lw=0.6, ls=(0, (1.5, 1.5)),
-                    zorder=6)
-            an.draw_angle(ax, g.P[k], 0.48, 0.0, float(data.beta[k]), rf"$\beta_{k + 1}$", color=PALETTE["purple"],
-                          text_radius=1.3)
+            ax.plot(
+                *np.stack([g.P[k], g.P[k] + [0.6, 0.0]]).T, color=PALETTE["grey"], lw=0.6, ls=(0, (1.5, 1.5)), zorder=6
+            )
+            an.draw_angle(
+                ax,
+                g.P[k],
+                0.48,
+                0.0,
+                float(data.beta[k]),
+                rf"$\beta_{k + 1}$",
+                color=PALETTE["purple"],
+                text_radius=1.3,
+            )
         fit_view(ax, np.vstack([rd.robot_extent(g, rd.platform_radius(bot)), U[None] + 0.3]), pad=0.04)
         an.scale_bar(ax, L_PAPER, "$L$", loc=(0.03, 0.03))
     return fig
@@ -160,11 +186,13 @@ def caption(data):
         Markdown with ``$...$`` math.
     """
     uc = data.u_c
-    return (rf"Steering angles of the wheels for a rotation about $U$, $\mathbf{{u}}_c = ({uc[0]:g}, {uc[1]:g})L$ "
-            r"(63); $\mathbf{u}_i = \mathbf{u}_c - \mathbf{d}_i$ (64) in green. The angles computed by "
-            rf"`wmr.steering_angles`, {_angles(data.beta_deg)} (from the body $x$-axis to the axle $\mathbf{{i}}_i$), "
-            r"put every axle through $U$ (distance of the computed intersection from $U$: "
-            rf"${bound(data.axles.error, latex=True)}$; rank $\mathbf{{F}} = {data.rank_F}$, inverse kinematics "
-            rf"residual ${bound(data.slip, latex=True)}$). The printed (65) would give "
-            + ", ".join(rf"${degrees(np.radians(v), 4)}^\circ$" for v in data.printed65_deg)
-            + r", the angles between $\mathbf{u}_c$ and $\mathbf{u}_i$, which are not the steering angles.")
+    return (
+        rf"Steering angles of the wheels for a rotation about $U$, $\mathbf{{u}}_c = ({uc[0]:g}, {uc[1]:g})L$ "
+        r"(63); $\mathbf{u}_i = \mathbf{u}_c - \mathbf{d}_i$ (64) in green. The angles computed by "
+        rf"`wmr.steering_angles`, {_angles(data.beta_deg)} (from the body $x$-axis to the axle $\mathbf{{i}}_i$), "
+        r"put every axle through $U$ (distance of the computed intersection from $U$: "
+        rf"${bound(data.axles.error, latex=True)}$; rank $\mathbf{{F}} = {data.rank_F}$, inverse kinematics "
+        rf"residual ${bound(data.slip, latex=True)}$). The printed (65) would give "
+        + ", ".join(rf"${degrees(np.radians(v), 4)}^\circ$" for v in data.printed65_deg)
+        + r", the angles between $\mathbf{u}_c$ and $\mathbf{u}_i$, which are not the steering angles."
+    )

@@ -6,6 +6,7 @@ every run: matplotlib settings from :data:`wmr.plot.style.RC` (fixed SVG hash sa
 paths), metadata without dates, no git commit or path inside (the report names the commit), and
 numbers in the JSON without round-off digits (:func:`edition.figures.common.numbers`).
 """
+
 from __future__ import annotations
 
 import io
@@ -50,6 +51,7 @@ def _palette_png(blob, metadata):
     the palette is not visible; Pillow's median cut and zlib are deterministic.
     """
     from PIL import Image, PngImagePlugin
+
     im = Image.open(io.BytesIO(blob)).convert("RGB")
     pal = im.quantize(256, method=Image.Quantize.MEDIANCUT, dither=Image.Dither.NONE)
     info = PngImagePlugin.PngInfo()
@@ -80,6 +82,7 @@ def render(fig, fmts, *, title="", creator="wmr"):
     dict
     """
     from wmr.plot.style import style
+
     out = {}
     with style():
         if fig.get_layout_engine() is not None:
@@ -109,8 +112,15 @@ def record(key, module, data):
     dict
         Ready for :func:`json.dumps` (the numbers through :func:`edition.figures.common.numbers`).
     """
-    return {"key": key, "number": module.NUMBER, "title": module.TITLE, "paper_caption": module.PAPER_CAPTION,
-            "caption": module.caption(data), "numbers": numbers(data), "formats": list(formats(module))}
+    return {
+        "key": key,
+        "number": module.NUMBER,
+        "title": module.TITLE,
+        "paper_caption": module.PAPER_CAPTION,
+        "caption": module.caption(data),
+        "numbers": numbers(data),
+        "formats": list(formats(module)),
+    }
 
 
 def write(outdir, key, files, rec):
@@ -132,6 +142,7 @@ def write(outdir, key, files, rec):
     list of pathlib.Path
     """
     from pathlib import Path
+
     outdir = Path(outdir)
     paths = [atomic_write(outdir / f"{key}.{fmt}", blob) for fmt, blob in files.items()]
     paths.append(atomic_write(outdir / f"{key}.json", json.dumps(rec, indent=2, ensure_ascii=False) + "\n"))

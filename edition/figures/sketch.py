@@ -1,4 +1,5 @@
 """Drawing shared by Figs. 10-12 (matplotlib): a configuration with its wheel-plane lines, axles and meeting points."""
+
 from __future__ import annotations
 
 import numpy as np
