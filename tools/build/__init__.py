@@ -14,6 +14,7 @@ once, and calls one command of this package per step (``python -m tools.build``)
 
 Only the standard library is imported up front; nbformat, nbclient, nbconvert when a step needs them.
 """
+
 from __future__ import annotations
 
 import time

@@ -9,6 +9,7 @@ Exit status 0; 1 with ``BUILD FAILED`` and the reason; 128 + N when stopped by s
 or from the kernel when Make was killed), raised as :class:`KeyboardInterrupt` so that every
 ``finally`` runs: nbclient stops its kernel, ``subprocess.run`` kills xelatex or pandoc, temporary
 directories go. A step first removes what it replaces: a failure leaves no report that looks current."""
+
 from __future__ import annotations
 
 import argparse
@@ -28,6 +29,7 @@ def _stop(signum, frame):
 
 def _run(cmd: str, paths: list[Path], reads: list[Path]) -> None:
     from .execute import execute, publish
+
     if cmd == "execute":
         execute(paths[0], paths[1], tuple(reads))
     elif cmd == "publish":
@@ -36,30 +38,34 @@ def _run(cmd: str, paths: list[Path], reads: list[Path]) -> None:
         import nbformat
 
         from edition.files import atomic_write
+
         out = paths[0] if cmd == "assemble" else paths[1]
         for p in [out.with_suffix(x) for x in (".ipynb", ".html", ".pdf")] if cmd == "assemble" else [out]:
             p.unlink(missing_ok=True)
         t0 = time.perf_counter()
         if cmd == "assemble":
             from .assemble import report_notebook
+
             atomic_write(out, nbformat.writes(report_notebook(paths[1], paths[2], paths[3], paths[4:])))
         else:
             from .html import export_html
             from .pdf import export_pdf
+
             (export_html if cmd == "html" else export_pdf)(nbformat.read(paths[0], as_version=4), out)
         say(cmd, f"{out.name} ({out.stat().st_size / 1e6:.2f} MB)", t0)
 
 
 def main(argv: list[str] | None = None) -> int:
-    ap = argparse.ArgumentParser(prog="python -m tools.build", description=__doc__,
-                                 formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap = argparse.ArgumentParser(
+        prog="python -m tools.build", description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter
+    )
     ap.add_argument("command", choices=("execute", "publish", "assemble", "html", "pdf"))
     ap.add_argument("paths", type=Path, nargs="+")
     ap.add_argument("--reads", type=Path, action="append", default=[], help="a folder a notebook reads (its key)")
     a = ap.parse_args(argv)
     sys.modules.setdefault("rfc3987_syntax", None)  # type: ignore[arg-type]  # jsonschema's IRI grammar: 1 s, unused
     for sig in (signal.SIGINT, signal.SIGTERM, signal.SIGHUP):
-        if sig != signal.SIGHUP or signal.getsignal(sig) != signal.SIG_IGN:    # nohup stays nohup
+        if sig != signal.SIGHUP or signal.getsignal(sig) != signal.SIG_IGN:  # nohup stays nohup
             signal.signal(sig, _stop)
     try:
         _run(a.command, a.paths, a.reads)

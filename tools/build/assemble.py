@@ -4,6 +4,7 @@
 the commit and its date from ``COMMIT``, written by the Makefile), the findings chapter (abstract, how
 to read, Part I), the derivation chapters (Part II). Cell ids are deterministic and the date is the
 commit's: two builds of one commit are byte-identical."""
+
 from __future__ import annotations
 
 import datetime as dt
@@ -19,19 +20,26 @@ def commit_info(path: Path) -> tuple[str, int]:
     """``("0a7f9ffb1647 + uncommitted changes", epoch)`` from the Makefile's ``build/commit``
     (``HASH EPOCH [+]``); ``("unknown", 0)`` outside git."""
     parts = (Path(path).read_text(encoding="utf-8").split() if Path(path).exists() else []) + ["unknown", "0"]
-    commit = parts[0] if parts[0] == "unknown" else parts[0][:12] + (" + uncommitted changes" if "+" in parts[2:] else "")
+    commit = (
+        parts[0] if parts[0] == "unknown" else parts[0][:12] + (" + uncommitted changes" if "+" in parts[2:] else "")
+    )
     return commit, int(parts[1]) if parts[1].isdigit() else 0
 
 
 def report_notebook(commit_file: Path, figures_dir: Path, findings: Path, chapters: list[Path]):
     """The report as one notebook (``nbformat`` node)."""
     import nbformat
+
     figures = read_figures(figures_dir)
     commit, epoch = commit_info(commit_file)
     part1 = nbformat.read(findings, as_version=4)
     nb = nbformat.v4.new_notebook()
-    nb.metadata["wmr"] = {**title(part1), "commit": commit, "epoch": epoch,
-                          "date": dt.datetime.fromtimestamp(epoch, dt.UTC).strftime("%Y-%m-%d") if epoch else "unknown"}
+    nb.metadata["wmr"] = {
+        **title(part1),
+        "commit": commit,
+        "epoch": epoch,
+        "date": dt.datetime.fromtimestamp(epoch, dt.UTC).strftime("%Y-%m-%d") if epoch else "unknown",
+    }
     nb.metadata["title"] = nb.metadata["wmr"]["title"]
     nb.cells = findings_cells(part1, figures)
     for path in chapters:

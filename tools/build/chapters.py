@@ -7,6 +7,7 @@ and images reach the reader (no printed text, HTML tables, errors or widget stat
 chapter (Part I, ``notebooks/findings.ipynb``) is prose: its Markdown and its outputs, not its code;
 an output marked ``wmr_figure`` is the figure itself, a Markdown cell tagged ``part`` starts a part of
 the report, the cell tagged ``title`` gives the title block (:func:`title`)."""
+
 from __future__ import annotations
 
 import re
@@ -38,7 +39,7 @@ def _output(o) -> dict | None:
     {'text/markdown': '$$\nx^2\n$$'}
     """
     if o.get("output_type") not in ("display_data", "execute_result"):
-        return None                          # stream, error: program output, not for the reader
+        return None  # stream, error: program output, not for the reader
     data, meta = o.get("data", {}), o.get("metadata", {})
     mime = next((m for m in KEEP_MIMES if m in data), None)
     if mime == "text/latex":
@@ -47,22 +48,38 @@ def _output(o) -> dict | None:
             body = re.sub(r"^\\displaystyle\s*", "", m.group(2).strip())
             return {"output_type": "display_data", "metadata": {}, "data": {"text/markdown": f"$$\n{body}\n$$"}}
         mime, data = "text/markdown", {"text/markdown": data[mime]}
-    return None if mime is None else {"output_type": "display_data", "data": {mime: data[mime]},
-                                      "metadata": {mime: meta[mime]} if mime in meta else {}}
+    return (
+        None
+        if mime is None
+        else {
+            "output_type": "display_data",
+            "data": {mime: data[mime]},
+            "metadata": {mime: meta[mime]} if mime in meta else {},
+        }
+    )
 
 
 def _figure_link(keys: list[str], figures: dict[str, dict[str, Any]]) -> str:
     """The line that replaces a figure cell of a chapter: a link to where the report shows it."""
-    return "*" + " ".join(f"This computation draws [{f['label'] or f['title']}](#figure-{f['key']}), printed in "
-                          + FRONT_MATTER_FIGURES.get(f["key"], "the figures of Part I")
-                          + (", with the paper's caption beside the computed one" if f["paper_caption"] else "") + "."
-                          for f in (figures[k] for k in keys)) + "*" if keys else \
-        "*The figure this computation draws is printed with the [figures](#figures) of Part I.*"
+    return (
+        "*"
+        + " ".join(
+            f"This computation draws [{f['label'] or f['title']}](#figure-{f['key']}), printed in "
+            + FRONT_MATTER_FIGURES.get(f["key"], "the figures of Part I")
+            + (", with the paper's caption beside the computed one" if f["paper_caption"] else "")
+            + "."
+            for f in (figures[k] for k in keys)
+        )
+        + "*"
+        if keys
+        else "*The figure this computation draws is printed with the [figures](#figures) of Part I.*"
+    )
 
 
 def chapter_cells(nb, figures: dict[str, dict[str, Any]]) -> list:
     """The cells of one executed derivation chapter, as the report shows them."""
     import nbformat
+
     out = []
     for c in nb.cells:
         tags = set(c.get("metadata", {}).get("tags", []))
@@ -78,8 +95,11 @@ def chapter_cells(nb, figures: dict[str, dict[str, Any]]) -> list:
             for raw in c.get("outputs", []):
                 o, key = _output(raw), raw.get("metadata", {}).get(FIGURE_METADATA)
                 if o and key in figures:
-                    o = {"output_type": "display_data", "metadata": {},
-                         "data": {"text/markdown": _figure_link([key], figures)}}
+                    o = {
+                        "output_type": "display_data",
+                        "metadata": {},
+                        "data": {"text/markdown": _figure_link([key], figures)},
+                    }
                 if o:
                     n.outputs.append(nbformat.from_dict(o))
             if tags:
@@ -91,6 +111,7 @@ def chapter_cells(nb, figures: dict[str, dict[str, Any]]) -> list:
 def findings_cells(nb, figures: dict[str, dict[str, Any]]) -> list:
     """The cells of the executed findings chapter: its prose, its computed outputs, its figures, its parts."""
     import nbformat
+
     out = []
     for c in nb.cells:
         tags = set(c.get("metadata", {}).get("tags", []))
@@ -117,9 +138,17 @@ def title(nb) -> dict[str, str]:
     displays): the heading, the line under it, the edition's line (version, licence); and the paper's full
     reference, the entry by Leow under its heading ``# References``."""
     c: Any = next((c for c in nb.cells if "title" in c.get("metadata", {}).get("tags", [])), {"source": ""})
-    head = c["source"] if c.get("cell_type") != "code" else "".join(o.get("data", {}).get("text/markdown", "") for o in c.get("outputs", []))
+    head = (
+        c["source"]
+        if c.get("cell_type") != "code"
+        else "".join(o.get("data", {}).get("text/markdown", "") for o in c.get("outputs", []))
+    )
     lines = [l.strip().strip("*") for l in head.strip().splitlines() if l.strip()] + ["", "", ""]
     refs = next((c.source for c in nb.cells if c.cell_type == "markdown" and c.source.startswith("# References")), "")
     paper = re.search(r"^(?:1\.|-)\s+(Y\. P\. Leow.+?)(?:\n\d+\.|\n-|\n\n|\Z)", refs, re.MULTILINE | re.DOTALL)
-    return {"title": lines[0].lstrip("# ").strip(), "subtitle": lines[1], "edition": lines[2],
-            "paper": " ".join(paper.group(1).split()) if paper else ""}
+    return {
+        "title": lines[0].lstrip("# ").strip(),
+        "subtitle": lines[1],
+        "edition": lines[2],
+        "paper": " ".join(paper.group(1).split()) if paper else "",
+    }

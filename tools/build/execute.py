@@ -8,6 +8,7 @@ the stamp ``OUT.stamp`` records the key and the hash of every output. While both
 written (Make sees nothing new); a changed input, a damaged output or a garbage stamp runs it again,
 and the report is removed first. :func:`publish` copies what the chapters wrote into ``figures/``,
 a file only when its bytes differ: the build is the only writer there, ``git status`` stays clean."""
+
 from __future__ import annotations
 
 import hashlib
@@ -29,8 +30,13 @@ CELL_TIMEOUT = 600  # seconds per cell
 
 
 def _files(d: Path) -> list[Path]:
-    return sorted(p for p in d.rglob("*") if p.is_file() and "__pycache__" not in p.parts
-                  and not p.name.startswith(".")) if d.is_dir() else [d] if d.is_file() else []
+    return (
+        sorted(p for p in d.rglob("*") if p.is_file() and "__pycache__" not in p.parts and not p.name.startswith("."))
+        if d.is_dir()
+        else [d]
+        if d.is_file()
+        else []
+    )
 
 
 def _sha(p: Path) -> str | None:
@@ -70,14 +76,21 @@ def up_to_date(stamp: Path, k: str, out: Path) -> bool:
 def write_stamp(out: Path, k: str) -> None:
     """Write ``OUT.stamp``: key ``k`` and the hash of each output of ``out`` (what :func:`up_to_date` reads)."""
     from edition.files import atomic_write
+
     atomic_write(out.with_suffix(".stamp"), json.dumps({"key": k, "outputs": _hashes(out)}, indent=1) + "\n")
 
 
 def kernel_env(root: Path, chapter_out: Path) -> dict[str, str]:
     """The kernel's environment: the venv's Python first on ``PATH``, the project importable,
     ``WMR_OUT``, no plot windows, one BLAS thread (two notebooks share two cores), a fixed hash seed."""
-    env = dict(os.environ, WMR_OUT=str(chapter_out), MPLBACKEND="Agg", PYTHONHASHSEED="0",
-               JUPYTER_PREFER_ENV_PATH="1", PYDEVD_DISABLE_FILE_VALIDATION="1")
+    env = dict(
+        os.environ,
+        WMR_OUT=str(chapter_out),
+        MPLBACKEND="Agg",
+        PYTHONHASHSEED="0",
+        JUPYTER_PREFER_ENV_PATH="1",
+        PYDEVD_DISABLE_FILE_VALIDATION="1",
+    )
     env["PATH"] = str(Path(sys.executable).parent) + os.pathsep + env.get("PATH", "")
     env["PYTHONPATH"] = os.pathsep.join(filter(None, [str(root), env.get("PYTHONPATH")]))
     for var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
@@ -100,6 +113,7 @@ def execute(nb: Path, out: Path, reads: tuple[Path, ...] = (), root: Path = ROOT
     if up_to_date(stamp, k, out):
         return False
     from edition.files import atomic_write
+
     build, chapter_out = out.parent.parent, out.parent.parent / "out" / out.stem
     for p in (stamp, out, *(build / f"report.{ext}" for ext in ("ipynb", "html", "pdf"))):
         p.unlink(missing_ok=True)
@@ -109,15 +123,21 @@ def execute(nb: Path, out: Path, reads: tuple[Path, ...] = (), root: Path = ROOT
     from nbclient import NotebookClient
     from nbclient.exceptions import CellExecutionError
     from traitlets.config import Config
+
     book = nbformat.read(nb, as_version=4)
-    if any(c.cell_type == "code" and c.source.strip() for c in book.cells):    # else: no kernel to start
-        client = NotebookClient(book, timeout=CELL_TIMEOUT, kernel_name="python3", record_timing=False,
-                                resources={"metadata": {"path": str(nb.parent)}},   # CurveZMQ, as the kernel offers
-                                config=Config({"KernelManager": {"transport_encryption": "auto"}}))
+    if any(c.cell_type == "code" and c.source.strip() for c in book.cells):  # else: no kernel to start
+        client = NotebookClient(
+            book,
+            timeout=CELL_TIMEOUT,
+            kernel_name="python3",
+            record_timing=False,
+            resources={"metadata": {"path": str(nb.parent)}},  # CurveZMQ, as the kernel offers
+            config=Config({"KernelManager": {"transport_encryption": "auto"}}),
+        )
         try:
             client.execute(env=kernel_env(Path(root), chapter_out))
         except CellExecutionError as e:
-            text = re.sub(r"\x1b\[[0-9;]*[A-Za-z]", "", str(e))      # the traceback, without terminal colours
+            text = re.sub(r"\x1b\[[0-9;]*[A-Za-z]", "", str(e))  # the traceback, without terminal colours
             raise BuildError(f"=== notebook {nb.name} failed ===\n{text}") from None
         except Exception as e:  # noqa: BLE001 - the kernel died or was stopped (a signal: nbclient shut it down)
             raise BuildError(f"=== notebook {nb.name}: execution stopped ({type(e).__name__}) ===") from None
@@ -152,6 +172,7 @@ def publish(figures: Path, executed: list[Path]) -> list[Path]:
             dest = Path(figures) / f.name
             if not dest.is_file() or dest.read_bytes() != f.read_bytes():
                 from edition.files import atomic_write
+
                 atomic_write(dest, f.read_bytes())
                 changed.append(dest)
     say("publish", f"{len(owner)} files of the chapters in figures/, {len(changed)} changed")

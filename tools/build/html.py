@@ -4,6 +4,7 @@ Markdown goes to pandoc in one call (:class:`~tools.build.markup.Batch`), the pa
 (template ``wmr_html``, code collapsed); then the contents sidebar is built from the headings, ids
 made unique and internal links checked. MathJax is the official release's bundle (:mod:`tools.mathjax`:
 the npm tarball checked against its sha512), inlined gzip-compressed (the page stays under 4 MB)."""
+
 from __future__ import annotations
 
 import base64
@@ -25,6 +26,7 @@ def mathjax_gz() -> str:
     """MathJax 3 ``tex-svg-full.js`` (every TeX extension, SVG glyphs: no font files) of the official
     release (:func:`tools.mathjax.bundle`), gzip (fixed mtime, so the bytes never change) and base64."""
     from tools import mathjax
+
     try:
         js = mathjax.bundle("tex-svg-full.js").read_bytes()
     except mathjax.MathJaxError as e:
@@ -37,6 +39,7 @@ def _prepare(nb, batch: Batch):
     special cells become raw HTML, Markdown outputs HTML (placeholders that the pandoc batch fills
     in the finished page), images stay."""
     import nbformat
+
     out = nbformat.v4.new_notebook(metadata=nb.metadata)
     for c in nb.cells:
         s = ts.spec(c)
@@ -48,7 +51,9 @@ def _prepare(nb, batch: Batch):
             n = nbformat.v4.new_code_cell(c.source, metadata=c.metadata)
             for o in c.outputs:
                 md = o.get("data", {}).get("text/markdown")
-                n.outputs.append(o if md is None else nbformat.v4.new_output("display_data", data={"text/html": batch.add(md)}))
+                n.outputs.append(
+                    o if md is None else nbformat.v4.new_output("display_data", data={"text/html": batch.add(md)})
+                )
             out.cells.append(n)
     return out
 
@@ -68,8 +73,10 @@ def keep_punctuation(page: str) -> str:
     >>> keep_punctuation('(<span class="math inline">\\(x\\)</span>), and <span class="math inline">y</span> z')
     '<span class="nobr">(<span class="math inline">\\(x\\)</span>),</span> and <span class="math inline">y</span> z'
     """
+
     def one(m):
         return f'<span class="nobr">{m.group(0)}</span>' if m.group(1) or m.group(3) else m.group(0)
+
     return _MATH_PUNCT.sub(one, page)
 
 
@@ -86,6 +93,7 @@ def unique_ids(page: str) -> tuple[str, list[str]]:
             return m.group(0)
         dups.append(i)
         return f'id="{i}-{seen[i]}"'
+
     return re.sub(r'(?<![\w-])id="([^"]+)"', one, page), dups
 
 
@@ -106,7 +114,11 @@ def navigation(page: str) -> str:
         hid = re.search(r'\bid="([^"]+)"', attrs)
         if not hid:
             continue
-        node: dict[str, Any] = {"link": f'<a href="#{hid.group(1)}">{inner}</a>', "kids": [], "part": 'class="part"' in attrs}
+        node: dict[str, Any] = {
+            "link": f'<a href="#{hid.group(1)}">{inner}</a>',
+            "kids": [],
+            "part": 'class="part"' in attrs,
+        }
         if node["part"]:
             top.append(node)
             part, h1 = node, None
@@ -117,8 +129,19 @@ def navigation(page: str) -> str:
             h1["kids"].append(node)
 
     def ul(nodes):
-        return "<ul>" + "".join(f'<li class="part"><span>{n["link"]}</span>{ul(n["kids"])}</li>' if n["part"]
-                                else f'<li>{n["link"]}{ul(n["kids"])}</li>' for n in nodes) + "</ul>" if nodes else ""
+        return (
+            "<ul>"
+            + "".join(
+                f'<li class="part"><span>{n["link"]}</span>{ul(n["kids"])}</li>'
+                if n["part"]
+                else f"<li>{n['link']}{ul(n['kids'])}</li>"
+                for n in nodes
+            )
+            + "</ul>"
+            if nodes
+            else ""
+        )
+
     return f'<nav class="toc" aria-label="Contents"><p class="toc-title">Contents</p>{ul(top)}</nav>'
 
 
@@ -132,24 +155,36 @@ def _exporter():
     class ReportExporter(HTMLExporter):
         def from_notebook_node(self, nb, resources=None, **kw):
             resources = self._init_resources(resources)
-            self.register_filter("filter_data_type", WidgetsDataTypeFilter(
-                notebook_metadata=self._nb_metadata, parent=self, resources=resources))
+            self.register_filter(
+                "filter_data_type",
+                WidgetsDataTypeFilter(notebook_metadata=self._nb_metadata, parent=self, resources=resources),
+            )
             return TemplateExporter.from_notebook_node(self, nb, resources, **kw)
 
-    return ReportExporter(template_name="wmr_html", extra_template_basedirs=[str(TEMPLATES)],
-                          exclude_input_prompt=True, exclude_output_prompt=True)
+    return ReportExporter(
+        template_name="wmr_html",
+        extra_template_basedirs=[str(TEMPLATES)],
+        exclude_input_prompt=True,
+        exclude_output_prompt=True,
+    )
 
 
 def export_html(nb, out: Path) -> None:
     """Render the report notebook ``nb`` into ``out`` (atomically)."""
     from edition.files import atomic_write
+
     batch = Batch("html")
     prepared = _prepare(nb, batch)
-    ref = batch.add(nb.metadata["wmr"]["paper"], inline=True)   # the title block's reference
+    ref = batch.add(nb.metadata["wmr"]["paper"], inline=True)  # the title block's reference
     batch.convert()
-    body, _ = _exporter().from_notebook_node(prepared, resources={
-        "wmr_css": (TEMPLATES / "wmr_html" / "report.css").read_text(encoding="utf-8"), "wmr_mathjax_gz": mathjax_gz(),
-        "wmr_paper_html": ref})
+    body, _ = _exporter().from_notebook_node(
+        prepared,
+        resources={
+            "wmr_css": (TEMPLATES / "wmr_html" / "report.css").read_text(encoding="utf-8"),
+            "wmr_mathjax_gz": mathjax_gz(),
+            "wmr_paper_html": ref,
+        },
+    )
     body, dups = unique_ids(keep_punctuation(batch.fill(body)))
     if dups:
         say("html", f"WARNING: ids defined more than once, renamed: {', '.join(sorted(set(dups)))}")

@@ -5,6 +5,7 @@ Every Markdown fragment of the report is converted in **one** pandoc call per fo
 the HTML and the PDF read the text the same way, heading ids are unique across the report, and a
 build starts two pandoc processes, not hundreds. Math is written ``$...$`` at the source; nothing here
 guesses which words are TeX."""
+
 from __future__ import annotations
 
 import re
@@ -21,8 +22,10 @@ __all__ = ["READER", "TEMPLATES", "Batch", "table_math_pipes", "tex_anchor_targe
 TEMPLATES = Path(__file__).resolve().parent / "templates"
 READER = "gfm+tex_math_dollars+smart"
 _SEP = "WMRFRAGMENT{:05d}"
-_SEP_RE = {"html": re.compile(r"\n*<p>WMRFRAGMENT(\d{5})</p>\n*"),
-           "latex": re.compile(r"\n*^WMRFRAGMENT(\d{5})$\n*", re.MULTILINE)}
+_SEP_RE = {
+    "html": re.compile(r"\n*<p>WMRFRAGMENT(\d{5})</p>\n*"),
+    "latex": re.compile(r"\n*^WMRFRAGMENT(\d{5})$\n*", re.MULTILINE),
+}
 _ANCHOR = re.compile(r'<a\s+(?:id|name)="([^"]+)"\s*>\s*</a>')
 _TOKEN = re.compile(r"WMRANCHOR([0-9a-f]+)Z")
 _TABLE_ROW = re.compile(r"^\s*\|.*\|\s*$", re.MULTILINE)
@@ -42,9 +45,12 @@ def table_math_pipes(md: str) -> str:
     >>> table_math_pipes("not a table: $|x|$")
     'not a table: $|x|$'
     """
+
     def row(m):
-        return _INLINE_MATH.sub(lambda k: "$" + k.group(1).replace("\\|", "\\Vert{}").replace("|", "\\vert{}") + "$",
-                                m.group(0))
+        return _INLINE_MATH.sub(
+            lambda k: "$" + k.group(1).replace("\\|", "\\Vert{}").replace("|", "\\vert{}") + "$", m.group(0)
+        )
+
     return _TABLE_ROW.sub(row, md)
 
 
@@ -112,10 +118,11 @@ class Batch:
         if (out := self._out) is None:
             raise RuntimeError("convert() first")
 
-        def one(m):                      # inline: without the paragraph around a one-paragraph result
+        def one(m):  # inline: without the paragraph around a one-paragraph result
             s = out[int(m.group(1))]
             if m.group(2) == "b":
                 return s
             p = re.fullmatch(r"<p>(.*)</p>", s.strip(), re.DOTALL) if self.to == "html" else None
             return s.strip() if self.to == "latex" else p.group(1) if p and "<p>" not in p.group(1) else s
+
         return re.sub(r"\x00WMR(\d+)([ib])\x00", one, text)

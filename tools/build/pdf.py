@@ -6,6 +6,7 @@
 the contents and cross-references are stable, with ``SOURCE_DATE_EPOCH`` from the commit, and
 :func:`fix_id` makes the trailer ``/ID`` a hash of the document: builds of one commit are byte-identical.
 """
+
 from __future__ import annotations
 
 import base64
@@ -21,20 +22,20 @@ from . import BuildError, say
 from . import typeset as ts
 from .markup import TEMPLATES, Batch
 
-__all__ = ["MIN_FORMULA_SCALE", "UNICODE", "breakable_code", "display_math", "export_pdf", "fix_id",
-           "scaled_formulas", "to_latex", "wrap_tables"]
+__all__ = ["MIN_FORMULA_SCALE", "export_pdf", "fix_id", "scaled_formulas", "to_latex"]
 
 MAX_RUNS = 4
 #: a formula wider than the line is shrunk to fit it; below this scale it counts as unreadable
 MIN_FORMULA_SCALE = 0.8
-#: characters of the text that Latin Modern lacks, set from the math fonts instead
-UNICODE = dict(zip("→←↔⇒⇔≤≥≠≈≡−∞±∈∑√∂⊥‖·∘αβγδεθκλμνπσφϕψωΔΣΦΨΩ✓✗", (rf"\ensuremath{{{c}}}" for c in (
-    r"\rightarrow", r"\leftarrow", r"\leftrightarrow", r"\Rightarrow", r"\Leftrightarrow", r"\le", r"\ge", r"\ne",
-    r"\approx", r"\equiv", "-", r"\infty", r"\pm", r"\in", r"\sum", r"\surd", r"\partial", r"\perp", r"\|", r"\cdot",
-    r"\circ", r"\alpha", r"\beta", r"\gamma", r"\delta", r"\varepsilon", r"\theta", r"\kappa", r"\lambda", r"\mu",
-    r"\nu", r"\pi", r"\sigma", r"\varphi", r"\phi", r"\psi", r"\omega", r"\Delta", r"\Sigma", r"\Phi", r"\Psi",
-    r"\Omega", r"\checkmark", r"\times")), strict=True))
-_ENVS = ("align", "align*", "gather", "gather*", "multline", "multline*", "equation", "equation*", "eqnarray", "eqnarray*")
+#: characters of the text that Latin Modern lacks, set from the math fonts instead (pairs: character, math command)
+_MATH = r"""
+→ \rightarrow ← \leftarrow ↔ \leftrightarrow ⇒ \Rightarrow ⇔ \Leftrightarrow ≤ \le ≥ \ge ≠ \ne ≈ \approx ≡ \equiv − -
+∞ \infty ± \pm ∈ \in ∑ \sum √ \surd ∂ \partial ⊥ \perp ‖ \| · \cdot ∘ \circ α \alpha β \beta γ \gamma δ \delta
+ε \varepsilon θ \theta κ \kappa λ \lambda μ \mu ν \nu π \pi σ \sigma φ \varphi ϕ \phi ψ \psi ω \omega Δ \Delta
+Σ \Sigma Φ \Phi Ψ \Psi Ω \Omega ✓ \checkmark ✗ \times
+""".split()
+UNICODE = {c: rf"\ensuremath{{{m}}}" for c, m in zip(_MATH[::2], _MATH[1::2], strict=True)}
+_ENVS = "align align* gather gather* multline multline* equation equation* eqnarray eqnarray*".split()
 _DISPLAY = re.compile(r"(?<!\\)\\\[(.*?)(?<!\\)\\\]", re.DOTALL)
 _TAG = re.compile(r"\\tag\*?\{([^{}]*)\}")
 
@@ -56,10 +57,12 @@ _TEXTTT = re.compile(r"\\texttt\{([^{}]*)\}")
 def wrap_tables(tex: str) -> str:
     """Markdown tables of the chapters (pandoc gives them natural-width ``l`` columns, which run
     past the margin when a cell is long) get wrapping columns of equal width."""
+
     def one(m):
         n = len(m.group(1))
         col = rf">{{\raggedright\arraybackslash}}p{{\dimexpr(\linewidth-{2 * (n - 1)}\tabcolsep)/{n}\relax}}"
         return r"\begin{longtable}[]{@{}" + col * n + "@{}}"
+
     return _NATURAL_TABLE.sub(one, tex)
 
 
@@ -75,8 +78,11 @@ def to_latex(nb) -> tuple[str, dict]:
     """The report notebook as a LaTeX document, and the image files it includes (name -> bytes)."""
     import nbformat
     from nbconvert import LatexExporter
+
     # each converted fragment: pandoc's \[...\] becomes \wmrdisplay, tables wrap, code breaks
-    batch = Batch("latex", post=lambda tex: breakable_code(wrap_tables(_DISPLAY.sub(lambda m: display_math(m.group(1)), tex))))
+    batch = Batch(
+        "latex", post=lambda tex: breakable_code(wrap_tables(_DISPLAY.sub(lambda m: display_math(m.group(1)), tex)))
+    )
     files: dict[str, bytes] = {}
     prepared = nbformat.v4.new_notebook(metadata=nb.metadata)
     for c in nb.cells:
@@ -107,7 +113,10 @@ def to_latex(nb) -> tuple[str, dict]:
 
 def scaled_formulas(log: str) -> list[tuple[float, str]]:
     """(scale, page) of every formula ``\\wmrdisplay`` had to shrink, from the xelatex log."""
-    return [(float(avail) / float(wd), page) for wd, avail, page in re.findall(r"WMR-SCALE:([\d.]+)pt:([\d.]+)pt:(\S+)", log)]
+    return [
+        (float(avail) / float(wd), page)
+        for wd, avail, page in re.findall(r"WMR-SCALE:([\d.]+)pt:([\d.]+)pt:(\S+)", log)
+    ]
 
 
 def fix_id(pdf: bytes) -> bytes:
@@ -116,28 +125,33 @@ def fix_id(pdf: bytes) -> bytes:
     m = list(re.finditer(rb"/ID\s*\[\s*<([0-9A-Fa-f]+)>\s*<([0-9A-Fa-f]+)>\s*\]", pdf))
     if not m:
         return pdf
-    h = hashlib.sha256(pdf[:m[-1].start()] + pdf[m[-1].end():]).hexdigest().upper()
+    h = hashlib.sha256(pdf[: m[-1].start()] + pdf[m[-1].end() :]).hexdigest().upper()
     out = pdf
     for x in reversed(m):
         a, b = x.group(1), x.group(2)
-        new = x.group(0).replace(a, h[:len(a)].encode()).replace(b, h[:len(b)].encode())
-        out = out[:x.start()] + new + out[x.end():]
+        new = x.group(0).replace(a, h[: len(a)].encode()).replace(b, h[: len(b)].encode())
+        out = out[: x.start()] + new + out[x.end() :]
     return out
+
+
+_XELATEX = ["xelatex", "-interaction=nonstopmode", "-halt-on-error", "-file-line-error", "report.tex"]
+_ERROR = re.compile(r"!|\./report\.tex:\d+:")  # the first line of an error in the log
+_OVERFULL = re.compile(r"Overfull \\hbox \((\d+\.\d+)pt too wide\)[^\n]*lines? (\d+)")
 
 
 def _run_xelatex(d: Path, epoch: int) -> str:
     env = dict(os.environ, SOURCE_DATE_EPOCH=str(epoch), FORCE_SOURCE_DATE="1", TZ="UTC")
     prev = None
     for run in range(1, MAX_RUNS + 1):
-        p = subprocess.run(["xelatex", "-interaction=nonstopmode", "-halt-on-error", "-file-line-error", "report.tex"],
-                           cwd=d, env=env, capture_output=True, text=True, timeout=900, check=False)
-        log = (d / "report.log").read_text(encoding="utf-8", errors="replace") if (d / "report.log").exists() else p.stdout
+        p = subprocess.run(_XELATEX, cwd=d, env=env, capture_output=True, text=True, timeout=900, check=False)
+        log_file = d / "report.log"
+        log = log_file.read_text(encoding="utf-8", errors="replace") if log_file.exists() else p.stdout
         if p.returncode != 0 or not (d / "report.pdf").exists():
             lines = log.splitlines()
-            at = next((i for i, l in enumerate(lines) if l.startswith("!") or re.match(r"\./report\.tex:\d+:", l)), None)
-            where = "\n".join(lines[at:at + 12]) if at is not None else log[-3000:]
+            at = next((i for i, line in enumerate(lines) if _ERROR.match(line)), None)
+            where = "\n".join(lines[at : at + 12]) if at is not None else log[-3000:]
             raise BuildError(f"xelatex failed (run {run}; the source is build/report.tex):\n{where}")
-        state = b"".join((d / f"report.{ext}").read_bytes() for ext in ("aux", "toc", "out") if (d / f"report.{ext}").exists())
+        state = b"".join(f.read_bytes() for f in (d / "report.aux", d / "report.toc", d / "report.out") if f.exists())
         if state == prev:
             return log
         prev = state
@@ -150,14 +164,17 @@ def export_pdf(nb, out: Path) -> list[str]:
     (missing glyphs, shrunk formulas, lines past the margin). xelatex runs in a temporary directory
     under ``<build>/tmp``, removed however the step ends (what a killed build left is removed first)."""
     from edition.files import atomic_write
+
     if not shutil.which("xelatex"):
-        raise BuildError("xelatex not found: run `make report` (it installs the TeX toolchain) or "
-                         "apt-get install texlive-xetex texlive-latex-extra texlive-fonts-recommended lmodern pandoc")
+        raise BuildError(
+            "xelatex not found: run `make report` (it installs the TeX toolchain) or "
+            "apt-get install texlive-xetex texlive-latex-extra texlive-fonts-recommended lmodern pandoc"
+        )
     out = Path(out)
     tex, files = to_latex(nb)
     atomic_write(out.with_suffix(".tex"), tex)
     tmp = out.parent / "tmp" / "pdf"
-    shutil.rmtree(tmp, ignore_errors=True)            # one PDF step at a time per tree (build/.lock)
+    shutil.rmtree(tmp, ignore_errors=True)  # one PDF step at a time per tree (build/.lock)
     tmp.mkdir(parents=True)
     with tempfile.TemporaryDirectory(dir=tmp) as name:
         d = Path(name)
@@ -169,11 +186,10 @@ def export_pdf(nb, out: Path) -> list[str]:
     atomic_write(out.with_suffix(".log"), log)
     missing = sorted(set(re.findall(r"Missing character: There is no (\S+)", log)))
     small = [f"{s:.2f} (p. {p})" for s, p in scaled_formulas(log) if s < MIN_FORMULA_SCALE]
-    wide = [f"{float(w):.0f}pt (report.tex line {line})" for w, line in
-            re.findall(r"Overfull \\hbox \((\d+\.\d+)pt too wide\)[^\n]*lines? (\d+)", log) if float(w) > 2]
-    warnings = [w for w, bad in ((f"characters missing from the fonts: {' '.join(missing)}", missing),
-                                 (f"formulas shrunk below {MIN_FORMULA_SCALE:.0%} to fit the line: {', '.join(small)}", small),
-                                 (f"{len(wide)} lines wider than the text: {', '.join(wide[:8])}", wide)) if bad]
+    wide = [f"{float(w):.0f}pt (report.tex line {line})" for w, line in _OVERFULL.findall(log) if float(w) > 2]
+    warnings = [f"characters missing from the fonts: {' '.join(missing)}"] if missing else []
+    warnings += [f"formulas shrunk below {MIN_FORMULA_SCALE:.0%} to fit the line: {', '.join(small)}"] if small else []
+    warnings += [f"{len(wide)} lines wider than the text: {', '.join(wide[:8])}"] if wide else []
     for w in warnings:
         say("pdf", "WARNING: " + w)
     return warnings

@@ -3,6 +3,7 @@ start of a part of the report, held in the report notebook as raw cells describe
 ``wmr`` and rendered once to HTML (:func:`render_html`) and once to LaTeX (:func:`render_latex`).
 Captions are Markdown, converted by the exporter's :class:`~tools.build.markup.Batch` (``md``); a
 figure's metadata is ``figures/<key>.json``, written by ``edition.figures`` (:func:`read_figures`)."""
+
 from __future__ import annotations
 
 import base64
@@ -17,7 +18,7 @@ from . import BuildError
 
 __all__ = ["figure", "part", "read_figures", "render_html", "render_latex", "spec"]
 
-Md = Callable[..., str]   # md(text, inline=False) -> placeholder of the converted fragment
+Md = Callable[..., str]  # md(text, inline=False) -> placeholder of the converted fragment
 
 
 def read_figures(figdir: Path) -> dict[str, dict[str, Any]]:
@@ -28,14 +29,20 @@ def read_figures(figdir: Path) -> dict[str, dict[str, Any]]:
         m = json.loads(p.read_text(encoding="utf-8"))
         if isinstance(m, dict) and "title" in m:
             number = str(m.get("number") or "")
-            out[p.stem] = {"key": p.stem, "label": f"Figure {number}" if number else "", "title": m["title"],
-                           "paper_caption": m.get("paper_caption") or "", "caption": m.get("caption") or "",
-                           "images": {f: str(p.with_suffix("." + f)) for f in ("svg", "pdf") if p.with_suffix("." + f).exists()}}
+            out[p.stem] = {
+                "key": p.stem,
+                "label": f"Figure {number}" if number else "",
+                "title": m["title"],
+                "paper_caption": m.get("paper_caption") or "",
+                "caption": m.get("caption") or "",
+                "images": {f: str(p.with_suffix("." + f)) for f in ("svg", "pdf") if p.with_suffix("." + f).exists()},
+            }
     return out
 
 
 def _raw(kind: str, **data):
     import nbformat
+
     c = nbformat.v4.new_raw_cell("")
     c.metadata["wmr"] = {"kind": kind, **data}
     return c
@@ -63,20 +70,32 @@ def _slug(s: str) -> str:
 def render_html(s: dict, md: Md) -> str:
     """The HTML of a special cell: the figure's SVG inlined (nothing fetched), its captions side by side."""
     if s["kind"] == "part":
-        return f'<h1 class="part" id="{_slug(s["title"])}">{html.escape(s["title"])}</h1>' + (md(s["intro"]) if s["intro"] else "")
+        return f'<h1 class="part" id="{_slug(s["title"])}">{html.escape(s["title"])}</h1>' + (
+            md(s["intro"]) if s["intro"] else ""
+        )
     svg = s["images"].get("svg")
     alt = html.escape(f"{s['label']}: {s['title']}" if s["label"] else s["title"], quote=True)
-    pic = (f'<img src="data:image/svg+xml;base64,{base64.b64encode(Path(svg).read_bytes()).decode()}" alt="{alt}">'
-           if svg else f'<p class="missing">missing image figures/{html.escape(s["key"])}.svg</p>')
-    head = (f"<b>{html.escape(s['label'])}.</b> " + md(s["title"], inline=True) if s["label"]
-            else "<b>" + md(s["title"], inline=True) + ".</b>")
+    pic = (
+        f'<img src="data:image/svg+xml;base64,{base64.b64encode(Path(svg).read_bytes()).decode()}" alt="{alt}">'
+        if svg
+        else f'<p class="missing">missing image figures/{html.escape(s["key"])}.svg</p>'
+    )
+    head = (
+        f"<b>{html.escape(s['label'])}.</b> " + md(s["title"], inline=True)
+        if s["label"]
+        else "<b>" + md(s["title"], inline=True) + ".</b>"
+    )
     if s["paper_caption"]:
-        caps = (f'<div class="captions"><div class="cap"><p class="cap-h">In the paper</p>{md(s["paper_caption"])}</div>'
-                f'<div class="cap"><p class="cap-h">Computed in this edition</p>{md(s["caption"])}</div></div>')
+        caps = (
+            f'<div class="captions"><div class="cap"><p class="cap-h">In the paper</p>{md(s["paper_caption"])}</div>'
+            f'<div class="cap"><p class="cap-h">Computed in this edition</p>{md(s["caption"])}</div></div>'
+        )
     else:
         caps = f'<div class="captions one"><div class="cap">{md(s["caption"])}</div></div>'
-    return (f'<figure class="wmr-figure" id="figure-{html.escape(s["key"])}">{pic}'
-            f'<figcaption><p class="fig-title">{head}</p>{caps}</figcaption></figure>')
+    return (
+        f'<figure class="wmr-figure" id="figure-{html.escape(s["key"])}">{pic}'
+        f'<figcaption><p class="fig-title">{head}</p>{caps}</figcaption></figure>'
+    )
 
 
 def _tex_path(p: str) -> str:
@@ -90,15 +109,35 @@ def render_latex(s: dict, md: Md) -> str:
     if s["kind"] == "part":
         return rf"\wmrpart{{{s['title']}}}" + ("\n\n" + md(s["intro"]) if s["intro"] else "")
     pdf = s["images"].get("pdf")
-    pic = (rf"\includegraphics[width=\linewidth,height=0.5\textheight,keepaspectratio]{{{_tex_path(pdf)}}}"
-           if pdf else r"\fbox{missing image}")
-    head = (rf"\textbf{{{s['label']}.}} " + md(s["title"], inline=True) if s["label"]
-            else r"\textbf{" + md(s["title"], inline=True) + ".}")
+    pic = (
+        rf"\includegraphics[width=\linewidth,height=0.5\textheight,keepaspectratio]{{{_tex_path(pdf)}}}"
+        if pdf
+        else r"\fbox{missing image}"
+    )
+    head = (
+        rf"\textbf{{{s['label']}.}} " + md(s["title"], inline=True)
+        if s["label"]
+        else r"\textbf{" + md(s["title"], inline=True) + ".}"
+    )
     if s["paper_caption"]:
-        caps = (r"\begin{minipage}[t]{0.485\linewidth}\wmrcaphead{In the paper}" + md(s["paper_caption"])
-                + r"\end{minipage}\hfill\begin{minipage}[t]{0.485\linewidth}\wmrcaphead{Computed in this edition}"
-                + md(s["caption"]) + r"\end{minipage}")
+        caps = (
+            r"\begin{minipage}[t]{0.485\linewidth}\wmrcaphead{In the paper}"
+            + md(s["paper_caption"])
+            + r"\end{minipage}\hfill\begin{minipage}[t]{0.485\linewidth}\wmrcaphead{Computed in this edition}"
+            + md(s["caption"])
+            + r"\end{minipage}"
+        )
     else:
         caps = r"\begin{minipage}[t]{\linewidth}" + md(s["caption"]) + r"\end{minipage}"
-    return (rf"\begin{{wmrfigure}}{{figure-{s['key']}}}" + "\n" + pic + "\n"
-            + r"\wmrfigtitle{" + head + "}\n" + caps + "\n" + r"\end{wmrfigure}")
+    return (
+        rf"\begin{{wmrfigure}}{{figure-{s['key']}}}"
+        + "\n"
+        + pic
+        + "\n"
+        + r"\wmrfigtitle{"
+        + head
+        + "}\n"
+        + caps
+        + "\n"
+        + r"\end{wmrfigure}"
+    )
