@@ -70,9 +70,8 @@ def _slug(s: str) -> str:
 def render_html(s: dict, md: Md) -> str:
     """The HTML of a special cell: the figure's SVG inlined (nothing fetched), its captions side by side."""
     if s["kind"] == "part":
-        return f'<h1 class="part" id="{_slug(s["title"])}">{html.escape(s["title"])}</h1>' + (
-            md(s["intro"]) if s["intro"] else ""
-        )
+        heading = f'<h1 class="part" id="{_slug(s["title"])}">{html.escape(s["title"])}</h1>'
+        return heading + (md(s["intro"]) if s["intro"] else "")
     svg = s["images"].get("svg")
     alt = html.escape(f"{s['label']}: {s['title']}" if s["label"] else s["title"], quote=True)
     pic = (
@@ -80,11 +79,8 @@ def render_html(s: dict, md: Md) -> str:
         if svg
         else f'<p class="missing">missing image figures/{html.escape(s["key"])}.svg</p>'
     )
-    head = (
-        f"<b>{html.escape(s['label'])}.</b> " + md(s["title"], inline=True)
-        if s["label"]
-        else "<b>" + md(s["title"], inline=True) + ".</b>"
-    )
+    title = md(s["title"], inline=True)
+    head = f"<b>{html.escape(s['label'])}.</b> {title}" if s["label"] else f"<b>{title}.</b>"
     if s["paper_caption"]:
         caps = (
             f'<div class="captions"><div class="cap"><p class="cap-h">In the paper</p>{md(s["paper_caption"])}</div>'
@@ -104,40 +100,27 @@ def _tex_path(p: str) -> str:
     return Path(p).as_posix()
 
 
+_GRAPHICS = r"\includegraphics[width=\linewidth,height=0.5\textheight,keepaspectratio]"
+
+
+def _minipage(width: str, body: str, head: str = "") -> str:
+    """``body`` in a top-aligned minipage ``width`` of the line wide, under the caption heading ``head``."""
+    heading = rf"\wmrcaphead{{{head}}}" if head else ""
+    return rf"\begin{{minipage}}[t]{{{width}\linewidth}}{heading}{body}\end{{minipage}}"
+
+
 def render_latex(s: dict, md: Md) -> str:
     """The LaTeX of a special cell: the figure's PDF, its captions in two minipages."""
     if s["kind"] == "part":
         return rf"\wmrpart{{{s['title']}}}" + ("\n\n" + md(s["intro"]) if s["intro"] else "")
     pdf = s["images"].get("pdf")
-    pic = (
-        rf"\includegraphics[width=\linewidth,height=0.5\textheight,keepaspectratio]{{{_tex_path(pdf)}}}"
-        if pdf
-        else r"\fbox{missing image}"
-    )
-    head = (
-        rf"\textbf{{{s['label']}.}} " + md(s["title"], inline=True)
-        if s["label"]
-        else r"\textbf{" + md(s["title"], inline=True) + ".}"
-    )
+    pic = _GRAPHICS + "{" + _tex_path(pdf) + "}" if pdf else r"\fbox{missing image}"
+    title = md(s["title"], inline=True)
+    head = rf"\textbf{{{s['label']}.}} {title}" if s["label"] else r"\textbf{" + title + ".}"
     if s["paper_caption"]:
-        caps = (
-            r"\begin{minipage}[t]{0.485\linewidth}\wmrcaphead{In the paper}"
-            + md(s["paper_caption"])
-            + r"\end{minipage}\hfill\begin{minipage}[t]{0.485\linewidth}\wmrcaphead{Computed in this edition}"
-            + md(s["caption"])
-            + r"\end{minipage}"
-        )
+        paper = _minipage("0.485", md(s["paper_caption"]), "In the paper")
+        caps = paper + r"\hfill" + _minipage("0.485", md(s["caption"]), "Computed in this edition")
     else:
-        caps = r"\begin{minipage}[t]{\linewidth}" + md(s["caption"]) + r"\end{minipage}"
-    return (
-        rf"\begin{{wmrfigure}}{{figure-{s['key']}}}"
-        + "\n"
-        + pic
-        + "\n"
-        + r"\wmrfigtitle{"
-        + head
-        + "}\n"
-        + caps
-        + "\n"
-        + r"\end{wmrfigure}"
-    )
+        caps = _minipage("", md(s["caption"]))
+    begin = rf"\begin{{wmrfigure}}{{figure-{s['key']}}}"
+    return "\n".join([begin, pic, r"\wmrfigtitle{" + head + "}", caps, r"\end{wmrfigure}"])
