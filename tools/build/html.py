@@ -38,29 +38,26 @@ def _prepare(nb, batch: Batch):
     """A copy of the report notebook in which every cell is ready for the template: Markdown and
     special cells become raw HTML, Markdown outputs HTML (placeholders that the pandoc batch fills
     in the finished page), images stay."""
-    import nbformat
+    from nbformat import v4
 
-    out = nbformat.v4.new_notebook(metadata=nb.metadata)
+    out = v4.new_notebook(metadata=nb.metadata)
     for c in nb.cells:
         s = ts.spec(c)
         if s is not None:
-            out.cells.append(nbformat.v4.new_raw_cell(ts.render_html(s, batch.add)))
+            out.cells.append(v4.new_raw_cell(ts.render_html(s, batch.add)))
         elif c.cell_type == "markdown":
-            out.cells.append(nbformat.v4.new_raw_cell(batch.add(c.source)))
+            out.cells.append(v4.new_raw_cell(batch.add(c.source)))
         elif c.cell_type == "code":
-            n = nbformat.v4.new_code_cell(c.source, metadata=c.metadata)
+            n = v4.new_code_cell(c.source, metadata=c.metadata)
             for o in c.outputs:
                 md = o.get("data", {}).get("text/markdown")
-                n.outputs.append(
-                    o if md is None else nbformat.v4.new_output("display_data", data={"text/html": batch.add(md)})
-                )
+                n.outputs.append(o if md is None else v4.new_output("display_data", data={"text/html": batch.add(md)}))
             out.cells.append(n)
     return out
 
 
 _HEADING = re.compile(r'<h([12])((?:\s+[a-z-]+="[^"]*")*)>(.*?)</h\1>', re.DOTALL)
-
-
+_ID = re.compile(r'(?<![\w-])id="([^"]+)"')
 _MATH_PUNCT = re.compile(r'([(\[]?)(<span class="math inline">[^<]*</span>)([,.;:!?)\]]*)')
 
 
@@ -94,12 +91,12 @@ def unique_ids(page: str) -> tuple[str, list[str]]:
         dups.append(i)
         return f'id="{i}-{seen[i]}"'
 
-    return re.sub(r'(?<![\w-])id="([^"]+)"', one, page), dups
+    return _ID.sub(one, page), dups
 
 
 def broken_links(page: str) -> list[str]:
     """Internal links (``href="#x"``) whose target id does not exist."""
-    ids = set(re.findall(r'(?<![\w-])id="([^"]+)"', page))
+    ids = set(_ID.findall(page))
     return sorted({h for h in re.findall(r'href="#([^"]+)"', page) if h not in ids})
 
 
@@ -114,11 +111,8 @@ def navigation(page: str) -> str:
         hid = re.search(r'\bid="([^"]+)"', attrs)
         if not hid:
             continue
-        node: dict[str, Any] = {
-            "link": f'<a href="#{hid.group(1)}">{inner}</a>',
-            "kids": [],
-            "part": 'class="part"' in attrs,
-        }
+        link = f'<a href="#{hid.group(1)}">{inner}</a>'
+        node: dict[str, Any] = {"link": link, "kids": [], "part": 'class="part"' in attrs}
         if node["part"]:
             top.append(node)
             part, h1 = node, None
@@ -128,19 +122,12 @@ def navigation(page: str) -> str:
         elif h1 is not None:
             h1["kids"].append(node)
 
+    def li(n):
+        kids = ul(n["kids"])
+        return f'<li class="part"><span>{n["link"]}</span>{kids}</li>' if n["part"] else f"<li>{n['link']}{kids}</li>"
+
     def ul(nodes):
-        return (
-            "<ul>"
-            + "".join(
-                f'<li class="part"><span>{n["link"]}</span>{ul(n["kids"])}</li>'
-                if n["part"]
-                else f"<li>{n['link']}{ul(n['kids'])}</li>"
-                for n in nodes
-            )
-            + "</ul>"
-            if nodes
-            else ""
-        )
+        return "<ul>" + "".join(map(li, nodes)) + "</ul>" if nodes else ""
 
     return f'<nav class="toc" aria-label="Contents"><p class="toc-title">Contents</p>{ul(top)}</nav>'
 
@@ -177,14 +164,9 @@ def export_html(nb, out: Path) -> None:
     prepared = _prepare(nb, batch)
     ref = batch.add(nb.metadata["wmr"]["paper"], inline=True)  # the title block's reference
     batch.convert()
-    body, _ = _exporter().from_notebook_node(
-        prepared,
-        resources={
-            "wmr_css": (TEMPLATES / "wmr_html" / "report.css").read_text(encoding="utf-8"),
-            "wmr_mathjax_gz": mathjax_gz(),
-            "wmr_paper_html": ref,
-        },
-    )
+    css = (TEMPLATES / "wmr_html" / "report.css").read_text(encoding="utf-8")
+    resources = {"wmr_css": css, "wmr_mathjax_gz": mathjax_gz(), "wmr_paper_html": ref}
+    body, _ = _exporter().from_notebook_node(prepared, resources=resources)
     body, dups = unique_ids(keep_punctuation(batch.fill(body)))
     if dups:
         say("html", f"WARNING: ids defined more than once, renamed: {', '.join(sorted(set(dups)))}")
