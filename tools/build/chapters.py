@@ -29,6 +29,10 @@ FRONT_MATTER_FIGURES = {"conventions": "How to read this edition"}
 _MATH_ONLY = re.compile(r"^\s*(\$\$|\$|\\\[)(.*?)(\$\$|\$|\\\])\s*$", re.DOTALL)
 
 
+def _display(data: dict, metadata: dict | None = None) -> dict:
+    return {"output_type": "display_data", "metadata": metadata or {}, "data": data}
+
+
 def _output(o) -> dict | None:
     r"""One output as the reader sees it (Markdown or an image), or ``None``; a LaTeX output becomes
     Markdown, a formula of its own (SymPy's ``$\displaystyle ...$``) displayed.
@@ -46,39 +50,27 @@ def _output(o) -> dict | None:
         m = _MATH_ONLY.match(data[mime])
         if m and {m.group(1), m.group(3)} in ({"$"}, {"$$"}, {"\\[", "\\]"}) and "$" not in m.group(2):
             body = re.sub(r"^\\displaystyle\s*", "", m.group(2).strip())
-            return {"output_type": "display_data", "metadata": {}, "data": {"text/markdown": f"$$\n{body}\n$$"}}
+            return _display({"text/markdown": f"$$\n{body}\n$$"})
         mime, data = "text/markdown", {"text/markdown": data[mime]}
-    return (
-        None
-        if mime is None
-        else {
-            "output_type": "display_data",
-            "data": {mime: data[mime]},
-            "metadata": {mime: meta[mime]} if mime in meta else {},
-        }
-    )
+    return None if mime is None else _display({mime: data[mime]}, {mime: meta[mime]} if mime in meta else {})
 
 
 def _figure_link(keys: list[str], figures: dict[str, dict[str, Any]]) -> str:
     """The line that replaces a figure cell of a chapter: a link to where the report shows it."""
-    return (
-        "*"
-        + " ".join(
-            f"This computation draws [{f['label'] or f['title']}](#figure-{f['key']}), printed in "
-            + FRONT_MATTER_FIGURES.get(f["key"], "the figures of Part I")
-            + (", with the paper's caption beside the computed one" if f["paper_caption"] else "")
-            + "."
-            for f in (figures[k] for k in keys)
-        )
-        + "*"
-        if keys
-        else "*The figure this computation draws is printed with the [figures](#figures) of Part I.*"
-    )
+    if not keys:
+        return "*The figure this computation draws is printed with the [figures](#figures) of Part I.*"
+    links = []
+    for f in (figures[k] for k in keys):
+        where = FRONT_MATTER_FIGURES.get(f["key"], "the figures of Part I")
+        both = ", with the paper's caption beside the computed one" if f["paper_caption"] else ""
+        link = f"[{f['label'] or f['title']}](#figure-{f['key']})"
+        links.append(f"This computation draws {link}, printed in {where}{both}.")
+    return "*" + " ".join(links) + "*"
 
 
 def chapter_cells(nb, figures: dict[str, dict[str, Any]]) -> list:
     """The cells of one executed derivation chapter, as the report shows them."""
-    import nbformat
+    from nbformat import from_dict, v4
 
     out = []
     for c in nb.cells:
@@ -87,21 +79,17 @@ def chapter_cells(nb, figures: dict[str, dict[str, Any]]) -> list:
             continue
         if "figure" in tags:
             keys = [k for k in figures if re.search(r"[\"']" + re.escape(k) + r"[\"']", c.source)]
-            out.append(nbformat.v4.new_markdown_cell(_figure_link(keys, figures)))
+            out.append(v4.new_markdown_cell(_figure_link(keys, figures)))
         elif c.cell_type == "markdown":
-            out.append(nbformat.v4.new_markdown_cell(c.source))
+            out.append(v4.new_markdown_cell(c.source))
         elif c.cell_type == "code":
-            n = nbformat.v4.new_code_cell(c.source)
+            n = v4.new_code_cell(c.source)
             for raw in c.get("outputs", []):
                 o, key = _output(raw), raw.get("metadata", {}).get(FIGURE_METADATA)
                 if o and key in figures:
-                    o = {
-                        "output_type": "display_data",
-                        "metadata": {},
-                        "data": {"text/markdown": _figure_link([key], figures)},
-                    }
+                    o = _display({"text/markdown": _figure_link([key], figures)})
                 if o:
-                    n.outputs.append(nbformat.from_dict(o))
+                    n.outputs.append(from_dict(o))
             if tags:
                 n.metadata["tags"] = sorted(tags)
             out.append(n)
@@ -110,7 +98,7 @@ def chapter_cells(nb, figures: dict[str, dict[str, Any]]) -> list:
 
 def findings_cells(nb, figures: dict[str, dict[str, Any]]) -> list:
     """The cells of the executed findings chapter: its prose, its computed outputs, its figures, its parts."""
-    import nbformat
+    from nbformat import from_dict, v4
 
     out = []
     for c in nb.cells:
@@ -121,15 +109,15 @@ def findings_cells(nb, figures: dict[str, dict[str, Any]]) -> list:
             head, _, intro = c.source.strip().partition("\n")
             out.append(ts.part(head.lstrip("# ").strip(), intro.strip()))
         elif c.cell_type == "markdown":
-            out.append(nbformat.v4.new_markdown_cell(c.source))
+            out.append(v4.new_markdown_cell(c.source))
         for raw in c.get("outputs", []) if c.cell_type == "code" else []:
             key = raw.get("metadata", {}).get(FIGURE_METADATA)
             if key in figures:
                 out.append(ts.figure(figures[key]))
             elif (o := _output(raw)) and "text/markdown" in o["data"]:
-                out.append(nbformat.v4.new_markdown_cell("".join(o["data"]["text/markdown"])))
+                out.append(v4.new_markdown_cell("".join(o["data"]["text/markdown"])))
             elif o:
-                out.append(nbformat.v4.new_code_cell("", outputs=[nbformat.from_dict(o)]))
+                out.append(v4.new_code_cell("", outputs=[from_dict(o)]))
     return out
 
 
@@ -138,17 +126,10 @@ def title(nb) -> dict[str, str]:
     displays): the heading, the line under it, the edition's line (version, licence); and the paper's full
     reference, the entry by Leow under its heading ``# References``."""
     c: Any = next((c for c in nb.cells if "title" in c.get("metadata", {}).get("tags", [])), {"source": ""})
-    head = (
-        c["source"]
-        if c.get("cell_type") != "code"
-        else "".join(o.get("data", {}).get("text/markdown", "") for o in c.get("outputs", []))
-    )
-    lines = [l.strip().strip("*") for l in head.strip().splitlines() if l.strip()] + ["", "", ""]
+    shown = "".join(o.get("data", {}).get("text/markdown", "") for o in c.get("outputs", []))
+    head = shown if c.get("cell_type") == "code" else c["source"]
+    lines = [line.strip().strip("*") for line in head.strip().splitlines() if line.strip()] + ["", "", ""]
     refs = next((c.source for c in nb.cells if c.cell_type == "markdown" and c.source.startswith("# References")), "")
     paper = re.search(r"^(?:1\.|-)\s+(Y\. P\. Leow.+?)(?:\n\d+\.|\n-|\n\n|\Z)", refs, re.MULTILINE | re.DOTALL)
-    return {
-        "title": lines[0].lstrip("# ").strip(),
-        "subtitle": lines[1],
-        "edition": lines[2],
-        "paper": " ".join(paper.group(1).split()) if paper else "",
-    }
+    ref = " ".join(paper.group(1).split()) if paper else ""
+    return {"title": lines[0].lstrip("# ").strip(), "subtitle": lines[1], "edition": lines[2], "paper": ref}
