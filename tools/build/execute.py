@@ -30,13 +30,10 @@ CELL_TIMEOUT = 600  # seconds per cell
 
 
 def _files(d: Path) -> list[Path]:
-    return (
-        sorted(p for p in d.rglob("*") if p.is_file() and "__pycache__" not in p.parts and not p.name.startswith("."))
-        if d.is_dir()
-        else [d]
-        if d.is_file()
-        else []
-    )
+    if not d.is_dir():
+        return [d] if d.is_file() else []
+    files = (p for p in d.rglob("*") if p.is_file())
+    return sorted(p for p in files if "__pycache__" not in p.parts and not p.name.startswith("."))
 
 
 def _sha(p: Path) -> str | None:
@@ -83,14 +80,8 @@ def write_stamp(out: Path, k: str) -> None:
 def kernel_env(root: Path, chapter_out: Path) -> dict[str, str]:
     """The kernel's environment: the venv's Python first on ``PATH``, the project importable,
     ``WMR_OUT``, no plot windows, one BLAS thread (two notebooks share two cores), a fixed hash seed."""
-    env = dict(
-        os.environ,
-        WMR_OUT=str(chapter_out),
-        MPLBACKEND="Agg",
-        PYTHONHASHSEED="0",
-        JUPYTER_PREFER_ENV_PATH="1",
-        PYDEVD_DISABLE_FILE_VALIDATION="1",
-    )
+    env = dict(os.environ, WMR_OUT=str(chapter_out), MPLBACKEND="Agg", PYTHONHASHSEED="0")
+    env.update(JUPYTER_PREFER_ENV_PATH="1", PYDEVD_DISABLE_FILE_VALIDATION="1")
     env["PATH"] = str(Path(sys.executable).parent) + os.pathsep + env.get("PATH", "")
     env["PYTHONPATH"] = os.pathsep.join(filter(None, [str(root), env.get("PYTHONPATH")]))
     for var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
@@ -126,20 +117,17 @@ def execute(nb: Path, out: Path, reads: tuple[Path, ...] = (), root: Path = ROOT
 
     book = nbformat.read(nb, as_version=4)
     if any(c.cell_type == "code" and c.source.strip() for c in book.cells):  # else: no kernel to start
+        resources = {"metadata": {"path": str(nb.parent)}}
+        config = Config({"KernelManager": {"transport_encryption": "auto"}})  # CurveZMQ, as the kernel offers
         client = NotebookClient(
-            book,
-            timeout=CELL_TIMEOUT,
-            kernel_name="python3",
-            record_timing=False,
-            resources={"metadata": {"path": str(nb.parent)}},  # CurveZMQ, as the kernel offers
-            config=Config({"KernelManager": {"transport_encryption": "auto"}}),
+            book, timeout=CELL_TIMEOUT, kernel_name="python3", record_timing=False, resources=resources, config=config
         )
         try:
             client.execute(env=kernel_env(Path(root), chapter_out))
         except CellExecutionError as e:
             text = re.sub(r"\x1b\[[0-9;]*[A-Za-z]", "", str(e))  # the traceback, without terminal colours
             raise BuildError(f"=== notebook {nb.name} failed ===\n{text}") from None
-        except Exception as e:  # noqa: BLE001 - the kernel died or was stopped (a signal: nbclient shut it down)
+        except Exception as e:  # the kernel died or was stopped (a signal: nbclient shut it down)
             raise BuildError(f"=== notebook {nb.name}: execution stopped ({type(e).__name__}) ===") from None
     atomic_write(out, nbformat.writes(book))
     write_stamp(out, k)
