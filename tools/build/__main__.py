@@ -56,9 +56,8 @@ def _run(cmd: str, paths: list[Path], reads: list[Path]) -> None:
 
 
 def main(argv: list[str] | None = None) -> int:
-    ap = argparse.ArgumentParser(
-        prog="python -m tools.build", description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter
-    )
+    raw = argparse.RawDescriptionHelpFormatter
+    ap = argparse.ArgumentParser(prog="python -m tools.build", description=__doc__, formatter_class=raw)
     ap.add_argument("command", choices=("execute", "publish", "assemble", "html", "pdf"))
     ap.add_argument("paths", type=Path, nargs="+")
     ap.add_argument("--reads", type=Path, action="append", default=[], help="a folder a notebook reads (its key)")

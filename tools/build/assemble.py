@@ -20,9 +20,8 @@ def commit_info(path: Path) -> tuple[str, int]:
     """``("0a7f9ffb1647 + uncommitted changes", epoch)`` from the Makefile's ``build/commit``
     (``HASH EPOCH [+]``); ``("unknown", 0)`` outside git."""
     parts = (Path(path).read_text(encoding="utf-8").split() if Path(path).exists() else []) + ["unknown", "0"]
-    commit = (
-        parts[0] if parts[0] == "unknown" else parts[0][:12] + (" + uncommitted changes" if "+" in parts[2:] else "")
-    )
+    dirty = " + uncommitted changes" if "+" in parts[2:] else ""
+    commit = parts[0] if parts[0] == "unknown" else parts[0][:12] + dirty
     return commit, int(parts[1]) if parts[1].isdigit() else 0
 
 
@@ -34,12 +33,8 @@ def report_notebook(commit_file: Path, figures_dir: Path, findings: Path, chapte
     commit, epoch = commit_info(commit_file)
     part1 = nbformat.read(findings, as_version=4)
     nb = nbformat.v4.new_notebook()
-    nb.metadata["wmr"] = {
-        **title(part1),
-        "commit": commit,
-        "epoch": epoch,
-        "date": dt.datetime.fromtimestamp(epoch, dt.UTC).strftime("%Y-%m-%d") if epoch else "unknown",
-    }
+    date = dt.datetime.fromtimestamp(epoch, dt.UTC).strftime("%Y-%m-%d") if epoch else "unknown"
+    nb.metadata["wmr"] = {**title(part1), "commit": commit, "epoch": epoch, "date": date}
     nb.metadata["title"] = nb.metadata["wmr"]["title"]
     nb.cells = findings_cells(part1, figures)
     for path in chapters:

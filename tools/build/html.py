@@ -142,10 +142,8 @@ def _exporter():
     class ReportExporter(HTMLExporter):
         def from_notebook_node(self, nb, resources=None, **kw):
             resources = self._init_resources(resources)
-            self.register_filter(
-                "filter_data_type",
-                WidgetsDataTypeFilter(notebook_metadata=self._nb_metadata, parent=self, resources=resources),
-            )
+            data_types = WidgetsDataTypeFilter(notebook_metadata=self._nb_metadata, parent=self, resources=resources)
+            self.register_filter("filter_data_type", data_types)
             return TemplateExporter.from_notebook_node(self, nb, resources, **kw)
 
     return ReportExporter(

@@ -46,12 +46,10 @@ def table_math_pipes(md: str) -> str:
     'not a table: $|x|$'
     """
 
-    def row(m):
-        return _INLINE_MATH.sub(
-            lambda k: "$" + k.group(1).replace("\\|", "\\Vert{}").replace("|", "\\vert{}") + "$", m.group(0)
-        )
+    def formula(k):
+        return "$" + k.group(1).replace("\\|", "\\Vert{}").replace("|", "\\vert{}") + "$"
 
-    return _TABLE_ROW.sub(row, md)
+    return _TABLE_ROW.sub(lambda m: _INLINE_MATH.sub(formula, m.group(0)), md)
 
 
 def tex_anchor_tokens(md: str) -> str:

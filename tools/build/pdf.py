@@ -35,7 +35,9 @@ _MATH = r"""
 Σ \Sigma Φ \Phi Ψ \Psi Ω \Omega ✓ \checkmark ✗ \times
 """.split()
 UNICODE = {c: rf"\ensuremath{{{m}}}" for c, m in zip(_MATH[::2], _MATH[1::2], strict=True)}
-_ENVS = "align align* gather gather* multline multline* equation equation* eqnarray eqnarray*".split()
+#: a numbered environment of its own (``align``, ``align*``, ...), which cannot be boxed
+_NUMBERED = re.compile(r"\\begin\{(align|gather|multline|equation|eqnarray)\*?\}")
+_SCALED = re.compile(r"WMR-SCALE:([\d.]+)pt:([\d.]+)pt:(\S+)")
 _DISPLAY = re.compile(r"(?<!\\)\\\[(.*?)(?<!\\)\\\]", re.DOTALL)
 _TAG = re.compile(r"\\tag\*?\{([^{}]*)\}")
 
@@ -44,7 +46,7 @@ def display_math(body: str) -> str:
     """LaTeX for one displayed formula: ``\\wmrdisplay{body}{tag}``, or the body itself when it is
     a numbered environment of its own (``align``, ``multline``, ...), which cannot be boxed."""
     body = body.strip()
-    if re.match(r"\\begin\{(" + "|".join(re.escape(e) for e in _ENVS) + r")\}", body):
+    if _NUMBERED.match(body):
         return body
     tags = _TAG.findall(body)
     return r"\wmrdisplay{" + _TAG.sub("", body).strip() + "}{" + (tags[0] if tags else "") + "}"
@@ -113,10 +115,7 @@ def to_latex(nb) -> tuple[str, dict]:
 
 def scaled_formulas(log: str) -> list[tuple[float, str]]:
     """(scale, page) of every formula ``\\wmrdisplay`` had to shrink, from the xelatex log."""
-    return [
-        (float(avail) / float(wd), page)
-        for wd, avail, page in re.findall(r"WMR-SCALE:([\d.]+)pt:([\d.]+)pt:(\S+)", log)
-    ]
+    return [(float(avail) / float(wd), page) for wd, avail, page in _SCALED.findall(log)]
 
 
 def fix_id(pdf: bytes) -> bytes:
