@@ -18,8 +18,9 @@ Only the standard library is imported up front; nbformat, nbclient, nbconvert wh
 from __future__ import annotations
 
 import time
+from pathlib import Path
 
-__all__ = ["BuildError", "say"]
+__all__ = ["BuildError", "atomic_write", "say"]
 
 
 class BuildError(RuntimeError):
@@ -29,3 +30,10 @@ class BuildError(RuntimeError):
 def say(step: str, msg: str, t0: float | None = None) -> None:
     """Print ``[step] msg``, and the seconds since ``t0`` when given: a build log reads as a timeline."""
     print(f"[{step}] {msg}" + (f" ({time.perf_counter() - t0:.1f} s)" if t0 is not None else ""), flush=True)
+
+
+def atomic_write(path: Path, data: str | bytes) -> None:
+    """:func:`edition.files.atomic_write`, imported when a step writes (``edition`` is not a light import)."""
+    from edition.files import atomic_write as write
+
+    write(path, data)

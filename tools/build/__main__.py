@@ -18,7 +18,7 @@ import sys
 import time
 from pathlib import Path
 
-from . import BuildError, say
+from . import BuildError, atomic_write, say
 
 __all__ = ["main"]
 
@@ -36,8 +36,6 @@ def _run(cmd: str, paths: list[Path], reads: list[Path]) -> None:
         publish(paths[0], paths[1:])
     else:
         import nbformat
-
-        from edition.files import atomic_write
 
         out = paths[0] if cmd == "assemble" else paths[1]
         for p in [out.with_suffix(x) for x in (".ipynb", ".html", ".pdf")] if cmd == "assemble" else [out]:

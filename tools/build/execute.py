@@ -20,7 +20,7 @@ import sys
 import time
 from pathlib import Path
 
-from . import BuildError, say
+from . import BuildError, atomic_write, say
 
 __all__ = ["CELL_TIMEOUT", "ROOT", "execute", "kernel_env", "key", "outputs", "publish", "up_to_date", "write_stamp"]
 
@@ -72,8 +72,6 @@ def up_to_date(stamp: Path, k: str, out: Path) -> bool:
 
 def write_stamp(out: Path, k: str) -> None:
     """Write ``OUT.stamp``: key ``k`` and the hash of each output of ``out`` (what :func:`up_to_date` reads)."""
-    from edition.files import atomic_write
-
     atomic_write(out.with_suffix(".stamp"), json.dumps({"key": k, "outputs": _hashes(out)}, indent=1) + "\n")
 
 
@@ -103,8 +101,6 @@ def execute(nb: Path, out: Path, reads: tuple[Path, ...] = (), root: Path = ROOT
     stamp, k = out.with_suffix(".stamp"), key(nb, Path(root), tuple(Path(r).resolve() for r in reads))
     if up_to_date(stamp, k, out):
         return False
-    from edition.files import atomic_write
-
     build, chapter_out = out.parent.parent, out.parent.parent / "out" / out.stem
     for p in (stamp, out, *(build / f"report.{ext}" for ext in ("ipynb", "html", "pdf"))):
         p.unlink(missing_ok=True)
@@ -159,8 +155,6 @@ def publish(figures: Path, executed: list[Path]) -> list[Path]:
             owner[f.name] = out.stem
             dest = Path(figures) / f.name
             if not dest.is_file() or dest.read_bytes() != f.read_bytes():
-                from edition.files import atomic_write
-
                 atomic_write(dest, f.read_bytes())
                 changed.append(dest)
     say("publish", f"{len(owner)} files of the chapters in figures/, {len(changed)} changed")

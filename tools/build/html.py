@@ -14,7 +14,7 @@ import re
 from pathlib import Path
 from typing import Any
 
-from . import BuildError, say
+from . import BuildError, atomic_write, say
 from . import typeset as ts
 from .markup import TEMPLATES, Batch
 
@@ -156,8 +156,6 @@ def _exporter():
 
 def export_html(nb, out: Path) -> None:
     """Render the report notebook ``nb`` into ``out`` (atomically)."""
-    from edition.files import atomic_write
-
     batch = Batch("html")
     prepared = _prepare(nb, batch)
     ref = batch.add(nb.metadata["wmr"]["paper"], inline=True)  # the title block's reference

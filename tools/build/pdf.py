@@ -18,7 +18,7 @@ import subprocess
 import tempfile
 from pathlib import Path
 
-from . import BuildError, say
+from . import BuildError, atomic_write, say
 from . import typeset as ts
 from .markup import TEMPLATES, Batch
 
@@ -162,8 +162,6 @@ def export_pdf(nb, out: Path) -> list[str]:
     xelatex log refers to) and ``report.log``; return warnings for the reader of the build log
     (missing glyphs, shrunk formulas, lines past the margin). xelatex runs in a temporary directory
     under ``<build>/tmp``, removed however the step ends (what a killed build left is removed first)."""
-    from edition.files import atomic_write
-
     if not shutil.which("xelatex"):
         raise BuildError(
             "xelatex not found: run `make report` (it installs the TeX toolchain) or "
