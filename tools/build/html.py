@@ -146,12 +146,8 @@ def _exporter():
             self.register_filter("filter_data_type", data_types)
             return TemplateExporter.from_notebook_node(self, nb, resources, **kw)
 
-    return ReportExporter(
-        template_name="wmr_html",
-        extra_template_basedirs=[str(TEMPLATES)],
-        exclude_input_prompt=True,
-        exclude_output_prompt=True,
-    )
+    template = dict(template_name="wmr_html", extra_template_basedirs=[str(TEMPLATES)])
+    return ReportExporter(**template, exclude_input_prompt=True, exclude_output_prompt=True)
 
 
 def export_html(nb, out: Path) -> None:

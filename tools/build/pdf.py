@@ -27,14 +27,6 @@ __all__ = ["MIN_FORMULA_SCALE", "export_pdf", "fix_id", "scaled_formulas", "to_l
 MAX_RUNS = 4
 #: a formula wider than the line is shrunk to fit it; below this scale it counts as unreadable
 MIN_FORMULA_SCALE = 0.8
-#: characters of the text that Latin Modern lacks, set from the math fonts instead (pairs: character, math command)
-_MATH = r"""
-→ \rightarrow ← \leftarrow ↔ \leftrightarrow ⇒ \Rightarrow ⇔ \Leftrightarrow ≤ \le ≥ \ge ≠ \ne ≈ \approx ≡ \equiv − -
-∞ \infty ± \pm ∈ \in ∑ \sum √ \surd ∂ \partial ⊥ \perp ‖ \| · \cdot ∘ \circ α \alpha β \beta γ \gamma δ \delta
-ε \varepsilon θ \theta κ \kappa λ \lambda μ \mu ν \nu π \pi σ \sigma φ \varphi ϕ \phi ψ \psi ω \omega Δ \Delta
-Σ \Sigma Φ \Phi Ψ \Psi Ω \Omega ✓ \checkmark ✗ \times
-""".split()
-UNICODE = {c: rf"\ensuremath{{{m}}}" for c, m in zip(_MATH[::2], _MATH[1::2], strict=True)}
 #: a numbered environment of its own (``align``, ``align*``, ...), which cannot be boxed
 _NUMBERED = re.compile(r"\\begin\{(align|gather|multline|equation|eqnarray)\*?\}")
 _SCALED = re.compile(r"WMR-SCALE:([\d.]+)pt:([\d.]+)pt:(\S+)")
@@ -42,10 +34,10 @@ _DISPLAY = re.compile(r"(?<!\\)\\\[(.*?)(?<!\\)\\\]", re.DOTALL)
 _TAG = re.compile(r"\\tag\*?\{([^{}]*)\}")
 
 
-def display_math(body: str) -> str:
-    """LaTeX for one displayed formula: ``\\wmrdisplay{body}{tag}``, or the body itself when it is
-    a numbered environment of its own (``align``, ``multline``, ...), which cannot be boxed."""
-    body = body.strip()
+def display_math(m: re.Match) -> str:
+    """LaTeX for one displayed formula ``\\[body\\]`` (match ``m`` of it): ``\\wmrdisplay{body}{tag}``, or the
+    body itself when it is a numbered environment of its own (``align``, ``multline``, ...), which cannot be boxed."""
+    body = m.group(1).strip()
     if _NUMBERED.match(body):
         return body
     tags = _TAG.findall(body)
@@ -82,9 +74,7 @@ def to_latex(nb) -> tuple[str, dict]:
     from nbconvert import LatexExporter
 
     # each converted fragment: pandoc's \[...\] becomes \wmrdisplay, tables wrap, code breaks
-    batch = Batch(
-        "latex", post=lambda tex: breakable_code(wrap_tables(_DISPLAY.sub(lambda m: display_math(m.group(1)), tex)))
-    )
+    batch = Batch("latex", post=lambda tex: breakable_code(wrap_tables(_DISPLAY.sub(display_math, tex))))
     files: dict[str, bytes] = {}
     prepared = nbformat.v4.new_notebook(metadata=nb.metadata)
     for c in nb.cells:
@@ -107,9 +97,8 @@ def to_latex(nb) -> tuple[str, dict]:
             prepared.cells.append(nbformat.v4.new_raw_cell("\n\n".join(parts)))
     paper = batch.add(nb.metadata["wmr"]["paper"], inline=True)
     batch.convert()
-    unicode = "\n".join(rf"\newunicodechar{{{k}}}{{{v}}}" for k, v in UNICODE.items())
     exp = LatexExporter(template_name="wmr_latex", extra_template_basedirs=[str(TEMPLATES)])
-    body, _ = exp.from_notebook_node(prepared, resources={"wmr_paper_latex": paper, "wmr_unicode": unicode})
+    body, _ = exp.from_notebook_node(prepared, resources={"wmr_paper_latex": paper})
     return batch.fill(body), files
 
 

@@ -28,15 +28,10 @@ def read_figures(figdir: Path) -> dict[str, dict[str, Any]]:
     for p in sorted(Path(figdir).glob("*.json")):
         m = json.loads(p.read_text(encoding="utf-8"))
         if isinstance(m, dict) and "title" in m:
-            number = str(m.get("number") or "")
-            out[p.stem] = {
-                "key": p.stem,
-                "label": f"Figure {number}" if number else "",
-                "title": m["title"],
-                "paper_caption": m.get("paper_caption") or "",
-                "caption": m.get("caption") or "",
-                "images": {f: str(p.with_suffix("." + f)) for f in ("svg", "pdf") if p.with_suffix("." + f).exists()},
-            }
+            label = f"Figure {m['number']}" if m.get("number") else ""
+            captions = {c: m.get(c) or "" for c in ("paper_caption", "caption")}
+            images = {f: str(p.with_suffix("." + f)) for f in ("svg", "pdf") if p.with_suffix("." + f).exists()}
+            out[p.stem] = {"key": p.stem, "label": label, "title": m["title"], **captions, "images": images}
     return out
 
 
@@ -72,26 +67,21 @@ def render_html(s: dict, md: Md) -> str:
     if s["kind"] == "part":
         heading = f'<h1 class="part" id="{_slug(s["title"])}">{html.escape(s["title"])}</h1>'
         return heading + (md(s["intro"]) if s["intro"] else "")
-    svg = s["images"].get("svg")
     alt = html.escape(f"{s['label']}: {s['title']}" if s["label"] else s["title"], quote=True)
-    pic = (
-        f'<img src="data:image/svg+xml;base64,{base64.b64encode(Path(svg).read_bytes()).decode()}" alt="{alt}">'
-        if svg
-        else f'<p class="missing">missing image figures/{html.escape(s["key"])}.svg</p>'
-    )
+    if svg := s["images"].get("svg"):
+        pic = f'<img src="data:image/svg+xml;base64,{base64.b64encode(Path(svg).read_bytes()).decode()}" alt="{alt}">'
+    else:
+        pic = f'<p class="missing">missing image figures/{html.escape(s["key"])}.svg</p>'
     title = md(s["title"], inline=True)
     head = f"<b>{html.escape(s['label'])}.</b> {title}" if s["label"] else f"<b>{title}.</b>"
     if s["paper_caption"]:
-        caps = (
-            f'<div class="captions"><div class="cap"><p class="cap-h">In the paper</p>{md(s["paper_caption"])}</div>'
-            f'<div class="cap"><p class="cap-h">Computed in this edition</p>{md(s["caption"])}</div></div>'
-        )
+        paper = f'<div class="cap"><p class="cap-h">In the paper</p>{md(s["paper_caption"])}</div>'
+        ours = f'<div class="cap"><p class="cap-h">Computed in this edition</p>{md(s["caption"])}</div>'
+        caps = f'<div class="captions">{paper}{ours}</div>'
     else:
         caps = f'<div class="captions one"><div class="cap">{md(s["caption"])}</div></div>'
-    return (
-        f'<figure class="wmr-figure" id="figure-{html.escape(s["key"])}">{pic}'
-        f'<figcaption><p class="fig-title">{head}</p>{caps}</figcaption></figure>'
-    )
+    figure = f'<figure class="wmr-figure" id="figure-{html.escape(s["key"])}">{pic}'
+    return figure + f'<figcaption><p class="fig-title">{head}</p>{caps}</figcaption></figure>'
 
 
 def _tex_path(p: str) -> str:
