@@ -24,8 +24,6 @@ KEEP_MIMES = ("text/markdown", "text/latex", "image/svg+xml", "image/png")
 FIGURE_METADATA = "wmr_figure"
 #: figures the report shows outside its figures section: key -> where (the conventions drawing)
 FRONT_MATTER_FIGURES = {"conventions": "How to read this edition"}
-
-
 _MATH_ONLY = re.compile(r"^\s*(\$\$|\$|\\\[)(.*?)(\$\$|\$|\\\])\s*$", re.DOTALL)
 
 

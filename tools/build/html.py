@@ -20,6 +20,10 @@ from .markup import TEMPLATES, Batch
 
 __all__ = ["broken_links", "export_html", "keep_punctuation", "mathjax_gz", "navigation", "unique_ids"]
 
+_HEADING = re.compile(r'<h([12])((?:\s+[a-z-]+="[^"]*")*)>(.*?)</h\1>', re.DOTALL)
+_ID = re.compile(r'(?<![\w-])id="([^"]+)"')
+_MATH_PUNCT = re.compile(r'([(\[]?)(<span class="math inline">[^<]*</span>)([,.;:!?)\]]*)')
+
 
 @functools.lru_cache(maxsize=1)
 def mathjax_gz() -> str:
@@ -54,11 +58,6 @@ def _prepare(nb, batch: Batch):
                 n.outputs.append(o if md is None else v4.new_output("display_data", data={"text/html": batch.add(md)}))
             out.cells.append(n)
     return out
-
-
-_HEADING = re.compile(r'<h([12])((?:\s+[a-z-]+="[^"]*")*)>(.*?)</h\1>', re.DOTALL)
-_ID = re.compile(r'(?<![\w-])id="([^"]+)"')
-_MATH_PUNCT = re.compile(r'([(\[]?)(<span class="math inline">[^<]*</span>)([,.;:!?)\]]*)')
 
 
 def keep_punctuation(page: str) -> str:

@@ -32,6 +32,11 @@ _NUMBERED = re.compile(r"\\begin\{(align|gather|multline|equation|eqnarray)\*?\}
 _SCALED = re.compile(r"WMR-SCALE:([\d.]+)pt:([\d.]+)pt:(\S+)")
 _DISPLAY = re.compile(r"(?<!\\)\\\[(.*?)(?<!\\)\\\]", re.DOTALL)
 _TAG = re.compile(r"\\tag\*?\{([^{}]*)\}")
+_NATURAL_TABLE = re.compile(r"\\begin\{longtable\}\[\]\{@\{\}([lcr]+)@\{\}\}")
+_TEXTTT = re.compile(r"\\texttt\{([^{}]*)\}")
+_XELATEX = ["xelatex", "-interaction=nonstopmode", "-halt-on-error", "-file-line-error", "report.tex"]
+_ERROR = re.compile(r"!|\./report\.tex:\d+:")  # the first line of an error in the log
+_OVERFULL = re.compile(r"Overfull \\hbox \((\d+\.\d+)pt too wide\)[^\n]*lines? (\d+)")
 
 
 def display_math(m: re.Match) -> str:
@@ -42,10 +47,6 @@ def display_math(m: re.Match) -> str:
         return body
     tags = _TAG.findall(body)
     return r"\wmrdisplay{" + _TAG.sub("", body).strip() + "}{" + (tags[0] if tags else "") + "}"
-
-
-_NATURAL_TABLE = re.compile(r"\\begin\{longtable\}\[\]\{@\{\}([lcr]+)@\{\}\}")
-_TEXTTT = re.compile(r"\\texttt\{([^{}]*)\}")
 
 
 def wrap_tables(tex: str) -> str:
@@ -120,11 +121,6 @@ def fix_id(pdf: bytes) -> bytes:
         new = x.group(0).replace(a, h[: len(a)].encode()).replace(b, h[: len(b)].encode())
         out = out[: x.start()] + new + out[x.end() :]
     return out
-
-
-_XELATEX = ["xelatex", "-interaction=nonstopmode", "-halt-on-error", "-file-line-error", "report.tex"]
-_ERROR = re.compile(r"!|\./report\.tex:\d+:")  # the first line of an error in the log
-_OVERFULL = re.compile(r"Overfull \\hbox \((\d+\.\d+)pt too wide\)[^\n]*lines? (\d+)")
 
 
 def _run_xelatex(d: Path, epoch: int) -> str:

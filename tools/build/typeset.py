@@ -19,6 +19,7 @@ from . import BuildError
 __all__ = ["figure", "part", "read_figures", "render_html", "render_latex", "spec"]
 
 Md = Callable[..., str]  # md(text, inline=False) -> placeholder of the converted fragment
+_GRAPHICS = r"\includegraphics[width=\linewidth,height=0.5\textheight,keepaspectratio]"
 
 
 def read_figures(figdir: Path) -> dict[str, dict[str, Any]]:
@@ -88,9 +89,6 @@ def _tex_path(p: str) -> str:
     if any(c in p for c in "%#{}\\ "):
         raise BuildError(f"image path not usable in LaTeX: {p!r}")
     return Path(p).as_posix()
-
-
-_GRAPHICS = r"\includegraphics[width=\linewidth,height=0.5\textheight,keepaspectratio]"
 
 
 def _minipage(width: str, body: str, head: str = "") -> str:
