@@ -59,14 +59,11 @@ def spec(cell) -> dict | None:
     return cell.get("metadata", {}).get("wmr") if cell.get("cell_type") == "raw" else None
 
 
-def _slug(s: str) -> str:
-    return re.sub(r"[^a-z0-9]+", "-", s.lower()).strip("-")
-
-
 def render_html(s: dict, md: Md) -> str:
     """The HTML of a special cell: the figure's SVG inlined (nothing fetched), its captions side by side."""
     if s["kind"] == "part":
-        heading = f'<h1 class="part" id="{_slug(s["title"])}">{html.escape(s["title"])}</h1>'
+        slug = re.sub(r"[^a-z0-9]+", "-", s["title"].lower()).strip("-")
+        heading = f'<h1 class="part" id="{slug}">{html.escape(s["title"])}</h1>'
         return heading + (md(s["intro"]) if s["intro"] else "")
     alt = html.escape(f"{s['label']}: {s['title']}" if s["label"] else s["title"], quote=True)
     if svg := s["images"].get("svg"):
@@ -85,12 +82,6 @@ def render_html(s: dict, md: Md) -> str:
     return figure + f'<figcaption><p class="fig-title">{head}</p>{caps}</figcaption></figure>'
 
 
-def _tex_path(p: str) -> str:
-    if any(c in p for c in "%#{}\\ "):
-        raise BuildError(f"image path not usable in LaTeX: {p!r}")
-    return Path(p).as_posix()
-
-
 def _minipage(width: str, body: str, head: str = "") -> str:
     """``body`` in a top-aligned minipage ``width`` of the line wide, under the caption heading ``head``."""
     heading = rf"\wmrcaphead{{{head}}}" if head else ""
@@ -102,7 +93,9 @@ def render_latex(s: dict, md: Md) -> str:
     if s["kind"] == "part":
         return rf"\wmrpart{{{s['title']}}}" + ("\n\n" + md(s["intro"]) if s["intro"] else "")
     pdf = s["images"].get("pdf")
-    pic = _GRAPHICS + "{" + _tex_path(pdf) + "}" if pdf else r"\fbox{missing image}"
+    if pdf and any(c in pdf for c in "%#{}\\ "):
+        raise BuildError(f"image path not usable in LaTeX: {pdf!r}")
+    pic = _GRAPHICS + "{" + Path(pdf).as_posix() + "}" if pdf else r"\fbox{missing image}"
     title = md(s["title"], inline=True)
     head = rf"\textbf{{{s['label']}.}} {title}" if s["label"] else r"\textbf{" + title + ".}"
     if s["paper_caption"]:
