@@ -1,12 +1,11 @@
 """The executed chapters as a reader sees them in the report (new cell objects).
 
-Cells tagged ``exercise``, ``solution`` or ``ledger`` are dropped. In a derivation chapter (Part II)
-a ``figure`` cell, or an output marked ``wmr_figure``, becomes a link to the figure, shown once in
-Part I; code stays (collapsed in the HTML, absent from the PDF); of the outputs only Markdown, LaTeX
-and images reach the reader (no printed text, HTML tables, errors or widget state). The findings
-chapter (Part I, ``notebooks/findings.ipynb``) is prose: its Markdown and its outputs, not its code;
-an output marked ``wmr_figure`` is the figure itself, a Markdown cell tagged ``part`` starts a part of
-the report, the cell tagged ``title`` gives the title block (:func:`title`)."""
+Cells tagged ``exercise``, ``solution`` or ``ledger`` are dropped. In a derivation chapter (Part II) a ``figure`` cell,
+or an output marked ``wmr_figure``, becomes a link to the figure, shown once in Part I; code stays (collapsed in the
+HTML, absent from the PDF); of the outputs only Markdown, LaTeX and images reach the reader (no printed text, HTML
+tables, errors or widget state). The findings chapter (Part I, ``notebooks/findings.ipynb``) is prose: its Markdown and
+its outputs, not its code; an output marked ``wmr_figure`` is the figure itself, a Markdown cell tagged ``part`` starts
+a part of the report, the cell tagged ``title`` gives the title block (:func:`title`)."""
 
 from __future__ import annotations
 

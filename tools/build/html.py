@@ -39,9 +39,8 @@ def mathjax_gz() -> str:
 
 
 def _prepare(nb, batch: Batch):
-    """A copy of the report notebook in which every cell is ready for the template: Markdown and
-    special cells become raw HTML, Markdown outputs HTML (placeholders that the pandoc batch fills
-    in the finished page), images stay."""
+    """A copy of the report notebook in which every cell is ready for the template: Markdown and special cells become
+    raw HTML, Markdown outputs HTML (placeholders that the pandoc batch fills in the finished page), images stay."""
     from nbformat import v4
 
     out = v4.new_notebook(metadata=nb.metadata)

@@ -1,10 +1,9 @@
 """Markdown to HTML and to LaTeX through one reader, pandoc's ``gfm+tex_math_dollars+smart``
 (GitHub-flavoured Markdown, ``$...$`` math, typographic quotes and dashes: the closest to Jupyter).
 
-Every Markdown fragment of the report is converted in **one** pandoc call per format (:class:`Batch`):
-the HTML and the PDF read the text the same way, heading ids are unique across the report, and a
-build starts two pandoc processes, not hundreds. Math is written ``$...$`` at the source; nothing here
-guesses which words are TeX."""
+Every Markdown fragment of the report is converted in **one** pandoc call per format (:class:`Batch`): the HTML and the
+PDF read the text the same way, heading ids are unique across the report, and a build starts two pandoc processes, not
+hundreds. Math is written ``$...$`` at the source; nothing here guesses which words are TeX."""
 
 from __future__ import annotations
 

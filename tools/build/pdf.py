@@ -62,9 +62,8 @@ def wrap_tables(tex: str) -> str:
 
 
 def breakable_code(tex: str) -> str:
-    """Code and identifiers in the text (``wmr.analysis.mobility.twist_constraints``,
-    ``listed_in_paper``) may break after a dot or an underscore, as a URL would, instead of
-    running past the margin."""
+    """Code and identifiers in the text (``wmr.analysis.mobility.twist_constraints``, ``listed_in_paper``) may break
+    after a dot or an underscore, as a URL would, instead of running past the margin."""
     tex = _TEXTTT.sub(lambda m: r"\texttt{" + m.group(1).replace(".", r".\allowbreak{}") + "}", tex)
     return tex.replace(r"\_", r"\_\allowbreak{}")
 
