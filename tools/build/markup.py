@@ -15,7 +15,7 @@ from pathlib import Path
 
 from . import BuildError
 
-__all__ = ["READER", "TEMPLATES", "Batch", "table_math_pipes", "tex_anchor_targets", "tex_anchor_tokens"]
+__all__ = ["READER", "TEMPLATES", "Batch", "table_math_pipes"]
 
 #: nbconvert templates of the report (HTML page, LaTeX document)
 TEMPLATES = Path(__file__).resolve().parent / "templates"
@@ -25,6 +25,7 @@ _SEP_RE = {
     "html": re.compile(r"\n*<p>WMRFRAGMENT(\d{5})</p>\n*"),
     "latex": re.compile(r"\n*^WMRFRAGMENT(\d{5})$\n*", re.MULTILINE),
 }
+_WRITER = {"html": ["html5", "--wrap=none", "--mathjax"], "latex": ["latex", "--wrap=none"]}  # pandoc -t ...
 _ANCHOR = re.compile(r'<a\s+(?:id|name)="([^"]+)"\s*>\s*</a>')
 _TOKEN = re.compile(r"WMRANCHOR([0-9a-f]+)Z")
 _TABLE_ROW = re.compile(r"^\s*\|.*\|\s*$", re.MULTILINE)
@@ -51,16 +52,6 @@ def table_math_pipes(md: str) -> str:
     return _TABLE_ROW.sub(lambda m: _INLINE_MATH.sub(formula, m.group(0)), md)
 
 
-def tex_anchor_tokens(md: str) -> str:
-    """``<a id="eq-59"></a>`` (raw HTML, which the LaTeX writer drops) -> a plain-text token
-    that survives pandoc and becomes ``\\hypertarget`` in :func:`tex_anchor_targets`."""
-    return _ANCHOR.sub(lambda m: "WMRANCHOR" + m.group(1).encode().hex() + "Z", md)
-
-
-def tex_anchor_targets(tex: str) -> str:
-    return _TOKEN.sub(lambda m: r"\hypertarget{" + bytes.fromhex(m.group(1)).decode() + "}{}", tex)
-
-
 class Batch:
     """Markdown fragments collected, then converted by one pandoc call.
 
@@ -85,8 +76,8 @@ class Batch:
         """Queue ``md``; return the placeholder that :meth:`fill` replaces. ``inline``: drop the
         paragraph around a one-paragraph result (for table cells and captions)."""
         md = table_math_pipes(md)
-        if self.to == "latex":
-            md = tex_anchor_tokens(md)
+        if self.to == "latex":  # <a id="eq-59"></a>, which the LaTeX writer drops -> a token that survives pandoc
+            md = _ANCHOR.sub(lambda m: "WMRANCHOR" + m.group(1).encode().hex() + "Z", md)
         self._src.append(md)
         return f"\x00WMR{len(self._src) - 1}{'i' if inline else 'b'}\x00"
 
@@ -94,21 +85,18 @@ class Batch:
         if not shutil.which("pandoc"):
             raise BuildError("pandoc not found: run `make report` (it installs it) or apt-get install pandoc")
         src = "".join(f"{_SEP.format(i)}\n\n{s.strip()}\n\n" for i, s in enumerate(self._src))
-        args = ["pandoc", "-f", READER, "-t", "html5" if self.to == "html" else "latex", "--wrap=none"]
-        if self.to == "html":
-            args.append("--mathjax")
+        args = ["pandoc", "-f", READER, "-t", *_WRITER[self.to]]
         p = subprocess.run(args, input=src, capture_output=True, text=True, timeout=600, check=False)
         if p.returncode != 0:
             raise BuildError(f"pandoc failed (exit {p.returncode}): {p.stderr[-3000:]}")
-        parts = _SEP_RE[self.to].split("\n" + p.stdout)
-        # parts = [before, idx0, text0, idx1, text1, ...]
+        parts = _SEP_RE[self.to].split("\n" + p.stdout)  # [before, idx0, text0, idx1, text1, ...]
         out = [""] * len(self._src)
-        for i in range(1, len(parts) - 1, 2):
-            out[int(parts[i])] = parts[i + 1].strip("\n")
+        for i, text in zip(parts[1::2], parts[2::2]):
+            out[int(i)] = text.strip("\n")
         if len(parts) != 2 * len(self._src) + 1:
             raise BuildError(f"pandoc output could not be split back into {len(self._src)} fragments")
-        if self.to == "latex":
-            out = [tex_anchor_targets(o) for o in out]
+        if self.to == "latex":  # the tokens of add() -> \hypertarget
+            out = [_TOKEN.sub(lambda m: r"\hypertarget{" + bytes.fromhex(m.group(1)).decode() + "}{}", o) for o in out]
         self._out = [self.post(o) for o in out] if self.post else out
 
     def fill(self, text: str) -> str:
