@@ -37,19 +37,16 @@ def _run(cmd: str, paths: list[Path], reads: list[Path]) -> None:
     else:
         import nbformat
 
+        from . import assemble, html, pdf
+
         out = paths[0] if cmd == "assemble" else paths[1]
         for p in [out.with_suffix(x) for x in (".ipynb", ".html", ".pdf")] if cmd == "assemble" else [out]:
             p.unlink(missing_ok=True)
         t0 = time.perf_counter()
         if cmd == "assemble":
-            from .assemble import report_notebook
-
-            atomic_write(out, nbformat.writes(report_notebook(paths[1], paths[2], paths[3], paths[4:])))
+            atomic_write(out, nbformat.writes(assemble.report_notebook(paths[1], paths[2], paths[3], paths[4:])))
         else:
-            from .html import export_html
-            from .pdf import export_pdf
-
-            (export_html if cmd == "html" else export_pdf)(nbformat.read(paths[0], as_version=4), out)
+            (html.export_html if cmd == "html" else pdf.export_pdf)(nbformat.read(paths[0], as_version=4), out)
         say(cmd, f"{out.name} ({out.stat().st_size / 1e6:.2f} MB)", t0)
 
 

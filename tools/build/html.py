@@ -8,7 +8,6 @@ the npm tarball checked against its sha512), inlined gzip-compressed (the page s
 from __future__ import annotations
 
 import base64
-import functools
 import gzip
 import re
 from pathlib import Path
@@ -22,10 +21,10 @@ __all__ = ["broken_links", "export_html", "keep_punctuation", "mathjax_gz", "nav
 
 _HEADING = re.compile(r'<h([12])((?:\s+[a-z-]+="[^"]*")*)>(.*?)</h\1>', re.DOTALL)
 _ID = re.compile(r'(?<![\w-])id="([^"]+)"')
-_MATH_PUNCT = re.compile(r'([(\[]?)(<span class="math inline">[^<]*</span>)([,.;:!?)\]]*)')
+_MATH = r'<span class="math inline">[^<]*</span>'
+_MATH_PUNCT = re.compile(rf"[(\[]{_MATH}[,.;:!?)\]]*|{_MATH}[,.;:!?)\]]+")  # a formula with a bracket or punctuation
 
 
-@functools.lru_cache(maxsize=1)
 def mathjax_gz() -> str:
     """MathJax 3 ``tex-svg-full.js`` (every TeX extension, SVG glyphs: no font files) of the official
     release (:func:`tools.mathjax.bundle`), gzip (fixed mtime, so the bytes never change) and base64."""
@@ -68,28 +67,20 @@ def keep_punctuation(page: str) -> str:
     >>> keep_punctuation('(<span class="math inline">\\(x\\)</span>), and <span class="math inline">y</span> z')
     '<span class="nobr">(<span class="math inline">\\(x\\)</span>),</span> and <span class="math inline">y</span> z'
     """
-
-    def one(m):
-        return f'<span class="nobr">{m.group(0)}</span>' if m.group(1) or m.group(3) else m.group(0)
-
-    return _MATH_PUNCT.sub(one, page)
+    return _MATH_PUNCT.sub(r'<span class="nobr">\g<0></span>', page)
 
 
 def unique_ids(page: str) -> tuple[str, list[str]]:
     """Make every ``id="..."`` unique (the second ``x`` becomes ``x-2``); return the page and the
-    ids that were duplicated (a notebook that names one anchor twice)."""
+    ids that were duplicated, sorted (a notebook that names one anchor twice)."""
     seen: dict[str, int] = {}
-    dups: list[str] = []
 
     def one(m):
         i = m.group(1)
         seen[i] = seen.get(i, 0) + 1
-        if seen[i] == 1:
-            return m.group(0)
-        dups.append(i)
-        return f'id="{i}-{seen[i]}"'
+        return m.group(0) if seen[i] == 1 else f'id="{i}-{seen[i]}"'
 
-    return _ID.sub(one, page), dups
+    return _ID.sub(one, page), sorted(i for i, n in seen.items() if n > 1)
 
 
 def broken_links(page: str) -> list[str]:
@@ -106,8 +97,7 @@ def navigation(page: str) -> str:
     h1: dict[str, Any] | None = None
     for m in _HEADING.finditer(page):
         attrs, inner = m.group(2), m.group(3).strip()
-        hid = re.search(r'\bid="([^"]+)"', attrs)
-        if not hid:
+        if not (hid := re.search(r'\bid="([^"]+)"', attrs)):
             continue
         link = f'<a href="#{hid.group(1)}">{inner}</a>'
         node: dict[str, Any] = {"link": link, "kids": [], "part": 'class="part"' in attrs}
@@ -159,9 +149,8 @@ def export_html(nb, out: Path) -> None:
     body, _ = _exporter().from_notebook_node(prepared, resources=resources)
     body, dups = unique_ids(keep_punctuation(batch.fill(body)))
     if dups:
-        say("html", f"WARNING: ids defined more than once, renamed: {', '.join(sorted(set(dups)))}")
+        say("html", f"WARNING: ids defined more than once, renamed: {', '.join(dups)}")
     body = body.replace("<!--WMR-NAV-->", navigation(body), 1)
-    bad = broken_links(body)
-    if bad:
+    if bad := broken_links(body):
         say("html", f"WARNING: links to missing anchors: {', '.join(bad)}")
     atomic_write(out, body)
