@@ -16,6 +16,7 @@ line or two, Markdown only where no kernel is needed.
 
 from __future__ import annotations
 
+import hashlib
 import os
 import re
 import signal
@@ -157,9 +158,10 @@ def test_stamp_records_the_key_and_every_output(tmp_path):
     out.write_text("{}")
     (chapter / "f.svg").write_text("<svg/>")
     stamp = out.with_suffix(".stamp")
+    sha = {p: hashlib.sha256(p.read_bytes()).hexdigest() for p in (out, chapter / "f.svg")}
     stamp.write_text(
-        f'{{"key": "k", "outputs": {{"notebooks/01_a.ipynb": "{X._sha(out)}", '
-        f'"out/01_a/f.svg": "{X._sha(chapter / "f.svg")}"}}}}'
+        f'{{"key": "k", "outputs": {{"notebooks/01_a.ipynb": "{sha[out]}", '
+        f'"out/01_a/f.svg": "{sha[chapter / "f.svg"]}"}}}}'
     )
     assert X.up_to_date(stamp, "k", out) and not X.up_to_date(stamp, "k2", out)
     (chapter / "g.svg").write_text("<svg/>")  # a file it did not write

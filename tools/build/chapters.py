@@ -12,6 +12,8 @@ from __future__ import annotations
 import re
 from typing import Any
 
+from nbformat import from_dict, v4
+
 from . import typeset as ts
 
 __all__ = ["DROP_TAGS", "FIGURE_METADATA", "KEEP_MIMES", "chapter_cells", "findings_cells", "title"]
@@ -67,8 +69,6 @@ def _figure_link(keys: list[str], figures: dict[str, dict[str, Any]]) -> str:
 
 def chapter_cells(nb, figures: dict[str, dict[str, Any]]) -> list:
     """The cells of one executed derivation chapter, as the report shows them."""
-    from nbformat import from_dict, v4
-
     out = []
     for c in nb.cells:
         tags = set(c.get("metadata", {}).get("tags", []))
@@ -95,8 +95,6 @@ def chapter_cells(nb, figures: dict[str, dict[str, Any]]) -> list:
 
 def findings_cells(nb, figures: dict[str, dict[str, Any]]) -> list:
     """The cells of the executed findings chapter: its prose, its computed outputs, its figures, its parts."""
-    from nbformat import from_dict, v4
-
     out = []
     for c in nb.cells:
         tags = set(c.get("metadata", {}).get("tags", []))

@@ -35,10 +35,6 @@ def _files(d: Path) -> list[Path]:
     return sorted(p for p in files if "__pycache__" not in p.parts and not p.name.startswith("."))
 
 
-def _sha(p: Path) -> str | None:
-    return hashlib.sha256(p.read_bytes()).hexdigest() if p.is_file() else None
-
-
 def key(nb: Path, root: Path = ROOT, reads: tuple[Path, ...] = ()) -> str:
     """What an executed notebook depends on: its bytes, ``root/wmr/``, ``root/edition/``, ``reads`` (folders
     or files), Python, this file."""
@@ -57,7 +53,8 @@ def outputs(out: Path) -> list[Path]:
 
 def _hashes(out: Path) -> dict[str, str | None]:
     """``{path relative to the build directory: SHA-256}`` of the outputs (a copied build stays valid)."""
-    return {p.relative_to(out.parent.parent).as_posix(): _sha(p) for p in outputs(out)}
+    sha = {p: hashlib.sha256(p.read_bytes()).hexdigest() if p.is_file() else None for p in outputs(out)}
+    return {p.relative_to(out.parent.parent).as_posix(): h for p, h in sha.items()}
 
 
 def up_to_date(stamp: Path, k: str, out: Path) -> bool:

@@ -13,6 +13,7 @@ import re
 from pathlib import Path
 from typing import Any
 
+from .. import mathjax
 from . import BuildError, atomic_write, say
 from . import typeset as ts
 from .markup import TEMPLATES, Batch
@@ -28,8 +29,6 @@ _MATH_PUNCT = re.compile(rf"[(\[]{_MATH}[,.;:!?)\]]*|{_MATH}[,.;:!?)\]]+")  # a 
 def mathjax_gz() -> str:
     """MathJax 3 ``tex-svg-full.js`` (every TeX extension, SVG glyphs: no font files) of the official
     release (:func:`tools.mathjax.bundle`), gzip (fixed mtime, so the bytes never change) and base64."""
-    from tools import mathjax
-
     try:
         js = mathjax.bundle("tex-svg-full.js").read_bytes()
     except mathjax.MathJaxError as e:

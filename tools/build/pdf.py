@@ -159,8 +159,7 @@ def export_pdf(nb, out: Path) -> list[str]:
     tmp.mkdir(parents=True)
     with tempfile.TemporaryDirectory(dir=tmp) as name:
         d = Path(name)
-        (d / "report.tex").write_text(tex, encoding="utf-8")
-        for fname, data in files.items():
+        for fname, data in {"report.tex": tex.encode("utf-8"), **files}.items():
             (d / fname).write_bytes(data)
         log = _run_xelatex(d, int(nb.metadata["wmr"]["epoch"]))
         atomic_write(out, fix_id((d / "report.pdf").read_bytes()))

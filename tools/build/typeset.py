@@ -39,9 +39,7 @@ def read_figures(figdir: Path) -> dict[str, dict[str, Any]]:
 def _raw(kind: str, **data):
     import nbformat
 
-    c = nbformat.v4.new_raw_cell("")
-    c.metadata["wmr"] = {"kind": kind, **data}
-    return c
+    return nbformat.v4.new_raw_cell("", metadata={"wmr": {"kind": kind, **data}})
 
 
 def figure(meta: dict[str, Any]):
