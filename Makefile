@@ -2,8 +2,9 @@
 #
 #   make test      set up .venv + TeX, build the report, the student edition and the lessons' grades
 #                  through nbgrader (each cached), run pytest
-#                  (two workers; tests/ and tests/edition/), ruff (check, format --check) and mypy, make release and make docs
-#                  (each cached), and fail if the build modified files that git tracks
+#                  (two workers; tests/, and tests/edition/ unless it passed on exactly this tree:
+#                  tools/testcache.py, FRESH=1 runs it), ruff (check, format --check) and mypy, make release
+#                  and make docs (each cached), and fail if the build modified files that git tracks
 #   make report    build/report.html (self-contained, offline math) + build/report.pdf
 #   make docs      build/docs/html: the API reference and the user guide
 #   make release   the sdist and the wheel, the wheel tested in a fresh venv outside the repository
@@ -193,11 +194,13 @@ $(B)/assignments/grades/%.json: $(NB)/%.ipynb FORCE
 	@$(PDEATH) $(VPY) -m tools.grades $< $@
 
 # ------------------------------------------------------------------------------------- the tests
-test: venv tex browser ## build (cached), pytest -n 2 (tests/ and tests/edition/), ruff, mypy, release, docs; fail if the build modified tracked files
+test: venv tex browser ## build (cached), pytest -n 2 (tests/; tests/edition/ unless it passed on this exact tree: FRESH=1 runs it), ruff, mypy, release, docs; fail if the build modified tracked files
 	@mkdir -p $(B); $(GIT_STATE) > $(B)/git-before
 	@$(LOCK) exec $(SUB) $(TEST_BUILD)
-	@rc=0; \
-	cd $(WMR_ROOT) && $(PDEATH) $(VPY) -m pytest -n 2 --dist worksteal $(PYTEST_ARGS) || rc=$$?; \
+	@rc=0; cd $(WMR_ROOT); key=$$($(VPY) -m tools.testcache key $(PYTEST_ARGS)) || exit 1; only=; \
+	if [ -z "$(FRESH)" ] && $(VPY) -m tools.testcache check "$$key"; then only=--ignore=tests/edition; fi; \
+	$(PDEATH) $(VPY) -m pytest -n 2 --dist worksteal $$only $(PYTEST_ARGS) || rc=$$?; \
+	if [ $$rc = 5 ] && [ -n "$$only" ]; then rc=0; fi; tests=$$rc; \
 	if [ -n "$(LINTED)" ]; then \
 	  echo "[lint] ruff check, ruff format --check, mypy: $(notdir $(LINTED))"; \
 	  $(VPY) -m ruff check --quiet $(LINTED) || rc=1; \
@@ -211,7 +214,8 @@ test: venv tex browser ## build (cached), pytest -n 2 (tests/ and tests/edition/
 	if ! $(GIT_STATE) | diff $(B)/git-before - > $(B)/git-changed; then \
 	  echo "[git] FAILED: the build modified files that git tracks (or left new ones it does not ignore):"; \
 	  sed -n 's/^[<>] ...//p' $(B)/git-changed | cut -d' ' -f1 | sort -u | sed 's/^/  /'; rc=1; \
-	else echo "[git] the build left git status as it found it"; fi; \
+	else echo "[git] the build left git status as it found it"; \
+	  if [ $$tests = 0 ] && [ -z "$$only" ]; then $(VPY) -m tools.testcache stamp "$$key"; fi; fi; \
 	exit $$rc
 
 release: venv ## sdist + wheel; the wheel in a fresh venv outside the repo runs the library tests, the CLI, the README (cached)
