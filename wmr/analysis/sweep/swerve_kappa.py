@@ -1,0 +1,409 @@
+r"""The fused kernel of a drivable sweep of :math:`\kappa(\mathbf J)`: swerve-like robots, straight from the twists.
+
+For a robot whose every unit is steered, rolls in its plane and has one rate (3 to 6 centred wheels:
+a swerve drive), the coordinated steering angles of a twist :math:`\mathbf t = (\dot\psi, \dot x, \dot y)`
+(:func:`wmr.steering_angles`) set each wheel plane along its mount point's velocity
+:math:`\dot{\mathbf p}_i = \dot{\mathbf c} + \dot\psi\mathbf E\mathbf d_i` (2).  Column i of
+:math:`\mathbf J = \mathbf J_{L1}^T\mathbf J_2` (56) is then
+
+.. math:: \mathbf h_i = \cos\beta_i\,\mathbf a_i + \sin\beta_i\,\mathbf b_i
+          = \frac{C_i\,\mathbf a_i + S_i\,\mathbf b_i}{\sqrt{C_i^2 + S_i^2}},\qquad
+          S_i = \dot p_{ix} = \dot x - \dot\psi d_{iy},\quad C_i = -\dot p_{iy} = -\dot y - \dot\psi d_{ix},
+
+with the constant vectors :math:`\mathbf a_i = \mathbf J_{L1,i}^T\mathbf L_i`,
+:math:`\mathbf b_i = \mathbf J_{L1,i}^T\mathbf E\mathbf L_i` (3,) of the unit's block terms, so no angle is
+ever formed.  The condition number (30) comes from :math:`\mathbf G = \mathbf J\mathbf J^T` (3 x 3):
+
+* :math:`\mathbf G = \sum_i \tfrac12(\mathbf a_i\mathbf a_i^T + \mathbf b_i\mathbf b_i^T)
+  + \gamma_i\,\tfrac12(\mathbf a_i\mathbf a_i^T - \mathbf b_i\mathbf b_i^T)
+  + \sigma_i\,\tfrac12(\mathbf a_i\mathbf b_i^T + \mathbf b_i\mathbf a_i^T)` with
+  :math:`\gamma_i = \cos 2\beta_i = (C_i^2 - S_i^2)/n_i`, :math:`\sigma_i = \sin 2\beta_i = 2C_iS_i/n_i`,
+  :math:`n_i = C_i^2 + S_i^2`: a constant plus a (6 x 2w) matrix times :math:`(\gamma, \sigma)`;
+  its two largest eigenvalues :math:`\lambda_1\ge\lambda_2` by the trigonometric solution of the cubic
+  (:func:`wmr.analysis._closed.condition_number_3x3`);
+* :math:`\det\mathbf G = \sum_S(\det\mathbf J_S)^2` over the 3-column subsets S (Cauchy-Binet), and
+  :math:`\det[C_i\mathbf a_i + S_i\mathbf b_i]_{i\in S}` is a cubic form in the twist that vanishes
+  in translation (:math:`\dot\psi = 0`: every wheel parallel, the last two rows of
+  :math:`\mathbf J` proportional), so it is :math:`\dot\psi\,Q_S(\mathbf t)` with a quadratic form
+  :math:`Q_S` whose six coefficients are computed once per robot.  Hence
+
+  .. math:: \det\mathbf G = \dot\psi^2\sum_S Q_S(\mathbf t)^2\prod_{i\notin S} n_i \Big/ \prod_i n_i,
+            \qquad \kappa = \sqrt{\lambda_1/\lambda_3} = \lambda_1\sqrt{\lambda_2/\det\mathbf G},
+
+  exact to full relative accuracy however close the twist is to a translation (where
+  :math:`\kappa\to\infty` like :math:`1/\dot\psi`).
+
+Everything is made dimensionless first (lengths divided by the largest mount coordinate
+:math:`\ell`, the twist by :math:`s = \max(|\dot x|, |\dot y|) + |\dot\psi|\ell`, the columns by
+their largest size: :math:`\kappa` changes under none of these), so the kernel takes the same
+decisions in every unit.  Each member carries a first-order bound of its relative error (the
+rounding of :math:`\mathbf G`, amplified where two eigenvalues nearly meet, and of the
+:math:`Q_S`); a member is **accepted** when that bound is within ``KAPPA_ERROR eps kappa`` or
+:data:`~wmr.analysis._closed.ACCURACY`, :math:`\kappa < 1/(2\,\mathrm{TOL})` (so the SVD rule would
+not call it singular) and no wheel is still (:math:`\|\dot{\mathbf p}_i\| \le 2\,\mathrm{TOL}\,s`:
+its angle is the caller's).  The others are left to the general kernels, so every decision is
+theirs.  Chunks of :data:`CHUNK` twists keep the temporaries in the core's cache; no Python runs
+per configuration.
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+from fractions import Fraction
+
+import numpy as np
+
+from ...model.backend import NUMERIC
+from ...model.tolerance import TOL
+from .._closed import ACCURACY, KAPPA_ERROR
+
+__all__ = ["SwerveKappa", "swerve_like", "CHUNK"]
+
+#: Twists per chunk of the kernel (about 30 temporaries of 8 * CHUNK bytes: within a 1 MB L2 cache).
+CHUNK = 4096
+_EPS = np.finfo(float).eps
+_UPPER = ((0, 0), (0, 1), (0, 2), (1, 1), (1, 2), (2, 2))  # entries of a symmetric 3 x 3 matrix
+_SQRT3 = math.sqrt(3.0)
+
+
+def swerve_like(robot) -> bool:
+    """True when :class:`SwerveKappa` applies: 3 to 6 units, each steered, rolling in its plane, with one rate.
+
+    Parameters
+    ----------
+    robot : Robot
+
+    Returns
+    -------
+    bool
+    """
+    return 3 <= robot.w <= 6 and all(
+        u.steered and u.rolls_in_plane and u.n_rates == 1 and u.steering_row() is None for u in robot.wheels
+    )
+
+
+def _cubic_form(K3):
+    r"""The cubic form :math:`\det[\mathbf K_1\mathbf t, \mathbf K_2\mathbf t, \mathbf K_3\mathbf t]` by monomial, exactly.
+
+    Each of the 27 terms :math:`t_x t_y t_z \det[\mathbf K_1\mathbf e_x, \mathbf K_2\mathbf e_y,
+    \mathbf K_3\mathbf e_z]` is computed in rational arithmetic from the floating-point entries,
+    so the coefficients are exact (rounded once) and those that vanish in exact arithmetic are 0.
+
+    Parameters
+    ----------
+    K3 : list of three numpy.ndarray (3, 3)
+
+    Returns
+    -------
+    dict
+        Sorted exponent triple ``(x, y, z)`` -> coefficient (a :class:`fractions.Fraction`).
+    """
+    F = [[[Fraction(float(v)) for v in row] for row in Ki] for Ki in K3]
+    out: dict[tuple[int, ...], Fraction] = {}
+    for x, y, z in itertools.product(range(3), repeat=3):
+        c = [[F[0][r][x], F[1][r][y], F[2][r][z]] for r in range(3)]
+        det = (
+            c[0][0] * (c[1][1] * c[2][2] - c[1][2] * c[2][1])
+            - c[0][1] * (c[1][0] * c[2][2] - c[1][2] * c[2][0])
+            + c[0][2] * (c[1][0] * c[2][1] - c[1][1] * c[2][0])
+        )
+        key = tuple(sorted((x, y, z)))
+        out[key] = out.get(key, Fraction(0)) + det
+    return out
+
+
+class SwerveKappa:
+    r""":math:`\kappa(\mathbf J)` at the coordinated steering angles of twists, for one swerve-like robot and L.
+
+    See the module notes.  The constants (the vectors :math:`\mathbf a_i, \mathbf b_i`, the map from
+    :math:`(\gamma, \sigma)` to :math:`\mathbf G`, the coefficients of the :math:`Q_S`) are computed
+    here, once.
+
+    Parameters
+    ----------
+    robot : Robot
+        A numeric swerve-like robot (:func:`swerve_like`).
+    L : float
+        Characteristic length of :math:`\mathbf J_{L1}`.
+
+    Raises
+    ------
+    ValueError
+        If the robot is not swerve-like, or its :math:`\det\mathbf J_S` do not vanish in translation
+        (then no fused kernel applies).
+    """
+
+    def __init__(self, robot, L):
+        if not swerve_like(robot):
+            raise ValueError(f"no fused kappa(J) kernel for {robot!r}: not swerve-like")
+        w = robot.w
+        JL1 = robot.J1(L=L)
+        d = np.asarray(robot.mount_points, dtype=float)
+        ell = float(np.abs(d).max())
+        a, b = np.empty((w, 3)), np.empty((w, 3))
+        for i, u in enumerate(robot.wheels):
+            Li, ELi = u.block_terms(NUMERIC)
+            a[i] = JL1[2 * i : 2 * i + 2].T @ np.asarray(Li, dtype=float)[:, 0]
+            b[i] = JL1[2 * i : 2 * i + 2].T @ np.asarray(ELi, dtype=float)[:, 0]
+        size = max(float(np.abs(a).max()), float(np.abs(b).max()))
+        a, b = a / size, b / size  # kappa does not change when J is scaled
+        e = d / ell if ell > 0 else d
+        # C_i and S_i as linear forms in the dimensionless twist (psi ell, x_dot, y_dot) / s
+        lin = np.zeros((2 * w, 3))
+        lin[:w, 0], lin[:w, 2] = -e[:, 0], -1.0  # C_i = -y_dot - psi d_ix
+        lin[w:, 0], lin[w:, 1] = -e[:, 1], 1.0  # S_i = x_dot - psi d_iy
+        # G (upper entries) = const + coef @ (gamma; sigma)
+        const, coef = np.zeros(6), np.zeros((6, 2 * w))
+        for m, (j, k) in enumerate(_UPPER):
+            const[m] = 0.5 * float(np.sum(a[:, j] * a[:, k] + b[:, j] * b[:, k]))
+            coef[m, :w] = 0.5 * (a[:, j] * a[:, k] - b[:, j] * b[:, k])
+            coef[m, w:] = 0.5 * (a[:, j] * b[:, k] + b[:, j] * a[:, k])
+        # K_i t = C_i a_i + S_i b_i: K_i = a_i lin_C,i^T + b_i lin_S,i^T (3 x 3)
+        K = a[:, :, None] * lin[:w, None, :] + b[:, :, None] * lin[w:, None, :]
+        subsets = list(itertools.combinations(range(w), 3))
+        qcoef = np.zeros((len(subsets), 6))
+        for s, S in enumerate(subsets):
+            cubic = _cubic_form([K[i] for i in S])
+            # in translation J is singular: the coefficients of the monomials without psi vanish
+            if any(cubic[m] for m in cubic if m[0] != 0):
+                raise ValueError(f"no fused kappa(J) kernel for {robot!r}: det J does not vanish in translation")
+            for m, (j, k) in enumerate(_UPPER):
+                qcoef[s, m] = float(cubic.get((0, j, k), 0))
+        comp = [tuple(i for i in range(w) if i not in S) for S in subsets]
+        self.w, self.ell, self.lin = w, ell, lin
+        self.const, self.coef = const[:, None], coef
+        self.qcoef, self.qabs = qcoef, np.abs(qcoef)
+        self.comp = comp
+        # rounding of G: entry m is a sum of 2w + 1 terms of at most |const_m| + sum_j |coef_mj| (the gamma
+        # and sigma have |.| <= 1 and a few eps of error), so |dG_m| <= (2w + 6) eps size_m and the eigenvalues
+        # move by at most ||dG||_F
+        size = np.abs(const) + np.abs(coef).sum(axis=1)
+        size[[1, 2, 4]] *= math.sqrt(2.0)  # the off-diagonal entries count twice in ||.||_F
+        self.g_error = (2 * w + 6) * _EPS * float(np.linalg.norm(size))
+
+    def __call__(self, twist, out, redo):
+        r"""Evaluate the kernel on ``twist (k, 3)``: :math:`\kappa` into ``out (k,)``, ``redo (k,)`` True where not accepted.
+
+        Parameters
+        ----------
+        twist : numpy.ndarray (k, 3)
+            Finite twists (any layout; entry-major is fastest).
+        out : numpy.ndarray (k,)
+            Receives the condition numbers (anything where ``redo``).
+        redo : numpy.ndarray of bool (k,)
+            Receives the members to evaluate with the general kernels.
+        """
+        N = twist.shape[0]
+        m = min(CHUNK, N)
+        # one workspace for every chunk of the call (no allocation per chunk: large temporaries would be
+        # mapped and faulted in afresh each time)
+        w, nS = self.w, self.qcoef.shape[0]
+        ws = _Workspace(np.empty((6 * w + 15 + 2 * nS + _SCRATCH, m)), np.empty((2, m), dtype=bool), w, nS)
+        with np.errstate(all="ignore"):
+            for lo in range(0, N, m):
+                hi = min(lo + m, N)
+                self._chunk(twist[lo:hi], out[lo:hi], redo[lo:hi], ws.view(hi - lo))
+
+    def _chunk(self, tw, out, redo, ws):
+        w = self.w
+        psi, vx, vy = tw[:, 0], tw[:, 1], tw[:, 2]
+        T, CS, n, inv, gs, G, M, Q, Qa = ws.T, ws.CS, ws.n, ws.inv, ws.gs, ws.G, ws.M, ws.Q, ws.Qa
+        v = ws.scratch  # vectors v[0], v[1], ...
+        # the dimensionless twist t / s, s = max(|x_dot|, |y_dot|) + |psi| ell (the scale of steering_angles)
+        s = v[0]
+        np.abs(vx, out=s)
+        np.abs(vy, out=T[1])
+        np.maximum(s, T[1], out=s)
+        np.abs(psi, out=T[0])
+        T[0] *= self.ell
+        s += T[0]
+        np.divide(self.ell, s, out=T[0])
+        T[0] *= psi
+        np.divide(vx, s, out=T[1])
+        np.divide(vy, s, out=T[2])
+        np.matmul(self.lin, T, out=CS)  # (2w, k): C_i then S_i
+        C, S = CS[:w], CS[w:]
+        gc, gsn = gs[:w], gs[w:]
+        np.multiply(C, C, out=gc)
+        np.multiply(S, S, out=n)
+        n += gc  # n_i = C_i^2 + S_i^2 = |p_i|^2 / s^2
+        gc *= 2.0
+        gc -= n  # C^2 - S^2
+        np.multiply(C, S, out=gsn)
+        gsn *= 2.0
+        np.divide(1.0, n, out=inv)
+        gc *= inv  # gamma_i = cos 2 beta_i
+        gsn *= inv  # sigma_i = sin 2 beta_i
+        still = ws.still  # a wheel (nearly) at the centre, or a zero or non-finite twist
+        np.min(n, axis=0, out=v[1])
+        np.greater(v[1], (2 * TOL) ** 2, out=still)
+        np.logical_not(still, out=still)
+        np.matmul(self.coef, gs, out=G)
+        G += self.const  # the upper entries of G = J J^T
+        # det G = psi^2 sum_S Q_S^2 prod_{i not in S} n_i / prod_i n_i
+        x, y, z = T
+        np.multiply(x, x, out=M[0])
+        np.multiply(x, y, out=M[1])
+        np.multiply(x, z, out=M[2])
+        np.multiply(y, y, out=M[3])
+        np.multiply(y, z, out=M[4])
+        np.multiply(z, z, out=M[5])
+        np.matmul(self.qcoef, M, out=Q)
+        np.abs(M, out=M)
+        np.matmul(self.qabs, M, out=Qa)
+        np.abs(Q, out=Q)
+        Qa *= Q
+        Q *= Q
+        if w > 3:
+            f = v[2]
+            for k, rest in enumerate(self.comp):
+                if len(rest) == 1:
+                    f = n[rest[0]]
+                else:
+                    np.multiply(n[rest[0]], n[rest[1]], out=f)
+                    for i in rest[2:]:
+                        f *= n[i]
+                Q[k] *= f
+                Qa[k] *= f
+        R, Ra, prod = v[3], v[4], v[5]
+        np.sum(Q, axis=0, out=R)
+        np.sum(Qa, axis=0, out=Ra)
+        np.prod(n, axis=0, out=prod)
+        # relative error of det G: 2 * 8 eps sum_S |Q_S| (|q_S| . |M|) ... / R (each Q_S a 6-term dot
+        # product of exact coefficients and rounded monomials), plus the products and quotients
+        det_rel = Ra
+        det_rel /= R
+        det_rel *= 16 * _EPS
+        det_rel += (2 * w + 8) * _EPS
+        detG = v[6]
+        np.multiply(x, x, out=detG)
+        detG *= R
+        detG /= prod
+        # the two largest eigenvalues of G (the trigonometric solution of its characteristic cubic)
+        g00, g01, g02, g11, g12, g22 = G
+        q, b00, b11, b22, p2, t, p, det_b = v[7:15]
+        np.add(g00, g11, out=q)
+        q += g22
+        q /= 3.0
+        np.subtract(g00, q, out=b00)
+        np.subtract(g11, q, out=b11)
+        np.subtract(g22, q, out=b22)
+        np.multiply(g01, g01, out=p2)
+        np.multiply(g02, g02, out=t)
+        p2 += t
+        np.multiply(g12, g12, out=t)
+        p2 += t
+        p2 += p2  # 2 (g01^2 + g02^2 + g12^2)
+        np.multiply(b00, b00, out=t)
+        p2 += t
+        np.multiply(b11, b11, out=t)
+        p2 += t
+        np.multiply(b22, b22, out=t)
+        p2 += t
+        p2 /= 6.0  # tr B^2 / 6, B = G - q I
+        np.sqrt(p2, out=p)
+        np.multiply(b11, b22, out=det_b)  # det B by cofactors along the first row
+        np.multiply(g12, g12, out=t)
+        det_b -= t
+        det_b *= b00
+        u = v[15]
+        np.multiply(g01, b22, out=t)
+        np.multiply(g12, g02, out=u)
+        t -= u
+        t *= g01
+        det_b -= t
+        np.multiply(g01, g12, out=t)
+        np.multiply(b11, g02, out=u)
+        t -= u
+        t *= g02
+        det_b += t
+        den = t
+        np.multiply(p, p2, out=den)
+        den += den
+        np.maximum(den, 1e-300, out=den)
+        r = det_b
+        r /= den
+        np.clip(r, -1.0, 1.0, out=r)  # r = det B / (2 p^3)
+        # cos and sin of phi = arccos(r) / 3 in [0, pi/3], through tan(phi / 2)
+        th, h, c = v[16], v[17], v[18]
+        np.arccos(r, out=th)
+        th /= 6.0
+        np.tan(th, out=th)
+        np.multiply(th, th, out=h)
+        h += 1.0
+        np.divide(2.0, h, out=h)
+        np.subtract(h, 1.0, out=c)  # cos phi
+        th *= h  # sin phi
+        lam1, lam2 = v[19], v[20]
+        np.multiply(p, c, out=lam1)
+        lam1 += lam1
+        lam1 += q  # q + 2 p cos(phi)
+        th *= _SQRT3
+        th -= c
+        np.multiply(th, p, out=lam2)
+        lam2 += q  # q + 2 p cos(phi - 2 pi / 3)
+        kappa = out  # lam1 sqrt(lam2 / det G)
+        np.divide(lam2, detG, out=kappa)
+        np.sqrt(kappa, out=kappa)
+        kappa *= lam1
+        # first-order error bound: E (1/lam1 + 1/lam2) / 2 + det_rel / 2, with the eigenvalues' error
+        # E = e + min(2p, e / sqrt(1 - r^2)) (amplified where two eigenvalues nearly meet)
+        E = r
+        np.multiply(r, r, out=E)
+        np.subtract(1.0, E, out=E)
+        np.maximum(E, 1e-300, out=E)
+        np.sqrt(E, out=E)
+        np.divide(self.g_error, E, out=E)
+        p += p
+        np.minimum(E, p, out=E)
+        E += self.g_error
+        bound = h
+        np.divide(1.0, lam1, out=bound)
+        np.divide(1.0, lam2, out=u)
+        bound += u
+        bound *= E
+        bound += det_rel
+        bound += bound  # 4 * bound / 2
+        limit = u
+        np.multiply(kappa, KAPPA_ERROR * _EPS, out=limit)
+        np.maximum(limit, ACCURACY, out=limit)
+        ok, bad = redo, ws.bad
+        np.less_equal(bound, limit, out=ok)
+        np.multiply(kappa, 2 * TOL, out=u)
+        np.less(u, 1.0, out=bad)  # sigma_3 > 2 TOL sigma_1: not singular by the SVD rule either
+        ok &= bad
+        np.greater(lam2, 0.0, out=bad)
+        ok &= bad
+        np.isfinite(kappa, out=bad)
+        ok &= bad
+        np.greater(prod, 1e-250, out=bad)
+        ok &= bad
+        np.greater(R, 1e-250, out=bad)
+        ok &= bad
+        np.logical_not(still, out=bad)
+        ok &= bad
+        np.logical_not(ok, out=redo)
+
+
+_SCRATCH = 21
+
+
+class _Workspace:
+    """The preallocated temporaries of :meth:`SwerveKappa._chunk`: named rows of one array."""
+
+    def __init__(self, V, B, w, nS):
+        self.V, self.B, self.w, self.nS = V, B, w, nS
+
+    def view(self, k):
+        """The workspace for a chunk of ``k`` twists (views of the first ``k`` columns)."""
+        V, w, nS = self.V[:, :k], self.w, self.nS
+        ws = _Workspace(V, self.B[:, :k], w, nS)
+        rows = iter(np.cumsum([0, 3, 2 * w, w, w, 2 * w, 6, 6, nS, nS, _SCRATCH]).tolist())
+        a = next(rows)
+        for name in ("T", "CS", "n", "inv", "gs", "G", "M", "Q", "Qa", "scratch"):
+            b = next(rows)
+            setattr(ws, name, V[a:b])
+            a = b
+        ws.still, ws.bad = ws.B[0], ws.B[1]
+        return ws
