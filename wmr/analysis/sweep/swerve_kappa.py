@@ -236,8 +236,11 @@ class SwerveKappa:
         gc *= inv  # gamma_i = cos 2 beta_i
         gsn *= inv  # sigma_i = sin 2 beta_i
         still = ws.still  # a wheel (nearly) at the centre, or a zero or non-finite twist
-        np.min(n, axis=0, out=v[1])
-        np.greater(v[1], (2 * TOL) ** 2, out=still)
+        lo = v[1]
+        np.minimum(n[0], n[1], out=lo)
+        for i in range(2, w):
+            np.minimum(lo, n[i], out=lo)
+        np.greater(lo, (2 * TOL) ** 2, out=still)
         np.logical_not(still, out=still)
         np.matmul(self.coef, gs, out=G)
         G += self.const  # the upper entries of G = J J^T
@@ -267,9 +270,10 @@ class SwerveKappa:
                 Q[k] *= f
                 Qa[k] *= f
         R, Ra, prod = v[3], v[4], v[5]
-        np.sum(Q, axis=0, out=R)
-        np.sum(Qa, axis=0, out=Ra)
-        np.prod(n, axis=0, out=prod)
+        for acc, rows, op in ((R, Q, np.add), (Ra, Qa, np.add), (prod, n, np.multiply)):
+            op(rows[0], rows[1], out=acc)  # row by row: faster than a reduction over the first axis
+            for row in rows[2:]:
+                op(acc, row, out=acc)
         # relative error of det G: 2 * 8 eps sum_S |Q_S| (|q_S| . |M|) ... / R (each Q_S a 6-term dot
         # product of exact coefficients and rounded monomials), plus the products and quotients
         det_rel = Ra
