@@ -65,6 +65,7 @@ CHUNK = 4096
 _EPS = np.finfo(float).eps
 _UPPER = ((0, 0), (0, 1), (0, 2), (1, 1), (1, 2), (2, 2))  # entries of a symmetric 3 x 3 matrix
 _SQRT3 = math.sqrt(3.0)
+_MARGIN = 1.5  # on a first-order worst-case error bound
 
 
 def swerve_like(robot) -> bool:
@@ -351,8 +352,9 @@ class SwerveKappa:
         np.divide(lam2, detG, out=kappa)
         np.sqrt(kappa, out=kappa)
         kappa *= lam1
-        # first-order error bound: E (1/lam1 + 1/lam2) / 2 + det_rel / 2, with the eigenvalues' error
-        # E = e + min(2p, e / sqrt(1 - r^2)) (amplified where two eigenvalues nearly meet)
+        # first-order error bound of kappa: E (1/lam1 + 1/lam2) / 2 + det_rel / 2, with the eigenvalues' error
+        # E = e + min(2p, e / sqrt(1 - r^2)) (amplified where two eigenvalues nearly meet); every part is a
+        # worst-case bound, so a margin of 1.5 covers the neglected second order
         E = r
         np.multiply(r, r, out=E)
         np.subtract(1.0, E, out=E)
@@ -368,7 +370,7 @@ class SwerveKappa:
         bound += u
         bound *= E
         bound += det_rel
-        bound += bound  # 4 * bound / 2
+        bound *= _MARGIN / 2
         limit = u
         np.multiply(kappa, KAPPA_ERROR * _EPS, out=limit)
         np.maximum(limit, ACCURACY, out=limit)
@@ -388,6 +390,26 @@ class SwerveKappa:
         np.logical_not(still, out=bad)
         ok &= bad
         np.logical_not(ok, out=redo)
+        # where two eigenvalues nearly meet the cubic's solution amplifies the rounding of G: take those
+        # members' eigenvalues from LAPACK (backward stable, error <= 8 eps lam1, no amplification) instead
+        again = np.flatnonzero(redo & ~still & (lam2 > 0) & (R > 1e-250) & (prod > 1e-250))
+        if again.size:
+            self._again(again, G, det_rel, detG, out, redo)
+
+    def _again(self, rows, G, det_rel, detG, out, redo):
+        """Members ``rows`` of a chunk again, with the two largest eigenvalues of G from ``numpy.linalg.eigvalsh``."""
+        g = G[:, rows]
+        A = np.empty((rows.size, 3, 3))
+        for m, (j, k) in enumerate(_UPPER):
+            A[:, j, k] = A[:, k, j] = g[m]
+        lam = np.linalg.eigvalsh(A)
+        lam1, lam2 = lam[:, 2], lam[:, 1]
+        kappa = lam1 * np.sqrt(lam2 / detG[rows])
+        bound = (_MARGIN / 2) * ((self.g_error + 8 * _EPS * lam1) * (1.0 / lam1 + 1.0 / lam2) + det_rel[rows])
+        ok = (bound <= np.maximum(kappa * (KAPPA_ERROR * _EPS), ACCURACY)) & (kappa * (2 * TOL) < 1.0)
+        ok &= (lam2 > 0) & np.isfinite(kappa)
+        out[rows] = kappa
+        redo[rows] = ~ok
 
 
 _SCRATCH = 21
