@@ -56,16 +56,14 @@ import numpy as np
 
 from ...model.backend import NUMERIC
 from ...model.tolerance import TOL
-from .._closed import ACCURACY, KAPPA_ERROR
+from .gram_kappa import SCRATCH, kappa_by_lapack, kappa_from_gram
+from .gram_kappa import UPPER as _UPPER
 
 __all__ = ["SwerveKappa", "swerve_like", "CHUNK"]
 
 #: Twists per chunk of the kernel (about 30 temporaries of 8 * CHUNK bytes: within a 1 MB L2 cache).
 CHUNK = 4096
 _EPS = np.finfo(float).eps
-_UPPER = ((0, 0), (0, 1), (0, 2), (1, 1), (1, 2), (2, 2))  # entries of a symmetric 3 x 3 matrix
-_SQRT3 = math.sqrt(3.0)
-_MARGIN = 1.5  # on a first-order worst-case error bound
 
 
 def swerve_like(robot) -> bool:
@@ -285,104 +283,8 @@ class SwerveKappa:
         np.multiply(x, x, out=detG)
         detG *= R
         detG /= prod
-        # the two largest eigenvalues of G (the trigonometric solution of its characteristic cubic)
-        g00, g01, g02, g11, g12, g22 = G
-        q, b00, b11, b22, p2, t, p, det_b = v[7:15]
-        np.add(g00, g11, out=q)
-        q += g22
-        q /= 3.0
-        np.subtract(g00, q, out=b00)
-        np.subtract(g11, q, out=b11)
-        np.subtract(g22, q, out=b22)
-        np.multiply(g01, g01, out=p2)
-        np.multiply(g02, g02, out=t)
-        p2 += t
-        np.multiply(g12, g12, out=t)
-        p2 += t
-        p2 += p2  # 2 (g01^2 + g02^2 + g12^2)
-        np.multiply(b00, b00, out=t)
-        p2 += t
-        np.multiply(b11, b11, out=t)
-        p2 += t
-        np.multiply(b22, b22, out=t)
-        p2 += t
-        p2 /= 6.0  # tr B^2 / 6, B = G - q I
-        np.sqrt(p2, out=p)
-        np.multiply(b11, b22, out=det_b)  # det B by cofactors along the first row
-        np.multiply(g12, g12, out=t)
-        det_b -= t
-        det_b *= b00
-        u = v[15]
-        np.multiply(g01, b22, out=t)
-        np.multiply(g12, g02, out=u)
-        t -= u
-        t *= g01
-        det_b -= t
-        np.multiply(g01, g12, out=t)
-        np.multiply(b11, g02, out=u)
-        t -= u
-        t *= g02
-        det_b += t
-        den = t
-        np.multiply(p, p2, out=den)
-        den += den
-        np.maximum(den, 1e-300, out=den)
-        r = det_b
-        r /= den
-        np.clip(r, -1.0, 1.0, out=r)  # r = det B / (2 p^3)
-        # cos and sin of phi = arccos(r) / 3 in [0, pi/3], through tan(phi / 2)
-        th, h, c = v[16], v[17], v[18]
-        np.arccos(r, out=th)
-        th /= 6.0
-        np.tan(th, out=th)
-        np.multiply(th, th, out=h)
-        h += 1.0
-        np.divide(2.0, h, out=h)
-        np.subtract(h, 1.0, out=c)  # cos phi
-        th *= h  # sin phi
-        lam1, lam2 = v[19], v[20]
-        np.multiply(p, c, out=lam1)
-        lam1 += lam1
-        lam1 += q  # q + 2 p cos(phi)
-        th *= _SQRT3
-        th -= c
-        np.multiply(th, p, out=lam2)
-        lam2 += q  # q + 2 p cos(phi - 2 pi / 3)
-        kappa = out  # lam1 sqrt(lam2 / det G)
-        np.divide(lam2, detG, out=kappa)
-        np.sqrt(kappa, out=kappa)
-        kappa *= lam1
-        # first-order error bound of kappa: E (1/lam1 + 1/lam2) / 2 + det_rel / 2, with the eigenvalues' error
-        # E = e + min(2p, e / sqrt(1 - r^2)) (amplified where two eigenvalues nearly meet); every part is a
-        # worst-case bound, so a margin of 1.5 covers the neglected second order
-        E = r
-        np.multiply(r, r, out=E)
-        np.subtract(1.0, E, out=E)
-        np.maximum(E, 1e-300, out=E)
-        np.sqrt(E, out=E)
-        np.divide(self.g_error, E, out=E)
-        p += p
-        np.minimum(E, p, out=E)
-        E += self.g_error
-        bound = h
-        np.divide(1.0, lam1, out=bound)
-        np.divide(1.0, lam2, out=u)
-        bound += u
-        bound *= E
-        bound += det_rel
-        bound *= _MARGIN / 2
-        limit = u
-        np.multiply(kappa, KAPPA_ERROR * _EPS, out=limit)
-        np.maximum(limit, ACCURACY, out=limit)
         ok, bad = redo, ws.bad
-        np.less_equal(bound, limit, out=ok)
-        np.multiply(kappa, 2 * TOL, out=u)
-        np.less(u, 1.0, out=bad)  # sigma_3 > 2 TOL sigma_1: not singular by the SVD rule either
-        ok &= bad
-        np.greater(lam2, 0.0, out=bad)
-        ok &= bad
-        np.isfinite(kappa, out=bad)
-        ok &= bad
+        lam2 = kappa_from_gram(G, detG, det_rel, self.g_error, v[7:], out, ok, bad)
         np.greater(prod, 1e-250, out=bad)
         ok &= bad
         np.greater(R, 1e-250, out=bad)
@@ -390,46 +292,37 @@ class SwerveKappa:
         np.logical_not(still, out=bad)
         ok &= bad
         np.logical_not(ok, out=redo)
-        # where two eigenvalues nearly meet the cubic's solution amplifies the rounding of G: take those
-        # members' eigenvalues from LAPACK (backward stable, error <= 8 eps lam1, no amplification) instead
+        # where two eigenvalues nearly meet, the cubic's solution amplifies the rounding of G: those members
+        # get LAPACK's eigenvalues before the general kernels
         again = np.flatnonzero(redo & ~still & (lam2 > 0) & (R > 1e-250) & (prod > 1e-250))
         if again.size:
-            self._again(again, G, det_rel, detG, out, redo)
-
-    def _again(self, rows, G, det_rel, detG, out, redo):
-        """Members ``rows`` of a chunk again, with the two largest eigenvalues of G from ``numpy.linalg.eigvalsh``."""
-        g = G[:, rows]
-        A = np.empty((rows.size, 3, 3))
-        for m, (j, k) in enumerate(_UPPER):
-            A[:, j, k] = A[:, k, j] = g[m]
-        lam = np.linalg.eigvalsh(A)
-        lam1, lam2 = lam[:, 2], lam[:, 1]
-        kappa = lam1 * np.sqrt(lam2 / detG[rows])
-        bound = (_MARGIN / 2) * ((self.g_error + 8 * _EPS * lam1) * (1.0 / lam1 + 1.0 / lam2) + det_rel[rows])
-        ok = (bound <= np.maximum(kappa * (KAPPA_ERROR * _EPS), ACCURACY)) & (kappa * (2 * TOL) < 1.0)
-        ok &= (lam2 > 0) & np.isfinite(kappa)
-        out[rows] = kappa
-        redo[rows] = ~ok
+            out[again], ok_again = kappa_by_lapack(G[:, again], detG[again], det_rel[again], self.g_error)
+            redo[again] = ~ok_again
 
 
-_SCRATCH = 21
+_SCRATCH = 7 + SCRATCH
 
 
 class _Workspace:
-    """The preallocated temporaries of :meth:`SwerveKappa._chunk`: named rows of one array."""
+    """The preallocated temporaries of :meth:`SwerveKappa._chunk`: named rows of one array, for ``k`` twists.
 
-    def __init__(self, V, B, w, nS):
+    Parameters
+    ----------
+    V : numpy.ndarray (6 w + 15 + 2 nS + _SCRATCH, >= k)
+    B : numpy.ndarray of bool (2, >= k)
+    w, nS, k : int
+        Units, 3-subsets of the units, twists in the chunk.
+    """
+
+    def __init__(self, V, B, w, nS, k=None):
+        k = V.shape[1] if k is None else k
         self.V, self.B, self.w, self.nS = V, B, w, nS
+        a = np.cumsum([0, 3, 2 * w, w, w, 2 * w, 6, 6, nS, nS, _SCRATCH]).tolist()
+        self.T, self.CS, self.n, self.inv, self.gs, self.G, self.M, self.Q, self.Qa, self.scratch = (
+            V[a[j] : a[j + 1], :k] for j in range(10)
+        )
+        self.still, self.bad = B[0, :k], B[1, :k]
 
     def view(self, k):
         """The workspace for a chunk of ``k`` twists (views of the first ``k`` columns)."""
-        V, w, nS = self.V[:, :k], self.w, self.nS
-        ws = _Workspace(V, self.B[:, :k], w, nS)
-        rows = iter(np.cumsum([0, 3, 2 * w, w, w, 2 * w, 6, 6, nS, nS, _SCRATCH]).tolist())
-        a = next(rows)
-        for name in ("T", "CS", "n", "inv", "gs", "G", "M", "Q", "Qa", "scratch"):
-            b = next(rows)
-            setattr(ws, name, V[a:b])
-            a = b
-        ws.still, ws.bad = ws.B[0], ws.B[1]
-        return ws
+        return _Workspace(self.V, self.B, self.w, self.nS, k)
