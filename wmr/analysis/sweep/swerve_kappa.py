@@ -270,8 +270,8 @@ class SwerveKappa:
                 Qa[k] *= f
         R, Ra, prod = v[3], v[4], v[5]
         for acc, rows, op in ((R, Q, np.add), (Ra, Qa, np.add), (prod, n, np.multiply)):
-            op(rows[0], rows[1], out=acc)  # row by row: faster than a reduction over the first axis
-            for row in rows[2:]:
+            np.copyto(acc, rows[0])  # row by row: faster than a reduction over the first axis
+            for row in rows[1:]:
                 op(acc, row, out=acc)
         # relative error of det G: 2 * 8 eps sum_S |Q_S| (|q_S| . |M|) ... / R (each Q_S a 6-term dot
         # product of exact coefficients and rounded monomials), plus the products and quotients
