@@ -148,13 +148,10 @@ def kappa_from_gram(G, detG, det_rel, g_error, v, out, ok, bad):
     limit = u
     np.multiply(kappa, KAPPA_ERROR * _EPS, out=limit)
     np.maximum(limit, ACCURACY, out=limit)
+    # a nan kappa (lam2 < 0 or det G < 0) makes the limit nan; lam2 = 0 makes the bound inf; det G = 0
+    # makes kappa inf: none passes
     np.less_equal(bound, limit, out=ok)
-    np.multiply(kappa, 2 * TOL, out=u)
-    np.less(u, 1.0, out=bad)  # sigma_3 > 2 TOL sigma_1: not singular by the SVD rule either
-    ok &= bad
-    np.greater(lam2, 0.0, out=bad)
-    ok &= bad
-    np.isfinite(kappa, out=bad)
+    np.less(kappa, 0.5 / TOL, out=bad)  # sigma_3 > 2 TOL sigma_1: not singular by the SVD rule either
     ok &= bad
     return lam2
 

@@ -152,12 +152,13 @@ class SwerveKappa:
         lin = np.zeros((2 * w, 3))
         lin[:w, 0], lin[:w, 2] = -e[:, 0], -1.0  # C_i = -y_dot - psi d_ix
         lin[w:, 0], lin[w:, 1] = -e[:, 1], 1.0  # S_i = x_dot - psi d_iy
-        # G (upper entries) = const + coef @ (gamma; sigma)
-        const, coef = np.zeros(6), np.zeros((6, 2 * w))
+        # G (upper entries) = sum_i c_i^2 a_i a_i^T + c_i s_i (a_i b_i^T + b_i a_i^T) + (1 - c_i^2) b_i b_i^T
+        # = coef @ (c^2; c s; 1), c_i = cos beta_i, s_i = sin beta_i
+        coef = np.zeros((6, 2 * w + 1))
         for m, (j, k) in enumerate(_UPPER):
-            const[m] = 0.5 * float(np.sum(a[:, j] * a[:, k] + b[:, j] * b[:, k]))
-            coef[m, :w] = 0.5 * (a[:, j] * a[:, k] - b[:, j] * b[:, k])
-            coef[m, w:] = 0.5 * (a[:, j] * b[:, k] + b[:, j] * a[:, k])
+            coef[m, :w] = a[:, j] * a[:, k] - b[:, j] * b[:, k]
+            coef[m, w : 2 * w] = a[:, j] * b[:, k] + b[:, j] * a[:, k]
+            coef[m, 2 * w] = float(np.sum(b[:, j] * b[:, k]))
         # K_i t = C_i a_i + S_i b_i: K_i = a_i lin_C,i^T + b_i lin_S,i^T (3 x 3)
         K = a[:, :, None] * lin[:w, None, :] + b[:, :, None] * lin[w:, None, :]
         subsets = list(itertools.combinations(range(w), 3))
@@ -171,13 +172,13 @@ class SwerveKappa:
                 qcoef[s, m] = float(cubic.get((0, j, k), 0))
         comp = [tuple(i for i in range(w) if i not in S) for S in subsets]
         self.w, self.ell, self.lin = w, ell, lin
-        self.const, self.coef = const[:, None], coef
+        self.coef = coef
         self.qcoef, self.qabs = qcoef, np.abs(qcoef)
         self.comp = comp
-        # rounding of G: entry m is a sum of 2w + 1 terms of at most |const_m| + sum_j |coef_mj| (the gamma
-        # and sigma have |.| <= 1 and a few eps of error), so |dG_m| <= (2w + 6) eps size_m and the eigenvalues
-        # move by at most ||dG||_F
-        size = np.abs(const) + np.abs(coef).sum(axis=1)
+        # rounding of G: entry m is a sum of 2w + 1 terms of at most sum_j |coef_mj| (c^2 and c s lie in
+        # [-1, 1], with a few eps of error), so |dG_m| <= (2w + 6) eps size_m and the eigenvalues move by at
+        # most ||dG||_F
+        size = np.abs(coef).sum(axis=1)
         size[[1, 2, 4]] *= math.sqrt(2.0)  # the off-diagonal entries count twice in ||.||_F
         self.g_error = (2 * w + 6) * _EPS * float(np.linalg.norm(size))
 
@@ -198,7 +199,8 @@ class SwerveKappa:
         # one workspace for every chunk of the call (no allocation per chunk: large temporaries would be
         # mapped and faulted in afresh each time)
         w, nS = self.w, self.qcoef.shape[0]
-        ws = _Workspace(np.empty((6 * w + 15 + 2 * nS + _SCRATCH, m)), np.empty((2, m), dtype=bool), w, nS)
+        ws = _Workspace(np.empty((5 * w + 16 + 2 * nS + _SCRATCH, m)), np.empty((2, m), dtype=bool), w, nS)
+        ws.gs[2 * w] = 1.0  # the constant term of G
         with np.errstate(all="ignore"):
             for lo in range(0, N, m):
                 hi = min(lo + m, N)
@@ -207,7 +209,7 @@ class SwerveKappa:
     def _chunk(self, tw, out, redo, ws):
         w = self.w
         psi, vx, vy = tw[:, 0], tw[:, 1], tw[:, 2]
-        T, CS, n, inv, gs, G, M, Q, Qa = ws.T, ws.CS, ws.n, ws.inv, ws.gs, ws.G, ws.M, ws.Q, ws.Qa
+        T, CS, n, gs, G, M, Q, Qa = ws.T, ws.CS, ws.n, ws.gs, ws.G, ws.M, ws.Q, ws.Qa
         v = ws.scratch  # vectors v[0], v[1], ...
         # the dimensionless twist t / s, s = max(|x_dot|, |y_dot|) + |psi| ell (the scale of steering_angles)
         s = v[0]
@@ -223,26 +225,20 @@ class SwerveKappa:
         np.divide(vy, s, out=T[2])
         np.matmul(self.lin, T, out=CS)  # (2w, k): C_i then S_i
         C, S = CS[:w], CS[w:]
-        gc, gsn = gs[:w], gs[w:]
-        np.multiply(C, C, out=gc)
+        cc, cs = gs[:w], gs[w : 2 * w]  # (row 2w is 1)
+        np.multiply(C, C, out=cc)
         np.multiply(S, S, out=n)
-        n += gc  # n_i = C_i^2 + S_i^2 = |p_i|^2 / s^2
-        gc *= 2.0
-        gc -= n  # C^2 - S^2
-        np.multiply(C, S, out=gsn)
-        gsn *= 2.0
-        np.divide(1.0, n, out=inv)
-        gc *= inv  # gamma_i = cos 2 beta_i
-        gsn *= inv  # sigma_i = sin 2 beta_i
-        still = ws.still  # a wheel (nearly) at the centre, or a zero or non-finite twist
+        n += cc  # n_i = C_i^2 + S_i^2 = |p_i|^2 / s^2
+        np.multiply(C, S, out=cs)
+        cc /= n  # cos^2 beta_i
+        cs /= n  # cos beta_i sin beta_i
+        moving = ws.moving  # no wheel (nearly) at the centre, a non-zero finite twist
         lo = v[1]
         np.minimum(n[0], n[1], out=lo)
         for i in range(2, w):
             np.minimum(lo, n[i], out=lo)
-        np.greater(lo, (2 * TOL) ** 2, out=still)
-        np.logical_not(still, out=still)
-        np.matmul(self.coef, gs, out=G)
-        G += self.const  # the upper entries of G = J J^T
+        np.greater(lo, (2 * TOL) ** 2, out=moving)
+        np.matmul(self.coef, gs, out=G)  # the upper entries of G = J J^T
         # det G = psi^2 sum_S Q_S^2 prod_{i not in S} n_i / prod_i n_i
         x, y, z = T
         np.multiply(x, x, out=M[0])
@@ -252,7 +248,8 @@ class SwerveKappa:
         np.multiply(y, z, out=M[4])
         np.multiply(z, z, out=M[5])
         np.matmul(self.qcoef, M, out=Q)
-        np.abs(M, out=M)
+        for j in (1, 2, 4):
+            np.abs(M[j], out=M[j])
         np.matmul(self.qabs, M, out=Qa)
         np.abs(Q, out=Q)
         Qa *= Q
@@ -280,21 +277,16 @@ class SwerveKappa:
         det_rel *= 16 * _EPS
         det_rel += (2 * w + 8) * _EPS
         detG = v[6]
-        np.multiply(x, x, out=detG)
-        detG *= R
+        np.multiply(M[0], R, out=detG)
         detG /= prod
-        ok, bad = redo, ws.bad
-        lam2 = kappa_from_gram(G, detG, det_rel, self.g_error, v[7:], out, ok, bad)
-        np.greater(prod, 1e-250, out=bad)
-        ok &= bad
-        np.greater(R, 1e-250, out=bad)
-        ok &= bad
-        np.logical_not(still, out=bad)
-        ok &= bad
+        ok = redo
+        lam2 = kappa_from_gram(G, detG, det_rel, self.g_error, v[7:], out, ok, ws.bad)
+        ok &= moving  # (with the wheels' speeds above 2 TOL s, nothing above under- or overflows)
         np.logical_not(ok, out=redo)
         # where two eigenvalues nearly meet, the cubic's solution amplifies the rounding of G: those members
         # get LAPACK's eigenvalues before the general kernels
-        again = np.flatnonzero(redo & ~still & (lam2 > 0) & (R > 1e-250) & (prod > 1e-250))
+        again = np.flatnonzero(redo)
+        again = again[moving[again] & (lam2[again] > 0)]
         if again.size:
             out[again], ok_again = kappa_by_lapack(G[:, again], detG[again], det_rel[again], self.g_error)
             redo[again] = ~ok_again
@@ -308,7 +300,7 @@ class _Workspace:
 
     Parameters
     ----------
-    V : numpy.ndarray (6 w + 15 + 2 nS + _SCRATCH, >= k)
+    V : numpy.ndarray (5 w + 16 + 2 nS + _SCRATCH, >= k)
     B : numpy.ndarray of bool (2, >= k)
     w, nS, k : int
         Units, 3-subsets of the units, twists in the chunk.
@@ -317,11 +309,11 @@ class _Workspace:
     def __init__(self, V, B, w, nS, k=None):
         k = V.shape[1] if k is None else k
         self.V, self.B, self.w, self.nS = V, B, w, nS
-        a = np.cumsum([0, 3, 2 * w, w, w, 2 * w, 6, 6, nS, nS, _SCRATCH]).tolist()
-        self.T, self.CS, self.n, self.inv, self.gs, self.G, self.M, self.Q, self.Qa, self.scratch = (
-            V[a[j] : a[j + 1], :k] for j in range(10)
+        a = np.cumsum([0, 3, 2 * w, w, 2 * w + 1, 6, 6, nS, nS, _SCRATCH]).tolist()
+        self.T, self.CS, self.n, self.gs, self.G, self.M, self.Q, self.Qa, self.scratch = (
+            V[a[j] : a[j + 1], :k] for j in range(9)
         )
-        self.still, self.bad = B[0, :k], B[1, :k]
+        self.moving, self.bad = B[0, :k], B[1, :k]
 
     def view(self, k):
         """The workspace for a chunk of ``k`` twists (views of the first ``k`` columns)."""
