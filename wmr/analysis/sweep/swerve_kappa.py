@@ -201,10 +201,17 @@ class SwerveKappa:
         w, nS = self.w, self.qcoef.shape[0]
         ws = _Workspace(np.empty((5 * w + 16 + 2 * nS + _SCRATCH, m)), np.empty((2, m), dtype=bool), w, nS)
         ws.gs[2 * w] = 1.0  # the constant term of G
+        again: list = []  # (rows, G, det G, its relative error) of members for LAPACK's eigenvalues
         with np.errstate(all="ignore"):
             for lo in range(0, N, m):
                 hi = min(lo + m, N)
-                self._chunk(twist[lo:hi], out[lo:hi], redo[lo:hi], ws.view(hi - lo))
+                rows = self._chunk(twist[lo:hi], out[lo:hi], redo[lo:hi], ws.view(hi - lo))
+                if rows.size:
+                    again.append((lo + rows, ws.G[:, rows], ws.scratch[6, rows], ws.scratch[4, rows]))
+        if again:  # one call for all of them (LAPACK's call costs far more than these few members)
+            rows, G, detG, det_rel = (np.concatenate(x, axis=-1) for x in zip(*again))
+            out[rows], ok = kappa_by_lapack(G, detG, det_rel, self.g_error)
+            redo[rows] = ~ok
 
     def _chunk(self, tw, out, redo, ws):
         w = self.w
@@ -286,10 +293,7 @@ class SwerveKappa:
         # where two eigenvalues nearly meet, the cubic's solution amplifies the rounding of G: those members
         # get LAPACK's eigenvalues before the general kernels
         again = np.flatnonzero(redo)
-        again = again[moving[again] & (lam2[again] > 0)]
-        if again.size:
-            out[again], ok_again = kappa_by_lapack(G[:, again], detG[again], det_rel[again], self.g_error)
-            redo[again] = ~ok_again
+        return again[moving[again] & (lam2[again] > 0)]
 
 
 _SCRATCH = 7 + SCRATCH
