@@ -13,6 +13,7 @@ from wmr.analysis import reference as R
 from wmr.analysis.sweep import Drivable, sweep
 from wmr.analysis.sweep.motions import kappa_J_of_twists
 from wmr.analysis.sweep.swerve_kappa import SwerveKappa
+from wmr.errors import InputValueError
 
 EPS = np.finfo(float).eps
 SWERVE = wmr.load("examples/swerve4.toml")
@@ -174,7 +175,7 @@ def test_sweep_reductions_equal_those_of_the_general_kernels():
 
 def test_no_fused_kernel_for_other_robots():
     bot = wmr.load("examples/engineers/rover6.toml")  # fixed wheels too
-    with pytest.raises(ValueError, match="swerve-like"):
+    with pytest.raises(InputValueError, match="swerve-like"):
         SwerveKappa(bot, 1.0)
     assert kappa_J_of_twists(bot, np.ones((2, 3)), 1.0) is None
 

@@ -69,10 +69,10 @@ def _kappa_J_drivable(source, start, stop, L, fold):
 
 
 def _kappa_J_fused(robot, L):
-    from .motions import _kernel
+    from .motions import fused_kernel
     from .swerve_kappa import swerve_like
 
-    return swerve_like(robot) and _kernel(robot, J_length(robot, L)) is not None  # (a small robot: cheap)
+    return swerve_like(robot) and fused_kernel(robot, J_length(robot, L)) is not None  # (a small robot: cheap)
 
 
 def _actuated(robot, beta, L):

@@ -33,6 +33,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ...errors import InputValueError
 from ...model import validation as V
 from .._batch import for_chunks
 from ..linalg import condition_number, null_space
@@ -41,7 +42,7 @@ from ..steering import steering_angles
 from .configurations import BLOCK, count
 from .swerve_kappa import SwerveKappa, swerve_like
 
-__all__ = ["Drivable", "Motions", "kappa_J_drivable", "kappa_J_of_twists"]
+__all__ = ["Drivable", "Motions", "fused_kernel", "kappa_J_drivable", "kappa_J_of_twists"]
 
 
 @dataclass(frozen=True)
@@ -147,7 +148,7 @@ class Motions:
         """
         with self._lock:
             if L not in self._kernels:
-                self._kernels[L] = _kernel(self.robot, L)
+                self._kernels[L] = fused_kernel(self.robot, L)
             return self._kernels[L]
 
     @property
@@ -228,13 +229,25 @@ class Motions:
         return steering_angles(self.robot, tw, current)
 
 
-def _kernel(robot, L):
-    """:class:`SwerveKappa` for ``robot`` and ``L``, or None when the robot is not swerve-like."""
+def fused_kernel(robot, L):
+    """The fused kernel of ``kappa_J`` for ``robot`` and ``L``, or None when the robot is not swerve-like.
+
+    Parameters
+    ----------
+    robot : Robot
+        A numeric robot.
+    L : float
+        Characteristic length.
+
+    Returns
+    -------
+    SwerveKappa or None
+    """
     if not swerve_like(robot):
         return None
     try:
         return SwerveKappa(robot, L)
-    except ValueError:  # det J does not vanish in translation: no fused kernel
+    except InputValueError:  # det J does not vanish in translation: no fused kernel
         return None
 
 
@@ -315,7 +328,7 @@ def kappa_J_of_twists(robot, twist, L):
     robot = V.numeric_robot(robot)
     twist = V.finite_array("twist", twist, last=3).reshape(-1, 3)
     L = V.number("L", V.positive("L", L))
-    kernel = _kernel(robot, L)
+    kernel = fused_kernel(robot, L)
     if kernel is None:
         return None
     out = np.empty(twist.shape[0])

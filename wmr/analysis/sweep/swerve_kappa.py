@@ -54,6 +54,7 @@ from fractions import Fraction
 
 import numpy as np
 
+from ...errors import InputValueError
 from ...model.backend import NUMERIC
 from ...model.tolerance import TOL
 from .gram_kappa import SCRATCH, kappa_by_lapack, kappa_from_gram
@@ -128,14 +129,14 @@ class SwerveKappa:
 
     Raises
     ------
-    ValueError
+    wmr.errors.InputValueError
         If the robot is not swerve-like, or its :math:`\det\mathbf J_S` do not vanish in translation
         (then no fused kernel applies).
     """
 
     def __init__(self, robot, L):
         if not swerve_like(robot):
-            raise ValueError(f"no fused kappa(J) kernel for {robot!r}: not swerve-like")
+            raise InputValueError(f"robot must be swerve-like for the fused kappa(J) kernel, got {robot!r}")
         w = robot.w
         JL1 = robot.J1(L=L)
         d = np.asarray(robot.mount_points, dtype=float)
@@ -167,7 +168,9 @@ class SwerveKappa:
             cubic = _cubic_form([K[i] for i in S])
             # in translation J is singular: the coefficients of the monomials without psi vanish
             if any(cubic[m] for m in cubic if m[0] != 0):
-                raise ValueError(f"no fused kappa(J) kernel for {robot!r}: det J does not vanish in translation")
+                raise InputValueError(
+                    f"robot must have det J = 0 in translation for the fused kappa(J) kernel, got {robot!r}"
+                )
             for m, (j, k) in enumerate(_UPPER):
                 qcoef[s, m] = float(cubic.get((0, j, k), 0))
         comp = [tuple(i for i in range(w) if i not in S) for S in subsets]
