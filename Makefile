@@ -194,7 +194,7 @@ test: venv tex browser ## build (cached), pytest -n 2 (tests/ and tests/edition/
 	  $(VPY) -m mypy --no-error-summary $(LINTED) || rc=1; \
 	fi; \
 	if [ -n "$(RELEASED)" ]; then \
-	  $(PDEATH) $(VPY) -m tools.release_check || rc=1; \
+	  $(PDEATH) $(VPY) -m tools.release || rc=1; \
 	  $(PDEATH) $(VPY) -m tools.docs || rc=1; \
 	fi; \
 	if ! $(GIT_STATE) | diff $(B)/git-before - > $(B)/git-changed; then \
@@ -204,7 +204,7 @@ test: venv tex browser ## build (cached), pytest -n 2 (tests/ and tests/edition/
 	exit $$rc
 
 release: venv ## sdist + wheel; the wheel in a fresh venv outside the repo runs the library tests, the CLI, the README (cached)
-	@$(PDEATH) $(VPY) -m tools.release_check
+	@$(PDEATH) $(VPY) -m tools.release
 
 docs: venv ## build/docs/html: API reference + user guide (Sphinx, numpydoc, MathJax from its release; warnings are errors)
 	@$(PDEATH) $(VPY) -m tools.docs

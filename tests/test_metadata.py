@@ -1,7 +1,7 @@
 """The package's metadata: one version, one distribution name, the licence, the changelog, ``wmr --version``.
 
 These read the files of the source tree (pyproject.toml, CHANGELOG.md, CITATION.cff, LICENSE), which the
-sdist carries too; what the installed wheel says about itself is checked by tools/release_check.py.
+sdist carries too; what the installed wheel says about itself is checked by tools/release/.
 """
 
 import re

@@ -1,4 +1,4 @@
-"""The tools of the release and the docs (tools/release_check.py, tools/mathjax.py, tools/docs.py,
+"""The tools of the release and the docs (tools/release/, tools/mathjax.py, tools/docs.py,
 docs/_ext): their checks catch what they are for, without building anything or using the network.
 (`make test` then runs them for real: `make release`, `make docs`.)"""
 
@@ -13,7 +13,8 @@ import pytest
 
 import wmr
 from tools import docs, mathjax
-from tools import release_check as rc
+from tools.release import artifacts, venv
+from tools.release import check as release
 
 from conftest import ROOT
 
@@ -22,7 +23,7 @@ sys.path.insert(0, str(ROOT / "docs" / "_ext"))  # the Sphinx extensions, import
 EXT = ("wmr_markdown", "wmr_aliases")
 
 
-@pytest.mark.parametrize("module", [rc, mathjax, docs, *EXT])
+@pytest.mark.parametrize("module", [artifacts, venv, mathjax, docs, *EXT])
 def test_examples_in_the_docstrings(module):
     mod = importlib.import_module(module) if isinstance(module, str) else module
     result = doctest.testmod(mod, optionflags=doctest.ELLIPSIS)
@@ -33,23 +34,23 @@ def test_examples_in_the_docstrings(module):
 def test_the_shipped_tests_need_nothing_of_the_repository():
     """What the release check refuses, checked here too (fast): a test in tests/ that imports the edition."""
     for f in sorted((ROOT / "tests").glob("*.py")):
-        assert rc.repo_only_imports(f.read_text(encoding="utf-8")) == [], (
+        assert artifacts.repo_only_imports(f.read_text(encoding="utf-8")) == [], (
             f"{f.name} imports the edition or the build: move it to tests/edition/"
         )
 
 
 def test_version_and_name_read_without_importing():
-    assert rc.version_of(ROOT) == (wmr.__version__, "wmr-kinematics")
+    assert release.version_of(ROOT) == (wmr.__version__, "wmr-kinematics")
 
 
 def test_sdist_check_sees_what_is_missing_or_extra():
     tree = {
-        *rc.SDIST_FILES,
+        *artifacts.SDIST_FILES,
         *(f"tests/{p.name}" for p in (ROOT / "tests").glob("*.py")),
         *(p.relative_to(ROOT).as_posix() for p in (ROOT / "examples").rglob("*") if p.is_file()),
     }
-    assert rc.check_sdist(sorted(tree)) == []
-    missing = rc.check_sdist(
+    assert artifacts.check_sdist(sorted(tree)) == []
+    missing = artifacts.check_sdist(
         sorted(tree - {"tests/conftest.py", "examples/swerve4.toml", "examples/urdf/swerve.urdf", "LICENSE"})
     )
     assert missing == [
@@ -58,7 +59,9 @@ def test_sdist_check_sees_what_is_missing_or_extra():
         "missing from the sdist: examples/swerve4.toml",
         "missing from the sdist: examples/urdf/swerve.urdf",
     ]
-    extra = rc.check_sdist(sorted(tree | {"tests/edition/test_x.py", "notebooks/01.ipynb", "tests/__pycache__/a.pyc"}))
+    extra = artifacts.check_sdist(
+        sorted(tree | {"tests/edition/test_x.py", "notebooks/01.ipynb", "tests/__pycache__/a.pyc"})
+    )
     assert any("tests/edition/" in p for p in extra) and any("notebooks/" in p for p in extra)
     assert any("compiled files" in p for p in extra)
 
@@ -83,7 +86,7 @@ ENTRY = "[console_scripts]\nwmr = wmr.cli:main\n"
 
 
 def test_wheel_check_accepts_a_good_wheel():
-    assert rc.check_wheel(GOOD_NAMES, GOOD_METADATA, ENTRY, "0.1.0", "wmr-kinematics") == []
+    assert artifacts.check_wheel(GOOD_NAMES, GOOD_METADATA, ENTRY, "0.1.0", "wmr-kinematics") == []
 
 
 @pytest.mark.parametrize(
@@ -101,19 +104,19 @@ def test_wheel_check_accepts_a_good_wheel():
     ],
 )
 def test_wheel_check_sees_each_defect(names, metadata, entry, words):
-    problems = rc.check_wheel(names, metadata, entry, "0.1.0", "wmr-kinematics")
+    problems = artifacts.check_wheel(names, metadata, entry, "0.1.0", "wmr-kinematics")
     assert len(problems) == 1 and words in problems[0], problems
 
 
 def test_constraints_keep_every_pin_of_the_lock():
     lock = (ROOT / "environment.lock").read_text(encoding="utf-8")
-    pins = rc.constraints(lock).splitlines()
+    pins = venv.constraints(lock).splitlines()
     assert len(pins) == len(re.findall(r"^[A-Za-z0-9_.\-]+==", lock, re.MULTILINE)) > 50
     assert any(p.startswith("numpy==") for p in pins) and not any("--hash" in p or "\\" in p for p in pins)
 
 
 def test_the_readme_has_python_examples_for_the_release_to_run():
-    blocks = rc.python_blocks((ROOT / "README.md").read_text(encoding="utf-8"))
+    blocks = venv.python_blocks((ROOT / "README.md").read_text(encoding="utf-8"))
     assert len(blocks) >= 2 and all("import wmr" in b for b in blocks)  # each one pastes on its own
 
 
@@ -122,15 +125,15 @@ def test_inputs_hash_follows_the_sdist_contents(tmp_path):
         (tmp_path / name).write_text("a", encoding="utf-8")
     (tmp_path / "wmr").mkdir()
     (tmp_path / "wmr" / "x.py").write_text("x = 1", encoding="utf-8")
-    h1 = rc.inputs_hash(tmp_path)
+    h1 = release.inputs_hash(tmp_path)
     (tmp_path / "wmr" / "__pycache__").mkdir()
     (tmp_path / "wmr" / "__pycache__" / "x.pyc").write_bytes(b"\0")  # not an input
-    assert rc.inputs_hash(tmp_path) == h1
+    assert release.inputs_hash(tmp_path) == h1
     (tmp_path / "tests" / "edition").mkdir(parents=True)
     (tmp_path / "tests" / "edition" / "test_x.py").write_text("", encoding="utf-8")  # not in the sdist
-    assert rc.inputs_hash(tmp_path) == h1
+    assert release.inputs_hash(tmp_path) == h1
     (tmp_path / "wmr" / "x.py").write_text("x = 2", encoding="utf-8")
-    assert rc.inputs_hash(tmp_path) != h1
+    assert release.inputs_hash(tmp_path) != h1
 
 
 # ------------------------------------------------------------------------------------------ MathJax
