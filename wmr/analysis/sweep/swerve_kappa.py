@@ -14,13 +14,13 @@ with the constant vectors :math:`\mathbf a_i = \mathbf J_{L1,i}^T\mathbf L_i`,
 :math:`\mathbf b_i = \mathbf J_{L1,i}^T\mathbf E\mathbf L_i` (3,) of the unit's block terms, so no angle is
 ever formed.  The condition number (30) comes from :math:`\mathbf G = \mathbf J\mathbf J^T` (3 x 3):
 
-* :math:`\mathbf G = \sum_i \tfrac12(\mathbf a_i\mathbf a_i^T + \mathbf b_i\mathbf b_i^T)
-  + \gamma_i\,\tfrac12(\mathbf a_i\mathbf a_i^T - \mathbf b_i\mathbf b_i^T)
-  + \sigma_i\,\tfrac12(\mathbf a_i\mathbf b_i^T + \mathbf b_i\mathbf a_i^T)` with
-  :math:`\gamma_i = \cos 2\beta_i = (C_i^2 - S_i^2)/n_i`, :math:`\sigma_i = \sin 2\beta_i = 2C_iS_i/n_i`,
-  :math:`n_i = C_i^2 + S_i^2`: a constant plus a (6 x 2w) matrix times :math:`(\gamma, \sigma)`;
-  its two largest eigenvalues :math:`\lambda_1\ge\lambda_2` by the trigonometric solution of the cubic
-  (:func:`wmr.analysis._closed.condition_number_3x3`);
+* :math:`\mathbf G = \sum_i c_i^2\,(\mathbf a_i\mathbf a_i^T - \mathbf b_i\mathbf b_i^T)
+  + c_is_i\,(\mathbf a_i\mathbf b_i^T + \mathbf b_i\mathbf a_i^T) + \mathbf b_i\mathbf b_i^T` with
+  :math:`c_i^2 = \cos^2\beta_i = C_i^2/n_i`, :math:`c_is_i = C_iS_i/n_i`, :math:`n_i = C_i^2 + S_i^2`:
+  a (6 x (2w + 1)) matrix times :math:`(c^2, cs, 1)`; its two largest eigenvalues
+  :math:`\lambda_1\ge\lambda_2` by the trigonometric solution of the cubic
+  (:mod:`~wmr.analysis.sweep.gram_kappa`, as :func:`wmr.analysis._closed.condition_number_3x3`), or by
+  LAPACK where two of them nearly meet (the cubic's solution amplifies rounding there);
 * :math:`\det\mathbf G = \sum_S(\det\mathbf J_S)^2` over the 3-column subsets S (Cauchy-Binet), and
   :math:`\det[C_i\mathbf a_i + S_i\mathbf b_i]_{i\in S}` is a cubic form in the twist that vanishes
   in translation (:math:`\dot\psi = 0`: every wheel parallel, the last two rows of
@@ -42,8 +42,8 @@ rounding of :math:`\mathbf G`, amplified where two eigenvalues nearly meet, and 
 :data:`~wmr.analysis._closed.ACCURACY`, :math:`\kappa < 1/(2\,\mathrm{TOL})` (so the SVD rule would
 not call it singular) and no wheel is still (:math:`\|\dot{\mathbf p}_i\| \le 2\,\mathrm{TOL}\,s`:
 its angle is the caller's).  The others are left to the general kernels, so every decision is
-theirs.  Chunks of :data:`CHUNK` twists keep the temporaries in the core's cache; no Python runs
-per configuration.
+theirs.  The kernel works on chunks of :data:`CHUNK` twists in a workspace allocated once per call;
+no Python runs per configuration.
 """
 
 from __future__ import annotations
