@@ -65,6 +65,20 @@ __all__ = ["SwerveKappa", "swerve_like", "CHUNK"]
 #: Twists per chunk of the kernel (each of its about 130 NumPy calls costs a microsecond besides its work).
 CHUNK = 8192
 _EPS = np.finfo(float).eps
+_SERIAL = 1 << 17  # multiply-adds of one BLAS call (see _product)
+
+
+def _product(A, B, out):
+    """``out = A @ B`` for a small ``A`` and a long ``B``, in column blocks that keep OpenBLAS on one thread.
+
+    OpenBLAS starts threads for a product of more than ``4 * 65536`` multiply-adds (fewer in some builds); on a
+    thread of the sweep's pool that costs far more than it gains (5 times slower, measured), so every call here
+    stays below ``_SERIAL``.
+    """
+    step = max(1, _SERIAL // (A.shape[0] * A.shape[1]))
+    k = B.shape[1]
+    for a in range(0, k, step):
+        np.matmul(A, B[:, a : a + step], out=out[:, a : a + step])
 
 
 def swerve_like(robot) -> bool:
@@ -233,7 +247,7 @@ class SwerveKappa:
         T[0] *= psi
         np.divide(vx, s, out=T[1])
         np.divide(vy, s, out=T[2])
-        np.matmul(self.lin, T, out=CS)  # (2w, k): C_i then S_i
+        _product(self.lin, T, CS)  # (2w, k): C_i then S_i
         C, S = CS[:w], CS[w:]
         cc, cs = gs[:w], gs[w : 2 * w]  # (row 2w is 1)
         np.multiply(C, C, out=cc)
@@ -248,7 +262,7 @@ class SwerveKappa:
         for i in range(2, w):
             np.minimum(lo, n[i], out=lo)
         np.greater(lo, (2 * TOL) ** 2, out=moving)
-        np.matmul(self.coef, gs, out=G)  # the upper entries of G = J J^T
+        _product(self.coef, gs, G)  # the upper entries of G = J J^T
         # det G = psi^2 sum_S Q_S^2 prod_{i not in S} n_i / prod_i n_i
         x, y, z = T
         np.multiply(x, x, out=M[0])
@@ -257,10 +271,10 @@ class SwerveKappa:
         np.multiply(y, y, out=M[3])
         np.multiply(y, z, out=M[4])
         np.multiply(z, z, out=M[5])
-        np.matmul(self.qcoef, M, out=Q)
+        _product(self.qcoef, M, Q)
         for j in (1, 2, 4):
             np.abs(M[j], out=M[j])
-        np.matmul(self.qabs, M, out=Qa)
+        _product(self.qabs, M, Qa)
         np.abs(Q, out=Q)
         Qa *= Q
         Q *= Q
