@@ -201,3 +201,15 @@ def _velocity_angles(bot, twist):
     px = twist[:, 1:2] - twist[:, 0:1] * d[:, 1]
     py = twist[:, 2:3] + twist[:, 0:1] * d[:, 0]
     return px, -py
+
+
+def test_fused_sweep_does_not_depend_on_the_chunk():
+    """The default chunk of a fused sweep (FUSED_CHUNK, 16 blocks of twists) and one block per chunk agree exactly."""
+    from wmr.analysis.sweep.configurations import BLOCK
+    from wmr.analysis.sweep.execute import FUSED_CHUNK
+
+    n = 3 * BLOCK + 5
+    assert n < FUSED_CHUNK  # (one chunk by default)
+    a = sweep(SWERVE, "kappa_J", Drivable(n, seed=2), keep=True)
+    b = sweep(SWERVE, "kappa_J", Drivable(n, seed=2), keep=True, chunk=BLOCK)
+    assert np.array_equal(a.values, b.values) and a.quantiles == b.quantiles and a.worst_index == b.worst_index
