@@ -149,7 +149,7 @@ def print_sweep_rows(rows):
         an = r.name.split(",")[0]
         extra = f"peak RSS {r.rss:.0f} MB" if r.rss is not None else f"speed-up {base[an] / r.sec:.2f}x vs in process"
         base.setdefault(an, r.sec)
-        print(f"{r.name:34s} {r.sec:8.2f} s  {r.rate / 1e6:6.2f} M configurations/s  load {r.load:.2f}  {extra}")
+        print(f"{r.name:36s} {r.sec:8.2f} s  {r.rate / 1e6:6.2f} M configurations/s  load {r.load:.2f}  {extra}")
     return sum(not r.ok for r in rows)
 
 
