@@ -232,21 +232,17 @@ class SwerveKappa:
 
     def _chunk(self, tw, out, redo, ws):
         w = self.w
-        psi, vx, vy = tw[:, 0], tw[:, 1], tw[:, 2]
         T, CS, n, gs, G, M, Q, Qa = ws.T, ws.CS, ws.n, ws.gs, ws.G, ws.M, ws.Q, ws.Qa
         v = ws.scratch  # vectors v[0], v[1], ...
         # the dimensionless twist t / s, s = max(|x_dot|, |y_dot|) + |psi| ell (the scale of steering_angles)
         s = v[0]
-        np.abs(vx, out=s)
-        np.abs(vy, out=T[1])
-        np.maximum(s, T[1], out=s)
-        np.abs(psi, out=T[0])
+        np.abs(tw.T, out=T)
+        np.maximum(T[1], T[2], out=s)
         T[0] *= self.ell
         s += T[0]
-        np.divide(self.ell, s, out=T[0])
-        T[0] *= psi
-        np.divide(vx, s, out=T[1])
-        np.divide(vy, s, out=T[2])
+        np.divide(1.0, s, out=s)
+        np.multiply(tw.T, s, out=T)
+        T[0] *= self.ell
         _product(self.lin, T, CS)  # (2w, k): C_i then S_i
         C, S = CS[:w], CS[w:]
         cc, cs = gs[:w], gs[w : 2 * w]  # (row 2w is 1)
