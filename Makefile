@@ -1,8 +1,10 @@
 # wmr — executable edition of Leow, Low & Loh (2002).
 #
-#   make test      set up .venv + TeX, build the report and the student edition (cached), run pytest
-#                  (two workers; tests/ and tests/edition/), ruff and mypy, make release and make docs
-#                  (each cached), and fail if the build modified files that git tracks
+#   make test      set up .venv + TeX, build the report, the student edition and the lessons' grades
+#                  through nbgrader (each cached), run pytest
+#                  (two workers; tests/, and tests/edition/ unless it passed on exactly this tree:
+#                  tools/testcache.py, FRESH=1 runs it), ruff (check, format --check) and mypy, make release
+#                  and make docs (each cached), and fail if the build modified files that git tracks
 #   make report    build/report.html (self-contained, offline math) + build/report.pdf
 #   make docs      build/docs/html: the API reference and the user guide
 #   make release   the sdist and the wheel, the wheel tested in a fresh venv outside the repository
@@ -43,6 +45,7 @@ BEYOND   := $(wildcard $(NB)/10_robot_classes.ipynb)
 REPORTED := $(filter-out $(BEYOND:$(NB)/%=$(B)/notebooks/%),$(EXECUTED))
 STUDENT  := $(LESSONS:$(NB)/%=$(B)/student/%)
 STUDENT_RUN := $(LESSONS:$(NB)/%=$(B)/student-run/notebooks/%)
+GRADES   := $(patsubst $(NB)/%.ipynb,$(B)/assignments/grades/%.json,$(LESSONS))
 FIGURES  := $(wildcard $(WMR_ROOT)/figures/*)
 TOOL     := $(wildcard $(CURDIR)/tools/build/*.py)
 TEMPLATES := $(wildcard $(CURDIR)/tools/build/templates/*/*)
@@ -50,7 +53,7 @@ LINTED   := $(wildcard $(addprefix $(WMR_ROOT)/,wmr edition tools tests))
 # make test also checks the release and the docs of this repository (not of another tree, WMR_ROOT=...)
 RELEASED := $(if $(filter $(CURDIR),$(WMR_ROOT)),yes)
 # what make test builds before pytest runs (the tests find it cached)
-TEST_BUILD = $(B)/report.html $(B)/report.pdf $(STUDENT_RUN)
+TEST_BUILD = $(B)/report.html $(B)/report.pdf $(STUDENT_RUN) $(GRADES)
 
 PDEATH := $(shell command -v setpriv >/dev/null 2>&1 && echo setpriv --pdeathsig TERM --)
 BUILD  := $(PDEATH) $(VPY) -m tools.build
@@ -68,7 +71,7 @@ TEX_DEBS := texlive-xetex texlive-fonts-recommended texlive-plain-generic \
             texlive-latex-extra lmodern fonts-lmodern pandoc poppler-utils
 TEX_CMDS := xelatex pandoc pdftotext pdfinfo
 
-.PHONY: help venv tex browser test report figures notebooks publish student assignments bench clean lock docs release FORCE
+.PHONY: help venv tex browser test report figures notebooks publish student assignments grades bench clean lock docs release FORCE
 
 help: ## show this help
 	@echo "wmr — reproducible edition of Leow, Low & Loh (2002)"
@@ -137,6 +140,9 @@ student: venv ## build/student/*.ipynb: the chapters without worked solutions (R
 assignments: venv ## build/assignments: nbgrader source notebooks from the exercise cells (tools/assignments.py)
 	@$(VPY) -m tools.assignments $(B)/assignments $(LESSONS)
 
+grades: venv ## build/assignments/grades: each lesson through nbgrader, solved and blank (cached, like a chapter)
+	@$(LOCK) exec $(SUB) $(GRADES)
+
 figures: venv ## regenerate figures/ outside the notebooks (python -m edition.figures figures/)
 	@cd $(WMR_ROOT) && $(VPY) -m edition.figures figures
 
@@ -182,15 +188,23 @@ $(STUDENT) &: $(LESSONS)
 $(B)/student-run/notebooks/%.ipynb: $(B)/student/%.ipynb FORCE
 	@$(BUILD) execute $< $@
 
+# the nbgrader round trip of a lesson (tools/grades.py): generate, autograde the solved and the blank notebook;
+# cached like a chapter (its key: the chapter, notebooks/, wmr/, edition/, tools/{grades,assignments}.py, the lock)
+$(B)/assignments/grades/%.json: $(NB)/%.ipynb FORCE
+	@$(PDEATH) $(VPY) -m tools.grades $< $@
+
 # ------------------------------------------------------------------------------------- the tests
-test: venv tex browser ## build (cached), pytest -n 2 (tests/ and tests/edition/), ruff, mypy, release, docs; fail if the build modified tracked files
+test: venv tex browser ## build (cached), pytest -n 2 (tests/; tests/edition/ unless it passed on this exact tree: FRESH=1 runs it), ruff, mypy, release, docs; fail if the build modified tracked files
 	@mkdir -p $(B); $(GIT_STATE) > $(B)/git-before
 	@$(LOCK) exec $(SUB) $(TEST_BUILD)
-	@rc=0; \
-	cd $(WMR_ROOT) && $(PDEATH) $(VPY) -m pytest -n 2 --dist worksteal $(PYTEST_ARGS) || rc=$$?; \
+	@rc=0; cd $(WMR_ROOT); key=$$($(VPY) -m tools.testcache key $(PYTEST_ARGS)) || exit 1; only=; \
+	if [ -z "$(FRESH)" ] && $(VPY) -m tools.testcache check "$$key"; then only=--ignore=tests/edition; fi; \
+	$(PDEATH) $(VPY) -m pytest -n 2 --dist worksteal $$only $(PYTEST_ARGS) || rc=$$?; \
+	if [ $$rc = 5 ] && [ -n "$$only" ]; then rc=0; fi; tests=$$rc; \
 	if [ -n "$(LINTED)" ]; then \
-	  echo "[lint] ruff check, mypy: $(notdir $(LINTED))"; \
+	  echo "[lint] ruff check, ruff format --check, mypy: $(notdir $(LINTED))"; \
 	  $(VPY) -m ruff check --quiet $(LINTED) || rc=1; \
+	  $(VPY) -m ruff format --check --quiet $(LINTED) || rc=1; \
 	  $(VPY) -m mypy --no-error-summary $(LINTED) || rc=1; \
 	fi; \
 	if [ -n "$(RELEASED)" ]; then \
@@ -200,7 +214,8 @@ test: venv tex browser ## build (cached), pytest -n 2 (tests/ and tests/edition/
 	if ! $(GIT_STATE) | diff $(B)/git-before - > $(B)/git-changed; then \
 	  echo "[git] FAILED: the build modified files that git tracks (or left new ones it does not ignore):"; \
 	  sed -n 's/^[<>] ...//p' $(B)/git-changed | cut -d' ' -f1 | sort -u | sed 's/^/  /'; rc=1; \
-	else echo "[git] the build left git status as it found it"; fi; \
+	else echo "[git] the build left git status as it found it"; \
+	  if [ $$tests = 0 ] && [ -z "$$only" ]; then $(VPY) -m tools.testcache stamp "$$key"; fi; fi; \
 	exit $$rc
 
 release: venv ## sdist + wheel; the wheel in a fresh venv outside the repo runs the library tests, the CLI, the README (cached)

@@ -421,6 +421,11 @@ CASES = [
     Case("point_row", lambda d, L: platform.point_row(d, L), (("d", "point"), ("L", "positive"))),
     Case("point_velocity", lambda twist, d: wmr.point_velocity(twist, d), (T, ("d", "pair"))),
     Case(
+        "moved_points",
+        lambda points, origin, angle: platform.moved_points(points, origin, angle),
+        (("points", "pairs"), ("origin", "point"), ("angle", "angle")),
+    ),
+    Case(
         "choose",
         lambda value, backend: backend_choose(value, backend),
         (("value", "anything"), ("backend", "backend_any")),

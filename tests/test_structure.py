@@ -3,9 +3,12 @@ the package's own exceptions, no dispatch on a wheel's kind, modules of at most 
 
 Every import counts, also one inside a function (a lazy import is still a dependency); ``from .x import y``
 is an import of the module ``x.y`` when that is a module, else of ``x``.  The checks run on the ``wmr``
-that is imported (the repository's, or an installed wheel's: this test ships in the sdist); the same
-reader checks ``edition/``, which may import ``wmr`` and never the other way round, in
-tests/edition/test_structure_edition.py.
+that is imported (the repository's, or an installed wheel's: this test ships in the sdist).  The same
+reader checks the repository's ``edition/`` and ``tools/`` (``tools/build/`` too) beside it, when they are
+there: no cycles and no private names imported across modules of the three together, imports one way
+(wmr imports neither, the edition never imports the build), and at most 400 lines a module.  The rules of
+the library's own error types and of wheel kinds answering for themselves are the library's, checked on
+``wmr`` only.
 """
 
 import ast
@@ -114,6 +117,13 @@ def private_imports(known):
 
 
 WMR = modules("wmr")
+#: the repository holding this test; its edition and build, when this is a checkout (not an sdist)
+REPO = Path(__file__).resolve().parent.parent
+EDITION = modules("edition", root=REPO) if (REPO / "edition" / "__init__.py").is_file() else {}
+TOOLS = modules("tools", root=REPO) if (REPO / "tools" / "__init__.py").is_file() else {}
+#: every module the checks read
+EVERY = {**WMR, **EDITION, **TOOLS}
+needs_checkout = pytest.mark.skipif(not (EDITION and TOOLS), reason="edition/ and tools/ are in a checkout only")
 
 
 # ------------------------------------------------------------------------------------------ the checks
@@ -144,20 +154,40 @@ def test_no_private_names_imported_across_modules_of_wmr():
     assert private_imports(WMR) == set()
 
 
-def test_imports_go_one_way():
-    """The library never imports the edition or the build."""
+@needs_checkout
+def test_the_reader_knows_the_edition_and_the_build():
+    assert {"edition.transcription", "edition.ledger", "tools.build"} <= set(EVERY)
+    assert any(m.startswith("tools.build.") for m in EVERY)  # tools/build/*.py
+    edges = graph(EVERY)
+    assert {"wmr", "wmr.sim"} <= edges["edition.physics.common"]  # edges into the library are seen
+    assert any(t.startswith("tools.build.") for m, e in edges.items() if m.startswith("tools.build.") for t in e)
+
+
+@needs_checkout
+def test_no_import_cycles_in_the_edition_and_the_build():
+    assert cycles(graph(EVERY)) == []
+
+
+@needs_checkout
+def test_no_private_names_imported_across_modules_of_the_edition_and_the_build():
+    assert private_imports(EVERY) == set()
+
+
+@pytest.mark.parametrize(
+    "package, forbidden", [("wmr", ("edition", "tools")), pytest.param("edition", ("tools",), marks=needs_checkout)]
+)
+def test_imports_go_one_way(package, forbidden):
+    """The library never imports the edition or the build; the edition never imports the build."""
+    known = {m: p for m, p in EVERY.items() if m.split(".")[0] == package}
     wrong = [
-        (m, i, line)
-        for m, p in WMR.items()
-        for i, _, line in imports(m, p, WMR)
-        if i.split(".")[0] in ("edition", "tools")
+        (m, i, line) for m, p in known.items() for i, _, line in imports(m, p, EVERY) if i.split(".")[0] in forbidden
     ]
-    assert wrong == []
+    assert known and wrong == []
 
 
-@pytest.mark.parametrize("name", sorted(WMR))
+@pytest.mark.parametrize("name", sorted(EVERY))
 def test_module_size(name):
-    n = len(WMR[name].read_text(encoding="utf-8").splitlines())
+    n = len(EVERY[name].read_text(encoding="utf-8").splitlines())
     assert n <= MAX_LINES, f"{name} has {n} lines (at most {MAX_LINES}: split it by responsibility)"
 
 

@@ -1,13 +1,18 @@
 """``make assignments`` (tools/assignments.py): nbgrader source notebooks from the chapters' exercise cells, and the
 round trip through nbgrader itself -- generate_assignment, then autograde a solved copy (full marks) and the released
-blank copy (zero)."""
+blank copy (zero).
+
+The round trip is a build step (``make grades``, tools/grades.py; ``make test`` runs it before pytest): a few minutes
+of kernels per run, cached by the build's content hash like an executed chapter.  The tests here read its results,
+``build/assignments/grades/<chapter>.json`` (the fixture runs ``make``, which does nothing when they are current),
+check that the files are the current ones (their stamp holds the key of the chapter as it is now), and that the key
+changes with each thing the round trip reads (a small tree)."""
 
 from __future__ import annotations
 
+import json
 import os
-import shutil
 import subprocess
-import sys
 from pathlib import Path
 
 import nbformat
@@ -15,9 +20,13 @@ import pytest
 
 from edition.exercises.framework import by_name
 from tools import assignments as A
+from tools import grades as G
+from tools.build import execute as X
 
 ROOT = Path(__file__).resolve().parents[2]
-LESSONS = sorted((ROOT / "notebooks").glob("[0-9][0-9]_*.ipynb"))
+TREE = Path(os.environ.get("WMR_ROOT") or ROOT)  # WMR_ROOT: test another tree (as test_report does)
+BUILD = Path(os.environ.get("WMR_BUILD") or TREE / "build")
+LESSONS = sorted((TREE / "notebooks").glob("[0-9][0-9]_*.ipynb"))
 
 
 def _nb(*cells):
@@ -106,39 +115,93 @@ def test_make_assignments_writes_each_chapter_with_exercises_once(tmp_path):
     assert {p: p.stat().st_mtime_ns for p in tmp_path.rglob("*")} == before  # nothing rewritten
 
 
-ASSIGNED = [
-    p for p in LESSONS if any("check" in c.metadata.get("tags", []) for c in nbformat.read(p, as_version=4).cells)
-]
+def checks_of(chapter):
+    """The checks a chapter's cells tagged ``check`` call, in order: its own list of exercises."""
+    cells = nbformat.read(chapter, as_version=4).cells
+    return [A.check_call(c.source, chapter.name) for c in cells if "check" in c.metadata.get("tags", [])]
 
 
-@pytest.mark.parametrize("chapter", ASSIGNED, ids=lambda p: p.stem)
-def test_nbgrader_round_trip_full_marks_for_the_solution_and_zero_for_the_blank(tmp_path, chapter):
-    course, name = tmp_path / "course", chapter.stem
-    assert A.main([str(course), str(chapter)]) == 0
-    env = dict(
-        os.environ,
-        PATH=f"{Path(sys.executable).parent}{os.pathsep}{os.environ.get('PATH', '')}",
-        MPLBACKEND="Agg",
-        WMR_OUT=str(tmp_path / "out"),
-    )
-    nbgrader = [sys.executable, "-m", "nbgrader"]
+def grades_file(chapter):
+    return BUILD / "assignments" / "grades" / f"{chapter.stem}.json"
 
-    def run(*args):
-        p = subprocess.run(
-            [*nbgrader, *args, "--log-level=WARN"], cwd=course, env=env, capture_output=True, text=True, timeout=900
-        )
-        assert p.returncode == 0, p.stdout[-3000:] + p.stderr[-3000:]
 
-    run("generate_assignment", name)
-    for student, src in (("solved", course / "source"), ("blank", course / "release")):
-        (course / "submitted" / student / name).mkdir(parents=True)
-        shutil.copy(src / name / chapter.name, course / "submitted" / student / name / chapter.name)
-    released = nbformat.read(course / "release" / name / chapter.name, as_version=4)
-    assert "### BEGIN SOLUTION" not in nbformat.writes(released)
-    run("autograde", name)
-    from nbgrader.api import Gradebook  # type: ignore[import-untyped]
+def current(chapter):
+    """True when the chapter's grades file is the one its key asks for (the stamp is the build's)."""
+    out = grades_file(chapter)
+    return X.up_to_date(out.with_suffix(".stamp"), G.key(chapter, TREE), out)
 
-    with Gradebook(f"sqlite:///{course / 'gradebook.db'}") as gb:
-        solved, blank = gb.find_submission(name, "solved"), gb.find_submission(name, "blank")
-        assert solved.max_score > 0
-        assert (solved.score, blank.score) == (solved.max_score, 0.0), (solved.score, blank.score, solved.max_score)
+
+@pytest.fixture(scope="module")
+def grades():
+    """The grades of every lesson; ``make`` builds those that are not current (after ``make test``'s build: none)."""
+    stale = [str(grades_file(p)) for p in LESSONS if not current(p)]
+    if stale:
+        make = ["make", "-s", "--no-print-directory", "-j2", "-C", str(ROOT), f"WMR_ROOT={TREE}", f"WMR_BUILD={BUILD}"]
+        p = subprocess.run([*make, *stale], capture_output=True, text=True, check=False)
+        if p.returncode != 0:
+            pytest.fail(p.stdout + p.stderr, pytrace=False)
+    return {c.stem: json.loads(grades_file(c).read_text(encoding="utf-8")) for c in LESSONS}
+
+
+@pytest.mark.parametrize("chapter", LESSONS, ids=lambda p: p.stem)
+def test_nbgrader_round_trip_full_marks_for_the_solution_and_zero_for_the_blank(grades, chapter):
+    assert current(chapter), f"{grades_file(chapter)} is not the current one: make did not rebuild it"
+    g, checks = grades[chapter.stem], checks_of(chapter)
+    if not checks:  # "Your own robot" cells only, or none: nothing to grade, nbgrader not started
+        assert g == {"chapter": chapter.stem, "exercises": []}
+        return
+    assert g["chapter"] == chapter.stem
+    assert [e["check"] for e in g["exercises"]] == checks  # every exercise graded by nbgrader, once, in order
+    for e in g["exercises"]:
+        assert e["grade_id"] == f"{chapter.stem}-{e['check']}"
+        assert e["max"] == by_name(e["check"]).points > 0, e
+        assert (e["solved"], e["blank"]) == (e["max"], 0.0), e
+    total = sum(e["max"] for e in g["exercises"])
+    assert g["total"] == {"max": total, "solved": total, "blank": 0.0}  # nbgrader's own sums per submission
+
+
+def test_the_grades_key_changes_with_everything_the_round_trip_reads(tmp_path):
+    """A stale cache would report the grades of another edition: the key must change when the chapter, another
+    chapter, ``wmr/``, ``edition/``, the tools that make and grade the assignment or the pinned environment change,
+    and only then (a new mtime is no change)."""
+    files = {
+        "notebooks/01_a.ipynb": "{}",
+        "notebooks/02_b.ipynb": "{}",
+        "wmr/__init__.py": "",
+        "edition/exercises/framework.py": "",
+        "tools/assignments.py": "",
+        "tools/grades.py": "",
+        "environment.lock": "nbgrader==0.9.6",
+    }
+    for name, text in files.items():
+        (tmp_path / name).parent.mkdir(parents=True, exist_ok=True)
+        (tmp_path / name).write_text(text)
+    chapter = tmp_path / "notebooks" / "01_a.ipynb"
+    k = G.key(chapter, tmp_path)
+    os.utime(chapter, (0, 0))
+    assert G.key(chapter, tmp_path) == k
+    (tmp_path / "tools" / "bench.py").write_text("# not read by the round trip")
+    assert G.key(chapter, tmp_path) == k
+    seen = {k}
+    for name in files:
+        (tmp_path / name).write_text(files[name] + " ")
+        new = G.key(chapter, tmp_path)
+        assert new not in seen, f"the key did not change with {name}"
+        seen.add(new)
+    (tmp_path / "edition" / "exercises" / "ch9.py").write_text("")  # a new file
+    assert G.key(chapter, tmp_path) not in seen
+
+
+def test_a_current_stamp_runs_nothing_and_a_damaged_result_runs_again(tmp_path):
+    """The cache of :func:`tools.grades.grade` is the build's: a chapter without exercises (no nbgrader) on a small tree."""
+    chapter = tmp_path / "notebooks" / "01_a.ipynb"
+    chapter.parent.mkdir()
+    nbformat.write(_nb(*GOOD[:1]), chapter)
+    out = tmp_path / "build" / "assignments" / "grades" / "01_a.json"
+    assert G.grade(chapter, out, root=tmp_path)
+    assert json.loads(out.read_text()) == {"chapter": "01_a", "exercises": []}
+    assert not G.grade(chapter, out, root=tmp_path)  # current: nothing runs
+    out.write_text(out.read_text()[:10])  # truncated
+    assert G.grade(chapter, out, root=tmp_path) and json.loads(out.read_text())["chapter"] == "01_a"
+    (tmp_path / "environment.lock").write_text("nbgrader==0.9.7")
+    assert G.grade(chapter, out, root=tmp_path)

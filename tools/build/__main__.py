@@ -8,8 +8,7 @@
 Exit status 0; 1 with ``BUILD FAILED`` and the reason; 128 + N when stopped by signal N (from Make,
 or from the kernel when Make was killed), raised as :class:`KeyboardInterrupt` so that every
 ``finally`` runs: nbclient stops its kernel, ``subprocess.run`` kills xelatex or pandoc, temporary
-directories go. A step first removes what it replaces: a failure leaves no report that looks current.
-"""
+directories go. A step first removes what it replaces: a failure leaves no report that looks current."""
 from __future__ import annotations
 
 import argparse
@@ -28,8 +27,6 @@ def _stop(signum, frame):
 
 
 def _run(cmd: str, paths: list[Path], reads: list[Path]) -> None:
-    from edition.files import atomic_write
-
     from .execute import execute, publish
     if cmd == "execute":
         execute(paths[0], paths[1], tuple(reads))
@@ -37,6 +34,8 @@ def _run(cmd: str, paths: list[Path], reads: list[Path]) -> None:
         publish(paths[0], paths[1:])
     else:
         import nbformat
+
+        from edition.files import atomic_write
         out = paths[0] if cmd == "assemble" else paths[1]
         for p in [out.with_suffix(x) for x in (".ipynb", ".html", ".pdf")] if cmd == "assemble" else [out]:
             p.unlink(missing_ok=True)

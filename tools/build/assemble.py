@@ -3,8 +3,7 @@
 ``assemble REPORT COMMIT FIGURES FINDINGS CHAPTER...``: the title block (from the findings chapter;
 the commit and its date from ``COMMIT``, written by the Makefile), the findings chapter (abstract, how
 to read, Part I), the derivation chapters (Part II). Cell ids are deterministic and the date is the
-commit's: two builds of one commit are byte-identical.
-"""
+commit's: two builds of one commit are byte-identical."""
 from __future__ import annotations
 
 import datetime as dt

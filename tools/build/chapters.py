@@ -6,8 +6,7 @@ Part I; code stays (collapsed in the HTML, absent from the PDF); of the outputs 
 and images reach the reader (no printed text, HTML tables, errors or widget state). The findings
 chapter (Part I, ``notebooks/findings.ipynb``) is prose: its Markdown and its outputs, not its code;
 an output marked ``wmr_figure`` is the figure itself, a Markdown cell tagged ``part`` starts a part of
-the report, the cell tagged ``title`` gives the title block (:func:`title`).
-"""
+the report, the cell tagged ``title`` gives the title block (:func:`title`)."""
 from __future__ import annotations
 
 import re

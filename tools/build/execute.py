@@ -7,8 +7,7 @@ nothing tracked); its executed copy is ``OUT``. Its key hashes the notebook, eve
 the stamp ``OUT.stamp`` records the key and the hash of every output. While both hold nothing is
 written (Make sees nothing new); a changed input, a damaged output or a garbage stamp runs it again,
 and the report is removed first. :func:`publish` copies what the chapters wrote into ``figures/``,
-a file only when its bytes differ: the build is the only writer there, ``git status`` stays clean.
-"""
+a file only when its bytes differ: the build is the only writer there, ``git status`` stays clean."""
 from __future__ import annotations
 
 import hashlib
@@ -22,7 +21,7 @@ from pathlib import Path
 
 from . import BuildError, say
 
-__all__ = ["CELL_TIMEOUT", "ROOT", "execute", "kernel_env", "key", "outputs", "publish", "up_to_date"]
+__all__ = ["CELL_TIMEOUT", "ROOT", "execute", "kernel_env", "key", "outputs", "publish", "up_to_date", "write_stamp"]
 
 #: the project tree whose ``wmr/`` and ``edition/`` the notebooks import (``$WMR_ROOT``, set by the Makefile)
 ROOT = Path(os.environ.get("WMR_ROOT") or Path(__file__).resolve().parents[2])
@@ -31,7 +30,7 @@ CELL_TIMEOUT = 600  # seconds per cell
 
 def _files(d: Path) -> list[Path]:
     return sorted(p for p in d.rglob("*") if p.is_file() and "__pycache__" not in p.parts
-                  and not p.name.startswith(".")) if d.is_dir() else []
+                  and not p.name.startswith(".")) if d.is_dir() else [d] if d.is_file() else []
 
 
 def _sha(p: Path) -> str | None:
@@ -39,7 +38,8 @@ def _sha(p: Path) -> str | None:
 
 
 def key(nb: Path, root: Path = ROOT, reads: tuple[Path, ...] = ()) -> str:
-    """What an executed notebook depends on: its bytes, ``root/wmr/``, ``root/edition/``, ``reads``, Python, this file."""
+    """What an executed notebook depends on: its bytes, ``root/wmr/``, ``root/edition/``, ``reads`` (folders
+    or files), Python, this file."""
     h = hashlib.sha256(nb.read_bytes())
     for d in (root / "wmr", root / "edition", *reads):
         for p in _files(d):
@@ -67,6 +67,12 @@ def up_to_date(stamp: Path, k: str, out: Path) -> bool:
     return isinstance(data, dict) and data.get("key") == k and data.get("outputs") == _hashes(out)
 
 
+def write_stamp(out: Path, k: str) -> None:
+    """Write ``OUT.stamp``: key ``k`` and the hash of each output of ``out`` (what :func:`up_to_date` reads)."""
+    from edition.files import atomic_write
+    atomic_write(out.with_suffix(".stamp"), json.dumps({"key": k, "outputs": _hashes(out)}, indent=1) + "\n")
+
+
 def kernel_env(root: Path, chapter_out: Path) -> dict[str, str]:
     """The kernel's environment: the venv's Python first on ``PATH``, the project importable,
     ``WMR_OUT``, no plot windows, one BLAS thread (two notebooks share two cores), a fixed hash seed."""
@@ -89,11 +95,11 @@ def execute(nb: Path, out: Path, reads: tuple[Path, ...] = (), root: Path = ROOT
         A cell raised: the message holds the notebook's name, the cell's source and the traceback;
         the executed copy, the stamp and the report are left removed.
     """
-    from edition.files import atomic_write
     nb, out = Path(nb).resolve(), Path(out).resolve()
     stamp, k = out.with_suffix(".stamp"), key(nb, Path(root), tuple(Path(r).resolve() for r in reads))
     if up_to_date(stamp, k, out):
         return False
+    from edition.files import atomic_write
     build, chapter_out = out.parent.parent, out.parent.parent / "out" / out.stem
     for p in (stamp, out, *(build / f"report.{ext}" for ext in ("ipynb", "html", "pdf"))):
         p.unlink(missing_ok=True)
@@ -116,7 +122,7 @@ def execute(nb: Path, out: Path, reads: tuple[Path, ...] = (), root: Path = ROOT
         except Exception as e:  # noqa: BLE001 - the kernel died or was stopped (a signal: nbclient shut it down)
             raise BuildError(f"=== notebook {nb.name}: execution stopped ({type(e).__name__}) ===") from None
     atomic_write(out, nbformat.writes(book))
-    atomic_write(stamp, json.dumps({"key": k, "outputs": _hashes(out)}, indent=1) + "\n")
+    write_stamp(out, k)
     say("execute", nb.name, t0)
     return True
 
@@ -134,7 +140,6 @@ def publish(figures: Path, executed: list[Path]) -> list[Path]:
     BuildError
         Two chapters write a file of one name.
     """
-    from edition.files import atomic_write
     owner: dict[str, str] = {}
     changed = []
     for out in executed:
@@ -146,6 +151,7 @@ def publish(figures: Path, executed: list[Path]) -> list[Path]:
             owner[f.name] = out.stem
             dest = Path(figures) / f.name
             if not dest.is_file() or dest.read_bytes() != f.read_bytes():
+                from edition.files import atomic_write
                 atomic_write(dest, f.read_bytes())
                 changed.append(dest)
     say("publish", f"{len(owner)} files of the chapters in figures/, {len(changed)} changed")

@@ -3,8 +3,7 @@
 Markdown goes to pandoc in one call (:class:`~tools.build.markup.Batch`), the page to nbconvert
 (template ``wmr_html``, code collapsed); then the contents sidebar is built from the headings, ids
 made unique and internal links checked. MathJax is the official release's bundle (:mod:`tools.mathjax`:
-the npm tarball checked against its sha512), inlined gzip-compressed (the page stays under 4 MB).
-"""
+the npm tarball checked against its sha512), inlined gzip-compressed (the page stays under 4 MB)."""
 from __future__ import annotations
 
 import base64

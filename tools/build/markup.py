@@ -4,8 +4,7 @@
 Every Markdown fragment of the report is converted in **one** pandoc call per format (:class:`Batch`):
 the HTML and the PDF read the text the same way, heading ids are unique across the report, and a
 build starts two pandoc processes, not hundreds. Math is written ``$...$`` at the source; nothing here
-guesses which words are TeX.
-"""
+guesses which words are TeX."""
 from __future__ import annotations
 
 import re

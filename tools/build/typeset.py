@@ -2,8 +2,7 @@
 start of a part of the report, held in the report notebook as raw cells described by their metadata
 ``wmr`` and rendered once to HTML (:func:`render_html`) and once to LaTeX (:func:`render_latex`).
 Captions are Markdown, converted by the exporter's :class:`~tools.build.markup.Batch` (``md``); a
-figure's metadata is ``figures/<key>.json``, written by ``edition.figures`` (:func:`read_figures`).
-"""
+figure's metadata is ``figures/<key>.json``, written by ``edition.figures`` (:func:`read_figures`)."""
 from __future__ import annotations
 
 import base64

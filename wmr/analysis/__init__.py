@@ -1,7 +1,8 @@
 r"""Analyses of any robot built with :mod:`wmr.model`.
 
 ==================================  ====================================================================================
-:mod:`~wmr.analysis.linalg`         rank, nullity, null space, singular values, condition number
+:mod:`~wmr.analysis.linalg`         rank, nullity, null space, singular values, condition number, determinant
+:mod:`~wmr.analysis.sv_decisions`   the two rules that judge singular values: rank and condition number
 :mod:`~wmr.analysis.mobility`       rank and nullity of :math:`\mathbf F`, admissible twists (23)-(27)
 :mod:`~wmr.analysis.isotropy`       isotropy tests and the characteristic length (30)-(50)
 :mod:`~wmr.analysis.kinematics`     forward and inverse kinematics with the slip residual (21)
@@ -29,6 +30,7 @@ Every function takes a robot; none defaults to the paper's.
 
 __all__ = [
     "linalg",
+    "sv_decisions",
     "mobility",
     "isotropy",
     "kinematics",

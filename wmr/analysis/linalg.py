@@ -7,7 +7,8 @@ length (:func:`column_norms`), so that they do not depend on the units of the un
 run over chunks on all cores (:mod:`wmr.analysis._batch`).  For matrices with at most three rows
 or columns, :func:`det`, :func:`rank` and :func:`condition_number` use closed forms
 (:mod:`wmr.analysis._closed`) for every member they can vouch for and the SVD for the others, so
-their decisions are the SVD's.
+their decisions are the SVD's.  The two rules that judge singular values (rank and condition number) are
+:mod:`wmr.analysis.sv_decisions`, re-exported here.
 """
 
 from __future__ import annotations
@@ -20,6 +21,7 @@ from ..model.tolerance import TOL, column_norms
 from ..model.types import ArrayLike, FloatArray, IntArray
 from . import _closed
 from ._batch import map_matrices
+from .sv_decisions import kappa_from_singular_values, rank_from_singular_values
 
 __all__ = [
     "singular_values",
@@ -96,28 +98,6 @@ def _scaled(A: FloatArray, scale: ArrayLike | None) -> FloatArray:
     if not np.isfinite(out).all():
         raise InputValueError(f"scale is too small for A: A / scale overflows (scale = {V.show(scale)})")
     return out
-
-
-def rank_from_singular_values(s: FloatArray) -> IntArray:
-    """The rule of :func:`rank`: the singular values above ``TOL`` times the largest one (a zero matrix has rank 0).
-
-    Parameters
-    ----------
-    s : numpy.ndarray (..., k)
-        Singular values, descending (:func:`singular_values`).
-
-    Returns
-    -------
-    numpy.ndarray of int (...)
-
-    Examples
-    --------
-    >>> rank_from_singular_values(np.array([[2.0, 1e-12], [2.0, 1.0]])).tolist()
-    [1, 2]
-    """
-    if s.shape[-1] == 0:
-        return np.zeros(s.shape[:-1], dtype=int)
-    return np.sum(s > TOL * s[..., :1], axis=-1)
 
 
 def rank(A: ArrayLike, scale: ArrayLike | None = None) -> IntArray:
@@ -321,29 +301,6 @@ def condition_number(A: ArrayLike) -> FloatArray:
     if todo.size:
         kappa[todo] = kappa_from_singular_values(singular_values(flat[todo]))
     return kappa.reshape(A.shape[:-2])
-
-
-def kappa_from_singular_values(s: FloatArray) -> FloatArray:
-    """The rule of :func:`condition_number`: largest over smallest singular value, ``inf`` at most ``TOL`` apart (31).
-
-    Parameters
-    ----------
-    s : numpy.ndarray (..., k)
-        Singular values, descending (:func:`singular_values`).
-
-    Returns
-    -------
-    numpy.ndarray (...)
-
-    Examples
-    --------
-    >>> kappa_from_singular_values(np.array([[2.0, 1.0], [1.0, 1e-12]])).tolist()
-    [2.0, inf]
-    """
-    smax, smin = s[..., 0], s[..., -1]
-    singular = smin <= TOL * smax
-    with np.errstate(divide="ignore", invalid="ignore"):
-        return np.where(singular, np.inf, smax / np.where(singular, 1.0, smin))
 
 
 def gram(A: ArrayLike) -> FloatArray:

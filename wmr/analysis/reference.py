@@ -6,8 +6,9 @@ model's definitions, :math:`\mathbf J_2 = \mathrm{blockdiag}(\mathbf R(\beta_i)\
 unit's local block, :math:`\mathbf F = [\mathbf J_1\ -\mathbf J_2]` (24),
 :math:`\mathbf J = \mathbf J_{L1}^T\mathbf J_2` (56); every rank and condition number comes from a
 full SVD with the rule of :mod:`wmr.model.tolerance` (ranks of the matrix with unit-length columns) (the same
-two lines of :mod:`wmr.analysis.linalg` that turn singular values into a rank or a condition number:
-:func:`~wmr.analysis.linalg.rank_from_singular_values`, :func:`~wmr.analysis.linalg.kappa_from_singular_values`);
+two lines of :mod:`wmr.analysis.sv_decisions` that turn singular values into a rank or a condition number:
+:func:`~wmr.analysis.sv_decisions.rank_from_singular_values`,
+:func:`~wmr.analysis.sv_decisions.kappa_from_singular_values`);
 kinematics are pseudo-inverse solutions
 of the whole system (21).  The tests and ``make bench`` compare the batched kernels
 (:meth:`wmr.Robot.J`, :func:`wmr.rank_F`, :func:`wmr.analysis.linalg.det`,
@@ -23,9 +24,9 @@ from ..errors import InputValueError
 from ..model import validation as V
 from ..model.backend import NUMERIC
 from ..model.robot import Robot
-from ..model.tolerance import near_zero
+from ..model.tolerance import column_norms, near_zero
 from ..model.types import ArrayLike, BoolArray, FloatArray, IntArray, Twist
-from .linalg import column_norms, kappa_from_singular_values, rank_from_singular_values
+from .sv_decisions import kappa_from_singular_values, rank_from_singular_values
 
 __all__ = ["J2", "F", "J", "rank", "rank_F", "det", "condition_number", "forward", "inverse"]
 

@@ -40,6 +40,8 @@ with components below :data:`~wmr.io.urdf_tree.AXIS_SNAP` set to zero (:mod:`wmr
 Bad input raises :class:`~wmr.errors.RobotFileError` naming the file, the line of the joint or link
 and what is wrong: no wheels, a wheel without a cylinder, an axle that is not horizontal, a
 cylinder across its axle, a steering joint over three wheels, ...
+
+The wheels are found and read by :mod:`wmr.io.urdf_wheels`; this module makes them into units.
 """
 
 from __future__ import annotations
@@ -55,7 +57,8 @@ from ..model import validation as V
 from ..model.robot import Robot
 from ..model.types import PathLike, WheelJoints
 from ..model.wheels import CentredWheel, DualWheel, FixedWheel, OffsetWheel, SwedishWheel
-from .urdf_tree import AXIS_SNAP, UrdfTree, is_horizontal, is_vertical, suggest
+from .urdf_tree import AXIS_SNAP, UrdfTree
+from .urdf_wheels import find_wheels, read_wheel, rollers_below
 
 __all__ = ["from_urdf", "read_urdf", "parse_wheel_joints"]
 
@@ -92,141 +95,6 @@ def parse_wheel_joints(text):
     return out
 
 
-def _wheels(rd: UrdfTree, wheel_joints):
-    """``[(joint name, radius)]`` of the wheel joints, in the file's order."""
-    if wheel_joints is not None:
-        out = []
-        for name, radius in wheel_joints.items():
-            if name not in rd.joints:
-                rd.fail(
-                    rd.line("robot", ""),
-                    f"joint {name!r}",
-                    "wheel_joints names a joint the file does not define" + suggest(name, rd.joints),
-                )
-            out.append((name, radius))
-        order = list(rd.joints)
-        return sorted(out, key=lambda item: order.index(item[0]))
-    out, seen = [], []
-    for name, j in rd.joints.items():
-        if j.type != "continuous" or not is_horizontal(rd.axis(name)):
-            continue
-        if any(p.name in {w for w, _ in out} for p in rd.path(name)):
-            continue  # a roller of a wheel above it
-        radius, shapes = rd.cylinder(name)
-        if radius is None:
-            seen.append((name, shapes))
-            continue
-        out.append((name, None))
-    rollers_of = {w for w, _ in out}
-    for name, shapes in seen:
-        if not any(p.name in rollers_of for p in rd.path(name)):
-            what = f"a {shapes[0]}" if shapes else "no geometry"
-            rd.fail(
-                rd.line("joint", name),
-                f"joint {name!r}",
-                f"turns about a horizontal axis like a wheel, but its "
-                f"link {rd.joints[name].child!r} has {what}, no <cylinder>: wmr reads a wheel's radius from its "
-                f"cylinder; name the wheel joints and radii instead (wheel_joints={{{name!r}: RADIUS, ...}}, on "
-                f"the command line --wheel-joints {name}=RADIUS,...)",
-            )
-    return out
-
-
-def _wheel(rd: UrdfTree, name, radius):
-    """(centre (3,), axle (3,), radius, steering joint or None, rollers' angle or None) of one wheel joint."""
-    j, line, key = rd.joints[name], rd.line("joint", name), f"joint {name!r}"
-    if j.type not in ("continuous", "revolute"):
-        rd.fail(line, key, f"a wheel joint must be continuous (or revolute), got {j.type!r}")
-    axle = rd.axis(name)
-    if not is_horizontal(axle):
-        rd.fail(
-            line,
-            key,
-            f"a wheel's axis must be horizontal (the platform's z is up), got {axle.round(6).tolist()} "
-            "in the platform frame",
-        )
-    cyl_r, cyl_axis = rd.cylinder(name)
-    if radius is None:
-        if cyl_r is None:
-            what = f"a {cyl_axis[0]}" if cyl_axis else "no geometry"
-            rd.fail(
-                rd.line("link", j.child),
-                f"link {j.child!r}",
-                f"the wheel of joint {name!r} has {what}, no <cylinder>: give its radius ({name}=RADIUS)",
-            )
-        if np.linalg.norm(np.cross(cyl_axis, axle)) > AXIS_SNAP:
-            rd.fail(
-                rd.line("link", j.child),
-                f"link {j.child!r}",
-                f"its cylinder lies along "
-                f"{cyl_axis.round(6).tolist()}, not along the axis of its joint {name!r} "
-                f"({axle.round(6).tolist()}): a wheel's cylinder lies along its axle (turn its <origin rpy>)",
-            )
-        radius = cyl_r
-    if not radius > 0:
-        rd.fail(rd.line("link", j.child), f"link {j.child!r}", f"the wheel's radius must be positive, got {radius!r}")
-    steering = None
-    for p in rd.path(name):
-        if p.type == "fixed" or p.type == "prismatic":
-            continue
-        if p.type in ("revolute", "continuous") and is_vertical(rd.axis(p.name)):
-            if steering is not None:
-                rd.fail(
-                    rd.line("joint", p.name),
-                    f"joint {p.name!r}",
-                    f"a second steering joint above wheel joint {name!r} (after {steering!r}): a wheel unit has one",
-                )
-            steering = p.name
-            continue
-        rd.fail(
-            rd.line("joint", p.name),
-            f"joint {p.name!r}",
-            f"a {p.type} joint about "
-            f"{rd.axis(p.name).round(6).tolist()} between the platform and wheel joint {name!r}: only a vertical "
-            "steering joint (and prismatic suspension) can be there",
-        )
-    return rd.centre(name), axle, float(radius), steering, _rollers(rd, name, axle)
-
-
-def _below(rd: UrdfTree, wheel):
-    """The continuous joints below a wheel joint (its rollers), in the file's order."""
-    return [n for n, j in rd.joints.items() if j.type == "continuous" and wheel in {p.name for p in rd.path(n)}]
-
-
-def _rollers(rd: UrdfTree, wheel, axle):
-    """The angle gamma of the rollers below a wheel (None: no rollers), checked to agree."""
-    below = _below(rd, wheel)
-    gammas = []
-    for name in below:
-        a = rd.axis(name)
-        p = rd.centre(name) - rd.centre(wheel)
-        p = p - (p @ axle) * axle
-        if np.linalg.norm(p) == 0:
-            rd.fail(
-                rd.line("joint", name),
-                f"joint {name!r}",
-                f"a roller of wheel {wheel!r} on its axle: rollers sit on the rim",
-            )
-        t = np.cross(axle, p / np.linalg.norm(p))  # the rim's direction of motion at the roller
-        g = float(np.arctan2(a @ t, a @ axle))
-        g = g - np.pi if g > np.pi / 2 + AXIS_SNAP else g + np.pi if g <= -np.pi / 2 + AXIS_SNAP else g  # a line
-        gammas.append((name, g))
-    if not gammas:
-        return None
-    name0, g0 = gammas[0]
-    for name, g in gammas[1:]:
-        if abs(g - g0) > AXIS_SNAP:
-            rd.fail(
-                rd.line("joint", name),
-                f"joint {name!r}",
-                f"roller at {np.degrees(g):.6g} deg to the axle, "
-                f"{name0!r} at {np.degrees(g0):.6g} deg: the rollers of one wheel are all at one angle",
-            )
-    if abs(g0) <= AXIS_SNAP:
-        rd.fail(rd.line("joint", name0), f"joint {name0!r}", "rollers parallel to the axle roll nothing")
-    return g0
-
-
 def _joints_of(cls, steering, wheels, roller_joints):
     """``{kind's joint name: [URDF joints]}``: the steering joint, the wheels in order, the rollers."""
     drives = iter(wheels)
@@ -251,7 +119,7 @@ def _unit(rd: UrdfTree, steering, wheels, info):
     centre, axle, radius, _, gamma = info[first]
     key, line = f"joint {first!r}", rd.line("joint", first)
     a = axle[:2] / np.linalg.norm(axle[:2])
-    rollers = _below(rd, first)
+    rollers = rollers_below(rd, first)
     if steering is None:
         angle = float(np.arctan2(a[1], a[0]))
         if gamma is None:
@@ -371,7 +239,7 @@ def read_urdf(path: PathLike, wheel_joints: WheelJoints | None = None) -> tuple[
         wheel_joints = dict.fromkeys(wheel_joints)
     source = os.fspath(path)
     rd = UrdfTree(Path(path).read_bytes(), source)
-    wheels = _wheels(rd, wheel_joints)
+    wheels = find_wheels(rd, wheel_joints)
     if not wheels:
         moving = [
             f"{n} ({j.type}, axis {rd.axis(n).round(3).tolist()})" for n, j in rd.joints.items() if j.type != "fixed"
@@ -383,7 +251,7 @@ def read_urdf(path: PathLike, wheel_joints: WheelJoints | None = None) -> tuple[
             "no wheels: no continuous joint with a horizontal axis turns a link "
             f"with a <cylinder> ({seen}); name them with wheel_joints (--wheel-joints)",
         )
-    info = {name: _wheel(rd, name, radius) for name, radius in wheels}
+    info = {name: read_wheel(rd, name, radius) for name, radius in wheels}
     groups: dict[str, list[str]] = {}
     for name, *_ in wheels:
         steering = info[name][3]
@@ -397,7 +265,7 @@ def read_urdf(path: PathLike, wheel_joints: WheelJoints | None = None) -> tuple[
             if isinstance(exc, RobotFileError):
                 raise
             rd.fail(rd.line("joint", head), f"joint {head!r}", str(exc))
-        rollers = _below(rd, members[0])
+        rollers = rollers_below(rd, members[0])
         names.append(
             {j: urdf[0] for j, urdf in _joints_of(type(units[-1]), steering, members, rollers).items() if urdf}
         )

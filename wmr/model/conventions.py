@@ -104,11 +104,11 @@ The repository holds three things, and imports go one way (edition -> wmr, build
         this process or on Dask, ``result``); design searches (:mod:`~wmr.analysis.design`), a robot
         at a glance (:mod:`~wmr.analysis.overview`), and the dense reference the fast kernels are
         checked against (:mod:`~wmr.analysis.reference`).
-    :mod:`wmr.swerve`, :mod:`wmr.io`, :mod:`wmr.odometry`
+    :mod:`wmr.swerve`, :mod:`wmr.io`, :mod:`wmr.odometry`, :mod:`wmr.sim`
         Beside the analyses: swerve-drive practice (module states, limits, optimisation); robots in
         and out (TOML robot files, each wheel kind's keys declared by the kind; URDF, ROS 2 controller
         parameters and WPILib kinematics objects, their optional packages imported only when used);
-        and wheel odometry.
+        wheel odometry; and any robot exported to MuJoCo and driven there (MuJoCo imported only there).
     :mod:`wmr.plot`, :mod:`wmr.cli`
         Drawing with matplotlib (imported only there: the style, annotations, and the robot seen
         from above, drawn from the units' parts), and the ``wmr`` command line, one module per
@@ -120,6 +120,7 @@ The repository holds three things, and imports go one way (edition -> wmr, build
 ``tools/build``, the build (``python -m tools.build``, in the repository only)
     Glue around the tools that do the work: it executes the chapters in ``notebooks/`` (cached),
     merges the ledger, assembles and exports the report (HTML, PDF) and publishes ``figures/``.
+    Beside it in ``tools/``: the release check (``tools/release``), the docs, the benchmarks.
 """
 
 from __future__ import annotations

@@ -15,16 +15,29 @@ The velocity of a platform point :math:`P_i` with :math:`\mathbf d_i = \overrigh
 
 from __future__ import annotations
 
+from collections.abc import Iterable
+
 import numpy as np
+import sympy as sp
 
 from ..errors import InputTypeError, InputValueError
 from .arrays import batch_shape, finite_array, symbolic_matrix, twist_array
 from .backend import NUMERIC, Backend, choose
-from .checks import integer, point, positive, real, show
+from .checks import integer, number, point, positive, real, show
 from .tolerance import TOL
 from .types import ArrayLike, FloatArray, Matrix, Numbers, Point, Twist
 
-__all__ = ["E", "rotation", "cos_sin", "rotated", "wrap_angle", "line_angle", "point_row", "point_velocity"]
+__all__ = [
+    "E",
+    "rotation",
+    "cos_sin",
+    "rotated",
+    "wrap_angle",
+    "line_angle",
+    "point_row",
+    "point_velocity",
+    "moved_points",
+]
 
 
 def E(backend: Backend = NUMERIC) -> Matrix:
@@ -314,3 +327,46 @@ def point_velocity(twist: Twist, d: ArrayLike) -> FloatArray:
             f"|d| = {np.abs(d).max():.3g})"
         )
     return v
+
+
+def moved_points(
+    points: Iterable[Point] | FloatArray, origin: Point = (0.0, 0.0), angle: Numbers = 0.0
+) -> list[tuple[Numbers, Numbers]]:
+    r"""Points of the body frame described from another body frame, moved to ``origin`` and turned by ``angle``.
+
+    :math:`\mathbf d' = \mathbf R(-\text{angle})(\mathbf d - \text{origin})`; SymPy coordinates stay SymPy
+    (:meth:`wmr.Robot.moved` re-expresses its mount points with this).
+
+    Parameters
+    ----------
+    points : sequence of pairs (n, 2)
+        Coordinates in the current body frame (numbers or SymPy expressions).
+    origin : pair, optional
+        The new origin, in the current body frame.
+    angle : float, optional
+        Rotation of the new frame relative to the current one (radians, CCW).
+
+    Returns
+    -------
+    list of tuple
+        The ``n`` points in the new frame.
+
+    Examples
+    --------
+    >>> [tuple(round(float(v), 12) + 0.0 for v in p) for p in moved_points([(1.0, 0.0), (-1.0, 0.0)], (1.0, 0.0), np.pi / 2)]
+    [(0.0, 0.0), (0.0, 2.0)]
+    """
+    if isinstance(points, (str, bytes)) or not hasattr(points, "__iter__"):
+        raise InputTypeError(f"points must be a sequence of pairs (n, 2), got {show(points)}")
+    pts = [point(f"points[{k}]", p) for k, p in enumerate(points)]
+    ox, oy = point("origin", origin)
+    angle = number("angle", angle)
+    c, s = np.cos(angle), np.sin(angle)
+    out = []
+    with np.errstate(over="ignore", invalid="ignore"):
+        for px, py in pts:
+            x, y = px - ox, py - oy
+            out.append((c * x + s * y, -s * x + c * y))
+    if not all(np.isfinite(float(v)) for p in out for v in p if not isinstance(v, sp.Basic)):
+        raise InputValueError(f"origin = {show(origin)} is too far from the mount points (their coordinates overflow)")
+    return out

@@ -21,7 +21,7 @@ from . import arrays as A
 from . import checks as C
 from .backend import NUMERIC, SYMBOLIC, Backend, choose
 from .limits import check
-from .platform import point_row
+from .platform import moved_points, point_row
 from .tolerance import column_norms
 from .trig import trig_combination
 from .types import ArrayLike, FloatArray, Matrix, Numbers, Point, Symbolic
@@ -366,7 +366,8 @@ class Robot:
 
         The new frame has its origin (new operation point) at ``origin`` and is rotated by
         ``angle`` relative to the current one; mount points are re-expressed,
-        :math:`\\mathbf d_i' = \\mathbf R(-\\text{angle})(\\mathbf d_i - \\text{origin})`, and steering
+        :math:`\\mathbf d_i' = \\mathbf R(-\\text{angle})(\\mathbf d_i - \\text{origin})`
+        (:func:`~wmr.model.platform.moved_points`), and steering
         angles shift by ``-angle``.  A twist transforms as
         :math:`\\dot\\psi' = \\dot\\psi`, :math:`\\dot{\\mathbf c}' = \\mathbf R(-\\text{angle})(\\dot{\\mathbf c} +
         \\dot\\psi\\mathbf E\\,\\text{origin})`; joint rates do not change (the angles of fixed and Swedish
@@ -390,17 +391,9 @@ class Robot:
         >>> (bot.moved(origin=(1.0, 0.0), angle=np.pi / 2).mount_points.round(12) + 0.0).tolist()
         [[0.0, 0.0], [0.0, 2.0]]
         """
-        ox, oy = C.point("origin", origin)
+        moved = moved_points([u.position for u in self.wheels], origin, angle)  # (w, 2), checked
         angle = C.number("angle", angle)
-        c, s = np.cos(angle), np.sin(angle)
-        moved = []
-        with np.errstate(over="ignore", invalid="ignore"):
-            for u in self.wheels:
-                x, y = u.position[0] - ox, u.position[1] - oy
-                moved.append((c * x + s * y, -s * x + c * y))
         try:
-            if not all(np.isfinite(float(v)) for p in moved for v in p if not isinstance(v, sp.Basic)):
-                raise InputValueError("their coordinates overflow")
             return Robot([u.remounted(p, angle) for u, p in zip(self.wheels, moved, strict=True)], name=self.name)
         except InputValueError as e:
             raise InputValueError(f"origin = {C.show(origin)} is too far from the mount points ({e})") from None

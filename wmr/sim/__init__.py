@@ -13,6 +13,8 @@ joints (:meth:`wmr.model.wheels.WheelUnit.mechanism`, plain data) and says which
 - :mod:`wmr.sim.mjcf`: :func:`to_mjcf`, the MJCF text of any robot (no MuJoCo needed);
 - :mod:`wmr.sim.simulation`: :class:`Simulation`, a robot in MuJoCo commanded and measured in wmr's
   variables (servos, drive locks, pushes);
+- :mod:`wmr.sim.measure`: :class:`~wmr.sim.measure.Probe`, what a MuJoCo state says in wmr's variables (pose,
+  twist, joint rates, contact forces, slip);
 - :mod:`wmr.sim.recording`: :class:`Schedule` (commands over time), :class:`Sample` and :class:`Recording`
   (measurements);
 - :mod:`wmr.sim.runner`: :func:`run`, a simulation driven along a schedule;

@@ -7,13 +7,9 @@ of :attr:`wmr.Robot.rate_names`), and gives each servo its target through the un
 measures.  Servos can be switched off (a free drive), drive hinges locked (the paper's locked
 drives), and a force and torque can be applied to the platform at C (a push).
 
-:meth:`Simulation.sample` measures, in wmr's variables: the platform pose :math:`(\psi, X, Y)` and
-body twist :math:`[\dot\psi, \dot x, \dot y]`; the steering angles and the encoders' joint rates
-(an offset wheel's :math:`\dot\phi_i = \dot\psi + \dot\beta_i` (7) from its steering encoder and the
-platform's turning rate); the servo torques; and per wheel the contact point, the contact force
-(world frame, on the wheel), its friction torques, and the **slip**, the velocity
-of the wheel's material point at the contact relative to the ground (zero for rolling without
-slipping, (6)), and the power the contact takes from it (:class:`~wmr.sim.recording.Sample`).
+:meth:`Simulation.sample` measures the state in wmr's variables (the pose and twist, the steering angles and
+joint rates, the servo torques, and per wheel the contact force and the slip) with the model's
+:class:`~wmr.sim.measure.Probe`.
 :func:`wmr.sim.runner.run` drives a simulation along a :class:`~wmr.sim.recording.Schedule`.
 
 MuJoCo is imported here only (``pip install 'wmr-kinematics[sim]'``); ``import wmr`` does not import it.
@@ -31,6 +27,7 @@ from ..model import validation as V
 from ..model.robot import Robot
 from ..model.types import ArrayLike, FloatArray
 from .bodies import POSITION, VELOCITY, servo
+from .measure import Probe
 from .mjcf import Export, export
 from .params import Params
 from .recording import Sample
@@ -49,12 +46,6 @@ def _mujoco():
             f"wmr.sim needs MuJoCo: pip install '{DISTRIBUTION}[sim]' (or pip install mujoco)"
         ) from e
     return mujoco
-
-
-def _yaw(q):
-    """Heading of a quaternion (w, x, y, z) about the vertical."""
-    w, x, y, z = q
-    return float(np.arctan2(2 * (w * z + x * y), 1 - 2 * (y * y + z * z)))
 
 
 class Simulation:
@@ -110,18 +101,14 @@ class Simulation:
             self._hinges.append((i, j, col, int(m.jnt_qposadr[jid]), int(m.jnt_dofadr[jid])))
         self.servo_names = tuple(m.actuator(a).name for a in range(m.nu))
         self.joint_names = tuple(ex.name(i, j.name) for i, j, *_ in self._hinges)
-        self._qa = np.array([h[3] for h in self._hinges], dtype=int)
-        self._da = np.array([h[4] for h in self._hinges], dtype=int)
         self._servo = {n: a for a, n in enumerate(self.servo_names)}
         wheels = [(i, ex.name(i, b.name)) for i, mech in enumerate(ex.mechanisms) for b in mech.wheels]
         self.wheel_names = tuple(n for _, n in wheels)
         self.wheel_unit = np.array([i for i, _ in wheels], dtype=int)
-        self._geom = {self._id(mj.mjtObj.mjOBJ_GEOM, n): k for k, (_, n) in enumerate(wheels)}
-        self._wheel_body = [int(m.geom_bodyid[g]) for g in sorted(self._geom, key=lambda g: self._geom[g])]
         self._platform = self._id(mj.mjtObj.mjOBJ_BODY, "platform")
+        geoms = [self._id(mj.mjtObj.mjOBJ_GEOM, n) for _, n in wheels]
+        self._probe = Probe(mj, m, self.robot, self._hinges, geoms, self._platform)
         self._gains = (m.actuator_gainprm.copy(), m.actuator_biasprm.copy())
-        self._jacp, self._jacr = np.zeros((3, m.nv)), np.zeros((3, m.nv))
-        self._f6 = np.zeros(6)
         # each servo's target as a linear map of (beta, rates): a steering servo takes beta_i, a drive servo its rate
         self._from_beta, self._from_rates = np.zeros((m.nu, self.robot.w)), np.zeros((m.nu, self.robot.n_rates))
         for i, j, col, _, _ in self._hinges:
@@ -355,63 +342,11 @@ class Simulation:
 
     # --- measurements ----------------------------------------------------------------------
     def sample(self) -> Sample:
-        """Measure the present state (module docstring).
+        """Measure the present state (module docstring; :meth:`wmr.sim.measure.Probe.sample`).
 
         Returns
         -------
         Sample
         """
-        mj, m, d = self._mj, self.model, self.data
-        mj.mj_forward(m, d)  # positions, contacts and forces of this state
-        q = d.qpos
-        psi = _yaw(q[3:7])
-        c, s = np.cos(psi), np.sin(psi)
-        v = d.qvel[0:3]  # world-frame velocity of C
-        wz = float(d.xmat[self._platform].reshape(3, 3)[:, 2] @ d.qvel[3:6])  # turning rate (body -> world z)
-        twist = np.array([wz, c * v[0] + s * v[1], -s * v[0] + c * v[1]])
-        beta = np.array(self.robot.effective_beta(np.zeros(self.robot.w)), dtype=float)
-        rates = np.zeros(self.robot.n_rates)
-        for i, j, col, qa, da in self._hinges:
-            if j.steering:
-                beta[i] = q[qa]
-            if col is not None:
-                rates[col] = d.qvel[da] + (wz if j.absolute else 0.0)
-        nw = len(self.wheel_names)
-        point = np.full((nw, 3), np.nan)
-        force, moment = np.zeros((nw, 3)), np.zeros((nw, 3))
-        slip, power = np.zeros((nw, 2)), np.zeros(nw)
-        for k in range(d.ncon):
-            con = d.contact[k]
-            g1, g2 = int(con.geom[0]), int(con.geom[1])
-            w = self._geom.get(g2, self._geom.get(g1))
-            if w is None:
-                continue
-            mj.mj_contactForce(m, d, k, self._f6)
-            frame = con.frame.reshape(3, 3)  # rows: normal (geom1 -> geom2), tangents
-            sign = 1.0 if g2 in self._geom else -1.0  # the force on geom2 is +, on geom1 -
-            f = sign * (frame.T @ self._f6[:3])
-            tq = sign * (frame.T @ self._f6[3:6])
-            p = np.array(con.pos)
-            mj.mj_jac(m, d, self._jacp, self._jacr, p, self._wheel_body[w])
-            u, om = self._jacp @ d.qvel, self._jacr @ d.qvel  # the wheel's point at p, the wheel's spin
-            force[w] += f
-            moment[w] += tq
-            point[w] = p
-            slip[w] = u[:2]
-            power[w] -= f @ u + tq @ om
-        torque = np.array(d.actuator_force, dtype=float)
-        return Sample(
-            float(d.time),
-            np.array([psi, q[0], q[1]]),
-            twist,
-            beta,
-            rates,
-            torque,
-            q[self._qa].copy(),
-            d.qvel[self._da].copy(),
-            point,
-            force,
-            moment,
-            slip,
-            power,
-        )
+        self._mj.mj_forward(self.model, self.data)  # positions, contacts and forces of this state
+        return self._probe.sample(self.data)

@@ -11,6 +11,8 @@ tests check them against ``robotpy-wpimath`` (``tests/test_swerve_wpilib.py``).
 - :mod:`wmr.swerve.optimize`: WPILib's per-module ``optimize`` and the robot-level steering choice;
 - :mod:`wmr.swerve.limits`: desaturation keeping the instantaneous centre, cosine compensation,
   discretisation of a twist over a control period (the SE(2) exponential);
+- :mod:`wmr.swerve.profiles`: the commanded twists of a transient (a change of direction, a spin while
+  translating);
 - :mod:`wmr.swerve.transient`: the re-steering transient simulator (rate-limited modules following a
   twist profile; slip and path error for each strategy);
 - :mod:`wmr.swerve.plot`: its figure (matplotlib, imported only there).
@@ -63,16 +65,8 @@ from .modules import (
     to_wpilib,
 )
 from .optimize import MAX_MODULES, SteeringChoice, optimize_modules, optimize_robot, transition_slip
-from .transient import (
-    STRATEGIES,
-    Transient,
-    TransientStudy,
-    TwistProfile,
-    direction_change,
-    resteer_study,
-    resteer_transient,
-    spin_and_translate,
-)
+from .profiles import TwistProfile, direction_change, spin_and_translate
+from .transient import STRATEGIES, Transient, TransientStudy, resteer_study, resteer_transient
 
 __all__ = [
     "ModuleCommand",

@@ -7,7 +7,8 @@ module measures that transient for each way of commanding the modules.
 
 Model, one control period :math:`\Delta t` after another (step :math:`k`):
 
-1. the commanded twist :math:`\mathbf t_k` (:class:`TwistProfile`) gives target angles and speeds by
+1. the commanded twist :math:`\mathbf t_k` (:class:`~wmr.swerve.profiles.TwistProfile`, made by
+   :mod:`wmr.swerve.profiles` and re-exported here) gives target angles and speeds by
    a **strategy**: ``"plain"`` (:func:`~wmr.swerve.modules.module_commands`: speeds :math:`\ge 0`,
    no flips), ``"module"`` (WPILib's per-module ``optimize``,
    :func:`~wmr.swerve.optimize.optimize_modules`) or ``"robot"`` (the robot-level choice,
@@ -38,10 +39,11 @@ from ..errors import InputTypeError, InputValueError
 from ..model import validation as V
 from ..model.platform import wrap_angle
 from ..model.robot import Robot
-from ..model.types import ArrayLike, FloatArray
+from ..model.types import ArrayLike
 from .limits import cosine_compensate, se2_exp
 from .modules import chassis_twist, module_commands, swerve_robot
 from .optimize import optimize_modules, optimize_robot
+from .profiles import MAX_STEPS, TwistProfile, direction_change, spin_and_translate
 
 __all__ = [
     "TwistProfile",
@@ -57,127 +59,6 @@ __all__ = [
 
 #: The strategies compared by :func:`resteer_study`: (strategy, cosine compensation).
 STRATEGIES = (("plain", False), ("module", False), ("module", True), ("robot", False), ("robot", True))
-#: Most control periods in a profile.
-MAX_STEPS = 100_000
-
-
-@dataclass(frozen=True)
-class TwistProfile:
-    r"""A commanded twist, one per control period.
-
-    Attributes
-    ----------
-    name : str
-    dt : float
-        Control period, s.
-    twist : numpy.ndarray (N, 3)
-        :math:`[\dot\psi, \dot x, \dot y]` (body frame) held over :math:`[k\Delta t, (k+1)\Delta t)`.
-    """
-
-    name: str
-    dt: float
-    twist: np.ndarray
-
-    @property
-    def t(self) -> FloatArray:
-        """Start of each period, s: (N,)."""
-        return np.arange(len(self.twist)) * self.dt
-
-
-def _times(t_change, t_end, dt, first="t_change"):
-    t_change = V.number(first, V.positive(first, t_change))
-    t_end = V.number("t_end", V.positive("t_end", t_end))
-    dt = V.number("dt", V.positive("dt", dt))
-    if not t_change < t_end:
-        raise InputValueError(f"{first} must be before t_end, got {first} = {t_change!r}, t_end = {t_end!r}")
-    n = np.ceil(t_end / dt - 1e-9)
-    if not n <= MAX_STEPS:
-        raise InputValueError(f"dt = {dt!r} needs {n:.3g} periods to reach t_end = {t_end!r}, more than {MAX_STEPS}")
-    return t_change, dt, np.arange(int(n)) * dt
-
-
-def _body(field_velocity, psi_dot, t, names):
-    r"""Body twists from fixed-frame velocities (N, 2) and turning rates (N,), heading :math:`\psi = \int\dot\psi`."""
-    with np.errstate(over="ignore", invalid="ignore"):
-        psi = np.concatenate([[0.0], np.cumsum(psi_dot[:-1])]) * (t[1] - t[0] if len(t) > 1 else 0.0)
-        c, s = np.cos(psi), np.sin(psi)
-        vx, vy = field_velocity[:, 0], field_velocity[:, 1]
-        out = np.column_stack([psi_dot, c * vx + s * vy, -s * vx + c * vy])  # R(-psi) v
-    if not np.isfinite(out).all():
-        raise InputValueError(f"{names} are too large: the commanded twist or heading overflows double precision")
-    return out
-
-
-def direction_change(
-    speed: float = 1.0,
-    angle: float = np.pi / 2,
-    spin: float = 0.0,
-    t_change: float = 0.25,
-    t_end: float = 1.0,
-    dt: float = 0.01,
-) -> TwistProfile:
-    r"""Drive along the fixed x axis, then, at ``t_change``, along the direction ``angle``.
-
-    Parameters
-    ----------
-    speed : float
-        Speed of C, m/s, > 0.
-    angle : float
-        Change of direction, radians (:math:`\pi/2`: a 90 degree change).
-    spin : float
-        Constant turning rate :math:`\dot\psi` throughout, rad/s (a driver's small rotation
-        spreads the modules' angles, as real encoders do).
-    t_change, t_end, dt : float
-        Time of the change, duration and control period, s.
-
-    Returns
-    -------
-    TwistProfile
-
-    Examples
-    --------
-    >>> p = direction_change(speed=2.0, t_change=0.5, t_end=1.0, dt=0.25)
-    >>> p.twist.round(12).tolist()
-    [[0.0, 2.0, 0.0], [0.0, 2.0, 0.0], [0.0, 0.0, 2.0], [0.0, 0.0, 2.0]]
-    """
-    speed = V.number("speed", V.positive("speed", speed))
-    angle = V.number("angle", angle)
-    spin = V.number("spin", spin)
-    t_change, dt, t = _times(t_change, t_end, dt)
-    after = t >= t_change - 1e-9 * dt
-    heading = np.where(after, angle, 0.0)
-    v = speed * np.column_stack([np.cos(heading), np.sin(heading)])
-    with np.errstate(over="ignore"):
-        name = f"{np.degrees(angle):g} deg change of direction"
-    return TwistProfile(name, dt, _body(v, np.full(len(t), spin), t, "speed and spin"))
-
-
-def spin_and_translate(
-    speed: float = 1.0, rate: float = 3.0, t_start: float = 0.25, t_end: float = 1.0, dt: float = 0.01
-) -> TwistProfile:
-    r"""Drive along the fixed x axis; from ``t_start`` on, keep doing so while spinning at ``rate``.
-
-    In the body frame the velocity of C turns at :math:`-\dot\psi`: every module must keep steering.
-
-    Parameters
-    ----------
-    speed : float
-        Speed of C, m/s, > 0.
-    rate : float
-        Turning rate :math:`\dot\psi` after ``t_start``, rad/s.
-    t_start, t_end, dt : float
-        Start of the spin, duration and control period, s.
-
-    Returns
-    -------
-    TwistProfile
-    """
-    speed = V.number("speed", V.positive("speed", speed))
-    rate = V.number("rate", rate)
-    t_start, dt, t = _times(t_start, t_end, dt, first="t_start")
-    psi_dot = np.where(t >= t_start - 1e-9 * dt, rate, 0.0)
-    v = np.tile([speed, 0.0], (len(t), 1))
-    return TwistProfile("spin while translating", dt, _body(v, psi_dot, t, "speed and rate"))
 
 
 @dataclass(frozen=True)

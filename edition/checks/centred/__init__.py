@@ -11,20 +11,14 @@ The checks, by equation group:
 
 ================  ==================================================================================================
 :mod:`.mobility`  centred wheels, (51)-(57): kinematics, F, mobility and the isotropic kinematics
-:mod:`.singular`  singular configurations, (58)-(59): det J, the printed determinant, line classes, the paper's list
+:mod:`.singular`  singular configurations, (58): det J from the wheel-plane lines, the printed determinant
+:mod:`.zero_set`  the zero set of det J against the paper's list (59): line classes, items (i)-(v), item (v) on the circle
 ================  ==================================================================================================
 """
 
 from .mobility import L_NUM, R_NUM, functional_matrix, isotropic_kinematics, kinematics, mobility_centred
-from .singular import (
-    LINE_CLASSES,
-    classify_lines,
-    planes_through,
-    printed_determinant,
-    singular_configurations,
-    singular_list,
-    singular_v,
-)
+from .singular import printed_determinant, singular_configurations
+from .zero_set import LINE_CLASSES, classify_lines, planes_through, singular_list, singular_v
 
 __all__ = [
     "L_NUM",

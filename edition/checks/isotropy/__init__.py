@@ -10,17 +10,17 @@ conditioned, and proves a bound: for three centred wheels, wherever the robot ca
 
 The checks, by equation group:
 
-==============  ==================================================================================================
-:mod:`.jl1`     isotropy of J_L1, (30)-(39): condition number, homogeneous Jacobian, Gram matrix, placement, L
-:mod:`.j2`      isotropy of J2, (40)-(50): its product, d = r, the dead zone of isotropy, the isotropic kinematics
-:mod:`.robust`  robust control: J = J_L1^T J2 isotropic for offset wheels (d = r), kappa >= sqrt 2 for centred
-==============  ==================================================================================================
+=================  ==================================================================================================
+:mod:`.condition`  the condition number, (30)-(31): the definition applied to J_L1, against wmr.condition_number
+:mod:`.jl1`        isotropy of J_L1, (32)-(39): homogeneous Jacobian, Gram matrix, isotropy conditions, placement, L
+:mod:`.j2`         isotropy of J2, (40)-(50): its product, d = r, the dead zone of isotropy, the isotropic kinematics
+:mod:`.robust`     robust control: J = J_L1^T J2 isotropic for offset wheels (d = r), kappa >= sqrt 2 for centred
+=================  ==================================================================================================
 """
 
+from .condition import RHO, condition_number_def
 from .j2 import J2_isotropy, J2_product, dead_zone_of_isotropy, isotropic_kinematics
 from .jl1 import (
-    RHO,
-    condition_number_def,
     general_robot,
     gram,
     homogeneous_jacobian,

@@ -1,0 +1,275 @@
+r"""Marks at points of a drawing: labels, points, arrows, frames and angles.
+
+All positions are in data coordinates of the axes (lengths in the robot's unit); offsets of
+labels are in points.  Colours come from :mod:`wmr.plot.style`.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from matplotlib.patches import Arc, FancyArrowPatch
+
+from ..model.backend import NUMERIC
+from ..model.platform import rotation
+from .style import FONT_LABEL, HALO, ROLE
+
+__all__ = ["label", "draw_point", "draw_arrow", "draw_frame", "draw_angle"]
+
+
+def label(
+    ax, xy, text, *, offset=(4, 4), color=None, ha="left", va="bottom", fontsize=FONT_LABEL, zorder=9.0, halo=True, **kw
+):
+    """A text label at ``xy`` shifted by ``offset`` points, with a white halo for legibility.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+    xy : array_like (2,)
+        Anchor in data coordinates.
+    text : str
+        The label (matplotlib mathtext allowed).
+    offset : tuple (2,), optional
+        Shift of the text from ``xy``, in points.
+    color : str, optional
+        Default: the annotation colour of :data:`wmr.plot.style.ROLE`.
+    ha, va : str, optional
+        Alignment of the text relative to the shifted anchor.
+    fontsize, zorder : float, optional
+    halo : bool, optional
+        Draw a white outline behind the text.
+    **kw
+        Passed to :meth:`matplotlib.axes.Axes.annotate`.
+
+    Returns
+    -------
+    matplotlib.text.Annotation
+    """
+    t = ax.annotate(
+        text,
+        xy=tuple(np.asarray(xy, dtype=float)),
+        xytext=offset,
+        textcoords="offset points",
+        ha=ha,
+        va=va,
+        color=color or ROLE["annotation"],
+        fontsize=fontsize,
+        zorder=zorder,
+        **kw,
+    )
+    if halo:
+        t.set_path_effects(HALO)
+    return t
+
+
+def draw_point(
+    ax,
+    xy,
+    text=None,
+    *,
+    marker="o",
+    color=None,
+    size=4.0,
+    offset=(4, 4),
+    ha="left",
+    va="bottom",
+    zorder=8.0,
+    fontsize=FONT_LABEL,
+    face=None,
+):
+    """A marked point with an optional label (in the point's colour).
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+    xy : array_like (2,)
+        The point, data coordinates.
+    text : str, optional
+        Label (see :func:`label`); none by default.
+    marker : str, optional
+        A matplotlib marker.
+    color : str, optional
+        Default: the point colour of :data:`wmr.plot.style.ROLE`.
+    size : float, optional
+        Marker size (points).
+    offset, ha, va, fontsize : optional
+        Placement and size of the label, as in :func:`label`.
+    zorder : float, optional
+    face : str, optional
+        Face colour of the marker (default: ``color``).
+
+    Returns
+    -------
+    None
+    """
+    col = color or ROLE["point"]
+    ax.plot(
+        [xy[0]],
+        [xy[1]],
+        marker=marker,
+        markersize=size,
+        color=col,
+        markerfacecolor=face or col,
+        markeredgewidth=0.8,
+        linestyle="none",
+        zorder=zorder,
+    )
+    if text:
+        label(ax, xy, text, offset=offset, color=col if col != ROLE["point"] else None, ha=ha, va=va, fontsize=fontsize)
+
+
+def draw_arrow(ax, start, vec, *, color=None, lw=1.1, zorder=6.0, head=7.0, style="-|>", ls="-"):
+    """An arrow from ``start`` along ``vec`` (data units).
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+    start : array_like (2,)
+        Tail, data coordinates.
+    vec : array_like (2,)
+        The arrow itself: the tip is at ``start + vec``.
+    color : str, optional
+        Default: the frame colour of :data:`wmr.plot.style.ROLE`.
+    lw, zorder : float, optional
+        Line width and drawing order.
+    head : float, optional
+        Size of the head (``mutation_scale``).
+    style, ls : str, optional
+        Arrow style (``"-|>"``) and line style.
+
+    Returns
+    -------
+    matplotlib.patches.FancyArrowPatch
+    """
+    s = np.asarray(start, dtype=float)
+    e = s + np.asarray(vec, dtype=float)
+    a = FancyArrowPatch(
+        (float(s[0]), float(s[1])),
+        (float(e[0]), float(e[1])),
+        arrowstyle=style,
+        mutation_scale=head,
+        color=color or ROLE["frame"],
+        linewidth=lw,
+        linestyle=ls,
+        shrinkA=0,
+        shrinkB=0,
+        zorder=zorder,
+    )
+    ax.add_patch(a)
+    return a
+
+
+def draw_frame(
+    ax,
+    origin,
+    angle,
+    length,
+    labels=(r"$\mathbf{i}$", r"$\mathbf{j}$"),
+    *,
+    color=None,
+    zorder=6.0,
+    fontsize=FONT_LABEL,
+    lw=1.1,
+):
+    r"""Two arrows (a frame) at ``origin``: the columns of :math:`\mathbf R(\text{angle})` times ``length``.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+    origin : array_like (2,)
+        Data coordinates.
+    angle : float
+        Radians, counter-clockwise from the x-axis.
+    length : float
+        Length of each arrow (data units).
+    labels : tuple of 2 str, optional
+        Labels at the tips (an empty string: none).
+    color : str, optional
+        Default: the frame colour of :data:`wmr.plot.style.ROLE`.
+    zorder, fontsize, lw : float, optional
+
+    Returns
+    -------
+    None
+    """
+    col = color or ROLE["frame"]
+    o = np.asarray(origin, dtype=float)
+    R = rotation(angle, NUMERIC)
+    for e, lab in zip(R.T, labels):
+        draw_arrow(ax, o, length * e, color=col, zorder=zorder, lw=lw)
+        if lab:
+            label(ax, o + 1.12 * length * e, lab, color=col, offset=(0, 0), ha="center", va="center", fontsize=fontsize)
+
+
+def draw_angle(
+    ax,
+    centre,
+    radius,
+    a0,
+    a1,
+    text=None,
+    *,
+    color=None,
+    lw=0.9,
+    text_radius=1.35,
+    fontsize=FONT_LABEL,
+    arrow=True,
+    zorder=6.0,
+):
+    """An arc from angle ``a0`` to ``a1`` (radians, counter-clockwise if a1 > a0) with a label.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+    centre : array_like (2,)
+        Data coordinates.
+    radius : float
+        Radius of the arc (data units).
+    a0, a1 : float
+        Start and end angles (radians).
+    text : str, optional
+        Label, placed on the bisector at ``text_radius * radius``.
+    color : str, optional
+        Default: the annotation colour of :data:`wmr.plot.style.ROLE`.
+    lw : float, optional
+    text_radius : float, optional
+        Distance of the label from ``centre``, in radii.
+    fontsize : float, optional
+    arrow : bool, optional
+        A head at ``a1`` (when the arc is long enough to carry one).
+    zorder : float, optional
+
+    Returns
+    -------
+    None
+    """
+    col = color or ROLE["annotation"]
+    lo, hi = (a0, a1) if a1 >= a0 else (a1, a0)
+    ax.add_patch(
+        Arc(
+            centre,
+            2 * radius,
+            2 * radius,
+            theta1=np.degrees(lo),
+            theta2=np.degrees(hi),
+            color=col,
+            linewidth=lw,
+            zorder=zorder,
+        )
+    )
+    if arrow and abs(a1 - a0) > 0.12:  # head at a1, along the arc
+        e = np.array([np.cos(a1), np.sin(a1)])
+        tdir = np.sign(a1 - a0) * np.array([-np.sin(a1), np.cos(a1)])
+        tip = np.asarray(centre) + radius * e
+        draw_arrow(ax, tip - 0.06 * radius * tdir, 0.06 * radius * tdir, color=col, lw=lw, head=6, zorder=zorder)
+    if text:
+        am = 0.5 * (a0 + a1)
+        label(
+            ax,
+            np.asarray(centre) + text_radius * radius * np.array([np.cos(am), np.sin(am)]),
+            text,
+            offset=(0, 0),
+            ha="center",
+            va="center",
+            color=col,
+            fontsize=fontsize,
+        )

@@ -1,0 +1,259 @@
+r"""The parts of a robot seen from above: the platform disc, and a wheel unit as its intermediate body (a pivot at
+:math:`P_i`, an arm or a bar) carrying wheel discs, rounded rectangles of length :math:`2r` along the rolling
+direction :math:`\mathbf j_i` with an arrow on it, and rollers on a Swedish wheel.
+
+The parts come from the unit itself (:meth:`~wmr.model.wheels.WheelUnit.parts`), so any wheel kind is drawn;
+:mod:`wmr.plot.robot` assembles them into the robot.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from matplotlib.patches import Circle, FancyArrowPatch, FancyBboxPatch
+from matplotlib.transforms import Affine2D
+
+from ..errors import InputTypeError, InputValueError
+from ..model.wheels.parts import Disc, Link, Pivot, Rollers
+from .geometry import to_world
+from .snapping import snap
+from .style import PALETTE, ROLE
+
+__all__ = ["draw_platform", "draw_wheel", "draw_pivot", "draw_unit"]
+
+
+def draw_platform(ax, centre, radius, *, ghost=False, zorder=1.0):
+    """The platform as a disc (dashed outline when ``ghost``).
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+    centre : array_like (2,)
+    radius : float
+    ghost : bool, optional
+        Dashed outline only (an earlier or later pose).
+    zorder : float, optional
+
+    Returns
+    -------
+    None
+    """
+    if ghost:
+        ax.add_patch(
+            Circle(
+                centre,
+                radius,
+                facecolor="none",
+                edgecolor=ROLE["platform_edge"],
+                linewidth=0.8,
+                linestyle=(0, (4, 3)),
+                zorder=zorder,
+            )
+        )
+    else:
+        ax.add_patch(
+            Circle(
+                centre,
+                radius,
+                facecolor=ROLE["platform_face"],
+                edgecolor=ROLE["platform_edge"],
+                linewidth=0.9,
+                zorder=zorder,
+            )
+        )
+
+
+def draw_wheel(
+    ax,
+    centre,
+    heading,
+    r,
+    width=None,
+    *,
+    ghost=False,
+    arrow=True,
+    zorder=4.0,
+    color=None,
+    light=False,
+    towards="travel",
+):
+    r"""A wheel disc seen from above: a rounded rectangle, length 2r along ``heading`` (:math:`\mathbf j_i`).
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+    centre : array_like (2,)
+    heading : float
+        World angle of the wheel frame, :math:`\psi + \beta_i` (the rectangle's long side is
+        along :math:`\mathbf j_i = \mathbf R(\psi+\beta_i)[0\ 1]^T`).
+    r : float
+    width : float, optional
+        Tyre width (default 0.42 r).
+    ghost : bool, optional
+        Dashed outline only.
+    arrow : bool
+        Mark the wheel with a white arrow along its plane.
+    towards : {"travel", "j"}, optional
+        Where the arrow points: ``"travel"`` (default), the way the wheel moves at a positive rolling
+        rate, :math:`-\mathbf j_i` (no slip: :math:`\dot{\mathbf h}_i = -r\dot\theta_i\mathbf j_i`, (6)), so a
+        robot driving forward has its arrows forward; ``"j"``, the paper's rolling direction
+        :math:`+\mathbf j_i` of the wheel frame.
+    zorder : float, optional
+    color : str, optional
+        Default: the wheel colour of :data:`wmr.plot.style.ROLE`.
+    light : bool, optional
+        Light grey face (close-ups).
+
+    Returns
+    -------
+    None
+    """
+    w = 0.42 * r if width is None else width
+    col = color or ROLE["wheel"]
+    face = "none" if ghost else ("#D4D4D4" if light else col)
+    box = FancyBboxPatch(
+        (-w / 2, -r),
+        w,
+        2 * r,
+        boxstyle=f"round,pad=0,rounding_size={0.45 * w}",
+        facecolor=face,
+        edgecolor=col,
+        linewidth=0.8,
+        linestyle=(0, (3, 2)) if ghost else "-",
+        zorder=zorder,
+    )
+    # the placement is snapped here: snap_figure sees the box in its own frame, not this transform
+    box.set_transform(Affine2D().rotate(float(snap(heading))).translate(*snap(centre).tolist()) + ax.transData)
+    ax.add_patch(box)
+    if arrow and not ghost:
+        if towards not in ("travel", "j"):
+            raise InputValueError(f"towards must be 'travel' or 'j', got {towards!r}")
+        jdir = np.array([-np.sin(heading), np.cos(heading)]) * (1.0 if towards == "j" else -1.0)
+        c = np.asarray(centre, dtype=float)
+        ax.add_patch(
+            FancyArrowPatch(
+                c - 0.62 * r * jdir,
+                c + 0.72 * r * jdir,
+                arrowstyle="-|>",
+                mutation_scale=5.5,
+                color=PALETTE["dark"] if light else "white",
+                linewidth=0.8,
+                shrinkA=0,
+                shrinkB=0,
+                zorder=zorder + 0.1,
+            )
+        )
+
+
+def draw_pivot(ax, p, size, *, ghost=False, zorder=5.0):
+    """The steering axis at :math:`P_i`: a small white disc with a dark rim.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+    p : array_like (2,)
+        :math:`P_i` (world).
+    size : float
+        Radius of the disc (data units).
+    ghost : bool, optional
+    zorder : float, optional
+
+    Returns
+    -------
+    None
+    """
+    ax.add_patch(
+        Circle(
+            p, size, facecolor="white" if not ghost else "none", edgecolor=PALETTE["dark"], linewidth=0.8, zorder=zorder
+        )
+    )
+    if not ghost:
+        ax.add_patch(Circle(p, 0.28 * size, facecolor=PALETTE["dark"], edgecolor="none", zorder=zorder + 0.1))
+
+
+def draw_unit(
+    ax, unit, beta, pose=(0.0, 0.0, 0.0), *, ghost=False, zorder=4.0, show_j=True, light=False, arrows="travel"
+):
+    r"""One wheel unit: its parts (:meth:`wmr.model.wheels.WheelUnit.parts`) in world coordinates from ``pose``.
+
+    Each part is drawn by its type, whatever the unit's kind: a :class:`~wmr.model.wheels.parts.Link`
+    as a bar of the intermediate body (over the wheels, an arm; under them, a bar between wheels), a
+    :class:`~wmr.model.wheels.parts.Disc` as a wheel, :class:`~wmr.model.wheels.parts.Rollers` as
+    strokes across the disc along the roller axes, a :class:`~wmr.model.wheels.parts.Pivot` as the
+    steering axis.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+    unit : wheel unit
+        One of ``robot.wheels``.
+    beta : float
+        Its steering angle (radians); a unit without a steering joint (fixed, Swedish) is drawn
+        at its own angle.
+    pose : sequence (3,), optional
+        :math:`(\psi, X, Y)`.
+    ghost : bool, optional
+        Dashed outlines only.
+    zorder : float, optional
+    show_j : bool, optional
+        Mark the rolling direction on each wheel.
+    light : bool, optional
+        Draw the wheels light grey (close-ups, so that the arm and labels stay visible).
+    arrows : {"travel", "j"}, optional
+        Where the wheels' arrows point (:func:`draw_wheel`'s ``towards``): the way each wheel moves at
+        a positive rolling rate (default), or the paper's :math:`+\mathbf j_i`.
+
+    Returns
+    -------
+    P, H : numpy.ndarray (2,)
+        The unit's steering-axis point and centre (world).
+    """
+    beta = unit.drawn_angle(beta)
+    pts = unit.points(beta)
+    lw = 2.2 if not ghost else 1.0
+    ls = "-" if not ghost else (0, (3, 2))
+    for part in unit.parts(beta):
+        if isinstance(part, Link):
+            ends = to_world(pose, part.ends)
+            if part.over:  # an arm, over the wheel
+                ax.plot(
+                    *ends.T,
+                    color=ROLE["body"] if not light else PALETTE["dark"],
+                    linewidth=lw,
+                    linestyle=ls,
+                    solid_capstyle="round",
+                    zorder=zorder + 0.5,
+                )
+            else:  # a bar between wheels, under them
+                ax.plot(*ends.T, color=ROLE["body"], linewidth=lw, linestyle=ls, zorder=zorder - 0.1)
+        elif isinstance(part, Disc):
+            draw_wheel(
+                ax,
+                to_world(pose, part.centre),
+                pose[0] + part.heading,
+                part.r,
+                ghost=ghost,
+                arrow=show_j and part.arrow,
+                zorder=zorder,
+                light=light,
+                towards=arrows,
+            )
+        elif isinstance(part, Rollers):
+            _draw_rollers(ax, to_world(pose, part.centre), pose[0] + part.heading, part.r, part.angle, zorder + 0.1)
+        elif isinstance(part, Pivot):
+            draw_pivot(ax, to_world(pose, part.point), 0.16 * part.r, ghost=ghost, zorder=zorder + 1)
+        else:
+            raise InputTypeError(
+                f"unit.parts() must give Disc, Link, Rollers or Pivot parts, got {type(part).__name__}"
+            )
+    return to_world(pose, pts["P"]), to_world(pose, pts["H"])
+
+
+def _draw_rollers(ax, centre, heading, r, angle, zorder):
+    """Three white strokes across a wheel disc along its roller axes (world angle ``heading + angle``)."""
+    a = heading + angle
+    half = min(0.21 * r / max(abs(np.cos(angle)), 1e-3), 0.25 * r)  # across the tyre
+    ends = half * np.array([np.cos(a), np.sin(a)])
+    jdir = np.array([-np.sin(heading), np.cos(heading)])
+    for k in (-0.6, 0.0, 0.6):
+        m = centre + k * r * jdir
+        ax.plot(*np.stack([m - ends, m + ends]).T, color="white", linewidth=0.8, zorder=zorder)
