@@ -212,4 +212,5 @@ def test_fused_sweep_does_not_depend_on_the_chunk():
     assert n < FUSED_CHUNK  # (one chunk by default)
     a = sweep(SWERVE, "kappa_J", Drivable(n, seed=2), keep=True)
     b = sweep(SWERVE, "kappa_J", Drivable(n, seed=2), keep=True, chunk=BLOCK)
+    assert a.values is not None and b.values is not None
     assert np.array_equal(a.values, b.values) and a.quantiles == b.quantiles and a.worst_index == b.worst_index
