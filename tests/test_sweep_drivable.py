@@ -5,6 +5,8 @@ The reference is the definition, written out: the coordinated steering angles of
 from numpy.linalg.svd, inf where s_min <= TOL s_max (31).
 """
 
+from pathlib import Path
+
 import numpy as np
 import pytest
 
@@ -16,7 +18,8 @@ from wmr.analysis.sweep.swerve_kappa import SwerveKappa
 from wmr.errors import InputValueError
 
 EPS = np.finfo(float).eps
-SWERVE = wmr.load("examples/swerve4.toml")
+EXAMPLES = Path(__file__).resolve().parent.parent / "examples"
+SWERVE = wmr.load(EXAMPLES / "swerve4.toml")
 
 
 def _robot(points, radii):
@@ -174,7 +177,7 @@ def test_sweep_reductions_equal_those_of_the_general_kernels():
 
 
 def test_no_fused_kernel_for_other_robots():
-    bot = wmr.load("examples/engineers/rover6.toml")  # fixed wheels too
+    bot = wmr.load(EXAMPLES / "engineers" / "rover6.toml")  # fixed wheels too
     with pytest.raises(InputValueError, match="swerve-like"):
         SwerveKappa(bot, 1.0)
     assert kappa_J_of_twists(bot, np.ones((2, 3)), 1.0) is None
