@@ -804,6 +804,11 @@ NOT_FUZZED = {
     "DesignHints": "a base of WheelUnit: the design hints, fuzzed through advice on every robot",
     "Motions": "Drivable bound to a robot (Drivable.bind)",
     "kappa_J_drivable": "the fused kernel of a drivable sweep, fuzzed through kappa_J_of_twists and sweep",
+    "SwerveKappa": "as kappa_J_drivable (its callers check the robot, L and the twists)",
+    "swerve_like": "a predicate on a checked robot, fuzzed through kappa_J_of_twists",
+    "fused_kernel": "as SwerveKappa",
+    "kappa_from_gram": "a kernel on SwerveKappa's workspace arrays, fuzzed through kappa_J_of_twists and sweep",
+    "kappa_by_lapack": "as kappa_from_gram",
     "in_degrees": "a helper of the kinds' constructors (angle or angle_deg), fuzzed through FixedWheel, SwedishWheel",
     "twist_kind": "a predicate: any value is a valid question",
 }

@@ -15,15 +15,16 @@ import numpy as np
 from ..model.tolerance import TOL
 from ._batch import for_chunks
 
-__all__ = ["det", "certified_full_rank", "condition_number_3x3", "kappa_from_columns", "KAPPA_ERROR", "ACCURACY"]
+__all__ = ["det", "certified_full_rank", "condition_number_3x3", "KAPPA_ERROR", "ACCURACY"]
 
 _EPS = np.finfo(float).eps
 #: A 3x3 condition number from the closed form is kept when its computed error bound is at most
 #: ``KAPPA_ERROR * eps * kappa`` (about the SVD's own accuracy); others go to the SVD.
 KAPPA_ERROR = 16.0
-_SAFE = (1e-100, 1e100)
-#: :func:`kappa_from_columns` accepts a relative error bound up to this, or the SVD's own if larger
-ACCURACY = 1e-12  # range of ||A||_F^2 where no product below over- or underflows
+_SAFE = (1e-100, 1e100)  # range of ||A||_F^2 where no product below over- or underflows
+#: the fused kernel of a drivable sweep (:mod:`wmr.analysis.sweep.swerve_kappa`) accepts a relative error bound
+#: up to this, or the SVD's own if larger
+ACCURACY = 1e-12
 
 
 def _entries(A, a, b, scale=None):
@@ -239,67 +240,3 @@ def _kappa_entries(e):
     )
     kappa = lam1 * np.sqrt(lam2) / absD  # sqrt(lam1 / lam3), lam3 = det^2 / (lam1 lam2)
     return kappa, _accept(kappa, f, lam1, lam2, E, _EPS * per / absD)
-
-
-def kappa_from_columns(cols, accuracy=ACCURACY):
-    r"""Condition numbers of 3 x n matrices (n >= 3) given by columns, in closed form with a certificate.
-
-    With the columns :math:`\mathbf c_j` of :math:`\mathbf M` (3 x n), :math:`\mathbf G = \mathbf M\mathbf M^T
-    = \sum_j\mathbf c_j\mathbf c_j^T` gives :math:`\lambda_1, \lambda_2` as in
-    :func:`condition_number_3x3`, and the product of the squared singular values comes from the
-    Cauchy-Binet formula, :math:`\det\mathbf G = \sum_S(\det\mathbf M_S)^2` over the 3-column subsets
-    :math:`S` (each determinant by cofactors, to an absolute accuracy of
-    :math:`\epsilon\operatorname{per}|\mathbf M_S| \le \epsilon\prod_{j\in S}\|\mathbf c_j\|_1`, bounded
-    in sum through :math:`\operatorname{tr}\mathbf G`), so that
-    :math:`\kappa = \lambda_1\sqrt{\lambda_2/\det\mathbf G}` keeps the accuracy of the square case.
-    Members are accepted by the same first-order bound and tests as :func:`condition_number_3x3`,
-    except that a relative error bound up to ``accuracy`` is accepted too (the determinants'
-    bound through the columns' 1-norms is cheap but a few times loose, which would send well
-    conditioned members to the SVD for a bound of a few eps); the others should go to the SVD.
-
-    Parameters
-    ----------
-    cols : numpy.ndarray (3, n, k), or a list of n lists of 3 numpy.ndarray (k,)
-        Entry (i, j) of every matrix of the batch: ``cols[i, j]`` (an array), or ``cols[j][i]`` (lists).
-    accuracy : float, optional
-        Relative error accepted besides ``KAPPA_ERROR * eps * kappa`` (default :data:`ACCURACY`).
-
-    Returns
-    -------
-    kappa : numpy.ndarray (k,)
-    accepted : numpy.ndarray of bool (k,)
-
-    Examples
-    --------
-    >>> M = np.array([[1.0, 0.0, 0.0, 1.0], [0.0, 2.0, 0.0, 0.0], [0.0, 0.0, 3.0, 0.0]])
-    >>> kappa, ok = kappa_from_columns(M[:, :, None])
-    >>> bool(ok[0]), bool(np.isclose(kappa[0], np.linalg.cond(M)))
-    (True, True)
-    """
-    C = np.asarray(cols, dtype=float)
-    if not isinstance(cols, np.ndarray):  # lists: column-major -> (3, n, k)
-        C = C.transpose(1, 0, 2)
-    n = C.shape[1]
-    # G = M M^T: each entry a sum over the columns (one reduction over the stacked columns)
-    g = {(i, j): np.einsum("jk,jk->k", C[i], C[j]) for i in range(3) for j in range(i, 3)}
-    f, lam1, lam2, E = _gram_eigen(g[0, 0], g[0, 1], g[0, 2], g[1, 1], g[1, 2], g[2, 2])
-    # 2x2 minors of rows 1, 2 for every pair of columns, then each 3-subset's determinant along row 0
-    pairs = [(j, k) for j in range(n) for k in range(j + 1, n)]
-    at = {p: q for q, p in enumerate(pairs)}
-    J, K = np.array(pairs).T
-    minor = C[1, J] * C[2, K]
-    minor -= C[1, K] * C[2, J]
-    A, B, Cc = np.array([(a, b, c) for a in range(n) for b in range(a + 1, n) for c in range(b + 1, n)]).T
-    bc, ac, ab = ([at[p] for p in zip(x, y)] for x, y in ((B, Cc), (A, Cc), (A, B)))
-    d = C[0, A] * minor[bc]
-    d -= C[0, B] * minor[ac]
-    d += C[0, Cc] * minor[ab]
-    D = np.einsum("jk,jk->k", d, d)
-    # rounding: |fl(det M_S) - det M_S| <= eps per|M_S| <= eps prod_{j in S} ||c_j||_1, so by Cauchy-Schwarz
-    # and Maclaurin sum_S |det M_S| prod ||c_j||_1 <= sqrt(D C(n,3)) (sum_j ||c_j||_1^2 / n)^(3/2), and
-    # ||c_j||_1^2 <= 3 ||c_j||^2 with sum_j ||c_j||^2 = tr G = f
-    subsets = len(A)
-    det_error = _EPS * (np.sqrt(subsets * (3 * f / n) ** 3 / D) + n)
-    absD = np.sqrt(D)
-    kappa = lam1 * np.sqrt(lam2) / absD
-    return kappa, _accept(kappa, f, lam1, lam2, E, det_error, accuracy)

@@ -16,23 +16,29 @@ chunks finish, or on where they ran.
 
 Analyses (:data:`ANALYSES`):
 
-=============  =================================================================================  ==================
-name           value at a configuration                                                           "worst" end
-=============  =================================================================================  ==================
-``rank_F``     :math:`\operatorname{rank}\mathbf F` (24)                                          smallest
-``mobility``   :math:`\nu = (3+n) - \operatorname{rank}\mathbf F` (27)                            largest
-``det_J``      :math:`\det\mathbf J`, :math:`\mathbf J = \mathbf J_{L1}^T\mathbf J_2` (56), (58)  smallest magnitude
-``kappa_J``    :math:`\kappa(\mathbf J)` (30), ``inf`` where singular                             largest
-``kappa_JL1``  :math:`\kappa(\mathbf J_{L1})` (32): independent of :math:`\boldsymbol\beta`       largest
-=============  =================================================================================  ==================
+=====================  =================================================================================  ==================
+name                   value at a configuration                                                           "worst" end
+=====================  =================================================================================  ==================
+``rank_F``             :math:`\operatorname{rank}\mathbf F` (24)                                          smallest
+``mobility``           :math:`\nu = (3+n) - \operatorname{rank}\mathbf F` (27)                            smallest
+``actuated_mobility``  the dimension of the twists the motors can command (driven joints only)            smallest
+``det_J``              :math:`\det\mathbf J`, :math:`\mathbf J = \mathbf J_{L1}^T\mathbf J_2` (56), (58)  smallest magnitude
+``kappa_J``            :math:`\kappa(\mathbf J)` (30), ``inf`` where singular                             largest
+``kappa_JL1``          :math:`\kappa(\mathbf J_{L1})` (32): independent of :math:`\boldsymbol\beta`       largest
+=====================  =================================================================================  ==================
 
-The "worst" end is the one closest to a singularity: a rank drop of :math:`\mathbf F` (s
+The "worst" end is the one a designer worries about: for rank F, a rank drop (a singular
+:math:`\mathbf F`); for the mobilities, the fewest directions the robot can drive in; for
+:math:`\mathbf J`, the closest approach to a singular matrix.
 
 Where the parts live:
 
 =========================================  =====================================================================
 :mod:`~wmr.analysis.sweep.analyses`        the analyses by name (:data:`ANALYSES`)
 :mod:`~wmr.analysis.sweep.configurations`  which configurations: :class:`Grid`, :class:`Sample`, explicit angles
+:mod:`~wmr.analysis.sweep.motions`         the configurations a robot can drive in: :class:`Drivable` (twists)
+:mod:`~wmr.analysis.sweep.swerve_kappa`    the fused kernel of ``kappa_J`` over them for a swerve-like robot
+:mod:`~wmr.analysis.sweep.gram_kappa`      its closed-form, certified condition number from a Gram matrix
 :mod:`~wmr.analysis.sweep.reduction`       the associative reduction of one chunk (extremes, counts, sketch)
 :mod:`~wmr.analysis.sweep.execute`         :func:`sweep`: chunks evaluated here or on a Dask cluster
 :mod:`~wmr.analysis.sweep.result`          the result, :class:`Sweep`

@@ -68,6 +68,13 @@ def _kappa_J_drivable(source, start, stop, L, fold):
     return kappa_J_drivable(source, start, stop, L, fold)
 
 
+def _kappa_J_fused(robot, L):
+    from .motions import fused_kernel
+    from .swerve_kappa import swerve_like
+
+    return swerve_like(robot) and fused_kernel(robot, J_length(robot, L)) is not None  # (a small robot: cheap)
+
+
 def _actuated(robot, beta, L):
     from ..actuation import actuated_mobility
 
@@ -89,6 +96,7 @@ class _Analysis:
     uses_L: bool = False
     square: bool = False
     drivable: Callable[..., Any] | None = None  # (source, start, stop, L, fold) -> bool: a fused kernel
+    fused: Callable[..., bool] | None = None  # (robot, L or None) -> whether ``drivable`` applies
 
 
 #: The analyses :func:`sweep` knows, by name.
@@ -97,6 +105,8 @@ ANALYSES = {
     "mobility": _Analysis("mobility", _mobility, True, "min"),
     "actuated_mobility": _Analysis("actuated mobility", _actuated, True, "min"),
     "det_J": _Analysis("det J", _det_J, False, "min_abs", uses_L=True, square=True),
-    "kappa_J": _Analysis("kappa(J)", _kappa_J, False, "max", uses_L=True, drivable=_kappa_J_drivable),
+    "kappa_J": _Analysis(
+        "kappa(J)", _kappa_J, False, "max", uses_L=True, drivable=_kappa_J_drivable, fused=_kappa_J_fused
+    ),
     "kappa_JL1": _Analysis("kappa(J_L1)", _kappa_JL1, False, "max", uses_L=True),
 }

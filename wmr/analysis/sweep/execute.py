@@ -25,7 +25,7 @@ from .motions import Drivable, Motions
 from .reduction import Partial
 from .result import Sweep, finish
 
-__all__ = ["Angles", "sweep", "bytes_per_configuration", "QUANTILES", "CHUNK"]
+__all__ = ["Angles", "sweep", "bytes_per_configuration", "QUANTILES", "CHUNK", "FUSED_CHUNK"]
 
 #: what a sweep runs over: a :class:`~wmr.analysis.sweep.configurations.Grid`, a
 #: :class:`~wmr.analysis.sweep.configurations.Sample`, the configurations a robot can drive in
@@ -36,6 +36,9 @@ Angles: TypeAlias = Grid | Sample | Drivable | ArrayLike
 QUANTILES = (0.0, 0.01, 0.05, 0.5, 0.95, 0.99, 1.0)
 #: Configurations per chunk (a multiple of the random-sample block).
 CHUNK = 1 << 18
+#: The default chunk of a sweep with a fused kernel (kappa_J of a swerve over Drivable configurations):
+#: its working memory is per block of twists, not per chunk, and fewer chunks wait less for each other
+FUSED_CHUNK = 1 << 20
 
 
 def _evaluate(task, start, stop, threads):
@@ -111,7 +114,9 @@ def sweep(
     keep : bool, optional
         Also return every value (``Sweep.values``, ``8 N`` bytes).
     chunk : int, optional
-        Configurations per chunk (rounded up to a multiple of 65536 for a :class:`Sample`).
+        Configurations per chunk (rounded up to a multiple of 65536 for a :class:`Sample`); by default
+        :data:`CHUNK`, or :data:`FUSED_CHUNK` where a fused kernel evaluates the analysis from the
+        twists (``kappa_J`` of a swerve-like robot over :class:`Drivable` configurations).
     progress : callable, optional
         Called as ``progress(done, total)`` after each chunk.
     client : dask.distributed.Client, optional
@@ -183,7 +188,10 @@ def sweep(
 
     total = source.size(w)  # the limits, before any work on the robot
     check("configurations", total, "this sweep")
-    chunk = _fit_memory(chunk, total, robot, analysis, keep, blocks)
+    fused = an.fused is not None and isinstance(source, Drivable) and an.fused(robot, L)
+    if fused and chunk == CHUNK:
+        chunk = FUSED_CHUNK
+    chunk = _fit_memory(chunk, total, robot, analysis, keep, blocks, fused)
     if isinstance(source, Drivable):
         source = source.bind(robot)
     L = J_length(robot, L) if an.uses_L else None
@@ -221,13 +229,18 @@ def bytes_per_configuration(robot, analysis) -> int:
     return 8 * (6 * w + 48 + own)
 
 
-def _fit_memory(chunk, total, robot, analysis, keep, blocks):
-    """The chunk, made small enough for the memory limit (:mod:`wmr.model.limits`), or a LimitError."""
+def _fit_memory(chunk, total, robot, analysis, keep, blocks, fused=False):
+    """The chunk, made small enough for the memory limit (:mod:`wmr.model.limits`), or a LimitError.
+
+    A fused kernel (``fused``) holds a value and a share of its block's reduction per configuration
+    (64 bytes) beside a few MB per thread.
+    """
     budget = limit("memory_mb") * 2**20
     if keep:
         check("memory_mb", (8 * total + 64 * 2**20) / 2**20, "the sweep's kept values (keep=True)")
         budget -= 8 * total
-    per = bytes_per_configuration(robot, analysis) + (3 * 8 * BLOCK * robot.w // chunk if blocks else 0)
+    per = 64 if fused else bytes_per_configuration(robot, analysis)
+    per += 3 * 8 * BLOCK * robot.w // chunk if blocks else 0
     fits = int(budget // 2 // per)  # half the budget: the reduction, Python and NumPy themselves
     if fits < 256:
         check("memory_mb", 512 * per / 2**20, f"a sweep of {analysis} for this robot ({robot.w} wheel units)")

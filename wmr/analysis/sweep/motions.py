@@ -19,32 +19,30 @@ Twist k depends only on the seed and k (blocks of :data:`~wmr.analysis.sweep.con
 drawn by ``numpy.random.default_rng([seed, block, 24])``), never on the chunking.
 
 For robots of 3 to 6 swerve-like units (steered, rolling in their plane, one rate) ``kappa_J``
-over drivable configurations has a fused kernel (:func:`kappa_J_drivable`, :func:`kappa_J_of_twists`):
-the columns of :math:`\mathbf J` come straight from the mount-point velocities,
-:math:`\cos\beta_i = -\dot p_{iy}/\|\dot{\mathbf p}_i\|`, :math:`\sin\beta_i = \dot p_{ix}/\|\dot{\mathbf p}_i\|`,
-so no angle is formed, and the condition number is the closed form of
-:func:`wmr.analysis._closed.kappa_from_columns`; a member it cannot certify, or one with a wheel at
-the centre of rotation, goes through the general kernels.
+over drivable configurations has a fused kernel (:func:`kappa_J_drivable`, :func:`kappa_J_of_twists`,
+:class:`~wmr.analysis.sweep.swerve_kappa.SwerveKappa`): the condition number in closed form straight
+from each twist, no angle formed; a member it cannot certify, or one with a wheel at the centre of
+rotation, goes through the general kernels.
 """
 
 from __future__ import annotations
 
 import math
+import threading
 from dataclasses import dataclass
 
 import numpy as np
 
+from ...errors import InputValueError
 from ...model import validation as V
-from ...model.backend import NUMERIC
-from ...model.tolerance import TOL
 from .._batch import for_chunks
-from .._closed import kappa_from_columns
 from ..linalg import condition_number, null_space
 from ..mobility import twist_constraints
 from ..steering import steering_angles
 from .configurations import BLOCK, count
+from .swerve_kappa import SwerveKappa, swerve_like
 
-__all__ = ["Drivable", "Motions", "kappa_J_drivable", "kappa_J_of_twists"]
+__all__ = ["Drivable", "Motions", "fused_kernel", "kappa_J_drivable", "kappa_J_of_twists"]
 
 
 @dataclass(frozen=True)
@@ -125,6 +123,33 @@ class Motions:
         else:
             self.basis = np.eye(3)
         self.free = [i for i, u in enumerate(robot.wheels) if u.steered and not u.rolls_in_plane]
+        self._kernels: dict[float, SwerveKappa | None] = {}
+        self._lock = threading.Lock()
+
+    def __getstate__(self):  # for a Dask worker: the kernels are rebuilt there
+        state = dict(self.__dict__)
+        state["_kernels"], state["_lock"] = {}, None
+        return state
+
+    def __setstate__(self, state):
+        self.__dict__.update(state)
+        self._lock = threading.Lock()
+
+    def kappa_kernel(self, L):
+        """The fused kernel of ``kappa_J`` for this robot and ``L`` (built once), or None when none applies.
+
+        Parameters
+        ----------
+        L : float
+
+        Returns
+        -------
+        SwerveKappa or None
+        """
+        with self._lock:
+            if L not in self._kernels:
+                self._kernels[L] = fused_kernel(self.robot, L)
+            return self._kernels[L]
 
     @property
     def covers(self):
@@ -204,17 +229,33 @@ class Motions:
         return steering_angles(self.robot, tw, current)
 
 
-def _swerve_like(robot):
-    return 3 <= robot.w <= 6 and all(
-        u.steered and u.rolls_in_plane and u.n_rates == 1 and u.steering_row() is None for u in robot.wheels
-    )
+def fused_kernel(robot, L):
+    """The fused kernel of ``kappa_J`` for ``robot`` and ``L``, or None when the robot is not swerve-like.
+
+    Parameters
+    ----------
+    robot : Robot
+        A numeric robot.
+    L : float
+        Characteristic length.
+
+    Returns
+    -------
+    SwerveKappa or None
+    """
+    if not swerve_like(robot):
+        return None
+    try:
+        return SwerveKappa(robot, L)
+    except InputValueError:  # det J does not vanish in translation: no fused kernel
+        return None
 
 
 def kappa_J_drivable(source, start, stop, L, fold):
     r""":math:`\kappa(\mathbf J)` over configurations ``start`` to ``stop - 1`` of a drivable source, block by block.
 
-    Each block of twists is drawn, evaluated (:func:`kappa_J_of_twists`) and handed to ``fold`` in
-    one task, so that the drawing and the reduction run on every core too.
+    Each block of twists is drawn, evaluated (:class:`~wmr.analysis.sweep.swerve_kappa.SwerveKappa`)
+    and handed to ``fold`` in one task, so that the drawing and the reduction run on every core too.
 
     Parameters
     ----------
@@ -232,22 +273,35 @@ def kappa_J_drivable(source, start, stop, L, fold):
     bool
         False when no fused kernel applies (nothing was evaluated).
     """
-    if not _swerve_like(source.robot):
+    kernel = source.kappa_kernel(L)
+    if kernel is None:
         return False
 
     def block(a, b):
-        fold(start + a, kappa_J_of_twists(source.robot, source.twists(start + a, start + b)[0], L))
+        fold(start + a, _evaluate(kernel, source.robot, source.twists(start + a, start + b)[0], L))
 
     for_chunks(block, stop - start, BLOCK)
     return True
 
 
+def _evaluate(kernel, robot, twist, L):
+    """The kernel on ``twist (k, 3)``, and the general kernels on the members it did not certify."""
+    out = np.empty(twist.shape[0])
+    redo = np.empty(twist.shape[0], dtype=bool)
+    kernel(twist, out, redo)
+    if redo.any():
+        rows = np.flatnonzero(redo)
+        out[rows] = condition_number(robot.J(steering_angles(robot, twist[rows]), L=L))
+    return out
+
+
 def kappa_J_of_twists(robot, twist, L):
     r""":math:`\kappa(\mathbf J)` at the steering angles that make each twist admissible (None: no fused kernel).
 
-    See the module notes.  Equal to ``condition_number(robot.J(steering_angles(robot, twist), L=L))``
-    within a relative :data:`~wmr.analysis._closed.ACCURACY` (every member the closed form cannot
-    certify is computed that way).
+    See :mod:`wmr.analysis.sweep.swerve_kappa`.  Equal to
+    ``condition_number(robot.J(steering_angles(robot, twist), L=L))`` within a relative
+    :data:`~wmr.analysis._closed.ACCURACY` or ``KAPPA_ERROR * eps * kappa`` (every member the
+    closed form cannot certify is computed that way).
 
     Parameters
     ----------
@@ -274,48 +328,13 @@ def kappa_J_of_twists(robot, twist, L):
     robot = V.numeric_robot(robot)
     twist = V.finite_array("twist", twist, last=3).reshape(-1, 3)
     L = V.number("L", V.positive("L", L))
-    if not _swerve_like(robot):
+    kernel = fused_kernel(robot, L)
+    if kernel is None:
         return None
-    JL1 = robot.J1(L=L)
-    d = robot.mount_points
-    dmax = float(np.abs(d).max())
-    # column i of J = cos(beta_i) a_i + sin(beta_i) b_i, a_i = J_L1,i^T L_i, b_i = J_L1,i^T E L_i (3,)
-    ab = [
-        (
-            JL1[2 * i : 2 * i + 2].T @ np.asarray(Li, dtype=float)[:, 0],
-            JL1[2 * i : 2 * i + 2].T @ np.asarray(ELi, dtype=float)[:, 0],
-        )
-        for i, (Li, ELi) in enumerate(u.block_terms(NUMERIC) for u in robot.wheels)
-    ]
-    a = np.array([x for x, _ in ab]).T[:, :, None]  # (3, w, 1)
-    b = np.array([y for _, y in ab]).T[:, :, None]
-    dx, dy = d[:, :1], d[:, 1:]  # (w, 1)
     out = np.empty(twist.shape[0])
-    redo = np.zeros(twist.shape[0], dtype=bool)
 
-    def chunk(lo, hi):
-        psi, vx, vy = twist[lo:hi, 0], twist[lo:hi, 1], twist[lo:hi, 2]
-        scale = np.maximum(np.abs(vx), np.abs(vy))
-        scale += np.abs(psi) * dmax
-        scale *= TOL  # a wheel at the centre: |p_dot| <= TOL scale (steering_angles)
-        s = vx - dy * psi  # (w, k): p_dot = c_dot + psi_dot E d_i (2), then
-        c = -vy - dx * psi  # sin(beta_i) = p_x / |p|, cos(beta_i) = -p_y / |p|
-        n = s * s
-        n += c * c
-        np.sqrt(n, out=n)
-        slowest = n.min(axis=0)
-        np.divide(1.0, n, out=n)
-        s *= n
-        c *= n
-        C = c * a  # (3, w, k): the columns of J
-        C += s * b
-        k, ok = kappa_from_columns(C)
-        out[lo:hi] = k
-        redo[lo:hi] = ~ok | ~(slowest > scale)
+    def chunk(a, b):
+        out[a:b] = _evaluate(kernel, robot, twist[a:b], L)
 
-    with np.errstate(all="ignore"):
-        for_chunks(chunk, twist.shape[0])
-    if redo.any():
-        rows = np.flatnonzero(redo)
-        out[rows] = condition_number(robot.J(steering_angles(robot, twist[rows]), L=L))
+    for_chunks(chunk, twist.shape[0], BLOCK)
     return out
