@@ -197,8 +197,8 @@ $(B)/assignments/grades/%.json: $(NB)/%.ipynb FORCE
 test: venv tex browser ## build (cached), pytest -n 2 (tests/; tests/edition/ unless it passed on this exact tree: FRESH=1 runs it), ruff, mypy, release, docs; fail if the build modified tracked files
 	@mkdir -p $(B); $(GIT_STATE) > $(B)/git-before
 	@$(LOCK) exec $(SUB) $(TEST_BUILD)
-	@rc=0; cd $(WMR_ROOT); key=$$($(VPY) -m tools.testcache key $(PYTEST_ARGS)) || exit 1; only=; \
-	if [ -z "$(FRESH)" ] && $(VPY) -m tools.testcache check "$$key"; then only=--ignore=tests/edition; fi; \
+	@rc=0; cd $(WMR_ROOT); key=$$($(VPY) -m tools.testcache key $(PYTEST_ARGS)); only=; \
+	if [ -n "$$key" ] && [ -z "$(FRESH)" ] && $(VPY) -m tools.testcache check "$$key"; then only=--ignore=tests/edition; fi; \
 	$(PDEATH) $(VPY) -m pytest -n 2 --dist worksteal $$only $(PYTEST_ARGS) || rc=$$?; \
 	if [ $$rc = 5 ] && [ -n "$$only" ]; then rc=0; fi; tests=$$rc; \
 	if [ -n "$(LINTED)" ]; then \
@@ -215,7 +215,7 @@ test: venv tex browser ## build (cached), pytest -n 2 (tests/; tests/edition/ un
 	  echo "[git] FAILED: the build modified files that git tracks (or left new ones it does not ignore):"; \
 	  sed -n 's/^[<>] ...//p' $(B)/git-changed | cut -d' ' -f1 | sort -u | sed 's/^/  /'; rc=1; \
 	else echo "[git] the build left git status as it found it"; \
-	  if [ $$tests = 0 ] && [ -z "$$only" ]; then $(VPY) -m tools.testcache stamp "$$key"; fi; fi; \
+	  if [ $$tests = 0 ] && [ -z "$$only" ] && [ -n "$$key" ]; then $(VPY) -m tools.testcache stamp "$$key"; fi; fi; \
 	exit $$rc
 
 release: venv ## sdist + wheel; the wheel in a fresh venv outside the repo runs the library tests, the CLI, the README (cached)

@@ -53,3 +53,13 @@ def test_the_stamp_holds_one_key(tmp_path, monkeypatch, capsys):
     testcache.STAMP.write_text("not json", encoding="utf-8")
     assert testcache.main(["check", "abc"]) == 1
     assert testcache.main(["check"]) == 2 and testcache.main(["frobnicate", "x"]) == 2
+
+
+def test_outside_a_git_checkout_there_is_no_key(tmp_path, monkeypatch, capsys):
+    monkeypatch.setattr(testcache, "ROOT", tmp_path)  # not a repository
+    with pytest.raises(subprocess.CalledProcessError):
+        testcache.key([], tmp_path)
+    monkeypatch.setattr(testcache, "key", lambda args: testcache.subprocess.run(["false"], check=True))
+    assert testcache.main(["key"]) == 0
+    out, err = capsys.readouterr()
+    assert out == "" and "not a git checkout" in err
