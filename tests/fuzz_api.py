@@ -760,6 +760,8 @@ NOT_FUZZED = {
     "characterisation": "as det_J_symbolic",
     "exact_zero": "SymPy helper of the paper's families; argument checks tested in test_validation",
     "trig_combination": "kernel of Robot.J2/F/J and twist_constraints, fuzzed through them",
+    "Terms": "the data of trig_combination, built by Robot.J2/F/J and twist_constraints (fuzzed through them)",
+    "Layout": "a robot's units as arrays, made by Robot itself (fuzzed through Robot.J2/F/J)",
     "is_symbolic": "a predicate: any value is a valid question",
     "CampionClass": "the result type of campion_class, fuzzed through it",
     "Dimensions": "a TypedDict (the lengths paper_robot takes, for type checkers): no code runs; paper_robot is fuzzed",

@@ -33,7 +33,7 @@ from ..model import validation as V
 from ..model.backend import NUMERIC
 from ..model.platform import E
 from ..model.robot import Robot
-from ..model.trig import trig_combination
+from ..model.trig import Terms, trig_combination
 from ..model.types import ArrayLike, FloatArray, IntArray
 from .linalg import left_null_space, null_space, rank
 
@@ -73,27 +73,35 @@ def twist_constraints(robot: Robot, beta: ArrayLike, free: ArrayLike | None = No
     """
     robot = V.numeric_robot(robot)
     beta = robot.effective_beta(beta)
+    free = np.ones(robot.n_rates, dtype=bool) if free is None else np.asarray(free, dtype=bool)
+    terms, base_rank = robot._layout().memo(
+        ("twist_constraints", free.tobytes()), lambda: _constraint_terms(robot, free)
+    )
+    return trig_combination(beta, terms), base_rank
+
+
+def _constraint_terms(robot, free):
+    """The :class:`~wmr.model.trig.Terms` of :func:`twist_constraints` and its base rank (constant for a robot)."""
     J1 = robot.J1()
     # R(beta)^T = cos(beta) 1 + sin(beta) E^T (11), so the rows N_i^T R^T [E d_i 1] are
     # cos(beta_i) P_i + sin(beta_i) Q_i with constant P_i = N_i^T J1_i, Q_i = N_i^T E^T J1_i.
     Et = E(NUMERIC).T
-    parts, base_rank = [], 0
-    free = np.ones(robot.n_rates, dtype=bool) if free is None else np.asarray(free, dtype=bool)
+    units, Ps, Qs, base_rank = [], [], [], 0
     for i, (u, sl) in enumerate(zip(robot.wheels, robot.rate_slices)):
         Lf = np.asarray(u.local_block(NUMERIC), dtype=float)[:, free[sl]]
         N = left_null_space(Lf) if Lf.shape[1] else np.eye(2)  # (2, k_i), constant
         base_rank += 2 - N.shape[1]  # rank L_i (of its free columns)
-        if N.shape[1] == 0:
-            continue
         Ji = J1[2 * i : 2 * i + 2]
-        parts.append((i, N.T @ Ji, N.T @ Et @ Ji))
-    k = sum(P.shape[0] for _, P, _ in parts)
-    Ps, Qs = np.zeros((robot.w, k, 3)), np.zeros((robot.w, k, 3))
-    row = 0
-    for i, P, Q in parts:  # N_i^T R(beta_i)^T J_{1,i} at unit i's rows
-        Ps[i, row : row + P.shape[0]], Qs[i, row : row + P.shape[0]] = P, Q
-        row += P.shape[0]
-    return trig_combination(beta, Ps, Qs), base_rank
+        units += [i] * N.shape[1]
+        Ps.append(N.T @ Ji)
+        Qs.append(N.T @ Et @ Ji)
+    P, Q = np.concatenate(Ps), np.concatenate(Qs)  # (k, 3): unit units[r]'s row r
+    k = P.shape[0]
+    entry = np.arange(3 * k)
+    unit = np.repeat(np.array(units, dtype=np.intp), 3)
+    p, q = P.ravel(), Q.ravel()
+    keep = (p != 0.0) | (q != 0.0)
+    return Terms((k, 3), entry[keep], unit[keep], p[keep], q[keep]), base_rank
 
 
 def rank_F(robot: Robot, beta: ArrayLike) -> IntArray:

@@ -20,6 +20,7 @@ from ..errors import InputTypeError, InputValueError
 from . import arrays as A
 from . import checks as C
 from .backend import NUMERIC, SYMBOLIC, Backend, choose
+from .layout import Layout
 from .limits import check
 from .platform import moved_points, point_row
 from .tolerance import column_norms
@@ -123,15 +124,27 @@ class Robot:
         r"""SymPy symbols :math:`\beta_1, \dots, \beta_w` (real)."""
         return sp.symbols(f"beta1:{self.w + 1}", real=True)
 
+    def _layout(self) -> Layout:
+        """The units as arrays (:mod:`~wmr.model.layout`), made once for this robot's tuple of units."""
+        kept = self.__dict__.get("_kept_layout")
+        if kept is None or kept.wheels is not self.wheels:
+            kept = Layout.of(self.wheels)
+            self._kept_layout = kept
+        return kept
+
     @property
     def mount_points(self) -> FloatArray:
         r"""Array (w, 2) of the :math:`\mathbf d_i` (numeric robots only)."""
-        return np.array([u.position for u in self.wheels], dtype=float)
+        return (
+            self._layout().positions.copy()
+            if not self.is_symbolic
+            else np.array([u.position for u in self.wheels], float)
+        )
 
     @property
     def is_symbolic(self) -> bool:
         """True when a mount point or a length of some unit is a SymPy expression."""
-        return any(u.is_symbolic for u in self.wheels)
+        return self._layout().symbolic
 
     @property
     def F_column_norms(self) -> FloatArray:
@@ -171,10 +184,15 @@ class Robot:
         [[0.1, 0.5], [0.3, 0.5]]
         """
         beta = A.finite_array("beta", beta, last=self.w)
-        own = [i for i, u in enumerate(self.wheels) if u.constant_angle is not None]
-        if own:  # (a copy: the caller's array is not changed)
+        if self.is_symbolic:
+            own = [i for i, u in enumerate(self.wheels) if u.constant_angle is not None]
+            angles = [C.number("angle", self.wheels[i].constant_angle) for i in own]
+        else:
+            lay = self._layout()
+            own, angles = lay.own, lay.own_angle
+        if len(own):  # (a copy: the caller's array is not changed)
             beta = beta.copy()
-            beta[..., own] = [C.number("angle", self.wheels[i].constant_angle) for i in own]
+            beta[..., own] = angles
         return beta
 
     def _beta(self, beta, bk):
@@ -243,22 +261,11 @@ class Robot:
         bk = self._backend(beta, backend)
         b = self._beta(beta, bk)
         if bk is NUMERIC:
-            return trig_combination(b, *self._wheel_terms())
+            return trig_combination(b, self.numeric()._layout().J2_terms())
         M = bk.zeros(2 * self.w, self.n_rates)
         for i, (u, sl) in enumerate(zip(self.wheels, self.rate_slices)):
             bk.set_block(M, 2 * i, sl.start, u.block(b[i], backend=bk))
         return M
-
-    def _wheel_terms(self):
-        r"""The pair :math:`(\mathbf P, \mathbf Q)`, each (w, 2w, n_rates), with
-        :math:`\mathbf J_2(\boldsymbol\beta) = \sum_i(\cos\beta_i\,\mathbf P_i + \sin\beta_i\,\mathbf Q_i)`:
-        unit i's :math:`\mathbf L_i` and :math:`\mathbf E\mathbf L_i` (:meth:`WheelUnit.block_terms`) placed
-        at its block of :math:`\mathbf J_2` (numeric robots)."""
-        P = np.zeros((self.w, 2 * self.w, self.n_rates))
-        Q = np.zeros_like(P)
-        for i, (u, sl) in enumerate(zip(self.wheels, self.rate_slices)):
-            P[i, 2 * i : 2 * i + 2, sl], Q[i, 2 * i : 2 * i + 2, sl] = u.block_terms(NUMERIC)
-        return P, Q
 
     def F(self, beta: Numbers | None = None, backend: Backend | None = None) -> Matrix:
         r"""Functional matrix :math:`\mathbf F = [\mathbf J_1\ \ -\mathbf J_2]` (22)-(24).
@@ -280,10 +287,8 @@ class Robot:
         if bk is SYMBOLIC:
             return bk.broadcast_hstack(self.J1(backend=SYMBOLIC), -self.J2(beta, SYMBOLIC))
         b = self._beta(beta, bk)
-        P, Q = self._wheel_terms()  # J2 = sum cos P_i + sin Q_i
-        const = np.concatenate([self.J1(backend=NUMERIC), np.zeros(P.shape[1:])], axis=-1)
-        pad = np.zeros(P.shape[:2] + (3,))
-        return trig_combination(b, np.concatenate([pad, -P], -1), np.concatenate([pad, -Q], -1), const)
+        const = np.concatenate([self.J1(backend=NUMERIC), np.zeros((2 * self.w, self.n_rates))], axis=-1)
+        return trig_combination(b, self.numeric()._layout().J2_terms(-1.0, 3, const))  # [J1  -J2]
 
     def J(self, beta: Numbers | None = None, L: Numbers = 1, backend: Backend | None = None) -> Matrix:
         r"""The product :math:`\mathbf J = \mathbf J_{L1}^T\mathbf J_2` (56).
@@ -303,27 +308,23 @@ class Robot:
 
         Notes
         -----
-        With NumPy, unit i contributes the columns
-        :math:`\mathbf J_{L1,i}^T\mathbf B_i(\beta_i) = \cos\beta_i\,\mathbf J_{L1,i}^T\mathbf L_i +
-        \sin\beta_i\,\mathbf J_{L1,i}^T\mathbf E\mathbf L_i` (:func:`wmr.model.platform.rotated`), evaluated
-        entry by entry by :func:`wmr.model.trig.trig_combination`, so the mostly-zero
-        :math:`\mathbf J_2` is never formed.
+        With NumPy, unit i contributes the columns :math:`\mathbf J_{L1,i}^T\mathbf B_i(\beta_i)`
+        (:meth:`wmr.model.layout.Layout.J_terms`, :func:`wmr.model.trig.trig_combination`): the
+        mostly-zero :math:`\mathbf J_2` is never formed.
         """
         bk = self._backend(beta, backend)
         if bk is SYMBOLIC:
             return self.J1(L, backend=SYMBOLIC).T * self.J2(beta, SYMBOLIC)
         b = self._beta(beta, bk)
-        JL1T = self.J1(L, backend=NUMERIC).T
-        P, Q = self._wheel_terms()  # J = J_L1^T J2, term by term
         with np.errstate(over="ignore", invalid="ignore"):
-            P, Q = JL1T @ P, JL1T @ Q
-            ok = np.isfinite(2 * np.abs(P).sum(0) + 2 * np.abs(Q).sum(0)).all()  # |entry| <= sum |P_i| + |Q_i|
+            terms = self.numeric()._layout().J_terms(self.J1(L, backend=NUMERIC))  # J = J_L1^T J2, term by term
+            ok = np.isfinite(2 * np.abs(terms.p) + 2 * np.abs(terms.q)).all()  # |entry| <= |P_i| + |Q_i|
         if not ok:
             raise InputValueError(
                 f"J overflows for this robot and L = {L!r}: the wheel radii times d_i / L exceed "
                 "the double-precision range"
             )
-        return trig_combination(b, P, Q)
+        return trig_combination(b, terms)
 
     def numeric(self) -> Robot:
         r"""The same robot with float mount points and lengths (itself when it has no SymPy values).
@@ -348,17 +349,21 @@ class Robot:
         """
         if not self.is_symbolic:
             return self
+        lay = self._layout()
+        if "robot" in lay._numeric:
+            return lay._numeric["robot"]
         if self.free_symbols:
             raise InputValueError(
                 f"robot has free symbols {sorted(map(str, self.free_symbols))}: it has no numeric "
                 f"counterpart ({C.show(self)})"
             )
-        return Robot([u.numeric() for u in self.wheels], name=self.name)
+        lay._numeric["robot"] = numeric = Robot([u.numeric() for u in self.wheels], name=self.name)
+        return numeric
 
     @property
     def free_symbols(self) -> set[Symbolic]:
         """The SymPy symbols in the mount points and lengths (an empty set for numeric and exact robots)."""
-        return set().union(*(u.free_symbols for u in self.wheels))
+        return set(self._layout().free_symbols)
 
     # --- frames ---------------------------------------------------------------------------------
     def moved(self, origin: Point = (0.0, 0.0), angle: Numbers = 0.0) -> Robot:
