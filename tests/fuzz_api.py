@@ -556,6 +556,11 @@ CASES = [
         lambda points, directions: lines.lines_concurrency(points, directions),
         (("points", "pairs"), ("directions", "pairs")),
     ),
+    Case(
+        "concurrencies",
+        lambda points, directions: lines.concurrencies(points, directions),
+        (("points", "pairs"), ("directions", "pairs")),
+    ),
     Case("circumcircle", lambda points: lines.circumcircle(points), (("points", "pairs"),)),
     *[Case(f"lines.{f}", _attr(lines, f), (R, B)) for f in ("wheel_plane_lines", "axle_lines")],
     *[Case(f"lines.{f}", _attr(lines, f), (R, ("beta", "beta1"))) for f in ("concurrency_point", "axles_concurrency")],

@@ -17,14 +17,14 @@ from ..model.platform import wrap_angle
 from ..model.tolerance import TOL
 from .isotropy import characteristic_length
 from .linalg import rank
-from .lines import AT_INFINITY, FINITE, lines_concurrency, planes_through, wheel_plane_lines
+from .lines import AT_INFINITY, FINITE, concurrencies, planes_through, wheel_plane_lines
 from .mobility import rank_F
 from .singularities import classify
 
 __all__ = ["FAMILIES", "MEANINGS", "singular_families"]
 
 
-#: plain words for the families of :func:`wmr.analysis.singularities.classify` and of :func:`_family`
+#: plain words for the families of :func:`wmr.analysis.singularities.classify` and of :func:`_families`
 FAMILIES = {
     "i": "all wheel planes parallel, equal angles",
     "i'": "all wheel planes parallel, a wheel turned by 180 deg",
@@ -67,26 +67,25 @@ MEANINGS = {
 }
 
 
-def _family(robot, beta):
-    """Short name of the family of a singular configuration, from where its wheel-plane lines meet."""
+def _families(robot, beta):
+    """Short names of the families of singular configurations ``beta (N, w)``, from where their wheel-plane lines meet."""
     if robot.w == 3 and robot.n_rates == 3 and all(u.steered and u.rolls_in_plane for u in robot.wheels):
-        return classify(robot, beta).family  # three centred wheels: the paper's families
-    P, u = wheel_plane_lines(robot, beta)
+        return [classify(robot, b).family for b in beta]  # three centred wheels: the paper's families
     lined = [k for k, unit in enumerate(robot.wheels) if unit.rolls_in_plane]  # their planes constrain
     if len(lined) < 2:
-        return "other"
-    meet = lines_concurrency(P[lined], u[lined])
-    if meet.kind == AT_INFINITY:
-        return "parallel"
-    if meet.kind != FINITE:
-        return "other"
-    scale = float(np.abs(robot.mount_points).max())
-    if np.hypot(*meet.point) <= TOL * scale:  # hypot: no overflow of the squares
-        return "through-C"
-    gap = robot.mount_points - meet.point
-    if np.any(np.hypot(gap[:, 0], gap[:, 1]) <= TOL * scale):
-        return "through-P"
-    return "through-point"
+        return ["other"] * len(beta)
+    P, u = wheel_plane_lines(robot, beta)
+    kind, point, _, _ = concurrencies(P[:, lined], u[:, lined])
+    pts = robot.mount_points
+    scale = float(np.abs(pts).max())
+    finite = kind == FINITE
+    at_c = finite & (np.hypot(point[:, 0], point[:, 1]) <= TOL * scale)  # hypot: no overflow of the squares
+    gap = pts - point[:, None, :]  # (N, w, 2)
+    at_p = finite & ~at_c & np.any(np.hypot(gap[..., 0], gap[..., 1]) <= TOL * scale, axis=-1)
+    names = np.select(
+        [kind == AT_INFINITY, ~finite, at_c, at_p], ["parallel", "other", "through-C", "through-P"], "through-point"
+    )
+    return names.tolist()
 
 
 def _describe(family):
@@ -149,13 +148,14 @@ def singular_families(robot, L=None):
     flip[:, np.flatnonzero(steered)[:1]] += np.pi  # one wheel turned by pi: the "'" families
     cands = np.concatenate([cands, flip])
     cands = robot.effective_beta(cands)  # unsteered units at their own angle
+    _, first = np.unique(cands, axis=0, return_index=True)
+    cands = cands[np.sort(first)]  # each candidate once, in the order above
     rk = rank(robot.J(cands, L=L))
+    singular = rk < 3
+    cands, rk = cands[singular], rk[singular]
     rf = rank_F(robot, cands)
     out, seen = [], set()
-    for b, r, f in zip(cands, rk, rf):
-        if r >= 3:
-            continue
-        fam = _family(robot, b)
+    for b, r, f, fam in zip(cands, rk, rf, _families(robot, cands)):
         if fam in seen:
             continue
         seen.add(fam)

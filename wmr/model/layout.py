@@ -69,7 +69,6 @@ class Layout:
         """The numeric arrays (computed on first use; the units must be numeric)."""
         if "L" not in self._numeric:
             wheels = self.wheels
-            positions = np.array([[C.number("position", v) for v in u.position] for u in wheels], dtype=float)
             own = np.array([i for i, u in enumerate(wheels) if u.constant_angle is not None], dtype=np.intp)
             own_angle = np.array([C.number("angle", wheels[i].constant_angle) for i in own], dtype=float)
             blocks = [u.block_terms(NUMERIC) for u in wheels]
@@ -77,7 +76,6 @@ class Layout:
             L = np.concatenate([np.asarray(b[0], dtype=float) for b in blocks], axis=1)
             EL = np.concatenate([np.asarray(b[1], dtype=float) for b in blocks], axis=1)
             self._numeric.update(
-                positions=positions,
                 own=own,
                 own_angle=own_angle,
                 rate_unit=np.repeat(np.arange(len(wheels)), n_rates),
@@ -107,8 +105,10 @@ class Layout:
 
     @property
     def positions(self) -> FloatArray:
-        """The mount points :math:`\\mathbf d_i`, (w, 2) (read-only)."""
-        return self._arrays()["positions"]
+        """The mount points :math:`\\mathbf d_i`, (w, 2), as floats (also of an exact robot)."""
+        if "positions" not in self._numeric:
+            self._numeric["positions"] = np.array([[C.number("position", v) for v in u.position] for u in self.wheels])
+        return self._numeric["positions"]
 
     @property
     def own(self) -> IntArray:

@@ -135,11 +135,7 @@ class Robot:
     @property
     def mount_points(self) -> FloatArray:
         r"""Array (w, 2) of the :math:`\mathbf d_i` (numeric robots only)."""
-        return (
-            self._layout().positions.copy()
-            if not self.is_symbolic
-            else np.array([u.position for u in self.wheels], float)
-        )
+        return self._layout().positions.copy()
 
     @property
     def is_symbolic(self) -> bool:

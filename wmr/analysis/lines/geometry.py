@@ -14,9 +14,10 @@ import numpy as np
 from ...errors import InputTypeError, InputValueError
 from ...model import validation as V
 from ...model.tolerance import near_zero
-from ...model.types import ArrayLike, FloatArray, Numbers, Point
+from ...model.types import ArrayLike, FloatArray, IntArray, Numbers, Point
 
 __all__ = [
+    "concurrencies",
     "Meet",
     "FINITE",
     "AT_INFINITY",
@@ -158,7 +159,7 @@ def lines_concurrency(points: ArrayLike, directions: ArrayLike) -> Concurrency:
     A point D lies on every line iff :math:`[-1, -D_y, D_x]\,[p_k\times u_k,\ u_k]^T = 0`; the
     left null vector of the :math:`3\times n` Plücker matrix gives D in homogeneous coordinates.
     The moments are divided by the largest coordinate, so the decision does not depend on the
-    unit of length.
+    unit of length.  :func:`concurrencies` decides a batch.
 
     Parameters
     ----------
@@ -175,28 +176,70 @@ def lines_concurrency(points: ArrayLike, directions: ArrayLike) -> Concurrency:
     ('FINITE', [0.0, 0.0])
     """
     p = V.finite_array("points", points, last=2)
+    if p.ndim != 2:
+        raise InputValueError(f"points and directions must both have shape (n, 2) with n >= 2, got {p.shape}")
+    kind, point, direction, residual = concurrencies(p[None], np.asarray(directions)[None])
+    k = Meet(int(kind[0]))
+    return Concurrency(
+        k,
+        point[0] if k is FINITE else None,
+        direction[0] if k is AT_INFINITY else None,
+        float(residual[0]),
+    )
+
+
+def concurrencies(points: ArrayLike, directions: ArrayLike) -> tuple[IntArray, FloatArray, FloatArray, FloatArray]:
+    r"""Where the lines :math:`p_k + s\,u_k` of each configuration of a batch meet (see :func:`lines_concurrency`).
+
+    Parameters
+    ----------
+    points, directions : array (..., n, 2), n >= 2
+
+    Returns
+    -------
+    kind : numpy.ndarray of int (...)
+        The :class:`Meet` value (``FINITE``, ``AT_INFINITY`` or ``NONE``).
+    point : numpy.ndarray (..., 2)
+        The common point where ``kind`` is ``FINITE`` (zero elsewhere).
+    direction : numpy.ndarray (..., 2)
+        The unit direction where ``kind`` is ``AT_INFINITY`` (zero elsewhere).
+    residual : numpy.ndarray (...)
+        Smallest singular value of the normalised Plücker matrix (0 when concurrent).
+
+    Examples
+    --------
+    >>> kind, point, _, _ = concurrencies([[[1, 0], [0, 1]], [[0, 0], [0, 1]]], [[[0, 1], [1, 0]], [[1, 0], [1, 0]]])
+    >>> [Meet(int(k)).name for k in kind], point[0].tolist()
+    (['FINITE', 'AT_INFINITY'], [1.0, 1.0])
+    """
+    p = V.finite_array("points", points, last=2)
     u = V.finite_array("directions", directions, last=2)
-    if p.ndim != 2 or p.shape != u.shape or len(p) < 2:
+    if p.ndim < 2 or p.shape != u.shape or p.shape[-2] < 2:
         raise InputValueError(
-            f"points and directions must both have shape (n, 2) with n >= 2, got {p.shape} and {u.shape}"
+            f"points and directions must both have shape (..., n, 2) with n >= 2, got {p.shape} and {u.shape}"
         )
     big = np.abs(u).max(axis=-1, keepdims=True)
     if np.any(big == 0):
-        raise InputValueError(f"directions must be non-zero vectors, got {u.tolist()}")
+        raise InputValueError(f"directions must be non-zero vectors, got {V.show(u)}")
     u = u / big  # (scaled first: no overflow for huge directions)
     u = u / np.linalg.norm(u, axis=-1, keepdims=True)
-    scale = float(np.abs(p).max()) or 1.0  # the size of the figure, in its own unit
-    m = (p[:, 0] * u[:, 1] - p[:, 1] * u[:, 0]) / scale
-    W = np.stack([m, u[:, 0], u[:, 1]])  # (3, n)
-    U, s, _ = np.linalg.svd(W)
-    res = float(s[-1]) if W.shape[1] >= 3 else 0.0
-    if W.shape[1] >= 3 and not near_zero(res):
-        return Concurrency(NONE, None, None, res)
-    n = U[:, -1]
-    if near_zero(n[0], np.abs(n[1:]).max()):
-        dirn = np.array([-n[2], n[1]])
-        return Concurrency(AT_INFINITY, None, dirn / np.linalg.norm(dirn), res)
-    return Concurrency(FINITE, np.array([-n[2] / n[0], n[1] / n[0]]) * scale, None, res)
+    scale = np.abs(p).max(axis=(-2, -1))  # the size of the figure, in its own unit
+    scale = np.where(scale > 0, scale, 1.0)
+    m = (p[..., 0] * u[..., 1] - p[..., 1] * u[..., 0]) / scale[..., None]
+    W = np.stack([m, u[..., 0], u[..., 1]], axis=-2)  # (..., 3, n)
+    n = W.shape[-1]
+    U, s, _ = np.linalg.svd(W, full_matrices=n < 3)  # U (..., 3, 3): its last column is the left null vector
+    res = s[..., -1] if n >= 3 else np.zeros(W.shape[:-2])
+    h = U[..., :, -1]
+    none = ~near_zero(res)
+    at_inf = ~none & near_zero(h[..., 0], np.abs(h[..., 1:]).max(axis=-1))
+    finite = ~none & ~at_inf
+    kind = np.where(none, NONE.value, np.where(at_inf, AT_INFINITY.value, FINITE.value))
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):  # used only where finite
+        point = np.stack([-h[..., 2] / h[..., 0], h[..., 1] / h[..., 0]], axis=-1) * scale[..., None]
+        dirn = np.stack([-h[..., 2], h[..., 1]], axis=-1)
+        dirn = dirn / np.linalg.norm(dirn, axis=-1, keepdims=True)
+    return kind, np.where(finite[..., None], point, 0.0), np.where(at_inf[..., None], dirn, 0.0), res
 
 
 def circumcircle(points: Numbers) -> tuple[Point, Numbers]:
