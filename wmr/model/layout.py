@@ -69,15 +69,11 @@ class Layout:
         """The numeric arrays (computed on first use; the units must be numeric)."""
         if "L" not in self._numeric:
             wheels = self.wheels
-            own = np.array([i for i, u in enumerate(wheels) if u.constant_angle is not None], dtype=np.intp)
-            own_angle = np.array([C.number("angle", wheels[i].constant_angle) for i in own], dtype=float)
             blocks = [u.block_terms(NUMERIC) for u in wheels]
             n_rates = [np.shape(L)[1] for L, _ in blocks]
             L = np.concatenate([np.asarray(b[0], dtype=float) for b in blocks], axis=1)
             EL = np.concatenate([np.asarray(b[1], dtype=float) for b in blocks], axis=1)
             self._numeric.update(
-                own=own,
-                own_angle=own_angle,
                 rate_unit=np.repeat(np.arange(len(wheels)), n_rates),
                 L=L,
                 EL=EL,
@@ -110,15 +106,22 @@ class Layout:
             self._numeric["positions"] = np.array([[C.number("position", v) for v in u.position] for u in self.wheels])
         return self._numeric["positions"]
 
+    def _own(self) -> tuple[IntArray, FloatArray]:
+        if "own" not in self._numeric:
+            own = [i for i, u in enumerate(self.wheels) if u.constant_angle is not None]
+            angles = [C.number("angle", self.wheels[i].constant_angle) for i in own]  # also of an exact robot
+            self._numeric["own"] = (np.array(own, dtype=np.intp), np.array(angles, dtype=float))
+        return self._numeric["own"]
+
     @property
     def own(self) -> IntArray:
         """Indices of the units without a steering joint."""
-        return self._arrays()["own"]
+        return self._own()[0]
 
     @property
     def own_angle(self) -> FloatArray:
         """Their constant angles (radians), in the order of :attr:`own`."""
-        return self._arrays()["own_angle"]
+        return self._own()[1]
 
     @property
     def rate_unit(self) -> IntArray:

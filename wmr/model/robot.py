@@ -126,11 +126,9 @@ class Robot:
 
     def _layout(self) -> Layout:
         """The units as arrays (:mod:`~wmr.model.layout`), made once for this robot's tuple of units."""
-        kept = self.__dict__.get("_kept_layout")
-        if kept is None or kept.wheels is not self.wheels:
-            kept = Layout.of(self.wheels)
-            self._kept_layout = kept
-        return kept
+        if getattr(self, "_kept_layout", None) is None or self._kept_layout.wheels is not self.wheels:
+            self._kept_layout = Layout.of(self.wheels)
+        return self._kept_layout
 
     @property
     def mount_points(self) -> FloatArray:
@@ -153,8 +151,8 @@ class Robot:
         (:mod:`wmr.model.tolerance`).  Zero columns get 1.  Numeric robots only.
         """
         bot = self.numeric()
-        rates = [column_norms(np.asarray(u.local_block(NUMERIC), dtype=float)) for u in bot.wheels]
-        return np.concatenate([column_norms(bot.J1(backend=NUMERIC)), *rates])
+        L = bot._layout().L  # the units' local blocks side by side
+        return np.concatenate([column_norms(bot.J1(backend=NUMERIC)), column_norms(L)])
 
     # --- matrices -------------------------------------------------------------------------------
     def effective_beta(self, beta: ArrayLike) -> FloatArray:
@@ -180,15 +178,10 @@ class Robot:
         [[0.1, 0.5], [0.3, 0.5]]
         """
         beta = A.finite_array("beta", beta, last=self.w)
-        if self.is_symbolic:
-            own = [i for i, u in enumerate(self.wheels) if u.constant_angle is not None]
-            angles = [C.number("angle", self.wheels[i].constant_angle) for i in own]
-        else:
-            lay = self._layout()
-            own, angles = lay.own, lay.own_angle
-        if len(own):  # (a copy: the caller's array is not changed)
+        lay = self._layout()
+        if lay.own.size:  # (a copy: the caller's array is not changed)
             beta = beta.copy()
-            beta[..., own] = angles
+            beta[..., lay.own] = lay.own_angle
         return beta
 
     def _beta(self, beta, bk):
@@ -224,12 +217,16 @@ class Robot:
         """
         L = C.positive("L (characteristic length)", L)
         bk = choose(L, backend=backend) if not self.is_symbolic else SYMBOLIC
-        if bk is NUMERIC:
+        rows = lambda L: [point_row(u.position, L, backend=bk) for u in self.wheels]  # noqa: E731  (32)
+        if bk is NUMERIC:  # J1 once per robot, then its first column / L
             L = C.number("L (characteristic length)", L)
-        M = bk.zeros(2 * self.w, 3)
-        with np.errstate(over="ignore"):
-            for i, u in enumerate(self.wheels):
-                bk.set_block(M, 2 * i, 0, point_row(u.position, L, backend=bk))  # (32): [E d_i / L, 1]
+            M = self._layout().memo("J1", lambda: np.concatenate(rows(1.0))).copy()
+            with np.errstate(over="ignore"):
+                M[:, 0] /= L
+        else:
+            M = bk.zeros(2 * self.w, 3)
+            for i, row in enumerate(rows(L)):
+                bk.set_block(M, 2 * i, 0, row)
         if bk is NUMERIC and not np.isfinite(M).all():
             raise InputValueError(
                 f"L (characteristic length) = {L!r} is too small for mount points of size "
@@ -334,7 +331,7 @@ class Robot:
 
         Raises
         ------
-        ValueError
+        wmr.errors.InputValueError
             If a mount point or a length contains a free symbol.
 
         Examples
