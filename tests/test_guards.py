@@ -227,7 +227,7 @@ def test_huge_but_finite_robot_runs_without_warnings(tmp_path):
 
 @pytest.mark.parametrize(
     "argv, words",
-    [(["--grid", "1000000000"], "WMR_MAX_CONFIGURATIONS"), (["--twists", "100000000"], "WMR_MAX_MEMORY_MB")],
+    [(["--grid", "10000000000"], "WMR_MAX_CONFIGURATIONS"), (["--twists", "100000000"], "WMR_MAX_MEMORY_MB")],
 )
 def test_analyze_is_guarded_too(capsys, argv, words):
     from wmr.cli import main

@@ -135,6 +135,17 @@ def test_sample_is_reproducible_and_in_range():
     assert not np.array_equal(Sample(10, seed=4).configurations(2, 0, 10), Sample(10, seed=3).configurations(2, 0, 10))
 
 
+@pytest.mark.parametrize("w, start, stop", [(3, 0, 10), (5, 1000, 2000), (2, 65_530, 65_540), (7, 131_071, 131_073)])
+def test_sample_rows_are_those_of_the_whole_block(w, start, stop):
+    """A chunk drawn alone (the block's generator advanced past the rows before it) is the block's rows."""
+    from wmr.analysis.sweep.configurations import BLOCK
+
+    s = Sample(200_000, seed=5, lo=-2.0, hi=1.0)
+    first = start // BLOCK
+    blocks = np.concatenate([np.random.default_rng([5, j]).uniform(-2.0, 1.0, (BLOCK, w)) for j in (first, first + 1)])
+    assert np.array_equal(s.configurations(w, start, stop), blocks[start - first * BLOCK : stop - first * BLOCK])
+
+
 def test_grid_numbering():
     g = Grid((2, 3), lo=0.0, hi=3.0)
     assert g.size(2) == 6

@@ -59,6 +59,8 @@ __all__ = [
 
 #: about this many grid configurations are examined (the grid has at least 4 values per steered angle)
 GRID_SIZE = 20000
+#: ... but at most this many angles in all (a robot of more than 100 steered units: fewer configurations)
+GRID_ANGLES = 2_000_000
 #: random twists whose steering angles are added to the grid
 TWISTS = 2000
 
@@ -80,7 +82,7 @@ def special_twists(robot):
     return np.array(special)
 
 
-def configurations(robot: Robot, grid: int = GRID_SIZE, twists: int = TWISTS, seed: int = 0) -> FloatArray:
+def configurations(robot: Robot, grid: int | None = None, twists: int = TWISTS, seed: int = 0) -> FloatArray:
     """The configurations :func:`overview` examines: a grid over the steered angles and motion configurations.
 
     Parameters
@@ -91,6 +93,7 @@ def configurations(robot: Robot, grid: int = GRID_SIZE, twists: int = TWISTS, se
         About how many grid configurations (each steered angle takes
         ``max(4, floor(grid ** (1 / s)))`` values in :math:`[-\\pi, \\pi)` for ``s`` steered units;
         when that would make more than ``4 * grid`` configurations, ``grid`` random ones instead).
+        Default :data:`GRID_SIZE`, or :data:`GRID_ANGLES` ``// s`` when that is fewer.
     twists : int, optional
         How many random twists' steering angles (:func:`wmr.steering_angles`) to add, besides
         the translations along the body axes and the spins about C and about each mount point.
@@ -109,18 +112,19 @@ def configurations(robot: Robot, grid: int = GRID_SIZE, twists: int = TWISTS, se
     (81, 3)
     """
     robot = V.numeric_robot(robot)
-    grid = V.integer("grid", grid, minimum=1)
+    w, steered = robot.w, np.array(robot.steered, dtype=bool)
+    s = int(steered.sum())
+    grid = min(GRID_SIZE, max(1, GRID_ANGLES // max(s, 1))) if grid is None else V.integer("grid", grid, minimum=1)
     twists = V.integer("twists", twists, minimum=0)
     seed = V.integer("seed", seed, minimum=0)
-    w, steered = robot.w, np.array(robot.steered, dtype=bool)
-    most = 4 * grid + twists + w + 4  # held in memory at once, with their analyses
+    steps = max(4, int(np.floor(grid ** (1.0 / s) + 1e-9))) if s else 0
+    on_grid = s > 0 and steps**s <= 4 * grid
+    most = (steps**s if on_grid else grid if s else 0) + twists + w + 4  # held in memory at once, with their analyses
     check("configurations", most, "the overview (grid and twists)")
     check("memory_mb", most * 8 * (3 * w + 3 * robot.n_rates + 16) / 2**20, "the overview (grid and twists)")
-    s = int(steered.sum())
     parts: list[FloatArray] = []
     if s:
-        steps = max(4, int(np.floor(grid ** (1.0 / s) + 1e-9)))
-        if steps**s <= 4 * grid:
+        if on_grid:
             g = Grid(steps)
             sub = g.configurations(s, 0, g.size(s))
         else:  # many steered units: a seeded sample of the same size
@@ -258,7 +262,7 @@ class Overview:
     drivable: int = 0
 
 
-def overview(robot: Robot, grid: int = GRID_SIZE, twists: int = TWISTS, seed: int = 0) -> Overview:
+def overview(robot: Robot, grid: int | None = None, twists: int = TWISTS, seed: int = 0) -> Overview:
     r"""Class, actuation, mobility, isotropy, dead zone, singular families and limitations of a robot (module notes).
 
     Parameters

@@ -41,6 +41,9 @@ FAMILIES = {
 }
 
 
+#: steering angles examined at once by :func:`singular_families` (its candidates in chunks of this / w)
+_CHUNK_ANGLES = 2**18
+
 _PARALLEL = (
     "the wheels all point the same way: it drives along them, but to turn or move any other way it must "
     "steer first (a car driving straight ahead is here; without steering it cannot leave without skidding)"
@@ -150,23 +153,24 @@ def singular_families(robot, L=None):
     cands = robot.effective_beta(cands)  # unsteered units at their own angle
     _, first = np.unique(cands, axis=0, return_index=True)
     cands = cands[np.sort(first)]  # each candidate once, in the order above
-    rk = rank(robot.J(cands, L=L))
-    singular = rk < 3
-    cands, rk = cands[singular], rk[singular]
-    rf = rank_F(robot, cands)
     out, seen = [], set()
-    for b, r, f, fam in zip(cands, rk, rf, _families(robot, cands)):
-        if fam in seen:
-            continue
-        seen.add(fam)
-        out.append(
-            {
-                "family": fam,
-                "description": _describe(fam),
-                "meaning": MEANINGS[fam.split("-")[0] if fam.startswith("pair-") else fam],
-                "beta": wrap_angle(b).tolist(),
-                "rank_J": int(r),
-                "rank_F": int(f),
-            }
-        )
+    step = max(1, _CHUNK_ANGLES // robot.w)  # candidates a chunk: bounded memory for robots of many units
+    for a in range(0, len(cands), step):
+        part = cands[a : a + step]
+        rk = rank(robot.J(part, L=L))
+        part, rk = part[rk < 3], rk[rk < 3]
+        for b, r, f, fam in zip(part, rk, rank_F(robot, part), _families(robot, part)):
+            if fam in seen:
+                continue
+            seen.add(fam)
+            out.append(
+                {
+                    "family": fam,
+                    "description": _describe(fam),
+                    "meaning": MEANINGS[fam.split("-")[0] if fam.startswith("pair-") else fam],
+                    "beta": wrap_angle(b).tolist(),
+                    "rank_J": int(r),
+                    "rank_F": int(f),
+                }
+            )
     return out

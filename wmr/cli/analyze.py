@@ -44,7 +44,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     -------
     None
     """
-    from ..analysis.overview import GRID_SIZE, TWISTS
+    from ..analysis.overview import GRID_ANGLES, GRID_SIZE, TWISTS
     from ._options import add_convention
 
     parser.add_argument("robot", help=ROBOT_FILE)
@@ -53,9 +53,10 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--grid",
         type=int,
-        default=GRID_SIZE,
+        default=None,
         metavar="N",
-        help=f"about N grid configurations of the steered angles (default {GRID_SIZE})",
+        help=f"about N grid configurations of the steered angles (default {GRID_SIZE}, fewer for more than "
+        f"{GRID_ANGLES // GRID_SIZE} steered units: at most {GRID_ANGLES:,} angles)",
     )
     parser.add_argument(
         "--twists",

@@ -126,9 +126,10 @@ class Robot:
 
     def _layout(self) -> Layout:
         """The units as arrays (:mod:`~wmr.model.layout`), made once for this robot's tuple of units."""
-        if getattr(self, "_kept_layout", None) is None or self._kept_layout.wheels is not self.wheels:
-            self._kept_layout = Layout.of(self.wheels)
-        return self._kept_layout
+        kept: Layout | None = getattr(self, "_kept_layout", None)
+        if kept is None or kept.wheels is not self.wheels:
+            self._kept_layout = kept = Layout.of(self.wheels)
+        return kept
 
     @property
     def mount_points(self) -> FloatArray:

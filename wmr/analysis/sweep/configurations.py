@@ -238,10 +238,19 @@ class Sample:
         numpy.ndarray (stop - start, w)
         """
         first, last = start // BLOCK, (stop - 1) // BLOCK
-        blocks = [
-            np.random.default_rng([self.seed, j]).uniform(self.lo, self.hi, (BLOCK, w)) for j in range(first, last + 1)
-        ]
-        return np.concatenate(blocks)[start - first * BLOCK : stop - first * BLOCK]
+        rows = [(j, max(start - j * BLOCK, 0), min(stop - j * BLOCK, BLOCK)) for j in range(first, last + 1)]
+        return np.concatenate([self._rows(w, j, a, b) for j, a, b in rows])
+
+    def _rows(self, w, j, a, b):
+        """Rows ``a .. b-1`` of block ``j``: ``default_rng([seed, j]).uniform(lo, hi, (BLOCK, w))[a:b]``, drawn alone.
+
+        ``uniform`` takes one 64-bit draw per value, so the block's generator is advanced past the
+        ``a * w`` values before row ``a`` instead of drawing them (a robot of many units: a chunk
+        costs its own rows, not its block's).
+        """
+        bits = np.random.PCG64(np.random.SeedSequence([self.seed, j]))  # the generator of default_rng([seed, j])
+        bits.advance(a * w)
+        return np.random.Generator(bits).uniform(self.lo, self.hi, (b - a, w))
 
 
 @dataclass(frozen=True)
