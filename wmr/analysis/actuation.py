@@ -38,6 +38,7 @@ import numpy as np
 from ..errors import InputValueError
 from ..model import validation as V
 from ..model.tolerance import TOL
+from ._batch import for_chunks
 from .linalg import null_space, rank
 from .lines import AT_INFINITY, FINITE
 from .mobility import twist_constraints
@@ -185,17 +186,25 @@ def uncontrolled(robot, beta, twist) -> tuple[np.ndarray, np.ndarray]:
     if not free.any() and rank(robot.J1() / s) == 3:  # every joint driven: the motors hold every twist
         part_hat = np.zeros(batch + (3,))
     else:
-        Ap, _ = twist_constraints(robot, np.broadcast_to(beta, batch + (robot.w,)), free=free)
-        if Ap.shape[-2] == 0:
-            part_hat = that.copy()
-        else:
+        flat_beta = np.broadcast_to(beta, batch + (robot.w,)).reshape(-1, robot.w)
+        flat_that = that.reshape(-1, 3)
+        out = np.empty_like(flat_that)
+
+        def chunk(a, z):
+            Ap, _ = twist_constraints(robot, flat_beta[a:z], free=free)
+            if Ap.shape[-2] == 0:
+                out[a:z] = flat_that[a:z]
+                return
             Ah = Ap / s
-            _, sv, Vt = np.linalg.svd(Ah, full_matrices=True)  # (..., k, 3): right vectors (..., 3, 3)
-            k = sv.shape[-1]
-            null = np.ones(batch + (3,), dtype=bool)  # rows of Vt beyond the rank
-            null[..., :k] = sv <= TOL * sv[..., :1]
-            coef = np.einsum("...ij,...j->...i", Vt, that) * null
-            part_hat = np.einsum("...ij,...i->...j", Vt, coef)
+            full = Ah.shape[-2] < 3  # right vectors (k, 3, 3) either way; no (k, rows, rows) left ones
+            _, sv, Vt = np.linalg.svd(Ah, full_matrices=full)
+            null = np.ones((z - a, 3), dtype=bool)  # rows of Vt beyond the rank
+            null[:, : sv.shape[-1]] = sv <= TOL * sv[:, :1]
+            coef = np.einsum("...ij,...j->...i", Vt, flat_that[a:z]) * null
+            out[a:z] = np.einsum("...ij,...i->...j", Vt, coef)
+
+        for_chunks(chunk, flat_beta.shape[0], max(64, 2**17 // robot.w))  # (chunk, rows, 3): a few MB
+        part_hat = out.reshape(batch + (3,))
     commanded = np.linalg.norm(part_hat, axis=-1) <= TOL * np.linalg.norm(that, axis=-1)
     with np.errstate(over="ignore"):  # (for display: a part beyond 1e308 is inf)
         part = part_hat / s * mh * mt

@@ -203,7 +203,8 @@ def null_space(A: ArrayLike, scale: ArrayLike | None = None) -> FloatArray:
     if A.shape[0] == 0:
         return np.eye(A.shape[1])  # no equations: every vector
     big = np.abs(A).max() if A.size else 0.0
-    _, _, Vt = np.linalg.svd(A / big if big > 0 else A)  # (scaled: the same vectors, no overflow)
+    full = A.shape[0] < A.shape[1]  # Vt (n, n) either way; no (m, m) U for tall matrices
+    _, _, Vt = np.linalg.svd(A / big if big > 0 else A, full_matrices=full)  # (scaled: the same vectors, no overflow)
     return Vt[r:].T.copy()
 
 
