@@ -26,6 +26,8 @@ platform twist must satisfy; :math:`\mathbf A` is :math:`k\times 3` with :math:`
 
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 
 from ..errors import InputValueError
@@ -89,7 +91,7 @@ def _constraint_terms(robot, free):
     units, Ps, Qs, base_rank = [], [], [], 0
     for i, (u, sl) in enumerate(zip(robot.wheels, robot.rate_slices)):
         Lf = np.asarray(u.local_block(NUMERIC), dtype=float)[:, free[sl]]
-        N = left_null_space(Lf) if Lf.shape[1] else np.eye(2)  # (2, k_i), constant
+        N = _left_null(Lf.tobytes(), Lf.shape) if Lf.shape[1] else np.eye(2)  # (2, k_i), constant
         base_rank += 2 - N.shape[1]  # rank L_i (of its free columns)
         Ji = J1[2 * i : 2 * i + 2]
         units += [i] * N.shape[1]
@@ -102,6 +104,14 @@ def _constraint_terms(robot, free):
     p, q = P.ravel(), Q.ravel()
     keep = (p != 0.0) | (q != 0.0)
     return Terms((k, 3), entry[keep], unit[keep], p[keep], q[keep]), base_rank
+
+
+@functools.lru_cache(maxsize=256)
+def _left_null(data, shape):
+    """:func:`~wmr.analysis.linalg.left_null_space` of a unit's block, by value (units of one kind and size share it)."""
+    N = left_null_space(np.frombuffer(data).reshape(shape))
+    N.setflags(write=False)
+    return N
 
 
 def rank_F(robot: Robot, beta: ArrayLike) -> IntArray:
