@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..io.decimals import float_text
 from ..model.wheels.joints import Joint
 from ..model.wheels.mechanism import Body, Mechanism
 from .params import Params
@@ -110,32 +111,46 @@ def mechanisms(robot, height: float) -> tuple[Mechanism, ...]:
     return tuple(out)
 
 
-def num(x) -> str:
-    """A float as MJCF text, 12 significant digits (no negative zero).
+def num(x, scale: float | None = None) -> str:
+    """A float as MJCF text: :func:`wmr.io.decimals.float_text` without a trailing ``.0`` (no negative zero).
+
+    Positions, directions and angles are written at the scale 1 (metres, unit vectors, radians:
+    round-off of a zero coordinate is written 0); masses, inertias, gains and times at their own
+    size (12 significant digits).
 
     Parameters
     ----------
     x : float
+    scale : float, optional
+        As for :func:`wmr.io.decimals.quantise` (default: ``|x|``).
 
     Returns
     -------
     str
+
+    Examples
+    --------
+    >>> num(0.1 + 0.2), num(-1e-17, scale=1.0), num(2.0), num(1e-5)
+    ('0.3', '0', '2', '1e-05')
     """
-    return format(float(x) + 0.0, ".12g")
+    text = float_text(x, scale)
+    return text[:-2] if text.endswith(".0") else text
 
 
-def nums(*xs) -> str:
+def nums(*xs, scale: float | None = None) -> str:
     """Floats as MJCF text, separated by spaces (:func:`num`).
 
     Parameters
     ----------
     *xs : float
+    scale : float, optional
+        As for :func:`num`.
 
     Returns
     -------
     str
     """
-    return " ".join(num(x) for x in xs)
+    return " ".join(num(x, scale) for x in xs)
 
 
 def _disk(mass, r):
@@ -161,13 +176,13 @@ def _geoms(body, name, r_unit, params, pad):
             f'contype="1" conaffinity="0" group="3"/>'
         )
         out.append(
-            f'{pad}<geom type="cylinder" size="{num(r)}" fromto="{nums(-r / 4, 0.0, 0.0, r / 4, 0.0, 0.0)}" '
+            f'{pad}<geom type="cylinder" size="{num(r)}" fromto="{nums(-r / 4, 0.0, 0.0, r / 4, 0.0, 0.0, scale=1.0)}" '
             f'contype="0" conaffinity="0" group="1"/>'
         )
     for a, b in body.rods:
         if np.hypot.reduce(np.subtract(a, b)) > 1e-6 * r_unit:
             out.append(
-                f'{pad}<geom type="capsule" size="{num(r_unit / 8)}" fromto="{nums(*a, *b)}" '
+                f'{pad}<geom type="capsule" size="{num(r_unit / 8)}" fromto="{nums(*a, *b, scale=1.0)}" '
                 f'contype="0" conaffinity="0" group="1"/>'
             )
     return out
@@ -192,10 +207,12 @@ def body_xml(body: Body, name, r_unit: float, params: Params, depth: int) -> lis
     list of str
     """
     pad = "  " * depth
-    quat = f' quat="{nums(np.cos(body.angle / 2), 0.0, 0.0, np.sin(body.angle / 2))}"' if body.angle else ""
-    lines = [f'{pad}<body name="{name(body.name)}" pos="{nums(*body.pos)}"{quat}>']
+    turn = nums(np.cos(body.angle / 2), 0.0, 0.0, np.sin(body.angle / 2), scale=1.0)
+    quat = f' quat="{turn}"' if turn != "1 0 0 0" else ""
+    lines = [f'{pad}<body name="{name(body.name)}" pos="{nums(*body.pos, scale=1.0)}"{quat}>']
     if body.joint is not None:
-        lines.append(f'{pad}  <joint name="{name(body.joint.name)}" type="hinge" axis="{nums(*body.axis or ())}"/>')
+        axis = nums(*body.axis or (), scale=1.0)
+        lines.append(f'{pad}  <joint name="{name(body.joint.name)}" type="hinge" axis="{axis}"/>')
     mass = params.body_mass if body.wheel is None else params.wheel_mass
     inertia = _block(mass, body.size) if body.wheel is None else _disk(mass, body.wheel)
     lines.append(f'{pad}  <inertial pos="0 0 0" mass="{num(mass)}" diaginertia="{nums(*inertia)}"/>')
