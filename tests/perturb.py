@@ -25,12 +25,13 @@ TRANSCENDENTAL = ("sin", "cos", "tan", "arcsin", "arccos", "arctan", "arctan2", 
 def nudge(x, direction, magnitude=False):
     """``x`` with every finite float moved one ulp towards ``direction`` (kept >= 0 where it is a ``magnitude``).
 
-    A :class:`wmr.Robot` is rebuilt from its nudged units (mount points, radii, offsets, angles); data classes,
+    A :class:`wmr.Robot` is rebuilt from its nudged units (mount points, radii, offsets, angles; a value the unit
+    refuses when moved, e.g. a roller angle of exactly pi/2 moved up, is kept); data classes,
     arrays, floats, tuples, lists and dicts are nudged field by field; anything else is returned as it is.  A data
     class field marked ``metadata={"json": "residual"}`` (the edition's figures) is a magnitude.
     """
     if isinstance(x, wmr.Robot):
-        return wmr.Robot([nudge(u, direction) for u in x.wheels], name=x.name)
+        return wmr.Robot([_unit(u, direction) for u in x.wheels], name=x.name)
     if dataclasses.is_dataclass(x) and not isinstance(x, type):
         return dataclasses.replace(
             x,
@@ -53,6 +54,18 @@ def nudge(x, direction, magnitude=False):
     return x
 
 
+def _unit(u, direction):
+    """A wheel unit nudged field by field, each field the unit accepts moved (its checks are the library's)."""
+    try:
+        return nudge(u, direction)
+    except wmr.errors.InputValueError:
+        for f in dataclasses.fields(u):
+            if f.init:
+                with contextlib.suppress(wmr.errors.InputValueError):
+                    u = dataclasses.replace(u, **{f.name: nudge(getattr(u, f.name), direction)})
+        return u
+
+
 @contextlib.contextmanager
 def another_cpu(direction):
     """NumPy's transcendental functions (:data:`TRANSCENDENTAL`) return results one ulp off (as another CPU's may)."""
@@ -67,6 +80,9 @@ def another_cpu(direction):
                 else (np.nextafter(r, direction) if np.isfinite(r) else r)
             )
 
+        for method in ("reduce", "accumulate", "outer"):  # a ufunc's methods (np.hypot.reduce), one ulp off too
+            if hasattr(fn, method):
+                setattr(f, method, off(getattr(fn, method)))
         return f
 
     try:

@@ -40,7 +40,7 @@ from ..model.robot import Robot
 from ..model.types import PathLike
 from ..model.wheels.mechanism import Mechanism, wheel
 from ..model.wheels.parts import Rollers
-from .decimals import float_text, length_scale
+from .decimals import float_text, length_scale, quantise
 
 __all__ = ["ROLLERS", "joint_name", "to_urdf"]
 
@@ -88,7 +88,10 @@ def _origin(xyz, size, rpy=(0.0, 0.0, 0.0)):
 
 def _rpy_z_to(a):
     """rpy turning a link's z axis onto the unit vector ``a`` (URDF: R = Rz(yaw) Ry(pitch) Rx(roll))."""
-    return (0.0, float(np.arccos(np.clip(a[2], -1.0, 1.0))), float(np.arctan2(a[1], a[0])))
+    # round-off off the direction first (an axis along z has no yaw), and the pitch from atan2, not arccos:
+    # arccos(1 - 1e-16) = 1.5e-8 would turn round-off into a visible angle
+    a = quantise(a, 1.0)
+    return (0.0, float(np.arctan2(abs(np.hypot(a[0], a[1])), a[2])), float(np.arctan2(a[1], a[0])))
 
 
 def _cylinder_link(name, radius, length, rpy, size, collision=True):
