@@ -23,7 +23,10 @@ runs of ``examples/{differential,paper_centred,swerve4,tricycle}.toml`` by up to
 scale (measured with MuJoCo 4.0.0); another CPU's MuJoCo (other SIMD kernels, fused multiply-adds)
 differs by more, and the difference grows with the simulated time.  Six digits leave nine orders
 of magnitude between such a change and a rounding boundary's half-quantum, and say more than a
-model whose friction and masses are known to a per cent can.
+model whose friction and masses are known to a per cent can.  A run at the onset of sliding is
+another matter: there contact physics is chaotic (the edition's breakaway experiment measured
+speeds 0.5 % apart after 2.5 s under a one-ulp change), and no number of digits makes its text
+the same everywhere.
 """
 
 from __future__ import annotations

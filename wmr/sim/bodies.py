@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..io.decimals import float_text
+from ..io.decimals import float_text, quantise
 from ..model.wheels.joints import Joint
 from ..model.wheels.mechanism import Body, Mechanism
 from .params import Params
@@ -112,17 +112,22 @@ def mechanisms(robot, height: float) -> tuple[Mechanism, ...]:
 
 
 def num(x, scale: float | None = None) -> str:
-    """A float as MJCF text: :func:`wmr.io.decimals.float_text` without a trailing ``.0`` (no negative zero).
+    """A float as MJCF text by the rule of :mod:`wmr.io.decimals`, without a trailing ``.0`` (no negative zero).
 
-    Positions, directions and angles are written at the scale 1 (metres, unit vectors, radians:
-    round-off of a zero coordinate is written 0); masses, inertias, gains and times at their own
-    size (12 significant digits).
+    MuJoCo is given 12 significant digits of every value, of its own size (:func:`~wmr.io.decimals.float_text`
+    with no scale: the digits this writer has always given it), and a position, direction or angle
+    (``scale=1``: metres, unit vectors, radians) that rounds to 0 at its scale -- round-off of a zero
+    coordinate, ``1.85e-17`` -- is written 0.  Why not the scale's quantum for the others too: contact
+    physics is chaotic at the last bit (the edition's breakaway experiment, :mod:`edition.physics.contact`,
+    measured C's speed 0.5 % apart after 2.5 s when its parameters moved by one ulp), so a model whose
+    small coordinates lost digits would move the committed measurements (``figures/physics.csv``) as
+    much as another CPU does; the text itself is the same on every CPU either way.
 
     Parameters
     ----------
     x : float
     scale : float, optional
-        As for :func:`wmr.io.decimals.quantise` (default: ``|x|``).
+        The scale below whose quantum a value is round-off (default: none, every value kept to 12 digits).
 
     Returns
     -------
@@ -130,10 +135,10 @@ def num(x, scale: float | None = None) -> str:
 
     Examples
     --------
-    >>> num(0.1 + 0.2), num(-1e-17, scale=1.0), num(2.0), num(1e-5)
-    ('0.3', '0', '2', '1e-05')
+    >>> num(0.1 + 0.2), num(-1.85e-17, scale=1.0), num(2.0), num(1e-5), num(0.0433012701892219, scale=1.0)
+    ('0.3', '0', '2', '1e-05', '0.0433012701892')
     """
-    text = float_text(x, scale)
+    text = float_text(x) if scale is None or quantise(x, scale) != 0 else "0"
     return text[:-2] if text.endswith(".0") else text
 
 
