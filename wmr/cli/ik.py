@@ -114,7 +114,7 @@ def run(args: argparse.Namespace) -> int:
     import wmr
 
     from ..analysis.actuation import uncontrolled
-    from ..io.decimals import length_scale
+    from ..io.decimals import DEGREES, length_scale
     from ..model.conventions import angle_from, angle_to
     from ..model.platform import wrap_angle
 
@@ -154,9 +154,8 @@ def run(args: argparse.Namespace) -> int:
     if args.json:
         speed = float(max(abs(twist[0]) * length_scale(robot), *np.abs(twist[1:])))  # m/s
         rate = float(np.abs(sol.value).max(initial=0.0))  # rad/s
-        deg = math.degrees(1.0)  # angles in degrees, at the scale of one radian
         scales = dict.fromkeys(("twist", "slip", "uncommanded_twist", "slip_without_resteering"), speed)
-        scales.update(dict.fromkeys(("angles_deg", "current_deg", "resteer_deg"), deg), rates=rate)
+        scales.update(dict.fromkeys(("angles_deg", "current_deg", "resteer_deg"), DEGREES), rates=rate)
         print(json_text(out, scales=scales))
         return 0
     unit = {"m/s": ("vx", "vy"), "rad/s": ("omega",)}

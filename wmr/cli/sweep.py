@@ -31,6 +31,7 @@ import sys
 import time
 
 from ..errors import InputValueError
+from ..io.decimals import DEGREES
 from ._numbers import json_text
 from ._options import ROBOT_FILE, add_convention
 
@@ -263,7 +264,7 @@ def run(args: argparse.Namespace) -> int:
         print("wmr sweep: interrupted (Ctrl-C) before any configuration was evaluated", file=sys.stderr)
         return 130
     if args.json:  # the analyses' values are dimensionless (scale 1); angles in degrees at the scale of a radian
-        scales = dict.fromkeys(("argmin_deg", "argmax_deg", "worst_deg"), math.degrees(1.0))
+        scales = dict.fromkeys(("argmin_deg", "argmax_deg", "worst_deg"), DEGREES)
         print(json_text(_as_json(res, args.convention), scales=scales))
     else:
         print(res.summary(args.convention))

@@ -7,7 +7,8 @@ another BLAS kernel), and ``repr`` writes every bit: the same robot would give f
 them to a decimal grid, and :func:`float_text`:
 
 **The rule.**  A value :math:`x` of a quantity whose scale is :math:`s` (:math:`s = 1` for angles in
-radians and dimensionless numbers, the robot's size (:func:`length_scale`) for its lengths,
+radians and dimensionless numbers, :data:`DEGREES` for angles in degrees, the robot's size
+(:func:`length_scale`) for its lengths,
 :math:`|x|` itself when no scale is known) is rounded to the nearest multiple of the quantum
 
 .. math:: q = 10^{\lfloor \log_{10} \max(|x|, s) \rfloor - 11},
@@ -42,10 +43,12 @@ import numpy as np
 from ..errors import InputTypeError, InputValueError
 from ..model import validation as V
 
-__all__ = ["DIGITS", "quantise", "float_text", "quantise_all", "length_scale"]
+__all__ = ["DIGITS", "DEGREES", "quantise", "float_text", "quantise_all", "length_scale"]
 
 #: significant digits a written float keeps (at most; fewer below its scale)
 DIGITS = 12
+#: the scale of an angle written in degrees: one radian (57.3 deg), as an angle in radians has the scale 1
+DEGREES = 180.0 / np.pi
 #: the decades :func:`quantise` knows (every finite double lies in them)
 _KMIN, _KMAX = -325, 309
 #: powers of ten that are exact doubles: the rounding is one multiplication or division by them

@@ -33,7 +33,6 @@ True
 from __future__ import annotations
 
 import difflib
-import math
 import os
 import re
 import tomllib
@@ -50,7 +49,7 @@ from ..model.tolerance import near_zero
 from ..model.types import PathLike
 from ..model.wheels import wheel_kinds
 from ..model.wheels.filekeys import toml_string, toml_text
-from .decimals import float_text, length_scale
+from .decimals import DEGREES, float_text, length_scale
 
 __all__ = ["RobotFileError", "wheel_keys", "load", "loads", "dump"]
 
@@ -384,9 +383,7 @@ def dump(robot: Robot, path: PathLike | None = None) -> str:
                 f"registered wheel kind: robot files cannot describe it (kinds: {', '.join(kinds)})"
             )
         out += ["", "[[wheel]]", f"type = {toml_string(u.kind)}"]
-        out += [
-            f"{key.name} = {_value(key.write(u), math.degrees(1.0) if key.degrees else size)}" for key in u.file_keys()
-        ]
+        out += [f"{key.name} = {_value(key.write(u), DEGREES if key.degrees else size)}" for key in u.file_keys()]
         changed = [
             (j.name, j.driven) for j, default in zip(u.joints, u.JOINTS, strict=True) if j.driven != default.driven
         ]
