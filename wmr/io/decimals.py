@@ -93,8 +93,10 @@ def quantise(x: Any, scale: Any = None, digits: int = DIGITS) -> Any:
 
     Raises
     ------
+    wmr.errors.InputTypeError
+        If ``x`` or ``scale`` is a string, a bool or (``x``) None, or ``digits`` is not an int.
     wmr.errors.InputValueError
-        If a value or the scale is not real, a scale is negative or NaN, or ``digits`` is outside 1-15.
+        If a value or the scale is not real, a scale is negative or not finite, or ``digits`` is outside 1-15.
 
     Examples
     --------
@@ -110,13 +112,16 @@ def quantise(x: Any, scale: Any = None, digits: int = DIGITS) -> Any:
     True
     """
     n_digits = _digits(digits)
+    for name, v in (("x", x), ("scale", scale)):
+        if isinstance(v, (str, bytes, bool)) or (v is None and name == "x"):
+            raise InputTypeError(f"{name} must be a real number or an array of them, got {V.show(v)}")
     try:
         a = np.asarray(x, dtype=float)
         s = np.abs(a) if scale is None else np.asarray(scale, dtype=float)
     except (TypeError, ValueError):
         raise InputValueError(f"quantise needs real numbers, got x={V.show(x)}, scale={V.show(scale)}") from None
-    if scale is not None and (np.any(np.isnan(s)) or np.any(s < 0)):
-        raise InputValueError(f"scale must be >= 0, got {V.show(scale)}")
+    if scale is not None and not (np.all(np.isfinite(s)) and np.all(s >= 0)):
+        raise InputValueError(f"scale must be finite and >= 0, got {V.show(scale)}")
     finite = np.isfinite(a)
     mag = np.where(finite, np.maximum(np.abs(a), s), 0.0)
     mag = np.where(np.isfinite(mag), mag, 0.0)
