@@ -34,7 +34,7 @@ def test_below_the_scale_is_zero_and_no_negative_zero():
 
 
 def test_one_ulp_rarely_changes_the_text():
-    """A one-ulp change crosses a rounding boundary only within ~1e-16 of it: about 1e-4 of values, not none."""
+    """A one-ulp change crosses a rounding boundary only within ~1e-16 of it: rarely (about 1e-4 of values), not never."""
     q = quantise(VALUES)
     for direction in (np.inf, -np.inf):
         assert np.mean(quantise(np.nextafter(VALUES, direction)) != q) < 1e-3

@@ -8,8 +8,8 @@ them to a decimal grid, and :func:`float_text`:
 
 **The rule.**  A value :math:`x` of a quantity whose scale is :math:`s` (:math:`s = 1` for angles in
 radians and dimensionless numbers, :data:`DEGREES` for angles in degrees, the robot's size
-(:func:`length_scale`) for its lengths,
-:math:`|x|` itself when no scale is known) is rounded to the nearest multiple of the quantum
+(:func:`length_scale`) for its lengths, :math:`|x|` itself when no scale is known) is rounded to
+the nearest multiple of the quantum
 
 .. math:: q = 10^{\lfloor \log_{10} \max(|x|, s) \rfloor - 11},
 
@@ -20,7 +20,12 @@ i.e. to :data:`DIGITS` = 12 significant digits and nothing below about :math:`10
 drops a trailing ``.0``).  The decade :math:`\lfloor \log_{10} \rfloor` is read from a table of
 decimal thresholds, not from ``log10`` (whose last bit is the CPU's), and is the decade of the value
 rounded to 12 digits, so that a scale one ulp below a power of ten (``0.09999999999999999``) counts as
-that power.  A format that needs fewer digits for a quantity passes ``digits``.
+that power; the rounding itself is ``rint`` of the value times an exact power of ten, then one division
+(IEEE arithmetic, the same on every CPU; vectorised over arrays; Python's correctly rounded
+:func:`round` beyond the 22 exact powers).  Where a quantity needs other digits
+its writer says why: MuJoCo's model keeps 12 digits of each value's own size, round-off of a zero
+coordinate written 0 (:func:`wmr.sim.bodies.num`), and ``wmr simulate --json`` writes MuJoCo's
+measurements with 6 (:mod:`wmr.cli.simulate`).
 
 **Why it holds, and how far.**  Arithmetic on another CPU moves a result by an ulp or a few,
 :math:`\sim 10^{-16}` relative; rounding to 12 digits gives a different decimal only when the exact
@@ -28,7 +33,7 @@ result lies within that distance of a rounding boundary (a half-quantum), which 
 not a short decimal has a probability of about :math:`10^{-16}/10^{-12} = 10^{-4}` per value.  The
 rule makes a changed file improbable, not impossible: the tests (``tests/test_written_files.py``)
 write every example robot with its inputs and NumPy's transcendental functions moved one ulp both
-ways and compare the bytes with the committed files.
+ways and compare the bytes with the unperturbed ones and with the committed files.
 
 NumPy only; nothing here knows a file format.
 """
