@@ -52,7 +52,8 @@ def json_text(value, scale=1.0, scales=None, digits=DIGITS):
     ``scales`` maps a top-level key to the scale of its numbers; the others are at ``scale`` (default 1:
     angles in radians and dimensionless numbers; ``None``: each number's own size).
     """
-    scales = scales or {}
     if isinstance(value, dict):
-        value = {k: quantise_all(v, scales.get(k, scale), digits) for k, v in value.items()}
-    return json.dumps(quantise_all(value, scale, digits) if not isinstance(value, dict) else value, indent=2)
+        value = {k: quantise_all(v, (scales or {}).get(k, scale), digits) for k, v in value.items()}
+    else:
+        value = quantise_all(value, scale, digits)
+    return json.dumps(value, indent=2)
