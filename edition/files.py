@@ -91,15 +91,28 @@ def atomic_write(path, data):
     return Path(path)
 
 
+def _cell(value):
+    """A CSV field: a float by the rule of written numbers (:func:`wmr.io.decimals.float_text`), else ``str``."""
+    if isinstance(value, float) or getattr(getattr(value, "dtype", None), "kind", "") == "f":  # NumPy's too
+        from wmr.io.decimals import float_text  # only when a float is written: this module stays light
+
+        return float_text(value)
+    return "" if value is None else str(value)
+
+
 def csv_text(rows, columns):
     r"""Rows as CSV text: a header of ``columns``, then one line per row (a missing field is empty).
 
-    Lines end in ``\n`` on every platform, so the files do not change with the machine that wrote them.
+    Lines end in ``\n`` on every platform, and a float is written by the rule of
+    :mod:`wmr.io.decimals` (12 significant digits, the shortest ``repr`` of the rounded double), so the
+    files do not change with the machine that wrote them.  The edition's tables hold text their
+    chapters formatted (``"< 1e-12"``, ``"0.0500 m"``); a float that reaches a table is written here.
 
     Parameters
     ----------
     rows : iterable of dict
-        Field name -> value (written with ``str``).
+        Field name -> value (a float by :func:`wmr.io.decimals.float_text`, anything else with ``str``;
+        ``None`` and a missing field are empty).
     columns : sequence of str
         The fields, in order.
 
@@ -111,10 +124,12 @@ def csv_text(rows, columns):
     --------
     >>> csv_text([{"id": "20", "verdict": "ok"}], ("id", "verdict", "note"))
     'id,verdict,note\n20,ok,\n'
+    >>> csv_text([{"x": 0.1 + 0.2, "n": 3}], ("x", "n"))
+    'x,n\n0.3,3\n'
     """
     buf = io.StringIO()
-    w = csv.DictWriter(buf, fieldnames=list(columns), lineterminator="\n")
-    w.writeheader()
+    w = csv.writer(buf, lineterminator="\n")
+    w.writerow(list(columns))
     for r in rows:
-        w.writerow({k: r.get(k, "") for k in columns})
+        w.writerow([_cell(r.get(k)) for k in columns])
     return buf.getvalue()

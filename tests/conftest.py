@@ -15,6 +15,7 @@ from hypothesis import HealthCheck, settings
 from hypothesis import strategies as st
 
 import wmr
+from wmr.io.decimals import DIGITS
 
 # --- determinism: a fixed, bounded Hypothesis profile -------------------------------------------
 settings.register_profile(
@@ -37,6 +38,10 @@ def pytest_configure(config):
 
 #: the repository this test suite belongs to
 ROOT = Path(__file__).resolve().parents[1]
+
+#: how far a number read back from a file wmr wrote may be from the number written, relative to its scale: the
+#: files keep DIGITS significant digits (:mod:`wmr.io.decimals`), and matrices rebuilt from them add round-off
+WRITTEN = 10.0 ** (2 - DIGITS)
 
 KINDS = ("offset", "centred", "dual")
 K = np.array([0.0, 0.0, 1.0])

@@ -8,6 +8,8 @@ import pytest
 import wmr
 from wmr.io import RobotFileError, dump, load, loads, wheel_keys
 
+from conftest import WRITTEN
+
 EXAMPLES = Path(__file__).resolve().parent.parent / "examples"
 
 CENTRED = """name = "two"
@@ -27,9 +29,9 @@ radius = 0.05
 def _same_matrices(a, b):
     beta = np.random.default_rng(3).uniform(-np.pi, np.pi, (20, a.w))
     assert a.w == b.w and a.qdot_names == b.qdot_names and [u.kind for u in a.wheels] == [u.kind for u in b.wheels]
-    assert np.allclose(a.F(beta), b.F(beta), rtol=1e-14, atol=1e-14)
-    assert np.allclose(a.J1(L=0.7), b.J1(L=0.7), rtol=1e-14, atol=1e-14)
-    assert np.allclose(a.J2(beta), b.J2(beta), rtol=1e-14, atol=1e-14)
+    assert np.allclose(a.F(beta), b.F(beta), rtol=WRITTEN, atol=WRITTEN)
+    assert np.allclose(a.J1(L=0.7), b.J1(L=0.7), rtol=WRITTEN, atol=WRITTEN)
+    assert np.allclose(a.J2(beta), b.J2(beta), rtol=WRITTEN, atol=WRITTEN)
 
 
 def _mixed():

@@ -11,6 +11,8 @@ import wmr
 from wmr.errors import MissingDependencyError, RobotFileError
 from wmr.io import dump, from_urdf, load, to_urdf
 
+from conftest import WRITTEN
+
 # in environment.lock: runs here (imported by the tests that use it, not at collection)
 if importlib.util.find_spec("yourdfpy") is None:
     pytest.skip("yourdfpy is not installed", allow_module_level=True)
@@ -22,12 +24,12 @@ EXAMPLES = sorted((ROOT / "examples").glob("*.toml"))
 def _same(a, b):
     """Same kinds, mount points, radii, kind parameters and actuation, wheel by wheel."""
     assert [type(u) for u in a.wheels] == [type(u) for u in b.wheels]
-    np.testing.assert_allclose(b.mount_points, a.mount_points, rtol=0, atol=1e-12)
+    np.testing.assert_allclose(b.mount_points, a.mount_points, rtol=0, atol=WRITTEN)
     for u, v in zip(a.wheels, b.wheels):
         pu, pv = u.numeric().parameters(), v.numeric().parameters()
         assert pu.keys() == pv.keys()
         for k in pu:
-            assert float(pv[k]) == pytest.approx(float(pu[k]), abs=1e-12), (u, k)
+            assert float(pv[k]) == pytest.approx(float(pu[k]), abs=WRITTEN), (u, k)
         assert u.driven == v.driven
     assert wmr.campion_class(a).label == wmr.campion_class(b).label
 

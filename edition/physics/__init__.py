@@ -28,9 +28,9 @@ exercises.
 from __future__ import annotations
 
 import csv
-import io
 from pathlib import Path
 
+from .. import files
 from .common import Outcome
 from .contact import brake_experiment, steering_experiment
 from .drift import dead_zone_experiment, jam_experiment
@@ -80,12 +80,7 @@ def csv_text(outcomes):
     -------
     str
     """
-    buf = io.StringIO()
-    w = csv.DictWriter(buf, fieldnames=COLUMNS, lineterminator="\n")
-    w.writeheader()
-    for o in outcomes:
-        w.writerow(o.row())
-    return buf.getvalue()
+    return files.csv_text([o.row() for o in outcomes], COLUMNS)
 
 
 def write_csv(outcomes, path):

@@ -4,78 +4,24 @@ Another CPU computes the same figure with arithmetic that differs in the last bi
 (SIMD or libm), another BLAS kernel.  Each figure is therefore drawn here from inputs moved by one
 ulp (``np.nextafter``, up and down: every float the figure's data holds, the robot's mount points
 included), with NumPy's transcendental functions moved by one ulp as well while it is drawn, and each
-committed file (SVG, PDF, JSON) must come out byte for byte the same.
+committed file (SVG, PDF, JSON) must come out byte for byte the same.  The perturbations are those of
+``tests/perturb.py``, which ``tests/test_written_files.py`` applies to the files the writers write.
 """
 
 from __future__ import annotations
 
-import contextlib
-import dataclasses
 import json
 
 import numpy as np
 import pytest
 
-import wmr
 from edition import figures as F
 from edition.figures import output
 
 from conftest import ROOT
+from perturb import another_cpu, nudge
 
 FIGURES = ROOT / "figures"
-#: the NumPy functions whose last bit differs between CPUs (vectorised implementations and libm)
-TRANSCENDENTAL = ("sin", "cos", "tan", "arcsin", "arccos", "arctan", "arctan2", "hypot", "sqrt", "exp", "log", "log10")
-
-
-def nudge(x, direction, magnitude=False):
-    """``x`` with every finite float moved one ulp towards ``direction`` (kept >= 0 where it is a ``magnitude``)."""
-    if isinstance(x, wmr.Robot):
-        return wmr.Robot([nudge(u, direction) for u in x.wheels], name=x.name)
-    if dataclasses.is_dataclass(x) and not isinstance(x, type):
-        return dataclasses.replace(
-            x,
-            **{
-                f.name: nudge(getattr(x, f.name), direction, f.metadata.get("json") == "residual")
-                for f in dataclasses.fields(x)
-                if f.init
-            },
-        )
-    if isinstance(x, np.ndarray) and x.dtype.kind == "f":
-        y = np.where(np.isfinite(x), np.nextafter(x, direction), x)
-        return np.abs(y) if magnitude else y
-    if isinstance(x, (float, np.floating)):
-        z = float(np.nextafter(x, direction)) if np.isfinite(x) else float(x)
-        return abs(z) if magnitude else z
-    if isinstance(x, (tuple, list)):
-        return type(x)(nudge(v, direction, magnitude) for v in x)
-    if isinstance(x, dict):
-        return {k: nudge(v, direction, magnitude) for k, v in x.items()}
-    return x
-
-
-@contextlib.contextmanager
-def another_cpu(direction):
-    """NumPy's transcendental functions return results one ulp off (as another CPU's may)."""
-    saved = {name: getattr(np, name) for name in TRANSCENDENTAL}
-
-    def off(fn):
-        def f(*args, **kw):
-            r = fn(*args, **kw)
-            return (
-                np.where(np.isfinite(r), np.nextafter(r, direction), r)
-                if np.ndim(r)
-                else (np.nextafter(r, direction) if np.isfinite(r) else r)
-            )
-
-        return f
-
-    try:
-        for name, fn in saved.items():
-            setattr(np, name, off(fn))
-        yield
-    finally:
-        for name, fn in saved.items():
-            setattr(np, name, fn)
 
 
 def test_nudge_and_another_cpu_change_what_they_touch():

@@ -36,6 +36,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..errors import InputValueError
+from ..io.decimals import quantise
 from ..model import validation as V
 from ..model.tolerance import TOL
 from ._batch import for_chunks
@@ -252,7 +253,7 @@ def describe_twist(robot, twist) -> str:
         return f"diagonally (along {a:.0f} deg from x)"
     if int(ic.kind) != FINITE:
         return "nowhere (standing still)"
-    x, y = (float(v) + 0.0 for v in ic.point)
+    x, y = (float(v) for v in quantise(ic.point, size))  # round-off of a zero coordinate (6e-17) written 0
     if np.hypot(x, y) <= 1e-3 * size:
         return "on the spot (turning about C)"
     return f"in a turn about the point ({x:.3g}, {y:.3g}) m"

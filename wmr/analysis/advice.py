@@ -277,16 +277,18 @@ def advice(robot, before=None) -> tuple[list[Advice], dict]:
     out = actuation_advice(robot, before)
     pts = robot.mount_points
     centroid = pts.mean(axis=0)
-    jl1 = bool(np.all(np.abs(centroid) <= TOL * float(np.abs(pts).max())))
+    zero = np.abs(centroid) <= TOL * float(np.abs(pts).max())
+    jl1 = bool(np.all(zero))
     if not jl1:
         moved = robot.moved(origin=centroid)
+        shown = np.where(zero, 0.0, centroid) + 0.0  # round-off of a zero coordinate shown as 0
         after = profile(moved)
         ok = after["kappa_JL1"] < before["kappa_JL1"]
         out.append(
             Advice(
                 "J_L1",
-                f"J_L1: move C to the centroid of the mount points, ({centroid[0]:.4g}, "
-                f"{centroid[1]:.4g}) in this frame (subtract it from every position); then L = "
+                f"J_L1: move C to the centroid of the mount points, ({shown[0]:.4g}, "
+                f"{shown[1]:.4g}) in this frame (subtract it from every position); then L = "
                 f"{after['L']:.4g} gives kappa(J_L1) = {_g(after['kappa_JL1'])} (now "
                 f"{_g(before['kappa_JL1'])} at L = {before['L']:.4g})",
                 ok,

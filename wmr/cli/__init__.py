@@ -11,6 +11,10 @@ Each command lives in its own module of this package (one file per command) and 
   without a traceback.  Any other exception is a bug in wmr: :func:`main` prints its traceback
   and a one-line request to report it, and returns 1.
 
+A command's ``--json`` is printed by ``wmr.cli._numbers.json_text``: every float by the rule of
+:mod:`wmr.io.decimals`, at the scale of its quantity, so that the same input prints the same JSON on
+every CPU.
+
 :data:`COMMANDS` lists them in the order ``wmr --help`` shows.
 """
 

@@ -2,11 +2,13 @@
 
 from __future__ import annotations
 
+import json
 import math
 
 from ..errors import InputValueError
+from ..io.decimals import DIGITS, quantise_all
 
-__all__ = ["number", "numbers", "fmt", "clean"]
+__all__ = ["number", "numbers", "fmt", "clean", "json_text"]
 
 
 def number(text, option):
@@ -42,3 +44,16 @@ def clean(values, scale):
 
     values = np.asarray(values, dtype=float)
     return np.where(near_zero(values, scale), 0.0, values)
+
+
+def json_text(value, scale=1.0, scales=None, digits=DIGITS):
+    """``value`` as the JSON a command prints (``--json``), every float by the rule of :mod:`wmr.io.decimals`.
+
+    ``scales`` maps a top-level key to the scale of its numbers; the others are at ``scale`` (default 1:
+    angles in radians and dimensionless numbers; ``None``: each number's own size).
+    """
+    if isinstance(value, dict):
+        value = {k: quantise_all(v, (scales or {}).get(k, scale), digits) for k, v in value.items()}
+    else:
+        value = quantise_all(value, scale, digits)
+    return json.dumps(value, indent=2)

@@ -16,12 +16,12 @@ convention chosen).  The computation is :func:`wmr.analysis.overview.overview`.
 from __future__ import annotations
 
 import argparse
-import json
 import math
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from ._numbers import json_text
 from ._options import ROBOT_FILE
 
 if TYPE_CHECKING:  # (the command imports the library when it runs)
@@ -254,11 +254,12 @@ def run(args: argparse.Namespace) -> int:
     import wmr
 
     from ..analysis.overview import overview
+    from ..io.decimals import length_scale
 
     robot = wmr.load(args.robot, wheel_joints=args.wheel_joints)
     ov = overview(robot, grid=args.grid, twists=args.twists, seed=args.seed)
     if args.json:
-        print(json.dumps(as_json(ov, args.convention), indent=2))
+        print(json_text(as_json(ov, args.convention), scales={"L": length_scale(robot)}))
     else:
         print(table(ov, args.convention) + ("" if args.brief else "\n" + notes(ov)))
     return 0

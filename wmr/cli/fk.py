@@ -23,13 +23,12 @@ the encoder per control period at the largest wheel's rim, :math:`r\\,2\\pi/(N\\
 from __future__ import annotations
 
 import argparse
-import json
 import math
 from typing import TYPE_CHECKING
 
 import numpy as np
 
-from ._numbers import clean, fmt, number, numbers
+from ._numbers import clean, fmt, json_text, number, numbers
 from ._options import ROBOT_FILE, add_convention, twist_words
 
 if TYPE_CHECKING:
@@ -169,7 +168,10 @@ def run(args: argparse.Namespace) -> int:
         "residual": sol.residual.tolist(),
     }
     if args.json:
-        print(json.dumps(out, indent=2))
+        twist_scale = max(abs(float(t[0])) * size, *np.abs(t[1:]))  # m/s
+        rate_scale = float(np.abs(robot.J2(beta) @ rates).max())  # m/s: the wheels' speeds
+        slips = dict.fromkeys(("slip", "slip_max_wheel", "residual"), rate_scale)
+        print(json_text(out, scales={**dict.fromkeys(twist_words(t, args.convention), twist_scale), **slips}))
         return 0
     units = {"omega": "rad/s", "vx": "m/s", "vy": "m/s"}
     rows = [(k, f"{fmt(out[k])} {units[k]}") for k in twist_words(t, args.convention)]

@@ -25,13 +25,12 @@ current angles.
 from __future__ import annotations
 
 import argparse
-import json
 import math
 from typing import TYPE_CHECKING
 
 import numpy as np
 
-from ._numbers import clean, fmt, number, numbers
+from ._numbers import clean, fmt, json_text, number, numbers
 from ._options import ROBOT_FILE, add_convention, twist_words
 
 if TYPE_CHECKING:
@@ -115,6 +114,7 @@ def run(args: argparse.Namespace) -> int:
     import wmr
 
     from ..analysis.actuation import uncontrolled
+    from ..io.decimals import DEGREES, length_scale
     from ..model.conventions import angle_from, angle_to
     from ..model.platform import wrap_angle
 
@@ -152,7 +152,11 @@ def run(args: argparse.Namespace) -> int:
         "slip_without_resteering": _slip(now),
     }
     if args.json:
-        print(json.dumps(out, indent=2))
+        speed = float(max(abs(twist[0]) * length_scale(robot), *np.abs(twist[1:])))  # m/s
+        rate = float(np.abs(sol.value).max(initial=0.0))  # rad/s
+        scales = dict.fromkeys(("twist", "slip", "uncommanded_twist", "slip_without_resteering"), speed)
+        scales.update(dict.fromkeys(("angles_deg", "current_deg", "resteer_deg"), DEGREES), rates=rate)
+        print(json_text(out, scales=scales))
         return 0
     unit = {"m/s": ("vx", "vy"), "rad/s": ("omega",)}
     print(

@@ -13,24 +13,41 @@ the commanded twist; the simulated one (mean over the second half of the run); t
 forward kinematics recovers from the simulated encoders and its slip residual; the mean slip
 speed of the wheels at their contacts; the largest servo torque as a fraction of its limit.
 Needs MuJoCo (``pip install 'wmr-kinematics[sim]'``).  Swedish wheels are refused (exit status 2).
+
+``--json`` writes the inputs by the rule of :mod:`wmr.io.decimals` (12 digits) and MuJoCo's
+measurements with :data:`SIM_DIGITS` significant digits at the scale of the commanded speed (m/s;
+the final pose and the servo load at the scale 1).  Why fewer: a simulation's result depends on
+much more than the last bit of one input.  Moving every body position, size, mass, inertia,
+friction, gain and damping of the model by one ulp (up or down) moved the printed numbers of 2 s
+runs of ``examples/{differential,paper_centred,swerve4,tricycle}.toml`` by up to 2e-15 of their
+scale (measured with MuJoCo 4.0.0); another CPU's MuJoCo (other SIMD kernels, fused multiply-adds)
+differs by more, and the difference grows with the simulated time.  Six digits leave nine orders
+of magnitude between such a change and a rounding boundary's half-quantum, and say more than a
+model whose friction and masses are known to a per cent can.  A run at the onset of sliding is
+another matter: there contact physics is chaotic (the edition's breakaway experiment measured
+speeds 0.5 % apart after 2.5 s under a one-ulp change), and no number of digits makes its text
+the same everywhere.
 """
 
 from __future__ import annotations
 
-import json
 from pathlib import Path
 from typing import TYPE_CHECKING
 
 import numpy as np
 
 from ..errors import InputValueError
-from ._numbers import fmt, number
+from ..io.decimals import length_scale, quantise_all
+from ._numbers import fmt, json_text, number
 from ._options import ROBOT_FILE
+
+#: significant digits of MuJoCo's measurements in ``--json`` (module notes)
+SIM_DIGITS = 6
 
 if TYPE_CHECKING:
     import argparse
 
-__all__ = ["HELP", "add_arguments", "run"]
+__all__ = ["HELP", "SIM_DIGITS", "add_arguments", "run"]
 
 HELP = "the robot in MuJoCo following a commanded twist (needs mujoco); --mjcf writes the model"
 
@@ -120,19 +137,24 @@ def run(args: argparse.Namespace) -> int:
     fk, residual = rec.kinematic_slip()
     limits = np.abs(s.model.actuator_forcerange[:, 1]) if s.model.nu else np.ones(0)
     load = float((np.abs(rec.torque[late]) / limits).max()) if s.model.nu else 0.0
+    speed = float(max(abs(twist[0]) * length_scale(robot), *np.abs(twist[1:]))) or 1.0  # m/s
+
+    def measured(x, scale):  # MuJoCo's numbers at SIM_DIGITS (the module notes say why)
+        return quantise_all(x, scale, SIM_DIGITS)
+
     out = {
         "commanded": dict(zip(("omega", "vx", "vy"), twist.tolist())),
-        "simulated": dict(zip(("omega", "vx", "vy"), rec.twist[late].mean(axis=0).tolist())),
-        "forward_from_encoders": dict(zip(("omega", "vx", "vy"), fk[late].mean(axis=0).tolist())),
-        "encoder_slip_residual": float(residual[late].mean()),
-        "contact_slip_speed": float(rec.slip_speed[late].mean()),
-        "final_pose": dict(zip(("psi", "X", "Y"), rec.pose[-1].tolist())),
-        "servo_load": load,
+        "simulated": measured(dict(zip(("omega", "vx", "vy"), rec.twist[late].mean(axis=0).tolist())), speed),
+        "forward_from_encoders": measured(dict(zip(("omega", "vx", "vy"), fk[late].mean(axis=0).tolist())), speed),
+        "encoder_slip_residual": measured(float(residual[late].mean()), speed),
+        "contact_slip_speed": measured(float(rec.slip_speed[late].mean()), speed),
+        "final_pose": measured(dict(zip(("psi", "X", "Y"), rec.pose[-1].tolist())), 1.0),
+        "servo_load": measured(load, 1.0),
         "seconds": seconds,
         "mjcf": args.mjcf,
     }
     if args.json:
-        print(json.dumps(out, indent=2))
+        print(json_text(out, scale=None))  # the inputs at 12 digits; the measurements are on their coarser grid
         return 0
 
     def tw(d):

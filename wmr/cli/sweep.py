@@ -26,12 +26,13 @@ sweep after the chunk in progress and prints the result over the configurations 
 from __future__ import annotations
 
 import argparse
-import json
 import math
 import sys
 import time
 
 from ..errors import InputValueError
+from ..io.decimals import DEGREES
+from ._numbers import json_text
 from ._options import ROBOT_FILE, add_convention
 
 HELP = (
@@ -262,7 +263,11 @@ def run(args: argparse.Namespace) -> int:
     if res.count == 0:
         print("wmr sweep: interrupted (Ctrl-C) before any configuration was evaluated", file=sys.stderr)
         return 130
-    print(json.dumps(_as_json(res, args.convention), indent=2) if args.json else res.summary(args.convention))
+    if args.json:  # the analyses' values are dimensionless (scale 1); angles in degrees at the scale of a radian
+        scales = dict.fromkeys(("argmin_deg", "argmax_deg", "worst_deg"), DEGREES)
+        print(json_text(_as_json(res, args.convention), scales=scales))
+    else:
+        print(res.summary(args.convention))
     if not res.complete:
         print(
             f"wmr sweep: interrupted (Ctrl-C) after {res.count:,} configurations: the result above covers those only",

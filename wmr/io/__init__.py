@@ -30,6 +30,10 @@ controller: ROS 2 and WPILib leave them out.  Lost on the way: the wheel radius 
 (their sum is kept), the steered wheels' radius in ROS 2's steering controllers, and the wheel
 order where a layout has its own (ROS 2; WPILib's mecanum FL, FR, RL, RR).
 
+Every writer writes its floats by one rule, :mod:`wmr.io.decimals` (12 significant digits, nothing
+below :math:`10^{-11}` of the quantity's scale), so that the same robot gives the same bytes on every
+CPU; a file read back holds its numbers to 12 digits.
+
 The optional packages (yourdfpy, PyYAML, robotpy-wpimath) are imported only when a bridge is used
 (:mod:`wmr.io.extras`).
 

@@ -28,6 +28,7 @@ from ..errors import InputError, InputTypeError, InputValueError, RobotFileError
 from ..model import validation as V
 from ..model.robot import Robot
 from ..model.types import JointNames, PathLike
+from .decimals import float_text, length_scale
 from .recognise import recognise
 from .ros2_controllers import CONTROLLERS
 from .ros2_params import Params, parse
@@ -152,32 +153,37 @@ def from_ros2(path: PathLike, controller: str | None = None) -> Robot:
 # ------------------------------------------------------------------------------------------ writing
 _PLAIN = re.compile(r"[A-Za-z_][A-Za-z0-9_/]*")
 _KEYWORDS = {"yes", "no", "on", "off", "true", "false", "null", "y", "n"}  # YAML 1.1 reads these as bool/null
+#: the parameters that are angles (rad, scale 1 for :func:`wmr.io.decimals.float_text`); the others are lengths
+_ANGLES = {"wheel_offset", "theta"}
 
 
-def _scalar(v):
+def _scalar(v, scale=1.0):
+    """A YAML 1.1 scalar; a float by :func:`wmr.io.decimals.float_text` at ``scale``, with a '.'."""
     if isinstance(v, bool):
         return "true" if v else "false"
     if isinstance(v, str):
         return v if _PLAIN.fullmatch(v) and v.lower() not in _KEYWORDS else json.dumps(v)
     if isinstance(v, int):  # ROS 2 parameters are typed: an int stays an int
         return str(v)
-    text = repr(float(v))
+    text = float_text(v, scale)
     if "." not in text and "inf" not in text and "nan" not in text:  # YAML 1.1 floats have a '.'
         text = text.replace("e", ".0e") if "e" in text else text + ".0"
     return text
 
 
-def _yaml(value, indent):
+def _yaml(value, indent, size=1.0):
+    """YAML lines of a mapping; floats at the scale ``size`` (the robot's) unless their key names an angle."""
     pad = " " * indent
     out = []
     for key, v in value.items():
+        scale = 1.0 if key in _ANGLES else size
         if isinstance(v, dict):
-            out += [f"{pad}{key}:"] + _yaml(v, indent + 2)
+            out += [f"{pad}{key}:"] + _yaml(v, indent + 2, size)
         elif isinstance(v, list):
-            items = (json.dumps(x) if isinstance(x, str) else _scalar(x) for x in v)
+            items = (json.dumps(x) if isinstance(x, str) else _scalar(x, scale) for x in v)
             out.append(f"{pad}{key}: [" + ", ".join(items) + "]")
         else:
-            out.append(f"{pad}{key}: {_scalar(v)}")
+            out.append(f"{pad}{key}: {_scalar(v, scale)}")
     return out
 
 
@@ -264,7 +270,12 @@ def to_ros2(
             }
         }
     }
-    text = "\n".join(head + _yaml(manager, 0) + [""] + _yaml({ctrl.name: {"ros__parameters": params}}, 0)) + "\n"
+    text = (
+        "\n".join(
+            head + _yaml(manager, 0) + [""] + _yaml({ctrl.name: {"ros__parameters": params}}, 0, length_scale(robot))
+        )
+        + "\n"
+    )
     if path is not None:
         Path(path).write_text(text, encoding="utf-8")
     return text

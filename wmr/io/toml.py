@@ -49,6 +49,7 @@ from ..model.tolerance import near_zero
 from ..model.types import PathLike
 from ..model.wheels import wheel_kinds
 from ..model.wheels.filekeys import toml_string, toml_text
+from .decimals import DEGREES, float_text, length_scale
 
 __all__ = ["RobotFileError", "wheel_keys", "load", "loads", "dump"]
 
@@ -322,22 +323,24 @@ def load(path: PathLike) -> Robot:
 
 
 # ------------------------------------------------------------------------------------ writing
-def _float(x):
-    """The shortest text that reads back as the same double (TOML floats need a '.' or an exponent)."""
-    text = repr(float(x))
+def _float(x, scale):
+    """A float by :func:`wmr.io.decimals.float_text` at ``scale`` (TOML floats need a '.' or an exponent)."""
+    text = float_text(x, scale)
     return text if any(c in text for c in ".eE") else text + ".0"
 
 
-def _value(v):
-    """The TOML text of a number or a list of numbers."""
-    return "[" + ", ".join(_float(x) for x in v) + "]" if isinstance(v, list) else _float(v)
+def _value(v, scale):
+    """The TOML text of a number or a list of numbers, at ``scale`` (:mod:`wmr.io.decimals`)."""
+    return "[" + ", ".join(_float(x, scale) for x in v) + "]" if isinstance(v, list) else _float(v, scale)
 
 
 def dump(robot: Robot, path: PathLike | None = None) -> str:
     """The TOML text of a robot file for ``robot`` (and write it to ``path`` if given).
 
-    ``load(path)`` of the result builds the same matrices (angles go through degrees, within a
-    rounding error).  Symbolic robots are written with their float values.
+    ``load(path)`` of the result builds the same matrices within a rounding error: numbers are
+    written by the rule of :mod:`wmr.io.decimals` (12 significant digits; lengths at the scale of the
+    robot's size, angles in degrees at the scale of one radian), so the bytes are the same on every
+    CPU.  Symbolic robots are written with their float values.
 
     Parameters
     ----------
@@ -372,7 +375,7 @@ def dump(robot: Robot, path: PathLike | None = None) -> str:
         "# wmr robot file: lengths in metres, angles in degrees (schema: wmr.io)",
         f"name = {toml_string(robot.name)}",
     ]
-    kinds = wheel_kinds()
+    kinds, size = wheel_kinds(), length_scale(robot)
     for k, u in enumerate(robot.wheels, 1):
         if kinds.get(u.kind) is not type(u):
             raise InputValueError(
@@ -380,7 +383,7 @@ def dump(robot: Robot, path: PathLike | None = None) -> str:
                 f"registered wheel kind: robot files cannot describe it (kinds: {', '.join(kinds)})"
             )
         out += ["", "[[wheel]]", f"type = {toml_string(u.kind)}"]
-        out += [f"{key.name} = {_value(key.write(u))}" for key in u.file_keys()]
+        out += [f"{key.name} = {_value(key.write(u), DEGREES if key.degrees else size)}" for key in u.file_keys()]
         changed = [
             (j.name, j.driven) for j, default in zip(u.joints, u.JOINTS, strict=True) if j.driven != default.driven
         ]

@@ -20,8 +20,10 @@ URDF can still say what it is: the wheel on its drive joint as a fixed wheel's, 
 \sin\gamma\,\mathbf t_k` (:math:`\mathbf t_k` the rim's direction of motion there, the unit's
 :class:`~wmr.model.wheels.parts.Rollers`).
 
-The file is kinematic (no inertias, no meshes); numbers are written as the shortest text that reads
-back as the same double, so writing a robot twice gives the same bytes.
+The file is kinematic (no inertias, no meshes); numbers are written by the rule of
+:mod:`wmr.io.decimals` (12 significant digits, nothing below :math:`10^{-11}` of the robot's size for
+lengths or of 1 for angles and axis directions; a trailing ``.0`` dropped), so the same robot gives
+the same bytes on every CPU.
 """
 
 from __future__ import annotations
@@ -38,6 +40,7 @@ from ..model.robot import Robot
 from ..model.types import PathLike
 from ..model.wheels.mechanism import Mechanism, wheel
 from ..model.wheels.parts import Rollers
+from .decimals import float_text, length_scale, quantise
 
 __all__ = ["ROLLERS", "joint_name", "to_urdf"]
 
@@ -67,58 +70,63 @@ def joint_name(i: int, joint: str) -> str:
     return f"wheel{i}_{joint}"
 
 
-def _f(x):
-    text = repr(float(x))
-    return "0" if text in ("0.0", "-0.0") else text[:-2] if text.endswith(".0") else text
+def _f(x, scale):
+    """A number as URDF text: :func:`wmr.io.decimals.float_text` at ``scale`` (the robot's size for a length,
+    1 for an angle or a direction), without a trailing ``.0``."""
+    text = float_text(x, scale)
+    return text[:-2] if text.endswith(".0") else text
 
 
-def _v(*xs):
-    return " ".join(_f(x) for x in xs)
+def _v(xs, scale):
+    return " ".join(_f(x, scale) for x in xs)
 
 
-def _origin(xyz, rpy=(0.0, 0.0, 0.0)):
-    out = f'<origin xyz="{_v(*xyz)}"'
-    return out + (f' rpy="{_v(*rpy)}"/>' if any(rpy) else "/>")
+def _origin(xyz, size, rpy=(0.0, 0.0, 0.0)):
+    out, angles = f'<origin xyz="{_v(xyz, size)}"', _v(rpy, 1.0)
+    return out + (f' rpy="{angles}"/>' if angles != "0 0 0" else "/>")
 
 
 def _rpy_z_to(a):
     """rpy turning a link's z axis onto the unit vector ``a`` (URDF: R = Rz(yaw) Ry(pitch) Rx(roll))."""
-    return (0.0, float(np.arccos(np.clip(a[2], -1.0, 1.0))), float(np.arctan2(a[1], a[0])))
+    # round-off off the direction first (an axis along z has no yaw), and the pitch from atan2, not arccos:
+    # arccos(1 - 1e-16) = 1.5e-8 would turn round-off into a visible angle
+    a = quantise(a, 1.0)
+    return (0.0, float(np.arctan2(abs(np.hypot(a[0], a[1])), a[2])), float(np.arctan2(a[1], a[0])))
 
 
-def _cylinder_link(name, radius, length, rpy, collision=True):
-    geometry = f'<geometry><cylinder radius="{_f(radius)}" length="{_f(length)}"/></geometry>'
-    body = [f"    <visual>{_origin((0, 0, 0), rpy)}{geometry}</visual>"]
+def _cylinder_link(name, radius, length, rpy, size, collision=True):
+    geometry = f'<geometry><cylinder radius="{_f(radius, size)}" length="{_f(length, size)}"/></geometry>'
+    body = [f"    <visual>{_origin((0, 0, 0), size, rpy)}{geometry}</visual>"]
     if collision:
-        body.append(f"    <collision>{_origin((0, 0, 0), rpy)}{geometry}</collision>")
+        body.append(f"    <collision>{_origin((0, 0, 0), size, rpy)}{geometry}</collision>")
     return [f"  <link name={quoteattr(name)}>", *body, "  </link>"]
 
 
-def _joint(name, parent, child, xyz, axis, rpy=(0.0, 0.0, 0.0)):
+def _joint(name, parent, child, xyz, axis, size, rpy=(0.0, 0.0, 0.0)):
     head = f'  <joint name={quoteattr(name)} type="{"fixed" if axis is None else "continuous"}">'
-    axis_line = [f'    <axis xyz="{_v(*axis)}"/>'] if axis is not None else []
+    axis_line = [f'    <axis xyz="{_v(axis, 1.0)}"/>'] if axis is not None else []
     return [
         head,
         f"    <parent link={quoteattr(parent)}/>",
         f"    <child link={quoteattr(child)}/>",
-        f"    {_origin(xyz, rpy)}",
+        f"    {_origin(xyz, size, rpy)}",
         *axis_line,
         "  </joint>",
     ]
 
 
-def _rod(a, b, radius):
+def _rod(a, b, radius, size):
     """A thin visual cylinder from ``a`` to ``b`` (a link's frame): an arm of a mechanism."""
     a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
     length = float(np.linalg.norm(b - a))
     rpy = _rpy_z_to((b - a) / length)
     return (
-        f'    <visual>{_origin((a + b) / 2, rpy)}<geometry><cylinder radius="{_f(radius)}" '
-        f'length="{_f(length)}"/></geometry></visual>'
+        f'    <visual>{_origin((a + b) / 2, size, rpy)}<geometry><cylinder radius="{_f(radius, size)}" '
+        f'length="{_f(length, size)}"/></geometry></visual>'
     )
 
 
-def _rollers(i, wheel_link, r, gamma):
+def _rollers(i, wheel_link, r, gamma, size):
     """The roller joints and links of a Swedish wheel (wheel frame: x the axle, the bottom roller at -z)."""
     out, rho = [], r / 5  # roller radius; its centre r - rho from the axle
     for k in range(ROLLERS):
@@ -128,8 +136,8 @@ def _rollers(i, wheel_link, r, gamma):
         a = np.cos(gamma) * np.array([1.0, 0.0, 0.0]) + np.sin(gamma) * t
         p, a = np.where(np.abs(p) < 1e-12 * r, 0.0, p), np.where(np.abs(a) < 1e-12, 0.0, a)  # round-off: 0
         name = joint_name(i, f"roller{k}")
-        out += _joint(name, wheel_link, name + "_link", p, a)
-        out += _cylinder_link(name + "_link", rho, 2 * rho, _rpy_z_to(a), collision=False)
+        out += _joint(name, wheel_link, name + "_link", p, a, size)
+        out += _cylinder_link(name + "_link", rho, 2 * rho, _rpy_z_to(a), size, collision=False)
     return out
 
 
@@ -147,7 +155,7 @@ def _mechanism(i, u, height):
         return Mechanism(body), float(rollers[0].angle)
 
 
-def _unit(i, u, height):
+def _unit(i, u, height, size):
     """The URDF lines of wheel unit ``i`` (1-based) and its driven joints ``[(name, interface)]``."""
     mech, gamma = _mechanism(i, u, height)
     lines, commanded = [], []
@@ -155,18 +163,18 @@ def _unit(i, u, height):
     def body(b, parent):
         link = joint_name(i, b.name) + "_link"
         name = joint_name(i, b.joint.name if b.joint else b.name + "_weld")
-        lines.extend(_joint(name, parent, link, b.pos, b.axis if b.joint else None, (0.0, 0.0, float(b.angle))))
+        lines.extend(_joint(name, parent, link, b.pos, b.axis if b.joint else None, size, (0.0, 0.0, float(b.angle))))
         if b.joint is not None and b.joint.driven:
             commanded.append((joint_name(i, b.joint.name), "velocity" if b.wheel is not None else "position"))
         if b.wheel is not None:
-            lines.extend(_cylinder_link(link, b.wheel, b.wheel / 2, (0.0, np.pi / 2, 0.0)))
+            lines.extend(_cylinder_link(link, b.wheel, b.wheel / 2, (0.0, np.pi / 2, 0.0), size))
             if gamma is not None:
-                lines.extend(_rollers(i, link, b.wheel, gamma))
+                lines.extend(_rollers(i, link, b.wheel, gamma, size))
                 roller = [j for j in u.joints if j.kind == "roller"]
                 if roller and roller[0].driven:
                     commanded.extend((joint_name(i, f"roller{k}"), "velocity") for k in range(ROLLERS))
         else:
-            rods = [_rod(a, c, float(u.r) / 8) for a, c in b.rods if np.linalg.norm(np.subtract(c, a)) > 0]
+            rods = [_rod(a, c, float(u.r) / 8, size) for a, c in b.rods if np.linalg.norm(np.subtract(c, a)) > 0]
             lines.extend(
                 [f"  <link name={quoteattr(link)}>", *rods, "  </link>"]
                 if rods
@@ -203,7 +211,7 @@ def to_urdf(robot: Robot, path: PathLike | None = None) -> str:
     robot = V.numeric_robot(robot)
     if path is not None and not isinstance(path, (str, os.PathLike)):
         raise InputTypeError(f"path must be a file name (str or os.PathLike) or None, got {V.show(path)}")
-    height = max(float(u.r) for u in robot.wheels)
+    height, size = max(float(u.r) for u in robot.wheels), length_scale(robot)
     span = np.abs(robot.mount_points).max(axis=0) * 2 + height
     lines = [
         '<?xml version="1.0"?>',
@@ -213,15 +221,15 @@ def to_urdf(robot: Robot, path: PathLike | None = None) -> str:
         '  <joint name="base_joint" type="fixed">',
         '    <parent link="base_footprint"/>',
         '    <child link="base_link"/>',
-        f"    {_origin((0.0, 0.0, height))}",
+        f"    {_origin((0.0, 0.0, height), size)}",
         "  </joint>",
         '  <link name="base_link">',
-        f'    <visual><geometry><box size="{_v(span[0], span[1], height / 2)}"/></geometry></visual>',
+        f'    <visual><geometry><box size="{_v((span[0], span[1], height / 2), size)}"/></geometry></visual>',
         "  </link>",
     ]
     commanded = []
     for i, u in enumerate(robot.wheels, 1):
-        unit_lines, unit_commanded = _unit(i, u, height)
+        unit_lines, unit_commanded = _unit(i, u, height, size)
         lines += unit_lines
         commanded += unit_commanded
     lines += [

@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..io.decimals import float_text, quantise
 from ..model.wheels.joints import Joint
 from ..model.wheels.mechanism import Body, Mechanism
 from .params import Params
@@ -110,32 +111,51 @@ def mechanisms(robot, height: float) -> tuple[Mechanism, ...]:
     return tuple(out)
 
 
-def num(x) -> str:
-    """A float as MJCF text, 12 significant digits (no negative zero).
+def num(x, scale: float | None = None) -> str:
+    """A float as MJCF text by the rule of :mod:`wmr.io.decimals`, without a trailing ``.0`` (no negative zero).
+
+    MuJoCo is given 12 significant digits of every value, of its own size (:func:`~wmr.io.decimals.float_text`
+    with no scale: the digits this writer has always given it), and a position, direction or angle
+    (``scale=1``: metres, unit vectors, radians) that rounds to 0 at its scale -- round-off of a zero
+    coordinate, ``1.85e-17`` -- is written 0.  Why not the scale's quantum for the others too: contact
+    physics is chaotic at the last bit (the edition's breakaway experiment, :mod:`edition.physics.contact`,
+    measured C's speed 0.5 % apart after 2.5 s when its parameters moved by one ulp), so a model whose
+    small coordinates lost digits would move the committed measurements (``figures/physics.csv``) as
+    much as another CPU does; the text itself is the same on every CPU either way.
 
     Parameters
     ----------
     x : float
+    scale : float, optional
+        The scale below whose quantum a value is round-off (default: none, every value kept to 12 digits).
 
     Returns
     -------
     str
+
+    Examples
+    --------
+    >>> num(0.1 + 0.2), num(-1.85e-17, scale=1.0), num(2.0), num(1e-5), num(0.0433012701892219, scale=1.0)
+    ('0.3', '0', '2', '1e-05', '0.0433012701892')
     """
-    return format(float(x) + 0.0, ".12g")
+    text = float_text(x) if scale is None or quantise(x, scale) != 0 else "0"
+    return text[:-2] if text.endswith(".0") else text
 
 
-def nums(*xs) -> str:
+def nums(*xs, scale: float | None = None) -> str:
     """Floats as MJCF text, separated by spaces (:func:`num`).
 
     Parameters
     ----------
     *xs : float
+    scale : float, optional
+        As for :func:`num`.
 
     Returns
     -------
     str
     """
-    return " ".join(num(x) for x in xs)
+    return " ".join(num(x, scale) for x in xs)
 
 
 def _disk(mass, r):
@@ -161,13 +181,13 @@ def _geoms(body, name, r_unit, params, pad):
             f'contype="1" conaffinity="0" group="3"/>'
         )
         out.append(
-            f'{pad}<geom type="cylinder" size="{num(r)}" fromto="{nums(-r / 4, 0.0, 0.0, r / 4, 0.0, 0.0)}" '
+            f'{pad}<geom type="cylinder" size="{num(r)}" fromto="{nums(-r / 4, 0.0, 0.0, r / 4, 0.0, 0.0, scale=1.0)}" '
             f'contype="0" conaffinity="0" group="1"/>'
         )
     for a, b in body.rods:
         if np.hypot.reduce(np.subtract(a, b)) > 1e-6 * r_unit:
             out.append(
-                f'{pad}<geom type="capsule" size="{num(r_unit / 8)}" fromto="{nums(*a, *b)}" '
+                f'{pad}<geom type="capsule" size="{num(r_unit / 8)}" fromto="{nums(*a, *b, scale=1.0)}" '
                 f'contype="0" conaffinity="0" group="1"/>'
             )
     return out
@@ -192,10 +212,12 @@ def body_xml(body: Body, name, r_unit: float, params: Params, depth: int) -> lis
     list of str
     """
     pad = "  " * depth
-    quat = f' quat="{nums(np.cos(body.angle / 2), 0.0, 0.0, np.sin(body.angle / 2))}"' if body.angle else ""
-    lines = [f'{pad}<body name="{name(body.name)}" pos="{nums(*body.pos)}"{quat}>']
+    turn = nums(np.cos(body.angle / 2), 0.0, 0.0, np.sin(body.angle / 2), scale=1.0)
+    quat = f' quat="{turn}"' if turn != "1 0 0 0" else ""
+    lines = [f'{pad}<body name="{name(body.name)}" pos="{nums(*body.pos, scale=1.0)}"{quat}>']
     if body.joint is not None:
-        lines.append(f'{pad}  <joint name="{name(body.joint.name)}" type="hinge" axis="{nums(*body.axis or ())}"/>')
+        axis = nums(*body.axis or (), scale=1.0)
+        lines.append(f'{pad}  <joint name="{name(body.joint.name)}" type="hinge" axis="{axis}"/>')
     mass = params.body_mass if body.wheel is None else params.wheel_mass
     inertia = _block(mass, body.size) if body.wheel is None else _disk(mass, body.wheel)
     lines.append(f'{pad}  <inertial pos="0 0 0" mass="{num(mass)}" diaginertia="{nums(*inertia)}"/>')

@@ -12,7 +12,8 @@ joints and actuators ``u<i>_<name>``, with the unit's own names of its bodies an
 the ground is named after its body (``u2_wheel``; ``u3_wheel1``, ``u3_wheel2`` for a dual wheel).
 
 Nothing here imports MuJoCo, and nothing here knows a wheel kind: the text is written from the units'
-mechanisms, deterministically (the same robot and parameters give the same bytes).
+mechanisms, deterministically (the same robot and parameters give the same bytes), its numbers by
+the rule of :mod:`wmr.io.decimals` (:func:`wmr.sim.bodies.num`), so the same on every CPU.
 """
 
 from __future__ import annotations
@@ -131,8 +132,8 @@ def _platform(robot, params, height):
     com = P.mean(axis=0)
     centre = (lo + hi) / 2
     return (
-        f'    <inertial pos="{nums(com[0], com[1], 0.0)}" mass="{num(m)}" diaginertia="{nums(*inertia)}"/>\n'
-        f'    <geom type="box" pos="{nums(centre[0], centre[1], t)}" size="{nums(a / 2, b / 2, t / 2)}" '
+        f'    <inertial pos="{nums(com[0], com[1], 0.0, scale=1.0)}" mass="{num(m)}" diaginertia="{nums(*inertia)}"/>\n'
+        f'    <geom type="box" pos="{nums(centre[0], centre[1], t, scale=1.0)}" size="{nums(a / 2, b / 2, t / 2, scale=1.0)}" '
         f'contype="0" conaffinity="0" group="1" rgba="0.6 0.6 0.7 0.5"/>'
     )
 
@@ -243,7 +244,7 @@ def _write(robot, params, mechs, height, beta0, weight):
         ),
         "  <worldbody>",
         ('    <geom name="ground" type="plane" size="0 0 1" friction="0 0 0" contype="0" conaffinity="1" condim="6"/>'),
-        f'    <body name="platform" pos="0 0 {num(height)}">',
+        f'    <body name="platform" pos="0 0 {num(height, 1.0)}">',
         '      <freejoint name="platform"/>',
         "  " + _platform(robot, params, height).replace("\n", "\n  "),
     ]
@@ -263,7 +264,13 @@ def _write(robot, params, mechs, height, beta0, weight):
     qpos = [0.0, 0.0, height, 1.0, 0.0, 0.0, 0.0]
     for i, m in enumerate(mechs):
         qpos += [float(beta0[i]) if j.steering else 0.0 for j in m.joints]
-    lines += ["  <keyframe>", f'    <key name="start" qpos="{nums(*qpos)}"/>', "  </keyframe>", "</mujoco>", ""]
+    lines += [
+        "  <keyframe>",
+        f'    <key name="start" qpos="{nums(*qpos, scale=1.0)}"/>',
+        "  </keyframe>",
+        "</mujoco>",
+        "",
+    ]
     return "\n".join(lines)
 
 

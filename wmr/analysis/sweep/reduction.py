@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ...io.decimals import quantise
 from ...model.types import FloatArray
 
 __all__ = ["SKETCH_ACCURACY", "Partial"]
@@ -147,13 +148,11 @@ class Partial:
         None
         """
         self.count += x.size
-        i = int(np.argmin(x))
-        self._lo(float(x[i]), start + i)
-        i = int(np.argmax(x))
-        self._hi(float(x[i]), start + i)
+        q = quantise(x, 1.0)  # where: the first value equal to the extreme as written (wmr.io.decimals)
+        self._lo(float(x.min()), start + int(np.argmin(q)))
+        self._hi(float(x.max()), start + int(np.argmax(q)))
         ax = np.abs(x)
-        i = int(np.argmin(ax))
-        self._small(float(ax[i]), start + i)
+        self._small(float(ax.min()), start + int(np.argmin(np.abs(q))))
         if integer:
             self.integers.add(x.astype(np.int64))
         else:
@@ -170,10 +169,19 @@ class Partial:
 
     @staticmethod
     def _first(v, at, best, best_at, sign):
-        """Keep the better of (v, at) and (best, best_at): sign * value smaller, ties to the lower index."""
-        if best_at < 0 or sign * v < sign * best or (v == best and at < best_at):
+        """The better value of ``v`` and ``best`` (sign * value smaller), and where: the lower index of a tie.
+
+        The index is chosen from the values as :mod:`wmr.io.decimals` writes them (12 digits at the scale 1), so
+        that values equal but for round-off (a constant analysis; another CPU's last bits) are ties and the
+        configuration reported is the first of them wherever the sweep runs; the value is the exact extreme.
+        """
+        if best_at < 0:
             return v, at
-        return best, best_at
+        value = min(v, best) if sign > 0 else max(v, best)
+        qv, qb = quantise(v, 1.0), quantise(best, 1.0)
+        if sign * qv < sign * qb or (qv == qb and at < best_at):
+            return value, at
+        return value, best_at
 
     def _lo(self, v, at):
         self.lo, self.lo_at = self._first(v, at, self.lo, self.lo_at, 1)
