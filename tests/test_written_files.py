@@ -1,7 +1,8 @@
 """Every file wmr writes is the same on every CPU: the writers write floats by one rule (:mod:`wmr.io.decimals`).
 
 Another CPU computes the same numbers with arithmetic that differs in the last bits.  Each writer here (URDF, ROS 2
-YAML, TOML, MJCF, ``wmr analyze/fk/ik/sweep/simulate --json``, the edition's CSV tables) writes the project's example
+YAML, TOML, MJCF, ``wmr analyze/fk/ik/sweep/simulate --json``; the edition's CSV tables in
+``tests/edition/test_reproducible.py``) writes the project's example
 robots (``examples/*.toml``, ``examples/engineers/*.toml``) with every input moved by one ulp and NumPy's
 transcendental functions one ulp off, both ways (``tests/perturb.py``), and must write the same bytes as without, and
 those of the committed file where there is one.  The rule makes a changed byte improbable, not impossible (a value
@@ -120,21 +121,6 @@ def test_simulate_json_does_not_depend_on_the_last_bits(monkeypatch, direction):
     assert got == want
 
 
-@pytest.mark.parametrize("direction", DIRECTIONS)
-def test_edition_tables_do_not_depend_on_the_last_bits(direction):
-    """``figures/singularities.csv`` from the paper's robot moved by one ulp; a float a table holds by the rule."""
-    from edition.families import coverage
-    from edition.files import csv_text
-
-    committed = (ROOT / "figures" / "singularities.csv").read_text(encoding="utf-8")
-    robot = wmr.paper_robot("centred").numeric()  # the robot coverage.table uses by default
-    assert csv_text(coverage.table(), coverage.COLUMNS) == committed
-    with another_cpu(direction):
-        assert csv_text(coverage.table(nudge(robot, direction)), coverage.COLUMNS) == committed
-    row = {"x": 1 / 3, "y": np.float64(0.1) * 3}
-    assert csv_text([row], ("x", "y")) == csv_text([nudge(row, direction)], ("x", "y")) == "x,y\n0.333333333333,0.3\n"
-
-
 # ------------------------------------------------------------------------------------------ not vacuous
 def test_the_perturbation_changes_what_repr_writes(monkeypatch):
     """Without the rule (floats written with ``repr``), the perturbation changes the files: the test above can fail."""
@@ -152,8 +138,7 @@ def test_the_perturbation_changes_what_repr_writes(monkeypatch):
 
 
 #: the modules that write files or --json, and what would go around the rule in them: a float's ``repr`` or
-#: ``%g`` text anywhere, ``json.dumps`` in a command (``wmr.cli._numbers.json_text`` writes JSON), a CSV writer in the
-#: edition other than ``edition.files.csv_text``
+#: ``%g`` text anywhere, ``json.dumps`` in a command (``wmr.cli._numbers.json_text`` writes JSON)
 REPR = r"repr\(float|format\(float|\"\.\d+g\"|:\.\d+g\}"
 WRITERS = {
     "wmr/io/urdf_write.py": REPR,
@@ -166,14 +151,12 @@ WRITERS = {
     "wmr/cli/ik.py": r"repr\(float|json\.dumps\(",
     "wmr/cli/sweep.py": r"repr\(float|json\.dumps\(",
     "wmr/cli/simulate.py": r"repr\(float|json\.dumps\(",
-    "edition/physics/__init__.py": REPR + r"|csv\.(Dict)?[Ww]riter\(",
 }
 
 
 @pytest.mark.parametrize("module", WRITERS)
 def test_the_writers_write_floats_by_the_rule(module):
-    """No writer formats a written number itself: ``float_text`` (wmr.io.decimals), ``json_text`` (wmr.cli._numbers)
-    and ``csv_text`` (edition.files) do."""
+    """No writer formats a written number itself: ``float_text`` (wmr.io.decimals) and ``json_text`` (wmr.cli._numbers) do."""
     bypass = re.compile(WRITERS[module])
     found = [line.strip() for line in (ROOT / module).read_text(encoding="utf-8").splitlines() if bypass.search(line)]
     assert not found, f"{module} writes numbers around wmr.io.decimals: {found}"

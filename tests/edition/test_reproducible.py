@@ -11,10 +11,12 @@ committed file (SVG, PDF, JSON) must come out byte for byte the same.  The pertu
 from __future__ import annotations
 
 import json
+import re
 
 import numpy as np
 import pytest
 
+import wmr
 from edition import figures as F
 from edition.figures import output
 
@@ -49,3 +51,26 @@ def test_committed_figure_is_invariant_under_one_ulp(key):
         for fmt, blob in files.items():
             assert blob == committed[fmt], f"figures/{key}.{fmt} changes when its inputs move by one ulp ({direction})"
         assert output.record(key, mod, moved) == committed_json, f"figures/{key}.json changes under one ulp"
+
+
+@pytest.mark.parametrize("direction", [pytest.param(np.inf, id="up"), pytest.param(-np.inf, id="down")])
+def test_edition_tables_do_not_depend_on_the_last_bits(direction):
+    """``figures/singularities.csv`` from the paper's robot moved by one ulp; a float a table holds by the rule."""
+    from edition.families import coverage
+    from edition.files import csv_text
+
+    committed = (ROOT / "figures" / "singularities.csv").read_text(encoding="utf-8")
+    robot = wmr.paper_robot("centred").numeric()  # the robot coverage.table uses by default
+    assert csv_text(coverage.table(), coverage.COLUMNS) == committed
+    with another_cpu(direction):
+        assert csv_text(coverage.table(nudge(robot, direction)), coverage.COLUMNS) == committed
+    row = {"x": 1 / 3, "y": np.float64(0.1) * 3}
+    assert csv_text([row], ("x", "y")) == csv_text([nudge(row, direction)], ("x", "y")) == "x,y\n0.333333333333,0.3\n"
+
+
+def test_the_edition_writes_csv_floats_by_the_rule():
+    """No CSV writer of the edition formats a number itself: ``edition.files.csv_text`` does (wmr.io.decimals)."""
+    bypass = re.compile(r"repr\(float|format\(float|\"\.\d+g\"|:\.\d+g\}|csv\.(Dict)?[Ww]riter\(")
+    text = (ROOT / "edition" / "physics" / "__init__.py").read_text(encoding="utf-8")
+    found = [line.strip() for line in text.splitlines() if bypass.search(line)]
+    assert not found, f"edition/physics writes numbers around wmr.io.decimals: {found}"

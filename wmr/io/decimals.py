@@ -22,7 +22,7 @@ decimal thresholds, not from ``log10`` (whose last bit is the CPU's), and is the
 rounded to 12 digits, so that a scale one ulp below a power of ten (``0.09999999999999999``) counts as
 that power; the rounding itself is ``rint`` of the value times an exact power of ten, then one division
 (IEEE arithmetic, the same on every CPU; vectorised over arrays; Python's correctly rounded
-:func:`round` beyond the 22 exact powers).  Where a quantity needs other digits
+``round`` beyond the 22 exact powers).  Where a quantity needs other digits
 its writer says why: MuJoCo's model keeps 12 digits of each value's own size, round-off of a zero
 coordinate written 0 (:func:`wmr.sim.bodies.num`), and ``wmr simulate --json`` writes MuJoCo's
 measurements with 6 (:mod:`wmr.cli.simulate`).
