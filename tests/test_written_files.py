@@ -16,6 +16,7 @@ from __future__ import annotations
 import contextlib
 import io
 import re
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -158,5 +159,6 @@ WRITERS = {
 def test_the_writers_write_floats_by_the_rule(module):
     """No writer formats a written number itself: ``float_text`` (wmr.io.decimals) and ``json_text`` (wmr.cli._numbers) do."""
     bypass = re.compile(WRITERS[module])
-    found = [line.strip() for line in (ROOT / module).read_text(encoding="utf-8").splitlines() if bypass.search(line)]
+    source = Path(wmr.__file__).parent / module.removeprefix("wmr/")  # the installed package (also from an sdist)
+    found = [line.strip() for line in source.read_text(encoding="utf-8").splitlines() if bypass.search(line)]
     assert not found, f"{module} writes numbers around wmr.io.decimals: {found}"
