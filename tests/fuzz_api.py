@@ -768,6 +768,7 @@ NOT_FUZZED = {
     "Terms": "the data of trig_combination, built by Robot.J2/F/J and twist_constraints (fuzzed through them)",
     "Layout": "a robot's units as arrays, made by Robot itself (fuzzed through Robot.J2/F/J)",
     "is_symbolic": "a predicate: any value is a valid question",
+    "is_sympy": "a predicate: any value is a valid question (its kinds are SymPy class names the package passes)",
     "CampionClass": "the result type of campion_class, fuzzed through it",
     "Dimensions": "a TypedDict (the lengths paper_robot takes, for type checkers): no code runs; paper_robot is fuzzed",
     "search": "seconds per call (a search over designs); its arguments are checked in tests/test_design.py",

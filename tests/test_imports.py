@@ -6,6 +6,8 @@ import sys
 
 import pytest
 
+from conftest import ROOT
+
 HEAVY = ("matplotlib", "pandas", "IPython")
 
 
@@ -47,3 +49,27 @@ def test_dependencies_declared():
     extras = meta["optional-dependencies"]
     assert names(meta["dependencies"]) == {"numpy", "sympy"}
     assert "matplotlib" in names(extras["plot"]) and "ipython" in names(extras["edition"])
+
+
+@pytest.mark.parametrize(
+    "statement",
+    [
+        "import wmr",
+        "import wmr.cli.analyze, wmr.sim, wmr.io",
+        "from wmr.cli import main; main(['analyze', 'examples/swerve4.toml', '--json'])",
+        "import wmr; b = wmr.load('examples/mecanum4.toml'); wmr.inverse(b, [0.0] * 4, [0.0, 1.0, 0.0])",
+    ],
+)
+def test_numeric_work_does_not_import_sympy(statement):
+    """SymPy (0.2 s to import) comes in with the first symbolic value, not before (wmr.model.lazysympy)."""
+    quiet = "import sys, contextlib, io\nwith contextlib.redirect_stdout(io.StringIO()):\n    "
+    code = f"{quiet}{statement}\nprint('sympy' in sys.modules)"
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True, cwd=ROOT)
+    assert out.stdout.split()[-1] == "False", out.stdout
+
+
+def test_the_sympy_check_sees_a_symbolic_use():
+    """The test above can fail: an exact robot does import SymPy."""
+    code = "import sys, wmr; wmr.paper_robot(exact=True); print('sympy' in sys.modules)"
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.split()[-1] == "True"

@@ -11,11 +11,11 @@ from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
-import sympy as sp
 
 from ..errors import InputValueError
 from ..model import validation as V
 from ..model.backend import NUMERIC, SYMBOLIC, Backend, choose
+from ..model.lazysympy import is_sympy, sp
 from ..model.robot import Robot
 from ..model.types import Matrix, Numbers, Point, Symbolic
 from ..model.wheels import CentredWheel
@@ -70,9 +70,7 @@ def plane_line_matrix(robot: Robot, beta: Numbers, L: Numbers = 1, backend: Back
     numpy.ndarray (..., 3, w) or sympy.Matrix (3, w)
     """
     symbolic = (
-        beta is None
-        or V.robot(robot).is_symbolic
-        or any(isinstance(b, sp.Basic) for b in np.ravel(np.asarray(beta, dtype=object)))
+        beta is None or V.robot(robot).is_symbolic or any(is_sympy(b) for b in np.ravel(np.asarray(beta, dtype=object)))
     )
     bk = choose(backend=backend) if backend is not None else (SYMBOLIC if symbolic else NUMERIC)
     if symbolic and bk is NUMERIC:

@@ -9,10 +9,9 @@ from __future__ import annotations
 
 import dataclasses
 
-import sympy as sp
-
 from ..errors import InputValueError
 from ..model import validation as V
+from ..model.lazysympy import sp
 from ..model.robot import Robot
 from ..model.types import Numbers
 from .isotropy import characteristic_length

@@ -17,10 +17,10 @@ import numbers
 from collections.abc import Mapping
 
 import numpy as np
-import sympy as sp
 
 from ..errors import InputTypeError, InputValueError
 from .checks import finite_float, kind_error, real, show
+from .lazysympy import is_sympy, sp
 from .types import ArrayLike, FloatArray, Numbers, Symbolic, Twist
 
 __all__ = [
@@ -69,7 +69,7 @@ def _object_array(name, raw, value):
     out = np.empty(raw.shape)
     flat = out.reshape(-1)
     for k, v in enumerate(raw.flat):
-        if isinstance(v, sp.Basic):
+        if is_sympy(v):
             raise InputTypeError(
                 f"{name} must be an array of numbers, got SymPy entries in {show(value)} "
                 "(use the SymPy backend for symbolic work)"
@@ -225,11 +225,11 @@ def symbolic_vector(name: str, value: Numbers, size: int) -> Symbolic:
     >>> symbolic_vector("beta", [sp.Symbol("x"), 0], 2).shape
     (2, 1)
     """
-    if isinstance(value, sp.MatrixBase):
+    if is_sympy(value, "MatrixBase"):
         entries = list(value)
         shape = value.shape
     else:
-        if isinstance(value, (str, bytes)) or isinstance(value, sp.Basic):
+        if isinstance(value, (str, bytes)) or is_sympy(value):
             raise kind_error(name, value, f"a sequence of {size} entries")
         try:
             entries = list(value)
@@ -261,7 +261,7 @@ def symbolic_matrix(name: str, value: Numbers) -> Symbolic:
     if isinstance(value, (str, bytes)) or value is None:
         raise kind_error(name, value, "a matrix")
     try:
-        if not isinstance(value, sp.MatrixBase) and any(
+        if not is_sympy(value, "MatrixBase") and any(
             isinstance(e, (str, bytes)) for e in np.asarray(value, dtype=object).ravel()
         ):
             raise kind_error(name, value, "a matrix of numbers or SymPy expressions")

@@ -13,9 +13,9 @@ from collections.abc import Sequence
 from typing import TypeAlias
 
 import numpy as np
-import sympy as sp
 
 from ..errors import InputTypeError
+from .lazysympy import is_sympy, sp
 from .types import ArrayLike, FloatArray, Symbolic
 
 __all__ = ["NumericBackend", "SymbolicBackend", "Backend", "NUMERIC", "SYMBOLIC", "is_symbolic", "choose"]
@@ -137,7 +137,7 @@ def is_symbolic(*values: object) -> bool:
     True
     """
     for v in values:
-        if isinstance(v, (sp.Basic, sp.MatrixBase)):
+        if is_sympy(v, "Basic", "MatrixBase"):
             return True
         if isinstance(v, (list, tuple)) and is_symbolic(*v):
             return True

@@ -36,9 +36,9 @@ import numbers
 from typing import Any
 
 import numpy as np
-import sympy as sp
 
 from ..errors import InputTypeError, InputValueError
+from .lazysympy import is_sympy, sp
 from .types import Numbers
 
 __all__ = [
@@ -54,8 +54,6 @@ __all__ = [
     "kind_error",
     "finite_float",
 ]
-
-_NON_FINITE = (sp.nan, sp.zoo, sp.oo, -sp.oo)
 
 
 def show(value: Any, limit: int = 80) -> str:
@@ -156,7 +154,7 @@ def finite_float(name: str, value: Any) -> float:
         big = (
             isinstance(value, numbers.Rational)
             or (isinstance(value, np.floating) and bool(np.isfinite(value)))
-            or (isinstance(value, sp.Basic) and value.is_finite)
+            or (is_sympy(value) and value.is_finite)
         )  # finite as written: 10**400, 1e400L
         raise InputValueError(
             f"{name} must be a finite real number, got {show(value)}"
@@ -176,9 +174,9 @@ def _number(name, value):
 
 def _symbolic(name, value, wanted="a real number"):
     """A SymPy expression that may stand for a finite real number (checked as far as SymPy knows)."""
-    if not isinstance(value, sp.Expr):
+    if not is_sympy(value, "Expr"):
         raise kind_error(name, value, wanted)
-    if value.has(*_NON_FINITE) or value.is_finite is False:
+    if value.has(sp.nan, sp.zoo, sp.oo, -sp.oo) or value.is_finite is False:
         raise InputValueError(f"{name} must be finite, got {show(value)}")
     if value.is_real is False or (value.is_real is None and value.has(sp.I)):
         raise InputValueError(f"{name} must be real, got {show(value)}")
@@ -213,7 +211,7 @@ def real(name: str, value: Any) -> Numbers:
     (0.5, 3)
     """
     value = _scalar(value)
-    if isinstance(value, sp.Basic):
+    if is_sympy(value):
         return _symbolic(name, value)
     return _number(name, value)
 
@@ -222,7 +220,7 @@ def _signed(name, value, strict):
     """``real`` and > 0 (``strict``) or >= 0; for SymPy, not known to be otherwise."""
     value = real(name, value)
     wanted = "positive" if strict else "non-negative (>= 0)"
-    if isinstance(value, sp.Basic):
+    if is_sympy(value):
         bad = (value.is_positive if strict else value.is_nonnegative) is False
     else:
         bad = value <= 0 if strict else value < 0
@@ -249,7 +247,7 @@ def number(name: str, value: Any) -> float:
     1.5707963267948966
     """
     value = real(name, value)
-    if isinstance(value, sp.Basic):
+    if is_sympy(value):
         if value.free_symbols:
             raise InputTypeError(f"{name} must be a number here, got the expression {show(value)}")
         value = finite_float(name, value)
@@ -315,7 +313,7 @@ def point(name: str, value: Any) -> tuple[Numbers, Numbers]:
     >>> point("position", np.array([1, 2]))
     (1.0, 2.0)
     """
-    if isinstance(value, (str, bytes, dict, set)) or isinstance(value, sp.Basic):
+    if isinstance(value, (str, bytes, dict, set)) or is_sympy(value):
         raise kind_error(name, value, "a pair (x, y)")
     try:
         items = tuple(value)
@@ -326,7 +324,7 @@ def point(name: str, value: Any) -> tuple[Numbers, Numbers]:
     out = []
     for k, v in enumerate(items):
         v = real(f"{name}[{k}] (of {show(value, 40)})", v)
-        out.append(v if isinstance(v, sp.Basic) else float(v))
+        out.append(v if is_sympy(v) else float(v))
     return out[0], out[1]
 
 

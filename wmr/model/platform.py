@@ -18,12 +18,12 @@ from __future__ import annotations
 from collections.abc import Iterable
 
 import numpy as np
-import sympy as sp
 
 from ..errors import InputTypeError, InputValueError
 from .arrays import batch_shape, finite_array, symbolic_matrix, twist_array
 from .backend import NUMERIC, Backend, choose
 from .checks import integer, number, point, positive, real, show
+from .lazysympy import is_sympy
 from .tolerance import TOL
 from .types import ArrayLike, FloatArray, Matrix, Numbers, Point, Twist
 
@@ -367,6 +367,6 @@ def moved_points(
         for px, py in pts:
             x, y = px - ox, py - oy
             out.append((c * x + s * y, -s * x + c * y))
-    if not all(np.isfinite(float(v)) for p in out for v in p if not isinstance(v, sp.Basic)):
+    if not all(np.isfinite(float(v)) for p in out for v in p if not is_sympy(v)):
         raise InputValueError(f"origin = {show(origin)} is too far from the mount points (their coordinates overflow)")
     return out

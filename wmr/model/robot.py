@@ -14,13 +14,13 @@ from __future__ import annotations
 from collections.abc import Iterable
 
 import numpy as np
-import sympy as sp
 
 from ..errors import InputTypeError, InputValueError
 from . import arrays as A
 from . import checks as C
 from .backend import NUMERIC, SYMBOLIC, Backend, choose
 from .layout import Layout
+from .lazysympy import sp
 from .limits import check
 from .platform import moved_points, point_row
 from .tolerance import column_norms

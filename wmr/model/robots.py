@@ -13,10 +13,9 @@ from __future__ import annotations
 import dataclasses
 from typing import TypedDict
 
-import sympy as sp
-
 from ..errors import InputValueError
 from . import validation as V
+from .lazysympy import is_sympy, sp
 from .robot import Robot
 from .types import Numbers
 from .wheels import wheel_kind
@@ -71,14 +70,14 @@ def equilateral_mounts(
     step = -120 if clockwise else 120
     # the angle exactly (a float is a rational), reduced modulo 360 before anything is added:
     # first_deg = 1e300 must still give three distinct vertices
-    first = sp.nsimplify(first_deg) if isinstance(first_deg, sp.Basic) else sp.Rational(first_deg)
+    first = sp.nsimplify(first_deg) if is_sympy(first_deg) else sp.Rational(first_deg)
     first = first % 360
     if first.is_Rational:
         first = first.limit_denominator(10**6) if first.q > 10**6 else first
     out = []
     for k in range(3):
         ang = sp.pi * (first + k * step) / 180
-        if exact or isinstance(L, sp.Basic) or isinstance(first_deg, sp.Basic):
+        if exact or is_sympy(L) or is_sympy(first_deg):
             out.append((sp.nsimplify(L * sp.cos(ang)), sp.nsimplify(L * sp.sin(ang))))
         else:  # exact, then float:
             out.append((float(L * sp.cos(ang)), float(L * sp.sin(ang))))  # no 1e-17 residue

@@ -13,6 +13,7 @@ import numpy as np
 
 from ...errors import InputTypeError, InputValueError
 from ...model import validation as V
+from ...model.lazysympy import is_sympy, sp
 from ...model.tolerance import near_zero
 from ...model.types import ArrayLike, FloatArray, IntArray, Numbers, Point
 
@@ -273,14 +274,12 @@ def circumcircle(points: Numbers) -> tuple[Point, Numbers]:
     >>> circumcircle([(-1, 0), (sp.Rational(1, 2), sp.sqrt(3) / 2), (sp.Rational(1, 2), -sp.sqrt(3) / 2)])
     ((0, 0), 1)
     """
-    import sympy as sp
-
-    if isinstance(points, (str, bytes)) or not hasattr(points, "__len__") or isinstance(points, sp.Basic):
+    if isinstance(points, (str, bytes)) or not hasattr(points, "__len__") or is_sympy(points):
         raise InputTypeError(f"points must be three points (pairs), got {V.show(points)}")
     pts = [V.point(f"points[{k}]", q) for k, q in enumerate(points)]
     if len(pts) != 3:
         raise InputValueError(f"points must be three points, got {len(pts)}")
-    if not any(isinstance(v, sp.Basic) for q in pts for v in q):
+    if not any(is_sympy(v) for q in pts for v in q):
         size = float(np.abs(pts).max()) or 1.0  # scaled to the figure's size: no overflow, any unit
         (ux, uy), R2 = _circle([(x / size, y / size) for x, y in pts], near_zero, pts)
         centre, radius = np.array([ux, uy]) * size, float(np.sqrt(R2)) * size

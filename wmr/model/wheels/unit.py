@@ -42,12 +42,12 @@ from dataclasses import dataclass
 from typing import Any, ClassVar, Self
 
 import numpy as np
-import sympy as sp
 
 from ...errors import InputValueError
 from .. import arrays as A
 from .. import checks as C
 from ..backend import NUMERIC, Backend, choose, is_symbolic
+from ..lazysympy import is_sympy, sp
 from ..platform import E, rotated
 from ..types import ArrayLike, FloatArray, Matrix, Numbers, Point, Symbolic
 from .design import DesignHints
@@ -262,7 +262,7 @@ class WheelUnit(UnitGeometry, UnitMechanism, DesignHints):
     @property
     def free_symbols(self) -> set[Symbolic]:
         """The SymPy symbols in the unit's position and parameters (an empty set for numbers and exact numbers)."""
-        return set().union(*(v.free_symbols for v in self._values() if isinstance(v, sp.Basic)))
+        return set().union(*(v.free_symbols for v in self._values() if is_sympy(v)))
 
     def numeric(self) -> Self:
         """The same unit with float position and parameters (SymPy numbers such as :math:`\\sqrt3/2` evaluated).
@@ -286,7 +286,7 @@ class WheelUnit(UnitGeometry, UnitMechanism, DesignHints):
             )
 
         def num(v):
-            return float(v) if isinstance(v, sp.Basic) else v
+            return float(v) if is_sympy(v) else v
 
         return dataclasses.replace(
             self, position=tuple(map(num, self.position)), **{k: num(v) for k, v in self.parameters().items()}

@@ -20,12 +20,12 @@ from dataclasses import InitVar, dataclass, field, replace
 from typing import ClassVar, Self
 
 import numpy as np
-import sympy as sp
 
 from ...errors import InputValueError
 from .. import arrays as A
 from .. import checks as C
 from ..backend import NUMERIC, Backend, choose
+from ..lazysympy import is_sympy
 from ..platform import rotated
 from ..types import ArrayLike, FloatArray, Matrix, Numbers, Point
 from .filekeys import FileKey
@@ -49,12 +49,13 @@ def constant(name: str, value: Numbers) -> Numbers:
 
     Examples
     --------
+    >>> import sympy as sp
     >>> constant("angle", sp.pi / 2), constant("angle", 1)
     (pi/2, 1.0)
     """
     f = C.number(name, value)  # an input error for symbols, NaN, inf, 10**400
     value = C.real(name, value)
-    return value if isinstance(value, sp.Basic) else f
+    return value if is_sympy(value) else f
 
 
 def in_degrees(owner, name, value, degrees):
