@@ -3,7 +3,7 @@ r"""The checks behind the chapters: each derivation compared with the printed st
 One module per chapter, so that a notebook shows the physics and calls one function per equation:
 
 =======================  ====================================================================
-:mod:`.wheels`           Chapter 1, (2)-(19): rigid-body velocities, the rolling disk, offset and dual wheels
+:mod:`.wheels`           Chapter 1, (1)-(19): rigid-body velocities, the rolling disk, offset and dual wheels
 :mod:`.assembly`         Chapter 2, (20)-(29): stacking the units, the null space of F, drift, dead zone
 :mod:`.isotropy`         Chapter 3, (30)-(50): condition number, isotropy of :math:`\mathbf J_{L1}`, :math:`\mathbf J_2`
 :mod:`.centred`          Chapter 4, (51)-(59): centred wheels, mobility, :math:`\det\mathbf J` and its zero set

@@ -1,4 +1,4 @@
-r"""The ledger of verdicts: one row per equation (2)-(65) and per checked claim of the paper.
+r"""The ledger of verdicts: one row per equation (1)-(65) and per checked claim of the paper.
 
 A check (:mod:`edition.checks`) compares a printed statement with what the model proves and
 returns a :class:`Finding`: whether the printed form holds, what was proven, the corrected form

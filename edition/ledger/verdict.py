@@ -31,7 +31,7 @@ VERDICTS = ("ok", "typo", "wrong")
 #: Classes of error a check may name for a refuted printed form: a slip of print (sign, factor,
 #: size) that the surrounding argument does not rest on, or a false statement.
 SEVERITIES = ("typo", "wrong")
-EQUATIONS = tuple(str(n) for n in range(2, 66))
+EQUATIONS = tuple(str(n) for n in range(1, 66))
 
 
 @dataclass(frozen=True)
@@ -41,7 +41,7 @@ class Finding:
     Attributes
     ----------
     id : str
-        Equation number (``"2"`` .. ``"65"``) or a claim's slug.
+        Equation number (``"1"`` .. ``"65"``) or a claim's slug.
     printed_holds : bool
         Whether the printed form (or claim) was proven: computed by the check, never typed.
     check : str

@@ -119,6 +119,16 @@ def test_every_row_names_what_it_proved():
             assert f.check.startswith("printed form proven" if f.printed_holds else "printed form refuted")
 
 
+def test_equation_1_is_judged_from_the_chapters_body_axes(transcribe):
+    ch1 = derived("01_platform_and_wheels")
+    d = wheels.centre_velocity(ch1["i_B"], ch1["j_B"], n=10)
+    assert verdicts(d) == {"1": "ok"} and d["1"].check.startswith("printed form proven")
+    # read with the body axes turned the other way, the printed identity is refuted: the verdict is computed
+    c, s = sp.cos(S.psi), sp.sin(S.psi)
+    transcribe(1, sp.Eq(sp.Matrix([[c, s], [-s, c]]) * S.c_dot, sp.Matrix([S.X_dot, S.Y_dot]), evaluate=False))
+    assert wheels.centre_velocity(ch1["i_B"], ch1["j_B"], n=10)["1"].printed_holds is False
+
+
 # ----------------------------------------------------------------------------------------------- claims
 def test_drift_fails_on_whenever_and_records_rows_28_29():
     ch2 = derived("02_offset_wheels_and_mobility")
