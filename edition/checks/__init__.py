@@ -84,6 +84,7 @@ def equation(
     why="",
     convention="",
     note="",
+    scope="",
 ):
     r"""A :class:`~edition.ledger.Finding` for a numbered equation, its ``check`` text built from what was shown.
 
@@ -99,7 +100,7 @@ def equation(
         Largest numerical residual of the proven form.
     refuted : str, optional
         How the printed form was refuted (a counterexample, the nonzero difference).
-    corrected, corrected_holds, severity, why, convention, note
+    corrected, corrected_holds, severity, why, convention, note, scope
         As in :class:`~edition.ledger.Finding`.
 
     Returns
@@ -123,6 +124,7 @@ def equation(
         why=why,
         convention=convention,
         note=note,
+        scope=scope,
     )
 
 
@@ -139,6 +141,7 @@ def claim(
     why="",
     convention="",
     note="",
+    scope="",
 ):
     r"""A :class:`~edition.ledger.Finding` for a claim of the text (see :func:`equation`).
 
@@ -170,4 +173,5 @@ def claim(
         why=why,
         convention=convention,
         note=note,
+        scope=scope,
     )

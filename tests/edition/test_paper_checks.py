@@ -137,6 +137,10 @@ def test_drift_fails_on_whenever_and_records_rows_28_29():
     locked = assembly.locked_steering(ch2["det_M"], ch2["plucker"], robots=5, per=2)
     f = assembly.drift(c["28"], p["29"], locked, ch2["J2"], per=50)["drift"]
     assert grade(f) == "wrong" and f.residual == max(c["28"].residual, p["29"].residual)
+    # the label says how far the verdict reaches: the implication holds, its presupposition fails
+    assert f.scope.startswith("presupposition fails: the implication holds") and "rows (28)" not in f.convention
+    # (28) is ok only under sum d_i = 0, which the paper states later, at (37): found in the transcription
+    assert grade(c["28"]) == "ok" and c["28"].scope.startswith("special case") and "(37), after (28)" in c["28"].scope
     assert r"\det\mathbf M" in f.check and r"\det\mathbf J_2 = d^3r^3" in f.note
 
 

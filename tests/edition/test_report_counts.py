@@ -131,3 +131,11 @@ def test_every_family_count_in_the_pdf_is_a_cell_of_the_computed_table(pdf_text)
 def test_every_problem_count_in_the_pdf_is_the_computed_one(pdf_text):
     bad = problem_count_errors(pdf_text, tally(_csv("ledger.csv")))
     assert not bad, f"{len(bad)} counts of independent problems that disagree with edition.problems: {bad[:12]}"
+
+
+def test_every_scoped_verdict_carries_its_label_in_the_pdf(pdf_text):
+    text = prose(pdf_text)
+    rows = [r for r in _csv("ledger.csv") if r.get("scope")]
+    assert {r["scope"].split(":")[0] for r in rows} >= {"presupposition fails", "terminology", "special case"}
+    bad = [r["id"] for r in rows if f"{r['verdict']} ({r['scope'].split(':')[0]})" not in text]
+    assert not bad, f"verdicts shown without the label of their scope: {bad}"
