@@ -16,7 +16,15 @@ from nbformat import from_dict, v4
 
 from . import typeset as ts
 
-__all__ = ["DROP_TAGS", "FIGURE_METADATA", "KEEP_MIMES", "chapter_cells", "findings_cells", "title"]
+__all__ = [
+    "DROP_TAGS",
+    "FIGURE_METADATA",
+    "KEEP_MIMES",
+    "chapter_cells",
+    "drop_empty_headings",
+    "findings_cells",
+    "title",
+]
 
 DROP_TAGS = frozenset({"exercise", "answer", "solution", "check", "ledger", "remove-cell", "remove_cell"})
 #: output types a reader sees, in order of preference (one per output)
@@ -90,7 +98,49 @@ def chapter_cells(nb, figures: dict[str, dict[str, Any]]) -> list:
             if tags:
                 n.metadata["tags"] = sorted(tags)
             out.append(n)
-    return out
+    return drop_empty_headings(out)
+
+
+_HEADING = re.compile(r"^(#{1,6})\s+\S")
+
+
+def _level(cell) -> int:
+    """The level of the heading a Markdown cell opens with (1-6), 0 when it does not open with one."""
+    m = _HEADING.match(cell.source.lstrip()) if cell.cell_type == "markdown" else None
+    return len(m.group(1)) if m else 0
+
+
+def drop_empty_headings(cells: list) -> list:
+    """The cells without a heading that has nothing under it before the next heading of its level or above (or the
+    end): what is left when the cells under a heading were dropped (an exercise section).  A code cell without
+    outputs is nothing to a reader of the PDF.
+
+    Examples
+    --------
+    >>> md = v4.new_markdown_cell
+    >>> [c.source for c in drop_empty_headings([md("## A"), md("text"), md("## Exercises"), v4.new_code_cell("x")])]
+    ['## A', 'text', 'x']
+    >>> [c.source for c in drop_empty_headings([md("## A"), md("### B"), md("text")])]
+    ['## A', '### B', 'text']
+    >>> [c.source for c in drop_empty_headings([md("## Summary\\n\\ntext\\n\\n## Exercises"), md("## Next"), md("more")])]
+    ['## Summary\\n\\ntext', '## Next', 'more']
+    """
+    keep = []
+    for i, c in enumerate(cells):
+        rest = (d for d in cells[i + 1 :] if not (d.cell_type == "code" and not d.get("outputs")))
+        nxt = next(rest, None)
+        if c.cell_type == "markdown":
+            lines = c.source.rstrip().splitlines()
+            while lines and _HEADING.match(lines[-1]) and (nxt is None or 0 < _level(nxt) <= len(lines[-1].split()[0])):
+                lines.pop()  # a heading at the end of the cell with nothing under it
+                while lines and not lines[-1].strip():
+                    lines.pop()
+            if not lines:
+                continue
+            if len(lines) < len(c.source.rstrip().splitlines()):
+                c = v4.new_markdown_cell("\n".join(lines))
+        keep.append(c)
+    return keep
 
 
 def findings_cells(nb, figures: dict[str, dict[str, Any]]) -> list:
