@@ -168,13 +168,19 @@ def findings_cells(nb, figures: dict[str, dict[str, Any]]) -> list:
 
 def title(nb) -> dict[str, str]:
     """The title block from the findings chapter's cell tagged ``title`` (its Markdown, or the Markdown it
-    displays): the heading, the line under it, the edition's line (version, licence); and the paper's full
+    displays): the heading, the line under it, the edition's line (version, licences), its authors; and the paper's full
     reference, the entry by Leow under its heading ``# References``."""
     c: Any = next((c for c in nb.cells if "title" in c.get("metadata", {}).get("tags", [])), {"source": ""})
     shown = "".join(o.get("data", {}).get("text/markdown", "") for o in c.get("outputs", []))
     head = shown if c.get("cell_type") == "code" else c["source"]
-    lines = [line.strip().strip("*") for line in head.strip().splitlines() if line.strip()] + ["", "", ""]
+    lines = [line.strip().strip("*") for line in head.strip().splitlines() if line.strip()] + ["", "", "", ""]
     refs = next((c.source for c in nb.cells if c.cell_type == "markdown" and c.source.startswith("# References")), "")
     paper = re.search(r"^(?:1\.|-)\s+(Y\. P\. Leow.+?)(?:\n\d+\.|\n-|\n\n|\Z)", refs, re.MULTILINE | re.DOTALL)
     ref = " ".join(paper.group(1).split()) if paper else ""
-    return {"title": lines[0].lstrip("# ").strip(), "subtitle": lines[1], "edition": lines[2], "paper": ref}
+    return {
+        "title": lines[0].lstrip("# ").strip(),
+        "subtitle": lines[1],
+        "edition": lines[2],
+        "authors": lines[3],
+        "paper": ref,
+    }
