@@ -74,16 +74,7 @@ def drift_of_c(c_dot, n=100, origin=(0.06, -0.04), seed=SEED):
                 res_off = max(res_off, e)
     require(needs_centroid and res_off > 1e-3, "the printed (28) fails with C off the centroid")
     # where the paper states the assumption (28) needs: the first printed equation that is sum d_i = 0
-    stated = next(
-        (
-            k
-            for k, e in table().equations.items()
-            if isinstance(e.expr, sp.Equality)
-            and symbolic_equal(e.expr.lhs, S.d1 + S.d2 + S.d3)
-            and symbolic_equal(e.expr.rhs, sp.zeros(2, 1))
-        ),
-        "",
-    )
+    stated = next((k for k, e in table().equations.items() if _is_centroid_condition(e.expr)), "")
     scope = (
         rf"special case: proven for $\sum_i\mathbf d_i = \mathbf 0$ only (C at the centroid of the $P_i$), which the "
         rf"paper states at ({stated}), after (28)"
@@ -111,6 +102,17 @@ def drift_of_c(c_dot, n=100, origin=(0.06, -0.04), seed=SEED):
             )
         ],
     )
+
+
+def _is_centroid_condition(expr):
+    """Whether a printed form is :math:`\\sum_i\\mathbf d_i = \\mathbf 0` for three units."""
+    if not isinstance(expr, sp.Equality):
+        return False
+    target = S.d1 + S.d2 + S.d3
+    lhs, rhs = expr.lhs, expr.rhs
+    if not (isinstance(lhs, sp.MatrixBase) and isinstance(rhs, sp.MatrixBase)) or lhs.shape != target.shape:
+        return False
+    return symbolic_equal(lhs, target) and symbolic_equal(rhs, sp.zeros(2, 1))
 
 
 def drift_of_psi(a, b, c, J1, n=100, seed=SEED):
