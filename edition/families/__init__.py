@@ -19,7 +19,7 @@ The package, by job:
 """
 
 from .catalogue import check_paper_items, families
-from .counts import COUNTINGS, count_table, counted
+from .counts import COUNTINGS, count_table, counted, summary
 from .coverage import ITEMS, READINGS, accounting, covering_items, table, write_csv
 from .family import COLUMNS, PAPER_PAIR_ITEMS, Family, paper_item
 
@@ -39,4 +39,5 @@ __all__ = [
     "COUNTINGS",
     "counted",
     "count_table",
+    "summary",
 ]
