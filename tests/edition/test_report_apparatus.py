@@ -48,7 +48,7 @@ def test_bibtex_has_year_version_and_the_commit_stamped_at_build_time(pdf):
 
 
 def test_environment_and_rescience(pdf):
-    env = pdf["text"][pdf["text"].rindex("Environment") :][:3000]
+    env = pdf["text"][pdf["text"].index("The versions this report was computed with") :][:3000]
     for name in ("robotpy-wpimath", "pandoc", "TeX (xelatex)", "operating system", "numpy", "mujoco"):
         assert name in env, name
     assert "Rougier et al. (2017)" in pdf["text"] and "10.7717/peerj-cs.142" in pdf["text"]

@@ -68,13 +68,14 @@ def family_count_errors(text: str, table: list[dict]) -> list[str]:
 def problem_count_errors(text: str, t: dict) -> list[str]:
     p = prose(text)
     bad = []
-    for a in re.findall(rf"\b{_N} independent problems?\b", p, re.I):
+    # case-sensitive: the prose says "independent problems"; a heading "Independent problems" after a folio is no count
+    for a in re.findall(rf"\b{_N} independent problems?\b", p):
         if number(a) != t["problems"]:
             bad.append(f"{a} independent problems: computed {t['problems']}")
     for a in re.findall(rf"\b{_N} of substance\b", p, re.I):
         if number(a) != t["wrong"]:
             bad.append(f"{a} of substance: computed {t['wrong']}")
-    if not re.search(rf"\b{_N} independent problems?\b", p, re.I):
+    if not re.search(rf"\b{_N} independent problems?\b", p):
         bad.append("the number of independent problems is never stated")
     return bad
 
@@ -104,6 +105,7 @@ def test_the_rules_can_fail():
     assert problem_count_errors("they are twelve independent problems: nine of substance", t)
     assert problem_count_errors("13 independent problems: eight of sub-\nstance", t)
     assert problem_count_errors("no count here", t)
+    assert problem_count_errors("13 independent problems; nine of substance. 12 Independent problems", t) == []
 
 
 # ----------------------------------------------------------------------------- the report
