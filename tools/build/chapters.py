@@ -63,16 +63,31 @@ def _output(o) -> dict | None:
 
 
 def _figure_link(keys: list[str], figures: dict[str, dict[str, Any]]) -> str:
-    """The line that replaces a figure cell of a chapter: a link to where the report shows it."""
+    """The line that replaces the figure cells of a chapter: one sentence per place the report shows them.
+
+    Examples
+    --------
+    >>> figs = {k: {"key": k, "label": f"Figure {n}", "title": "", "paper_caption": "c"} for k, n in (("a", 10), ("b", 11))}
+    >>> print(_figure_link(["a", "b"], figs).replace(", printed", ",\\nprinted"))
+    *This computation draws [Figure 10](#figure-a) and [Figure 11](#figure-b),
+    printed in the figures of Part I, each with the paper's caption beside the computed one.*
+    """
     if not keys:
         return "*The figure this computation draws is printed with the [figures](#figures) of Part I.*"
-    links = []
+    groups: dict[tuple[str, bool], list[str]] = {}
     for f in (figures[k] for k in keys):
         where = FRONT_MATTER_FIGURES.get(f["key"], "the figures of Part I")
-        both = ", with the paper's caption beside the computed one" if f["paper_caption"] else ""
-        link = f"[{f['label'] or f['title']}](#figure-{f['key']})"
-        links.append(f"This computation draws {link}, printed in {where}{both}.")
-    return "*" + " ".join(links) + "*"
+        groups.setdefault((where, bool(f["paper_caption"])), []).append(
+            f"[{f['label'] or f['title']}](#figure-{f['key']})"
+        )
+    sentences = []
+    for (where, paper), links in groups.items():
+        both = (
+            (", each" if len(links) > 1 else ",") + " with the paper's caption beside the computed one" if paper else ""
+        )
+        listed = ", ".join(links[:-1]) + " and " + links[-1] if len(links) > 1 else links[0]
+        sentences.append(f"This computation draws {listed}, printed in {where}{both}.")
+    return "*" + " ".join(sentences) + "*"
 
 
 def chapter_cells(nb, figures: dict[str, dict[str, Any]]) -> list:
@@ -84,7 +99,11 @@ def chapter_cells(nb, figures: dict[str, dict[str, Any]]) -> list:
             continue
         if "figure" in tags:
             keys = [k for k in figures if re.search(r"[\"']" + re.escape(k) + r"[\"']", c.source)]
-            out.append(v4.new_markdown_cell(_figure_link(keys, figures)))
+            if out and out[-1].metadata.get("wmr_figure_keys") is not None and keys:
+                keys = out.pop().metadata["wmr_figure_keys"] + keys  # consecutive figure cells: one sentence
+            link = v4.new_markdown_cell(_figure_link(keys, figures))
+            link.metadata["wmr_figure_keys"] = keys
+            out.append(link)
         elif c.cell_type == "markdown":
             out.append(v4.new_markdown_cell(c.source))
         elif c.cell_type == "code":
