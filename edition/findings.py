@@ -30,9 +30,9 @@ __all__ = [
     "citation",
 ]
 
-#: Stamped by the build when it assembles the report (tools/build/assemble.py): the commit and its year, which
+#: Stamped by the build (edition.report_cells.stamp): the commit and its year, which
 #: the findings chapter cannot know when it is executed (it is not executed again for a new commit).
-COMMIT, YEAR = "@COMMIT@", "@YEAR@"
+COMMIT, YEAR = "@COMMIT@", "@YEAR@"  # edition.report_cells.STAMPS
 
 #: Equations whose verdict holds under a convention the paper's text leaves open, and what was inferred
 #: (the ledger's ``convention`` column states the convention itself).  Facts about the text, not verdicts.

@@ -13,26 +13,7 @@ from pathlib import Path
 from .chapters import chapter_cells, findings_cells, title
 from .typeset import read_figures
 
-__all__ = ["commit_info", "report_notebook", "stamp"]
-
-#: what the findings chapter writes where only the build knows the value (edition.findings.COMMIT, YEAR)
-STAMPS = ("@COMMIT@", "@YEAR@")
-
-
-def stamp(cells, commit: str, year: str):
-    """The cells with the commit and its year put where the findings chapter marked them (the BibTeX entry):
-    the chapter is executed again only when its inputs change, the commit changes with every build.
-
-    Examples
-    --------
-    >>> from nbformat import v4
-    >>> stamp([v4.new_markdown_cell("commit = {@COMMIT@}, year = {@YEAR@}")], "0a7f9ffb1647", "2026")[0].source
-    'commit = {0a7f9ffb1647}, year = {2026}'
-    """
-    for c in cells:
-        if c.cell_type == "markdown":
-            c.source = c.source.replace(STAMPS[0], commit).replace(STAMPS[1], year)
-    return cells
+__all__ = ["commit_info", "report_notebook"]
 
 
 def commit_info(path: Path) -> tuple[str, int]:
@@ -55,12 +36,14 @@ def report_notebook(commit_file: Path, figures_dir: Path, findings: Path, chapte
     date = dt.datetime.fromtimestamp(epoch, dt.UTC).strftime("%Y-%m-%d") if epoch else "unknown"
     nb.metadata["wmr"] = {**title(part1), "commit": commit, "epoch": epoch, "date": date}
     nb.metadata["title"] = nb.metadata["wmr"]["title"]
+    from edition.report_cells import drop_empty_headings, stamp  # rules of the text (the edition's, not glue)
+
     nb.cells = stamp(findings_cells(part1, figures), commit, date[:4] if epoch else "unknown")
     for path in chapters:
         chapter = nbformat.read(path, as_version=4)
         if "language_info" in chapter.metadata:
             nb.metadata.setdefault("language_info", chapter.metadata["language_info"])
-        nb.cells += chapter_cells(chapter, figures)
+        nb.cells += drop_empty_headings(chapter_cells(chapter, figures), nbformat.v4.new_markdown_cell)
     for j, c in enumerate(nb.cells):
         c["id"] = f"r{j:04d}"
     nb.nbformat, nb.nbformat_minor = 4, 5

@@ -16,15 +16,7 @@ from nbformat import from_dict, v4
 
 from . import typeset as ts
 
-__all__ = [
-    "DROP_TAGS",
-    "FIGURE_METADATA",
-    "KEEP_MIMES",
-    "chapter_cells",
-    "drop_empty_headings",
-    "findings_cells",
-    "title",
-]
+__all__ = ["DROP_TAGS", "FIGURE_METADATA", "KEEP_MIMES", "chapter_cells", "findings_cells", "title"]
 
 DROP_TAGS = frozenset({"exercise", "answer", "solution", "check", "ledger", "remove-cell", "remove_cell"})
 #: output types a reader sees, in order of preference (one per output)
@@ -63,35 +55,16 @@ def _output(o) -> dict | None:
 
 
 def _figure_link(keys: list[str], figures: dict[str, dict[str, Any]]) -> str:
-    """The line that replaces the figure cells of a chapter: one sentence per place the report shows them.
-
-    Examples
-    --------
-    >>> figs = {k: {"key": k, "label": f"Figure {n}", "title": "", "paper_caption": "c"} for k, n in (("a", 10), ("b", 11))}
-    >>> print(_figure_link(["a", "b"], figs).replace(", printed", ",\\nprinted"))
-    *This computation draws [Figure 10](#figure-a) and [Figure 11](#figure-b),
-    printed in the figures of Part I, each with the paper's caption beside the computed one.*
-    """
+    """The line that replaces the figure cells of a chapter: one sentence per place the report shows them."""
     if not keys:
         return "*The figure this computation draws is printed with the [figures](#figures) of Part I.*"
-    groups: dict[tuple[str, bool], list[str]] = {}
-    for f in (figures[k] for k in keys):
-        where = FRONT_MATTER_FIGURES.get(f["key"], "the figures of Part I")
-        groups.setdefault((where, bool(f["paper_caption"])), []).append(
-            f"[{f['label'] or f['title']}](#figure-{f['key']})"
-        )
-    sentences = []
-    for (where, paper), links in groups.items():
-        both = (
-            (", each" if len(links) > 1 else ",") + " with the paper's caption beside the computed one" if paper else ""
-        )
-        listed = ", ".join(links[:-1]) + " and " + links[-1] if len(links) > 1 else links[0]
-        sentences.append(f"This computation draws {listed}, printed in {where}{both}.")
-    return "*" + " ".join(sentences) + "*"
+    from edition.report_cells import figure_sentences  # the edition's text rule; not a light import
+
+    return figure_sentences([figures[k] for k in keys], FRONT_MATTER_FIGURES)
 
 
 def chapter_cells(nb, figures: dict[str, dict[str, Any]]) -> list:
-    """The cells of one executed derivation chapter, as the report shows them."""
+    """The cells of one executed derivation chapter, as the report shows them (consecutive figure cells: one line)."""
     out = []
     for c in nb.cells:
         tags = set(c.get("metadata", {}).get("tags", []))
@@ -99,11 +72,9 @@ def chapter_cells(nb, figures: dict[str, dict[str, Any]]) -> list:
             continue
         if "figure" in tags:
             keys = [k for k in figures if re.search(r"[\"']" + re.escape(k) + r"[\"']", c.source)]
-            if out and out[-1].metadata.get("wmr_figure_keys") is not None and keys:
-                keys = out.pop().metadata["wmr_figure_keys"] + keys  # consecutive figure cells: one sentence
-            link = v4.new_markdown_cell(_figure_link(keys, figures))
-            link.metadata["wmr_figure_keys"] = keys
-            out.append(link)
+            if out and (joined := out[-1].metadata.get("wmr_figure_keys")):  # consecutive figure cells: one line
+                keys, _ = joined + keys, out.pop()
+            out.append(v4.new_markdown_cell(_figure_link(keys, figures), metadata={"wmr_figure_keys": keys}))
         elif c.cell_type == "markdown":
             out.append(v4.new_markdown_cell(c.source))
         elif c.cell_type == "code":
@@ -117,49 +88,7 @@ def chapter_cells(nb, figures: dict[str, dict[str, Any]]) -> list:
             if tags:
                 n.metadata["tags"] = sorted(tags)
             out.append(n)
-    return drop_empty_headings(out)
-
-
-_HEADING = re.compile(r"^(#{1,6})\s+\S")
-
-
-def _level(cell) -> int:
-    """The level of the heading a Markdown cell opens with (1-6), 0 when it does not open with one."""
-    m = _HEADING.match(cell.source.lstrip()) if cell.cell_type == "markdown" else None
-    return len(m.group(1)) if m else 0
-
-
-def drop_empty_headings(cells: list) -> list:
-    """The cells without a heading that has nothing under it before the next heading of its level or above (or the
-    end): what is left when the cells under a heading were dropped (an exercise section).  A code cell without
-    outputs is nothing to a reader of the PDF.
-
-    Examples
-    --------
-    >>> md = v4.new_markdown_cell
-    >>> [c.source for c in drop_empty_headings([md("## A"), md("text"), md("## Exercises"), v4.new_code_cell("x")])]
-    ['## A', 'text', 'x']
-    >>> [c.source for c in drop_empty_headings([md("## A"), md("### B"), md("text")])]
-    ['## A', '### B', 'text']
-    >>> [c.source for c in drop_empty_headings([md("## Summary\\n\\ntext\\n\\n## Exercises"), md("## Next"), md("more")])]
-    ['## Summary\\n\\ntext', '## Next', 'more']
-    """
-    keep = []
-    for i, c in enumerate(cells):
-        rest = (d for d in cells[i + 1 :] if not (d.cell_type == "code" and not d.get("outputs")))
-        nxt = next(rest, None)
-        if c.cell_type == "markdown":
-            lines = c.source.rstrip().splitlines()
-            while lines and _HEADING.match(lines[-1]) and (nxt is None or 0 < _level(nxt) <= len(lines[-1].split()[0])):
-                lines.pop()  # a heading at the end of the cell with nothing under it
-                while lines and not lines[-1].strip():
-                    lines.pop()
-            if not lines:
-                continue
-            if len(lines) < len(c.source.rstrip().splitlines()):
-                c = v4.new_markdown_cell("\n".join(lines))
-        keep.append(c)
-    return keep
+    return out
 
 
 def findings_cells(nb, figures: dict[str, dict[str, Any]]) -> list:
@@ -196,10 +125,4 @@ def title(nb) -> dict[str, str]:
     refs = next((c.source for c in nb.cells if c.cell_type == "markdown" and c.source.startswith("# References")), "")
     paper = re.search(r"^(?:1\.|-)\s+(Y\. P\. Leow.+?)(?:\n\d+\.|\n-|\n\n|\Z)", refs, re.MULTILINE | re.DOTALL)
     ref = " ".join(paper.group(1).split()) if paper else ""
-    return {
-        "title": lines[0].lstrip("# ").strip(),
-        "subtitle": lines[1],
-        "edition": lines[2],
-        "authors": lines[3],
-        "paper": ref,
-    }
+    return dict(title=lines[0].lstrip("# ").strip(), subtitle=lines[1], edition=lines[2], authors=lines[3], paper=ref)
