@@ -1,6 +1,6 @@
 r"""The executable edition of Leow, Low & Loh (2002), built on the library :mod:`wmr`.
 
-* The paper as printed is a table, ``edition/printed.toml``: every numbered equation (2)-(65)
+* The paper as printed is a table, ``edition/printed.toml``: every numbered equation (1)-(65)
   with its LaTeX, its SymPy form, what the text extraction shows and any doubt about it, and the
   claims of the text that the edition checks.  :mod:`edition.transcription` reads it
   (:func:`printed`, :func:`claim`); the names its SymPy forms use are :mod:`edition.symbols`.

@@ -16,7 +16,23 @@ import importlib.metadata as md
 import platform
 from pathlib import Path
 
-__all__ = ["INFERRED", "DISTRIBUTIONS", "equation_count", "readings", "environment", "citation"]
+__all__ = [
+    "INFERRED",
+    "DISTRIBUTIONS",
+    "PROGRAMS",
+    "LICENCES",
+    "RESCIENCE",
+    "COMMIT",
+    "YEAR",
+    "equation_count",
+    "readings",
+    "environment",
+    "citation",
+]
+
+#: Stamped by the build (edition.report_cells.stamp): the commit and its year, which
+#: the findings chapter cannot know when it is executed (it is not executed again for a new commit).
+COMMIT, YEAR = "@COMMIT@", "@YEAR@"  # edition.report_cells.STAMPS
 
 #: Equations whose verdict holds under a convention the paper's text leaves open, and what was inferred
 #: (the ledger's ``convention`` column states the convention itself).  Facts about the text, not verdicts.
@@ -30,7 +46,26 @@ INFERRED = {
 }
 
 #: Distributions whose versions the report states, in this order (the first two are the edition's package).
-DISTRIBUTIONS = ("wmr-kinematics", "wmr", "numpy", "sympy", "matplotlib", "nbclient", "nbconvert", "mujoco")
+DISTRIBUTIONS = (
+    "wmr-kinematics",
+    "wmr",
+    "numpy",
+    "sympy",
+    "matplotlib",
+    "nbclient",
+    "nbconvert",
+    "mujoco",
+    "robotpy-wpimath",
+)
+#: Programs outside Python whose versions the report states: name -> (command, the line of its output to keep)
+PROGRAMS = {"pandoc": ("pandoc", "--version"), "TeX (xelatex)": ("xelatex", "--version")}
+#: What the edition's parts are licensed under: the code (the package and the build) and the text and figures
+LICENCES = {"code": "MIT", "text and figures": "CC BY 4.0"}
+#: The ReScience initiative, whose replications the reproduction summary follows
+RESCIENCE = (
+    "N. P. Rougier et al. (2017). Sustainable computational science: the ReScience initiative. "
+    "*PeerJ Computer Science* 3, e142. doi:10.7717/peerj-cs.142."
+)
 
 
 def equation_count(ledger, transcription=None):
@@ -104,7 +139,34 @@ def environment():
     for name in DISTRIBUTIONS:
         if (v := _version(name)) and not (name == "wmr" and "wmr-kinematics" in out):
             out[name] = v
+    for name, command in PROGRAMS.items():
+        if v := _program(command):
+            out[name] = v
+    out["operating system"] = _os()
     return out
+
+
+def _program(command):
+    """The first line a program prints for ``--version``, or ``""`` when it is not installed."""
+    import shutil
+    import subprocess
+
+    if not shutil.which(command[0]):
+        return ""
+    try:
+        done = subprocess.run(list(command), capture_output=True, text=True, timeout=30, check=False)
+    except (OSError, subprocess.SubprocessError):
+        return ""
+    return (done.stdout.strip().splitlines() or [""])[0].strip()
+
+
+def _os():
+    """The operating system: its release name (``/etc/os-release``) and the kernel."""
+    try:
+        name = platform.freedesktop_os_release().get("PRETTY_NAME", "")
+    except OSError:
+        name = ""
+    return ", ".join(filter(None, (name, f"{platform.system()} {platform.release()}")))
 
 
 def _package():
@@ -150,18 +212,44 @@ def citation(root=None):
         version = str(meta.get("version", version))
     import textwrap
 
+    url = _repository(path.parent)
+    licence = "; ".join(f"{v} ({k})" for k, v in LICENCES.items())
     wrapped = "\n".join(textwrap.wrap(title, 58, subsequent_indent=" " * 13))
     bib = (
         f"@software{{wmr_edition,\n  title   = {{{wrapped}}},\n  author  = {{{{{authors}}}}},\n"
-        f"  version = {{{version}}},\n  license = {{{lic}}},\n  note    = {{{name}; cite the commit printed on\n"
-        "             the title page}\n}"
+        f"  year    = {{{YEAR}}},\n  version = {{{version}}},\n  commit  = {{{COMMIT}}},\n"
+        + (f"  url     = {{{url}}},\n" if url else "")
+        + f"  license = {{{licence}}},\n  note    = {{{name}}}\n}}"
     )
     return {
         "name": name,
         "version": version,
         "licence": lic,
+        "licences": dict(LICENCES),
         "title": title,
         "authors": authors,
+        "url": url,
         "cff": cff,
         "bibtex": bib,
     }
+
+
+def _repository(root):
+    """The repository's public address: ``repository-code`` of CITATION.cff or a URL of pyproject's
+    ``[project.urls]``; ``""`` when the project states none."""
+    import tomllib
+
+    cff = Path(root) / "CITATION.cff"
+    if cff.exists():
+        import yaml  # type: ignore[import-untyped]
+
+        meta = yaml.safe_load(cff.read_text(encoding="utf-8")) or {}
+        if meta.get("repository-code") or meta.get("url"):
+            return str(meta.get("repository-code") or meta.get("url"))
+    pyproject = Path(root) / "pyproject.toml"
+    if pyproject.exists():
+        urls = tomllib.loads(pyproject.read_text(encoding="utf-8")).get("project", {}).get("urls", {})
+        for key in ("Source", "Repository", "Homepage"):
+            if urls.get(key):
+                return str(urls[key])
+    return ""

@@ -1,6 +1,6 @@
 r"""The paper as printed: the table ``edition/printed.toml`` read into :class:`Printed` and :class:`Claim` records.
 
-The table is the transcription, written once as text: for each numbered equation (2)-(65) its
+The table is the transcription, written once as text: for each numbered equation (1)-(65) its
 section, the LaTeX as printed, its SymPy form, what the text extraction shows (``extracted``,
 verbatim) and any doubt about the reading (``doubt``); for each claim of the text that the edition
 checks, the quoted sentence.  A transcription error is a change of one line of that file.
@@ -132,7 +132,7 @@ class Transcription:
     Attributes
     ----------
     equations : dict
-        ``{"2": Printed, ..., "65": Printed}`` in the table's order.
+        ``{"1": Printed, ..., "65": Printed}`` in the table's order.
     claims : dict
         ``{slug: Claim}``.
     names : dict
@@ -287,7 +287,7 @@ def printed(id):
     Parameters
     ----------
     id : int or str
-        Equation number, (2)-(65).
+        Equation number, (1)-(65).
 
     Returns
     -------

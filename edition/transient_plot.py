@@ -1,4 +1,4 @@
-r"""Figure E5 of the design study: :func:`wmr.swerve.plot.transient_figure`, with every strategy told apart.
+r"""Figure E7 of the design study: :func:`wmr.swerve.plot.transient_figure`, with every strategy told apart.
 
 Two strategies can produce the same motion (``plain`` and ``robot`` do when no module needs a flip), and the
 library draws the first run wide so that others may run on it.  A reader still cannot see a curve that lies
@@ -48,7 +48,7 @@ def coincident_runs(study):
 
 
 def distinguished_transient_figure(study, every=10):
-    """Figure E5: the library's three panels, each run with its own marker, coincident runs named in the legend.
+    """Figure E7: the library's three panels, each run with its own marker, coincident runs named in the legend.
 
     Parameters
     ----------

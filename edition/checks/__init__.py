@@ -3,7 +3,7 @@ r"""The checks behind the chapters: each derivation compared with the printed st
 One module per chapter, so that a notebook shows the physics and calls one function per equation:
 
 =======================  ====================================================================
-:mod:`.wheels`           Chapter 1, (2)-(19): rigid-body velocities, the rolling disk, offset and dual wheels
+:mod:`.wheels`           Chapter 1, (1)-(19): rigid-body velocities, the rolling disk, offset and dual wheels
 :mod:`.assembly`         Chapter 2, (20)-(29): stacking the units, the null space of F, drift, dead zone
 :mod:`.isotropy`         Chapter 3, (30)-(50): condition number, isotropy of :math:`\mathbf J_{L1}`, :math:`\mathbf J_2`
 :mod:`.centred`          Chapter 4, (51)-(59): centred wheels, mobility, :math:`\det\mathbf J` and its zero set
@@ -84,6 +84,7 @@ def equation(
     why="",
     convention="",
     note="",
+    scope="",
 ):
     r"""A :class:`~edition.ledger.Finding` for a numbered equation, its ``check`` text built from what was shown.
 
@@ -99,7 +100,7 @@ def equation(
         Largest numerical residual of the proven form.
     refuted : str, optional
         How the printed form was refuted (a counterexample, the nonzero difference).
-    corrected, corrected_holds, severity, why, convention, note
+    corrected, corrected_holds, severity, why, convention, note, scope
         As in :class:`~edition.ledger.Finding`.
 
     Returns
@@ -123,6 +124,7 @@ def equation(
         why=why,
         convention=convention,
         note=note,
+        scope=scope,
     )
 
 
@@ -139,6 +141,7 @@ def claim(
     why="",
     convention="",
     note="",
+    scope="",
 ):
     r"""A :class:`~edition.ledger.Finding` for a claim of the text (see :func:`equation`).
 
@@ -170,4 +173,5 @@ def claim(
         why=why,
         convention=convention,
         note=note,
+        scope=scope,
     )

@@ -14,10 +14,12 @@ The package, by job:
 :mod:`.family`      :class:`Family` (a row of ``singularities.csv``) and the paper's items (:func:`paper_item`)
 :mod:`.catalogue`   :func:`families`, sampled and checked exactly; :func:`check_paper_items`, the printed list
 :mod:`.coverage`    the families modulo a half turn and the items that cover them; ``singularities.csv``
+:mod:`.counts`      the counts of covered and missed families, one table of reading x result
 ==================  ===========================================================================================
 """
 
 from .catalogue import check_paper_items, families
+from .counts import COUNTINGS, count_table, counted, summary
 from .coverage import ITEMS, READINGS, accounting, covering_items, table, write_csv
 from .family import COLUMNS, PAPER_PAIR_ITEMS, Family, paper_item
 
@@ -34,4 +36,8 @@ __all__ = [
     "ITEMS",
     "covering_items",
     "accounting",
+    "COUNTINGS",
+    "counted",
+    "count_table",
+    "summary",
 ]

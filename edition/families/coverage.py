@@ -125,6 +125,17 @@ def _mount_point_family(num, exact_bot, k, n):
     )
 
 
+def _free_parameters(family):
+    """How many free symbols the exact parameterisation of ``family`` has (``-1`` without one)."""
+    if family.exact is None:
+        return -1
+    free = set()
+    for pair in family.exact():
+        for c in pair:
+            free |= sp.sympify(c).free_symbols
+    return len(free)
+
+
 def accounting(robot=None, n=72, exact=True):
     r"""The singular families modulo a half turn, each with the printed items that cover it (computed).
 
@@ -163,6 +174,7 @@ def accounting(robot=None, n=72, exact=True):
             "",
             "",
             samples=np.concatenate([f.samples, g.samples]),
+            exact=f.exact,
         )
         both.det_J_max = max(f.det_J_max, g.det_J_max)
         both.det_J_exact_zero = (
@@ -194,6 +206,8 @@ def accounting(robot=None, n=72, exact=True):
         f.paper_item = ", ".join(cover["half-turn"])
         f.listed_in_paper = "yes" if cover["half-turn"] else "no"
         f.note = ", ".join(cover["any point"])
+        f.covered_any_point = "yes" if cover["any point"] else "no"
+        f.free_parameters = _free_parameters(f)
     return merged
 
 

@@ -83,6 +83,10 @@ class Family:
         Computed: the ranks of :math:`\\mathbf F` (24) seen on ``samples``.
     classified_as : str
         Computed: what :func:`wmr.analysis.singularities.classify` calls the samples.
+    free_parameters : int
+        Computed: the number of free symbols of the exact parameterisation (``-1``: none given).
+    covered_any_point : str
+        Computed: ``"yes"`` when a printed item covers the family under the reading ``"any point"``.
     """
 
     key: str
@@ -99,6 +103,8 @@ class Family:
     det_J_exact_zero: bool | None = None
     rank_F: str = ""
     classified_as: str = ""
+    free_parameters: int = -1
+    covered_any_point: str = ""
 
     def row(self):
         """The family as a row of ``singularities.csv``.
@@ -123,6 +129,8 @@ class Family:
             "listed_in_paper": self.listed_in_paper,
             "paper_item": self.paper_item,
             "note": self.note,
+            "free_parameters": self.free_parameters,
+            "covered_any_point": self.covered_any_point,
         }
 
 
@@ -137,6 +145,8 @@ COLUMNS = (
     "listed_in_paper",
     "paper_item",
     "note",
+    "free_parameters",
+    "covered_any_point",
 )
 
 

@@ -1,4 +1,4 @@
-r"""The ledger of verdicts: one row per equation (2)-(65) and per checked claim of the paper.
+r"""The ledger of verdicts: one row per equation (1)-(65) and per checked claim of the paper.
 
 A check (:mod:`edition.checks`) compares a printed statement with what the model proves and
 returns a :class:`Finding`: whether the printed form holds, what was proven, the corrected form
@@ -26,6 +26,9 @@ Columns (:data:`COLUMNS`):
 ``notebook``, ``anchor``
     The notebook that derives the row, and the HTML id it puts before the derivation
     (``eq-59``, ``claim-drift``).
+``scope``
+    ``"label: explanation"`` when the verdict reaches less far than its label alone says (:data:`SCOPES`:
+    a presupposition that fails, a dispute of terminology, a special case), computed by the check; else empty.
 
 No field carries ASCII pseudo-math (``psi_dot``, ``!=``, ``<=>``, ``^T``, ``3*1``): math is
 written in ``$...$``.  That is a rule of the text, checked by the tests over the published ledger
@@ -38,13 +41,15 @@ The parts: :mod:`~edition.ledger.verdict` (findings, their grading, the columns)
 
 from .rows import Ledger, Row
 from .store import LedgerError, assemble, fragments, main, problems, read
-from .verdict import COLUMNS, EQUATIONS, KINDS, SEVERITIES, VERDICTS, Finding, anchor, grade
+from .verdict import COLUMNS, EQUATIONS, KINDS, SCOPES, SEVERITIES, VERDICTS, Finding, anchor, grade, scope_label
 
 __all__ = [
     "COLUMNS",
     "KINDS",
     "VERDICTS",
     "SEVERITIES",
+    "SCOPES",
+    "scope_label",
     "EQUATIONS",
     "Finding",
     "Row",

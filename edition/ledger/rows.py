@@ -12,7 +12,7 @@ from pathlib import Path
 from ..files import atomic_write, csv_text
 from ..text import bound
 from ..transcription import claim, printed
-from .verdict import COLUMNS, VERDICTS, anchor, grade
+from .verdict import COLUMNS, VERDICTS, anchor, grade, scope_label
 
 __all__ = ["Row", "Ledger"]
 
@@ -42,7 +42,8 @@ class Row(dict):
         -------
         str
         """
-        parts = [f"**Verdict {self._label()}: {self['verdict']}.**"]
+        scope = scope_label(self.get("scope", ""))
+        parts = [f"**Verdict {self._label()}: {self['verdict']}{f' ({scope})' if scope else ''}.**"]
         if self["verdict"] != "ok":
             parts.append(_sentence(self["why"]))
         parts.append(_sentence(self["check"]))
@@ -57,6 +58,8 @@ class Row(dict):
                 text += f"\n\n*What is true:* {self['corrected']}"
         if self["note"]:
             text += f"\n\n*Note:* {_sentence(self['note'])}"
+        if scope:
+            text += f"\n\n*Scope ({scope}):* {_sentence(self['scope'].split(':', 1)[1].strip())}"
         return text
 
     def _repr_markdown_(self):
@@ -146,6 +149,7 @@ class Ledger:
             notebook=self.notebook,
             anchor=anchor(id),
             note=str(finding.note).strip(),
+            scope=str(finding.scope).strip(),
         )
         self.rows.append(row)
         return row

@@ -15,7 +15,7 @@ import sys
 from pathlib import Path
 
 from ..files import atomic_write, csv_text
-from .verdict import COLUMNS, EQUATIONS, KINDS, SEVERITIES, VERDICTS, anchor
+from .verdict import COLUMNS, EQUATIONS, KINDS, SCOPES, SEVERITIES, VERDICTS, anchor, scope_label
 
 __all__ = ["LedgerError", "read", "fragments", "problems", "assemble", "main"]
 
@@ -112,6 +112,8 @@ def problems(rows):
             out.append(f"row {r['id']}: verdict {r['verdict']!r} but printed_holds {r['printed_holds']!r}")
         if r["verdict"] in SEVERITIES and not (r["corrected"].strip() and r["why"].strip()):
             out.append(f"row {r['id']}: judged {r['verdict']} without a corrected form and a why")
+        if r["scope"] and r["verdict"] not in SCOPES.get(scope_label(r["scope"]), ()):
+            out.append(f"row {r['id']}: scope {r['scope'][:40]!r} cannot qualify the verdict {r['verdict']!r}")
         if r["anchor"] != anchor(r["id"]):
             out.append(f"row {r['id']}: anchor {r['anchor']!r}, expected {anchor(r['id'])!r}")
     return out

@@ -7,7 +7,18 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-__all__ = ["COLUMNS", "KINDS", "VERDICTS", "SEVERITIES", "EQUATIONS", "Finding", "grade", "anchor"]
+__all__ = [
+    "COLUMNS",
+    "KINDS",
+    "VERDICTS",
+    "SEVERITIES",
+    "SCOPES",
+    "EQUATIONS",
+    "Finding",
+    "grade",
+    "anchor",
+    "scope_label",
+]
 
 
 COLUMNS = (
@@ -25,13 +36,21 @@ COLUMNS = (
     "notebook",
     "anchor",
     "note",
+    "scope",
 )
 KINDS = ("equation", "claim")
 VERDICTS = ("ok", "typo", "wrong")
 #: Classes of error a check may name for a refuted printed form: a slip of print (sign, factor,
 #: size) that the surrounding argument does not rest on, or a false statement.
 SEVERITIES = ("typo", "wrong")
-EQUATIONS = tuple(str(n) for n in range(2, 66))
+EQUATIONS = tuple(str(n) for n in range(1, 66))
+#: How far a verdict reaches, when less far than its label alone says: ``"label: what the computation showed"``,
+#: the label one of these, with the verdicts it may qualify.  Set by the check from what it computed.
+SCOPES = {
+    "presupposition fails": ("wrong",),  # the implication holds; what it presupposes does not
+    "terminology": ("wrong",),  # false under the meaning of a word the paper uses elsewhere, true under another
+    "special case": ("ok",),  # proven only for the cases named (a family of robots, an assumption stated later)
+}
 
 
 @dataclass(frozen=True)
@@ -41,7 +60,7 @@ class Finding:
     Attributes
     ----------
     id : str
-        Equation number (``"2"`` .. ``"65"``) or a claim's slug.
+        Equation number (``"1"`` .. ``"65"``) or a claim's slug.
     printed_holds : bool
         Whether the printed form (or claim) was proven: computed by the check, never typed.
     check : str
@@ -60,6 +79,9 @@ class Finding:
         The convention under which the verdict holds (Markdown).
     note : str
         Anything else (Markdown).
+    scope : str
+        ``"label: explanation"`` with a label of :data:`SCOPES`, when the verdict reaches less far than its
+        label alone says (computed by the check), else empty.
     """
 
     id: str
@@ -72,6 +94,18 @@ class Finding:
     why: str = ""
     convention: str = ""
     note: str = ""
+    scope: str = ""
+
+
+def scope_label(scope):
+    """The label of a ``scope`` field (``"terminology: ..."`` -> ``"terminology"``), ``""`` when empty.
+
+    Examples
+    --------
+    >>> scope_label("special case: tested at mobility 1"), scope_label("")
+    ('special case', '')
+    """
+    return str(scope).split(":", 1)[0].strip()
 
 
 def grade(finding):
@@ -107,6 +141,7 @@ def grade(finding):
             f"printed_holds of row {finding.id!r} must be a bool (the outcome of the check), "
             f"got {finding.printed_holds!r}"
         )
+    _check_scope(finding)
     if finding.printed_holds:
         return "ok"
     label = _label(finding.id)
@@ -119,6 +154,17 @@ def grade(finding):
     if not str(finding.why).strip():
         raise ValueError(f"{label}: the printed form is refuted but 'why' is empty")
     return finding.severity
+
+
+def _check_scope(finding):
+    if not finding.scope:
+        return
+    label = scope_label(finding.scope)
+    verdict = "ok" if finding.printed_holds else finding.severity
+    if label not in SCOPES or not finding.scope.split(":", 1)[1:] or not finding.scope.split(":", 1)[1].strip():
+        raise ValueError(f"{_label(finding.id)}: scope must be 'label: explanation' with a label of {sorted(SCOPES)}")
+    if verdict not in SCOPES[label]:
+        raise ValueError(f"{_label(finding.id)}: scope {label!r} cannot qualify the verdict {verdict!r}")
 
 
 def _label(id):

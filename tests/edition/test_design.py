@@ -166,7 +166,7 @@ def test_describe_design():
     assert "worst-case" in study.describe_design(wmr.paper_robot("offset", L=0.3, r=0.05))
 
 
-# ------------------------------------------------------------------------------------------ Figure E5
+# ------------------------------------------------------------------------------------------ Figure E7
 def test_figure_8_3_tells_every_strategy_apart():
     """plain and robot move alike here: the figure gives every run its own marker and names the coincident one."""
     import matplotlib

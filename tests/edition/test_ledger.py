@@ -181,7 +181,7 @@ def test_assemble_reports_every_problem_and_writes_nothing(tmp_path):
     with pytest.raises(LG.LedgerError) as exc:
         LG.assemble(tmp_path / "out", dest)
     text = str(exc.value)
-    assert "missing equations: 4 5" in text and "duplicated rows: 10" in text
+    assert "missing equations: 1 4 5" in text and "duplicated rows: 10" in text
     assert "c/ledger.csv: columns ['id', 'verdict']" in text
     assert not dest.exists()
     with pytest.raises(FileNotFoundError, match="no-such"):
@@ -195,16 +195,20 @@ def test_problems_on_hand_edited_rows():
     rows[2]["anchor"] = "eq-x"
     del rows[3]["kind"]
     probs = "\n".join(LG.problems(rows))
-    assert "row 2: bad verdict 'fine'" in probs
-    assert "row 3: verdict 'typo' but printed_holds 'yes'" in probs and "row 3: judged typo without" in probs
-    assert "row 4: anchor 'eq-x'" in probs and "row 5: lacks the columns ['kind']" in probs
+    ids = [r["id"] for r in full_ledger().rows]
+    assert f"row {ids[0]}: bad verdict 'fine'" in probs
+    assert (
+        f"row {ids[1]}: verdict 'typo' but printed_holds 'yes'" in probs
+        and f"row {ids[1]}: judged typo without" in probs
+    )
+    assert f"row {ids[2]}: anchor 'eq-x'" in probs and f"row {ids[3]}: lacks the columns ['kind']" in probs
 
 
 def test_main_exit_status(tmp_path, capsys):
     full_ledger().write(tmp_path / "out" / "full")
     args = [str(tmp_path / "out"), str(tmp_path / "ledger.csv")]
     assert LG.main(args) == 0
-    assert "ledger: 64 rows" in capsys.readouterr().out
+    assert f"ledger: {len(LG.EQUATIONS)} rows" in capsys.readouterr().out
     bad = LG.Ledger("bad")
     bad.add(ok(2))
     bad.write(tmp_path / "out" / "bad")
@@ -240,3 +244,16 @@ def test_committed_ledger_follows_the_text_rules():
     with open(LEDGER, newline="", encoding="utf-8") as f:
         bad = {r["id"]: row_problems(r) for r in csv.DictReader(f)}
     assert not {k: v for k, v in bad.items() if v}
+
+
+def test_a_scope_qualifies_only_the_verdicts_it_may():
+    ok = Finding("2", True, "proven", 0.0, scope="special case: tested at mobility 1")
+    row = LG.Ledger("nb").add(ok)
+    assert LG.grade(ok) == "ok" and row["scope"].startswith("special case")
+    assert "ok (special case)" in row.sentence() and "Tested at mobility 1." in row.sentence()
+    with pytest.raises(ValueError, match="cannot qualify"):
+        LG.grade(Finding("2", True, "proven", 0.0, scope="terminology: a word"))
+    for bad in ("maybe: x", "special case", "special case:  "):
+        with pytest.raises(ValueError, match="label"):
+            LG.grade(Finding("2", True, "proven", 0.0, scope=bad))
+    assert LG.scope_label("presupposition fails: x") == "presupposition fails"

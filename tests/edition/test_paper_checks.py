@@ -119,6 +119,16 @@ def test_every_row_names_what_it_proved():
             assert f.check.startswith("printed form proven" if f.printed_holds else "printed form refuted")
 
 
+def test_equation_1_is_judged_from_the_chapters_body_axes(transcribe):
+    ch1 = derived("01_platform_and_wheels")
+    d = wheels.centre_velocity(ch1["i_B"], ch1["j_B"], n=10)
+    assert verdicts(d) == {"1": "ok"} and d["1"].check.startswith("printed form proven")
+    # read with the body axes turned the other way, the printed identity is refuted: the verdict is computed
+    c, s = sp.cos(S.psi), sp.sin(S.psi)
+    transcribe(1, sp.Eq(sp.Matrix([[c, s], [-s, c]]) * S.c_dot, sp.Matrix([S.X_dot, S.Y_dot]), evaluate=False))
+    assert wheels.centre_velocity(ch1["i_B"], ch1["j_B"], n=10)["1"].printed_holds is False
+
+
 # ----------------------------------------------------------------------------------------------- claims
 def test_drift_fails_on_whenever_and_records_rows_28_29():
     ch2 = derived("02_offset_wheels_and_mobility")
@@ -127,6 +137,10 @@ def test_drift_fails_on_whenever_and_records_rows_28_29():
     locked = assembly.locked_steering(ch2["det_M"], ch2["plucker"], robots=5, per=2)
     f = assembly.drift(c["28"], p["29"], locked, ch2["J2"], per=50)["drift"]
     assert grade(f) == "wrong" and f.residual == max(c["28"].residual, p["29"].residual)
+    # the label says how far the verdict reaches: the implication holds, its presupposition fails
+    assert f.scope.startswith("presupposition fails: the implication holds") and "rows (28)" not in f.convention
+    # (28) is ok only under sum d_i = 0, which the paper states later, at (37): found in the transcription
+    assert grade(c["28"]) == "ok" and c["28"].scope.startswith("special case") and "(37), after (28)" in c["28"].scope
     assert r"\det\mathbf M" in f.check and r"\det\mathbf J_2 = d^3r^3" in f.note
 
 

@@ -36,12 +36,14 @@ def report_notebook(commit_file: Path, figures_dir: Path, findings: Path, chapte
     date = dt.datetime.fromtimestamp(epoch, dt.UTC).strftime("%Y-%m-%d") if epoch else "unknown"
     nb.metadata["wmr"] = {**title(part1), "commit": commit, "epoch": epoch, "date": date}
     nb.metadata["title"] = nb.metadata["wmr"]["title"]
-    nb.cells = findings_cells(part1, figures)
+    from edition.report_cells import drop_empty_headings, stamp  # rules of the text (the edition's, not glue)
+
+    nb.cells = stamp(findings_cells(part1, figures), commit, date[:4] if epoch else "unknown")
     for path in chapters:
         chapter = nbformat.read(path, as_version=4)
         if "language_info" in chapter.metadata:
             nb.metadata.setdefault("language_info", chapter.metadata["language_info"])
-        nb.cells += chapter_cells(chapter, figures)
+        nb.cells += drop_empty_headings(chapter_cells(chapter, figures), nbformat.v4.new_markdown_cell)
     for j, c in enumerate(nb.cells):
         c["id"] = f"r{j:04d}"
     nb.nbformat, nb.nbformat_minor = 4, 5

@@ -55,20 +55,16 @@ def _output(o) -> dict | None:
 
 
 def _figure_link(keys: list[str], figures: dict[str, dict[str, Any]]) -> str:
-    """The line that replaces a figure cell of a chapter: a link to where the report shows it."""
+    """The line that replaces the figure cells of a chapter: one sentence per place the report shows them."""
     if not keys:
         return "*The figure this computation draws is printed with the [figures](#figures) of Part I.*"
-    links = []
-    for f in (figures[k] for k in keys):
-        where = FRONT_MATTER_FIGURES.get(f["key"], "the figures of Part I")
-        both = ", with the paper's caption beside the computed one" if f["paper_caption"] else ""
-        link = f"[{f['label'] or f['title']}](#figure-{f['key']})"
-        links.append(f"This computation draws {link}, printed in {where}{both}.")
-    return "*" + " ".join(links) + "*"
+    from edition.report_cells import figure_sentences  # the edition's text rule; not a light import
+
+    return figure_sentences([figures[k] for k in keys], FRONT_MATTER_FIGURES)
 
 
 def chapter_cells(nb, figures: dict[str, dict[str, Any]]) -> list:
-    """The cells of one executed derivation chapter, as the report shows them."""
+    """The cells of one executed derivation chapter, as the report shows them (consecutive figure cells: one line)."""
     out = []
     for c in nb.cells:
         tags = set(c.get("metadata", {}).get("tags", []))
@@ -76,7 +72,9 @@ def chapter_cells(nb, figures: dict[str, dict[str, Any]]) -> list:
             continue
         if "figure" in tags:
             keys = [k for k in figures if re.search(r"[\"']" + re.escape(k) + r"[\"']", c.source)]
-            out.append(v4.new_markdown_cell(_figure_link(keys, figures)))
+            if out and (joined := out[-1].metadata.get("wmr_figure_keys")):  # consecutive figure cells: one line
+                keys, _ = joined + keys, out.pop()
+            out.append(v4.new_markdown_cell(_figure_link(keys, figures), metadata={"wmr_figure_keys": keys}))
         elif c.cell_type == "markdown":
             out.append(v4.new_markdown_cell(c.source))
         elif c.cell_type == "code":
@@ -118,13 +116,13 @@ def findings_cells(nb, figures: dict[str, dict[str, Any]]) -> list:
 
 def title(nb) -> dict[str, str]:
     """The title block from the findings chapter's cell tagged ``title`` (its Markdown, or the Markdown it
-    displays): the heading, the line under it, the edition's line (version, licence); and the paper's full
+    displays): the heading, the line under it, the edition's line (version, licences), its authors; and the paper's full
     reference, the entry by Leow under its heading ``# References``."""
     c: Any = next((c for c in nb.cells if "title" in c.get("metadata", {}).get("tags", [])), {"source": ""})
     shown = "".join(o.get("data", {}).get("text/markdown", "") for o in c.get("outputs", []))
     head = shown if c.get("cell_type") == "code" else c["source"]
-    lines = [line.strip().strip("*") for line in head.strip().splitlines() if line.strip()] + ["", "", ""]
+    lines = [line.strip().strip("*") for line in head.strip().splitlines() if line.strip()] + ["", "", "", ""]
     refs = next((c.source for c in nb.cells if c.cell_type == "markdown" and c.source.startswith("# References")), "")
     paper = re.search(r"^(?:1\.|-)\s+(Y\. P\. Leow.+?)(?:\n\d+\.|\n-|\n\n|\Z)", refs, re.MULTILINE | re.DOTALL)
     ref = " ".join(paper.group(1).split()) if paper else ""
-    return {"title": lines[0].lstrip("# ").strip(), "subtitle": lines[1], "edition": lines[2], "paper": ref}
+    return dict(title=lines[0].lstrip("# ").strip(), subtitle=lines[1], edition=lines[2], authors=lines[3], paper=ref)

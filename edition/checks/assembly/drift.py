@@ -17,7 +17,7 @@ from wmr.model.tolerance import TOL
 from wmr.model.wheels import OffsetWheel
 
 from ... import symbols as S
-from ...transcription import printed
+from ...transcription import printed, table
 from ...verify import SEED, symbolic_equal
 from .. import Derivation, claim, equation, require
 from .locked import concurrent_angles, locked_motion, locked_system
@@ -73,6 +73,14 @@ def drift_of_c(c_dot, n=100, origin=(0.06, -0.04), seed=SEED):
             else:
                 res_off = max(res_off, e)
     require(needs_centroid and res_off > 1e-3, "the printed (28) fails with C off the centroid")
+    # where the paper states the assumption (28) needs: the first printed equation that is sum d_i = 0
+    stated = next((k for k, e in table().equations.items() if _is_centroid_condition(e.expr)), "")
+    scope = (
+        rf"special case: proven for $\sum_i\mathbf d_i = \mathbf 0$ only (C at the centroid of the $P_i$), which the "
+        rf"paper states at ({stated}), after (28)"
+        if holds and needs_centroid and stated and int(stated) > 28
+        else ""
+    )
     return Derivation(
         extra=extra,
         off_centroid=res_off,
@@ -90,9 +98,21 @@ def drift_of_c(c_dot, n=100, origin=(0.06, -0.04), seed=SEED):
                 r"the "
                 f"centroid the printed form is off by up to ${res_off:.2f}$ on the same motions. It holds on every "
                 "solution, but solutions exist only for concurrent or parallel arms (see the claim `drift`)",
+                scope=scope,
             )
         ],
     )
+
+
+def _is_centroid_condition(expr):
+    """Whether a printed form is :math:`\\sum_i\\mathbf d_i = \\mathbf 0` for three units."""
+    if not isinstance(expr, sp.Equality):
+        return False
+    target = S.d1 + S.d2 + S.d3
+    lhs, rhs = expr.lhs, expr.rhs
+    if not (isinstance(lhs, sp.MatrixBase) and isinstance(rhs, sp.MatrixBase)) or lhs.shape != target.shape:
+        return False
+    return symbolic_equal(lhs, target) and symbolic_equal(rhs, sp.zeros(2, 1))
 
 
 def drift_of_psi(a, b, c, J1, n=100, seed=SEED):
@@ -224,6 +244,16 @@ def drift(row28, row29, n_locked, J2, per=2000, seed=SEED):
     u = rng.uniform(-0.5, 0.5, 2) * np.abs(bot.mount_points).max()  # a point inside the platform
     conc = int(rank(locked_system(bot, concurrent_angles(bot, u))))
     jams = bool(locked.proven) and locked.ranks == {6} and generic == [6]
+    # the implication: wherever steering without driving happens, the platform moves (t = 0 forces phi_dot = 0)
+    implies = forced and symbolic_equal(sp.trigsimp(J2.det()), S.d**3 * S.r**3)
+    scope = (
+        r"presupposition fails: the implication holds (where the wheels can be steered with the drives locked, "
+        r"the platform moves: $\mathbf t = \mathbf 0$ forces $\dot\phi_i = 0$, SymPy), but its presupposition, "
+        rf"that they can be steered so, fails at all {per} random configurations of the paper's robot (rank "
+        r"$\mathbf M = 6$); that the robot jams instead is this edition's own result"
+        if implies and jams
+        else ""
+    )
     evidence = (
         r"the locked-drive system $\mathbf M(\boldsymbol\beta)[\mathbf t;\dot{\boldsymbol\phi}] = "
         r"\mathbf 0$ is $6\times6$ with $\det\mathbf M = d^3\det[\mathbf d_i\times\mathbf j_i\ \ "
@@ -258,12 +288,14 @@ def drift(row28, row29, n_locked, J2, per=2000, seed=SEED):
                 why=r"the paper's *whenever*: steering without driving moves the platform only where $\det\mathbf M = 0$; "
                 r"elsewhere the wheels cannot be steered at all",
                 convention=r"steering without driving read as $\dot\theta_i = 0$ with the steering servos commanding "
-                r"$\dot\phi_i \neq 0$; offset $d > 0$; residual of rows (28) and (29)",
+                r"$\dot\phi_i \neq 0$; offset $d > 0$",
                 note=(
                     r"where steering without driving is possible it does move the platform: with $\mathbf t = \mathbf 0$, "
                     r"(21) leaves only $\dot\phi_i = 0$ since $\det\mathbf J_2 = d^3r^3 \neq 0$"
-                    + (" (SymPy)" if forced and symbolic_equal(sp.trigsimp(J2.det()), S.d**3 * S.r**3) else "")
+                    + (" (SymPy)" if implies else "")
+                    + r". The residual is the larger of those of rows (28) and (29), whose forms the drift motion uses"
                 ),
+                scope=scope,
             )
         ],
     )

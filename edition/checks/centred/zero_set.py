@@ -185,9 +185,10 @@ def singular_list(det_J, n=1000, n_family=200, n_item=100, seed=SEED):
                 r"cases of (v)",
                 corrected_holds=complete,
                 severity="typo",
-                why=r"the list is right up to item (i), which omits the wheels turned by $180^\circ$ (unless parallel planes "
-                r"count as meeting at infinity in (v))",
-                convention=r"the paper's numbering of (59); 'intersect' read as meeting in one finite point",
+                why=r"item (i) as printed omits the wheels turned by $180^\circ$ (unless parallel planes count as meeting "
+                r"at infinity in (v)); with (v) read as admitting a mount point as $D_P$, no other family is missing",
+                convention=r"the paper's numbering of (59); 'intersect' read as meeting in one finite point, a mount "
+                r"point included (the reading *any point* of the singular configurations)",
             )
         ],
     )

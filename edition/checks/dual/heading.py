@@ -59,6 +59,17 @@ def omnidirectional(n=2000, seed=SEED):
         and curve["miss"] < 1e-9
         and abs(curve["turned"] - curve["omega"] * curve["t_end"]) < 0.05
     )
+    # the word's other meaning: any direction of travel, reached by re-steering (at rest or while moving)
+    other_meaning = (
+        c["centred"]["slip"] < TOL and c["centred"]["moved"] == 0.0 and curve["slip"] < 1e-6 and curve["miss"] < 1e-9
+    )
+    scope = (
+        "terminology: false in the sense the paper gives the word in Section 4.2 (every twist executable at once), "
+        "true in the looser sense of travelling in any direction after re-steering, which the same computation shows "
+        "(the corner re-steered at rest and the curvilinear translation, both without slip)"
+        if not holds and other_meaning
+        else ""
+    )
     return Derivation(
         dims=dims,
         dims_offset=dims_off,
@@ -88,6 +99,7 @@ def omnidirectional(n=2000, seed=SEED):
                 why="omnidirectional means every twist executable at once, the paper's own use in Section 4.2; decoupled "
                 "steering only lets the wheels turn, one direction of motion at a time",
                 convention="omnidirectional = every platform twist executable at once from any configuration (Section 4.2)",
+                scope=scope,
             )
         ],
     )
@@ -150,8 +162,19 @@ def discontinuous_heading(n=2000, seed=SEED):
         and c["offset"]["slip"] < TOL
         and bool(np.allclose(c["offset"]["final"], [0.0, c["v"], c["v"]], atol=0.01 * c["v"]))
     )
+    # the mobilities tested (dimension of the admissible twists); the claim is about every mobility below 3
+    tested = sorted(set((3 - (rank_F(cen, b_minus) - 3)).tolist()) | set((3 - (rank_F(off, be_off) - 6)).tolist()))
+    untested = [m for m in (1, 2) if m not in tested]
+    scope = (
+        f"special case: the claim is about every mobility below 3; tested at mobility "
+        f"{' and '.join(map(str, tested))} (three centred wheels at coordinated angles; offset wheels for the converse), "
+        f"not at mobility {' or '.join(map(str, untested))}"
+        if holds and untested
+        else ""
+    )
     return Derivation(
         rows=rows,
+        tested=tested,
         gain=float(gain.max()),
         bound=float(bound_.max()),
         corner=c,
@@ -168,6 +191,7 @@ def discontinuous_heading(n=2000, seed=SEED):
                 convention=r"heading = the direction of the platform twist; a jump $\mathbf t \to \lambda\mathbf t$ (same "
                 r"instantaneous centre, a reversal for $\lambda < 0$) needs no delay; offset wheels ($d > 0$) "
                 r"realise any twist at once",
+                scope=scope,
             )
         ],
     )

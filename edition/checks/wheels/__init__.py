@@ -1,4 +1,4 @@
-r"""Chapter 1, equations (2)-(19): the platform, the rolling disk, offset, centred and dual wheels.
+r"""Chapter 1, equations (1)-(19): the platform, the rolling disk, offset, centred and dual wheels.
 
 Every result is derived from first principles -- rigid-body velocities with 3D cross products
 (:math:`\dot{\mathbf p} = \dot{\mathbf c} + \boldsymbol\omega\times\mathbf d`) and the no-slip
@@ -12,7 +12,7 @@ what the chapter derived.  The checks, by equation group:
 
 ================  ================================================================================================
 :mod:`.frames`    3D lifting, the vertical axis, time and the printed wheel axes, shared by the checks
-:mod:`.platform`  the platform, (2)-(5): point velocities, E, the twist layout, the row of a point
+:mod:`.platform`  the platform, (1)-(5): the velocity of C, E, the twist layout, the row of a point
 :mod:`.wheel`     one wheel, (6)-(12): rolling disk, steering composition, offset and centred wheels
 :mod:`.dual`      the dual wheel, (13)-(19): no slip, the turning rate, its integral and the average
 ================  ================================================================================================
@@ -20,7 +20,7 @@ what the chapter derived.  The checks, by equation group:
 
 from .dual import dual_average, dual_average_angle, dual_integrated, dual_no_slip, dual_steering
 from .frames import k, lift, planar, time
-from .platform import platform_point, platform_row, skew_matrix, twist_layout
+from .platform import centre_velocity, platform_point, platform_row, skew_matrix, twist_layout
 from .wheel import centred_wheel, offset_in_body, offset_wheel, rolling_disk, steering_composition, wheel_frame
 
 __all__ = [
@@ -28,6 +28,7 @@ __all__ = [
     "lift",
     "planar",
     "time",
+    "centre_velocity",
     "platform_point",
     "skew_matrix",
     "twist_layout",

@@ -1,4 +1,4 @@
-r"""The platform, (2)-(5): point velocities, E, the twist layout, the row of a point.
+r"""The platform, (1)-(5): the velocity of C in two bases, point velocities, E, the twist layout, the row of a point.
 
 Chapter 1's checks live in :mod:`edition.checks.wheels`; this module holds one group of them.  Each check
 takes what the chapter derived and compares it with the printed form and the package.
@@ -20,7 +20,67 @@ from ...transcription import printed
 from ...verify import SEED, max_residual, symbolic_equal
 from .. import Derivation, equation, require
 
-__all__ = ["platform_point", "skew_matrix", "twist_layout", "platform_row"]
+__all__ = ["centre_velocity", "platform_point", "skew_matrix", "twist_layout", "platform_row"]
+
+
+def centre_velocity(i_B, j_B, n=500, seed=SEED):
+    r"""(1): the velocity of C in body and in fixed components,
+    :math:`\dot x\,\mathbf i + \dot y\,\mathbf j = \dot X\,\mathbf i_{\mathcal F} + \dot Y\,\mathbf j_{\mathcal F}`.
+
+    The body axes in fixed components (``i_B``, ``j_B``: derived by turning :math:`\mathbf i_{\mathcal F}`,
+    :math:`\mathbf j_{\mathcal F}` about :math:`\mathbf k` by :math:`\psi`) define the body components
+    :math:`\dot x = \dot{\mathbf c}\cdot\mathbf i`, :math:`\dot y = \dot{\mathbf c}\cdot\mathbf j` of
+    :math:`\dot{\mathbf c} = [\dot X\ \dot Y]^{\mathrm T}`; the printed identity holds when
+    :math:`\dot x\,\mathbf i + \dot y\,\mathbf j`, with those components, is :math:`\dot{\mathbf c}` again.
+
+    Parameters
+    ----------
+    i_B, j_B : sympy.Matrix (2, 1)
+        The body axes in fixed-frame components, functions of ``S.psi``.
+    n : int
+        Random poses and velocities for the check of the package's body-to-fixed map.
+    seed : int
+
+    Returns
+    -------
+    Derivation
+        ``body`` (the body components :math:`[\dot x\ \dot y]` of :math:`\dot{\mathbf c}`), finding (1).
+    """
+    P = printed(1)
+    i_B, j_B = sp.Matrix(i_B), sp.Matrix(j_B)
+    c_F = sp.Matrix([S.X_dot, S.Y_dot])
+    body = sp.Matrix([c_F.dot(i_B), c_F.dot(j_B)])
+    require(
+        symbolic_equal(sp.Matrix([[i_B.dot(i_B), i_B.dot(j_B)], [j_B.dot(i_B), j_B.dot(j_B)]]), sp.eye(2))
+        and sp.simplify(i_B[0] * j_B[1] - i_B[1] * j_B[0]) == 1,
+        "the derived body axes are orthonormal and right-handed (i x j = k)",
+    )
+    subs = {S.x_dot: body[0], S.y_dot: body[1]}
+    lhs, rhs = P.expr.lhs.subs(subs), P.expr.rhs
+    holds = symbolic_equal(lhs, rhs) and symbolic_equal(i_B * body[0] + j_B * body[1], c_F)
+    res = max_residual(lhs, rhs)
+    # the package's map from body to fixed components (the pose rates of wmr.simulate: R(psi) [x_dot y_dot])
+    rng = np.random.default_rng(seed)
+    psi, v = rng.uniform(-np.pi, np.pi, n), rng.uniform(-2, 2, (n, 2))
+    f = sp.lambdify([S.psi, S.x_dot, S.y_dot], i_B * S.x_dot + j_B * S.y_dot, "numpy")
+    num = float(np.abs(np.einsum("nij,nj->ni", rotation(psi), v) - np.moveaxis(f(psi, *v.T)[:, 0], 0, -1)).max())
+    require(num < TOL, "wmr.rotation(psi) maps body components to fixed components as the derived axes do")
+    return Derivation(
+        body=body,
+        findings=[
+            equation(
+                1,
+                holds,
+                r"with $\mathbf i$, $\mathbf j$ the fixed axes turned by $\psi$ about $\mathbf k$ and "
+                r"$\dot x = \dot{\mathbf c}\cdot\mathbf i$, $\dot y = \dot{\mathbf c}\cdot\mathbf j$, "
+                r"$\dot x\,\mathbf i + \dot y\,\mathbf j = \dot X\,\mathbf i_{\mathcal F} + \dot Y\,\mathbf j_{\mathcal F}$ "
+                rf"(SymPy); `wmr.rotation` maps body to fixed components alike at {n} random poses",
+                max(res, num),
+                convention=r"$\psi$ the angle from $\mathbf i_{\mathcal F}$ to $\mathbf i$, counter-clockwise positive; "
+                r"$(\dot x, \dot y)$ body components, $(\dot X, \dot Y)$ fixed components of one vector",
+            )
+        ],
+    )
 
 
 def platform_point(p_dot, n=500, seed=SEED):

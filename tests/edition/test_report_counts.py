@@ -1,0 +1,143 @@
+"""Every count the PDF states about the singular families and the independent problems is a cell of the computed
+table (issue 30): the text is read from build/report.pdf (pdftotext), the counts from edition.families.count_table
+over figures/singularities.csv and from edition.problems.tally over figures/ledger.csv.
+
+Each rule is also run on a small text that breaks it, so that it can fail."""
+
+from __future__ import annotations
+
+import csv
+import re
+import shutil
+import subprocess
+import unicodedata
+
+import pytest
+from test_report import BUILD, HAVE_TEX, TREE, make
+
+from edition.families import count_table
+from edition.problems import tally
+
+HAVE_POPPLER = bool(shutil.which("pdftotext"))
+
+_NUMBER = "none no one two three four five six seven eight nine ten eleven twelve".split()
+_N = r"(none|no|one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve|\d+)"
+
+
+def number(word: str) -> int:
+    w = word.lower()
+    if w.isdigit():
+        return int(w)
+    return 0 if w in ("none", "no") else _NUMBER.index(w) - 1
+
+
+def prose(text: str) -> str:
+    """The PDF text as running prose: hyphenation at line ends undone, whitespace collapsed."""
+    text = unicodedata.normalize("NFKC", text)
+    text = re.sub(r"(\w)-\n\s*(\w)", r"\1\2", text)
+    return re.sub(r"\s+", " ", text)
+
+
+def family_counts_stated(text: str) -> dict[str, list]:
+    """What a text states about the singular families: (covered, missed) pairs, missed counts, family totals."""
+    t = prose(text)
+    pairs = [(number(a), number(b)) for a, b in re.findall(rf"covers {_N} and misses {_N}\b", t, re.I)]
+    missed = [number(a) for a in re.findall(rf"misses {_N}\b(?! *(?:of|and|\w+ing))", t, re.I)]
+    missed += [
+        number(a) for a in re.findall(rf"\b{_N} (?:of them )?(?:that |which )?the (?:paper|list) misses", t, re.I)
+    ]
+    totals = [number(a) for a in re.findall(rf"finds {_N} famil", t, re.I)]
+    upto = re.findall(r"right up to item \(i\)|including one the paper misses", t, re.I)
+    return {"pairs": pairs, "missed": missed, "totals": totals, "unqualified": upto}
+
+
+def family_count_errors(text: str, table: list[dict]) -> list[str]:
+    stated = family_counts_stated(text)
+    cells = {(t["covered"], t["missed"]) for t in table}
+    bad = [f"covers/misses {p}: not a cell of the table {sorted(cells)}" for p in stated["pairs"] if p not in cells]
+    bad += [f"misses {m}: no reading gives it" for m in stated["missed"] if m not in {t["missed"] for t in table}]
+    bad += [
+        f"{n} families: the catalogue has {table[0]['families']}" for n in stated["totals"] if n != table[0]["families"]
+    ]
+    bad += [f"a count without its reading: {u!r}" for u in stated["unqualified"]]
+    missing = cells - set(stated["pairs"])
+    bad += [f"the reading with covered/missed {m} is never stated" for m in sorted(missing)]
+    return bad
+
+
+def problem_count_errors(text: str, t: dict) -> list[str]:
+    p = prose(text)
+    bad = []
+    # case-sensitive: the prose says "independent problems"; a heading "Independent problems" after a folio is no count
+    for a in re.findall(rf"\b{_N} independent problems?\b", p):
+        if number(a) != t["problems"]:
+            bad.append(f"{a} independent problems: computed {t['problems']}")
+    for a in re.findall(rf"\b{_N} of substance\b", p, re.I):
+        if number(a) != t["wrong"]:
+            bad.append(f"{a} of substance: computed {t['wrong']}")
+    if not re.search(rf"\b{_N} independent problems?\b", p):
+        bad.append("the number of independent problems is never stated")
+    return bad
+
+
+# ----------------------------------------------------------------------------- the rules can fail
+TABLE = [
+    {"covered": 7, "missed": 3, "families": 10},
+    {"covered": 10, "missed": 0, "families": 10},
+    {"covered": 4, "missed": 3, "families": 7},
+    {"covered": 7, "missed": 0, "families": 7},
+]
+GOOD = (
+    "finds ten families; it covers seven and misses three when, and covers ten and misses none when it may; "
+    "counting only, it covers four and misses three, and covers seven and misses none when it may."
+)
+
+
+def test_the_rules_can_fail():
+    assert family_count_errors(GOOD, TABLE) == []
+    assert family_count_errors(GOOD + " The list covers seven of them and misses two.", TABLE)
+    assert family_count_errors(GOOD.replace("ten families", "eleven families"), TABLE)
+    assert family_count_errors(GOOD + " The list is right up to item (i).", TABLE)
+    assert family_count_errors(GOOD + " including one the paper misses", TABLE)
+    assert family_count_errors("finds ten families; it covers seven and misses three", TABLE)  # readings unstated
+    t = {"problems": 13, "wrong": 9}
+    assert problem_count_errors("they are 13 independent problems: nine of substance", t) == []
+    assert problem_count_errors("they are twelve independent problems: nine of substance", t)
+    assert problem_count_errors("13 independent problems: eight of sub-\nstance", t)
+    assert problem_count_errors("no count here", t)
+    assert problem_count_errors("13 independent problems; nine of substance. 12 Independent problems", t) == []
+
+
+# ----------------------------------------------------------------------------- the report
+@pytest.fixture(scope="module")
+def pdf_text():
+    if not (HAVE_TEX and HAVE_POPPLER):
+        pytest.skip("xelatex, pandoc or poppler missing")
+    make(str(BUILD / "report.pdf"))
+    return subprocess.run(
+        ["pdftotext", str(BUILD / "report.pdf"), "-"], capture_output=True, text=True, check=True
+    ).stdout
+
+
+def _csv(name):
+    with open(TREE / "figures" / name, newline="", encoding="utf-8") as f:
+        return list(csv.DictReader(f))
+
+
+def test_every_family_count_in_the_pdf_is_a_cell_of_the_computed_table(pdf_text):
+    table = count_table(_csv("singularities.csv"))
+    bad = family_count_errors(pdf_text, table)
+    assert not bad, f"{len(bad)} family counts that disagree with the computed table: {bad[:12]}"
+
+
+def test_every_problem_count_in_the_pdf_is_the_computed_one(pdf_text):
+    bad = problem_count_errors(pdf_text, tally(_csv("ledger.csv")))
+    assert not bad, f"{len(bad)} counts of independent problems that disagree with edition.problems: {bad[:12]}"
+
+
+def test_every_scoped_verdict_carries_its_label_in_the_pdf(pdf_text):
+    text = prose(pdf_text)
+    rows = [r for r in _csv("ledger.csv") if r.get("scope")]
+    assert {r["scope"].split(":")[0] for r in rows} >= {"presupposition fails", "terminology", "special case"}
+    bad = [r["id"] for r in rows if f"{r['verdict']} ({r['scope'].split(':')[0]})" not in text]
+    assert not bad, f"verdicts shown without the label of their scope: {bad}"
