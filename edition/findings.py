@@ -161,12 +161,13 @@ def _program(command):
 
 
 def _os():
-    """The operating system: its release name (``/etc/os-release``) and the kernel."""
+    """The operating system: its release name (``/etc/os-release``) and kind (not the kernel's release, which
+    differs from machine to machine of one kind and would make two builds of one commit differ)."""
     try:
         name = platform.freedesktop_os_release().get("PRETTY_NAME", "")
     except OSError:
         name = ""
-    return ", ".join(filter(None, (name, f"{platform.system()} {platform.release()}")))
+    return ", ".join(filter(None, (name, f"{platform.system()} {platform.machine()}")))
 
 
 def _package():
