@@ -242,7 +242,7 @@ def _repository(root):
 
     cff = Path(root) / "CITATION.cff"
     if cff.exists():
-        import yaml  # type: ignore[import-untyped]
+        import yaml
 
         meta = yaml.safe_load(cff.read_text(encoding="utf-8")) or {}
         if meta.get("repository-code") or meta.get("url"):

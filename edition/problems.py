@@ -148,7 +148,7 @@ def problems(ledger, transcription=None):
 
     for a, b, _ in found:
         parent[root(b)] = root(a)
-    groups = {}
+    groups: dict[str, list] = {}
     for r in failing:
         groups.setdefault(root(r["id"]), []).append(r)
     out = []

@@ -65,7 +65,7 @@ def _figure_link(keys: list[str], figures: dict[str, dict[str, Any]]) -> str:
 
 def chapter_cells(nb, figures: dict[str, dict[str, Any]]) -> list:
     """The cells of one executed derivation chapter, as the report shows them (consecutive figure cells: one line)."""
-    out = []
+    out: list = []
     for c in nb.cells:
         tags = set(c.get("metadata", {}).get("tags", []))
         if tags & DROP_TAGS:
