@@ -85,6 +85,7 @@ def equation(
     convention="",
     note="",
     scope="",
+    overturn="",
 ):
     r"""A :class:`~edition.ledger.Finding` for a numbered equation, its ``check`` text built from what was shown.
 
@@ -100,7 +101,7 @@ def equation(
         Largest numerical residual of the proven form.
     refuted : str, optional
         How the printed form was refuted (a counterexample, the nonzero difference).
-    corrected, corrected_holds, severity, why, convention, note, scope
+    corrected, corrected_holds, severity, why, convention, note, scope, overturn
         As in :class:`~edition.ledger.Finding`.
 
     Returns
@@ -125,6 +126,7 @@ def equation(
         convention=convention,
         note=note,
         scope=scope,
+        overturn=overturn,
     )
 
 
@@ -142,6 +144,7 @@ def claim(
     convention="",
     note="",
     scope="",
+    overturn="",
 ):
     r"""A :class:`~edition.ledger.Finding` for a claim of the text (see :func:`equation`).
 
@@ -153,7 +156,7 @@ def claim(
     proven : str
         What was proven: the claim's own evidence when it holds, the corrected statement's otherwise.
     residual : float
-    refuted, corrected, corrected_holds, severity, why, convention, note
+    refuted, corrected, corrected_holds, severity, why, convention, note, scope, overturn
         As in :func:`equation`.
 
     Returns
@@ -174,4 +177,5 @@ def claim(
         convention=convention,
         note=note,
         scope=scope,
+        overturn=overturn,
     )

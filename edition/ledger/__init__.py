@@ -29,6 +29,9 @@ Columns (:data:`COLUMNS`):
 ``scope``
     ``"label: explanation"`` when the verdict reaches less far than its label alone says (:data:`SCOPES`:
     a presupposition that fails, a dispute of terminology, a special case), computed by the check; else empty.
+``overturn``
+    Markdown: what would overturn a ``typo`` or ``wrong`` verdict (the reading, convention or model under
+    which the printed form would hold after all); empty for ``ok``.  The report's finding cards print it.
 
 No field carries ASCII pseudo-math (``psi_dot``, ``!=``, ``<=>``, ``^T``, ``3*1``): math is
 written in ``$...$``.  That is a rule of the text, checked by the tests over the published ledger

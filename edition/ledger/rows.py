@@ -150,6 +150,7 @@ class Ledger:
             anchor=anchor(id),
             note=str(finding.note).strip(),
             scope=str(finding.scope).strip(),
+            overturn="" if verdict == "ok" else str(finding.overturn).strip(),
         )
         self.rows.append(row)
         return row

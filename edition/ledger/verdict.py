@@ -37,6 +37,7 @@ COLUMNS = (
     "anchor",
     "note",
     "scope",
+    "overturn",
 )
 KINDS = ("equation", "claim")
 VERDICTS = ("ok", "typo", "wrong")
@@ -82,6 +83,10 @@ class Finding:
     scope : str
         ``"label: explanation"`` with a label of :data:`SCOPES`, when the verdict reaches less far than its
         label alone says (computed by the check), else empty.
+    overturn : str
+        What would overturn the verdict (Markdown): the reading, convention or model under which the
+        printed form would hold after all.  Required where the printed form fails (the report's finding cards
+        print it), optional otherwise.
     """
 
     id: str
@@ -95,6 +100,7 @@ class Finding:
     convention: str = ""
     note: str = ""
     scope: str = ""
+    overturn: str = ""
 
 
 def scope_label(scope):
@@ -123,13 +129,13 @@ def grade(finding):
     Raises
     ------
     ValueError
-        When the printed form fails but no corrected form was proven, or the severity or the
-        one-line *why* is missing: the message names the row and says what the check found.
+        When the printed form fails but no corrected form was proven, or the severity, the
+        one-line *why* or what would overturn the verdict is missing: the message names the row and says what the check found.
 
     Examples
     --------
     >>> grade(Finding("42", False, "signs refuted", 0.0, corrected="d^2", corrected_holds=True,
-    ...               severity="typo", why="sign slip"))
+    ...               severity="typo", why="sign slip", overturn="a page that prints the other sign"))
     'typo'
     >>> grade(Finding("42", True, "proven", 0.0, corrected="d^2", corrected_holds=True, severity="typo"))
     'ok'
@@ -153,6 +159,8 @@ def grade(finding):
         )
     if not str(finding.why).strip():
         raise ValueError(f"{label}: the printed form is refuted but 'why' is empty")
+    if not str(finding.overturn).strip():
+        raise ValueError(f"{label}: the printed form is refuted but 'overturn' (what would overturn the verdict) is empty")
     return finding.severity
 
 

@@ -38,7 +38,17 @@ from .friction import reorient_experiment
 from .noise import noise_experiment
 from .resteer import resteer_experiment
 
-__all__ = ["COLUMNS", "EXPERIMENTS", "Outcome", "csv_text", "run_all", "write_csv"]
+__all__ = [
+    "COLUMNS",
+    "EXPERIMENTS",
+    "Outcome",
+    "csv_text",
+    "findings_markdown",
+    "read_csv",
+    "run_all",
+    "tally",
+    "write_csv",
+]
 
 #: the experiments, in the order of the chapter and the table
 EXPERIMENTS = (
@@ -51,7 +61,18 @@ EXPERIMENTS = (
     resteer_experiment,
 )
 #: the columns of physics.csv
-COLUMNS = ("experiment", "claim", "prediction", "measurement", "agreement", "verdict", "parameters")
+COLUMNS = (
+    "experiment",
+    "claim",
+    "prediction",
+    "measurement",
+    "agreement",
+    "verdict",
+    "parameters",
+    "whose",
+    "rests_on",
+    "overturn",
+)
 
 
 def run_all(params=None):
@@ -126,8 +147,35 @@ def read_csv(path):
     return rows
 
 
+def tally(rows):
+    """The physics verdicts counted apart: the paper's claims and this edition's own predictions.
+
+    Parameters
+    ----------
+    rows : list of dict
+        Rows of ``physics.csv`` (:func:`read_csv`).
+
+    Returns
+    -------
+    dict
+        ``{"paper": {"tested": n, "hold": k, "fail": n - k}, "edition": {...}}``; a verdict *holds within*
+        its error counts as holding.
+
+    Examples
+    --------
+    >>> tally([{"whose": "paper", "verdict": "holds (x)"}, {"whose": "edition", "verdict": "does not hold (y)"}])
+    {'paper': {'tested': 1, 'hold': 1, 'fail': 0}, 'edition': {'tested': 1, 'hold': 0, 'fail': 1}}
+    """
+    out = {}
+    for whose in ("paper", "edition"):
+        group = [r for r in rows if r["whose"] == whose]
+        held = sum(r["verdict"].startswith("holds") for r in group)
+        out[whose] = {"tested": len(group), "hold": held, "fail": len(group) - held}
+    return out
+
+
 def findings_markdown(path):
-    """The report's findings on the physical claims: a Markdown section made from a published ``physics.csv``.
+    """Part I's physics verdicts: the counts, the paper's claims and this edition's own apart, and a table.
 
     Parameters
     ----------
@@ -137,21 +185,32 @@ def findings_markdown(path):
     Returns
     -------
     str
-        A heading, one sentence of counts and a table (claim, verdict and criterion, prediction, measurement).
+        Markdown: one paragraph of counts and of what every physics verdict rests on, and a table (experiment,
+        whose claim, verdict with its criterion, what the verdict rests on).  The finding cards
+        (:func:`edition.cards.physics_card`) give the parameters and what would overturn each.
     """
     rows = read_csv(path)
-    fails = [r for r in rows if r["verdict"].startswith("does not hold")]
+    t = tally(rows)
 
     def cell(text):
         return text.replace("|", "\\|").replace("\n", " ")
 
+    def verb(n):
+        return "holds" if n == 1 else "hold"
+
+    p, e = t["paper"], t["edition"]
     head = (
-        f"# Physical claims in a physics engine\n\nChapter 9 puts {len(rows)} of the paper's claims about real "
-        f"robots to MuJoCo: {len(rows) - len(fails)} hold, {len(fails)} do not "
-        f"({', '.join(r['experiment'] for r in fails) or 'none'}).\n\n"
+        f"Chapter 9 runs {len(rows)} experiments in the physics engine MuJoCo. Of the {p['tested']} claims of the "
+        f"paper tested there, {p['hold']} {verb(p['hold'])} and {p['fail']} {'does' if p['fail'] == 1 else 'do'} "
+        f"not; of the {e['tested']} predictions of this edition's own tested there (counted apart: not claims of "
+        f"the paper), {e['hold']} {verb(e['hold'])} and {e['fail']} {'does' if e['fail'] == 1 else 'do'} not. "
+        "Every physics verdict rests on MuJoCo's contact model and on the parameters of its run, unlike the "
+        "kinematic verdicts, which are proven: the table says what each turns on, and the finding cards give the "
+        "parameters and what would overturn it.\n\n"
     )
-    table = "| claim | verdict | prediction (wmr) | measurement (MuJoCo) |\n|---|---|---|---|\n" + "".join(
-        f"| {cell(r['claim'])} | {cell(r['verdict'])} | {cell(r['prediction'])} | {cell(r['measurement'])} |\n"
+    table = "| Experiment | Whose claim | Verdict | What it rests on |\n|---|---|---|---|\n" + "".join(
+        f"| {r['experiment'].replace('-', ' ')} | "
+        f"{'the paper' if r['whose'] == 'paper' else 'this edition'} | {cell(r['verdict'])} | {cell(r['rests_on'])} |\n"
         for r in rows
     )
     return head + table

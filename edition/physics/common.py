@@ -61,7 +61,8 @@ class Outcome:
     title : str
         What is tested, in a few words.
     section : str
-        Where the paper states the claim.
+        Where the paper states the claim; for a prediction of this edition's own (not a claim of the
+        paper), the chapter that makes it, starting ``"Chapter"``.
     claim : str
         The claim, in the paper's words where possible.
     prediction : str
@@ -76,6 +77,12 @@ class Outcome:
         The stated criterion of the verdict.
     parameters : str
         Robot, friction, servo and run parameters of the measurement.
+    rests_on : str
+        The modelling choice the verdict turns on (the contact model, a servo limit, an identity of linear
+        algebra), in words: what a reader must accept for the verdict to stand.
+    overturn : str
+        What would overturn the verdict: the measurement, under another model or parameters, that would fail
+        (or meet) the criterion.
     data : dict
         Arrays for the figure (not in the table).
     """
@@ -90,7 +97,19 @@ class Outcome:
     verdict: str
     criterion: str
     parameters: str
+    rests_on: str
+    overturn: str
     data: dict = field(default_factory=dict, repr=False, compare=False)
+
+    def __post_init__(self):
+        for name in ("rests_on", "overturn"):
+            if not str(getattr(self, name)).strip():
+                raise ValueError(f"experiment {self.key!r}: {name} is empty (every verdict states what it rests on)")
+
+    @property
+    def whose(self):
+        """``"paper"`` for a claim of the paper, ``"edition"`` for a prediction of this edition's own."""
+        return "edition" if self.section.lower().startswith("chapter") else "paper"
 
     def row(self):
         """The row of ``physics.csv``: dict of str."""
@@ -102,6 +121,9 @@ class Outcome:
             "agreement": self.agreement,
             "verdict": f"{self.verdict} ({self.criterion})",
             "parameters": self.parameters,
+            "whose": self.whose,
+            "rests_on": self.rests_on,
+            "overturn": self.overturn,
         }
 
 

@@ -110,6 +110,10 @@ def steering_experiment(params=None, twist=TWIST, off=OFF, seconds=3.0):
         HOLDS if holds else FAILS,
         "coordinated slip <= 1/10 of incompatible; incompatible fight >= 3 x coordinated",
         parameters(robot, params, twist=twist_text(twist), averaged=f"t = 1 to {seconds:g} s"),
+        rests_on="MuJoCo's friction cone (elliptic, the coefficients of the run) and its soft contacts, which creep a "
+        "little under static friction; the drive servos' torque limit bounds how hard the wheels fight",
+        overturn="a friction model under which coordinated steering also slips by more than a tenth of the "
+        "incompatible slip, or incompatible wheels stop fighting (not run here)",
         data=out | {"twist": twist},
     )
 
@@ -284,5 +288,10 @@ def brake_experiment(params=None, directions=DIRECTIONS):
             moving="C faster than 5 mm/s",
             drives="free (switched off), or locked (braked)",
         ),
+        rests_on="Coulomb friction at point contacts (MuJoCo's elliptic cone, the coefficients of the run); the limit "
+        "analysis assumes equal loads, and MuJoCo's soft contacts creep before they slide, so 'moves' means C "
+        "faster than 5 mm/s",
+        overturn="a contact model or load distribution under which the robot of Fig. 12a starts moving under "
+        "less than ten times the parked robot's push (not run here)",
         data=out | {"directions": np.asarray(directions, dtype=float)},
     )

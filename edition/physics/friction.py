@@ -147,6 +147,12 @@ def reorient_experiment(params=None):
             dual="b = r",
             measured="contact dissipation / steering rate, t = 1 to 3 s",
         ),
+        rests_on=f"MuJoCo's torsional friction (mu_t = {p.torsional:g} r), which resists spin about the contact "
+        "normal whether or not the wheel rolls: the dual wheel's spin resistance is a property of its tread "
+        "(width, compliance) that this contact model does not represent, so the verdict is this model's",
+        overturn="a contact that tells rolling from spinning (a finite-width or compliant tread, hydroelastic "
+        "contact; not run here) under which the dual wheel's torsional part falls below a tenth of the centred "
+        "wheel's",
         data={
             "torque": t,
             "predicted": {"centred": pred_c, "dual": pred_d},

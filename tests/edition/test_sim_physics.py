@@ -99,9 +99,13 @@ def test_doctests_and_docstrings(module):
 def test_findings_section_is_made_from_the_published_table(tmp_path):
     rows = physics.read_csv(COMMITTED)
     md = physics.findings_markdown(COMMITTED)
-    failed = [r["experiment"] for r in rows if r["verdict"].startswith(FAILS)]
-    assert f"{len(rows) - len(failed)} hold, {len(failed)} do not" in md
+    for whose in ("paper", "edition"):  # counted apart, each from the rows of its kind
+        group = [r for r in rows if r["whose"] == whose]
+        held = sum(not r["verdict"].startswith(FAILS) for r in group)
+        assert f"{len(group)} {'claims of the paper' if whose == 'paper' else 'predictions'}" in md
+        assert f"there, {held} hold" in md or f"(counted apart: not claims of the paper), {held} hold" in md
     assert md.count("\n| ") == len(rows) + 1 and all(r["verdict"].replace("|", "\\|") in md for r in rows)
+    assert all(r["rests_on"] and r["overturn"] and r["whose"] in ("paper", "edition") for r in rows)
     bad = tmp_path / "x.csv"
     bad.write_text("a,b\n1,2\n")
     with pytest.raises(ValueError, match="not a physics.csv"):

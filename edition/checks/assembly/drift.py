@@ -193,6 +193,11 @@ def drift_of_psi(a, b, c, J1, n=100, seed=SEED):
                 corrected=corrected,
                 corrected_holds=b_vanishes and paper_route and res < TOL,
                 severity="wrong",
+                overturn=(
+                    r"a reading of the division by the vector $\mathbf d_i$ that equals the corrected form for every "
+                    r"placement with $\sum_i\mathbf d_i = \mathbf 0$; the one tried, $\mathbf d_i^{\mathrm T}/\|\mathbf "
+                    r"d_i\|^2$, is off by up to the gap stated"
+                ),
                 why=r"the printed form divides a vector by a vector; multiplying (20) by "
                 r"$\dot{\mathbf c}^{\mathrm T}\mathbf E$ eliminates $\dot{\mathbf c}$, not $\dot\theta_i$",
                 convention=r"$\dot\theta_i = 0$, $\sum_i\mathbf d_i = \mathbf 0$",
@@ -285,6 +290,12 @@ def drift(row28, row29, n_locked, J2, per=2000, seed=SEED):
                 ),
                 corrected_holds=bool(locked.proven) and equal == 5 and conc == 5,
                 severity="wrong",
+                overturn=(
+                    r"a model with slip: steering servos strong enough to overcome the friction moment at the contacts "
+                    r"could scrub the wheels sideways and move the platform (a physical question, Chapter 9's jam), or "
+                    r"reading *steered without driving* as drives free to roll rather than the paper's own $\dot\theta_i ="
+                    r" 0$"
+                ),
                 why=r"the paper's *whenever*: steering without driving moves the platform only where $\det\mathbf M = 0$; "
                 r"elsewhere the wheels cannot be steered at all",
                 convention=r"steering without driving read as $\dot\theta_i = 0$ with the steering servos commanding "

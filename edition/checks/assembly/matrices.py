@@ -205,6 +205,10 @@ def functional_matrix(F, q, J1, J2, ws=(1, 2, 3, 4, 5)):
                 r"\dot{\boldsymbol\theta}\end{bmatrix} = \mathbf 0, \quad \mathbf 0 \in \mathbb R^{2w}",
                 corrected_holds=symbolic_equal(Fq, P22.expr.lhs) and dim_2w,
                 severity="typo",
+                overturn=(
+                    r"a printed page that gives the zero vector $2w$ entries (the slip is in the sentence after the "
+                    r"equation, and the extraction is the only witness of it); the equation itself holds"
+                ),
                 why="the equation holds, but the sentence after it gives the zero vector $3+2w$ entries instead of "
                 "$2w$ (one pair of no-slip equations per unit)",
                 convention=r"$\mathbf F$ is $2w\times(3+2w)$",

@@ -148,6 +148,11 @@ def printed_determinant(det_J, n=200, seed=SEED):
                 ),
                 corrected_holds=r3 and len(matches) == 1,
                 severity="typo",
+                overturn=(
+                    r"another numbering or placement of the wheels (24 were tried, and only the one stated gives the "
+                    r"printed signs), or a unit wheel radius $r = 1$ assumed without being stated: then the printed form "
+                    r"is exact"
+                ),
                 why=r"the factor $r^3$ is missing: the printed form is the determinant for $r = 1$",
                 convention=rf"wheel 1 at $L(-1, 0)$, numbered clockwise: $\mathbf d_2 = L(\tfrac12, \tfrac{{\sqrt3}}{{2}})$, "
                 rf"$\mathbf d_3 = L(\tfrac12, -\tfrac{{\sqrt3}}{{2}})$, the only one of the {len(rows)} placements "

@@ -185,6 +185,10 @@ def singular_list(det_J, n=1000, n_family=200, n_item=100, seed=SEED):
                 r"cases of (v)",
                 corrected_holds=complete,
                 severity="typo",
+                overturn=(
+                    r"reading parallel wheel planes as meeting at infinity in (v): then item (i) as printed needs no "
+                    r"correction and the list misses no family"
+                ),
                 why=r"item (i) as printed omits the wheels turned by $180^\circ$ (unless parallel planes count as meeting "
                 r"at infinity in (v)); with (v) read as admitting a mount point as $D_P$, no other family is missing",
                 convention=r"the paper's numbering of (59); 'intersect' read as meeting in one finite point, a mount "
@@ -245,6 +249,11 @@ def singular_v(thales, angles_deg=(10, 45, 100, 200, 290), n_inside=50, seed=SEE
                 "then the axles meet at the antipode of $D_P$ and the robot can turn about it (mobility 1)",
                 corrected_holds=thales and bool(np.all(mob_on == 1)) and set(mob_in.tolist()) == {0} and det_on < 1e-12,
                 severity="wrong",
+                overturn=(
+                    r"reading the paper's next sentence (the axles meet at three different locations) as a condition of "
+                    r"(v) rather than a consequence of it: that excludes $D_P$ on the circle through the $P_i$, and (v) "
+                    r"then costs all mobility"
+                ),
                 why="mobility needs concurrent axle lines, and concurrent wheel-plane lines do not exclude them",
                 convention="paper placement (mount points on a circle of radius $L$ about C)",
                 note=rf"$D_P$ at C (Fig. 12a, braking) indeed gives mobility {at_C}",

@@ -96,6 +96,10 @@ def omnidirectional(n=2000, seed=SEED):
                 r"platform at rest (type $(1, 2)$ in the classification of Campion et al.)",
                 corrected_holds=proven,
                 severity="wrong",
+                overturn=(
+                    r"the looser meaning of *omnidirectional*, travelling in any direction after re-steering: under it the"
+                    r" claim holds (the terminology scope)"
+                ),
                 why="omnidirectional means every twist executable at once, the paper's own use in Section 4.2; decoupled "
                 "steering only lets the wheels turn, one direction of motion at a time",
                 convention="omnidirectional = every platform twist executable at once from any configuration (Section 4.2)",

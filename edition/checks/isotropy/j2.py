@@ -93,6 +93,10 @@ def J2_product(JJ, ptilde, ptilde2):
                 r"r^2\end{bmatrix}",
                 corrected_holds=corrected42,
                 severity="typo",
+                overturn=(
+                    r"a printed page whose signs differ from the extraction; no real $\tilde{\mathbf p}$ has the printed "
+                    r"square, so no convention of the model does"
+                ),
                 why=r"a sign slip: the square of $\mathrm{diag}(-d, -r)$ has positive entries, as "
                 r"(43) has",
                 convention=r"$\tilde{\mathbf p} = \mathrm{diag}(-d, -r)$ as in (21)",

@@ -241,6 +241,10 @@ def placement(counterexample, G, L2, n=200, seed=SEED):
                 corrected=r"L^2 = \frac13\sum_{i=1}^{3}\mathbf d_i^{\mathrm T}\mathbf d_i",
                 corrected_holds=proven,
                 severity="wrong",
+                overturn=(
+                    r"reading (38) as a sufficient condition (a placement that makes $\mathbf J_{L1}$ isotropic), not the "
+                    r"condition (36) and (37) impose: as a sufficient condition it holds"
+                ),
                 why=r"(36) with (37) fixes only the mean of $\mathbf d_i^{\mathrm T}\mathbf d_i$: equal distances are "
                 r"sufficient, not necessary",
                 convention="C at the centroid (37)",
@@ -256,6 +260,10 @@ def placement(counterexample, G, L2, n=200, seed=SEED):
                 r"equilateral triangle is the special case with $L$ its circumradius",
                 corrected_holds=proven,
                 severity="wrong",
+                overturn=(
+                    r"reading *must* as *may*: the equilateral triangle is one placement that makes $\mathbf J_{L1}$ "
+                    r"isotropic, and as such the claim holds"
+                ),
                 why="isotropy does not need an equilateral triangle, only the centroid at C and the right $L$",
                 convention=r"isotropy of $\mathbf J_{L1}$ with the characteristic length $L$ free",
             ),

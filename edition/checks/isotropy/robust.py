@@ -152,6 +152,11 @@ def robust_control(n=100000, seed=SEED):
                 r"parallel); $\mathbf J$ is isotropic only at configurations where the robot cannot move",
                 corrected_holds=identity and bound_holds and k_about_C == sp.sqrt(2),
                 severity="wrong",
+                overturn=(
+                    r"reading *robustness* as the isotropy of the factors $\mathbf J_{L1}$ and $\mathbf J_2$ one by one "
+                    r"rather than the condition number of the composite $\mathbf J$ that (49) and (55) use: then the claim"
+                    r" holds by definition"
+                ),
                 why=r"isotropy of the factors $\mathbf J_{L1}$ and $\mathbf J_2$ does not make the composite $\mathbf J$ "
                 r"isotropic for centred wheels: it depends on $\boldsymbol\beta$ and is never better than $\sqrt2$ where "
                 r"the robot moves",

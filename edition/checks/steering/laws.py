@@ -101,6 +101,10 @@ def translation(g60, phi_true, n=2000, seed=SEED):
                 r"\text{i.e.}\quad \tan\phi_i = -\frac{\dot X}{\dot Y}",
                 corrected_holds=proven,
                 severity="wrong",
+                overturn=(
+                    r"measuring $\phi_i$ to the rolling direction $\mathbf j_i$ (the wheel's heading) rather than to the "
+                    r"axle that (6), (8) and (11) fix: then (60) holds"
+                ),
                 why=r"the printed angle is the direction of the velocity, but by (6), (8) and (11) $\phi_i$ is the angle of "
                 r"the axle $\mathbf i_i$, which must be perpendicular to it",
                 convention=r"$\phi_i = \psi + \beta_i$ is the angle of the axle $\mathbf i_i$ ((6), (8), (11)); the printed "
@@ -243,6 +247,10 @@ def rotation_angles(g, beta, g65, beta_true, n=2000, seed=SEED, eps=1e-7):
                 r"\sin\beta_i = \pm\frac{\mathbf j^{\mathrm T}\mathbf u_i}{\|\mathbf u_i\|}",
                 corrected_holds=proven,
                 severity="wrong",
+                overturn=(
+                    r"measuring $\beta_i$ from the line CU rather than from the body axis $\mathbf i$ of (11), with the "
+                    r"sign that $\arccos$ loses chosen per wheel: then (65) holds"
+                ),
                 why=r"the printed formula gives the angle between $\overrightarrow{CU}$ and $\overrightarrow{P_iU}$; with "
                 r"$\beta_i$ measured from the body axis $\mathbf i$ (11) the axle must be parallel to $\mathbf u_i$",
                 convention=r"$\beta_i$ measured from the body axis $\mathbf i$ (11); the printed form holds only if $\beta_i$ "

@@ -171,6 +171,10 @@ def dual_steering(phi_dot, rigid, i3, n=500, seed=SEED, r=0.1, b=0.08, L=0.5):
                 corrected=corrected,
                 corrected_holds=res < TOL and res_wmr < TOL,
                 severity="wrong",
+                overturn=(
+                    r"reading $\beta_i$ in (15) as the unit's absolute heading $\phi_i$, not the angle relative to the "
+                    r"platform that (11) defines: the printed form is then the corrected one"
+                ),
                 why=r"the wheel-rate difference fixes the absolute turning rate $\dot\phi_i$ of the unit, not its rate "
                 r"$\dot\beta_i$ relative to the platform; the printed form is off by $\dot\psi$",
                 convention=r"wheel 1 at $P_i + b\,\mathbf i_i$, wheel 2 at $P_i - b\,\mathbf i_i$; $\beta_i$ relative to the "
@@ -245,6 +249,10 @@ def dual_integrated(phi, phi_dot, r=0.1, b=0.08, L=0.5, steps=100):
                 corrected=r"\phi_i = \psi + \beta_i = -\frac{r}{2b}\left(\theta_{i1} - \theta_{i2}\right)",
                 corrected_holds=corrected_ok and run.slip.max() < TOL and not jam.admissible and res < 1e-9,
                 severity="wrong",
+                overturn=(
+                    r"as (15): reading $\beta_i$ as the absolute heading $\phi_i$; (16) then holds with all angles zero "
+                    r"together"
+                ),
                 why="the integral of the printed (15), and wrong for the same reason: the wheel angles fix the absolute "
                 r"heading $\phi_i$, not $\beta_i$",
                 convention="as (15); all angles zero together",
