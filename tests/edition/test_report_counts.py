@@ -141,3 +141,79 @@ def test_every_scoped_verdict_carries_its_label_in_the_pdf(pdf_text):
     assert {r["scope"].split(":")[0] for r in rows} >= {"presupposition fails", "terminology", "special case"}
     bad = [r["id"] for r in rows if f"{r['verdict']} ({r['scope'].split(':')[0]})" not in text]
     assert not bad, f"verdicts shown without the label of their scope: {bad}"
+
+
+# ----------------------------------------------------------------------------- physics counts, cards, claim names
+def physics_count_errors(text: str, t: dict) -> list[str]:
+    """The physics counts a text states (the paper's claims and this edition's predictions apart) against ``t``
+    (:func:`edition.physics.tally`)."""
+    p = prose(text)
+    bad = []
+    for tested, held in re.findall(rf"Of the {_N} claims of the paper tested there, {_N} holds?", p):
+        if (number(tested), number(held)) != (t["paper"]["tested"], t["paper"]["hold"]):
+            bad.append(f"paper: {tested} tested, {held} hold; computed {t['paper']}")
+    for tested, held in re.findall(
+        rf"of the {_N} predictions? of this edition's own tested there[^,]*, {_N} holds?", p
+    ):
+        if (number(tested), number(held)) != (t["edition"]["tested"], t["edition"]["hold"]):
+            bad.append(f"edition: {tested} tested, {held} hold; computed {t['edition']}")
+    for held, tested in re.findall(rf"\b{_N} of {_N} of the paper's claims hold", p):
+        if (number(tested), number(held)) != (t["paper"]["tested"], t["paper"]["hold"]):
+            bad.append(f"chapter 9: {held} of {tested} of the paper's claims; computed {t['paper']}")
+    if not re.search(rf"Of the {_N} claims of the paper tested there", p):
+        bad.append("the physics counts are never stated")
+    return bad
+
+
+def card_errors(text: str, problems: int, experiments: list[str]) -> list[str]:
+    """Cards missing from a text: one per independent problem and one per physics experiment, each with its
+    four fields."""
+    p = prose(text)
+    bad = [f"no card for problem {k}" for k in range(1, problems + 1) if f"Problem {k}:" not in p]
+    bad += [
+        f"no card for the physics experiment {e}" for e in experiments if f"Physics: {e.replace('-', ' ')}," not in p
+    ]
+    for field in ("Claim:", "Readings:", "Depends on:", "Would overturn it:"):
+        if p.count(field) < problems + len(experiments):
+            bad.append(f"{p.count(field)} cards have the field {field!r}, {problems + len(experiments)} expected")
+    return bad
+
+
+def truncated_names(text: str) -> list[str]:
+    """Claims named by a quotation cut short: an opening quote whose text ends in an ellipsis."""
+    return re.findall(r"“[^”]{0,80}(?:…|\.\.\.)”", prose(text))
+
+
+def test_the_physics_and_card_rules_can_fail():
+    t = {"paper": {"tested": 5, "hold": 4}, "edition": {"tested": 2, "hold": 1}}
+    good = (
+        "Of the five claims of the paper tested there, four hold and one does not; of the two predictions of this "
+        "edition's own tested there (counted apart), one holds. 4 of 5 of the paper's claims hold in MuJoCo."
+    )
+    assert physics_count_errors(good, t) == []
+    assert physics_count_errors(good.replace("five claims", "six claims"), t)
+    assert physics_count_errors(good.replace("one holds", "two hold"), t)
+    assert physics_count_errors(good.replace("4 of 5", "5 of 7"), t)
+    cards = "Problem 1: x Claim: Readings: Depends on: Would overturn it: Physics: dead zone, y Claim: Readings: "
+    assert card_errors(cards + "Depends on: Would overturn it:", 1, ["dead-zone"]) == []
+    assert card_errors(cards, 1, ["dead-zone"])
+    assert card_errors(cards + "Depends on: Would overturn it:", 2, ["dead-zone"])
+    assert truncated_names("the claim “Equations (28) and (29) reveal a drift …” fails")
+    assert not truncated_names("the claim drift when steering without driving fails; “a whole quotation.”")
+
+
+def test_physics_counts_in_the_pdf_are_the_computed_ones(pdf_text):
+    from edition import physics
+
+    bad = physics_count_errors(pdf_text, physics.tally(_csv("physics.csv")))
+    assert not bad, f"physics counts that disagree with figures/physics.csv: {bad}"
+
+
+def test_every_finding_has_its_card_in_the_pdf(pdf_text):
+    bad = card_errors(pdf_text, tally(_csv("ledger.csv"))["problems"], [r["experiment"] for r in _csv("physics.csv")])
+    assert not bad, bad
+
+
+def test_no_claim_is_named_by_a_truncated_quotation(pdf_text):
+    cut = truncated_names(pdf_text)
+    assert not cut, f"claims named by quotations cut short: {cut[:5]}"
