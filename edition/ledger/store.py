@@ -111,7 +111,9 @@ def problems(rows):
         if (r["verdict"] == "ok") != (r["printed_holds"] == "yes"):
             out.append(f"row {r['id']}: verdict {r['verdict']!r} but printed_holds {r['printed_holds']!r}")
         if r["verdict"] in SEVERITIES and not (r["corrected"].strip() and r["why"].strip() and r["overturn"].strip()):
-            out.append(f"row {r['id']}: judged {r['verdict']} without a corrected form, a why and what would overturn it")
+            out.append(
+                f"row {r['id']}: judged {r['verdict']} without a corrected form, a why and what would overturn it"
+            )
         if r["scope"] and r["verdict"] not in SCOPES.get(scope_label(r["scope"]), ()):
             out.append(f"row {r['id']}: scope {r['scope'][:40]!r} cannot qualify the verdict {r['verdict']!r}")
         if r["anchor"] != anchor(r["id"]):

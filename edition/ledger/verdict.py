@@ -160,7 +160,9 @@ def grade(finding):
     if not str(finding.why).strip():
         raise ValueError(f"{label}: the printed form is refuted but 'why' is empty")
     if not str(finding.overturn).strip():
-        raise ValueError(f"{label}: the printed form is refuted but 'overturn' (what would overturn the verdict) is empty")
+        raise ValueError(
+            f"{label}: the printed form is refuted but 'overturn' (what would overturn the verdict) is empty"
+        )
     return finding.severity
 
 

@@ -147,9 +147,9 @@ def noise_experiment(params=None):
             units="turning rate times L and velocity of C, L = RMS mount distance",
         ),
         rests_on="independent encoder noise of equal size on every joint and the least-squares forward "
-        "kinematics: under them the spread of the twist error equals kappa(J) by linear algebra, so the run "
+        "kinematics: under them the spread of the twist error equals $\\kappa(\\mathbf J)$ by linear algebra, so the run "
         "checks wmr's model against MuJoCo's kinematics more than a physical effect",
         overturn="noise that is not independent or not equal across the joints (backlash, correlated slip; not "
-        "modelled here), under which the spread and kappa(J) part",
+        "modelled here), under which the spread and $\\kappa(\\mathbf J)$ part",
         data={"runs": out, "sigma": SIGMA, "holds": v == HOLDS},
     )

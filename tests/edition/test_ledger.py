@@ -18,7 +18,13 @@ def ok(id, **kw):
 
 
 def refuted(id, **kw):
-    args = dict(corrected=r"\dot\phi_i = x", corrected_holds=True, severity="wrong", why="it is off by $\\dot\\psi$")
+    args = dict(
+        corrected=r"\dot\phi_i = x",
+        corrected_holds=True,
+        severity="wrong",
+        why="it is off by $\\dot\\psi$",
+        overturn="reading $\\beta_i$ as absolute",
+    )
     args.update(kw)
     return Finding(str(id), False, "printed refuted; corrected proven", 1e-15, **args)  # type: ignore[arg-type]
 
@@ -45,6 +51,7 @@ def test_verdict_is_computed_from_the_finding():
         (dict(corrected_holds=False), ["(15)", "no corrected form was proven"]),
         (dict(severity="maybe"), ["(15)", "severity", "'maybe'"]),
         (dict(why=""), ["(15)", "why"]),
+        (dict(overturn=" "), ["(15)", "overturn"]),
     ],
 )
 def test_refuted_without_proof_fails_loudly(kw, words):
@@ -103,7 +110,17 @@ def test_bad_rows_are_rejected_with_the_reason(finding, words):
         (Finding("2", True, "J^T J = 3*1", 0.0), ["check", "^T", "*"]),
         (Finding("2", True, "ok", 0.0, convention="kappa <= 2"), ["convention", "Greek", "<="]),
         (
-            Finding("15", False, "refuted", 0.0, corrected=r"$x$", corrected_holds=True, severity="typo", why="slip"),
+            Finding(
+                "15",
+                False,
+                "refuted",
+                0.0,
+                corrected=r"$x$",
+                corrected_holds=True,
+                severity="typo",
+                why="slip",
+                overturn="a page",
+            ),
             ["corrected", "'$'"],
         ),
     ],

@@ -33,7 +33,18 @@ def test_table_has_one_row_per_experiment_and_the_columns_asked_for():
         "isotropy-noise",
         "resteer",
     ]
-    assert list(rows[0]) == ["experiment", "claim", "prediction", "measurement", "agreement", "verdict", "parameters"]
+    assert list(rows[0]) == [
+        "experiment",
+        "claim",
+        "prediction",
+        "measurement",
+        "agreement",
+        "verdict",
+        "parameters",
+        "whose",
+        "rests_on",
+        "overturn",
+    ]
     for r in rows:
         assert r["verdict"].split(" (")[0] in (HOLDS, FAILS) or r["verdict"].startswith("holds within ")
         assert all(r[k].strip() for k in r)
