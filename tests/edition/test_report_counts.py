@@ -217,3 +217,83 @@ def test_every_finding_has_its_card_in_the_pdf(pdf_text):
 def test_no_claim_is_named_by_a_truncated_quotation(pdf_text):
     cut = truncated_names(pdf_text)
     assert not cut, f"claims named by quotations cut short: {cut[:5]}"
+
+
+# ----------------------------------------------------------------------------- the verdict counts
+def verdict_counts(rows: list[dict]) -> dict[str, dict[str, int]]:
+    """Equations and claims of a ledger, counted by verdict (and in all)."""
+    out = {}
+    for kind in ("equation", "claim"):
+        group = [r for r in rows if r["kind"] == kind]
+        out[kind] = {v: sum(r["verdict"] == v for r in group) for v in ("ok", "typo", "wrong")} | {"all": len(group)}
+    return out
+
+
+def verdict_count_errors(text: str, c: dict) -> list[str]:
+    """Every sentence of a text that counts verdicts, against ``c`` (:func:`verdict_counts`); each must be found."""
+    p = prose(text)
+    e, k = c["equation"], c["claim"]
+    rules = [  # (pattern, what its numbers must be)
+        (
+            rf"Of those judged, {_N} holds? as printed, {_N} carr(?:y|ies) a typo and {_N} (?:is|are) wrong",
+            (e["ok"], e["typo"], e["wrong"]),
+        ),
+        (
+            rf"Of the {_N} claims? of its text that this edition checks by computation, {_N} holds?, {_N} holds? once "
+            rf"corrected and {_N} fails?",
+            (k["all"], k["ok"], k["typo"], k["wrong"]),
+        ),
+        (
+            rf"{_N} equations? of the paper do(?:es)? not hold as printed \({_N} typo, {_N} wrong\)",
+            (e["typo"] + e["wrong"], e["typo"], e["wrong"]),
+        ),
+        (rf"Of the {_N} such claims this edition checks by computation, {_N} (?:is|are) false", (k["all"], k["wrong"])),
+        (
+            rf"{_N} of the {_N} numbered equations judged holds? as printed, and {_N} more",
+            (e["ok"], e["all"], e["typo"]),
+        ),
+        (rf"Of the claims of its text, {_N} holds?", (k["ok"],)),
+        (rf"{_N} equations? (?:is|are) wrong", (e["wrong"],)),
+        (rf"{_N} claims? of the text fails?", (k["wrong"],)),
+        (rf"{_N} claims? holds? once", (k["typo"],)),
+        (
+            r"(\d+) numbered equations, derived and judged \((\d+) ok, (\d+) typo, (\d+) wrong",
+            (e["all"], e["ok"], e["typo"], e["wrong"]),
+        ),
+    ]
+    bad = []
+    for pattern, expected in rules:
+        found = re.findall(pattern, p, re.I)
+        if not found:
+            bad.append(f"never stated: {pattern[:50]!r}")
+        for m in found:
+            got = tuple(number(x) for x in ((m,) if isinstance(m, str) else m))
+            if got != expected:
+                bad.append(f"{pattern[:40]!r}: stated {got}, computed {expected}")
+    for n, ok, typo, wrong in re.findall(r"\b(\d+): (\d+) ok, (\d+) typo, (\d+) wrong", p):  # the table of counts
+        if (int(n), int(ok), int(typo), int(wrong)) not in {
+            tuple(x[v] for v in ("all", "ok", "typo", "wrong")) for x in (e, k)
+        }:
+            bad.append(f"table cell {n}: {ok} ok, {typo} typo, {wrong} wrong: not a computed count")
+    return bad
+
+
+def test_the_verdict_count_rule_can_fail():
+    c = {"equation": {"ok": 2, "typo": 1, "wrong": 1, "all": 4}, "claim": {"ok": 1, "typo": 0, "wrong": 1, "all": 2}}
+    good = (
+        "Of those judged, two hold as printed, one carries a typo and one is wrong. Of the two claims of its text "
+        "that this edition checks by computation, one holds, no holds once corrected and one fails. Two equations of "
+        "the paper do not hold as printed (one typo, one wrong). Of the two such claims this edition checks by "
+        "computation, one is false. Two of the four numbered equations judged hold as printed, and one more. Of the "
+        "claims of its text, one holds. One equation is wrong. One claim of the text fails. No claims hold once. "
+        "4 numbered equations, derived and judged (2 ok, 1 typo, 1 wrong; 4: 2 ok, 1 typo, 1 wrong"
+    )
+    assert verdict_count_errors(good, c) == []
+    assert verdict_count_errors(good.replace("One equation is wrong", "Two equations are wrong"), c)
+    assert verdict_count_errors(good.replace("4: 2 ok", "4: 3 ok"), c)
+    assert verdict_count_errors(good.replace("Of the claims of its text, one holds.", ""), c)
+
+
+def test_every_verdict_count_in_the_pdf_is_the_ledgers(pdf_text):
+    bad = verdict_count_errors(pdf_text, verdict_counts(_csv("ledger.csv")))
+    assert not bad, f"{len(bad)} verdict counts that disagree with figures/ledger.csv: {bad[:10]}"
