@@ -82,11 +82,16 @@ def problem_card(number, rows, readings, inferred, name):
     - *Verdict:* *typo*: a sign slip.
     - *Readings:* the printed form as transcribed; no convention beyond the paper's stated ones.
     - *Depends on:* the paper's kinematic model (its Section 2): rigid bodies, ideal joints, thin wheels rolling
-      without slip at a point contact on a plane; (42): exact algebra (SymPy) and a numerical check (largest
+      without slip at a point contact on a plane; exact algebra (SymPy) and a numerical check (largest
       residual 0).
-    - *Would overturn it:* (42): a page with the other sign.
+    - *Would overturn it:* a page with the other sign.
     """
     names = [name(r) for r in rows]
+    plural = len(rows) > 1
+
+    def who(n):  # a field's owner, named only where a card merges several rows
+        return f"{n}, " if plural else ""
+
     sections = ", ".join(
         dict.fromkeys(
             f"§{s.strip()}" if s.strip()[:1].isdigit() else s.strip() for r in rows for s in r["section"].split(",")
@@ -102,18 +107,21 @@ def problem_card(number, rows, readings, inferred, name):
     reads = []
     for r, n in zip(rows, names):
         if r["id"] in readings:
-            reads.append(f"{n}, extracted text: {_sentence(readings[r['id']])}")
+            reads.append(f"{who(n)}extracted text: {_sentence(readings[r['id']])}")
         if r["id"] in inferred:
-            reads.append(f"{n}, convention inferred (not stated in the paper): {_sentence(inferred[r['id']])}")
+            reads.append(f"{who(n)}convention inferred (not stated in the paper): {_sentence(inferred[r['id']])}")
         if r["convention"]:
-            reads.append(f"{n}, convention: {_sentence(r['convention'])}")
+            reads.append(f"{who(n)}convention: {_sentence(r['convention'])}")
         if r["scope"]:
             label, _, text = r["scope"].partition(":")
-            reads.append(f"{n}, scope ({label.strip()}): {_sentence(text)}")
-    plural = len(rows) > 1
-    why = "; ".join(f"{n}: {_sentence(r['why'])}" if plural else _sentence(r["why"]) for r, n in zip(rows, names))
-    depends = "; ".join(f"{n}: {evidence(r)}" for r, n in zip(rows, names))
-    overturn = "; ".join(f"{n}: {_sentence(r['overturn'])}" for r, n in zip(rows, names))
+            reads.append(f"{who(n)}scope ({label.strip()}): {_sentence(text)}")
+
+    def each(field):  # one field of every row, named by its row where the card merges several
+        return "; ".join(f"{n}: {field(r)}" if plural else field(r) for r, n in zip(rows, names))
+
+    why = each(lambda r: _sentence(r["why"]))
+    depends = each(evidence)
+    overturn = each(lambda r: _sentence(r["overturn"]))
     return (
         f"**Problem {number}: {', '.join(names)}**, paper {sections}, *{verdict}*\n\n"
         f"- *Claim:* {'; '.join(claims)}.\n"
