@@ -34,12 +34,14 @@ from .common import (
     verdict,
 )
 
-__all__ = ["GENERIC", "dead_zone_experiment", "jam_experiment", "turn_locked"]
+__all__ = ["GENERIC", "JAM_TURN", "dead_zone_experiment", "jam_experiment", "turn_locked"]
 
 #: steering angles at which the arm lines of the paper's offset robot are neither concurrent nor parallel (deg)
 GENERIC = (20.0, 75.0, 140.0)
 #: one full turn of every steering servo takes this long (s)
 TURN = 4.0
+#: The largest part of the commanded turn a jammed robot makes (the jam's criterion; exercise 9.1 uses it too)
+JAM_TURN = 0.02
 
 
 def turn_locked(robot, beta0, seconds=TURN, params=None):
@@ -177,7 +179,7 @@ def jam_experiment(params=None, generic=GENERIC):
     g, e = out["generic"], out["equal"]
     p = params or Params()
     scrub = p.sliding * d / 3 / SIZE["r"]  # mu N d in units of W r, N = W / 3 on each of three wheels
-    jam = g["travel"] <= 0.02 and g["moved"] <= 0.10 and g["torque"] >= 0.95
+    jam = g["travel"] <= JAM_TURN and g["moved"] <= 0.10 and g["torque"] >= 0.95
     free = e["travel"] >= 0.98
     v = HOLDS if jam and free else FAILS
     angles = ", ".join(f"{a:g}" for a in generic)
@@ -194,7 +196,7 @@ def jam_experiment(params=None, generic=GENERIC):
         f"{pct(e['torque'])} of its limit",
         f"generic angles stall at the torque limit ({pct(g['torque'])}) with {pct(g['travel'])} of the turn made",
         v,
-        "generic: turn <= 2 %, C moved <= 10 % of d, torque >= 95 % of the limit; equal: turn >= 98 %",
+        f"generic: turn <= {pct(JAM_TURN)}, C moved <= 10 % of d, torque >= 95 % of the limit; equal: turn >= 98 %",
         parameters(robot, params, turn=f"2 pi in {TURN:g} s, drives locked", generic=f"beta = ({angles}) deg"),
         rests_on=f"the steering servos' torque limit, {p.steer_torque:g} W r, below the friction moment "
         f"mu N d = {fmt(scrub, 2)} W r that dragging a wheel sideways about its pivot needs (mu = {p.sliding:g}, "

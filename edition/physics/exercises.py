@@ -27,9 +27,9 @@ from ..checks.assembly.locked import locked_system
 from ..exercises import Feedback
 from .common import fmt, paper, pct
 from .contact import weakest_push
-from .drift import turn_locked
+from .drift import JAM_TURN, turn_locked
 
-__all__ = ["braking_angles", "describe_robot", "jamming_angles"]
+__all__ = ["JAM_TURN", "braking_angles", "describe_robot", "jamming_angles"]
 
 
 def _angles(beta_deg, w):
@@ -48,7 +48,9 @@ def jamming_angles(beta_deg):
 
     Checked by the rank of the locked-drive system :math:`\mathbf M(\boldsymbol\beta)` and by MuJoCo: the
     steering servos are commanded one full turn in 4 s with the drives locked
-    (:func:`~edition.physics.drift.turn_locked`).
+    (:func:`~edition.physics.drift.turn_locked`).  The answer is right only when both agree: rank 6 and at
+    most :data:`JAM_TURN` of the turn made.  Rank 6 next to a singular configuration, where MuJoCo's soft
+    contacts let the servos turn, is told so (with a hint when the angles look like radians).
 
     Parameters
     ----------
@@ -81,10 +83,23 @@ def jamming_angles(beta_deg):
     rec = turn_locked(robot, beta)
     turned = float(np.abs(rec.beta[-1] - rec.beta[0]).max()) / (2 * np.pi)
     moved = np.linalg.norm(rec.pose[-1, 1:] - rec.pose[0, 1:])
+    if turned > JAM_TURN:  # the rigid model says jam, the physics engine says it steers: never call that right
+        hint = (
+            " These angles are all within $\\pm 2\\pi$: if you typed radians, give degrees."
+            if np.all(np.abs(np.asarray(beta_deg, dtype=float)) <= 2 * np.pi)
+            else ""
+        )
+        return Feedback(
+            False,
+            f"rank M = 6 in the rigid model, but these angles are so close to a configuration where the locked robot "
+            f"can steer (arm lines nearly concurrent or parallel) that in MuJoCo the steering servos turned "
+            f"{pct(turned)} of the commanded turn (a jam turns at most {pct(JAM_TURN)}): the soft contacts give "
+            f"way. Choose angles farther from it.{hint}",
+        )
     return Feedback(
         True,
         f"rank M = 6: no motion is possible. In MuJoCo the steering servos, commanded one full turn, "
-        f"turned {pct(turned)} of it and C moved {fmt(moved * 1000)} mm.",
+        f"turned {pct(turned)} of it (a jam: at most {pct(JAM_TURN)}) and C moved {fmt(moved * 1000)} mm.",
     )
 
 
