@@ -87,12 +87,16 @@ def isotropic_placement(placement):
         return wrong("$L$ is a length: it must be positive.")
     rms = float(np.sqrt(np.mean(np.sum(pts**2, axis=1))))
     centroid = float(np.linalg.norm(pts.sum(axis=0)))
+    if TOL_3_1.coarse(pts[2], -fixed.sum(axis=0)):
+        return wrong(TOL_3_1.close("position of wheel 3"))
     if centroid > 3 * TOL_3_1.rel * size:
         return wrong(
             r"With this wheel 3, C is not the centroid of the mount points "
             r"($\sum_i\mathbf d_i \neq \mathbf 0$): the off-diagonal blocks of "
             r"$\mathbf J_{L1}^{\mathrm T}\mathbf J_{L1}$ (35) cannot vanish for any $L$."
         )
+    if TOL_3_1.coarse(L, rms):
+        return wrong(TOL_3_1.close("$L$"))
     if not TOL_3_1.accepts(L, rms):
         return wrong(
             r"Wheel 3 is right, but not $L$: (36) fixes $L^2$ as the mean squared distance of the mount "

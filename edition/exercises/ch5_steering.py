@@ -83,6 +83,16 @@ def _off(beta, expected, tol):
     return [k + 1 for k in range(3) if angle_gap([beta[k]], [expected[k]]) > tol.abs * 1.0000001]
 
 
+def _coarse(beta, expected, tol, off):
+    """True when the wheels ``off`` have their right angles (modulo pi) rounded to fewer decimals than stated."""
+    k = [w - 1 for w in off]
+    return tol.coarse(np.asarray(beta)[k], np.asarray(expected)[k], period=np.pi)
+
+
+def _angles_of(off):
+    return f"angle{'' if len(off) == 1 else 's'} of {_wheels(off)}"
+
+
 def _wheels(ks):
     return ("wheel " if len(ks) == 1 else "wheels ") + ", ".join(str(k) for k in ks)
 
@@ -102,7 +112,10 @@ def translation_angles(beta):
     """
     beta = answers.angles(beta, 3, "rad")
     twist = translation_twist()
-    off = _off(beta, steering_angles(_robot(), twist), TOL_5_1)
+    expected = steering_angles(_robot(), twist)
+    off = _off(beta, expected, TOL_5_1)
+    if off and _coarse(beta, expected, TOL_5_1, off):
+        return wrong(TOL_5_1.close(_angles_of(off)))
     if not off:
         return right(
             r"Every axle is perpendicular to the velocity and the wheels roll along it: "
@@ -137,7 +150,10 @@ def rotation_angles(beta):
     Result
     """
     beta = answers.angles(beta, 3, "rad")
-    off = _off(beta, steering_angles(_robot(), rotation_twist()), TOL_5_2)
+    expected = steering_angles(_robot(), rotation_twist())
+    off = _off(beta, expected, TOL_5_2)
+    if off and _coarse(beta, expected, TOL_5_2, off):
+        return wrong(TOL_5_2.close(_angles_of(off)))
     if not off:
         return right(
             r"Every axle points at U: $\beta_i = \operatorname{atan2}(u_{iy}, u_{ix})$ (mod $\pi$) with "

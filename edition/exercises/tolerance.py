@@ -43,12 +43,16 @@ class Tolerance:
         Absolute bound.
     digits : int
         Significant figures (relative) or decimals (absolute only) that :meth:`show` prints.
+    rounding : bool
+        True when the tolerance is stated in digits (:func:`sig_figs`, :func:`decimals`): then an answer
+        rounded to fewer digits is recognised (:meth:`coarse`).
     """
 
     statement: str
     rel: float = 0.0
     abs: float = 0.0
     digits: int = 3
+    rounding: bool = False
 
     def __post_init__(self):
         if not (self.rel >= 0 and self.abs >= 0 and self.rel + self.abs > 0):
@@ -95,6 +99,62 @@ class Tolerance:
         """
         return self.excess(value, expected) <= 1.0
 
+    def coarse(self, value, expected, period=None):
+        """True when ``value`` is the right value rounded to fewer digits than stated: a right method rounded
+        too far, which the feedback tells apart from a wrong method (:meth:`close`).
+
+        Every entry must equal ``expected`` rounded to ``k`` digits (figures for a relative tolerance, decimals
+        for an absolute one), for one ``k`` below :attr:`digits`.  Only a tolerance stated in digits
+        (:func:`sig_figs`, :func:`decimals`) has a coarse rounding; any other says False.
+
+        Parameters
+        ----------
+        value, expected : float or array_like (same shape)
+        period : float, optional
+            For angles known modulo ``period`` (e.g. :math:`\\pi` for a wheel's line): ``expected`` is first
+            moved by the multiple of ``period`` nearest ``value``.
+
+        Returns
+        -------
+        bool
+
+        Examples
+        --------
+        >>> t = sig_figs(4)
+        >>> t.coarse(0.50, 0.50332), t.coarse(0.498, 0.50332), t.coarse(0.5033, 0.50332), t.coarse(-0.49, -0.5)
+        (True, False, False, False)
+        """
+        if not self.rounding:
+            return False
+        v = np.atleast_1d(np.asarray(value, dtype=float))
+        e = np.atleast_1d(np.asarray(expected, dtype=float))
+        if period is not None:
+            e = e + np.round((v - e) / period) * period
+        if self.accepts(v, e):
+            return False  # within the stated tolerance: right, not coarse
+        for k in range(self.digits - 1, 0 if self.rel > 0 else -1, -1):
+            shown = np.array([float(f"{x:.{k - 1}e}") for x in e]) if self.rel > 0 else np.round(e, k)
+            if np.all(np.abs(v - shown) <= _EPS * np.maximum(np.abs(shown), 1.0)):
+                return True
+        return False
+
+    def close(self, what):
+        """The feedback for an answer that is :meth:`coarse`: close, outside the stated tolerance (Markdown).
+
+        Parameters
+        ----------
+        what : str
+            What was rounded too far, e.g. ``"$L$"`` or ``"angles of wheels 1, 2"``.
+
+        Returns
+        -------
+        str
+        """
+        return (
+            f"Close, but outside the stated tolerance ({self.statement}): you gave the right {what}, rounded to "
+            "fewer digits than asked. Keep more digits."
+        )
+
     def show(self, value):
         """``value`` printed (LaTeX) at the stated precision: the printed number passes :meth:`accepts`.
 
@@ -128,7 +188,7 @@ def sig_figs(n):
     """
     if isinstance(n, bool) or not isinstance(n, int) or n < 1:
         raise ValueError(f"n must be an int >= 1, got {n!r}")
-    return Tolerance(f"to {n} significant figures", rel=0.5 * 10.0 ** (1 - n), digits=n)
+    return Tolerance(f"to {n} significant figures", rel=0.5 * 10.0 ** (1 - n), digits=n, rounding=True)
 
 
 def decimals(n, unit=""):
@@ -148,7 +208,7 @@ def decimals(n, unit=""):
         raise ValueError(f"n must be an int >= 0, got {n!r}")
     places = "decimal place" if n == 1 else "decimal places"
     of = f" of {unit}" if unit else ""
-    return Tolerance(f"to {n} {places}{of}", abs=0.5 * 10.0 ** (-n), digits=n)
+    return Tolerance(f"to {n} {places}{of}", abs=0.5 * 10.0 ** (-n), digits=n, rounding=True)
 
 
 def within(statement, abs=0.0, rel=0.0):
