@@ -14,6 +14,8 @@ The robots are built here once (the chapter shows them); every expected value is
 
 from __future__ import annotations
 
+import itertools
+
 import numpy as np
 
 import wmr
@@ -32,6 +34,7 @@ __all__ = [
     "check_10_1",
     "check_10_2",
     "check_10_3",
+    "ORDER_10_3",
     "TOL_10_2",
     "TOL_10_3",
 ]
@@ -51,6 +54,11 @@ ONE_HANDED = wmr.Robot(
 
 #: 10.3: a four-module swerve drive on a 0.6 m x 0.5 m rectangle
 SWERVE = layouts.swerve(layouts.rectangle(0.6, 0.5), 0.05)
+#: 10.3: the order of the modules the answer is given in (that of :func:`wmr.io.layouts.rectangle`)
+ORDER_10_3 = (
+    ", ".join(f"{n} $({x:g}, {y:g})$" for n, (x, y) in zip(("FL", "FR", "RL", "RR"), SWERVE.mount_points))
+    + " (metres, body frame)"
+)
 
 #: the motor rates, in units of the wheel rate of the twist's speed (speed / wheel radius), must be below 1e-3
 TOL_10_2 = within("every motor rate below $10^{-3}$ of the wheel rate of the same speed", abs=1e-3)
@@ -132,8 +140,14 @@ def check_10_3(beta):
     """Exercise 10.3: the steering angles of :data:`SWERVE` for a spin about C."""
     b = answers.angles(beta, 4, "deg")
     want = wmr.steering_angles(SWERVE, _SPIN)
-    if angle_gap(b, want) <= np.radians(TOL_10_3.allowed(0.0)):
+    tol = np.radians(TOL_10_3.allowed(0.0))
+    if angle_gap(b, want) <= tol:
         return right("Every axle passes through C: the robot spins on the spot.")
+    for order in itertools.permutations(range(4)):
+        if angle_gap(b, want[list(order)]) <= tol:  # the right angles, given for the modules in another order
+            return wrong(
+                f"These are the right angles in another order of the modules. Give them in the order {ORDER_10_3}."
+            )
     basis = wmr.admissible_twists(SWERVE, b)
     if basis.shape[1] == 0:
         return wrong("The axle lines do not meet in one point: with these angles the robot cannot move at all.")

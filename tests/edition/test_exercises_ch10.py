@@ -61,6 +61,12 @@ TABLES = {
             wrong_case("trivial: all zero", [0.0, 0.0, 0.0, 0.0], says="translate, but not turn"),
             wrong_case("a translation", TRANSLATE, says="translate"),
             wrong_case("a spin about another point", OTHER_CENTRE, says="not at C"),
+            wrong_case(
+                "the spin angles in the order FR, FL, RL, RR (issue 32)",
+                SPIN[[1, 0, 2, 3]],
+                says="another order of the modules",
+                never_says="cannot move",
+            ),
             wrong_case("one wheel off by 1 degree", SPIN + [1.0, 0, 0, 0], says="cannot move at all"),
             malformed_case("three angles", SPIN[:3], says="four angles in degrees; got"),
             malformed_case("text", "45, 135, -45, -135", says="text"),

@@ -196,7 +196,10 @@ TABLES = {
             ),
             wrong_case("L = 0.4", (POINTS, 0.4), says="mean squared distance", never_says="0.503"),
             wrong_case(
-                "L rounded to 2 figures (issue 32)", (POINTS, 0.50), says="you gave the right .L., rounded", never_says="0.503"
+                "L rounded to 2 figures (issue 32)",
+                (POINTS, 0.50),
+                says="you gave the right .L., rounded",
+                never_says="0.503",
             ),
             wrong_case(
                 "centroid off", (POINTS + [[0, 0], [0, 0], [0, 0.1]], L_ISO), says="centroid", never_says="0.3, -0.5"
