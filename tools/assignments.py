@@ -15,7 +15,11 @@ tag             becomes
                 notebook holds the template and runs
 ``solution``    merged into the answer cell above
 ``check``       an autograded test cell worth the exercise's points (:func:`edition.exercises.framework.by_name`):
-                ``check_4_1(beta_4_1).require();`` shows the verdict and fails unless it passed
+                the visible check ``check_4_1(beta_4_1)`` shows the verdict (a blank answer: "no answer
+                yet") and never raises, so Run All on a released notebook runs to the end; the hidden test
+                ``check_4_1(beta_4_1).require()`` (between ``### BEGIN HIDDEN TESTS`` and
+                ``### END HIDDEN TESTS``, which nbgrader removes from the released notebook and puts back
+                when it autogrades) computes the verdict again and fails unless it passed
 ==============  ===============================================================================
 
 Every other cell is kept as it is.  The files are written only when their bytes change, with
@@ -158,7 +162,10 @@ def assignment(nb, name, points_of):
             src = "\n".join([pending[1], "### BEGIN SOLUTION", *pending[2], "### END SOLUTION"])
             sol = nbformat.v4.new_code_cell(src)
             sol.metadata.update(_meta("solution", f"{name}-{check}-answer"))
-            test = nbformat.v4.new_code_cell(f"{cell.source.strip()}.require();")  # ';': no output to grade
+            call = cell.source.strip()
+            test = nbformat.v4.new_code_cell(
+                f"{call}\n### BEGIN HIDDEN TESTS\n{call}.require();\n### END HIDDEN TESTS"  # ';': no output to grade
+            )
             test.metadata.update(_meta("test", f"{name}-{check}", float(points_of(check))))
             out += [sol, test]
             pending = None

@@ -80,6 +80,7 @@ def _round_trip(chapter: Path, course: Path, root: Path) -> dict:
         return {"chapter": name, "exercises": []}
     env = X.kernel_env(root, course / "out")
     _nbgrader(course, env, "generate_assignment", name)
+    released = _run_all(course / "release" / name / chapter.name, env)
     for student, src in (("solved", course / "source"), ("blank", course / "release")):
         (course / "submitted" / student / name).mkdir(parents=True)
         shutil.copy(src / name / chapter.name, course / "submitted" / student / name / chapter.name)
@@ -105,7 +106,32 @@ def _round_trip(chapter: Path, course: Path, root: Path) -> dict:
         }
         for gid, (s, m) in sorted(scores["solved"].items(), key=lambda kv: order.get(kv[0], len(order)))
     ]
-    return {"chapter": name, "exercises": exercises, "total": total}
+    return {"chapter": name, "exercises": exercises, "total": total, "released_runs_to_the_end": released}
+
+
+def _run_all(notebook: Path, env: dict[str, str]) -> bool | str:
+    """Run All on a released notebook, as a student would before answering: True when every cell runs, else the
+    error of the first cell that raises (its last line)."""
+    with tempfile.TemporaryDirectory(prefix="run-all-") as tmp:
+        cmd = [
+            sys.executable,
+            "-m",
+            "jupyter",
+            "nbconvert",
+            "--to",
+            "notebook",
+            "--execute",
+            str(notebook),
+            "--output-dir",
+            tmp,
+            "--ExecutePreprocessor.timeout=600",
+            "--log-level=ERROR",
+        ]
+        p = subprocess.run(cmd, cwd=notebook.parent, env=env, capture_output=True, text=True, timeout=TIMEOUT)
+    if p.returncode == 0:
+        return True
+    lines = [line for line in p.stderr.splitlines() if line.strip()]
+    return lines[-1] if lines else f"exit status {p.returncode}"
 
 
 def grade(chapter: Path, out: Path, root: Path = X.ROOT) -> bool:

@@ -54,7 +54,12 @@ from .tolerance import Tolerance, unit_hint
 __all__ = ["Exercise", "exercise", "registered", "by_name", "CHECK_MODULES"]
 
 #: the modules holding the edition's checks: :func:`registered` imports them
-CHECK_MODULES = ("edition.exercises", "edition.design_study", "edition.exercises.ch10_classes")
+CHECK_MODULES = (
+    "edition.exercises",
+    "edition.design_study",
+    "edition.exercises.ch10_classes",
+    "edition.physics.exercises",
+)
 
 _REGISTRY: dict[str, Exercise] = {}
 

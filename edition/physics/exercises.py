@@ -24,7 +24,8 @@ from wmr.analysis.linalg import rank
 from wmr.model import validation as V
 
 from ..checks.assembly.locked import locked_system
-from ..exercises import Feedback
+from ..exercises import Feedback, answers
+from ..exercises.framework import exercise
 from .common import fmt, paper, pct
 from .contact import weakest_push
 from .drift import JAM_TURN, turn_locked
@@ -32,17 +33,7 @@ from .drift import JAM_TURN, turn_locked
 __all__ = ["JAM_TURN", "braking_angles", "describe_robot", "jamming_angles"]
 
 
-def _angles(beta_deg, w):
-    """``(beta (w,) radians, None)`` or ``(None, Feedback)``."""
-    if beta_deg is None:
-        return None, Feedback(False, f"No answer yet: replace `None` by {w} steering angles in degrees.")
-    try:
-        b = np.radians(V.finite_array("beta_deg", beta_deg, last=w).reshape(w))
-    except (TypeError, ValueError) as e:
-        return None, Feedback(False, f"Give {w} angles in degrees: {e}.")
-    return b, None
-
-
+@exercise("9.1", answer="three steering angles in degrees, wheel 1 first", units={"beta_deg": "deg"})
 def jamming_angles(beta_deg):
     r"""Exercise 9.1: steering angles, not all equal, at which the paper's offset robot with its drives locked jams.
 
@@ -50,7 +41,8 @@ def jamming_angles(beta_deg):
     steering servos are commanded one full turn in 4 s with the drives locked
     (:func:`~edition.physics.drift.turn_locked`).  The answer is right only when both agree: rank 6 and at
     most :data:`JAM_TURN` of the turn made.  Rank 6 next to a singular configuration, where MuJoCo's soft
-    contacts let the servos turn, is told so (with a hint when the angles look like radians).
+    contacts let the servos turn, is told so (and the framework adds its hint when the angles look like
+    radians).
 
     Parameters
     ----------
@@ -62,9 +54,7 @@ def jamming_angles(beta_deg):
     Feedback
     """
     robot = paper("offset")
-    beta, fb = _angles(beta_deg, robot.w)
-    if fb is not None:
-        return fb
+    beta = answers.angles(beta_deg, robot.w, "deg")  # radians; a malformed answer gets the framework's one line
     cols = [c for c, n in enumerate(robot.qdot_names) if not n.startswith("theta_dot")]
     r = int(rank(locked_system(robot, beta), scale=robot.F_column_norms[cols]))
     if r < 6:
@@ -84,17 +74,12 @@ def jamming_angles(beta_deg):
     turned = float(np.abs(rec.beta[-1] - rec.beta[0]).max()) / (2 * np.pi)
     moved = np.linalg.norm(rec.pose[-1, 1:] - rec.pose[0, 1:])
     if turned > JAM_TURN:  # the rigid model says jam, the physics engine says it steers: never call that right
-        hint = (
-            " These angles are all within $\\pm 2\\pi$: if you typed radians, give degrees."
-            if np.all(np.abs(np.asarray(beta_deg, dtype=float)) <= 2 * np.pi)
-            else ""
-        )
         return Feedback(
             False,
             f"rank M = 6 in the rigid model, but these angles are so close to a configuration where the locked robot "
             f"can steer (arm lines nearly concurrent or parallel) that in MuJoCo the steering servos turned "
             f"{pct(turned)} of the commanded turn (a jam turns at most {pct(JAM_TURN)}): the soft contacts give "
-            f"way. Choose angles farther from it.{hint}",
+            "way. Choose angles farther from it.",
         )
     return Feedback(
         True,
@@ -103,6 +88,7 @@ def jamming_angles(beta_deg):
     )
 
 
+@exercise("9.2", answer="three steering angles in degrees, wheel 1 first", units={"beta_deg": "deg"})
 def braking_angles(beta_deg):
     r"""Exercise 9.2: angles other than Fig. 12a's at which the parked centred robot, drives free, resists every push.
 
@@ -120,9 +106,7 @@ def braking_angles(beta_deg):
     Feedback
     """
     robot = paper("centred")
-    beta, fb = _angles(beta_deg, robot.w)
-    if fb is not None:
-        return fb
+    beta = answers.angles(beta_deg, robot.w, "deg")
     d = robot.mount_points
     fig12a = np.arctan2(-d[:, 0], d[:, 1])
     if np.allclose(np.cos(2 * (beta - fig12a)), 1.0, atol=1e-9):

@@ -65,7 +65,9 @@ def test_the_four_cells_become_a_solution_region_and_a_graded_test():
     ]
     sol, test = nb.cells[2], nb.cells[3]
     assert sol.source == "x = None  # a number\n### BEGIN SOLUTION\nx = 2.0\n### END SOLUTION"
-    assert test.source == "check_x(x).require();" and test.metadata.nbgrader["points"] == 3.0
+    # the visible check shows the verdict and never raises; the hidden test (put back when nbgrader grades) fails
+    assert test.source == "check_x(x)\n### BEGIN HIDDEN TESTS\ncheck_x(x).require();\n### END HIDDEN TESTS"
+    assert test.metadata.nbgrader["points"] == 3.0
     assert test.metadata.nbgrader["locked"] and not sol.metadata.nbgrader["locked"]
     assert len({c.metadata.get("nbgrader", {}).get("grade_id") for c in nb.cells[1:4]}) == 3
     nbformat.validate(nb)
@@ -106,7 +108,9 @@ def test_make_assignments_writes_each_chapter_with_exercises_once(tmp_path):
             tests = [c for c in out.cells if c.metadata.get("nbgrader", {}).get("grade")]
             assert len(tests) == len(checks)
             for t in tests:
-                name = A.check_call(t.source.rstrip(";").removesuffix(".require()"), p.name)
+                visible, hidden = t.source.split("\n### BEGIN HIDDEN TESTS\n")
+                assert hidden == f"{visible}.require();\n### END HIDDEN TESTS"  # the hidden test recomputes the check
+                name = A.check_call(visible, p.name)
                 assert t.metadata.nbgrader["points"] == by_name(name).points
             assert not any("solution" in c.metadata.get("tags", []) for c in out.cells)
     assert written == expected and "source/10_robot_classes/10_robot_classes.ipynb" in written
@@ -158,6 +162,9 @@ def test_nbgrader_round_trip_full_marks_for_the_solution_and_zero_for_the_blank(
         assert (e["solved"], e["blank"]) == (e["max"], 0.0), e
     total = sum(e["max"] for e in g["exercises"])
     assert g["total"] == {"max": total, "solved": total, "blank": 0.0}  # nbgrader's own sums per submission
+    # Run All on the released notebook (hidden tests removed, answers blank) runs to the end: a student is never
+    # stopped by a traceback before the first exercise is answered
+    assert g["released_runs_to_the_end"] is True, g["released_runs_to_the_end"]
 
 
 def test_the_grades_key_changes_with_everything_the_round_trip_reads(tmp_path):

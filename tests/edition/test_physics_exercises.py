@@ -1,24 +1,44 @@
-"""Chapter 9's exercise 9.1 never says "right" when its own physics run disagrees (issue 32): the rank of the
-locked-drive system and the MuJoCo run must both say jam."""
+"""Chapter 9's exercises as answer tables (issue 32): 9.1 is right only where the rank of the locked-drive system and
+the MuJoCo run both say jam, so feedback never contradicts the physics it runs; 9.2 is the brake."""
 
 from __future__ import annotations
 
 import numpy as np
+import pytest
 
-from edition.physics.exercises import jamming_angles
+from edition.exercises.table import junk_cases, malformed_case, missing_case, right_case, verify, wrong_case
+from edition.physics.exercises import braking_angles, jamming_angles
+
+TABLE_9_1 = [
+    right_case("generic angles", [20.0, 75.0, 140.0], says="rank M = 6"),
+    right_case("the solution's", [0.0, 60.0, 150.0], says="In MuJoCo"),
+    wrong_case("all equal: the dead zone", [30.0, 30.0, 30.0], says="rank M = 5"),
+    # the right angles typed in radians: rank 6 in the rigid model, but so near parallel that MuJoCo steers
+    wrong_case(
+        "radians for degrees (issue 32)",
+        np.radians([20.0, 75.0, 140.0]).tolist(),
+        says="rank M = 6 in the rigid model",
+        never_says="no motion is possible",
+    ),
+    malformed_case("two angles", [1.0, 2.0], says="three angles in degrees"),
+    missing_case(),
+    *junk_cases(),
+]
+
+TABLE_9_2 = [
+    right_case("axle lines forming a triangle", [10.0, 50.0, 100.0], says="Mobility 0"),
+    wrong_case("all parallel", [0.0, 0.0, 0.0], says="Mobility 1"),
+    malformed_case("two angles", [1.0, 2.0], says="three angles in degrees"),
+    missing_case(),
+    *junk_cases(),
+]
 
 
-def test_no_answer_and_malformed_answers_get_a_message_not_a_traceback():
-    assert "No answer yet" in jamming_angles(None).message
-    assert "degrees" in jamming_angles([1.0, "x", 2.0]).message
-    assert not jamming_angles([1.0, 2.0]).passed
+@pytest.mark.parametrize("case", TABLE_9_1, ids=str)
+def test_9_1(case):
+    verify(jamming_angles, case)
 
 
-def test_a_jam_is_right_only_where_the_model_and_the_physics_engine_agree():
-    right = jamming_angles([20.0, 75.0, 140.0])
-    assert right.passed and "rank M = 6" in right.message
-    equal = jamming_angles([30.0, 30.0, 30.0])  # parallel arms: the dead zone, not a jam
-    assert not equal.passed and "rank M = 5" in equal.message
-    # the same angles typed in radians: rank 6 in the rigid model, but so near parallel that MuJoCo steers
-    radians = jamming_angles(np.radians([20.0, 75.0, 140.0]).tolist())
-    assert not radians.passed and "rank M = 6 in the rigid model" in radians.message and "radians" in radians.message
+@pytest.mark.parametrize("case", TABLE_9_2, ids=str)
+def test_9_2(case):
+    verify(braking_angles, case)
