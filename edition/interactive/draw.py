@@ -79,7 +79,9 @@ def draw_steering(state, fig=None):
             Line2D([], [], color=ROLE["ic"], marker="o", ls="none", label="$U$: centre of rotation"),
             Line2D([], [], color=ROLE["dp"], marker="s", ls="none", label="$D_P$: planes meet"),
         ]
-        ax.legend(handles=handles, loc="lower left", fontsize=LEGEND_PT, frameon=True, framealpha=0.9)
+        ax.legend(
+            handles=handles, loc="upper center", bbox_to_anchor=(0.5, -0.02), ncols=2, fontsize=LEGEND_PT, frameon=False
+        )
         verdict = "can move" if state.mobility > 0 else "cannot move"
         ax.set_title(rf"$\beta = ({', '.join(_deg(b) for b in state.beta)})$: the robot {verdict}", fontsize=TITLE_PT)
     return fig
@@ -118,7 +120,9 @@ def draw_mounts(state, fig=None):
             Line2D([], [], color=PALETTE["green"], ls=(0, (1, 2)), label=f"RMS distance ${state.L_rms:.3g}$"),
             Line2D([], [], color=PALETTE["vermillion"], marker="x", ls="none", label=r"centroid $\bar P$"),
         ]
-        ax.legend(handles=handles, loc="lower left", fontsize=LEGEND_PT, frameon=True, framealpha=0.9)
+        ax.legend(
+            handles=handles, loc="upper center", bbox_to_anchor=(0.5, -0.02), ncols=2, fontsize=LEGEND_PT, frameon=False
+        )
         for k, q in enumerate(p, 1):
             draw_point(ax, q, None, size=5, color=PALETTE["dark"])
             label(ax, q, f"$P_{k}$", offset=(6, 6))

@@ -19,6 +19,11 @@ SHOWN = {"dpi": 100, "colours": 48}
 _SIM, _MODEL = PALETTE["vermillion"], PALETTE["blue"]
 
 
+def _legend(ax):
+    """The panel's legend below its axes, outside the data: a legend inside would cover some of it."""
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.2), fontsize=7, frameon=False)
+
+
 def _grid(ax):
     ax.grid(True, lw=0.3, color=PALETTE["light"])
 
@@ -58,7 +63,7 @@ def draw_drift(dead, jam, fig=None):
         a.set_aspect("equal", adjustable="datalim")
         a.set_xlabel("X (mm)")
         a.set_ylabel("Y (mm)")
-        a.legend(loc="lower left", fontsize=7)
+        _legend(a)
         panel_title(a, "a", "one full turn, drives locked")
         _grid(a)
         for name, colour in (("generic", _SIM), ("equal", _MODEL)):
@@ -80,7 +85,7 @@ def draw_drift(dead, jam, fig=None):
         b.set_xlabel("t (s)")
         b.set_ylabel("steering angle turned (deg)")
         b.set_ylim(-10, 380)
-        b.legend(loc="center right", fontsize=7)
+        _legend(b)
         panel_title(b, "b", "steering with the drives locked")
         _grid(b)
     return fig
@@ -117,7 +122,7 @@ def draw_contacts(steer, brake, fig=None):
         a.set_xlabel("t (s)")
         a.set_ylabel("slip of the wheels (m/s)")
         a.set_ylim(bottom=0)
-        a.legend(loc="center right", fontsize=7)
+        _legend(a)
         panel_title(a, "a", "slip: coordinated and incompatible")
         _grid(a)
         ang = brake.data["directions"]
@@ -134,7 +139,7 @@ def draw_contacts(steer, brake, fig=None):
         b.set_xticks(range(0, 361, 60))
         b.set_xlabel("direction of the push (deg)")
         b.set_ylabel("push that moves it / weight")
-        b.legend(loc="lower right", fontsize=7)
+        _legend(b)
         panel_title(b, "b", "braking (dashed: limit analysis)")
         _grid(b)
     return fig
@@ -178,7 +183,7 @@ def draw_friction_noise(reorient, noise, fig=None):
         a.plot([0.6, 1.4], [pred["dual"]] * 2, color=PALETTE["black"], ls="--", lw=1.0)
         a.set_xticks(x, ["centred wheel", "dual wheel"])
         a.set_ylabel("torque to reorient (N m)")
-        a.legend(loc="upper left", fontsize=7)
+        _legend(a)
         panel_title(a, "a", "reorienting in place")
         _grid(a)
         runs = noise.data["runs"]
@@ -190,7 +195,7 @@ def draw_friction_noise(reorient, noise, fig=None):
             b.plot(v["kappa"], v["spread"], "o", color=colour, ms=6, label=name)
         b.set_xlabel(r"$\kappa(\mathbf{J})$ along the run")
         b.set_ylabel("spread of the twist error")
-        b.legend(loc="upper left", fontsize=7)
+        _legend(b)
         panel_title(b, "b", "encoder noise and isotropy")
         _grid(b)
     return fig
@@ -222,7 +227,7 @@ def draw_resteer(resteer, fig=None):
         a.set_aspect("equal", adjustable="datalim")
         a.set_xlabel("X (m)")
         a.set_ylabel("Y (m)")
-        a.legend(loc="upper left", fontsize=7)
+        _legend(a)
         panel_title(a, "a", "path of C")
         _grid(a)
         x = np.arange(len(rows))
@@ -230,7 +235,7 @@ def draw_resteer(resteer, fig=None):
         b.bar(x + 0.18, [v["mujoco"][1] for v in rows.values()], width=0.36, color=_SIM, label="MuJoCo")
         b.set_xticks(x, list(rows), rotation=20)
         b.set_ylabel("final path error (m)")
-        b.legend(loc="upper right", fontsize=7)
+        _legend(b)
         panel_title(b, "b", "path error by strategy")
         _grid(b)
     return fig

@@ -8,6 +8,9 @@ from __future__ import annotations
 
 import numpy as np
 from matplotlib.patches import Arc, FancyArrowPatch
+from matplotlib.path import Path
+from matplotlib.text import Annotation
+from matplotlib.transforms import Bbox, IdentityTransform
 
 from ..model.backend import NUMERIC
 from ..model.platform import rotation
@@ -15,11 +18,88 @@ from .style import FONT_LABEL, HALO, ROLE
 
 __all__ = ["label", "draw_point", "draw_arrow", "draw_frame", "draw_angle"]
 
+#: directions a label may move to, tried in this order after the one asked for (unit steps; times the offset's size)
+_DIRECTIONS = ((1, 1), (1, -1), (-1, 1), (-1, -1), (1, 0), (-1, 0), (0, 1), (0, -1))
+
+
+def _align(dx, dy):
+    """The alignment that puts a label on the side of its anchor the offset points to."""
+    ha = "left" if dx > 0 else "right" if dx < 0 else "center"
+    va = "bottom" if dy > 0 else "top" if dy < 0 else "center"
+    return ha, va
+
+
+class _ClearLabel(Annotation):
+    """A label that, when drawn, moves off the lines and arrows of its axes (an annotation of :func:`label`).
+
+    At draw time -- the axes' limits final, so every line is where it will be shown -- the label keeps the
+    offset it was given unless its box crosses a line (:class:`~matplotlib.lines.Line2D` of two or more
+    points), a marked point, an arrow or another text of its axes; then it takes the first offset of
+    :data:`_DIRECTIONS` (at the same distance, then at twice and three times it) whose box crosses none, and if none
+    is clear, the one it was given.  The
+    choice depends only on the drawing, so every format and every machine shows the same placement.
+    """
+
+    def __init__(self, *args, **kw):
+        super().__init__(*args, **kw)
+        self._asked = (tuple(self.xyann), self.get_horizontalalignment(), self.get_verticalalignment())
+
+    def _obstacles(self, renderer):
+        """What the label must not cover: the lines, marked points and arrows of its axes, and its other texts."""
+        ax = self.axes
+        paths = []
+        for line in ax.get_lines():
+            if not line.get_visible():
+                continue
+            xy = line.get_transform().transform(np.asarray(line.get_xydata(), dtype=float))
+            xy = np.round(xy[np.all(np.isfinite(xy), axis=1)], 3)
+            if line.get_linestyle() not in ("None", "none", "", " ") and len(xy) >= 2:
+                paths.append(Path(xy))
+            if line.get_marker() not in (None, "None", "none", "", " "):
+                paths += [Path(p + [[-1.0, -1.0], [1.0, 1.0]]) for p in xy]
+        for patch in ax.patches:
+            if isinstance(patch, FancyArrowPatch) and patch.get_visible():
+                paths.append(patch.get_transform().transform_path(patch.get_path()))
+        boxes = [t.get_window_extent(renderer) for t in ax.texts if t is not self and t.get_visible() and t.get_text()]
+        return paths, boxes
+
+    def _clear(self, renderer, obstacles):
+        paths, boxes = obstacles
+        bb = self.get_window_extent(renderer)
+        inner = Bbox.from_extents(bb.x0 + 1, bb.y0 + 1, bb.x1 - 1, bb.y1 - 1)
+        seen = Bbox.intersection(inner, self.axes.get_window_extent(renderer))  # the data is clipped to the axes
+        crosses = seen is not None and any(p.intersects_bbox(seen, filled=False) for p in paths)
+        return not crosses and not any(inner.overlaps(b) for b in boxes)
+
+    def draw(self, renderer):
+        if self.get_visible() and self.axes is not None:
+            (dx, dy), ha, va = self._asked
+            self.xyann = (dx, dy)
+            self.set_ha(ha)
+            self.set_va(va)
+            paths = self._obstacles(renderer)
+            if not self._clear(renderer, paths):
+                size = max(float(np.hypot(dx, dy)), 4.0)
+                for scale in (1.0, 2.0, 3.0):
+                    for ux, uy in _DIRECTIONS:
+                        n = float(np.hypot(ux, uy))
+                        self.xyann = (scale * size * ux / n, scale * size * uy / n)
+                        h, v = _align(ux, uy)
+                        self.set_ha(h)
+                        self.set_va(v)
+                        if self._clear(renderer, paths):
+                            return super().draw(renderer)
+                self.xyann = (dx, dy)
+                self.set_ha(ha)
+                self.set_va(va)
+        return super().draw(renderer)
+
 
 def label(
     ax, xy, text, *, offset=(4, 4), color=None, ha="left", va="bottom", fontsize=FONT_LABEL, zorder=9.0, halo=True, **kw
 ):
-    """A text label at ``xy`` shifted by ``offset`` points, with a white halo for legibility.
+    """A text label at ``xy`` shifted by ``offset`` points, with a white halo for legibility; when drawn it moves
+    off any line, marked point, arrow or text it would cover (``_ClearLabel``).
 
     Parameters
     ----------
@@ -44,7 +124,7 @@ def label(
     -------
     matplotlib.text.Annotation
     """
-    t = ax.annotate(
+    t = _ClearLabel(
         text,
         xy=tuple(np.asarray(xy, dtype=float)),
         xytext=offset,
@@ -56,6 +136,8 @@ def label(
         zorder=zorder,
         **kw,
     )
+    t.set_transform(IdentityTransform())  # as Axes.annotate does: the offset is in points
+    ax.add_artist(t)
     if halo:
         t.set_path_effects(HALO)
     return t
