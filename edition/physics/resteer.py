@@ -127,7 +127,7 @@ def resteer_experiment(params=None):
     return Outcome(
         "resteer",
         "swerve re-steering transients",
-        "chapter 8 (wmr.swerve.transient)",
+        "Chapter 8, its kinematic transient simulator",
         "wmr's rate-limited kinematic simulator predicts, strategy by strategy, how far a swerve's wheels slide and "
         "how far C strays when the modules re-steer",
         f"wmr.swerve.resteer_study: {listing('wmr')}",

@@ -381,6 +381,10 @@ def test_pdf_formulas_readable(pdf_path):
     assert not small, f"formulas shrunk below {MIN_FORMULA_SCALE:.0%} to fit the line (scale, page): {small}"
     missing = sorted(set(re.findall(r"Missing character: There is no (\S+)", log)))
     assert not missing, f"characters missing from the PDF's fonts: {missing}"
+    from tools.build.pdf import _OVERFULL
+
+    wide = [(w, line) for w, line in _OVERFULL.findall(log) if float(w) > 2]  # the build's own warning, as a test
+    assert not wide, f"lines wider than the text (width in pt, report.tex line): {wide}"
 
 
 def test_pdf_text_has_no_raw_tex_or_ascii_math(pdf_path):
