@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import base64
 import hashlib
+import itertools
 import os
 import re
 import shutil
@@ -99,7 +100,39 @@ def to_latex(nb) -> tuple[str, dict]:
     batch.convert()
     exp = LatexExporter(template_name="wmr_latex", extra_template_basedirs=[str(TEMPLATES)])
     body, _ = exp.from_notebook_node(prepared, resources={"wmr_paper_latex": paper})
-    return batch.fill(body), files
+    return keep_displays_with_lead_in(batch.fill(body)), files
+
+
+_STARTS_DISPLAY = re.compile(r"(?<=\S)[ \t]*\n(?:[ \t]*\n)+(?=(?:\{\\postdisplaypenalty=10000 )?\\wmrdisplay\{)")
+_DISPLAY_LINE = re.compile(r"^\\wmrdisplay\{.*\}$", re.MULTILINE)
+
+
+def keep_displays_with_lead_in(tex: str) -> str:
+    r"""No page break just before a displayed formula: it stays with what leads into it.
+
+    A display that starts its own paragraph (a blank line before ``\wmrdisplay``) gets ``\par\nopagebreak``
+    after the paragraph before it: the penalty forbids a break there, and the glue after it is no breakpoint
+    because a penalty, not a box, precedes it.  When what precedes is itself a display, TeX could still break
+    at that display's ``\postdisplaypenalty``; it is set to 10000 for that display alone.  So neither "As
+    printed:" nor a formula ends a page whose next formula opens the following one.
+
+    >>> keep_displays_with_lead_in("As printed:\n\n\\wmrdisplay{x}{6}")
+    'As printed:\\par\\nopagebreak\n\n\\wmrdisplay{x}{6}'
+    >>> print(keep_displays_with_lead_in("As printed:\n\n\\wmrdisplay{x}{6}\n\n\\wmrdisplay{y}{}"))
+    As printed:\par\nopagebreak
+    <BLANKLINE>
+    {\postdisplaypenalty=10000 \wmrdisplay{x}{6}}\par\nopagebreak
+    <BLANKLINE>
+    \wmrdisplay{y}{}
+    """
+    lines = tex.split("\n")
+    for k, line in enumerate(lines):
+        if not _DISPLAY_LINE.match(line):
+            continue
+        rest = next((x for x in itertools.islice(lines, k + 1, None) if x.strip()), "")
+        if rest.startswith("\\wmrdisplay{"):
+            lines[k] = "{\\postdisplaypenalty=10000 " + line + "}"
+    return _STARTS_DISPLAY.sub(lambda m: r"\par\nopagebreak" + "\n\n", "\n".join(lines))
 
 
 def scaled_formulas(log: str) -> list[tuple[float, str]]:
