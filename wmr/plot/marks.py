@@ -65,10 +65,11 @@ class _ClearLabel(Annotation):
 
     def _clear(self, renderer, obstacles):
         paths, boxes = obstacles
-        bb = self.get_window_extent(renderer)
+        bb, frame = self.get_window_extent(renderer), self.axes.get_window_extent(renderer)
         inner = Bbox.from_extents(bb.x0 + 1, bb.y0 + 1, bb.x1 - 1, bb.y1 - 1)
-        seen = Bbox.intersection(inner, self.axes.get_window_extent(renderer))  # the data is clipped to the axes
-        crosses = seen is not None and any(p.intersects_bbox(seen, filled=False) for p in paths)
+        if not frame.contains(inner.x0, inner.y0) or not frame.contains(inner.x1, inner.y1):
+            return False  # a label must stay inside its axes, where it is not clipped
+        crosses = any(p.intersects_bbox(inner, filled=False) for p in paths)
         return not crosses and not any(inner.overlaps(b) for b in boxes)
 
     def draw(self, renderer):
