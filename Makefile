@@ -178,11 +178,11 @@ $(B)/report.html: $(B)/report.ipynb $(TEMPLATES) $(CURDIR)/tools/mathjax.py
 $(B)/report.pdf: $(B)/report.ipynb $(TEMPLATES)
 	@$(BUILD) pdf $< $@
 
-# the student edition: nbconvert drops the cells tagged "solution" (one call for every chapter);
+# the student edition: nbconvert drops the cells tagged "solution" and "rubric" (one call for every chapter);
 # RUN=1 executes it like the chapters, to show that every exercise still runs without its solution
 $(STUDENT) &: $(LESSONS)
 	@$(VPY) -m jupyter nbconvert --log-level=WARN --to notebook --ClearOutputPreprocessor.enabled=True \
-	  --TagRemovePreprocessor.enabled=True --TagRemovePreprocessor.remove_cell_tags='["solution"]' \
+	  --TagRemovePreprocessor.enabled=True --TagRemovePreprocessor.remove_cell_tags='["solution", "rubric"]' \
 	  --output-dir $(B)/student $(LESSONS)
 
 $(B)/student-run/notebooks/%.ipynb: $(B)/student/%.ipynb FORCE

@@ -22,6 +22,12 @@ tag             becomes
                 when it autogrades) computes the verdict again and fails unless it passed
 ==============  ===============================================================================
 
+``written``     (Markdown, after a check) where the student answers a "why" question in words; with the
+                ``rubric`` cell after it (the model answer and how to mark it) it becomes one manually graded
+                answer cell worth :data:`WRITTEN_POINTS`: the instructor's copy holds the rubric, the released
+                notebook ``YOUR ANSWER HERE`` (nbgrader's ``text_stub``)
+``rubric``      merged into the written cell above (dropped from the student edition)
+
 Every other cell is kept as it is.  The files are written only when their bytes change, with
 deterministic cell ids, so a second run leaves them untouched.
 """
@@ -35,7 +41,9 @@ from pathlib import Path
 
 import nbformat
 
-ROLE_TAGS = ("exercise", "answer", "solution", "check")
+ROLE_TAGS = ("exercise", "answer", "solution", "check", "written", "rubric")
+#: points of a question answered in words (graded by hand against the rubric)
+WRITTEN_POINTS = 1.0
 CONFIG = """\
 # written by `make assignments` (tools/assignments.py)
 c = get_config()  # noqa: F821
@@ -59,7 +67,7 @@ def _role(cell, where):
     if len(roles) > 1:
         raise AssignmentError(f"{where}: a cell tagged {sorted(roles)}; an exercise cell has one of {ROLE_TAGS}")
     role = roles.pop() if roles else None
-    want = "markdown" if role == "exercise" else "code"
+    want = "markdown" if role in ("exercise", "written", "rubric") else "code"
     if role and cell.cell_type != want and not (role == "exercise" and cell.cell_type == "code"):
         raise AssignmentError(f"{where}: a {cell.cell_type} cell tagged {role!r}, expected a {want} cell")
     return role
@@ -97,11 +105,11 @@ def check_call(source, where):
 
 def _meta(kind, grade_id, points=None):
     m = {
-        "grade": kind == "test",
+        "grade": kind in ("test", "written"),
         "grade_id": grade_id,
-        "locked": kind != "solution",
+        "locked": kind not in ("solution", "written"),
         "schema_version": 3,
-        "solution": kind == "solution",
+        "solution": kind in ("solution", "written"),
         "task": False,
     }
     if points is not None:
@@ -128,7 +136,7 @@ def assignment(nb, name, points_of):
     """
     if not any(_tags(c) & {"answer", "check"} for c in nb.cells):
         return None  # no gradable exercise (only "Your own robot" cells, or none)
-    out, pending, n = [], None, 0
+    out, pending, n, last_check, written = [], None, 0, None, None
     for i, cell in enumerate(nb.cells):
         where = f"{name}, cell {i}"
         role = _role(cell, where)
@@ -144,6 +152,17 @@ def assignment(nb, name, points_of):
             if cell.cell_type == "markdown":
                 md.metadata.update(_meta("text", f"{name}-statement-{i}"))
             out.append(md)
+        elif role == "written":
+            if last_check is None:
+                raise AssignmentError(f"{where}: a written answer before any check: it follows an exercise's check")
+            written = (i, last_check)
+        elif role == "rubric":
+            if written is None:
+                raise AssignmentError(f"{where}: a rubric without a written answer cell before it")
+            manual = nbformat.v4.new_markdown_cell(cell.source)  # the instructor's copy: the model answer, the rubric
+            manual.metadata.update(_meta("written", f"{name}-{written[1]}-written", WRITTEN_POINTS))
+            out.append(manual)
+            written = None
         elif role == "answer":
             if pending is not None:
                 raise AssignmentError(f"{where}: an answer cell before the check of the answer in cell {pending[0]}")
@@ -168,9 +187,11 @@ def assignment(nb, name, points_of):
             )
             test.metadata.update(_meta("test", f"{name}-{check}", float(points_of(check))))
             out += [sol, test]
-            pending = None
+            pending, last_check = None, check
     if pending is not None:
         raise AssignmentError(f"{name}: the answer in cell {pending[0]} has no check cell after it")
+    if written is not None:
+        raise AssignmentError(f"{name}: the written answer in cell {written[0]} has no rubric cell after it")
     if not n:
         return None
     new = nbformat.v4.new_notebook(metadata=json.loads(json.dumps(nb.metadata)))

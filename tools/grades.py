@@ -10,7 +10,10 @@ it is worth and the score of each submission, as nbgrader's gradebook holds them
     {"chapter": "04_isotropy", "exercises": [{"grade_id": "04_isotropy-check_4_1", "check": "check_4_1",
      "max": 2.0, "solved": 2.0, "blank": 0.0}, ...], "total": {"max": ..., "solved": ..., "blank": ...}}
 
-``total`` is nbgrader's own score of each submission (not a sum taken here).  A chapter without gradable
+``written`` lists the questions answered in words (manually graded Markdown cells): the solved submission (the
+model answer) waits for a grader, the blank one (``YOUR ANSWER HERE`` untouched) is scored 0 by nbgrader itself.
+``total`` is nbgrader's own score of each submission (not a sum taken here): its maximum counts the written
+questions, its score only what nbgrader could grade.  A chapter without gradable
 exercises gets ``"exercises": []`` and no ``total`` (nbgrader is not started).
 ``tests/edition/test_assignments.py`` reads these files and asserts full marks for the solved submission and
 zero for the blank one, exercise by exercise.
@@ -89,11 +92,18 @@ def _round_trip(chapter: Path, course: Path, root: Path) -> dict:
 
     with Gradebook(f"sqlite:///{course / 'gradebook.db'}") as gb:
         scores: dict[str, dict[str, tuple[float, float]]] = {}
+        manual: dict[str, dict[str, tuple[float | None, float, bool]]] = {}
         total: dict[str, float] = {}
         for student in ("solved", "blank"):
             sub = gb.find_submission(name, student)
             (nb,) = sub.notebooks
-            scores[student] = {g.name: (g.score, g.max_score) for g in nb.grades if g.max_score}
+            auto = [g for g in nb.grades if g.max_score and g.cell_type == "code"]
+            scores[student] = {g.name: (g.score, g.max_score) for g in auto}
+            manual[student] = {
+                g.name: (g.score, g.max_score, bool(g.needs_manual_grade))
+                for g in nb.grades
+                if g.max_score and g.cell_type == "markdown"
+            }
             total |= {"max": sub.max_score, student: sub.score}
     order = {f"{name}-{c}": i for i, c in enumerate(_checks(chapter))}  # the chapter's order
     exercises = [
@@ -106,7 +116,23 @@ def _round_trip(chapter: Path, course: Path, root: Path) -> dict:
         }
         for gid, (s, m) in sorted(scores["solved"].items(), key=lambda kv: order.get(kv[0], len(order)))
     ]
-    return {"chapter": name, "exercises": exercises, "total": total, "released_runs_to_the_end": released}
+    written = [
+        {
+            "grade_id": gid,
+            "max": m,
+            "solved_needs_manual_grade": needs,
+            "blank": manual["blank"][gid][0],
+            "blank_needs_manual_grade": manual["blank"][gid][2],
+        }
+        for gid, (_, m, needs) in manual["solved"].items()
+    ]
+    return {
+        "chapter": name,
+        "exercises": exercises,
+        "written": written,
+        "total": total,
+        "released_runs_to_the_end": released,
+    }
 
 
 def _run_all(notebook: Path, env: dict[str, str]) -> bool | str:

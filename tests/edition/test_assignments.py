@@ -91,6 +91,21 @@ def test_a_broken_convention_is_named(cells, message):
         A.assignment(_nb(*cells), "demo", lambda name: 1)
 
 
+def test_a_written_answer_and_its_rubric_become_one_manually_graded_cell():
+    cells = [*GOOD[:5], ("md", "*Your answer:* write it here.", ["written"]), ("md", "Model answer: x.", ["rubric"])]
+    nb = A.assignment(_nb(*cells), "demo", lambda name: 1)
+    assert nb is not None
+    manual = nb.cells[-1]
+    assert manual.cell_type == "markdown" and manual.source == "Model answer: x."  # the instructor's copy
+    meta = manual.metadata.nbgrader
+    assert meta["solution"] and meta["grade"] and not meta["locked"] and meta["points"] == A.WRITTEN_POINTS
+    assert meta["grade_id"] == "demo-check_x-written"
+    with pytest.raises(A.AssignmentError, match="rubric"):
+        A.assignment(_nb(*cells[:-1]), "demo", lambda name: 1)
+    with pytest.raises(A.AssignmentError, match="written answer"):
+        A.assignment(_nb(*cells[:5], ("md", "Model answer: x.", ["rubric"])), "demo", lambda name: 1)
+
+
 def test_a_chapter_without_gradable_exercises_gives_none():
     assert A.assignment(_nb(GOOD[0], ("code", "x = 1", ["solution"])), "demo", lambda n: 1) is None
 
@@ -105,14 +120,17 @@ def test_make_assignments_writes_each_chapter_with_exercises_once(tmp_path):
         if checks:
             expected.append(f"source/{p.stem}/{p.name}")
             out = nbformat.read(tmp_path / "source" / p.stem / p.name, as_version=4)
-            tests = [c for c in out.cells if c.metadata.get("nbgrader", {}).get("grade")]
+            graded = [c for c in out.cells if c.metadata.get("nbgrader", {}).get("grade")]
+            tests = [c for c in graded if c.cell_type == "code"]
             assert len(tests) == len(checks)
+            in_words = [c for c in nb.cells if "written" in c.metadata.get("tags", [])]
+            assert len(graded) - len(tests) == len(in_words)  # one manually graded cell per question in words
             for t in tests:
                 visible, hidden = t.source.split("\n### BEGIN HIDDEN TESTS\n")
                 assert hidden == f"{visible}.require();\n### END HIDDEN TESTS"  # the hidden test recomputes the check
                 name = A.check_call(visible, p.name)
                 assert t.metadata.nbgrader["points"] == by_name(name).points
-            assert not any("solution" in c.metadata.get("tags", []) for c in out.cells)
+            assert not any({"solution", "rubric"} & set(c.metadata.get("tags", [])) for c in out.cells)
     assert written == expected and "source/10_robot_classes/10_robot_classes.ipynb" in written
     before = {p: p.stat().st_mtime_ns for p in tmp_path.rglob("*")}
     assert A.main([str(tmp_path), *map(str, LESSONS)]) == 0
@@ -160,8 +178,17 @@ def test_nbgrader_round_trip_full_marks_for_the_solution_and_zero_for_the_blank(
         assert e["grade_id"] == f"{chapter.stem}-{e['check']}"
         assert e["max"] == by_name(e["check"]).points > 0, e
         assert (e["solved"], e["blank"]) == (e["max"], 0.0), e
-    total = sum(e["max"] for e in g["exercises"])
-    assert g["total"] == {"max": total, "solved": total, "blank": 0.0}  # nbgrader's own sums per submission
+    # the questions answered in words: each a manually graded cell; the model answer waits for a grader, the
+    # untouched blank is scored 0 by nbgrader itself
+    cells = nbformat.read(chapter, as_version=4).cells
+    n_written = sum("written" in c.metadata.get("tags", []) for c in cells)
+    assert len(g["written"]) == n_written
+    for w in g["written"]:
+        assert w["max"] == A.WRITTEN_POINTS and w["solved_needs_manual_grade"], w
+        assert (w["blank"], w["blank_needs_manual_grade"]) == (0.0, False), w
+    auto = sum(e["max"] for e in g["exercises"])
+    by_hand = sum(w["max"] for w in g["written"])
+    assert g["total"] == {"max": auto + by_hand, "solved": auto, "blank": 0.0}  # nbgrader's own sums per submission
     # Run All on the released notebook (hidden tests removed, answers blank) runs to the end: a student is never
     # stopped by a traceback before the first exercise is answered
     assert g["released_runs_to_the_end"] is True, g["released_runs_to_the_end"]

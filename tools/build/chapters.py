@@ -18,7 +18,9 @@ from . import typeset as ts
 
 __all__ = ["DROP_TAGS", "FIGURE_METADATA", "KEEP_MIMES", "chapter_cells", "findings_cells", "title"]
 
-DROP_TAGS = frozenset({"exercise", "answer", "solution", "check", "ledger", "remove-cell", "remove_cell"})
+DROP_TAGS = frozenset(
+    {"exercise", "answer", "solution", "check", "written", "rubric", "ledger", "remove-cell", "remove_cell"}
+)
 #: output types a reader sees, in order of preference (one per output)
 KEEP_MIMES = ("text/markdown", "text/latex", "image/svg+xml", "image/png")
 #: output metadata key with which a notebook marks the display of one of the figures
