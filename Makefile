@@ -53,7 +53,7 @@ LINTED   := $(wildcard $(addprefix $(WMR_ROOT)/,wmr edition tools tests))
 # make test also checks the release and the docs of this repository (not of another tree, WMR_ROOT=...)
 RELEASED := $(if $(filter $(CURDIR),$(WMR_ROOT)),yes)
 # what make test builds before pytest runs (the tests find it cached)
-TEST_BUILD = $(B)/report.html $(B)/report.pdf $(STUDENT_RUN) $(GRADES)
+TEST_BUILD = $(B)/report.html $(B)/report.pdf $(STUDENT_RUN) $(GRADES) $(if $(RELEASED),$(B)/course/check.json)
 
 PDEATH := $(shell command -v setpriv >/dev/null 2>&1 && echo setpriv --pdeathsig TERM --)
 BUILD  := $(PDEATH) $(VPY) -m tools.build
@@ -71,7 +71,7 @@ TEX_DEBS := texlive-xetex texlive-fonts-recommended texlive-plain-generic \
             texlive-latex-extra lmodern fonts-lmodern pandoc poppler-utils
 TEX_CMDS := xelatex pandoc pdftotext pdfinfo
 
-.PHONY: help venv tex browser test report figures notebooks publish student assignments grades bench clean lock docs release FORCE
+.PHONY: help venv tex browser test report figures notebooks publish student assignments grades course bench clean lock docs release FORCE
 
 help: ## show this help
 	@echo "wmr — reproducible edition of Leow, Low & Loh (2002)"
@@ -217,6 +217,11 @@ test: venv tex browser ## build (cached), pytest -n 2 (tests/; tests/edition/ un
 	else echo "[git] the build left git status as it found it"; \
 	  if [ $$tests = 0 ] && [ -z "$$only" ] && [ -n "$$key" ]; then $(VPY) -m tools.testcache stamp "$$key"; fi; fi; \
 	exit $$rc
+
+course: $(B)/course/check.json ## build/course: the student package (a wheel without solutions), every notebook run in a fresh venv (cached)
+
+$(B)/course/check.json: FORCE
+	@$(PDEATH) $(VPY) -m tools.course $(B)/course --check
 
 release: venv ## sdist + wheel; the wheel in a fresh venv outside the repo runs the library tests, the CLI, the README (cached)
 	@$(PDEATH) $(VPY) -m tools.release

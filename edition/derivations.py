@@ -17,8 +17,16 @@ from types import MappingProxyType
 
 __all__ = ["NOTEBOOKS", "derived"]
 
-#: the chapters of this checkout
-NOTEBOOKS = Path(__file__).resolve().parents[1] / "notebooks"
+#: the chapters of this checkout; in the course package (``make course``), which ships no chapter with its
+#: solutions, their ``imports`` and ``derivation`` cells in ``edition/_chapters``
+NOTEBOOKS = next(
+    (
+        p
+        for p in (Path(__file__).resolve().parents[1] / "notebooks", Path(__file__).resolve().parent / "_chapters")
+        if p.is_dir()
+    ),
+    Path(__file__).resolve().parents[1] / "notebooks",
+)
 
 
 def _quiet(*args, **kwargs):

@@ -63,8 +63,9 @@ def overlaps(fig: Figure) -> list[str]:
             for t in ax.texts
             if t.get_visible() and t.get_text().strip()
         ]
-        if ax.get_legend() is not None and ax.get_legend().get_visible():
-            mine.append((f"axes {k}: legend", ax.get_legend().get_window_extent(r)))
+        legend = ax.get_legend()
+        if legend is not None and legend.get_visible():
+            mine.append((f"axes {k}: legend", legend.get_window_extent(r)))
         data, inside = _data(ax), ax.get_window_extent(r)
         for name, bb in mine:
             seen = Bbox.intersection(_shrunk(bb), inside)  # data is drawn only inside its axes (clipped)

@@ -44,9 +44,8 @@ class _ClearLabel(Annotation):
         super().__init__(*args, **kw)
         self._asked = (tuple(self.xyann), self.get_horizontalalignment(), self.get_verticalalignment())
 
-    def _obstacles(self, renderer):
+    def _obstacles(self, ax, renderer):
         """What the label must not cover: the lines, marked points and arrows of its axes, and its other texts."""
-        ax = self.axes
         paths = []
         for line in ax.get_lines():
             if not line.get_visible():
@@ -63,9 +62,9 @@ class _ClearLabel(Annotation):
         boxes = [t.get_window_extent(renderer) for t in ax.texts if t is not self and t.get_visible() and t.get_text()]
         return paths, boxes
 
-    def _clear(self, renderer, obstacles):
+    def _clear(self, ax, renderer, obstacles):
         paths, boxes = obstacles
-        bb, frame = self.get_window_extent(renderer), self.axes.get_window_extent(renderer)
+        bb, frame = self.get_window_extent(renderer), ax.get_window_extent(renderer)
         inner = Bbox.from_extents(bb.x0 + 1, bb.y0 + 1, bb.x1 - 1, bb.y1 - 1)
         if not frame.contains(inner.x0, inner.y0) or not frame.contains(inner.x1, inner.y1):
             return False  # a label must stay inside its axes, where it is not clipped
@@ -73,26 +72,27 @@ class _ClearLabel(Annotation):
         return not crosses and not any(inner.overlaps(b) for b in boxes)
 
     def draw(self, renderer):
-        if self.get_visible() and self.axes is not None:
+        ax = self.axes
+        if self.get_visible() and ax is not None:
             (dx, dy), ha, va = self._asked
             self.xyann = (dx, dy)
-            self.set_ha(ha)
-            self.set_va(va)
-            paths = self._obstacles(renderer)
-            if not self._clear(renderer, paths):
+            self.set_horizontalalignment(ha)
+            self.set_verticalalignment(va)
+            paths = self._obstacles(ax, renderer)
+            if not self._clear(ax, renderer, paths):
                 size = max(float(np.hypot(dx, dy)), 4.0)
                 for scale in (1.0, 2.0, 3.0):
                     for ux, uy in _DIRECTIONS:
                         n = float(np.hypot(ux, uy))
                         self.xyann = (scale * size * ux / n, scale * size * uy / n)
                         h, v = _align(ux, uy)
-                        self.set_ha(h)
-                        self.set_va(v)
-                        if self._clear(renderer, paths):
+                        self.set_horizontalalignment(h)
+                        self.set_verticalalignment(v)
+                        if self._clear(ax, renderer, paths):
                             return super().draw(renderer)
                 self.xyann = (dx, dy)
-                self.set_ha(ha)
-                self.set_va(va)
+                self.set_horizontalalignment(ha)
+                self.set_verticalalignment(va)
         return super().draw(renderer)
 
 

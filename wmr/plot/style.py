@@ -97,7 +97,7 @@ RC: dict[Any, Any] = {
 FONT_LABEL = 9.0
 FONT_SMALL = 7.5
 #: White outline behind labels, so that they stay legible over lines.
-HALO = [pe.withStroke(linewidth=2.6, foreground="white")]
+HALO: list[pe.AbstractPathEffect] = [pe.withStroke(linewidth=2.6, foreground="white")]
 
 
 @contextmanager
