@@ -5,8 +5,8 @@ every text and of the legend (shrunk by a point, so a box that only touches a li
 the axes, where the data is drawn) must not cross a line of two or more points, an arrow, the outline of a
 patch (a platform's rim, a wheel) or a marked point of that axes; across the figure, no two such boxes
 overlap.  It is run on every figure the edition draws from data it can compute here: the paper's Figures
-7-13 with the det J map and the conventions (edition.figures), chapter 9's four figures and chapter 7's two
-pictures.  The first test shows the rule failing on figures made to break it."""
+7-13 with the det J map and the conventions (edition.figures), chapter 7's two pictures, chapter 8's three
+figures and chapter 9's four.  The first test shows the rule failing on figures made to break it."""
 
 from __future__ import annotations
 
@@ -168,7 +168,35 @@ def _interactive_figures():
     }
 
 
-FIGURE_MAKERS = {**_paper_figures(), **_physics_figures(), **_interactive_figures()}
+def _design_figures():
+    import wmr
+    from edition import design_study as study
+    from edition.transient_plot import distinguished_transient_figure
+    from wmr.analysis import design
+    from wmr.analysis import motion_kappa as mk
+    from wmr.plot.design import draw_landscape, draw_motion_maps
+    from wmr.swerve import direction_change, resteer_study
+
+    swerve = study.swerve(0.6, 0.4, r=0.05)  # as chapter 8 builds them
+    kite = wmr.Robot([wmr.CentredWheel(p, r=0.05) for p in [(0.4, 0.0), (0.0, 0.2), (-0.3, 0.0), (0.0, -0.2)]])
+
+    def maps():
+        m = [mk.motion_map(swerve, half_width=0.9), mk.motion_map(kite, half_width=0.9)]
+        return draw_motion_maps(m, ["swerve, 0.6 m x 0.4 m", "kite"])
+
+    def transient():
+        return distinguished_transient_figure(
+            resteer_study(swerve, direction_change(spin=0.5, dt=0.02), steer_rate=2 * np.pi)
+        )
+
+    return {
+        "E5 design landscape": lambda: draw_landscape(design.landscape()),
+        "E6 motion maps": maps,
+        "E7 swerve transient": transient,
+    }
+
+
+FIGURE_MAKERS = {**_paper_figures(), **_physics_figures(), **_interactive_figures(), **_design_figures()}
 
 
 @pytest.mark.parametrize("name", list(FIGURE_MAKERS))
