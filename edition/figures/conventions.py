@@ -213,7 +213,7 @@ def draw(data, fig=None):
         for k, w_ in enumerate(snap(data.dual_wheels)):
             an.label(
                 ax,
-                w_ + (data.r + 0.1) * j_,
+                w_ + (1 - 2 * k) * (data.r + 0.1) * j_,  # wheel 1 beyond its front, wheel 2 beyond its back
                 f"wheel {k + 1}",
                 offset=(0, 0),
                 ha="center",

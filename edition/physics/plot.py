@@ -114,7 +114,7 @@ def draw_contacts(steer, brake, fig=None):
             a.axhline(v["predicted_slip"], color=colour, ls="--", lw=0.8)
         a.annotate(
             "wmr's least-squares slip",
-            (0.05, steer.data["incompatible"]["predicted_slip"]),
+            (0.5, steer.data["incompatible"]["predicted_slip"]),
             xytext=(0, 3),
             textcoords="offset points",
             fontsize=7,

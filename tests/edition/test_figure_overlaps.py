@@ -2,11 +2,11 @@
 
 The rule is generic, in display coordinates after the figure is drawn (Agg): inside each axes, the box of
 every text and of the legend (shrunk by a point, so a box that only touches a line passes; the part inside
-the axes, where the data is drawn) must not cross a line of two or more points, an arrow or a marked point
-of that axes; across the figure, no two such boxes
+the axes, where the data is drawn) must not cross a line of two or more points, an arrow, the outline of a
+patch (a platform's rim, a wheel) or a marked point of that axes; across the figure, no two such boxes
 overlap.  It is run on every figure the edition draws from data it can compute here: the paper's Figures
-7-13 with the det J map and the conventions (edition.figures), chapter 9's four figures and chapter 7's two
-pictures.  The first test shows the rule failing on figures made to break it."""
+7-13 with the det J map and the conventions (edition.figures), chapter 7's two pictures, chapter 8's three
+figures and chapter 9's four.  The first test shows the rule failing on figures made to break it."""
 
 from __future__ import annotations
 
@@ -18,7 +18,7 @@ import numpy as np
 import pytest
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
-from matplotlib.patches import FancyArrowPatch
+from matplotlib.patches import Circle, FancyArrowPatch
 from matplotlib.path import Path
 from matplotlib.transforms import Bbox
 
@@ -41,8 +41,10 @@ def _data(ax) -> list[tuple[str, Path]]:
         if line.get_marker() not in (None, "None", "none", "", " "):
             out += [(f"marker of {line.get_label()!r}", Path(p + [[-1, -1], [1, 1]])) for p in xy]
     for patch in ax.patches:
-        if isinstance(patch, FancyArrowPatch) and patch.get_visible():
-            out.append(("arrow", patch.get_transform().transform_path(patch.get_path())))
+        edged = patch.get_linewidth() > 0 and patch.get_edgecolor()[3] > 0
+        if patch.get_visible() and (isinstance(patch, FancyArrowPatch) or edged):
+            what = "arrow" if isinstance(patch, FancyArrowPatch) else f"outline of a {type(patch).__name__}"
+            out.append((what, patch.get_transform().transform_path(patch.get_path())))
     for c in ax.collections:
         offsets = np.asarray(c.get_offsets(), dtype=float)
         if c.get_visible() and offsets.ndim == 2 and 0 < len(offsets) <= 5000:
@@ -95,6 +97,11 @@ def test_the_rule_can_fail():
     assert any("covers the line" in f for f in overlaps(fig))
     fig = Figure(figsize=(4, 3))
     ax = fig.add_subplot()
+    ax.add_patch(Circle((0.5, 0.5), 0.3, facecolor="0.9", edgecolor="0.5"))
+    ax.text(0.8, 0.5, "on the rim", ha="center", va="center")
+    assert any("covers the outline of a Circle" in f for f in overlaps(fig))
+    fig = Figure(figsize=(4, 3))
+    ax = fig.add_subplot()
     ax.text(0.2, 0.2, "one")
     ax.text(0.2, 0.2, "two")
     assert any("overlaps" in f for f in overlaps(fig))
@@ -112,6 +119,16 @@ def test_a_clear_label_moves_off_a_line_it_would_cross():
     ax = fig.add_subplot()
     ax.plot([0.5, 0.5], [0, 1])
     label(ax, (0.5, 0.5), "a label", offset=(0, -6), ha="center", va="top")  # straight down the line
+    assert overlaps(fig) == []
+
+
+def test_a_clear_label_moves_off_a_rim_it_would_cross():
+    from wmr.plot.marks import label
+
+    fig = Figure(figsize=(4, 3))
+    ax = fig.add_subplot()
+    ax.add_patch(Circle((0.5, 0.5), 0.3, facecolor="0.9", edgecolor="0.5"))
+    label(ax, (0.8, 0.5), "a label", offset=(0, 0), ha="center", va="center")  # centred on the rim
     assert overlaps(fig) == []
 
 
@@ -151,7 +168,35 @@ def _interactive_figures():
     }
 
 
-FIGURE_MAKERS = {**_paper_figures(), **_physics_figures(), **_interactive_figures()}
+def _design_figures():
+    import wmr
+    from edition import design_study as study
+    from edition.transient_plot import distinguished_transient_figure
+    from wmr.analysis import design
+    from wmr.analysis import motion_kappa as mk
+    from wmr.plot.design import draw_landscape, draw_motion_maps
+    from wmr.swerve import direction_change, resteer_study
+
+    swerve = study.swerve(0.6, 0.4, r=0.05)  # as chapter 8 builds them
+    kite = wmr.Robot([wmr.CentredWheel(p, r=0.05) for p in [(0.4, 0.0), (0.0, 0.2), (-0.3, 0.0), (0.0, -0.2)]])
+
+    def maps():
+        m = [mk.motion_map(swerve, half_width=0.9), mk.motion_map(kite, half_width=0.9)]
+        return draw_motion_maps(m, ["swerve, 0.6 m x 0.4 m", "kite"])
+
+    def transient():
+        return distinguished_transient_figure(
+            resteer_study(swerve, direction_change(spin=0.5, dt=0.02), steer_rate=2 * np.pi)
+        )
+
+    return {
+        "E5 design landscape": lambda: draw_landscape(design.landscape()),
+        "E6 motion maps": maps,
+        "E7 swerve transient": transient,
+    }
+
+
+FIGURE_MAKERS = {**_paper_figures(), **_physics_figures(), **_interactive_figures(), **_design_figures()}
 
 
 @pytest.mark.parametrize("name", list(FIGURE_MAKERS))

@@ -356,6 +356,8 @@ def test_data_paths_do_not_import_matplotlib():
         "edition.families.counts",
         "edition.problems",
         "edition.report_cells",
+        "edition.page_breaks",
+        "edition.cards",
         "edition.ledger.verdict",
         "edition.figures",
         "edition.figures.common",

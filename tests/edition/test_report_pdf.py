@@ -2,8 +2,9 @@
 
 Not a list of strings that were once wrong: rules that any leftover breaks. The text holds no Python
 list, dict or set literal and no other program output; no placeholder line; no claim named by its
-slug; every page's running head names the section that page opens with; every figure has a number
-and a caption. The report is the one ``make test`` has just built (``test_report.py`` makes it).
+slug; every page's running head names the section that page opens with; no page opens with a numbered
+display (split from its lead-in); every figure has a number and a caption. The report is the one
+``make test`` has just built (``test_report.py`` makes it).
 Each rule is also run on a small text that breaks it, so that it can fail.
 """
 
@@ -73,6 +74,25 @@ def slugs_named(text: str, slugs: list[str]) -> list[str]:
 
 def norm(s: str) -> str:
     return re.sub(r"[^0-9a-z]+", "", unicodedata.normalize("NFKC", s).lower().replace("--", "-"))
+
+
+#: the tag of a numbered display at the right margin: ``(17)``, ``(15a)``, ``((15) corrected)``
+DISPLAY_TAG = re.compile(r"\s\((?:\d{1,3}[a-z]?|\(\d{1,3}\) corrected)\)\s*$")
+
+
+def displays_opening_pages(pages: list[str]) -> list[str]:
+    """Pages whose text opens, below the running head, with a numbered display: a formula split by the page
+    break from what leads into it.  The opening lines of a display are centred (indented), so the page's
+    first lines up to the first one at the margin are looked at; one of them ending in a tag is a display."""
+    bad = []
+    for n, page in enumerate(pages, 1):
+        top = []
+        for line in [x for x in page.splitlines()[1:] if x.strip()][:8]:
+            if len(line) - len(line.lstrip()) < 12:
+                break
+            top.append(line)
+        bad += [f"p. {n}: {line.strip()[:60]!r}" for line in top[:1] if any(DISPLAY_TAG.search(x) for x in top)]
+    return bad
 
 
 def running_heads(pages: list[str], titles: list[str]) -> list[str]:
@@ -154,6 +174,12 @@ def test_the_rules_can_fail():
     assert not slugs_named("the dead-zone circle and the dead zone", ["dead-zone"])
     pages = ["Errata    head\nErrata\ntext", "Errata    head\ntext\nClaims\nmore", "Errata    head\nmore"]
     assert running_heads(pages, ["Errata", "Claims"]) == ["p. 3: head 'Errata', opens with 'Claims'"]
+    pages = [
+        "1. Head    edition\n" + " " * 30 + "h = -r theta j" + " " * 20 + "(17)\nVerdict (17): ok.",
+        "1. Head    edition\nAs printed (Section 3.2):\n" + " " * 30 + "h = -r theta j" + " " * 20 + "(17)",
+        "Title page\n" + " " * 20 + "An executable edition of Leow, Low & Loh (2002)",
+    ]
+    assert displays_opening_pages(pages) == ["p. 1: 'h = -r theta j                    (17)'"]
     tex = (
         r"\begin{wmrfigure}{figure-x}\wmrfigtitle{\textbf{Conventions.}}\end{wmrfigure} \wmrimage{a.png} text"
         r" \wmrimage{b.png} \emph{Figure 8.1. A plot.} \wmrimage{c.png} \emph{Figure D1. A plot.}"
@@ -198,6 +224,11 @@ def test_pdf_running_heads_name_the_section_each_page_opens_with(pdf_pages):
     assert not bad, f"{len(bad)} pages with a wrong running head: {bad[:12]}"
     found = [t for t in titles if any(_is_title(line, t) for p in pdf_pages for line in p.splitlines())]
     assert len(found) == len(titles), f"section titles not found in the PDF text: {sorted(set(titles) - set(found))}"
+
+
+def test_pdf_no_page_opens_with_a_numbered_display(pdf_pages):
+    bad = displays_opening_pages(pdf_pages)
+    assert not bad, f"{len(bad)} pages open with a display, away from what leads into it: {bad[:12]}"
 
 
 def test_pdf_every_figure_is_numbered_and_captioned(pdf_pages):

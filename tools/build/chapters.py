@@ -1,11 +1,11 @@
 """The executed chapters as a reader sees them in the report (new cell objects).
 
-Cells tagged ``exercise``, ``solution`` or ``ledger`` are dropped. In a derivation chapter (Part II) a ``figure`` cell,
-or an output marked ``wmr_figure``, becomes a link to the figure, shown once in Part I; code stays (collapsed in the
-HTML, absent from the PDF); of the outputs only Markdown, LaTeX and images reach the reader (no printed text, HTML
-tables, errors or widget state). The findings chapter (Part I, ``notebooks/findings.ipynb``) is prose: its Markdown and
-its outputs, not its code; an output marked ``wmr_figure`` is the figure itself, a Markdown cell tagged ``part`` starts
-a part of the report, the cell tagged ``title`` gives the title block (:func:`title`)."""
+Exercise cells (:data:`tools.assignments.ROLE_TAGS`) and ``ledger`` cells are dropped. In a derivation chapter a
+``figure`` cell, or an output marked ``wmr_figure``, becomes a link to the figure, shown once in Part I; code stays
+(collapsed in the HTML, absent from the PDF); of the outputs only Markdown, LaTeX and images reach the reader (no
+printed text, HTML tables, errors or widget state). The findings chapter (Part I, ``notebooks/findings.ipynb``) is
+prose: its Markdown and its outputs, not its code; an output marked ``wmr_figure`` is the figure itself, a Markdown cell
+tagged ``part`` starts a part of the report, the cell tagged ``title`` gives the title block (:func:`title`)."""
 
 from __future__ import annotations
 
@@ -14,13 +14,12 @@ from typing import Any
 
 from nbformat import from_dict, v4
 
+from ..assignments import ROLE_TAGS
 from . import typeset as ts
 
 __all__ = ["DROP_TAGS", "FIGURE_METADATA", "KEEP_MIMES", "chapter_cells", "findings_cells", "title"]
 
-DROP_TAGS = frozenset(
-    {"exercise", "answer", "solution", "check", "written", "rubric", "ledger", "remove-cell", "remove_cell"}
-)
+DROP_TAGS = frozenset({*ROLE_TAGS, "ledger", "remove-cell", "remove_cell"})  # the exercises' cells, and more
 #: output types a reader sees, in order of preference (one per output)
 KEEP_MIMES = ("text/markdown", "text/latex", "image/svg+xml", "image/png")
 #: output metadata key with which a notebook marks the display of one of the figures

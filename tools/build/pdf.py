@@ -1,17 +1,14 @@
-"""The PDF report: the report notebook as LaTeX (pandoc for the Markdown, nbconvert's template
-``wmr_latex``), typeset by xelatex in a temporary directory under ``build/tmp``, removed however it ends.
+"""The PDF report: the report notebook as LaTeX (pandoc, nbconvert's ``wmr_latex``), typeset by xelatex in ``build/tmp``.
 
-``\\wmrdisplay`` scales a formula wider than the line down to it and logs the factor
-(:func:`scaled_formulas`): none runs past the margin, none is shrunk silently. xelatex runs until
-the contents and cross-references are stable, with ``SOURCE_DATE_EPOCH`` from the commit, and
-:func:`fix_id` makes the trailer ``/ID`` a hash of the document: builds of one commit are byte-identical.
+``\\wmrdisplay`` scales a formula wider than the line down to it and logs the factor (:func:`scaled_formulas`): none
+runs past the margin, none is shrunk silently. xelatex runs until the contents and cross-references are stable, with
+``SOURCE_DATE_EPOCH`` from the commit; :func:`fix_id` makes the trailer ``/ID`` a hash of the document.
 """
 
 from __future__ import annotations
 
 import base64
 import hashlib
-import itertools
 import os
 import re
 import shutil
@@ -100,39 +97,9 @@ def to_latex(nb) -> tuple[str, dict]:
     batch.convert()
     exp = LatexExporter(template_name="wmr_latex", extra_template_basedirs=[str(TEMPLATES)])
     body, _ = exp.from_notebook_node(prepared, resources={"wmr_paper_latex": paper})
+    from edition.page_breaks import keep_displays_with_lead_in  # the edition's rule of the text, not glue
+
     return keep_displays_with_lead_in(batch.fill(body)), files
-
-
-_STARTS_DISPLAY = re.compile(r"(?<=\S)[ \t]*\n(?:[ \t]*\n)+(?=(?:\{\\postdisplaypenalty=10000 )?\\wmrdisplay\{)")
-_DISPLAY_LINE = re.compile(r"^\\wmrdisplay\{.*\}$", re.MULTILINE)
-
-
-def keep_displays_with_lead_in(tex: str) -> str:
-    r"""No page break just before a displayed formula: it stays with what leads into it.
-
-    A display that starts its own paragraph (a blank line before ``\wmrdisplay``) gets ``\par\nopagebreak``
-    after the paragraph before it: the penalty forbids a break there, and the glue after it is no breakpoint
-    because a penalty, not a box, precedes it.  When what precedes is itself a display, TeX could still break
-    at that display's ``\postdisplaypenalty``; it is set to 10000 for that display alone.  So neither "As
-    printed:" nor a formula ends a page whose next formula opens the following one.
-
-    >>> keep_displays_with_lead_in("As printed:\n\n\\wmrdisplay{x}{6}")
-    'As printed:\\par\\nopagebreak\n\n\\wmrdisplay{x}{6}'
-    >>> print(keep_displays_with_lead_in("As printed:\n\n\\wmrdisplay{x}{6}\n\n\\wmrdisplay{y}{}"))
-    As printed:\par\nopagebreak
-    <BLANKLINE>
-    {\postdisplaypenalty=10000 \wmrdisplay{x}{6}}\par\nopagebreak
-    <BLANKLINE>
-    \wmrdisplay{y}{}
-    """
-    lines = tex.split("\n")
-    for k, line in enumerate(lines):
-        if not _DISPLAY_LINE.match(line):
-            continue
-        rest = next((x for x in itertools.islice(lines, k + 1, None) if x.strip()), "")
-        if rest.startswith("\\wmrdisplay{"):
-            lines[k] = "{\\postdisplaypenalty=10000 " + line + "}"
-    return _STARTS_DISPLAY.sub(lambda m: r"\par\nopagebreak" + "\n\n", "\n".join(lines))
 
 
 def scaled_formulas(log: str) -> list[tuple[float, str]]:

@@ -7,8 +7,11 @@ The numbers come from :func:`wmr.analysis.design.landscape` and
 from __future__ import annotations
 
 import numpy as np
+from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.colors import LogNorm
+from matplotlib.path import Path
 
+from .marks import label
 from .style import PALETTE, ROLE, new_figure, panel_title, style
 
 __all__ = ["draw_landscape", "draw_motion_maps", "picture_bundle", "show_figure"]
@@ -17,15 +20,69 @@ _KAPPA_LEVELS = (1.05, 1.25, 1.5, 2.0, 3.0, 5.0, 10.0)
 
 
 def _kappa_image(ax, x, y, K, vmax):
-    """A log-scaled map of kappa (inf shown at the top of the scale) with labelled contours."""
+    """A log-scaled map of kappa (inf shown at the top of the scale) with contours (labelled later, once the
+    lines and markers drawn over the map are there: :func:`_label_contours`)."""
     shown = np.where(np.isfinite(K), K, vmax)
     im = ax.pcolormesh(x, y, np.clip(shown, 1.0, vmax), norm=LogNorm(1.0, vmax), shading="auto", cmap="cividis")
     levels = [v for v in _KAPPA_LEVELS if np.nanmin(shown) < v < vmax]
-    if levels:
-        cs = ax.contour(x, y, shown, levels=levels, colors="white", linewidths=0.5)
-        ax.clabel(cs, fontsize=6.5, fmt="%g")
     ax.set_aspect("equal")
-    return im
+    return im, (ax.contour(x, y, shown, levels=levels, colors="white", linewidths=0.5) if levels else None)
+
+
+def _obstacles(ax, r):
+    """The lines and markers (small squares) of ``ax`` and its legend's box, in display coordinates."""
+    legend = ax.get_legend()
+    boxes = [legend.get_window_extent(r)] if legend is not None else []
+    paths = []
+    for line in ax.get_lines():
+        xy = line.get_transform().transform(np.asarray(line.get_xydata(), dtype=float))
+        if line.get_linestyle() not in ("None", "none", "", " ") and len(xy) >= 2:
+            paths.append(Path(xy))
+        if line.get_marker() not in (None, "None", "none", "", " "):
+            h = line.get_markersize() * ax.figure.dpi / 144.0  # half the marker's size, in pixels
+            paths += [Path(p + [[-h, -h], [h, h]]) for p in xy]
+    return paths, boxes
+
+
+def _label_contours(fig, contours):
+    """Label each contour once, at the first point along it where the label covers no line, marker, legend or
+    other label of its axes and stays inside them (a contour with no such point is left unlabelled).
+
+    The figure is laid out first, so each candidate label's box is where it will be shown; the chosen points
+    are then labelled by :meth:`~matplotlib.axes.Axes.clabel`, which breaks the contour there.
+    """
+    canvas = fig.canvas if hasattr(fig.canvas, "get_renderer") else FigureCanvasAgg(fig)
+    canvas.draw()
+    r = canvas.get_renderer()
+    for cs in contours:
+        if cs is None:
+            continue
+        ax, chosen = cs.axes, []
+        paths, boxes = _obstacles(ax, r)
+        frame = ax.get_window_extent(r)
+        for level, segs in zip(cs.levels, cs.allsegs):
+            found = None
+            for seg in sorted(segs, key=len, reverse=True):
+                d = ax.transData.transform(seg)
+                for i in range(2, len(seg) - 2, max(1, len(seg) // 12)):
+                    dx, dy = d[i + 2] - d[i - 2]
+                    angle = float(np.degrees(np.arctan2(dy, dx)))
+                    angle = angle - 180 if angle > 90 else angle + 180 if angle < -90 else angle
+                    t = ax.text(*seg[i], f"{level:g}", fontsize=6.5, ha="center", va="center", rotation=angle)
+                    bb = t.get_window_extent(r)
+                    t.remove()
+                    inside = frame.contains(bb.x0, bb.y0) and frame.contains(bb.x1, bb.y1)
+                    if inside and not any(p.intersects_bbox(bb, filled=False) for p in paths):
+                        if not any(bb.overlaps(b) for b in boxes):
+                            found = (float(seg[i][0]), float(seg[i][1]))
+                            boxes.append(bb)
+                            break
+                if found:
+                    break
+            if found:
+                chosen.append(found)
+        if chosen:
+            ax.clabel(cs, fontsize=6.5, fmt="%g", manual=chosen)
 
 
 def _colorbar(fig, im, ax, label, vmax):
@@ -66,21 +123,22 @@ def draw_landscape(data, fig=None):
         a.minorticks_off()
         a.set_xlabel(r"offset ratio $d/r$")
         a.set_ylabel(r"worst-case $\kappa(\mathbf{J})$")
-        a.legend(loc="upper center")
+        a.legend(loc="upper center", bbox_to_anchor=(0.5, -0.2), frameon=False)  # below: inside, it covers data
         panel_title(a, "a", r"the offset sets $\kappa(\mathbf{J}_2)$")
         vmax = float(min(np.nanmax(data.kappa_map[np.isfinite(data.kappa_map)]), 10.0))
-        im = _kappa_image(b, data.x, data.y, data.kappa_map, vmax)
+        im, contours = _kappa_image(b, data.x, data.y, data.kappa_map, vmax)
         m = data.mounts
         b.plot(*np.vstack([m, m[:1]]).T, color=PALETTE["light"], lw=0.8, ls=":")
         b.plot(m[[0, 2], 0], m[[0, 2], 1], "o", color=ROLE["point"], ms=4, mfc="white")
         b.plot(*m[1], "*", color=PALETTE["yellow"], ms=9, mec="black", mew=0.5)
         b.plot(0, 0, "+", color="white", ms=7)
         for k, p in enumerate(m, 1):
-            b.annotate(f"$P_{k}$", p, xytext=(5, 4), textcoords="offset points", color="white", fontsize=8)
+            label(b, p, f"$P_{k}$", offset=(5, 4), color="white", fontsize=8, halo=False)
         b.set_xlabel("$x_2$")
         b.set_ylabel("$y_2$")
         _colorbar(fig, im, b, r"worst-case $\kappa(\mathbf{J})$", vmax)
         panel_title(b, "b", r"wheel 2 anywhere, $d = r$")
+        _label_contours(fig, [contours])
     return fig
 
 
@@ -102,8 +160,10 @@ def draw_motion_maps(maps, titles, fig=None):
     with style():
         fig, axes = new_figure(1, len(maps), width=3.6 * len(maps), height=3.4, fig=fig, drawing=False)
         vmax = 10.0
+        contours = []
         for k, (ax, mm, title) in enumerate(zip(axes, maps, titles)):
-            im = _kappa_image(ax, mm.x, mm.y, mm.kappa, vmax)
+            im, cs = _kappa_image(ax, mm.x, mm.y, mm.kappa, vmax)
+            contours.append(cs)
             ax.plot(*mm.mounts.T, "s", color="white", mec="black", ms=5, mew=0.6)
             ax.plot(0, 0, "+", color="white", ms=7)
             if mm.circle is not None:
@@ -122,6 +182,7 @@ def draw_motion_maps(maps, titles, fig=None):
             ax.set_ylabel("$U_y$" if k == 0 else "")
             panel_title(ax, "abcdef"[k], title)
         _colorbar(fig, im, axes, r"$\kappa(\mathbf{J})$ of the rotation about $U$", vmax)
+        _label_contours(fig, contours)
     return fig
 
 

@@ -29,12 +29,18 @@ def _align(dx, dy):
     return ha, va
 
 
+def _outlined(patch) -> bool:
+    """Whether ``patch`` draws an outline a label could cross (a circle's rim, a polygon's edges)."""
+    return patch.get_linewidth() > 0 and patch.get_edgecolor()[3] > 0
+
+
 class _ClearLabel(Annotation):
     """A label that, when drawn, moves off the lines and arrows of its axes (an annotation of :func:`label`).
 
     At draw time -- the axes' limits final, so every line is where it will be shown -- the label keeps the
     offset it was given unless its box crosses a line (:class:`~matplotlib.lines.Line2D` of two or more
-    points), a marked point, an arrow or another text of its axes; then it takes the first offset of
+    points), a marked point, an arrow, the outline of a patch (a platform's rim, a wheel) or another text of its
+    axes; then it takes the first offset of
     :data:`_DIRECTIONS` (at the same distance, then at twice and three times it) whose box crosses none, and if none
     is clear, the one it was given.  The
     choice depends only on the drawing, so every format and every machine shows the same placement.
@@ -57,7 +63,7 @@ class _ClearLabel(Annotation):
             if line.get_marker() not in (None, "None", "none", "", " "):
                 paths += [Path(p + [[-1.0, -1.0], [1.0, 1.0]]) for p in xy]
         for patch in ax.patches:
-            if isinstance(patch, FancyArrowPatch) and patch.get_visible():
+            if patch.get_visible() and (isinstance(patch, FancyArrowPatch) or _outlined(patch)):
                 paths.append(patch.get_transform().transform_path(patch.get_path()))
         boxes = [t.get_window_extent(renderer) for t in ax.texts if t is not self and t.get_visible() and t.get_text()]
         return paths, boxes
@@ -100,7 +106,7 @@ def label(
     ax, xy, text, *, offset=(4, 4), color=None, ha="left", va="bottom", fontsize=FONT_LABEL, zorder=9.0, halo=True, **kw
 ):
     """A text label at ``xy`` shifted by ``offset`` points, with a white halo for legibility; when drawn it moves
-    off any line, marked point, arrow or text it would cover (``_ClearLabel``).
+    off any line, marked point, arrow, patch outline or text it would cover (``_ClearLabel``).
 
     Parameters
     ----------
@@ -140,7 +146,7 @@ def label(
     t.set_transform(IdentityTransform())  # as Axes.annotate does: the offset is in points
     ax.add_artist(t)
     if halo:
-        t.set_path_effects(HALO)
+        t.set_path_effects(list(HALO))
     return t
 
 
