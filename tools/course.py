@@ -91,7 +91,7 @@ def released(out: Path) -> dict[str, bytes]:
     """The lessons as nbgrader releases them (``name.ipynb`` -> bytes), in a temporary nbgrader course."""
     from tools import assignments as A
     from tools.build import execute as X
-    from tools.grades import _nbgrader
+    from tools.grades import run_nbgrader
 
     notebooks: dict[str, bytes] = {}
     with tempfile.TemporaryDirectory(prefix="course-") as tmp:
@@ -101,7 +101,7 @@ def released(out: Path) -> dict[str, bytes]:
         env = X.kernel_env(ROOT, course / "out")
         for p in LESSONS:
             if (course / "source" / p.stem / p.name).is_file():
-                _nbgrader(course, env, "generate_assignment", p.stem)
+                run_nbgrader(course, env, "generate_assignment", p.stem)
                 notebooks[p.name] = (course / "release" / p.stem / p.name).read_bytes()
             else:  # no exercise to release: the lesson as it is, outputs cleared
                 notebooks[p.name] = _cleared(p)

@@ -39,7 +39,7 @@ from pathlib import Path
 from tools.build import BuildError, say
 from tools.build import execute as X
 
-__all__ = ["READS", "grade", "key", "main"]
+__all__ = ["READS", "grade", "key", "main", "run_nbgrader"]
 
 #: what the round trip reads besides the chapter, ``wmr/`` and ``edition/`` (relative to the project's root)
 READS = ("notebooks", "tools/grades.py", "tools/assignments.py", "environment.lock")
@@ -51,7 +51,7 @@ def key(chapter: Path, root: Path = X.ROOT) -> str:
     return X.key(Path(chapter).resolve(), Path(root), tuple(Path(root).resolve() / r for r in READS))
 
 
-def _nbgrader(course: Path, env: dict[str, str], *args: str) -> None:
+def run_nbgrader(course: Path, env: dict[str, str], *args: str) -> None:
     """Run ``nbgrader ARGS`` in ``course``; when this step is stopped, nbgrader gets SIGTERM (it stops its kernel)."""
     cmd = [sys.executable, "-m", "nbgrader", *args, "--log-level=WARN"]
     with subprocess.Popen(cmd, cwd=course, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True) as p:
@@ -82,12 +82,12 @@ def _round_trip(chapter: Path, course: Path, root: Path) -> dict:
     if not (course / "source" / name / chapter.name).is_file():
         return {"chapter": name, "exercises": []}
     env = X.kernel_env(root, course / "out")
-    _nbgrader(course, env, "generate_assignment", name)
+    run_nbgrader(course, env, "generate_assignment", name)
     released = _run_all(course / "release" / name / chapter.name, env)
     for student, src in (("solved", course / "source"), ("blank", course / "release")):
         (course / "submitted" / student / name).mkdir(parents=True)
         shutil.copy(src / name / chapter.name, course / "submitted" / student / name / chapter.name)
-    _nbgrader(course, env, "autograde", name)
+    run_nbgrader(course, env, "autograde", name)
     from nbgrader.api import Gradebook  # type: ignore[import-untyped]
 
     with Gradebook(f"sqlite:///{course / 'gradebook.db'}") as gb:
