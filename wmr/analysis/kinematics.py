@@ -19,6 +19,7 @@ With isotropic Jacobians these reduce to the paper's (49)-(50) and (55)-(57).
 from __future__ import annotations
 
 import contextlib
+import functools
 import warnings
 from dataclasses import dataclass
 
@@ -142,8 +143,21 @@ def _from_model(robot):
 
 
 def _pinv_rank(M):
-    """``(pinv_columns(M), rank(M))`` of a small constant matrix (once per robot: the constants are kept on it)."""
-    return pinv_columns(M), int(rank(M))
+    """``(pinv_columns(M), rank(M))`` of a small constant matrix, remembered by its value.
+
+    The matrices come from the model at every call (so they are never stale); only what is
+    derived from them, two SVDs, is looked up.
+    """
+    M = np.ascontiguousarray(M, dtype=float)
+    return _pinv_rank_of(M.tobytes(), M.shape)
+
+
+@functools.lru_cache(maxsize=256)
+def _pinv_rank_of(data, shape):
+    M = np.frombuffer(data).reshape(shape)
+    P = pinv_columns(M)
+    P.setflags(write=False)
+    return P, int(rank(M))
 
 
 def _wheel_rows(c, s):
