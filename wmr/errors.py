@@ -7,6 +7,8 @@ caller expects (in the style of python-control's ``ControlArgument(TypeError)``)
   number, ``None``, a SymPy symbol where numbers are needed, the class ``Robot`` instead of a robot);
 * :class:`InputValueError` (a ``ValueError``): the right kind with a bad *value* (a negative
   radius, NaN, infinity, a wrong shape, a number too large for double precision);
+* :class:`FrozenError` (an :class:`InputTypeError` and an ``AttributeError``): an assignment to an
+  attribute of a value that is made once (a :class:`~wmr.model.robot.Robot`): build a new one;
 * :class:`RobotFileError` (an :class:`InputValueError`): a malformed robot file, one line
   ``FILE:LINE: key: what is wrong``;
 * :class:`LimitError` (an :class:`InputValueError`): a request beyond a limit of :mod:`wmr.model.limits`
@@ -37,6 +39,7 @@ __all__ = [
     "InputError",
     "InputTypeError",
     "InputValueError",
+    "FrozenError",
     "RobotFileError",
     "LimitError",
     "MissingDependencyError",
@@ -57,6 +60,14 @@ class InputTypeError(InputError, TypeError):
 
 class InputValueError(InputError, ValueError):
     """An argument of the right kind with a bad value (negative radius, NaN, wrong shape, too large, ...)."""
+
+
+class FrozenError(InputTypeError, AttributeError):
+    """An assignment to (or deletion of) an attribute of an immutable value, such as a robot's ``wheels``.
+
+    A :class:`~wmr.model.robot.Robot` is checked once, when it is made, and what is derived from it
+    is kept on it; the message says what to do instead (build a new robot).
+    """
 
 
 class RobotFileError(InputValueError):

@@ -72,7 +72,8 @@ def singular_values(A: ArrayLike) -> FloatArray:
         with np.errstate(over="ignore"):  # overflow is reported by _finite
             sv = singular_values(A / m[..., None]) * m
         return _finite("A", sv, "its singular values")
-    return map_matrices(lambda X: np.linalg.svd(X, compute_uv=False), A)
+    # one LAPACK call over the stack: chunks on the thread pool gained 1.0x on 10^6 3x6 matrices (tools/bench_fastpaths.py)
+    return np.linalg.svd(A, compute_uv=False)
 
 
 @np.errstate(over="ignore", invalid="ignore")

@@ -35,7 +35,7 @@ from ..model import validation as V
 from ..model.backend import NUMERIC
 from ..model.platform import E
 from ..model.robot import Robot
-from ..model.trig import Terms, trig_combination
+from ..model.trig import Terms, combine_checked
 from ..model.types import ArrayLike, FloatArray, IntArray
 from .linalg import left_null_space, null_space, rank
 
@@ -76,10 +76,8 @@ def twist_constraints(robot: Robot, beta: ArrayLike, free: ArrayLike | None = No
     robot = V.numeric_robot(robot)
     beta = robot.effective_beta(beta)
     free = np.ones(robot.n_rates, dtype=bool) if free is None else np.asarray(free, dtype=bool)
-    terms, base_rank = robot._layout().memo(
-        ("twist_constraints", free.tobytes()), lambda: _constraint_terms(robot, free)
-    )
-    return trig_combination(beta, terms), base_rank
+    terms, base_rank = robot._layout.memo(("twist_constraints", free.tobytes()), lambda: _constraint_terms(robot, free))
+    return combine_checked(beta, terms), base_rank
 
 
 def _constraint_terms(robot, free):

@@ -20,7 +20,7 @@ from ..errors import InputTypeError, InputValueError
 from ..model import validation as V
 from ..model.robot import Robot
 from ..model.types import ArrayLike, FloatArray
-from .kinematics import constants_kept, forward
+from .kinematics import forward
 
 __all__ = ["Trajectory", "simulate", "MAX_STEPS"]
 
@@ -173,7 +173,7 @@ def simulate(
     >>> (tr.pose[-1].round(12) + 0.0).tolist(), bool(tr.slip.max() < 1e-12)   # 1 m along +y, no slip
     ([0.0, 0.0, 1.0], True)
     """
-    given, robot = robot, V.numeric_robot(robot)
+    robot = V.numeric_robot(robot)
     t_end = V.number("t_end", V.positive("t_end", t_end))
     dt = V.number("dt", V.positive("dt", dt))
     max_steps = V.integer("max_steps", max_steps, minimum=1)
@@ -216,8 +216,8 @@ def simulate(
     pose, beta = np.empty((n + 1, 3)), np.empty((n + 1, robot.w))
     twist, slip = np.empty((n + 1, 3)), np.empty(n + 1)
     pose[0], beta[0] = pose0, beta0
-    # an overflow is detected and reported by deriv; J1 and the units' blocks come from the model once
-    with np.errstate(over="ignore", invalid="ignore"), constants_kept(robot), constants_kept(given):
+    # an overflow is detected and reported by deriv; J1 and the units' blocks are kept on the robot (made once)
+    with np.errstate(over="ignore", invalid="ignore"):
         for k in range(n):
             t, p, b = ts[k], pose[k], beta[k]
             k1p, k1b, tw, sl = deriv(t, p, b)

@@ -11,22 +11,23 @@ of :math:`\mathbf F` is which rate.
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Iterable
+from typing import Any, NoReturn
 
 import numpy as np
 
-from ..errors import InputTypeError, InputValueError
+from ..errors import FrozenError, InputValueError
 from . import arrays as A
 from . import checks as C
 from .backend import NUMERIC, SYMBOLIC, Backend, choose
 from .layout import Layout
 from .lazysympy import sp
-from .limits import check
 from .platform import moved_points, point_row
 from .tolerance import column_norms
-from .trig import trig_combination
+from .trig import combine_checked
 from .types import ArrayLike, FloatArray, Matrix, Numbers, Point, Symbolic
-from .wheels import WheelUnit, wheel_kinds
+from .wheels import WheelUnit, wheel_units
 
 __all__ = ["Robot", "TWIST_NAMES"]
 
@@ -44,6 +45,12 @@ class Robot:
         configuration has one entry per unit (:meth:`effective_beta`).
     name : str, optional
 
+    Notes
+    -----
+    A value checked once: setting or deleting an attribute raises :class:`~wmr.errors.FrozenError`
+    (build a new robot), so what is derived from the units is made at first use and kept, never
+    stale.  Equality and hashing are by identity.
+
     Examples
     --------
     >>> from wmr import Robot, CentredWheel
@@ -54,25 +61,22 @@ class Robot:
     (4, 5)
     """
 
+    wheels: tuple[WheelUnit, ...]
+    name: str
+    rate_slices: tuple[slice, ...]  #: slice of each unit's rates inside the joint-rate vector theta_dot
+
     def __init__(self, wheels: Iterable[WheelUnit], name: str | None = None) -> None:
-        if isinstance(wheels, (str, bytes, WheelUnit)):
-            raise InputTypeError(f"wheels must be a sequence of wheel units, got {C.show(wheels)}")
-        try:
-            wheels = tuple(wheels)
-        except TypeError:
-            raise InputTypeError(f"wheels must be a sequence of wheel units, got {C.show(wheels)}") from None
-        if len(wheels) == 0:
-            raise InputValueError("wheels must contain at least one wheel unit, got 0")
-        check("wheels", len(wheels), "wheels")
-        for k, u in enumerate(wheels):
-            if not isinstance(u, WheelUnit):
-                kinds = ", ".join(t.__name__ for t in wheel_kinds().values())
-                raise InputTypeError(f"wheels[{k}] must be a wheel unit ({kinds}, ...), got {C.show(u)}")
-        self.wheels: tuple[WheelUnit, ...] = wheels
-        self.name = C.optional_text("name", name) or "robot"
+        wheels = wheel_units(wheels)
         starts = np.cumsum([0] + [u.n_rates for u in wheels])
-        #: slice of each unit's rates inside the joint-rate vector theta_dot
-        self.rate_slices = tuple(slice(int(a), int(b)) for a, b in zip(starts[:-1], starts[1:]))
+        made = object.__setattr__  # the only assignments: the robot is frozen from here on
+        made(self, "wheels", wheels)
+        made(self, "name", C.optional_text("name", name) or "robot")
+        made(self, "rate_slices", tuple(slice(int(a), int(b)) for a, b in zip(starts[:-1], starts[1:])))
+
+    def __setattr__(self, attr: str, value: Any = None) -> NoReturn:
+        raise FrozenError(f"a Robot cannot be changed once made ({attr}): build a new one, Robot(wheels, name=...)")
+
+    __delattr__ = __setattr__
 
     def __repr__(self):
         kinds = ", ".join(f"{u.kind}@{tuple(u.position)}" for u in self.wheels)
@@ -124,22 +128,20 @@ class Robot:
         r"""SymPy symbols :math:`\beta_1, \dots, \beta_w` (real)."""
         return sp.symbols(f"beta1:{self.w + 1}", real=True)
 
+    @functools.cached_property
     def _layout(self) -> Layout:
-        """The units as arrays (:mod:`~wmr.model.layout`), made once for this robot's tuple of units."""
-        kept: Layout | None = getattr(self, "_kept_layout", None)
-        if kept is None or kept.wheels is not self.wheels:
-            self._kept_layout = kept = Layout.of(self.wheels)
-        return kept
+        """The units as arrays (:mod:`~wmr.model.layout`), made at first use and kept (the robot is frozen)."""
+        return Layout.of(self.wheels)
 
     @property
     def mount_points(self) -> FloatArray:
         r"""Array (w, 2) of the :math:`\mathbf d_i` (numeric robots only)."""
-        return self._layout().positions.copy()
+        return self._layout.positions.copy()
 
     @property
     def is_symbolic(self) -> bool:
         """True when a mount point or a length of some unit is a SymPy expression."""
-        return self._layout().symbolic
+        return self._layout.symbolic
 
     @property
     def F_column_norms(self) -> FloatArray:
@@ -152,7 +154,7 @@ class Robot:
         (:mod:`wmr.model.tolerance`).  Zero columns get 1.  Numeric robots only.
         """
         bot = self.numeric()
-        L = bot._layout().L  # the units' local blocks side by side
+        L = bot._layout.L  # the units' local blocks side by side
         return np.concatenate([column_norms(bot.J1(backend=NUMERIC)), column_norms(L)])
 
     # --- matrices -------------------------------------------------------------------------------
@@ -179,7 +181,7 @@ class Robot:
         [[0.1, 0.5], [0.3, 0.5]]
         """
         beta = A.finite_array("beta", beta, last=self.w)
-        lay = self._layout()
+        lay = self._layout
         if lay.own.size:  # (a copy: the caller's array is not changed)
             beta = beta.copy()
             beta[..., lay.own] = lay.own_angle
@@ -221,7 +223,7 @@ class Robot:
         rows = lambda L: [point_row(u.position, L, backend=bk) for u in self.wheels]  # noqa: E731  (32)
         if bk is NUMERIC:  # J1 once per robot, then its first column / L
             L = C.number("L (characteristic length)", L)
-            M = self._layout().memo("J1", lambda: np.concatenate(rows(1.0))).copy()
+            M = self._layout.memo("J1", lambda: np.concatenate(rows(1.0))).copy()
             with np.errstate(over="ignore"):
                 M[:, 0] /= L
         else:
@@ -255,7 +257,7 @@ class Robot:
         bk = self._backend(beta, backend)
         b = self._beta(beta, bk)
         if bk is NUMERIC:
-            return trig_combination(b, self.numeric()._layout().J2_terms())
+            return combine_checked(b, self.numeric()._layout.J2_terms())
         M = bk.zeros(2 * self.w, self.n_rates)
         for i, (u, sl) in enumerate(zip(self.wheels, self.rate_slices)):
             bk.set_block(M, 2 * i, sl.start, u.block(b[i], backend=bk))
@@ -282,7 +284,7 @@ class Robot:
             return bk.broadcast_hstack(self.J1(backend=SYMBOLIC), -self.J2(beta, SYMBOLIC))
         b = self._beta(beta, bk)
         const = np.concatenate([self.J1(backend=NUMERIC), np.zeros((2 * self.w, self.n_rates))], axis=-1)
-        return trig_combination(b, self.numeric()._layout().J2_terms(-1.0, 3, const))  # [J1  -J2]
+        return combine_checked(b, self.numeric()._layout.J2_terms(-1.0, 3, const))  # [J1  -J2]
 
     def J(self, beta: Numbers | None = None, L: Numbers = 1, backend: Backend | None = None) -> Matrix:
         r"""The product :math:`\mathbf J = \mathbf J_{L1}^T\mathbf J_2` (56).
@@ -311,14 +313,14 @@ class Robot:
             return self.J1(L, backend=SYMBOLIC).T * self.J2(beta, SYMBOLIC)
         b = self._beta(beta, bk)
         with np.errstate(over="ignore", invalid="ignore"):
-            terms = self.numeric()._layout().J_terms(self.J1(L, backend=NUMERIC))  # J = J_L1^T J2, term by term
+            terms = self.numeric()._layout.J_terms(self.J1(L, backend=NUMERIC))  # J = J_L1^T J2, term by term
             ok = np.isfinite(2 * np.abs(terms.p) + 2 * np.abs(terms.q)).all()  # |entry| <= |P_i| + |Q_i|
         if not ok:
             raise InputValueError(
                 f"J overflows for this robot and L = {L!r}: the wheel radii times d_i / L exceed "
                 "the double-precision range"
             )
-        return trig_combination(b, terms)
+        return combine_checked(b, terms)
 
     def numeric(self) -> Robot:
         r"""The same robot with float mount points and lengths (itself when it has no SymPy values).
@@ -343,7 +345,7 @@ class Robot:
         """
         if not self.is_symbolic:
             return self
-        lay = self._layout()
+        lay = self._layout
         if "robot" in lay._numeric:
             return lay._numeric["robot"]
         if self.free_symbols:
@@ -357,7 +359,7 @@ class Robot:
     @property
     def free_symbols(self) -> set[Symbolic]:
         """The SymPy symbols in the mount points and lengths (an empty set for numeric and exact robots)."""
-        return set(self._layout().free_symbols)
+        return set(self._layout.free_symbols)
 
     # --- frames ---------------------------------------------------------------------------------
     def moved(self, origin: Point = (0.0, 0.0), angle: Numbers = 0.0) -> Robot:

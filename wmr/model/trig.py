@@ -17,10 +17,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .platform import cos_sin, rotated
+from .arrays import finite_array
+from .platform import cos_sin_checked, rotated
 from .types import ArrayLike, FloatArray, IntArray
 
-__all__ = ["Terms", "trig_combination"]
+__all__ = ["Terms", "trig_combination", "combine_checked"]
 
 #: Configurations per chunk of :func:`trig_combination` (its temporaries stay in cache).
 CHUNK = 8192
@@ -121,7 +122,22 @@ def trig_combination(beta: ArrayLike, terms: Terms) -> FloatArray:
     >>> trig_combination(np.array([[0.0, np.pi / 2]]), t).tolist()
     [[[1.5, 2.5]]]
     """
-    beta = np.asarray(beta, dtype=float)
+    return combine_checked(finite_array("beta", beta), terms)
+
+
+def combine_checked(beta: FloatArray, terms: Terms) -> FloatArray:
+    """:func:`trig_combination` of angles already checked (a robot's own, from ``effective_beta``): no check here.
+
+    Parameters
+    ----------
+    beta : numpy.ndarray (..., w)
+        Finite float angles, checked by the caller.
+    terms : Terms
+
+    Returns
+    -------
+    numpy.ndarray (..., *terms.shape)
+    """
     w = beta.shape[-1]
     m = int(np.prod(terms.shape))
     flat = beta.reshape(-1, w)
@@ -134,7 +150,7 @@ def trig_combination(beta: ArrayLike, terms: Terms) -> FloatArray:
     ct, st = np.empty((used.size, k)), np.empty((used.size, k))
     for a in range(0, N, k):
         z = min(a + k, N)
-        c, s = cos_sin(flat[a:z, used].T, out=(ct[:, : z - a], st[:, : z - a]))
+        c, s = cos_sin_checked(flat[a:z, used].T, out=(ct[:, : z - a], st[:, : z - a]))
         r = out[:, a:z]  # every update below is contiguous
         r[...] = const[:, None]
         for j, i, p, q in listed:  # (11): R(beta_i) M_i = cos M_i + sin E M_i

@@ -34,7 +34,6 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..analysis.kinematics import constants_kept
 from ..errors import InputTypeError, InputValueError
 from ..model import validation as V
 from ..model.platform import wrap_angle
@@ -193,7 +192,7 @@ def resteer_transient(
     step = rate * dt
     k = 0
     try:
-        with np.errstate(over="ignore", invalid="ignore"), constants_kept(robot):
+        with np.errstate(over="ignore", invalid="ignore"):
             for k, t_k in enumerate(tw):  # time steps (each kernel call is batched)
                 target, speed = _targets(robot, strategy, t_k, beta[k])
                 beta[k + 1] = beta[k] + np.clip(wrap_angle(target - beta[k]), -step, step)  # |beta_dot| <= omega_s

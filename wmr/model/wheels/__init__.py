@@ -44,7 +44,11 @@ from __future__ import annotations
 
 import importlib
 import pkgutil
+from typing import Any
 
+from ...errors import InputTypeError, InputValueError
+from .. import checks as C
+from ..limits import check
 from .centred import CentredWheel
 from .dual import DualWheel
 from .fixed import FixedWheel
@@ -66,6 +70,7 @@ __all__ = [
     "wheel_kinds",
     "wheel_kind",
     "kinds_table",
+    "wheel_units",
 ]
 
 # a kind is registered by being defined: import every module of this package, so that a new module
@@ -98,6 +103,46 @@ def kinds_table() -> str:
     lines = [rule, "  ".join(c.ljust(w) for c, w in zip(rows[0], widths, strict=True)).rstrip(), rule]
     lines += ["  ".join(c.ljust(w) for c, w in zip(r, widths, strict=True)).rstrip() for r in rows[1:]]
     return "\n".join(lines + [rule])
+
+
+def wheel_units(wheels: Any) -> tuple[WheelUnit, ...]:
+    """The wheel units of a :class:`~wmr.model.robot.Robot`, checked (the robot's one check of them).
+
+    Parameters
+    ----------
+    wheels : sequence of WheelUnit
+        At least one unit, at most the limit of :mod:`wmr.model.limits`.
+
+    Returns
+    -------
+    tuple of WheelUnit
+
+    Raises
+    ------
+    wmr.errors.InputTypeError
+        If ``wheels`` is not a sequence of wheel units.
+    wmr.errors.InputValueError
+        If it is empty or too long.
+
+    Examples
+    --------
+    >>> len(wheel_units([CentredWheel((1.0, 0.0), r=0.1)]))
+    1
+    """
+    if isinstance(wheels, (str, bytes, WheelUnit)):
+        raise InputTypeError(f"wheels must be a sequence of wheel units, got {C.show(wheels)}")
+    try:
+        wheels = tuple(wheels)
+    except TypeError:
+        raise InputTypeError(f"wheels must be a sequence of wheel units, got {C.show(wheels)}") from None
+    if len(wheels) == 0:
+        raise InputValueError("wheels must contain at least one wheel unit, got 0")
+    check("wheels", len(wheels), "wheels")
+    for k, u in enumerate(wheels):
+        if not isinstance(u, WheelUnit):
+            kinds = ", ".join(t.__name__ for t in wheel_kinds().values())
+            raise InputTypeError(f"wheels[{k}] must be a wheel unit ({kinds}, ...), got {C.show(u)}")
+    return wheels
 
 
 __doc__ = (__doc__ or "") + "\n" + kinds_table() + "\n"

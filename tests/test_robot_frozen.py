@@ -1,0 +1,92 @@
+"""A Robot is a frozen value (issue 29): checked once, never changed, so what it keeps cannot go stale.
+
+Also the fast paths kept against their plain implementations where no other test does it
+(:func:`wmr.model.platform.cos_sin` against ``np.cos`` / ``np.sin``), and the deprecated
+``constants_kept``.
+"""
+
+import pickle
+
+import numpy as np
+import pytest
+
+import wmr
+from wmr.analysis import kinematics
+from wmr.analysis import reference as R
+from wmr.errors import FrozenError, InputError
+from wmr.model.platform import cos_sin
+
+
+def _bot():
+    return wmr.Robot([wmr.CentredWheel((1.0, 0.0), r=0.1), wmr.CentredWheel((-1.0, 0.0), r=0.1)], name="two")
+
+
+@pytest.mark.parametrize(
+    "attr, value",
+    [
+        ("wheels", (wmr.CentredWheel((2.0, 0.0), r=0.1),)),
+        ("name", "other"),
+        ("rate_slices", (slice(0, 1),)),
+        ("_layout", None),
+        ("anything_new", 1),
+    ],
+)
+def test_assigning_an_attribute_raises_and_changes_nothing(attr, value):
+    bot = _bot()
+    F0 = bot.F([0.3, -0.2])
+    with pytest.raises(FrozenError, match=attr) as info:
+        setattr(bot, attr, value)
+    assert isinstance(info.value, InputError) and isinstance(info.value, AttributeError)
+    assert "new" in str(info.value)  # says what to do instead
+    with pytest.raises(FrozenError, match=attr):
+        delattr(bot, attr)
+    assert bot.name == "two" and bot.w == 2 and bot.n_rates == 2
+    np.testing.assert_array_equal(bot.F([0.3, -0.2]), F0)
+
+
+def test_the_kept_layout_and_constants_cannot_go_stale():
+    bot = _bot()
+    lay = bot._layout
+    sol = wmr.forward(bot, [0.0, 0.0], [1.0, 1.0])
+    with pytest.raises(FrozenError):
+        bot.wheels = (wmr.CentredWheel((5.0, 0.0), r=1.0), wmr.CentredWheel((-5.0, 0.0), r=1.0))
+    assert bot._layout is lay and lay.wheels is bot.wheels  # made once, for these units
+    assert bot._layout.memo("kinematics", lambda: None) is kinematics._constants(bot)  # kept on the robot
+    np.testing.assert_array_equal(wmr.forward(bot, [0.0, 0.0], [1.0, 1.0]).value, sol.value)
+    # a robot with other units (a new robot) has its own, right, constants: nothing is keyed by id()
+    other = wmr.Robot([wmr.CentredWheel((5.0, 0.0), r=1.0), wmr.CentredWheel((-5.0, 0.0), r=1.0)])
+    beta, rates = np.array([0.2, 0.2]), np.array([1.0, 1.0])
+    np.testing.assert_allclose(wmr.forward(other, beta, rates).value, R.forward(other, beta, rates)[0], atol=1e-14)
+    assert not hasattr(kinematics, "_KEPT")
+
+
+def test_equality_and_hashing_stay_by_identity():
+    a, b = _bot(), _bot()
+    assert a == a and a != b and len({a, b, a}) == 2
+    assert {a: 1}[a] == 1
+
+
+def test_a_pickled_robot_is_a_frozen_robot_with_the_same_matrices():
+    bot = _bot()
+    bot.J([0.1, 0.2])  # something kept
+    back = pickle.loads(pickle.dumps(bot))
+    np.testing.assert_array_equal(back.J([0.1, 0.2]), bot.J([0.1, 0.2]))
+    with pytest.raises(FrozenError):
+        back.name = "x"
+
+
+def test_constants_kept_is_deprecated_and_names_its_replacement():
+    bot = _bot()
+    with pytest.warns(DeprecationWarning, match="forward/inverse on the robot directly"):
+        with kinematics.constants_kept(bot):
+            wmr.forward(bot, [0.0, 0.0], [1.0, 1.0])
+
+
+def test_cos_sin_equals_numpy_cos_and_sin():
+    beta = np.concatenate([np.random.default_rng(7).uniform(-np.pi, np.pi, 100_000), [0.0, np.pi, -np.pi, np.pi / 2]])
+    c, s = cos_sin(beta)
+    np.testing.assert_allclose(c, np.cos(beta), rtol=0, atol=4.5e-16)
+    np.testing.assert_allclose(s, np.sin(beta), rtol=0, atol=4.5e-16)
+    assert c[-4] == 1.0 and s[-4] == 0.0 and c[-3] == -1.0 and c[-2] == -1.0
+    with pytest.raises(InputError):
+        cos_sin([0.0, np.nan])

@@ -1,0 +1,83 @@
+"""Each fast path of wmr against the plain implementation it replaces (issue 29: keep a fast path only at >= 3x).
+
+The plain implementations are the dense definitions of :mod:`wmr.analysis.reference` (and ``np.cos`` /
+``np.sin`` for :func:`wmr.model.platform.cos_sin`).  Run ``.venv/bin/python tools/bench_fastpaths.py [N]``
+(default N = 10**6 configurations, fixed seed); each row prints the best of three wall-clock times and
+the gain (plain / fast).  The results are compared as well: a fast path that disagrees is reported.
+"""
+
+from __future__ import annotations
+
+import sys
+
+import numpy as np
+
+import wmr
+from tools.bench_kernels import SEED, best_of, same_kappa, swerve_robot
+from wmr.analysis import reference as R
+from wmr.model.platform import cos_sin
+
+
+def rows(n):
+    """``(name, fast, plain, same)`` for every fast path, on ``n`` configurations."""
+    rng = np.random.default_rng(SEED)
+    centred, dual, swerve = wmr.paper_robot("centred"), wmr.paper_robot("dual"), swerve_robot()
+    L = wmr.characteristic_length(centred)
+    beta = rng.uniform(-np.pi, np.pi, (n, 3))
+    twist = rng.normal(size=(n, 3))
+    angles = rng.uniform(-np.pi, np.pi, n)
+    sw_beta = wmr.steering_angles(swerve, twist)
+
+    def plain_swerve():
+        return R.inverse(swerve, sw_beta, twist)[0]
+
+    return [
+        ("rank F, 3 centred (6x6)", lambda: wmr.rank_F(centred, beta), lambda: R.rank_F(centred, beta), np.array_equal),
+        (
+            "kappa(J), 3 centred (3x3)",
+            lambda: wmr.condition_number(centred.J(beta, L=L)),
+            lambda: R.condition_number(R.J(centred, beta, L)),
+            same_kappa,
+        ),
+        (
+            "kappa(J), 3 dual (3x6, general)",
+            lambda: wmr.condition_number(dual.J(beta, L=L)),
+            lambda: R.condition_number(R.J(dual, beta, L)),
+            same_kappa,
+        ),
+        (
+            "J only, 3 dual (3x6)",
+            lambda: dual.J(beta, L=L),
+            lambda: R.J(dual, beta, L),
+            lambda a, b: np.allclose(a, b, rtol=1e-12, atol=1e-14),
+        ),
+        (
+            "swerve IK (given the angles), 4 modules",
+            lambda: wmr.inverse(swerve, sw_beta, twist).value,
+            plain_swerve,
+            lambda a, b: np.allclose(a, b, rtol=1e-12, atol=1e-12),
+        ),
+        (
+            "cos_sin against np.cos, np.sin",
+            lambda: np.stack(cos_sin(angles)),
+            lambda: np.stack((np.cos(angles), np.sin(angles))),
+            lambda a, b: np.allclose(a, b, rtol=0, atol=4.5e-16),
+        ),
+        ("np.tan against np.cos (one call)", lambda: np.tan(angles), lambda: np.cos(angles), lambda a, b: True),
+    ]
+
+
+def main(n=10**6, repeat=3):
+    """Print one line per fast path: its time, the plain time, the gain and whether the results agree."""
+    print(f"{n} configurations, best of {repeat}")
+    for name, fast, plain, same in rows(n):
+        t_fast, a = best_of(fast, repeat)
+        t_plain, b = best_of(plain, repeat)
+        print(
+            f"{name:42s} fast {t_fast * 1e3:9.1f} ms  plain {t_plain * 1e3:9.1f} ms  "
+            f"gain {t_plain / t_fast:6.1f}x  same {same(a, b)}"
+        )
+
+
+if __name__ == "__main__":
+    main(int(sys.argv[1]) if len(sys.argv) > 1 else 10**6)
