@@ -136,7 +136,7 @@ def combine_checked(beta: FloatArray, terms: Terms) -> FloatArray:
 
     Returns
     -------
-    numpy.ndarray (..., *terms.shape)
+    numpy.ndarray, shape ``beta.shape[:-1] + terms.shape``
     """
     w = beta.shape[-1]
     m = int(np.prod(terms.shape))
