@@ -53,17 +53,19 @@ def derived(chapter):
     FileNotFoundError
         When ``notebooks/<chapter>.ipynb`` does not exist.
     """
-    import nbformat
+    import json
 
     path = NOTEBOOKS / f"{chapter}.ipynb"
     if not path.is_file():
         raise FileNotFoundError(f"chapter {chapter!r}: no notebook {path}")
-    nb = nbformat.read(path, as_version=4)
-    code = [c for c in nb.cells if c.cell_type == "code"]
+    # plain JSON (nbformat 4 stores a cell's source as a string or a list of lines): importing nbformat costs
+    # its schema validator, over a second, in every kernel that calls this
+    cells = json.loads(path.read_text(encoding="utf-8"))["cells"]
     namespace: dict = {"__name__": f"derived_{chapter}"}
-    for cell in code:
+    for cell in cells:
         tags = set(cell.get("metadata", {}).get("tags", []))
-        if "imports" in tags or "derivation" in tags:
-            exec(compile(cell.source, f"{path.name}", "exec"), namespace)
+        if cell.get("cell_type") == "code" and ("imports" in tags or "derivation" in tags):
+            source = cell["source"] if isinstance(cell["source"], str) else "".join(cell["source"])
+            exec(compile(source, f"{path.name}", "exec"), namespace)
             namespace.update(show=_quiet, say=_quiet, table=_quiet, quote=_quiet)
     return MappingProxyType(namespace)

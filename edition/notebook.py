@@ -69,10 +69,11 @@ class Project:
         pkg = Path(wmr.__file__).resolve().parent
         why = {
             "scratch": "a scratch folder of this project; only `make report` or `make test` writes `figures/`",
-            "temporary": "a temporary folder: this notebook is not inside the project",
+            "temporary": "a temporary folder: this notebook is not inside the project; its figures are shown, not saved",
             "build": "the build",
         }[self.source]
-        text = f"*This run writes its figures and ledger rows to* `{self.out}` *({why}).*"
+        what = "ledger rows" if self.source == "temporary" else "figures and ledger rows"
+        text = f"*This run writes its {what} to* `{self.out}` *({why}).*"
         if self.root is not None and pkg.parent != self.root:
             text += f" *The `wmr` package it imports is* `{pkg}`*, not this project’s.*"
         return text
@@ -184,6 +185,10 @@ class Chapter:
     def figure(self, key, data=None):
         """Compute (unless given), show and save one of the paper's figures into :attr:`Project.out`.
 
+        Saved only when the notebook belongs to a project (or the build runs it); a notebook elsewhere,
+        whose :attr:`Project.source` is ``"temporary"``, shows the figure and writes no file.  While nbgrader
+        grades the notebook (``$NBGRADER_EXECUTION`` set) the numbers are computed and the figure is not drawn.
+
         Parameters
         ----------
         key : str
@@ -197,7 +202,13 @@ class Chapter:
         """
         from .figures import show as show_figure
 
-        return show_figure(key, data, outdir=self.project.figures)
+        # a notebook outside any project (a copy, a student's folder) only shows its figures: their files would go
+        # to a temporary folder nobody reads, and writing SVG and PDF is most of a figure's time; while nbgrader
+        # grades (it sets NBGRADER_EXECUTION) the figure is computed, not drawn: nobody sees it, and drawing the
+        # figures is most of the time a chapter takes to grade
+        keep = self.project.source != "temporary"
+        grading = bool(os.environ.get("NBGRADER_EXECUTION"))
+        return show_figure(key, data, outdir=self.project.figures if keep else None, draw=not grading)
 
     def close(self):
         """Write this chapter's ledger fragment and show its tally.

@@ -1,7 +1,8 @@
 r"""Comparing a derived result with the printed one: exactly (SymPy) and numerically (NumPy).
 
 :func:`symbolic_equal` decides exact equality by reducing the difference to zero with a short,
-targeted chain of simplifications (no blanket ``simplify`` on large expressions);
+targeted chain of simplifications (no blanket ``simplify`` on large expressions): expansion, the exact
+reduction modulo :math:`\sin^2 + \cos^2 = 1`, then ``trigsimp``;
 :func:`max_residual` evaluates the difference at random points drawn with a fixed seed.
 """
 
@@ -22,15 +23,42 @@ def _as_matrix(x):
     return sp.Matrix([sp.sympify(x)])
 
 
+def _pythagorean_remainder(e):
+    r"""``e`` reduced modulo :math:`\sin^2 a + \cos^2 a = 1` for each angle ``a`` it holds, or None.
+
+    With :math:`s_a = \sin a`, :math:`c_a = \cos a` as independent variables, the numerator of ``e`` is a
+    polynomial; the relations :math:`s_a^2 + c_a^2 - 1` of distinct angles have coprime leading terms, so they
+    are a Gröbner basis and the remainder is 0 exactly when the numerator lies in the ideal they generate.
+    A zero remainder therefore proves ``e = 0`` for every angle (sound); a nonzero one proves nothing (two
+    angles may be related, e.g. :math:`a` and :math:`2a`), and the caller goes on with ``trigsimp``.
+    None when ``e`` is not polynomial in sines and cosines.
+    """
+    args = sorted({t.args[0] for t in e.atoms(sp.sin, sp.cos)}, key=sp.default_sort_key)
+    if not args:
+        return None
+    subs: dict = {}
+    relations, gens = [], []
+    for a in args:
+        s, c = sp.Dummy("s"), sp.Dummy("c")
+        subs |= {sp.sin(a): s, sp.cos(a): c}
+        relations.append(s**2 + c**2 - 1)
+        gens += [s, c]
+    p = sp.numer(sp.together(e.xreplace(subs)))
+    if p.has(sp.sin, sp.cos, sp.tan) or not p.is_polynomial(*gens):
+        return None
+    return sp.reduced(sp.expand(p), relations, *gens)[1]
+
+
 def _is_zero(e):
     if e == 0:
         return True
-    for step in (
-        sp.expand,
-        lambda z: sp.expand(sp.expand_trig(z)),
-        sp.trigsimp,
-        lambda z: sp.simplify(sp.expand_trig(z)),
-    ):
+    for step in (sp.expand, lambda z: sp.expand(sp.expand_trig(z))):
+        e = step(e)
+        if e == 0:
+            return True
+    if _pythagorean_remainder(e) == 0:  # exact and cheap where it applies; trigsimp below is neither cheap nor complete
+        return True
+    for step in (sp.trigsimp, lambda z: sp.simplify(sp.expand_trig(z))):
         e = step(e)
         if e == 0:
             return True

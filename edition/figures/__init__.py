@@ -118,7 +118,7 @@ def save(key, data, outdir, *, fig=None):
     return output.write(outdir, key, files, output.record(key, module(key), data))
 
 
-def show(key, data=None, *, outdir=None, width=None):
+def show(key, data=None, *, outdir=None, width=None, draw=True):
     """Compute (unless ``data`` is given), draw and display a figure with its alt text and caption; save it if asked.
 
     The alt text is the figure module's ``alt(data)`` (plain text: what the figure shows) when it defines one,
@@ -134,6 +134,9 @@ def show(key, data=None, *, outdir=None, width=None):
         Where to :func:`save` the figure's files.
     width : int, optional
         Display width in pixels (default: 110 pixels per inch of the figure).
+    draw : bool, optional
+        False: compute the numbers, draw nothing and save nothing, and display the caption with a line saying
+        the figure was not drawn (what :meth:`edition.notebook.Chapter.figure` asks while nbgrader grades).
 
     Returns
     -------
@@ -146,11 +149,16 @@ def show(key, data=None, *, outdir=None, width=None):
 
     mod = module(key)
     data = mod.data() if data is None else data
+    label = f"Figure {mod.NUMBER}" + (" (regenerated)" if mod.NUMBER.isdigit() else "") + ": " if mod.NUMBER else ""
+    if not draw:
+        display(
+            Markdown(f"*{label}{mod.TITLE}* (not drawn in this run; run the notebook to see it.) {mod.caption(data)}")
+        )
+        return data
     fig = _draw(key, data)
     files = _render(key, data, fig, (*output.formats(mod), "png") if outdir is not None else ("png",))
     if outdir is not None:
         output.write(outdir, key, {f: b for f, b in files.items() if f != "png"}, output.record(key, mod, data))
-    label = f"Figure {mod.NUMBER}" + (" (regenerated)" if mod.NUMBER.isdigit() else "") + ": " if mod.NUMBER else ""
     # alt text: the module's alt(data) when it has one, else the figure's title (what it shows, in words)
     alt = mod.alt(data) if hasattr(mod, "alt") else f"{label}{mod.TITLE}."
     # marked, so that the report shows the figure once, from its files, instead of this picture

@@ -225,6 +225,36 @@ def test_project_from_the_notebook_location(monkeypatch, tmp_path):
     assert NB.project(tmp_path / "other" / "notebooks").source == "temporary"
 
 
+def _shown(monkeypatch):
+    """What IPython.display.display shows, collected (the Markdown texts and the images' types)."""
+    shown = []
+    monkeypatch.setattr("IPython.display.display", lambda *objs, **kw: shown.extend(objs))
+    return shown
+
+
+def test_a_figure_is_saved_only_in_a_project_and_drawn_unless_nbgrader_grades(monkeypatch, tmp_path):
+    monkeypatch.delenv("WMR_OUT", raising=False)
+    monkeypatch.delenv("NBGRADER_EXECUTION", raising=False)
+    for d in ("notebooks", "figures"):
+        (tmp_path / "course" / d).mkdir(parents=True)
+    shown = _shown(monkeypatch)
+    scratch = NB.Chapter("04_x", where=tmp_path / "course" / "notebooks")
+    scratch.figure("fig13")
+    assert (scratch.project.out / "fig13.json").is_file() and (scratch.project.out / "fig13.svg").is_file()
+    copy = NB.Chapter("04_x", where=tmp_path / "copy")  # outside any project: shown, not saved
+    copy.figure("fig13")
+    assert copy.project.source == "temporary" and not list(copy.project.out.iterdir())
+    assert "figures are shown, not saved" in copy.project.where()
+    assert sum(isinstance(o, dict) and "image/png" in o for o in shown) == 2  # both drawn
+    monkeypatch.setenv("NBGRADER_EXECUTION", "autograde")  # nbgrader grading: computed, not drawn, not saved
+    shown.clear()
+    graded = NB.Chapter("04_y", where=tmp_path / "course" / "notebooks")
+    data = graded.figure("fig13")
+    assert data.rank_F == 5 and not graded.project.out.exists()
+    assert not any(isinstance(o, dict) and "image/png" in o for o in shown)
+    assert any("not drawn in this run" in getattr(o, "data", "") for o in shown)
+
+
 def test_project_of_this_repository_writes_under_build_and_says_so(monkeypatch):
     monkeypatch.delenv("WMR_OUT", raising=False)
     p = NB.project(ROOT / "notebooks", "01_x")
