@@ -46,11 +46,35 @@ ROLE_TAGS = ("exercise", "answer", "solution", "check", "written", "rubric")
 WRITTEN_POINTS = 1.0
 CONFIG = """\
 # written by `make assignments` (tools/assignments.py)
+import os
+import sys
+
+# nbgrader runs `alembic` (its database migrations) as a command: find it beside the Python running nbgrader,
+# whether or not that environment is activated
+os.environ["PATH"] = os.pathsep.join([os.path.dirname(sys.executable), os.environ.get("PATH", "")])
 c = get_config()  # noqa: F821
-c.CourseDirectory.root = __file__.rsplit("/", 1)[0]
+c.CourseDirectory.root = os.path.dirname(os.path.abspath(__file__))
 c.ClearSolutions.code_stub = {"python": "# YOUR CODE HERE"}
 c.ClearSolutions.text_stub = "YOUR ANSWER HERE"
 c.Execute.timeout = 300
+# feedback pages typeset their math offline: nbgrader's feedback template with MathJax inlined (templates/wmr_feedback)
+if os.path.isdir(os.path.join(c.CourseDirectory.root, "templates", "wmr_feedback")):
+    import nbgrader
+
+    c.HTMLExporter.template_name = "wmr_feedback"
+    c.HTMLExporter.extra_template_basedirs = [
+        os.path.join(c.CourseDirectory.root, "templates"),
+        os.path.join(os.path.dirname(nbgrader.__file__), "server_extensions", "formgrader", "templates"),
+    ]
+"""
+#: the feedback template: nbgrader's own (``feedback``), whose ``mathjax()`` call this directory's
+#: ``mathjax.html.j2`` answers with MathJax inlined (:func:`tools.mathjax.inline_html`) instead of a CDN's URL
+FEEDBACK_CONF = '{"base_template": "feedback", "mimetypes": {"text/html": true}}\n'
+FEEDBACK_MATHJAX = """\
+{#- written by `make assignments` (tools/assignments.py): MathJax 3 inlined, nothing fetched -#}
+{%- macro mathjax(url=None) -%}
+@MATHJAX@
+{%- endmacro %}
 """
 
 
@@ -212,7 +236,10 @@ def _write(path, text):
 
 
 def main(argv=None):
-    """``python -m tools.assignments OUT NOTEBOOK...``.
+    """``python -m tools.assignments [--no-feedback] OUT NOTEBOOK...``.
+
+    Writes the source notebooks, ``OUT/nbgrader_config.py`` and (unless ``--no-feedback``: the build's own
+    round trips, which make no feedback page) ``OUT/templates/wmr_feedback/``, the feedback pages' template.
 
     Returns
     -------
@@ -220,8 +247,10 @@ def main(argv=None):
         The exit status.
     """
     args = list(sys.argv[1:] if argv is None else argv)
+    feedback = "--no-feedback" not in args
+    args = [a for a in args if a != "--no-feedback"]
     if len(args) < 2:
-        print("usage: python -m tools.assignments OUT NOTEBOOK...", file=sys.stderr)
+        print("usage: python -m tools.assignments [--no-feedback] OUT NOTEBOOK...", file=sys.stderr)
         return 2
     from edition.exercises.framework import by_name
 
@@ -250,6 +279,12 @@ def main(argv=None):
         print(f"[assignments] {e}", file=sys.stderr)
         return 1
     _write(out / "nbgrader_config.py", CONFIG)
+    if feedback:
+        from tools import mathjax
+
+        feedback_dir = out / "templates" / "wmr_feedback"
+        _write(feedback_dir / "conf.json", FEEDBACK_CONF)
+        _write(feedback_dir / "mathjax.html.j2", FEEDBACK_MATHJAX.replace("@MATHJAX@", mathjax.inline_html(mathjax.DOLLAR_TEX)))
     print(
         f"[assignments] {len(written)} source notebooks written in {out / 'source'}"
         + (f"; without answer/check cells: {', '.join(skipped)}" if skipped else "")

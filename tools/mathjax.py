@@ -20,8 +20,10 @@ code), so what it serves is not what MathJax released.
 from __future__ import annotations
 
 import base64
+import gzip
 import hashlib
 import io
+import json
 import os
 import shutil
 import subprocess
@@ -30,7 +32,18 @@ import tarfile
 import tempfile
 from pathlib import Path
 
-__all__ = ["CACHE", "INTEGRITY", "VERSION", "MathJaxError", "bundle", "check_integrity", "tarball"]
+__all__ = [
+    "CACHE",
+    "INTEGRITY",
+    "VERSION",
+    "MathJaxError",
+    "bundle",
+    "check_integrity",
+    "inline_html",
+    "tarball",
+    "PANDOC_TEX",
+    "DOLLAR_TEX",
+]
 
 #: the release: https://www.npmjs.com/package/mathjax/v/3.2.2 (the release GitHub tags as 3.2.2)
 VERSION = "3.2.2"
@@ -142,6 +155,73 @@ def bundle(name: str = "tex-svg-full.js", cache: Path = CACHE) -> Path:
         tmp.write_bytes(data)
         os.replace(tmp, out)
     return out
+
+
+#: MathJax's TeX options for a page pandoc wrote (the report): inline math between \( and \), display between \[ and \]
+PANDOC_TEX = {
+    "inlineMath": [["\\(", "\\)"]],
+    "displayMath": [["\\[", "\\]"]],
+    "processEscapes": False,
+    "packages": {"[-]": ["autoload", "require", "noundefined"]},
+}
+#: ... and for a page nbconvert wrote from Markdown cells (nbgrader's feedback): the notebook's own ``$`` delimiters
+DOLLAR_TEX = {
+    "inlineMath": [["$", "$"], ["\\(", "\\)"]],
+    "displayMath": [["$$", "$$"], ["\\[", "\\]"]],
+    "processEscapes": True,
+    "packages": {"[-]": ["autoload", "require", "noundefined"]},
+}
+#: the loader; the page gets the class ``no-math`` when the browser cannot unpack the bundle (no DecompressionStream)
+_LOADER = """\
+<script>
+window.MathJax = %(config)s;
+</script>
+<script id="wmr-mathjax-gz" type="application/octet-stream">%(gz)s</script>
+<script>
+(function () {
+  var data = document.getElementById('wmr-mathjax-gz').textContent.trim();
+  var bin = atob(data), bytes = new Uint8Array(bin.length);
+  for (var i = 0; i < bin.length; i++) bytes[i] = bin.charCodeAt(i);
+  if (typeof DecompressionStream === 'undefined') {
+    document.documentElement.className += ' no-math';
+    return;
+  }
+  var stream = new Blob([bytes]).stream().pipeThrough(new DecompressionStream('gzip'));
+  new Response(stream).text().then(function (js) {
+    var s = document.createElement('script');
+    s.textContent = js;
+    document.head.appendChild(s);
+  });
+})();
+</script>"""
+
+
+def inline_html(tex: dict, cache: Path = CACHE) -> str:
+    """MathJax 3 inside a page, nothing fetched: its configuration, ``tex-svg-full.js`` (every TeX extension, SVG
+    glyphs: no font files) gzip-compressed (fixed mtime: the bytes never change) and base64-encoded, and the
+    script that unpacks it with the browser's DecompressionStream (the report and nbgrader's feedback pages).
+
+    Parameters
+    ----------
+    tex : dict
+        MathJax's ``tex`` options (delimiters, escapes, packages).
+    cache : pathlib.Path, optional
+
+    Returns
+    -------
+    str
+        HTML: three ``<script>`` elements, for the page's ``<head>``.
+
+    Raises
+    ------
+    MathJaxError
+        The release cannot be fetched or fails its integrity check.
+    """
+    js = bundle("tex-svg-full.js", cache).read_bytes()
+    gz = base64.b64encode(gzip.compress(js, compresslevel=9, mtime=0)).decode()
+    config = {"loader": {"load": []}, "tex": tex, "svg": {"fontCache": "global", "scale": 1, "minScale": 1}}
+    config["options"] = {"enableMenu": False}
+    return _LOADER % {"config": json.dumps(config, indent=1), "gz": gz}
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -2,13 +2,10 @@
 
 Markdown goes to pandoc in one call (:class:`~tools.build.markup.Batch`), the page to nbconvert
 (template ``wmr_html``, code collapsed); then the contents sidebar is built from the headings, ids
-made unique and internal links checked. MathJax is the official release's bundle (:mod:`tools.mathjax`:
-the npm tarball checked against its sha512), inlined gzip-compressed (the page stays under 4 MB)."""
+made unique and internal links checked. MathJax is inlined, nothing fetched (:func:`tools.mathjax.inline_html`)."""
 
 from __future__ import annotations
 
-import base64
-import gzip
 import re
 from pathlib import Path
 from typing import Any
@@ -18,7 +15,7 @@ from . import BuildError, atomic_write, say
 from . import typeset as ts
 from .markup import TEMPLATES, Batch
 
-__all__ = ["broken_links", "export_html", "keep_punctuation", "mathjax_gz", "navigation", "unique_ids"]
+__all__ = ["broken_links", "export_html", "keep_punctuation", "mathjax_html", "navigation", "unique_ids"]
 
 _HEADING = re.compile(r'<h([12])((?:\s+[a-z-]+="[^"]*")*)>(.*?)</h\1>', re.DOTALL)
 _ID = re.compile(r'(?<![\w-])id="([^"]+)"')
@@ -26,14 +23,12 @@ _MATH = r'<span class="math inline">[^<]*</span>'
 _MATH_PUNCT = re.compile(rf"[(\[]{_MATH}[,.;:!?)\]]*|{_MATH}[,.;:!?)\]]+")  # a formula with a bracket or punctuation
 
 
-def mathjax_gz() -> str:
-    """MathJax 3 ``tex-svg-full.js`` (every TeX extension, SVG glyphs: no font files) of the official
-    release (:func:`tools.mathjax.bundle`), gzip (fixed mtime, so the bytes never change) and base64."""
+def mathjax_html() -> str:
+    """The report's MathJax: :func:`tools.mathjax.inline_html` of :data:`tools.mathjax.PANDOC_TEX`."""
     try:
-        js = mathjax.bundle("tex-svg-full.js").read_bytes()
+        return mathjax.inline_html(mathjax.PANDOC_TEX)
     except mathjax.MathJaxError as e:
         raise BuildError(f"MathJax: {e}") from None
-    return base64.b64encode(gzip.compress(js, compresslevel=9, mtime=0)).decode()
 
 
 def _prepare(nb, batch: Batch):
@@ -144,7 +139,7 @@ def export_html(nb, out: Path) -> None:
     ref = batch.add(nb.metadata["wmr"]["paper"], inline=True)  # the title block's reference
     batch.convert()
     css = (TEMPLATES / "wmr_html" / "report.css").read_text(encoding="utf-8")
-    resources = {"wmr_css": css, "wmr_mathjax_gz": mathjax_gz(), "wmr_paper_html": ref}
+    resources = {"wmr_css": css, "wmr_mathjax_html": mathjax_html(), "wmr_paper_html": ref}
     body, _ = _exporter().from_notebook_node(prepared, resources=resources)
     body, dups = unique_ids(keep_punctuation(batch.fill(body)))
     if dups:
