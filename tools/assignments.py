@@ -284,7 +284,10 @@ def main(argv=None):
 
         feedback_dir = out / "templates" / "wmr_feedback"
         _write(feedback_dir / "conf.json", FEEDBACK_CONF)
-        _write(feedback_dir / "mathjax.html.j2", FEEDBACK_MATHJAX.replace("@MATHJAX@", mathjax.inline_html(mathjax.DOLLAR_TEX)))
+        _write(
+            feedback_dir / "mathjax.html.j2",
+            FEEDBACK_MATHJAX.replace("@MATHJAX@", mathjax.inline_html(mathjax.DOLLAR_TEX)),
+        )
     print(
         f"[assignments] {len(written)} source notebooks written in {out / 'source'}"
         + (f"; without answer/check cells: {', '.join(skipped)}" if skipped else "")

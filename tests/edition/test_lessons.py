@@ -143,7 +143,8 @@ def test_exercise_statements_carry_their_number_and_tolerance(path):
         if not symbolic:  # a number: its units
             assert re.search(r"\b(rad|rad/s|degrees?|metres|m|m/s)\b", text), f"{path.name}: {ex.number} states no unit"
         if re.search(r"\b(two|three|four|pair|list|points|twist)\b", ex.answer) and not symbolic:  # a list: its order
-            order = r"wheel 1 first|in the order|in any order|\(?\\beta_1, \\beta_2|\(\\dot\\theta_\{i1\}|\(\\dot\\psi|\(u_x|\(x, y\)"
+            order = r"wheel 1 first|in the order|in any order|\(?\\beta_1, \\beta_2|"
+            order += r"\(\\dot\\theta_\{i1\}|\(\\dot\\psi|\(u_x|\(x, y\)"
             assert re.search(order, text), f"{path.name}: exercise {ex.number} does not state the order of its list"
 
 
