@@ -57,19 +57,19 @@ c.CourseDirectory.root = os.path.dirname(os.path.abspath(__file__))
 c.ClearSolutions.code_stub = {"python": "# YOUR CODE HERE"}
 c.ClearSolutions.text_stub = "YOUR ANSWER HERE"
 c.Execute.timeout = 300
-# feedback pages typeset their math offline: nbgrader's feedback template with MathJax inlined (templates/wmr_feedback)
-if os.path.isdir(os.path.join(c.CourseDirectory.root, "templates", "wmr_feedback")):
+# feedback pages typeset their math offline: templates/feedback/mathjax.html.j2, found before nbconvert's own,
+# inlines MathJax into nbgrader's feedback template (the formgrader's own pages are left as they are)
+if os.path.isdir(os.path.join(c.CourseDirectory.root, "templates", "feedback")):
     import nbgrader
 
-    c.HTMLExporter.template_name = "wmr_feedback"
     c.HTMLExporter.extra_template_basedirs = [
         os.path.join(c.CourseDirectory.root, "templates"),
         os.path.join(os.path.dirname(nbgrader.__file__), "server_extensions", "formgrader", "templates"),
     ]
 """
-#: the feedback template: nbgrader's own (``feedback``), whose ``mathjax()`` call this directory's
-#: ``mathjax.html.j2`` answers with MathJax inlined (:func:`tools.mathjax.inline_html`) instead of a CDN's URL
-FEEDBACK_CONF = '{"base_template": "feedback", "mimetypes": {"text/html": true}}\n'
+#: beside nbgrader's own template ``feedback`` (same name, same base), a ``mathjax.html.j2`` that answers the template's
+#: ``mathjax()`` call with MathJax inlined (:func:`tools.mathjax.inline_html`) instead of a CDN's URL
+FEEDBACK_CONF = '{"base_template": "classic", "mimetypes": {"text/html": true}}\n'
 FEEDBACK_MATHJAX = """\
 {#- written by `make assignments` (tools/assignments.py): MathJax 3 inlined, nothing fetched -#}
 {%- macro mathjax(url=None) -%}
@@ -239,7 +239,7 @@ def main(argv=None):
     """``python -m tools.assignments [--no-feedback] OUT NOTEBOOK...``.
 
     Writes the source notebooks, ``OUT/nbgrader_config.py`` and (unless ``--no-feedback``: the build's own
-    round trips, which make no feedback page) ``OUT/templates/wmr_feedback/``, the feedback pages' template.
+    round trips, which make no feedback page) ``OUT/templates/feedback/``: the feedback pages' math, offline.
 
     Returns
     -------
@@ -282,7 +282,7 @@ def main(argv=None):
     if feedback:
         from tools import mathjax
 
-        feedback_dir = out / "templates" / "wmr_feedback"
+        feedback_dir = out / "templates" / "feedback"
         _write(feedback_dir / "conf.json", FEEDBACK_CONF)
         _write(
             feedback_dir / "mathjax.html.j2",

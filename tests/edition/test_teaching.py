@@ -43,6 +43,34 @@ def _ok(p: subprocess.CompletedProcess) -> None:
     assert p.returncode == 0, f"exit {p.returncode}\n{p.stdout[-3000:]}\n{p.stderr[-6000:]}"
 
 
+def _formgrader_page(course: Path, path: str) -> str:
+    """A page of nbgrader's formgrader, served by a Jupyter server started in ``course`` (nbgrader's extensions on)."""
+    import socket
+    import time
+    import urllib.error
+    import urllib.request
+
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        port = s.getsockname()[1]
+    cmd = [str(ROOT / ".venv" / "bin" / "jupyter"), "server", "--no-browser", f"--port={port}", "--ip=127.0.0.1"]
+    cmd += ["--IdentityProvider.token=t", f"--ServerApp.root_dir={course}", "--allow-root"]
+    server = subprocess.Popen(cmd, cwd=course, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    try:
+        for _ in range(120):
+            try:
+                with urllib.request.urlopen(f"http://127.0.0.1:{port}/{path}?token=t", timeout=30) as r:
+                    return r.read().decode("utf-8")
+            except urllib.error.HTTPError as e:
+                raise AssertionError(f"the formgrader answered {e.code} for {path}") from None
+            except (urllib.error.URLError, ConnectionError):
+                time.sleep(0.5)
+        raise AssertionError("the Jupyter server did not start")
+    finally:
+        server.terminate()
+        server.wait(30)
+
+
 @pytest.fixture(scope="module")
 def course(tmp_path_factory):
     """The set-up block run in this clone (its `git clone` line left out: the clone is this one), HOME a
@@ -89,6 +117,9 @@ def test_the_guide_runs_as_written_release_collect_autograde_grade_feedback_expo
             for g in manual:
                 g.manual_score = score * g.max_score
         gb.db.commit()
+        alice = gb.find_submission_notebook(ch, ch, "alice").id
+    page = _formgrader_page(cdir, f"formgrader/submissions/{alice}/")  # where the guide sends the grader
+    assert "YOUR ANSWER HERE" not in page and page.count('class="score') >= 1
     _ok(_bash(head + "# 5. feedback" + grade, home, home))
     rows = {r["student_id"]: r for r in csv.DictReader((cdir / "grades.csv").open(encoding="utf-8"))}
     assert set(rows) == {"alice", "bob"}
