@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import base64
 import gzip
+import json
 import os
 import re
 import shutil
@@ -180,7 +181,10 @@ def test_html_inlines_the_pinned_mathjax(html_text):
     assert len(packed) == 1, "the compressed MathJax bundle is not in the page"
     js = gzip.decompress(base64.b64decode(packed[0].strip()))
     assert b"MathJax" in js and len(js) > 1_000_000
-    assert "enableMenu: false" in html_text and "'autoload', 'require'" in html_text  # nothing loaded lazily
+    (config,) = [d for a, d in p.scripts if "window.MathJax = " in d]
+    config = json.loads(config.split("window.MathJax = ", 1)[1].strip().rstrip(";"))
+    assert config["options"]["enableMenu"] is False and config["loader"]["load"] == []  # nothing loaded lazily
+    assert {"autoload", "require"} <= set(config["tex"]["packages"]["[-]"])
 
 
 def test_html_size(html_text):
