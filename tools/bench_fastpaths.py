@@ -14,6 +14,7 @@ import numpy as np
 
 import wmr
 from tools.bench_kernels import SEED, best_of, same_kappa, swerve_robot
+from wmr.analysis import linalg as LA
 from wmr.analysis import reference as R
 from wmr.model.platform import cos_sin
 
@@ -38,6 +39,12 @@ def rows(n):
             lambda: wmr.condition_number(centred.J(beta, L=L)),
             lambda: R.condition_number(R.J(centred, beta, L)),
             same_kappa,
+        ),
+        (
+            "det J, 3 centred (3x3 cofactors)",
+            lambda: LA.det(centred.J(beta, L=L)),
+            lambda: R.det(R.J(centred, beta, L)),
+            lambda a, b: np.allclose(a, b, rtol=1e-12, atol=1e-14),
         ),
         (
             "kappa(J), 3 dual (3x6, general)",
