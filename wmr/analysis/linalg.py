@@ -170,8 +170,8 @@ def nullity(A: ArrayLike, scale: ArrayLike | None = None) -> IntArray:
     >>> int(nullity([[1.0, 2.0, 3.0]]))
     2
     """
-    A = _as_stack(A)
-    return A.shape[-1] - rank(A, scale)
+    r = rank(A, scale)  # (checks A)
+    return np.shape(A)[-1] - r
 
 
 def null_space(A: ArrayLike, scale: ArrayLike | None = None) -> FloatArray:
