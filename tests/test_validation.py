@@ -1,4 +1,5 @@
-"""Input checks (wmr.model.validation) and the numerical-zero policy (wmr.model.tolerance).  The edition's comparison helpers (edition.verify): tests/edition/test_verify.py.
+"""Input checks (wmr.model.validation) and the numerical-zero policy (wmr.model.tolerance).
+The edition's comparison helpers (edition.verify): tests/edition/test_verify.py.
 
 Every bad input raises the package's own ``InputTypeError`` (wrong kind, a ``TypeError``) or
 ``InputValueError`` (bad value, a ``ValueError``) of :mod:`wmr.errors`, whose message names the argument
