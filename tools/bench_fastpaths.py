@@ -26,6 +26,7 @@ def rows(n):
     L = wmr.characteristic_length(centred)
     beta = rng.uniform(-np.pi, np.pi, (n, 3))
     twist = rng.normal(size=(n, 3))
+    rates = rng.normal(size=(n, 3))
     angles = rng.uniform(-np.pi, np.pi, n)
     sw_beta = wmr.steering_angles(swerve, twist)
 
@@ -57,6 +58,18 @@ def rows(n):
             lambda: dual.J(beta, L=L),
             lambda: R.J(dual, beta, L),
             lambda a, b: np.allclose(a, b, rtol=1e-12, atol=1e-14),
+        ),
+        (
+            "forward kinematics, 3 centred",
+            lambda: wmr.forward(centred, beta, rates).value,
+            lambda: R.forward(centred, beta, rates)[0],
+            lambda a, b: np.allclose(a, b, rtol=1e-12, atol=1e-12),
+        ),
+        (
+            "inverse kinematics, 3 dual",
+            lambda: wmr.inverse(dual, beta, twist).value,
+            lambda: R.inverse(dual, beta, twist)[0],
+            lambda a, b: np.allclose(a, b, rtol=1e-12, atol=1e-12),
         ),
         (
             "swerve IK (given the angles), 4 modules",
