@@ -16,6 +16,11 @@ the bound is within ``KAPPA_ERROR eps kappa`` or :data:`~wmr.analysis._closed.AC
 :math:`\kappa < 1/(2\,\mathrm{TOL})` (the SVD rule of :func:`wmr.condition_number` would not call
 it singular either).  :func:`kappa_by_lapack` does the same with LAPACK's eigenvalues, whose error
 :math:`e + 8\epsilon\lambda_1` is not amplified.
+
+The in-place kernel :func:`~wmr.analysis._closed.kappa_from_gram` (with
+:data:`~wmr.analysis._closed.UPPER` and :data:`~wmr.analysis._closed.SCRATCH`) is defined in
+:mod:`wmr.analysis._closed`, where the 3x3 condition number of :func:`wmr.condition_number` uses it
+too, and is re-exported here.
 """
 
 from __future__ import annotations
@@ -32,7 +37,7 @@ _MARGIN = 1.5  # on a first-order worst-case error bound (as in kappa_from_gram)
 
 
 def kappa_by_lapack(G, detG, det_rel, g_error):
-    """:func:`kappa_from_gram` with the two largest eigenvalues from ``numpy.linalg.eigvalsh``: ``(kappa, ok)``.
+    """:func:`~wmr.analysis._closed.kappa_from_gram` with the eigenvalues of ``numpy.linalg.eigvalsh``: ``(kappa, ok)``.
 
     Parameters
     ----------
