@@ -10,38 +10,16 @@ member to the SVD: every decision stays the SVD's.
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 
 from ..model.tolerance import TOL
 from ._batch import for_chunks
+from .gram_kappa import ACCURACY, KAPPA_ERROR, SCRATCH, UPPER, kappa_from_gram
 
-__all__ = [
-    "det",
-    "certified_full_rank",
-    "condition_number_3x3",
-    "kappa_from_gram",
-    "KAPPA_ERROR",
-    "ACCURACY",
-    "UPPER",
-    "SCRATCH",
-]
+__all__ = ["det", "certified_full_rank", "condition_number_3x3", "KAPPA_ERROR", "ACCURACY"]
 
 _EPS = np.finfo(float).eps
-#: A 3x3 condition number from the closed form is kept when its computed error bound is at most
-#: ``KAPPA_ERROR * eps * kappa`` (about the SVD's own accuracy); others go to the SVD.
-KAPPA_ERROR = 16.0
 _SAFE = (1e-100, 1e100)  # range of ||A||_F^2 where no product below over- or underflows
-#: the fused kernel of a drivable sweep (:mod:`wmr.analysis.sweep.swerve_kappa`) accepts a relative error bound
-#: up to this, or the SVD's own if larger
-ACCURACY = 1e-12
-#: the entries of a symmetric 3 x 3 matrix, in the order of the rows of the ``G`` of :func:`kappa_from_gram`
-UPPER = ((0, 0), (0, 1), (0, 2), (1, 1), (1, 2), (2, 2))
-#: scratch vectors :func:`kappa_from_gram` needs
-SCRATCH = 14
-_SQRT3 = math.sqrt(3.0)
-_MARGIN = 1.5  # on a first-order worst-case error bound
 
 
 def _entries(A, a, b, scale=None):
@@ -177,7 +155,7 @@ def condition_number_3x3(A):
     with :math:`E = \epsilon q + \min(2p,\ \epsilon q/\sqrt{1 - r^2})` (the rounding of
     :math:`\mathbf G`, amplified where two eigenvalues nearly coincide) and the permanent of
     :math:`|\mathbf A|` (the rounding of the determinant).  The eigenvalues, the bound and the first two
-    tests are those of :func:`kappa_from_gram` (the kernel of the drivable sweep too: the formula is
+    tests are those of :func:`~wmr.analysis.gram_kappa.kappa_from_gram` (the kernel of the drivable sweep too: the formula is
     written once), with :math:`\det\mathbf G = (\det\mathbf A)^2`.  A member is **accepted** when
     :math:`1.5e \le` :data:`KAPPA_ERROR` :math:`\epsilon\kappa` (the margin covers the bound's
     first-order neglect; measured errors stay below half of ``e``), when
@@ -229,123 +207,3 @@ def _kappa_entries(e):
     )
     ok &= (f > _SAFE[0]) & (f < _SAFE[1]) & (lam2 > 0) & np.isfinite(kappa)
     return kappa, ok
-
-
-def kappa_from_gram(G, detG, det_rel, g_error, v, out, ok, bad, accuracy=ACCURACY):
-    r""":math:`\kappa` from the upper entries of Gram matrices and their determinants, in place, with acceptance.
-
-    Parameters
-    ----------
-    G : numpy.ndarray (6, k)
-        Entries (0,0), (0,1), (0,2), (1,1), (1,2), (2,2) of each :math:`\mathbf G` (:data:`UPPER`).
-    detG, det_rel : numpy.ndarray (k,)
-        :math:`\det\mathbf G` and a bound of its relative error.
-    g_error : float or numpy.ndarray (k,)
-        A bound of the absolute rounding error of the entries' eigenvalues (``||dG||_F``).
-    v : numpy.ndarray (SCRATCH, k)
-        Scratch.
-    out : numpy.ndarray (k,)
-        Receives :math:`\kappa`.
-    ok, bad : numpy.ndarray of bool (k,)
-        ``ok`` receives the accepted members; ``bad`` is scratch.
-    accuracy : float, optional
-        A relative error bound accepted whatever ``KAPPA_ERROR eps kappa`` is (0: that rule alone).
-
-    Returns
-    -------
-    numpy.ndarray (k,)
-        :math:`\lambda_2` (a view of ``v``).
-    """
-    # the two largest eigenvalues of G (the trigonometric solution of its characteristic cubic)
-    g00, g01, g02, g11, g12, g22 = G
-    q, b00, b11, b22, p2, t, p, det_b = v[0:8]
-    np.add(g00, g11, out=q)
-    q += g22
-    q /= 3.0
-    np.subtract(g00, q, out=b00)
-    np.subtract(g11, q, out=b11)
-    np.subtract(g22, q, out=b22)
-    np.multiply(g01, g01, out=p2)
-    np.multiply(g02, g02, out=t)
-    p2 += t
-    np.multiply(g12, g12, out=t)
-    p2 += t
-    p2 += p2  # 2 (g01^2 + g02^2 + g12^2)
-    np.multiply(b00, b00, out=t)
-    p2 += t
-    np.multiply(b11, b11, out=t)
-    p2 += t
-    np.multiply(b22, b22, out=t)
-    p2 += t
-    p2 /= 6.0  # tr B^2 / 6, B = G - q I
-    np.sqrt(p2, out=p)
-    np.multiply(b11, b22, out=det_b)  # det B by cofactors along the first row
-    np.multiply(g12, g12, out=t)
-    det_b -= t
-    det_b *= b00
-    u = v[8]
-    np.multiply(g01, b22, out=t)
-    np.multiply(g12, g02, out=u)
-    t -= u
-    t *= g01
-    det_b -= t
-    np.multiply(g01, g12, out=t)
-    np.multiply(b11, g02, out=u)
-    t -= u
-    t *= g02
-    det_b += t
-    den = t
-    np.multiply(p, p2, out=den)
-    den += den
-    np.maximum(den, 1e-300, out=den)
-    r = det_b
-    r /= den
-    np.clip(r, -1.0, 1.0, out=r)  # r = det B / (2 p^3)
-    # cos and sin of phi = arccos(r) / 3 in [0, pi/3], through tan(phi / 2)
-    th, h, c = v[9], v[10], v[11]
-    np.arccos(r, out=th)
-    th /= 6.0
-    np.tan(th, out=th)
-    np.multiply(th, th, out=h)
-    h += 1.0
-    np.divide(2.0, h, out=h)
-    np.subtract(h, 1.0, out=c)  # cos phi
-    th *= h  # sin phi
-    lam1, lam2 = v[12], v[13]
-    np.multiply(p, c, out=lam1)
-    lam1 += lam1
-    lam1 += q  # q + 2 p cos(phi)
-    th *= _SQRT3
-    th -= c
-    np.multiply(th, p, out=lam2)
-    lam2 += q  # q + 2 p cos(phi - 2 pi / 3)
-    kappa = out  # lam1 sqrt(lam2 / det G)
-    np.divide(lam2, detG, out=kappa)
-    np.sqrt(kappa, out=kappa)
-    kappa *= lam1
-    # the first-order error bound (module notes)
-    E = r
-    np.multiply(r, r, out=E)
-    np.subtract(1.0, E, out=E)
-    np.maximum(E, 1e-300, out=E)
-    np.sqrt(E, out=E)
-    np.divide(g_error, E, out=E)
-    p += p
-    np.minimum(E, p, out=E)
-    E += g_error
-    bound = h
-    np.divide(1.0, lam1, out=bound)
-    np.divide(1.0, lam2, out=u)
-    bound += u
-    bound *= E
-    bound += det_rel
-    bound *= _MARGIN / 2
-    limit = u
-    np.multiply(kappa, KAPPA_ERROR * _EPS, out=limit)
-    np.maximum(limit, accuracy, out=limit)
-    # a nan kappa (lam2 < 0 or det G < 0) makes the limit nan; lam2 = 0 makes the bound inf; det G = 0
-    # makes kappa inf: none passes
-    np.less_equal(bound, limit, out=ok)
-    np.less(kappa, 0.5 / TOL, out=bad)  # sigma_3 > 2 TOL sigma_1: not singular by the SVD rule either
-    ok &= bad
-    return lam2
