@@ -1,5 +1,5 @@
-"""Input checks (wmr.model.validation), the numerical-zero policy (wmr.model.tolerance), the thread chunking
-(wmr.analysis._batch).  The edition's comparison helpers (edition.verify): tests/edition/test_verify.py.
+"""Input checks (wmr.model.validation) and the numerical-zero policy (wmr.model.tolerance).
+The edition's comparison helpers (edition.verify): tests/edition/test_verify.py.
 
 Every bad input raises the package's own ``InputTypeError`` (wrong kind, a ``TypeError``) or
 ``InputValueError`` (bad value, a ``ValueError``) of :mod:`wmr.errors`, whose message names the argument
@@ -13,7 +13,6 @@ import pytest
 import sympy as sp
 
 import wmr
-from wmr.analysis import _batch
 from wmr.errors import InputTypeError, InputValueError
 from wmr.model import validation as V
 from wmr.model.tolerance import TOL, near_zero
@@ -249,17 +248,6 @@ def test_near_zero(value, scale, expected):
 def test_near_zero_broadcasts():
     out = near_zero(np.array([[1e-12, 1.0]]), np.array([[1.0], [1e12]]))
     assert out.tolist() == [[True, False], [True, True]]
-
-
-# --- thread chunking ------------------------------------------------------------------------------
-@pytest.mark.parametrize("n, chunk", [(5, 2), (100, 7), (3, 64), (64, 64), (65, 64)])
-def test_map_matrices_keeps_order_and_shape(n, chunk):
-    A = np.arange(n * 6, dtype=float).reshape(n, 2, 3)
-    out = _batch.map_matrices(lambda X: X.sum(axis=(-2, -1)), A, chunk=chunk)
-    assert np.array_equal(out, A.sum(axis=(-2, -1)))
-    B = A.reshape((1, n, 2, 3))
-    out = _batch.map_matrices(lambda X: X[:, 0, :], B, chunk=chunk)
-    assert out.shape == (1, n, 3) and np.array_equal(out, B[..., 0, :])
 
 
 # --- the failures quoted in issue 11, part 2 -----------------------------------------------------------

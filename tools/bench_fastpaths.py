@@ -14,6 +14,7 @@ import numpy as np
 
 import wmr
 from tools.bench_kernels import SEED, best_of, same_kappa, swerve_robot
+from wmr.analysis import linalg as LA
 from wmr.analysis import reference as R
 from wmr.model.platform import cos_sin
 
@@ -25,6 +26,7 @@ def rows(n):
     L = wmr.characteristic_length(centred)
     beta = rng.uniform(-np.pi, np.pi, (n, 3))
     twist = rng.normal(size=(n, 3))
+    rates = rng.normal(size=(n, 3))
     angles = rng.uniform(-np.pi, np.pi, n)
     sw_beta = wmr.steering_angles(swerve, twist)
 
@@ -40,6 +42,12 @@ def rows(n):
             same_kappa,
         ),
         (
+            "det J, 3 centred (3x3 cofactors)",
+            lambda: LA.det(centred.J(beta, L=L)),
+            lambda: R.det(R.J(centred, beta, L)),
+            lambda a, b: np.allclose(a, b, rtol=1e-12, atol=1e-14),
+        ),
+        (
             "kappa(J), 3 dual (3x6, general)",
             lambda: wmr.condition_number(dual.J(beta, L=L)),
             lambda: R.condition_number(R.J(dual, beta, L)),
@@ -50,6 +58,18 @@ def rows(n):
             lambda: dual.J(beta, L=L),
             lambda: R.J(dual, beta, L),
             lambda a, b: np.allclose(a, b, rtol=1e-12, atol=1e-14),
+        ),
+        (
+            "forward kinematics, 3 centred",
+            lambda: wmr.forward(centred, beta, rates).value,
+            lambda: R.forward(centred, beta, rates)[0],
+            lambda a, b: np.allclose(a, b, rtol=1e-12, atol=1e-12),
+        ),
+        (
+            "inverse kinematics, 3 dual",
+            lambda: wmr.inverse(dual, beta, twist).value,
+            lambda: R.inverse(dual, beta, twist)[0],
+            lambda a, b: np.allclose(a, b, rtol=1e-12, atol=1e-12),
         ),
         (
             "swerve IK (given the angles), 4 modules",

@@ -1,12 +1,11 @@
 """Run batched NumPy kernels over chunks of the batch axis, on several threads.
 
-NumPy's ufuncs and its batched ``linalg`` routines release the GIL, so threads give real
-parallelism.  Two helpers:
-
-* :func:`map_matrices` applies a batched routine (an SVD, say) to a stack of matrices chunk by chunk;
-* :func:`for_chunks` calls a fused kernel ``fn(start, stop)`` on consecutive chunks of a batch,
-  which reads its inputs and writes its outputs in place.  Chunks of :data:`CHUNK` items keep a
-  kernel's temporaries in the core's cache, which matters as much as the threads.
+NumPy's ufuncs release the GIL, so threads give real parallelism.  :func:`for_chunks` calls a fused
+kernel ``fn(start, stop)`` on consecutive chunks of a batch, which reads its inputs and writes its
+outputs in place.  Chunks of :data:`CHUNK` items keep a kernel's temporaries in the core's cache,
+which matters as much as the threads.  (Batched LAPACK routines are called once over the whole stack:
+chunks of them on the pool were slower than one call, 0.50 s against 0.28 s for the determinants of
+10^6 4x4 matrices.)
 
 The number of threads is ``os.cpu_count()`` unless the environment variable ``WMR_THREADS``
 says otherwise or :func:`limit_threads` lowers it (Dask workers run their chunks with one
@@ -20,13 +19,10 @@ import os
 import threading
 from concurrent.futures import ThreadPoolExecutor
 
-import numpy as np
-
-__all__ = ["CHUNK", "map_matrices", "for_chunks", "limit_threads", "n_threads"]
+__all__ = ["CHUNK", "for_chunks", "limit_threads", "n_threads"]
 
 #: Items per chunk of a fused element-wise kernel (its temporaries stay in a 1 MB L2 cache).
 CHUNK = 8192
-_MATRIX_CHUNK = 65536
 _state = threading.local()
 _pool = None
 _pool_lock = threading.Lock()
@@ -109,29 +105,3 @@ def for_chunks(fn, n, chunk=CHUNK):
         return
     for _ in _get_pool().map(lambda ab: _inside(fn, *ab), bounds):
         pass
-
-
-def map_matrices(fn, A, chunk=_MATRIX_CHUNK):
-    """Apply ``fn`` to a stack of matrices ``A (..., m, n)`` in chunks; results keep the batch shape.
-
-    Parameters
-    ----------
-    fn : callable
-        Maps a stack ``(k, m, n)`` to an array whose first axis has length ``k``.
-    A : numpy.ndarray (..., m, n)
-    chunk : int, optional
-        Matrices per chunk (each chunk is one task for the thread pool).
-
-    Returns
-    -------
-    numpy.ndarray (..., *tail)
-        ``fn``'s results, concatenated and reshaped to the batch shape of ``A``.
-    """
-    batch = A.shape[:-2]
-    flat = A.reshape((-1,) + A.shape[-2:])
-    if flat.shape[0] <= chunk or n_threads() <= 1:
-        res = fn(flat)
-    else:
-        parts = [flat[i : i + chunk] for i in range(0, flat.shape[0], chunk)]
-        res = np.concatenate(list(_get_pool().map(lambda X: _inside(fn, X), parts)), axis=0)
-    return res.reshape(batch + res.shape[1:])

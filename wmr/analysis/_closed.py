@@ -14,17 +14,12 @@ import numpy as np
 
 from ..model.tolerance import TOL
 from ._batch import for_chunks
+from .gram_kappa import ACCURACY, KAPPA_ERROR, SCRATCH, UPPER, kappa_from_gram
 
 __all__ = ["det", "certified_full_rank", "condition_number_3x3", "KAPPA_ERROR", "ACCURACY"]
 
 _EPS = np.finfo(float).eps
-#: A 3x3 condition number from the closed form is kept when its computed error bound is at most
-#: ``KAPPA_ERROR * eps * kappa`` (about the SVD's own accuracy); others go to the SVD.
-KAPPA_ERROR = 16.0
 _SAFE = (1e-100, 1e100)  # range of ||A||_F^2 where no product below over- or underflows
-#: the fused kernel of a drivable sweep (:mod:`wmr.analysis.sweep.swerve_kappa`) accepts a relative error bound
-#: up to this, or the SVD's own if larger
-ACCURACY = 1e-12
 
 
 def _entries(A, a, b, scale=None):
@@ -159,8 +154,10 @@ def condition_number_3x3(A):
     :math:`e = \tfrac12 E(1/\lambda_1 + 1/\lambda_2) + \epsilon\,\operatorname{per}|\mathbf A|/|\det\mathbf A|`
     with :math:`E = \epsilon q + \min(2p,\ \epsilon q/\sqrt{1 - r^2})` (the rounding of
     :math:`\mathbf G`, amplified where two eigenvalues nearly coincide) and the permanent of
-    :math:`|\mathbf A|` (the rounding of the determinant).  A member is **accepted** when
-    :math:`4e \le` :data:`KAPPA_ERROR` :math:`\epsilon\kappa` (the factor 4 covers the bound's
+    :math:`|\mathbf A|` (the rounding of the determinant).  The eigenvalues, the bound and the first two
+    tests are those of :func:`~wmr.analysis.gram_kappa.kappa_from_gram` (the kernel of the drivable sweep too: the formula is
+    written once), with :math:`\det\mathbf G = (\det\mathbf A)^2`.  A member is **accepted** when
+    :math:`1.5e \le` :data:`KAPPA_ERROR` :math:`\epsilon\kappa` (the margin covers the bound's
     first-order neglect; measured errors stay below half of ``e``), when
     :math:`\sigma_3 = \sigma_1/\kappa > 2\,\mathrm{TOL}\,\sigma_1` (so the SVD rule
     would not call it singular either) and when :math:`\|\mathbf A\|_F^2` lies where nothing
@@ -189,47 +186,11 @@ def condition_number_3x3(A):
     return kappa, accepted
 
 
-def _gram_eigen(g00, g01, g02, g11, g12, g22):
-    """The two largest eigenvalues of symmetric 3x3 Gram matrices and their error bound (see condition_number_3x3).
-
-    Returns ``(f, lam1, lam2, E)``: the trace, :math:`\\lambda_1`, :math:`\\lambda_2` and the bound
-    :math:`E` of their absolute rounding error.
-    """
-    f = g00 + g11 + g22  # ||A||_F^2 = tr G
-    q = f / 3
-    b00, b11, b22 = g00 - q, g11 - q, g22 - q  # B = G - q I
-    p2 = _dot([b00, b11, b22, g01, g02, g12], [b00, b11, b22, 2 * g01, 2 * g02, 2 * g12])
-    p2 /= 6  # tr B^2 / 6
-    p = np.sqrt(p2)
-    det_B = b00 * (b11 * b22 - g12 * g12) - g01 * (g01 * b22 - g12 * g02) + g02 * (g01 * g12 - b11 * g02)
-    r = np.clip(det_B / np.where(p2 > 0, 2 * p * p2, 1.0), -1.0, 1.0)
-    # cos and sin of phi = arccos(r) / 3 in [0, pi/3], through t = tan(phi / 2)
-    t = np.tan(np.arccos(r) / 6)
-    h = 2 / (1 + t * t)
-    c, s = h - 1, t * h
-    lam1 = q + 2 * p * c  # q + 2p cos(phi)
-    lam2 = q + p * (np.sqrt(3) * s - c)  # q + 2p cos(phi - 2 pi / 3)
-    E = _EPS * q + np.minimum(2 * p, _EPS * q / np.sqrt(np.maximum(1 - r * r, 1e-300)))
-    return f, lam1, lam2, E
-
-
-def _accept(kappa, f, lam1, lam2, E, det_error, accuracy=0.0):
-    """The first-order error bound of kappa = lam1 sqrt(lam2) / |det| and the acceptance tests (see the docstring)."""
-    bound = 0.5 * E * (1 / lam1 + 1 / lam2) + det_error
-    return (
-        (4 * bound <= np.maximum(KAPPA_ERROR * _EPS * kappa, accuracy))
-        & (2 * TOL * kappa < 1.0)  # sigma_3 > 2 TOL sigma_1
-        & (f > _SAFE[0])
-        & (f < _SAFE[1])
-        & (lam2 > 0)
-        & np.isfinite(kappa)
-    )
-
-
 def _kappa_entries(e):
     (a0, a1, a2), (a3, a4, a5), (a6, a7, a8) = e
     g = _gram_entries(e, rows=False)  # G = A^T A, upper triangle
-    f, lam1, lam2, E = _gram_eigen(g[0][0], g[0][1], g[0][2], g[1][1], g[1][2], g[2][2])
+    G = np.stack([g[j][k] for j, k in UPPER])
+    f = G[0] + G[3] + G[5]  # ||A||_F^2 = tr G
     # det A by cofactors, and the permanent of |A| from the same products (its rounding bound)
     x48, x57, x56, x38, x37, x46 = a4 * a8, a5 * a7, a5 * a6, a3 * a8, a3 * a7, a4 * a6
     absD = np.abs(a0 * (x48 - x57) + a1 * (x56 - x38) + a2 * (x37 - x46))
@@ -238,5 +199,11 @@ def _kappa_entries(e):
         + np.abs(a1) * (np.abs(x56) + np.abs(x38))
         + np.abs(a2) * (np.abs(x37) + np.abs(x46))
     )
-    kappa = lam1 * np.sqrt(lam2) / absD  # sqrt(lam1 / lam3), lam3 = det^2 / (lam1 lam2)
-    return kappa, _accept(kappa, f, lam1, lam2, E, _EPS * per / absD)
+    k = absD.size
+    kappa, ok, bad = np.empty(k), np.empty(k, dtype=bool), np.empty(k, dtype=bool)
+    # lam3 = det G / (lam1 lam2), det G = (det A)^2 with twice det A's relative error; G's entries to eps tr G / 3
+    lam2 = kappa_from_gram(
+        G, absD * absD, 2 * _EPS * per / absD, _EPS * f / 3, np.empty((SCRATCH, k)), kappa, ok, bad, 0.0
+    )
+    ok &= (f > _SAFE[0]) & (f < _SAFE[1]) & (lam2 > 0) & np.isfinite(kappa)
+    return kappa, ok

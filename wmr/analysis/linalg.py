@@ -20,7 +20,6 @@ from ..model import validation as V
 from ..model.tolerance import TOL, column_norms
 from ..model.types import ArrayLike, FloatArray, IntArray
 from . import _closed
-from ._batch import map_matrices
 from .sv_decisions import kappa_from_singular_values, rank_from_singular_values
 
 __all__ = [
@@ -170,8 +169,8 @@ def nullity(A: ArrayLike, scale: ArrayLike | None = None) -> IntArray:
     >>> int(nullity([[1.0, 2.0, 3.0]]))
     2
     """
-    A = _as_stack(A)
-    return A.shape[-1] - rank(A, scale)
+    r = rank(A, scale)  # (checks A)
+    return np.shape(A)[-1] - r
 
 
 def null_space(A: ArrayLike, scale: ArrayLike | None = None) -> FloatArray:
@@ -360,5 +359,5 @@ def det(A: ArrayLike) -> FloatArray:
     if n == 0:
         return np.ones(A.shape[:-2])
     with np.errstate(over="ignore", invalid="ignore"):
-        out = map_matrices(np.linalg.det, A) if n > 3 else _closed.det(A.reshape(-1, n, n)).reshape(A.shape[:-2])
+        out = np.linalg.det(A) if n > 3 else _closed.det(A.reshape(-1, n, n)).reshape(A.shape[:-2])
     return _finite("A", out, "its determinants")

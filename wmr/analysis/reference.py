@@ -46,7 +46,11 @@ def J2(robot: Robot, beta: ArrayLike) -> FloatArray:
     numpy.ndarray (..., 2w, n_rates)
     """
     robot = V.numeric_robot(robot)
-    beta = V.finite_array("beta", beta, last=robot.w)
+    return _J2(robot, V.finite_array("beta", beta, last=robot.w))
+
+
+def _J2(robot, beta):
+    """:func:`J2` of a numeric robot and angles (..., w) checked by the caller."""
     out = np.zeros(beta.shape[:-1] + (2 * robot.w, robot.n_rates))
     for i, (u, sl) in enumerate(zip(robot.wheels, robot.rate_slices)):
         own = u.constant_angle  # unsteered: own angle
@@ -70,7 +74,7 @@ def F(robot: Robot, beta: ArrayLike) -> FloatArray:
     numpy.ndarray (..., 2w, 3 + n_rates)
     """
     robot = V.numeric_robot(robot)
-    B = J2(robot, beta)
+    B = _J2(robot, V.finite_array("beta", beta, last=robot.w))
     J1 = np.broadcast_to(robot.J1(), B.shape[:-2] + (2 * robot.w, 3))
     return np.concatenate([J1, -B], axis=-1)
 
@@ -89,8 +93,9 @@ def J(robot: Robot, beta: ArrayLike, L: float = 1.0) -> FloatArray:
     numpy.ndarray (..., 3, n_rates)
     """
     robot = V.numeric_robot(robot)
+    B = _J2(robot, V.finite_array("beta", beta, last=robot.w))
     with np.errstate(over="ignore", invalid="ignore"):
-        return _finite("robot", robot.J1(L).T @ J2(robot, beta))
+        return _finite("robot", robot.J1(L).T @ B)
 
 
 def _matrices(A: ArrayLike, square: bool = False) -> FloatArray:
@@ -110,8 +115,7 @@ def _finite(name, *results):
 
 
 def _sv(A):
-    """Singular values of each matrix divided by its largest entry (the rank and kappa rules are scale-free)."""
-    A = _matrices(A)
+    """Singular values of each matrix (checked by the caller) divided by its largest entry (the rules are scale-free)."""
     m = np.max(np.abs(A), axis=(-2, -1), keepdims=True)
     return np.linalg.svd(A / np.where(m > 0, m, 1.0), compute_uv=False)
 
@@ -174,7 +178,7 @@ def condition_number(A: ArrayLike) -> FloatArray:
     -------
     numpy.ndarray (...)
     """
-    return kappa_from_singular_values(_sv(A))
+    return kappa_from_singular_values(_sv(_matrices(A)))
 
 
 @np.errstate(over="ignore", invalid="ignore")  # overflow is checked on the results
@@ -196,8 +200,9 @@ def forward(robot: Robot, beta: ArrayLike, rates: ArrayLike) -> tuple[FloatArray
     """
     robot = V.numeric_robot(robot)
     rates = V.finite_array("rates", rates, last=robot.n_rates)
-    V.batch_shape({"beta": V.finite_array("beta", beta, last=robot.w), "rates": rates})
-    rhs = (J2(robot, beta) @ rates[..., None])[..., 0]
+    beta = V.finite_array("beta", beta, last=robot.w)
+    V.batch_shape({"beta": beta, "rates": rates})
+    rhs = (_J2(robot, beta) @ rates[..., None])[..., 0]
     J1 = robot.J1()
     t = (np.linalg.pinv(J1) @ rhs[..., None])[..., 0]
     res = (J1 @ t[..., None])[..., 0] - rhs
@@ -235,8 +240,9 @@ def inverse(
     robot = V.numeric_robot(robot)
     twist = V.twist_array("twist", twist)
     beta_dot = None if beta_dot is None else V.finite_array("beta_dot", beta_dot, last=robot.w)
-    V.batch_shape({"beta": V.finite_array("beta", beta, last=robot.w), "twist": twist, "beta_dot": beta_dot})
-    B = J2(robot, beta)
+    beta = V.finite_array("beta", beta, last=robot.w)
+    V.batch_shape({"beta": beta, "twist": twist, "beta_dot": beta_dot})
+    B = _J2(robot, beta)
     v = (robot.J1() @ twist[..., None])[..., 0]
     batch = np.broadcast_shapes(B.shape[:-2], v.shape[:-1])
     rows, rhs = [np.broadcast_to(B, batch + B.shape[-2:])], [np.broadcast_to(v, batch + v.shape[-1:])]

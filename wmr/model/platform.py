@@ -214,7 +214,7 @@ def rotated(beta: Numbers, M: Matrix, EM: Matrix, axes: int = 2, backend: Backen
                     f"M and EM must be blocks of one shape with at least axes = {axes} axes, "
                     f"got shapes {np.shape(M)} and {np.shape(EM)}"
                 )
-            c, s = cos_sin(beta)
+            c, s = cos_sin_checked(beta)  # (beta checked just above)
             checked = True
         else:
             beta = real("beta", beta)

@@ -38,7 +38,7 @@ Where the parts live:
 :mod:`~wmr.analysis.sweep.configurations`  which configurations: :class:`Grid`, :class:`Sample`, explicit angles
 :mod:`~wmr.analysis.sweep.motions`         the configurations a robot can drive in: :class:`Drivable` (twists)
 :mod:`~wmr.analysis.sweep.swerve_kappa`    the fused kernel of ``kappa_J`` over them for a swerve-like robot
-:mod:`~wmr.analysis.sweep.gram_kappa`      its closed-form, certified condition number from a Gram matrix
+:mod:`~wmr.analysis.sweep.gram_kappa`      the names of :mod:`wmr.analysis.gram_kappa`, re-exported from their old home
 :mod:`~wmr.analysis.sweep.reduction`       the associative reduction of one chunk (extremes, counts, sketch)
 :mod:`~wmr.analysis.sweep.execute`         :func:`sweep`: chunks evaluated here or on a Dask cluster
 :mod:`~wmr.analysis.sweep.result`          the result, :class:`Sweep`

@@ -300,7 +300,7 @@ def kappa_J_of_twists(robot, twist, L):
 
     See :mod:`wmr.analysis.sweep.swerve_kappa`.  Equal to
     ``condition_number(robot.J(steering_angles(robot, twist), L=L))`` within a relative
-    :data:`~wmr.analysis._closed.ACCURACY` or ``KAPPA_ERROR * eps * kappa`` (every member the
+    :data:`~wmr.analysis.gram_kappa.ACCURACY` or ``KAPPA_ERROR * eps * kappa`` (every member the
     closed form cannot certify is computed that way).
 
     Parameters

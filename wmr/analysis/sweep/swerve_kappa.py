@@ -19,7 +19,7 @@ ever formed.  The condition number (30) comes from :math:`\mathbf G = \mathbf J\
   :math:`c_i^2 = \cos^2\beta_i = C_i^2/n_i`, :math:`c_is_i = C_iS_i/n_i`, :math:`n_i = C_i^2 + S_i^2`:
   a (6 x (2w + 1)) matrix times :math:`(c^2, cs, 1)`; its two largest eigenvalues
   :math:`\lambda_1\ge\lambda_2` by the trigonometric solution of the cubic
-  (:mod:`~wmr.analysis.sweep.gram_kappa`, as :func:`wmr.analysis._closed.condition_number_3x3`), or by
+  (:mod:`~wmr.analysis.gram_kappa`, as :func:`wmr.analysis._closed.condition_number_3x3`), or by
   LAPACK where two of them nearly meet (the cubic's solution amplifies rounding there);
 * :math:`\det\mathbf G = \sum_S(\det\mathbf J_S)^2` over the 3-column subsets S (Cauchy-Binet), and
   :math:`\det[C_i\mathbf a_i + S_i\mathbf b_i]_{i\in S}` is a cubic form in the twist that vanishes
@@ -39,7 +39,7 @@ their largest size: :math:`\kappa` changes under none of these), so the kernel t
 decisions in every unit.  Each member carries a first-order bound of its relative error (the
 rounding of :math:`\mathbf G`, amplified where two eigenvalues nearly meet, and of the
 :math:`Q_S`); a member is **accepted** when that bound is within ``KAPPA_ERROR eps kappa`` or
-:data:`~wmr.analysis._closed.ACCURACY`, :math:`\kappa < 1/(2\,\mathrm{TOL})` (so the SVD rule would
+:data:`~wmr.analysis.gram_kappa.ACCURACY`, :math:`\kappa < 1/(2\,\mathrm{TOL})` (so the SVD rule would
 not call it singular) and no wheel is still (:math:`\|\dot{\mathbf p}_i\| \le 2\,\mathrm{TOL}\,s`:
 its angle is the caller's).  The others are left to the general kernels, so every decision is
 theirs.  The kernel works on chunks of :data:`CHUNK` twists in a workspace allocated once per call;
@@ -57,8 +57,8 @@ import numpy as np
 from ...errors import InputValueError
 from ...model.backend import NUMERIC
 from ...model.tolerance import TOL
-from .gram_kappa import SCRATCH, kappa_by_lapack, kappa_from_gram
-from .gram_kappa import UPPER as _UPPER
+from ..gram_kappa import SCRATCH, kappa_by_lapack, kappa_from_gram
+from ..gram_kappa import UPPER as _UPPER
 
 __all__ = ["SwerveKappa", "swerve_like", "CHUNK"]
 

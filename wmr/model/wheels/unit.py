@@ -357,10 +357,8 @@ class WheelUnit(UnitGeometry, UnitMechanism, DesignHints):
         [[0.0], [-2.0]]
         """
         bk = choose(beta, *self._values(), backend=backend)
-        if bk is NUMERIC:
-            beta = A.finite_array("beta", beta)
         L, EL = self.block_terms(bk)
-        return rotated(beta, L, EL, backend=bk)  # (11): R(beta) L = cos L + sin E L
+        return rotated(beta, L, EL, backend=bk)  # (11): R(beta) L = cos L + sin E L; beta checked there
 
     def block_terms(self, backend: Backend = NUMERIC) -> tuple[Matrix, Matrix]:
         r"""The constant pair :math:`(\mathbf L_i, \mathbf E\mathbf L_i)` with
