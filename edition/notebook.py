@@ -23,7 +23,7 @@ from .display import quote, say, show, table
 from .ledger import Finding, Ledger
 from .verify import SEED
 
-__all__ = ["OUT_VARIABLE", "Project", "project", "Chapter", "quote", "say", "show", "table"]
+__all__ = ["OUT_VARIABLE", "Project", "project", "grading", "Chapter", "quote", "say", "show", "table"]
 
 
 # --------------------------------------------------------------------------------------- where files go
@@ -137,6 +137,18 @@ def project(where=None, chapter="scratch"):
     return Project(root=None, out=Path(tempfile.mkdtemp(prefix=f"wmr-{chapter}-")), source="temporary")
 
 
+def grading():
+    """Whether nbgrader is running this notebook to grade it (it sets ``$NBGRADER_EXECUTION`` while it autogrades or
+    validates).  Then a chapter computes what its cells use and skips what only a reader sees: figures are not
+    drawn, and chapter 9 runs each experiment at its nominal point only, not over its parameter box.
+
+    Returns
+    -------
+    bool
+    """
+    return bool(os.environ.get("NBGRADER_EXECUTION"))
+
+
 # --------------------------------------------------------------------------------------- a chapter
 class Chapter:
     r"""One notebook: its ledger, its random generator and where it writes.
@@ -207,8 +219,7 @@ class Chapter:
         # grades (it sets NBGRADER_EXECUTION) the figure is computed, not drawn: nobody sees it, and drawing the
         # figures is most of the time a chapter takes to grade
         keep = self.project.source != "temporary"
-        grading = bool(os.environ.get("NBGRADER_EXECUTION"))
-        return show_figure(key, data, outdir=self.project.figures if keep else None, draw=not grading)
+        return show_figure(key, data, outdir=self.project.figures if keep else None, draw=not grading())
 
     def close(self):
         """Write this chapter's ledger fragment and show its tally.
