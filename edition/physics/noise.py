@@ -25,6 +25,7 @@ from .common import (
     paper,
     parameters,
     pct,
+    run_problems,
     sig,
     twist_text,
     verdict,
@@ -98,6 +99,7 @@ def noise_run(robot, params=None, seconds=3.0, rng=None):
         "std": std / SIGMA,
         "bias": float(np.linalg.norm(bias, axis=1).mean()),
         "samples": int(err.shape[0] * err.shape[1]),
+        "validity": rec.validity,
     }
 
 
@@ -130,7 +132,7 @@ def noise_experiment(params=None):
     return Outcome(
         "isotropy-noise",
         "isotropy and encoder noise",
-        "4.3, 5.3",
+        "Chapter 3, from Sections 4.3 and 5.3: near-tautological, a check of wmr's model",
         r"the accuracy of the forward kinematics depends on the condition number: an isotropic design "
         r"($\kappa(\mathbf J) = 1$) spreads encoder noise evenly, $\kappa > 1$ by the ratio $\kappa$",
         rf"$\kappa(\mathbf J)$ along the run: {listing}",
@@ -151,5 +153,6 @@ def noise_experiment(params=None):
         "checks wmr's model against MuJoCo's kinematics more than a physical effect",
         overturn="noise that is not independent or not equal across the joints (backlash, correlated slip; not "
         "modelled here), under which the spread and $\\kappa(\\mathbf J)$ part",
+        problems=sum((run_problems(name, x["validity"]) for name, x in out.items()), ()),
         data={"runs": out, "sigma": SIGMA, "holds": v == HOLDS},
     )

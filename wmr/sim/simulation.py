@@ -9,7 +9,8 @@ drives), and a force and torque can be applied to the platform at C (a push).
 
 :meth:`Simulation.sample` measures the state in wmr's variables (the pose and twist, the steering angles and
 joint rates, the servo torques, and per wheel the contact force and the slip) with the model's
-:class:`~wmr.sim.measure.Probe`.
+:class:`~wmr.sim.measure.Probe`, and shows it to the validity monitor (:mod:`wmr.sim.validity`):
+:meth:`Simulation.validity` says whether the run so far can be trusted.
 :func:`wmr.sim.runner.run` drives a simulation along a :class:`~wmr.sim.recording.Schedule`.
 
 MuJoCo is imported here only (``pip install 'wmr-kinematics[sim]'``); ``import wmr`` does not import it.
@@ -31,6 +32,7 @@ from .measure import Probe
 from .mjcf import Export, export
 from .params import Params
 from .recording import Sample
+from .validity import Monitor, Validity
 
 __all__ = ["MAX_STEPS", "Simulation"]
 
@@ -108,6 +110,8 @@ class Simulation:
         self._platform = self._id(mj.mjtObj.mjOBJ_BODY, "platform")
         geoms = [self._id(mj.mjtObj.mjOBJ_GEOM, n) for _, n in wheels]
         self._probe = Probe(mj, m, self.robot, self._hinges, geoms, self._platform)
+        scale = ex.weight * max(float(u.r) for u in self.robot.wheels)
+        self._monitor = Monitor(mj, m, self.servo_names, geoms, self._platform, scale)
         self._gains = (m.actuator_gainprm.copy(), m.actuator_biasprm.copy())
         # each servo's target as a linear map of (beta, rates): a steering servo takes beta_i, a drive servo its rate
         self._from_beta, self._from_rates = np.zeros((m.nu, self.robot.w)), np.zeros((m.nu, self.robot.n_rates))
@@ -131,6 +135,7 @@ class Simulation:
             self.data.time = 0.0
             self.data.qpos[0:2] = 0.0  # C back at the origin, heading kept
         mj.mj_forward(m, self.data)
+        self._monitor.reset(self.data)  # validity is judged from time 0
 
     # --- commands --------------------------------------------------------------------------
     def command(
@@ -349,4 +354,23 @@ class Simulation:
         Sample
         """
         self._mj.mj_forward(self.model, self.data)  # positions, contacts and forces of this state
+        self._monitor.update(self.data)
         return self._probe.sample(self.data)
+
+    def watch(self) -> None:
+        """Let the validity monitor see the present state without taking a sample (a loop that steps by itself).
+
+        Returns
+        -------
+        None
+        """
+        self._monitor.update(self.data)
+
+    def validity(self) -> Validity:
+        """What the validity monitor saw since time 0 (:mod:`wmr.sim.validity`), at every sample and watch.
+
+        Returns
+        -------
+        Validity
+        """
+        return self._monitor.validity()
