@@ -11,7 +11,8 @@ Every run checks its own validity (:mod:`wmr.sim.validity`: energy, penetration,
 chatter, MuJoCo's warnings, divergence); a run with a problem is **invalid** and gives no verdict.  Over
 the valid runs the **rule** (:func:`rule`) is:
 
-* *holds* if the experiment's verdict holds on every valid run of the box,
+* *holds* if the experiment's verdict holds on every valid run of the box (*holds within* its stated error
+  counts as holding),
 * *does not hold* if it holds on none,
 * *depends on the model* otherwise, and the table says where it flips (which parameter, which value);
 * *invalid run* if no run of the box is valid.
@@ -29,7 +30,7 @@ from wmr.sim import Params
 
 from .common import FAILS, HOLDS, INVALID
 
-__all__ = ["BOX", "DEPENDS", "Box", "describe", "judge", "points", "rule"]
+__all__ = ["BOX", "CHECKS", "DEPENDS", "Box", "describe", "judge", "points", "rule"]
 
 #: the verdict of an experiment that holds on part of the box only
 DEPENDS = "depends on the model"
@@ -125,7 +126,7 @@ class Box:
     ----------
     runs : tuple of tuple
         ``(parameter, value, status)`` per point of the box; status ``"holds"``, ``"does not hold"`` or
-        ``"invalid run: <problems>"``.
+        ``"invalid run (<the checks it failed>)"``.
     description : str
         The box in words (:func:`describe`).
     """
@@ -174,10 +175,22 @@ class Box:
         return "; ".join(other) if other else f"nowhere (every run: {nominal})"
 
 
+#: the checks a problem of :meth:`wmr.sim.Validity.problems` belongs to, by a word of its text
+CHECKS = (
+    ("diverged", "divergence"),
+    ("warned", "MuJoCo's warnings"),
+    ("energy", "energy"),
+    ("sank", "penetration"),
+    ("torque limit", "servo saturation"),
+    ("chattered", "servo chatter"),
+)
+
+
 def _status(o):
-    """The status of one run: holds, does not hold, or invalid with its problems."""
+    """The status of one run: holds, does not hold, or invalid with the checks it failed."""
     if not o.valid:
-        return f"{INVALID}: {'; '.join(o.problems)}"
+        failed = [name for word, name in CHECKS if any(word in p for p in o.problems)]
+        return f"{INVALID} ({', '.join(failed or ['a check'])})"
     return HOLDS if o.holds else FAILS
 
 
@@ -211,6 +224,6 @@ def judge(experiment, params=None, **elsewhere):
         try:
             status = _status(experiment(p, **elsewhere))
         except FloatingPointError:
-            status = f"{INVALID}: the state diverged"
+            status = f"{INVALID} (divergence)"
         runs.append((name, value, status))
     return dataclasses.replace(nominal, box=Box(tuple(runs), describe(params)), data=nominal.data)
