@@ -58,7 +58,8 @@ def test_each_quote_is_the_papers_sentence():
         pytest.skip("the paper's text is not on this machine")
 
     def norm(t):
-        return re.sub(r"\s+", " ", re.sub(r"\$\s*C_\{\\rm f\}\s*\$", "C_f", t)).strip()
+        t = re.sub(r"\s+", " ", re.sub(r"\$\s*C_\{\\rm f\}\s*\$", "C_f", t))
+        return re.sub(r" ([,;.])", r"\1", t).strip()
 
     paper = norm(text.read_text(encoding="utf-8"))
     for r in physics.read_csv(COMMITTED):
@@ -130,7 +131,11 @@ def test_weakest_push_by_hand():
 def _nudged(direction):
     """Every input of the experiments moved by one ulp: the robots' sizes and the physical parameters."""
     p = Params()
-    return {f.name: float(np.nextafter(getattr(p, f.name), direction)) for f in dataclasses.fields(p)}
+    return {
+        f.name: float(np.nextafter(getattr(p, f.name), direction))
+        for f in dataclasses.fields(p)
+        if not isinstance(getattr(p, f.name), str)  # the integrator and the cone: names, no last bit
+    }
 
 
 @pytest.mark.parametrize("direction", [np.inf, -np.inf], ids=["up", "down"])
