@@ -79,7 +79,8 @@ def test_the_dual_wheel_servos_under_euler_are_caught():
     for integrator, ok in (("implicitfast", True), ("Euler", False)):
         sim = Simulation(robot, params=Params(integrator=integrator))
         s = Schedule(np.array([0.0, 2.0]), np.array([np.zeros(3), np.full(3, 2.0)]), np.array([rates, rates]))
-        assert run(sim, s, 2.0).validity.valid() is ok
+        v = run(sim, s, 2.0).validity
+        assert v is not None and v.valid() is ok
 
 
 def test_validity_problems_and_expected_stalls():

@@ -36,7 +36,7 @@ __all__ = ["BOX", "CHECKS", "DEPENDS", "Box", "describe", "judge", "points", "ru
 DEPENDS = "depends on the model"
 #: the box, one factor at a time: parameter -> its values (a factor of the nominal value, or a MuJoCo option);
 #: ``actuators`` scales both torque limits, of the steering and of the drive servos
-BOX = {
+BOX: dict[str, tuple[float | str, ...]] = {
     "timestep": (2.0,),
     "integrator": ("Euler",),
     "cone": ("pyramidal",),
@@ -74,10 +74,10 @@ def points(params=None):
             if isinstance(v, str):
                 out.append((name, v, p.replace(**{name: v})))
             elif name == "actuators":
-                q = p.replace(steer_torque=p.steer_torque * v, drive_torque=p.drive_torque * v)
+                q = p.replace(steer_torque=p.steer_torque * float(v), drive_torque=p.drive_torque * float(v))
                 out.append((name, f"x {v:g} (steer {q.steer_torque:g}, drive {q.drive_torque:g} W r)", q))
             else:
-                q = p.replace(**{name: getattr(p, name) * v})
+                q = p.replace(**{name: getattr(p, name) * float(v)})
                 out.append((name, f"{getattr(q, name):g}{units.get(name, '')}", q))
     return out
 

@@ -27,7 +27,7 @@ import numpy as np
 
 import wmr
 from wmr.model.platform import point_row
-from wmr.sim import Params, Schedule, Simulation, run
+from wmr.sim import Export, Params, Schedule, Simulation, export, run
 
 from ..text import bound
 from .common import FAILS, HOLDS, Outcome, fmt, paper, parameters, pct, run_problems, sig, twist_text
@@ -179,7 +179,8 @@ def breakaway(robot, beta, angle, free=True, params=None, start=1e-3, end=2.0, s
 
     Parameters
     ----------
-    robot : Robot
+    robot : Robot or wmr.sim.Export
+        The robot, or its export at ``beta`` (exported once for many pushes).
     beta : array (w,)
     angle : float
         Direction of the push, radians (fixed frame = body frame at rest).
@@ -198,7 +199,7 @@ def breakaway(robot, beta, angle, free=True, params=None, start=1e-3, end=2.0, s
     tuple (float, wmr.sim.Validity)
         The fraction of the weight at which C started to move (inf if it did not), and the run's validity.
     """
-    sim = Simulation(robot, beta=beta, params=params)
+    sim = Simulation(robot if isinstance(robot, Export) else export(robot, beta, params), beta=beta, params=params)
     if free:
         sim.release([n for n in sim.servo_names if n in sim.export.drive_names])
     else:
@@ -206,10 +207,11 @@ def breakaway(robot, beta, angle, free=True, params=None, start=1e-3, end=2.0, s
     W = sim.export.weight
     u = np.array([np.cos(angle), np.sin(angle)])
     n = round(seconds / dt)
+    steps = max(1, round(dt / sim.model.opt.timestep))
     for k in range(n):
         f = start * (end / start) ** (k / n)
         sim.push(f * W * u)
-        sim.advance(dt)
+        sim.step(steps)
         if k % 4 == 0:
             sim.watch()  # the validity monitor sees the run every fourth update
         if np.hypot(*sim.data.qvel[:2]) > speed:
@@ -254,7 +256,8 @@ def brake_experiment(params=None, directions=DIRECTIONS, reference=True):
         del configs["braked"]
     out, problems = {}, ()
     for name, (beta, free) in configs.items():
-        runs = [breakaway(robot, beta, np.radians(a), free, params) for a in directions]
+        ex = export(robot, beta, params)  # one model for every direction
+        runs = [breakaway(ex, beta, np.radians(a), free, params) for a in directions]
         measured = np.array([f for f, _ in runs])
         problems += tuple(x for a, (_, v) in zip(directions, runs) for x in run_problems(f"{name} {a:g} deg", v))
         predicted = (

@@ -175,8 +175,8 @@ def jam_experiment(params=None, generic=GENERIC):
     cols = [c for c, name in enumerate(robot.qdot_names) if not name.startswith("theta_dot")]
     scale = robot.F_column_norms[cols]
     out, problems = {}, ()
-    runs = (("generic", np.radians(generic), p), ("equal", np.zeros(robot.w), p))
-    runs += (("strong", np.radians(generic), p.replace(steer_torque=3 * scrub)),)
+    runs = [("generic", np.radians(generic), p), ("equal", np.zeros(robot.w), p)]
+    runs.append(("strong", np.radians(generic), p.replace(steer_torque=3 * scrub)))
     for name, beta0, q in runs:
         rec = turn_locked(robot, beta0, params=q)
         steer = [k for k, n in enumerate(rec.export.servo_names) if n.endswith("steer")]

@@ -117,7 +117,9 @@ def reorient_experiment(params=None):
     floor = 0.01 * max(t.values())  # a hundredth of the largest torque: creep, not friction
     problems = sum((run_problems(f"{k} {name}", v["validity"]) for (k, name), v in m.items()), ())
     # contacts only take energy: a torque (dissipation over rate) below minus the floor is the integration's
-    problems += tuple(f"{k} {name}: the contacts gave energy ({fmt(v)} N m)" for (k, name), v in t.items() if v < -floor)
+    problems += tuple(
+        f"{k} {name}: the contacts gave energy ({fmt(v)} N m)" for (k, name), v in t.items() if v < -floor
+    )
     t = {key: (v if v >= floor else 0.0) for key, v in t.items()}
     r, b = SIZE["r"], SIZE["r"]
     N = {k: m[(k, "on")]["weight"] / 3 for k in ("centred", "dual")}

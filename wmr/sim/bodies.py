@@ -18,6 +18,8 @@ any such tree into MJCF bodies, knowing no wheel kind:
 
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 
 from ..io.decimals import float_text, quantise
@@ -113,6 +115,7 @@ def mechanisms(robot, height: float) -> tuple[Mechanism, ...]:
     return tuple(out)
 
 
+@functools.lru_cache(maxsize=8192)  # a robot's numbers recur in every export of it (the edition exports hundreds)
 def num(x, scale: float | None = None) -> str:
     """A float as MJCF text by the rule of :mod:`wmr.io.decimals`, without a trailing ``.0`` (no negative zero).
 

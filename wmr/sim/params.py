@@ -139,7 +139,7 @@ class Params:
         unknown = sorted(set(changes) - {f.name for f in dataclasses.fields(self)})
         if unknown:
             raise InputTypeError(f"unknown parameter(s) {unknown}; known: {[f.name for f in dataclasses.fields(self)]}")
-        return dataclasses.replace(self, **changes)
+        return dataclasses.replace(self, **changes)  # type: ignore[arg-type]
 
     def total_mass(self, n_bodies: int, n_wheels: int) -> float:
         """Mass of the robot, kg.

@@ -65,14 +65,15 @@ def run(
         turning = schedule.beta_rate(times)
         ctrl = sim.targets(beta, rates, turning)  # every servo's target, every period
     samples = []
+    data, step = sim.data, sim.step
     for k in range(n):
         if on_step is not None:
             on_step(sim)
         if schedule is not None:
-            sim.data.ctrl[:] = ctrl[k]
+            data.ctrl[:] = ctrl[k]
         if k % every == 0:
-            samples.append(sim.sample())  # the state at the period's start, with its commands
-        sim.step(steps)
+            samples.append(sim.sample())  # the state at the period's start, with its commands (checked finite)
+        step(steps, False)
     if schedule is not None:
         sim.command(beta[-1], rates[-1], turning[-1])  # the last command stays (as command() would have set it)
     samples.append(sim.sample())
@@ -95,4 +96,5 @@ def _stack(ex, samples, validity):
         "slip",
         "dissipation",
     )
-    return Recording(ex, *(np.array([getattr(s, f) for s in samples]) for f in fields), validity=validity)
+    stacked = {f: np.array([getattr(s, f) for s in samples]) for f in fields}
+    return Recording(ex, **stacked, validity=validity)

@@ -289,8 +289,10 @@ class Simulation:
         -------
         None
         """
-        f = V.finite_array("force", force, last=2).reshape(2)
-        tau = V.number("torque", torque)
+        f = np.asarray(force, dtype=float) if isinstance(force, np.ndarray) else None
+        if f is None or f.shape != (2,) or not np.isfinite(f).all():  # the checks of bad input, off the fast path
+            f = V.finite_array("force", force, last=2).reshape(2)
+        tau = torque if type(torque) is float and np.isfinite(torque) else V.number("torque", torque)
         self.data.xfrc_applied[:] = 0.0
         # xfrc_applied acts at the body's centre of mass: move the force to C by adding its moment
         com = self.data.xipos[self._platform]
@@ -319,13 +321,16 @@ class Simulation:
         if n:
             self.step(n)
 
-    def step(self, n: int = 1) -> None:
+    def step(self, n: int = 1, check: bool = True) -> None:
         """Integrate ``n`` steps with the present servo targets (``data.ctrl``), as fast as MuJoCo goes.
 
         Parameters
         ----------
         n : int
             >= 1.
+        check : bool
+            Check that the state is still finite (default; :func:`wmr.sim.run` checks at each sample instead,
+            which :meth:`sample` does).
 
         Returns
         -------
@@ -336,7 +341,11 @@ class Simulation:
         FloatingPointError
             If the state is no longer finite (the simulation diverged).
         """
-        self._mj.mj_step(self.model, self.data, nstep=n)
+        self._mj.mj_step(self.model, self.data, n)
+        if check:
+            self._check_finite()
+
+    def _check_finite(self):
         if not np.isfinite(self.data.qpos).all():
             raise FloatingPointError(f"the simulation diverged at t = {self.data.time:.6g} s")
 
@@ -352,7 +361,13 @@ class Simulation:
         Returns
         -------
         Sample
+
+        Raises
+        ------
+        FloatingPointError
+            If the state is no longer finite (the simulation diverged).
         """
+        self._check_finite()
         self._mj.mj_forward(self.model, self.data)  # positions, contacts and forces of this state
         self._monitor.update(self.data)
         return self._probe.sample(self.data)

@@ -108,7 +108,11 @@ class Validity:
             for n, f in self.saturation.items()
             if f > SATURATION and n not in skip
         ]
-        out += [f"{n} chattered (torque jumps {100 * f:.2g}% of its limit per sample)" for n, f in self.chatter.items() if f > CHATTER]
+        out += [
+            f"{n} chattered (torque jumps {100 * f:.2g}% of its limit per sample)"
+            for n, f in self.chatter.items()
+            if f > CHATTER
+        ]
         return tuple(out)
 
     def valid(self, saturating: Iterable[str] = ()) -> bool:
@@ -157,7 +161,9 @@ class Monitor:
         self.mj, self.model = mj, model
         self.names = tuple(servo_names)
         self.limit = np.abs(model.actuator_forcerange).max(axis=1) if model.nu else np.zeros(0)
-        self.radius = {int(g): float(model.geom_size[g, 0]) for g in wheel_geoms}
+        self.radius = np.zeros(len(model.geom_size))  # the wheels' radii by geom id, 0 for other geoms
+        for g in wheel_geoms:
+            self.radius[int(g)] = float(model.geom_size[g, 0])
         self.platform, self.scale = platform, float(scale)
         self.bad = [int(getattr(mj.mjtWarning, n)) for n in BAD_STATE]
         self.reset(None)
@@ -173,11 +179,13 @@ class Monitor:
         -------
         None
         """
-        self.n, self.sat, self.jumps, self.tau = 0, np.zeros(len(self.names)), np.zeros(len(self.names)), None
-        self.t = self.e0 = self.p = None
+        self.n, self.sat, self.jumps = 0, np.zeros(len(self.names)), np.zeros(len(self.names))
+        self.tau: np.ndarray | None = None
+        self.t: float | None = None
+        self.e0 = self.p = 0.0
         self.work, self.excess, self.depth = 0.0, -np.inf, 0.0
-        self.warned = 0 if d is None else self._warnings(d)
-        self.warn0 = self.warned
+        self.data: Any = d
+        self.warn0 = 0 if d is None else self._warnings(d)
 
     def _warnings(self, d):
         return int(sum(d.warning[k].number for k in self.bad))
@@ -208,12 +216,13 @@ class Monitor:
         if self.tau is not None:
             self.jumps += np.abs(tau - self.tau) / np.where(self.limit > 0, self.limit, 1.0)
         self.tau = tau.copy()
-        for k in range(d.ncon):
-            c = d.contact[k]
-            g = self.radius.get(int(c.geom[0]), self.radius.get(int(c.geom[1])))
-            if g is not None and c.dist < 0:
-                self.depth = max(self.depth, -float(c.dist) / g)
-        self.warned = self._warnings(d)
+        if d.ncon:
+            c = d.contact
+            r = np.maximum(self.radius[c.geom[:, 0]], self.radius[c.geom[:, 1]])  # the wheel's, of a wheel's contact
+            wheel = r > 0
+            if wheel.any():
+                self.depth = max(self.depth, float((-c.dist[wheel] / r[wheel]).max()))
+        self.data = d
 
     def validity(self) -> Validity:
         """What was seen since the last :meth:`reset`.
@@ -225,7 +234,7 @@ class Monitor:
         n = max(self.n, 1)
         return Validity(
             finite=True,
-            warnings=self.warned - self.warn0,
+            warnings=0 if self.data is None else self._warnings(self.data) - self.warn0,
             energy=max(0.0, float(self.excess) / self.scale) if self.n else 0.0,
             penetration=self.depth,
             saturation={name: float(s / n) for name, s in zip(self.names, self.sat)},
