@@ -12,6 +12,8 @@ isotropic :math:`\mathbf J_{L1}` that ratio is :math:`\kappa(\mathbf J)`.
 
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 
 import wmr
@@ -62,7 +64,13 @@ def designs():
     }
 
 
-def noise_run(robot, params=None, seconds=3.0, rng=None):
+@functools.lru_cache(maxsize=16)
+def _schedule(name, size, seconds):
+    """The joint commands of design ``name`` along :data:`TWIST` (no physical parameter enters: once per size)."""
+    return twist_schedule(designs()[name], TWIST, seconds, dt=0.1)
+
+
+def noise_run(robot, params=None, seconds=3.0, rng=None, schedule=None):
     r"""Drive ``robot`` along :data:`TWIST`; read its encoders with noise; the spread of the forward-kinematics error.
 
     Parameters
@@ -72,6 +80,8 @@ def noise_run(robot, params=None, seconds=3.0, rng=None):
     seconds : float
     rng : numpy.random.Generator, optional
         Default: seeded with :data:`SEED`.
+    schedule : wmr.sim.Schedule, optional
+        The joint commands of :data:`TWIST` (default: :func:`wmr.sim.twist_schedule` of ``robot``).
 
     Returns
     -------
@@ -81,7 +91,7 @@ def noise_run(robot, params=None, seconds=3.0, rng=None):
         :math:`\sigma`), ``bias`` (the mean error without noise: slip and compliance, homogeneous units, m/s).
     """
     rng = rng or np.random.default_rng(SEED)
-    s = twist_schedule(robot, TWIST, seconds, dt=0.1)
+    s = schedule if schedule is not None else twist_schedule(robot, TWIST, seconds, dt=0.1)
     rec = run(Simulation(robot, beta=s.beta[0], params=params), s, seconds)
     keep = rec.t >= 0.5
     beta, rates, true = rec.beta[keep], rec.rates[keep], rec.twist[keep]
@@ -119,7 +129,10 @@ def noise_experiment(params=None):
     Outcome
     """
     rng = np.random.default_rng(SEED)
-    out = {name: noise_run(bot, params, rng=rng) for name, bot in designs().items()}
+    size = tuple(sorted(SIZE.items()))
+    out = {
+        name: noise_run(bot, params, rng=rng, schedule=_schedule(name, size, 3.0)) for name, bot in designs().items()
+    }
     for v in out.values():
         v["kappa"], v["spread"] = sig(v["kappa"], 3), sig(v["spread"], 3)
     err = max(abs(v["spread"] / v["kappa"] - 1) for v in out.values())

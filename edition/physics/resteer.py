@@ -15,6 +15,8 @@ change its velocity, and its wheels can give at most :math:`\mu N`.
 
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 
 from wmr import swerve
@@ -75,6 +77,13 @@ def replay(robot, transient, params=None, lead_in=1.0):
     }
 
 
+@functools.lru_cache(maxsize=4)
+def _study(r):
+    """The swerve and wmr's re-steering study of it: no physical parameter enters, so it is computed once per size."""
+    robot = swerve_robot(0.6, 0.4, r=r)
+    return robot, swerve.resteer_study(robot, swerve.direction_change(**PROFILE), steer_rate=STEER_RATE)
+
+
 def _best(values):
     """The labels with the least value (ties at the rounded value)."""
     low = min(values.values())
@@ -97,9 +106,7 @@ def resteer_experiment(params=None):
     """
     from .common import RESOLVED
 
-    robot = swerve_robot(0.6, 0.4, r=SIZE["r"])
-    profile = swerve.direction_change(**PROFILE)
-    study = swerve.resteer_study(robot, profile, steer_rate=STEER_RATE)
+    robot, study = _study(SIZE["r"])
     rows = {}
     for tr in study.runs:
         m = replay(robot, tr, params)
