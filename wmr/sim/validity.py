@@ -116,7 +116,7 @@ class Validity:
         return tuple(out)
 
     def valid(self, saturating: Iterable[str] = ()) -> bool:
-        """True when :meth:`problems` finds none.
+        """True when :meth:`Validity.problems` finds none.
 
         Parameters
         ----------
@@ -140,7 +140,7 @@ class Validity:
 
 
 class Monitor:
-    """Watches one simulation's state at each sample (module docstring); :meth:`validity` says what it saw.
+    """Watches one simulation's state at each sample (module docstring); :meth:`Monitor.validity` says what it saw.
 
     Parameters
     ----------
@@ -225,7 +225,7 @@ class Monitor:
         self.data = d
 
     def validity(self) -> Validity:
-        """What was seen since the last :meth:`reset`.
+        """What was seen since the last :meth:`Monitor.reset`.
 
         Returns
         -------
