@@ -162,11 +162,19 @@ def physics_card(row):
     cited = m.group(1) if m else ""
     claim = row["claim"][: m.start()] if m else row["claim"]
     whose = "the paper's claim" if row["whose"] == "paper" else "this edition's own prediction"
+    quote = f" The paper: {row['quote']}" if row.get("quote") else ""
+    box = (
+        f" Nominal run: {row['nominal']}. Over the box ({row['box']}): {row['box_holds']} hold, {row['box_invalid']} "
+        f"invalid; where it flips: {row['flips']}."
+        if row.get("box")
+        else ""
+    )
     return (
         f"**Physics: {row['experiment'].replace('-', ' ')}**, {whose}{f' ({cited})' if cited else ''}, "
         f"*{row['verdict']}*\n\n"
-        f"- *Claim:* {_sentence(claim)}.\n"
-        f"- *Verdict:* *{row['verdict']}*, computed from the measurement by the criterion in parentheses.\n"
+        f"- *Claim:* {_sentence(claim)}.{quote}\n"
+        f"- *Verdict:* *{row['verdict']}*, computed from the measurements by the rule and criterion in "
+        f"parentheses.{box}\n"
         f"- *Readings:* the prediction (wmr): {_sentence(row['prediction'])}; the measurement (MuJoCo): "
         f"{_sentence(row['measurement'])}.\n"
         f"- *Depends on:* {_sentence(row['rests_on'])}; the run: {_sentence(row['parameters'])}.\n"

@@ -74,3 +74,30 @@ def test_simulate_bad_input(capsys, argv, message):
 
     code, out, err = _run(capsys, "simulate", *[str(ROOT / a) if a.endswith(".toml") else a for a in argv])
     assert code == 2 and out == "" and re.search(message, err) and len(err.strip().splitlines()) == 1
+
+
+def test_simulate_warns_of_a_twist_that_is_not_admissible(capsys):
+    """A differential drive cannot move sideways: the run is made, and its wheels must slip, and it says so."""
+    code, out, err = _run(capsys, "simulate", str(ROOT / "examples" / "differential.toml"), "--vy", "0.3",
+                          "--seconds", "1", "--json")  # fmt: skip
+    assert code == 0 and err == ""
+    assert any("not admissible" in w for w in json.loads(out)["warnings"])
+    code, out, _ = _run(capsys, "simulate", str(ROOT / "examples" / "differential.toml"), "--vx", "0.3",
+                        "--seconds", "1", "--json")  # fmt: skip
+    assert json.loads(out)["warnings"] == []
+
+
+def test_simulate_warns_of_a_robot_that_cannot_stand(capsys, tmp_path):
+    """Two wheels on one axle and nothing else: the platform tips over, and the run says so."""
+    robot = tmp_path / "two.toml"
+    text = (ROOT / "examples" / "differential.toml").read_text(encoding="utf-8")
+    robot.write_text(text.split("[[wheel]]                   # castor")[0], encoding="utf-8")
+    code, out, _ = _run(capsys, "simulate", str(robot), "--vx", "0.3", "--seconds", "1")
+    assert code == 0 and "warning" in out and "does not stand on its contacts" in out
+
+
+def test_simulate_warns_of_an_invalid_run(capsys):
+    """An explicit integrator with a long step: the drive servos saturate and chatter, and the run says so."""
+    code, out, _ = _run(capsys, "simulate", str(ROOT / "examples" / "paper_centred.toml"), "--vx", "1", "--omega",
+                        "2", "--seconds", "1", "--param", "integrator=Euler", "timestep=0.004", "--json")  # fmt: skip
+    assert code == 0 and any(w.startswith("the run is not valid") for w in json.loads(out)["warnings"])

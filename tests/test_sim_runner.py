@@ -49,10 +49,13 @@ def test_differential_drive_turns_about_the_midpoint_of_its_axle():
     rec = run(sim, Schedule.constant(np.zeros(3), [-omega, omega, 0.0, 0.0]), 3.0)
     late = rec.t > 1.0
     psi_dot = r * omega / b  # 2 rad/s, by hand
-    assert rec.twist[late, 0].mean() == pytest.approx(psi_dot, rel=0.01)
-    assert np.hypot(*rec.pose[:, 1:].T).max() < 0.05 * b  # C stays where it was (the castor's drag: mm)
+    # within 2 %: at the wheels' own contact stiffness (0.005 s; before, MuJoCo averaged it with the ground's 0.02 s
+    # and this was within 1 %) the driven wheels slip about 1.3 % against the castor's drag
+    assert rec.twist[late, 0].mean() == pytest.approx(psi_dot, rel=0.02)
+    assert np.hypot(*rec.pose[:, 1:].T).max() < 0.075 * b  # C stays where it was (the castor's drag: 10 mm)
     est, residual = rec.kinematic_slip()
-    assert est[late, 0].mean() == pytest.approx(psi_dot, rel=0.01) and residual[late].max() < 0.02 * r * omega
+    # the encoders' slip residual: the castor shimmies a little at this stiffness (up to 0.029 r omega)
+    assert est[late, 0].mean() == pytest.approx(psi_dot, rel=0.02) and residual[late].max() < 0.04 * r * omega
 
 
 def test_swerve_follows_a_commanded_twist_and_wmr_forward_recovers_it():

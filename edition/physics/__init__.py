@@ -18,6 +18,12 @@ through :mod:`wmr.sim`, beside what wmr's kinematics predicts, and judged by a s
 7   :func:`resteer_experiment`          chapter 8's re-steering transients             :mod:`~edition.physics.resteer`
 ==  ==================================  =============================================  ==========================
 
+Experiments 1, 3, 4 and 5 test sentences the paper prints (each quoted with its section); 2, 6 and 7
+test this edition's own models (the jam of Chapter 2, the near-tautological link between
+:math:`\kappa(\mathbf J)` and the noise, Chapter 8's simulator) and are counted apart.  Every experiment
+is judged over the parameter box of :mod:`edition.physics.box` (:func:`judge`): *holds*, *does not hold*
+or *depends on the model*, and where it flips; a run that fails its validity checks gives no verdict.
+
 :func:`run_all` runs them; :func:`write_csv` writes ``physics.csv``, one row per experiment with the
 columns :data:`COLUMNS` (chapter 9 writes it, the build publishes it into ``figures/``), and
 :func:`findings_markdown` turns the published file into the report's findings section;
@@ -31,7 +37,8 @@ import csv
 from pathlib import Path
 
 from .. import files
-from .common import Outcome
+from .box import DEPENDS, judge
+from .common import FAILS, INVALID, Outcome
 from .contact import brake_experiment, steering_experiment
 from .drift import dead_zone_experiment, jam_experiment
 from .friction import reorient_experiment
@@ -43,6 +50,7 @@ __all__ = [
     "EXPERIMENTS",
     "Outcome",
     "csv_text",
+    "judge",
     "findings_markdown",
     "read_csv",
     "run_all",
@@ -60,34 +68,63 @@ EXPERIMENTS = (
     noise_experiment,
     resteer_experiment,
 )
-#: the columns of physics.csv
+#: the columns of physics.csv (:meth:`Outcome.row`): ``nominal`` is the verdict at the nominal parameters,
+#: ``verdict`` the verdict over the box (:mod:`edition.physics.box`), ``box_fraction`` the fraction of its valid
+#: runs on which the claim holds, ``box_invalid`` its invalid runs, ``flips`` where it differs from the nominal run
 COLUMNS = (
     "experiment",
     "claim",
+    "quote",
     "prediction",
     "measurement",
     "agreement",
+    "nominal",
     "verdict",
+    "box_fraction",
+    "box_holds",
+    "box_invalid",
+    "flips",
+    "box",
     "parameters",
     "whose",
     "rests_on",
     "overturn",
 )
+#: arguments of an experiment at the box's points other than the nominal one (what only the figure needs is left out)
+ELSEWHERE = {"brake_experiment": {"reference": False}}
+
+
+def run(experiment, params=None):
+    """One experiment judged over the parameter box (:func:`edition.physics.box.judge`).
+
+    Parameters
+    ----------
+    experiment : callable
+        One of :data:`EXPERIMENTS`.
+    params : wmr.sim.Params, optional
+        The nominal point (default :class:`wmr.sim.Params`).
+
+    Returns
+    -------
+    Outcome
+        The nominal run's, with the box's verdict (``outcome.box``).
+    """
+    return judge(experiment, params, **ELSEWHERE.get(experiment.__name__, {}))
 
 
 def run_all(params=None):
-    """Run the seven experiments.
+    """Run the seven experiments, each over the parameter box.
 
     Parameters
     ----------
     params : wmr.sim.Params, optional
-        Physical parameters (default :class:`wmr.sim.Params`).
+        The nominal point (default :class:`wmr.sim.Params`).
 
     Returns
     -------
     list of Outcome
     """
-    return [f(params) for f in EXPERIMENTS]
+    return [run(f, params) for f in EXPERIMENTS]
 
 
 def csv_text(outcomes):
@@ -158,19 +195,28 @@ def tally(rows):
     Returns
     -------
     dict
-        ``{"paper": {"tested": n, "hold": k, "fail": n - k}, "edition": {...}}``; a verdict *holds within*
-        its error counts as holding.
+        ``{"paper": {"tested": n, "hold": k, "fail": f, "depends": m, "invalid": i}, "edition": {...}}``, by
+        the verdict over the box (:mod:`edition.physics.box`): *holds*, *does not hold*, *depends on the
+        model*, *invalid run*.
 
     Examples
     --------
-    >>> tally([{"whose": "paper", "verdict": "holds (x)"}, {"whose": "edition", "verdict": "does not hold (y)"}])
-    {'paper': {'tested': 1, 'hold': 1, 'fail': 0}, 'edition': {'tested': 1, 'hold': 0, 'fail': 1}}
+    >>> t = tally([{"whose": "paper", "verdict": "holds (x)"}, {"whose": "edition", "verdict": "depends on the model"}])
+    >>> t["paper"]
+    {'tested': 1, 'hold': 1, 'fail': 0, 'depends': 0, 'invalid': 0}
+    >>> t["edition"]["depends"]
+    1
     """
     out = {}
     for whose in ("paper", "edition"):
-        group = [r for r in rows if r["whose"] == whose]
-        held = sum(r["verdict"].startswith("holds") for r in group)
-        out[whose] = {"tested": len(group), "hold": held, "fail": len(group) - held}
+        group = [r["verdict"] for r in rows if r["whose"] == whose]
+        out[whose] = {
+            "tested": len(group),
+            "hold": sum(v.startswith("holds") for v in group),
+            "fail": sum(v.startswith(FAILS) for v in group),
+            "depends": sum(v.startswith(DEPENDS) for v in group),
+            "invalid": sum(v.startswith(INVALID) for v in group),
+        }
     return out
 
 
@@ -185,8 +231,8 @@ def findings_markdown(path):
     Returns
     -------
     str
-        Markdown: one paragraph of counts and of what every physics verdict rests on, and a table (experiment,
-        whose claim, verdict with its criterion, what the verdict rests on).  The finding cards
+        Markdown: one paragraph of the box, its rule and the counts, and a table (experiment, whose claim,
+        verdict over the box, on how many valid runs it holds, where it flips, what it rests on).  The finding cards
         (:func:`edition.cards.physics_card`) give the parameters and what would overturn each.
     """
     rows = read_csv(path)
@@ -195,22 +241,33 @@ def findings_markdown(path):
     def cell(text):
         return text.replace("|", "\\|").replace("\n", " ")
 
-    def verb(n):
-        return "holds" if n == 1 else "hold"
+    def counts(c):
+        parts = [f"{c['hold']} {'holds' if c['hold'] == 1 else 'hold'} on the whole box"]
+        parts.append(f"{c['fail']} {'does' if c['fail'] == 1 else 'do'} not hold on any of it")
+        parts.append(f"{c['depends']} {'depends' if c['depends'] == 1 else 'depend'} on the model")
+        if c["invalid"]:
+            parts.append(f"{c['invalid']} had no valid run")
+        return ", ".join(parts[:-1]) + " and " + parts[-1]
 
     p, e = t["paper"], t["edition"]
     head = (
-        f"Chapter 9 runs {len(rows)} experiments in the physics engine MuJoCo. Of the {p['tested']} claims of the "
-        f"paper tested there, {p['hold']} {verb(p['hold'])} and {p['fail']} {'does' if p['fail'] == 1 else 'do'} "
-        f"not; of the {e['tested']} predictions of this edition's own tested there (counted apart: not claims of "
-        f"the paper), {e['hold']} {verb(e['hold'])} and {e['fail']} {'does' if e['fail'] == 1 else 'do'} not. "
-        "Every physics verdict rests on MuJoCo's contact model and on the parameters of its run, unlike the "
-        "kinematic verdicts, which are proven: the table says what each turns on, and the finding cards give the "
+        f"Chapter 9 runs {len(rows)} experiments in the physics engine MuJoCo, each over a box of physical "
+        f"parameters ({rows[0]['box'] if rows else ''}); every run checks its own validity (energy, penetration, "
+        "servo saturation and chatter, MuJoCo's warnings) and an invalid run gives no verdict. A verdict *holds* "
+        "when the claim holds on every valid run of the box, *does not hold* when on none, and *depends on the "
+        f"model* otherwise. Of the {p['tested']} claims of the paper tested there, {counts(p)}; of the "
+        f"{e['tested']} predictions of this edition's own tested there (counted apart: not claims of the paper), "
+        f"{counts(e)}. Every physics verdict rests on MuJoCo's contact model, unlike the kinematic verdicts, which "
+        "are proven: the table says where each flips and what it turns on, and the finding cards give the "
         "parameters and what would overturn it.\n\n"
     )
-    table = "| Experiment | Whose claim | Verdict | What it rests on |\n|---|---|---|---|\n" + "".join(
-        f"| {r['experiment'].replace('-', ' ')} | "
-        f"{'the paper' if r['whose'] == 'paper' else 'this edition'} | {cell(r['verdict'])} | {cell(r['rests_on'])} |\n"
+    table = (
+        "| Experiment | Whose claim | Verdict over the box | Holds on | Where it flips | What it rests on |\n"
+        "|---|---|---|---|---|---|\n"
+    ) + "".join(
+        f"| {r['experiment'].replace('-', ' ')} | {'the paper' if r['whose'] == 'paper' else 'this edition'} | "
+        f"{r['verdict'].split(' (')[0]} | {r['box_holds']}, {r['box_invalid']} invalid | {cell(r['flips'])} | "
+        f"{cell(r['rests_on'])} |\n"
         for r in rows
     )
     return head + table

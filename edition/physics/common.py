@@ -3,7 +3,9 @@ r"""What the seven experiments share: their outcome, how numbers are rounded, ho
 Every experiment puts wmr's kinematic prediction beside a MuJoCo measurement (:mod:`wmr.sim`) and
 returns an :class:`Outcome`: the paper's claim, the prediction, the measurement, their agreement and
 a **verdict** -- *holds*, *holds within* a stated error, or *does not hold* -- computed by
-:func:`verdict` from the rounded numbers against the criterion the experiment states.
+:func:`verdict` from the rounded numbers against the criterion the experiment states.  Every run
+checks its own validity (:mod:`wmr.sim.validity`); an outcome carries the problems of its runs, and
+:mod:`edition.physics.box` refuses a verdict from a run that has any.
 
 Reproducibility: a physics engine's last bits differ between machines, and contact simulations can
 amplify them, so every measurement that reaches a verdict or the table is rounded to
@@ -15,6 +17,7 @@ parameters of :class:`wmr.sim.Params` unless an experiment says otherwise.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 
@@ -25,6 +28,7 @@ __all__ = [
     "DIGITS",
     "FAILS",
     "HOLDS",
+    "INVALID",
     "RESOLVED",
     "SIZE",
     "WITHIN",
@@ -35,6 +39,7 @@ __all__ = [
     "parameters",
     "pct",
     "relative_pose",
+    "run_problems",
     "sig",
     "verdict",
 ]
@@ -43,6 +48,8 @@ __all__ = [
 DIGITS = 2
 #: the three verdicts
 HOLDS, WITHIN, FAILS = "holds", "holds within", "does not hold"
+#: what a run with a validity problem gives instead of a verdict
+INVALID = "invalid run"
 #: what the measurements can resolve: MuJoCo's contacts are soft (a wheel held by static friction creeps)
 #: and its servos compliant, so agreement to within 2 % is agreement
 RESOLVED = 0.02
@@ -83,6 +90,14 @@ class Outcome:
     overturn : str
         What would overturn the verdict: the measurement, under another model or parameters, that would fail
         (or meet) the criterion.
+    quote : str
+        For a claim of the paper, its sentence as the paper prints it (Section :attr:`section`); empty for
+        a prediction of this edition's own.
+    problems : tuple of str
+        The validity problems of the experiment's runs (:meth:`wmr.sim.Validity.problems`); any makes the
+        run invalid, and no verdict is drawn from it (:mod:`edition.physics.box`).
+    box : edition.physics.box.Box, optional
+        The verdict over the parameter box (:func:`edition.physics.box.judge`); None for a single run.
     data : dict
         Arrays for the figure (not in the table).
     """
@@ -99,27 +114,57 @@ class Outcome:
     parameters: str
     rests_on: str
     overturn: str
+    quote: str = ""
+    problems: tuple[str, ...] = ()
+    box: Any = None
     data: dict = field(default_factory=dict, repr=False, compare=False)
 
     def __post_init__(self):
         for name in ("rests_on", "overturn"):
             if not str(getattr(self, name)).strip():
                 raise ValueError(f"experiment {self.key!r}: {name} is empty (every verdict states what it rests on)")
+        if self.whose == "paper" and not self.quote.strip():
+            raise ValueError(f"experiment {self.key!r}: a claim of the paper quotes its sentence")
+
+    @property
+    def valid(self):
+        """True when no run of the experiment had a validity problem."""
+        return not self.problems
+
+    @property
+    def holds(self):
+        """True when the verdict is *holds* or *holds within* (whatever the validity: see :attr:`valid`)."""
+        return self.verdict.startswith(HOLDS)
 
     @property
     def whose(self):
         """``"paper"`` for a claim of the paper, ``"edition"`` for a prediction of this edition's own."""
         return "edition" if self.section.lower().startswith("chapter") else "paper"
 
+    @property
+    def nominal(self):
+        """The verdict of this run with its criterion, or ``invalid run`` with its problems."""
+        if not self.valid:
+            return f"{INVALID} ({'; '.join(self.problems)})"
+        return f"{self.verdict} ({self.criterion})"
+
     def row(self):
-        """The row of ``physics.csv``: dict of str."""
+        """The row of ``physics.csv``: dict of str (the box's columns empty unless :attr:`box` is set)."""
+        b = self.box
         return {
             "experiment": self.key,
             "claim": f"{self.claim} ({self.section})",
+            "quote": f"“{self.quote}” (Section {self.section.split(',')[0]})" if self.quote else "",
             "prediction": self.prediction,
             "measurement": self.measurement,
             "agreement": self.agreement,
-            "verdict": f"{self.verdict} ({self.criterion})",
+            "nominal": self.nominal,
+            "verdict": self.nominal if b is None else f"{b.verdict} ({b.rule}; criterion: {self.criterion})",
+            "box_fraction": "" if b is None else b.fraction_text,
+            "box_holds": "" if b is None else f"{b.held} of {b.valid} valid runs",
+            "box_invalid": "" if b is None else str(b.invalid),
+            "flips": "" if b is None else b.flips,
+            "box": "" if b is None else b.description,
             "parameters": self.parameters,
             "whose": self.whose,
             "rests_on": self.rests_on,
@@ -282,10 +327,31 @@ def parameters(robot, params=None, **extra):
     phys = (
         f"mu = {p.sliding:g}, torsional = {p.torsional:g} r, rolling = {p.rolling:g}, "
         f"platform {p.platform_mass:g} kg, wheel {p.wheel_mass:g} kg, steer limit {p.steer_torque:g} W r, "
-        f"drive limit {p.drive_torque:g} W r, step {p.timestep:g} s"
+        f"drive limit {p.drive_torque:g} W r, step {p.timestep:g} s ({p.integrator}), {p.cone} cone, impratio "
+        f"{p.impratio:g}, contact time {p.contact_time:g} s"
     )
     more = "; ".join(f"{k.replace('_', ' ')} {v}" for k, v in extra.items())
     return f"{size}; {phys}" + (f"; {more}" if more else "")
+
+
+def run_problems(label, validity, saturating=()):
+    """The validity problems of one run, each named after the run (:meth:`wmr.sim.Validity.problems`).
+
+    Parameters
+    ----------
+    label : str
+        The run's name in the experiment.
+    validity : wmr.sim.Validity or wmr.sim.Recording
+        The run's validity (a recording's, :attr:`wmr.sim.Recording.validity`).
+    saturating : iterable of str
+        Servos expected to sit at their torque limit (a stall that is the measurement).
+
+    Returns
+    -------
+    tuple of str
+    """
+    v = getattr(validity, "validity", validity)
+    return tuple(f"{label}: {p}" for p in v.problems(saturating))
 
 
 def twist_text(twist):

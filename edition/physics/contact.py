@@ -27,10 +27,10 @@ import numpy as np
 
 import wmr
 from wmr.model.platform import point_row
-from wmr.sim import Params, Schedule, Simulation, run
+from wmr.sim import Export, Params, Schedule, Simulation, export, run
 
 from ..text import bound
-from .common import FAILS, HOLDS, Outcome, fmt, paper, parameters, pct, sig, twist_text
+from .common import FAILS, HOLDS, Outcome, fmt, paper, parameters, pct, run_problems, sig, twist_text
 
 __all__ = ["DIRECTIONS", "OFF", "TWIST", "brake_experiment", "breakaway", "steering_experiment", "weakest_push"]
 
@@ -73,10 +73,11 @@ def steering_experiment(params=None, twist=TWIST, off=OFF, seconds=3.0):
     robot = paper("centred")
     twist = np.asarray(twist, dtype=float)
     ok = wmr.steering_angles(robot, twist)
-    out = {}
+    out, problems = {}, ()
     for name, beta in (("coordinated", ok), ("incompatible", ok + np.radians(off))):
         sol = wmr.inverse(robot, beta, twist)
         rec = run(Simulation(robot, beta=beta, params=params), Schedule.constant(beta, sol.value), seconds)
+        problems += run_problems(name, rec)
         late = _late(rec)
         f = rec.force[late][..., :2]
         fight = np.linalg.norm(f, axis=-1).sum(axis=1) - np.linalg.norm(f.sum(axis=1), axis=-1)
@@ -113,7 +114,10 @@ def steering_experiment(params=None, twist=TWIST, off=OFF, seconds=3.0):
         rests_on="MuJoCo's friction cone (elliptic, the coefficients of the run) and its soft contacts, which creep a "
         "little under static friction; the drive servos' torque limit bounds how hard the wheels fight",
         overturn="a friction model under which coordinated steering also slips by more than a tenth of the "
-        "incompatible slip, or incompatible wheels stop fighting (not run here)",
+        "incompatible slip, or incompatible wheels stop fighting (the box runs other friction cones and coefficients)",
+        quote="In both cases, the steering angles and the driving rates must be compatible to prevent singularities "
+        "and skidding, which is undesirable.",
+        problems=problems,
         data=out | {"twist": twist},
     )
 
@@ -175,7 +179,8 @@ def breakaway(robot, beta, angle, free=True, params=None, start=1e-3, end=2.0, s
 
     Parameters
     ----------
-    robot : Robot
+    robot : Robot or wmr.sim.Export
+        The robot, or its export at ``beta`` (exported once for many pushes).
     beta : array (w,)
     angle : float
         Direction of the push, radians (fixed frame = body frame at rest).
@@ -191,10 +196,10 @@ def breakaway(robot, beta, angle, free=True, params=None, start=1e-3, end=2.0, s
 
     Returns
     -------
-    float
-        The fraction of the weight at which C started to move (inf if it did not).
+    tuple (float, wmr.sim.Validity)
+        The fraction of the weight at which C started to move (inf if it did not), and the run's validity.
     """
-    sim = Simulation(robot, beta=beta, params=params)
+    sim = Simulation(robot if isinstance(robot, Export) else export(robot, beta, params), beta=beta, params=params)
     if free:
         sim.release([n for n in sim.servo_names if n in sim.export.drive_names])
     else:
@@ -202,16 +207,19 @@ def breakaway(robot, beta, angle, free=True, params=None, start=1e-3, end=2.0, s
     W = sim.export.weight
     u = np.array([np.cos(angle), np.sin(angle)])
     n = round(seconds / dt)
+    steps = max(1, round(dt / sim.model.opt.timestep))
     for k in range(n):
         f = start * (end / start) ** (k / n)
         sim.push(f * W * u)
-        sim.advance(dt)
+        sim.step(steps)
+        if k % 4 == 0:
+            sim.watch()  # the validity monitor sees the run every fourth update
         if np.hypot(*sim.data.qvel[:2]) > speed:
-            return f
-    return np.inf
+            return f, sim.validity()
+    return np.inf, sim.validity()
 
 
-def brake_experiment(params=None, directions=DIRECTIONS):
+def brake_experiment(params=None, directions=DIRECTIONS, reference=True):
     r"""Experiment 4: "can be exploited for braking when the WMR is at rest" (Fig. 12a, item (v) at C).
 
     Three centred wheels with every wheel plane through C (Fig. 12a: rank F = 6, no admissible motion)
@@ -228,6 +236,9 @@ def brake_experiment(params=None, directions=DIRECTIONS):
     params : Params, optional
     directions : sequence of float
         Degrees.
+    reference : bool
+        Also push the parked robot with its drives braked (for the text and the figure; not in the
+        criterion).
 
     Returns
     -------
@@ -241,9 +252,14 @@ def brake_experiment(params=None, directions=DIRECTIONS):
         "parked": (np.zeros(robot.w), True),
         "braked": (np.zeros(robot.w), False),
     }
-    out = {}
+    if not reference:
+        del configs["braked"]
+    out, problems = {}, ()
     for name, (beta, free) in configs.items():
-        measured = np.array([breakaway(robot, beta, np.radians(a), free, params) for a in directions])
+        ex = export(robot, beta, params)  # one model for every direction
+        runs = [breakaway(ex, beta, np.radians(a), free, params) for a in directions]
+        measured = np.array([f for f, _ in runs])
+        problems += tuple(x for a, (_, v) in zip(directions, runs) for x in run_problems(f"{name} {a:g} deg", v))
         predicted = (
             None
             if not free
@@ -262,7 +278,8 @@ def brake_experiment(params=None, directions=DIRECTIONS):
             "weakest": sig(measured.min()),
             "predicted_weakest": None if predicted is None else sig(predicted.min()),
         }
-    a, b, k = out["fig12a"], out["parked"], out["braked"]
+    a, b = out["fig12a"], out["parked"]
+    k = out.get("braked", {"weakest": np.nan})
     holds = a["weakest"] >= 10 * b["weakest"]
     return Outcome(
         "braking",
@@ -292,6 +309,8 @@ def brake_experiment(params=None, directions=DIRECTIONS):
         "analysis assumes equal loads, and MuJoCo's soft contacts creep before they slide, so 'moves' means C "
         "faster than 5 mm/s",
         overturn="a contact model or load distribution under which the robot of Fig. 12a starts moving under "
-        "less than ten times the parked robot's push (not run here)",
+        "less than ten times the parked robot's push (the box runs other contact parameters and masses)",
+        quote="The singular configuration shown in Fig. 12a can be exploited for braking when the WMR is at rest.",
+        problems=problems,
         data=out | {"directions": np.asarray(directions, dtype=float)},
     )

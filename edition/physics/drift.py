@@ -30,6 +30,7 @@ from .common import (
     paper,
     parameters,
     pct,
+    run_problems,
     sig,
     verdict,
 )
@@ -123,8 +124,12 @@ def dead_zone_experiment(params=None):
         parameters(robot, params, start="beta = 0 for all", turn=f"2 pi in {TURN:g} s, drives locked"),
         rests_on="the wheels rolling without slip while they are steered: MuJoCo's soft contacts (elliptic "
         "friction cone, the coefficients of the run) hold them, and the steering servos turn them",
-        overturn="a contact that lets the wheels creep or slide while steered (lower friction, softer contacts; "
-        "not run here): C's path would then leave the circle by more than 2 % of d",
+        overturn="a contact that lets the wheels creep or slide while steered (lower friction, softer contacts, "
+        "another friction cone): C's path would then leave the circle by more than 2 % of d (the box runs them)",
+        quote="when all the wheels are steered one full turn without driving, point C will trace a circle whose "
+        "radius equals the distance between point C and point C_f, the centroid of the triangle whose vertices are "
+        "the points of contact between the wheels and the ground; C_f remains fixed during steering",
+        problems=run_problems("turn", rec),
         data={
             "C": C,
             "Cf": Cf,
@@ -143,7 +148,11 @@ def jam_experiment(params=None, generic=GENERIC):
 
     wmr's model: :math:`\operatorname{rank}\mathbf M = 6` at the generic angles (no motion), 5 with all
     :math:`\beta_i` equal (the dead-zone motion).  MuJoCo: the same one-turn steering command at both;
-    the steering travel, the motion of C and the steering torques.
+    the steering travel, the motion of C and the steering torques.  The set-up's steering servos are weaker
+    than the friction moment :math:`\mu N d` that dragging a wheel sideways about its pivot takes, so a
+    stall is built in; a third run, at the generic angles with steering servos three times :math:`\mu N d`,
+    says what a robot that can overcome friction does: it **stalls**, **scrubs** (the wheels turn, sliding,
+    and C stays within 10 % of d) or **scrubs and drifts** (C moves further).
 
     Criterion: holds when, at the generic angles, the steering turns by at most 2 % of the commanded turn,
     C moves by at most 10 % of :math:`d` and the steering torque reaches 95 % of its limit, while with equal
@@ -161,27 +170,32 @@ def jam_experiment(params=None, generic=GENERIC):
     """
     robot = paper("offset")
     d = SIZE["r"]
+    p = params or Params()
+    scrub = p.sliding * d / 3 / SIZE["r"]  # mu N d in units of W r, N = W / 3 on each of three wheels
     cols = [c for c, name in enumerate(robot.qdot_names) if not name.startswith("theta_dot")]
     scale = robot.F_column_norms[cols]
-    out = {}
-    for name, beta0 in (("generic", np.radians(generic)), ("equal", np.zeros(robot.w))):
-        rec = turn_locked(robot, beta0, params=params)
-        sim_limit = Params().steer_torque if params is None else params.steer_torque
+    out, problems = {}, ()
+    runs = [("generic", np.radians(generic), p), ("equal", np.zeros(robot.w), p)]
+    runs.append(("strong", np.radians(generic), p.replace(steer_torque=3 * scrub)))
+    for name, beta0, q in runs:
+        rec = turn_locked(robot, beta0, params=q)
         steer = [k for k, n in enumerate(rec.export.servo_names) if n.endswith("steer")]
-        limit = sim_limit * rec.export.weight * SIZE["r"]
+        limit = q.steer_torque * rec.export.weight * SIZE["r"]
+        stalls = [n for n in rec.export.servo_names if n.endswith("steer")] if name != "equal" else []
+        problems += run_problems(name, rec, saturating=stalls)
         out[name] = {
             "rank": int(rank(locked_system(robot, beta0), scale=scale)),
             "travel": sig(np.abs(rec.beta[-1] - rec.beta[0]).max() / (2 * np.pi)),
             "moved": sig(np.linalg.norm(rec.pose[-1, 1:] - rec.pose[0, 1:]) / d),
             "torque": sig(np.abs(rec.torque[:, steer]).max() / limit),
+            "slid": sig(np.sum(rec.slip_speed[1:] * np.diff(rec.t)[:, None], axis=0).max() / d),
             "rec": rec,
         }
-    g, e = out["generic"], out["equal"]
-    p = params or Params()
-    scrub = p.sliding * d / 3 / SIZE["r"]  # mu N d in units of W r, N = W / 3 on each of three wheels
+    g, e, s = out["generic"], out["equal"], out["strong"]
     jam = g["travel"] <= JAM_TURN and g["moved"] <= 0.10 and g["torque"] >= 0.95
     free = e["travel"] >= 0.98
     v = HOLDS if jam and free else FAILS
+    s["does"] = "stalls" if s["travel"] <= JAM_TURN else "scrubs" if s["moved"] <= 0.10 else "scrubs and drifts"
     angles = ", ".join(f"{a:g}" for a in generic)
     return Outcome(
         "jam",
@@ -193,16 +207,19 @@ def jam_experiment(params=None, generic=GENERIC):
         "dead-zone motion",
         f"generic: steering turned {pct(g['travel'])} of the commanded turn, C moved {pct(g['moved'])} of d, steering "
         f"torque {pct(g['torque'])} of its limit; equal: steering turned {pct(e['travel'])}, torque "
-        f"{pct(e['torque'])} of its limit",
-        f"generic angles stall at the torque limit ({pct(g['torque'])}) with {pct(g['travel'])} of the turn made",
+        f"{pct(e['torque'])} of its limit; generic with steering servos of {fmt(3 * scrub)} W r (3 mu N d): it "
+        f"{s['does']} (steering turned {pct(s['travel'])}, the wheels slid up to {fmt(s['slid'])} d, C moved "
+        f"{pct(s['moved'])} of d)",
+        f"generic angles stall at the torque limit ({pct(g['torque'])}) with {pct(g['travel'])} of the turn made; "
+        f"servos stronger than mu N d: the platform {s['does']}",
         v,
         f"generic: turn <= {pct(JAM_TURN)}, C moved <= 10 % of d, torque >= 95 % of the limit; equal: turn >= 98 %",
         parameters(robot, params, turn=f"2 pi in {TURN:g} s, drives locked", generic=f"beta = ({angles}) deg"),
         rests_on=f"the steering servos' torque limit, {p.steer_torque:g} W r, below the friction moment "
         f"mu N d = {fmt(scrub, 2)} W r that dragging a wheel sideways about its pivot needs (mu = {p.sliding:g}, "
-        "N = W/3, d = r): a stall is built into the set-up, and the run shows where the robot stalls, not "
-        "whether it would scrub",
-        overturn="steering servos stronger than mu N d (not run here): the wheels would then scrub sideways and "
-        "the platform could move; the kinematic jam (rank M = 6, Chapter 2) is proven and does not depend on it",
-        data={k: {kk: vv for kk, vv in val.items()} for k, val in out.items()} | {"d": d, "limit": sim_limit},
+        f"N = W/3, d = r): a stall is built into the set-up; with servos of 3 mu N d the platform {s['does']}",
+        overturn="steering servos stronger than mu N d (run: see the measurement): the wheels then scrub sideways "
+        "and the robot does not jam; the kinematic jam (rank M = 6, Chapter 2) is proven and does not depend on it",
+        problems=problems,
+        data={k: {kk: vv for kk, vv in val.items()} for k, val in out.items()} | {"d": d, "limit": p.steer_torque},
     )

@@ -6,6 +6,8 @@ from __future__ import annotations
 import csv
 import dataclasses
 import io
+import os
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -15,8 +17,8 @@ from conftest import ROOT
 pytest.importorskip("mujoco")
 
 from edition import physics
-from edition.physics import common
-from edition.physics.common import FAILS, HOLDS, fmt, sig, verdict
+from edition.physics import box, common
+from edition.physics.common import FAILS, HOLDS, INVALID, fmt, sig, verdict
 from wmr.sim import Params
 
 COMMITTED = ROOT / "figures" / "physics.csv"
@@ -33,21 +35,37 @@ def test_table_has_one_row_per_experiment_and_the_columns_asked_for():
         "isotropy-noise",
         "resteer",
     ]
-    assert list(rows[0]) == [
-        "experiment",
-        "claim",
-        "prediction",
-        "measurement",
-        "agreement",
-        "verdict",
-        "parameters",
-        "whose",
-        "rests_on",
-        "overturn",
-    ]
+    assert tuple(rows[0]) == physics.COLUMNS
+    assert {"nominal", "verdict", "box_fraction", "box_invalid", "flips", "quote"} <= set(physics.COLUMNS)
     for r in rows:
-        assert r["verdict"].split(" (")[0] in (HOLDS, FAILS) or r["verdict"].startswith("holds within ")
-        assert all(r[k].strip() for k in r)
+        assert r["verdict"].split(" (")[0] in (HOLDS, FAILS, box.DEPENDS, INVALID)
+        assert r["nominal"].startswith((HOLDS, FAILS, INVALID))
+        held, valid = (int(x) for x in r["box_holds"].split(" valid")[0].split(" of "))
+        assert r["verdict"].split(" (")[0] == box.rule(held, valid)  # the stated rule, from the counts
+        assert r["box_fraction"] == f"{held / valid:.2f}"
+        assert (r["whose"] == "paper") == bool(r["quote"])  # every claim of the paper quotes its sentence
+        assert all(r[k].strip() for k in r if k != "quote")
+    # the paper's claims are those whose sentence the paper prints; the edition's own models are counted apart
+    assert {r["experiment"] for r in rows if r["whose"] == "edition"} == {"jam", "isotropy-noise", "resteer"}
+
+
+def test_each_quote_is_the_papers_sentence():
+    """A quoted sentence is found, word for word, in the paper's text (spaces and TeX of C_f aside)."""
+    import re
+
+    text = Path(os.environ.get("WMR_PAPER_TEXT", "/work/shared/paper/leow-low-loh-2002-wmr-kinematics.md"))
+    if not text.exists():
+        pytest.skip("the paper's text is not on this machine")
+
+    def norm(t):
+        t = re.sub(r"\s+", " ", re.sub(r"\$\s*C_\{\\rm f\}\s*\$", "C_f", t))
+        return re.sub(r" ([,;.])", r"\1", t).strip()
+
+    paper = norm(text.read_text(encoding="utf-8"))
+    for r in physics.read_csv(COMMITTED):
+        if r["quote"]:
+            sentence = r["quote"].split("“")[1].split("”")[0]
+            assert norm(sentence) in paper, r["experiment"]
 
 
 def test_rounding_and_verdicts():
@@ -57,11 +75,40 @@ def test_rounding_and_verdicts():
 
 
 def test_a_stronger_servo_turns_the_jam_into_a_skid():
-    """The jam verdict is computed: steering servos stronger than the friction moment mu N d drag the wheels."""
+    """The jam verdict is computed: steering servos stronger than the friction moment mu N d drag the wheels, and the
+    jam's own rerun with servos of 3 mu N d says what the platform does (from the run, not typed)."""
     weak = physics.jam_experiment()
     strong = physics.jam_experiment(Params(steer_torque=1.0))
-    assert weak.verdict == HOLDS and strong.verdict == FAILS
+    assert weak.verdict == HOLDS and strong.verdict == FAILS and weak.valid and strong.valid
     assert strong.data["generic"]["travel"] > 0.5 and weak.data["generic"]["travel"] < 0.02
+    rerun = weak.data["strong"]
+    assert rerun["travel"] > 0.5 and rerun["does"] == ("scrubs and drifts" if rerun["moved"] > 0.1 else "scrubs")
+    assert f"it {rerun['does']}" in weak.measurement
+
+
+def test_an_invalid_run_gives_no_verdict():
+    """A run with a validity problem is counted invalid over the box, whatever its numbers say; the rule reads the
+    valid runs only, and flips are named by parameter and value."""
+    nominal = physics.dead_zone_experiment()
+    unstable = dataclasses.replace(nominal, problems=("turn: u1_steer chattered",))
+
+    def experiment(params, **kw):
+        return unstable if params.integrator == "Euler" else nominal if params.sliding >= 1.0 else failing
+
+    failing = dataclasses.replace(nominal, verdict=FAILS)
+    judged = box.judge(experiment)
+    b = judged.box
+    assert b.invalid == 1 and b.valid == len(box.points()) - 1 and b.verdict == box.DEPENDS
+    assert "integrator Euler: invalid run (servo chatter)" in b.flips and "sliding 0.5: does not hold" in b.flips
+    assert judged.row()["verdict"].startswith(box.DEPENDS) and judged.row()["box_invalid"] == "1"
+    assert box.rule(3, 3) == HOLDS and box.rule(0, 2) == FAILS and box.rule(0, 0) == INVALID
+
+
+def test_the_dual_wheel_under_euler_is_invalid_not_a_verdict():
+    """The issue's case: under Euler the dual wheel's drive servos go unstable; the experiment refuses the run."""
+    out = physics.reorient_experiment(Params(integrator="Euler"))
+    assert not out.valid and any("dual" in p for p in out.problems)
+    assert physics.reorient_experiment().valid
 
 
 def test_without_torsional_friction_the_dual_wheel_claim_is_not_tested_away():
@@ -84,7 +131,11 @@ def test_weakest_push_by_hand():
 def _nudged(direction):
     """Every input of the experiments moved by one ulp: the robots' sizes and the physical parameters."""
     p = Params()
-    return {f.name: float(np.nextafter(getattr(p, f.name), direction)) for f in dataclasses.fields(p)}
+    return {
+        f.name: float(np.nextafter(getattr(p, f.name), direction))
+        for f in dataclasses.fields(p)
+        if not isinstance(getattr(p, f.name), str)  # the integrator and the cone: names, no last bit
+    }
 
 
 @pytest.mark.parametrize("direction", [np.inf, -np.inf], ids=["up", "down"])
@@ -97,7 +148,9 @@ def test_physics_csv_does_not_depend_on_the_last_bits(monkeypatch, direction):
     assert text == COMMITTED.read_text(encoding="utf-8")
 
 
-@pytest.mark.parametrize("module", ["common", "contact", "drift", "friction", "noise", "resteer", "plot", "exercises"])
+@pytest.mark.parametrize(
+    "module", ["box", "common", "contact", "drift", "friction", "noise", "resteer", "plot", "exercises"]
+)
 def test_doctests_and_docstrings(module):
     import doctest
     import importlib
@@ -110,12 +163,14 @@ def test_doctests_and_docstrings(module):
 def test_findings_section_is_made_from_the_published_table(tmp_path):
     rows = physics.read_csv(COMMITTED)
     md = physics.findings_markdown(COMMITTED)
+    t = physics.tally(rows)
     for whose in ("paper", "edition"):  # counted apart, each from the rows of its kind
         group = [r for r in rows if r["whose"] == whose]
-        held = sum(not r["verdict"].startswith(FAILS) for r in group)
+        held = sum(r["verdict"].startswith(HOLDS) for r in group)
+        assert t[whose]["tested"] == len(group) and t[whose]["hold"] == held
         assert f"{len(group)} {'claims of the paper' if whose == 'paper' else 'predictions'}" in md
         assert f"there, {held} hold" in md or f"(counted apart: not claims of the paper), {held} hold" in md
-    assert md.count("\n| ") == len(rows) + 1 and all(r["verdict"].replace("|", "\\|") in md for r in rows)
+    assert md.count("\n| ") == len(rows) + 1 and all(r["flips"].replace("|", "\\|") in md for r in rows)
     assert all(r["rests_on"] and r["overturn"] and r["whose"] in ("paper", "edition") for r in rows)
     bad = tmp_path / "x.csv"
     bad.write_text("a,b\n1,2\n")

@@ -11,8 +11,12 @@ The robot is exported with :func:`wmr.sim.to_mjcf` (default parameters, :mod:`wm
 twist (:func:`wmr.sim.twist_schedule`: wmr's inverse kinematics along the model's run).  Printed:
 the commanded twist; the simulated one (mean over the second half of the run); the twist wmr's
 forward kinematics recovers from the simulated encoders and its slip residual; the mean slip
-speed of the wheels at their contacts; the largest servo torque as a fraction of its limit.
-Needs MuJoCo (``pip install 'wmr-kinematics[sim]'``).  Swedish wheels are refused (exit status 2).
+speed of the wheels at their contacts; the largest servo torque as a fraction of its limit; and
+**warnings**: a twist that is not admissible at the start angles (the wheels must slip), a robot
+that does not stand on its contacts (the platform tilts more than :data:`TILT` degrees or a wheel
+is off the ground for most of the run's second half), and every validity problem of the run
+(:mod:`wmr.sim.validity`: a saturated or chattering servo, energy from nowhere, a wheel sinking
+into the ground).  Needs MuJoCo (``pip install 'wmr-kinematics[sim]'``).  Swedish wheels are refused (exit status 2).
 
 ``--json`` writes the inputs by the rule of :mod:`wmr.io.decimals` (12 digits) and MuJoCo's
 measurements with :data:`SIM_DIGITS` significant digits at the scale of the commanded speed (m/s;
@@ -43,11 +47,13 @@ from ._options import ROBOT_FILE
 
 #: significant digits of MuJoCo's measurements in ``--json`` (module notes)
 SIM_DIGITS = 6
+#: the platform's largest tilt, degrees, for a robot that stands on its contacts
+TILT = 10.0
 
 if TYPE_CHECKING:
     import argparse
 
-__all__ = ["HELP", "SIM_DIGITS", "add_arguments", "run"]
+__all__ = ["HELP", "SIM_DIGITS", "TILT", "add_arguments", "run", "run_warnings"]
 
 HELP = "the robot in MuJoCo following a commanded twist (needs mujoco); --mjcf writes the model"
 
@@ -83,15 +89,56 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 def _params(items):
     from ..sim import Params
 
-    out = {}
+    out: dict[str, float | str] = {}
     for item in items:
         name, eq, value = str(item).partition("=")
         if not eq or name not in Params.__dataclass_fields__:
             raise InputValueError(
                 f"--param must be NAME=VALUE with NAME one of {sorted(Params.__dataclass_fields__)}, got {item!r}"
             )
-        out[name] = number(value, f"--param {name}")
-    return Params(**out)
+        text = isinstance(getattr(Params(), name), str)  # the integrator and the friction cone are names
+        out[name] = value if text else number(value, f"--param {name}")
+    return Params().replace(**out)
+
+
+def run_warnings(robot, beta0, twist, sim, rec) -> list[str]:
+    """What makes a run of ``wmr simulate`` doubtful, in words (module docstring).
+
+    Parameters
+    ----------
+    robot : Robot
+    beta0 : array (w,)
+        The start angles.
+    twist : array (3,)
+        The commanded twist.
+    sim : wmr.sim.Simulation
+        The simulation, at the end of the run.
+    rec : wmr.sim.Recording
+        The run.
+
+    Returns
+    -------
+    list of str
+    """
+    from ..analysis.kinematics import inverse
+
+    out = []
+    sol = inverse(robot, beta0, twist)
+    if not bool(np.all(sol.admissible)):
+        out.append(
+            f"the twist is not admissible at the start angles: the wheels must slip (wmr.inverse leaves a residual "
+            f"of {fmt(float(np.linalg.norm(sol.residual)), 3)})"
+        )
+    w, x, y, z = sim.data.qpos[3:7]
+    tilt = float(np.degrees(np.arccos(np.clip(1 - 2 * (x * x + y * y), -1.0, 1.0))))
+    off = bool((np.isnan(rec.point[len(rec.t) // 2 :, :, 0]).mean(axis=0) > 0.5).any())  # off most of the time
+    if tilt > TILT or off:
+        out.append(
+            f"the robot does not stand on its contacts: the platform tilted {fmt(tilt, 2)} deg"
+            + (" and a wheel is off the ground" if off else "")
+        )
+    out += [f"the run is not valid: {p}" for p in rec.validity.problems()] if rec.validity is not None else []
+    return out
 
 
 def run(args: argparse.Namespace) -> int:
@@ -150,6 +197,7 @@ def run(args: argparse.Namespace) -> int:
         "contact_slip_speed": measured(float(rec.slip_speed[late].mean()), speed),
         "final_pose": measured(dict(zip(("psi", "X", "Y"), rec.pose[-1].tolist())), 1.0),
         "servo_load": measured(load, 1.0),
+        "warnings": run_warnings(robot, beta0, twist, s, rec),
         "seconds": seconds,
         "mjcf": args.mjcf,
     }
@@ -174,6 +222,7 @@ def run(args: argparse.Namespace) -> int:
     ]
     if args.mjcf:
         rows.append(("model", args.mjcf))
+    rows += [("warning", w) for w in out["warnings"]]
     width = max(len(k) for k, _ in rows)
     print("\n".join(f"{k:<{width}}  {v}" for k, v in rows))
     return 0

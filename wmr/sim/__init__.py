@@ -18,6 +18,8 @@ joints (:meth:`wmr.model.wheels.WheelUnit.mechanism`, plain data) and says which
 - :mod:`wmr.sim.recording`: :class:`Schedule` (commands over time), :class:`Sample` and :class:`Recording`
   (measurements);
 - :mod:`wmr.sim.runner`: :func:`run`, a simulation driven along a schedule;
+- :mod:`wmr.sim.validity`: :class:`Validity`, whether a run can be trusted (energy, penetration, servo
+  saturation, MuJoCo's warnings);
 - :mod:`wmr.sim.commands`: :func:`twist_schedule`, the joint commands of a twist from wmr's inverse
   kinematics.
 
@@ -39,6 +41,7 @@ from .params import Params
 from .recording import Recording, Sample, Schedule
 from .runner import run
 from .simulation import Simulation
+from .validity import Validity
 
 __all__ = [
     "POSITION",
@@ -49,6 +52,7 @@ __all__ = [
     "Sample",
     "Schedule",
     "Simulation",
+    "Validity",
     "export",
     "run",
     "servo",

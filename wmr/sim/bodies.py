@@ -11,10 +11,14 @@ any such tree into MJCF bodies, knowing no wheel kind:
   ``params.body_mass`` of a small cube of its ``size`` (:class:`~wmr.sim.params.Params`);
 * a wheel touches the ground through one sphere of its radius centred on the wheel centre: a single
   contact point directly below the centre, the paper's thin disk (:mod:`wmr.sim.params` for its
-  friction); a drawn disk (no contact) shows the wheel and drawn rods the intermediate bodies.
+  friction); its geom has the higher ``priority``, so that its friction and contact stiffness are the
+  ones MuJoCo uses (not averaged with the ground's); a drawn disk (no contact) shows the wheel and
+  drawn rods the intermediate bodies.
 """
 
 from __future__ import annotations
+
+import functools
 
 import numpy as np
 
@@ -111,6 +115,7 @@ def mechanisms(robot, height: float) -> tuple[Mechanism, ...]:
     return tuple(out)
 
 
+@functools.lru_cache(maxsize=8192)  # a robot's numbers recur in every export of it (the edition exports hundreds)
 def num(x, scale: float | None = None) -> str:
     """A float as MJCF text by the rule of :mod:`wmr.io.decimals`, without a trailing ``.0`` (no negative zero).
 
@@ -178,7 +183,7 @@ def _geoms(body, name, r_unit, params, pad):
         out.append(
             f'{pad}<geom name="{name}" type="sphere" size="{num(r)}" condim="6" '
             f'friction="{nums(params.sliding, mu_t, mu_r)}" solref="{nums(params.contact_time, 1.0)}" '
-            f'contype="1" conaffinity="0" group="3"/>'
+            f'contype="1" conaffinity="0" priority="1" group="3"/>'
         )
         out.append(
             f'{pad}<geom type="cylinder" size="{num(r)}" fromto="{nums(-r / 4, 0.0, 0.0, r / 4, 0.0, 0.0, scale=1.0)}" '

@@ -6,10 +6,11 @@ describes them (:meth:`wmr.model.wheels.WheelUnit.mechanism`; :mod:`wmr.sim.bodi
 masses and geoms); a servo on every driven joint (:func:`wmr.sim.bodies.servo`); a lock for every
 drive hinge (a joint equality ``<name>_lock``, inactive: the drive locked, as the paper's Section
 4.2 locks it, when switched on); and a keyframe ``start`` with the steering angles
-:math:`\boldsymbol\beta_0`.  Names follow the paper's numbering: unit ``i`` (from 1) has bodies,
-joints and actuators ``u<i>_<name>``, with the unit's own names of its bodies and joints (e.g.
-``u2_steer``, ``u2_drive``; ``u3_swivel`` for a dual wheel's), and the geom by which a wheel touches
-the ground is named after its body (``u2_wheel``; ``u3_wheel1``, ``u3_wheel2`` for a dual wheel).
+:math:`\boldsymbol\beta_0` and the servos' targets that hold them (a loaded model keeps its
+module angles).  Names follow the paper's numbering: unit ``i`` (from 1) has bodies, joints and
+actuators ``u<i>_<name>``, with the unit's own names of its bodies and joints (e.g. ``u2_steer``,
+``u2_drive``; ``u3_swivel`` for a dual wheel's), and the geom by which a wheel touches the ground
+is named after its body (``u2_wheel``; ``u3_wheel1``, ``u3_wheel2`` for a dual wheel).
 
 Nothing here imports MuJoCo, and nothing here knows a wheel kind: the text is written from the units'
 mechanisms, deterministically (the same robot and parameters give the same bytes), its numbers by
@@ -239,8 +240,10 @@ def _write(robot, params, mechs, height, beta0, weight):
         f'<mujoco model="{_escape(robot.name)}">',
         '  <compiler angle="radian" autolimits="true"/>',
         (
-            f'  <option timestep="{num(params.timestep)}" integrator="implicitfast" cone="elliptic" '
-            f'impratio="{num(params.impratio)}" jacobian="dense" gravity="0 0 {num(-GRAVITY)}"/>'
+            f'  <option timestep="{num(params.timestep)}" integrator="{params.integrator}" cone="{params.cone}" '
+            f'impratio="{num(params.impratio)}" jacobian="dense" gravity="0 0 {num(-GRAVITY)}">\n'
+            '    <flag energy="enable"/>\n'
+            "  </option>"
         ),
         "  <worldbody>",
         ('    <geom name="ground" type="plane" size="0 0 1" friction="0 0 0" contype="0" conaffinity="1" condim="6"/>'),
@@ -262,11 +265,16 @@ def _write(robot, params, mechs, height, beta0, weight):
             + ["  </equality>"]
         )
     qpos = [0.0, 0.0, height, 1.0, 0.0, 0.0, 0.0]
+    ctrl = []  # the servos' targets at the start: each steering servo holds its angle, each drive servo rate 0
     for i, m in enumerate(mechs):
         qpos += [float(beta0[i]) if j.steering else 0.0 for j in m.joints]
+        ctrl += [float(beta0[i]) if servo(j) == POSITION else 0.0 for j in m.joints if servo(j)]
+    key = f'    <key name="start" qpos="{nums(*qpos, scale=1.0)}"' + (
+        f' ctrl="{nums(*ctrl, scale=1.0)}"' if ctrl else ""
+    )
     lines += [
         "  <keyframe>",
-        f'    <key name="start" qpos="{nums(*qpos, scale=1.0)}"/>',
+        key + "/>",
         "  </keyframe>",
         "</mujoco>",
         "",

@@ -40,13 +40,17 @@ from __future__ import annotations
 import dataclasses
 from dataclasses import dataclass
 
-from ..errors import InputTypeError
+from ..errors import InputTypeError, InputValueError
 from ..model import validation as V
 
-__all__ = ["GRAVITY", "Params"]
+__all__ = ["CONES", "GRAVITY", "INTEGRATORS", "Params"]
 
 #: standard gravity, m/s^2 (lengths are read as metres)
 GRAVITY = 9.81
+#: MuJoCo's integrators (``<option integrator=...>``)
+INTEGRATORS = ("implicitfast", "implicit", "Euler", "RK4")
+#: MuJoCo's friction cones (``<option cone=...>``)
+CONES = ("elliptic", "pyramidal")
 
 
 @dataclass(frozen=True)
@@ -79,12 +83,18 @@ class Params:
         Velocity gain, in torque limits per rad/s (default 2: saturates at 0.5 rad/s of error; stiffer servos
         fight each other through the soft contacts and make the wheels chatter).
     timestep : float
-        Integration step, s (default 0.001); MuJoCo's ``implicitfast`` integrator, Newton solver.
+        Integration step, s (default 0.001); MuJoCo's Newton solver.
     contact_time : float
         Time constant of the soft wheel contacts, s (MuJoCo's ``solref``, critically damped; default
         0.005, five steps: stiffer than MuJoCo's 0.02, so that creep under static friction stays small).
+        The wheel's contact geom has the higher ``priority``, so that this time constant is the one used
+        (MuJoCo would otherwise average it with the ground's default 0.02).
     impratio : float
         Ratio of frictional to normal contact stiffness (default 100: little creep under static friction).
+    integrator : str
+        MuJoCo's integrator, one of :data:`INTEGRATORS` (default ``"implicitfast"``).
+    cone : str
+        MuJoCo's friction cone, ``"elliptic"`` (default) or ``"pyramidal"``.
     """
 
     platform_mass: float = 10.0
@@ -101,13 +111,20 @@ class Params:
     timestep: float = 0.001
     contact_time: float = 0.005
     impratio: float = 100.0
+    integrator: str = "implicitfast"
+    cone: str = "elliptic"
 
     def __post_init__(self):
+        for name, allowed in (("integrator", INTEGRATORS), ("cone", CONES)):
+            if getattr(self, name) not in allowed:
+                raise InputValueError(f"{name} must be one of {list(allowed)}, got {V.show(getattr(self, name))}")
         for f in dataclasses.fields(self):
+            if f.name in ("integrator", "cone"):
+                continue
             check = V.nonnegative if f.name in ("torsional", "rolling", "steer_damping") else V.positive
             object.__setattr__(self, f.name, V.number(f.name, check(f.name, getattr(self, f.name))))
 
-    def replace(self, **changes: float) -> Params:
+    def replace(self, **changes: float | str) -> Params:
         """A copy with some parameters changed (each checked).
 
         Parameters
@@ -122,7 +139,7 @@ class Params:
         unknown = sorted(set(changes) - {f.name for f in dataclasses.fields(self)})
         if unknown:
             raise InputTypeError(f"unknown parameter(s) {unknown}; known: {[f.name for f in dataclasses.fields(self)]}")
-        return dataclasses.replace(self, **changes)
+        return dataclasses.replace(self, **changes)  # type: ignore[arg-type]
 
     def total_mass(self, n_bodies: int, n_wheels: int) -> float:
         """Mass of the robot, kg.

@@ -17,6 +17,7 @@ from ..errors import InputValueError
 from ..model import validation as V
 from ..model.types import ArrayLike, FloatArray
 from .mjcf import Export
+from .validity import Validity
 
 __all__ = ["Recording", "Sample", "Schedule"]
 
@@ -96,6 +97,8 @@ class Recording:
     slip : numpy.ndarray (N, n_wheels, 2)
     dissipation : numpy.ndarray (N, n_wheels)
         Each as in :class:`Sample`, stacked over the N samples.
+    validity : Validity, optional
+        What the simulation's validity monitor saw up to the end of the run (:mod:`wmr.sim.validity`).
     """
 
     export: Export
@@ -112,6 +115,7 @@ class Recording:
     moment: np.ndarray
     slip: np.ndarray
     dissipation: np.ndarray
+    validity: Validity | None = None
 
     @property
     def slip_speed(self) -> FloatArray:

@@ -37,7 +37,8 @@ def run(
     seconds : float
         Duration, > 0.
     control_dt : float
-        Control period, s (rounded to whole integration steps; default 0.001, a 1 kHz controller).
+        Control period, s (rounded to whole integration steps, at least one; default 0.001, a 1 kHz
+        controller).
     every : int
         Record every ``every``-th period (and the end; default 10).
     on_step : callable, optional
@@ -54,31 +55,32 @@ def run(
         raise InputTypeError(f"sim must be a wmr.sim.Simulation, got {V.show(sim)}")
     if schedule is not None and not isinstance(schedule, Schedule):
         raise InputTypeError(f"schedule must be a wmr.sim.Schedule or None, got {V.show(schedule)}")
-    n = int(np.ceil(seconds / control_dt - 1e-9))
-    if n * max(1, round(control_dt / sim.model.opt.timestep)) > MAX_STEPS:
+    steps = max(1, round(control_dt / sim.model.opt.timestep))  # a period of at least one step
+    n = int(np.ceil(seconds / (steps * sim.model.opt.timestep) - 1e-9))
+    if n * steps > MAX_STEPS:
         raise InputValueError(f"seconds = {seconds!r} needs more than {MAX_STEPS} steps")
-    steps = max(1, round(control_dt / sim.model.opt.timestep))
     times = np.arange(n) * steps * sim.model.opt.timestep
     if schedule is not None:
         beta, rates = schedule.at(times)
         turning = schedule.beta_rate(times)
         ctrl = sim.targets(beta, rates, turning)  # every servo's target, every period
     samples = []
+    data, step = sim.data, sim.step
     for k in range(n):
         if on_step is not None:
             on_step(sim)
         if schedule is not None:
-            sim.data.ctrl[:] = ctrl[k]
+            data.ctrl[:] = ctrl[k]
         if k % every == 0:
-            samples.append(sim.sample())  # the state at the period's start, with its commands
-        sim.step(steps)
+            samples.append(sim.sample())  # the state at the period's start, with its commands (checked finite)
+        step(steps, False)
     if schedule is not None:
         sim.command(beta[-1], rates[-1], turning[-1])  # the last command stays (as command() would have set it)
     samples.append(sim.sample())
-    return _stack(sim.export, samples)
+    return _stack(sim.export, samples, sim.validity())
 
 
-def _stack(ex, samples):
+def _stack(ex, samples, validity):
     fields = (
         "t",
         "pose",
@@ -94,4 +96,5 @@ def _stack(ex, samples):
         "slip",
         "dissipation",
     )
-    return Recording(ex, *(np.array([getattr(s, f) for s in samples]) for f in fields))
+    stacked = {f: np.array([getattr(s, f) for s in samples]) for f in fields}
+    return Recording(ex, **stacked, validity=validity)

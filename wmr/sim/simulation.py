@@ -9,7 +9,8 @@ drives), and a force and torque can be applied to the platform at C (a push).
 
 :meth:`Simulation.sample` measures the state in wmr's variables (the pose and twist, the steering angles and
 joint rates, the servo torques, and per wheel the contact force and the slip) with the model's
-:class:`~wmr.sim.measure.Probe`.
+:class:`~wmr.sim.measure.Probe`, and shows it to the validity monitor (:mod:`wmr.sim.validity`):
+:meth:`Simulation.validity` says whether the run so far can be trusted.
 :func:`wmr.sim.runner.run` drives a simulation along a :class:`~wmr.sim.recording.Schedule`.
 
 MuJoCo is imported here only (``pip install 'wmr-kinematics[sim]'``); ``import wmr`` does not import it.
@@ -31,6 +32,7 @@ from .measure import Probe
 from .mjcf import Export, export
 from .params import Params
 from .recording import Sample
+from .validity import Monitor, Validity
 
 __all__ = ["MAX_STEPS", "Simulation"]
 
@@ -108,6 +110,8 @@ class Simulation:
         self._platform = self._id(mj.mjtObj.mjOBJ_BODY, "platform")
         geoms = [self._id(mj.mjtObj.mjOBJ_GEOM, n) for _, n in wheels]
         self._probe = Probe(mj, m, self.robot, self._hinges, geoms, self._platform)
+        scale = ex.weight * max(float(u.r) for u in self.robot.wheels)
+        self._monitor = Monitor(mj, m, self.servo_names, geoms, self._platform, scale)
         self._gains = (m.actuator_gainprm.copy(), m.actuator_biasprm.copy())
         # each servo's target as a linear map of (beta, rates): a steering servo takes beta_i, a drive servo its rate
         self._from_beta, self._from_rates = np.zeros((m.nu, self.robot.w)), np.zeros((m.nu, self.robot.n_rates))
@@ -131,6 +135,7 @@ class Simulation:
             self.data.time = 0.0
             self.data.qpos[0:2] = 0.0  # C back at the origin, heading kept
         mj.mj_forward(m, self.data)
+        self._monitor.reset(self.data)  # validity is judged from time 0
 
     # --- commands --------------------------------------------------------------------------
     def command(
@@ -284,8 +289,10 @@ class Simulation:
         -------
         None
         """
-        f = V.finite_array("force", force, last=2).reshape(2)
-        tau = V.number("torque", torque)
+        f = np.asarray(force, dtype=float) if isinstance(force, np.ndarray) else None
+        if f is None or f.shape != (2,) or not np.isfinite(f).all():  # the checks of bad input, off the fast path
+            f = V.finite_array("force", force, last=2).reshape(2)
+        tau = torque if type(torque) is float and np.isfinite(torque) else V.number("torque", torque)
         self.data.xfrc_applied[:] = 0.0
         # xfrc_applied acts at the body's centre of mass: move the force to C by adding its moment
         com = self.data.xipos[self._platform]
@@ -314,13 +321,16 @@ class Simulation:
         if n:
             self.step(n)
 
-    def step(self, n: int = 1) -> None:
+    def step(self, n: int = 1, check: bool = True) -> None:
         """Integrate ``n`` steps with the present servo targets (``data.ctrl``), as fast as MuJoCo goes.
 
         Parameters
         ----------
         n : int
             >= 1.
+        check : bool
+            Check that the state is still finite (default; :func:`wmr.sim.run` checks at each sample instead,
+            which :meth:`sample` does).
 
         Returns
         -------
@@ -331,7 +341,11 @@ class Simulation:
         FloatingPointError
             If the state is no longer finite (the simulation diverged).
         """
-        self._mj.mj_step(self.model, self.data, nstep=n)
+        self._mj.mj_step(self.model, self.data, n)
+        if check:
+            self._check_finite()
+
+    def _check_finite(self):
         if not np.isfinite(self.data.qpos).all():
             raise FloatingPointError(f"the simulation diverged at t = {self.data.time:.6g} s")
 
@@ -347,6 +361,31 @@ class Simulation:
         Returns
         -------
         Sample
+
+        Raises
+        ------
+        FloatingPointError
+            If the state is no longer finite (the simulation diverged).
         """
+        self._check_finite()
         self._mj.mj_forward(self.model, self.data)  # positions, contacts and forces of this state
+        self._monitor.update(self.data)
         return self._probe.sample(self.data)
+
+    def watch(self) -> None:
+        """Let the validity monitor see the present state without taking a sample (a loop that steps by itself).
+
+        Returns
+        -------
+        None
+        """
+        self._monitor.update(self.data)
+
+    def validity(self) -> Validity:
+        """What the validity monitor saw since time 0 (:mod:`wmr.sim.validity`), at every sample and watch.
+
+        Returns
+        -------
+        Validity
+        """
+        return self._monitor.validity()
