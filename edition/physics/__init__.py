@@ -107,9 +107,12 @@ def run(experiment, params=None):
     Returns
     -------
     Outcome
-        The nominal run's, with the box's verdict (``outcome.box``).
+        The nominal run's, with the box's verdict (``outcome.box``).  While nbgrader grades chapter 9
+        (:func:`edition.notebook.grading`) only the nominal point runs and the box is partial: no verdict.
     """
-    return judge(experiment, params, **ELSEWHERE.get(experiment.__name__, {}))
+    from ..notebook import grading
+
+    return judge(experiment, params, nominal_only=grading(), **ELSEWHERE.get(experiment.__name__, {}))
 
 
 def run_all(params=None):

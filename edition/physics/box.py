@@ -129,10 +129,14 @@ class Box:
         ``"invalid run (<the checks it failed>)"``.
     description : str
         The box in words (:func:`describe`).
+    partial : bool
+        Only the nominal point was run (while nbgrader grades chapter 9: :func:`edition.notebook.grading`); then
+        there is no verdict over the box.
     """
 
     runs: tuple[tuple[str, str, str], ...]
     description: str
+    partial: bool = False
 
     @property
     def valid(self):
@@ -151,12 +155,16 @@ class Box:
 
     @property
     def verdict(self):
-        """The verdict over the box by :func:`rule`: str."""
+        """The verdict over the box by :func:`rule`, or, for a partial box, that there is none: str."""
+        if self.partial:
+            return f"not judged over the box (the nominal run only: {self.runs[0][2]})"
         return rule(self.held, self.valid)
 
     @property
     def rule(self):
         """The rule and the count, in words: str."""
+        if self.partial:
+            return "the box was not run: no verdict over it"
         return (
             f"holds on {self.held} of the {self.valid} valid runs of the box of {len(self.runs)}, "
             f"{self.invalid} invalid; holds: on all, does not hold: on none, else depends on the model"
@@ -165,12 +173,14 @@ class Box:
     @property
     def fraction_text(self):
         """The fraction of the valid runs on which it holds, two digits (empty with no valid run): str."""
-        return f"{self.held / self.valid:.2f}" if self.valid else ""
+        return f"{self.held / self.valid:.2f}" if self.valid and not self.partial else ""
 
     @property
     def flips(self):
         """Where the verdict differs from the nominal run's (or the run is invalid), in words: str."""
         nominal = self.runs[0][2]
+        if self.partial:
+            return "not run (the nominal point only)"
         other = [f"{name} {value}: {s}" for name, value, s in self.runs[1:] if s != nominal]
         return "; ".join(other) if other else f"nowhere (every run: {nominal})"
 
@@ -194,7 +204,7 @@ def _status(o):
     return HOLDS if o.holds else FAILS
 
 
-def judge(experiment, params=None, **elsewhere):
+def judge(experiment, params=None, nominal_only=False, **elsewhere):
     """Run an experiment over the box: its nominal outcome, with the :class:`Box` attached.
 
     Parameters
@@ -203,6 +213,8 @@ def judge(experiment, params=None, **elsewhere):
         ``experiment(params, **kw) -> Outcome``.
     params : wmr.sim.Params, optional
         The nominal point.
+    nominal_only : bool, optional
+        Run the nominal point only: the :class:`Box` is partial and gives no verdict.
     **elsewhere
         Arguments of the experiment at the points other than the nominal one (runs that only the
         nominal point's figure and text need, left out to save time).
@@ -217,7 +229,7 @@ def judge(experiment, params=None, **elsewhere):
     FloatingPointError
         If the nominal run itself diverges (a run elsewhere in the box that diverges is invalid).
     """
-    pts = points(params)
+    pts = points(params)[:1] if nominal_only else points(params)
     nominal = experiment(pts[0][2])
     runs = [("nominal", "", _status(nominal))]
     for name, value, p in pts[1:]:
@@ -226,4 +238,5 @@ def judge(experiment, params=None, **elsewhere):
         except FloatingPointError:
             status = f"{INVALID} (divergence)"
         runs.append((name, value, status))
-    return dataclasses.replace(nominal, box=Box(tuple(runs), describe(params)), data=nominal.data)
+    box = Box(tuple(runs), describe(params), partial=nominal_only)
+    return dataclasses.replace(nominal, box=box, data=nominal.data)

@@ -176,3 +176,13 @@ def test_findings_section_is_made_from_the_published_table(tmp_path):
     bad.write_text("a,b\n1,2\n")
     with pytest.raises(ValueError, match="not a physics.csv"):
         physics.read_csv(bad)
+
+
+def test_while_nbgrader_grades_only_the_nominal_point_runs_and_no_verdict_is_claimed(monkeypatch):
+    monkeypatch.setenv("NBGRADER_EXECUTION", "autograde")
+    o = physics.run(physics.dead_zone_experiment)
+    assert len(o.box.runs) == 1 and o.box.partial
+    assert o.box.verdict.startswith("not judged over the box") and o.box.fraction_text == ""
+    assert o.box.verdict not in (HOLDS, FAILS, box.DEPENDS) and "not run" in o.box.flips
+    monkeypatch.delenv("NBGRADER_EXECUTION")
+    assert len(physics.run(physics.dead_zone_experiment).box.runs) == len(box.points())  # the whole box
