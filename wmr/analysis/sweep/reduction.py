@@ -22,6 +22,23 @@ __all__ = ["SKETCH_ACCURACY", "Partial"]
 SKETCH_ACCURACY = 1e-4
 
 
+def _first_written(x: FloatArray, v: float) -> int:
+    """Index of the first value of ``x`` written as ``v`` is (:func:`wmr.io.decimals.quantise`, scale 1).
+
+    Writing is monotone in the value, so only values within a quantum of ``v`` can be written as ``v`` is:
+    the quantum at :math:`\\max(|v|, 1)` is at most :math:`10^{-11}` of it, ten times that in the next decade;
+    those few are rounded, not the whole chunk.
+    """
+    if math.isnan(v):
+        return int(np.flatnonzero(np.isnan(x))[0])
+    if math.isinf(v):
+        return int(np.flatnonzero(x == v)[0])
+    near = np.flatnonzero(np.abs(x - v) <= 2e-10 * max(abs(v), 1.0))
+    if near.size == 1:
+        return int(near[0])
+    return int(near[np.flatnonzero(quantise(x[near], 1.0) == quantise(v, 1.0))[0]])
+
+
 @dataclass
 class _Counts:
     """Counts of integer bins ``offset .. offset + len(counts) - 1`` (grows as needed; mergeable)."""
@@ -148,11 +165,11 @@ class Partial:
         None
         """
         self.count += x.size
-        q = quantise(x, 1.0)  # where: the first value equal to the extreme as written (wmr.io.decimals)
-        self._lo(float(x.min()), start + int(np.argmin(q)))
-        self._hi(float(x.max()), start + int(np.argmax(q)))
-        ax = np.abs(x)
-        self._small(float(ax.min()), start + int(np.argmin(np.abs(q))))
+        lo, hi, ax = float(x.min()), float(x.max()), np.abs(x)
+        small = float(ax.min())
+        self._lo(lo, start + _first_written(x, lo))
+        self._hi(hi, start + _first_written(x, hi))
+        self._small(small, start + _first_written(ax, small))
         if integer:
             self.integers.add(x.astype(np.int64))
         else:
