@@ -789,7 +789,7 @@ NOT_FUZZED = {
     "UnitGeometry": "a base of WheelUnit: points and parts, fuzzed through unit.points",
     "register": "called when a kind's class is defined (test_wheel_kinds defines one)",
     "FileKey": "a kind's declaration; reading robot files is tested in test_io.py",
-    "Disc": "drawing data of WheelUnit.parts",
+    "Disc": "drawing data of wmr.plot.parts.unit_parts",
     "Link": "as Disc",
     "Rollers": "as Disc",
     "Pivot": "as Disc",

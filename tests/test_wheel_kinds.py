@@ -249,6 +249,21 @@ sys.path.insert(0, sys.argv[2])
 from wheel_contract import check_kind
 
 ball = wheel_kinds()["ball"]
+from wmr.plot.parts import Disc, has_parts, unit_parts
+assert not has_parts(ball)                                 # the drawing layer holds no entry for it yet
+try:
+    check_kind(ball)
+except AssertionError as exc:                              # ... and the contract says so
+    assert "BallCaster has no entry in wmr.plot.parts.unit_parts" in str(exc), exc
+else:
+    raise AssertionError("a kind without a drawing entry met the contract")
+
+
+@unit_parts.register(ball)                                 # its drawing, registered where drawings live
+def _ball(unit, beta):
+    return (Disc(np.asarray(unit.position, dtype=float), 0.0, float(unit.r), arrow=False),)
+
+
 check_kind(ball)                                           # the contract every kind meets
 bot = wmr.load(sys.argv[1])
 assert type(bot.wheels[2]) is ball and bot.rate_names[-2:] == ("theta_dot_3", "sigma_dot_3")
@@ -278,8 +293,9 @@ print("``ball``" in kinds_table() and "``ball``" in wmr.model.wheels.__doc__)
 
 
 def test_a_new_kind_is_one_new_module(tmp_path):
-    """Copy the package, add ``wmr/model/wheels/ball.py`` and nothing else: every part of wmr takes the new kind
-    (wmr.sim refuses it with the reason its module gives)."""
+    """Copy the package, add ``wmr/model/wheels/ball.py`` and nothing else in wmr: every part of wmr takes the new
+    kind once its drawing entry is registered (wmr.plot.parts; the contract fails without it), and wmr.sim refuses it
+    with the reason its module gives."""
     shutil.copytree(PACKAGE, tmp_path / "wmr", ignore=shutil.ignore_patterns("__pycache__"))
     (tmp_path / "wmr" / "model" / "wheels" / "ball.py").write_text(BALL)
     changed = sorted(

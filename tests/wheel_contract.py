@@ -19,8 +19,8 @@ import wmr
 from wmr.analysis.linalg import left_null_space, singular_values
 from wmr.analysis.overview import overview
 from wmr.model.backend import NUMERIC
-from wmr.model.wheels import parts as P
 from wmr.model.wheels.filekeys import COMMON_KEYS
+from wmr.plot import parts as P
 
 #: a valid value of each kind of file key (lengths in metres, angles in degrees)
 VALUES = {"pair": [0.3, -0.2], "positive": 0.04, "nonnegative": 0.03, "number": 30.0}
@@ -100,13 +100,15 @@ def check_block(cls):
 
 
 def check_geometry_and_drawing(cls):
-    """Points in the body frame (batched), parts as data (one disc per wheel, a pivot iff steered), drawn."""
+    """Points in the body frame (batched); the kind's drawing entry (wmr.plot.parts): parts as data (one disc per
+    wheel, a pivot iff steered), drawn."""
     unit = example(cls)
     pts = unit.points(np.zeros((4,)))
     assert pts["P"].shape == pts["H"].shape == pts["i"].shape == pts["j"].shape == (4, 2)
     assert pts["wheels"].shape[0] == 4 and pts["wheels"].shape[-1] == 2
     assert np.allclose(pts["P"], unit.position) and np.allclose(np.einsum("...k,...k", pts["i"], pts["j"]), 0)
-    parts = unit.parts(0.4)
+    assert P.has_parts(cls), f"{cls.__name__} has no entry in wmr.plot.parts.unit_parts"
+    parts = P.unit_parts(unit, 0.4)
     assert all(isinstance(p, (P.Disc, P.Link, P.Rollers, P.Pivot)) for p in parts)
     assert sum(isinstance(p, P.Disc) for p in parts) == pts["wheels"].shape[1]
     assert any(isinstance(p, P.Pivot) for p in parts) == cls.steered

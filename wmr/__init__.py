@@ -36,6 +36,7 @@ from .model.robots import equilateral_mounts, paper_robot
 from .model.tolerance import TOL
 from .model.wheels import CentredWheel, DualWheel, FixedWheel, OffsetWheel, SwedishWheel
 from .odometry import wheel_odometry
+from .plot import parts as _drawing  # noqa: F401  (no matplotlib; keeps the deprecated WheelUnit.parts working)
 
 __all__ = [
     "Robot",

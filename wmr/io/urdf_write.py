@@ -39,7 +39,6 @@ from ..model import validation as V
 from ..model.robot import Robot
 from ..model.types import PathLike
 from ..model.wheels.mechanism import Mechanism, wheel
-from ..model.wheels.parts import Rollers
 from .decimals import float_text, length_scale, quantise
 
 __all__ = ["ROLLERS", "joint_name", "to_urdf"]
@@ -146,13 +145,13 @@ def _mechanism(i, u, height):
     try:
         return u.mechanism(height), None
     except NotImplementedError as exc:
-        rollers = [p for p in u.parts(0.0) if isinstance(p, Rollers)]
+        gamma = getattr(u, "roller", None)  # the rollers' angle to the axle (a Swedish wheel's)
         drives = [j for j in u.joints if j.kind == "drive"]
-        if u.steered or len(drives) != 1 or not rollers:
+        if u.steered or len(drives) != 1 or gamma is None:
             raise InputValueError(f"URDF cannot describe wheel {i} ({u.kind}): {exc}") from None
         x, y = (float(v) for v in u.position)
-        body = wheel("wheel", (x, y, float(u.r) - height), float(u.r), drives[0], angle=float(rollers[0].heading))
-        return Mechanism(body), float(rollers[0].angle)
+        body = wheel("wheel", (x, y, float(u.r) - height), float(u.r), drives[0], angle=float(u.constant_angle))
+        return Mechanism(body), float(gamma)
 
 
 def _unit(i, u, height, size):

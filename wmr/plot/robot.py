@@ -8,7 +8,7 @@ rolling direction :math:`\mathbf j_i` (marked by an arrow: by default the way th
 positive rolling rate, :math:`-\mathbf j_i`).  Axles (dashed, along
 :math:`\mathbf i_i`) and wheel-plane lines (along :math:`\mathbf j_i`) can be drawn and extended to
 where they meet.  The geometry comes from the units themselves (:meth:`~wmr.model.wheels.WheelUnit.points`
-and :meth:`~wmr.model.wheels.WheelUnit.parts`), so the pictures obey :mod:`wmr.conventions` by
+and each kind's entry in :func:`~wmr.plot.parts.unit_parts`), so the pictures obey :mod:`wmr.conventions` by
 construction and any wheel kind is drawn; it is computed without matplotlib in :mod:`wmr.plot.geometry`
 (:func:`robot_geometry` and its companions are re-exported here), and the parts are drawn by
 :mod:`wmr.plot.units` (:func:`draw_unit` and its companions are re-exported here).

@@ -2,7 +2,7 @@ r"""The parts of a robot seen from above: the platform disc, and a wheel unit as
 :math:`P_i`, an arm or a bar) carrying wheel discs, rounded rectangles of length :math:`2r` along the rolling
 direction :math:`\mathbf j_i` with an arrow on it, and rollers on a Swedish wheel.
 
-The parts come from the unit itself (:meth:`~wmr.model.wheels.WheelUnit.parts`), so any wheel kind is drawn;
+The parts come from each kind's entry in :func:`wmr.plot.parts.unit_parts`, so any wheel kind with one is drawn;
 :mod:`wmr.plot.robot` assembles them into the robot.
 """
 
@@ -13,8 +13,8 @@ from matplotlib.patches import Circle, FancyArrowPatch, FancyBboxPatch
 from matplotlib.transforms import Affine2D
 
 from ..errors import InputTypeError, InputValueError
-from ..model.wheels.parts import Disc, Link, Pivot, Rollers
 from .geometry import to_world
+from .parts import Disc, Link, Pivot, Rollers, drawn_angle, unit_parts
 from .snapping import snap
 from .style import PALETTE, ROLE
 
@@ -173,12 +173,12 @@ def draw_pivot(ax, p, size, *, ghost=False, zorder=5.0):
 def draw_unit(
     ax, unit, beta, pose=(0.0, 0.0, 0.0), *, ghost=False, zorder=4.0, show_j=True, light=False, arrows="travel"
 ):
-    r"""One wheel unit: its parts (:meth:`wmr.model.wheels.WheelUnit.parts`) in world coordinates from ``pose``.
+    r"""One wheel unit: its parts (:func:`wmr.plot.parts.unit_parts`) in world coordinates from ``pose``.
 
-    Each part is drawn by its type, whatever the unit's kind: a :class:`~wmr.model.wheels.parts.Link`
+    Each part is drawn by its type, whatever the unit's kind: a :class:`~wmr.plot.parts.Link`
     as a bar of the intermediate body (over the wheels, an arm; under them, a bar between wheels), a
-    :class:`~wmr.model.wheels.parts.Disc` as a wheel, :class:`~wmr.model.wheels.parts.Rollers` as
-    strokes across the disc along the roller axes, a :class:`~wmr.model.wheels.parts.Pivot` as the
+    :class:`~wmr.plot.parts.Disc` as a wheel, :class:`~wmr.plot.parts.Rollers` as
+    strokes across the disc along the roller axes, a :class:`~wmr.plot.parts.Pivot` as the
     steering axis.
 
     Parameters
@@ -207,11 +207,11 @@ def draw_unit(
     P, H : numpy.ndarray (2,)
         The unit's steering-axis point and centre (world).
     """
-    beta = unit.drawn_angle(beta)
+    beta = drawn_angle(unit, beta)
     pts = unit.points(beta)
     lw = 2.2 if not ghost else 1.0
     ls = "-" if not ghost else (0, (3, 2))
-    for part in unit.parts(beta):
+    for part in unit_parts(unit, beta):
         if isinstance(part, Link):
             ends = to_world(pose, part.ends)
             if part.over:  # an arm, over the wheel
@@ -243,7 +243,7 @@ def draw_unit(
             draw_pivot(ax, to_world(pose, part.point), 0.16 * part.r, ghost=ghost, zorder=zorder + 1)
         else:
             raise InputTypeError(
-                f"unit.parts() must give Disc, Link, Rollers or Pivot parts, got {type(part).__name__}"
+                f"unit_parts(unit) must give Disc, Link, Rollers or Pivot parts, got {type(part).__name__}"
             )
     return to_world(pose, pts["P"]), to_world(pose, pts["H"])
 

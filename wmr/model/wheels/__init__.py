@@ -18,9 +18,8 @@ module                               what
 ===================================  ======================================================================
 :mod:`~wmr.model.wheels.unit`        :class:`WheelUnit`, what every kind shares and answers
 :mod:`~wmr.model.wheels.registry`    the kinds, registered by being defined (:func:`wheel_kinds`)
-:mod:`~wmr.model.wheels.geometry`    a unit's points and parts seen from above
+:mod:`~wmr.model.wheels.geometry`    a unit's points seen from above
 :mod:`~wmr.model.wheels.joints`      the joints of a unit (steer, swivel, drive, roller), driven or passive
-:mod:`~wmr.model.wheels.parts`       the parts of a unit seen from above, as data for drawing
 :mod:`~wmr.model.wheels.mechanism`   a unit's bodies and joints, as data for a physics engine (:mod:`wmr.sim`)
 :mod:`~wmr.model.wheels.filekeys`    the keys of a unit's table in a robot file
 :mod:`~wmr.model.wheels.unsteered`   the base of the kinds without a steering joint (a constant angle)
@@ -30,12 +29,13 @@ one module per kind                  ``offset``, ``centred``, ``dual``, ``fixed`
 **A new kind of wheel** is one module in this package: a frozen dataclass subclassing
 :class:`WheelUnit` (or :class:`~wmr.model.wheels.unsteered.UnsteeredUnit`) that sets ``kind``,
 ``JOINTS``, ``FILE_KEYS`` and its other class attributes and defines :meth:`~WheelUnit.local_block` and
-:meth:`~WheelUnit.beta_rate` (and :meth:`~WheelUnit.parts`, :meth:`~WheelUnit.steering_row` and the
-design hints where the defaults do not fit), and :meth:`~WheelUnit.mechanism` for a physics engine
-(or a refusal that says why, as the Swedish wheel's).  Every module of the package is imported with
-it, and defining the class registers the kind: :class:`wmr.Robot`, the analyses, :mod:`wmr.io`,
-:mod:`wmr.plot` and :mod:`wmr.sim` take it without a change.  A kind's module imports from the
-modules above, never from this package's ``__init__``.
+:meth:`~WheelUnit.beta_rate` (and :meth:`~WheelUnit.steering_row` and the design hints where the
+defaults do not fit), and :meth:`~WheelUnit.mechanism` for a physics engine (or a refusal that says
+why, as the Swedish wheel's).  Every module of the package is imported with it, and defining the class
+registers the kind: :class:`wmr.Robot`, the analyses, :mod:`wmr.io` and :mod:`wmr.sim` take it without
+a change.  The drawing layer holds its own entry per kind: register one in
+:func:`wmr.plot.parts.unit_parts` (the contract test fails for a kind without one).  A kind's module
+imports from the modules above, never from this package's ``__init__``.
 
 The kinds registered (built from the classes themselves, :func:`wheel_kinds`):
 """

@@ -27,7 +27,6 @@ from ..types import ArrayLike, FloatArray, Matrix
 from .filekeys import FileKey
 from .joints import Joint
 from .mechanism import VERTICAL, Body, mount, wheel
-from .parts import Link, Part
 from .unit import WheelUnit
 
 __all__ = ["DualWheel"]
@@ -129,20 +128,6 @@ class DualWheel(WheelUnit):
     def _points(self, P, i_dir, j_dir):
         wheels = np.stack([P + self.b * i_dir, P - self.b * i_dir], axis=-2)
         return {"P": P, "H": P, "wheels": wheels, "i": i_dir, "j": j_dir}
-
-    def parts(self, beta: float) -> tuple[Part, ...]:
-        """The bar between the two wheels, the wheels, and the swivel (see :meth:`WheelUnit.parts`).
-
-        Parameters
-        ----------
-        beta : float
-
-        Returns
-        -------
-        tuple of Link, Disc, Disc, Pivot
-        """
-        pts = self.points(C.number("beta", beta))
-        return (Link(pts["wheels"], over=False, r=float(self.r)),) + super().parts(beta)
 
     def root_body(self, height: float) -> Body:
         r"""The swivel body at :math:`P_i` on ``swivel``, wheel 1 at :math:`P_i + b\,\mathbf i_i` on ``drive1``, wheel 2

@@ -1,10 +1,10 @@
-r"""A wheel unit seen from above: its points (batched) and its parts (data for drawing), in the body frame.
+r"""A wheel unit seen from above: its points (batched), in the body frame.
 
 What every kind shares (:class:`UnitGeometry`, a base of :class:`~wmr.model.wheels.unit.WheelUnit`):
 the axle and rolling directions :math:`\mathbf i_i = \mathbf R(\beta_i)[1\ 0]^T`,
 :math:`\mathbf j_i = \mathbf R(\beta_i)[0\ 1]^T` (11) at the steering axis :math:`P_i`; a kind with other
-points (an offset wheel's centre :math:`H_i`, a dual wheel's two wheels) or other parts (an arm,
-rollers) extends :meth:`UnitGeometry._points` and :meth:`UnitGeometry.parts`.
+points (an offset wheel's centre :math:`H_i`, a dual wheel's two wheels) extends
+:meth:`UnitGeometry._points`.  How a unit is drawn is the drawing layer's (:mod:`wmr.plot.parts`).
 """
 
 from __future__ import annotations
@@ -14,15 +14,13 @@ from typing import Any, ClassVar
 import numpy as np
 
 from .. import arrays as A
-from .. import checks as C
 from ..types import ArrayLike, FloatArray
-from .parts import Disc, Part, Pivot
 
 __all__ = ["UnitGeometry"]
 
 
 class UnitGeometry:
-    """The points and parts of a wheel unit (a base of every kind; see :class:`~wmr.model.wheels.unit.WheelUnit`)."""
+    """The points of a wheel unit (a base of every kind; see :class:`~wmr.model.wheels.unit.WheelUnit`)."""
 
     # what a unit provides (the dataclass fields and class attributes of WheelUnit)
     position: Any
@@ -65,43 +63,3 @@ class UnitGeometry:
     def _points(self, P, i_dir, j_dir):
         """The unit's points from :math:`P_i` and its axle and rolling directions (kinds with others override this)."""
         return {"P": P, "H": P, "wheels": P[..., None, :], "i": i_dir, "j": j_dir}
-
-    def parts(self, beta: float) -> tuple[Part, ...]:
-        r"""The unit's parts seen from above at one steering angle, body frame (:mod:`~wmr.model.wheels.parts`).
-
-        Parameters
-        ----------
-        beta : float
-            The unit's steering angle :math:`\beta_i` (a unit with a constant angle uses its own).
-
-        Returns
-        -------
-        tuple of Disc, Link, Rollers or Pivot
-            In drawing order: a disc per wheel, and a pivot at :math:`P_i` for a steered unit.
-
-        Examples
-        --------
-        >>> from wmr import CentredWheel
-        >>> [type(p).__name__ for p in CentredWheel((1.0, 0.0), r=0.1).parts(0.3)]
-        ['Disc', 'Pivot']
-        """
-        beta = C.number("beta", beta)
-        pts = self.points(beta)
-        return self._discs(pts, beta) + ((Pivot(pts["P"], float(self.r)),) if self.steered else ())
-
-    def _discs(self, pts, beta, arrow=True):
-        return tuple(Disc(c, float(self.drawn_angle(beta)), float(self.r), arrow) for c in pts["wheels"])
-
-    def drawn_angle(self, beta: float) -> float:
-        """The angle the unit is drawn at: ``beta``, or a unit's own constant angle.
-
-        Parameters
-        ----------
-        beta : float
-            The unit's configuration entry.
-
-        Returns
-        -------
-        float
-        """
-        return C.number("beta", beta) if self.constant_angle is None else C.number("angle", self.constant_angle)

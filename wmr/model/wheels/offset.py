@@ -30,7 +30,6 @@ from ..types import ArrayLike, FloatArray, Matrix
 from .filekeys import FileKey
 from .joints import Joint
 from .mechanism import VERTICAL, Body, mount, wheel
-from .parts import Link, Part
 from .unit import WheelUnit
 
 __all__ = ["OffsetWheel"]
@@ -116,20 +115,6 @@ class OffsetWheel(WheelUnit):
     def _points(self, P, i_dir, j_dir):
         H = P - self.d * j_dir
         return {"P": P, "H": H, "wheels": H[..., None, :], "i": i_dir, "j": j_dir}
-
-    def parts(self, beta: float) -> tuple[Part, ...]:
-        """The arm from the steering axis to the wheel, the wheel, and the steering axis (see :meth:`WheelUnit.parts`).
-
-        Parameters
-        ----------
-        beta : float
-
-        Returns
-        -------
-        tuple of Link, Disc, Pivot
-        """
-        pts = self.points(C.number("beta", beta))
-        return (Link(np.stack([pts["P"], pts["H"]]), over=True, r=float(self.r)),) + super().parts(beta)
 
     def root_body(self, height: float) -> Body:
         r"""The steer body at :math:`P_i` on ``steer``, its arm to the wheel at :math:`H_i = P_i - d\,\mathbf j_i`.

@@ -31,7 +31,6 @@ from ..types import FloatArray, Matrix
 from .filekeys import FileKey
 from .joints import Joint
 from .mechanism import Body
-from .parts import Part, Rollers
 from .unsteered import UnsteeredUnit, in_degrees, radians
 
 __all__ = ["NO_FAITHFUL_MECHANISM", "SwedishWheel"]
@@ -174,22 +173,6 @@ class SwedishWheel(UnsteeredUnit):
         """
         t = C.number("angle", self.angle) + C.number("roller", self.roller)
         return np.array([np.cos(t), np.sin(t)])
-
-    def parts(self, beta: float) -> tuple[Part, ...]:
-        """The wheel without a rolling arrow (it rolls every way), and its rollers (see :meth:`WheelUnit.parts`).
-
-        Parameters
-        ----------
-        beta : float
-            The configuration entry (ignored: the wheel is drawn at its own angle).
-
-        Returns
-        -------
-        tuple of Disc, Rollers
-        """
-        angle = self.drawn_angle(beta)
-        pts = self.points(angle)
-        return self._discs(pts, angle, arrow=False) + (Rollers(pts["H"], angle, float(self.r), float(self.roller)),)
 
     def root_body(self, height: float) -> Body:
         """None a physics engine could take faithfully: refused (:data:`NO_FAITHFUL_MECHANISM`).

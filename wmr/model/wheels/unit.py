@@ -20,9 +20,8 @@ its joints               ``JOINTS`` (:mod:`~wmr.model.wheels.joints`): steer, sw
                          in :math:`\mathbf J_2`; ``steered`` follows from them
 its steering             :meth:`~WheelUnit.beta_rate`; :meth:`~WheelUnit.steering_row` if its rates
                          turn it in a way the block leaves free (a dual wheel); ``rolls_in_plane``
-its geometry, drawing    :meth:`~WheelUnit.points` (batched) and :meth:`~WheelUnit.parts`
-                         (:mod:`~wmr.model.wheels.geometry`; :mod:`~wmr.model.wheels.parts`, data that
-                         :mod:`wmr.plot` draws)
+its geometry             :meth:`~WheelUnit.points` (batched, :mod:`~wmr.model.wheels.geometry`); how it
+                         is drawn is the drawing layer's entry for it (:mod:`wmr.plot.parts`)
 its mechanism            :meth:`~WheelUnit.mechanism`: bodies and joints as data, which :mod:`wmr.sim`
                          puts in a physics engine (:mod:`~wmr.model.wheels.mechanism`)
 its robot-file keys      ``FILE_KEYS`` (:mod:`~wmr.model.wheels.filekeys`), after ``position`` and ``radius``
@@ -31,8 +30,9 @@ its design hints         :meth:`~WheelUnit.dead_zone`, :meth:`~WheelUnit.isotrop
                          (:mod:`~wmr.model.wheels.design`)
 =======================  ===========================================================================
 
-Defining the subclass registers the kind (:mod:`~wmr.model.wheels.registry`); the robot, the analyses,
-the robot files and the drawings then take it without a change.
+Defining the subclass registers the kind (:mod:`~wmr.model.wheels.registry`); the robot, the analyses
+and the robot files then take it without a change, and the drawings once it has an entry in
+:func:`wmr.plot.parts.unit_parts`.
 """
 
 from __future__ import annotations

@@ -1,0 +1,270 @@
+r"""How a wheel unit looks from above, as data: each kind's parts, held by the drawing layer.
+
+A wheel kind answers for its mathematics (:mod:`wmr.model.wheels`); how it is drawn is this module's:
+:func:`unit_parts` has one entry per kind (:func:`functools.singledispatch` on the unit's class, so a
+subclass takes its base's entry), giving the unit's parts in the body frame at one steering angle.
+:mod:`wmr.plot.units` draws each part by its type.  No matplotlib here, and no style: sizes are the
+unit's own (its wheel radius), colours and line widths are the drawing's.
+
+================  =====================================================================================
+part              what it is
+================  =====================================================================================
+:class:`Disc`     a wheel: from above a rounded rectangle :math:`2r` long along the rolling direction
+:class:`Link`     a rigid bar of the intermediate body (an offset wheel's arm, a dual wheel's axle bar)
+:class:`Rollers`  the free rollers in contact on a Swedish wheel, at their angle to the axle
+:class:`Pivot`    a vertical joint (steering axis) at :math:`P_i`
+================  =====================================================================================
+
+**A new kind of wheel** registers its entry here (``@unit_parts.register``), as it does in
+:mod:`wmr.sim` and :mod:`wmr.io`; :func:`has_parts` is what the contract test asks of every kind.
+
+Examples
+--------
+>>> from wmr import OffsetWheel
+>>> [type(p).__name__ for p in unit_parts(OffsetWheel((1.0, 0.0), r=0.1, d=0.2), 0.0)]
+['Link', 'Disc', 'Pivot']
+"""
+
+from __future__ import annotations
+
+import functools
+import sys
+import warnings
+from dataclasses import dataclass
+from typing import Any, TypeAlias
+
+import numpy as np
+
+from ..model import checks
+from ..model.wheels import CentredWheel, DualWheel, FixedWheel, OffsetWheel, SwedishWheel, WheelUnit
+
+__all__ = ["Disc", "Link", "Rollers", "Pivot", "Part", "unit_parts", "drawn_angle", "has_parts"]
+
+
+@dataclass(frozen=True)
+class Disc:
+    r"""A wheel seen from above.
+
+    Parameters
+    ----------
+    centre : numpy.ndarray (2,)
+        Its centre (body frame).
+    heading : float
+        The angle :math:`\beta` of its wheel frame in the body frame: the disc is :math:`2r` long
+        along :math:`\mathbf j = \mathbf R(\beta)[0\ 1]^T`.
+    r : float
+        Wheel radius.
+    arrow : bool, optional
+        Mark the rolling direction :math:`+\mathbf j` (not on a Swedish wheel, which rolls every way).
+    """
+
+    centre: np.ndarray
+    heading: float
+    r: float
+    arrow: bool = True
+
+
+@dataclass(frozen=True)
+class Link:
+    """A rigid bar of the intermediate body between two points.
+
+    Parameters
+    ----------
+    ends : numpy.ndarray (2, 2)
+        Its two end points (body frame).
+    over : bool
+        Drawn over the wheels (an arm from the steering axis to the wheel) or under them (a bar
+        between two wheels).
+    r : float
+        Wheel radius of the unit (the scale of the drawing).
+    """
+
+    ends: np.ndarray
+    over: bool
+    r: float
+
+
+@dataclass(frozen=True)
+class Rollers:
+    r"""The free rollers in contact on the rim of a Swedish wheel.
+
+    Parameters
+    ----------
+    centre : numpy.ndarray (2,)
+        The wheel's centre (body frame).
+    heading : float
+        The angle :math:`\beta` of the wheel frame (body frame).
+    r : float
+        Wheel radius.
+    angle : float
+        :math:`\gamma`, the angle of the roller axes to the axle :math:`\mathbf i` (counter-clockwise).
+    """
+
+    centre: np.ndarray
+    heading: float
+    r: float
+    angle: float
+
+
+@dataclass(frozen=True)
+class Pivot:
+    """A vertical joint (a steering axis) seen from above.
+
+    Parameters
+    ----------
+    point : numpy.ndarray (2,)
+        :math:`P_i` (body frame).
+    r : float
+        Wheel radius of the unit (the scale of the drawing).
+    """
+
+    point: np.ndarray
+    r: float
+
+
+#: any of the parts (what :func:`unit_parts` returns a tuple of)
+Part: TypeAlias = Disc | Link | Rollers | Pivot
+
+
+def drawn_angle(unit: WheelUnit, beta: float) -> float:
+    """The angle a unit is drawn at: ``beta``, or a unit's own constant angle.
+
+    Parameters
+    ----------
+    unit : WheelUnit
+    beta : float
+        The unit's configuration entry.
+
+    Returns
+    -------
+    float
+    """
+    own = unit.constant_angle
+    return checks.number("beta", beta) if own is None else checks.number("angle", own)
+
+
+def _discs(unit: WheelUnit, beta: float, arrow: bool = True) -> tuple[Part, ...]:
+    """A disc per wheel of the unit, at its drawn angle; a pivot at :math:`P_i` for a steered unit."""
+    angle = drawn_angle(unit, beta)
+    discs = tuple(Disc(c, angle, float(unit.r), arrow) for c in unit.points(angle)["wheels"])
+    return discs + ((Pivot(np.asarray(unit.position, dtype=float), float(unit.r)),) if unit.steered else ())
+
+
+@functools.singledispatch
+def unit_parts(unit: Any, beta: float) -> tuple[Part, ...]:
+    r"""The parts of a wheel unit seen from above at one steering angle, body frame (module notes).
+
+    Parameters
+    ----------
+    unit : WheelUnit
+        Of a kind with an entry here (:func:`has_parts`).
+    beta : float
+        The unit's steering angle :math:`\beta_i` (a unit with a constant angle uses its own).
+
+    Returns
+    -------
+    tuple of Disc, Link, Rollers or Pivot
+        In drawing order: bars under the wheels, a disc per wheel, an arm over them, a pivot at
+        :math:`P_i` for a steered unit.
+
+    Raises
+    ------
+    NotImplementedError
+        For a kind without an entry (the message says how to register one).
+
+    Examples
+    --------
+    >>> from wmr import CentredWheel
+    >>> [type(p).__name__ for p in unit_parts(CentredWheel((1.0, 0.0), r=0.1), 0.3)]
+    ['Disc', 'Pivot']
+    """
+    raise NotImplementedError(
+        f"{type(unit).__name__} has no drawing entry: register one with @wmr.plot.parts.unit_parts.register"
+    )
+
+
+@unit_parts.register(CentredWheel)
+@unit_parts.register(FixedWheel)
+def _plain(unit: WheelUnit, beta: float) -> tuple[Part, ...]:
+    """A disc (and a pivot when steered)."""
+    return _discs(unit, beta)
+
+
+@unit_parts.register
+def _offset(unit: OffsetWheel, beta: float) -> tuple[Part, ...]:
+    """The arm from the steering axis to the wheel, the wheel, the steering axis."""
+    pts = unit.points(checks.number("beta", beta))
+    return (Link(np.stack([pts["P"], pts["H"]]), over=True, r=float(unit.r)),) + _discs(unit, beta)
+
+
+@unit_parts.register
+def _dual(unit: DualWheel, beta: float) -> tuple[Part, ...]:
+    """The bar between the two wheels, the wheels, the swivel."""
+    pts = unit.points(checks.number("beta", beta))
+    return (Link(pts["wheels"], over=False, r=float(unit.r)),) + _discs(unit, beta)
+
+
+@unit_parts.register
+def _swedish(unit: SwedishWheel, beta: float) -> tuple[Part, ...]:
+    """The wheel without a rolling arrow (it rolls every way), and its rollers."""
+    angle = drawn_angle(unit, beta)
+    centre = unit.points(angle)["H"]
+    return _discs(unit, beta, arrow=False) + (Rollers(centre, angle, float(unit.r), float(unit.roller)),)
+
+
+def has_parts(kind: type) -> bool:
+    """Whether a wheel kind has an entry in :func:`unit_parts` (its own or a base class's).
+
+    Parameters
+    ----------
+    kind : type
+        A wheel kind (:func:`wmr.model.wheels.wheel_kinds`).
+
+    Returns
+    -------
+    bool
+    """
+    return unit_parts.dispatch(kind) is not unit_parts.dispatch(object)
+
+
+def _deprecated_parts(self: WheelUnit, beta: float) -> tuple[Part, ...]:
+    """Deprecated: :func:`wmr.plot.parts.unit_parts` ``(unit, beta)``.
+
+    Parameters
+    ----------
+    beta : float
+        The unit's steering angle.
+
+    Returns
+    -------
+    tuple of Disc, Link, Rollers or Pivot
+    """
+    warnings.warn(
+        "WheelUnit.parts(beta) is deprecated: use wmr.plot.parts.unit_parts(unit, beta)", DeprecationWarning, 2
+    )
+    return unit_parts(self, beta)
+
+
+def _deprecated_drawn_angle(self: WheelUnit, beta: float) -> float:
+    """Deprecated: :func:`wmr.plot.parts.drawn_angle` ``(unit, beta)``.
+
+    Parameters
+    ----------
+    beta : float
+        The unit's configuration entry.
+
+    Returns
+    -------
+    float
+    """
+    warnings.warn(
+        "WheelUnit.drawn_angle(beta) is deprecated: use wmr.plot.parts.drawn_angle(unit, beta)", DeprecationWarning, 2
+    )
+    return drawn_angle(self, beta)
+
+
+# the methods of before the drawing left the wheel kinds, kept for one release (``import wmr`` imports this module)
+WheelUnit.parts = _deprecated_parts  # type: ignore[attr-defined]
+WheelUnit.drawn_angle = _deprecated_drawn_angle  # type: ignore[attr-defined]
+# ... and the module of before: ``from wmr.model.wheels.parts import Disc`` still finds these classes
+sys.modules.setdefault("wmr.model.wheels.parts", sys.modules[__name__])
