@@ -14,8 +14,8 @@ import sympy as sp
 
 import wmr
 from wmr.errors import InputTypeError, InputValueError
+from wmr.io.wheel_tables import FileKey
 from wmr.model.wheels import Joint, WheelUnit, wheel_kind, wheel_kinds
-from wmr.model.wheels.filekeys import FileKey
 from wmr.model.wheels.joints import actuation
 
 from wheel_contract import CHECKS, check_declarations, check_kind, check_mechanism
@@ -182,7 +182,6 @@ class BallCaster(UnsteeredUnit):
     kind = "ball"
     JOINTS = (Joint("roll_i", "roller", driven=False, rate=("theta", r"\\theta", "")),
               Joint("roll_j", "roller", driven=False, rate=("sigma", r"\\sigma", "")))
-    FILE_KEYS = ()
 
     def local_block(self, backend=NUMERIC):
         """The block: the centre moves by -r theta_dot j + r sigma_dot i.
@@ -249,14 +248,23 @@ sys.path.insert(0, sys.argv[2])
 from wheel_contract import check_kind
 
 ball = wheel_kinds()["ball"]
+from wmr.io import wheel_tables
 from wmr.plot.parts import Disc, has_parts, unit_parts
+
+
+def refused(why):                                          # the contract names the outer layer's missing entry
+    try:
+        check_kind(ball)
+    except AssertionError as exc:
+        assert why in str(exc), exc
+    else:
+        raise AssertionError(f"a kind met the contract without {why}")
+
+
+assert [k.name for k in wheel_tables.file_keys(ball)][2:] == ["angle_deg"]  # an unsteered unit's, inherited
+wheel_tables.register(ball, ())                            # its own: position and radius only
 assert not has_parts(ball)                                 # the drawing layer holds no entry for it yet
-try:
-    check_kind(ball)
-except AssertionError as exc:                              # ... and the contract says so
-    assert "BallCaster has no entry in wmr.plot.parts.unit_parts" in str(exc), exc
-else:
-    raise AssertionError("a kind without a drawing entry met the contract")
+refused("BallCaster has no entry in wmr.plot.parts.unit_parts")
 
 
 @unit_parts.register(ball)                                 # its drawing, registered where drawings live

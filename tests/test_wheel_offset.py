@@ -7,7 +7,10 @@ import sympy as sp
 from hypothesis import given
 
 import wmr
+from wmr.analysis.unit_design import dead_zone, isotropic_change
+from wmr.io.wheel_tables import file_keys
 from wmr.model.backend import SYMBOLIC
+from wmr.plot.parts import unit_parts
 
 from conftest import angles, axle, coords, lengths, rolling_dir, seeds, unit_mount_velocity
 
@@ -66,10 +69,30 @@ def test_active_by_default_a_castor_when_passive():
 
 def test_dead_zone_and_isotropy_hints():
     """Steered with the drives locked, offset wheels carry C on a circle of radius d; d = r makes L_i isotropic (46)."""
-    assert wmr.OffsetWheel((0, 0), r=0.1, d=0.03).dead_zone() == 0.03
-    assert wmr.OffsetWheel((0, 0), r=0.1, d=0.1).isotropy_advice() is None
-    hint = wmr.OffsetWheel((0, 0), r=0.1, d=0.03).isotropy_advice()
-    assert hint is not None and hint.format(wheels="2") == "set offset = radius on wheel 2 (d = r, the paper's (46))"
+    assert (
+        dead_zone(wmr.OffsetWheel((0, 0), r=0.1, d=0.03)) == 0.03 and dead_zone(wmr.CentredWheel((0, 0), r=0.1)) is None
+    )
+    assert isotropic_change(wmr.OffsetWheel((0, 0), r=0.1, d=0.1)) is None
+    change = isotropic_change(wmr.OffsetWheel((0, 0), r=0.1, d=0.03))
+    assert change is not None and change.unit == wmr.OffsetWheel((0, 0), r=0.1, d=0.1)
+    assert change.words.format(wheels="2") == "set offset = radius on wheel 2 (d = r, the paper's (46))"
+
+
+def test_the_moved_methods_warn_and_answer_as_their_replacements():
+    """wmr.deprecated: each method that left the wheel kinds warns, naming its replacement, and answers as it does."""
+    castor, mecanum = wmr.OffsetWheel((0, 0), r=0.1, d=0.03), wmr.SwedishWheel((0, 0), r=0.1, angle=0.0, roller=0.7)
+    with pytest.warns(DeprecationWarning, match=r"dead_zone\(\) is deprecated: use wmr.analysis.unit_design"):
+        assert castor.dead_zone() == dead_zone(castor)  # type: ignore[attr-defined]
+    with pytest.warns(DeprecationWarning, match="isotropic_change"):
+        assert castor.isotropic_variant() == isotropic_change(castor).unit  # type: ignore[attr-defined, union-attr]
+    with pytest.warns(DeprecationWarning, match="isotropic_change"):
+        assert castor.isotropy_advice() == isotropic_change(castor).words  # type: ignore[attr-defined, union-attr]
+    with pytest.warns(DeprecationWarning, match="other_builds"):
+        assert mecanum.other_builds()[0][1].roller == -0.7  # type: ignore[attr-defined]
+    with pytest.warns(DeprecationWarning, match="wmr.plot.parts.unit_parts"):
+        assert repr(castor.parts(0.2)) == repr(unit_parts(castor, 0.2))  # type: ignore[attr-defined]
+    with pytest.warns(DeprecationWarning, match="wmr.io.wheel_tables.file_keys"):
+        assert wmr.OffsetWheel.file_keys() == file_keys(wmr.OffsetWheel)  # type: ignore[attr-defined]
 
 
 @pytest.mark.parametrize(

@@ -8,6 +8,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 import wmr
+from wmr.analysis.unit_design import isotropic_change, other_builds
 
 from conftest import angles, coords, hub_velocity, lengths, seeds
 
@@ -55,7 +56,11 @@ def test_joints_and_isotropy_hint():
     omni = wmr.SwedishWheel((0, 0), r=0.05, angle=0.0, roller=PI / 2)
     mecanum = wmr.SwedishWheel((0, 0), r=0.05, angle=0.0, roller=PI / 4)
     assert [(j.kind, j.driven) for j in omni.joints] == [("drive", True), ("roller", False)]
-    assert omni.isotropy_advice() is None and "omni" in (mecanum.isotropy_advice() or "")
+    change = isotropic_change(mecanum)
+    assert isotropic_change(omni) is None and change is not None and "omni" in change.words
+    assert change.unit == wmr.SwedishWheel((0, 0), r=0.05, angle=0.0, roller=PI / 2)
+    assert [c.unit for c in other_builds(mecanum)] == [wmr.SwedishWheel((0, 0), r=0.05, angle=0.0, roller=-PI / 4)]
+    assert other_builds(omni) == ()
     s = np.linalg.svd(mecanum.local_block(), compute_uv=False)
     assert np.allclose(s, 0.05 * np.sqrt([1 + np.cos(PI / 4), 1 - np.cos(PI / 4)]))  # what the hint says
 

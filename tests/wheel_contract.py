@@ -18,8 +18,9 @@ import sympy as sp
 import wmr
 from wmr.analysis.linalg import left_null_space, singular_values
 from wmr.analysis.overview import overview
+from wmr.analysis.unit_design import dead_zone, isotropic_change
+from wmr.io import wheel_tables as K
 from wmr.model.backend import NUMERIC
-from wmr.model.wheels.filekeys import COMMON_KEYS
 from wmr.plot import parts as P
 
 #: a valid value of each kind of file key (lengths in metres, angles in degrees)
@@ -34,14 +35,14 @@ def table(cls, position=(0.3, -0.2), radius=0.05):
         f"position = [{position[0]!r}, {position[1]!r}]",
         f"radius = {radius!r}",
     ]
-    lines += [f"{key.name} = {VALUES[key.check]!r}" for key in cls.FILE_KEYS]
+    lines += [f"{key.name} = {VALUES[key.check]!r}" for key in K.file_keys(cls)[2:]]
     return "\n".join(lines) + "\n"
 
 
 def example(cls, position=(0.3, -0.2), radius=0.05):
     """A unit of kind ``cls`` built from the values of its declared file keys (read as a file would be)."""
-    values = {"position": list(position), "radius": radius, **{k.name: VALUES[k.check] for k in cls.FILE_KEYS}}
-    return cls(**{k.field: k.read(values[k.name]) for k in cls.file_keys()})
+    values = {"position": list(position), "radius": radius, **{k.name: VALUES[k.check] for k in K.file_keys(cls)[2:]}}
+    return cls(**{k.field: k.read(values[k.name]) for k in K.file_keys(cls)})
 
 
 def trio(cls, L=0.3):
@@ -57,7 +58,8 @@ def _rotation(b):
 
 # ------------------------------------------------------------------------------------------ the checks
 def check_registered(cls):
-    """The kind is registered under its name, and robot files know its keys."""
+    """The kind is registered under its name, and robot files know its keys (its entry in wmr.io.wheel_tables)."""
+    assert K.has_file_keys(cls), f"{cls.__name__} has no entry in wmr.io.wheel_tables"
     assert wmr.model.wheels.wheel_kind(cls.kind) is cls and cls.kind in wmr.io.wheel_keys()
     assert type(wmr.io.loads(table(cls)).wheels[0]) is cls
 
@@ -75,8 +77,9 @@ def check_declarations(cls):
     N = left_null_space(L)
     holds_to_plane = N.shape[1] == 1 and np.allclose(np.abs(N[:, 0]), [1.0, 0.0], atol=1e-12)
     assert cls.rolls_in_plane == holds_to_plane, (cls.kind, N)
-    names = {k.name for k in cls.file_keys()}
-    assert [k.name for k in cls.file_keys()[:2]] == [k.name for k in COMMON_KEYS] and len(names) == len(cls.file_keys())
+    keys = K.file_keys(cls)
+    assert [k.name for k in keys[:2]] == [k.name for k in K.COMMON_KEYS] and len({k.name for k in keys}) == len(keys)
+    assert set(cls.ANGLES) <= set(unit.parameters()) and {k.field for k in keys if k.degrees} <= set(cls.ANGLES)
 
 
 def check_block(cls):
@@ -139,7 +142,7 @@ def check_files(cls):
     flipped = {cls.JOINTS[0].name: not cls.JOINTS[0].driven}
     other = wmr.io.loads(wmr.dump(wmr.Robot([cls(**{**_fields(unit), "driven": flipped})]))).wheels[0]
     assert other.driven[0] is (not cls.JOINTS[0].driven) and other.driven[1:] == unit.driven[1:]
-    for key in cls.file_keys():
+    for key in K.file_keys(cls):
         text = "\n".join(line for line in table(cls).splitlines() if not line.startswith(key.name + " "))
         try:
             wmr.io.loads(text, "f.toml")
@@ -188,9 +191,12 @@ def check_robot(cls):
     assert ov.kinds == (cls.kind,) * 3 and ov.steered == (cls.steered,) * 3
     for u in bot.wheels:
         s = singular_values(np.asarray(u.local_block(NUMERIC), dtype=float))
-        advice = u.isotropy_advice()
-        assert advice is None or ("{wheels}" in advice and not np.allclose(s, s[0])), (cls.kind, advice, s)
-        zone = u.dead_zone()
+        change = isotropic_change(u)
+        assert change is None or ("{wheels}" in change.words and not np.allclose(s, s[0])), (cls.kind, change, s)
+        if change is not None:  # the changed unit's block is isotropic
+            t = singular_values(np.asarray(change.unit.local_block(NUMERIC), dtype=float))
+            assert np.allclose(t, t[0], rtol=1e-12), (cls.kind, change, t)
+        zone = dead_zone(u)
         assert zone is None or zone >= 0
 
 

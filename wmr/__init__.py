@@ -17,6 +17,7 @@ Examples
 1
 """
 
+from . import deprecated as deprecated  # the names that moved, kept for one release (wmr.deprecated)
 from . import errors, swerve
 from ._version import __version__ as __version__  # one source: wmr/_version.py
 from .analysis.classes import campion_class
@@ -36,7 +37,6 @@ from .model.robots import equilateral_mounts, paper_robot
 from .model.tolerance import TOL
 from .model.wheels import CentredWheel, DualWheel, FixedWheel, OffsetWheel, SwedishWheel
 from .odometry import wheel_odometry
-from .plot import parts as _drawing  # noqa: F401  (no matplotlib; keeps the deprecated WheelUnit.parts working)
 
 __all__ = [
     "Robot",

@@ -11,12 +11,12 @@ robot).
 * :math:`\mathbf J_{L1}`: C moved to the centroid of the mount points (:meth:`wmr.Robot.moved`); the
   characteristic length is recomputed for the moved robot -- it is not the old one
   (:mod:`wmr.analysis.overview`: :math:`L^2 = \sum_i\|\mathbf d_i\|^2/w` depends on where C is).
-* :math:`\mathbf J_2`: each unit's own change (:meth:`~wmr.model.wheels.WheelUnit.isotropic_variant`:
+* :math:`\mathbf J_2`: each unit's own change (:func:`~wmr.analysis.unit_design.isotropic_change`:
   offset = radius, omni rollers), one common radius, and all of them together.  A change is not
   advised either when the changed robot's motors cannot drive every motion it can make.
 * Actuation: when the motors cannot drive every motion (actuated mobility below
   :math:`\delta_m`), the fewest units rebuilt another way that fix it
-  (:meth:`~wmr.model.wheels.WheelUnit.other_builds`: a mecanum wheel of the other hand).
+  (:func:`~wmr.analysis.unit_design.other_builds`: a mecanum wheel of the other hand).
 
 :math:`\mathbf J_2^T\mathbf J_2 = \mathrm{blockdiag}(\mathbf L_i^T\mathbf L_i)` does not depend on the
 configuration, so :math:`\kappa(\mathbf J_2)` is one number per robot.
@@ -40,6 +40,7 @@ from .kinematics import inverse
 from .limitations import limitations
 from .linalg import condition_number
 from .mobility import admissible_twists
+from .unit_design import isotropic_change, other_builds
 
 __all__ = ["Advice", "profile", "advice", "actuation_advice", "motor_conditioning"]
 
@@ -178,7 +179,7 @@ def actuation_advice(robot, before=None) -> list[Advice]:
     """When the motors cannot drive every motion: units rebuilt another way that fix it (checked).
 
     Tries every set of at most four of the units that have another build
-    (:meth:`~wmr.model.wheels.WheelUnit.other_builds`), keeps those that give an actuated mobility
+    (:func:`~wmr.analysis.unit_design.other_builds`), keeps those that give an actuated mobility
     equal to the degree of mobility, and advises the one whose motors command the admissible
     twists most evenly (:func:`~wmr.analysis.advice.motor_conditioning`; fewer changes first on
     a tie); nothing when none does or nothing is lost.
@@ -199,7 +200,7 @@ def actuation_advice(robot, before=None) -> list[Advice]:
     if before["actuated_mobility"] >= dm:
         return []
     beta = np.asarray(campion_class(robot).beta)
-    options = [(k, words, u) for k, unit in enumerate(robot.wheels) for words, u in unit.other_builds()]
+    options = [(k, c.words, c.unit) for k, unit in enumerate(robot.wheels) for c in other_builds(unit)]
     best = None
     for size in range(1, min(4, len(options)) + 1):
         for pick in itertools.combinations(options, size):
@@ -314,13 +315,13 @@ def advice(robot, before=None) -> tuple[list[Advice], dict]:
             )
         )
     elif not j2:
-        groups: dict[str, list[int]] = {}  # each unit's own advice, wheels grouped by it
-        for k, u in enumerate(robot.wheels):
-            if u.isotropic_variant() is not None:
-                groups.setdefault(u.isotropy_advice(), []).append(k)
+        changes = {k: c for k, u in enumerate(robot.wheels) if (c := isotropic_change(u)) is not None}
+        groups: dict[str, list[int]] = {}  # each unit's own change, wheels grouped by its words
+        for k, c in changes.items():
+            groups.setdefault(c.words, []).append(k)
         for hint, ks in groups.items():
             what = hint.format(wheels=", ".join(str(k + 1) for k in ks))
-            out.append(_change(robot, before, {k: robot.wheels[k].isotropic_variant() for k in ks}, what))
+            out.append(_change(robot, before, {k: changes[k].unit for k in ks}, what))
         radii = sorted({float(u.r) for u in robot.wheels})
         if len(radii) > 1:
             same = {k: dataclasses.replace(u, r=radii[-1]) for k, u in enumerate(robot.wheels)}
@@ -333,7 +334,7 @@ def advice(robot, before=None) -> tuple[list[Advice], dict]:
                 )
             )
             if groups:
-                both = {k: u.isotropic_variant() or u for k, u in same.items()}
+                both = {k: (c.unit if (c := isotropic_change(u)) else u) for k, u in same.items()}
                 out.append(_change(robot, before, both, "both changes together"))
         if not groups and len(radii) == 1:
             out.append(

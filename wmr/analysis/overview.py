@@ -45,6 +45,7 @@ from .mobility import rank_F
 from .singular import FAMILIES, MEANINGS, singular_families
 from .steering import steering_angles
 from .sweep import Drivable, Grid, Sample, sweep
+from .unit_design import dead_zone
 
 __all__ = [
     "FAMILIES",
@@ -157,7 +158,7 @@ def dead_zone_radius(robot: Robot) -> float | None:
     -------
     float or None
         d; None when some unit has no dead zone (it is not an offset wheel:
-        :meth:`~wmr.model.wheels.WheelUnit.dead_zone`) or the offsets differ (the locked units then
+        :func:`~wmr.analysis.unit_design.dead_zone`) or the offsets differ (the locked units then
         cannot be steered together).
 
     Examples
@@ -169,7 +170,7 @@ def dead_zone_radius(robot: Robot) -> float | None:
     True
     """
     robot = V.numeric_robot(robot)
-    zones = [u.dead_zone() for u in robot.wheels]
+    zones = [dead_zone(u) for u in robot.wheels]
     if any(z is None for z in zones):
         return None
     d = np.array(zones, dtype=float)
@@ -232,7 +233,7 @@ class Overview:
     steered : tuple of bool
         :attr:`wmr.Robot.steered`: which units have a steering joint.
     dead_zones : tuple of float or None
-        Each unit's :meth:`~wmr.model.wheels.WheelUnit.dead_zone`.
+        Each unit's :func:`~wmr.analysis.unit_design.dead_zone`.
     drivable : int
         How many drivable configurations ``kappa_J`` covers (sampled, and special motions).
     """
@@ -331,6 +332,6 @@ def overview(robot: Robot, grid: int | None = None, twists: int = TWISTS, seed: 
         dead_zone=dead_zone_radius(robot),
         singular=singular_families(robot, L),
         steered=robot.steered,
-        dead_zones=tuple(u.dead_zone() for u in robot.wheels),
+        dead_zones=tuple(dead_zone(u) for u in robot.wheels),
         drivable=int(kj.count + sb.shape[0]),
     )

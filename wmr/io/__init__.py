@@ -52,9 +52,10 @@ Examples
 
 from .files import FORMATS, dump, format_of, load
 from .ros2 import from_ros2, to_ros2
-from .toml import RobotFileError, loads, wheel_keys
+from .toml import RobotFileError, loads
 from .urdf_read import from_urdf
 from .urdf_write import to_urdf
+from .wheel_tables import wheel_keys
 from .wpilib import from_wpilib, to_wpilib
 
 __all__ = [

@@ -15,8 +15,8 @@ from dataclasses import dataclass, field
 from typing import Any, NoReturn
 
 from ..errors import RobotFileError
-from ..model.wheels.filekeys import toml_text
 from .extras import require
+from .wheel_tables import toml_text
 
 __all__ = ["Block", "Params", "parse"]
 

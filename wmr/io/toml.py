@@ -6,15 +6,15 @@ unit; angles in degrees)::
     name = "paper, three centred wheels"     # optional (default: the file's name)
 
     [[wheel]]                 # one table per wheel unit, wheel 1 first (the numbering of wmr.Robot)
-    type = "centred"          # the wheel kind: offset, centred, dual, fixed, swedish, ... (wheel_keys())
+    type = "centred"          # the wheel kind: offset, centred, dual, fixed, swedish, ... (wmr.io.wheel_keys())
     position = [-0.3, 0.0]    # the mount point d_i = CP_i, body frame, from the operation point C
     radius = 0.05             # the wheel radius r, > 0
     # ...                     # the kind's own keys, e.g. offset = 0.03 for an offset wheel
     # driven = {steer = false, drive = false}   # optional: joints whose actuation differs from the kind's default
 
-Each kind takes exactly its keys, declared by the kind itself (its ``FILE_KEYS``,
-:mod:`wmr.model.wheels.filekeys`; :func:`wheel_keys` lists them); ``driven`` is optional for every
-kind.  A malformed file raises :class:`~wmr.errors.RobotFileError`, whose message is one line,
+Each kind takes exactly its keys, declared for it in :mod:`wmr.io.wheel_tables`
+(:func:`~wmr.io.wheel_tables.wheel_keys` lists them); ``driven`` is optional for every kind.  A
+malformed file raises :class:`~wmr.errors.RobotFileError`, whose message is one line,
 ``FILE:LINE: key: what is wrong`` (also for a file of more wheels than :mod:`wmr.model.limits`
 allows, refused before it is parsed); a byte-order mark at the start is accepted; wheels are named
 ``wheel[k]`` with ``k`` counted from 1, as the paper numbers them.
@@ -47,31 +47,14 @@ from ..model.limits import check, limit
 from ..model.robot import Robot
 from ..model.tolerance import near_zero
 from ..model.types import PathLike
-from ..model.wheels import wheel_kinds
-from ..model.wheels.filekeys import toml_string, toml_text
 from .decimals import DEGREES, float_text, length_scale
+from .wheel_tables import file_keys, readable_kinds, toml_string, toml_text
 
-__all__ = ["RobotFileError", "wheel_keys", "load", "loads", "dump"]
+__all__ = ["RobotFileError", "load", "loads", "dump"]
 
 _TOP_KEYS = ("name", "wheel")
 #: the optional key of every wheel table: the joints whose actuation differs from the kind's default
 _DRIVEN = "driven"
-
-
-def wheel_keys() -> dict[str, tuple[str, ...]]:
-    """The keys of each wheel kind's table, as the kinds declare them (all required; ``driven`` is optional).
-
-    Returns
-    -------
-    dict of str to tuple of str
-        ``{kind: ("type", "position", "radius", its own keys...)}``, every registered kind.
-
-    Examples
-    --------
-    >>> wheel_keys()["dual"]
-    ('type', 'position', 'radius', 'half_separation')
-    """
-    return {kind: ("type",) + tuple(k.name for k in cls.file_keys()) for kind, cls in wheel_kinds().items()}
 
 
 # ------------------------------------------------------------------------------------- lines
@@ -150,7 +133,7 @@ def _driven(value, cls, where, fail):
 def _wheel(k, table, lines, fail):
     """The wheel unit of the k-th ``[[wheel]]`` table (0-based ``k``)."""
     name = f"wheel[{k + 1}]"
-    kinds = wheel_kinds()
+    kinds = readable_kinds()
     if not isinstance(table, dict):
         fail(lines.of(k), name, f"must be a table ([[wheel]]), got {toml_text(table)}")
     if "type" not in table:
@@ -164,8 +147,8 @@ def _wheel(k, table, lines, fail):
             + (_suggest(kind, list(kinds)) if isinstance(kind, str) else ""),
         )
     cls = kinds[kind]
-    keys = {key.name: key for key in cls.file_keys()}
-    every = ["type", *dict.fromkeys(key.name for c in kinds.values() for key in c.file_keys()), _DRIVEN]
+    keys = {key.name: key for key in file_keys(cls)}
+    every = ["type", *dict.fromkeys(key.name for c in kinds.values() for key in file_keys(c)), _DRIVEN]
     for key in table:
         if key not in every:
             fail(lines.of(k, key), f"{name}.{key}", "unknown key" + _suggest(key, every))
@@ -345,7 +328,7 @@ def dump(robot: Robot, path: PathLike | None = None) -> str:
     Parameters
     ----------
     robot : Robot
-        Any robot: every wheel kind declares its keys (:func:`wheel_keys`).
+        Any robot: every wheel kind declares its keys (:func:`~wmr.io.wheel_tables.wheel_keys`).
     path : str or os.PathLike, optional
         Where to write the text (UTF-8).
 
@@ -375,15 +358,16 @@ def dump(robot: Robot, path: PathLike | None = None) -> str:
         "# wmr robot file: lengths in metres, angles in degrees (schema: wmr.io)",
         f"name = {toml_string(robot.name)}",
     ]
-    kinds, size = wheel_kinds(), length_scale(robot)
+    kinds, size = readable_kinds(), length_scale(robot)
     for k, u in enumerate(robot.wheels, 1):
         if kinds.get(u.kind) is not type(u):
             raise InputValueError(
-                f"robot has wheel {k} of kind {u.kind!r} ({type(u).__name__}), which is not a "
-                f"registered wheel kind: robot files cannot describe it (kinds: {', '.join(kinds)})"
+                f"robot has wheel {k} of kind {u.kind!r} ({type(u).__name__}), which is not a registered wheel "
+                f"kind with robot-file keys (wmr.io.wheel_tables.register): robot files cannot describe it "
+                f"(kinds: {', '.join(kinds)})"
             )
         out += ["", "[[wheel]]", f"type = {toml_string(u.kind)}"]
-        out += [f"{key.name} = {_value(key.write(u), DEGREES if key.degrees else size)}" for key in u.file_keys()]
+        out += [f"{key.name} = {_value(key.write(u), DEGREES if key.degrees else size)}" for key in file_keys(type(u))]
         changed = [
             (j.name, j.driven) for j, default in zip(u.joints, u.JOINTS, strict=True) if j.driven != default.driven
         ]

@@ -28,8 +28,6 @@ Examples
 from __future__ import annotations
 
 import functools
-import sys
-import warnings
 from dataclasses import dataclass
 from typing import Any, TypeAlias
 
@@ -225,46 +223,3 @@ def has_parts(kind: type) -> bool:
     bool
     """
     return unit_parts.dispatch(kind) is not unit_parts.dispatch(object)
-
-
-def _deprecated_parts(self: WheelUnit, beta: float) -> tuple[Part, ...]:
-    """Deprecated: :func:`wmr.plot.parts.unit_parts` ``(unit, beta)``.
-
-    Parameters
-    ----------
-    beta : float
-        The unit's steering angle.
-
-    Returns
-    -------
-    tuple of Disc, Link, Rollers or Pivot
-    """
-    warnings.warn(
-        "WheelUnit.parts(beta) is deprecated: use wmr.plot.parts.unit_parts(unit, beta)", DeprecationWarning, 2
-    )
-    return unit_parts(self, beta)
-
-
-def _deprecated_drawn_angle(self: WheelUnit, beta: float) -> float:
-    """Deprecated: :func:`wmr.plot.parts.drawn_angle` ``(unit, beta)``.
-
-    Parameters
-    ----------
-    beta : float
-        The unit's configuration entry.
-
-    Returns
-    -------
-    float
-    """
-    warnings.warn(
-        "WheelUnit.drawn_angle(beta) is deprecated: use wmr.plot.parts.drawn_angle(unit, beta)", DeprecationWarning, 2
-    )
-    return drawn_angle(self, beta)
-
-
-# the methods of before the drawing left the wheel kinds, kept for one release (``import wmr`` imports this module)
-WheelUnit.parts = _deprecated_parts  # type: ignore[attr-defined]
-WheelUnit.drawn_angle = _deprecated_drawn_angle  # type: ignore[attr-defined]
-# ... and the module of before: ``from wmr.model.wheels.parts import Disc`` still finds these classes
-sys.modules.setdefault("wmr.model.wheels.parts", sys.modules[__name__])

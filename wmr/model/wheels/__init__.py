@@ -21,21 +21,21 @@ module                               what
 :mod:`~wmr.model.wheels.geometry`    a unit's points seen from above
 :mod:`~wmr.model.wheels.joints`      the joints of a unit (steer, swivel, drive, roller), driven or passive
 :mod:`~wmr.model.wheels.mechanism`   a unit's bodies and joints, as data for a physics engine (:mod:`wmr.sim`)
-:mod:`~wmr.model.wheels.filekeys`    the keys of a unit's table in a robot file
 :mod:`~wmr.model.wheels.unsteered`   the base of the kinds without a steering joint (a constant angle)
 one module per kind                  ``offset``, ``centred``, ``dual``, ``fixed``, ``swedish``, ...
 ===================================  ======================================================================
 
 **A new kind of wheel** is one module in this package: a frozen dataclass subclassing
 :class:`WheelUnit` (or :class:`~wmr.model.wheels.unsteered.UnsteeredUnit`) that sets ``kind``,
-``JOINTS``, ``FILE_KEYS`` and its other class attributes and defines :meth:`~WheelUnit.local_block` and
-:meth:`~WheelUnit.beta_rate` (and :meth:`~WheelUnit.steering_row` and the design hints where the
-defaults do not fit), and :meth:`~WheelUnit.mechanism` for a physics engine (or a refusal that says
-why, as the Swedish wheel's).  Every module of the package is imported with it, and defining the class
-registers the kind: :class:`wmr.Robot`, the analyses, :mod:`wmr.io` and :mod:`wmr.sim` take it without
-a change.  The drawing layer holds its own entry per kind: register one in
-:func:`wmr.plot.parts.unit_parts` (the contract test fails for a kind without one).  A kind's module
-imports from the modules above, never from this package's ``__init__``.
+``JOINTS`` and its other class attributes (``ANGLES``: which of its parameters are angles) and defines
+:meth:`~WheelUnit.local_block` and :meth:`~WheelUnit.beta_rate` (and :meth:`~WheelUnit.steering_row`
+where the default does not fit), and :meth:`~WheelUnit.mechanism` for a physics engine (or a refusal
+that says why, as the Swedish wheel's).  Every module of the package is imported with it, and
+defining the class registers the kind: :class:`wmr.Robot`, the analyses and :mod:`wmr.sim` take it
+without a change.  The outer layers hold their own entry per kind: its keys in a robot file
+(:func:`wmr.io.wheel_tables.register`) and its drawing (:func:`wmr.plot.parts.unit_parts`), which the
+contract test asks of every kind, and its design hints (:mod:`wmr.analysis.unit_design`).  A kind's
+module imports from the modules above, never from this package's ``__init__``.
 
 The kinds registered (built from the classes themselves, :func:`wheel_kinds`):
 """

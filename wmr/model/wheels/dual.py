@@ -24,7 +24,6 @@ import numpy as np
 from .. import checks as C
 from ..backend import NUMERIC, Backend
 from ..types import ArrayLike, FloatArray, Matrix
-from .filekeys import FileKey
 from .joints import Joint
 from .mechanism import VERTICAL, Body, mount, wheel
 from .unit import WheelUnit
@@ -63,7 +62,6 @@ class DualWheel(WheelUnit):
         Joint("drive1", "drive", driven=True, rate=("theta", r"\theta", "1")),
         Joint("drive2", "drive", driven=True, rate=("theta", r"\theta", "2")),
     )
-    FILE_KEYS = (FileKey("half_separation", "b", "half the wheel separation b in metres, > 0", check="positive"),)
     rolls_in_plane = True
 
     def _validate(self):

@@ -18,16 +18,13 @@ In a robot file::
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
-from typing import Self
+from dataclasses import dataclass
 
 import numpy as np
 
 from .. import checks as C
 from ..backend import NUMERIC, Backend
-from ..tolerance import TOL
 from ..types import ArrayLike, FloatArray, Matrix
-from .filekeys import FileKey
 from .joints import Joint
 from .mechanism import VERTICAL, Body, mount, wheel
 from .unit import WheelUnit
@@ -68,7 +65,6 @@ class OffsetWheel(WheelUnit):
         Joint("steer", "steer", driven=True, rate=("phi", r"\phi", ""), absolute=True),  # phi = psi + beta (7)
         Joint("drive", "drive", driven=True, rate=("theta", r"\theta", "")),
     )
-    FILE_KEYS = (FileKey("offset", "d", "the offset d in metres, >= 0", check="nonnegative"),)
 
     def _validate(self):
         super()._validate()
@@ -145,38 +141,3 @@ class OffsetWheel(WheelUnit):
             rods=(((0.0, 0.0, 0.0), H),),
             children=(wheel("wheel", H, r, drive),),
         )
-
-    def dead_zone(self) -> float | None:
-        """The offset d: steered with the drives locked, offset wheels carry C on a circle of radius d.
-
-        Returns
-        -------
-        float
-        """
-        return float(self.d)
-
-    def isotropy_advice(self) -> str | None:
-        """``d = r`` (the paper's (46)) makes :math:`\\mathbf L_i = -r\\mathbf 1`; None when it holds already.
-
-        Returns
-        -------
-        str or None
-        """
-        d, r = float(self.d), float(self.r)
-        if abs(d - r) <= TOL * max(d, r):
-            return None
-        return "set offset = radius on wheel {wheels} (d = r, the paper's (46))"
-
-    def isotropic_variant(self) -> Self | None:
-        """The same unit with ``d = r`` (see :meth:`isotropy_advice`); None when it holds already.
-
-        Returns
-        -------
-        OffsetWheel or None
-
-        Examples
-        --------
-        >>> OffsetWheel((0, 0), r=0.05, d=0.03).isotropic_variant().d
-        0.05
-        """
-        return None if self.isotropy_advice() is None else replace(self, d=self.r)

@@ -18,8 +18,7 @@ In a robot file::
 
 from __future__ import annotations
 
-from dataclasses import InitVar, dataclass, field, replace
-from typing import Self
+from dataclasses import InitVar, dataclass, field
 
 import numpy as np
 
@@ -28,7 +27,6 @@ from .. import checks as C
 from ..backend import NUMERIC, Backend
 from ..tolerance import TOL
 from ..types import FloatArray, Matrix
-from .filekeys import FileKey
 from .joints import Joint
 from .mechanism import Body
 from .unsteered import UnsteeredUnit, in_degrees, radians
@@ -123,9 +121,7 @@ class SwedishWheel(UnsteeredUnit):
         Joint("drive", "drive", driven=True, rate=("theta", r"\theta", "")),
         Joint("roller", "roller", driven=False, rate=("sigma", r"\sigma", "")),
     )
-    FILE_KEYS = UnsteeredUnit.FILE_KEYS + (
-        FileKey("roller_deg", "roller", "the roller angle in degrees (90 omni, 45 mecanum)", degrees=True),
-    )
+    ANGLES = ("angle", "roller")
 
     def _init_degrees(self, roller_deg=None, *more):
         super()._init_degrees(*more)
@@ -192,47 +188,3 @@ class SwedishWheel(UnsteeredUnit):
             Always, with :data:`NO_FAITHFUL_MECHANISM`.
         """
         raise NotImplementedError(f"Swedish wheel at {tuple(float(v) for v in self.position)}: {NO_FAITHFUL_MECHANISM}")
-
-    def isotropy_advice(self) -> str | None:
-        """Omni rollers (:math:`\\gamma = \\pi/2`) make the block :math:`r\\,\\mathbf R`, isotropic; None if they are.
-
-        Returns
-        -------
-        str or None
-        """
-        if abs(np.cos(float(self.roller))) <= TOL:
-            return None
-        return (
-            "use omni wheels (rollers at 90 deg) on wheel {wheels}: a Swedish wheel's block "
-            "r[[0, sin g], [-1, -cos g]] has singular values r sqrt(1 +- cos g)"
-        )
-
-    def isotropic_variant(self) -> Self | None:
-        """The same wheel with omni rollers (:math:`\\gamma = \\pi/2`); None when it has them already.
-
-        Returns
-        -------
-        SwedishWheel or None
-        """
-        return None if self.isotropy_advice() is None else replace(self, roller=np.pi / 2)
-
-    def other_builds(self) -> tuple[tuple[str, Self], ...]:
-        """The wheel of the other hand (rollers at :math:`-\\gamma`), unless it is an omni wheel.
-
-        Returns
-        -------
-        tuple of (str, SwedishWheel)
-
-        Examples
-        --------
-        >>> [words for words, _ in SwedishWheel((0, 0), r=0.05, angle=0.0, roller=np.pi / 4).other_builds()]
-        ['of the other hand (rollers at -45 deg)']
-        """
-        if abs(np.cos(float(self.roller))) <= TOL:
-            return ()
-        return (
-            (
-                f"of the other hand (rollers at {np.degrees(-float(self.roller)):.0f} deg)",
-                replace(self, roller=-self.roller),
-            ),
-        )

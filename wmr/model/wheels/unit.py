@@ -24,15 +24,13 @@ its geometry             :meth:`~WheelUnit.points` (batched, :mod:`~wmr.model.wh
                          is drawn is the drawing layer's entry for it (:mod:`wmr.plot.parts`)
 its mechanism            :meth:`~WheelUnit.mechanism`: bodies and joints as data, which :mod:`wmr.sim`
                          puts in a physics engine (:mod:`~wmr.model.wheels.mechanism`)
-its robot-file keys      ``FILE_KEYS`` (:mod:`~wmr.model.wheels.filekeys`), after ``position`` and ``radius``
-its design hints         :meth:`~WheelUnit.dead_zone`, :meth:`~WheelUnit.isotropy_advice`,
-                         :meth:`~WheelUnit.isotropic_variant`, :meth:`~WheelUnit.other_builds`
-                         (:mod:`~wmr.model.wheels.design`)
+its angles               ``ANGLES``: which of its parameters are angles (the others are lengths)
 =======================  ===========================================================================
 
-Defining the subclass registers the kind (:mod:`~wmr.model.wheels.registry`); the robot, the analyses
-and the robot files then take it without a change, and the drawings once it has an entry in
-:func:`wmr.plot.parts.unit_parts`.
+Defining the subclass registers the kind (:mod:`~wmr.model.wheels.registry`); the robot and the
+analyses then take it without a change.  The outer layers hold their own entries per kind: its keys
+in a robot file (:mod:`wmr.io.wheel_tables`), its drawing (:mod:`wmr.plot.parts`) and what the design
+advice makes of it (:mod:`wmr.analysis.unit_design`; the defaults say nothing).
 """
 
 from __future__ import annotations
@@ -50,8 +48,6 @@ from ..backend import NUMERIC, Backend, choose, is_symbolic
 from ..lazysympy import is_sympy, sp
 from ..platform import E, rotated
 from ..types import ArrayLike, FloatArray, Matrix, Numbers, Point, Symbolic
-from .design import DesignHints
-from .filekeys import COMMON_KEYS, FileKey
 from .geometry import UnitGeometry
 from .joints import Joint, actuation
 from .mechanism import UnitMechanism
@@ -61,7 +57,7 @@ __all__ = ["WheelUnit"]
 
 
 @dataclass(frozen=True)
-class WheelUnit(UnitGeometry, UnitMechanism, DesignHints):
+class WheelUnit(UnitGeometry, UnitMechanism):
     r"""A wheel unit at :math:`P_i`: the base of every wheel kind.
 
     Parameters
@@ -84,8 +80,8 @@ class WheelUnit(UnitGeometry, UnitMechanism, DesignHints):
     kind: ClassVar[str] = ""
     #: the joints, with their default actuation (:mod:`~wmr.model.wheels.joints`)
     JOINTS: ClassVar[tuple[Joint, ...]] = ()
-    #: the keys of its table in a robot file after position and radius (:mod:`~wmr.model.wheels.filekeys`)
-    FILE_KEYS: ClassVar[tuple[FileKey, ...]] = ()
+    #: the fields of its :meth:`parameters` that are angles (radians); the others are lengths
+    ANGLES: ClassVar[tuple[str, ...]] = ()
     #: True when no slip holds the mount point to the wheel plane: :math:`P_i` moves only along
     #: :math:`\mathbf j_i` (a steered unit of this sort is steered to its mount point's velocity)
     rolls_in_plane: ClassVar[bool] = False
@@ -119,12 +115,10 @@ class WheelUnit(UnitGeometry, UnitMechanism, DesignHints):
                         f"position is too large for double-precision kinematics (4 |d_i| "
                         f"overflows): {C.show(self.position)}"
                     )
-                for key in self.file_keys():  # a length whose reciprocal overflows (a subnormal)
-                    v = getattr(self, key.field)
-                    if key.check != "pair" and not key.degrees and v != 0 and not np.isfinite(1.0 / abs(float(v))):
+                for name, v in self.parameters().items():  # a length whose reciprocal overflows (a subnormal)
+                    if name not in self.ANGLES and v != 0 and not np.isfinite(1.0 / abs(float(v))):
                         raise InputValueError(
-                            f"{key.field} is too small for double-precision kinematics "
-                            f"(1/{key.field} overflows): {C.show(v)}"
+                            f"{name} is too small for double-precision kinematics (1/{name} overflows): {C.show(v)}"
                         )
                 L, EL = (np.asarray(m, dtype=float) for m in self.block_terms(NUMERIC))
                 ok = np.isfinite(2 * np.abs(L) + 2 * np.abs(EL)).all()
@@ -378,13 +372,3 @@ class WheelUnit(UnitGeometry, UnitMechanism, DesignHints):
         """
         L = self.local_block(backend)
         return L, E(backend) @ L
-
-    @classmethod
-    def file_keys(cls) -> tuple[FileKey, ...]:
-        """Every key of this kind's table in a robot file: :data:`~wmr.model.wheels.filekeys.COMMON_KEYS`, then its own.
-
-        Returns
-        -------
-        tuple of FileKey
-        """
-        return COMMON_KEYS + cls.FILE_KEYS

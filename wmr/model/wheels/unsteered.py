@@ -28,7 +28,6 @@ from ..backend import NUMERIC, Backend, choose
 from ..lazysympy import is_sympy
 from ..platform import rotated
 from ..types import ArrayLike, FloatArray, Matrix, Numbers, Point
-from .filekeys import FileKey
 from .unit import WheelUnit
 
 __all__ = ["UnsteeredUnit", "constant", "radians", "in_degrees"]
@@ -124,10 +123,7 @@ class UnsteeredUnit(WheelUnit):
 
     angle: float = None  # type: ignore[assignment]
     angle_deg: InitVar[float | None] = field(default=None, kw_only=True)
-    #: the angle, written in degrees in a robot file
-    FILE_KEYS: ClassVar[tuple[FileKey, ...]] = (
-        FileKey("angle_deg", "angle", "the steering angle in degrees", degrees=True),
-    )
+    ANGLES: ClassVar[tuple[str, ...]] = ("angle",)
 
     def __post_init__(self, angle_deg=None, *more) -> None:
         object.__setattr__(self, "angle", in_degrees(type(self).__name__, "angle", self.angle, angle_deg))

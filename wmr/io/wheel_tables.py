@@ -1,10 +1,14 @@
-r"""How a wheel unit is written in a robot file: its keys, what they mean, how they are read and written.
+r"""How a wheel unit is written in a robot file: each kind's keys, what they mean, how they are read and written.
 
-Every wheel kind declares the keys of its ``[[wheel]]`` table (``FILE_KEYS``, a tuple of
-:class:`FileKey`) after the two every unit has, :data:`COMMON_KEYS` (``position`` and ``radius``);
-:mod:`wmr.io` reads and writes robot files from these declarations alone.  A key fills one field
-of the unit: read with :meth:`FileKey.read` (checked, with a message that says what the key means),
-written with :meth:`FileKey.write`.  Angles are written in degrees and held in radians.
+A wheel kind answers for its mathematics (:mod:`wmr.model.wheels`); how it is written in a file is this
+module's.  Every kind has an entry here (:func:`register`): the keys of its ``[[wheel]]`` table, a
+tuple of :class:`FileKey`, after the two every unit has, :data:`COMMON_KEYS` (``position`` and
+``radius``); :mod:`wmr.io.toml` reads and writes robot files from these entries alone.  A key fills
+one field of the unit: read with :meth:`FileKey.read` (checked, with a message that says what the
+key means), written with :meth:`FileKey.write`.  Angles are written in degrees and held in radians.
+A kind takes the entry of its nearest base class that has one (a subclass of
+:class:`~wmr.model.wheels.unsteered.UnsteeredUnit` takes ``angle_deg``); :func:`has_file_keys` is what
+the contract test asks of every kind.
 
 Examples
 --------
@@ -15,6 +19,9 @@ Examples
 Traceback (most recent call last):
     ...
 wmr.errors.InputValueError: must not be negative (the offset d in metres, >= 0), got -1
+>>> import wmr
+>>> [k.name for k in file_keys(wmr.SwedishWheel)]
+['position', 'radius', 'angle_deg', 'roller_deg']
 """
 
 from __future__ import annotations
@@ -23,10 +30,22 @@ import math
 from dataclasses import dataclass
 from typing import Any
 
-from ...errors import InputTypeError, InputValueError
-from ..checks import show
+from ..errors import InputTypeError, InputValueError
+from ..model.checks import show
+from ..model.wheels import CentredWheel, DualWheel, OffsetWheel, SwedishWheel, WheelUnit, wheel_kinds
+from ..model.wheels.unsteered import UnsteeredUnit
 
-__all__ = ["FileKey", "COMMON_KEYS", "toml_text", "toml_string"]
+__all__ = [
+    "FileKey",
+    "COMMON_KEYS",
+    "toml_text",
+    "toml_string",
+    "register",
+    "file_keys",
+    "has_file_keys",
+    "readable_kinds",
+    "wheel_keys",
+]
 
 _CHECKS = ("number", "positive", "nonnegative", "pair")
 _ESCAPES = {'"': '\\"', "\\": "\\\\", "\n": "\\n", "\t": "\\t"}
@@ -178,4 +197,111 @@ class FileKey:
 COMMON_KEYS = (
     FileKey("position", "position", "the mount point [x, y] in metres", check="pair"),
     FileKey("radius", "r", "the wheel radius in metres, > 0", check="positive"),
+)
+
+#: each kind's own keys (:func:`register`), by class
+_KEYS: dict[type, tuple[FileKey, ...]] = {}
+
+
+def register(kind: type, keys: tuple[FileKey, ...]) -> None:
+    """Declare the keys of a wheel kind's table in a robot file, after :data:`COMMON_KEYS`.
+
+    Parameters
+    ----------
+    kind : type
+        A subclass of :class:`~wmr.model.wheels.WheelUnit`.
+    keys : tuple of FileKey
+        Its own keys (empty for a kind with none); each fills the field it names.
+
+    Returns
+    -------
+    None
+
+    Raises
+    ------
+    wmr.errors.InputTypeError
+        If ``kind`` is not a wheel kind or a key is not a :class:`FileKey`.
+    """
+    if not (isinstance(kind, type) and issubclass(kind, WheelUnit)):
+        raise InputTypeError(f"kind must be a subclass of WheelUnit, got {show(kind)}")
+    keys = tuple(keys)
+    if not all(isinstance(k, FileKey) for k in keys):
+        raise InputTypeError(f"keys must be FileKey objects, got {show(keys)}")
+    _KEYS[kind] = keys
+
+
+def file_keys(kind: type) -> tuple[FileKey, ...]:
+    """Every key of a kind's table in a robot file: :data:`COMMON_KEYS`, then its own.
+
+    Parameters
+    ----------
+    kind : type
+        A wheel kind with an entry (its own or a base class's).
+
+    Returns
+    -------
+    tuple of FileKey
+
+    Raises
+    ------
+    NotImplementedError
+        For a kind without an entry (the message says how to register one).
+    """
+    for c in kind.__mro__:
+        if c in _KEYS:
+            return COMMON_KEYS + _KEYS[c]
+    raise NotImplementedError(
+        f"{kind.__name__} has no robot-file keys: register them with wmr.io.wheel_tables.register"
+    )
+
+
+def has_file_keys(kind: type) -> bool:
+    """Whether a wheel kind has robot-file keys (its own entry or a base class's).
+
+    Parameters
+    ----------
+    kind : type
+
+    Returns
+    -------
+    bool
+    """
+    return any(c in _KEYS for c in kind.__mro__)
+
+
+def wheel_keys() -> dict[str, tuple[str, ...]]:
+    """The keys of each wheel kind's table, as the kinds declare them (all required; ``driven`` is optional).
+
+    Returns
+    -------
+    dict of str to tuple of str
+        ``{kind: ("type", "position", "radius", its own keys...)}``, every registered kind.
+
+    Examples
+    --------
+    >>> wheel_keys()["dual"]
+    ('type', 'position', 'radius', 'half_separation')
+    """
+    return {kind: ("type",) + tuple(k.name for k in file_keys(cls)) for kind, cls in readable_kinds().items()}
+
+
+def readable_kinds() -> dict[str, type]:
+    """The registered wheel kinds that robot files can hold: those with keys here.
+
+    Returns
+    -------
+    dict of str to type
+        ``{kind: class}``, in the order of :func:`wmr.model.wheels.wheel_kinds`.
+    """
+    return {kind: cls for kind, cls in wheel_kinds().items() if has_file_keys(cls)}
+
+
+register(CentredWheel, ())
+register(OffsetWheel, (FileKey("offset", "d", "the offset d in metres, >= 0", check="nonnegative"),))
+register(DualWheel, (FileKey("half_separation", "b", "half the wheel separation b in metres, > 0", check="positive"),))
+_ANGLE = FileKey("angle_deg", "angle", "the steering angle in degrees", degrees=True)
+register(UnsteeredUnit, (_ANGLE,))  # a fixed wheel, and any kind at a constant angle
+register(
+    SwedishWheel,
+    (_ANGLE, FileKey("roller_deg", "roller", "the roller angle in degrees (90 omni, 45 mecanum)", degrees=True)),
 )

@@ -1,0 +1,150 @@
+r"""What a wheel kind offers design: its dead zone, the change that makes its block isotropic, its other builds.
+
+A wheel kind answers for its mathematics (:mod:`wmr.model.wheels`); what the design analyses make of it
+is this module's, one entry per kind and question (:func:`functools.singledispatch` on the unit's
+class, so a subclass takes its base's entry, and a kind with nothing to say takes the default: no
+dead zone, no change, no other build).
+
+=============================  ====================================================================
+kind                           entries
+=============================  ====================================================================
+:class:`~wmr.OffsetWheel`      dead zone :math:`d`; isotropic with :math:`d = r` (the paper's (46))
+:class:`~wmr.SwedishWheel`     isotropic with omni rollers (:math:`\gamma = \pi/2`); the other hand
+=============================  ====================================================================
+
+The advice of ``wmr analyze`` applies each change to a copy of the robot and re-analyses it
+(:mod:`wmr.analysis.advice`); the overview reports the dead zone (:mod:`wmr.analysis.overview`).
+
+Examples
+--------
+>>> import numpy as np, wmr
+>>> dead_zone(wmr.OffsetWheel((0, 0), r=0.1, d=0.03)), dead_zone(wmr.CentredWheel((0, 0), r=0.1))
+(0.03, None)
+>>> isotropic_change(wmr.OffsetWheel((0, 0), r=0.05, d=0.03)).unit.d
+0.05
+>>> [c.words for c in other_builds(wmr.SwedishWheel((0, 0), r=0.05, angle=0.0, roller=np.pi / 4))]
+['of the other hand (rollers at -45 deg)']
+"""
+
+from __future__ import annotations
+
+import functools
+from dataclasses import dataclass, replace
+from typing import Any
+
+import numpy as np
+
+from ..model.tolerance import TOL
+from ..model.wheels import OffsetWheel, SwedishWheel, WheelUnit
+
+__all__ = ["Change", "dead_zone", "isotropic_change", "other_builds"]
+
+
+@dataclass(frozen=True)
+class Change:
+    """A unit changed, and the change in words.
+
+    Attributes
+    ----------
+    words : str
+        What is changed; an isotropy change is a sentence about ``{wheels}`` (a format field for the
+        wheel numbers), another build the words after "build wheel k".
+    unit : WheelUnit
+        The changed unit.
+    """
+
+    words: str
+    unit: WheelUnit
+
+
+@functools.singledispatch
+def dead_zone(unit: Any) -> float | None:
+    """The radius of C's circle when every unit is steered with its drives locked, if this unit has one.
+
+    The paper's dead zone of a robot on offset wheels (:func:`wmr.analysis.overview.dead_zone_radius`).
+
+    Parameters
+    ----------
+    unit : WheelUnit
+
+    Returns
+    -------
+    float or None
+        None: steering the unit does not move the platform (or the unit is not steered).
+    """
+    return None
+
+
+@dead_zone.register
+def _offset_dead_zone(unit: OffsetWheel) -> float | None:
+    """Steered with the drives locked, offset wheels carry C on a circle of radius d."""
+    return float(unit.d)
+
+
+@functools.singledispatch
+def isotropic_change(unit: Any) -> Change | None:
+    """The change that makes this unit's block isotropic (equal singular values), if one does and is needed.
+
+    Parameters
+    ----------
+    unit : WheelUnit
+
+    Returns
+    -------
+    Change or None
+        None when the block is isotropic already or no choice of the kind's parameters makes it so.
+    """
+    return None
+
+
+@isotropic_change.register
+def _offset_isotropic(unit: OffsetWheel) -> Change | None:
+    r"""``d = r`` (the paper's (46)) makes :math:`\mathbf L_i = -r\mathbf 1`."""
+    d, r = float(unit.d), float(unit.r)
+    if abs(d - r) <= TOL * max(d, r):
+        return None
+    return Change("set offset = radius on wheel {wheels} (d = r, the paper's (46))", replace(unit, d=unit.r))
+
+
+@isotropic_change.register
+def _swedish_isotropic(unit: SwedishWheel) -> Change | None:
+    r"""Omni rollers (:math:`\gamma = \pi/2`) make the block :math:`r\,\mathbf R`."""
+    if abs(np.cos(float(unit.roller))) <= TOL:
+        return None
+    return Change(
+        "use omni wheels (rollers at 90 deg) on wheel {wheels}: a Swedish wheel's block "
+        "r[[0, sin g], [-1, -cos g]] has singular values r sqrt(1 +- cos g)",
+        replace(unit, roller=np.pi / 2),
+    )
+
+
+@functools.singledispatch
+def other_builds(unit: Any) -> tuple[Change, ...]:
+    """Other ways to build this unit that change which motions its motors drive.
+
+    The design advice tries them when the motors of a robot cannot drive every motion it can make
+    (:func:`wmr.analysis.advice.actuation_advice`).
+
+    Parameters
+    ----------
+    unit : WheelUnit
+
+    Returns
+    -------
+    tuple of Change
+        Empty for the kinds without such a choice.
+    """
+    return ()
+
+
+@other_builds.register
+def _swedish_builds(unit: SwedishWheel) -> tuple[Change, ...]:
+    r"""The wheel of the other hand (rollers at :math:`-\gamma`), unless it is an omni wheel."""
+    if abs(np.cos(float(unit.roller))) <= TOL:
+        return ()
+    return (
+        Change(
+            f"of the other hand (rollers at {np.degrees(-float(unit.roller)):.0f} deg)",
+            replace(unit, roller=-unit.roller),
+        ),
+    )

@@ -1,0 +1,99 @@
+"""Names that moved out of the wheel kinds (issue 29), kept for one release with a warning naming the new place.
+
+A wheel kind answers for its mathematics only; its drawing, its robot-file keys and its design hints
+moved to the layers that use them.  ``import wmr`` imports this module, which puts the old methods
+back on :class:`~wmr.model.wheels.WheelUnit` (each warns with a :class:`DeprecationWarning` and calls
+its replacement) and the old modules' names in :data:`sys.modules`:
+
+==========================================  ==========================================================
+before                                      now
+==========================================  ==========================================================
+``unit.parts(beta)``                        :func:`wmr.plot.parts.unit_parts` ``(unit, beta)``
+``unit.drawn_angle(beta)``                  :func:`wmr.plot.parts.drawn_angle` ``(unit, beta)``
+``Kind.file_keys()``, ``Kind.FILE_KEYS``    :func:`wmr.io.wheel_tables.file_keys` ``(Kind)``, ``register``
+``unit.dead_zone()``                        :func:`wmr.analysis.unit_design.dead_zone` ``(unit)``
+``unit.isotropy_advice()``                  :func:`wmr.analysis.unit_design.isotropic_change` ``(unit).words``
+``unit.isotropic_variant()``                :func:`wmr.analysis.unit_design.isotropic_change` ``(unit).unit``
+``unit.other_builds()``                     :func:`wmr.analysis.unit_design.other_builds` ``(unit)``
+``wmr.model.wheels.parts``                  :mod:`wmr.plot.parts`
+``wmr.model.wheels.filekeys``               :mod:`wmr.io.wheel_tables`
+``wmr.model.wheels.design.DesignHints``     :mod:`wmr.analysis.unit_design` (no base class any more)
+==========================================  ==========================================================
+"""
+
+from __future__ import annotations
+
+import sys
+import warnings
+from collections.abc import Callable
+from typing import Any
+
+from .analysis import unit_design
+from .io import wheel_tables
+from .model.wheels import WheelUnit
+from .plot import parts
+
+__all__ = ["MOVED"]
+
+#: old name -> its replacement, as the warnings name them
+MOVED = {
+    "WheelUnit.parts(beta)": "wmr.plot.parts.unit_parts(unit, beta)",
+    "WheelUnit.drawn_angle(beta)": "wmr.plot.parts.drawn_angle(unit, beta)",
+    "WheelUnit.file_keys()": "wmr.io.wheel_tables.file_keys(kind)",
+    "WheelUnit.dead_zone()": "wmr.analysis.unit_design.dead_zone(unit)",
+    "WheelUnit.isotropy_advice()": "wmr.analysis.unit_design.isotropic_change(unit).words",
+    "WheelUnit.isotropic_variant()": "wmr.analysis.unit_design.isotropic_change(unit).unit",
+    "WheelUnit.other_builds()": "wmr.analysis.unit_design.other_builds(unit), Change(words, unit) objects",
+}
+
+
+def _warn(old: str) -> None:
+    warnings.warn(f"{old} is deprecated: use {MOVED[old]}", DeprecationWarning, stacklevel=3)
+
+
+def _method(old: str, new: Callable[..., Any]) -> Callable[..., Any]:
+    """The old method: warns, then calls ``new`` with the unit (and ``beta``, for a method that took it)."""
+    returns = "Returns\n-------\nobject\n    What the replacement returns.\n"
+    if "(beta)" in old:
+
+        def method(self: Any, beta: float) -> Any:
+            _warn(old)
+            return new(self, beta)
+
+        method.__doc__ = f"Deprecated: {MOVED[old]}.\n\nParameters\n----------\nbeta : float\n\n{returns}"
+        return method
+
+    def plain(self: Any) -> Any:
+        _warn(old)
+        return new(self)
+
+    plain.__doc__ = f"Deprecated: {MOVED[old]}.\n\n{returns}"
+    return plain
+
+
+def _words(unit: Any) -> str | None:
+    change = unit_design.isotropic_change(unit)
+    return None if change is None else change.words
+
+
+def _variant(unit: Any) -> Any:
+    change = unit_design.isotropic_change(unit)
+    return None if change is None else change.unit
+
+
+def _builds(unit: Any) -> tuple[tuple[str, Any], ...]:
+    return tuple((c.words, c.unit) for c in unit_design.other_builds(unit))
+
+
+for _old, _new in (
+    ("WheelUnit.parts(beta)", parts.unit_parts),
+    ("WheelUnit.drawn_angle(beta)", parts.drawn_angle),
+    ("WheelUnit.dead_zone()", unit_design.dead_zone),
+    ("WheelUnit.isotropy_advice()", _words),
+    ("WheelUnit.isotropic_variant()", _variant),
+    ("WheelUnit.other_builds()", _builds),
+):
+    setattr(WheelUnit, _old.split(".")[1].split("(")[0], _method(_old, _new))
+WheelUnit.file_keys = classmethod(_method("WheelUnit.file_keys()", wheel_tables.file_keys))  # type: ignore[attr-defined]
+sys.modules.setdefault("wmr.model.wheels.parts", parts)
+sys.modules.setdefault("wmr.model.wheels.filekeys", wheel_tables)
