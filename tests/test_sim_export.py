@@ -14,9 +14,9 @@ import pytest
 
 import wmr
 from wmr.errors import InputTypeError, InputValueError
+from wmr.io.mechanism import VERTICAL, Body, mount, root_body, wheel
 from wmr.model.backend import NUMERIC
 from wmr.model.wheels import Joint, WheelUnit
-from wmr.model.wheels.mechanism import VERTICAL, Body, mount, wheel
 from wmr.sim import VELOCITY, Params, Schedule, Simulation, export, run, servo, start_angles, to_mjcf
 
 mujoco = pytest.importorskip("mujoco")
@@ -179,21 +179,24 @@ class TwinCastor(WheelUnit):
             "j": j_dir,
         }
 
-    def root_body(self, height):
-        r, d, b = float(self.r), float(self.d), float(self.b)
-        z = r - height
-        swivel, drive1, drive2 = self.joints
-        wheels = (wheel("wheel1", (b, -d, z), r, drive1), wheel("wheel2", (-b, -d, z), r, drive2))
-        return Body(
-            "swivel",
-            mount(self.position),
-            0.0,
-            swivel,
-            VERTICAL,
-            size=d,
-            rods=(((0.0, 0.0, 0.0), (0.0, -d, z)), ((b, -d, z), (-b, -d, z))),
-            children=wheels,
-        )
+
+@root_body.register(TwinCastor)
+def _twin_castor(unit, height):
+    """Its own entry: the swivel at P, the arm to H = P - d j, the two wheels at H +- b i."""
+    r, d, b = float(unit.r), float(unit.d), float(unit.b)
+    z = r - height
+    swivel, drive1, drive2 = unit.joints
+    wheels = (wheel("wheel1", (b, -d, z), r, drive1), wheel("wheel2", (-b, -d, z), r, drive2))
+    return Body(
+        "swivel",
+        mount(unit.position),
+        0.0,
+        swivel,
+        VERTICAL,
+        size=d,
+        rods=(((0.0, 0.0, 0.0), (0.0, -d, z)), ((b, -d, z), (-b, -d, z))),
+        children=wheels,
+    )
 
 
 def test_a_kind_wmr_sim_has_never_seen_is_exported_from_its_own_description():
@@ -238,7 +241,9 @@ def test_a_unit_without_a_mechanism_is_refused():
 
     @dataclasses.dataclass(frozen=True)
     class Mute(wmr.CentredWheel):  # (no kind of its own: not registered)
-        root_body = WheelUnit.root_body  # the default: no description
+        pass
+
+    root_body.register(Mute)(root_body.dispatch(object))  # the default: no description
 
     robot = wmr.Robot([wmr.CentredWheel((0.3, 0.0), r=0.05), Mute((-0.3, 0.0), r=0.05)])
     with pytest.raises(NotImplementedError, match=r"wheel 2 \(Mute\): Mute does not describe its mechanism"):

@@ -14,6 +14,7 @@ import sympy as sp
 
 import wmr
 from wmr.errors import InputTypeError, InputValueError
+from wmr.io.mechanism import mechanism, root_body
 from wmr.io.wheel_tables import FileKey
 from wmr.model.wheels import Joint, WheelUnit, wheel_kind, wheel_kinds
 from wmr.model.wheels.joints import actuation
@@ -52,22 +53,37 @@ def test_the_mechanism_contract_can_fail():
 
     @dataclasses.dataclass(frozen=True)
     class Ahead(wmr.OffsetWheel):  # H = P + d j: not where points() puts the wheel
-        def root_body(self, height):
-            root = wmr.OffsetWheel.root_body(self, height)
-            arm = root.children[0]
-            return dataclasses.replace(root, children=(dataclasses.replace(arm, pos=(0.0, self.d, arm.pos[2])),))
+        pass
+
+    @root_body.register(Ahead)
+    def _ahead(unit, height):
+        root = root_body.dispatch(wmr.OffsetWheel)(unit, height)
+        arm = root.children[0]
+        return dataclasses.replace(root, children=(dataclasses.replace(arm, pos=(0.0, unit.d, arm.pos[2])),))
 
     @dataclasses.dataclass(frozen=True)
     class Deaf(wmr.OffsetWheel):  # the kind's default actuation, whatever the unit's
-        def root_body(self, height):
-            return wmr.OffsetWheel(self.position, self.r, d=self.d).root_body(height)
+        pass
+
+    @root_body.register(Deaf)
+    def _deaf(unit, height):
+        return root_body(wmr.OffsetWheel(unit.position, unit.r, d=unit.d), height)
 
     @dataclasses.dataclass(frozen=True)
     class Shrug(wmr.CentredWheel):
-        def root_body(self, height):
-            raise NotImplementedError("no")
+        pass
 
-    for cls in (Ahead, Deaf, Shrug):
+    @root_body.register(Shrug)
+    def _shrug(unit, height):
+        raise NotImplementedError("no")
+
+    @dataclasses.dataclass(frozen=True)
+    class Mute(wmr.CentredWheel):  # no entry of its own: the default, no description
+        pass
+
+    root_body.register(Mute)(root_body.dispatch(object))
+
+    for cls in (Ahead, Deaf, Shrug, Mute):
         with pytest.raises(AssertionError):
             check_mechanism(cls)
     check_mechanism(wmr.OffsetWheel)
@@ -75,14 +91,14 @@ def test_the_mechanism_contract_can_fail():
 
 def test_a_mechanism_takes_a_height_and_numbers():
     unit = wmr.OffsetWheel((0.3, 0.0), r=0.05, d=0.02)
-    assert unit.mechanism(0.05).wheels[0].pos == (0.0, -0.02, 0.0)
+    assert mechanism(unit, 0.05).wheels[0].pos == (0.0, -0.02, 0.0)
     with pytest.raises(InputValueError, match=r"height .* at least the wheel radius r = 0.05, got 0.04"):
-        unit.mechanism(0.04)
+        mechanism(unit, 0.04)
     with pytest.raises(InputTypeError, match="height"):
-        unit.mechanism("tall")  # type: ignore[arg-type]
+        mechanism(unit, "tall")  # type: ignore[arg-type]
     with pytest.raises(InputValueError, match="free symbols"):
-        wmr.OffsetWheel((0.3, 0.0), r=0.05, d=sp.Symbol("d")).mechanism(0.05)
-    exact = wmr.OffsetWheel((sp.sqrt(3) / 10, 0), r=sp.Rational(1, 20), d=sp.Rational(1, 50)).mechanism(0.05)
+        mechanism(wmr.OffsetWheel((0.3, 0.0), r=0.05, d=sp.Symbol("d")), 0.05)
+    exact = mechanism(wmr.OffsetWheel((sp.sqrt(3) / 10, 0), r=sp.Rational(1, 20), d=sp.Rational(1, 50)), 0.05)
     assert exact.root.pos == (float(sp.sqrt(3) / 10), 0.0, 0.0) and exact.wheels[0].pos == (0.0, -0.02, 0.0)
 
 
@@ -195,26 +211,6 @@ class BallCaster(UnsteeredUnit):
         numpy.ndarray (2, 2) or sympy.Matrix (2, 2)
         """
         return backend.matrix([[0, self.r], [-self.r, 0]])
-
-    def root_body(self, height):
-        """None: refused, since a ball turns about every axis in its socket.
-
-        Parameters
-        ----------
-        height : float
-
-        Returns
-        -------
-        Body
-            Never.
-
-        Raises
-        ------
-        NotImplementedError
-            Always, with the reason.
-        """
-        raise NotImplementedError("a ball caster turns about every axis in its socket: two hinges in series would "
-                                  "lock when the outer one turns a quarter turn, and a mechanism has hinges only")
 '''
 
 DIFFERENTIAL_WITH_BALL = """\
@@ -249,6 +245,7 @@ from wheel_contract import check_kind
 
 ball = wheel_kinds()["ball"]
 from wmr.io import wheel_tables
+from wmr.io.mechanism import root_body
 from wmr.plot.parts import Disc, has_parts, unit_parts
 
 
@@ -270,6 +267,15 @@ refused("BallCaster has no entry in wmr.plot.parts.unit_parts")
 @unit_parts.register(ball)                                 # its drawing, registered where drawings live
 def _ball(unit, beta):
     return (Disc(np.asarray(unit.position, dtype=float), 0.0, float(unit.r), arrow=False),)
+
+
+refused("BallCaster has no entry in wmr.io.mechanism.root_body")
+
+
+@root_body.register(ball)                                  # a refusal that says why is an entry
+def _no_ball(unit, height):
+    raise NotImplementedError("a ball caster turns about every axis in its socket: two hinges in series would "
+                              "lock when the outer one turns a quarter turn, and a mechanism has hinges only")
 
 
 check_kind(ball)                                           # the contract every kind meets

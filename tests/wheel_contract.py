@@ -19,6 +19,7 @@ import wmr
 from wmr.analysis.linalg import left_null_space, singular_values
 from wmr.analysis.overview import overview
 from wmr.analysis.unit_design import dead_zone, isotropic_change
+from wmr.io import mechanism as M
 from wmr.io import wheel_tables as K
 from wmr.model.backend import NUMERIC
 from wmr.plot import parts as P
@@ -223,16 +224,17 @@ def _wheel_frames(body, beta, R=None, o=None):
 def check_mechanism(cls):
     """Its bodies and joints for a physics engine: the unit's own joints (with its actuation), each once, a wheel body
     per wheel at any steering angle where points() puts it, its axle i, at height r; or a refusal that says why."""
+    assert M.has_mechanism(cls), f"{cls.__name__} has no entry in wmr.io.mechanism.root_body"
     unit = example(cls)
     height = 1.5 * float(unit.r)
     try:
-        mech = unit.mechanism(height)
+        mech = M.mechanism(unit, height)
     except NotImplementedError as exc:
         assert len(str(exc).split()) >= 8, f"{cls.kind}: a refusal must say why, got {exc}"
         return
     assert sorted(mech.joints, key=lambda j: j.name) == sorted(unit.joints, key=lambda j: j.name)
     flipped = cls(**{**_fields(unit), "driven": {cls.JOINTS[0].name: not cls.JOINTS[0].driven}})
-    assert {j.name: j.driven for j in flipped.mechanism(height).joints} == {j.name: j.driven for j in flipped.joints}
+    assert {j.name: j.driven for j in M.mechanism(flipped, height).joints} == {j.name: j.driven for j in flipped.joints}
     assert sum(j.steering for j in mech.joints) == (1 if cls.steered else 0)
     for beta in (0.0, 0.7, -2.2):
         pts = unit.points(beta)

@@ -15,8 +15,12 @@ before                                      now
 ``unit.isotropy_advice()``                  :func:`wmr.analysis.unit_design.isotropic_change` ``(unit).words``
 ``unit.isotropic_variant()``                :func:`wmr.analysis.unit_design.isotropic_change` ``(unit).unit``
 ``unit.other_builds()``                     :func:`wmr.analysis.unit_design.other_builds` ``(unit)``
+``unit.mechanism(height)``                  :func:`wmr.io.mechanism.mechanism` ``(unit, height)``
+``unit.root_body(height)``                  :func:`wmr.io.mechanism.root_body` ``(unit, height)``
 ``wmr.model.wheels.parts``                  :mod:`wmr.plot.parts`
 ``wmr.model.wheels.filekeys``               :mod:`wmr.io.wheel_tables`
+``wmr.model.wheels.mechanism``              :mod:`wmr.io.mechanism` (``UnitMechanism``: no base class any more)
+``wmr.model.wheels.swedish.NO_FAITHFUL...``  :data:`wmr.io.mechanism.NO_FAITHFUL_MECHANISM`
 ``wmr.model.wheels.design.DesignHints``     :mod:`wmr.analysis.unit_design` (no base class any more)
 ==========================================  ==========================================================
 """
@@ -29,8 +33,8 @@ from collections.abc import Callable
 from typing import Any
 
 from .analysis import unit_design
-from .io import wheel_tables
-from .model.wheels import WheelUnit
+from .io import mechanism, wheel_tables
+from .model.wheels import WheelUnit, swedish
 from .plot import parts
 
 __all__ = ["MOVED"]
@@ -44,6 +48,8 @@ MOVED = {
     "WheelUnit.isotropy_advice()": "wmr.analysis.unit_design.isotropic_change(unit).words",
     "WheelUnit.isotropic_variant()": "wmr.analysis.unit_design.isotropic_change(unit).unit",
     "WheelUnit.other_builds()": "wmr.analysis.unit_design.other_builds(unit), Change(words, unit) objects",
+    "WheelUnit.mechanism(height)": "wmr.io.mechanism.mechanism(unit, height)",
+    "WheelUnit.root_body(height)": "wmr.io.mechanism.root_body(unit, height) (register a kind's with root_body.register)",
 }
 
 
@@ -52,15 +58,18 @@ def _warn(old: str) -> None:
 
 
 def _method(old: str, new: Callable[..., Any]) -> Callable[..., Any]:
-    """The old method: warns, then calls ``new`` with the unit (and ``beta``, for a method that took it)."""
+    """The old method: warns, then calls ``new`` with the unit (and the one argument the old method took)."""
+    arg = old[old.index("(") + 1 : -1]
     returns = "Returns\n-------\nobject\n    What the replacement returns.\n"
-    if "(beta)" in old:
+    if arg:
 
-        def method(self: Any, beta: float) -> Any:
+        def method(self: Any, value: Any) -> Any:
             _warn(old)
-            return new(self, beta)
+            return new(self, value)
 
-        method.__doc__ = f"Deprecated: {MOVED[old]}.\n\nParameters\n----------\nbeta : float\n\n{returns}"
+        method.__doc__ = (
+            f"Deprecated: {MOVED[old]}.\n\nParameters\n----------\nvalue : object\n    ``{arg}``.\n\n{returns}"
+        )
         return method
 
     def plain(self: Any) -> Any:
@@ -92,8 +101,12 @@ for _old, _new in (
     ("WheelUnit.isotropy_advice()", _words),
     ("WheelUnit.isotropic_variant()", _variant),
     ("WheelUnit.other_builds()", _builds),
+    ("WheelUnit.mechanism(height)", mechanism.mechanism),
+    ("WheelUnit.root_body(height)", mechanism.root_body),
 ):
     setattr(WheelUnit, _old.split(".")[1].split("(")[0], _method(_old, _new))
 WheelUnit.file_keys = classmethod(_method("WheelUnit.file_keys()", wheel_tables.file_keys))  # type: ignore[attr-defined]
 sys.modules.setdefault("wmr.model.wheels.parts", parts)
 sys.modules.setdefault("wmr.model.wheels.filekeys", wheel_tables)
+sys.modules.setdefault("wmr.model.wheels.mechanism", mechanism)
+swedish.NO_FAITHFUL_MECHANISM = mechanism.NO_FAITHFUL_MECHANISM  # type: ignore[attr-defined]

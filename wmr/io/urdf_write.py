@@ -1,7 +1,7 @@
 r"""A robot as a URDF file: the kinematic tree that :func:`wmr.io.from_urdf` reads back as the same robot.
 
 Every unit is written from its **mechanism**, the tree of bodies on its joints that its kind describes
-(:meth:`~wmr.model.wheels.WheelUnit.mechanism`, :mod:`wmr.model.wheels.mechanism`, the description
+(:func:`~wmr.io.mechanism.mechanism`, each kind's entry in :mod:`wmr.io.mechanism`, the description
 :mod:`wmr.sim` gives MuJoCo), so this module knows no wheel kind:
 
 * ``base_footprint`` on the ground at C, ``base_link`` above it on the mount plane (at the height of
@@ -38,8 +38,8 @@ from ..errors import InputTypeError, InputValueError
 from ..model import validation as V
 from ..model.robot import Robot
 from ..model.types import PathLike
-from ..model.wheels.mechanism import Mechanism, wheel
 from .decimals import float_text, length_scale, quantise
+from .mechanism import Mechanism, mechanism, wheel
 
 __all__ = ["ROLLERS", "joint_name", "to_urdf"]
 
@@ -143,7 +143,7 @@ def _rollers(i, wheel_link, r, gamma, size):
 def _mechanism(i, u, height):
     """The unit's mechanism; a unit without one (a Swedish wheel) as a fixed wheel's, with its rollers."""
     try:
-        return u.mechanism(height), None
+        return mechanism(u, height), None
     except NotImplementedError as exc:
         gamma = getattr(u, "roller", None)  # the rollers' angle to the axle (a Swedish wheel's)
         drives = [j for j in u.joints if j.kind == "drive"]

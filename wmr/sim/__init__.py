@@ -3,7 +3,7 @@ r"""Any :class:`wmr.Robot` in a physics engine (MuJoCo): export, run, measure.
 wmr's model is the paper's: rigid bodies, point contacts, no slip.  This package puts a robot into
 MuJoCo, where wheels have mass, contacts have friction and servos have limits, so that what the
 model predicts can be measured.  It knows no wheel kind: each unit describes its own bodies and
-joints (:meth:`wmr.model.wheels.WheelUnit.mechanism`, plain data) and says which joints are driven
+joints (:func:`wmr.io.mechanism.mechanism`, plain data) and says which joints are driven
 (``driven=``; a castor is an offset wheel with both joints passive).
 
 - :mod:`wmr.sim.params`: :class:`Params`, the physical parameters (masses, friction, servo limits)

@@ -1,7 +1,7 @@
 r"""A wheel unit's mechanism in MuJoCo's terms: servos, masses, inertias and geoms of its bodies.
 
-Each wheel kind describes its own bodies and joints as plain data
-(:meth:`wmr.model.wheels.WheelUnit.mechanism`, :mod:`wmr.model.wheels.mechanism`); this module turns
+Each wheel kind's bodies and joints are plain data
+(:func:`wmr.io.mechanism.mechanism`, each kind's entry in :mod:`wmr.io.mechanism`); this module turns
 any such tree into MJCF bodies, knowing no wheel kind:
 
 * a joint gets a servo if the unit's joint is driven (``unit.joints``): a steering joint
@@ -23,8 +23,8 @@ import functools
 import numpy as np
 
 from ..io.decimals import float_text, quantise
+from ..io.mechanism import Body, Mechanism, mechanism
 from ..model.wheels.joints import Joint
-from ..model.wheels.mechanism import Body, Mechanism
 from .params import Params
 
 __all__ = ["POSITION", "VELOCITY", "body_xml", "height_of", "mechanisms", "num", "nums", "servo"]
@@ -106,7 +106,7 @@ def mechanisms(robot, height: float) -> tuple[Mechanism, ...]:
     out = []
     for i, u in enumerate(robot.wheels):
         try:
-            m = u.mechanism(height)
+            m = mechanism(u, height)
             for j in m.joints:
                 servo(j)
         except NotImplementedError as e:

@@ -2,7 +2,7 @@ r"""Any :class:`wmr.Robot` as a MuJoCo model (MJCF text): :func:`to_mjcf`.
 
 The model: a ground plane; the platform, a free body whose frame is the body frame of wmr
 (origin C on the mount plane, x forward, z up); under it each unit's bodies and joints, as the unit
-describes them (:meth:`wmr.model.wheels.WheelUnit.mechanism`; :mod:`wmr.sim.bodies` gives them
+describes them (:func:`wmr.io.mechanism.mechanism`; :mod:`wmr.sim.bodies` gives them
 masses and geoms); a servo on every driven joint (:func:`wmr.sim.bodies.servo`); a lock for every
 drive hinge (a joint equality ``<name>_lock``, inactive: the drive locked, as the paper's Section
 4.2 locks it, when switched on); and a keyframe ``start`` with the steering angles
@@ -26,11 +26,11 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputTypeError, InputValueError
+from ..io.mechanism import Mechanism
 from ..model import validation as V
 from ..model.robot import Robot
 from ..model.types import ArrayLike
 from ..model.wheels.joints import Joint, rate_columns
-from ..model.wheels.mechanism import Mechanism
 from .bodies import POSITION, body_xml, height_of, mechanisms, num, nums, servo
 from .params import GRAVITY, Params
 
@@ -47,7 +47,7 @@ class Export:
     robot : Robot
     params : Params
     mechanisms : tuple of Mechanism
-        One per unit, in the robot's order (:meth:`wmr.model.wheels.WheelUnit.mechanism`); their
+        One per unit, in the robot's order (:func:`wmr.io.mechanism.mechanism`); their
         joints carry the units' actuation.
     height : float
         Height of the mount plane, i.e. of C, above the ground at rest.
@@ -184,7 +184,7 @@ def to_mjcf(robot: Robot, beta: ArrayLike | None = None, params: Params | None =
     r"""A MuJoCo model (MJCF text) of any :class:`wmr.Robot`.
 
     The platform (a free body, its frame wmr's body frame at C) and each unit's bodies and joints as
-    the unit describes them (:meth:`wmr.model.wheels.WheelUnit.mechanism`: steering hinges, offset
+    the unit describes them (:func:`wmr.io.mechanism.mechanism`: steering hinges, offset
     arms, the dual wheel's swivel, drive hinges); position servos on the driven steering joints,
     velocity servos on the driven drive joints, none on passive joints (a castor's, a dual wheel's
     swivel); wheels touching the ground at one point each, with sliding, torsional and rolling

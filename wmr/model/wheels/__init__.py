@@ -20,7 +20,6 @@ module                               what
 :mod:`~wmr.model.wheels.registry`    the kinds, registered by being defined (:func:`wheel_kinds`)
 :mod:`~wmr.model.wheels.geometry`    a unit's points seen from above
 :mod:`~wmr.model.wheels.joints`      the joints of a unit (steer, swivel, drive, roller), driven or passive
-:mod:`~wmr.model.wheels.mechanism`   a unit's bodies and joints, as data for a physics engine (:mod:`wmr.sim`)
 :mod:`~wmr.model.wheels.unsteered`   the base of the kinds without a steering joint (a constant angle)
 one module per kind                  ``offset``, ``centred``, ``dual``, ``fixed``, ``swedish``, ...
 ===================================  ======================================================================
@@ -29,13 +28,13 @@ one module per kind                  ``offset``, ``centred``, ``dual``, ``fixed`
 :class:`WheelUnit` (or :class:`~wmr.model.wheels.unsteered.UnsteeredUnit`) that sets ``kind``,
 ``JOINTS`` and its other class attributes (``ANGLES``: which of its parameters are angles) and defines
 :meth:`~WheelUnit.local_block` and :meth:`~WheelUnit.beta_rate` (and :meth:`~WheelUnit.steering_row`
-where the default does not fit), and :meth:`~WheelUnit.mechanism` for a physics engine (or a refusal
-that says why, as the Swedish wheel's).  Every module of the package is imported with it, and
-defining the class registers the kind: :class:`wmr.Robot`, the analyses and :mod:`wmr.sim` take it
-without a change.  The outer layers hold their own entry per kind: its keys in a robot file
-(:func:`wmr.io.wheel_tables.register`) and its drawing (:func:`wmr.plot.parts.unit_parts`), which the
-contract test asks of every kind, and its design hints (:mod:`wmr.analysis.unit_design`).  A kind's
-module imports from the modules above, never from this package's ``__init__``.
+where the default does not fit).  Every module of the package is imported with it, and defining the
+class registers the kind: :class:`wmr.Robot` and the analyses take it without a change.  The outer
+layers hold their own entry per kind, which the contract test asks of every kind: its keys in a robot
+file (:func:`wmr.io.wheel_tables.register`), its bodies and joints (:func:`wmr.io.mechanism.root_body`,
+or a refusal that says why, as the Swedish wheel's) and its drawing (:func:`wmr.plot.parts.unit_parts`);
+its design hints default to none (:mod:`wmr.analysis.unit_design`).  A kind's module imports from the
+modules above, never from this package's ``__init__``.
 
 The kinds registered (built from the classes themselves, :func:`wheel_kinds`):
 """

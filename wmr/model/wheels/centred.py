@@ -22,7 +22,6 @@ import numpy as np
 from ..backend import NUMERIC, Backend
 from ..types import ArrayLike, FloatArray, Matrix
 from .joints import Joint
-from .mechanism import VERTICAL, Body, mount, wheel
 from .unit import WheelUnit
 
 __all__ = ["CentredWheel"]
@@ -81,29 +80,3 @@ class CentredWheel(WheelUnit):
         """
         _, _, steer, shape = self._rates_in(psi_dot, rates, steer)
         return np.zeros(shape) if steer is None else np.broadcast_to(steer, shape).copy()
-
-    def root_body(self, height: float) -> Body:
-        r"""The steer body at :math:`P_i` on ``steer``, the wheel under it (centre :math:`P_i`) on ``drive``.
-
-        See :mod:`~wmr.model.wheels.mechanism`.
-
-        Parameters
-        ----------
-        height : float
-            Height of the mount plane above the ground (>= r, checked by :meth:`mechanism`).
-
-        Returns
-        -------
-        Body
-        """
-        r = float(self.r)
-        steer, drive = self.joints
-        return Body(
-            "steer",
-            mount(self.position),
-            0.0,
-            steer,
-            VERTICAL,
-            size=r / 2,
-            children=(wheel("wheel", (0.0, 0.0, r - height), r, drive),),
-        )

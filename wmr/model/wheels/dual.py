@@ -25,7 +25,6 @@ from .. import checks as C
 from ..backend import NUMERIC, Backend
 from ..types import ArrayLike, FloatArray, Matrix
 from .joints import Joint
-from .mechanism import VERTICAL, Body, mount, wheel
 from .unit import WheelUnit
 
 __all__ = ["DualWheel"]
@@ -126,25 +125,3 @@ class DualWheel(WheelUnit):
     def _points(self, P, i_dir, j_dir):
         wheels = np.stack([P + self.b * i_dir, P - self.b * i_dir], axis=-2)
         return {"P": P, "H": P, "wheels": wheels, "i": i_dir, "j": j_dir}
-
-    def root_body(self, height: float) -> Body:
-        r"""The swivel body at :math:`P_i` on ``swivel``, wheel 1 at :math:`P_i + b\,\mathbf i_i` on ``drive1``, wheel 2
-        at :math:`P_i - b\,\mathbf i_i` on ``drive2``.
-
-        See :mod:`~wmr.model.wheels.mechanism`.
-
-        Parameters
-        ----------
-        height : float
-            Height of the mount plane above the ground (>= r, checked by :meth:`mechanism`).
-
-        Returns
-        -------
-        Body
-        """
-        r, b = float(self.r), float(self.b)
-        z = r - height  # the wheel centres at height r
-        swivel, drive1, drive2 = self.joints
-        wheels = (wheel("wheel1", (b, 0.0, z), r, drive1), wheel("wheel2", (-b, 0.0, z), r, drive2))
-        rods = (((b, 0.0, z), (-b, 0.0, z)), ((0.0, 0.0, 0.0), (0.0, 0.0, z)))  # the axle, the post to it
-        return Body("swivel", mount(self.position), 0.0, swivel, VERTICAL, size=r / 2, rods=rods, children=wheels)

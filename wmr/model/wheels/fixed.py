@@ -20,7 +20,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from .centred import CentredWheel
-from .mechanism import Body, wheel
 from .unsteered import UnsteeredUnit
 
 __all__ = ["FixedWheel"]
@@ -65,22 +64,3 @@ class FixedWheel(UnsteeredUnit):
     JOINTS = (CentredWheel.JOINTS[-1],)
     local_block = CentredWheel.local_block
     rolls_in_plane = True
-
-    def root_body(self, height: float) -> Body:
-        r"""The wheel alone, centred at :math:`P_i` and turned by its ``angle``, on ``drive``.
-
-        See :mod:`~wmr.model.wheels.mechanism`.
-
-        Parameters
-        ----------
-        height : float
-            Height of the mount plane above the ground (>= r, checked by :meth:`mechanism`).
-
-        Returns
-        -------
-        Body
-        """
-        r = float(self.r)
-        x, y = (float(v) for v in self.position)
-        (drive,) = self.joints
-        return wheel("wheel", (x, y, r - height), r, drive, angle=float(self.angle))

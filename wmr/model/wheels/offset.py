@@ -26,7 +26,6 @@ from .. import checks as C
 from ..backend import NUMERIC, Backend
 from ..types import ArrayLike, FloatArray, Matrix
 from .joints import Joint
-from .mechanism import VERTICAL, Body, mount, wheel
 from .unit import WheelUnit
 
 __all__ = ["OffsetWheel"]
@@ -111,33 +110,3 @@ class OffsetWheel(WheelUnit):
     def _points(self, P, i_dir, j_dir):
         H = P - self.d * j_dir
         return {"P": P, "H": H, "wheels": H[..., None, :], "i": i_dir, "j": j_dir}
-
-    def root_body(self, height: float) -> Body:
-        r"""The steer body at :math:`P_i` on ``steer``, its arm to the wheel at :math:`H_i = P_i - d\,\mathbf j_i`.
-
-        The wheel turns on ``drive``.
-
-        See :mod:`~wmr.model.wheels.mechanism`.
-
-        Parameters
-        ----------
-        height : float
-            Height of the mount plane above the ground (>= r, checked by :meth:`mechanism`).
-
-        Returns
-        -------
-        Body
-        """
-        r, d = float(self.r), float(self.d)
-        H = (0.0, -d, r - height)  # H = P - d j, the wheel centre at height r
-        steer, drive = self.joints
-        return Body(
-            "steer",
-            mount(self.position),
-            0.0,
-            steer,
-            VERTICAL,
-            size=max(d, r / 2),
-            rods=(((0.0, 0.0, 0.0), H),),
-            children=(wheel("wheel", H, r, drive),),
-        )

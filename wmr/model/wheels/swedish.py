@@ -28,20 +28,9 @@ from ..backend import NUMERIC, Backend
 from ..tolerance import TOL
 from ..types import FloatArray, Matrix
 from .joints import Joint
-from .mechanism import Body
 from .unsteered import UnsteeredUnit, in_degrees, radians
 
-__all__ = ["NO_FAITHFUL_MECHANISM", "SwedishWheel"]
-
-#: why a Swedish wheel has no mechanism a physics engine could take (:meth:`SwedishWheel.root_body`)
-NO_FAITHFUL_MECHANISM = (
-    "a Swedish (omni/mecanum) wheel rolls on a ring of free rollers, and a physics engine of rigid bodies and point "
-    "contacts (MuJoCo) has no roller contact: a faithful model needs every roller as a body on its own hinge, shaped "
-    "(a convex barrel mesh) so that the rollers' envelope is the wheel's circle, with the contact passing from roller "
-    "to roller and no encoder for the roller rate sigma_dot. wmr does not build that, and a sphere with anisotropic "
-    "friction would not be a roller at all: the wheel is refused rather than simulated as something else under its "
-    "name"
-)
+__all__ = ["SwedishWheel"]
 
 
 @dataclass(frozen=True)
@@ -169,22 +158,3 @@ class SwedishWheel(UnsteeredUnit):
         """
         t = C.number("angle", self.angle) + C.number("roller", self.roller)
         return np.array([np.cos(t), np.sin(t)])
-
-    def root_body(self, height: float) -> Body:
-        """None a physics engine could take faithfully: refused (:data:`NO_FAITHFUL_MECHANISM`).
-
-        Parameters
-        ----------
-        height : float
-
-        Returns
-        -------
-        Body
-            Never.
-
-        Raises
-        ------
-        NotImplementedError
-            Always, with :data:`NO_FAITHFUL_MECHANISM`.
-        """
-        raise NotImplementedError(f"Swedish wheel at {tuple(float(v) for v in self.position)}: {NO_FAITHFUL_MECHANISM}")

@@ -22,15 +22,14 @@ its steering             :meth:`~WheelUnit.beta_rate`; :meth:`~WheelUnit.steerin
                          turn it in a way the block leaves free (a dual wheel); ``rolls_in_plane``
 its geometry             :meth:`~WheelUnit.points` (batched, :mod:`~wmr.model.wheels.geometry`); how it
                          is drawn is the drawing layer's entry for it (:mod:`wmr.plot.parts`)
-its mechanism            :meth:`~WheelUnit.mechanism`: bodies and joints as data, which :mod:`wmr.sim`
-                         puts in a physics engine (:mod:`~wmr.model.wheels.mechanism`)
 its angles               ``ANGLES``: which of its parameters are angles (the others are lengths)
 =======================  ===========================================================================
 
 Defining the subclass registers the kind (:mod:`~wmr.model.wheels.registry`); the robot and the
 analyses then take it without a change.  The outer layers hold their own entries per kind: its keys
-in a robot file (:mod:`wmr.io.wheel_tables`), its drawing (:mod:`wmr.plot.parts`) and what the design
-advice makes of it (:mod:`wmr.analysis.unit_design`; the defaults say nothing).
+in a robot file (:mod:`wmr.io.wheel_tables`), its bodies and joints for URDF and a physics engine
+(:mod:`wmr.io.mechanism`), its drawing (:mod:`wmr.plot.parts`) and what the design advice makes of it
+(:mod:`wmr.analysis.unit_design`; the defaults say nothing).
 """
 
 from __future__ import annotations
@@ -50,14 +49,13 @@ from ..platform import E, rotated
 from ..types import ArrayLike, FloatArray, Matrix, Numbers, Point, Symbolic
 from .geometry import UnitGeometry
 from .joints import Joint, actuation
-from .mechanism import UnitMechanism
 from .registry import register
 
 __all__ = ["WheelUnit"]
 
 
 @dataclass(frozen=True)
-class WheelUnit(UnitGeometry, UnitMechanism):
+class WheelUnit(UnitGeometry):
     r"""A wheel unit at :math:`P_i`: the base of every wheel kind.
 
     Parameters

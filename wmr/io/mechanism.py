@@ -1,11 +1,12 @@
-r"""A wheel unit as bodies and joints, as data: what a physics engine needs to know of it.
+r"""A wheel unit as bodies and joints, as data: what a robot description (URDF, MJCF) is written from.
 
-wmr's model of a unit is a block of :math:`\mathbf J_2`; a physics engine needs the unit's
-**mechanism**: the intermediate body on its steering joint at :math:`P_i`, the arm to the wheel centre,
-the wheels on their drive joints.  Each kind describes its own as a tree of :class:`Body`
-(:meth:`UnitMechanism.root_body`; :meth:`UnitMechanism.mechanism` checks and assembles it), plain data
-with no engine in it; :mod:`wmr.sim` writes any such tree as a MuJoCo
-model (adding masses, friction and servos) without knowing which kind it came from.
+wmr's model of a unit is a block of :math:`\mathbf J_2` (:mod:`wmr.model.wheels`); a robot description
+and a physics engine need the unit's **mechanism**: the intermediate body on its steering joint at
+:math:`P_i`, the arm to the wheel centre, the wheels on their drive joints.  Each kind has an entry here,
+:func:`root_body` (:func:`functools.singledispatch` on the unit's class, so a subclass takes its base's
+entry), giving a tree of :class:`Body` that :func:`mechanism` checks and assembles: plain data with no
+engine in it.  :mod:`wmr.io.urdf_write` writes any such tree as URDF, :mod:`wmr.sim` as a MuJoCo model
+(adding masses, friction and servos), without knowing which kind it came from.
 
 Frames (those of :mod:`wmr.model.conventions`): the root body's origin is given in the platform frame,
 on the mount plane (at height ``height`` above the ground), a child's in its parent's frame.  A
@@ -28,13 +29,13 @@ centred  steer body at :math:`P_i` on ``steer``; the wheel at :math:`P_i` on ``d
 dual     swivel body at :math:`P_i` on ``swivel``; wheels at :math:`P_i \pm b\,\mathbf i_i` on ``drive1``,
          ``drive2``
 fixed    the wheel at :math:`P_i`, turned by its ``angle``, on ``drive``
-swedish  none: refused (``NotImplementedError``, the reason in :mod:`~wmr.model.wheels.swedish`)
+swedish  none: refused (``NotImplementedError``, the reason: :data:`NO_FAITHFUL_MECHANISM`)
 =======  ===================================================================================================
 
 Examples
 --------
 >>> from wmr import OffsetWheel
->>> m = OffsetWheel((0.3, 0.0), r=0.05, d=0.02).mechanism(height=0.05)
+>>> m = mechanism(OffsetWheel((0.3, 0.0), r=0.05, d=0.02), height=0.05)
 >>> [(b.name, b.joint.name, b.axis) for b in m.bodies]
 [('steer', 'steer', (0.0, 0.0, 1.0)), ('wheel', 'drive', (1.0, 0.0, 0.0))]
 >>> m.wheels[0].pos                        # H = P - d j, at the wheel's height (the mount plane's)
@@ -43,15 +44,27 @@ Examples
 
 from __future__ import annotations
 
-from collections.abc import Callable
+import functools
 from dataclasses import dataclass
 from typing import Any
 
-from ...errors import InputValueError
-from ..checks import number, show
-from .joints import Joint
+from ..errors import InputValueError
+from ..model.checks import number, show
+from ..model.wheels import CentredWheel, DualWheel, FixedWheel, OffsetWheel, SwedishWheel
+from ..model.wheels.joints import Joint
 
-__all__ = ["AXLE", "VERTICAL", "Body", "Mechanism", "UnitMechanism", "mount", "wheel"]
+__all__ = [
+    "AXLE",
+    "VERTICAL",
+    "NO_FAITHFUL_MECHANISM",
+    "Body",
+    "Mechanism",
+    "mount",
+    "wheel",
+    "root_body",
+    "mechanism",
+    "has_mechanism",
+]
 
 #: the axis of a steering joint, in its body's frame: the vertical :math:`\mathbf k`
 VERTICAL = (0.0, 0.0, 1.0)
@@ -191,65 +204,144 @@ def wheel(name: str, pos: Point, r: float, joint: Joint, angle: float = 0.0) -> 
     return Body(name, pos, angle, joint, AXLE, wheel=float(r))
 
 
-class UnitMechanism:
-    """What a wheel unit tells a physics engine (a base of every kind, :class:`~wmr.model.wheels.unit.WheelUnit`).
+@functools.singledispatch
+def root_body(unit: Any, height: float) -> Body:
+    """The body mounted on the platform, with the rest of the unit under it: the kind's entry (module notes).
 
-    A kind defines :meth:`root_body`; :meth:`mechanism` checks the height, takes the unit's numbers
-    and assembles the tree.
+    Parameters
+    ----------
+    unit : WheelUnit
+        A numeric unit.
+    height : float
+        Height of the mount plane above the ground (checked by :func:`mechanism`: at least the wheel radius).
+
+    Returns
+    -------
+    Body
+
+    Raises
+    ------
+    NotImplementedError
+        For a kind without an entry (the message says how to register one), or whose entry refuses
+        (the message says why).
     """
+    raise NotImplementedError(
+        f"{type(unit).__name__} does not describe its mechanism (its bodies and joints): register one with "
+        "@wmr.io.mechanism.root_body.register, or a refusal that says why, so no physics engine can take it"
+    )
 
-    # what a unit provides (WheelUnit's field and method)
-    r: Any
-    numeric: Callable[[], Any]
 
-    def mechanism(self, height: float) -> Mechanism:
-        """The unit's bodies and joints (this module's docstring), at joint angles 0.
+@root_body.register
+def _offset(unit: OffsetWheel, height: float) -> Body:
+    r"""The steer body at :math:`P_i` on ``steer``, its arm to the wheel at :math:`H_i = P_i - d\,\mathbf j_i` on ``drive``."""
+    r, d = float(unit.r), float(unit.d)
+    H = (0.0, -d, r - height)  # H = P - d j, the wheel centre at height r
+    steer, drive = unit.joints
+    rods = (((0.0, 0.0, 0.0), H),)
+    return Body(
+        "steer",
+        mount(unit.position),
+        0.0,
+        steer,
+        VERTICAL,
+        size=max(d, r / 2),
+        rods=rods,
+        children=(wheel("wheel", H, r, drive),),
+    )
 
-        Parameters
-        ----------
-        height : float
-            Height of the mount plane (the root's origin) above the ground, at least the unit's
-            wheel radius.
 
-        Returns
-        -------
-        Mechanism
+@root_body.register
+def _centred(unit: CentredWheel, height: float) -> Body:
+    r"""The steer body at :math:`P_i` on ``steer``, the wheel under it (centre :math:`P_i`) on ``drive``."""
+    r = float(unit.r)
+    steer, drive = unit.joints
+    return Body(
+        "steer",
+        mount(unit.position),
+        0.0,
+        steer,
+        VERTICAL,
+        size=r / 2,
+        children=(wheel("wheel", (0.0, 0.0, r - height), r, drive),),
+    )
 
-        Raises
-        ------
-        NotImplementedError
-            For a unit that a physics engine of rigid bodies and point contacts cannot represent
-            faithfully (the message says why), or a kind that does not describe its mechanism.
-        wmr.errors.InputError
-            If ``height`` is not a number at least the wheel radius, or the unit has free symbols.
-        """
-        unit = self.numeric()
-        height = number("height", height)
-        if not height >= unit.r:
-            raise InputValueError(
-                f"height (of the mount plane above the ground) must be at least the wheel radius "
-                f"r = {unit.r!r}, got {show(height)}"
-            )
-        return Mechanism(unit.root_body(height))
 
-    def root_body(self, height: float) -> Body:
-        """The body mounted on the platform, with the rest of the unit under it (see :meth:`mechanism`).
+@root_body.register
+def _dual(unit: DualWheel, height: float) -> Body:
+    r"""The swivel body at :math:`P_i` on ``swivel``, the wheels at :math:`P_i \pm b\,\mathbf i_i` on ``drive1``, ``drive2``."""
+    r, b = float(unit.r), float(unit.b)
+    z = r - height  # the wheel centres at height r
+    swivel, drive1, drive2 = unit.joints
+    wheels = (wheel("wheel1", (b, 0.0, z), r, drive1), wheel("wheel2", (-b, 0.0, z), r, drive2))
+    rods = (((b, 0.0, z), (-b, 0.0, z)), ((0.0, 0.0, 0.0), (0.0, 0.0, z)))  # the axle, the post to it
+    return Body("swivel", mount(unit.position), 0.0, swivel, VERTICAL, size=r / 2, rods=rods, children=wheels)
 
-        Parameters
-        ----------
-        height : float
-            Height of the mount plane above the ground (checked: at least the wheel radius).
 
-        Returns
-        -------
-        Body
+@root_body.register
+def _fixed(unit: FixedWheel, height: float) -> Body:
+    r"""The wheel alone, centred at :math:`P_i` and turned by its ``angle``, on ``drive``."""
+    r = float(unit.r)
+    x, y = (float(v) for v in unit.position)
+    (drive,) = unit.joints
+    return wheel("wheel", (x, y, r - height), r, drive, angle=float(unit.angle))
 
-        Raises
-        ------
-        NotImplementedError
-            Unless the kind describes its mechanism (or says why it cannot).
-        """
-        raise NotImplementedError(
-            f"{type(self).__name__} does not describe its mechanism (its bodies and joints: "
-            "WheelUnit.root_body), so no physics engine can take it"
+
+#: why a Swedish wheel has no mechanism a physics engine could take (its entry refuses)
+NO_FAITHFUL_MECHANISM = (
+    "a Swedish (omni/mecanum) wheel rolls on a ring of free rollers, and a physics engine of rigid bodies and point "
+    "contacts (MuJoCo) has no roller contact: a faithful model needs every roller as a body on its own hinge, shaped "
+    "(a convex barrel mesh) so that the rollers' envelope is the wheel's circle, with the contact passing from roller "
+    "to roller and no encoder for the roller rate sigma_dot. wmr does not build that, and a sphere with anisotropic "
+    "friction would not be a roller at all: the wheel is refused rather than simulated as something else under its "
+    "name"
+)
+
+
+@root_body.register
+def _swedish(unit: SwedishWheel, height: float) -> Body:
+    """None a physics engine could take faithfully: refused (:data:`NO_FAITHFUL_MECHANISM`)."""
+    raise NotImplementedError(f"Swedish wheel at {tuple(float(v) for v in unit.position)}: {NO_FAITHFUL_MECHANISM}")
+
+
+def has_mechanism(kind: type) -> bool:
+    """Whether a wheel kind has an entry in :func:`root_body` (its own or a base class's; a refusal counts).
+
+    Parameters
+    ----------
+    kind : type
+
+    Returns
+    -------
+    bool
+    """
+    return root_body.dispatch(kind) is not root_body.dispatch(object)
+
+
+def mechanism(unit: Any, height: float) -> Mechanism:
+    """The unit's bodies and joints (module notes), at joint angles 0.
+
+    Parameters
+    ----------
+    unit : WheelUnit
+    height : float
+        Height of the mount plane (the root's origin) above the ground, at least the unit's wheel radius.
+
+    Returns
+    -------
+    Mechanism
+
+    Raises
+    ------
+    NotImplementedError
+        For a unit that a physics engine of rigid bodies and point contacts cannot represent
+        faithfully (the message says why), or a kind without an entry.
+    wmr.errors.InputError
+        If ``height`` is not a number at least the wheel radius, or the unit has free symbols.
+    """
+    unit = unit.numeric()
+    height = number("height", height)
+    if not height >= unit.r:
+        raise InputValueError(
+            f"height (of the mount plane above the ground) must be at least the wheel radius r = {unit.r!r}, got {show(height)}"
         )
+    return Mechanism(root_body(unit, height))
