@@ -35,7 +35,6 @@ from wmr.analysis import (
     actuation,
     advice,
     design,
-    glossary,
     limitations,
     linalg,
     lines,
@@ -55,6 +54,7 @@ from wmr.errors import InputError
 from wmr.model import arrays, backend, conventions, limits, platform, tolerance, wheels
 from wmr.model.backend import NUMERIC, SYMBOLIC
 from wmr.model.wheels import joints, unsteered
+from wmr.words import glossary
 
 x_sym = sp.Symbol("x", positive=True)
 RNG = np.random.default_rng(2002)

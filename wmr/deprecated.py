@@ -1,28 +1,30 @@
 """Names that moved out of the wheel kinds (issue 29), kept for one release with a warning naming the new place.
 
-A wheel kind answers for its mathematics only; its drawing, its robot-file keys and its design hints
-moved to the layers that use them.  ``import wmr`` imports this module, which puts the old methods
+A wheel kind answers for its mathematics only; its drawing, its robot-file keys, its bodies and joints and
+its design hints moved to the layers that use them.  ``import wmr`` imports this module, which puts the old methods
 back on :class:`~wmr.model.wheels.WheelUnit` (each warns with a :class:`DeprecationWarning` and calls
 its replacement) and the old modules' names in :data:`sys.modules`:
 
-==========================================  ==========================================================
-before                                      now
-==========================================  ==========================================================
-``unit.parts(beta)``                        :func:`wmr.plot.parts.unit_parts` ``(unit, beta)``
-``unit.drawn_angle(beta)``                  :func:`wmr.plot.parts.drawn_angle` ``(unit, beta)``
-``Kind.file_keys()``, ``Kind.FILE_KEYS``    :func:`wmr.io.wheel_tables.file_keys` ``(Kind)``, ``register``
-``unit.dead_zone()``                        :func:`wmr.analysis.unit_design.dead_zone` ``(unit)``
-``unit.isotropy_advice()``                  :func:`wmr.analysis.unit_design.isotropic_change` ``(unit).words``
-``unit.isotropic_variant()``                :func:`wmr.analysis.unit_design.isotropic_change` ``(unit).unit``
-``unit.other_builds()``                     :func:`wmr.analysis.unit_design.other_builds` ``(unit)``
-``unit.mechanism(height)``                  :func:`wmr.io.mechanism.mechanism` ``(unit, height)``
-``unit.root_body(height)``                  :func:`wmr.io.mechanism.root_body` ``(unit, height)``
-``wmr.model.wheels.parts``                  :mod:`wmr.plot.parts`
-``wmr.model.wheels.filekeys``               :mod:`wmr.io.wheel_tables`
-``wmr.model.wheels.mechanism``              :mod:`wmr.io.mechanism` (``UnitMechanism``: no base class any more)
-``wmr.model.wheels.swedish.NO_FAITHFUL...``  :data:`wmr.io.mechanism.NO_FAITHFUL_MECHANISM`
-``wmr.model.wheels.design.DesignHints``     :mod:`wmr.analysis.unit_design` (no base class any more)
-==========================================  ==========================================================
+=============================================  ===================================================================
+before                                         now
+=============================================  ===================================================================
+``unit.parts(beta)``                           :func:`wmr.plot.parts.unit_parts` ``(unit, beta)``
+``unit.drawn_angle(beta)``                     :func:`wmr.plot.parts.drawn_angle` ``(unit, beta)``
+``Kind.file_keys()``, ``Kind.FILE_KEYS``       :func:`wmr.io.wheel_tables.file_keys` ``(Kind)``, ``register``
+``unit.dead_zone()``                           :func:`wmr.analysis.unit_design.dead_zone` ``(unit)``
+``unit.isotropy_advice()``                     :func:`wmr.analysis.unit_design.isotropic_change` ``(unit).words``
+``unit.isotropic_variant()``                   :func:`wmr.analysis.unit_design.isotropic_change` ``(unit).unit``
+``unit.other_builds()``                        :func:`wmr.analysis.unit_design.other_builds` ``(unit)``
+``unit.mechanism(height)``                     :func:`wmr.io.mechanism.mechanism` ``(unit, height)``
+``unit.root_body(height)``                     :func:`wmr.io.mechanism.root_body` ``(unit, height)``
+``wmr.model.wheels.parts``                     :mod:`wmr.plot.parts`
+``wmr.model.wheels.filekeys``                  :mod:`wmr.io.wheel_tables`
+``wmr.model.wheels.mechanism``                 :mod:`wmr.io.mechanism` (``UnitMechanism``: no base class any more)
+``wmr.model.wheels.swedish.NO_FAITHFUL...``    :data:`wmr.io.mechanism.NO_FAITHFUL_MECHANISM`
+``wmr.model.wheels.design.DesignHints``        :mod:`wmr.analysis.unit_design` (no base class any more)
+``wmr.analysis.glossary``                      :mod:`wmr.words.glossary`
+``wmr.analysis.singular.FAMILIES, MEANINGS``   :mod:`wmr.words.singular` (``description``, ``meaning``)
+=============================================  ===================================================================
 """
 
 from __future__ import annotations
@@ -32,10 +34,12 @@ import warnings
 from collections.abc import Callable
 from typing import Any
 
-from .analysis import unit_design
+from .analysis import overview, singular, unit_design
 from .io import mechanism, wheel_tables
 from .model.wheels import WheelUnit, swedish
 from .plot import parts
+from .words import glossary
+from .words import singular as singular_words
 
 __all__ = ["MOVED"]
 
@@ -110,3 +114,20 @@ sys.modules.setdefault("wmr.model.wheels.parts", parts)
 sys.modules.setdefault("wmr.model.wheels.filekeys", wheel_tables)
 sys.modules.setdefault("wmr.model.wheels.mechanism", mechanism)
 swedish.NO_FAITHFUL_MECHANISM = mechanism.NO_FAITHFUL_MECHANISM  # type: ignore[attr-defined]
+sys.modules.setdefault("wmr.analysis.glossary", glossary)
+
+
+def _moved_words(module: str) -> Callable[[str], Any]:
+    """A module ``__getattr__`` (PEP 562) that finds FAMILIES and MEANINGS in wmr.words.singular, with a warning."""
+
+    def __getattr__(name: str) -> Any:
+        if name in ("FAMILIES", "MEANINGS"):
+            warnings.warn(f"{module}.{name} is deprecated: use wmr.words.singular.{name}", DeprecationWarning, 2)
+            return getattr(singular_words, name)
+        raise AttributeError(f"module {module!r} has no attribute {name!r}")
+
+    return __getattr__
+
+
+setattr(singular, "__getattr__", _moved_words("wmr.analysis.singular"))  # noqa: B010 (PEP 562, on a module object)
+setattr(overview, "__getattr__", _moved_words("wmr.analysis.overview"))  # noqa: B010 (PEP 562, on a module object)

@@ -16,8 +16,8 @@ r"""Analyses of any robot built with :mod:`wmr.model`.
 :mod:`~wmr.analysis.actuation`      driven and passive joints: actuated mobility, motions with every motor stopped
 :mod:`~wmr.analysis.limitations`    what a robot cannot do, in plain sentences (class, actuation, steering joints)
 :mod:`~wmr.analysis.advice`         design advice checked on the changed robot (move C, choose L, change a wheel)
-:mod:`~wmr.analysis.singular`       families of singular configurations, and what they mean to a driver
-:mod:`~wmr.analysis.glossary`       the words of the output explained (``wmr explain``)
+:mod:`~wmr.analysis.singular`       families of singular configurations, one example each
+:mod:`~wmr.analysis.unit_design`    each wheel kind's design hints: dead zone, isotropic change, other builds
 :mod:`~wmr.analysis.design`         worst-case :math:`\kappa(\mathbf J)` of a layout, search over offset-wheel designs
 :mod:`~wmr.analysis.motion_kappa`   :math:`\kappa(\mathbf J)` along the admissible motions (rotations about each centre)
 :mod:`~wmr.analysis.sweep`          one analysis over millions of configurations, in chunks
@@ -25,7 +25,8 @@ r"""Analyses of any robot built with :mod:`wmr.model`.
 :mod:`~wmr.analysis.reference`      the dense reference the fast kernels are checked against
 ==================================  ====================================================================================
 
-Every function takes a robot; none defaults to the paper's.
+Every function takes a robot; none defaults to the paper's.  The words of the output are made from
+these analyses' data in :mod:`wmr.words`.
 """
 
 __all__ = [
@@ -50,5 +51,5 @@ __all__ = [
     "limitations",
     "advice",
     "singular",
-    "glossary",
+    "unit_design",
 ]

@@ -42,14 +42,12 @@ from .kinematics import inverse
 from .limitations import limitations
 from .linalg import condition_number
 from .mobility import rank_F
-from .singular import FAMILIES, MEANINGS, singular_families
+from .singular import singular_families
 from .steering import steering_angles
 from .sweep import Drivable, Grid, Sample, sweep
 from .unit_design import dead_zone
 
 __all__ = [
-    "FAMILIES",
-    "MEANINGS",
     "Overview",
     "configurations",
     "special_twists",

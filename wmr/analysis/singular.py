@@ -1,11 +1,11 @@
-r"""The families of singular configurations a robot has, with one example each and what they mean to a driver.
+r"""The families of singular configurations a robot has, with one example each.
 
 A configuration is singular when :math:`\operatorname{rank}\mathbf J < 3` (56),
 :math:`\mathbf J = \mathbf J_{L1}^T\mathbf J_2`: some change of the platform twist cannot be made
 by the wheel rates alone.  For a driver this means the wheels must be **re-steered** before the
 robot can move that way (a robot without steering cannot move that way at all without
-skidding).  :func:`singular_families` finds one example of each family; :data:`FAMILIES` names
-them in geometric words and :data:`MEANINGS` says what they mean for driving.
+skidding).  :func:`singular_families` finds one example of each family; :mod:`wmr.words.singular`
+names them in geometric words and says what they mean for driving.
 """
 
 from __future__ import annotations
@@ -21,53 +21,11 @@ from .lines import AT_INFINITY, FINITE, concurrencies, planes_through, wheel_pla
 from .mobility import rank_F
 from .singularities import classify
 
-__all__ = ["FAMILIES", "MEANINGS", "singular_families"]
-
-
-#: plain words for the families of :func:`wmr.analysis.singularities.classify` and of :func:`_families`
-FAMILIES = {
-    "i": "all wheel planes parallel, equal angles",
-    "i'": "all wheel planes parallel, a wheel turned by 180 deg",
-    "pair": "the planes of two wheels on the line through their mount points",
-    "v-C": "wheel planes concurrent at C",
-    "v-P": "wheel planes concurrent at a mount point",
-    "v-circle": "wheel planes concurrent and axles concurrent (rotation about a point of the circle through the P_i)",
-    "v": "wheel planes concurrent at another point",
-    "parallel": "all wheel planes parallel",
-    "through-C": "wheel planes concurrent at C",
-    "through-P": "wheel planes concurrent at a mount point",
-    "through-point": "wheel planes concurrent at another point",
-    "other": "rank J < 3",
-}
+__all__ = ["singular_families"]
 
 
 #: steering angles examined at once by :func:`singular_families` (its candidates in chunks of this / w)
 _CHUNK_ANGLES = 2**18
-
-_PARALLEL = (
-    "the wheels all point the same way: it drives along them, but to turn or move any other way it must "
-    "steer first (a car driving straight ahead is here; without steering it cannot leave without skidding)"
-)
-_CENTRE = (
-    "the axles meet at one point and the robot turns about it: to move its turning centre (or to drive "
-    "straight) it must re-steer first"
-)
-#: what each family means to a driver (keys as in :data:`FAMILIES`)
-MEANINGS = {
-    "i": _PARALLEL,
-    "i'": _PARALLEL,
-    "parallel": _PARALLEL,
-    "pair": "two wheels pull along the line joining them: the rates cannot turn the robot about a point of that line "
-    "without re-steering",
-    "v-C": _CENTRE,
-    "through-C": _CENTRE,
-    "v": _CENTRE,
-    "through-point": _CENTRE,
-    "v-circle": _CENTRE,
-    "v-P": _CENTRE + "; the wheel at that mount point stands still",
-    "through-P": _CENTRE + "; the wheel at that mount point stands still",
-    "other": "the wheel rates cannot make every change of motion here: some need the wheels re-steered first",
-}
 
 
 def _families(robot, beta):
@@ -91,14 +49,6 @@ def _families(robot, beta):
     return names.tolist()
 
 
-def _describe(family):
-    if family.startswith("pair-"):
-        i, j = family[5], family[6]
-        turned = ", one turned by 180 deg" if family.endswith("'") else ""
-        return f"the planes of wheels {i} and {j} on the line P{i}P{j}{turned}"
-    return FAMILIES.get(family, family)
-
-
 def singular_families(robot, L=None):
     r"""Families of singular configurations, :math:`\operatorname{rank}\mathbf J < 3` (56), with one example each.
 
@@ -118,9 +68,9 @@ def singular_families(robot, L=None):
     Returns
     -------
     list of dict
-        ``family`` (a short name), ``description`` (plain words), ``meaning`` (for a driver,
-        :data:`MEANINGS`), ``beta`` (w angles, radians), ``rank_J``, ``rank_F`` (ints); empty when
-        no candidate is singular (e.g. offset wheels, d > 0: J2 is invertible).
+        ``family`` (a short name; in words: :func:`wmr.words.singular.description` and
+        :func:`~wmr.words.singular.meaning`), ``beta`` (w angles, radians), ``rank_J``, ``rank_F``
+        (ints); empty when no candidate is singular (e.g. offset wheels, d > 0: J2 is invertible).
 
     Examples
     --------
@@ -166,8 +116,6 @@ def singular_families(robot, L=None):
             out.append(
                 {
                     "family": fam,
-                    "description": _describe(fam),
-                    "meaning": MEANINGS[fam.split("-")[0] if fam.startswith("pair-") else fam],
                     "beta": wrap_angle(b).tolist(),
                     "rank_J": int(r),
                     "rank_F": int(f),

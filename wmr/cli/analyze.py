@@ -21,6 +21,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from ..words import singular as words
 from ._numbers import json_text
 from ._options import ROBOT_FILE
 
@@ -125,8 +126,8 @@ def as_json(ov: Overview, convention: str = "wmr") -> dict[str, Any]:
         "singular": [
             {
                 "family": f["family"],
-                "description": f["description"],
-                "meaning": f["meaning"],
+                "description": words.description(f["family"]),
+                "meaning": words.meaning(f["family"]),
                 "angles_deg": _angles(f["beta"], convention),
                 "rank_J": f["rank_J"],
                 "rank_F": f["rank_F"],
@@ -204,10 +205,10 @@ def table(ov: Overview, convention: str = "wmr") -> str:
         rows.append(
             (
                 "singular" if n == 0 else "",
-                f"{f['family']}: {f['description']}; e.g. ({beta}) deg {unit}, rank J = {f['rank_J']}",
+                f"{f['family']}: {words.description(f['family'])}; e.g. ({beta}) deg {unit}, rank J = {f['rank_J']}",
             )
         )
-        rows.append(("", f"  means: {f['meaning']}"))
+        rows.append(("", f"  means: {words.meaning(f['family'])}"))
     if not ov.advice:
         rows.append(("isotropy", "J_L1 and J2 are isotropic as designed"))
     for n, a in enumerate(ov.advice):
@@ -221,7 +222,7 @@ TERMS = ("class", "actuated-mobility", "rank-F", "nullity", "L", "J_L1", "J2", "
 
 
 def notes(ov) -> str:
-    """The notes under the table: one line per term it uses (:mod:`wmr.analysis.glossary`).
+    """The notes under the table: one line per term it uses (:mod:`wmr.words.glossary`).
 
     Parameters
     ----------
@@ -231,7 +232,7 @@ def notes(ov) -> str:
     -------
     str
     """
-    from ..analysis.glossary import lookup
+    from ..words.glossary import lookup
 
     used = [t for t in TERMS if t != "singular" or ov.singular]
     lines = ["", "What the rows mean (wmr explain TERM for more):"]

@@ -7,7 +7,7 @@ Examples::
     wmr explain "kappa(J_L1)"
     wmr explain through-P
 
-The glossary is :mod:`wmr.analysis.glossary`; ``wmr analyze`` prints the lines of the terms its
+The glossary is :mod:`wmr.words.glossary`; ``wmr analyze`` prints the lines of the terms its
 table uses under the table.
 """
 
@@ -49,7 +49,7 @@ def run(args: argparse.Namespace) -> int:
     int
         0; an unknown term raises an input error (one line, with the closest term; status 2).
     """
-    from ..analysis.glossary import GLOSSARY, lookup
+    from ..words.glossary import GLOSSARY, lookup
 
     if args.term is None:
         width = max(len(t) for t in GLOSSARY)
