@@ -704,6 +704,7 @@ CASES = [
     Case("swerve.from_wpilib", lambda alpha: swerve.from_wpilib(alpha), (("alpha", "angles"),)),
     Case("swerve.to_chassis", lambda twist: swerve.to_chassis(twist), (T,)),
     Case("swerve.from_chassis", lambda chassis: swerve.from_chassis(chassis), (("chassis", "twist"),)),
+    Case("Twist", lambda twist: wmr.Twist.of(twist), (T,)),
     # --- actuation, limitations, checked advice, glossary (issue 24)
     Case("actuated_mobility", lambda robot, beta: actuation.actuated_mobility(robot, beta), (R, B)),
     Case("driven_columns", lambda robot: actuation.driven_columns(robot), (R,)),

@@ -31,6 +31,7 @@ from .analysis.sweep import sweep
 from .io import dump, load
 from .model import conventions
 from .model.backend import NUMERIC, SYMBOLIC
+from .model.conventions import Twist
 from .model.platform import E, point_velocity, rotation
 from .model.robot import Robot
 from .model.robots import equilateral_mounts, paper_robot
@@ -40,6 +41,7 @@ from .odometry import wheel_odometry
 
 __all__ = [
     "Robot",
+    "Twist",
     "OffsetWheel",
     "CentredWheel",
     "DualWheel",

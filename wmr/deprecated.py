@@ -24,6 +24,7 @@ before                                         now
 ``wmr.model.wheels.design.DesignHints``        :mod:`wmr.analysis.unit_design` (no base class any more)
 ``wmr.analysis.glossary``                      :mod:`wmr.words.glossary`
 ``wmr.analysis.singular.FAMILIES, MEANINGS``   :mod:`wmr.words.singular` (``description``, ``meaning``)
+``wmr.model.types.Twist`` (a type alias)       ``wmr.model.types.TwistLike`` (:class:`wmr.Twist` is the named twist)
 =============================================  ===================================================================
 """
 
@@ -36,6 +37,7 @@ from typing import Any
 
 from .analysis import overview, singular, unit_design
 from .io import mechanism, wheel_tables
+from .model import types
 from .model.wheels import WheelUnit, swedish
 from .plot import parts
 from .words import glossary
@@ -131,3 +133,13 @@ def _moved_words(module: str) -> Callable[[str], Any]:
 
 setattr(singular, "__getattr__", _moved_words("wmr.analysis.singular"))  # noqa: B010 (PEP 562, on a module object)
 setattr(overview, "__getattr__", _moved_words("wmr.analysis.overview"))  # noqa: B010 (PEP 562, on a module object)
+
+
+def _types_getattr(name: str) -> Any:
+    if name == "Twist":
+        warnings.warn("wmr.model.types.Twist is deprecated: use wmr.model.types.TwistLike", DeprecationWarning, 2)
+        return types.TwistLike
+    raise AttributeError(f"module 'wmr.model.types' has no attribute {name!r}")
+
+
+setattr(types, "__getattr__", _types_getattr)  # noqa: B010 (PEP 562, on a module object)

@@ -32,7 +32,7 @@ from ..model.limits import check
 from ..model.platform import cos_sin_checked, rotated
 from ..model.robot import Robot
 from ..model.tolerance import TOL
-from ..model.types import ArrayLike, Twist
+from ..model.types import ArrayLike, TwistLike
 from ._batch import for_chunks
 from .actuation import driven_columns, uncontrolled
 from .linalg import pinv_columns, rank
@@ -267,7 +267,7 @@ def forward(robot: Robot, beta: ArrayLike, rates: ArrayLike, slip_tolerance: flo
 
 
 @np.errstate(over="ignore", invalid="ignore")
-def inverse(robot: Robot, beta: ArrayLike, twist: Twist, beta_dot: ArrayLike | None = None) -> Solution:
+def inverse(robot: Robot, beta: ArrayLike, twist: TwistLike, beta_dot: ArrayLike | None = None) -> Solution:
     r"""Joint rates that realise a platform twist (unit by unit, exact or least squares).
 
     Parameters

@@ -29,7 +29,7 @@ import numpy as np
 from ..model import validation as V
 from ..model.robot import Robot
 from ..model.tolerance import near_zero
-from ..model.types import ArrayLike, FloatArray, Twist
+from ..model.types import ArrayLike, FloatArray, TwistLike
 from .isotropy import characteristic_length
 from .linalg import condition_number
 from .lines import circumcircle
@@ -59,7 +59,7 @@ def rotation_twists(centres: ArrayLike) -> FloatArray:
     return np.stack([np.ones(U.shape[:-1]), U[..., 1], -U[..., 0]], axis=-1)
 
 
-def motion_kappa(robot: Robot, twist: Twist, L: float | None = None) -> FloatArray:
+def motion_kappa(robot: Robot, twist: TwistLike, L: float | None = None) -> FloatArray:
     r""":math:`\kappa(\mathbf J)` at the steering angles that make each twist admissible (batched).
 
     Parameters

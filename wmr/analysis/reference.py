@@ -25,7 +25,7 @@ from ..model import validation as V
 from ..model.backend import NUMERIC
 from ..model.robot import Robot
 from ..model.tolerance import column_norms, near_zero
-from ..model.types import ArrayLike, BoolArray, FloatArray, IntArray, Twist
+from ..model.types import ArrayLike, BoolArray, FloatArray, IntArray, TwistLike
 from .sv_decisions import kappa_from_singular_values, rank_from_singular_values
 
 __all__ = ["J2", "F", "J", "rank", "rank_F", "det", "condition_number", "forward", "inverse"]
@@ -213,7 +213,7 @@ def forward(robot: Robot, beta: ArrayLike, rates: ArrayLike) -> tuple[FloatArray
 
 @np.errstate(over="ignore", invalid="ignore")
 def inverse(
-    robot: Robot, beta: ArrayLike, twist: Twist, beta_dot: ArrayLike | None = None
+    robot: Robot, beta: ArrayLike, twist: TwistLike, beta_dot: ArrayLike | None = None
 ) -> tuple[FloatArray, FloatArray, BoolArray]:
     r"""Joint rates from the pseudo-inverse of the whole system, the units' steering rows appended.
 

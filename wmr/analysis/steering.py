@@ -20,7 +20,7 @@ from ..model import validation as V
 from ..model.platform import point_velocity
 from ..model.robot import Robot
 from ..model.tolerance import TOL
-from ..model.types import ArrayLike, FloatArray, Twist
+from ..model.types import ArrayLike, FloatArray, TwistLike
 from ._batch import for_chunks
 from .lines import AT_INFINITY, FINITE, STILL
 
@@ -60,7 +60,7 @@ class InstantCentre:
     direction: np.ndarray
 
 
-def instantaneous_centre(twist: Twist, length: float | None = None) -> InstantCentre:
+def instantaneous_centre(twist: TwistLike, length: float | None = None) -> InstantCentre:
     r"""Instantaneous centre of rotation (63) of platform twists.
 
     The centre is **at infinity** (a translation) when :math:`|\dot\psi|\,\ell \le \mathrm{TOL}\,
@@ -117,7 +117,7 @@ def instantaneous_centre(twist: Twist, length: float | None = None) -> InstantCe
     return InstantCentre(kind, point, direction)
 
 
-def steering_angles(robot: Robot, twist: Twist, current: ArrayLike | None = None) -> FloatArray:
+def steering_angles(robot: Robot, twist: TwistLike, current: ArrayLike | None = None) -> FloatArray:
     r"""Steering angles :math:`\beta_i` that make ``twist`` admissible for centred and dual wheels.
 
     Each wheel plane is set parallel to the velocity :math:`\dot{\mathbf p}_i = \dot{\mathbf c} +
@@ -185,7 +185,7 @@ def steering_angles(robot: Robot, twist: Twist, current: ArrayLike | None = None
     return beta.reshape(batch + (w,))
 
 
-def centre_to_wheels(twist: Twist, d: ArrayLike) -> FloatArray:
+def centre_to_wheels(twist: TwistLike, d: ArrayLike) -> FloatArray:
     r"""Vectors from the mount points to U, :math:`\mathbf u_i = \mathbf E\dot{\mathbf c}/\dot\psi - \mathbf d_i` (64).
 
     Parameters

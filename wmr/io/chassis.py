@@ -22,7 +22,7 @@ from typing import Any
 
 from ..errors import InputTypeError
 from ..model import validation as V
-from ..model.types import FloatArray, Twist
+from ..model.types import FloatArray, TwistLike
 from .extras import require
 
 __all__ = ["twist_of", "chassis_speeds", "is_chassis_speeds"]
@@ -74,7 +74,7 @@ def twist_of(speeds: Any) -> FloatArray:
     return V.twist_array("speeds", speeds)
 
 
-def chassis_speeds(twist: Twist) -> Any:
+def chassis_speeds(twist: TwistLike) -> Any:
     r"""WPILib's ``ChassisSpeeds(vx, vy, omega)`` of a wmr twist :math:`[\dot\psi, \dot x, \dot y]`.
 
     Parameters

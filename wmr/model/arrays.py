@@ -21,7 +21,7 @@ import numpy as np
 from ..errors import InputTypeError, InputValueError
 from .checks import finite_float, kind_error, real, show
 from .lazysympy import is_sympy, sp
-from .types import ArrayLike, FloatArray, Numbers, Symbolic, Twist
+from .types import ArrayLike, FloatArray, Numbers, Symbolic, TwistLike
 
 __all__ = [
     "finite_array",
@@ -142,7 +142,7 @@ def finite_array(name: str, value: ArrayLike, last: int | None = None) -> FloatA
     return arr
 
 
-def twist_array(name: str, value: Twist) -> FloatArray:
+def twist_array(name: str, value: TwistLike) -> FloatArray:
     r"""A twist :math:`[\dot\psi, \dot x, \dot y]` (..., 3): numbers in wmr's order, or twist objects read by field.
 
     A WPILib ``ChassisSpeeds(vx, vy, omega)`` becomes ``[omega, vx, vy]``, a WPILib ``Twist2d`` ``[dtheta, dx,

@@ -10,7 +10,9 @@ Frames
 Twist
     :math:`\mathbf t = [\dot\psi\ \dot x\ \dot y]^T` with :math:`\dot{\mathbf c} = [\dot x\ \dot y]^T`
     in **body-frame** components (25); the fixed-frame velocity is :math:`[\dot X\ \dot Y]^T =
-    \mathbf R(\psi)\dot{\mathbf c}`.  :math:`\mathbf t_L = [L\dot\psi\ \dot{\mathbf c}^T]^T` (33).
+    \mathbf R(\psi)\dot{\mathbf c}`.  :math:`\mathbf t_L = [L\dot\psi\ \dot{\mathbf c}^T]^T` (33).  A
+    :class:`Twist` names them (``Twist(omega=..., vx=..., vy=...)``) and is taken wherever a twist is;
+    another library's twist object is read by its fields, never by its order.
 Mount points
     :math:`\mathbf d_i = \overrightarrow{CP_i}` in the body frame; :math:`P_i` lies on the steering axis.
 Wheel frame
@@ -125,14 +127,16 @@ The repository holds three things, and imports go one way (edition -> wmr, build
 
 from __future__ import annotations
 
+from typing import NamedTuple
+
 import numpy as np
 
-from .arrays import finite_array
+from .arrays import finite_array, twist_array
 from .checks import kind_error
 from .platform import wrap_angle
-from .types import ArrayLike, FloatArray
+from .types import ArrayLike, FloatArray, TwistLike
 
-__all__ = ["CONVENTIONS", "TWIST_ORDER", "checked", "angle_to", "angle_from"]
+__all__ = ["CONVENTIONS", "TWIST_ORDER", "Twist", "checked", "angle_to", "angle_from"]
 
 #: the conventions a user can bring, in one line each (see the module notes)
 CONVENTIONS = {
@@ -208,3 +212,63 @@ def angle_from(angle: ArrayLike, convention: str, argument: str = "angle") -> Fl
     90.0
     """
     return wrap_angle(finite_array(argument, angle) - _OFFSET[checked(convention)])
+
+
+class Twist(NamedTuple):
+    r"""One twist with its components by name, in wmr's order :math:`[\dot\psi, \dot x, \dot y]`.
+
+    Wherever wmr takes a twist it takes a :class:`Twist`: it is a tuple in wmr's order, so it is read as
+    the numbers ``[omega, vx, vy]`` are, and a list of them as an array (n, 3).  A bare list is easy to
+    write in another library's order (WPILib's and ROS's are ``(vx, vy, omega)``); the names are not.
+
+    Parameters
+    ----------
+    omega : float
+        The turning rate :math:`\dot\psi`, rad/s, counter-clockwise positive.
+    vx, vy : float
+        The velocity of C in the body frame, :math:`\dot x` (forward) and :math:`\dot y` (left), in the
+        robot's unit of length per second.
+
+    Examples
+    --------
+    >>> import wmr
+    >>> t = wmr.Twist(omega=0.5, vx=1.0, vy=0.0)
+    >>> wmr.inverse(wmr.paper_robot("centred"), [0.0, 0.0, 0.0], t).value.shape
+    (3,)
+    >>> t.in_convention("wpilib"), Twist.of([0.5, 1.0, 0.0]) == t
+    ((1.0, 0.0, 0.5), True)
+    """
+
+    omega: float
+    vx: float
+    vy: float
+
+    @classmethod
+    def of(cls, twist: TwistLike) -> Twist:
+        """The :class:`Twist` of one twist in any form wmr takes: numbers in wmr's order, or a twist object.
+
+        Parameters
+        ----------
+        twist : array (3,), Twist, or a WPILib ``ChassisSpeeds``, ``Twist2d`` or ROS ``geometry_msgs/Twist``
+            Objects are read by their fields (:func:`wmr.model.arrays.twist_array`).
+
+        Returns
+        -------
+        Twist
+        """
+        omega, vx, vy = (float(v) for v in twist_array("twist", twist).reshape(3))
+        return cls(omega, vx, vy)
+
+    def in_convention(self, convention: str) -> tuple[float, float, float]:
+        """The components in the order a convention writes them (:data:`TWIST_ORDER`).
+
+        Parameters
+        ----------
+        convention : str
+            A key of :data:`CONVENTIONS`.
+
+        Returns
+        -------
+        tuple of 3 float
+        """
+        return tuple(float(getattr(self, name)) for name in TWIST_ORDER[checked(convention)])  # type: ignore[return-value]

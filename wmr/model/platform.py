@@ -25,7 +25,7 @@ from .backend import NUMERIC, Backend, choose
 from .checks import integer, number, point, positive, real, show
 from .lazysympy import is_sympy
 from .tolerance import TOL
-from .types import ArrayLike, FloatArray, Matrix, Numbers, Point, Twist
+from .types import ArrayLike, FloatArray, Matrix, Numbers, Point, TwistLike
 
 __all__ = [
     "E",
@@ -324,7 +324,7 @@ def point_row(d: Point, L: Numbers = 1, backend: Backend | None = None) -> Matri
     return M
 
 
-def point_velocity(twist: Twist, d: ArrayLike) -> FloatArray:
+def point_velocity(twist: TwistLike, d: ArrayLike) -> FloatArray:
     r"""Velocity :math:`\dot{\mathbf p} = \dot{\mathbf c} + \dot\psi\mathbf E\mathbf d` (2) of platform points.
 
     Parameters

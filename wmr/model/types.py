@@ -11,7 +11,7 @@ name                what it stands for
 ``Matrix``          what a backend builds: a NumPy array (numbers) or a SymPy matrix (symbols)
 ``Point``           a point of the platform plane, :math:`(x, y)`: two numbers or two SymPy expressions
 ``PathLike``        a file name: ``str`` or ``os.PathLike``
-``Twist``           a twist :math:`[\dot\psi, \dot x, \dot y]` (..., 3), or twist objects read by field
+``TwistLike``       a twist :math:`[\dot\psi, \dot x, \dot y]` (..., 3), a :class:`wmr.Twist`, or twist objects read by field
                     (WPILib's ``ChassisSpeeds``, ``Twist2d``; :func:`wmr.model.arrays.twist_array`)
 ``WheelJoints``     a URDF file's wheel joints: names, ``{name: radius or None}``, or ``"name[=radius],..."``
 ``JointNames``      the joints' names of each wheel unit: ``joint_names[i][joint]``
@@ -44,7 +44,7 @@ __all__ = [
     "PathLike",
     "Point",
     "Symbolic",
-    "Twist",
+    "TwistLike",
     "WheelJoints",
 ]
 
@@ -64,8 +64,9 @@ Numbers: TypeAlias = Any
 Matrix: TypeAlias = Any
 #: a point (x, y): two numbers or two SymPy expressions (to mypy: ``Any``)
 Point: TypeAlias = Any
-#: a twist (..., 3) in wmr's order, or objects with the fields of a ChassisSpeeds or Twist2d (to mypy: ``Any``)
-Twist: TypeAlias = Any
+#: a twist (..., 3) in wmr's order, a :class:`wmr.Twist`, or objects with the fields of a ChassisSpeeds or Twist2d
+#: (to mypy: ``Any``)
+TwistLike: TypeAlias = Any
 #: a file name
 PathLike: TypeAlias = str | os.PathLike[str]
 #: a URDF file's wheel joints: names, ``{name: radius or None}``, or ``"name[=radius],..."``

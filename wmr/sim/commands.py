@@ -17,13 +17,13 @@ from ..analysis.steering import steering_angles
 from ..model import validation as V
 from ..model.platform import point_velocity
 from ..model.robot import Robot
-from ..model.types import ArrayLike, FloatArray, Twist
+from ..model.types import ArrayLike, FloatArray, TwistLike
 from .recording import Schedule
 
 __all__ = ["start_angles", "twist_schedule"]
 
 
-def start_angles(robot: Robot, twist: Twist) -> FloatArray:
+def start_angles(robot: Robot, twist: TwistLike) -> FloatArray:
     r"""Steering angles to start a constant twist from.
 
     Units that roll in their plane (centred and dual wheels): :func:`wmr.steering_angles` (wheel planes
@@ -53,7 +53,7 @@ def start_angles(robot: Robot, twist: Twist) -> FloatArray:
 
 
 def twist_schedule(
-    robot: Robot, twist: Twist, seconds: float, beta0: ArrayLike | None = None, dt: float = 0.05
+    robot: Robot, twist: TwistLike, seconds: float, beta0: ArrayLike | None = None, dt: float = 0.05
 ) -> Schedule:
     r"""The joint commands of a constant body twist, from wmr's inverse kinematics.
 

@@ -33,13 +33,13 @@ import numpy as np
 from ..errors import InputValueError
 from ..model import validation as V
 from ..model.robot import Robot
-from ..model.types import ArrayLike, FloatArray, Twist
+from ..model.types import ArrayLike, FloatArray, TwistLike
 from .modules import swerve_robot
 
 __all__ = ["desaturate", "desaturation_scale", "cosine_compensate", "se2_exp", "se2_log", "discretize"]
 
 
-def desaturation_scale(robot: Robot, twist: Twist, max_speed: float) -> FloatArray:
+def desaturation_scale(robot: Robot, twist: TwistLike, max_speed: float) -> FloatArray:
     r"""The factor :math:`k = \min(1, s_{\max}/\max_i s_i)` that brings the fastest module to ``max_speed``.
 
     Parameters
@@ -76,7 +76,7 @@ def desaturation_scale(robot: Robot, twist: Twist, max_speed: float) -> FloatArr
     return k
 
 
-def desaturate(robot: Robot, twist: Twist, max_speed: float) -> FloatArray:
+def desaturate(robot: Robot, twist: TwistLike, max_speed: float) -> FloatArray:
     r"""Scale the twist so that no module exceeds ``max_speed``, keeping the instantaneous centre.
 
     :math:`k\,\mathbf t` with :math:`k` of :func:`desaturation_scale`: the angles do not change, the
@@ -143,7 +143,7 @@ def _coefficients(theta):
     return np.sinc(theta / np.pi), np.sin(theta / 2) * np.sinc(theta / (2 * np.pi))
 
 
-def se2_exp(twist: Twist, dt: float = 1.0) -> FloatArray:
+def se2_exp(twist: TwistLike, dt: float = 1.0) -> FloatArray:
     r"""The pose reached by holding a body twist for ``dt``: the SE(2) exponential.
 
     Parameters
@@ -222,7 +222,7 @@ def se2_log(delta: ArrayLike, dt: float = 1.0) -> FloatArray:
     return out
 
 
-def discretize(twist: Twist, dt: float) -> FloatArray:
+def discretize(twist: TwistLike, dt: float) -> FloatArray:
     r"""The twist that, held for ``dt``, ends where the components of ``twist`` would if independent.
 
     :func:`se2_log` of :math:`(\dot\psi\Delta t, \dot x\Delta t, \dot y\Delta t)` over :math:`\Delta t`:

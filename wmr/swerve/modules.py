@@ -44,7 +44,7 @@ from ..errors import InputValueError
 from ..model import validation as V
 from ..model.conventions import angle_from, angle_to
 from ..model.robot import Robot
-from ..model.types import ArrayLike, FloatArray, Twist
+from ..model.types import ArrayLike, FloatArray, TwistLike
 
 __all__ = [
     "ModuleCommand",
@@ -127,7 +127,7 @@ def radii(robot: Robot) -> FloatArray:
     return np.array([float(u.r) for u in robot.wheels])
 
 
-def module_speeds(robot: Robot, beta: ArrayLike, twist: Twist) -> FloatArray:
+def module_speeds(robot: Robot, beta: ArrayLike, twist: TwistLike) -> FloatArray:
     r"""Module speeds :math:`s_i = r_i\dot\theta_i` that realise ``twist`` at the angles ``beta``.
 
     The least-squares rolling rates of :func:`wmr.inverse`: :math:`s_i` is the component of the
@@ -151,7 +151,7 @@ def module_speeds(robot: Robot, beta: ArrayLike, twist: Twist) -> FloatArray:
     return inverse(robot, beta, twist).value * radii(robot)
 
 
-def module_commands(robot: Robot, twist: Twist, current: ArrayLike | None = None) -> ModuleCommand:
+def module_commands(robot: Robot, twist: TwistLike, current: ArrayLike | None = None) -> ModuleCommand:
     r"""Inverse kinematics of a swerve robot: the angles and speeds of ``twist`` (WPILib's ``toSwerveModuleStates``).
 
     :math:`\beta_i` from :func:`wmr.steering_angles` (the wheel plane parallel to
@@ -261,7 +261,7 @@ def from_wpilib(alpha: ArrayLike, speed: ArrayLike | None = None) -> FloatArray 
     return beta if speed is None else (beta, V.finite_array("speed", speed))
 
 
-def to_chassis(twist: Twist) -> FloatArray:
+def to_chassis(twist: TwistLike) -> FloatArray:
     r"""WPILib's ``ChassisSpeeds`` order :math:`(v_x, v_y, \omega)` of a wmr twist :math:`[\dot\psi, \dot x, \dot y]`.
 
     Parameters
@@ -280,7 +280,7 @@ def to_chassis(twist: Twist) -> FloatArray:
     return np.roll(V.twist_array("twist", twist), -1, axis=-1)
 
 
-def from_chassis(chassis: Twist) -> FloatArray:
+def from_chassis(chassis: TwistLike) -> FloatArray:
     r"""wmr's twist :math:`[\dot\psi, \dot x, \dot y]` from WPILib's :math:`(v_x, v_y, \omega)`.
 
     Parameters

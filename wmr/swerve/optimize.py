@@ -34,7 +34,7 @@ from ..errors import InputValueError
 from ..model import validation as V
 from ..model.platform import wrap_angle
 from ..model.robot import Robot
-from ..model.types import ArrayLike, FloatArray, Twist
+from ..model.types import ArrayLike, FloatArray, TwistLike
 from .modules import chassis_twist, module_commands, swerve_robot
 
 __all__ = ["SteeringChoice", "optimize_modules", "optimize_robot", "transition_slip", "MAX_MODULES"]
@@ -137,7 +137,7 @@ def _targets(robot, twist, current):
     return robot, cmd, cur
 
 
-def optimize_modules(robot: Robot, twist: Twist, current: ArrayLike) -> SteeringChoice:
+def optimize_modules(robot: Robot, twist: TwistLike, current: ArrayLike) -> SteeringChoice:
     r"""WPILib's ``SwerveModuleState.optimize``, module by module.
 
     Module :math:`i` flips (:math:`\beta_i + \pi`, speed :math:`-s_i`) exactly when
@@ -177,7 +177,7 @@ def _choice(robot, cmd, cur, flip):
     return SteeringChoice(beta, speed + 0.0, flip, resteer, transition_slip(robot, cur, beta, speed))
 
 
-def optimize_robot(robot: Robot, twist: Twist, current: ArrayLike, samples: int = 8) -> SteeringChoice:
+def optimize_robot(robot: Robot, twist: TwistLike, current: ArrayLike, samples: int = 8) -> SteeringChoice:
     r"""Robot-level steering choice: all modules' flips together, minimising re-steer plus transition slip.
 
     Minimises :math:`J(\mathbf f) = \sum_i|\Delta_i| + w\,\bar\sigma(\mathbf f)` over the :math:`2^w`
