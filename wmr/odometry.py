@@ -43,7 +43,7 @@ import numpy as np
 
 from .analysis.linalg import rank
 from .errors import InputValueError
-from .model import validation as V
+from .model import validation
 from .model.platform import wrap_angle
 from .model.robot import Robot
 from .model.tolerance import TOL, column_norms
@@ -122,7 +122,7 @@ def measured_joints(robot: Robot) -> tuple[str, ...]:
     >>> measured_joints(wmr.load("examples/mecanum4.toml"))       # doctest: +SKIP
     ('theta_dot_1', 'theta_dot_2', 'theta_dot_3', 'theta_dot_4')
     """
-    robot = V.numeric_robot(robot)
+    robot = validation.numeric_robot(robot)
     return tuple(robot.rate_names[c] for c in _columns(robot)[0])
 
 
@@ -184,14 +184,14 @@ def wheel_odometry(
         On bad shapes, fewer than 2 or more than :data:`MAX_SAMPLES` samples, unknown rate names,
         or when the measured joints do not determine the twist at a step (e.g. one wheel measured).
     """
-    robot = V.numeric_robot(robot)
+    robot = validation.numeric_robot(robot)
     driven, steering_rates = _columns(robot)
     names = list(robot.rate_names)
     if measured is None:
         chosen = driven
     else:
         if isinstance(measured, str) or not all(isinstance(n, str) for n in measured):
-            raise V.kind_error("measured", measured, "a sequence of rate names")
+            raise validation.kind_error("measured", measured, "a sequence of rate names")
         if any(n not in names for n in measured) or len(set(measured)) != len(measured):
             raise InputValueError(
                 f"measured must name distinct rates of the robot ({', '.join(names)}), got {list(measured)}"
@@ -199,8 +199,8 @@ def wheel_odometry(
         chosen = [names.index(n) for n in measured]
     steer = [c for c in chosen if c in steering_rates]  # through beta: phi = psi + beta (7)
     cols = [c for c in chosen if c not in steering_rates]  # through angles
-    beta = V.finite_array("beta", beta, last=robot.w)
-    angles = V.finite_array("angles", angles, last=len(cols))
+    beta = validation.finite_array("beta", beta, last=robot.w)
+    angles = validation.finite_array("angles", angles, last=len(cols))
     T = beta.shape[0] if beta.ndim == 2 else 0
     if beta.ndim != 2 or angles.shape != (T, len(cols)) or not 2 <= T <= MAX_SAMPLES:
         raise InputValueError(
@@ -208,10 +208,10 @@ def wheel_odometry(
             f"got shapes {beta.shape} and {angles.shape}"
         )
     if heading is not None:
-        heading = V.finite_array("heading", heading)
+        heading = validation.finite_array("heading", heading)
         if heading.shape != (T,):
             raise InputValueError(f"heading must have shape ({T},), one angle per sample, got {heading.shape}")
-    pose0 = V.finite_array("pose0", pose0)
+    pose0 = validation.finite_array("pose0", pose0)
     if pose0.shape != (3,):
         raise InputValueError(f"pose0 must be (psi, X, Y), got shape {pose0.shape}")
     unknown = [c for c in range(robot.n_rates) if c not in cols and c not in steer]

@@ -37,7 +37,7 @@ import numpy as np
 
 from ..errors import InputValueError
 from ..io.decimals import quantise
-from ..model import validation as V
+from ..model import validation
 from ..model.tolerance import TOL
 from ._batch import for_chunks
 from .linalg import null_space, rank
@@ -67,7 +67,7 @@ def driven_columns(robot) -> np.ndarray:
     >>> driven_columns(wmr.Robot([castor, mec])).tolist()          # phi, theta; theta, sigma
     [False, False, True, False]
     """
-    robot = V.robot(robot)
+    robot = validation.robot(robot)
     return np.array([j.driven for u in robot.wheels for j in u.joints if j.rate is not None], dtype=bool)
 
 
@@ -97,7 +97,7 @@ def actuated_mobility(robot, beta) -> np.ndarray:
     >>> int(actuated_mobility(same, np.zeros(4))), wmr.admissible_twists(same, np.zeros(4)).shape[1]
     (2, 3)
     """
-    robot = V.numeric_robot(robot)
+    robot = validation.numeric_robot(robot)
     A, _ = twist_constraints(robot, beta)
     Ap, _ = twist_constraints(robot, beta, free=~driven_columns(robot))
     s = _scale(robot)
@@ -132,7 +132,7 @@ def free_twists(robot, beta) -> np.ndarray:
     >>> (np.abs(u[:, 0]) / np.abs(u[:, 0]).max()).round(12).tolist()
     [0.0, 0.0, 1.0]
     """
-    robot = V.numeric_robot(robot)
+    robot = validation.numeric_robot(robot)
     beta = robot.effective_beta(beta)
     if beta.ndim != 1:
         raise InputValueError(
@@ -172,10 +172,10 @@ def uncontrolled(robot, beta, twist) -> tuple[np.ndarray, np.ndarray]:
     >>> ok.tolist(), (part[2].round(12) + 0.0).tolist()
     ([True, False, False], [0.0, 0.0, 1.0])
     """
-    robot = V.numeric_robot(robot)
+    robot = validation.numeric_robot(robot)
     beta = robot.effective_beta(beta)
-    t = V.twist_array("twist", twist)
-    batch = V.batch_shape({"beta": beta, "twist": t})
+    t = validation.twist_array("twist", twist)
+    batch = validation.batch_shape({"beta": beta, "twist": t})
     s = _scale(robot)
     # the dimensionless twist t o s, scaled to a largest entry of 1 (the decision does not depend on the
     # twist's size; nothing overflows however large the robot or the twist)
@@ -239,8 +239,8 @@ def describe_twist(robot, twist) -> str:
     """
     from .steering import instantaneous_centre
 
-    robot = V.numeric_robot(robot)
-    t = V.twist_array("twist", twist)
+    robot = validation.numeric_robot(robot)
+    t = validation.twist_array("twist", twist)
     size = float(np.abs(robot.mount_points).max()) or 1.0
     ic = instantaneous_centre(t, length=size)
     if int(ic.kind) == AT_INFINITY:

@@ -30,7 +30,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..model import validation as V
+from ..model import validation
 from ..model.backend import NUMERIC
 from ..model.tolerance import TOL
 from .actuation import actuated_mobility, driven_columns
@@ -97,7 +97,7 @@ def motor_conditioning(robot, beta) -> float:
     >>> round(motor_conditioning(kiwi, np.zeros(3)) ** 2, 9)       # M^T M = diag(3, 3/2, 3/2) / r^2
     2.0
     """
-    robot = V.numeric_robot(robot)
+    robot = validation.numeric_robot(robot)
     beta = robot.effective_beta(beta)
     s = robot.F_column_norms[:3]  # dimensionless twist coordinates
     T = admissible_twists(robot, beta) * s[:, None]  # dimensionless, then orthonormalised
@@ -132,7 +132,7 @@ def profile(robot) -> dict:
     >>> p["class"], p["actuated_mobility"], round(p["L"], 12), round(p["kappa_JL1"], 12), round(p["kappa_J2"], 12)
     ('(3,0)', 3, 0.3, 1.0, 1.0)
     """
-    robot = V.numeric_robot(robot)
+    robot = validation.numeric_robot(robot)
     c = campion_class(robot)
     L = float(characteristic_length(robot))
     return {
@@ -194,7 +194,7 @@ def actuation_advice(robot, before=None) -> list[Advice]:
     -------
     list of Advice
     """
-    robot = V.numeric_robot(robot)
+    robot = validation.numeric_robot(robot)
     before = profile(robot) if before is None else before
     dm = _delta_m(before["class"])
     if before["actuated_mobility"] >= dm:
@@ -273,7 +273,7 @@ def advice(robot, before=None) -> tuple[list[Advice], dict]:
     J_L1: move C to the centroid of the mount points, (1.35, 0) in this frame (subtract it from every position);
     then L = 1.557 gives kappa(J_L1) = 1 (now 2.191 at L = 2.06)
     """
-    robot = V.numeric_robot(robot)
+    robot = validation.numeric_robot(robot)
     before = profile(robot) if before is None else before
     out = actuation_advice(robot, before)
     pts = robot.mount_points

@@ -53,7 +53,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..model import validation as V
+from ..model import validation
 from ..model.robot import Robot
 from ..model.tolerance import TOL
 from .linalg import null_space, rank
@@ -171,7 +171,7 @@ def campion_class(robot: Robot) -> CampionClass:
     'degenerate: the fixed wheels allow only a translation along one direction (no turning)'
 
     """
-    robot = V.numeric_robot(robot)
+    robot = validation.numeric_robot(robot)
     w = robot.w
     scale = robot.F_column_norms[:3]  # the twist columns of F (wmr.model.tolerance)
     fixed = [i for i, u in enumerate(robot.wheels) if not u.steered]

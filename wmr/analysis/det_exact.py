@@ -13,7 +13,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import InputValueError
-from ..model import validation as V
+from ..model import validation
 from ..model.backend import NUMERIC, SYMBOLIC, Backend, choose
 from ..model.lazysympy import is_sympy, sp
 from ..model.robot import Robot
@@ -70,25 +70,27 @@ def plane_line_matrix(robot: Robot, beta: Numbers, L: Numbers = 1, backend: Back
     numpy.ndarray (..., 3, w) or sympy.Matrix (3, w)
     """
     symbolic = (
-        beta is None or V.robot(robot).is_symbolic or any(is_sympy(b) for b in np.ravel(np.asarray(beta, dtype=object)))
+        beta is None
+        or validation.robot(robot).is_symbolic
+        or any(is_sympy(b) for b in np.ravel(np.asarray(beta, dtype=object)))
     )
     bk = choose(backend=backend) if backend is not None else (SYMBOLIC if symbolic else NUMERIC)
     if symbolic and bk is NUMERIC:
         raise InputValueError(
-            f"backend NUMERIC needs numeric beta and a numeric robot, got beta = {V.show(beta)}, "
-            f"robot = {V.show(robot)}"
+            f"backend NUMERIC needs numeric beta and a numeric robot, got beta = {validation.show(beta)}, "
+            f"robot = {validation.show(robot)}"
         )
     symbolic = bk is SYMBOLIC
     if symbolic:
-        b = list(robot.beta_symbols) if beta is None else list(V.symbolic_vector("beta", beta, robot.w))
+        b = list(robot.beta_symbols) if beta is None else list(validation.symbolic_vector("beta", beta, robot.w))
         b = [
             bi if u.steered else sp.sympify(u.constant_angle)  # unsteered: its own angle
             for bi, u in zip(b, robot.wheels)
         ]
     else:
-        beta = V.robot(robot).effective_beta(beta)
+        beta = validation.robot(robot).effective_beta(beta)
         b = [beta[..., i] for i in range(robot.w)]
-    L = V.positive("L", L) if symbolic else V.number("L", V.positive("L", L))
+    L = validation.positive("L", L) if symbolic else validation.number("L", validation.positive("L", L))
     columns = []
     with np.errstate(over="ignore", invalid="ignore"):
         for u, bi in zip(robot.wheels, b):

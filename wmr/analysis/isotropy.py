@@ -11,7 +11,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..errors import InputValueError
-from ..model import validation as V
+from ..model import validation
 from ..model.robot import Robot
 from ..model.tolerance import TOL
 from ..model.types import ArrayLike, BoolArray
@@ -67,11 +67,11 @@ def characteristic_length(robot: Robot) -> float:
     >>> round(characteristic_length(bot) ** 2, 12)        # 8/3: a scalene triangle is isotropic too
     2.666666666667
     """
-    d = V.numeric_robot(robot).mount_points
+    d = validation.numeric_robot(robot).mount_points
     big = float(np.abs(d).max())  # scaled first: no overflow at 1e300, no underflow at 1e-300
     L = big * float(np.sqrt(np.mean(np.sum((d / big) ** 2, axis=1)))) if big > 0 else 0.0
     if L == 0:
         raise InputValueError(
-            f"robot has all its mount points at C: no characteristic length exists (got L = 0): {V.show(robot)}"
+            f"robot has all its mount points at C: no characteristic length exists (got L = 0): {validation.show(robot)}"
         )
     return L

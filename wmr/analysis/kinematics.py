@@ -26,7 +26,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputValueError
-from ..model import validation as V
+from ..model import validation
 from ..model.backend import NUMERIC
 from ..model.limits import check
 from ..model.platform import cos_sin_checked, rotated
@@ -227,18 +227,18 @@ def forward(robot: Robot, beta: ArrayLike, rates: ArrayLike, slip_tolerance: flo
     >>> (sol.value.round(12) + 0.0).tolist(), bool(sol.admissible)
     ([0.0, 0.0, 1.0], True)
     """
-    robot = V.numeric_robot(robot)
+    robot = validation.numeric_robot(robot)
     beta = robot.effective_beta(beta)
-    rates = V.finite_array("rates", rates, last=robot.n_rates)
+    rates = validation.finite_array("rates", rates, last=robot.n_rates)
     if slip_tolerance is not None:
-        slip_tolerance = V.number("slip_tolerance", V.nonnegative("slip_tolerance", slip_tolerance))
+        slip_tolerance = validation.number("slip_tolerance", validation.nonnegative("slip_tolerance", slip_tolerance))
     K = _constants(robot)
     if not K.full_rank:
         raise InputValueError(
             f"robot has J1 of rank < 3 (fewer than two distinct mount points: {robot.mount_points.tolist()}): "
             "the twist is not determined"
         )
-    batch = V.batch_shape({"beta": beta, "rates": rates})
+    batch = validation.batch_shape({"beta": beta, "rates": rates})
     b, th = _flat(batch, beta, rates)
     N, w = b.shape[0], robot.w
     t, res, adm = np.empty((N, 3)), np.empty((N, 2 * w)), np.empty(N, dtype=bool)
@@ -317,15 +317,15 @@ def inverse(robot: Robot, beta: ArrayLike, twist: TwistLike, beta_dot: ArrayLike
     >>> (sol.value.round(12) + 0.0).tolist()        # every motor at zero, the rollers turn
     [0.0, 20.0, 0.0, 20.0, 0.0, 20.0, 0.0, 20.0]
     """
-    robot = V.numeric_robot(robot)
+    robot = validation.numeric_robot(robot)
     beta = robot.effective_beta(beta)
-    twist = V.twist_array("twist", twist)
+    twist = validation.twist_array("twist", twist)
     arrays = [beta, twist]
     if beta_dot is not None:
-        arrays.append(V.finite_array("beta_dot", beta_dot, last=robot.w))
+        arrays.append(validation.finite_array("beta_dot", beta_dot, last=robot.w))
     K = _constants(robot)
     w = robot.w
-    batch = V.batch_shape(dict(zip(("beta", "twist", "beta_dot"), arrays)))
+    batch = validation.batch_shape(dict(zip(("beta", "twist", "beta_dot"), arrays)))
     flat = _flat(batch, *arrays)
     b, tw, bd = flat[0], flat[1], (flat[2] if beta_dot is not None else None)
     N = b.shape[0]

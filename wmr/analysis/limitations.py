@@ -27,7 +27,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..model import validation as V
+from ..model import validation
 from .actuation import actuated_mobility, describe_twist, free_twists
 from .classes import campion_class
 from .linalg import null_space
@@ -91,7 +91,7 @@ def steering_limitations(robot) -> list[str]:
     >>> print(*steering_limitations(wmr.Robot([free, wmr.CentredWheel((-0.3, 0.0), r=0.05)]))[0].split(": ")[::2])
     wheel 1 its angle is not under control
     """
-    robot = V.robot(robot)
+    robot = validation.robot(robot)
     out = []
     for k, u in enumerate(robot.wheels, 1):
         passive_steer = any(j.steering and not j.driven for j in u.joints)
@@ -117,7 +117,7 @@ def limitations(robot, campion=None) -> list[str]:
     -------
     list of str
     """
-    robot = V.numeric_robot(robot)
+    robot = validation.numeric_robot(robot)
     c = campion_class(robot) if campion is None else campion
     out = _class_sentences(robot, c)
     beta = np.asarray(c.beta)

@@ -16,7 +16,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..errors import InputValueError
-from ..model import validation as V
+from ..model import validation
 from ..model.tolerance import TOL, column_norms
 from ..model.types import ArrayLike, FloatArray, IntArray
 from . import _closed
@@ -40,7 +40,7 @@ __all__ = [
 
 def _as_stack(A: ArrayLike) -> FloatArray:
     """Validate a stack of matrices ``(..., m, n)`` of finite reals."""
-    A = V.finite_array("A", A)
+    A = validation.finite_array("A", A)
     if A.ndim < 2:
         raise InputValueError(f"A must have shape (..., m, n), got shape {A.shape}")
     return A
@@ -84,9 +84,9 @@ def _finite(name, result, what):
 
 
 def _check_scale(scale: ArrayLike, n: int) -> FloatArray:
-    scale = V.finite_array("scale", scale, last=n)
+    scale = validation.finite_array("scale", scale, last=n)
     if np.any(scale <= 0):
-        raise InputValueError(f"scale must hold positive column sizes, got {V.show(scale)}")
+        raise InputValueError(f"scale must hold positive column sizes, got {validation.show(scale)}")
     return scale
 
 
@@ -96,7 +96,7 @@ def _scaled(A: FloatArray, scale: ArrayLike | None) -> FloatArray:
     with np.errstate(over="ignore", under="ignore"):
         out = A / scale[..., None, :]
     if not np.isfinite(out).all():
-        raise InputValueError(f"scale is too small for A: A / scale overflows (scale = {V.show(scale)})")
+        raise InputValueError(f"scale is too small for A: A / scale overflows (scale = {validation.show(scale)})")
     return out
 
 
@@ -196,7 +196,7 @@ def null_space(A: ArrayLike, scale: ArrayLike | None = None) -> FloatArray:
     >>> (null_space([[1e6, 1.0]]).round(9) + 0.0).tolist()          # x = -1e-6 y
     [[-1e-06], [1.0]]
     """
-    A = V.finite_array("A", A)
+    A = validation.finite_array("A", A)
     if A.ndim != 2:
         raise InputValueError(f"A must be one matrix (m, n) for null_space, got shape {A.shape} (loop over a batch)")
     r = int(rank(A, scale))
@@ -229,7 +229,7 @@ def pinv_columns(A: ArrayLike) -> FloatArray:
     >>> (pinv_columns([[1e12, 0.0], [0.0, 1.0], [0.0, 0.0]]) * [1e12, 1, 1]).round(12).tolist()
     [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0]]
     """
-    A = V.finite_array("A", A)
+    A = validation.finite_array("A", A)
     if A.ndim != 2:
         raise InputValueError(f"A must be one matrix (m, n), got shape {A.shape}")
     scale = column_norms(A)

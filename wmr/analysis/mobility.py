@@ -31,7 +31,7 @@ import functools
 import numpy as np
 
 from ..errors import InputValueError
-from ..model import validation as V
+from ..model import validation
 from ..model.backend import NUMERIC
 from ..model.platform import E
 from ..model.robot import Robot
@@ -73,7 +73,7 @@ def twist_constraints(robot: Robot, beta: ArrayLike, free: ArrayLike | None = No
     >>> A.shape, base
     ((3, 3), 3)
     """
-    robot = V.numeric_robot(robot)
+    robot = validation.numeric_robot(robot)
     beta = robot.effective_beta(beta)
     free = np.ones(robot.n_rates, dtype=bool) if free is None else np.asarray(free, dtype=bool)
     terms, base_rank = robot._layout.memo(("twist_constraints", free.tobytes()), lambda: _constraint_terms(robot, free))
@@ -130,7 +130,7 @@ def rank_F(robot: Robot, beta: ArrayLike) -> IntArray:
     >>> rank_F(paper_robot("centred"), [[0.0, 0.0, 0.0], [0.1, 0.2, 0.3]]).tolist()
     [5, 6]
     """
-    robot = V.numeric_robot(robot)
+    robot = validation.numeric_robot(robot)
     A, base = twist_constraints(robot, beta)
     return base + rank(A, scale=robot.F_column_norms[:3])  # the twist columns of F, scaled as in rank(F)
 
@@ -183,7 +183,7 @@ def admissible_twists(robot: Robot, beta: ArrayLike) -> FloatArray:
     >>> np.abs(basis.ravel()).round(12).tolist()                              # only y translation
     [0.0, 0.0, 1.0]
     """
-    robot = V.numeric_robot(robot)
+    robot = validation.numeric_robot(robot)
     beta = robot.effective_beta(beta)
     if beta.ndim != 1:
         raise InputValueError(

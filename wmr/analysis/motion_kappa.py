@@ -26,7 +26,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..model import validation as V
+from ..model import validation
 from ..model.robot import Robot
 from ..model.tolerance import near_zero
 from ..model.types import ArrayLike, FloatArray, TwistLike
@@ -55,7 +55,7 @@ def rotation_twists(centres: ArrayLike) -> FloatArray:
     >>> rotation_twists([0.0, 2.0]).tolist()           # about (0, 2): C moves along +x
     [1.0, 2.0, -0.0]
     """
-    U = V.finite_array("centres", centres, last=2)
+    U = validation.finite_array("centres", centres, last=2)
     return np.stack([np.ones(U.shape[:-1]), U[..., 1], -U[..., 0]], axis=-1)
 
 
@@ -83,8 +83,8 @@ def motion_kappa(robot: Robot, twist: TwistLike, L: float | None = None) -> Floa
     >>> round(float(motion_kappa(bot, [1.0, 0.0, 0.0])), 9), float(motion_kappa(bot, [0.0, 1.0, 0.0]))
     (1.414213562, inf)
     """
-    robot = V.numeric_robot(robot)
-    L = characteristic_length(robot) if L is None else V.number("L", V.positive("L", L))
+    robot = validation.numeric_robot(robot)
+    L = characteristic_length(robot) if L is None else validation.number("L", validation.positive("L", L))
     return condition_number(robot.J(steering_angles(robot, twist), L=L))
 
 
@@ -100,7 +100,7 @@ def mount_circle(robot: Robot) -> tuple[FloatArray, float] | None:
     -------
     tuple (centre numpy.ndarray (2,), radius float) or None
     """
-    d = V.numeric_robot(robot).mount_points
+    d = validation.numeric_robot(robot).mount_points
     if len(d) < 3:
         return None
     try:
@@ -163,13 +163,13 @@ def motion_map(robot: Robot, n: int = 121, half_width: float | None = None, L: f
     -------
     MotionMap
     """
-    robot = V.numeric_robot(robot)
-    n = V.integer("n", n, minimum=2)
+    robot = validation.numeric_robot(robot)
+    n = validation.integer("n", n, minimum=2)
     d = robot.mount_points
     if half_width is None:
         h = 2.5 * float(np.linalg.norm(d, axis=1).max())
     else:
-        h = float(V.number("half_width", V.positive("half_width", half_width)))
+        h = float(validation.number("half_width", validation.positive("half_width", half_width)))
     x = y = np.linspace(-h, h, n)
     U = np.stack(np.meshgrid(x, y), axis=-1)  # (n, n, 2)
     K = motion_kappa(robot, rotation_twists(U), L=L)

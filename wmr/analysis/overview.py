@@ -30,7 +30,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..model import validation as V
+from ..model import validation
 from ..model.limits import check
 from ..model.robot import Robot
 from ..model.tolerance import TOL
@@ -75,7 +75,7 @@ def special_twists(robot):
     -------
     numpy.ndarray (4 + w, 3)
     """
-    robot = V.numeric_robot(robot)
+    robot = validation.numeric_robot(robot)
     special = [[0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [0.0, 1.0, 1.0], [1.0, 0.0, 0.0]]
     special += [[1.0, d[1], -d[0]] for d in robot.mount_points]  # spin about P_i: c_dot = -psi E d_i
     return np.array(special)
@@ -110,12 +110,16 @@ def configurations(robot: Robot, grid: int | None = None, twists: int = TWISTS, 
     >>> configurations(wmr.paper_robot("centred"), grid=64, twists=10).shape
     (81, 3)
     """
-    robot = V.numeric_robot(robot)
+    robot = validation.numeric_robot(robot)
     w, steered = robot.w, np.array(robot.steered, dtype=bool)
     s = int(steered.sum())
-    grid = min(GRID_SIZE, max(1, GRID_ANGLES // max(s, 1))) if grid is None else V.integer("grid", grid, minimum=1)
-    twists = V.integer("twists", twists, minimum=0)
-    seed = V.integer("seed", seed, minimum=0)
+    grid = (
+        min(GRID_SIZE, max(1, GRID_ANGLES // max(s, 1)))
+        if grid is None
+        else validation.integer("grid", grid, minimum=1)
+    )
+    twists = validation.integer("twists", twists, minimum=0)
+    seed = validation.integer("seed", seed, minimum=0)
     steps = max(4, int(np.floor(grid ** (1.0 / s) + 1e-9))) if s else 0
     on_grid = s > 0 and steps**s <= 4 * grid
     most = (steps**s if on_grid else grid if s else 0) + twists + w + 4  # held in memory at once, with their analyses
@@ -167,7 +171,7 @@ def dead_zone_radius(robot: Robot) -> float | None:
     >>> dead_zone_radius(wmr.paper_robot("centred")) is None
     True
     """
-    robot = V.numeric_robot(robot)
+    robot = validation.numeric_robot(robot)
     zones = [dead_zone(u) for u in robot.wheels]
     if any(z is None for z in zones):
         return None
@@ -285,7 +289,7 @@ def overview(robot: Robot, grid: int | None = None, twists: int = TWISTS, seed: 
     >>> round(o.kappa_JL1, 12), o.kappa_J2, o.isotropic
     (1.0, 1.0, {'J_L1': True, 'J2': True})
     """
-    robot = V.numeric_robot(robot)
+    robot = validation.numeric_robot(robot)
     beta = configurations(robot, grid, twists, seed)
     generic = np.random.default_rng(seed).uniform(-np.pi, np.pi, robot.w)
     rf = int(rank_F(robot, generic))

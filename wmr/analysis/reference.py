@@ -21,7 +21,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..errors import InputValueError
-from ..model import validation as V
+from ..model import validation
 from ..model.backend import NUMERIC
 from ..model.robot import Robot
 from ..model.tolerance import column_norms, near_zero
@@ -45,8 +45,8 @@ def J2(robot: Robot, beta: ArrayLike) -> FloatArray:
     -------
     numpy.ndarray (..., 2w, n_rates)
     """
-    robot = V.numeric_robot(robot)
-    return _J2(robot, V.finite_array("beta", beta, last=robot.w))
+    robot = validation.numeric_robot(robot)
+    return _J2(robot, validation.finite_array("beta", beta, last=robot.w))
 
 
 def _J2(robot, beta):
@@ -73,8 +73,8 @@ def F(robot: Robot, beta: ArrayLike) -> FloatArray:
     -------
     numpy.ndarray (..., 2w, 3 + n_rates)
     """
-    robot = V.numeric_robot(robot)
-    B = _J2(robot, V.finite_array("beta", beta, last=robot.w))
+    robot = validation.numeric_robot(robot)
+    B = _J2(robot, validation.finite_array("beta", beta, last=robot.w))
     J1 = np.broadcast_to(robot.J1(), B.shape[:-2] + (2 * robot.w, 3))
     return np.concatenate([J1, -B], axis=-1)
 
@@ -92,14 +92,14 @@ def J(robot: Robot, beta: ArrayLike, L: float = 1.0) -> FloatArray:
     -------
     numpy.ndarray (..., 3, n_rates)
     """
-    robot = V.numeric_robot(robot)
-    B = _J2(robot, V.finite_array("beta", beta, last=robot.w))
+    robot = validation.numeric_robot(robot)
+    B = _J2(robot, validation.finite_array("beta", beta, last=robot.w))
     with np.errstate(over="ignore", invalid="ignore"):
         return _finite("robot", robot.J1(L).T @ B)
 
 
 def _matrices(A: ArrayLike, square: bool = False) -> FloatArray:
-    A = V.finite_array("A", A)
+    A = validation.finite_array("A", A)
     if A.ndim < 2 or min(A.shape[-2:]) == 0 or (square and A.shape[-1] != A.shape[-2]):
         raise InputValueError(
             f"A must have shape (..., m, n) with m, n >= 1{' and m = n' if square else ''}, got {A.shape}"
@@ -198,10 +198,10 @@ def forward(robot: Robot, beta: ArrayLike, rates: ArrayLike) -> tuple[FloatArray
         :math:`\mathbf J_1\mathbf t - \mathbf J_2\dot{\boldsymbol\theta}`.
     admissible : numpy.ndarray of bool (...)
     """
-    robot = V.numeric_robot(robot)
-    rates = V.finite_array("rates", rates, last=robot.n_rates)
-    beta = V.finite_array("beta", beta, last=robot.w)
-    V.batch_shape({"beta": beta, "rates": rates})
+    robot = validation.numeric_robot(robot)
+    rates = validation.finite_array("rates", rates, last=robot.n_rates)
+    beta = validation.finite_array("beta", beta, last=robot.w)
+    validation.batch_shape({"beta": beta, "rates": rates})
     rhs = (_J2(robot, beta) @ rates[..., None])[..., 0]
     J1 = robot.J1()
     t = (np.linalg.pinv(J1) @ rhs[..., None])[..., 0]
@@ -237,11 +237,11 @@ def inverse(
         :math:`\mathbf J_1\mathbf t - \mathbf J_2\dot{\boldsymbol\theta}`.
     admissible : numpy.ndarray of bool (...)
     """
-    robot = V.numeric_robot(robot)
-    twist = V.twist_array("twist", twist)
-    beta_dot = None if beta_dot is None else V.finite_array("beta_dot", beta_dot, last=robot.w)
-    beta = V.finite_array("beta", beta, last=robot.w)
-    V.batch_shape({"beta": beta, "twist": twist, "beta_dot": beta_dot})
+    robot = validation.numeric_robot(robot)
+    twist = validation.twist_array("twist", twist)
+    beta_dot = None if beta_dot is None else validation.finite_array("beta_dot", beta_dot, last=robot.w)
+    beta = validation.finite_array("beta", beta, last=robot.w)
+    validation.batch_shape({"beta": beta, "twist": twist, "beta_dot": beta_dot})
     B = _J2(robot, beta)
     v = (robot.J1() @ twist[..., None])[..., 0]
     batch = np.broadcast_shapes(B.shape[:-2], v.shape[:-1])

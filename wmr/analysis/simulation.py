@@ -17,7 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputTypeError, InputValueError
-from ..model import validation as V
+from ..model import validation
 from ..model.robot import Robot
 from ..model.types import ArrayLike, FloatArray
 from .kinematics import forward
@@ -64,7 +64,7 @@ class Trajectory:
         numpy.ndarray (N, ..., 2)
             :math:`[X, Y] + \\mathbf R(\\psi)\\,\\mathbf p` at every sample.
         """
-        p = V.finite_array("body_points", body_points, last=2)
+        p = validation.finite_array("body_points", body_points, last=2)
         psi, XY = self.pose[:, 0], self.pose[:, 1:]
         c, s = np.cos(psi), np.sin(psi)
         per_sample = p.ndim >= 2 and p.shape[0] == len(self.t)
@@ -95,19 +95,19 @@ class Trajectory:
         -------
         numpy.ndarray (N, ..., 2)
         """
-        i = V.integer("i", i)
+        i = validation.integer("i", i)
         if not -self.robot.w <= i < self.robot.w:
             raise InputValueError(f"i must be a unit index in 0..{self.robot.w - 1}, got {i}")
         pts = self.robot.wheels[i].points(self.beta[:, i])
         if not isinstance(key, str) or key not in pts:
             raise (InputTypeError if not isinstance(key, str) else InputValueError)(
-                f"key must be one of {sorted(pts)}, got {V.show(key)}"
+                f"key must be one of {sorted(pts)}, got {validation.show(key)}"
             )
         return self.world(pts[key])
 
 
 def _one(name, value, size):
-    arr = V.finite_array(name, value, last=size)
+    arr = validation.finite_array(name, value, last=size)
     if arr.ndim != 1:
         raise InputValueError(f"{name} must be one vector of shape ({size},), got shape {arr.shape}")
     return arr
@@ -173,10 +173,10 @@ def simulate(
     >>> (tr.pose[-1].round(12) + 0.0).tolist(), bool(tr.slip.max() < 1e-12)   # 1 m along +y, no slip
     ([0.0, 0.0, 1.0], True)
     """
-    robot = V.numeric_robot(robot)
-    t_end = V.number("t_end", V.positive("t_end", t_end))
-    dt = V.number("dt", V.positive("dt", dt))
-    max_steps = V.integer("max_steps", max_steps, minimum=1)
+    robot = validation.numeric_robot(robot)
+    t_end = validation.number("t_end", validation.positive("t_end", t_end))
+    dt = validation.number("dt", validation.positive("dt", dt))
+    max_steps = validation.integer("max_steps", max_steps, minimum=1)
     beta0 = _one("beta0", beta0, robot.w)
     pose0 = _one("pose0", pose0, 3)
     with np.errstate(over="ignore"):

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..model import validation as V
+from ..model import validation
 from ..model.platform import wrap_angle
 from ..model.tolerance import TOL
 from .isotropy import characteristic_length
@@ -80,8 +80,8 @@ def singular_families(robot, L=None):
     >>> singular_families(wmr.paper_robot("offset", d=0.5))
     []
     """
-    robot = V.numeric_robot(robot)
-    L = characteristic_length(robot) if L is None else V.number("L", V.positive("L", L))
+    robot = validation.numeric_robot(robot)
+    L = characteristic_length(robot) if L is None else validation.number("L", validation.positive("L", L))
     steered = np.array(robot.steered, dtype=bool)
     pts = robot.mount_points
     size = float(np.abs(pts).max()) or 1.0

@@ -42,7 +42,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..errors import InputValueError
-from ..model import validation as V
+from ..model import validation
 from ..model.platform import wrap_angle
 from ..model.robot import Robot
 from ..model.tolerance import TOL, near_zero
@@ -96,7 +96,7 @@ def numeric_robot(robot: Robot) -> Robot:
     -------
     Robot
     """
-    return V.robot(robot).numeric()
+    return validation.robot(robot).numeric()
 
 
 # ------------------------------------------------------------------------------------- det J
@@ -123,7 +123,7 @@ def det_J(robot: Robot, beta: ArrayLike, L: float | None = None) -> FloatArray:
     >>> abs(float(det_J(bot, [0.3, 0.3, 0.3]))) < 1e-15      # item (i)
     True
     """
-    robot = V.numeric_robot(robot)
+    robot = validation.numeric_robot(robot)
     require_square(robot)
     return det(robot.J(beta, L=default_L(robot, L)))  # closed form, batched
 
@@ -143,7 +143,7 @@ def det_J_scale(robot: Robot, beta: ArrayLike, L: float | None = None) -> FloatA
     -------
     numpy.ndarray (...)
     """
-    robot = V.numeric_robot(robot)
+    robot = validation.numeric_robot(robot)
     require_square(robot)
     J = robot.J(beta, L=default_L(robot, L))
     return np.prod(np.linalg.norm(J, axis=-2), axis=-1)
@@ -228,7 +228,7 @@ def classify(robot: Robot, beta: ArrayLike, L: float | None = None) -> Classific
     Classification
     """
     require_square(robot)
-    robot = V.numeric_robot(robot)
+    robot = validation.numeric_robot(robot)
     beta = robot.effective_beta(beta)
     if beta.ndim != 1:
         raise InputValueError(f"beta must be one configuration of shape (3,) for classify, got shape {beta.shape}")
@@ -283,8 +283,8 @@ def singular_motions(robot: Robot, beta1: float) -> tuple[FloatArray, list[str]]
         From :func:`classify`.
     """
     require_square(robot)
-    robot = V.numeric_robot(robot)
-    beta1 = V.number("beta1", beta1)
+    robot = validation.numeric_robot(robot)
+    beta1 = validation.number("beta1", beta1)
     rows = []
     for a in (0.0, np.pi):
         for b in (0.0, np.pi):

@@ -10,7 +10,7 @@ from __future__ import annotations
 import dataclasses
 
 from ..errors import InputValueError
-from ..model import validation as V
+from ..model import validation
 from ..model.lazysympy import sp
 from ..model.robot import Robot
 from ..model.types import Numbers
@@ -35,7 +35,7 @@ def require_square(robot: Robot) -> None:
     wmr.errors.InputValueError
         For any other robot (dual wheels: analyse the kinematically equivalent centred robot).
     """
-    V.robot(robot)
+    validation.robot(robot)
     if robot.n_rates != 3 or robot.w != 3:
         raise InputValueError(
             f"det J needs a square J (three centred wheels, n_rates = 3); got a robot with w = {robot.w}, "
@@ -57,13 +57,13 @@ def default_L(robot: Robot, L: Numbers | None, numeric: bool = True) -> Numbers:
     -------
     float or sympy.Expr
     """
-    V.robot(robot)
+    validation.robot(robot)
     if L is not None:
-        L = V.positive("L", L)
-        return V.number("L", L) if numeric else L
-    if V.free_symbols(V.robot(robot)):
+        L = validation.positive("L", L)
+        return validation.number("L", L) if numeric else L
+    if validation.free_symbols(validation.robot(robot)):
         raise InputValueError(
-            f"L must be given explicitly for a robot with symbolic mount points, got L = None for {V.show(robot)}"
+            f"L must be given explicitly for a robot with symbolic mount points, got L = None for {validation.show(robot)}"
         )
     return characteristic_length(robot)
 
@@ -80,7 +80,7 @@ def exact_robot(robot: Robot) -> Robot:
     -------
     Robot
     """
-    if V.robot(robot).is_symbolic:
+    if validation.robot(robot).is_symbolic:
         return robot
     ns = [sp.sqrt(2), sp.sqrt(3)]
     units = [

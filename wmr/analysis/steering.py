@@ -16,7 +16,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputValueError
-from ..model import validation as V
+from ..model import validation
 from ..model.platform import point_velocity
 from ..model.robot import Robot
 from ..model.tolerance import TOL
@@ -87,8 +87,8 @@ def instantaneous_centre(twist: TwistLike, length: float | None = None) -> Insta
     >>> ic.point.tolist()
     [-2.0, 0.0]
     """
-    t = V.twist_array("twist", twist)
-    length = None if length is None else V.number("length", V.positive("length", length))
+    t = validation.twist_array("twist", twist)
+    length = None if length is None else validation.number("length", validation.positive("length", length))
     psi, c = t[..., 0], t[..., 1:]
     big = np.max(np.abs(c), axis=-1)  # speeds up to 2.4e308: scaled first
     m = np.where(big > 0, big, 1.0)
@@ -151,12 +151,12 @@ def steering_angles(robot: Robot, twist: TwistLike, current: ArrayLike | None = 
     >>> np.degrees(beta).round(9).tolist()                              # axles point at C
     [0.0, -120.0, 120.0]
     """
-    robot = V.numeric_robot(robot)
-    t = V.twist_array("twist", twist)
+    robot = validation.numeric_robot(robot)
+    t = validation.twist_array("twist", twist)
     w = robot.w
     if current is not None:
-        current = V.finite_array("current", current, last=w)
-    batch = V.batch_shape({"twist": t, "current": current})
+        current = validation.finite_array("current", current, last=w)
+    batch = validation.batch_shape({"twist": t, "current": current})
     tw = np.broadcast_to(t, batch + (3,)).reshape(-1, 3)
     cur = None if current is None else np.broadcast_to(current, batch + (w,)).reshape(-1, w)
     d = robot.mount_points  # (w, 2)
@@ -203,7 +203,7 @@ def centre_to_wheels(twist: TwistLike, d: ArrayLike) -> FloatArray:
     >>> centre_to_wheels([1.0, 0.0, 2.0], [[1.0, 0.0]]).tolist()          # U = (-2, 0)
     [[-3.0, 0.0]]
     """
-    d = V.finite_array("d", d, last=2)
+    d = validation.finite_array("d", d, last=2)
     ic = instantaneous_centre(twist, length=float(np.abs(d).max()) or None)
     if np.any(ic.kind != FINITE):
         bad = np.asarray(twist)[ic.kind != FINITE][:1].tolist()

@@ -21,7 +21,7 @@ from collections.abc import Sequence
 from typing import Any
 
 from ..errors import InputTypeError
-from ..model import validation as V
+from ..model import validation
 from ..model.types import FloatArray, TwistLike
 from .extras import require
 
@@ -42,8 +42,8 @@ def is_chassis_speeds(obj: object) -> bool:
     bool
     """
     if isinstance(obj, Sequence) and not isinstance(obj, str):
-        return bool(obj) and all(V.twist_kind(x) is not None for x in obj)
-    return V.twist_kind(obj) is not None
+        return bool(obj) and all(validation.twist_kind(x) is not None for x in obj)
+    return validation.twist_kind(obj) is not None
 
 
 def twist_of(speeds: Any) -> FloatArray:
@@ -69,9 +69,9 @@ def twist_of(speeds: Any) -> FloatArray:
     if not is_chassis_speeds(speeds):
         raise InputTypeError(
             f"speeds must be a WPILib ChassisSpeeds(vx, vy, omega) or Twist2d(dx, dy, dtheta), "
-            f"or a sequence of them, got {V.show(speeds)}"
+            f"or a sequence of them, got {validation.show(speeds)}"
         )
-    return V.twist_array("speeds", speeds)
+    return validation.twist_array("speeds", speeds)
 
 
 def chassis_speeds(twist: TwistLike) -> Any:
@@ -85,6 +85,6 @@ def chassis_speeds(twist: TwistLike) -> Any:
     -------
     wpimath.kinematics.ChassisSpeeds
     """
-    psi_dot, vx, vy = V.finite_array("twist", twist, last=3).reshape(3)
+    psi_dot, vx, vy = validation.finite_array("twist", twist, last=3).reshape(3)
     kinematics = require("wpilib", "WPILib ChassisSpeeds", "wpimath.kinematics")
     return kinematics.ChassisSpeeds(float(vx), float(vy), float(psi_dot))

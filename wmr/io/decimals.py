@@ -46,7 +46,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import InputTypeError, InputValueError
-from ..model import validation as V
+from ..model import validation
 
 __all__ = ["DIGITS", "DEGREES", "quantise", "float_text", "quantise_all", "length_scale"]
 
@@ -68,7 +68,7 @@ def _thresholds(digits: int) -> np.ndarray:
 
 def _digits(digits):
     if isinstance(digits, bool) or not isinstance(digits, (int, np.integer)):
-        raise InputTypeError(f"digits must be an int, got {V.show(digits)}")
+        raise InputTypeError(f"digits must be an int, got {validation.show(digits)}")
     if not 1 <= digits <= 15:
         raise InputValueError(f"digits must be from 1 to 15 (a double holds 15 decimal digits), got {digits}")
     return int(digits)
@@ -119,14 +119,16 @@ def quantise(x: Any, scale: Any = None, digits: int = DIGITS) -> Any:
     n_digits = _digits(digits)
     for name, v in (("x", x), ("scale", scale)):
         if isinstance(v, (str, bytes, bool)) or (v is None and name == "x"):
-            raise InputTypeError(f"{name} must be a real number or an array of them, got {V.show(v)}")
+            raise InputTypeError(f"{name} must be a real number or an array of them, got {validation.show(v)}")
     try:
         a = np.asarray(x, dtype=float)
         s = np.abs(a) if scale is None else np.asarray(scale, dtype=float)
     except (TypeError, ValueError):
-        raise InputValueError(f"quantise needs real numbers, got x={V.show(x)}, scale={V.show(scale)}") from None
+        raise InputValueError(
+            f"quantise needs real numbers, got x={validation.show(x)}, scale={validation.show(scale)}"
+        ) from None
     if scale is not None and not (np.all(np.isfinite(s)) and np.all(s >= 0)):
-        raise InputValueError(f"scale must be finite and >= 0, got {V.show(scale)}")
+        raise InputValueError(f"scale must be finite and >= 0, got {validation.show(scale)}")
     finite = np.isfinite(a)
     mag = np.where(finite, np.maximum(np.abs(a), s), 0.0)
     mag = np.where(np.isfinite(mag), mag, 0.0)
@@ -170,7 +172,7 @@ def float_text(x: Any, scale: Any = None, digits: int = DIGITS) -> str:
     ('0.3', '0.0', '0.667', '1e-05')
     """
     if np.ndim(x) != 0:
-        raise InputValueError(f"float_text writes one number, got {V.show(x)}")
+        raise InputValueError(f"float_text writes one number, got {validation.show(x)}")
     return repr(quantise(x, scale, digits))
 
 

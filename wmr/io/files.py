@@ -19,7 +19,7 @@ import os
 from pathlib import Path
 
 from ..errors import InputTypeError, InputValueError
-from ..model import validation as V
+from ..model import validation
 from ..model.robot import Robot
 from ..model.types import JointNames, PathLike, WheelJoints
 from . import ros2, toml, urdf_read, urdf_write
@@ -48,7 +48,7 @@ def format_of(path: PathLike) -> str:
     ('urdf', 'ros2', 'toml')
     """
     if not isinstance(path, (str, os.PathLike)):
-        raise InputTypeError(f"path must be a file name (str or os.PathLike), got {V.show(path)}")
+        raise InputTypeError(f"path must be a file name (str or os.PathLike), got {validation.show(path)}")
     suffix = Path(path).suffix.lower()
     return next((f for f, suffixes in FORMATS.items() if suffix in suffixes), "toml")
 
@@ -122,7 +122,7 @@ def dump(
     if format is None:
         format = "toml" if path is None else format_of(path)
     if format not in FORMATS:
-        raise InputValueError(f"format must be one of {', '.join(FORMATS)}, got {V.show(format)}")
+        raise InputValueError(f"format must be one of {', '.join(FORMATS)}, got {validation.show(format)}")
     if format == "ros2":
         return ros2.to_ros2(robot, path, joint_names=joint_names)
     if joint_names is not None:

@@ -30,7 +30,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..errors import InputValueError
-from ..model import validation as V
+from ..model import validation
 from ..model.platform import wrap_angle
 from ..model.robot import Robot
 from ..model.types import ArrayLike, FloatArray, Point
@@ -54,7 +54,7 @@ _HALF_PI, _QUARTER_PI = np.pi / 2, np.pi / 4
 # ------------------------------------------------------------------------------------------ building
 def _radii(radius, n):
     """One radius per wheel: ``radius`` given once or ``n`` times."""
-    r = V.finite_array("radius", radius)
+    r = validation.finite_array("radius", radius)
     if r.size not in (1, n):
         raise InputValueError(f"radius must be one radius or one per wheel ({n}), got {r.size}: {r.tolist()}")
     return np.broadcast_to(r.reshape(-1), (n,))
@@ -84,7 +84,7 @@ def differential(
     >>> differential(0.4, 0.05).mount_points.tolist()
     [[0.0, 0.2], [0.0, -0.2]]
     """
-    half = V.positive("track", track) / 2
+    half = validation.positive("track", track) / 2
     right = radius if radius_right is None else radius_right
     return Robot(
         [FixedWheel((0.0, half), r=radius, angle=_HALF_PI), FixedWheel((0.0, -half), r=right, angle=_HALF_PI)],
@@ -110,8 +110,8 @@ def rectangle(length: float, width: float, centre: Point = (0.0, 0.0)) -> FloatA
     >>> rectangle(0.5, 0.4).tolist()
     [[0.25, 0.2], [0.25, -0.2], [-0.25, 0.2], [-0.25, -0.2]]
     """
-    a, b = V.positive("length", length) / 2, V.positive("width", width) / 2
-    cx, cy = V.point("centre", centre)
+    a, b = validation.positive("length", length) / 2, validation.positive("width", width) / 2
+    cx, cy = validation.point("centre", centre)
     return np.array([[cx + a, cy + b], [cx + a, cy - b], [cx - a, cy + b], [cx - a, cy - b]], dtype=float)
 
 
@@ -129,7 +129,7 @@ def mecanum(positions: ArrayLike, radius: ArrayLike, name: str = "mecanum drive"
     -------
     Robot
     """
-    positions = V.finite_array("positions", positions, last=2).reshape(-1, 2)
+    positions = validation.finite_array("positions", positions, last=2).reshape(-1, 2)
     if positions.shape != (4, 2):
         raise InputValueError(f"positions must be the four mount points FL, FR, RL, RR, got shape {positions.shape}")
     radii = _radii(radius, 4)
@@ -167,9 +167,9 @@ def omni(n: int, ring: float, radius: float, offset: float = 0.0, name: str = "o
     >>> np.degrees([u.angle for u in omni(3, 0.2, 0.03).wheels]).round(9).tolist()
     [0.0, 120.0, -120.0]
     """
-    n = V.integer("n", n, minimum=3)
-    ring = V.positive("ring", ring)
-    angles = wrap_angle(V.number("offset", offset) + 2 * np.pi * np.arange(n) / n)
+    n = validation.integer("n", n, minimum=3)
+    ring = validation.positive("ring", ring)
+    angles = wrap_angle(validation.number("offset", offset) + 2 * np.pi * np.arange(n) / n)
     return Robot(
         [SwedishWheel((ring * np.cos(a), ring * np.sin(a)), r=radius, angle=float(a), roller=_HALF_PI) for a in angles],
         name=name,
@@ -189,7 +189,7 @@ def swerve(positions: ArrayLike, radius: ArrayLike, name: str = "swerve drive") 
     -------
     Robot
     """
-    positions = V.finite_array("positions", positions, last=2).reshape(-1, 2)
+    positions = validation.finite_array("positions", positions, last=2).reshape(-1, 2)
     radii = _radii(radius, len(positions))
     return Robot([CentredWheel(tuple(p), r=float(r)) for p, r in zip(positions, radii)], name=name)
 
@@ -229,8 +229,11 @@ def car(
     >>> [u.kind for u in car(0.5, 0.5, 0.0, 0.1).wheels]
     ['centred', 'fixed', 'fixed']
     """
-    base = V.positive("wheelbase", wheelbase)
-    t, s = V.nonnegative("traction_track", traction_track) / 2, V.nonnegative("steering_track", steering_track) / 2
+    base = validation.positive("wheelbase", wheelbase)
+    t, s = (
+        validation.nonnegative("traction_track", traction_track) / 2,
+        validation.nonnegative("steering_track", steering_track) / 2,
+    )
     rs = traction_radius if steering_radius is None else steering_radius
     steered = [CentredWheel((base, y), r=rs, driven={"drive": False}) for y in ((s, -s) if s else (0.0,))]
     traction = [FixedWheel((0.0, y), r=traction_radius, angle=_HALF_PI) for y in ((t, -t) if t else (0.0,))]

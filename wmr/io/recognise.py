@@ -18,7 +18,7 @@ import numpy as np
 
 from ..analysis.linalg import rank
 from ..errors import InputValueError
-from ..model import validation as V
+from ..model import validation
 from ..model.platform import wrap_angle
 from ..model.robot import Robot
 from ..model.tolerance import TOL
@@ -236,7 +236,7 @@ def recognise(robot: Robot, names: Sequence[str], where: str = "this format") ->
     >>> recognise(differential(0.4, 0.05), ["mecanum", "differential"]).numbers
     {'track': 0.4}
     """
-    robot = V.numeric_robot(robot)
+    robot = validation.numeric_robot(robot)
     unknown = [n for n in names if n not in LAYOUTS]
     if unknown:
         raise InputValueError(f"names must be layouts ({', '.join(LAYOUTS)}), got {unknown}")
@@ -303,7 +303,7 @@ def rectangle_of(positions: ArrayLike) -> tuple[tuple[int, int, int, int], float
     >>> order, round(length, 12), round(width, 12), centre.tolist()
     ((1, 2, 0, 3), 0.6, 0.4, [0.0, 0.0])
     """
-    p = V.finite_array("positions", positions, last=2).reshape(-1, 2)
+    p = validation.finite_array("positions", positions, last=2).reshape(-1, 2)
     if p.shape != (4, 2):
         raise InputValueError(f"positions must be four points, got shape {p.shape}")
     by_x = sorted(range(4), key=lambda i: (-p[i, 0], -p[i, 1]))

@@ -25,7 +25,7 @@ from collections.abc import Mapping
 from pathlib import Path
 
 from ..errors import InputError, InputTypeError, InputValueError, RobotFileError
-from ..model import validation as V
+from ..model import validation
 from ..model.robot import Robot
 from ..model.types import JointNames, PathLike
 from .decimals import float_text, length_scale
@@ -103,9 +103,9 @@ def from_ros2(path: PathLike, controller: str | None = None) -> Robot:
         If the file cannot be read.
     """
     if not isinstance(path, (str, os.PathLike)):
-        raise InputTypeError(f"path must be a file name (str or os.PathLike), got {V.show(path)}")
+        raise InputTypeError(f"path must be a file name (str or os.PathLike), got {validation.show(path)}")
     if controller is not None and not isinstance(controller, str):
-        raise InputTypeError(f"controller must be a node name (str), got {V.show(controller)}")
+        raise InputTypeError(f"controller must be a node name (str), got {validation.show(controller)}")
     source = os.fspath(path)
     blocks = parse(Path(path).read_bytes(), source)
     found = _controllers(blocks, source)
@@ -197,7 +197,7 @@ def _namer(robot, joint_names):
         or not all(isinstance(m, Mapping) and all(isinstance(v, str) and v for v in m.values()) for m in joint_names)
     ):
         raise InputTypeError(
-            f"joint_names must be one mapping {{joint: name}} per wheel unit ({robot.w}), got {V.show(joint_names)}"
+            f"joint_names must be one mapping {{joint: name}} per wheel unit ({robot.w}), got {validation.show(joint_names)}"
         )
 
     def names(i, joint):
@@ -237,11 +237,11 @@ def to_ros2(
     wmr.errors.InputValueError
         If no controller (or not ``controller``) expresses the robot: the message says why, layout by layout.
     """
-    robot = V.numeric_robot(robot)
+    robot = validation.numeric_robot(robot)
     if path is not None and not isinstance(path, (str, os.PathLike)):
-        raise InputTypeError(f"path must be a file name (str or os.PathLike) or None, got {V.show(path)}")
+        raise InputTypeError(f"path must be a file name (str or os.PathLike) or None, got {validation.show(path)}")
     if controller is not None and controller not in CONTROLLERS:
-        raise InputValueError(f"controller must be one of {', '.join(CONTROLLERS)}, got {V.show(controller)}")
+        raise InputValueError(f"controller must be one of {', '.join(CONTROLLERS)}, got {validation.show(controller)}")
     chosen = [CONTROLLERS[controller]] if controller else list(CONTROLLERS.values())
     layout = recognise(
         robot,

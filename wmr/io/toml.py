@@ -42,7 +42,7 @@ from typing import NoReturn
 import numpy as np
 
 from ..errors import InputError, InputTypeError, InputValueError, LimitError, RobotFileError
-from ..model import validation as V
+from ..model import validation
 from ..model.limits import check, limit
 from ..model.robot import Robot
 from ..model.tolerance import near_zero
@@ -207,9 +207,9 @@ def loads(text: str, source: str = "<string>") -> Robot:
     wmr.errors.RobotFileError: bot.toml:1: wheel[1].radius: missing (the wheel radius in metres, > 0)
     """
     if not isinstance(text, str):
-        raise InputTypeError(f"text must be the TOML text of a robot file (str), got {V.show(text)}")
+        raise InputTypeError(f"text must be the TOML text of a robot file (str), got {validation.show(text)}")
     if not isinstance(source, str):
-        raise InputTypeError(f"source must be a file name (str), got {V.show(source)}")
+        raise InputTypeError(f"source must be a file name (str), got {validation.show(source)}")
     text = text.removeprefix("\ufeff")  # a byte-order mark (some editors write one)
     lines = _Lines(text)
 
@@ -295,7 +295,7 @@ def load(path: PathLike) -> Robot:
         If ``path`` is not a path.
     """
     if not isinstance(path, (str, os.PathLike)):
-        raise InputTypeError(f"path must be a file name (str or os.PathLike), got {V.show(path)}")
+        raise InputTypeError(f"path must be a file name (str or os.PathLike), got {validation.show(path)}")
     raw = Path(path).read_bytes()
     try:
         text = raw.decode("utf-8")
@@ -350,9 +350,9 @@ def dump(robot: Robot, path: PathLike | None = None) -> str:
     radius = 0.05
     <BLANKLINE>
     """
-    robot = V.robot(robot)
+    robot = validation.robot(robot)
     if path is not None and not isinstance(path, (str, os.PathLike)):
-        raise InputTypeError(f"path must be a file name (str or os.PathLike) or None, got {V.show(path)}")
+        raise InputTypeError(f"path must be a file name (str or os.PathLike) or None, got {validation.show(path)}")
     robot = robot.numeric()
     out = [
         "# wmr robot file: lengths in metres, angles in degrees (schema: wmr.io)",

@@ -53,7 +53,7 @@ from pathlib import Path
 import numpy as np
 
 from ..errors import InputError, InputTypeError, InputValueError, RobotFileError
-from ..model import validation as V
+from ..model import validation
 from ..model.robot import Robot
 from ..model.types import PathLike, WheelJoints
 from ..model.wheels import CentredWheel, DualWheel, FixedWheel, OffsetWheel, SwedishWheel
@@ -81,7 +81,7 @@ def parse_wheel_joints(text):
     {'left_wheel_joint': None, 'right_wheel_joint': 0.05}
     """
     if not isinstance(text, str):
-        raise InputTypeError(f"wheel joints must be a string 'name[=radius],...', got {V.show(text)}")
+        raise InputTypeError(f"wheel joints must be a string 'name[=radius],...', got {validation.show(text)}")
     out: dict[str, float | None] = {}
     for item in filter(None, (s.strip() for s in text.split(","))):
         name, _, radius = (part.strip() for part in item.partition("="))
@@ -89,7 +89,7 @@ def parse_wheel_joints(text):
             value = float(radius) if radius else None
         except ValueError:
             raise InputValueError(f"the radius of wheel joint {name!r} must be a number, got {radius!r}") from None
-        out[name] = None if value is None else V.positive(f"the radius of wheel joint {name!r}", value)
+        out[name] = None if value is None else validation.positive(f"the radius of wheel joint {name!r}", value)
     if not out:
         raise InputValueError(f"wheel joints must name at least one joint, got {text!r}")
     return out
@@ -230,12 +230,12 @@ def read_urdf(path: PathLike, wheel_joints: WheelJoints | None = None) -> tuple[
 'drive': 'caster_wheel_joint'}]
     """
     if not isinstance(path, (str, os.PathLike)):
-        raise InputTypeError(f"path must be a file name (str or os.PathLike), got {V.show(path)}")
+        raise InputTypeError(f"path must be a file name (str or os.PathLike), got {validation.show(path)}")
     if isinstance(wheel_joints, str):
         wheel_joints = parse_wheel_joints(wheel_joints)
     elif wheel_joints is not None and not isinstance(wheel_joints, Mapping):
         if not all(isinstance(n, str) for n in wheel_joints):
-            raise InputTypeError(f"wheel_joints must be joint names, got {V.show(wheel_joints)}")
+            raise InputTypeError(f"wheel_joints must be joint names, got {validation.show(wheel_joints)}")
         wheel_joints = dict.fromkeys(wheel_joints)
     source = os.fspath(path)
     rd = UrdfTree(Path(path).read_bytes(), source)

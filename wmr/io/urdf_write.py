@@ -35,7 +35,7 @@ from xml.sax.saxutils import quoteattr
 import numpy as np
 
 from ..errors import InputTypeError, InputValueError
-from ..model import validation as V
+from ..model import validation
 from ..model.robot import Robot
 from ..model.types import PathLike
 from .decimals import float_text, length_scale, quantise
@@ -207,9 +207,9 @@ def to_urdf(robot: Robot, path: PathLike | None = None) -> str:
     ['<joint name="base_joint" type="fixed">', '<joint name="wheel1_steer" type="continuous">', \
 '<joint name="wheel1_drive" type="continuous">']
     """
-    robot = V.numeric_robot(robot)
+    robot = validation.numeric_robot(robot)
     if path is not None and not isinstance(path, (str, os.PathLike)):
-        raise InputTypeError(f"path must be a file name (str or os.PathLike) or None, got {V.show(path)}")
+        raise InputTypeError(f"path must be a file name (str or os.PathLike) or None, got {validation.show(path)}")
     height, size = max(float(u.r) for u in robot.wheels), length_scale(robot)
     span = np.abs(robot.mount_points).max(axis=0) * 2 + height
     lines = [

@@ -31,7 +31,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import InputTypeError, InputValueError
-from ..model import validation as V
+from ..model import validation
 from ..model.robot import Robot
 from ..model.types import ArrayLike, FloatArray
 from .chassis import chassis_speeds, twist_of
@@ -101,10 +101,10 @@ def from_wpilib(kinematics: Any, wheel_radius: ArrayLike) -> Robot:
         raise InputTypeError(
             f"kinematics must be a WPILib kinematics object (wpimath.kinematics "
             f"SwerveDrive*Kinematics, MecanumDriveKinematics or DifferentialDriveKinematics), got "
-            f"{V.show(kinematics)}"
+            f"{validation.show(kinematics)}"
         )
     k = _kinematics()
-    radius = V.finite_array("wheel_radius", wheel_radius)
+    radius = validation.finite_array("wheel_radius", wheel_radius)
     if isinstance(kinematics, k.DifferentialDriveKinematics):
         if radius.size not in (1, 2):
             raise InputValueError(f"wheel_radius must be one radius or two (left, right), got {radius.tolist()}")
@@ -218,7 +218,9 @@ def from_module_states(states: Sequence[Any]) -> tuple[FloatArray, FloatArray]:
     alpha, value = [], []
     for s in states:
         if not hasattr(s, "angle") or not (hasattr(s, "speed") or hasattr(s, "distance")):
-            raise InputTypeError(f"states must be SwerveModuleState or SwerveModulePosition objects, got {V.show(s)}")
+            raise InputTypeError(
+                f"states must be SwerveModuleState or SwerveModulePosition objects, got {validation.show(s)}"
+            )
         alpha.append(float(s.angle.radians()))
         value.append(float(s.speed if hasattr(s, "speed") else s.distance))
     return _angles()[1](np.array(alpha), np.array(value))

@@ -18,8 +18,7 @@ from typing import Any, NoReturn
 import numpy as np
 
 from ..errors import FrozenError, InputValueError
-from . import arrays as A
-from . import checks as C
+from . import arrays, checks
 from .backend import NUMERIC, SYMBOLIC, Backend, choose
 from .layout import Layout
 from .lazysympy import sp
@@ -70,7 +69,7 @@ class Robot:
         starts = np.cumsum([0] + [u.n_rates for u in wheels])
         made = object.__setattr__  # the only assignments: the robot is frozen from here on
         made(self, "wheels", wheels)
-        made(self, "name", C.optional_text("name", name) or "robot")
+        made(self, "name", checks.optional_text("name", name) or "robot")
         made(self, "rate_slices", tuple(slice(int(a), int(b)) for a, b in zip(starts[:-1], starts[1:])))
 
     def __setattr__(self, attr: str, value: Any = None) -> NoReturn:
@@ -180,7 +179,7 @@ class Robot:
         >>> bot.effective_beta([[0.1, 0.2], [0.3, 0.4]]).tolist()
         [[0.1, 0.5], [0.3, 0.5]]
         """
-        beta = A.finite_array("beta", beta, last=self.w)
+        beta = arrays.finite_array("beta", beta, last=self.w)
         lay = self._layout
         if lay.own.size:  # (a copy: the caller's array is not changed)
             beta = beta.copy()
@@ -189,7 +188,7 @@ class Robot:
 
     def _beta(self, beta, bk):
         if bk is SYMBOLIC:
-            b = list(self.beta_symbols) if beta is None else list(A.symbolic_vector("beta", beta, self.w))
+            b = list(self.beta_symbols) if beta is None else list(arrays.symbolic_vector("beta", beta, self.w))
             return [
                 b[i] if u.constant_angle is None else sp.sympify(u.constant_angle) for i, u in enumerate(self.wheels)
             ]
@@ -218,11 +217,11 @@ class Robot:
         >>> Robot([CentredWheel((2.0, 0.0), r=1.0)]).J1(L=2.0).tolist()
         [[-0.0, 1.0, 0.0], [1.0, 0.0, 1.0]]
         """
-        L = C.positive("L (characteristic length)", L)
+        L = checks.positive("L (characteristic length)", L)
         bk = choose(L, backend=backend) if not self.is_symbolic else SYMBOLIC
         rows = lambda L: [point_row(u.position, L, backend=bk) for u in self.wheels]  # noqa: E731  (32)
         if bk is NUMERIC:  # J1 once per robot, then its first column / L
-            L = C.number("L (characteristic length)", L)
+            L = checks.number("L (characteristic length)", L)
             M = self._layout.memo("J1", lambda: np.concatenate(rows(1.0))).copy()
             with np.errstate(over="ignore"):
                 M[:, 0] /= L
@@ -351,7 +350,7 @@ class Robot:
         if self.free_symbols:
             raise InputValueError(
                 f"robot has free symbols {sorted(map(str, self.free_symbols))}: it has no numeric "
-                f"counterpart ({C.show(self)})"
+                f"counterpart ({checks.show(self)})"
             )
         lay._numeric["robot"] = numeric = Robot([u.numeric() for u in self.wheels], name=self.name)
         return numeric
@@ -393,8 +392,8 @@ class Robot:
         [[0.0, 0.0], [0.0, 2.0]]
         """
         moved = moved_points([u.position for u in self.wheels], origin, angle)  # (w, 2), checked
-        angle = C.number("angle", angle)
+        angle = checks.number("angle", angle)
         try:
             return Robot([u.remounted(p, angle) for u, p in zip(self.wheels, moved, strict=True)], name=self.name)
         except InputValueError as e:
-            raise InputValueError(f"origin = {C.show(origin)} is too far from the mount points ({e})") from None
+            raise InputValueError(f"origin = {checks.show(origin)} is too far from the mount points ({e})") from None

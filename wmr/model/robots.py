@@ -14,7 +14,7 @@ import dataclasses
 from typing import TypedDict
 
 from ..errors import InputValueError
-from . import validation as V
+from . import validation
 from .lazysympy import is_sympy, sp
 from .robot import Robot
 from .types import Numbers
@@ -63,10 +63,10 @@ def equilateral_mounts(
     >>> equilateral_mounts(2.0, exact=True)
     [(-2, 0), (1, sqrt(3)), (1, -sqrt(3))]
     """
-    L = V.positive("L", L)
-    first_deg = V.real("first_deg", first_deg)
-    clockwise = V.flag("clockwise", clockwise)
-    exact = V.flag("exact", exact)
+    L = validation.positive("L", L)
+    first_deg = validation.real("first_deg", first_deg)
+    clockwise = validation.flag("clockwise", clockwise)
+    exact = validation.flag("exact", exact)
     step = -120 if clockwise else 120
     # the angle exactly (a float is a rational), reduced modulo 360 before anything is added:
     # first_deg = 1e300 must still give three distinct vertices
@@ -118,14 +118,14 @@ def paper_robot(
     Robot('paper-offset': offset@(-0.5, 0.0), offset@(0.25, 0.4330127018922193), offset@(0.25, -0.4330127018922193))
     """
     if not isinstance(kind, str):
-        raise V.kind_error("kind", kind, "'centred', 'offset' or 'dual'")
+        raise validation.kind_error("kind", kind, "'centred', 'offset' or 'dual'")
     if kind not in PAPER_KINDS:
         raise InputValueError(f"kind must be 'centred', 'offset' or 'dual', got {kind!r}")
     lengths = {
-        "d": None if d is None else V.nonnegative("d (offset)", d),  # checked even where unused
-        "b": None if b is None else V.positive("b (half wheel separation)", b),
+        "d": None if d is None else validation.nonnegative("d (offset)", d),  # checked even where unused
+        "b": None if b is None else validation.positive("b (half wheel separation)", b),
     }
-    pts = equilateral_mounts(L, exact=V.flag("exact", exact))
+    pts = equilateral_mounts(L, exact=validation.flag("exact", exact))
     cls = wheel_kind(kind)
     fields = {f.name for f in dataclasses.fields(cls)}
     own = {f: (r if v is None else v) for f, v in lengths.items() if f in fields}  # default r, as (46)

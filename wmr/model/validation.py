@@ -1,4 +1,4 @@
-r"""Every input check of the package under one name: ``from wmr.model import validation as V``.
+r"""Every input check of the package under one name: ``from wmr.model import validation``.
 
 The checks themselves live in three modules, by what they check:
 

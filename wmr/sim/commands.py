@@ -14,7 +14,7 @@ import numpy as np
 from ..analysis.kinematics import inverse
 from ..analysis.simulation import simulate
 from ..analysis.steering import steering_angles
-from ..model import validation as V
+from ..model import validation
 from ..model.platform import point_velocity
 from ..model.robot import Robot
 from ..model.types import ArrayLike, FloatArray, TwistLike
@@ -42,8 +42,8 @@ def start_angles(robot: Robot, twist: TwistLike) -> FloatArray:
     -------
     numpy.ndarray (w,)
     """
-    robot = V.numeric_robot(robot)
-    twist = V.finite_array("twist", twist, last=3).reshape(3)
+    robot = validation.numeric_robot(robot)
+    twist = validation.finite_array("twist", twist, last=3).reshape(3)
     beta = np.array(steering_angles(robot, twist), dtype=float)
     pdot = point_velocity(twist, robot.mount_points)  # (2): c_dot + psi_dot E d_i
     for i, u in enumerate(robot.wheels):
@@ -82,9 +82,13 @@ def twist_schedule(
     >>> s.rates[0].round(9).tolist()                        # v = r theta_dot: 0.5 / 0.05
     [10.0, 10.0, 10.0]
     """
-    robot = V.numeric_robot(robot)
-    twist = V.finite_array("twist", twist, last=3).reshape(3)
-    b0 = start_angles(robot, twist) if beta0 is None else V.finite_array("beta0", beta0, last=robot.w).reshape(robot.w)
+    robot = validation.numeric_robot(robot)
+    twist = validation.finite_array("twist", twist, last=3).reshape(3)
+    b0 = (
+        start_angles(robot, twist)
+        if beta0 is None
+        else validation.finite_array("beta0", beta0, last=robot.w).reshape(robot.w)
+    )
     traj = simulate(robot, lambda t, state: inverse(robot, state[1], twist).value, b0, seconds, dt)
     rates = inverse(robot, traj.beta, twist).value
     return Schedule(traj.t, traj.beta, rates)

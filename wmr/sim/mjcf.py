@@ -27,7 +27,7 @@ import numpy as np
 
 from ..errors import InputTypeError, InputValueError
 from ..io.mechanism import Mechanism
-from ..model import validation as V
+from ..model import validation
 from ..model.robot import Robot
 from ..model.types import ArrayLike
 from ..model.wheels.joints import Joint, rate_columns
@@ -164,9 +164,9 @@ def export(robot: Robot, beta: ArrayLike | None = None, params: Params | None = 
     wmr.errors.InputError
         For bad input, naming the argument.
     """
-    robot = V.numeric_robot(robot)
+    robot = validation.numeric_robot(robot)
     if params is not None and not isinstance(params, Params):
-        raise InputTypeError(f"params must be a wmr.sim.Params, got {V.show(params)}")
+        raise InputTypeError(f"params must be a wmr.sim.Params, got {validation.show(params)}")
     params = (params or Params()).replace(**changes) if changes else (params or Params())
     beta0 = robot.effective_beta(np.zeros(robot.w) if beta is None else beta)
     if beta0.shape != (robot.w,):

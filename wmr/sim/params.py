@@ -41,7 +41,7 @@ import dataclasses
 from dataclasses import dataclass
 
 from ..errors import InputTypeError, InputValueError
-from ..model import validation as V
+from ..model import validation
 
 __all__ = ["CONES", "GRAVITY", "INTEGRATORS", "Params"]
 
@@ -117,12 +117,16 @@ class Params:
     def __post_init__(self):
         for name, allowed in (("integrator", INTEGRATORS), ("cone", CONES)):
             if getattr(self, name) not in allowed:
-                raise InputValueError(f"{name} must be one of {list(allowed)}, got {V.show(getattr(self, name))}")
+                raise InputValueError(
+                    f"{name} must be one of {list(allowed)}, got {validation.show(getattr(self, name))}"
+                )
         for f in dataclasses.fields(self):
             if f.name in ("integrator", "cone"):
                 continue
-            check = V.nonnegative if f.name in ("torsional", "rolling", "steer_damping") else V.positive
-            object.__setattr__(self, f.name, V.number(f.name, check(f.name, getattr(self, f.name))))
+            check = (
+                validation.nonnegative if f.name in ("torsional", "rolling", "steer_damping") else validation.positive
+            )
+            object.__setattr__(self, f.name, validation.number(f.name, check(f.name, getattr(self, f.name))))
 
     def replace(self, **changes: float | str) -> Params:
         """A copy with some parameters changed (each checked).

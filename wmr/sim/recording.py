@@ -14,7 +14,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputValueError
-from ..model import validation as V
+from ..model import validation
 from ..model.types import ArrayLike, FloatArray
 from .mjcf import Export
 from .validity import Validity
@@ -159,11 +159,11 @@ class Schedule:
     rates: np.ndarray
 
     def __post_init__(self):
-        t = V.finite_array("t", self.t)
+        t = validation.finite_array("t", self.t)
         if t.ndim != 1 or len(t) == 0 or (len(t) > 1 and not np.all(np.diff(t) > 0)):
-            raise InputValueError(f"t must be a non-empty increasing vector, got {V.show(self.t)}")
-        beta = V.finite_array("beta", self.beta)
-        rates = V.finite_array("rates", self.rates)
+            raise InputValueError(f"t must be a non-empty increasing vector, got {validation.show(self.t)}")
+        beta = validation.finite_array("beta", self.beta)
+        rates = validation.finite_array("rates", self.rates)
         if beta.ndim != 2 or rates.ndim != 2 or len(beta) != len(t) or len(rates) != len(t):
             raise InputValueError(
                 f"beta and rates must have one row per knot ({len(t)}), got shapes {beta.shape} and {rates.shape}"

@@ -7,7 +7,7 @@ from collections.abc import Callable
 import numpy as np
 
 from ..errors import InputTypeError, InputValueError
-from ..model import validation as V
+from ..model import validation
 from .recording import Recording, Schedule
 from .simulation import MAX_STEPS, Simulation
 
@@ -48,13 +48,13 @@ def run(
     -------
     Recording
     """
-    seconds = V.number("seconds", V.positive("seconds", seconds))
-    control_dt = V.number("control_dt", V.positive("control_dt", control_dt))
-    every = V.integer("every", every, minimum=1)
+    seconds = validation.number("seconds", validation.positive("seconds", seconds))
+    control_dt = validation.number("control_dt", validation.positive("control_dt", control_dt))
+    every = validation.integer("every", every, minimum=1)
     if not isinstance(sim, Simulation):
-        raise InputTypeError(f"sim must be a wmr.sim.Simulation, got {V.show(sim)}")
+        raise InputTypeError(f"sim must be a wmr.sim.Simulation, got {validation.show(sim)}")
     if schedule is not None and not isinstance(schedule, Schedule):
-        raise InputTypeError(f"schedule must be a wmr.sim.Schedule or None, got {V.show(schedule)}")
+        raise InputTypeError(f"schedule must be a wmr.sim.Schedule or None, got {validation.show(schedule)}")
     steps = max(1, round(control_dt / sim.model.opt.timestep))  # a period of at least one step
     n = int(np.ceil(seconds / (steps * sim.model.opt.timestep) - 1e-9))
     if n * steps > MAX_STEPS:

@@ -24,7 +24,7 @@ import numpy as np
 
 from .._version import DISTRIBUTION
 from ..errors import InputValueError, MissingDependencyError
-from ..model import validation as V
+from ..model import validation
 from ..model.robot import Robot
 from ..model.types import ArrayLike, FloatArray
 from .bodies import POSITION, VELOCITY, servo
@@ -129,7 +129,7 @@ class Simulation:
         self._beta: FloatArray = np.array(ex.beta0, dtype=float)
         self._rates: FloatArray = np.zeros(self.robot.n_rates)
         self.command(self._beta, self._rates)
-        settle = V.number("settle", V.nonnegative("settle", settle))
+        settle = validation.number("settle", validation.nonnegative("settle", settle))
         if settle > 0:
             self.advance(settle)
             self.data.time = 0.0
@@ -160,9 +160,11 @@ class Simulation:
         None
         """
         if beta is not None:
-            self._beta = V.finite_array("beta", beta, last=self.robot.w).reshape(self.robot.w).copy()
+            self._beta = validation.finite_array("beta", beta, last=self.robot.w).reshape(self.robot.w).copy()
         if rates is not None:
-            self._rates = V.finite_array("rates", rates, last=self.robot.n_rates).reshape(self.robot.n_rates).copy()
+            self._rates = (
+                validation.finite_array("rates", rates, last=self.robot.n_rates).reshape(self.robot.n_rates).copy()
+            )
         self.data.ctrl[:] = self.targets(self._beta, self._rates, beta_rate)
 
     def targets(self, beta: ArrayLike, rates: ArrayLike, beta_rate: ArrayLike | None = None) -> FloatArray:
@@ -183,11 +185,13 @@ class Simulation:
         numpy.ndarray (..., n_servos)
             In the order of :attr:`servo_names` (MuJoCo's ``ctrl``).
         """
-        beta = V.finite_array("beta", beta, last=self.robot.w)
-        rates = V.finite_array("rates", rates, last=self.robot.n_rates)
+        beta = validation.finite_array("beta", beta, last=self.robot.w)
+        rates = validation.finite_array("rates", rates, last=self.robot.n_rates)
         out = beta @ self._from_beta.T + rates @ self._from_rates.T
         if beta_rate is not None:
-            out = out + self._lead * (V.finite_array("beta_rate", beta_rate, last=self.robot.w) @ self._from_beta.T)
+            out = out + self._lead * (
+                validation.finite_array("beta_rate", beta_rate, last=self.robot.w) @ self._from_beta.T
+            )
         return out
 
     def release(self, names: Iterable[str]) -> None:
@@ -243,7 +247,7 @@ class Simulation:
             eq = self._id(mj.mjtObj.mjOBJ_EQUALITY, f"{n}_lock")
             if eq < 0:
                 raise InputValueError(
-                    f"no lockable drive hinge named {V.show(n)}; drives: {list(self.export.drive_names)}"
+                    f"no lockable drive hinge named {validation.show(n)}; drives: {list(self.export.drive_names)}"
                 )
             m.eq_data[eq, 0] = d.qpos[m.jnt_qposadr[m.eq_obj1id[eq]]]
             d.eq_active[eq] = 1
@@ -265,14 +269,14 @@ class Simulation:
         for n in names:
             eq = self._id(mj.mjtObj.mjOBJ_EQUALITY, f"{n}_lock")
             if eq < 0:
-                raise InputValueError(f"no lockable drive hinge named {V.show(n)}")
+                raise InputValueError(f"no lockable drive hinge named {validation.show(n)}")
             self.data.eq_active[eq] = 0
             if n in self._servo:
                 self.engage([n])
 
     def _servo_index(self, name):
         if name not in self._servo:
-            raise InputValueError(f"no servo named {V.show(name)}; servos: {list(self.servo_names)}")
+            raise InputValueError(f"no servo named {validation.show(name)}; servos: {list(self.servo_names)}")
         return self._servo[name]
 
     def push(self, force: ArrayLike = (0.0, 0.0), torque: float = 0.0) -> None:
@@ -291,8 +295,8 @@ class Simulation:
         """
         f = np.asarray(force, dtype=float) if isinstance(force, np.ndarray) else None
         if f is None or f.shape != (2,) or not np.isfinite(f).all():  # the checks of bad input, off the fast path
-            f = V.finite_array("force", force, last=2).reshape(2)
-        tau = torque if type(torque) is float and np.isfinite(torque) else V.number("torque", torque)
+            f = validation.finite_array("force", force, last=2).reshape(2)
+        tau = torque if type(torque) is float and np.isfinite(torque) else validation.number("torque", torque)
         self.data.xfrc_applied[:] = 0.0
         # xfrc_applied acts at the body's centre of mass: move the force to C by adding its moment
         com = self.data.xipos[self._platform]
@@ -314,7 +318,7 @@ class Simulation:
         -------
         None
         """
-        seconds = V.number("seconds", V.nonnegative("seconds", seconds))
+        seconds = validation.number("seconds", validation.nonnegative("seconds", seconds))
         n = round(seconds / self.model.opt.timestep)
         if n > MAX_STEPS:
             raise InputValueError(f"seconds = {seconds!r} needs {n} steps, more than {MAX_STEPS}")

@@ -31,7 +31,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..errors import InputValueError
-from ..model import validation as V
+from ..model import validation
 from ..model.robot import Robot
 from ..model.types import ArrayLike, FloatArray, TwistLike
 from .modules import swerve_robot
@@ -57,8 +57,8 @@ def desaturation_scale(robot: Robot, twist: TwistLike, max_speed: float) -> Floa
         In :math:`(0, 1]`; 1 for the zero twist.
     """
     robot = swerve_robot(robot)
-    t = V.twist_array("twist", twist)
-    max_speed = V.number("max_speed", V.positive("max_speed", max_speed))
+    t = validation.twist_array("twist", twist)
+    max_speed = validation.number("max_speed", validation.positive("max_speed", max_speed))
     d = np.asarray(robot.mount_points, dtype=float)
     with np.errstate(over="ignore", invalid="ignore"):
         # p_i = c_dot + psi_dot E d_i (2), scaled by m first so that |p_i| cannot overflow
@@ -102,7 +102,7 @@ def desaturate(robot: Robot, twist: TwistLike, max_speed: float) -> FloatArray:
     >>> desaturate(bot, [0.0, 3.0, 4.0], max_speed=2.0).round(12).tolist()   # modules at 5 m/s
     [0.0, 1.2, 1.6]
     """
-    t = V.twist_array("twist", twist)
+    t = validation.twist_array("twist", twist)
     return t * desaturation_scale(robot, t, max_speed)[..., None]
 
 
@@ -128,10 +128,10 @@ def cosine_compensate(speed: ArrayLike, beta: ArrayLike, target: ArrayLike) -> F
     >>> cosine_compensate([2.0, 2.0], [0.0, np.pi / 3], [0.0, 0.0]).round(12).tolist()
     [2.0, 1.0]
     """
-    speed = V.finite_array("speed", speed)
-    beta = V.finite_array("beta", beta)
-    target = V.finite_array("target", target)
-    V.batch_shape({"speed": speed, "beta": beta, "target": target}, core=0)
+    speed = validation.finite_array("speed", speed)
+    beta = validation.finite_array("beta", beta)
+    target = validation.finite_array("target", target)
+    validation.batch_shape({"speed": speed, "beta": beta, "target": target}, core=0)
     return speed * np.cos(beta - target)
 
 
@@ -165,8 +165,8 @@ def se2_exp(twist: TwistLike, dt: float = 1.0) -> FloatArray:
     >>> se2_exp([np.pi, np.pi, 0.0], dt=1.0).round(12).tolist()    # half a turn about (0, 1)
     [3.14159265359, 0.0, 2.0]
     """
-    t = V.twist_array("twist", twist)
-    dt = V.number("dt", V.positive("dt", dt))
+    t = validation.twist_array("twist", twist)
+    dt = validation.number("dt", validation.positive("dt", dt))
     with np.errstate(over="ignore", invalid="ignore"):
         g = t * dt
         A, B = _coefficients(g[..., 0])
@@ -203,8 +203,8 @@ def se2_log(delta: ArrayLike, dt: float = 1.0) -> FloatArray:
     >>> se2_log([np.pi, 0.0, 2.0]).round(12).tolist()
     [3.14159265359, 3.14159265359, 0.0]
     """
-    g = V.finite_array("delta", delta, last=3)
-    dt = V.number("dt", V.positive("dt", dt))
+    g = validation.finite_array("delta", delta, last=3)
+    dt = validation.number("dt", validation.positive("dt", dt))
     if np.any(np.abs(g[..., 0]) >= 2 * np.pi):
         raise InputValueError(
             f"delta must turn by less than 2 pi (the logarithm is not unique), got "
@@ -245,8 +245,8 @@ def discretize(twist: TwistLike, dt: float) -> FloatArray:
     >>> (se2_exp(tw, 0.5) / 0.5).round(12).tolist()                   # ends at (psi, x, y) = t dt
     [1.0, 1.0, ...0.0]
     """
-    t = V.twist_array("twist", twist)
-    dt = V.number("dt", V.positive("dt", dt))
+    t = validation.twist_array("twist", twist)
+    dt = validation.number("dt", validation.positive("dt", dt))
     with np.errstate(over="ignore"):
         g = t * dt
     if not np.isfinite(g).all():

@@ -41,7 +41,7 @@ import numpy as np
 from ..analysis.kinematics import Solution, forward, inverse
 from ..analysis.steering import steering_angles
 from ..errors import InputValueError
-from ..model import validation as V
+from ..model import validation
 from ..model.conventions import angle_from, angle_to
 from ..model.robot import Robot
 from ..model.types import ArrayLike, FloatArray, TwistLike
@@ -104,7 +104,7 @@ def swerve_robot(robot: Robot) -> Robot:
         ...
     wmr.errors.InputValueError: robot must have centred wheels only (swerve modules), got units ['offset', ...]
     """
-    robot = V.numeric_robot(robot)
+    robot = validation.numeric_robot(robot)
     if not all(u.steered and u.rolls_in_plane and u.n_rates == 1 for u in robot.wheels):
         kinds = [u.kind for u in robot.wheels]
         raise InputValueError(f"robot must have centred wheels only (swerve modules), got units {kinds}")
@@ -180,7 +180,7 @@ def module_commands(robot: Robot, twist: TwistLike, current: ArrayLike | None = 
     ([90.0, 90.0, 90.0, 90.0], [1.0, 1.0, 1.0, 1.0])
     """
     robot = swerve_robot(robot)
-    twist = V.twist_array("twist", twist)
+    twist = validation.twist_array("twist", twist)
     m = np.abs(twist).max(axis=-1, keepdims=True)
     beta = steering_angles(robot, twist / np.where(m > 0, m, 1.0), current)  # angles: scale-free, no overflow
     return ModuleCommand(beta, module_speeds(robot, beta, twist))
@@ -207,7 +207,7 @@ def chassis_twist(robot: Robot, beta: ArrayLike, speed: ArrayLike) -> Solution:
         ``value`` the twist (..., 3), ``residual`` (..., 2w), ``admissible`` (...).
     """
     robot = swerve_robot(robot)
-    speed = V.finite_array("speed", speed, last=robot.w)
+    speed = validation.finite_array("speed", speed, last=robot.w)
     with np.errstate(over="ignore"):
         rates = speed / radii(robot)
     if not np.isfinite(rates).all():
@@ -239,7 +239,7 @@ def to_wpilib(beta: ArrayLike, speed: ArrayLike | None = None) -> FloatArray | t
     0.0
     """
     alpha = angle_to(beta, "wpilib")
-    return alpha if speed is None else (alpha, V.finite_array("speed", speed))
+    return alpha if speed is None else (alpha, validation.finite_array("speed", speed))
 
 
 def from_wpilib(alpha: ArrayLike, speed: ArrayLike | None = None) -> FloatArray | tuple[FloatArray, FloatArray]:
@@ -258,7 +258,7 @@ def from_wpilib(alpha: ArrayLike, speed: ArrayLike | None = None) -> FloatArray 
         ``beta`` (...), or ``(beta, speed)`` when ``speed`` is given.
     """
     beta = angle_from(alpha, "wpilib", "alpha")
-    return beta if speed is None else (beta, V.finite_array("speed", speed))
+    return beta if speed is None else (beta, validation.finite_array("speed", speed))
 
 
 def to_chassis(twist: TwistLike) -> FloatArray:
@@ -277,7 +277,7 @@ def to_chassis(twist: TwistLike) -> FloatArray:
     >>> to_chassis([3.0, 1.0, 2.0]).tolist()
     [1.0, 2.0, 3.0]
     """
-    return np.roll(V.twist_array("twist", twist), -1, axis=-1)
+    return np.roll(validation.twist_array("twist", twist), -1, axis=-1)
 
 
 def from_chassis(chassis: TwistLike) -> FloatArray:
@@ -297,6 +297,6 @@ def from_chassis(chassis: TwistLike) -> FloatArray:
     >>> from_chassis([1.0, 2.0, 3.0]).tolist()
     [3.0, 1.0, 2.0]
     """
-    if V.twist_kind(chassis) is not None:
-        return V.twist_array("chassis", chassis)
-    return np.roll(V.finite_array("chassis", chassis, last=3), 1, axis=-1)
+    if validation.twist_kind(chassis) is not None:
+        return validation.twist_array("chassis", chassis)
+    return np.roll(validation.finite_array("chassis", chassis, last=3), 1, axis=-1)

@@ -31,7 +31,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputValueError
-from ..model import validation as V
+from ..model import validation
 from ..model.platform import wrap_angle
 from ..model.robot import Robot
 from ..model.types import ArrayLike, FloatArray, TwistLike
@@ -111,11 +111,11 @@ def transition_slip(
     """
     robot = swerve_robot(robot)
     w = robot.w
-    current = V.finite_array("current", current, last=w)
-    beta = V.finite_array("beta", beta, last=w)
-    speed = V.finite_array("speed", speed, last=w)
-    samples = V.integer("samples", samples, minimum=1)
-    batch = V.batch_shape({"current": current, "beta": beta, "speed": speed})
+    current = validation.finite_array("current", current, last=w)
+    beta = validation.finite_array("beta", beta, last=w)
+    speed = validation.finite_array("speed", speed, last=w)
+    samples = validation.integer("samples", samples, minimum=1)
+    batch = validation.batch_shape({"current": current, "beta": beta, "speed": speed})
     delta = wrap_angle(beta - current)  # (..., w), shorter arcs
     span = np.abs(delta).max(axis=-1, keepdims=True)  # (..., 1)
     tau = (np.arange(samples) + 0.5) / samples * span  # (..., K)
@@ -131,7 +131,7 @@ def transition_slip(
 
 def _targets(robot, twist, current):
     robot = swerve_robot(robot)
-    current = V.finite_array("current", current, last=robot.w)
+    current = validation.finite_array("current", current, last=robot.w)
     cmd = module_commands(robot, twist, current)
     cur = np.broadcast_to(current, cmd.beta.shape)
     return robot, cmd, cur
@@ -218,7 +218,7 @@ def optimize_robot(robot: Robot, twist: TwistLike, current: ArrayLike, samples: 
         raise InputValueError(
             f"robot has {w} modules: optimize_robot enumerates 2^w patterns, at most {MAX_MODULES} modules"
         )
-    samples = V.integer("samples", samples, minimum=1)
+    samples = validation.integer("samples", samples, minimum=1)
     flips = ((np.arange(2**w)[:, None] >> np.arange(w)) & 1).astype(bool)  # (P, w), P = 2^w
     flips = flips[np.argsort(flips.sum(axis=1), kind="stable")]  # fewest flips first
     beta = wrap_angle(cmd.beta[..., None, :] + np.pi * flips)  # (..., P, w)

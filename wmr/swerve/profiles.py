@@ -13,7 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputValueError
-from ..model import validation as V
+from ..model import validation
 from ..model.types import FloatArray
 
 __all__ = ["TwistProfile", "direction_change", "spin_and_translate", "MAX_STEPS"]
@@ -47,9 +47,9 @@ class TwistProfile:
 
 
 def _times(t_change, t_end, dt, first="t_change"):
-    t_change = V.number(first, V.positive(first, t_change))
-    t_end = V.number("t_end", V.positive("t_end", t_end))
-    dt = V.number("dt", V.positive("dt", dt))
+    t_change = validation.number(first, validation.positive(first, t_change))
+    t_end = validation.number("t_end", validation.positive("t_end", t_end))
+    dt = validation.number("dt", validation.positive("dt", dt))
     if not t_change < t_end:
         raise InputValueError(f"{first} must be before t_end, got {first} = {t_change!r}, t_end = {t_end!r}")
     n = np.ceil(t_end / dt - 1e-9)
@@ -102,9 +102,9 @@ def direction_change(
     >>> p.twist.round(12).tolist()
     [[0.0, 2.0, 0.0], [0.0, 2.0, 0.0], [0.0, 0.0, 2.0], [0.0, 0.0, 2.0]]
     """
-    speed = V.number("speed", V.positive("speed", speed))
-    angle = V.number("angle", angle)
-    spin = V.number("spin", spin)
+    speed = validation.number("speed", validation.positive("speed", speed))
+    angle = validation.number("angle", angle)
+    spin = validation.number("spin", spin)
     t_change, dt, t = _times(t_change, t_end, dt)
     after = t >= t_change - 1e-9 * dt
     heading = np.where(after, angle, 0.0)
@@ -134,8 +134,8 @@ def spin_and_translate(
     -------
     TwistProfile
     """
-    speed = V.number("speed", V.positive("speed", speed))
-    rate = V.number("rate", rate)
+    speed = validation.number("speed", validation.positive("speed", speed))
+    rate = validation.number("rate", rate)
     t_start, dt, t = _times(t_start, t_end, dt, first="t_start")
     psi_dot = np.where(t >= t_start - 1e-9 * dt, rate, 0.0)
     v = np.tile([speed, 0.0], (len(t), 1))

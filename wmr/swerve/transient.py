@@ -35,7 +35,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputTypeError, InputValueError
-from ..model import validation as V
+from ..model import validation
 from ..model.platform import wrap_angle
 from ..model.robot import Robot
 from ..model.types import ArrayLike
@@ -175,18 +175,18 @@ def resteer_transient(
     robot = swerve_robot(robot)
     if not isinstance(profile, TwistProfile):
         raise InputTypeError(
-            f"profile must be a TwistProfile (direction_change(), spin_and_translate()), got {V.show(profile)}"
+            f"profile must be a TwistProfile (direction_change(), spin_and_translate()), got {validation.show(profile)}"
         )
     if not isinstance(strategy, str) or strategy not in ("plain", "module", "robot"):
-        raise InputValueError(f"strategy must be 'plain', 'module' or 'robot', got {V.show(strategy)}")
-    cosine = V.flag("cosine", cosine)
-    rate = V.number("steer_rate", V.positive("steer_rate", steer_rate))
-    tw = V.finite_array("profile.twist", profile.twist, last=3).reshape(-1, 3)
-    dt, w = V.number("profile.dt", V.positive("profile.dt", profile.dt)), robot.w
+        raise InputValueError(f"strategy must be 'plain', 'module' or 'robot', got {validation.show(strategy)}")
+    cosine = validation.flag("cosine", cosine)
+    rate = validation.number("steer_rate", validation.positive("steer_rate", steer_rate))
+    tw = validation.finite_array("profile.twist", profile.twist, last=3).reshape(-1, 3)
+    dt, w = validation.number("profile.dt", validation.positive("profile.dt", profile.dt)), robot.w
     if len(tw) == 0:
         raise InputValueError("profile must command at least one period, got no twists")
     beta = np.empty((len(tw) + 1, w))
-    beta[0] = module_commands(robot, tw[0]).beta if beta0 is None else V.finite_array("beta0", beta0, last=w)
+    beta[0] = module_commands(robot, tw[0]).beta if beta0 is None else validation.finite_array("beta0", beta0, last=w)
     pose, ref = np.zeros((len(tw) + 1, 3)), np.zeros((len(tw) + 1, 3))
     twist, slip, speeds = np.empty((len(tw), 3)), np.empty(len(tw)), np.empty((len(tw), w))
     step = rate * dt
@@ -265,7 +265,7 @@ class TransientStudy:
         for r in self.runs:
             if r.label == label:
                 return r
-        raise InputValueError(f"label must be one of {[r.label for r in self.runs]}, got {V.show(label)}")
+        raise InputValueError(f"label must be one of {[r.label for r in self.runs]}, got {validation.show(label)}")
 
 
 def resteer_study(
@@ -298,11 +298,13 @@ def resteer_study(
     >>> [row["strategy"] for row in study.table()]
     ['plain', 'module', 'module + cos', 'robot', 'robot + cos']
     """
-    rate = V.number("steer_rate", V.positive("steer_rate", steer_rate))
+    rate = validation.number("steer_rate", validation.positive("steer_rate", steer_rate))
     try:
         pairs = [(s, c) for s, c in strategies]
     except (TypeError, ValueError):
-        raise InputTypeError(f"strategies must be (strategy, cosine) pairs, got {V.show(strategies)}") from None
+        raise InputTypeError(
+            f"strategies must be (strategy, cosine) pairs, got {validation.show(strategies)}"
+        ) from None
     if not pairs:
         raise InputValueError("strategies must name at least one (strategy, cosine) pair, got none")
     runs = tuple(resteer_transient(robot, profile, s, c, rate) for s, c in pairs)

@@ -9,7 +9,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ...model import validation as V
+from ...model import validation
 from ...model.types import ArrayLike
 from ..sweep import Grid
 from .worst_case import COARSE_STEPS, WheelDesign, compass_search, equilateral_design, worst_kappa, worst_kappa_designs
@@ -109,11 +109,11 @@ def search(
     (True, True)
     """
     if ratio is not None:
-        ratio = float(V.number("ratio", V.positive("ratio", ratio)))
-    starts = V.integer("starts", starts, minimum=1)
-    n = V.integer("n", n, minimum=starts)
-    seed = V.integer("seed", seed, minimum=0)
-    rtol = float(V.number("rtol", V.positive("rtol", rtol)))
+        ratio = float(validation.number("ratio", validation.positive("ratio", ratio)))
+    starts = validation.integer("starts", starts, minimum=1)
+    n = validation.integer("n", n, minimum=starts)
+    seed = validation.integer("seed", seed, minimum=0)
+    rtol = float(validation.number("rtol", validation.positive("rtol", rtol)))
     dim = 4 if ratio is not None else 5
     beta = Grid(COARSE_STEPS, 0.0, np.pi).configurations(3, 0, COARSE_STEPS**3)
     count = [0]
@@ -195,8 +195,8 @@ def landscape(n: int = 41, m: int = 41, moved: ArrayLike = (0.2, 1.2)) -> Landsc
     -------
     Landscape
     """
-    n, m = V.integer("n", n, minimum=2), V.integer("m", m, minimum=2)
-    moved = np.array(V.point("moved", moved), dtype=float)
+    n, m = validation.integer("n", n, minimum=2), validation.integer("m", m, minimum=2)
+    moved = np.array(validation.point("moved", moved), dtype=float)
     beta = Grid(COARSE_STEPS, 0.0, np.pi).configurations(3, 0, COARSE_STEPS**3)
     paper = equilateral_design(1.0)
     ratios = np.logspace(-2, 2, n, base=2.0)

@@ -11,7 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...errors import InputTypeError, InputValueError
-from ...model import validation as V
+from ...model import validation
 from ...model.robot import Robot
 from ...model.types import ArrayLike, FloatArray
 from ...model.wheels import OffsetWheel
@@ -138,13 +138,13 @@ def worst_kappa(robot: Robot, angles: Angles | None = None, L: float | None = No
     >>> round(res.kappa, 9)                                                   # = kappa(J2) = r/d
     2.0
     """
-    robot = V.numeric_robot(robot)
-    L = characteristic_length(robot) if L is None else V.number("L", V.positive("L", L))
+    robot = validation.numeric_robot(robot)
+    L = characteristic_length(robot) if L is None else validation.number("L", validation.positive("L", L))
     if angles is None:
         angles = Grid(FINE_STEPS if robot.w <= 3 else 2 * COARSE_STEPS, 0.0, np.pi)
     res = sweep(robot, "kappa_J", angles, L=L, quantiles=(1.0,))
     beta, kappa = np.array(res.worst_angles, dtype=float), float(res.worst)
-    if V.flag("refine", refine) and np.isfinite(kappa):
+    if validation.flag("refine", refine) and np.isfinite(kappa):
 
         def f(b):
             k = condition_number(robot.J(b, L=L))
@@ -175,12 +175,14 @@ class WheelDesign:
     r: float = 1.0
 
     def __post_init__(self):
-        m = V.finite_array("mounts", self.mounts, last=2)
+        m = validation.finite_array("mounts", self.mounts, last=2)
         if m.ndim != 2 or m.shape[0] < 1:
             raise InputValueError(f"mounts must have shape (w, 2) with w >= 1, got shape {m.shape}")
         object.__setattr__(self, "mounts", m)
-        object.__setattr__(self, "d", float(V.number("d (offset)", V.nonnegative("d (offset)", self.d))))
-        object.__setattr__(self, "r", float(V.number("r (radius)", V.positive("r (radius)", self.r))))
+        object.__setattr__(
+            self, "d", float(validation.number("d (offset)", validation.nonnegative("d (offset)", self.d)))
+        )
+        object.__setattr__(self, "r", float(validation.number("r (radius)", validation.positive("r (radius)", self.r))))
 
     @property
     def ratio(self) -> float:
@@ -212,7 +214,7 @@ class WheelDesign:
         -------
         WheelDesign
         """
-        k = float(V.number("k", V.positive("k", k)))
+        k = float(validation.number("k", validation.positive("k", k)))
         return WheelDesign(self.mounts * k, self.d * k, self.r * k)
 
     def centroid_offset(self) -> float:
@@ -254,7 +256,9 @@ def equilateral_design(ratio: float = 1.0) -> WheelDesign:
     """
     from ...model.robots import equilateral_mounts
 
-    return WheelDesign(np.array(equilateral_mounts(1.0)), V.number("ratio", V.nonnegative("ratio", ratio)), 1.0)
+    return WheelDesign(
+        np.array(equilateral_mounts(1.0)), validation.number("ratio", validation.nonnegative("ratio", ratio)), 1.0
+    )
 
 
 def worst_kappa_designs(designs: Sequence[WheelDesign], beta: ArrayLike) -> FloatArray:
@@ -279,8 +283,10 @@ def worst_kappa_designs(designs: Sequence[WheelDesign], beta: ArrayLike) -> Floa
     """
     designs = list(designs)
     if not designs or not all(isinstance(x, WheelDesign) for x in designs):
-        raise InputTypeError(f"designs must be a non-empty sequence of WheelDesign, got {V.show(designs)}")
-    beta = V.finite_array("beta", beta, last=designs[0].mounts.shape[0]).reshape(-1, designs[0].mounts.shape[0])
+        raise InputTypeError(f"designs must be a non-empty sequence of WheelDesign, got {validation.show(designs)}")
+    beta = validation.finite_array("beta", beta, last=designs[0].mounts.shape[0]).reshape(
+        -1, designs[0].mounts.shape[0]
+    )
     if beta.shape[0] == 0:
         raise InputValueError(f"beta must hold at least one configuration, got shape {np.shape(beta)}")
     out = np.empty(len(designs))

@@ -12,7 +12,7 @@ from typing import Any
 import numpy as np
 
 from ...errors import InputTypeError, InputValueError
-from ...model import validation as V
+from ...model import validation
 from ...model.lazysympy import is_sympy, sp
 from ...model.tolerance import near_zero
 from ...model.types import ArrayLike, FloatArray, IntArray, Numbers, Point
@@ -80,13 +80,15 @@ def line_intersection(p1: ArrayLike, u1: ArrayLike, p2: ArrayLike, u2: ArrayLike
     >>> kind.name, point.tolist()
     ('FINITE', [1.0, 0.0])
     """
-    p1, u1, p2, u2 = (V.finite_array(n, a, last=2) for n, a in (("p1", p1), ("u1", u1), ("p2", p2), ("u2", u2)))
+    p1, u1, p2, u2 = (
+        validation.finite_array(n, a, last=2) for n, a in (("p1", p1), ("u1", u1), ("p2", p2), ("u2", u2))
+    )
     for name, v in (("p1", p1), ("p2", p2), ("u1", u1), ("u2", u2)):
         if v.ndim != 1:
             raise InputValueError(f"{name} must be one point or direction of shape (2,), got shape {v.shape}")
     for name, u in (("u1", u1), ("u2", u2)):
         if not np.any(u):
-            raise InputValueError(f"{name} must be a non-zero direction, got {V.show(u)}")
+            raise InputValueError(f"{name} must be a non-zero direction, got {validation.show(u)}")
     n1, n2 = u1 / np.hypot(*u1), u2 / np.hypot(*u2)
     cross = n1[0] * n2[1] - n1[1] * n2[0]  # sine of the angle between the lines
     w = p2 - p1
@@ -99,7 +101,8 @@ def line_intersection(p1: ArrayLike, u1: ArrayLike, p2: ArrayLike, u2: ArrayLike
         point = p1 + s * n1
     if not np.isfinite(point).all():
         raise InputValueError(
-            f"p1, u1, p2, u2: the intersection is beyond double precision (p1 = {V.show(p1)}, p2 = {V.show(p2)})"
+            "p1, u1, p2, u2: the intersection is beyond double precision "
+            f"(p1 = {validation.show(p1)}, p2 = {validation.show(p2)})"
         )
     return FINITE, point
 
@@ -118,14 +121,14 @@ def pair_intersections(
     dict
         ``(i, j) -> (Meet, point or None)`` for 1-based line numbers ``i < j``.
     """
-    points = V.finite_array("points", points, last=2)
-    directions = V.finite_array("directions", directions, last=2)
+    points = validation.finite_array("points", points, last=2)
+    directions = validation.finite_array("directions", directions, last=2)
     if points.ndim != 2 or points.shape != directions.shape:
         raise InputValueError(
             f"points and directions must both have shape (w, 2), got {points.shape} and {directions.shape}"
         )
     if not np.all(np.any(directions != 0, axis=-1)):
-        raise InputValueError(f"directions must be non-zero vectors, got {V.show(directions)}")
+        raise InputValueError(f"directions must be non-zero vectors, got {validation.show(directions)}")
     out = {}
     n = len(points)
     for i in range(n):
@@ -176,7 +179,7 @@ def lines_concurrency(points: ArrayLike, directions: ArrayLike) -> Concurrency:
     >>> c.kind.name, (c.point.round(12) + 0.0).tolist()
     ('FINITE', [0.0, 0.0])
     """
-    p = V.finite_array("points", points, last=2)
+    p = validation.finite_array("points", points, last=2)
     if p.ndim != 2:
         raise InputValueError(f"points and directions must both have shape (n, 2) with n >= 2, got {p.shape}")
     kind, point, direction, residual = concurrencies(p[None], np.asarray(directions)[None])
@@ -213,15 +216,15 @@ def concurrencies(points: ArrayLike, directions: ArrayLike) -> tuple[IntArray, F
     >>> [Meet(int(k)).name for k in kind], point[0].tolist()
     (['FINITE', 'AT_INFINITY'], [1.0, 1.0])
     """
-    p = V.finite_array("points", points, last=2)
-    u = V.finite_array("directions", directions, last=2)
+    p = validation.finite_array("points", points, last=2)
+    u = validation.finite_array("directions", directions, last=2)
     if p.ndim < 2 or p.shape != u.shape or p.shape[-2] < 2:
         raise InputValueError(
             f"points and directions must both have shape (..., n, 2) with n >= 2, got {p.shape} and {u.shape}"
         )
     big = np.abs(u).max(axis=-1, keepdims=True)
     if np.any(big == 0):
-        raise InputValueError(f"directions must be non-zero vectors, got {V.show(u)}")
+        raise InputValueError(f"directions must be non-zero vectors, got {validation.show(u)}")
     u = u / big  # (scaled first: no overflow for huge directions)
     u = u / np.linalg.norm(u, axis=-1, keepdims=True)
     scale = np.abs(p).max(axis=(-2, -1))  # the size of the figure, in its own unit
@@ -275,8 +278,8 @@ def circumcircle(points: Numbers) -> tuple[Point, Numbers]:
     ((0, 0), 1)
     """
     if isinstance(points, (str, bytes)) or not hasattr(points, "__len__") or is_sympy(points):
-        raise InputTypeError(f"points must be three points (pairs), got {V.show(points)}")
-    pts = [V.point(f"points[{k}]", q) for k, q in enumerate(points)]
+        raise InputTypeError(f"points must be three points (pairs), got {validation.show(points)}")
+    pts = [validation.point(f"points[{k}]", q) for k, q in enumerate(points)]
     if len(pts) != 3:
         raise InputValueError(f"points must be three points, got {len(pts)}")
     if not any(is_sympy(v) for q in pts for v in q):

@@ -8,7 +8,7 @@ from __future__ import annotations
 import numpy as np
 
 from ...errors import InputTypeError, InputValueError
-from ...model import validation as V
+from ...model import validation
 from ...model.platform import line_angle
 from ...model.robot import Robot
 from ...model.tolerance import TOL
@@ -28,7 +28,7 @@ __all__ = [
 
 def _unit_points(robot, beta):
     """Each unit's points and axes (``unit.points``) at the steering angles ``beta (..., w)``."""
-    robot = V.numeric_robot(robot)
+    robot = validation.numeric_robot(robot)
     beta = robot.effective_beta(beta)
     return [u.points(beta[..., i]) for i, u in enumerate(robot.wheels)]
 
@@ -73,10 +73,10 @@ def axle_lines(robot: Robot, beta: ArrayLike) -> tuple[FloatArray, FloatArray]:
 
 
 def _one(robot, beta, what):
-    robot = V.numeric_robot(robot)
+    robot = validation.numeric_robot(robot)
     if robot.w < 2:
         raise InputValueError(
-            f"robot must have at least two wheel units for {what} (lines to meet), got {V.show(robot)}"
+            f"robot must have at least two wheel units for {what} (lines to meet), got {validation.show(robot)}"
         )
     beta = robot.effective_beta(beta)
     if beta.ndim != 1:
@@ -134,8 +134,8 @@ def planes_through(robot: Robot, D: ArrayLike) -> FloatArray:
     numpy.ndarray (..., w)
         (Fixed and Swedish wheels cannot turn: their entries are their own angles.)
     """
-    robot = V.numeric_robot(robot)
-    D = V.finite_array("D", D, last=2)
+    robot = validation.numeric_robot(robot)
+    D = validation.finite_array("D", D, last=2)
     v = D[..., None, :] - robot.mount_points  # (..., w, 2)
     beta = np.arctan2(-v[..., 0], v[..., 1])  # j = (-sin b, cos b) || v
     beta = np.where(_at(v, robot, D), 0.0, beta)
@@ -155,8 +155,8 @@ def axles_through(robot: Robot, U: ArrayLike) -> FloatArray:
     numpy.ndarray (..., w), in :math:`(-\pi/2, \pi/2]`
         (except fixed and Swedish wheels: their own angles).
     """
-    robot = V.numeric_robot(robot)
-    U = V.finite_array("U", U, last=2)
+    robot = validation.numeric_robot(robot)
+    U = validation.finite_array("U", U, last=2)
     v = U[..., None, :] - robot.mount_points
     beta = np.arctan2(v[..., 1], v[..., 0])  # i = (cos b, sin b) || v
     beta = np.where(_at(v, robot, U), 0.0, beta)
@@ -184,7 +184,7 @@ def pair_line_angle(robot: Robot, i: int, j: int) -> float:
     -------
     float
     """
-    robot = V.numeric_robot(robot)
+    robot = validation.numeric_robot(robot)
     for name, k in (("i", i), ("j", j)):
         if isinstance(k, bool) or not isinstance(k, (int, np.integer)):
             raise InputTypeError(f"{name} must be a wheel number (int), got {k!r}")

@@ -12,7 +12,7 @@ from typing import Any
 
 import numpy as np
 
-from ...model import validation as V
+from ...model import validation
 from ...model.robot import Robot
 
 __all__ = ["ANALYSES", "J_length"]
@@ -34,8 +34,8 @@ def J_length(robot: Robot, L: float | None) -> float:
     """
     from ..isotropy import characteristic_length
 
-    V.numeric_robot(robot)
-    return characteristic_length(robot) if L is None else V.number("L", V.positive("L", L))
+    validation.numeric_robot(robot)
+    return characteristic_length(robot) if L is None else validation.number("L", validation.positive("L", L))
 
 
 def _rank_F(robot, beta, L):

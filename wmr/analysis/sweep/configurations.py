@@ -15,7 +15,7 @@ from typing import cast
 import numpy as np
 
 from ...errors import InputTypeError, InputValueError
-from ...model import validation as V
+from ...model import validation
 from ...model.types import ArrayLike, FloatArray
 
 __all__ = ["Grid", "Sample", "BLOCK", "count", "as_source"]
@@ -25,7 +25,7 @@ BLOCK = 1 << 16
 
 
 def _bounds(lo, hi):
-    lo, hi = V.real("lo", lo), V.real("hi", hi)
+    lo, hi = validation.real("lo", lo), validation.real("hi", hi)
     if not hi > lo:
         raise InputValueError(f"hi must be greater than lo, got lo = {lo!r}, hi = {hi!r}")
     return float(lo), float(hi)
@@ -288,7 +288,7 @@ def as_source(angles: Grid | Sample | ArrayLike, w: int) -> Grid | Sample | _Exp
         return angles
     if isinstance(angles, (str, bytes)) or angles is None:
         raise InputTypeError(f"angles must be a Grid, a Sample or an array (N, {w}) of steering angles, got {angles!r}")
-    beta = V.finite_array("angles", angles, last=w)
+    beta = validation.finite_array("angles", angles, last=w)
     beta = beta.reshape(-1, w)
     if beta.shape[0] == 0:
         raise InputValueError(f"angles must hold at least one configuration, got shape {np.shape(angles)}")

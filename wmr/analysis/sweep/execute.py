@@ -15,7 +15,7 @@ from typing import Any, TypeAlias
 import numpy as np
 
 from ...errors import InputTypeError, InputValueError
-from ...model import validation as V
+from ...model import validation
 from ...model.limits import check, limit
 from ...model.robot import Robot
 from ...model.types import ArrayLike
@@ -173,7 +173,7 @@ def sweep(
         )
     w = robot.w
     source = angles if isinstance(angles, Drivable) else as_source(angles, w)
-    qs = tuple(float(V.real("quantiles", q)) for q in np.atleast_1d(np.asarray(quantiles, dtype=object)))
+    qs = tuple(float(validation.real("quantiles", q)) for q in np.atleast_1d(np.asarray(quantiles, dtype=object)))
     if any(not 0.0 <= q <= 1.0 for q in qs):
         raise InputValueError(f"quantiles must lie in [0, 1], got {list(quantiles)}")
     chunk = count("chunk", chunk)
@@ -214,7 +214,7 @@ def bytes_per_configuration(robot, analysis) -> int:
     -------
     int
     """
-    robot = V.numeric_robot(robot)
+    robot = validation.numeric_robot(robot)
     if analysis not in ANALYSES:
         raise InputValueError(f"analysis must be one of {sorted(ANALYSES)}, got {analysis!r}")
     w, n = robot.w, robot.n_rates

@@ -34,7 +34,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...errors import InputValueError
-from ...model import validation as V
+from ...model import validation
 from .._batch import for_chunks
 from ..linalg import condition_number, null_space
 from ..mobility import twist_constraints
@@ -112,7 +112,7 @@ class Motions:
     """
 
     def __init__(self, robot, n, seed):
-        robot = V.numeric_robot(robot)
+        robot = validation.numeric_robot(robot)
         self.robot, self.n, self.seed = robot, count("n", n), count("seed", seed, minimum=0)
         self.scale = robot.F_column_norms[:3]
         fixed = [i for i, u in enumerate(robot.wheels) if not u.steered]
@@ -325,9 +325,9 @@ def kappa_J_of_twists(robot, twist, L):
     >>> bool(np.allclose(kappa_J_of_twists(bot, tw, 0.4), want, rtol=1e-12))
     True
     """
-    robot = V.numeric_robot(robot)
-    twist = V.finite_array("twist", twist, last=3).reshape(-1, 3)
-    L = V.number("L", V.positive("L", L))
+    robot = validation.numeric_robot(robot)
+    twist = validation.finite_array("twist", twist, last=3).reshape(-1, 3)
+    L = validation.number("L", validation.positive("L", L))
     kernel = fused_kernel(robot, L)
     if kernel is None:
         return None

@@ -46,7 +46,7 @@ import pkgutil
 from typing import Any
 
 from ...errors import InputTypeError, InputValueError
-from .. import checks as C
+from .. import checks
 from ..limits import check
 from .centred import CentredWheel
 from .dual import DualWheel
@@ -129,18 +129,18 @@ def wheel_units(wheels: Any) -> tuple[WheelUnit, ...]:
     1
     """
     if isinstance(wheels, (str, bytes, WheelUnit)):
-        raise InputTypeError(f"wheels must be a sequence of wheel units, got {C.show(wheels)}")
+        raise InputTypeError(f"wheels must be a sequence of wheel units, got {checks.show(wheels)}")
     try:
         wheels = tuple(wheels)
     except TypeError:
-        raise InputTypeError(f"wheels must be a sequence of wheel units, got {C.show(wheels)}") from None
+        raise InputTypeError(f"wheels must be a sequence of wheel units, got {checks.show(wheels)}") from None
     if len(wheels) == 0:
         raise InputValueError("wheels must contain at least one wheel unit, got 0")
     check("wheels", len(wheels), "wheels")
     for k, u in enumerate(wheels):
         if not isinstance(u, WheelUnit):
             kinds = ", ".join(t.__name__ for t in wheel_kinds().values())
-            raise InputTypeError(f"wheels[{k}] must be a wheel unit ({kinds}, ...), got {C.show(u)}")
+            raise InputTypeError(f"wheels[{k}] must be a wheel unit ({kinds}, ...), got {checks.show(u)}")
     return wheels
 
 

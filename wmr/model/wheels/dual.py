@@ -21,7 +21,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .. import checks as C
+from .. import checks
 from ..backend import NUMERIC, Backend
 from ..types import ArrayLike, FloatArray, Matrix
 from .joints import Joint
@@ -65,7 +65,7 @@ class DualWheel(WheelUnit):
 
     def _validate(self):
         super()._validate()
-        object.__setattr__(self, "b", C.positive("b (half wheel separation)", self.b))
+        object.__setattr__(self, "b", checks.positive("b (half wheel separation)", self.b))
 
     def local_block(self, backend: Backend = NUMERIC) -> Matrix:
         r"""(17): :math:`\dot{\mathbf h}_i = -\tfrac r2(\dot\theta_{i1} + \dot\theta_{i2})\mathbf j_i`, so

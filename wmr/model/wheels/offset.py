@@ -22,7 +22,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .. import checks as C
+from .. import checks
 from ..backend import NUMERIC, Backend
 from ..types import ArrayLike, FloatArray, Matrix
 from .joints import Joint
@@ -67,7 +67,7 @@ class OffsetWheel(WheelUnit):
 
     def _validate(self):
         super()._validate()
-        object.__setattr__(self, "d", C.nonnegative("d (offset)", self.d))
+        object.__setattr__(self, "d", checks.nonnegative("d (offset)", self.d))
 
     def local_block(self, backend: Backend = NUMERIC) -> Matrix:
         r"""(20)/(21): :math:`\mathbf L_i = \mathrm{diag}(-d, -r)`, columns :math:`(\dot\phi_i, \dot\theta_i)`.

@@ -12,7 +12,7 @@ import difflib
 from typing import Any
 
 from ...errors import InputValueError
-from .. import checks as C
+from .. import checks
 
 __all__ = ["register", "wheel_kinds", "wheel_kind"]
 
@@ -56,7 +56,7 @@ def wheel_kind(name: str) -> Any:
     wmr.errors.InputValueError: kind must be one of ..., got 'centered' (did you mean 'centred'?)
     """
     if not isinstance(name, str):
-        raise C.kind_error("kind", name, f"a wheel kind ({', '.join(sorted(_KINDS))})")
+        raise checks.kind_error("kind", name, f"a wheel kind ({', '.join(sorted(_KINDS))})")
     if name not in _KINDS:
         close = difflib.get_close_matches(name, sorted(_KINDS), n=1)
         raise InputValueError(

@@ -23,7 +23,7 @@ from dataclasses import InitVar, dataclass, field
 import numpy as np
 
 from ...errors import InputValueError
-from .. import checks as C
+from .. import checks
 from ..backend import NUMERIC, Backend
 from ..tolerance import TOL
 from ..types import FloatArray, Matrix
@@ -123,7 +123,7 @@ class SwedishWheel(UnsteeredUnit):
         if not -np.pi / 2 < float(g) <= np.pi / 2 or abs(float(g)) <= TOL:
             raise InputValueError(
                 f"{name} must be in (-pi/2, pi/2] and not 0 (0: rollers parallel to the axle, "
-                f"a conventional wheel: use FixedWheel), got {C.show(self.roller)}"
+                f"a conventional wheel: use FixedWheel), got {checks.show(self.roller)}"
             )
         object.__setattr__(self, "roller", g)
 
@@ -156,5 +156,5 @@ class SwedishWheel(UnsteeredUnit):
         >>> SwedishWheel((0, 0), r=1, angle=np.pi / 2, roller=np.pi / 2).roller_axis().round(12).tolist()
         [-1.0, 0.0]
         """
-        t = C.number("angle", self.angle) + C.number("roller", self.roller)
+        t = checks.number("angle", self.angle) + checks.number("roller", self.roller)
         return np.array([np.cos(t), np.sin(t)])

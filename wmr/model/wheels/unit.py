@@ -41,8 +41,7 @@ from typing import Any, ClassVar, Self
 import numpy as np
 
 from ...errors import InputValueError
-from .. import arrays as A
-from .. import checks as C
+from .. import arrays, checks
 from ..backend import NUMERIC, Backend, choose, is_symbolic
 from ..lazysympy import is_sympy, sp
 from ..platform import E, rotated
@@ -102,8 +101,8 @@ class WheelUnit(UnitGeometry):
             register(cls)
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "position", C.point("position", self.position))
-        object.__setattr__(self, "r", C.positive("r (wheel radius)", self.r))
+        object.__setattr__(self, "position", checks.point("position", self.position))
+        object.__setattr__(self, "r", checks.positive("r (wheel radius)", self.r))
         object.__setattr__(self, "driven", actuation(self.JOINTS, self.driven, type(self).__name__))
         self._validate()
         if not self.is_symbolic:
@@ -111,19 +110,19 @@ class WheelUnit(UnitGeometry):
                 if not np.isfinite(4 * np.abs(np.asarray(self.position, dtype=float))).all():
                     raise InputValueError(
                         f"position is too large for double-precision kinematics (4 |d_i| "
-                        f"overflows): {C.show(self.position)}"
+                        f"overflows): {checks.show(self.position)}"
                     )
                 for name, v in self.parameters().items():  # a length whose reciprocal overflows (a subnormal)
                     if name not in self.ANGLES and v != 0 and not np.isfinite(1.0 / abs(float(v))):
                         raise InputValueError(
-                            f"{name} is too small for double-precision kinematics (1/{name} overflows): {C.show(v)}"
+                            f"{name} is too small for double-precision kinematics (1/{name} overflows): {checks.show(v)}"
                         )
                 L, EL = (np.asarray(m, dtype=float) for m in self.block_terms(NUMERIC))
                 ok = np.isfinite(2 * np.abs(L) + 2 * np.abs(EL)).all()
             if not ok:
                 raise InputValueError(
                     f"{type(self).__name__} has lengths too large for double-precision "
-                    f"kinematics (R(beta) L_i would overflow): {C.show(self)}"
+                    f"kinematics (R(beta) L_i would overflow): {checks.show(self)}"
                 )
 
     def _validate(self) -> None:
@@ -156,7 +155,7 @@ class WheelUnit(UnitGeometry):
         >>> DualWheel((0, 0), r=1, b=0.5).rate_names(3)
         ('theta_dot_31', 'theta_dot_32')
         """
-        i = C.integer("i", i, minimum=1)
+        i = checks.integer("i", i, minimum=1)
         return tuple(f"{name}_dot_{i}{suffix}" for name, _, suffix in self.RATES)
 
     def rate_symbols(self, i: int) -> tuple[Symbolic, ...]:
@@ -178,7 +177,7 @@ class WheelUnit(UnitGeometry):
         >>> CentredWheel((0, 0), r=1).rate_symbols(1)
         (\\dot{\\theta}_{1},)
         """
-        i = C.integer("i", i, minimum=1)
+        i = checks.integer("i", i, minimum=1)
         return tuple(sp.Symbol(rf"\dot{{{tex}}}_{{{i}{suffix}}}", real=True) for _, tex, suffix in self.RATES)
 
     # --- steering --------------------------------------------------------------------------------
@@ -220,10 +219,10 @@ class WheelUnit(UnitGeometry):
         self, psi_dot: ArrayLike, rates: ArrayLike, steer: ArrayLike | None
     ) -> tuple[FloatArray, FloatArray, FloatArray | None, tuple[int, ...]]:
         """``psi_dot`` (...), ``rates`` (..., n_rates) and ``steer`` (... or None), checked, and their batch shape."""
-        psi_dot = A.finite_array("psi_dot", psi_dot)
-        rates = A.finite_array("rates", rates, last=self.n_rates)
-        steer = None if steer is None else A.finite_array("steer", steer)
-        shape = A.batch_shape({"psi_dot": psi_dot, "rates": rates[..., 0], "steer": steer}, core=0)
+        psi_dot = arrays.finite_array("psi_dot", psi_dot)
+        rates = arrays.finite_array("rates", rates, last=self.n_rates)
+        steer = None if steer is None else arrays.finite_array("steer", steer)
+        shape = arrays.batch_shape({"psi_dot": psi_dot, "rates": rates[..., 0], "steer": steer}, core=0)
         return psi_dot, rates, steer, shape
 
     @staticmethod
@@ -274,7 +273,7 @@ class WheelUnit(UnitGeometry):
         if self.free_symbols:
             raise InputValueError(
                 f"{type(self).__name__} has free symbols {sorted(map(str, self.free_symbols))}: it "
-                f"has no numeric counterpart ({C.show(self)})"
+                f"has no numeric counterpart ({checks.show(self)})"
             )
 
         def num(v):

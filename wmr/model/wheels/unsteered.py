@@ -22,8 +22,7 @@ from typing import ClassVar, Self
 import numpy as np
 
 from ...errors import InputValueError
-from .. import arrays as A
-from .. import checks as C
+from .. import arrays, checks
 from ..backend import NUMERIC, Backend, choose
 from ..lazysympy import is_sympy
 from ..platform import rotated
@@ -52,8 +51,8 @@ def constant(name: str, value: Numbers) -> Numbers:
     >>> constant("angle", sp.pi / 2), constant("angle", 1)
     (pi/2, 1.0)
     """
-    f = C.number(name, value)  # an input error for symbols, NaN, inf, 10**400
-    value = C.real(name, value)
+    f = checks.number(name, value)  # an input error for symbols, NaN, inf, 10**400
+    value = checks.real(name, value)
     return value if is_sympy(value) else f
 
 
@@ -75,9 +74,9 @@ def in_degrees(owner, name, value, degrees):
     if degrees is not None:
         if value is not None:
             raise InputValueError(f"{name}_deg: give {owner} {name} (radians) or {name}_deg (degrees), not both")
-        return math.radians(C.number(f"{name}_deg (degrees)", degrees))
+        return math.radians(checks.number(f"{name}_deg (degrees)", degrees))
     if value is None:
-        raise C.kind_error(name, value, f"an angle in radians (or give {owner} {name}_deg in degrees)")
+        raise checks.kind_error(name, value, f"an angle in radians (or give {owner} {name}_deg in degrees)")
     return value
 
 
@@ -96,8 +95,8 @@ def radians(name, value):
     value = constant(name, value)
     if abs(float(value)) > 2 * np.pi + 1e-9:
         raise InputValueError(
-            f"{name} is in radians and must be within +-2 pi, got {C.show(value)} (degrees? write "
-            f"{name}=math.radians({C.show(value)}) or {name}_deg={C.show(value)})"
+            f"{name} is in radians and must be within +-2 pi, got {checks.show(value)} (degrees? write "
+            f"{name}=math.radians({checks.show(value)}) or {name}_deg={checks.show(value)})"
         )
     return value
 
@@ -175,8 +174,8 @@ class UnsteeredUnit(WheelUnit):
         >>> FixedWheel((0, 0), r=1, angle=0.5).own_angle([0.0, 3.0]).tolist()
         [0.5, 0.5]
         """
-        beta = A.finite_array("beta", beta)
-        return np.full(beta.shape, C.number("angle", self.angle))
+        beta = arrays.finite_array("beta", beta)
+        return np.full(beta.shape, checks.number("angle", self.angle))
 
     def block(self, beta: Numbers, backend: Backend | None = None) -> Matrix:
         r"""This unit's block :math:`\mathbf B_i = \mathbf R(\text{angle})\mathbf L_i` of :math:`\mathbf J_2`.
@@ -204,7 +203,7 @@ class UnsteeredUnit(WheelUnit):
         if bk is NUMERIC:
             angle = self.own_angle(beta)
         else:
-            C.real("beta", beta)
+            checks.real("beta", beta)
             angle = self.angle
         L, EL = self.block_terms(bk)
         return rotated(angle, L, EL, backend=bk)
