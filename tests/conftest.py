@@ -286,7 +286,7 @@ def check_offset_steer_only(robot, omega=0.7, t_end=1.0, dt=0.01):
     beta0 = np.full(robot.w, 0.3)
     rates = np.zeros(robot.n_rates)
     rates[0::2] = omega  # phi_dot_i = omega, theta_dot_i = 0
-    traj = wmr.simulate(robot, rates, beta0, t_end, dt)
+    traj = wmr.integrate(robot, rates, beta0, t_end, dt)
     d = robot.wheels[0].d
     # first principles: with the platform translating (psi = 0), C - H_1 = d_1 + d j(beta)
     C = traj.pose[:, 1:]

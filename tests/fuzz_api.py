@@ -337,7 +337,7 @@ def _attr(module, name):
 
 
 def _traj():
-    return wmr.simulate(ROBOTS[0], [-1.0, -1.0, -1.0], [0.0, 0.0, 0.0], t_end=0.2, dt=0.1)
+    return wmr.integrate(ROBOTS[0], [-1.0, -1.0, -1.0], [0.0, 0.0, 0.0], t_end=0.2, dt=0.1)
 
 
 TRAJ = _traj()
@@ -467,13 +467,13 @@ CASES = [
     ),
     Case("centre_to_wheels", lambda twist, d: wmr.centre_to_wheels(twist, d), (T, ("d", "pairs"))),
     Case(
-        "simulate",
-        lambda robot, rates, beta0, t_end, dt: wmr.simulate(robot, rates, beta0, t_end, dt),
+        "integrate",
+        lambda robot, rates, beta0, t_end, dt: wmr.integrate(robot, rates, beta0, t_end, dt),
         (R, ("rates", "rates1"), ("beta0", "beta1"), ("t_end", "dt"), ("dt", "dt")),
     ),
     Case(
-        "simulate(steer, pose0)",
-        lambda robot, steer, pose0: wmr.simulate(
+        "integrate(steer, pose0)",
+        lambda robot, steer, pose0: wmr.integrate(
             robot, np.zeros(robot.n_rates), np.zeros(robot.w), 0.2, 0.1, steer, pose0
         ),
         (S, ("steer", "opt_beta1"), ("pose0", "twist1")),

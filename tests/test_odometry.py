@@ -139,7 +139,7 @@ def test_odometry_of_offset_wheels_converges_at_first_order():
     make the error of order dt, so halving the step halves it."""
     bot = wmr.paper_robot("offset", L=0.5, r=0.1)
     rates = np.array([0.3, -1.0, -0.2, 2.0, 0.5, 1.0])
-    fine = wmr.simulate(bot, rates, [0.2, 1.0, -0.5], t_end=2.0, dt=1e-3)
+    fine = wmr.integrate(bot, rates, [0.2, 1.0, -0.5], t_end=2.0, dt=1e-3)
     assert measured_joints(bot) == bot.rate_names  # steering through beta, drives through angles
     drive = [k for k, n in enumerate(bot.rate_names) if n.startswith("theta")]
     errors = []

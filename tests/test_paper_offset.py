@@ -133,7 +133,7 @@ def test_dead_zone_circle():
     T = 2 * np.pi
     rates = np.zeros(6)
     rates[0::2] = 2 * np.pi / T
-    run = wmr.simulate(bot, rates, np.full(3, 0.4), t_end=T, dt=T / 100)
+    run = wmr.integrate(bot, rates, np.full(3, 0.4), t_end=T, dt=T / 100)
     C = run.pose[:, 1:]
     G = np.stack([run.unit_points(i, "H") for i in range(3)], axis=1)
     Cf = G.mean(axis=1)

@@ -1,4 +1,4 @@
-"""wmr.analysis.simulation: integrated motions that can be predicted without the package."""
+"""wmr.analysis.integration: integrated motions that can be predicted without the package."""
 
 import numpy as np
 import pytest
@@ -17,7 +17,7 @@ def test_spin_about_C_keeps_C_fixed(kind):
     t = np.array([0.8, 0.0, 0.0])
     beta = wmr.steering_angles(bot, t)
     rates = wmr.inverse(bot, beta, t).value
-    tr = wmr.simulate(bot, rates, beta, t_end=2.0, dt=0.05, pose0=(0.1, 1.0, -2.0))
+    tr = wmr.integrate(bot, rates, beta, t_end=2.0, dt=0.05, pose0=(0.1, 1.0, -2.0))
     assert np.allclose(tr.pose[:, 1:], [1.0, -2.0], atol=1e-12)
     assert np.allclose(tr.pose[:, 0], 0.1 + 0.8 * tr.t, atol=1e-12)
     assert np.allclose(tr.slip, 0.0, atol=1e-12)
@@ -41,7 +41,7 @@ def test_offset_steer_without_driving_moves_C_on_circle(d, omega, cx, cy):
 @pytest.mark.parametrize("t_end, dt, n", [(1.0, 0.1, 10), (1.0, 0.3, 4), (0.5, 2.0, 1), (np.pi, 0.01, 315)])
 def test_time_grid_ends_at_t_end(t_end, dt, n):
     bot = wmr.paper_robot("centred")
-    tr = wmr.simulate(bot, np.zeros(3), np.zeros(3), t_end, dt)
+    tr = wmr.integrate(bot, np.zeros(3), np.zeros(3), t_end, dt)
     assert len(tr.t) == n + 1 and tr.t[-1] == pytest.approx(t_end, abs=1e-12)
     assert np.all(np.diff(tr.t) <= dt + 1e-15)
 
@@ -50,7 +50,7 @@ def test_offset_steer_only_centre_is_contact_centroid():
     """C at the centroid of the P_i: the circle's centre is the centroid of the wheel centres."""
     bot = wmr.paper_robot("offset", L=0.5, r=0.1, d=0.08)
     rates = np.tile([1.0, 0.0], 3)
-    tr = wmr.simulate(bot, rates, np.full(3, 0.3), t_end=np.pi, dt=0.01)
+    tr = wmr.integrate(bot, rates, np.full(3, 0.3), t_end=np.pi, dt=0.01)
     Cf = np.mean([tr.unit_points(i, "H")[0] for i in range(3)], axis=0)
     assert np.allclose(np.linalg.norm(tr.pose[:, 1:] - Cf, axis=-1), 0.08, atol=1e-9)
     # after phi turns by pi, C is diametrically opposite
@@ -62,7 +62,7 @@ def test_straight_line_and_world_frame():
     t = np.array([0.0, 0.0, 1.0])  # along body +y
     beta = wmr.steering_angles(bot, t)
     rates = wmr.inverse(bot, beta, t).value
-    tr = wmr.simulate(bot, rates, beta, t_end=1.0, dt=0.1, pose0=(np.pi / 2, 0.0, 0.0))
+    tr = wmr.integrate(bot, rates, beta, t_end=1.0, dt=0.1, pose0=(np.pi / 2, 0.0, 0.0))
     # body +y is world -x when psi = pi/2
     assert np.allclose(tr.pose[-1], [np.pi / 2, -1.0, 0.0], atol=1e-12)
     w = tr.world([0.3, 0.0])
@@ -80,8 +80,8 @@ def test_callable_inputs_and_determinism():
         pose, beta = state
         return 0.1 * np.ones(3)
 
-    a = wmr.simulate(bot, rates, np.zeros(3), 1.0, 0.05, steer=steer)
-    b = wmr.simulate(bot, rates, np.zeros(3), 1.0, 0.05, steer=steer)
+    a = wmr.integrate(bot, rates, np.zeros(3), 1.0, 0.05, steer=steer)
+    b = wmr.integrate(bot, rates, np.zeros(3), 1.0, 0.05, steer=steer)
     assert np.array_equal(a.pose, b.pose) and np.array_equal(a.slip, b.slip)
     assert a.t.shape == (21,) and a.pose.shape == (21, 3) and a.beta.shape == (21, 3)
     assert np.allclose(a.beta[-1], 0.1, atol=1e-12)  # centred wheels follow the steering input
@@ -93,7 +93,7 @@ def test_dual_unit_turns_by_wheel_difference():
     bot = wmr.Robot([wmr.DualWheel(p, r=0.1, b=0.05) for p in wmr.equilateral_mounts(0.5)])
     t = np.array([0.0, 0.0, 0.0])
     rates = wmr.inverse(bot, np.zeros(3), t, beta_dot=np.full(3, 0.5)).value
-    tr = wmr.simulate(bot, rates, np.zeros(3), t_end=1.0, dt=0.05)
+    tr = wmr.integrate(bot, rates, np.zeros(3), t_end=1.0, dt=0.05)
     assert np.allclose(tr.beta[-1], 0.5, atol=1e-12)
     assert np.allclose(tr.pose, 0.0, atol=1e-12) and np.allclose(tr.slip, 0.0, atol=1e-12)
     assert np.allclose(rolling_dir(tr.beta[-1]), rolling_dir(0.5))
@@ -101,14 +101,14 @@ def test_dual_unit_turns_by_wheel_difference():
 
 BOT = wmr.paper_robot("centred")
 BAD = [
-    (lambda: wmr.simulate(BOT, [1.0, 1.0], np.zeros(3), 1.0, 0.1), "rates", "(2,)"),
-    (lambda: wmr.simulate(BOT, np.ones(3), np.zeros(2), 1.0, 0.1), "beta0", "(2,)"),
-    (lambda: wmr.simulate(BOT, np.ones(3), np.zeros(3), 1.0, 0.0), "dt", "0"),
-    (lambda: wmr.simulate(BOT, np.ones(3), np.zeros(3), np.nan, 0.1), "t_end", "nan"),
-    (lambda: wmr.simulate(BOT, np.ones(3), np.zeros(3), 1.0, -0.1), "dt", "-0.1"),
-    (lambda: wmr.simulate(BOT, np.ones(3), np.zeros(3), 1.0, 0.1, steer=[1.0]), "steer", "(1,)"),
-    (lambda: wmr.simulate(BOT, np.ones(3), np.zeros(3), 1.0, 0.1, pose0=(0.0, np.inf, 0.0)), "pose0", "inf"),
-    (lambda: wmr.simulate(BOT, lambda t, s: np.ones(2), np.zeros(3), 1.0, 0.1), "rates(t)", "(2,)"),
+    (lambda: wmr.integrate(BOT, [1.0, 1.0], np.zeros(3), 1.0, 0.1), "rates", "(2,)"),
+    (lambda: wmr.integrate(BOT, np.ones(3), np.zeros(2), 1.0, 0.1), "beta0", "(2,)"),
+    (lambda: wmr.integrate(BOT, np.ones(3), np.zeros(3), 1.0, 0.0), "dt", "0"),
+    (lambda: wmr.integrate(BOT, np.ones(3), np.zeros(3), np.nan, 0.1), "t_end", "nan"),
+    (lambda: wmr.integrate(BOT, np.ones(3), np.zeros(3), 1.0, -0.1), "dt", "-0.1"),
+    (lambda: wmr.integrate(BOT, np.ones(3), np.zeros(3), 1.0, 0.1, steer=[1.0]), "steer", "(1,)"),
+    (lambda: wmr.integrate(BOT, np.ones(3), np.zeros(3), 1.0, 0.1, pose0=(0.0, np.inf, 0.0)), "pose0", "inf"),
+    (lambda: wmr.integrate(BOT, lambda t, s: np.ones(2), np.zeros(3), 1.0, 0.1), "rates(t)", "(2,)"),
 ]
 
 

@@ -100,11 +100,11 @@ def test_exponential_and_logarithm_are_inverse():
     tw = rng.normal(size=(100, 3)) * [2.0, 1.0, 1.0]
     dt = 0.3
     np.testing.assert_allclose(swerve.se2_log(swerve.se2_exp(tw, dt), dt), tw, atol=1e-12)
-    # exp of a constant twist is the exact end of the motion: compare with wmr.simulate (RK4) of a wheel robot
+    # exp of a constant twist is the exact end of the motion: compare with wmr.integrate (RK4) of a wheel robot
     bot = _bot()
     t = np.array([1.3, 0.8, -0.2])
     cmd = swerve.module_commands(bot, t)
-    tr = wmr.simulate(bot, cmd.speed / 0.05, cmd.beta, t_end=dt, dt=0.001)
+    tr = wmr.integrate(bot, cmd.speed / 0.05, cmd.beta, t_end=dt, dt=0.001)
     np.testing.assert_allclose(tr.pose[-1], swerve.se2_exp(t, dt), atol=1e-9)
 
 

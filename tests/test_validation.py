@@ -199,7 +199,7 @@ ENTRY_POINTS = [
     ("wrong matrix shape", lambda: wmr.condition_number([1.0, 2.0, 3.0]), "A", "(3,)"),
     ("NaN matrix", lambda: wmr.rank([[np.nan]]), "A", "nan"),
     ("L <= 0", lambda: BOT.J1(L=-2.0), "L", "-2"),
-    ("dt <= 0", lambda: wmr.simulate(BOT, [1.0] * 3, [0.0] * 3, 1.0, 0.0), "dt", "0"),
+    ("dt <= 0", lambda: wmr.integrate(BOT, [1.0] * 3, [0.0] * 3, 1.0, 0.0), "dt", "0"),
     ("point_velocity shape", lambda: wmr.point_velocity([1.0, 0.0, 0.0], [1.0]), "d", "(1,)"),
 ]
 
@@ -277,7 +277,7 @@ QUOTED = [  # (case, call, exception type, words the message must hold)
     ),
     (
         "tiny dt",
-        lambda: wmr.simulate(_BOT, [1.0] * 3, [0.0] * 3, t_end=0.5, dt=1e-9),
+        lambda: wmr.integrate(_BOT, [1.0] * 3, [0.0] * 3, t_end=0.5, dt=1e-9),
         ValueError,
         ["dt", "max_steps", "5e+08"],
     ),
@@ -285,7 +285,7 @@ QUOTED = [  # (case, call, exception type, words the message must hold)
     ("huge twist", lambda: wmr.inverse(_BOT, [0.0] * 3, [1.7e308] * 3), ValueError, ["twist", "overflow"]),
     (
         "huge rates",
-        lambda: wmr.simulate(_BOT, [1.7e308] * _BOT.n_rates, [0.0] * 3, t_end=1.0, dt=0.1),
+        lambda: wmr.integrate(_BOT, [1.7e308] * _BOT.n_rates, [0.0] * 3, t_end=1.0, dt=0.1),
         ValueError,
         ["rates", "overflow"],
     ),
@@ -320,5 +320,5 @@ def test_quoted_inputs_that_are_valid_give_right_finite_answers():
     sol = wmr.forward(wmr.paper_robot("centred", L=1e300, r=1e299), [0.1, 0.2, 0.3], [1.0, 2.0, 3.0])
     assert np.all(np.isfinite(sol.value))  # (was: "fewer than two mount points")
     with pytest.raises(ValueError, match="max_steps"):
-        wmr.simulate(_BOT, [1.0] * 3, [0.0] * 3, t_end=1.0, dt=0.1, max_steps=5)
-    assert len(wmr.simulate(_BOT, [1.0] * 3, [0.0] * 3, t_end=1.0, dt=0.1, max_steps=10).t) == 11
+        wmr.integrate(_BOT, [1.0] * 3, [0.0] * 3, t_end=1.0, dt=0.1, max_steps=5)
+    assert len(wmr.integrate(_BOT, [1.0] * 3, [0.0] * 3, t_end=1.0, dt=0.1, max_steps=10).t) == 11

@@ -166,7 +166,7 @@ def test_fixed_wheels_constrain_the_twist():
 
 def test_simulated_differential_drive_drives_straight():
     bot = diff_castor()  # equal wheel rates, the castor trailing (axle along y) and rolling at the same speed
-    traj = wmr.simulate(bot, [20.0, 20.0, 0.0, 1.0 / 0.03], [0.0, 0.0, PI / 2], t_end=0.5, dt=0.01)
+    traj = wmr.integrate(bot, [20.0, 20.0, 0.0, 1.0 / 0.03], [0.0, 0.0, PI / 2], t_end=0.5, dt=0.01)
     assert np.allclose(traj.beta, traj.beta[0])  # nothing turns
     assert np.allclose(traj.twist, [0.0, 1.0, 0.0]) and np.allclose(traj.slip, 0, atol=1e-12)
     assert np.allclose(traj.pose[-1], [0.0, 0.5, 0.0])

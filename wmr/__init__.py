@@ -21,13 +21,14 @@ from . import deprecated as deprecated  # the names that moved, kept for one rel
 from . import errors, swerve
 from ._version import __version__ as __version__  # one source: wmr/_version.py
 from .analysis.classes import campion_class
+from .analysis.integration import integrate
 from .analysis.isotropy import characteristic_length, is_isotropic
 from .analysis.kinematics import forward, inverse
 from .analysis.linalg import condition_number, null_space, nullity, rank
 from .analysis.mobility import admissible_twists, mobility, rank_F
-from .analysis.simulation import simulate
 from .analysis.steering import centre_to_wheels, instantaneous_centre, steering_angles
 from .analysis.sweep import sweep
+from .deprecated import simulate as simulate  # deprecated: wmr.integrate
 from .io import dump, load
 from .model import conventions
 from .model.backend import NUMERIC, SYMBOLIC
@@ -66,7 +67,7 @@ __all__ = [
     "instantaneous_centre",
     "steering_angles",
     "centre_to_wheels",
-    "simulate",
+    "integrate",
     "sweep",
     "campion_class",
     "TOL",

@@ -25,6 +25,7 @@ before                                         now
 ``wmr.analysis.glossary``                      :mod:`wmr.words.glossary`
 ``wmr.analysis.singular.FAMILIES, MEANINGS``   :mod:`wmr.words.singular` (``description``, ``meaning``)
 ``wmr.model.types.Twist`` (a type alias)       ``wmr.model.types.TwistLike`` (:class:`wmr.Twist` is the named twist)
+``wmr.simulate``, ``wmr.analysis.simulation``  :func:`wmr.integrate`, :mod:`wmr.analysis.integration` (``wmr simulate`` is MuJoCo)
 =============================================  ===================================================================
 """
 
@@ -35,7 +36,7 @@ import warnings
 from collections.abc import Callable
 from typing import Any
 
-from .analysis import overview, singular, unit_design
+from .analysis import integration, overview, singular, unit_design
 from .io import mechanism, wheel_tables
 from .model import types
 from .model.wheels import WheelUnit, swedish
@@ -43,7 +44,7 @@ from .plot import parts
 from .words import glossary
 from .words import singular as singular_words
 
-__all__ = ["MOVED"]
+__all__ = ["MOVED", "simulate"]
 
 #: old name -> its replacement, as the warnings name them
 MOVED = {
@@ -143,3 +144,20 @@ def _types_getattr(name: str) -> Any:
 
 
 setattr(types, "__getattr__", _types_getattr)  # noqa: B010 (PEP 562, on a module object)
+sys.modules.setdefault("wmr.analysis.simulation", integration)
+
+
+def simulate(*args: Any, **kwargs: Any) -> Any:
+    """Deprecated: :func:`wmr.integrate` (the kinematics integrated in time; ``wmr simulate`` runs MuJoCo).
+
+    Parameters
+    ----------
+    *args, **kwargs
+        Those of :func:`wmr.integrate`.
+
+    Returns
+    -------
+    Trajectory
+    """
+    warnings.warn("wmr.simulate is deprecated: use wmr.integrate (the same function)", DeprecationWarning, 2)
+    return integration.integrate(*args, **kwargs)

@@ -79,11 +79,11 @@ def curved_translation(beta_dot):
             "changes direction without stopping and without slip. Mobility 1 is not the same as having to "
             "stop."
         )
-    from wmr.analysis.simulation import simulate
+    from wmr.analysis.integration import integrate
     from wmr.analysis.steering import steering_angles
 
     bot, t_end = _robot(), 2.0
-    run = simulate(
+    run = integrate(
         bot,
         lambda t, s: inverse(bot, s[1], _twist(t)).value,
         steering_angles(bot, _twist(0.0)),

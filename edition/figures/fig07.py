@@ -2,7 +2,7 @@ r"""Fig. 7: the dead zone of three offset wheels steered one full turn without d
 
 All wheels start at the same :math:`\beta` (parallel arms, the configuration in which steering
 without driving is possible) and are steered with :math:`\dot\phi_i = 2\pi/T`,
-:math:`\dot\theta_i = 0` (:func:`wmr.simulate`).  The path of C is fitted with a circle
+:math:`\dot\theta_i = 0` (:func:`wmr.integrate`).  The path of C is fitted with a circle
 (:func:`~edition.figures.common.fit_circle`); its radius is compared with the offset d.  RK4 on
 this smooth periodic motion has a global error of order :math:`d\,(\omega\Delta t)^4`
 (:math:`\omega = 2\pi/T`), recorded as ``tolerance``.
@@ -14,7 +14,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from wmr.analysis.simulation import simulate
+from wmr.analysis.integration import integrate
 from wmr.model.robots import paper_robot
 
 from ..text import degrees, number
@@ -145,7 +145,7 @@ def data(r=R_OFFSET, d=None, beta0=0.0, T=1.0, steps=240, later=3 / 8, generic=(
     dt = T / steps
     omega = 2 * np.pi / T
     rates = np.tile([omega, 0.0], bot.w)  # phi_dot_i, theta_dot_i
-    tr = simulate(bot, rates, np.full(bot.w, beta0 * DEG), T, dt)
+    tr = integrate(bot, rates, np.full(bot.w, beta0 * DEG), T, dt)
     C = tr.pose[:, 1:]
     centre, R = fit_circle(C)
     G = np.stack([tr.unit_points(k, "H") for k in range(bot.w)], axis=1)  # (N, w, 2) contact points

@@ -12,8 +12,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from wmr.analysis.integration import integrate
 from wmr.analysis.mobility import rank_F
-from wmr.analysis.simulation import simulate
 
 from ..text import bound
 from ..text import residual as residual_text
@@ -97,7 +97,7 @@ class Fig08Data:
 
 def _run(bot, beta0, steer, speed, t_end, dt, straight):
     rates = np.full(bot.w, speed / bot.wheels[0].r)
-    tr = simulate(bot, rates, np.full(bot.w, beta0), t_end, dt, steer=steer)
+    tr = integrate(bot, rates, np.full(bot.w, beta0), t_end, dt, steer=steer)
     C = tr.pose[:, 1:]
     P = np.stack([tr.unit_points(k, "P") for k in range(bot.w)], axis=1)  # (N, w, 2)
     dev = float(np.max(np.linalg.norm(P - C[:, None, :] - bot.mount_points, axis=-1)))

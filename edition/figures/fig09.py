@@ -1,7 +1,7 @@
 r"""Fig. 9: rotation of the centred-wheel robot with the IC at C and at an arbitrary point U (simulated).
 
 Steering angles from :func:`wmr.steering_angles` (axles through the IC), joint rates from
-:func:`wmr.inverse`, motion from :func:`wmr.simulate` with :math:`\dot\psi = 1`; the twist of a
+:func:`wmr.inverse`, motion from :func:`wmr.integrate` with :math:`\dot\psi = 1`; the twist of a
 rotation about the body point :math:`\mathbf u_c` is :math:`(\dot\psi, -\dot\psi\mathbf E\mathbf u_c)` (63).
 """
 
@@ -11,9 +11,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from wmr.analysis.integration import integrate
 from wmr.analysis.kinematics import inverse
 from wmr.analysis.mobility import rank_F
-from wmr.analysis.simulation import simulate
 from wmr.analysis.steering import steering_angles
 
 from ..text import bound
@@ -106,7 +106,7 @@ def _run(bot, uc, turn, steps=120):
     twist = np.array([1.0, uc[1], -uc[0]])  # (63): c_dot = -psi_dot E u_c
     beta = steering_angles(bot, twist)
     rates = inverse(bot, beta, twist).value
-    tr = simulate(bot, rates, beta, turn, turn / steps)
+    tr = integrate(bot, rates, beta, turn, turn / steps)
     rk = int(rank_F(bot, beta))
     C = tr.pose[:, 1:]
     rad = fit_circle(C)[1] if np.linalg.norm(uc) > 0 else float(np.max(np.linalg.norm(C - uc, axis=1)))

@@ -148,10 +148,10 @@ def test_dual_corrected_steering_law_is_slip_free():
     rates = wmr.inverse(dual, beta0, tw).value
     th = rates.reshape(3, 2)
     assert np.allclose(th[:, 0] - th[:, 1], -(2 * 0.05 / 0.1) * tw[0])  # corrected (15)
-    run = wmr.simulate(dual, rates, beta0, t_end=1.0, dt=0.02)
+    run = wmr.integrate(dual, rates, beta0, t_end=1.0, dt=0.02)
     assert run.slip.max() < TOL and np.abs(run.beta - beta0).max() < TOL
     printed_law = np.repeat(th.mean(axis=1), 2)  # printed (15): no difference
-    run = wmr.simulate(dual, printed_law, beta0, t_end=1.0, dt=0.02)
+    run = wmr.integrate(dual, printed_law, beta0, t_end=1.0, dt=0.02)
     assert run.slip.max() > 0.01
 
 

@@ -7,7 +7,7 @@ r"""Analyses of any robot built with :mod:`wmr.model`.
 :mod:`~wmr.analysis.isotropy`       isotropy tests and the characteristic length (30)-(50)
 :mod:`~wmr.analysis.kinematics`     forward and inverse kinematics with the slip residual (21)
 :mod:`~wmr.analysis.steering`       instantaneous centre and compatible steering angles (60)-(65)
-:mod:`~wmr.analysis.simulation`     time integration of the kinematics
+:mod:`~wmr.analysis.integration`    time integration of the kinematics (:func:`wmr.integrate`)
 :mod:`~wmr.analysis.lines`          2-D line geometry: intersections, concurrency, circumcircle
 :mod:`~wmr.analysis.square`         the square :math:`\mathbf J` of three centred wheels: check, default L, exact robot
 :mod:`~wmr.analysis.singularities`  :math:`\det\mathbf J` and the classification of singular configurations (58)-(59)
@@ -36,7 +36,7 @@ __all__ = [
     "isotropy",
     "kinematics",
     "steering",
-    "simulation",
+    "integration",
     "lines",
     "square",
     "singularities",

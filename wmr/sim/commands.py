@@ -1,7 +1,7 @@
 r"""Joint commands from wmr's inverse kinematics: what the servos must do for a commanded twist.
 
 For a constant body twist :math:`\mathbf t`, :func:`twist_schedule` integrates the paper's model
-(:func:`wmr.simulate`) with the joint rates of :func:`wmr.inverse` at every instant: centred and
+(:func:`wmr.integrate`) with the joint rates of :func:`wmr.inverse` at every instant: centred and
 dual wheels keep the steering angles of :func:`wmr.steering_angles`; an offset wheel steers at the
 rate its inverse kinematics gives, :math:`\dot\beta_i = \dot\phi_i - \dot\psi` (7).  The steering
 angles along that run are the targets of the steering servos, the rates those of the drive servos.
@@ -11,8 +11,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..analysis.integration import integrate
 from ..analysis.kinematics import inverse
-from ..analysis.simulation import simulate
 from ..analysis.steering import steering_angles
 from ..model import validation
 from ..model.platform import point_velocity
@@ -89,6 +89,6 @@ def twist_schedule(
         if beta0 is None
         else validation.finite_array("beta0", beta0, last=robot.w).reshape(robot.w)
     )
-    traj = simulate(robot, lambda t, state: inverse(robot, state[1], twist).value, b0, seconds, dt)
+    traj = integrate(robot, lambda t, state: inverse(robot, state[1], twist).value, b0, seconds, dt)
     rates = inverse(robot, traj.beta, twist).value
     return Schedule(traj.t, traj.beta, rates)

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from wmr.analysis.simulation import simulate
+from wmr.analysis.integration import integrate
 from wmr.model.robots import paper_robot
 from wmr.model.tolerance import TOL
 
@@ -40,7 +40,7 @@ def dead_zone(robot, beta0=0.4, T=2 * np.pi, steps=200):
     """
     rates = np.zeros(2 * robot.w)
     rates[0::2] = 2 * np.pi / T
-    run = simulate(robot, rates, np.full(robot.w, beta0), t_end=T, dt=T / steps)
+    run = integrate(robot, rates, np.full(robot.w, beta0), t_end=T, dt=T / steps)
     C = run.pose[:, 1:]
     a, b, c = np.linalg.lstsq(np.c_[2 * C, np.ones(len(C))], (C**2).sum(1), rcond=None)[0]
     centre, radius = np.array([a, b]), float(np.sqrt(c + a * a + b * b))
@@ -108,7 +108,7 @@ def dead_zone_claim(origin=(0.06, -0.04), steps=200):
             claim(
                 "dead-zone",
                 holds,
-                f"`wmr.simulate` ({steps} RK4 steps), all units steered one full turn with the drives "
+                f"`wmr.integrate` ({steps} RK4 steps), all units steered one full turn with the drives "
                 "locked: the contact points stay fixed, the platform does not turn, and C runs once "
                 "around a circle of radius $d$ about their centroid $C_f$, so $|CC_f| = d$ "
                 "throughout",

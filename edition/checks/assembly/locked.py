@@ -8,8 +8,8 @@ from __future__ import annotations
 import numpy as np
 import sympy as sp
 
+from wmr.analysis.integration import integrate
 from wmr.analysis.linalg import null_space, rank
-from wmr.analysis.simulation import simulate
 from wmr.model.backend import SYMBOLIC
 from wmr.model.platform import E, rotation
 from wmr.model.robot import Robot
@@ -166,8 +166,8 @@ def drift_motions(u=(0.1, 0.05), beta_parallel=0.4, t_end=0.2, dt=0.002):
     require(np.allclose(x_con[1:3], -E() @ u) and np.allclose(x_con[3:], lam / d), "concurrent arms: rotation about U")
     r_con, r_par = np.zeros(6), np.zeros(6)
     r_con[0::2], r_par[0::2] = x_con[3:], x_par[3:]
-    run_con = simulate(paper, r_con, beta_c, t_end=t_end, dt=dt)
-    run_par = simulate(paper, r_par, np.full(3, beta_parallel), t_end=t_end, dt=dt)
+    run_con = integrate(paper, r_con, beta_c, t_end=t_end, dt=dt)
+    run_par = integrate(paper, r_par, np.full(3, beta_parallel), t_end=t_end, dt=dt)
     require(run_con.slip[0] < TOL < run_con.slip[-1] and run_par.slip.max() < TOL, "concurrent drift needs slip later")
     return Derivation(
         parallel={"twist": x_par[:3], "phi_dot": x_par[3:], "predicted": pred_par},

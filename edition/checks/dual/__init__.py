@@ -3,7 +3,7 @@ r"""Chapter 6: dual wheels, omnidirectionality and discontinuous heading (claims
 "Kinematically equivalent" is tested as: the same admissible platform twists at every steering
 angle (:math:`\mathbf F^{\text{dual}} = \mathbf F^{\text{centred}}\mathbf T`); "mobility" as the
 dimension of the admissible twists; "omnidirectional" in the paper's own sense of Section 4.2
-(every twist executable at once).  Motions are integrated with :func:`wmr.simulate`, which moves
+(every twist executable at once).  Motions are integrated with :func:`wmr.integrate`, which moves
 dual units by the corrected (15) and reports the slip (the residual of (21)).
 
 The checks, by job:

@@ -8,9 +8,9 @@ from __future__ import annotations
 import numpy as np
 import sympy as sp
 
+from wmr.analysis.integration import integrate
 from wmr.analysis.kinematics import inverse
 from wmr.analysis.mobility import admissible_twists, mobility, rank_F
-from wmr.analysis.simulation import simulate
 from wmr.analysis.steering import instantaneous_centre, steering_angles
 from wmr.model.backend import SYMBOLIC
 from wmr.model.platform import rotation
@@ -112,7 +112,7 @@ def equivalence(B_dual, B_centred, avg, F_dual, F_centred, T, n=300, n_paper=100
     printed_rates = np.repeat(ok_rates.reshape(3, 2).mean(axis=1), 2)
     runs: list[dict] = []
     for name, rates in (("corrected (15)", ok_rates), ("printed (15)", printed_rates)):
-        tr = simulate(dual, rates, beta0, t_end=t_end, dt=dt)
+        tr = integrate(dual, rates, beta0, t_end=t_end, dt=dt)
         U = tr.world(instantaneous_centre(tw).point)
         runs.append(
             {
@@ -154,7 +154,7 @@ def equivalence(B_dual, B_centred, avg, F_dual, F_centred, T, n=300, n_paper=100
                 r"$\mathbf F^{\text{dual}} = \mathbf F^{\text{centred}}\mathbf T$ for the paper's robots (SymPy): the same "
                 r"admissible "
                 rf"platform twists at every $\boldsymbol\beta$, confirmed at {n} configurations of the paper's and random "
-                r"robots; the dual robot steered by the corrected (15) turns about a fixed U without slip (`wmr.simulate`)",
+                r"robots; the dual robot steered by the corrected (15) turns about a fixed U without slip (`wmr.integrate`)",
                 max(worst, runs[0]["largest slip"]),
                 convention=r"equivalent = the same admissible platform twists at every $\boldsymbol\beta$, with the average "
                 r"rate (18); the wheel-rate difference is the unit's steering rate, by the corrected (15) "

@@ -86,7 +86,7 @@ def omnidirectional(n=2000, seed=SEED):
                 r"the platform at rest (commanding the new twist at once slips at the full speed), while a curvilinear "
                 rf"translation whose direction turns by ${np.degrees(curve['turned']):.0f}^\circ$ is followed without "
                 rf"stopping: the twist executed differs from the one commanded by ${bound(curve['miss'], latex=True)}$, slip "
-                rf"${bound(curve['slip'], latex=True)}$ (`wmr.simulate`)",
+                rf"${bound(curve['slip'], latex=True)}$ (`wmr.integrate`)",
                 max(curve["slip"], curve["miss"]),
                 refuted=f"the admissible twists have dimension {' or '.join(map(str, dims))} (never 3): a twist in another "
                 "direction than the current one cannot be executed without re-steering",
@@ -211,7 +211,7 @@ def discontinuous_heading(n=2000, seed=SEED):
                 r"$\mathbf t \to \lambda\mathbf t$ are; the offset robot executes all of them at once, with joint rates "
                 r"bounded by "
                 r"$\sigma_{\max}(\mathbf J_1)/\sigma_{\min}(\mathbf J_2)\,\|\mathbf t\|$, and turns a 90-degree corner without "
-                r"stopping and without slip (`wmr.simulate`); a differential drive (mobility 2) with C "
+                r"stopping and without slip (`wmr.integrate`); a differential drive (mobility 2) with C "
                 rf"${a:g}$ ahead of its axle executes all {n} random jumps of C's heading at once",
                 res,
                 refuted=rf"at mobility 2 a differential drive with C ${a:g}$ ahead of its axle turns C's heading by up to "

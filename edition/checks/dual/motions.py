@@ -1,4 +1,4 @@
-r"""Two motions of Chapter 6 integrated with :func:`wmr.simulate`: a 90-degree corner (centred, dual and offset
+r"""Two motions of Chapter 6 integrated with :func:`wmr.integrate`: a 90-degree corner (centred, dual and offset
 wheels) and a curvilinear translation with the wheels re-steered while moving (the paper's Fig. 8b).
 """
 
@@ -6,8 +6,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from wmr.analysis.integration import integrate
 from wmr.analysis.kinematics import inverse
-from wmr.analysis.simulation import simulate
 from wmr.analysis.steering import steering_angles
 
 from ...algebra import mod_pi
@@ -39,7 +39,7 @@ def corner(v=0.2, w_max=np.pi / 2, dt=0.01):
     bx, by = steering_angles(cen, tw_x), steering_angles(cen, tw_y)
     Ts = float(np.max(np.abs(mod_pi(by - bx)))) / w_max
     rx, ry = inverse(cen, bx, tw_x).value, inverse(cen, by, tw_y).value
-    run = simulate(
+    run = integrate(
         cen,
         lambda t, s: rx if t < 1 else (np.zeros(3) if t < 1 + Ts else ry),
         bx,
@@ -57,13 +57,13 @@ def corner(v=0.2, w_max=np.pi / 2, dt=0.01):
             return inverse(dual, s[1], np.zeros(3), beta_dot=(by - bx) / Ts).value
         return inverse(dual, s[1], tw_y).value
 
-    run_d = simulate(dual, dual_rates, bx, t_end=2 + Ts, dt=dt)
+    run_d = integrate(dual, dual_rates, bx, t_end=2 + Ts, dt=dt)
     inside_d = (run_d.t > 1 + 1e-9) & (run_d.t < 1 + Ts - 1e-9)
 
     def off_rates(t, s):
         return inverse(off, s[1], tw_x if t < 1 else tw_y).value
 
-    run_o = simulate(off, off_rates, np.zeros(3), t_end=2.0, dt=dt)
+    run_o = integrate(off, off_rates, np.zeros(3), t_end=2.0, dt=dt)
     top = float(np.abs([off_rates(t, (p, b)) for t, p, b in zip(run_o.t, run_o.pose, run_o.beta, strict=True)]).max())
     return {
         "Ts": Ts,
@@ -110,7 +110,7 @@ def curved_translation(v=0.2, omega=0.5, t_end=np.pi, dt=0.01):
         return np.array([0.0, v * np.cos(omega * t), v * np.sin(omega * t)])
 
     beta0 = steering_angles(cen, twist(0.0))
-    run = simulate(
+    run = integrate(
         cen, lambda t, s: inverse(cen, s[1], twist(t)).value, beta0, t_end=t_end, dt=dt, steer=np.full(3, omega)
     )
     vel = np.diff(run.pose[:, 1:], axis=0)

@@ -10,9 +10,9 @@ from __future__ import annotations
 import numpy as np
 import sympy as sp
 
+from wmr.analysis.integration import integrate
 from wmr.analysis.kinematics import forward, inverse
 from wmr.analysis.linalg import condition_number
-from wmr.analysis.simulation import simulate
 from wmr.model.robots import paper_robot
 from wmr.model.tolerance import TOL
 
@@ -220,7 +220,7 @@ def dead_zone_of_isotropy(iso, steps=200, omega=2.0):
     r"""Claim ``isotropy-d-zero``: the isotropic offset d = r is the largest practical offset, hence the largest dead
     zone.
 
-    A full steering turn without driving at d = r (``wmr.simulate``): C stays at distance d from the
+    A full steering turn without driving at d = r (``wmr.integrate``): C stays at distance d from the
     fixed centroid of the contact points; :math:`\kappa(\mathbf J_2)` is 1 only at d = r and infinite
     at the drift-free d = 0.
 
@@ -241,7 +241,7 @@ def dead_zone_of_isotropy(iso, steps=200, omega=2.0):
     """
     off = paper_robot("offset", L=0.4, r=0.1)  # d = r = 0.1
     T = 2 * np.pi / omega
-    run = simulate(off, [omega, 0.0] * 3, [0.3] * 3, T, T / steps)
+    run = integrate(off, [omega, 0.0] * 3, [0.3] * 3, T, T / steps)
     contacts = np.stack([run.unit_points(i, "H") for i in range(3)], axis=1)
     radius = np.linalg.norm(run.pose[:, 1:] - contacts.mean(axis=1), axis=1)
     drift = float(np.max(np.abs(contacts - contacts[:1])))
@@ -262,7 +262,7 @@ def dead_zone_of_isotropy(iso, steps=200, omega=2.0):
                 holds,
                 r"$\kappa(\mathbf J_2) = \max(d,r)/\min(d,r)$ is 1 only at $d = r$ and infinite at "
                 r"the drift-free $d = 0$; a simulated full steering turn without driving at $d = r$ "
-                rf"(`wmr.simulate`, {steps} steps) keeps C at distance $d$ from the fixed centroid "
+                rf"(`wmr.integrate`, {steps} steps) keeps C at distance $d$ from the fixed centroid "
                 r"of the contact points: the dead zone grows with $d$",
                 res,
                 convention=r"practical offsets $0 \le d \le r$; dead zone = the circle of radius $d$ traced by C when the "

@@ -10,8 +10,8 @@ from __future__ import annotations
 import numpy as np
 import sympy as sp
 
+from wmr.analysis.integration import integrate
 from wmr.analysis.kinematics import inverse
-from wmr.analysis.simulation import simulate
 from wmr.model.backend import SYMBOLIC
 from wmr.model.platform import point_velocity, rotation
 from wmr.model.robots import paper_robot
@@ -187,7 +187,7 @@ def dual_steering(phi_dot, rigid, i3, n=500, seed=SEED, r=0.1, b=0.08, L=0.5):
 def dual_integrated(phi, phi_dot, r=0.1, b=0.08, L=0.5, steps=100):
     r"""(16): the integral of the corrected (15), and a finite counterexample to the printed one.
 
-    A quarter turn of the platform about C with the units locked (``wmr.simulate``): the printed
+    A quarter turn of the platform about C with the units locked (``wmr.integrate``): the printed
     (16) claims each unit turned by :math:`\pi/2` relative to the platform; it did not, and had it
     turned, the motion would need slip.
 
@@ -221,7 +221,7 @@ def dual_integrated(phi, phi_dot, r=0.1, b=0.08, L=0.5, steps=100):
     beta0 = np.arctan2(dual.mount_points[:, 1], dual.mount_points[:, 0])
     sol = inverse(dual, beta0, np.array([1.0, 0.0, 0.0]))
     T = np.pi / 2
-    run = simulate(dual, sol.value, beta0, t_end=T, dt=T / steps)
+    run = integrate(dual, sol.value, beta0, t_end=T, dt=T / steps)
     dth = (sol.value * T).reshape(3, 2)  # wheel angles after the turn (from zero)
     f16 = sp.lambdify([S.theta_i1, S.theta_i2, S.r, S.b], P16.expr.rhs, "numpy")
     printed_change = np.asarray(f16(dth[:, 0], dth[:, 1], r, b), dtype=float) * np.ones(3)
@@ -239,7 +239,7 @@ def dual_integrated(phi, phi_dot, r=0.1, b=0.08, L=0.5, steps=100):
                 16,
                 holds,
                 r"$\phi_i = \psi + \beta_i = -\frac{r}{2b}(\theta_{i1} - \theta_{i2})$ differentiates into the "
-                rf"corrected (15) (SymPy); in a simulated quarter turn (`wmr.simulate`, {steps} steps) the change "
+                rf"corrected (15) (SymPy); in a simulated quarter turn (`wmr.integrate`, {steps} steps) the change "
                 r"of $\psi + \beta_i$ equals it",
                 res,
                 refuted=(r"it differentiates into the printed (15)" if inherits else "it is not the integral of (15)")

@@ -59,7 +59,7 @@ def centre_velocity(i_B, j_B, n=500, seed=SEED):
     lhs, rhs = P.expr.lhs.subs(subs), P.expr.rhs
     holds = symbolic_equal(lhs, rhs) and symbolic_equal(i_B * body[0] + j_B * body[1], c_F)
     res = max_residual(lhs, rhs)
-    # the package's map from body to fixed components (the pose rates of wmr.simulate: R(psi) [x_dot y_dot])
+    # the package's map from body to fixed components (the pose rates of wmr.integrate: R(psi) [x_dot y_dot])
     rng = np.random.default_rng(seed)
     psi, v = rng.uniform(-np.pi, np.pi, n), rng.uniform(-2, 2, (n, 2))
     f = sp.lambdify([S.psi, S.x_dot, S.y_dot], i_B * S.x_dot + j_B * S.y_dot, "numpy")

@@ -1,4 +1,4 @@
-r"""Time integration of the kinematics for given driving and steering inputs.
+r"""Time integration of the kinematics for given driving and steering inputs (:func:`integrate`).
 
 The state is the platform pose :math:`(\psi, X, Y)` in the fixed frame :math:`\mathcal F` and the
 steering angles :math:`\boldsymbol\beta`.  At each instant the twist follows from the joint rates by
@@ -22,17 +22,17 @@ from ..model.robot import Robot
 from ..model.types import ArrayLike, FloatArray
 from .kinematics import forward
 
-__all__ = ["Trajectory", "simulate", "MAX_STEPS"]
+__all__ = ["Trajectory", "integrate", "MAX_STEPS"]
 
 
 @dataclass(frozen=True)
 class Trajectory:
-    """A simulated run.
+    """An integrated run.
 
     Attributes
     ----------
     robot : Robot
-        The simulated robot.
+        The robot.
     t : numpy.ndarray (N,)
     pose : numpy.ndarray (N, 3)
         :math:`(\\psi, X, Y)`, fixed frame.
@@ -127,11 +127,11 @@ def _as_input(f, size, name):
     return lambda t, state: arr
 
 
-#: The most steps :func:`simulate` takes unless told otherwise (a run of 10^6 steps takes minutes).
+#: The most steps :func:`integrate` takes unless told otherwise (a run of 10^6 steps takes minutes).
 MAX_STEPS = 1_000_000
 
 
-def simulate(
+def integrate(
     robot: Robot,
     rates: ArrayLike | Callable[[float, FloatArray], ArrayLike],
     beta0: ArrayLike,
@@ -169,7 +169,7 @@ def simulate(
     --------
     >>> from wmr.model.robots import paper_robot
     >>> bot = paper_robot("centred", L=1.0, r=0.5)
-    >>> tr = simulate(bot, [-2.0, -2.0, -2.0], [0.0, 0.0, 0.0], t_end=1.0, dt=0.1)
+    >>> tr = integrate(bot, [-2.0, -2.0, -2.0], [0.0, 0.0, 0.0], t_end=1.0, dt=0.1)
     >>> (tr.pose[-1].round(12) + 0.0).tolist(), bool(tr.slip.max() < 1e-12)   # 1 m along +y, no slip
     ([0.0, 0.0, 1.0], True)
     """
