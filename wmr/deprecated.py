@@ -23,7 +23,8 @@ before                                         now
 ``wmr.model.wheels.swedish.NO_FAITHFUL...``    :data:`wmr.io.mechanism.NO_FAITHFUL_MECHANISM`
 ``wmr.model.wheels.design.DesignHints``        :mod:`wmr.analysis.unit_design` (no base class any more)
 ``wmr.analysis.glossary``                      :mod:`wmr.words.glossary`
-``wmr.analysis.singular.FAMILIES, MEANINGS``   :mod:`wmr.words.singular` (``description``, ``meaning``)
+``wmr.analysis.families.FAMILIES, MEANINGS``   :mod:`wmr.words.families` (``description``, ``meaning``)
+``wmr.sim.Sample``                             :class:`wmr.sim.Reading` (the sweeps' ``Sample`` is another thing)
 ``wmr.model.types.Twist`` (a type alias)       ``wmr.model.types.TwistLike`` (:class:`wmr.Twist` is the named twist)
 ``wmr.simulate``, ``wmr.analysis.simulation``  :func:`wmr.integrate`, :mod:`wmr.analysis.integration` (``wmr simulate`` is MuJoCo)
 =============================================  ===================================================================
@@ -36,13 +37,13 @@ import warnings
 from collections.abc import Callable
 from typing import Any
 
-from .analysis import integration, overview, singular, unit_design
+from .analysis import families, integration, overview, unit_design
 from .io import mechanism, wheel_tables
 from .model import types
 from .model.wheels import WheelUnit, swedish
 from .plot import parts
+from .words import families as family_words
 from .words import glossary
-from .words import singular as singular_words
 
 __all__ = ["MOVED", "simulate"]
 
@@ -121,18 +122,19 @@ sys.modules.setdefault("wmr.analysis.glossary", glossary)
 
 
 def _moved_words(module: str) -> Callable[[str], Any]:
-    """A module ``__getattr__`` (PEP 562) that finds FAMILIES and MEANINGS in wmr.words.singular, with a warning."""
+    """A module ``__getattr__`` (PEP 562) that finds FAMILIES and MEANINGS in wmr.words.families, with a warning."""
 
     def __getattr__(name: str) -> Any:
         if name in ("FAMILIES", "MEANINGS"):
-            warnings.warn(f"{module}.{name} is deprecated: use wmr.words.singular.{name}", DeprecationWarning, 2)
-            return getattr(singular_words, name)
+            warnings.warn(f"{module}.{name} is deprecated: use wmr.words.families.{name}", DeprecationWarning, 2)
+            return getattr(family_words, name)
         raise AttributeError(f"module {module!r} has no attribute {name!r}")
 
     return __getattr__
 
 
-setattr(singular, "__getattr__", _moved_words("wmr.analysis.singular"))  # noqa: B010 (PEP 562, on a module object)
+sys.modules.setdefault("wmr.analysis.singular", families)
+setattr(families, "__getattr__", _moved_words("wmr.analysis.singular"))  # noqa: B010 (PEP 562, on a module object)
 setattr(overview, "__getattr__", _moved_words("wmr.analysis.overview"))  # noqa: B010 (PEP 562, on a module object)
 
 

@@ -16,7 +16,7 @@ r"""Analyses of any robot built with :mod:`wmr.model`.
 :mod:`~wmr.analysis.actuation`      driven and passive joints: actuated mobility, motions with every motor stopped
 :mod:`~wmr.analysis.limitations`    what a robot cannot do, in plain sentences (class, actuation, steering joints)
 :mod:`~wmr.analysis.advice`         design advice checked on the changed robot (move C, choose L, change a wheel)
-:mod:`~wmr.analysis.singular`       families of singular configurations, one example each
+:mod:`~wmr.analysis.families`       families of singular configurations, one example each
 :mod:`~wmr.analysis.unit_design`    each wheel kind's design hints: dead zone, isotropic change, other builds
 :mod:`~wmr.analysis.design`         worst-case :math:`\kappa(\mathbf J)` of a layout, search over offset-wheel designs
 :mod:`~wmr.analysis.motion_kappa`   :math:`\kappa(\mathbf J)` along the admissible motions (rotations about each centre)
@@ -50,6 +50,6 @@ __all__ = [
     "actuation",
     "limitations",
     "advice",
-    "singular",
+    "families",
     "unit_design",
 ]

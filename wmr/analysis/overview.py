@@ -38,11 +38,11 @@ from ..model.types import FloatArray
 from .actuation import describe_twist, free_twists
 from .advice import advice, profile
 from .classes import campion_class
+from .families import singular_families
 from .kinematics import inverse
 from .limitations import limitations
 from .linalg import condition_number
 from .mobility import rank_F
-from .singular import singular_families
 from .steering import steering_angles
 from .sweep import Drivable, Grid, Sample, sweep
 from .unit_design import dead_zone

@@ -21,7 +21,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from ..words import singular as words
+from ..words import families as words
 from ._numbers import json_text
 from ._options import ROBOT_FILE
 

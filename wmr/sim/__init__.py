@@ -15,7 +15,7 @@ joints (:func:`wmr.io.mechanism.mechanism`, plain data) and says which joints ar
   variables (servos, drive locks, pushes);
 - :mod:`wmr.sim.measure`: :class:`~wmr.sim.measure.Probe`, what a MuJoCo state says in wmr's variables (pose,
   twist, joint rates, contact forces, slip);
-- :mod:`wmr.sim.recording`: :class:`Schedule` (commands over time), :class:`Sample` and :class:`Recording`
+- :mod:`wmr.sim.recording`: :class:`Schedule` (commands over time), :class:`Reading` and :class:`Recording`
   (measurements);
 - :mod:`wmr.sim.runner`: :func:`run`, a simulation driven along a schedule;
 - :mod:`wmr.sim.validity`: :class:`Validity`, whether a run can be trusted (energy, penetration, servo
@@ -38,7 +38,7 @@ from .bodies import POSITION, VELOCITY, servo
 from .commands import start_angles, twist_schedule
 from .mjcf import Export, export, to_mjcf
 from .params import Params
-from .recording import Recording, Sample, Schedule
+from .recording import Reading, Recording, Schedule
 from .runner import run
 from .simulation import Simulation
 from .validity import Validity
@@ -49,7 +49,7 @@ __all__ = [
     "Export",
     "Params",
     "Recording",
-    "Sample",
+    "Reading",
     "Schedule",
     "Simulation",
     "Validity",
@@ -60,3 +60,13 @@ __all__ = [
     "to_mjcf",
     "twist_schedule",
 ]
+
+
+def __getattr__(name: str) -> object:
+    """``wmr.sim.Sample``, the name :class:`Reading` had (the sweeps have a ``Sample`` of their own): deprecated."""
+    if name == "Sample":
+        import warnings
+
+        warnings.warn("wmr.sim.Sample is deprecated: use wmr.sim.Reading", DeprecationWarning, 2)
+        return Reading
+    raise AttributeError(f"module 'wmr.sim' has no attribute {name!r}")

@@ -16,7 +16,7 @@ from typing import Any
 import numpy as np
 
 from ..model.robot import Robot
-from .recording import Sample
+from .recording import Reading
 
 __all__ = ["Probe", "yaw"]
 
@@ -76,7 +76,7 @@ class Probe:
         self.jacp, self.jacr = np.zeros((3, model.nv)), np.zeros((3, model.nv))
         self.f6 = np.zeros(6)
 
-    def sample(self, d: Any) -> Sample:
+    def sample(self, d: Any) -> Reading:
         """Measure a state (module docstring).
 
         Parameters
@@ -86,7 +86,7 @@ class Probe:
 
         Returns
         -------
-        Sample
+        Reading
         """
         mj, m = self.mj, self.model
         mj.mj_forward(m, d)  # positions, contacts and forces of this state
@@ -127,7 +127,7 @@ class Probe:
             slip[w] = u[:2]
             power[w] -= f @ u + tq @ om
         torque = np.array(d.actuator_force, dtype=float)
-        return Sample(
+        return Reading(
             float(d.time),
             np.array([psi, q[0], q[1]]),
             twist,

@@ -2,7 +2,7 @@ r"""What goes into a simulation and what comes out, in wmr's variables.
 
 A :class:`Schedule` is a command over time -- steering angles :math:`\boldsymbol\beta` for the steering
 servos and joint rates :math:`\dot{\boldsymbol\theta}` (the rate vector of :attr:`wmr.Robot.rate_names`) for
-the drive servos -- interpolated linearly between knots.  A :class:`Sample` is what
+the drive servos -- interpolated linearly between knots.  A :class:`Reading` is what
 :meth:`wmr.sim.Simulation.sample` measures at one instant; a :class:`Recording` stacks the samples of a run
 (:func:`wmr.sim.runner.run`).
 """
@@ -19,11 +19,11 @@ from ..model.types import ArrayLike, FloatArray
 from .mjcf import Export
 from .validity import Validity
 
-__all__ = ["Recording", "Sample", "Schedule"]
+__all__ = ["Recording", "Reading", "Schedule"]
 
 
 @dataclass(frozen=True)
-class Sample:
+class Reading:
     r"""What the simulation measures at one instant (see the module docstring).
 
     Attributes
@@ -77,7 +77,7 @@ class Sample:
 
 @dataclass(frozen=True)
 class Recording:
-    """Samples of a run, stacked: each attribute of :class:`Sample` with a leading time axis (N, ...).
+    """Samples of a run, stacked: each attribute of :class:`Reading` with a leading time axis (N, ...).
 
     Attributes
     ----------
@@ -96,7 +96,7 @@ class Recording:
     moment : numpy.ndarray (N, n_wheels, 3)
     slip : numpy.ndarray (N, n_wheels, 2)
     dissipation : numpy.ndarray (N, n_wheels)
-        Each as in :class:`Sample`, stacked over the N samples.
+        Each as in :class:`Reading`, stacked over the N samples.
     validity : Validity, optional
         What the simulation's validity monitor saw up to the end of the run (:mod:`wmr.sim.validity`).
     """
@@ -229,3 +229,13 @@ class Schedule:
             inside = (k >= 0) & (k < len(self.t) - 1)
             out[inside] = slope[k[inside]]
         return out
+
+
+def __getattr__(name: str) -> object:
+    """``wmr.sim.recording.Sample``, the name :class:`Reading` had: deprecated."""
+    if name == "Sample":
+        import warnings
+
+        warnings.warn("wmr.sim.recording.Sample is deprecated: use wmr.sim.recording.Reading", DeprecationWarning, 2)
+        return Reading
+    raise AttributeError(f"module 'wmr.sim.recording' has no attribute {name!r}")

@@ -31,7 +31,7 @@ from .bodies import POSITION, VELOCITY, servo
 from .measure import Probe
 from .mjcf import Export, export
 from .params import Params
-from .recording import Sample
+from .recording import Reading
 from .validity import Monitor, Validity
 
 __all__ = ["MAX_STEPS", "Simulation"]
@@ -359,12 +359,12 @@ class Simulation:
         return float(self.data.time)
 
     # --- measurements ----------------------------------------------------------------------
-    def sample(self) -> Sample:
+    def sample(self) -> Reading:
         """Measure the present state (module docstring; :meth:`wmr.sim.measure.Probe.sample`).
 
         Returns
         -------
-        Sample
+        Reading
 
         Raises
         ------

@@ -1,4 +1,4 @@
-r"""Singular configurations in words: what each family of :func:`wmr.analysis.singular.singular_families` is, and
+r"""Singular configurations in words: what each family of :func:`wmr.analysis.families.singular_families` is, and
 what it means to a driver.
 
 Examples
@@ -62,7 +62,7 @@ def description(family: str) -> str:
     Parameters
     ----------
     family : str
-        A family's short name (:func:`wmr.analysis.singular.singular_families`).
+        A family's short name (:func:`wmr.analysis.families.singular_families`).
 
     Returns
     -------
@@ -81,7 +81,7 @@ def meaning(family: str) -> str:
     Parameters
     ----------
     family : str
-        A family's short name (:func:`wmr.analysis.singular.singular_families`).
+        A family's short name (:func:`wmr.analysis.families.singular_families`).
 
     Returns
     -------

@@ -4,7 +4,7 @@ A configuration is singular when :math:`\operatorname{rank}\mathbf J < 3` (56),
 :math:`\mathbf J = \mathbf J_{L1}^T\mathbf J_2`: some change of the platform twist cannot be made
 by the wheel rates alone.  For a driver this means the wheels must be **re-steered** before the
 robot can move that way (a robot without steering cannot move that way at all without
-skidding).  :func:`singular_families` finds one example of each family; :mod:`wmr.words.singular`
+skidding).  :func:`singular_families` finds one example of each family; :mod:`wmr.words.families`
 names them in geometric words and says what they mean for driving.
 """
 
@@ -68,8 +68,8 @@ def singular_families(robot, L=None):
     Returns
     -------
     list of dict
-        ``family`` (a short name; in words: :func:`wmr.words.singular.description` and
-        :func:`~wmr.words.singular.meaning`), ``beta`` (w angles, radians), ``rank_J``, ``rank_F``
+        ``family`` (a short name; in words: :func:`wmr.words.families.description` and
+        :func:`~wmr.words.families.meaning`), ``beta`` (w angles, radians), ``rank_J``, ``rank_F``
         (ints); empty when no candidate is singular (e.g. offset wheels, d > 0: J2 is invertible).
 
     Examples
