@@ -24,7 +24,7 @@ import numpy as np
 import wmr
 from wmr.sim import Params, export
 
-from ..common import INVALID, SIZE, fmt, paper, pct, sig
+from ..common import INVALID, SIZE, fmt, fmt_above, paper, pct, sig
 from ..contact import brake_verdict
 from ..drift import GENERIC, TURN, circle_error, dead_zone_verdict, jam_does, jam_verdict
 from ..friction import RATE, reorient_verdict
@@ -130,7 +130,7 @@ def dead_zone(contact="point", modulus=1e7, params=None):
         text,
         _judged(dead_zone_verdict(err), problems),
         problems,
-        {"error": err, "C": C, "Cf": Cf},
+        {"error": err, "C": C, "Cf": Cf, "model": (contact, modulus)},
     )
 
 
@@ -171,7 +171,8 @@ def jam(contact="point", modulus=1e7, params=None):
         f"{pct(g['torque'])} of its limit; equal: turned {pct(e['travel'])}; servos of 3 mu N d: it {s['does']} "
         f"(turned {pct(s['travel'])}, C moved {pct(s['moved'])} of d)"
     )
-    return Result("jam", contact_text(contact, modulus), text, _judged(jam_verdict(g, e), problems), problems, out)
+    data = {**out, "model": (contact, modulus)}
+    return Result("jam", contact_text(contact, modulus), text, _judged(jam_verdict(g, e), problems), problems, data)
 
 
 def _breakaway(robot, beta, angle, contact, modulus, params, below=np.inf, start=1e-3, end=2.0, seconds=3.0):
@@ -235,7 +236,8 @@ def brake(contact="point", modulus=1e7, params=None, directions=BRAKE_DIRECTIONS
         f"{len(directions)} directions; ratio {fmt(sig(a['weakest'] / b['weakest']))}"
     )
     verdict = brake_verdict(a["weakest"], b["weakest"])
-    return Result("braking", contact_text(contact, modulus), text, _judged(verdict, problems), problems, out)
+    data = {**out, "model": (contact, modulus)}
+    return Result("braking", contact_text(contact, modulus), text, _judged(verdict, problems), problems, data)
 
 
 def reorient(kind, contact, modulus, params=None, rate=RATE, seconds=3.0):
@@ -290,19 +292,23 @@ def dual_wheel(modulus=1e7, params=None, point=None):
     if point is None:
         point = {k: reorient(k, "point", 0.0, params) for k in ("centred", "dual")}
     hydro = {k: reorient(k, "hydroelastic", modulus, params) for k in ("centred", "dual")}
-    problems = ()
+    problems: tuple[str, ...] = ()
     for label, runs in (("point", point), ("hydroelastic", hydro)):
         problems += tuple(x for k, (_, rec) in runs.items() for x in _problems(f"{k} {label}", rec))
     t = {(k, c): sig(runs[k][0]) for c, runs in (("point", point), ("hydro", hydro)) for k in ("centred", "dual")}
+    floor = 0.01 * max(t.values())  # a hundredth of the largest torque: creep and round-off, not friction
+    problems += tuple(f"{k} {c}: the contacts gave energy ({fmt(v)} N m)" for (k, c), v in t.items() if v < -floor)
+    shown = {key: fmt_above(v, floor) for key, v in t.items()}
+    t = {key: (v if v >= floor else 0.0) for key, v in t.items()}
     dry_c = sig(t[("centred", "hydro")] - t[("centred", "point")])
     dry_d = sig(t[("dual", "hydro")] - t[("dual", "point")])
     text = (
-        f"torque to reorient at {RATE:g} rad/s, hydroelastic / point contact: centred {fmt(t[('centred', 'hydro')])} / "
-        f"{fmt(t[('centred', 'point')])} N m, dual {fmt(t[('dual', 'hydro')])} / {fmt(t[('dual', 'point')])} N m; the "
+        f"torque to reorient at {RATE:g} rad/s, hydroelastic / point contact: centred {shown[('centred', 'hydro')]} / "
+        f"{shown[('centred', 'point')]} N m, dual {shown[('dual', 'hydro')]} / {shown[('dual', 'point')]} N m; the "
         f"dual wheel's spin-resisting part {fmt(dry_d)} N m is {pct(sig(dry_d / dry_c)) if dry_c else 'n/a'} of the "
         f"centred wheel's {fmt(dry_c)} N m"
     )
-    data = {"torque": t, "dry": {"centred": dry_c, "dual": dry_d}}
+    data = {"torque": t, "dry": {"centred": dry_c, "dual": dry_d}, "model": ("hydroelastic", modulus)}
     res = Result(
         "dual-wheel",
         contact_text("hydroelastic", modulus) + " against point",
