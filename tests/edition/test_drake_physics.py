@@ -96,6 +96,14 @@ def test_engines_csv_round_trips_and_its_verdicts_follow_from_its_numbers(tmp_pa
     assert tuple(rows[0]) == T.ENGINE_COLUMNS
     assert T.write_csv(rows, tmp_path / "engines.csv").read_bytes() == COMMITTED.read_bytes()
     assert [r["experiment"] for r in rows if r["engine"].startswith("MuJoCo")] == list(T.EXPERIMENTS)
+    # MuJoCo's rows are chapter 9's nominal runs, as physics.csv has them
+    from edition import physics
+
+    nominal = {r["experiment"]: r for r in physics.read_csv(ROOT / "figures" / "physics.csv")}
+    for r in rows:
+        if r["engine"].startswith("MuJoCo"):
+            assert r["measurement"] == nominal[r["experiment"]]["measurement"]
+            assert nominal[r["experiment"]]["nominal"].startswith(r["verdict"] + " (")
     drake = [r for r in rows if r["engine"].startswith("Drake")]
     assert {r["contact"].split(",")[0] for r in drake} == {"point", "hydroelastic"}
     for r in drake:
