@@ -70,26 +70,32 @@ def main(argv=None):
         rows.append((f.__name__, f"{b.verdict} ({b.held} of {b.valid} valid runs of {len(b.runs)})", *best))
         wall, cpu = wall + best[0], cpu + best[1]
     w0, c0 = time.perf_counter(), time.process_time()
+    import numpy as np
+
     from edition.physics import drake  # pydrake itself is imported by the first run
 
-    clock = {"wall": time.perf_counter(), "cpu": time.process_time()}
-    for result, _ in drake.run_all(clock=time.process_time):
-        w, c = time.perf_counter(), time.process_time()
-        rows.append((f"Drake {result.key}, {result.contact}", result.verdict, w - clock["wall"], c - clock["cpu"]))
-        clock = {"wall": w, "cpu": c}
+    def both():  # wall and CPU at once: run_all subtracts two readings
+        return np.array([time.perf_counter(), time.process_time()])
+
+    for result, (w, c) in drake.run_all(clock=both):
+        rows.append((f"Drake {result.key}, {result.contact}", result.verdict, float(w), float(c)))
     wall, cpu = wall + time.perf_counter() - w0, cpu + time.process_time() - c0
     width = max(len(r[0]) for r in rows)
     print(f"\n| {'experiment':<{width}} | wall (s) | cpu (s) | verdict (over the box for MuJoCo; nominal for Drake)")
     print(f"| {'-' * width} | -------- | ------- | --------------------")
     for name, v, w, c in rows:
         print(f"| {name:<{width}} | {w:8.2f} | {c:7.2f} | {v}")
-    total = "the Drake runs" if args.drake_only else "all"
-    print(
-        f"| {total:<{width}} | {wall:8.2f} | {cpu:7.2f} | budget {BUDGET:g} s of CPU: "
-        f"{'within' if cpu <= BUDGET else 'OVER'}"
-    )
+    if args.drake_only:
+        print(
+            f"| {'the Drake runs':<{width}} | {wall:8.2f} | {cpu:7.2f} | (the budget is for all experiments together)"
+        )
+    else:
+        print(
+            f"| {'all':<{width}} | {wall:8.2f} | {cpu:7.2f} | budget {BUDGET:g} s of CPU: "
+            f"{'within' if cpu <= BUDGET else 'OVER'}"
+        )
     print(f"\nload average after: {_load()}")
-    return 0 if cpu <= BUDGET else 1
+    return 0 if args.drake_only or cpu <= BUDGET else 1
 
 
 if __name__ == "__main__":

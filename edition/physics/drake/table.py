@@ -57,12 +57,14 @@ def run_all(params=None, clock=None):
     ----------
     params : wmr.sim.Params, optional
     clock : callable, optional
-        ``clock() -> float`` (e.g. :func:`time.process_time`): each run is timed with it.
+        ``clock() -> float`` (e.g. :func:`time.process_time`), or any readings that subtract (an array of a wall
+        and a CPU clock): each run is timed with it, the first including Drake's import.
 
     Returns
     -------
     list of tuple (Result, float)
-        Each result with its time by ``clock`` (0 without one).
+        Each result with its time by ``clock`` (0 without one); the first dual-wheel run includes the point-contact
+        runs the second reuses.
     """
     out = []
 
