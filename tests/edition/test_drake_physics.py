@@ -171,6 +171,6 @@ def test_a_drake_row_does_not_depend_on_the_last_bits(monkeypatch, direction):
         for f in dataclasses.fields(p)
         if isinstance(getattr(p, f.name), float) and getattr(p, f.name) > 0
     }
-    r = X.dead_zone("point", params=Params(**nudged))
+    r = X.dead_zone("point", params=p.replace(**nudged))
     row = next(x for x in T.read_csv(COMMITTED) if x["experiment"] == "dead-zone" and x["contact"] == "point")
     assert (r.measurement, r.verdict) == (row["measurement"], row["verdict"])
