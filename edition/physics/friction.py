@@ -172,8 +172,8 @@ def reorient_experiment(params=None):
         "normal whether or not the wheel rolls: the dual wheel's spin resistance is a property of its tread "
         "(width, compliance) that this contact model does not represent, so the verdict is this model's",
         overturn="a contact that tells rolling from spinning (a finite-width or compliant tread, hydroelastic "
-        "contact; not run here) under which the dual wheel's torsional part falls below a tenth of the centred "
-        "wheel's",
+        "contact, which Section 9.10 runs in Drake: engines.csv) under which the dual wheel's torsional part falls "
+        "below a tenth of the centred wheel's",
         quote="An important difference lies in that, while WMRs with centered wheels need to overcome a dry-friction "
         "torque, stemming from the unavoidable deformation of the wheel when reorienting the plane of the wheels with "
         "rolling disabled, WMRs with dual-wheels must overcome only rolling friction.",
