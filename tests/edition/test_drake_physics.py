@@ -174,3 +174,15 @@ def test_a_drake_row_does_not_depend_on_the_last_bits(monkeypatch, direction):
     r = X.dead_zone("point", params=p.replace(**nudged))
     row = next(x for x in T.read_csv(COMMITTED) if x["experiment"] == "dead-zone" and x["contact"] == "point")
     assert (r.measurement, r.verdict) == (row["measurement"], row["verdict"])
+
+
+def test_a_patch_resists_spin_and_a_point_does_not():
+    """Reoriented in place with rolling disabled, a centred wheel meets no spin torque with Drake's point contact (it
+    has no torsional coefficient) and a friction torque with the hydroelastic patch, of the order mu N times the
+    patch's size (a few millimetres here)."""
+    point, _ = X.reorient("centred", "point", 0.0, seconds=1.5)
+    patch, rec = X.reorient("centred", "hydroelastic", 1e7, seconds=1.5)
+    N = 12.1 * GRAVITY / 3
+    assert abs(point) < 1e-3 * N * 0.05
+    assert 0.001 * N < patch < 0.02 * N  # the patch's lever: between 1 and 20 mm
+    assert rec.validity.valid()
