@@ -1,7 +1,7 @@
 r"""A :class:`wmr.Robot` as a Drake MultibodyPlant: the same bodies, masses, joints and servos as :mod:`wmr.sim`.
 
-The plant is built programmatically from the units' mechanisms (:meth:`wmr.model.wheels.WheelUnit.mechanism`),
-the data :mod:`wmr.sim` writes as MJCF, with the same :class:`wmr.sim.Params`:
+The plant is built programmatically from the units' mechanisms (:func:`wmr.sim.bodies.mechanisms`: each unit's bodies
+and joints as data), the data :mod:`wmr.sim` writes as MJCF, with the same :class:`wmr.sim.Params`:
 
 * the platform, a free body whose frame is wmr's body frame (C on the mount plane, at the height of the largest
   wheel radius), a uniform plate of ``platform_mass`` over the mount points (the MJCF's inertia, its centre of mass
