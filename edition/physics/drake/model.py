@@ -17,12 +17,13 @@ and joints as data), the data :mod:`wmr.sim` writes as MJCF, with the same :clas
   point (MuJoCo's geometry), compliant by a stiffness that sinks a wheel :data:`SINK` of its radius under a third of
   the weight, with Hunt--Crossley dissipation :data:`DISSIPATION`; or **hydroelastic**, each wheel a compliant
   cylinder of its radius and width :data:`WIDTH` times it (the drawn disk of the MJCF) of hydroelastic modulus
-  ``modulus`` on a rigid half space, tessellated at :data:`RESOLUTION` times its radius: a contact *patch* whose
+  ``modulus`` on a rigid half space, tessellated at :func:`resolution` (:data:`RESOLUTION` times its radius at
+  :math:`E = 10^7` Pa, finer for a stiffer wheel, whose patch is shorter): a contact *patch* whose
   pressure and friction are integrated over its area, so that a wheel spinning about the vertical meets a friction
   torque that no coefficient sets.  Both: Coulomb friction :math:`\mu_s = \mu_d` = ``sliding``; no torsional
   coefficient and no rolling resistance (Drake has neither); Drake's discrete SAP solver at the step :data:`STEP`
-  (not ``timestep``, MuJoCo's: SAP is implicit, and at 1 ms the Drake runs cost 1.6 times the CPU, above the edition's
-  budget; the verdicts were the same at 1 ms when this was written, the dual wheel's ratio 78 % instead of 87 % at
+  (not ``timestep``, MuJoCo's: SAP is implicit, and at 1 ms the Drake runs cost 1.4 times the CPU, above the edition's
+  budget; the verdicts were the same at 1 ms when this was written, the dual wheel's ratio 100 % instead of 120 % at
   the stiffer modulus, the other numbers a few per cent apart).
 """
 
@@ -38,7 +39,7 @@ from wmr.sim import Params
 from wmr.sim.bodies import height_of, mechanisms, servo
 from wmr.sim.params import GRAVITY
 
-__all__ = ["CONTACTS", "DISSIPATION", "MODULI", "RESOLUTION", "SINK", "STEP", "WIDTH", "Plant", "build"]
+__all__ = ["CONTACTS", "DISSIPATION", "MODULI", "RESOLUTION", "SINK", "STEP", "WIDTH", "Plant", "build", "resolution"]
 
 #: the two contact models
 CONTACTS = ("point", "hydroelastic")
@@ -180,6 +181,35 @@ def _inertia(mass, com, moments):
     return d.SpatialInertia.MakeFromCentralInertia(mass, np.asarray(com, float), d.RotationalInertia(*moments))
 
 
+def resolution(modulus, r):
+    r"""Drake's resolution hint for a compliant wheel of radius ``r`` and hydroelastic modulus ``modulus``.
+
+    Under a load :math:`N` a compliant cylinder sinks by :math:`\delta` with :math:`N \propto E\,\delta^{3/2}`, and its
+    patch is :math:`2\sqrt{2 r\delta} \propto E^{-1/3}` long: the hint, :data:`RESOLUTION` times ``r`` at
+    :math:`E = 10^7` Pa, shrinks as :math:`E^{-1/3}`, so that the patch spans as many elements at every modulus (at
+    :math:`10^8` Pa with the hint of :math:`10^7` Pa, the patch was two elements long and the dual wheel's torque moved
+    by 5 % when the parameters moved by one ulp).
+
+    Parameters
+    ----------
+    modulus : float
+        Pa.
+    r : float
+        m.
+
+    Returns
+    -------
+    float
+        m.
+
+    Examples
+    --------
+    >>> round(resolution(1e7, 0.05), 6), round(resolution(1e8, 0.05), 6)
+    (0.005, 0.002321)
+    """
+    return RESOLUTION * r * (1e7 / modulus) ** (1 / 3)
+
+
 def _platform_inertia(robot, params, height):
     """The MJCF's platform inertia (:func:`wmr.sim.mjcf._platform`): a plate over the mount points' bounding box."""
     P = robot.mount_points
@@ -201,7 +231,7 @@ def _props(params, contact, modulus, r, weight):
     k = None if contact == "hydroelastic" else (weight / 3) / (SINK * r)
     d.AddContactMaterial(DISSIPATION, k, d.CoulombFriction(params.sliding, params.sliding), props)
     if contact == "hydroelastic":
-        d.AddCompliantHydroelasticProperties(RESOLUTION * r, modulus, props)
+        d.AddCompliantHydroelasticProperties(resolution(modulus, r), modulus, props)
     return props
 
 

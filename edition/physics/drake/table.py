@@ -18,7 +18,7 @@ from pathlib import Path
 from ... import files
 from ..common import INVALID, fmt
 from .experiments import BRAKE_DIRECTIONS, brake, dead_zone, dual_wheel, jam
-from .model import DISSIPATION, MODULI, RESOLUTION, SINK, STEP, WIDTH
+from .model import DISSIPATION, MODULI, SINK, STEP, WIDTH, resolution
 
 __all__ = [
     "EXPERIMENTS",
@@ -115,7 +115,7 @@ def drake_parameters(key, contact, modulus, params=None):
         f"rigid spheres of the wheel radius, stiffness (W/3)/({SINK:g} r)"
         if contact == "point"
         else f"compliant cylinders of width {WIDTH:g} r, hydroelastic modulus {fmt(modulus)} Pa, resolution hint "
-        f"{RESOLUTION:g} r, on a rigid half space"
+        f"{fmt(resolution(modulus, 1.0))} r, on a rigid half space"
     )
     common = (
         f"Drake {version('drake')}, SAP, step {STEP * 1000:g} ms; {model}; Hunt-Crossley dissipation {DISSIPATION:g} "
