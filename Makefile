@@ -229,11 +229,11 @@ release: venv ## sdist + wheel; the wheel in a fresh venv outside the repo runs 
 docs: venv ## build/docs/html: API reference + user guide (Sphinx, numpydoc, MathJax from its release; warnings are errors)
 	@$(PDEATH) $(VPY) -m tools.docs
 
-bench: venv ## time the batched kernels against floors and peers (tools/bench.py), wmr analyze against the number of units (tools/bench_analyze.py), chapter 9's MuJoCo experiments (tools/bench_physics.py) and nbgrader's autograding per chapter (tools/bench_autograde.py)
+bench: venv ## time the batched kernels against floors and peers (tools/bench.py), wmr analyze against the number of units (tools/bench_analyze.py), chapter 9's MuJoCo experiments and Drake runs (tools/bench_physics.py) and nbgrader's autograding per chapter (tools/bench_autograde.py)
 	@$(VPY) tools/bench.py
 	@echo; echo "wmr analyze against the number of wheel units (tools/bench_analyze.py):"
 	@$(VPY) tools/bench_analyze.py
-	@echo; echo "chapter 9's seven MuJoCo experiments (tools/bench_physics.py):"
+	@echo; echo "chapter 9's seven MuJoCo experiments and its Drake runs (tools/bench_physics.py):"
 	@$(VPY) tools/bench_physics.py
 	@echo; echo "nbgrader autograde of one student's full submission, per chapter (tools/bench_autograde.py):"
 	@$(VPY) tools/bench_autograde.py

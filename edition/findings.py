@@ -55,6 +55,7 @@ DISTRIBUTIONS = (
     "nbclient",
     "nbconvert",
     "mujoco",
+    "drake",
     "robotpy-wpimath",
 )
 #: Programs outside Python whose versions the report states: name -> (command, the line of its output to keep)

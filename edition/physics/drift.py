@@ -35,7 +35,17 @@ from .common import (
     verdict,
 )
 
-__all__ = ["GENERIC", "JAM_TURN", "dead_zone_experiment", "jam_experiment", "turn_locked"]
+__all__ = [
+    "GENERIC",
+    "JAM_TURN",
+    "circle_error",
+    "dead_zone_experiment",
+    "dead_zone_verdict",
+    "jam_does",
+    "jam_experiment",
+    "jam_verdict",
+    "turn_locked",
+]
 
 #: steering angles at which the arm lines of the paper's offset robot are neither concurrent nor parallel (deg)
 GENERIC = (20.0, 75.0, 140.0)
@@ -75,6 +85,80 @@ def _circle(C):
     return np.array([a, b]), float(np.sqrt(c + a * a + b * b))
 
 
+def circle_error(C, Cf, d):
+    """How far a path of C is from the dead-zone circle of radius ``d`` about ``Cf`` (experiment 1's measurement).
+
+    Parameters
+    ----------
+    C : array (N, 2)
+        The path of C.
+    Cf : array (2,)
+        The centroid of the contact points at the start.
+    d : float
+        The offset.
+
+    Returns
+    -------
+    tuple
+        ``(error, centre, radius, distances)``: the largest of the deviations of ``|CC_f|`` from ``d`` and of the
+        fitted circle's centre from ``Cf``, relative to ``d``; the fitted circle; ``|CC_f|`` along the path.
+    """
+    centre, radius = _circle(C)
+    dist = np.linalg.norm(C - Cf, axis=1)
+    err = max(abs(dist.max() - d), abs(dist.min() - d), float(np.linalg.norm(centre - Cf))) / d
+    return err, centre, radius, dist
+
+
+def dead_zone_verdict(error):
+    """Experiment 1's criterion: the verdict from the relative error of :func:`circle_error`.
+
+    Parameters
+    ----------
+    error : float
+
+    Returns
+    -------
+    str
+        At most :data:`~edition.physics.common.RESOLVED` holds, at most 10 % holds within it.
+    """
+    return verdict(error, RESOLVED, 0.10)
+
+
+def jam_verdict(generic, equal):
+    """Experiment 2's criterion, from the two runs' rounded measurements (``travel``, ``moved``, ``torque``).
+
+    Parameters
+    ----------
+    generic, equal : dict
+        ``travel`` (fraction of the commanded turn), ``moved`` (C's displacement over d), ``torque`` (largest
+        steering torque over its limit).
+
+    Returns
+    -------
+    str
+        Holds when at the generic angles the turn is at most :data:`JAM_TURN`, C moves at most 10 % of d and the
+        torque reaches 95 % of its limit, while with equal angles at least 98 % of the turn is made.
+    """
+    g, e = generic, equal
+    jam = g["travel"] <= JAM_TURN and g["moved"] <= 0.10 and g["torque"] >= 0.95
+    return HOLDS if jam and e["travel"] >= 0.98 else FAILS
+
+
+def jam_does(strong):
+    """What the robot with strong steering servos does: ``stalls``, ``scrubs`` or ``scrubs and drifts``.
+
+    Parameters
+    ----------
+    strong : dict
+        ``travel`` and ``moved`` as for :func:`jam_verdict`.
+
+    Returns
+    -------
+    str
+    """
+    return "stalls" if strong["travel"] <= JAM_TURN else "scrubs" if strong["moved"] <= 0.10 else "scrubs and drifts"
+
+
 def dead_zone_experiment(params=None):
     r"""Experiment 1: the dead zone (Fig. 7, (28)-(29)).
 
@@ -102,11 +186,9 @@ def dead_zone_experiment(params=None):
     rec = turn_locked(robot, beta0, params=params)
     C = rec.pose[:, 1:]
     Cf = np.nanmean(rec.point[0, :, :2], axis=0)  # centroid of the contacts at the start
-    centre, radius = _circle(C)
-    dist = np.linalg.norm(C - Cf, axis=1)
-    err = max(abs(dist.max() - d), abs(dist.min() - d), float(np.linalg.norm(centre - Cf))) / d
+    err, centre, radius, dist = circle_error(C, Cf, d)
     drift = float(np.nanmax(np.linalg.norm(rec.point[:, :, :2] - rec.point[0, :, :2], axis=-1)))
-    v = verdict(err, RESOLVED, 0.10)
+    v = dead_zone_verdict(err)
     return Outcome(
         "dead-zone",
         "the dead zone",
@@ -192,10 +274,8 @@ def jam_experiment(params=None, generic=GENERIC):
             "rec": rec,
         }
     g, e, s = out["generic"], out["equal"], out["strong"]
-    jam = g["travel"] <= JAM_TURN and g["moved"] <= 0.10 and g["torque"] >= 0.95
-    free = e["travel"] >= 0.98
-    v = HOLDS if jam and free else FAILS
-    s["does"] = "stalls" if s["travel"] <= JAM_TURN else "scrubs" if s["moved"] <= 0.10 else "scrubs and drifts"
+    v = jam_verdict(g, e)
+    s["does"] = jam_does(s)
     angles = ", ".join(f"{a:g}" for a in generic)
     return Outcome(
         "jam",
