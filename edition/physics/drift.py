@@ -195,7 +195,7 @@ def dead_zone_experiment(params=None):
         "4.2, Fig. 7, (28)-(29)",
         "steered one full turn with the drives locked, C traces a circle of radius d about the centroid C_f of the "
         "contact points, which stay fixed",
-        f"wmr.simulate: a circle of radius {fmt(model['radius'], 3)} m about C_f (d = {fmt(d)} m); contact points "
+        f"wmr.integrate: a circle of radius {fmt(model['radius'], 3)} m about C_f (d = {fmt(d)} m); contact points "
         f"fixed, heading fixed",
         f"|CC_f| from {fmt(dist.min(), 3)} to {fmt(dist.max(), 3)} m; fitted circle radius {fmt(radius, 3)} m, centre "
         f"{fmt(np.linalg.norm(centre - Cf) * 1000)} mm from C_f; contact points moved {fmt(drift * 1000)} mm; heading "
