@@ -811,6 +811,7 @@ NOT_FUZZED = {
     "rank_from_singular_values": "the rule rank applies to singular_values' output, fuzzed through rank",
     "kappa_from_singular_values": "the rule condition_number applies, fuzzed through it",
     "Partial": "the sweep's reduction, fuzzed through sweep",
+    "first_written": "a kernel of the reduction, compared with rounding the whole chunk in tests/test_sweep.py",
     "finish": "as Partial",
     "Advice": "the result type of advice",
     "Entry": "the result type of lookup",

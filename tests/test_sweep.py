@@ -240,3 +240,24 @@ def test_sweep_on_dask_equals_in_process():
 def test_bad_input(call, exc, words):
     with pytest.raises(exc, match=words):
         call(_robots()["centred"])
+
+
+def test_first_written_is_the_whole_chunk_rounded():
+    """The reduction's fast search for the first value written as an extreme equals rounding every value
+    (wmr.io.decimals.quantise) and taking the first extreme: ties, values one ulp or one quantum apart, decade
+    boundaries, zeros, infinities."""
+    from wmr.analysis.sweep.reduction import first_written
+    from wmr.io.decimals import quantise
+
+    rng = np.random.default_rng(7)
+    bases = [1.0, 0.999999999999, 10.0, 9.9999999999995, 123.456, 1e-13, 0.0, -5.0, 1e6, 5.0]
+    for _ in range(3000):
+        n, base = int(rng.integers(1, 40)), float(rng.choice(bases))
+        step = float(rng.choice([0.0, 1e-16, 1e-13, 1e-12, 1e-11, 1e-5])) * max(abs(base), 1.0)
+        x = base + rng.integers(-3, 4, n) * step
+        if rng.random() < 0.1:
+            x[rng.integers(n)] = np.inf
+        q, ax = quantise(x, 1.0), np.abs(x)
+        assert first_written(x, float(x.min())) == int(np.argmin(q))
+        assert first_written(x, float(x.max())) == int(np.argmax(q))
+        assert first_written(ax, float(ax.min())) == int(np.argmin(np.abs(q)))

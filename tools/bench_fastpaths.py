@@ -16,6 +16,8 @@ import wmr
 from tools.bench_kernels import SEED, best_of, same_kappa, swerve_robot
 from wmr.analysis import linalg as LA
 from wmr.analysis import reference as R
+from wmr.analysis.sweep.reduction import first_written
+from wmr.io.decimals import quantise
 from wmr.model.platform import cos_sin
 
 
@@ -29,6 +31,8 @@ def rows(n):
     rates = rng.normal(size=(n, 3))
     angles = rng.uniform(-np.pi, np.pi, n)
     sw_beta = wmr.steering_angles(swerve, twist)
+    chunk = min(n, 1 << 18)  # a sweep reduces chunk by chunk
+    kappa_like, rank_like = 1 + 10 * rng.random(chunk), rng.integers(5, 7, chunk).astype(float)
 
     def plain_swerve():
         return R.inverse(swerve, sw_beta, twist)[0]
@@ -84,7 +88,31 @@ def rows(n):
             lambda a, b: np.allclose(a, b, rtol=0, atol=4.5e-16),
         ),
         ("np.tan against np.cos (one call)", lambda: np.tan(angles), lambda: np.cos(angles), lambda a, b: True),
+        (
+            "sweep's extremes as written, kappa-like",
+            lambda: _extremes_fast(kappa_like),
+            lambda: _extremes_plain(kappa_like),
+            lambda a, b: a == b,
+        ),
+        (
+            "sweep's extremes as written, rank-like",
+            lambda: _extremes_fast(rank_like),
+            lambda: _extremes_plain(rank_like),
+            lambda a, b: a == b,
+        ),
     ]
+
+
+def _extremes_fast(x):
+    """Where the minimum, maximum and smallest magnitude are, as a sweep's reduction finds them."""
+    ax = np.abs(x)
+    return first_written(x, float(x.min())), first_written(x, float(x.max())), first_written(ax, float(ax.min()))
+
+
+def _extremes_plain(x):
+    """The same from the whole chunk rounded as written (wmr.io.decimals.quantise)."""
+    q = quantise(x, 1.0)
+    return int(np.argmin(q)), int(np.argmax(q)), int(np.argmin(np.abs(q)))
 
 
 def main(n=10**6, repeat=3):
