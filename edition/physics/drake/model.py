@@ -7,12 +7,11 @@ and joints as data), the data :mod:`wmr.sim` writes as MJCF, with the same :clas
   wheel radius), a uniform plate of ``platform_mass`` over the mount points (the MJCF's inertia, its centre of mass
   at their centroid); each unit's bodies on revolute joints, an intermediate body of ``body_mass`` (a small cube's
   inertia), a wheel of ``wheel_mass`` (a thin disk's);
-* a servo on every driven joint, Drake's implicit PD control of a joint actuator (solved inside SAP, with its
-  effort limit): a steering servo with the MJCF's gain :math:`k_p` = ``steer_kp`` times its limit
-  ``steer_torque`` :math:`W r` and a damping :math:`k_d = 2\zeta\sqrt{k_p I}` (:math:`I` the diagonal of the mass
-  matrix at the joint, MuJoCo's ``dampratio``), fed the target angle and its rate; a drive servo with
-  :math:`k_p = 0`, :math:`k_d` = ``drive_kv`` times its limit ``drive_torque`` :math:`W r`.  A free drive has no
-  actuator; a locked drive is a weld (``locked_drives``);
+* a servo on every driven joint, Drake's implicit PD control (inside SAP, with its effort limit): steering with the
+  MJCF's gain :math:`k_p` = ``steer_kp`` times its limit ``steer_torque`` :math:`W r`, damping :math:`k_d =
+  2\zeta\sqrt{k_p I}` (:math:`I` the mass matrix's diagonal at the joint, MuJoCo's ``dampratio``), fed the target
+  angle and rate; drive with :math:`k_p = 0`, :math:`k_d` = ``drive_kv`` times ``drive_torque`` :math:`W r`.  A
+  free drive has no actuator; a locked drive is a weld (``locked_drives``);
 * contact (:data:`CONTACTS`): **point**, each wheel a rigid sphere of its radius touching a rigid half space at one
   point (MuJoCo's geometry), compliant by a stiffness that sinks a wheel :data:`SINK` of its radius under a third of
   the weight, with Hunt--Crossley dissipation :data:`DISSIPATION`; or **hydroelastic**, each wheel a compliant
@@ -21,10 +20,8 @@ and joints as data), the data :mod:`wmr.sim` writes as MJCF, with the same :clas
   :math:`E = 10^7` Pa, finer for a stiffer wheel, whose patch is shorter): a contact *patch* whose
   pressure and friction are integrated over its area, so that a wheel spinning about the vertical meets a friction
   torque that no coefficient sets.  Both: Coulomb friction :math:`\mu_s = \mu_d` = ``sliding``; no torsional
-  coefficient and no rolling resistance (Drake has neither); Drake's discrete SAP solver at the step :data:`STEP`
-  (not ``timestep``, MuJoCo's: SAP is implicit, and at 1 ms the Drake runs cost 1.4 times the CPU, above the edition's
-  budget; the verdicts were the same at 1 ms when this was written, the dual wheel's ratio 100 % instead of 120 % at
-  the stiffer modulus, the other numbers a few per cent apart).
+  coefficient and no rolling resistance (Drake has neither); Drake's discrete SAP solver at the step :data:`STEP`,
+  not MuJoCo's ``timestep`` (chapter 9, Section 9.10: why, and what changes at 1 ms).
 """
 
 from __future__ import annotations
@@ -86,12 +83,8 @@ class Plant:
     modulus : float
         The hydroelastic modulus, Pa (0 for point contact).
     diagram, plant, simulator, context, plant_context : pydrake objects
-    weight : float
-        :math:`W = m g`, N.
-    height : float
-        Height of C above the ground at rest.
-    mass : float
-        The robot's mass, kg.
+    weight, height, mass : float
+        :math:`W = m g` (N); the height of C above the ground at rest; the robot's mass (kg).
     servo_names : tuple of str
         The actuators, in Drake's order, named as :mod:`wmr.sim` names them (``u<i>_<joint>``).
     limit : numpy.ndarray
