@@ -1,8 +1,7 @@
 """A Robot is a frozen value (issue 29): checked once, never changed, so what it keeps cannot go stale.
 
-Also the fast paths kept against their plain implementations where no other test does it
-(:func:`wmr.model.platform.cos_sin` against ``np.cos`` / ``np.sin``), and the deprecated
-``constants_kept``.
+Also the deprecated ``constants_kept`` and ``cos_sin`` (the half-angle cosine and sine, removed: 1.3x
+faster than ``np.cos`` / ``np.sin`` on 10**6 angles, below the 3x a fast path must earn).
 """
 
 import pickle
@@ -14,7 +13,7 @@ import wmr
 from wmr.analysis import kinematics
 from wmr.analysis import reference as R
 from wmr.errors import FrozenError, InputError
-from wmr.model.platform import cos_sin
+from wmr.model import platform
 
 
 def _bot():
@@ -82,11 +81,8 @@ def test_constants_kept_is_deprecated_and_names_its_replacement():
             wmr.forward(bot, [0.0, 0.0], [1.0, 1.0])
 
 
-def test_cos_sin_equals_numpy_cos_and_sin():
-    beta = np.concatenate([np.random.default_rng(7).uniform(-np.pi, np.pi, 100_000), [0.0, np.pi, -np.pi, np.pi / 2]])
-    c, s = cos_sin(beta)
-    np.testing.assert_allclose(c, np.cos(beta), rtol=0, atol=4.5e-16)
-    np.testing.assert_allclose(s, np.sin(beta), rtol=0, atol=4.5e-16)
-    assert c[-4] == 1.0 and s[-4] == 0.0 and c[-3] == -1.0 and c[-2] == -1.0
-    with pytest.raises(InputError):
-        cos_sin([0.0, np.nan])
+def test_cos_sin_is_deprecated_and_is_numpys():
+    beta = np.random.default_rng(7).uniform(-np.pi, np.pi, 100)
+    with pytest.warns(DeprecationWarning, match=r"np\.cos\(beta\), np\.sin\(beta\)"):
+        c, s = platform.cos_sin(beta)
+    assert np.array_equal(c, np.cos(beta)) and np.array_equal(s, np.sin(beta))

@@ -1,7 +1,7 @@
 """Each fast path of wmr against the plain implementation it replaces (issue 29: keep a fast path only at >= 3x).
 
-The plain implementations are the dense definitions of :mod:`wmr.analysis.reference` (and ``np.cos`` /
-``np.sin`` for :func:`wmr.model.platform.cos_sin`).  Run ``.venv/bin/python tools/bench_fastpaths.py [N]``
+The plain implementations are the dense definitions of :mod:`wmr.analysis.reference`.
+Run ``.venv/bin/python tools/bench_fastpaths.py [N]``
 (default N = 10**6 configurations, fixed seed); each row prints the best of three wall-clock times and
 the gain (plain / fast).  The results are compared as well: a fast path that disagrees is reported.
 """
@@ -18,7 +18,6 @@ from wmr.analysis import linalg as LA
 from wmr.analysis import reference as R
 from wmr.analysis.sweep.reduction import first_written
 from wmr.io.decimals import quantise
-from wmr.model.platform import cos_sin
 
 
 def rows(n):
@@ -29,7 +28,7 @@ def rows(n):
     beta = rng.uniform(-np.pi, np.pi, (n, 3))
     twist = rng.normal(size=(n, 3))
     rates = rng.normal(size=(n, 3))
-    angles = rng.uniform(-np.pi, np.pi, n)
+    rng.uniform(-np.pi, np.pi, n)  # the angles of a row removed with cos_sin: later draws unchanged
     sw_beta = wmr.steering_angles(swerve, twist)
     chunk = min(n, 1 << 18)  # a sweep reduces chunk by chunk
     kappa_like, rank_like = 1 + 10 * rng.random(chunk), rng.integers(5, 7, chunk).astype(float)
@@ -81,13 +80,6 @@ def rows(n):
             plain_swerve,
             lambda a, b: np.allclose(a, b, rtol=1e-12, atol=1e-12),
         ),
-        (
-            "cos_sin against np.cos, np.sin",
-            lambda: np.stack(cos_sin(angles)),
-            lambda: np.stack((np.cos(angles), np.sin(angles))),
-            lambda a, b: np.allclose(a, b, rtol=0, atol=4.5e-16),
-        ),
-        ("np.tan against np.cos (one call)", lambda: np.tan(angles), lambda: np.cos(angles), lambda a, b: True),
         (
             "sweep's extremes as written, kappa-like",
             lambda: _extremes_fast(kappa_like),

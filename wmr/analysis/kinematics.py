@@ -29,7 +29,7 @@ from ..errors import InputValueError
 from ..model import validation
 from ..model.backend import NUMERIC
 from ..model.limits import check
-from ..model.platform import cos_sin_checked, rotated
+from ..model.platform import rotated
 from ..model.robot import Robot
 from ..model.tolerance import TOL
 from ..model.types import ArrayLike, TwistLike
@@ -245,7 +245,7 @@ def forward(robot: Robot, beta: ArrayLike, rates: ArrayLike, slip_tolerance: flo
 
     def chunk(a, z):
         # configurations are columns here: (rows, k) arrays
-        c, s = _wheel_rows(*cos_sin_checked(b[a:z].T))
+        c, s = _wheel_rows(np.cos(b[a:z].T), np.sin(b[a:z].T))
         th_k = th[a:z].T
         rhs = rotated((c, s), K.L @ th_k, K.EL @ th_k, axes=0)  # J2 theta_dot = sum_i R(beta_i) L_i theta_i (21)
         t_k = K.pinv_J1 @ rhs  # t = J1^+ J2 theta_dot
@@ -333,7 +333,7 @@ def inverse(robot: Robot, beta: ArrayLike, twist: TwistLike, beta_dot: ArrayLike
 
     def chunk(a, z):
         # configurations are columns here: (rows, k) arrays
-        c, s = _wheel_rows(*cos_sin_checked(b[a:z].T))
+        c, s = _wheel_rows(np.cos(b[a:z].T), np.sin(b[a:z].T))
         v = K.J1 @ tw[a:z].T  # (5): v_i = [E d_i 1] t, (2w, k)
         Ev = np.empty_like(v)  # E v_i, unit by unit
         Ev[0::2], Ev[1::2] = -v[1::2], v[0::2]

@@ -30,8 +30,6 @@ from .types import ArrayLike, FloatArray, Matrix, Numbers, Point, TwistLike
 __all__ = [
     "E",
     "rotation",
-    "cos_sin",
-    "cos_sin_checked",
     "rotated",
     "wrap_angle",
     "line_angle",
@@ -86,84 +84,6 @@ def rotation(angle: Numbers, backend: Backend = NUMERIC) -> Matrix:
     return backend.matrix([[c, -s], [s, c]])
 
 
-def cos_sin(beta: ArrayLike, out: tuple[FloatArray, FloatArray] | None = None) -> tuple[FloatArray, FloatArray]:
-    r""":math:`(\cos\beta, \sin\beta)` of an array of angles, from :math:`t = \tan(\beta/2)`.
-
-    .. math:: \cos\beta = \frac{2}{1 + t^2} - 1,\qquad \sin\beta = \frac{2t}{1 + t^2}.
-
-    The batched kernels take their cosines and sines from here, because with NumPy's SIMD ``np.tan``
-    the three operations cost less than ``np.cos`` and ``np.sin``.  Measured on 10^6 angles on the
-    project's 2-core machine (``tools/bench_fastpaths.py``; it depends on the CPU and the NumPy build):
-    ``np.tan`` 1.3 ms, ``np.cos`` 9.8 ms, and this function 7.4 ms against 20.5 ms for ``np.cos``
-    and ``np.sin`` (2.8x); in the kernels that use it (:meth:`Robot.J <wmr.model.robot.Robot.J>`,
-    rank F, forward and inverse kinematics) ``np.cos`` / ``np.sin`` instead would make them 1.3x to
-    1.9x slower.  Both values are within one unit in the last place
-    of 1 of the exact values (an absolute error of :math:`2.2\times10^{-16}`, the size of the
-    rounding of :math:`\beta` itself); exact at :math:`\beta = 0`, and :math:`\beta = \pm\pi` gives
-    :math:`\cos = -1` and the float :math:`\sin\pi`.
-
-    Parameters
-    ----------
-    beta : numpy.ndarray (...)
-        Finite angles in radians.
-    out : tuple of two numpy.ndarray (...), optional
-        Arrays to write the cosines and sines into.
-
-    Returns
-    -------
-    c, s : numpy.ndarray (...)
-
-    Examples
-    --------
-    >>> c, s = cos_sin(np.array([0.0, np.pi / 3, -np.pi]))
-    >>> bool(np.allclose(c, [1.0, 0.5, -1.0], rtol=0, atol=3e-16))
-    True
-    >>> bool(np.allclose(s, np.sin([0.0, np.pi / 3, -np.pi]), rtol=0, atol=3e-16))
-    True
-    """
-    beta = finite_array("beta", beta)
-    if out is not None and not (
-        isinstance(out, tuple)
-        and len(out) == 2
-        and all(isinstance(o, np.ndarray) and o.dtype == np.float64 and o.shape == beta.shape for o in out)
-    ):
-        raise InputTypeError(f"out must be a pair of float arrays of shape {beta.shape}, got {type(out).__name__}")
-    return cos_sin_checked(beta, out)
-
-
-def cos_sin_checked(
-    beta: FloatArray, out: tuple[FloatArray, FloatArray] | None = None
-) -> tuple[FloatArray, FloatArray]:
-    """:func:`cos_sin` of angles already checked (a float array, finite), for the kernels: no check here.
-
-    Parameters
-    ----------
-    beta : numpy.ndarray (...)
-        Finite float angles in radians, checked by the caller.
-    out : tuple of two float numpy.ndarray of the shape of ``beta``, optional
-
-    Returns
-    -------
-    c, s : numpy.ndarray (...)
-
-    Examples
-    --------
-    >>> cos_sin_checked(np.array([0.0, -np.pi]))[0].tolist()
-    [1.0, -1.0]
-    """
-    t = np.multiply(beta, 0.5, out=np.empty(np.shape(beta)))  # arrays even when 0-d
-    np.tan(t, out=t)
-    h = np.multiply(t, t, out=np.empty_like(t))
-    h += 1.0
-    np.divide(2.0, h, out=h)  # h = 2 / (1 + t^2)
-    if out is None:
-        out = (np.empty_like(h), np.empty_like(h))
-    c, s = out
-    np.subtract(h, 1.0, out=c)
-    np.multiply(t, h, out=s)
-    return c, s
-
-
 def rotated(beta: Numbers, M: Matrix, EM: Matrix, axes: int = 2, backend: Backend | None = None) -> Matrix:
     r"""A block rotated by :math:`\beta`: :math:`\cos\beta\,\mathbf M + \sin\beta\,\mathbf E\mathbf M`, batched.
 
@@ -214,7 +134,7 @@ def rotated(beta: Numbers, M: Matrix, EM: Matrix, axes: int = 2, backend: Backen
                     f"M and EM must be blocks of one shape with at least axes = {axes} axes, "
                     f"got shapes {np.shape(M)} and {np.shape(EM)}"
                 )
-            c, s = cos_sin_checked(beta)  # (beta checked just above)
+            c, s = np.cos(beta), np.sin(beta)
             checked = True
         else:
             beta = real("beta", beta)

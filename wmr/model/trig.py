@@ -18,7 +18,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .arrays import finite_array
-from .platform import cos_sin_checked, rotated
+from .platform import rotated
 from .types import ArrayLike, FloatArray, IntArray
 
 __all__ = ["Terms", "trig_combination", "combine_checked"]
@@ -150,7 +150,8 @@ def combine_checked(beta: FloatArray, terms: Terms) -> FloatArray:
     ct, st = np.empty((used.size, k)), np.empty((used.size, k))
     for a in range(0, N, k):
         z = min(a + k, N)
-        c, s = cos_sin_checked(flat[a:z, used].T, out=(ct[:, : z - a], st[:, : z - a]))
+        angles = flat[a:z, used].T
+        c, s = np.cos(angles, out=ct[:, : z - a]), np.sin(angles, out=st[:, : z - a])
         r = out[:, a:z]  # every update below is contiguous
         r[...] = const[:, None]
         for j, i, p, q in listed:  # (11): R(beta_i) M_i = cos M_i + sin E M_i

@@ -35,6 +35,7 @@ import numpy as np
 
 from ...errors import InputValueError
 from ...model import validation
+from ...model.tolerance import TOL
 from .._batch import for_chunks
 from ..linalg import condition_number, null_space
 from ..mobility import twist_constraints
@@ -116,12 +117,17 @@ class Motions:
         self.robot, self.n, self.seed = robot, count("n", n), count("seed", seed, minimum=0)
         self.scale = robot.F_column_norms[:3]
         fixed = [i for i, u in enumerate(robot.wheels) if not u.steered]
-        if fixed:  # the directions the fixed wheels allow: N(C1f), dimensionless
+        # the directions the fixed wheels allow, N(C1f) in dimensionless twists, as the projector onto them:
+        # unique where a basis of N is not (an SVD picks any rotation of it, and the last bits pick which),
+        # so the same draws give the same twists on every CPU; entries within TOL of 0 are 0
+        self.projector = np.eye(3)
+        if fixed:
             sub = type(robot)([robot.wheels[i] for i in fixed], name="fixed")
             Cf, _ = twist_constraints(sub, np.zeros(len(fixed)))
-            self.basis = null_space(Cf / self.scale, scale=np.ones(3)) if Cf.shape[0] else np.eye(3)
-        else:
-            self.basis = np.eye(3)
+            if Cf.shape[0]:
+                N = null_space(Cf / self.scale, scale=np.ones(3))
+                P = N @ N.T
+                self.projector = np.where(np.abs(P) <= TOL, 0.0, P)
         self.free = [i for i, u in enumerate(robot.wheels) if u.steered and not u.rolls_in_plane]
         self._kernels: dict[float, SwerveKappa | None] = {}
         self._lock = threading.Lock()
@@ -185,24 +191,24 @@ class Motions:
         current : numpy.ndarray (k, w) or None
         """
         first, last = start // BLOCK, (stop - 1) // BLOCK
-        m = self.basis.shape[1]
         tws, curs = [], []
         for j in range(first, last + 1):
             rng = np.random.default_rng([self.seed, j, 24])
-            tws.append(rng.standard_normal((m, BLOCK)))
+            tws.append(rng.standard_normal((3, BLOCK)))
             if self.free:
                 curs.append(rng.uniform(-math.pi, math.pi, (BLOCK, len(self.free))))
         a, b = start - first * BLOCK, stop - first * BLOCK
         g = np.concatenate(tws, axis=1)[:, a:b] if len(tws) > 1 else tws[0][:, a:b]
-        # t = (N g) / s, written out (a BLAS product of (m, k) by (3, m) would start threads for nothing);
-        # entry-major: each component of the twists is one contiguous vector
-        M = self.basis / self.scale[:, None]  # (3, m)
-        if m == 3 and not np.any(M - np.diag(np.diag(M))):  # no fixed wheel: a diagonal map, in place
+        # t = (P g) / s, written out (a BLAS product of (3, k) by (3, 3) would start threads for nothing);
+        # entry-major: each component of the twists is one contiguous vector.  P g is a standard normal
+        # draw over the allowed directions (P projects orthogonally)
+        M = self.projector / self.scale[:, None]
+        if not np.any(M - np.diag(np.diag(M))):  # a diagonal map (no fixed wheel, or axis-aligned ones), in place
             g *= np.diag(M)[:, None]  # (g is a fresh draw: changed in place)
             return g.T, None if not self.free else self._current(curs, a, b)
         tw = np.zeros((3, b - a))
         for c in range(3):
-            for j in range(m):
+            for j in range(3):
                 if M[c, j] != 0.0:
                     tw[c] += g[j] * M[c, j]
         tw = tw.T
