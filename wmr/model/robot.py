@@ -219,22 +219,24 @@ class Robot:
         """
         L = checks.positive("L (characteristic length)", L)
         bk = choose(L, backend=backend) if not self.is_symbolic else SYMBOLIC
-        rows = lambda L: [point_row(u.position, L, backend=bk) for u in self.wheels]  # noqa: E731  (32)
-        if bk is NUMERIC:  # J1 once per robot, then its first column / L
-            L = checks.number("L (characteristic length)", L)
-            M = self._layout.memo("J1", lambda: np.concatenate(rows(1.0))).copy()
-            with np.errstate(over="ignore"):
-                M[:, 0] /= L
-        else:
+        if bk is SYMBOLIC:
             M = bk.zeros(2 * self.w, 3)
-            for i, row in enumerate(rows(L)):
-                bk.set_block(M, 2 * i, 0, row)
-        if bk is NUMERIC and not np.isfinite(M).all():
+            for i, u in enumerate(self.wheels):
+                bk.set_block(M, 2 * i, 0, point_row(u.position, L, backend=bk))  # (32)
+            return M
+        M = self._layout.memo("J1", self._J1_numeric).copy()  # J1 once per robot, then its first column / L
+        with np.errstate(over="ignore"):
+            M[:, 0] /= float(L)
+        if not np.isfinite(M).all():
             raise InputValueError(
                 f"L (characteristic length) = {L!r} is too small for mount points of size "
                 f"{np.abs(self.mount_points).max():.3g}: d_i / L overflows"
             )
         return M
+
+    def _J1_numeric(self):
+        r""":math:`\mathbf J_1` (21) of the checked mount points, its rows :math:`[\mathbf E\mathbf d_i\ \mathbf 1]` (5)."""
+        return np.concatenate([point_row(d, backend=NUMERIC) for d in self._layout.positions])
 
     def _backend(self, beta, backend):
         return SYMBOLIC if (beta is None or self.is_symbolic) else choose(beta, backend=backend)
@@ -344,16 +346,12 @@ class Robot:
         """
         if not self.is_symbolic:
             return self
-        lay = self._layout
-        if "robot" in lay._numeric:
-            return lay._numeric["robot"]
         if self.free_symbols:
             raise InputValueError(
                 f"robot has free symbols {sorted(map(str, self.free_symbols))}: it has no numeric "
                 f"counterpart ({checks.show(self)})"
             )
-        lay._numeric["robot"] = numeric = Robot([u.numeric() for u in self.wheels], name=self.name)
-        return numeric
+        return self._layout.memo("robot", lambda: Robot([u.numeric() for u in self.wheels], name=self.name))
 
     @property
     def free_symbols(self) -> set[Symbolic]:
