@@ -229,14 +229,8 @@ release: venv ## sdist + wheel; the wheel in a fresh venv outside the repo runs 
 docs: venv ## build/docs/html: API reference + user guide (Sphinx, numpydoc, MathJax from its release; warnings are errors)
 	@$(PDEATH) $(VPY) -m tools.docs
 
-bench: venv ## time the batched kernels against floors and peers (tools/bench.py), wmr analyze against the number of units (tools/bench_analyze.py), chapter 9's MuJoCo experiments and Drake runs (tools/bench_physics.py) and nbgrader's autograding per chapter (tools/bench_autograde.py)
-	@$(VPY) tools/bench.py
-	@echo; echo "wmr analyze against the number of wheel units (tools/bench_analyze.py):"
-	@$(VPY) tools/bench_analyze.py
-	@echo; echo "chapter 9's seven MuJoCo experiments and its Drake runs (tools/bench_physics.py):"
-	@$(VPY) tools/bench_physics.py
-	@echo; echo "nbgrader autograde of one student's full submission, per chapter (tools/bench_autograde.py):"
-	@$(VPY) tools/bench_autograde.py
+bench: venv ## the one benchmark (python -m tools.bench): kernels and sweeps against floors and peers, fast paths against plain code, wmr analyze against the number of units, chapter 9's physics, nbgrader's autograding; figures in tools/BENCH.md
+	@cd $(WMR_ROOT) && $(VPY) -m tools.bench
 
 clean: ## remove build/ and caches (committed figures/ are kept)
 	rm -rf build .pytest_cache .hypothesis .mypy_cache .ruff_cache

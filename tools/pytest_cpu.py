@@ -1,6 +1,6 @@
 """Where the CPU of a test run goes: a pytest plugin that measures each test file, and the table of the results.
 
-``pytest -p tools.pytest_cpu`` (``tools/bench_test.sh`` passes it through ``make test``) records, in each process
+``pytest -p tools.pytest_cpu`` (``tools/bench/tests.sh`` passes it through ``make test``) records, in each process
 that runs tests (each pytest-xdist worker, or pytest alone), the CPU seconds -- user + sys of the process and of the
 child processes it waited for -- from the start of each test to its end (fixture set-up and teardown included,
 so a module's fixtures count for the module), and the seconds the process spent before its first test (interpreter,

@@ -116,10 +116,7 @@ def main(argv: list[str] | None = None) -> int:
     for reading, sequence in (("as a reader follows it", first), ("as the interpreter runs it", every)):
         count = visits(sequence)
         over = sorted((m for m, v in count.items() if v > 2), key=lambda m: -count[m])
-        print(
-            f"{reading}: {sum(count.values())} visits to {len(count)} modules, "
-            f"{len(over)} visited more than twice"
-        )
+        print(f"{reading}: {sum(count.values())} visits to {len(count)} modules, {len(over)} visited more than twice")
         print("  " + ", ".join(f"{m} {count[m]}" for m in over[:12]))
     return 0
 

@@ -28,7 +28,7 @@ def first_written(x: FloatArray, v: float) -> int:
     ``v`` is a value of ``x``; writing is monotone in the value, so only values before its first
     occurrence and within a quantum of it (at most :math:`10^{-11}` of :math:`\\max(|v|, 1)`, ten
     times that in the next decade) can be written as ``v`` is: those few are rounded, not the chunk
-    (5 to 17 times faster than rounding it, ``tools/bench_fastpaths.py``; ``tests/test_sweep.py``
+    (5 to 17 times faster than rounding it, ``python -m tools.bench.fastpaths``; ``tests/test_sweep.py``
     compares the two).
 
     Parameters

@@ -1,4 +1,4 @@
-"""The kernel rows of ``make bench`` (tools/bench.py): wmr's batched kernels against targets, plain-NumPy floors and WPILib.
+"""The kernel rows of tools/bench/batched.py: wmr's batched kernels against targets, plain-NumPy floors and WPILib.
 
 Each row is ``(name, function, (kind, reference), check)``: :func:`kernel_rows` builds them on N
 configurations (fixed seed); :func:`best_of` times a call.  The floors are the same arithmetic written

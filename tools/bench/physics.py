@@ -1,7 +1,7 @@
 """Time chapter 9's seven MuJoCo experiments as the chapter runs them, each over its parameter box, and its eight Drake
 runs (issues 21 and 31: all together within 60 s of CPU on the project's quiet machine).
 
-Usage: ``python tools/bench_physics.py [--repeat R] [--drake-only]``.
+Usage: ``python -m tools.bench.physics [--repeat R] [--drake-only]``.
 
 Each experiment of :mod:`edition.physics` is judged over its box (:func:`edition.physics.run`, every point of
 :mod:`edition.physics.box`) ``R`` times (default 1) in this process, after one untimed warm-up import; the table
@@ -22,7 +22,7 @@ import sys
 import time
 from pathlib import Path
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+sys.path.insert(0, str(Path(__file__).resolve().parents[2]))
 
 BUDGET = 60.0
 

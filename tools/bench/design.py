@@ -7,7 +7,7 @@ shows what it printed: Campion's class, the actuated mobility, the limitations, 
 configurations its default sweep covers (median and 95th percentile) and the least mobility there.
 A version that does not print a quantity shows a dash.
 
-    usage: python -m tools.bench_design --before "CMD" --after "CMD" > tools/BENCH-design.md
+    usage: python -m tools.bench.design --before "CMD" --after "CMD" (its table is a section of tools/BENCH.md)
 
 CMD is a command that runs ``wmr``, e.g. ``"env PYTHONPATH=/tmp/main /work/main/.venv/bin/python -m wmr"``
 (the library of another commit with this project's venv) or ``"$PWD/.venv/bin/wmr"``; it runs in ``/``.
@@ -25,7 +25,7 @@ import time
 from pathlib import Path
 
 SAMPLE = "1e5"  # (the default grid of 36 angles per steered unit has 36^6 = 2.2e9 for six units)
-ROBOTS = Path(__file__).resolve().parent.parent / "examples" / "engineers"
+ROBOTS = Path(__file__).resolve().parents[2] / "examples" / "engineers"
 
 
 def _run(cmd: str, *argv: str) -> dict:

@@ -1,6 +1,6 @@
 """Benchmark of ``wmr analyze`` against the number of wheel units (4 to 1,000): wall time and peak memory.
 
-Usage: ``make bench`` (after the kernel rows) or ``python tools/bench_analyze.py [--sizes 4,100,1000] [--repeat R]``.
+Usage: ``make bench`` (after the kernel rows) or ``python -m tools.bench.analyze [--sizes 4,100,1000] [--repeat R]``.
 
 Three families of robots are written as robot files (TOML) in a temporary folder, for each size n:
 

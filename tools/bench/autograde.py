@@ -1,6 +1,6 @@
 """Time ``nbgrader autograde`` of one student's full submission, chapter by chapter (issue 32: at most 15 s each).
 
-Usage: ``python tools/bench_autograde.py [--repeat R] [CHAPTER...]`` (default: every lesson with exercises).
+Usage: ``python -m tools.bench.autograde [--repeat R] [CHAPTER...]`` (default: every lesson with exercises).
 
 For each chapter, in a temporary nbgrader course: the source notebook (:func:`tools.assignments.main`),
 ``nbgrader generate_assignment``, then one student's submission -- the source notebook itself, every answer
@@ -23,7 +23,7 @@ import tempfile
 import time
 from pathlib import Path
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+sys.path.insert(0, str(Path(__file__).resolve().parents[2]))
 
 BUDGET = 15.0  # seconds per student and chapter
 
@@ -80,7 +80,7 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--repeat", type=int, default=1, help="autograde runs per chapter (the best is kept)")
     ap.add_argument("chapters", nargs="*", type=Path, help="notebooks (default: notebooks/[0-9][0-9]_*.ipynb)")
     args = ap.parse_args(argv)
-    root = Path(__file__).resolve().parents[1]
+    root = Path(__file__).resolve().parents[2]
     chapters = args.chapters or sorted((root / "notebooks").glob("[0-9][0-9]_*.ipynb"))
     import nbgrader  # type: ignore[import-untyped]
 

@@ -1,7 +1,7 @@
 """Each fast path of wmr against the plain implementation it replaces (issue 29: keep a fast path only at >= 3x).
 
 The plain implementations are the dense definitions of :mod:`wmr.analysis.reference`.
-Run ``.venv/bin/python tools/bench_fastpaths.py [N]``
+Run ``.venv/bin/python -m tools.bench.fastpaths [N]``
 (default N = 10**6 configurations, fixed seed); each row prints the best of three wall-clock times and
 the gain (plain / fast).  The results are compared as well: a fast path that disagrees is reported.
 """
@@ -13,7 +13,7 @@ import sys
 import numpy as np
 
 import wmr
-from tools.bench_kernels import SEED, best_of, same_kappa, swerve_robot
+from tools.bench.floors import SEED, best_of, same_kappa, swerve_robot
 from wmr.analysis import linalg as LA
 from wmr.analysis import reference as R
 from wmr.analysis.sweep.reduction import first_written
@@ -107,17 +107,25 @@ def _extremes_plain(x):
     return int(np.argmin(q)), int(np.argmax(q)), int(np.argmin(np.abs(q)))
 
 
-def main(n=10**6, repeat=3):
-    """Print one line per fast path: its time, the plain time, the gain and whether the results agree."""
+def main(argv=None, repeat=3):
+    """Print one line per fast path: its time, the plain time, the gain and whether the results agree.
+
+    ``argv``: ``[N]``, the number of configurations (default 10**6).  Returns 1 when a fast path disagrees.
+    """
+    argv = sys.argv[1:] if argv is None else argv
+    n, disagree = int(float(argv[0])) if argv else 10**6, 0
     print(f"{n} configurations, best of {repeat}")
     for name, fast, plain, same in rows(n):
         t_fast, a = best_of(fast, repeat)
         t_plain, b = best_of(plain, repeat)
+        agree = bool(same(a, b))
+        disagree += not agree
         print(
             f"{name:42s} fast {t_fast * 1e3:9.1f} ms  plain {t_plain * 1e3:9.1f} ms  "
-            f"gain {t_plain / t_fast:6.1f}x  same {same(a, b)}"
+            f"gain {t_plain / t_fast:6.1f}x  same {agree}"
         )
+    return 1 if disagree else 0
 
 
 if __name__ == "__main__":
-    main(int(sys.argv[1]) if len(sys.argv) > 1 else 10**6)
+    raise SystemExit(main())

@@ -1,6 +1,6 @@
 """Benchmark of wmr's batched kernels against plain-NumPy floors, a peer library and targets.
 
-Usage: ``make bench`` or ``python tools/bench.py [--n N] [--repeat R] [--sweep N] [--no-dask]``.
+Usage: ``make bench`` or ``python -m tools.bench.batched [--n N] [--repeat R] [--sweep N] [--no-dask]``.
 
 Each row times one kernel on N configurations (default 10**6, fixed seed) as the best of R
 wall-clock runs, and compares it with
@@ -22,10 +22,10 @@ time :func:`wmr.sweep` in process (in a fresh child process, which also gives th
 memory) and on a local Dask cluster of 2 single-thread workers; the last rows time the default sweep
 of issue 24, kappa(J) of the four-module swerve over its drivable configurations (goal: 5 M
 configurations per second in process), with its CPU time, configurations per CPU-second and the load
-average of each run, beside the same over random angles (tools/bench_sweep.py).  The load average is
+average of each run, beside the same over random angles (tools/bench/sweeps.py).  The load average is
 printed before and after: timings on a shared machine are only as quiet as it was.
 
-The parts: tools/bench_kernels.py (the kernel rows: floors, peers, checks), tools/bench_sweep.py
+The parts: tools/bench/floors.py (the kernel rows: floors, peers, checks), tools/bench/sweeps.py
 (the sweep rows), this file (the command line and the table).
 """
 
@@ -39,12 +39,12 @@ import sys
 import numpy as np
 
 import wmr
-from tools.bench_kernels import SEED, best_of, kernel_rows
-from tools.bench_sweep import drivable_rows, load, print_drivable_rows, print_sweep_rows, sweep_rows
+from tools.bench.floors import SEED, best_of, kernel_rows
+from tools.bench.sweeps import drivable_rows, load, print_drivable_rows, print_sweep_rows, sweep_rows
 
 
 def print_kernel_rows(n, k, args):
-    """Time and check the kernel rows (tools/bench_kernels.py); the number of failed checks."""
+    """Time and check the kernel rows (tools/bench/floors.py); the number of failed checks."""
     rows, twist = kernel_rows(n, args.repeat, k, int(args.peer_n))
     head = (
         f"{'kernel':34s} {'wmr s':>8s} {'cpu s':>7s}  {'compared with':28s} {'its s':>8s} {'ratio':>7s}  "

@@ -7,9 +7,9 @@
 # just before it (other users of the two cores slow it down) and the CPU time it used (user + sys
 # of make and everything it started: on an idle 2-core machine the wall time is about half of it),
 # the slowest tests of the last run, and its CPU seconds per test file (the plugin tools/pytest_cpu.py).
-#   usage: tools/bench_test.sh [RUNS]            (from the repository root)
+#   usage: tools/bench/tests.sh [RUNS]            (from the repository root)
 set -euo pipefail
-cd "$(dirname "${BASH_SOURCE[0]}")/.."
+cd "$(dirname "${BASH_SOURCE[0]}")/../.."
 runs=${1:-2}
 mkdir -p build
 log=build/bench-test.log

@@ -1,4 +1,4 @@
-"""The sweep rows of ``make bench`` (tools/bench.py): :func:`wmr.sweep` in process, on Dask, and the drivable sweep of issue 24.
+"""The sweep rows of tools/bench/batched.py: :func:`wmr.sweep` in process, on Dask, and the drivable sweep of issue 24.
 
 Every in-process sweep runs in a fresh interpreter (:func:`sweep_child`), so that its peak resident
 memory is its own; inside it the sweep is timed around the call (no interpreter start, no command
@@ -24,7 +24,7 @@ import wmr
 
 #: issue 24: configurations per second of a default (drivable) sweep of the swerve's kappa(J), in process
 GOAL = 5e6
-SWERVE = Path(__file__).resolve().parent.parent / "examples" / "swerve4.toml"
+SWERVE = Path(__file__).resolve().parents[2] / "examples" / "swerve4.toml"
 
 _CHILD = """
 import json, os, sys, time

@@ -4,9 +4,9 @@
 # changed, (3) after `touch` of one notebook (content hash: nothing to do), (4) after a real edit
 # of one notebook (re-executes only that one, then re-exports). Prints a markdown table, with
 # the machine's load average before each run (other users of the cores slow it down).
-#   usage: tools/bench_report.sh            (from the repository root, after `make venv tex`)
+#   usage: tools/bench/report.sh            (from the repository root, after `make venv tex`)
 set -euo pipefail
-cd "$(dirname "${BASH_SOURCE[0]}")/.."
+cd "$(dirname "${BASH_SOURCE[0]}")/../.."
 PY=$PWD/.venv/bin/python
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
