@@ -64,3 +64,13 @@ def test_twist_to_and_from_each_convention_by_name():
         assert np.array_equal(twist_from(written, name), batch)
     speeds = SimpleNamespace(vx=1.0, vy=-0.2, omega=0.5)
     assert twist_from([speeds, speeds], "ros").tolist() == [list(t)] * 2
+
+
+def test_ros_steering_angles_are_headings_from_x():
+    """REP-103: a steered wheel's angle is the heading it rolls along (0 forward, 90 degrees left), as WPILib's."""
+    from wmr.model.conventions import angle_to
+
+    for twist, heading in (([0.0, 1.0, 0.0], 0.0), ([0.0, 0.0, 1.0], 90.0), ([0.0, -1.0, 0.0], 180.0)):
+        beta = swerve.module_commands(ROBOT, twist).beta
+        assert np.allclose(np.degrees(angle_to(beta, "ros")), heading, rtol=0, atol=1e-9)
+        assert np.array_equal(angle_to(beta, "ros"), angle_to(beta, "wpilib"))
