@@ -1,9 +1,10 @@
 """Names that moved out of the wheel kinds (issue 29), kept for one release with a warning naming the new place.
 
 A wheel kind answers for its mathematics only; its drawing, its robot-file keys, its bodies and joints and
-its design hints moved to the layers that use them.  ``import wmr`` imports this module, which puts the old methods
+its design hints moved to the layers that use them; other libraries' conventions are converted by one module,
+:mod:`wmr.model.conventions`.  ``import wmr`` imports this module, which puts the old methods
 back on :class:`~wmr.model.wheels.WheelUnit` (each warns with a :class:`DeprecationWarning` and calls
-its replacement) and the old modules' names in :data:`sys.modules`:
+its replacement), the old names on their modules (warning when read) and the old modules in :data:`sys.modules`:
 
 =============================================  ===================================================================
 before                                         now
