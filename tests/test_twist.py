@@ -64,6 +64,7 @@ def test_twist_to_and_from_each_convention_by_name():
         assert np.array_equal(twist_from(written, name), batch)
     speeds = SimpleNamespace(vx=1.0, vy=-0.2, omega=0.5)
     assert twist_from([speeds, speeds], "ros").tolist() == [list(t)] * 2
+    assert twist_from(t, "wpilib").tolist() == twist_from([t], "ros")[0].tolist() == list(t)  # named: not reordered
 
 
 def test_ros_steering_angles_are_headings_from_x():

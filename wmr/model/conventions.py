@@ -252,8 +252,8 @@ def twist_from(values: TwistLike, convention: str, argument: str = "twist") -> F
     Parameters
     ----------
     values : array (..., 3), or twist objects (a WPILib ``ChassisSpeeds``, a list of them, ...)
-        Numbers in the order of :data:`TWIST_ORDER` ``[convention]``; objects are read by their fields,
-        whatever the convention (:func:`wmr.model.arrays.twist_array`).
+        Numbers in the order of :data:`TWIST_ORDER` ``[convention]``; a :class:`Twist` and objects are
+        read by their names, whatever the convention (:func:`wmr.model.arrays.twist_array`).
     convention : str
         A key of :data:`CONVENTIONS`.
     argument : str, optional
@@ -269,8 +269,8 @@ def twist_from(values: TwistLike, convention: str, argument: str = "twist") -> F
     [3.0, 1.0, 2.0]
     """
     order = _order(convention)
-    first = values[0] if isinstance(values, (list, tuple)) and values else values
-    if twist_kind(first) is not None:
+    first = values[0] if type(values) in (list, tuple) and values else values
+    if isinstance(first, Twist) or twist_kind(first) is not None:  # its components named: read by name
         return twist_array(argument, values)
     return finite_array(argument, values, last=3)[..., np.argsort(order)]
 
