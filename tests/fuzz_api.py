@@ -695,15 +695,7 @@ CASES = [
         (R, ("profile", "profile"), ("steer_rate", "positive")),
         robots=(0,),
     ),
-    Case(
-        "swerve.to_wpilib",
-        lambda beta, speed: swerve.to_wpilib(beta, speed),
-        (("beta", "angles"), ("speed", "anything")),
-    ),
-    Case("swerve.from_wpilib", lambda alpha: swerve.from_wpilib(alpha), (("alpha", "angles"),)),
-    Case("swerve.to_chassis", lambda twist: swerve.to_chassis(twist), (T,)),
-    Case("swerve.from_chassis", lambda chassis: swerve.from_chassis(chassis), (("chassis", "twist"),)),
-    Case("Twist", lambda twist: wmr.Twist.of(twist), (T,)),
+    Case("Twist", lambda twist: wmr.Twist.of(twist), (("twist", "twist1"),)),
     # --- actuation, limitations, checked advice, glossary (issue 24)
     Case("actuated_mobility", lambda robot, beta: actuation.actuated_mobility(robot, beta), (R, B)),
     Case("driven_columns", lambda robot: actuation.driven_columns(robot), (R,)),
@@ -733,6 +725,16 @@ CASES = [
         "angle_from",
         lambda angle, convention: conventions.angle_from(angle, convention),
         (("angle", "angles"), ("convention", "convention")),
+    ),
+    Case(
+        "twist_to",
+        lambda twist, convention: conventions.twist_to(twist, convention),
+        (T, ("convention", "convention")),
+    ),
+    Case(
+        "twist_from",
+        lambda values, convention: conventions.twist_from(values, convention),
+        (("values", "twist"), ("convention", "convention")),
     ),
     Case("twist_array", lambda twist: arrays.twist_array("twist", twist), (T,)),
     Case("limit", lambda name: limits.limit(name), (("name", "limit"),)),

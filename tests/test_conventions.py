@@ -11,7 +11,7 @@ import pytest
 import wmr
 from wmr.cli import main
 from wmr.errors import InputError
-from wmr.model.conventions import angle_from, angle_to
+from wmr.model.conventions import angle_from, angle_to, twist_from, twist_to
 
 ROOT = Path(__file__).resolve().parent.parent
 SWERVE = ROOT / "examples" / "swerve4.toml"
@@ -38,9 +38,9 @@ def test_a_chassis_speeds_is_read_by_its_fields():
     assert np.allclose([s.speed for s in states], cmd.speed, rtol=1e-12)
     assert np.allclose(np.degrees(angle_to(cmd.beta, "wpilib")), [s.angle.degrees() for s in states], atol=1e-9)
     assert np.allclose(wmr.inverse(bot, cmd.beta, speeds).value, wmr.inverse(bot, cmd.beta, [0.8, 1.0, 0.5]).value)
-    assert np.allclose(wmr.swerve.from_chassis(speeds), [0.8, 1.0, 0.5])
+    assert np.allclose(twist_from(speeds, "wpilib"), [0.8, 1.0, 0.5])
     sol = wmr.swerve.chassis_twist(bot, cmd.beta, cmd.speed)
-    assert np.allclose(wmr.swerve.to_chassis(sol.value), [1.0, 0.5, 0.8])
+    assert np.allclose(twist_to(sol.value, "wpilib"), [1.0, 0.5, 0.8])
 
 
 def test_a_twist_object_is_never_read_as_numbers_where_none_is_expected():

@@ -10,8 +10,14 @@ import wmr
 from wmr.errors import InputTypeError, InputValueError
 from wmr.io import from_wpilib, to_wpilib
 from wmr.io import layouts as L
-from wmr.io.chassis import is_chassis_speeds
-from wmr.io.wpilib import chassis_speeds, from_module_states, module_positions, module_states, twist_of
+from wmr.io.wpilib import (
+    chassis_speeds,
+    from_module_states,
+    is_chassis_speeds,
+    module_positions,
+    module_states,
+    twist_of,
+)
 
 wk = pytest.importorskip("wpimath.kinematics")  # in environment.lock: runs here
 from wpimath.geometry import Rotation2d, Translation2d, Twist2d  # noqa: E402
@@ -171,3 +177,12 @@ def test_module_states_are_wpilibs_toSwerveModuleStates():
     assert [(p.distance, round(p.angle.degrees(), 9)) for p in pos] == [(1.0, 0.0), (2.0, -90.0)]
     assert from_module_states(pos)[1].tolist() == [1.0, 2.0]
     assert isinstance(pos[0].angle, Rotation2d)
+
+
+def test_wmr_io_chassis_moved_into_wmr_io_wpilib():
+    """wmr.deprecated: the module wmr.io.chassis is gone; its names warn and are wmr.io.wpilib's (issue 29)."""
+    with pytest.warns(DeprecationWarning, match=r"wmr.io.chassis.twist_of is deprecated: use wmr.io.wpilib.twist_of"):
+        from wmr.io.chassis import twist_of as old  # type: ignore[import-not-found]
+    assert old is twist_of
+    with pytest.warns(DeprecationWarning, match="wmr.io.wpilib.is_chassis_speeds"):
+        assert wmr.io.chassis.is_chassis_speeds is is_chassis_speeds

@@ -5,6 +5,7 @@ import pytest
 
 import wmr
 from wmr import swerve
+from wmr.model.conventions import angle_to, twist_from
 
 SQUARE = [(0.3, 0.3), (0.3, -0.3), (-0.3, 0.3), (-0.3, -0.3)]
 
@@ -18,7 +19,7 @@ def test_wheel_velocity_is_speed_along_the_wpilib_angle():
     bot = _bot()
     twist = np.array([0.7, 1.0, -0.4])
     cmd = swerve.module_commands(bot, twist)
-    alpha = swerve.to_wpilib(cmd.beta)
+    alpha = angle_to(cmd.beta, "wpilib")
     v = cmd.speed[:, None] * np.column_stack([np.cos(alpha), np.sin(alpha)])
     np.testing.assert_allclose(v, wmr.point_velocity(twist, bot.mount_points), atol=1e-12)
 
@@ -125,8 +126,8 @@ def test_cosine_compensation():
         (lambda: swerve.se2_log([7.0, 0, 0]), "delta"),
         (lambda: swerve.chassis_twist(_bot(), np.zeros(4), [np.nan] * 4), "speed"),
         (lambda: swerve.cosine_compensate(np.ones(3), np.ones(2), 0.0), "speed"),
-        (lambda: swerve.to_wpilib("0.5"), "beta"),
-        (lambda: swerve.from_chassis([1, 2]), "chassis"),
+        (lambda: angle_to("0.5", "wpilib"), "beta"),
+        (lambda: twist_from([1, 2], "wpilib"), "twist"),
     ],
 )
 def test_bad_input_names_the_argument(call, name):
@@ -138,3 +139,24 @@ def test_too_many_modules_for_the_enumeration():
     bot = _bot([(np.cos(a), np.sin(a)) for a in np.linspace(0, 2 * np.pi, swerve.MAX_MODULES + 1, endpoint=False)])
     with pytest.raises(ValueError, match="robot"):
         swerve.optimize_robot(bot, [0, 1, 0], np.zeros(bot.w))
+
+
+def test_the_conversions_that_left_swerve_warn_and_answer_as_before():
+    """wmr.deprecated: to_wpilib, from_wpilib, to_chassis, from_chassis moved to wmr.conventions (issue 29)."""
+    from wmr.model.conventions import angle_from, twist_to
+
+    beta, speed, twist = np.array([0.3, -2.0, 3.0]), [1.0, -0.5, 2.0], [3.0, 1.0, 2.0]
+    with pytest.warns(
+        DeprecationWarning, match=r"wmr.swerve.to_wpilib is deprecated: use wmr.model.conventions.angle_to"
+    ):
+        alpha, same = swerve.to_wpilib(beta, speed)  # type: ignore[attr-defined]
+    assert np.array_equal(alpha, angle_to(beta, "wpilib")) and same.tolist() == speed
+    with pytest.warns(DeprecationWarning, match="angle_from"):
+        assert np.array_equal(swerve.modules.from_wpilib(alpha), angle_from(alpha, "wpilib"))  # type: ignore[attr-defined]
+    with pytest.warns(DeprecationWarning, match="twist_to"):
+        assert swerve.to_chassis(twist).tolist() == twist_to(twist, "wpilib").tolist() == [1.0, 2.0, 3.0]  # type: ignore[attr-defined]
+    with pytest.warns(DeprecationWarning, match="twist_from"):
+        from wmr.swerve import from_chassis  # type: ignore[attr-defined]
+    assert from_chassis([1.0, 2.0, 3.0]).tolist() == twist
+    with pytest.warns(DeprecationWarning), pytest.raises(wmr.errors.InputError, match=r"\bchassis\b"):
+        swerve.from_chassis([1, 2])  # type: ignore[attr-defined]

@@ -1,6 +1,6 @@
 """wmr's centred-wheel kinematics against WPILib's SwerveDriveKinematics (robotpy-wpimath, an independent library).
 
-Mapping (wmr.swerve.modules): twist [psi_dot, x_dot, y_dot] = ChassisSpeeds(vx, vy, omega) reordered;
+Mapping (wmr.model.conventions): twist [psi_dot, x_dot, y_dot] = ChassisSpeeds(vx, vy, omega) reordered;
 WPILib module angle alpha = beta - pi/2 (beta: wmr's axle angle); speed = r * theta_dot.
 Layouts of 3, 4 and 6 modules with unequal wheel radii, many random twists.
 """
@@ -10,6 +10,7 @@ import pytest
 
 import wmr
 from wmr import swerve
+from wmr.model.conventions import angle_from, angle_to, twist_from, twist_to
 
 wk = pytest.importorskip("wpimath.kinematics")  # in environment.lock: runs here
 from wpimath.geometry import Rotation2d, Translation2d  # noqa: E402
@@ -52,7 +53,7 @@ def test_inverse_kinematics_agrees_with_toSwerveModuleStates(w):
     rates = wmr.inverse(bot, beta, twists).value
     speed = rates * swerve.radii(bot)
     assert np.all(rates >= 0)  # steering_angles: theta_dot >= 0
-    alpha = swerve.to_wpilib(beta)
+    alpha = angle_to(beta, "wpilib")
     # WPILib, twist by twist
     ref = np.array(
         [
@@ -65,7 +66,7 @@ def test_inverse_kinematics_agrees_with_toSwerveModuleStates(w):
     # the convenience call is the same computation
     cmd = swerve.module_commands(bot, twists)
     np.testing.assert_allclose(cmd.speed, ref[..., 0], rtol=0, atol=1e-12)
-    assert np.max(_angle_gap(swerve.to_wpilib(cmd.beta), ref[..., 1])) < 1e-12
+    assert np.max(_angle_gap(angle_to(cmd.beta, "wpilib"), ref[..., 1])) < 1e-12
 
 
 @pytest.mark.parametrize("w", sorted(LAYOUTS))
@@ -76,7 +77,7 @@ def test_forward_kinematics_agrees_with_toChassisSpeeds(w):
     rng = np.random.default_rng(w)
     alpha = rng.uniform(-np.pi, np.pi, (N, w))
     speed = rng.normal(0, 2, (N, w))  # arbitrary: mostly incompatible
-    sol = swerve.chassis_twist(bot, swerve.from_wpilib(alpha), speed)
+    sol = swerve.chassis_twist(bot, angle_from(alpha, "wpilib"), speed)
     ref = np.array(
         [
             [c.omega, c.vx, c.vy]
@@ -96,11 +97,11 @@ def test_forward_kinematics_agrees_with_toChassisSpeeds(w):
 
 def test_the_angle_mapping_is_a_quarter_turn():
     """beta = 90 deg (axle along y) rolls forward: WPILib angle 0; beta = 0 rolls backwards at positive rate."""
-    assert swerve.to_wpilib(np.pi / 2) == 0.0
-    np.testing.assert_allclose(swerve.to_wpilib(0.0), -np.pi / 2)
-    np.testing.assert_allclose(swerve.from_wpilib(swerve.to_wpilib([0.3, -2.0, 3.0])), [0.3, -2.0, 3.0])
-    assert swerve.to_chassis([3.0, 1.0, 2.0]).tolist() == [1.0, 2.0, 3.0]
-    assert swerve.from_chassis(swerve.to_chassis([3.0, 1.0, 2.0])).tolist() == [3.0, 1.0, 2.0]
+    assert angle_to(np.pi / 2, "wpilib") == 0.0
+    np.testing.assert_allclose(angle_to(0.0, "wpilib"), -np.pi / 2)
+    np.testing.assert_allclose(angle_from(angle_to([0.3, -2.0, 3.0], "wpilib"), "wpilib"), [0.3, -2.0, 3.0])
+    assert twist_to([3.0, 1.0, 2.0], "wpilib").tolist() == [1.0, 2.0, 3.0]
+    assert twist_from(twist_to([3.0, 1.0, 2.0], "wpilib"), "wpilib").tolist() == [3.0, 1.0, 2.0]
 
 
 @pytest.mark.parametrize("w", sorted(LAYOUTS))
@@ -111,11 +112,11 @@ def test_per_module_optimize_is_wpilibs(w):
     ch = swerve.optimize_modules(bot, twists, current)
     for tw, cur, b, s in zip(twists, current, ch.beta, ch.speed):
         states = kin.toSwerveModuleStates(ChassisSpeeds(tw[1], tw[2], tw[0]))
-        for st, c in zip(states, swerve.to_wpilib(cur)):
+        for st, c in zip(states, angle_to(cur, "wpilib")):
             st.optimize(Rotation2d(float(c)))
         ref = np.array([(st.speed, st.angle.radians()) for st in states])
         np.testing.assert_allclose(s, ref[:, 0], rtol=0, atol=1e-12)
-        assert np.max(_angle_gap(swerve.to_wpilib(b), ref[:, 1])) < 1e-12
+        assert np.max(_angle_gap(angle_to(b, "wpilib"), ref[:, 1])) < 1e-12
 
 
 def test_per_module_optimize_turns_neighbours_opposite_ways_and_robot_level_does_not():
@@ -130,10 +131,10 @@ def test_per_module_optimize_turns_neighbours_opposite_ways_and_robot_level_does
         st.optimize(Rotation2d(float(c)))
     wp_speed = np.array([st.speed for st in states])
     assert np.any(wp_speed > 0) and np.any(wp_speed < 0)  # WPILib: some reversed, some not
-    now = swerve.from_wpilib(now_alpha)
+    now = angle_from(now_alpha, "wpilib")
     per, rob = swerve.optimize_modules(bot, left, now), swerve.optimize_robot(bot, left, now)
     np.testing.assert_allclose(per.speed, wp_speed, atol=1e-12)
-    turn = lambda ch: np.sign(swerve.to_wpilib(ch.beta) - now_alpha)  # noqa: E731  (sense of each turn)
+    turn = lambda ch: np.sign(angle_to(ch.beta, "wpilib") - now_alpha)  # noqa: E731  (sense of each turn)
     assert len(set(turn(per))) == 2 and len(set(turn(rob))) == 1
     assert per.slip > 0.3  # modules fight through the turn
     assert rob.slip < 0.02  # parallel all the way
@@ -159,7 +160,7 @@ def test_desaturation_keeps_the_centre_and_equals_wpilibs_module_scaling(w):
         states = kin.toSwerveModuleStates(ChassisSpeeds(tw[1], tw[2], tw[0]))
         ref = np.array([(st.speed, st.angle.radians()) for st in type(kin).desaturateWheelSpeeds(states, vmax)])
         np.testing.assert_allclose(s, ref[:, 0], rtol=0, atol=1e-12)
-        assert np.max(_angle_gap(swerve.to_wpilib(b), ref[:, 1])) < 1e-12
+        assert np.max(_angle_gap(angle_to(b, "wpilib"), ref[:, 1])) < 1e-12
 
 
 def test_desaturating_after_discretizing_drifts_and_before_does_not():
@@ -231,7 +232,7 @@ def test_cosine_compensation_agrees_with_cosineScale():
     speed, target, actual = rng.normal(0, 2, 200), rng.uniform(-np.pi, np.pi, 200), rng.uniform(-np.pi, np.pi, 200)
     ours = swerve.cosine_compensate(speed, actual, target)
     ref = []
-    for s, a, c in zip(speed, swerve.to_wpilib(target), swerve.to_wpilib(actual)):
+    for s, a, c in zip(speed, angle_to(target, "wpilib"), angle_to(actual, "wpilib")):
         st = SwerveModuleState(float(s), Rotation2d(float(a)))
         st.cosineScale(Rotation2d(float(c)))
         ref.append(st.speed)
@@ -253,4 +254,4 @@ def test_the_shipped_frc_example_agrees_with_wpilib():
         ]
     )
     np.testing.assert_allclose(cmd.speed, ref[..., 0], rtol=0, atol=1e-12)
-    assert np.max(_angle_gap(swerve.to_wpilib(cmd.beta), ref[..., 1])) < 1e-12
+    assert np.max(_angle_gap(angle_to(cmd.beta, "wpilib"), ref[..., 1])) < 1e-12

@@ -1,9 +1,10 @@
 """Names that moved out of the wheel kinds (issue 29), kept for one release with a warning naming the new place.
 
 A wheel kind answers for its mathematics only; its drawing, its robot-file keys, its bodies and joints and
-its design hints moved to the layers that use them.  ``import wmr`` imports this module, which puts the old methods
+its design hints moved to the layers that use them; other libraries' conventions are converted by one module,
+:mod:`wmr.model.conventions`.  ``import wmr`` imports this module, which puts the old methods
 back on :class:`~wmr.model.wheels.WheelUnit` (each warns with a :class:`DeprecationWarning` and calls
-its replacement) and the old modules' names in :data:`sys.modules`:
+its replacement), the old names on their modules (warning when read) and the old modules in :data:`sys.modules`:
 
 =============================================  ===================================================================
 before                                         now
@@ -28,21 +29,30 @@ before                                         now
 ``wmr.model.types.Twist`` (a type alias)       ``wmr.model.types.TwistLike`` (:class:`wmr.Twist` is the named twist)
 ``wmr.simulate``, ``wmr.analysis.simulation``  :func:`wmr.integrate`, :mod:`wmr.analysis.integration` (``wmr simulate`` is MuJoCo)
 ``wmr.model.platform.cos_sin``, ``..._checked`` ``(np.cos(beta), np.sin(beta))`` (the half-angle path was 1.3x, not 3x)
+``wmr.swerve.to_wpilib(beta)``                 :func:`wmr.model.conventions.angle_to` ``(beta, "wpilib")`` (``speed``: unchanged)
+``wmr.swerve.from_wpilib(alpha)``              :func:`wmr.model.conventions.angle_from` ``(alpha, "wpilib")``
+``wmr.swerve.to_chassis(twist)``               :func:`wmr.model.conventions.twist_to` ``(twist, "wpilib")``
+``wmr.swerve.from_chassis(chassis)``           :func:`wmr.model.conventions.twist_from` ``(chassis, "wpilib")``
+``wmr.io.chassis``                             :mod:`wmr.io.wpilib` (``twist_of``, ``chassis_speeds``, ``is_chassis_speeds``)
 =============================================  ===================================================================
 """
 
 from __future__ import annotations
 
 import sys
+import types
 import warnings
 from collections.abc import Callable
 from typing import Any
 
+from . import io, swerve
 from .analysis import families, integration, overview, unit_design
-from .io import mechanism, wheel_tables
-from .model import platform, types
+from .io import mechanism, wheel_tables, wpilib
+from .model import conventions, platform, validation
+from .model import types as model_types
 from .model.wheels import WheelUnit, swedish
 from .plot import parts
+from .swerve import modules
 from .words import families as family_words
 from .words import glossary
 
@@ -122,31 +132,51 @@ swedish.NO_FAITHFUL_MECHANISM = mechanism.NO_FAITHFUL_MECHANISM  # type: ignore[
 sys.modules.setdefault("wmr.analysis.glossary", glossary)
 
 
-def _moved_words(module: str) -> Callable[[str], Any]:
-    """A module ``__getattr__`` (PEP 562) that finds FAMILIES and MEANINGS in wmr.words.families, with a warning."""
+def _moved(module: types.ModuleType, old: str, names: dict[str, tuple[str, Any]]) -> None:
+    """Give ``module`` a ``__getattr__`` (PEP 562) that finds ``names`` (name -> (new place, value)), with a warning."""
 
     def __getattr__(name: str) -> Any:
-        if name in ("FAMILIES", "MEANINGS"):
-            warnings.warn(f"{module}.{name} is deprecated: use wmr.words.families.{name}", DeprecationWarning, 2)
-            return getattr(family_words, name)
-        raise AttributeError(f"module {module!r} has no attribute {name!r}")
+        if name not in names:
+            raise AttributeError(f"module {old!r} has no attribute {name!r}")
+        warnings.warn(f"{old}.{name} is deprecated: use {names[name][0]}", DeprecationWarning, 2)
+        return names[name][1]
 
-    return __getattr__
+    setattr(module, "__getattr__", __getattr__)  # noqa: B010 (PEP 562, on a module object)
 
 
+_WORDS = {n: (f"wmr.words.families.{n}", getattr(family_words, n)) for n in ("FAMILIES", "MEANINGS")}
 sys.modules.setdefault("wmr.analysis.singular", families)
-setattr(families, "__getattr__", _moved_words("wmr.analysis.singular"))  # noqa: B010 (PEP 562, on a module object)
-setattr(overview, "__getattr__", _moved_words("wmr.analysis.overview"))  # noqa: B010 (PEP 562, on a module object)
+_moved(families, "wmr.analysis.singular", _WORDS)
+_moved(overview, "wmr.analysis.overview", _WORDS)
+_moved(model_types, "wmr.model.types", {"Twist": ("wmr.model.types.TwistLike", model_types.TwistLike)})
 
 
-def _types_getattr(name: str) -> Any:
-    if name == "Twist":
-        warnings.warn("wmr.model.types.Twist is deprecated: use wmr.model.types.TwistLike", DeprecationWarning, 2)
-        return types.TwistLike
-    raise AttributeError(f"module 'wmr.model.types' has no attribute {name!r}")
+def _to_wpilib(beta: Any, speed: Any = None) -> Any:
+    alpha = conventions.angle_to(beta, "wpilib")
+    return alpha if speed is None else (alpha, validation.finite_array("speed", speed))
 
 
-setattr(types, "__getattr__", _types_getattr)  # noqa: B010 (PEP 562, on a module object)
+def _from_wpilib(alpha: Any, speed: Any = None) -> Any:
+    beta = conventions.angle_from(alpha, "wpilib", "alpha")
+    return beta if speed is None else (beta, validation.finite_array("speed", speed))
+
+
+_SWERVE = {
+    "to_wpilib": ('wmr.model.conventions.angle_to(beta, "wpilib")', _to_wpilib),
+    "from_wpilib": ('wmr.model.conventions.angle_from(alpha, "wpilib")', _from_wpilib),
+    "to_chassis": ('wmr.model.conventions.twist_to(twist, "wpilib")', lambda t: conventions.twist_to(t, "wpilib")),
+    "from_chassis": (
+        'wmr.model.conventions.twist_from(chassis, "wpilib")',
+        lambda c: conventions.twist_from(c, "wpilib", "chassis"),
+    ),
+}
+_moved(swerve, "wmr.swerve", _SWERVE)
+_moved(modules, "wmr.swerve.modules", _SWERVE)
+_chassis = types.ModuleType("wmr.io.chassis", "Deprecated: :mod:`wmr.io.wpilib`.")
+_names = ("twist_of", "chassis_speeds", "is_chassis_speeds")
+_moved(_chassis, "wmr.io.chassis", {n: (f"wmr.io.wpilib.{n}", getattr(wpilib, n)) for n in _names})
+sys.modules.setdefault("wmr.io.chassis", _chassis)
+setattr(io, "chassis", _chassis)  # noqa: B010 (import wmr.io.chassis finds it, as before)
 sys.modules.setdefault("wmr.analysis.simulation", integration)
 
 
@@ -169,19 +199,12 @@ def simulate(*args: Any, **kwargs: Any) -> Any:
 def _cos_sin(beta: Any, out: Any = None) -> tuple[Any, Any]:
     import numpy as np
 
-    warnings.warn(
-        "wmr.model.platform.cos_sin is deprecated: use (np.cos(beta), np.sin(beta)) (1.3x slower at most)",
-        DeprecationWarning,
-        3,
-    )
     beta = np.asarray(beta, dtype=float)
     return (np.cos(beta), np.sin(beta)) if out is None else (np.cos(beta, out=out[0]), np.sin(beta, out=out[1]))
 
 
-def _platform_getattr(name: str) -> Any:
-    if name in ("cos_sin", "cos_sin_checked"):
-        return _cos_sin
-    raise AttributeError(f"module 'wmr.model.platform' has no attribute {name!r}")
-
-
-setattr(platform, "__getattr__", _platform_getattr)  # noqa: B010 (PEP 562, on a module object)
+_COS_SIN = (
+    "(np.cos(beta), np.sin(beta)) (the half-angle form was 1.3x faster, not the 3x a fast path must be)",
+    _cos_sin,
+)
+_moved(platform, "wmr.model.platform", {"cos_sin": _COS_SIN, "cos_sin_checked": _COS_SIN})

@@ -45,7 +45,6 @@ def twist_words(twist, convention: str) -> dict:
     -------
     dict of str to float
     """
-    from ..model.conventions import TWIST_ORDER
+    from ..model.conventions import TWIST_ORDER, Twist
 
-    named = dict(zip(("omega", "vx", "vy"), (float(x) for x in twist)))
-    return {k: named[k] for k in TWIST_ORDER[convention]}
+    return dict(zip(TWIST_ORDER[convention], Twist(*(float(x) for x in twist)).in_convention(convention)))

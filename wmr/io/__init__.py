@@ -18,8 +18,7 @@ ROS 2 (``.yaml``)   layouts   no        no        layouts   layouts   one drive 
 WPILib objects      swerve    no        no        diff.     mecanum   ``SwerveDrive{2,3,4,6}Kinematics``,
                                                                       ``MecanumDriveKinematics``,
                                                                       ``DifferentialDriveKinematics``
-                                                                      (:mod:`wmr.io.wpilib`; chassis speeds:
-                                                                      :mod:`wmr.io.chassis`)
+                                                                      (:mod:`wmr.io.wpilib`, chassis speeds too)
 ==================  ========  ========  ========  ========  ========  =================================================
 
 "layouts" means: only in the arrangements of :mod:`wmr.io.layouts`.  A robot a format cannot express

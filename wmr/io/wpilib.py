@@ -6,8 +6,8 @@ or a track width.  :func:`from_wpilib` builds the :class:`wmr.Robot`, :func:`to_
 They hold no wheel radius (WPILib works in metres of ground travel): :func:`from_wpilib` takes it,
 :func:`to_wpilib` drops it.
 
-Conventions (:mod:`wmr.swerve.modules` states them; the same frames)
-------------------------------------------------------------------------
+Conventions (:mod:`wmr.model.conventions` states and converts them; the same frames)
+----------------------------------------------------------------------------------------
 =========================  ====================================  ============================================
 quantity                   WPILib                                wmr
 =========================  ====================================  ============================================
@@ -18,9 +18,18 @@ module angle               :math:`\alpha` = direction of travel  :math:`\beta = 
 module speed, distance     m/s, m along :math:`\alpha`           :math:`r\dot\theta`, :math:`r\theta`
 =========================  ====================================  ============================================
 
-A ``ChassisSpeeds`` is ``(vx, vy, omega)``; wmr's twist puts :math:`\dot\psi` first.  Passing one
-where a twist is expected reads :math:`v_x` as the turning rate: :func:`twist_of` is the conversion
-(:mod:`wmr.io.chassis`, re-exported here).
+A ``ChassisSpeeds`` is ``(vx, vy, omega)`` and iterates in that order; wmr's twist puts :math:`\dot\psi`
+first, so ``np.asarray(speeds)`` is a twist in the wrong order, silently.  Every function of wmr that takes
+a twist reads such an object by its fields (:func:`wmr.model.arrays.twist_array`); :func:`twist_of` does
+only that (an array's order would be a guess), and :func:`chassis_speeds` makes one.  None of these
+needs wpimath but :func:`chassis_speeds`.
+
+Examples
+--------
+>>> from types import SimpleNamespace
+>>> speeds = SimpleNamespace(vx=1.0, vy=2.0, omega=3.0)          # what a ChassisSpeeds(1, 2, 3) holds
+>>> twist_of(speeds).tolist(), is_chassis_speeds(speeds), is_chassis_speeds([3.0, 1.0, 2.0])
+([3.0, 1.0, 2.0], True, False)
 """
 
 from __future__ import annotations
@@ -32,9 +41,9 @@ import numpy as np
 
 from ..errors import InputTypeError, InputValueError
 from ..model import validation
+from ..model.conventions import Twist, angle_from, angle_to
 from ..model.robot import Robot
-from ..model.types import ArrayLike, FloatArray
-from .chassis import chassis_speeds, twist_of
+from ..model.types import ArrayLike, FloatArray, TwistLike
 from .extras import require
 from .layouts import differential, mecanum, swerve
 from .recognise import recognise
@@ -44,19 +53,11 @@ __all__ = [
     "to_wpilib",
     "twist_of",
     "chassis_speeds",
+    "is_chassis_speeds",
     "module_states",
     "module_positions",
     "from_module_states",
 ]
-
-
-def _angles():
-    """wmr.swerve's alpha = beta - pi/2 and its inverse, imported when used: wmr.swerve may import
-    :mod:`wmr.io.chassis` (and so this package) while it is being imported itself."""
-    from ..swerve.modules import from_wpilib as beta_of_alpha
-    from ..swerve.modules import to_wpilib as alpha_of_beta
-
-    return alpha_of_beta, beta_of_alpha
 
 
 _SWERVE_SIZES = (2, 3, 4, 6)
@@ -168,7 +169,7 @@ def to_wpilib(robot: Robot) -> Any:
 # ------------------------------------------------------------------------------------------ values
 def _modules(kind, beta, values):
     r"""WPILib objects ``kind(value, Rotation2d(alpha))`` with :math:`\alpha = \beta - \pi/2`."""
-    alpha, values = _angles()[0](beta, values)
+    alpha, values = angle_to(beta, "wpilib"), validation.finite_array("speed", values)
     geometry = require("wpilib", f"WPILib {kind} objects", "wpimath.geometry")
     make = getattr(_kinematics(), kind)
     return [make(float(v), geometry.Rotation2d(float(a))) for a, v in zip(np.atleast_1d(alpha), np.atleast_1d(values))]
@@ -223,4 +224,66 @@ def from_module_states(states: Sequence[Any]) -> tuple[FloatArray, FloatArray]:
             )
         alpha.append(float(s.angle.radians()))
         value.append(float(s.speed if hasattr(s, "speed") else s.distance))
-    return _angles()[1](np.array(alpha), np.array(value))
+    return angle_from(np.array(alpha), "wpilib", "alpha"), validation.finite_array("speed", np.array(value))
+
+
+# ------------------------------------------------------------------------------------------ chassis speeds
+def is_chassis_speeds(obj: object) -> bool:
+    """True for a WPILib ``ChassisSpeeds`` or ``Twist2d`` (any object with their attributes), or a sequence of them.
+
+    The objects are those of :data:`wmr.model.arrays.TWIST_OBJECTS` (a ROS ``Twist`` too).
+
+    Parameters
+    ----------
+    obj : object
+
+    Returns
+    -------
+    bool
+    """
+    if isinstance(obj, Sequence) and not isinstance(obj, str):
+        return bool(obj) and all(validation.twist_kind(x) is not None for x in obj)
+    return validation.twist_kind(obj) is not None
+
+
+def twist_of(speeds: Any) -> FloatArray:
+    r"""wmr's twist :math:`[\dot\psi, \dot x, \dot y]` of a ``ChassisSpeeds`` (or the increment of a ``Twist2d``).
+
+    Read by field names (:func:`wmr.model.arrays.twist_array`, the one conversion every function that
+    takes a twist uses).
+
+    Parameters
+    ----------
+    speeds : ChassisSpeeds, Twist2d, or a sequence of them
+        Any object with ``vx, vy, omega`` (or ``dx, dy, dtheta``) attributes: wpimath is not imported.
+
+    Returns
+    -------
+    numpy.ndarray (3,) or (n, 3)
+
+    Raises
+    ------
+    wmr.errors.InputTypeError
+        If ``speeds`` is neither (an array is not accepted: its order would be a guess).
+    """
+    if not is_chassis_speeds(speeds):
+        raise InputTypeError(
+            f"speeds must be a WPILib ChassisSpeeds(vx, vy, omega) or Twist2d(dx, dy, dtheta), "
+            f"or a sequence of them, got {validation.show(speeds)}"
+        )
+    return validation.twist_array("speeds", speeds)
+
+
+def chassis_speeds(twist: TwistLike) -> Any:
+    r"""WPILib's ``ChassisSpeeds(vx, vy, omega)`` of a wmr twist :math:`[\dot\psi, \dot x, \dot y]`.
+
+    Parameters
+    ----------
+    twist : array (3,)
+
+    Returns
+    -------
+    wpimath.kinematics.ChassisSpeeds
+    """
+    one = Twist.of(validation.finite_array("twist", twist, last=3))  # numbers only: an object's order is a guess
+    return require("wpilib", "WPILib ChassisSpeeds", "wpimath.kinematics").ChassisSpeeds(*one.in_convention("wpilib"))

@@ -62,16 +62,20 @@ Errors
 Other libraries' conventions (:data:`CONVENTIONS`)
 --------------------------------------------------
 The frames agree: WPILib's robot frame and ROS's ``base_link`` (REP-103) are x forward, y left,
-counter-clockwise positive, as wmr's body frame.  Two things differ, and are translated at the
-edges only (``--convention`` on the command line; :func:`angle_to`, :func:`angle_from`,
-:data:`TWIST_ORDER`; :func:`wmr.model.arrays.twist_array` reads their twist objects by field):
+counter-clockwise positive, as wmr's body frame; mount points are WPILib's module ``Translation2d``.
+Two things differ, and are translated at the edges only, by this module (``--convention`` on the
+command line; :func:`angle_to`, :func:`angle_from`, :func:`twist_to`, :func:`twist_from`, by
+:data:`TWIST_ORDER`; twist objects are read by field by :func:`wmr.model.arrays.twist_array`, which
+the array checks below this module need, and WPILib's are made by :mod:`wmr.io.wpilib`):
 
 ``wmr``
     Angles are the axle's, :math:`\beta_i` (0: axle along x, the wheel rolls along y); twists
     :math:`[\dot\psi, \dot x, \dot y]` (the paper's order).
 ``wpilib``
-    A module's angle is its direction of travel at positive speed, :math:`\alpha_i = \beta_i - \pi/2`
-    (0: rolls forward); twists ``ChassisSpeeds(vx, vy, omega)``.
+    A module's angle is its direction of travel at positive speed: no slip gives the wheel-centre
+    velocity :math:`r\dot\theta_i(\sin\beta_i, -\cos\beta_i)` (6), WPILib's is
+    :math:`s_i(\cos\alpha_i, \sin\alpha_i)`, so :math:`\alpha_i = \beta_i - \pi/2` (0: rolls forward)
+    and the speed :math:`s_i = r_i\dot\theta_i`; twists ``ChassisSpeeds(vx, vy, omega)``.
 ``ros``
     REP-103: a wheel's steering angle is its heading from x (as WPILib), twists
     ``geometry_msgs/Twist`` ``(linear.x, linear.y, angular.z)``, in SI units (the command line still
@@ -131,12 +135,13 @@ from typing import NamedTuple
 
 import numpy as np
 
-from .arrays import finite_array, twist_array
+from ..errors import InputValueError
+from .arrays import finite_array, twist_array, twist_kind
 from .checks import kind_error
 from .platform import wrap_angle
 from .types import ArrayLike, FloatArray, TwistLike
 
-__all__ = ["CONVENTIONS", "TWIST_ORDER", "Twist", "checked", "angle_to", "angle_from"]
+__all__ = ["CONVENTIONS", "TWIST_ORDER", "Twist", "checked", "angle_to", "angle_from", "twist_to", "twist_from"]
 
 #: the conventions a user can bring, in one line each (see the module notes)
 CONVENTIONS = {
@@ -214,6 +219,62 @@ def angle_from(angle: ArrayLike, convention: str, argument: str = "angle") -> Fl
     return wrap_angle(finite_array(argument, angle) - _OFFSET[checked(convention)])
 
 
+def _order(convention: str) -> list[int]:
+    """Where each of a convention's components is in wmr's twist (indices into ``[omega, vx, vy]``)."""
+    return [TWIST_ORDER["wmr"].index(name) for name in TWIST_ORDER[checked(convention)]]
+
+
+def twist_to(twist: TwistLike, convention: str) -> FloatArray:
+    r"""Twists in the order the ``convention`` writes them (:data:`TWIST_ORDER`): WPILib's and ROS's :math:`(v_x, v_y, \omega)`.
+
+    Parameters
+    ----------
+    twist : array (..., 3), Twist, or twist objects
+        wmr's :math:`[\dot\psi, \dot x, \dot y]`; objects are read by their fields (:func:`wmr.model.arrays.twist_array`).
+    convention : str
+        A key of :data:`CONVENTIONS`.
+
+    Returns
+    -------
+    numpy.ndarray (..., 3)
+
+    Examples
+    --------
+    >>> twist_to([3.0, 1.0, 2.0], "wpilib").tolist()
+    [1.0, 2.0, 3.0]
+    """
+    return twist_array("twist", twist)[..., _order(convention)]
+
+
+def twist_from(values: TwistLike, convention: str, argument: str = "twist") -> FloatArray:
+    r"""wmr's twists :math:`[\dot\psi, \dot x, \dot y]` of numbers in the ``convention``'s order, or of twist objects.
+
+    Parameters
+    ----------
+    values : array (..., 3), or twist objects (a WPILib ``ChassisSpeeds``, a list of them, ...)
+        Numbers in the order of :data:`TWIST_ORDER` ``[convention]``; a :class:`Twist` and objects are
+        read by their names, whatever the convention (:func:`wmr.model.arrays.twist_array`).
+    convention : str
+        A key of :data:`CONVENTIONS`.
+    argument : str, optional
+        The name of ``values`` in messages (the caller's argument).
+
+    Returns
+    -------
+    numpy.ndarray (..., 3)
+
+    Examples
+    --------
+    >>> twist_from([1.0, 2.0, 3.0], "wpilib").tolist()
+    [3.0, 1.0, 2.0]
+    """
+    order = _order(convention)
+    first = values[0] if type(values) in (list, tuple) and values else values
+    if isinstance(first, Twist) or twist_kind(first) is not None:  # its components named: read by name
+        return twist_array(argument, values)
+    return finite_array(argument, values, last=3)[..., np.argsort(order)]
+
+
 class Twist(NamedTuple):
     r"""One twist with its components by name, in wmr's order :math:`[\dot\psi, \dot x, \dot y]`.
 
@@ -256,8 +317,10 @@ class Twist(NamedTuple):
         -------
         Twist
         """
-        omega, vx, vy = (float(v) for v in twist_array("twist", twist).reshape(3))
-        return cls(omega, vx, vy)
+        t = twist_array("twist", twist)
+        if t.size != 3:
+            raise InputValueError(f"twist must be one twist (3,), got shape {t.shape}")
+        return cls(*(float(v) for v in t.reshape(3)))
 
     def in_convention(self, convention: str) -> tuple[float, float, float]:
         """The components in the order a convention writes them (:data:`TWIST_ORDER`).
@@ -271,4 +334,4 @@ class Twist(NamedTuple):
         -------
         tuple of 3 float
         """
-        return tuple(float(getattr(self, name)) for name in TWIST_ORDER[checked(convention)])  # type: ignore[return-value]
+        return tuple(float(self[k]) for k in _order(convention))  # type: ignore[return-value]

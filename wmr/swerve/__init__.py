@@ -3,11 +3,12 @@ r"""Swerve practice: what swerve-drive users need beyond the paper's kinematics.
 A swerve module is a centred steered wheel (:class:`wmr.CentredWheel`); a swerve robot is a
 :class:`wmr.Robot` of them.  Frames, twist order and the mapping to WPILib
 (:math:`\alpha = \beta - \pi/2`, :math:`s = r\dot\theta`, ``ChassisSpeeds(vx, vy, omega)`` =
-:math:`[\dot\psi, \dot x, \dot y]` reordered) are stated in :mod:`wmr.swerve.modules`; the project's
-tests check them against ``robotpy-wpimath`` (``tests/test_swerve_wpilib.py``).
+:math:`[\dot\psi, \dot x, \dot y]` reordered) are stated and converted in :mod:`wmr.model.conventions`
+(:func:`~wmr.model.conventions.angle_to`, :func:`~wmr.model.conventions.twist_to` and back); the
+project's tests check them against ``robotpy-wpimath`` (``tests/test_swerve_wpilib.py``).
 
 - :mod:`wmr.swerve.modules`: module angles and speeds (inverse kinematics), least-squares chassis
-  twist (forward), conversions to and from WPILib's conventions;
+  twist (forward);
 - :mod:`wmr.swerve.optimize`: WPILib's per-module ``optimize`` and the robot-level steering choice;
 - :mod:`wmr.swerve.limits`: desaturation keeping the instantaneous centre, cosine compensation,
   discretisation of a twist over a control period (the SE(2) exponential);
@@ -24,7 +25,7 @@ Usage
 >>> bot = wmr.Robot([wmr.CentredWheel((x, y), r=0.05)
 ...                  for x, y in [(0.3, 0.3), (0.3, -0.3), (-0.3, 0.3), (-0.3, -0.3)]])
 >>> cmd = swerve.module_commands(bot, [0.0, 1.0, 0.0])       # beta (axle angles), speeds r*theta_dot
->>> np.degrees(swerve.to_wpilib(cmd.beta)).round(9).tolist()  # WPILib module angles
+>>> np.degrees(wmr.conventions.angle_to(cmd.beta, "wpilib")).round(9).tolist()  # WPILib module angles
 [0.0, 0.0, 0.0, 0.0]
 >>> now = np.radians([89.0, 91.0, 91.0, 89.0])                 # driving forward; then: drive left
 >>> swerve.optimize_modules(bot, [0.0, 0.0, 1.0], now).flipped.tolist()   # WPILib: opposite ways
@@ -52,18 +53,7 @@ fig = transient_figure(study)``.
 """
 
 from .limits import cosine_compensate, desaturate, desaturation_scale, discretize, se2_exp, se2_log
-from .modules import (
-    ModuleCommand,
-    chassis_twist,
-    from_chassis,
-    from_wpilib,
-    module_commands,
-    module_speeds,
-    radii,
-    swerve_robot,
-    to_chassis,
-    to_wpilib,
-)
+from .modules import ModuleCommand, chassis_twist, module_commands, module_speeds, radii, swerve_robot
 from .optimize import MAX_MODULES, SteeringChoice, optimize_modules, optimize_robot, transition_slip
 from .profiles import TwistProfile, direction_change, spin_and_translate
 from .transient import STRATEGIES, Transient, TransientStudy, resteer_study, resteer_transient
@@ -75,10 +65,6 @@ __all__ = [
     "module_commands",
     "module_speeds",
     "chassis_twist",
-    "to_wpilib",
-    "from_wpilib",
-    "to_chassis",
-    "from_chassis",
     "SteeringChoice",
     "optimize_modules",
     "optimize_robot",

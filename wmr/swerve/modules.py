@@ -4,32 +4,13 @@ A swerve module is a centred steered wheel (:class:`wmr.CentredWheel`): its stee
 :math:`\beta_i` and its rolling rate :math:`\dot\theta_i` are the joint variables; a swerve robot is
 a :class:`wmr.Robot` whose units are all centred wheels.
 
-Conventions (wmr, :mod:`wmr.conventions`, and WPILib's ``SwerveDriveKinematics``)
------------------------------------------------------------------------------------
-Body frame
-    wmr's body frame (origin C, :math:`\mathbf i` forward, :math:`\mathbf k` up, counter-clockwise
-    positive) is WPILib's robot frame (x forward, y left, CCW positive); mount points
-    :math:`\mathbf d_i` are WPILib's module ``Translation2d`` (metres, from the centre of rotation C).
-Twist
-    wmr's :math:`\mathbf t = [\dot\psi, \dot x, \dot y]` (body frame) is WPILib's robot-relative
-    ``ChassisSpeeds(vx, vy, omega)`` with :math:`v_x = \dot x`, :math:`v_y = \dot y`,
-    :math:`\omega = \dot\psi` (:func:`to_chassis`, :func:`from_chassis`).
-Module angle
-    wmr's :math:`\beta_i` is the angle of the **axle** :math:`\mathbf i_i = (\cos\beta_i, \sin\beta_i)`;
-    no slip gives the wheel-centre velocity :math:`\dot{\mathbf h}_i = -r\dot\theta_i\mathbf j_i =
-    r\dot\theta_i(\sin\beta_i, -\cos\beta_i)` (6).  WPILib's module angle :math:`\alpha_i` is the
-    direction of the wheel's velocity for a positive speed :math:`s_i`:
-    :math:`\dot{\mathbf h}_i = s_i(\cos\alpha_i, \sin\alpha_i)`.  Hence
-
-    .. math:: \alpha_i = \beta_i - \tfrac{\pi}{2}, \qquad s_i = r_i\dot\theta_i
-
-    (:func:`to_wpilib`, :func:`from_wpilib`).  ``wmr.steering_angles`` chooses
-    :math:`\dot\theta_i \ge 0`, which is WPILib's ``toSwerveModuleStates`` (speed
-    :math:`\|\dot{\mathbf p}_i\|`, angle of :math:`\dot{\mathbf p}_i`).
-Speed
-    Here a module's **speed** :math:`s_i = r_i\dot\theta_i` is signed (the ground speed of the wheel
-    along :math:`-\mathbf j_i`, m/s); turning the module by :math:`\pi` and negating :math:`s_i` gives
-    the same wheel velocity.
+In WPILib's terms (:mod:`wmr.model.conventions` converts, at the edges): the body frame is WPILib's
+robot frame, the mount points :math:`\mathbf d_i` its module ``Translation2d``, the twist its
+``ChassisSpeeds``; its module angle is :math:`\alpha_i = \beta_i - \pi/2`, the direction of the wheel's
+velocity, and its module speed is wmr's :math:`s_i = r_i\dot\theta_i`, signed here (the ground speed
+of the wheel along :math:`-\mathbf j_i`, m/s): turning a module by :math:`\pi` and negating :math:`s_i`
+gives the same wheel velocity.  ``wmr.steering_angles`` chooses :math:`\dot\theta_i \ge 0`, which is
+WPILib's ``toSwerveModuleStates`` (speed :math:`\|\dot{\mathbf p}_i\|`, angle of :math:`\dot{\mathbf p}_i`).
 """
 
 from __future__ import annotations
@@ -42,7 +23,6 @@ from ..analysis.kinematics import Solution, forward, inverse
 from ..analysis.steering import steering_angles
 from ..errors import InputValueError
 from ..model import validation
-from ..model.conventions import angle_from, angle_to
 from ..model.robot import Robot
 from ..model.types import ArrayLike, FloatArray, TwistLike
 
@@ -53,10 +33,6 @@ __all__ = [
     "module_commands",
     "module_speeds",
     "chassis_twist",
-    "to_wpilib",
-    "from_wpilib",
-    "to_chassis",
-    "from_chassis",
 ]
 
 
@@ -216,87 +192,3 @@ def chassis_twist(robot: Robot, beta: ArrayLike, speed: ArrayLike) -> Solution:
             f"(largest |speed| = {np.abs(speed).max():.3g})"
         )
     return forward(robot, beta, rates)
-
-
-def to_wpilib(beta: ArrayLike, speed: ArrayLike | None = None) -> FloatArray | tuple[FloatArray, FloatArray]:
-    r"""WPILib's module angle :math:`\alpha = \beta - \pi/2` (wrapped to :math:`(-\pi, \pi]`); speeds are the same.
-
-    Parameters
-    ----------
-    beta : array (...)
-        wmr's steering angles (axle directions).
-    speed : array (...), optional
-        Signed module speeds, returned unchanged (as an array).
-
-    Returns
-    -------
-    numpy.ndarray or tuple
-        ``alpha`` (...), or ``(alpha, speed)`` when ``speed`` is given.
-
-    Examples
-    --------
-    >>> float(np.degrees(to_wpilib(np.pi / 2)))                 # axle along y: rolls forward
-    0.0
-    """
-    alpha = angle_to(beta, "wpilib")
-    return alpha if speed is None else (alpha, validation.finite_array("speed", speed))
-
-
-def from_wpilib(alpha: ArrayLike, speed: ArrayLike | None = None) -> FloatArray | tuple[FloatArray, FloatArray]:
-    r"""wmr's steering angle :math:`\beta = \alpha + \pi/2` (wrapped) from WPILib's module angle.
-
-    Parameters
-    ----------
-    alpha : array (...)
-        WPILib module angles (direction of travel at positive speed), radians.
-    speed : array (...), optional
-        Signed module speeds, returned unchanged (as an array).
-
-    Returns
-    -------
-    numpy.ndarray or tuple
-        ``beta`` (...), or ``(beta, speed)`` when ``speed`` is given.
-    """
-    beta = angle_from(alpha, "wpilib", "alpha")
-    return beta if speed is None else (beta, validation.finite_array("speed", speed))
-
-
-def to_chassis(twist: TwistLike) -> FloatArray:
-    r"""WPILib's ``ChassisSpeeds`` order :math:`(v_x, v_y, \omega)` of a wmr twist :math:`[\dot\psi, \dot x, \dot y]`.
-
-    Parameters
-    ----------
-    twist : array (..., 3)
-
-    Returns
-    -------
-    numpy.ndarray (..., 3)
-
-    Examples
-    --------
-    >>> to_chassis([3.0, 1.0, 2.0]).tolist()
-    [1.0, 2.0, 3.0]
-    """
-    return np.roll(validation.twist_array("twist", twist), -1, axis=-1)
-
-
-def from_chassis(chassis: TwistLike) -> FloatArray:
-    r"""wmr's twist :math:`[\dot\psi, \dot x, \dot y]` from WPILib's :math:`(v_x, v_y, \omega)`.
-
-    Parameters
-    ----------
-    chassis : array (..., 3) or ChassisSpeeds
-        Numbers in WPILib's order, or a WPILib ``ChassisSpeeds`` itself (read by its fields).
-
-    Returns
-    -------
-    numpy.ndarray (..., 3)
-
-    Examples
-    --------
-    >>> from_chassis([1.0, 2.0, 3.0]).tolist()
-    [3.0, 1.0, 2.0]
-    """
-    if validation.twist_kind(chassis) is not None:
-        return validation.twist_array("chassis", chassis)
-    return np.roll(validation.finite_array("chassis", chassis, last=3), 1, axis=-1)
