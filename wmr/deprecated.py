@@ -12,7 +12,7 @@ before                                         now
 ``unit.drawn_angle(beta)``                     :func:`wmr.plot.parts.drawn_angle` ``(unit, beta)``
 ``Kind.file_keys()``, ``Kind.FILE_KEYS``       :func:`wmr.io.wheel_tables.file_keys` ``(Kind)``, ``register``
 ``unit.dead_zone()``                           :func:`wmr.analysis.unit_design.dead_zone` ``(unit)``
-``unit.isotropy_advice()``                     :func:`wmr.analysis.unit_design.isotropic_change` ``(unit).words``
+``unit.isotropy_advice()``                     :func:`wmr.words.advice.change` of ``isotropic_change(unit)``
 ``unit.isotropic_variant()``                   :func:`wmr.analysis.unit_design.isotropic_change` ``(unit).unit``
 ``unit.other_builds()``                        :func:`wmr.analysis.unit_design.other_builds` ``(unit)``
 ``unit.mechanism(height)``                     :func:`wmr.io.mechanism.mechanism` ``(unit, height)``
@@ -22,6 +22,9 @@ before                                         now
 ``wmr.model.wheels.mechanism``                 :mod:`wmr.io.mechanism` (``UnitMechanism``: no base class any more)
 ``wmr.model.wheels.swedish.NO_FAITHFUL...``    :data:`wmr.io.mechanism.NO_FAITHFUL_MECHANISM`
 ``wmr.model.wheels.design.DesignHints``        :mod:`wmr.analysis.unit_design` (no base class any more)
+``Change.words``                               :func:`wmr.words.advice.change` ``(change)``
+``Advice.text``                                :func:`wmr.words.advice.sentence` ``(advice)``
+``wmr.analysis.actuation.describe_twist``      :func:`wmr.words.limitations.describe_twist`
 ``wmr.analysis.glossary``                      :mod:`wmr.words.glossary`
 ``wmr.analysis.families.FAMILIES, MEANINGS``   :mod:`wmr.words.families` (``description``, ``meaning``)
 ``wmr.sim.Sample``                             :class:`wmr.sim.Reading` (the sweeps' ``Sample`` is another thing)
@@ -37,13 +40,15 @@ import warnings
 from collections.abc import Callable
 from typing import Any
 
-from .analysis import families, integration, overview, unit_design
+from .analysis import actuation, advice, families, integration, overview, unit_design
 from .io import mechanism, wheel_tables
 from .model import types
 from .model.wheels import WheelUnit, swedish
 from .plot import parts
+from .words import advice as advice_words
 from .words import families as family_words
 from .words import glossary
+from .words import limitations as limitation_words
 
 __all__ = ["MOVED", "simulate"]
 
@@ -53,11 +58,13 @@ MOVED = {
     "WheelUnit.drawn_angle(beta)": "wmr.plot.parts.drawn_angle(unit, beta)",
     "WheelUnit.file_keys()": "wmr.io.wheel_tables.file_keys(kind)",
     "WheelUnit.dead_zone()": "wmr.analysis.unit_design.dead_zone(unit)",
-    "WheelUnit.isotropy_advice()": "wmr.analysis.unit_design.isotropic_change(unit).words",
+    "WheelUnit.isotropy_advice()": "wmr.words.advice.change(wmr.analysis.unit_design.isotropic_change(unit))",
     "WheelUnit.isotropic_variant()": "wmr.analysis.unit_design.isotropic_change(unit).unit",
-    "WheelUnit.other_builds()": "wmr.analysis.unit_design.other_builds(unit), Change(words, unit) objects",
+    "WheelUnit.other_builds()": "wmr.analysis.unit_design.other_builds(unit), Change(kind, unit) objects",
     "WheelUnit.mechanism(height)": "wmr.io.mechanism.mechanism(unit, height)",
     "WheelUnit.root_body(height)": "wmr.io.mechanism.root_body(unit, height) (register a kind's with root_body.register)",
+    "Change.words": "wmr.words.advice.change(change)",
+    "Advice.text": "wmr.words.advice.sentence(advice)",
 }
 
 
@@ -90,7 +97,7 @@ def _method(old: str, new: Callable[..., Any]) -> Callable[..., Any]:
 
 def _words(unit: Any) -> str | None:
     change = unit_design.isotropic_change(unit)
-    return None if change is None else change.words
+    return None if change is None else advice_words.change(change)
 
 
 def _variant(unit: Any) -> Any:
@@ -99,7 +106,7 @@ def _variant(unit: Any) -> Any:
 
 
 def _builds(unit: Any) -> tuple[tuple[str, Any], ...]:
-    return tuple((c.words, c.unit) for c in unit_design.other_builds(unit))
+    return tuple((advice_words.change(c), c.unit) for c in unit_design.other_builds(unit))
 
 
 for _old, _new in (
@@ -114,6 +121,21 @@ for _old, _new in (
 ):
     setattr(WheelUnit, _old.split(".")[1].split("(")[0], _method(_old, _new))
 WheelUnit.file_keys = classmethod(_method("WheelUnit.file_keys()", wheel_tables.file_keys))  # type: ignore[attr-defined]
+
+
+def _attribute(old: str, new: Callable[[Any], str]) -> property:
+    """The old attribute: warns, then returns the words of the record."""
+
+    def get(self: Any) -> str:
+        _warn(old)
+        return new(self)
+
+    get.__doc__ = f"Deprecated: {MOVED[old]}.\n\nReturns\n-------\nstr\n"
+    return property(get)
+
+
+unit_design.Change.words = _attribute("Change.words", advice_words.change)  # type: ignore[attr-defined]
+advice.Advice.text = _attribute("Advice.text", advice_words.sentence)  # type: ignore[attr-defined]
 sys.modules.setdefault("wmr.model.wheels.parts", parts)
 sys.modules.setdefault("wmr.model.wheels.filekeys", wheel_tables)
 sys.modules.setdefault("wmr.model.wheels.mechanism", mechanism)
@@ -121,21 +143,27 @@ swedish.NO_FAITHFUL_MECHANISM = mechanism.NO_FAITHFUL_MECHANISM  # type: ignore[
 sys.modules.setdefault("wmr.analysis.glossary", glossary)
 
 
-def _moved_words(module: str) -> Callable[[str], Any]:
-    """A module ``__getattr__`` (PEP 562) that finds FAMILIES and MEANINGS in wmr.words.families, with a warning."""
+def _moved_words(module: str, names: dict[str, tuple[str, Any]]) -> Callable[[str], Any]:
+    """A module ``__getattr__`` (PEP 562) that finds each old name (key) where it went (the value), with a warning."""
 
     def __getattr__(name: str) -> Any:
-        if name in ("FAMILIES", "MEANINGS"):
-            warnings.warn(f"{module}.{name} is deprecated: use wmr.words.families.{name}", DeprecationWarning, 2)
-            return getattr(family_words, name)
+        if name in names:
+            warnings.warn(f"{module}.{name} is deprecated: use {names[name][0]}", DeprecationWarning, 2)
+            return names[name][1]
         raise AttributeError(f"module {module!r} has no attribute {name!r}")
 
     return __getattr__
 
 
+_FAMILY_WORDS = {n: (f"wmr.words.families.{n}", getattr(family_words, n)) for n in ("FAMILIES", "MEANINGS")}
+_TWIST_WORDS = {"describe_twist": ("wmr.words.limitations.describe_twist", limitation_words.describe_twist)}
 sys.modules.setdefault("wmr.analysis.singular", families)
-setattr(families, "__getattr__", _moved_words("wmr.analysis.singular"))  # noqa: B010 (PEP 562, on a module object)
-setattr(overview, "__getattr__", _moved_words("wmr.analysis.overview"))  # noqa: B010 (PEP 562, on a module object)
+for _module, _name, _names in (
+    (families, "wmr.analysis.singular", _FAMILY_WORDS),
+    (overview, "wmr.analysis.overview", _FAMILY_WORDS),
+    (actuation, "wmr.analysis.actuation", _TWIST_WORDS),
+):
+    setattr(_module, "__getattr__", _moved_words(_name, _names))  # noqa: B010 (PEP 562, on a module object)
 
 
 def _types_getattr(name: str) -> Any:
