@@ -167,6 +167,21 @@ def test_advice_that_gains_nothing_by_itself_says_so():
     assert len(both) == 1 and both[0].advised and both[0].after["kappa_J2"] == pytest.approx(1.0)
 
 
+def test_a_change_that_costs_a_motion_names_the_limitation_it_brings():
+    """Omni rollers on the driven Swedish wheels of a robot on passive fixed wheels: the motors lose the drive
+    straight ahead; the limitation named is that one, not the sideways one the robot had before."""
+    fixed = [wmr.FixedWheel((0.0, y), r=0.1, angle=np.pi / 2, driven={"drive": False}) for y in (0.3, -0.3)]
+    bot = wmr.Robot(fixed + [wmr.SwedishWheel((0.4, y), r=0.1, angle=0.0, roller=np.pi / 4) for y in (0.3, -0.3)])
+    (had,) = limitations(bot)
+    assert had.kind is LimitationKind.FORBIDDEN and _headings(had) == [-90.0]
+    omni = next(t for t in advice(bot)[0] if t.suggestion is Suggestion.CHANGE_UNITS)
+    assert omni.verdict is Verdict.COSTS_MOTION and (
+        omni.before["actuated_mobility"],
+        omni.after["actuated_mobility"],
+    ) == (2, 1)
+    assert omni.lost is not None and omni.lost.kind is LimitationKind.UNCONTROLLED and _headings(omni.lost) == [0.0]
+
+
 def test_castors_are_passive_by_default_in_files_and_rollers_are_passive():
     bot = _load("diff_drive_castors")
     assert driven_columns(bot).tolist() == [True, True, False, False, False, False]

@@ -131,3 +131,21 @@ def test_advice_on_J_L1_and_a_singular_J2_in_words():
     assert advice_words.sentence(equal) == (
         "J2: kappa(J2) = inf: make the singular values of every unit's block equal (wheel 1: 2, 1)"
     )
+
+
+def test_the_moved_words_warn_and_answer_as_their_replacements():
+    """wmr.deprecated: the words that left the records warn, naming their replacement."""
+    from wmr.analysis import actuation
+    from wmr.analysis.unit_design import isotropic_change
+
+    bot = wmr.paper_robot("offset", r=0.1, d=0.03)
+    (tip,) = advice(bot)[0]
+    with pytest.warns(DeprecationWarning, match=r"Advice.text is deprecated: use wmr.words.advice.sentence\(advice\)"):
+        assert tip.text == advice_words.sentence(tip)  # type: ignore[attr-defined]
+    change = isotropic_change(bot.wheels[0])
+    with pytest.warns(DeprecationWarning, match=r"Change.words is deprecated: use wmr.words.advice.change\(change\)"):
+        assert change.words == advice_words.change(change)  # type: ignore[union-attr, arg-type]
+    with pytest.warns(
+        DeprecationWarning, match="describe_twist is deprecated: use wmr.words.limitations.describe_twist"
+    ):
+        assert actuation.describe_twist(bot, [0, 1, 0]) == "straight ahead (along x)"  # type: ignore[attr-defined]

@@ -90,7 +90,7 @@ class Advice:
     point : tuple of float or None
         ``MOVE_C``: the new C, in the robot's frame (round-off of a zero coordinate written 0).
     radii : tuple of float
-        ``SAME_RADIUS``: the wheels' radii, ascending.
+        ``SAME_RADIUS``, ``BOTH``: the wheels' radii, ascending.
     singular_values : tuple of tuple of float
         ``SINGULAR``, ``EQUAL_VALUES``: those of each unit's block of J2.
     motor_kappa : float or None

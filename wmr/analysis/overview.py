@@ -226,6 +226,8 @@ class Overview:
     advice : list of Advice
         What to change to make :math:`\mathbf J_{L1}` and :math:`\mathbf J_2` isotropic, each checked on
         the changed robot (:mod:`wmr.analysis.advice`); empty if they are.
+    advised : list of bool
+        For each advice, :attr:`~wmr.analysis.advice.Advice.advised`.
     dead_zone : float or None
         :func:`dead_zone_radius`.
     singular : list of dict
@@ -255,21 +257,12 @@ class Overview:
     kappa_J: dict
     isotropic: dict
     advice: list = field(default_factory=list)
+    advised: list = field(default_factory=list)
     dead_zone: float | None = None
     singular: list = field(default_factory=list)
     steered: tuple = ()
     dead_zones: tuple = ()
     drivable: int = 0
-
-    @property
-    def advised(self) -> list[bool]:
-        """For each advice, whether it is advised (:attr:`wmr.analysis.advice.Advice.advised`).
-
-        Returns
-        -------
-        list of bool
-        """
-        return [a.advised for a in self.advice]
 
 
 def overview(robot: Robot, grid: int | None = None, twists: int = TWISTS, seed: int = 0) -> Overview:
@@ -336,6 +329,7 @@ def overview(robot: Robot, grid: int | None = None, twists: int = TWISTS, seed: 
         },
         isotropic=iso,
         advice=tips,
+        advised=[t.advised for t in tips],
         dead_zone=dead_zone_radius(robot),
         singular=singular_families(robot, L),
         steered=robot.steered,
