@@ -82,7 +82,7 @@ class Advice:
     after : dict
         :func:`profile` of the changed robot (empty when nothing can be changed).
     units : tuple of int
-        The units changed or concerned (indices in :attr:`wmr.Robot.wheels`).
+        The units changed or concerned (indices in ``robot.wheels``).
     changes : tuple of Change
         Their changes (``REBUILD``, ``CHANGE_UNITS``).
     kinds : tuple of str
@@ -115,7 +115,7 @@ class Advice:
 
     @property
     def advised(self) -> bool:
-        """Whether the change is advised (:attr:`verdict` ``ADVISED``).
+        """Whether the change is advised (its ``verdict`` is ``ADVISED``).
 
         Returns
         -------

@@ -63,7 +63,7 @@ class Limitation:
         The one motion left (``NO_TURNING``, ``NO_STRAIGHT``), the directions forbidden
         (``FORBIDDEN``...), the motion with every motor stopped (``UNCONTROLLED``); else empty.
     unit : int or None
-        ``UNSTEERED``: the unit's index in :attr:`wmr.Robot.wheels`.
+        ``UNSTEERED``: the unit's index in ``robot.wheels``.
     actuated_mobility : int or None
         ``UNCONTROLLED``: the actuated mobility, below :math:`\\delta_m`.
     delta_m : int or None
