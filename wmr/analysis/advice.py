@@ -41,7 +41,7 @@ from .kinematics import inverse
 from .limitations import Limitation, limitations
 from .linalg import condition_number
 from .mobility import admissible_twists
-from .unit_design import Change, ChangeKind, isotropic_change, other_builds
+from .unit_design import Change, isotropic_change, other_builds
 
 __all__ = ["Suggestion", "Verdict", "Advice", "profile", "advice", "actuation_advice", "motor_conditioning"]
 
@@ -341,28 +341,17 @@ def advice(robot, before=None) -> tuple[list[Advice], dict]:
         )
     elif not j2:
         changes = {k: c for k, u in enumerate(robot.wheels) if (c := isotropic_change(u)) is not None}
-        groups: dict[ChangeKind, list[int]] = {}  # each unit's own change, wheels grouped by its kind
-        for k, c in changes.items():
-            groups.setdefault(c.kind, []).append(k)
-        for ks in groups.values():
-            mine = tuple(changes[k] for k in ks)
-            out.append(
-                _change(
-                    robot,
-                    before,
-                    {k: changes[k].unit for k in ks},
-                    Suggestion.CHANGE_UNITS,
-                    units=tuple(ks),
-                    changes=mine,
-                )
-            )
+        for kind in dict.fromkeys(c.kind for c in changes.values()):  # each unit's own change, grouped by its kind
+            group = {k: c for k, c in changes.items() if c.kind is kind}
+            new, changed = {k: c.unit for k, c in group.items()}, tuple(group.values())
+            out.append(_change(robot, before, new, Suggestion.CHANGE_UNITS, units=tuple(group), changes=changed))
         radii = tuple(sorted({float(u.r) for u in robot.wheels}))
         if len(radii) > 1:
             same = {k: dataclasses.replace(u, r=radii[-1]) for k, u in enumerate(robot.wheels)}
             out.append(_change(robot, before, same, Suggestion.SAME_RADIUS, radii=radii))
-            if groups:
+            if changes:
                 both = {k: (c.unit if (c := isotropic_change(u)) else u) for k, u in same.items()}
                 out.append(_change(robot, before, both, Suggestion.BOTH, radii=radii))
-        if not groups and len(radii) == 1:
+        if not changes and len(radii) == 1:
             out.append(Advice("J2", Suggestion.EQUAL_VALUES, Verdict.ADVISED, before, {}, singular_values=values))
     return out, {"J_L1": jl1, "J2": bool(j2)}

@@ -62,7 +62,7 @@ def sentence(a: Advice) -> str:
     b, f, S = a.before, a.after, Suggestion
     wheels = ", ".join(str(k + 1) for k in a.units)
     if a.suggestion is S.MOVE_C:
-        x, y = a.point  # type: ignore[misc]
+        x, y = a.point or (0.0, 0.0)
         return (
             f"J_L1: move C to the centroid of the mount points, ({x:.4g}, {y:.4g}) in this frame (subtract it from "
             f"every position); then L = {f['L']:.4g} gives kappa(J_L1) = {_g(f['kappa_JL1'])} (now "

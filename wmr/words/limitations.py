@@ -37,7 +37,7 @@ def where(m: Motion) -> str:
     str
     """
     if m.kind is MotionKind.TRANSLATION:
-        a = float(m.heading)  # type: ignore[arg-type]
+        a = m.heading or 0.0
         if abs(a) < 0.5:
             return "straight ahead (along x)"
         if abs(abs(a) - 90.0) < 0.5:
@@ -47,7 +47,7 @@ def where(m: Motion) -> str:
         return "nowhere (standing still)"
     if m.kind is MotionKind.SPIN:
         return "on the spot (turning about C)"
-    x, y = m.centre  # type: ignore[misc]
+    x, y = m.centre or (0.0, 0.0)
     return f"in a turn about the point ({x:.3g}, {y:.3g}) m"
 
 
