@@ -55,6 +55,7 @@ from wmr.model import arrays, backend, conventions, limits, platform, tolerance,
 from wmr.model.backend import NUMERIC, SYMBOLIC
 from wmr.model.wheels import joints, unsteered
 from wmr.words import glossary
+from wmr.words import limitations as limitation_words
 
 x_sym = sp.Symbol("x", positive=True)
 RNG = np.random.default_rng(2002)
@@ -701,7 +702,10 @@ CASES = [
     Case("driven_columns", lambda robot: actuation.driven_columns(robot), (R,)),
     Case("free_twists", lambda robot, beta: actuation.free_twists(robot, beta), (R, ("beta", "beta1"))),
     Case("uncontrolled", lambda robot, beta, twist: actuation.uncontrolled(robot, beta, twist), (R, B, T), allow="inf"),
-    Case("describe_twist", lambda robot, twist: actuation.describe_twist(robot, twist), (R, ("twist", "twist1"))),
+    Case("motion", lambda robot, twist: actuation.motion(robot, twist), (R, ("twist", "twist1"))),
+    Case(
+        "describe_twist", lambda robot, twist: limitation_words.describe_twist(robot, twist), (R, ("twist", "twist1"))
+    ),
     Case("limitations", lambda robot: limitations.limitations(robot), (R,)),
     Case("steering_limitations", lambda robot: limitations.steering_limitations(robot), (R,)),
     Case("profile", lambda robot: advice.profile(robot), (R,), allow="inf"),
@@ -814,6 +818,13 @@ NOT_FUZZED = {
     "first_written": "a kernel of the reduction, compared with rounding the whole chunk in tests/test_sweep.py",
     "finish": "as Partial",
     "Advice": "the result type of advice",
+    "Suggestion": "an enum of Advice",
+    "Verdict": "an enum of Advice",
+    "Limitation": "the result type of limitations",
+    "LimitationKind": "an enum of Limitation",
+    "Motion": "the result type of motion",
+    "MotionKind": "an enum of Motion",
+    "ChangeKind": "an enum of Change",
     "Entry": "the result type of lookup",
     "terms": "no arguments",
     "Change": "the result type of isotropic_change and other_builds",

@@ -8,9 +8,10 @@ import numpy as np
 import pytest
 
 import wmr
-from wmr.analysis.actuation import actuated_mobility, driven_columns, free_twists, uncontrolled
-from wmr.analysis.advice import advice, profile
-from wmr.analysis.limitations import limitations
+from wmr.analysis.actuation import MotionKind, actuated_mobility, driven_columns, free_twists, uncontrolled
+from wmr.analysis.advice import Suggestion, Verdict, advice, motor_conditioning, profile
+from wmr.analysis.limitations import LimitationKind, limitations
+from wmr.analysis.unit_design import ChangeKind
 from wmr.cli import main
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -41,6 +42,12 @@ def _run(capsys, *argv):
     code = main([str(a) for a in argv])
     out = capsys.readouterr()
     return code, out.out, out.err
+
+
+def _headings(lim):
+    """The lines of travel of a limitation's motions (all translations), degrees from x."""
+    assert all(m.kind is MotionKind.TRANSLATION for m in lim.motions), lim
+    return [round(m.heading, 6) + 0.0 for m in lim.motions]
 
 
 def _twist_dim(F, cols):
@@ -104,30 +111,46 @@ def test_parallel_omni_wheels_cannot_be_driven_sideways(capsys, tmp_path):
     assert all(abs(v) < 1e-12 for k, v in data["rates"].items() if k.startswith("theta"))
     code, out, _ = _run(capsys, "analyze", path, "--json", "--grid", "100", "--twists", "100")
     data = json.loads(out)
-    assert data["actuated_mobility"] == 2 and data["uncontrolled"] == ["sideways (along y)"]
-    assert any("sideways" in s for s in data["limitations"])
+    assert data["actuated_mobility"] == 2 and len(data["uncontrolled"]) == 1 == len(data["limitations"])
+    (lim,) = limitations(wmr.load(path))
+    assert (lim.kind, lim.actuated_mobility, lim.delta_m, _headings(lim)) == (
+        LimitationKind.UNCONTROLLED,
+        2,
+        3,
+        [90.0],
+    )
 
 
 def test_same_hand_mecanum_is_flagged_and_its_fix_is_checked(capsys):
     code, out, _ = _run(capsys, "analyze", ENG / "mecanum_same_hand.toml", "--json", "--grid", "100", "--twists", "100")
     data = json.loads(out)
     assert code == 0 and (data["class"], data["actuated_mobility"]) == ("(3,0)", 2)
-    assert data["uncontrolled"] == ["diagonally (along 45 deg from x)"]
-    assert any(s.startswith("the motors cannot move it diagonally") for s in data["limitations"])
-    fix = [a for a in data["advice"] if a.startswith("actuation:")]
-    assert len(fix) == 1 and "wheel 2 of the other hand" in fix[0] and "wheel 3 of the other hand" in fix[0]
-    assert "then actuated mobility 3 (now 2)" in fix[0]
+    assert data["advised"] == [True, False] and len(data["advice"]) == 2
+    bot = _load("mecanum_same_hand")
+    (lim,) = limitations(bot)
+    assert lim.kind is LimitationKind.UNCONTROLLED and _headings(lim) == [45.0]  # the diagonal
+    fix, omni = advice(bot)[0]
+    assert (fix.matrix, fix.suggestion, fix.verdict, fix.units) == (
+        "actuation",
+        Suggestion.REBUILD,
+        Verdict.ADVISED,
+        (1, 2),
+    )
+    assert [c.kind for c in fix.changes] == [ChangeKind.OTHER_HAND] * 2
+    assert (fix.before["actuated_mobility"], fix.after["actuated_mobility"]) == (2, 3)
     # the fix is the X pattern of mecanum_x.toml; omni wheels are not advised (they lose the sideways motion)
     x = _load("mecanum_x")
     assert [float(u.roller) for u in x.wheels] == pytest.approx(np.radians([45, -45, -45, 45]))
-    omni = [(a, ok) for a, ok in zip(data["advice"], data["advised"]) if "omni" in a]
-    assert omni and not omni[0][1] and "not advised" in omni[0][0] and "sideways" in omni[0][0]
+    assert [float(c.unit.roller) for c in fix.changes] == pytest.approx(np.radians([-45, -45]))  # type: ignore[attr-defined]
+    assert fix.motor_kappa == pytest.approx(motor_conditioning(x, np.zeros(4)))
+    assert omni.changes[0].kind is ChangeKind.OMNI_ROLLERS and omni.verdict is Verdict.COSTS_MOTION
+    assert omni.lost is not None and omni.lost.kind is LimitationKind.UNCONTROLLED and _headings(omni.lost) == [90.0]
 
 
 def test_mecanum_x_omni_advice_is_not_advised():
     tips, _ = advice(_load("mecanum_x"))
-    omni = [t for t in tips if "omni" in t.text]
-    assert len(omni) == 1 and not omni[0].advised
+    omni = [t for t in tips if t.suggestion is Suggestion.CHANGE_UNITS]
+    assert len(omni) == 1 and not omni[0].advised and omni[0].changes[0].kind is ChangeKind.OMNI_ROLLERS
     assert omni[0].after["kappa_J2"] == pytest.approx(1.0) and omni[0].after["actuated_mobility"] == 2
     assert omni[0].before["kappa_J2"] == pytest.approx(1 + np.sqrt(2))  # sqrt((1 + cos g) / (1 - cos g))
 
@@ -135,10 +158,28 @@ def test_mecanum_x_omni_advice_is_not_advised():
 def test_advice_that_gains_nothing_by_itself_says_so():
     """AGV: equal radii alone leave kappa(J2) = 2.5 (the castors' blocks stay unequal); with d = r as well, 1."""
     tips, _ = advice(_load("agv_two_steer"))
-    radius, both = [t for t in tips if "the radius" in t.text], [t for t in tips if "both changes" in t.text]
-    assert len(radius) == 1 and radius[0].text.endswith("no gain by itself") and not radius[0].advised
+    radius, both = (
+        [t for t in tips if t.suggestion is Suggestion.SAME_RADIUS],
+        [t for t in tips if t.suggestion is Suggestion.BOTH],
+    )
+    assert len(radius) == 1 and radius[0].verdict is Verdict.NO_GAIN and not radius[0].advised
     assert radius[0].after["kappa_J2"] == pytest.approx(radius[0].before["kappa_J2"]) == pytest.approx(2.5)
     assert len(both) == 1 and both[0].advised and both[0].after["kappa_J2"] == pytest.approx(1.0)
+
+
+def test_a_change_that_costs_a_motion_names_the_limitation_it_brings():
+    """Omni rollers on the driven Swedish wheels of a robot on passive fixed wheels: the motors lose the drive
+    straight ahead; the limitation named is that one, not the sideways one the robot had before."""
+    fixed = [wmr.FixedWheel((0.0, y), r=0.1, angle=np.pi / 2, driven={"drive": False}) for y in (0.3, -0.3)]
+    bot = wmr.Robot(fixed + [wmr.SwedishWheel((0.4, y), r=0.1, angle=0.0, roller=np.pi / 4) for y in (0.3, -0.3)])
+    (had,) = limitations(bot)
+    assert had.kind is LimitationKind.FORBIDDEN and _headings(had) == [90.0]
+    omni = next(t for t in advice(bot)[0] if t.suggestion is Suggestion.CHANGE_UNITS)
+    assert omni.verdict is Verdict.COSTS_MOTION and (
+        omni.before["actuated_mobility"],
+        omni.after["actuated_mobility"],
+    ) == (2, 1)
+    assert omni.lost is not None and omni.lost.kind is LimitationKind.UNCONTROLLED and _headings(omni.lost) == [0.0]
 
 
 def test_castors_are_passive_by_default_in_files_and_rollers_are_passive():
@@ -157,14 +198,16 @@ def test_skid_steer_states_its_limit():
     rows = np.array([[u.position[0], 0.0, 1.0] for u in bot.wheels])
     assert np.linalg.matrix_rank(rows) == 2 and (c.delta_m, c.delta_s, c.rank_C1f) == (1, 0, 2)
     assert c.name == "degenerate: the fixed wheels allow only a translation along one direction (no turning)"
-    assert limitations(bot) == ["turning requires skidding: it can only drive straight ahead (along x)"]
+    (lim,) = limitations(bot)
+    assert lim.kind is LimitationKind.NO_TURNING and _headings(lim) == [0.0]
     assert int(actuated_mobility(bot, c.beta)) == 1
 
 
 def test_limitations_of_the_others():
-    assert "cannot move sideways" in limitations(_load("diff_drive_castors"))[0]
-    assert "car-like" in limitations(_load("car"))[0]
-    assert "re-steer" in limitations(_load("swerve_offcentre"))[0]
+    (diff,) = limitations(_load("diff_drive_castors"))  # no motion has a part along the axles
+    assert diff.kind is LimitationKind.FORBIDDEN and _headings(diff) == [90.0]
+    assert [x.kind for x in limitations(_load("car"))] == [LimitationKind.CAR_LIKE]
+    assert [x.kind for x in limitations(_load("swerve_offcentre"))] == [LimitationKind.ONE_MOTION]
     for name in ("x_drive", "mecanum_x", "kiwi", "powered_castors3"):
         assert limitations(_load(name)) == []
 
@@ -186,8 +229,10 @@ def test_car_advice_gives_the_L_of_the_moved_robot():
         == pytest.approx(1.32, abs=5e-3)
     )
     tips, iso = advice(car)
-    assert not iso["J_L1"] and tips[0].matrix == "J_L1" and tips[0].advised
-    assert "then L = 1.557 gives kappa(J_L1) = 1 (now 2.191 at L = 2.06)" in tips[0].text
+    assert (
+        not iso["J_L1"] and tips[0].matrix == "J_L1" and tips[0].advised and tips[0].point == pytest.approx((1.35, 0))
+    )
+    assert tips[0].before["L"] == pytest.approx(L_old) and tips[0].before["kappa_JL1"] == pytest.approx(2.191, abs=5e-4)
     assert tips[0].after["L"] == pytest.approx(L_moved) and tips[0].after["kappa_JL1"] == pytest.approx(1.0)
 
 
@@ -200,7 +245,7 @@ def test_moving_C_is_checked_for_the_forklift_and_the_swerve(name):
     L = wmr.characteristic_length(moved)
     assert tip.after["L"] == pytest.approx(L) and L != pytest.approx(wmr.characteristic_length(bot))
     assert float(wmr.condition_number(moved.J1(L=L))) == pytest.approx(1.0) == tip.after["kappa_JL1"]
-    assert f"L = {L:.4g} gives kappa(J_L1) = 1" in tip.text
+    assert tip.suggestion is Suggestion.MOVE_C and tip.point == pytest.approx(bot.mount_points.mean(axis=0))
 
 
 # ------------------------------------------------------------------------------- 4. sweeps

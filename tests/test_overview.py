@@ -4,6 +4,7 @@ import numpy as np
 import pytest
 
 import wmr
+from wmr.analysis.advice import Suggestion
 from wmr.analysis.linalg import rank
 from wmr.analysis.overview import configurations, dead_zone_radius, overview, singular_families
 from wmr.analysis.sweep import Grid
@@ -45,7 +46,7 @@ def test_characteristic_length_minimises_kappa_JL1_anywhere():
     c = np.linalg.norm(d.sum(0)) * np.sqrt(3 / (d**2).sum())
     assert np.isclose(k(1.0), np.sqrt((3 + c) / (3 - c)), rtol=1e-12)
     o = overview(bot, grid=200, twists=20)
-    assert not o.isotropic["J_L1"] and "centroid" in o.advice[0]
+    assert not o.isotropic["J_L1"] and o.advice[0].suggestion is Suggestion.MOVE_C
 
 
 @pytest.mark.parametrize("scale", [1.0, 1e-3, 1e4])
@@ -60,12 +61,19 @@ def test_paper_robots(scale):
     assert np.allclose([o.kappa_J[k] for k in ("min", "median", "p95", "max")], 1.0)
     assert o.dead_zone is not None and np.isclose(o.dead_zone, 0.05 * scale)
     d = overview(wmr.paper_robot("dual", L=0.3 * scale, r=0.05 * scale), grid=3000, twists=200)
-    assert (d.rank_F, d.nullity_range) == (6, (3, 4)) and d.kappa_J2 == np.inf and "no choice" in d.advice[0]
+    assert (
+        (d.rank_F, d.nullity_range) == (6, (3, 4))
+        and d.kappa_J2 == np.inf
+        and d.advice[0].suggestion is Suggestion.SINGULAR
+    )
 
 
 def test_offset_not_equal_radius_is_advised():
     o = overview(wmr.paper_robot("offset", r=0.1, d=0.03), grid=100, twists=10)
-    assert np.isclose(o.kappa_J2, 0.1 / 0.03) and "offset = radius" in o.advice[0] and not o.isotropic["J2"]
+    assert np.isclose(o.kappa_J2, 0.1 / 0.03) and not o.isotropic["J2"] and o.advised == [True]
+    tip = o.advice[0]
+    assert tip.suggestion is Suggestion.CHANGE_UNITS and tip.units == (0, 1, 2) and tip.after["kappa_J2"] == 1.0
+    assert {c.kind.name for c in tip.changes} == {"OFFSET_EQUALS_RADIUS"} and tip.changes[0].unit.d == 0.1
 
 
 def test_dead_zone_needs_equal_offsets():
@@ -102,7 +110,9 @@ def test_fixed_wheels_keep_their_angles_and_meet_only_at_infinity():
     o = overview(wmr.load(EXAMPLES / "differential.toml"), grid=100, twists=10)
     assert (o.rank_F, o.nullity_range) == (5, (2, 2)) and o.singular == [] and not o.isotropic["J_L1"]
     m = overview(wmr.load(EXAMPLES / "mecanum4.toml"), grid=100, twists=10)
-    assert np.isclose(m.kappa_J2, 1 + np.sqrt(2)) and "omni" in m.advice[0]  # sqrt((1 + c) / (1 - c))
+    assert (
+        np.isclose(m.kappa_J2, 1 + np.sqrt(2)) and m.advice[0].changes[0].kind.name == "OMNI_ROLLERS"
+    )  # sqrt((1 + c) / (1 - c))
     assert overview(wmr.load(EXAMPLES / "omni3.toml"), grid=100, twists=10).isotropic == {"J_L1": True, "J2": True}
 
 

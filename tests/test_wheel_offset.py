@@ -7,10 +7,11 @@ import sympy as sp
 from hypothesis import given
 
 import wmr
-from wmr.analysis.unit_design import dead_zone, isotropic_change
+from wmr.analysis.unit_design import ChangeKind, dead_zone, isotropic_change
 from wmr.io.wheel_tables import file_keys
 from wmr.model.backend import SYMBOLIC
 from wmr.plot.parts import unit_parts
+from wmr.words.advice import change
 
 from conftest import angles, axle, coords, lengths, rolling_dir, seeds, unit_mount_velocity
 
@@ -75,7 +76,7 @@ def test_dead_zone_and_isotropy_hints():
     assert isotropic_change(wmr.OffsetWheel((0, 0), r=0.1, d=0.1)) is None
     change = isotropic_change(wmr.OffsetWheel((0, 0), r=0.1, d=0.03))
     assert change is not None and change.unit == wmr.OffsetWheel((0, 0), r=0.1, d=0.1)
-    assert change.words.format(wheels="2") == "set offset = radius on wheel 2 (d = r, the paper's (46))"
+    assert change.kind is ChangeKind.OFFSET_EQUALS_RADIUS
 
 
 def test_the_moved_methods_warn_and_answer_as_their_replacements():
@@ -86,7 +87,7 @@ def test_the_moved_methods_warn_and_answer_as_their_replacements():
     with pytest.warns(DeprecationWarning, match="isotropic_change"):
         assert castor.isotropic_variant() == isotropic_change(castor).unit  # type: ignore[attr-defined, union-attr]
     with pytest.warns(DeprecationWarning, match="isotropic_change"):
-        assert castor.isotropy_advice() == isotropic_change(castor).words  # type: ignore[attr-defined, union-attr]
+        assert castor.isotropy_advice() == change(isotropic_change(castor))  # type: ignore[attr-defined, arg-type]
     with pytest.warns(DeprecationWarning, match="other_builds"):
         assert mecanum.other_builds()[0][1].roller == -0.7  # type: ignore[attr-defined]
     with pytest.warns(DeprecationWarning, match="wmr.plot.parts.unit_parts"):

@@ -13,7 +13,7 @@ before                                         now
 ``unit.drawn_angle(beta)``                     :func:`wmr.plot.parts.drawn_angle` ``(unit, beta)``
 ``Kind.file_keys()``, ``Kind.FILE_KEYS``       :func:`wmr.io.wheel_tables.file_keys` ``(Kind)``, ``register``
 ``unit.dead_zone()``                           :func:`wmr.analysis.unit_design.dead_zone` ``(unit)``
-``unit.isotropy_advice()``                     :func:`wmr.analysis.unit_design.isotropic_change` ``(unit).words``
+``unit.isotropy_advice()``                     :func:`wmr.words.advice.change` of ``isotropic_change(unit)``
 ``unit.isotropic_variant()``                   :func:`wmr.analysis.unit_design.isotropic_change` ``(unit).unit``
 ``unit.other_builds()``                        :func:`wmr.analysis.unit_design.other_builds` ``(unit)``
 ``unit.mechanism(height)``                     :func:`wmr.io.mechanism.mechanism` ``(unit, height)``
@@ -23,6 +23,9 @@ before                                         now
 ``wmr.model.wheels.mechanism``                 :mod:`wmr.io.mechanism` (``UnitMechanism``: no base class any more)
 ``wmr.model.wheels.swedish.NO_FAITHFUL...``    :data:`wmr.io.mechanism.NO_FAITHFUL_MECHANISM`
 ``wmr.model.wheels.design.DesignHints``        :mod:`wmr.analysis.unit_design` (no base class any more)
+``Change.words``                               :func:`wmr.words.advice.change` ``(change)``
+``Advice.text``                                :func:`wmr.words.advice.sentence` ``(advice)``
+``wmr.analysis.actuation.describe_twist``      :func:`wmr.words.limitations.describe_twist`
 ``wmr.analysis.glossary``                      :mod:`wmr.words.glossary`
 ``wmr.analysis.families.FAMILIES, MEANINGS``   :mod:`wmr.words.families` (``description``, ``meaning``)
 ``wmr.sim.Sample``                             :class:`wmr.sim.Reading` (the sweeps' ``Sample`` is another thing)
@@ -46,15 +49,17 @@ from collections.abc import Callable
 from typing import Any
 
 from . import io, swerve
-from .analysis import families, integration, overview, unit_design
+from .analysis import actuation, advice, families, integration, overview, unit_design
 from .io import mechanism, wheel_tables, wpilib
 from .model import conventions, platform, validation
 from .model import types as model_types
 from .model.wheels import WheelUnit, swedish
 from .plot import parts
 from .swerve import modules
+from .words import advice as advice_words
 from .words import families as family_words
 from .words import glossary
+from .words import limitations as limitation_words
 
 __all__ = ["MOVED", "simulate"]
 
@@ -64,11 +69,13 @@ MOVED = {
     "WheelUnit.drawn_angle(beta)": "wmr.plot.parts.drawn_angle(unit, beta)",
     "WheelUnit.file_keys()": "wmr.io.wheel_tables.file_keys(kind)",
     "WheelUnit.dead_zone()": "wmr.analysis.unit_design.dead_zone(unit)",
-    "WheelUnit.isotropy_advice()": "wmr.analysis.unit_design.isotropic_change(unit).words",
+    "WheelUnit.isotropy_advice()": "wmr.words.advice.change(wmr.analysis.unit_design.isotropic_change(unit))",
     "WheelUnit.isotropic_variant()": "wmr.analysis.unit_design.isotropic_change(unit).unit",
-    "WheelUnit.other_builds()": "wmr.analysis.unit_design.other_builds(unit), Change(words, unit) objects",
+    "WheelUnit.other_builds()": "wmr.analysis.unit_design.other_builds(unit), Change(kind, unit) objects",
     "WheelUnit.mechanism(height)": "wmr.io.mechanism.mechanism(unit, height)",
     "WheelUnit.root_body(height)": "wmr.io.mechanism.root_body(unit, height) (register a kind's with root_body.register)",
+    "Change.words": "wmr.words.advice.change(change)",
+    "Advice.text": "wmr.words.advice.sentence(advice)",
 }
 
 
@@ -101,7 +108,7 @@ def _method(old: str, new: Callable[..., Any]) -> Callable[..., Any]:
 
 def _words(unit: Any) -> str | None:
     change = unit_design.isotropic_change(unit)
-    return None if change is None else change.words
+    return None if change is None else advice_words.change(change)
 
 
 def _variant(unit: Any) -> Any:
@@ -110,7 +117,7 @@ def _variant(unit: Any) -> Any:
 
 
 def _builds(unit: Any) -> tuple[tuple[str, Any], ...]:
-    return tuple((c.words, c.unit) for c in unit_design.other_builds(unit))
+    return tuple((advice_words.change(c), c.unit) for c in unit_design.other_builds(unit))
 
 
 for _old, _new in (
@@ -125,6 +132,21 @@ for _old, _new in (
 ):
     setattr(WheelUnit, _old.split(".")[1].split("(")[0], _method(_old, _new))
 WheelUnit.file_keys = classmethod(_method("WheelUnit.file_keys()", wheel_tables.file_keys))  # type: ignore[attr-defined]
+
+
+def _attribute(old: str, new: Callable[[Any], str]) -> property:
+    """The old attribute: warns, then returns the words of the record."""
+
+    def get(self: Any) -> str:
+        _warn(old)
+        return new(self)
+
+    get.__doc__ = f"Deprecated: {MOVED[old]}.\n\nReturns\n-------\nstr\n"
+    return property(get)
+
+
+unit_design.Change.words = _attribute("Change.words", advice_words.change)  # type: ignore[attr-defined]
+advice.Advice.text = _attribute("Advice.text", advice_words.sentence)  # type: ignore[attr-defined]
 sys.modules.setdefault("wmr.model.wheels.parts", parts)
 sys.modules.setdefault("wmr.model.wheels.filekeys", wheel_tables)
 sys.modules.setdefault("wmr.model.wheels.mechanism", mechanism)
@@ -148,6 +170,8 @@ _WORDS = {n: (f"wmr.words.families.{n}", getattr(family_words, n)) for n in ("FA
 sys.modules.setdefault("wmr.analysis.singular", families)
 _moved(families, "wmr.analysis.singular", _WORDS)
 _moved(overview, "wmr.analysis.overview", _WORDS)
+_DESCRIBE = ("wmr.words.limitations.describe_twist", limitation_words.describe_twist)
+_moved(actuation, "wmr.analysis.actuation", {"describe_twist": _DESCRIBE})
 _moved(model_types, "wmr.model.types", {"Twist": ("wmr.model.types.TwistLike", model_types.TwistLike)})
 
 

@@ -14,7 +14,7 @@ r"""Analyses of any robot built with :mod:`wmr.model`.
 :mod:`~wmr.analysis.det_exact`      the exact :math:`\det\mathbf J`: SymPy derivation, polynomial, plane-line identity
 :mod:`~wmr.analysis.classes`        Campion's classes: degrees of mobility and steerability
 :mod:`~wmr.analysis.actuation`      driven and passive joints: actuated mobility, motions with every motor stopped
-:mod:`~wmr.analysis.limitations`    what a robot cannot do, in plain sentences (class, actuation, steering joints)
+:mod:`~wmr.analysis.limitations`    what a robot cannot do, as records (class, actuation, steering joints)
 :mod:`~wmr.analysis.advice`         design advice checked on the changed robot (move C, choose L, change a wheel)
 :mod:`~wmr.analysis.families`       families of singular configurations, one example each
 :mod:`~wmr.analysis.unit_design`    each wheel kind's design hints: dead zone, isotropic change, other builds

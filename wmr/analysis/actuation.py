@@ -33,18 +33,22 @@ by itself (:func:`uncontrolled`; :func:`wmr.inverse` then calls it not admissibl
 
 from __future__ import annotations
 
+import enum
+from dataclasses import dataclass
+
 import numpy as np
 
 from ..errors import InputValueError
 from ..io.decimals import quantise
 from ..model import validation
+from ..model.platform import line_angle
 from ..model.tolerance import TOL
 from ._batch import for_chunks
 from .linalg import null_space, rank
 from .lines import AT_INFINITY, FINITE
 from .mobility import twist_constraints
 
-__all__ = ["driven_columns", "actuated_mobility", "free_twists", "uncontrolled", "describe_twist"]
+__all__ = ["driven_columns", "actuated_mobility", "free_twists", "uncontrolled", "MotionKind", "Motion", "motion"]
 
 
 def driven_columns(robot) -> np.ndarray:
@@ -212,30 +216,59 @@ def uncontrolled(robot, beta, twist) -> tuple[np.ndarray, np.ndarray]:
     return part, commanded
 
 
-def describe_twist(robot, twist) -> str:
-    """Where a twist moves the robot, in plain words to follow "moves": a direction, or a turn and its centre.
+class MotionKind(enum.Enum):
+    """How a twist moves the robot (:class:`Motion`)."""
 
-    Body frame: x forward, y left.
+    STILL = "still"  #: the zero twist
+    TRANSLATION = "translation"  #: along a line (the centre beyond the robot's size / TOL)
+    SPIN = "spin"  #: about C (the centre within 1e-3 of the robot's size of C)
+    TURN = "turn"  #: about another point
+
+
+@dataclass(frozen=True)
+class Motion:
+    """Where a twist moves the robot (:func:`motion`; in words: :func:`wmr.words.limitations.where`).
+
+    Attributes
+    ----------
+    kind : MotionKind
+    twist : tuple of float
+        :math:`[\\dot\\psi, \\dot x, \\dot y]`, body frame; only its direction matters (either sign).
+    heading : float or None
+        A translation's line of travel, degrees from x in (-90, 90] (either way along it; within TOL of -90
+        is 90: :func:`wmr.model.platform.line_angle`).
+    centre : tuple of float or None
+        A spin's or a turn's centre (x, y), body frame, a coordinate within round-off of 0 written 0.
+    """
+
+    kind: MotionKind
+    twist: tuple[float, ...]
+    heading: float | None = None
+    centre: tuple[float, ...] | None = None
+
+
+def motion(robot, twist) -> Motion:
+    """Where a twist moves the robot: a translation, a spin about C, a turn about another point, or nowhere.
+
+    The robot's size (its farthest mount point from C) decides what is a translation
+    (:func:`wmr.instantaneous_centre` with that length) and a spin.  Body frame: x forward, y left.
 
     Parameters
     ----------
     robot : Robot
-        For its size (what counts as a translation: :func:`wmr.instantaneous_centre`).
     twist : array (3,)
-        :math:`[\\dot\\psi, \\dot x, \\dot y]`; only its direction matters (either sign).
+        :math:`[\\dot\\psi, \\dot x, \\dot y]`.
 
     Returns
     -------
-    str
+    Motion
 
     Examples
     --------
     >>> import wmr
     >>> bot = wmr.paper_robot("centred")
-    >>> describe_twist(bot, [0.0, 1.0, 1.0]), describe_twist(bot, [0.0, 0.0, -2.0])
-    ('diagonally (along 45 deg from x)', 'sideways (along y)')
-    >>> describe_twist(bot, [1.0, 0.0, 0.0]), describe_twist(bot, [1.0, 0.0, -1.0])
-    ('on the spot (turning about C)', 'in a turn about the point (1, 0) m')
+    >>> motion(bot, [0.0, 1.0, 1.0]).heading, motion(bot, [1.0, 0.0, -1.0]).centre
+    (45.0, (1.0, 0.0))
     """
     from .steering import instantaneous_centre
 
@@ -243,17 +276,12 @@ def describe_twist(robot, twist) -> str:
     t = validation.twist_array("twist", twist)
     size = float(np.abs(robot.mount_points).max()) or 1.0
     ic = instantaneous_centre(t, length=size)
+    tw = tuple(float(v) for v in t)
     if int(ic.kind) == AT_INFINITY:
-        a = float(np.degrees(np.arctan2(t[2], t[1])))
-        a = (a + 90.0) % 180.0 - 90.0  # a direction of travel: a line, either way
-        if abs(a) < 0.5:
-            return "straight ahead (along x)"
-        if abs(abs(a) - 90.0) < 0.5:
-            return "sideways (along y)"
-        return f"diagonally (along {a:.0f} deg from x)"
+        line = line_angle(np.arctan2(t[2], t[1]))  # a line, either way: (-90, 90] deg, -90 within TOL is 90
+        return Motion(MotionKind.TRANSLATION, tw, heading=float(np.degrees(line)))
     if int(ic.kind) != FINITE:
-        return "nowhere (standing still)"
+        return Motion(MotionKind.STILL, tw)
     x, y = (float(v) for v in quantise(ic.point, size))  # round-off of a zero coordinate (6e-17) written 0
-    if np.hypot(x, y) <= 1e-3 * size:
-        return "on the spot (turning about C)"
-    return f"in a turn about the point ({x:.3g}, {y:.3g}) m"
+    spin = np.hypot(x, y) <= 1e-3 * size
+    return Motion(MotionKind.SPIN if spin else MotionKind.TURN, tw, centre=(x, y))

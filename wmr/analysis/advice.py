@@ -3,10 +3,10 @@ r"""Design advice that is checked: every suggestion is applied to a copy of the 
 ``wmr analyze`` suggests what would make :math:`\mathbf J_{L1}` and :math:`\mathbf J_2` isotropic.  A
 suggestion is never printed on faith: the changed robot is built and analysed (:func:`profile`:
 Campion's class, the actuated mobility, :math:`L`, :math:`\kappa(\mathbf J_{L1})`,
-:math:`\kappa(\mathbf J_2)`), and the advice carries the numbers that result.  A change that would
-cost the robot a motion (another class, a lower actuated mobility) is reported as **not advised**,
-with the limitation it would bring (:func:`wmr.analysis.limitations.limitations` of the changed
-robot).
+:math:`\kappa(\mathbf J_2)`), and the advice carries the numbers that result (an :class:`Advice`;
+in words: :mod:`wmr.words.advice`).  A change that would cost the robot a motion (another class, a
+lower actuated mobility) is **not advised**, with the limitation it would bring
+(:func:`wmr.analysis.limitations.limitations` of the changed robot).
 
 * :math:`\mathbf J_{L1}`: C moved to the centroid of the mount points (:meth:`wmr.Robot.moved`); the
   characteristic length is recomputed for the moved robot -- it is not the old one
@@ -25,6 +25,7 @@ configuration, so :math:`\kappa(\mathbf J_2)` is one number per robot.
 from __future__ import annotations
 
 import dataclasses
+import enum
 import itertools
 from dataclasses import dataclass
 
@@ -37,12 +38,32 @@ from .actuation import actuated_mobility, driven_columns
 from .classes import campion_class
 from .isotropy import characteristic_length
 from .kinematics import inverse
-from .limitations import limitations
+from .limitations import Limitation, limitations
 from .linalg import condition_number
 from .mobility import admissible_twists
-from .unit_design import isotropic_change, other_builds
+from .unit_design import Change, isotropic_change, other_builds
 
-__all__ = ["Advice", "profile", "advice", "actuation_advice", "motor_conditioning"]
+__all__ = ["Suggestion", "Verdict", "Advice", "profile", "advice", "actuation_advice", "motor_conditioning"]
+
+
+class Suggestion(enum.Enum):
+    """What an :class:`Advice` suggests."""
+
+    MOVE_C = "move C"  #: J_L1: C moved to the centroid of the mount points (``point``, in the robot's frame)
+    REBUILD = "rebuild"  #: actuation: ``units`` built another way (``changes``)
+    CHANGE_UNITS = "change units"  #: J2: ``units`` given their own isotropic change (``changes``, of one kind)
+    SAME_RADIUS = "same radius"  #: J2: every wheel given the largest of its ``radii``
+    BOTH = "both"  #: J2: the same radius and every unit's own change together
+    SINGULAR = "singular"  #: J2 singular everywhere (``units``: their block drives one direction only)
+    EQUAL_VALUES = "equal singular values"  #: J2: no known change; each unit's ``singular_values`` to be equal
+
+
+class Verdict(enum.Enum):
+    """Whether an :class:`Advice` is advised, and why not."""
+
+    ADVISED = "advised"
+    COSTS_MOTION = "costs a motion"  #: another class, a lower actuated mobility or an undriven motion (``lost``)
+    NO_GAIN = "no gain"  #: the condition number is not lowered
 
 
 @dataclass(frozen=True)
@@ -53,22 +74,54 @@ class Advice:
     ----------
     matrix : str
         ``"J_L1"``, ``"J2"`` or ``"actuation"`` (what the change is for).
-    text : str
-        The suggestion with the numbers that result (one sentence).
-    advised : bool
-        False when the change would cost a motion (another class or a lower actuated mobility) or, on
-        J2, would not lower its condition number.
+    suggestion : Suggestion
+        What is changed.
+    verdict : Verdict
     before : dict
         :func:`profile` of the robot.
     after : dict
         :func:`profile` of the changed robot (empty when nothing can be changed).
+    units : tuple of int
+        The units changed or concerned (indices in ``robot.wheels``).
+    changes : tuple of Change
+        Their changes (``REBUILD``, ``CHANGE_UNITS``).
+    kinds : tuple of str
+        ``SINGULAR``: the kinds of ``units``.
+    point : tuple of float or None
+        ``MOVE_C``: the new C, in the robot's frame (round-off of a zero coordinate written 0).
+    radii : tuple of float
+        ``SAME_RADIUS``, ``BOTH``: the wheels' radii, ascending.
+    singular_values : tuple of tuple of float
+        ``SINGULAR``, ``EQUAL_VALUES``: those of each unit's block of J2.
+    motor_kappa : float or None
+        ``REBUILD``: the changed robot's :func:`motor_conditioning`.
+    lost : Limitation or None
+        ``COSTS_MOTION``: the first limitation the change brings.
     """
 
     matrix: str
-    text: str
-    advised: bool
+    suggestion: Suggestion
+    verdict: Verdict
     before: dict
     after: dict
+    units: tuple[int, ...] = ()
+    changes: tuple[Change, ...] = ()
+    kinds: tuple[str, ...] = ()
+    point: tuple[float, ...] | None = None
+    radii: tuple[float, ...] = ()
+    singular_values: tuple[tuple[float, ...], ...] = ()
+    motor_kappa: float | None = None
+    lost: Limitation | None = None
+
+    @property
+    def advised(self) -> bool:
+        """Whether the change is advised (its ``verdict`` is ``ADVISED``).
+
+        Returns
+        -------
+        bool
+        """
+        return self.verdict is Verdict.ADVISED
 
 
 def motor_conditioning(robot, beta) -> float:
@@ -144,28 +197,29 @@ def profile(robot) -> dict:
     }
 
 
-def _g(x):
-    return f"{x:.4g}" if np.isfinite(x) else "inf"
-
-
 def _delta_m(label):
     return int(label.strip("()").split(",")[0])
 
 
-def _lost(robot, changed, before, after):
-    """Why a change is not advised (empty when it costs no motion and its motors drive every motion)."""
+def _same(a: Limitation, b: Limitation) -> bool:
+    """The same limitation: its kind and numbers, its motions along the same lines (up to round-off)."""
+    if dataclasses.replace(a, motions=()) != dataclasses.replace(b, motions=()) or len(a.motions) != len(b.motions):
+        return False
+    pairs = [(np.asarray(m.twist), np.asarray(n.twist)) for m, n in zip(a.motions, b.motions)]
+    return all(abs(s @ t) >= (1 - 1e-9) * np.linalg.norm(s) * np.linalg.norm(t) for s, t in pairs)
+
+
+def _lost(robot, changed, before, after) -> tuple[bool, Limitation | None]:
+    """Whether a change costs a motion or leaves one undriven, and the first limitation it brings."""
     if (
         after["class"] == before["class"]
         and after["actuated_mobility"] >= before["actuated_mobility"]
         and after["actuated_mobility"] == _delta_m(after["class"])
     ):
-        return ""
-    new = [s for s in limitations(changed) if s not in limitations(robot)] or limitations(changed)
-    why = (
-        f"class {after['class']} (now {before['class']}), actuated mobility {after['actuated_mobility']} "
-        f"(now {before['actuated_mobility']})"
-    )
-    return f"; not advised: {why}" + (f" -- {new[0]}" if new else "")
+        return False, None
+    now, then = limitations(changed), limitations(robot)
+    new = [x for x in now if not any(_same(x, y) for y in then)] or now
+    return True, (new[0] if new else None)
 
 
 def _rebuilt(robot, units):
@@ -193,6 +247,7 @@ def actuation_advice(robot, before=None) -> list[Advice]:
     Returns
     -------
     list of Advice
+        At most one, a ``REBUILD``.
     """
     robot = validation.numeric_robot(robot)
     before = profile(robot) if before is None else before
@@ -200,13 +255,13 @@ def actuation_advice(robot, before=None) -> list[Advice]:
     if before["actuated_mobility"] >= dm:
         return []
     beta = np.asarray(campion_class(robot).beta)
-    options = [(k, c.words, c.unit) for k, unit in enumerate(robot.wheels) for c in other_builds(unit)]
+    options = [(k, c) for k, unit in enumerate(robot.wheels) for c in other_builds(unit)]
     best = None
     for size in range(1, min(4, len(options)) + 1):
         for pick in itertools.combinations(options, size):
-            if len({k for k, _, _ in pick}) < size:
+            if len({k for k, _ in pick}) < size:
                 continue
-            changed = _rebuilt(robot, {k: u for k, _, u in pick})
+            changed = _rebuilt(robot, {k: c.unit for k, c in pick})
             if int(actuated_mobility(changed, beta)) < dm:
                 continue
             key = (round(motor_conditioning(changed, beta), 9), size)
@@ -218,31 +273,18 @@ def actuation_advice(robot, before=None) -> list[Advice]:
     after = profile(changed)
     if after["class"] != before["class"] or after["actuated_mobility"] < dm:
         return []
-    what = "; ".join(f"wheel {k + 1} {words}" for k, words, _ in pick)
-    return [
-        Advice(
-            "actuation",
-            f"actuation: build {what}: then actuated mobility {after['actuated_mobility']} "
-            f"(now {before['actuated_mobility']}), the motors' map to the twist has condition number "
-            f"{kappa:.4g}, kappa(J2) = {_g(after['kappa_J2'])}",
-            True,
-            before,
-            after,
-        )
-    ]
+    units, changes = tuple(k for k, _ in pick), tuple(c for _, c in pick)
+    return [Advice("actuation", Suggestion.REBUILD, Verdict.ADVISED, before, after, units, changes, motor_kappa=kappa)]
 
 
-def _change(robot, before, units, what):
-    """Advice on J2 for the robot with ``units`` (index -> new unit) changed."""
-    changed = _rebuilt(robot, units)
+def _change(robot, before, new, suggestion, **data):
+    """Advice on J2 for the robot with ``new`` units (index -> unit)."""
+    changed = _rebuilt(robot, new)
     after = profile(changed)
-    lost = _lost(robot, changed, before, after)
+    costs, lost = _lost(robot, changed, before, after)
     gain = after["kappa_J2"] < before["kappa_J2"] * (1 - TOL)
-    text = (
-        f"J2: {what}: then kappa(J2) = {_g(after['kappa_J2'])} (now {_g(before['kappa_J2'])})"
-        f"{lost or ('' if gain else ': no gain by itself')}"
-    )
-    return Advice("J2", text, gain and not lost, before, after)
+    verdict = Verdict.COSTS_MOTION if costs else Verdict.ADVISED if gain else Verdict.NO_GAIN
+    return Advice("J2", suggestion, verdict, before, after, lost=lost, **data)
 
 
 def advice(robot, before=None) -> tuple[list[Advice], dict]:
@@ -269,9 +311,8 @@ def advice(robot, before=None) -> tuple[list[Advice], dict]:
     ...                  wmr.FixedWheel((0.0, -0.775), r=0.33, angle=np.pi / 2),
     ...                  wmr.CentredWheel((2.7, 0.775), r=0.33), wmr.CentredWheel((2.7, -0.775), r=0.33)])
     >>> tips, iso = advice(car)
-    >>> print(tips[0].text.replace("; ", ";\n"))
-    J_L1: move C to the centroid of the mount points, (1.35, 0) in this frame (subtract it from every position);
-    then L = 1.557 gives kappa(J_L1) = 1 (now 2.191 at L = 2.06)
+    >>> tips[0].suggestion.name, tips[0].advised, tips[0].point, round(tips[0].after["L"], 3), iso["J_L1"]
+    ('MOVE_C', True, (1.35, 0.0), 1.557, False)
     """
     robot = validation.numeric_robot(robot)
     before = profile(robot) if before is None else before
@@ -284,69 +325,33 @@ def advice(robot, before=None) -> tuple[list[Advice], dict]:
         moved = robot.moved(origin=centroid)
         shown = np.where(zero, 0.0, centroid) + 0.0  # round-off of a zero coordinate shown as 0
         after = profile(moved)
-        ok = after["kappa_JL1"] < before["kappa_JL1"]
-        out.append(
-            Advice(
-                "J_L1",
-                f"J_L1: move C to the centroid of the mount points, ({shown[0]:.4g}, "
-                f"{shown[1]:.4g}) in this frame (subtract it from every position); then L = "
-                f"{after['L']:.4g} gives kappa(J_L1) = {_g(after['kappa_JL1'])} (now "
-                f"{_g(before['kappa_JL1'])} at L = {before['L']:.4g})",
-                ok,
-                before,
-                after,
-            )
-        )
+        verdict = Verdict.ADVISED if after["kappa_JL1"] < before["kappa_JL1"] else Verdict.NO_GAIN
+        out.append(Advice("J_L1", Suggestion.MOVE_C, verdict, before, after, point=(float(shown[0]), float(shown[1]))))
     sv = [np.linalg.svd(np.asarray(u.block_terms(NUMERIC)[0], dtype=float), compute_uv=False) for u in robot.wheels]
+    values = tuple(tuple(float(x) for x in s) for s in sv)
     top = max(float(s.max()) for s in sv)
-    deficient = [k for k, s in enumerate(sv, 1) if s.min() <= TOL * top]
+    deficient = tuple(k for k, s in enumerate(sv) if s.min() <= TOL * top)
     j2 = not deficient and all(np.all(np.abs(s - top) <= TOL * top) for s in sv)
     if deficient:
-        kinds = sorted({robot.wheels[k - 1].kind for k in deficient})
+        kinds = tuple(robot.wheels[k].kind for k in deficient)
         out.append(
             Advice(
-                "J2",
-                f"J2: singular at every configuration ({', '.join(kinds)} units: wheel "
-                f"{', '.join(map(str, deficient))} drive their mount point through one direction only); "
-                "no choice of lengths makes it isotropic",
-                True,
-                before,
-                {},
+                "J2", Suggestion.SINGULAR, Verdict.ADVISED, before, {}, deficient, kinds=kinds, singular_values=values
             )
         )
     elif not j2:
         changes = {k: c for k, u in enumerate(robot.wheels) if (c := isotropic_change(u)) is not None}
-        groups: dict[str, list[int]] = {}  # each unit's own change, wheels grouped by its words
-        for k, c in changes.items():
-            groups.setdefault(c.words, []).append(k)
-        for hint, ks in groups.items():
-            what = hint.format(wheels=", ".join(str(k + 1) for k in ks))
-            out.append(_change(robot, before, {k: changes[k].unit for k in ks}, what))
-        radii = sorted({float(u.r) for u in robot.wheels})
+        for kind in dict.fromkeys(c.kind for c in changes.values()):  # each unit's own change, grouped by its kind
+            group = {k: c for k, c in changes.items() if c.kind is kind}
+            new, changed = {k: c.unit for k, c in group.items()}, tuple(group.values())
+            out.append(_change(robot, before, new, Suggestion.CHANGE_UNITS, units=tuple(group), changes=changed))
+        radii = tuple(sorted({float(u.r) for u in robot.wheels}))
         if len(radii) > 1:
             same = {k: dataclasses.replace(u, r=radii[-1]) for k, u in enumerate(robot.wheels)}
-            out.append(
-                _change(
-                    robot,
-                    before,
-                    same,
-                    f"give every wheel the radius {radii[-1]:.4g} (now {', '.join(f'{r:.4g}' for r in radii)})",
-                )
-            )
-            if groups:
+            out.append(_change(robot, before, same, Suggestion.SAME_RADIUS, radii=radii))
+            if changes:
                 both = {k: (c.unit if (c := isotropic_change(u)) else u) for k, u in same.items()}
-                out.append(_change(robot, before, both, "both changes together"))
-        if not groups and len(radii) == 1:
-            out.append(
-                Advice(
-                    "J2",
-                    f"J2: kappa(J2) = {_g(before['kappa_J2'])}: make the singular values of every "
-                    "unit's block equal ("
-                    + "; ".join(f"wheel {k}: {', '.join(f'{x:.4g}' for x in s)}" for k, s in enumerate(sv, 1))
-                    + ")",
-                    True,
-                    before,
-                    {},
-                )
-            )
+                out.append(_change(robot, before, both, Suggestion.BOTH, radii=radii))
+        if not changes and len(radii) == 1:
+            out.append(Advice("J2", Suggestion.EQUAL_VALUES, Verdict.ADVISED, before, {}, singular_values=values))
     return out, {"J_L1": jl1, "J2": bool(j2)}

@@ -1,16 +1,15 @@
-r"""What a robot cannot do, in plain sentences: from its class, its actuation and its steering joints.
+r"""What a robot cannot do, as data: from its class, its actuation and its steering joints.
 
-``wmr analyze`` prints these sentences (JSON: ``limitations``).  Each is computed, never typed per
-robot:
+``wmr analyze`` prints each :class:`Limitation` as a sentence (:mod:`wmr.words.limitations`; JSON:
+``limitations``).  Each is computed, never typed per robot:
 
 * **from Campion's class** :math:`(\delta_m, \delta_s)` (:func:`wmr.campion_class`) at its generic
   configuration: a robot with :math:`\delta_m < 3` cannot make some twists at all; which ones is
   read off the constraint rows :math:`\mathbf C_1^*` (a twist along a row is forbidden) or off the
-  one twist left (:math:`\delta_m = 1`), and said in words by
-  :func:`~wmr.analysis.actuation.describe_twist`;
+  one twist left (:math:`\delta_m = 1`), each a :class:`~wmr.analysis.actuation.Motion`;
 * **from the actuation** (:mod:`wmr.analysis.actuation`): when the actuated mobility
   :math:`\delta_a` is below :math:`\delta_m`, each direction of :math:`\mathcal U` (a motion the robot
-  makes with every motor stopped) is named: the motors can neither drive nor stop it;
+  makes with every motor stopped): the motors can neither drive nor stop it;
 * **from the steering joints**: a steered unit whose steering joint is passive, that rolls in its
   plane and has no steering row (nothing turns it: no motor, no offset to trail behind, no pair
   of wheels) has an angle nothing controls.
@@ -19,60 +18,86 @@ Examples
 --------
 >>> import numpy as np, wmr
 >>> skid = wmr.Robot([wmr.FixedWheel((x, y), r=0.1, angle=np.pi / 2) for x in (0.4, 0.0, -0.4) for y in (0.3, -0.3)])
->>> limitations(skid)
-['turning requires skidding: it can only drive straight ahead (along x)']
+>>> [(x.kind.name, x.motions[0].kind.name, round(x.motions[0].heading, 9) + 0.0) for x in limitations(skid)]
+[('NO_TURNING', 'TRANSLATION', 0.0)]
 """
 
 from __future__ import annotations
 
+import enum
+from dataclasses import dataclass
+
 import numpy as np
 
 from ..model import validation
-from .actuation import actuated_mobility, describe_twist, free_twists
+from .actuation import Motion, actuated_mobility, free_twists, motion
 from .classes import campion_class
 from .linalg import null_space
 from .mobility import twist_constraints
 
-__all__ = ["limitations", "steering_limitations"]
+__all__ = ["LimitationKind", "Limitation", "limitations", "steering_limitations"]
 
 
-def _class_sentences(robot, c) -> list[str]:
+class LimitationKind(enum.Enum):
+    """What a :class:`Limitation` says the robot cannot do (the module notes)."""
+
+    NO_MOTION = "no motion"  #: delta_m = 0: no motion without skidding
+    NO_TURNING = "no turning"  #: delta_m = 1, delta_s = 0, the one motion a translation
+    NO_STRAIGHT = "no straight"  #: delta_m = 1, delta_s = 0, the one motion a turn
+    CAR_LIKE = "car-like"  #: delta_m = 1 with fixed wheels: turns about a point of their axles' line
+    ONE_MOTION = "one motion"  #: delta_m = 1 otherwise: one motion per steering, re-steered to change it
+    FORBIDDEN = "forbidden"  #: delta_m = 2, delta_s = 0: no motion has a part along ``motions``
+    FORBIDDEN_AT_STEERING = "forbidden at a steering"  #: delta_m = 2, delta_s > 0: the same until re-steered
+    UNCONTROLLED = "uncontrolled"  #: a motion the robot makes with every motor stopped
+    UNSTEERED = "unsteered"  #: a unit's steering angle that nothing controls
+
+
+@dataclass(frozen=True)
+class Limitation:
+    """What a robot cannot do (in words: :func:`wmr.words.limitations.sentence`).
+
+    Attributes
+    ----------
+    kind : LimitationKind
+    motions : tuple of Motion
+        The one motion left (``NO_TURNING``, ``NO_STRAIGHT``), the directions forbidden
+        (``FORBIDDEN``...), the motion with every motor stopped (``UNCONTROLLED``); else empty.
+    unit : int or None
+        ``UNSTEERED``: the unit's index in ``robot.wheels``.
+    actuated_mobility : int or None
+        ``UNCONTROLLED``: the actuated mobility, below :math:`\\delta_m`.
+    delta_m : int or None
+        ``UNCONTROLLED``: Campion's :math:`\\delta_m`.
+    """
+
+    kind: LimitationKind
+    motions: tuple[Motion, ...] = ()
+    unit: int | None = None
+    actuated_mobility: int | None = None
+    delta_m: int | None = None
+
+
+def _of_class(robot, c) -> list[Limitation]:
     """What the class forbids (see the module notes)."""
     s = robot.F_column_norms[:3]
     t = np.asarray(c.twist)
+    K = LimitationKind
     if c.delta_m == 0:
-        return ["it cannot move at all without skidding: its wheels' constraints admit no motion"]
+        return [Limitation(K.NO_MOTION)]
     if c.delta_m == 1 and c.delta_s == 0:
-        motion = describe_twist(robot, t)
-        if abs(t[0] * s[0]) <= 1e-9 * np.abs(t * s).max():
-            return [f"turning requires skidding: it can only drive {motion}"]
-        return [f"driving straight requires skidding: it can only move {motion}"]
-    if c.delta_m == 1 and c.rank_C1f >= 1:
-        return [
-            "it cannot move sideways or choose its centre of rotation freely: every motion turns about a "
-            "point on the line of its fixed wheels' axles (or drives straight along their planes), "
-            "and steering picks the point (car-like)"
-        ]
+        turns = abs(t[0] * s[0]) > 1e-9 * np.abs(t * s).max()
+        return [Limitation(K.NO_STRAIGHT if turns else K.NO_TURNING, (motion(robot, t),))]
     if c.delta_m == 1:
-        return [
-            "at any one steering it has a single motion: to change the direction of motion it must re-steer "
-            "its wheels first (it cannot change direction instantly)"
-        ]
+        return [Limitation(K.CAR_LIKE if c.rank_C1f >= 1 else K.ONE_MOTION)]
     if c.delta_m == 2:
-        beta = np.asarray(c.beta)
-        A, _ = twist_constraints(robot, beta)  # the rows of C1*
+        A, _ = twist_constraints(robot, np.asarray(c.beta))  # the rows of C1*
         normals = null_space(null_space(A / s, scale=np.ones(3)).T, scale=np.ones(3)) if A.size else np.zeros((3, 0))
-        words = [describe_twist(robot, normals[:, k] / s) for k in range(normals.shape[1])]
-        what = " or ".join(words) or "one direction"
-        if c.delta_s == 0:
-            return [
-                f"it cannot move {what}: no motion may have a part of that (non-holonomic, like a differential drive)"
-            ]
-        return [f"at any one steering it cannot move {what}: that needs its steered wheel re-steered first"]
+        ways = tuple(motion(robot, normals[:, k] / s) for k in range(normals.shape[1]))
+        return [Limitation(K.FORBIDDEN if c.delta_s == 0 else K.FORBIDDEN_AT_STEERING, ways)]
     return []
 
 
-def steering_limitations(robot) -> list[str]:
+def steering_limitations(robot) -> list[Limitation]:
     """Steered units whose angle nothing controls (see the module notes).
 
     Parameters
@@ -81,30 +106,26 @@ def steering_limitations(robot) -> list[str]:
 
     Returns
     -------
-    list of str
-        One sentence per such unit.
+    list of Limitation
+        One ``UNSTEERED`` per such unit.
 
     Examples
     --------
     >>> import wmr
     >>> free = wmr.CentredWheel((0.3, 0.0), r=0.05, driven={"steer": False})
-    >>> print(*steering_limitations(wmr.Robot([free, wmr.CentredWheel((-0.3, 0.0), r=0.05)]))[0].split(": ")[::2])
-    wheel 1 its angle is not under control
+    >>> steering_limitations(wmr.Robot([free, wmr.CentredWheel((-0.3, 0.0), r=0.05)]))[0].unit
+    0
     """
     robot = validation.robot(robot)
-    out = []
-    for k, u in enumerate(robot.wheels, 1):
-        passive_steer = any(j.steering and not j.driven for j in u.joints)
-        if passive_steer and u.rolls_in_plane and u.steering_row() is None:
-            out.append(
-                f"wheel {k}: its steering joint is passive and nothing turns it (no motor, no offset to "
-                "trail behind): its angle is not under control"
-            )
-    return out
+    return [
+        Limitation(LimitationKind.UNSTEERED, unit=k)
+        for k, u in enumerate(robot.wheels)
+        if any(j.steering and not j.driven for j in u.joints) and u.rolls_in_plane and u.steering_row() is None
+    ]
 
 
-def limitations(robot, campion=None) -> list[str]:
-    """What the robot cannot do, as plain sentences (see the module notes); empty when nothing is limited.
+def limitations(robot, campion=None) -> list[Limitation]:
+    """What the robot cannot do (see the module notes); empty when nothing is limited.
 
     Parameters
     ----------
@@ -115,19 +136,13 @@ def limitations(robot, campion=None) -> list[str]:
 
     Returns
     -------
-    list of str
+    list of Limitation
+        From the class, then the actuation (one per motion with every motor stopped), then the steering joints.
     """
     robot = validation.numeric_robot(robot)
     c = campion_class(robot) if campion is None else campion
-    out = _class_sentences(robot, c)
     beta = np.asarray(c.beta)
     da = int(actuated_mobility(robot, beta))
-    if da < c.delta_m:
-        U = free_twists(robot, beta)
-        for k in range(U.shape[1]):
-            out.append(
-                f"the motors cannot move it {describe_twist(robot, U[:, k])}: it moves that way with every "
-                f"motor stopped (its passive joints roll freely), so the motors can neither drive nor stop "
-                f"that motion (actuated mobility {da} < delta_m = {c.delta_m})"
-            )
-    return out + steering_limitations(robot)
+    U = free_twists(robot, beta) if da < c.delta_m else np.zeros((3, 0))
+    free = [Limitation(LimitationKind.UNCONTROLLED, (motion(robot, u),), None, da, int(c.delta_m)) for u in U.T]
+    return _of_class(robot, c) + free + steering_limitations(robot)

@@ -12,7 +12,8 @@ kind, which a grid or a random sample would almost surely miss, so the minimum o
 found; its maximum is the generic value.  :math:`\kappa(\mathbf J)` is reported over the drivable
 configurations only (:class:`~wmr.analysis.sweep.Drivable`): a robot never drives in the others.
 The advice is checked on the changed robot (:mod:`wmr.analysis.advice`), the limitations are
-sentences computed from the class and the actuation (:mod:`wmr.analysis.limitations`).
+computed from the class and the actuation (:mod:`wmr.analysis.limitations`); their words are
+:mod:`wmr.words`'s.
 
 Characteristic length.  With :math:`a = \sum_i\|\mathbf d_i\|^2`, :math:`\mathbf b = \sum_i\mathbf E\mathbf d_i`,
 (34) reads
@@ -35,12 +36,11 @@ from ..model.limits import check
 from ..model.robot import Robot
 from ..model.tolerance import TOL
 from ..model.types import FloatArray
-from .actuation import describe_twist, free_twists
 from .advice import advice, profile
 from .classes import campion_class
 from .families import singular_families
 from .kinematics import inverse
-from .limitations import limitations
+from .limitations import LimitationKind, limitations
 from .linalg import condition_number
 from .mobility import rank_F
 from .steering import steering_angles
@@ -194,11 +194,11 @@ class Overview:
     actuated_mobility : int
         The dimension of the admissible twists the motors command at the class's generic
         configuration (:func:`wmr.analysis.actuation.actuated_mobility`); at most ``delta_m``.
-    uncontrolled : list of str
-        The motions the robot makes with every motor stopped there, in words (empty when the motors
-        command every admissible twist).
-    limitations : list of str
-        :func:`wmr.analysis.limitations.limitations`: what the robot cannot do, in plain sentences.
+    uncontrolled : list of Motion
+        The motions the robot makes with every motor stopped there (empty when the motors command
+        every admissible twist).
+    limitations : list of Limitation
+        :func:`wmr.analysis.limitations.limitations`: what the robot cannot do.
     rank_F : int
         At a generic configuration (random angles).
     nullity : int
@@ -223,11 +223,11 @@ class Overview:
         straight drive with every wheel parallel).
     isotropic : dict
         ``J_L1``, ``J2`` (bool): isotropic as designed.
-    advice : list of str
+    advice : list of Advice
         What to change to make :math:`\mathbf J_{L1}` and :math:`\mathbf J_2` isotropic, each checked on
         the changed robot (:mod:`wmr.analysis.advice`); empty if they are.
     advised : list of bool
-        For each advice, False when the change would cost the robot a motion.
+        For each advice, :attr:`~wmr.analysis.advice.Advice.advised`.
     dead_zone : float or None
         :func:`dead_zone_radius`.
     singular : list of dict
@@ -305,15 +305,14 @@ def overview(robot: Robot, grid: int | None = None, twists: int = TWISTS, seed: 
     ks = condition_number(robot.J(sb, L=L)) if sb.size else np.zeros(0)
     tips, iso = advice(robot, before)
     c = campion_class(robot)
-    cbeta = np.asarray(c.beta)
-    U = free_twists(robot, cbeta) if before["actuated_mobility"] < c.delta_m else np.zeros((3, 0))
+    lims = limitations(robot, c)
     return Overview(
         name=robot.name,
         kinds=tuple(u.kind for u in robot.wheels),
         campion={"delta_m": int(c.delta_m), "delta_s": int(c.delta_s), "label": str(c.label), "name": str(c.name)},
         actuated_mobility=before["actuated_mobility"],
-        uncontrolled=[describe_twist(robot, U[:, k]) for k in range(U.shape[1])],
-        limitations=limitations(robot, c),
+        uncontrolled=[x.motions[0] for x in lims if x.kind is LimitationKind.UNCONTROLLED],
+        limitations=lims,
         rank_F=rf,
         nullity=n - rf,
         rank_F_range=(int(ranks.min), int(ranks.max)),
@@ -329,7 +328,7 @@ def overview(robot: Robot, grid: int | None = None, twists: int = TWISTS, seed: 
             "max": float(max(kj.max, ks.max(initial=0.0))),
         },
         isotropic=iso,
-        advice=[t.text for t in tips],
+        advice=tips,
         advised=[t.advised for t in tips],
         dead_zone=dead_zone_radius(robot),
         singular=singular_families(robot, L),

@@ -22,12 +22,14 @@ Examples
 (0.03, None)
 >>> isotropic_change(wmr.OffsetWheel((0, 0), r=0.05, d=0.03)).unit.d
 0.05
->>> [c.words for c in other_builds(wmr.SwedishWheel((0, 0), r=0.05, angle=0.0, roller=np.pi / 4))]
-['of the other hand (rollers at -45 deg)']
+>>> (c,) = other_builds(wmr.SwedishWheel((0, 0), r=0.05, angle=0.0, roller=np.pi / 4))
+>>> c.kind.name, round(float(np.degrees(c.unit.roller)))
+('OTHER_HAND', -45)
 """
 
 from __future__ import annotations
 
+import enum
 import functools
 from dataclasses import dataclass, replace
 from typing import Any
@@ -37,23 +39,30 @@ import numpy as np
 from ..model.tolerance import TOL
 from ..model.wheels import OffsetWheel, SwedishWheel, WheelUnit
 
-__all__ = ["Change", "dead_zone", "isotropic_change", "other_builds"]
+__all__ = ["ChangeKind", "Change", "dead_zone", "isotropic_change", "other_builds"]
+
+
+class ChangeKind(enum.Enum):
+    """What a :class:`Change` changes."""
+
+    OFFSET_EQUALS_RADIUS = "offset = radius"  #: an offset wheel's d set to its r (the paper's (46))
+    OMNI_ROLLERS = "omni rollers"  #: a Swedish wheel's rollers at 90 deg
+    OTHER_HAND = "other hand"  #: a Swedish wheel's rollers at minus their angle
 
 
 @dataclass(frozen=True)
 class Change:
-    """A unit changed, and the change in words.
+    """A unit changed (in words: :func:`wmr.words.advice.change`).
 
     Attributes
     ----------
-    words : str
-        What is changed; an isotropy change is a sentence about ``{wheels}`` (a format field for the
-        wheel numbers), another build the words after "build wheel k".
+    kind : ChangeKind
+        What is changed.
     unit : WheelUnit
         The changed unit.
     """
 
-    words: str
+    kind: ChangeKind
     unit: WheelUnit
 
 
@@ -103,7 +112,7 @@ def _offset_isotropic(unit: OffsetWheel) -> Change | None:
     d, r = float(unit.d), float(unit.r)
     if abs(d - r) <= TOL * max(d, r):
         return None
-    return Change("set offset = radius on wheel {wheels} (d = r, the paper's (46))", replace(unit, d=unit.r))
+    return Change(ChangeKind.OFFSET_EQUALS_RADIUS, replace(unit, d=unit.r))
 
 
 @isotropic_change.register
@@ -111,11 +120,7 @@ def _swedish_isotropic(unit: SwedishWheel) -> Change | None:
     r"""Omni rollers (:math:`\gamma = \pi/2`) make the block :math:`r\,\mathbf R`."""
     if abs(np.cos(float(unit.roller))) <= TOL:
         return None
-    return Change(
-        "use omni wheels (rollers at 90 deg) on wheel {wheels}: a Swedish wheel's block "
-        "r[[0, sin g], [-1, -cos g]] has singular values r sqrt(1 +- cos g)",
-        replace(unit, roller=np.pi / 2),
-    )
+    return Change(ChangeKind.OMNI_ROLLERS, replace(unit, roller=np.pi / 2))
 
 
 @functools.singledispatch
@@ -142,9 +147,4 @@ def _swedish_builds(unit: SwedishWheel) -> tuple[Change, ...]:
     r"""The wheel of the other hand (rollers at :math:`-\gamma`), unless it is an omni wheel."""
     if abs(np.cos(float(unit.roller))) <= TOL:
         return ()
-    return (
-        Change(
-            f"of the other hand (rollers at {np.degrees(-float(unit.roller)):.0f} deg)",
-            replace(unit, roller=-unit.roller),
-        ),
-    )
+    return (Change(ChangeKind.OTHER_HAND, replace(unit, roller=-unit.roller)),)

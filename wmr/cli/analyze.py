@@ -21,7 +21,9 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from ..words import advice as advice_words
 from ..words import families as words
+from ..words import limitations as limitation_words
 from ._numbers import json_text
 from ._options import ROBOT_FILE
 
@@ -109,8 +111,8 @@ def as_json(ov: Overview, convention: str = "wmr") -> dict[str, Any]:
         "class": c["label"],
         "class_name": c["name"],
         "actuated_mobility": ov.actuated_mobility,
-        "uncontrolled": list(ov.uncontrolled),
-        "limitations": list(ov.limitations),
+        "uncontrolled": [limitation_words.where(m) for m in ov.uncontrolled],
+        "limitations": [limitation_words.sentence(x) for x in ov.limitations],
         "rank_F": {"generic": ov.rank_F, "min": ov.rank_F_range[0], "max": ov.rank_F_range[1]},
         "nullity": {"generic": ov.nullity, "min": ov.nullity_range[0], "max": ov.nullity_range[1]},
         "configurations": ov.configurations,
@@ -119,7 +121,7 @@ def as_json(ov: Overview, convention: str = "wmr") -> dict[str, Any]:
         "kappa_J2": _num(ov.kappa_J2),
         "kappa_J": {**{k: _num(v) for k, v in ov.kappa_J.items()}, "drivable_configurations": ov.drivable},
         "isotropic": dict(ov.isotropic),
-        "advice": list(ov.advice),
+        "advice": [advice_words.sentence(a) for a in ov.advice],
         "advised": list(ov.advised),
         "dead_zone": ov.dead_zone,
         "convention": convention,
@@ -157,7 +159,7 @@ def table(ov: Overview, convention: str = "wmr") -> str:
     kj = ov.kappa_J
     if ov.actuated_mobility < c["delta_m"]:
         actuated = f"{ov.actuated_mobility} of delta_m = {c['delta_m']}: the motors cannot move it " + " or ".join(
-            ov.uncontrolled
+            limitation_words.where(m) for m in ov.uncontrolled
         )
     else:
         actuated = f"{ov.actuated_mobility}: the motors command every motion it can make"
@@ -170,7 +172,7 @@ def table(ov: Overview, convention: str = "wmr") -> str:
         ),
         ("actuated", actuated),
     ]
-    rows += [("limitation" if n == 0 else "", s) for n, s in enumerate(ov.limitations)]
+    rows += [("limitation" if n == 0 else "", limitation_words.sentence(x)) for n, x in enumerate(ov.limitations)]
     rows += [
         (
             "rank F",
@@ -212,7 +214,7 @@ def table(ov: Overview, convention: str = "wmr") -> str:
     if not ov.advice:
         rows.append(("isotropy", "J_L1 and J2 are isotropic as designed"))
     for n, a in enumerate(ov.advice):
-        rows.append(("advice" if n == 0 else "", a))
+        rows.append(("advice" if n == 0 else "", advice_words.sentence(a)))
     width = max(len(k) for k, _ in rows)
     return "\n".join(f"{k:<{width}}  {v}" for k, v in rows)
 

@@ -87,7 +87,7 @@ def _slip(sol):
 
 
 def _verdict(robot, sol, part):
-    from ..analysis.actuation import describe_twist
+    from ..words.limitations import describe_twist
 
     if sol.admissible:
         return "yes"
