@@ -62,8 +62,10 @@ def test_the_chapters_that_are_read_publish_their_files():
     read = {
         c for p in (ROOT / "notebooks").glob("*.ipynb") for c in re.findall(r'derived\(\\"(\w+)\\"\)', p.read_text())
     }
-    assert read == {"01_platform_and_wheels", "02_offset_wheels_and_mobility"}
-    assert read | {"03_kinetostatic_isotropy"} == set(CHAPTERS), "chapters 1-2 for the next, 1-3 for the tests"
+    assert {"01_platform_and_wheels", "02_offset_wheels_and_mobility"} <= read <= set(CHAPTERS), (
+        "a chapter another one reads publishes figures/<chapter>.derived.json"
+    )
+    assert "03_kinetostatic_isotropy" in CHAPTERS, "the tests read chapter 3's"
 
 
 @pytest.mark.parametrize("chapter", CHAPTERS)
