@@ -12,9 +12,10 @@
 # This Makefile is the build: it knows every file, what it is made from, and runs two steps at a
 # time (-j2). Each step is one call of tools/build (python -m tools.build COMMAND), the glue around
 # nbclient (execute a notebook), pandoc and nbconvert (HTML, LaTeX) and xelatex (PDF). A notebook is
-# executed again only when its key changes: the content hashes of the notebook, wmr/ and edition/
-# (the recipe compares them and leaves the executed copy untouched when they match, so that Make
-# sees nothing new). A second build of one tree waits for the first (flock on build/.lock).
+# executed again only when its key changes: the content hashes of the notebook, wmr/ and edition/,
+# and of the derived objects of each earlier chapter it reads (build/out/<chapter>/<chapter>.derived.json;
+# that chapter runs first). The recipe compares them and leaves the executed copy untouched when they
+# match, so that Make sees nothing new. A second build of one tree waits for the first (flock on build/.lock).
 # Signals: Make passes SIGTERM to its children and nbclient stops its kernel; when make itself is
 # killed outright, the operating system sends its steps SIGTERM (setpriv --pdeathsig).
 #
@@ -146,10 +147,17 @@ grades: venv ## build/assignments/grades: each lesson through nbgrader, solved a
 figures: venv ## regenerate figures/ outside the notebooks (python -m edition.figures figures/)
 	@cd $(WMR_ROOT) && $(VPY) -m edition.figures figures
 
-# a chapter, executed in a fresh kernel with WMR_OUT=build/out/<chapter> (see tools/build/execute.py); its key
-# includes notebooks/, since a chapter builds on the derivations of earlier ones (edition.derivations.derived)
+# a chapter, executed in a fresh kernel with WMR_OUT=build/out/<chapter> (see tools/build/execute.py)
 $(B)/notebooks/%.ipynb: $(NB)/%.ipynb FORCE
-	@$(BUILD) execute $< $@ --reads $(NB)
+	@$(BUILD) execute $< $@ $(foreach c,$(call DERIVED_FROM,$<),--reads $(B)/out/$c/$c.derived.json)
+
+# a chapter that builds on what an earlier one derived (its calls derived("<chapter>"), edition.derivations) reads
+# the file <chapter>.derived.json that chapter wrote: it runs after it, and its key holds that file (not notebooks/)
+DERIVED_FROM = $(sort $(shell sed -n 's/.*derived(\\"\([0-9A-Za-z_]*\)\\").*/\1/p' $1 2>/dev/null))
+$(foreach n,$(CHAPTERS),$(eval $(B)/notebooks/$(notdir $n): \
+  $(foreach c,$(call DERIVED_FROM,$n),$(B)/notebooks/$c.ipynb)))
+$(foreach n,$(LESSONS),$(eval $(B)/student-run/notebooks/$(notdir $n): \
+  $(foreach c,$(call DERIVED_FROM,$n),$(B)/student-run/notebooks/$c.ipynb)))
 
 # what the chapters wrote -> figures/ (a file only when its bytes differ); their rows -> figures/ledger.csv
 publish: $(EXECUTED)
@@ -186,7 +194,7 @@ $(STUDENT) &: $(LESSONS)
 	  --output-dir $(B)/student $(LESSONS)
 
 $(B)/student-run/notebooks/%.ipynb: $(B)/student/%.ipynb FORCE
-	@$(BUILD) execute $< $@
+	@$(BUILD) execute $< $@ $(foreach c,$(call DERIVED_FROM,$(NB)/$*.ipynb),--reads $(B)/student-run/out/$c/$c.derived.json)
 
 # the nbgrader round trip of a lesson (tools/grades.py): generate, autograde the solved and the blank notebook;
 # cached like a chapter (its key: the chapter, notebooks/, wmr/, edition/, tools/{grades,assignments}.py, the lock)

@@ -4,8 +4,8 @@ r"""What a chapter (``notebooks/01..08``) is: where it writes, its ledger, its r
   build), else a scratch folder under the project's ``build/`` found from the notebook's own location,
   else a temporary folder.  A notebook never writes a tracked file.
 * :class:`Chapter` -- one per notebook: its ledger, its random generator (fixed seed), its
-  figures (:meth:`Chapter.figure`) and its verdicts (:meth:`Chapter.record`, sentences generated
-  from the ledger rows).
+  figures (:meth:`Chapter.figure`), its verdicts (:meth:`Chapter.record`, sentences generated
+  from the ledger rows) and what it derived for later chapters (:meth:`Chapter.save_derived`).
 
 The chapters show their results with :mod:`edition.display` (:func:`quote`, :func:`show`,
 :func:`say`, :func:`table`, re-exported here, so that a chapter imports what it uses from one place).
@@ -220,6 +220,26 @@ class Chapter:
         # figures is most of the time a chapter takes to grade
         keep = self.project.source != "temporary"
         return show_figure(key, data, outdir=self.project.figures if keep else None, draw=not grading())
+
+    def save_derived(self, **objects):
+        """Write derived objects a later chapter or a test reads (:func:`edition.derivations.derived`), silently.
+
+        Into :attr:`Project.out`, as ``<chapter>.derived.json`` (:func:`edition.derivations.write`): the build
+        publishes it into ``figures/``.
+
+        Parameters
+        ----------
+        **objects
+            ``name=object``: SymPy objects (or lists, tuples and dicts of them) as the derivation cells bound them.
+
+        Returns
+        -------
+        pathlib.Path
+            The file written.
+        """
+        from .derivations import write
+
+        return write(self.project.out, self.notebook, objects)
 
     def close(self):
         """Write this chapter's ledger fragment and show its tally.

@@ -6,8 +6,8 @@ r"""``make course``: the student package, a wheel with no solution in it, checke
   ``nbgrader generate_assignment``): the worked solutions replaced by ``# YOUR CODE HERE``, the hidden tests
   removed, the questions in words left as ``YOUR ANSWER HERE`` without their rubric; a lesson without exercises,
   its cells as they are;
-* ``edition/``: the checks the notebooks call, with ``edition/_chapters/``, each lesson's ``imports`` and
-  ``derivation`` cells only (what :func:`edition.derivations.derived` runs for a later chapter);
+* ``edition/``: the checks the notebooks call, with ``edition/_derived/``, the derived objects a lesson wrote
+  for a later one (the published ``figures/*.derived.json``, what :func:`edition.derivations.derived` reads);
 * ``python -m wmr_course DIR`` copies the notebooks into ``DIR`` (never over an existing file).
 
 The wheel is written byte for byte the same from the same tree (sorted members, fixed dates).  A pass is
@@ -36,6 +36,7 @@ LESSONS = tuple(sorted(p for p in (ROOT / "notebooks").glob("[0-9][0-9]_*.ipynb"
 #: what the package and its check read (paths relative to the root, as git lists them): the stamp's key
 READS = (
     "edition",
+    "figures/*.derived.json",
     "notebooks",
     "wmr",
     "pyproject.toml",
@@ -108,20 +109,14 @@ def released(out: Path) -> dict[str, bytes]:
     return notebooks
 
 
-def _cleared(path: Path, keep=None) -> bytes:
+def _cleared(path: Path) -> bytes:
     import nbformat
 
     nb = nbformat.read(path, as_version=4)
-    if keep is not None:
-        nb.cells = [c for c in nb.cells if keep(c)]
     for c in nb.cells:
         if c.cell_type == "code":
             c.outputs, c.execution_count = [], None
     return (nbformat.writes(nb) + "\n").encode("utf-8")
-
-
-def _derivations_only(cell) -> bool:
-    return cell.cell_type == "code" and bool({"imports", "derivation"} & set(cell.get("metadata", {}).get("tags", [])))
 
 
 MAIN = '''"""``python -m wmr_course DIR``: copy the course's notebooks into DIR (an existing file is never overwritten)."""
@@ -161,8 +156,8 @@ def members(version: str) -> dict[str, bytes]:
     for p in sorted((ROOT / "edition").rglob("*")):
         if p.is_file() and "__pycache__" not in p.parts and p.suffix in (".py", ".toml"):
             files[p.relative_to(ROOT).as_posix()] = p.read_bytes()
-    for p in LESSONS:
-        files[f"edition/_chapters/{p.name}"] = _cleared(p, keep=_derivations_only)
+    for p in sorted((ROOT / "figures").glob("*.derived.json")):
+        files[f"edition/_derived/{p.name}"] = p.read_bytes()
     for name, data in released(ROOT).items():
         files[f"wmr_course/notebooks/{name}"] = data
     files["wmr_course/__init__.py"] = b'"""The lessons of wmr-kinematics as a course: `python -m wmr_course DIR`."""\n'

@@ -19,9 +19,10 @@ exercises gets ``"exercises": []`` and no ``total`` (nbgrader is not started).
 zero for the blank one, exercise by exercise.
 
 The cache is the build's (:mod:`tools.build.execute`): :func:`key` is :func:`tools.build.execute.key` of the
-chapter with, as what it reads, ``notebooks/`` (a chapter runs derivations of earlier ones), this file,
-``tools/assignments.py`` and ``environment.lock`` (nbgrader's version); ``OUT.stamp`` records the key and the
-hash of ``OUT``.  While both hold nothing runs and nothing is written.
+chapter with, as what it reads, the published ``figures/*.derived.json`` (a chapter reads what earlier ones derived,
+:func:`edition.derivations.derived`), this file, ``tools/assignments.py`` and ``environment.lock`` (nbgrader's
+version); ``OUT.stamp`` records the key and the hash of ``OUT``.  While both hold nothing runs and nothing is
+written.
 """
 
 from __future__ import annotations
@@ -41,14 +42,18 @@ from tools.build import execute as X
 
 __all__ = ["READS", "grade", "key", "main", "run_nbgrader"]
 
-#: what the round trip reads besides the chapter, ``wmr/`` and ``edition/`` (relative to the project's root)
-READS = ("notebooks", "tools/grades.py", "tools/assignments.py", "environment.lock")
+#: what the round trip reads besides the chapter, ``wmr/``, ``edition/`` and the derived objects the chapters
+#: published (``figures/*.derived.json``), relative to the project's root
+READS = ("tools/grades.py", "tools/assignments.py", "environment.lock")
 TIMEOUT = 1800  # seconds per nbgrader call
 
 
 def key(chapter: Path, root: Path = X.ROOT) -> str:
-    """The cache key of a chapter's grades: :func:`tools.build.execute.key` with :data:`READS` of ``root``."""
-    return X.key(Path(chapter).resolve(), Path(root), tuple(Path(root).resolve() / r for r in READS))
+    """The cache key of a chapter's grades: :func:`tools.build.execute.key` with :data:`READS` of ``root`` and its
+    ``figures/*.derived.json``."""
+    root = Path(root).resolve()
+    derived = sorted((root / "figures").glob("*.derived.json"))
+    return X.key(Path(chapter).resolve(), root, (*(root / r for r in READS), *derived))
 
 
 def run_nbgrader(course: Path, env: dict[str, str], *args: str) -> None:

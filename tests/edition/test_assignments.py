@@ -195,12 +195,13 @@ def test_nbgrader_round_trip_full_marks_for_the_solution_and_zero_for_the_blank(
 
 
 def test_the_grades_key_changes_with_everything_the_round_trip_reads(tmp_path):
-    """A stale cache would report the grades of another edition: the key must change when the chapter, another
-    chapter, ``wmr/``, ``edition/``, the tools that make and grade the assignment or the pinned environment change,
-    and only then (a new mtime is no change)."""
+    """A stale cache would report the grades of another edition: the key must change when the chapter, what a
+    chapter derived for later ones (``figures/*.derived.json``), ``wmr/``, ``edition/``, the tools that make and grade
+    the assignment or the pinned environment change, and only then (a new mtime, another chapter's notebook or
+    another published file is no change)."""
     files = {
         "notebooks/01_a.ipynb": "{}",
-        "notebooks/02_b.ipynb": "{}",
+        "figures/00_z.derived.json": "{}",
         "wmr/__init__.py": "",
         "edition/exercises/framework.py": "",
         "tools/assignments.py": "",
@@ -215,6 +216,8 @@ def test_the_grades_key_changes_with_everything_the_round_trip_reads(tmp_path):
     os.utime(chapter, (0, 0))
     assert G.key(chapter, tmp_path) == k
     (tmp_path / "tools" / "bench.py").write_text("# not read by the round trip")
+    (tmp_path / "notebooks" / "02_b.ipynb").write_text("{}")  # another chapter: read through its derived file only
+    (tmp_path / "figures" / "fig01.json").write_text("{}")
     assert G.key(chapter, tmp_path) == k
     seen = {k}
     for name in files:

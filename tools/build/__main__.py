@@ -55,7 +55,7 @@ def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(prog="python -m tools.build", description=__doc__, formatter_class=raw)
     ap.add_argument("command", choices=("execute", "publish", "assemble", "html", "pdf"))
     ap.add_argument("paths", type=Path, nargs="+")
-    ap.add_argument("--reads", type=Path, action="append", default=[], help="a folder a notebook reads (its key)")
+    ap.add_argument("--reads", type=Path, action="append", default=[], help="a folder or file it reads (its key)")
     a = ap.parse_args(argv)
     sys.modules.setdefault("rfc3987_syntax", None)  # type: ignore[arg-type]  # jsonschema's IRI grammar: 1 s, unused
     for sig in (signal.SIGINT, signal.SIGTERM, signal.SIGHUP):

@@ -2,8 +2,9 @@
 
 ``execute NOTEBOOK OUT [--reads DIR]`` (Make runs one per chapter, two at a time): the notebook runs in its own folder
 with ``WMR_OUT=<build>/out/<chapter>`` (where a chapter writes figures and ledger rows, nothing tracked); its executed
-copy is ``OUT``. Its key hashes the notebook, every file of ``wmr/`` and ``edition/``, the files under ``DIR`` (the
-findings chapter reads ``figures/``), Python and this file; the stamp ``OUT.stamp`` records the key and the hash of
+copy is ``OUT``. Its key hashes the notebook, every file of ``wmr/`` and ``edition/``, the files under ``DIR`` or the
+file ``DIR`` (the findings chapter reads ``figures/``, a chapter the derived objects of an earlier one), Python and
+this file; the stamp ``OUT.stamp`` records the key and the hash of
 every output. While both hold nothing is written (Make sees nothing new); a changed input, a damaged output or a garbage
 stamp runs it again, and the report is removed first. :func:`publish` copies what the chapters wrote into ``figures/``,
 a file only when its bytes differ: the build is the only writer there, ``git status`` stays clean."""
