@@ -29,7 +29,6 @@ from typing import Any
 
 import sympy as sp
 from sympy.core.function import UndefinedFunction
-from sympy.matrices import MatrixBase
 
 from .files import atomic_write
 
@@ -44,12 +43,18 @@ _OUT = "WMR_OUT"  # edition.notebook.OUT_VARIABLE: the folder the build gives th
 _NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]*\Z")
 _FLOAT = re.compile(r"[+-]?[0-9]+(\.[0-9]*)?([eE][+-]?[0-9]+)?\Z")
 #: SymPy's classes and constants (``pi``, ``I``, ``oo``, ...) a file may name; Dummy and Wild are not exact
+#: the SymPy classes a file may call: the algebra of the chapters' objects (a class that computes, such as
+#: factorial, could be asked for an unbounded amount of work); :func:`dumps` refuses an object needing another
 _CALLABLE = {
-    n: v
-    for n, v in vars(sp).items()
-    if isinstance(v, type) and issubclass(v, (sp.Basic, MatrixBase)) and n not in ("Dummy", "Wild")
-}
+    n: getattr(sp, n)
+    for n in (
+        "Symbol", "Function", "Integer", "Rational", "Float", "Add", "Mul", "Pow", "sin", "cos", "tan", "atan2",
+        "Abs", "sign", "Eq", "Derivative", "Tuple", "MutableDenseMatrix", "ImmutableDenseMatrix",
+    )
+}  # fmt: skip
 _CONSTANT = {n: v for n, v in vars(sp).items() if isinstance(v, sp.Basic) and not isinstance(v, type)}
+#: bounds on what a file may ask SymPy to build: its size, an integer's size and an integer exponent's
+MAX_BYTES, MAX_INTEGER, MAX_EXPONENT = 1 << 20, 10**6, 64
 _NAMED = {"Symbol", "Function"}  # the classes whose first argument is a name (a string SymPy does not parse)
 
 
@@ -76,6 +81,8 @@ def _same(a: Any, b: Any) -> bool:
 def _build(node: ast.AST, text: str) -> Any:
     """The object an ``ast`` node of :func:`sympy.srepr`'s text stands for; ValueError for anything else."""
     if isinstance(node, ast.Constant) and type(node.value) in (int, float, bool):
+        if type(node.value) is int and abs(node.value) > MAX_INTEGER:
+            raise ValueError(f"an integer of {len(str(abs(node.value)))} digits (at most {MAX_INTEGER:,})")
         return node.value
     if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub):
         value = _build(node.operand, text)
@@ -99,6 +106,8 @@ def _build(node: ast.AST, text: str) -> Any:
         else:
             raise ValueError(f"a call of {ast.get_source_segment(text, node.func)!r}, not a SymPy class")
         args = [_string(a, name, text) if i == 0 else _build(a, text) for i, a in enumerate(node.args)]
+        if name == "Pow" and len(args) == 2 and isinstance(args[1], sp.Integer) and abs(args[1]) > MAX_EXPONENT:
+            raise ValueError(f"the power {args[1]} (SymPy would expand it; at most {MAX_EXPONENT})")
         kwargs = {}
         for kw in node.keywords:
             if kw.arg is None or not isinstance(kw.value, ast.Constant) or type(kw.value.value) not in (bool, int):
@@ -142,6 +151,8 @@ def loads(text: str, chapter: str | None = None) -> dict[str, Any]:
     ...
     ValueError: x: a call of '__import__', not a SymPy class
     """
+    if len(text) > MAX_BYTES:
+        raise ValueError(f"{len(text):,} characters: larger than a file of derived objects ({MAX_BYTES:,})")
     try:
         data = json.loads(text)
     except ValueError as e:
@@ -193,6 +204,8 @@ def write(out: Path | str, chapter: str, objects: dict[str, Any]) -> Path:
 def read(path: Path | str, chapter: str | None = None) -> MappingProxyType:
     """The objects of one file (read only); ValueError when it is not one :func:`dumps` wrote (:func:`loads`)."""
     path = Path(path)
+    if not path.is_file() or path.stat().st_size > MAX_BYTES:
+        raise ValueError(f"{path}: not a regular file of at most {MAX_BYTES:,} bytes")
     try:
         return MappingProxyType(loads(path.read_text(encoding="utf-8"), chapter))
     except ValueError as e:

@@ -100,6 +100,9 @@ def tampered(text, name, replacement):
         ("open('{marker}', 'w')", "not a SymPy class"),
         ("Integer(1) if True else Integer(2)", "not SymPy's srepr"),
         ("Integer(1", "never closed"),
+        ("Integer(10000000000000000000000000)", "an integer of 26 digits"),
+        ("Pow(Integer(10), Integer(1000000))", "the power 1000000"),
+        ("factorial(Integer(1000000))", "not a SymPy class"),
     ],
 )
 def test_the_reader_refuses_a_tampered_file(tmp_path, replacement, why):
@@ -111,6 +114,14 @@ def test_the_reader_refuses_a_tampered_file(tmp_path, replacement, why):
     with pytest.raises(ValueError, match=rf"{bad.name}: E: .*{why}"):
         D.read(bad, "01_platform_and_wheels")
     assert not marker.exists()
+
+
+def test_the_reader_refuses_a_file_too_large_or_not_a_file(tmp_path):
+    big = tmp_path / "big.derived.json"
+    big.write_text(" " * (D.MAX_BYTES + 1))
+    for path in (big, tmp_path):
+        with pytest.raises(ValueError, match="not a regular file of at most"):
+            D.read(path)
 
 
 def test_the_reader_refuses_another_chapter_or_format(tmp_path):
