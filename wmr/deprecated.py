@@ -31,7 +31,7 @@ before                                         now
 ``wmr.sim.Sample``                             :class:`wmr.sim.Reading` (the sweeps' ``Sample`` is another thing)
 ``wmr.model.types.Twist`` (a type alias)       ``wmr.model.types.TwistLike`` (:class:`wmr.Twist` is the named twist)
 ``wmr.simulate``, ``wmr.analysis.simulation``  :func:`wmr.integrate`, :mod:`wmr.analysis.integration` (``wmr simulate`` is MuJoCo)
-``wmr.model.platform.cos_sin``, ``..._checked`` ``(np.cos(beta), np.sin(beta))`` (the half-angle path was 1.3x, not 3x)
+``wmr.model.platform.cos_sin`` (and checked)   ``(np.cos(beta), np.sin(beta))`` (the half-angle form was 1.3x, not 3x)
 ``wmr.swerve.to_wpilib(beta)``                 :func:`wmr.model.conventions.angle_to` ``(beta, "wpilib")`` (``speed``: unchanged)
 ``wmr.swerve.from_wpilib(alpha)``              :func:`wmr.model.conventions.angle_from` ``(alpha, "wpilib")``
 ``wmr.swerve.to_chassis(twist)``               :func:`wmr.model.conventions.twist_to` ``(twist, "wpilib")``
