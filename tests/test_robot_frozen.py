@@ -86,3 +86,12 @@ def test_cos_sin_is_deprecated_and_is_numpys():
     with pytest.warns(DeprecationWarning, match=r"np\.cos\(beta\), np\.sin\(beta\)"):
         c, s = getattr(platform, "cos_sin")(beta)  # noqa: B009 (kept by wmr.deprecated, not in the module)
     assert np.array_equal(c, np.cos(beta)) and np.array_equal(s, np.sin(beta))
+
+
+def test_numbers_of_a_robot_with_free_symbols_are_refused_by_the_package():
+    """The layout reads the checked floats of a numeric robot; a free symbol still gets the package's own error."""
+    import sympy as sp
+
+    bot = wmr.Robot([wmr.CentredWheel((sp.Symbol("x"), 0.0), r=1.0)])
+    with pytest.raises(InputError, match="position must be a number here, got the expression x"):
+        _ = bot.mount_points

@@ -22,6 +22,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from . import checks
 from .backend import NUMERIC
 from .trig import Terms
 from .types import FloatArray, IntArray, Symbolic
@@ -102,14 +103,18 @@ class Layout:
     def positions(self) -> FloatArray:
         """The mount points :math:`\\mathbf d_i`, (w, 2), as floats (also of an exact robot)."""
         if "positions" not in self._numeric:
-            # checked when each unit was made: finite reals (SymPy numbers of an exact robot become floats)
-            self._numeric["positions"] = np.array([u.position for u in self.wheels], dtype=float).reshape(-1, 2)
+            # checked when each unit was made; a SymPy value is checked to be a number (no free symbol)
+            number = checks.number if self.symbolic else lambda name, v: float(v)
+            self._numeric["positions"] = np.array(
+                [[number("position", v) for v in u.position] for u in self.wheels], dtype=float
+            ).reshape(-1, 2)
         return self._numeric["positions"]
 
     def _own(self) -> tuple[IntArray, FloatArray]:
         if "own" not in self._numeric:
             own = [i for i, u in enumerate(self.wheels) if u.constant_angle is not None]
-            angles = [float(self.wheels[i].constant_angle) for i in own]  # checked when made; exact ones too
+            number = checks.number if self.symbolic else lambda name, v: float(v)
+            angles = [number("angle", self.wheels[i].constant_angle) for i in own]  # checked when made
             self._numeric["own"] = (np.array(own, dtype=np.intp), np.array(angles, dtype=float))
         return self._numeric["own"]
 
