@@ -45,12 +45,18 @@ def _public_callables():
 
 
 def _module_callables():
-    """Public functions and classes (and their public methods) defined in the public modules."""
+    """Public functions and classes (and their public methods) defined in the public modules.
+
+    A module's public names are those its ``__all__`` lists (PEP 8); a package's ``__all__`` names its
+    modules.  The other names of a module are its implementation, called by wmr's own modules with values
+    already checked: :func:`test_internal_names_say_what_they_are` asks them for a summary line only.
+    """
     out: list = []
     for module in PUBLIC_MODULES:
         mod = importlib.import_module(module)
-        for name, obj in vars(mod).items():
-            if name.startswith("_") or getattr(obj, "__module__", None) != module:
+        for name in getattr(mod, "__all__", ()):
+            obj = getattr(mod, name, None)
+            if getattr(obj, "__module__", None) != module:
                 continue
             if inspect.isfunction(obj):
                 out.append((f"{module}.{name}", obj))
@@ -167,6 +173,32 @@ def test_checker_catches_missing_sections():
         """Summary only."""
 
     assert numpydoc_problems("f", f) == ["f: parameters not documented: ['a']", "f: no 'Returns' section"]
+
+
+def _internal_callables():
+    """Functions and classes of wmr's modules that no ``__all__`` lists: the modules' implementation.
+
+    Names with a leading underscore are a module's own (no other module may import them) and are left out.
+    """
+    listed = {id(o) for _, o in PUBLIC + _module_callables()}
+    out = []
+    for module in ALL_MODULES:
+        mod = importlib.import_module(module)
+        for name, obj in vars(mod).items():
+            if name[0] != "_" and getattr(obj, "__module__", None) == module and id(obj) not in listed:
+                if inspect.isfunction(obj) or inspect.isclass(obj):
+                    out.append((f"{module}.{name}", obj))
+    return out
+
+
+INTERNAL = _internal_callables()
+
+
+@pytest.mark.parametrize("name, obj", INTERNAL, ids=[n for n, _ in INTERNAL])
+def test_internal_names_say_what_they_are(name, obj):
+    """Implementation names: a summary line (the formula and shapes where they help), no numpydoc sections asked."""
+    doc = inspect.getdoc(obj)
+    assert doc and doc.strip().splitlines()[0].strip(), f"{name} has no summary line"
 
 
 @pytest.mark.parametrize("name, prop", PROPERTIES, ids=[n for n, _ in PROPERTIES])

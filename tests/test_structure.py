@@ -1,12 +1,12 @@
 """The shape of the code, read from its syntax trees: no import cycles, no private names across modules,
-the package's own exceptions, no dispatch on a wheel's kind, modules of at most 400 lines.
+the package's own exceptions, no dispatch on a wheel's kind, modules of at most 800 lines.
 
 Every import counts, also one inside a function (a lazy import is still a dependency); ``from .x import y``
 is an import of the module ``x.y`` when that is a module, else of ``x``.  The checks run on the ``wmr``
 that is imported (the repository's, or an installed wheel's: this test ships in the sdist).  The same
 reader checks the repository's ``edition/`` and ``tools/`` (``tools/build/`` too) beside it, when they are
 there: no cycles and no private names imported across modules of the three together, imports one way
-(wmr imports neither, the edition never imports the build), and at most 400 lines a module.  The rules of
+(wmr imports neither, the edition never imports the build), and at most 800 lines a module.  The rules of
 the library's own error types and of wheel kinds answering for themselves are the library's, checked on
 ``wmr`` only.
 """
@@ -20,7 +20,9 @@ import wmr
 
 #: the folder that holds the package ``wmr`` being tested (the repository, or site-packages)
 ROOT = Path(wmr.__file__).resolve().parent.parent
-MAX_LINES = 400
+#: a guard against a module that grew a second job, not a shape to fill: modules are split by what they are
+#: responsible for (issue 29: a 400-line cap had cut modules by length)
+MAX_LINES = 800
 
 
 # ------------------------------------------------------------------------------------------ the reader
