@@ -5,7 +5,10 @@ this process under :func:`sys.setprofile` and prints two readings of the path th
 
 * **as a reader follows it**: each function of wmr counted once, at its first call, in the order of first
   calls; a *visit* is a run of consecutive first calls in one module.  A module visited more than twice is
-  one the reader has to leave and come back to (the measure of issue 29: at most twice each);
+  one the reader has to leave and come back to (the measure of issue 29: at most twice each).  A
+  comprehension or generator expression is read as part of the function that holds it (Python 3.12 inlines
+  comprehensions, PEP 709, and the reader never leaves the function for one); a lambda counts, as it may be
+  called far from where it is written;
 * **as the interpreter runs it**: every call into a function of wmr and every return to one; a visit is a
   run of consecutive events in one module (loops over wheels and configurations count every pass).
 
@@ -25,6 +28,8 @@ from typing import Any
 import wmr.cli
 
 ROOT = Path(wmr.__file__).resolve().parent
+#: code objects a reader reads inside the function that holds them
+INLINE = frozenset({"<listcomp>", "<dictcomp>", "<setcomp>", "<genexpr>"})
 
 
 def module_of(frame: FrameType | None) -> str | None:
@@ -69,7 +74,7 @@ def trace(argv: list[str]) -> tuple[list[str], list[str]]:
         if event == "call":
             every.append(here)
             key = (frame.f_code.co_filename, frame.f_code.co_firstlineno)
-            if key not in seen:
+            if key not in seen and frame.f_code.co_name not in INLINE:
                 seen.add(key)
                 first.append(here)
         elif event == "return" and (back := module_of(frame.f_back)) is not None:
