@@ -14,28 +14,11 @@ import numpy as np
 from ..model.backend import NUMERIC
 from ..model.platform import rotation
 
-__all__ = ["RobotDrawing", "to_world", "robot_geometry", "platform_radius", "robot_extent"]
+__all__ = ["RobotDrawing", "robot_geometry", "platform_radius", "robot_extent"]
 
 
 def to_world(pose, p):
-    r"""Body-frame points to the fixed frame: :math:`\mathbf R(\psi)\,p + [X\ Y]^T`.
-
-    Parameters
-    ----------
-    pose : sequence (3,)
-        :math:`(\psi, X, Y)`, the platform pose in the fixed frame.
-    p : array_like (..., 2)
-        Points in body components.
-
-    Returns
-    -------
-    numpy.ndarray (..., 2)
-
-    Examples
-    --------
-    >>> to_world((np.pi / 2, 1.0, 0.0), [1.0, 0.0]).round(12) + 0.0
-    array([1., 1.])
-    """
+    r"""Body-frame points (..., 2) in the fixed frame: :math:`\mathbf R(\psi)\,p + [X\ Y]^T`, pose :math:`(\psi, X, Y)`."""
     psi, X, Y = pose
     return np.asarray(p, dtype=float) @ rotation(psi, NUMERIC).T + np.array([X, Y])
 

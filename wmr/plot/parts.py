@@ -16,7 +16,7 @@ part              what it is
 ================  =====================================================================================
 
 **A new kind of wheel** registers its entry here (``@unit_parts.register``), as it does in
-:mod:`wmr.sim` and :mod:`wmr.io`; :func:`has_parts` is what the contract test asks of every kind.
+:mod:`wmr.sim` and :mod:`wmr.io`.
 
 Examples
 --------
@@ -36,7 +36,7 @@ import numpy as np
 from ..model import checks
 from ..model.wheels import CentredWheel, DualWheel, FixedWheel, OffsetWheel, SwedishWheel, WheelUnit
 
-__all__ = ["Disc", "Link", "Rollers", "Pivot", "Part", "unit_parts", "drawn_angle", "has_parts"]
+__all__ = ["Disc", "Link", "Rollers", "Pivot", "Part", "unit_parts", "drawn_angle"]
 
 
 @dataclass(frozen=True)
@@ -211,15 +211,5 @@ def _swedish(unit: SwedishWheel, beta: float) -> tuple[Part, ...]:
 
 
 def has_parts(kind: type) -> bool:
-    """Whether a wheel kind has an entry in :func:`unit_parts` (its own or a base class's).
-
-    Parameters
-    ----------
-    kind : type
-        A wheel kind (:func:`wmr.model.wheels.wheel_kinds`).
-
-    Returns
-    -------
-    bool
-    """
+    """Whether a wheel kind has an entry in :func:`unit_parts` (its own or a base class's): the contract test's ask."""
     return unit_parts.dispatch(kind) is not unit_parts.dispatch(object)

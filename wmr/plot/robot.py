@@ -1,37 +1,28 @@
-r"""The robot seen from above: platform, wheel units, body frame, labels, axle and wheel-plane lines.
+r"""The robot seen from above: platform disc, operation point C and body frame, wheel units, labels, axle and
+wheel-plane lines (extended to where they meet).
 
-A robot is drawn as the platform disc, the operation point C with the body frame
-:math:`(\mathbf i, \mathbf j)`, and each wheel unit as its intermediate body (a pivot at
-:math:`P_i` on the steering axis, an arm to :math:`H_i` for an offset wheel, a bar for a dual wheel)
-carrying wheel discs, which from above are rounded rectangles of length :math:`2r` along the
-rolling direction :math:`\mathbf j_i` (marked by an arrow: by default the way the wheel moves at a
-positive rolling rate, :math:`-\mathbf j_i`).  Axles (dashed, along
-:math:`\mathbf i_i`) and wheel-plane lines (along :math:`\mathbf j_i`) can be drawn and extended to
-where they meet.  The geometry comes from the units themselves (:meth:`~wmr.model.wheels.WheelUnit.points`
-and each kind's entry in :func:`~wmr.plot.parts.unit_parts`), so the pictures obey :mod:`wmr.conventions` by
-construction and any wheel kind is drawn; it is computed without matplotlib in :mod:`wmr.plot.geometry`
-(:func:`robot_geometry` and its companions are re-exported here), and the parts are drawn by
-:mod:`wmr.plot.units` (:func:`draw_unit` and its companions are re-exported here).
+The geometry comes from the units themselves (:meth:`~wmr.model.wheels.WheelUnit.points`), computed without
+matplotlib in :mod:`wmr.plot.geometry`; each unit is drawn from its parts by :mod:`wmr.plot.units`.  Both modules'
+public names are re-exported here.
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-from .geometry import RobotDrawing, platform_radius, robot_extent, robot_geometry, to_world
+from .geometry import RobotDrawing, platform_radius, robot_extent, robot_geometry
+from .geometry import to_world as to_world  # implementation, importable here as before
 from .lines import draw_line
 from .marks import draw_frame, draw_point, label
 from .snapping import snap
-from .units import draw_pivot, draw_platform, draw_unit, draw_wheel
+from .units import draw_pivot as draw_pivot  # implementation, importable here as before
+from .units import draw_platform, draw_unit
+from .units import draw_wheel as draw_wheel
 
 __all__ = [
     "RobotDrawing",
-    "to_world",
     "robot_geometry",
     "platform_radius",
-    "draw_platform",
-    "draw_wheel",
-    "draw_pivot",
     "draw_unit",
     "draw_robot",
     "robot_extent",

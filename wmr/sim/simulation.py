@@ -34,7 +34,7 @@ from .params import Params
 from .recording import Reading
 from .validity import Monitor, Validity
 
-__all__ = ["MAX_STEPS", "Simulation"]
+__all__ = ["Simulation"]
 
 #: the most integration steps a run may take (a run of 10^7 steps takes minutes)
 MAX_STEPS = 5_000_000

@@ -23,8 +23,7 @@ Model, one control period :math:`\Delta t` after another (step :math:`k`):
 4. the **reference** pose integrates the commanded twists the same way; the **path error** is the
    distance between the two positions of C.
 
-A run is deterministic (no random input, a fixed step); data functions return dataclasses and
-:mod:`wmr.swerve.plot` draws them.
+A run is deterministic (no random input, a fixed step); :mod:`wmr.swerve.plot` draws it.
 """
 
 from __future__ import annotations
@@ -42,7 +41,8 @@ from ..model.types import ArrayLike
 from .limits import cosine_compensate, se2_exp
 from .modules import chassis_twist, module_commands, swerve_robot
 from .optimize import optimize_modules, optimize_robot
-from .profiles import MAX_STEPS, TwistProfile, direction_change, spin_and_translate
+from .profiles import MAX_STEPS as MAX_STEPS  # implementation, importable here as before
+from .profiles import TwistProfile, direction_change, spin_and_translate
 
 __all__ = [
     "TwistProfile",
@@ -53,7 +53,6 @@ __all__ = [
     "resteer_transient",
     "resteer_study",
     "STRATEGIES",
-    "MAX_STEPS",
 ]
 
 #: The strategies compared by :func:`resteer_study`: (strategy, cosine compensation).
@@ -129,6 +128,7 @@ def _compose(pose, delta):
 
 
 def _targets(robot, strategy, twist, beta):
+    """Target angles and speeds of one commanded twist from the angles ``beta`` by ``strategy``."""
     if strategy == "plain":
         cmd = module_commands(robot, twist, beta)
         return cmd.beta, cmd.speed
