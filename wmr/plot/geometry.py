@@ -25,7 +25,7 @@ def to_world(pose, p):
 
 @dataclass(frozen=True)
 class RobotDrawing:
-    r"""World coordinates of what :func:`draw_robot` drew (for labels and construction lines).
+    r"""World coordinates of a drawn robot (for labels and construction lines).
 
     Attributes
     ----------
@@ -55,14 +55,12 @@ class RobotDrawing:
 
 
 def robot_geometry(robot, beta, pose=(0.0, 0.0, 0.0)):
-    r"""World geometry of ``robot`` at steering angles ``beta`` and ``pose`` (nothing is drawn).
+    r"""World geometry of a numeric ``robot`` at steering angles ``beta`` and ``pose`` (nothing is drawn).
 
     Parameters
     ----------
     robot : wmr.Robot
-        A numeric robot.
     beta : array_like (w,)
-        Steering angles (radians).
     pose : sequence (3,), optional
         :math:`(\psi, X, Y)`.
 
@@ -102,13 +100,12 @@ def platform_radius(robot):
 
 
 def robot_extent(g, radius):
-    """Points bounding a drawn robot: the box around the platform disc and the wheel centres.
+    """Points bounding a drawn robot: the box around the platform disc of ``radius`` and the wheel centres.
 
     Parameters
     ----------
     g : RobotDrawing
     radius : float
-        Platform radius.
 
     Returns
     -------

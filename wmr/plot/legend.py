@@ -19,11 +19,9 @@ def scale_bar(ax, length, text, *, loc=(0.04, 0.05), color=None):
     ----------
     ax : matplotlib.axes.Axes
     length : float
-        Data units.
     text : str
         Label above the bar.
     loc : tuple (2,), optional
-        Left end of the bar, as fractions of the axes' limits.
     color : str, optional
 
     Returns

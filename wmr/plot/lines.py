@@ -32,24 +32,17 @@ def draw_line(
     Parameters
     ----------
     ax : matplotlib.axes.Axes
-    p : array_like (2,)
-        A point of the line.
-    u : array_like (2,)
-        Its direction.
+    p, u : array_like (2,)
+        A point of the line and its direction.
     include : sequence of array_like (2,), optional
-        Points the drawn segment must reach (:func:`segment_through`).
+        Points the drawn segment must reach.
     kind : str, optional
-        A key of :data:`wmr.plot.style.DASHES`: ``"axle"`` dashed blue (along
-        :math:`\mathbf i_i`), ``"plane"`` dash-dotted vermillion (wheel-plane lines, along
-        :math:`\mathbf j_i`), ``"thin"`` thin grey.
+        A key of :data:`wmr.plot.style.DASHES`: ``"axle"`` (along :math:`\mathbf i_i`), ``"plane"`` (wheel-plane
+        lines, along :math:`\mathbf j_i`), ``"thin"``.
     margin, min_half : float, optional
-        As for :func:`segment_through`.
-    zorder : float, optional
-    color : str, optional
-        Overrides the colour of ``kind``.
-    lw : float, optional
-        Overrides the width of ``kind``.
-    alpha : float, optional
+        Added at both ends; the least reach either side of ``p`` (data units).
+    color, lw, zorder, alpha : optional
+        ``color`` and ``lw`` override those of ``kind``.
 
     Returns
     -------
@@ -66,18 +59,15 @@ def draw_line(
 
 
 def draw_path(ax, xy, *, color=None, lw=1.3, ls="-", zorder=2.5, alpha=1.0):
-    """A trajectory.
+    """A trajectory through the points ``xy`` (n, 2), in order.
 
     Parameters
     ----------
     ax : matplotlib.axes.Axes
     xy : array_like (n, 2)
-        The points of the path, in order.
     color : str, optional
         Default: the first path colour of :data:`wmr.plot.style.ROLE`.
-    lw : float, optional
-    ls : str, optional
-    zorder, alpha : float, optional
+    lw, ls, zorder, alpha : optional
 
     Returns
     -------

@@ -63,33 +63,21 @@ def draw_robot(
     pose : (psi, X, Y)
         Platform pose in the fixed frame.
     ghost : bool
-        Draw dashed outlines only (an earlier or later pose).
-    labels : bool
-        Label C and the :math:`P_i` (with ``suffix``, e.g. ``"'"``).
-    frame : bool
-        Draw the body frame :math:`(\mathbf i, \mathbf j)` at C.
-    radius : float, optional
-        Platform radius (default :func:`platform_radius`).
-    label_offsets : dict, optional
-        Offsets in points for the labels ``"C"`` and ``1..w`` (default for :math:`P_i`: 17 points
-        along the axle and 10 along the wheel plane, away from C: beside the wheel, clear of both lines).
+        Dashed outlines only (an earlier or later pose).
+    labels, wheel_labels : bool
+        Label C and (with ``wheel_labels``) the :math:`P_i`, each followed by ``suffix`` (e.g. ``"'"``).
     suffix : str, optional
-        Appended to the labels.
-    frame_length : float, optional
-        Length of the frame arrows (default 0.42 times the platform radius).
-    platform : bool, optional
-        Draw the platform disc.
-    show_C : bool, optional
-        Mark the operation point.
-    show_j : bool, optional
-        Mark the rolling direction on each wheel.
+    frame, platform, show_C, show_j : bool, optional
+        Draw the body frame at C, the platform disc, the point C, the rolling direction on each wheel.
+    frame_length, radius : float, optional
+        Length of the frame arrows (default 0.42 radius) and platform radius (default :func:`platform_radius`).
+    label_offsets : dict, optional
+        Offsets in points of the labels ``"C"`` and ``1..w`` (default for :math:`P_i`: 17 points along the axle
+        and 10 along the wheel plane, away from C, clear of both lines).
     arrows : {"travel", "j"}, optional
-        Where the wheels' arrows point: the way each wheel moves at a positive rolling rate
-        (default: a robot driving forward with positive rates has its arrows forward), or the
-        paper's :math:`+\mathbf j_i`.
+        Where the wheels' arrows point: the way each wheel moves at a positive rolling rate (default), or
+        the paper's :math:`+\mathbf j_i`.
     zorder : float, optional
-    wheel_labels : bool, optional
-        Label the :math:`P_i` (with ``labels``).
 
     Returns
     -------
@@ -152,20 +140,17 @@ def draw_axles(ax, g, include=None, **kw):
 
 
 def draw_planes(ax, g, include=None, **kw):
-    r"""Wheel-plane lines of a drawn robot (world): through :math:`P_i` along :math:`\mathbf j_i`.
+    r"""Wheel-plane lines of a drawn robot (world): through :math:`P_i` along :math:`\mathbf j_i` (as :func:`draw_axles`).
 
     Parameters
     ----------
     ax : matplotlib.axes.Axes
     g : RobotDrawing
     include : sequence of sequences of array_like (2,), optional
-        ``include[k]``: points the k-th line must reach.
     **kw
-        Passed to :func:`wmr.plot.lines.draw_line`.
 
     Returns
     -------
     list of numpy.ndarray (2, 2)
-        The end points of each line drawn.
     """
     return _draw_lines(ax, g.P, g.j, include, "plane", **kw)

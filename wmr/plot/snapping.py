@@ -34,7 +34,6 @@ def snap(a):
     Returns
     -------
     numpy.ndarray (...)
-        Float array of the shape of ``a``.
 
     Examples
     --------
@@ -60,11 +59,10 @@ def _snap_xy(xy):
 
 
 def snap_figure(fig):
-    """Snap (:func:`snap`) every data coordinate of a figure's artists, in place, before it is saved.
+    """Snap (:func:`snap`) every data coordinate of a figure's artists in place, before it is saved.
 
-    Lines, texts and annotations, circles, arcs, polygons, arrows, boxes and the axes limits: what a
-    drawing hands to matplotlib, so that a figure saved on another machine, whose arithmetic differs
-    in the last bits, is the same file.  Contours and images are drawn from arrays the caller snaps.
+    Lines, texts and annotations, circles, arcs, polygons, arrows, boxes and the axes limits; contours and images
+    are drawn from arrays the caller snaps.
 
     Parameters
     ----------

@@ -109,10 +109,9 @@ def draw_unit(
 ):
     r"""One wheel unit: its parts (:func:`wmr.plot.parts.unit_parts`) in world coordinates from ``pose``.
 
-    Each part is drawn by its type, whatever the unit's kind: a :class:`~wmr.plot.parts.Link`
-    as a bar of the intermediate body (over the wheels, an arm; under them, a bar between wheels), a
-    :class:`~wmr.plot.parts.Disc` as a wheel, :class:`~wmr.plot.parts.Rollers` as
-    strokes across the disc along the roller axes, a :class:`~wmr.plot.parts.Pivot` as the
+    Each part is drawn by its type, whatever the unit's kind: a :class:`~wmr.plot.parts.Link` as a bar (over the
+    wheels an arm, under them a bar between wheels), a :class:`~wmr.plot.parts.Disc` as a wheel,
+    :class:`~wmr.plot.parts.Rollers` as strokes along the roller axes, a :class:`~wmr.plot.parts.Pivot` as the
     steering axis.
 
     Parameters
@@ -121,20 +120,14 @@ def draw_unit(
     unit : wheel unit
         One of ``robot.wheels``.
     beta : float
-        Its steering angle (radians); a unit without a steering joint (fixed, Swedish) is drawn
-        at its own angle.
+        Its steering angle (radians); a unit without a steering joint is drawn at its own angle.
     pose : sequence (3,), optional
         :math:`(\psi, X, Y)`.
-    ghost : bool, optional
-        Dashed outlines only.
+    ghost, show_j, light : bool, optional
+        Dashed outlines only; mark the rolling direction on each wheel; light grey wheels (close-ups).
     zorder : float, optional
-    show_j : bool, optional
-        Mark the rolling direction on each wheel.
-    light : bool, optional
-        Draw the wheels light grey (close-ups, so that the arm and labels stay visible).
     arrows : {"travel", "j"}, optional
-        Where the wheels' arrows point (:func:`draw_wheel`'s ``towards``): the way each wheel moves at
-        a positive rolling rate (default), or the paper's :math:`+\mathbf j_i`.
+        Where the wheels' arrows point (:func:`draw_wheel`'s ``towards``).
 
     Returns
     -------
