@@ -83,7 +83,6 @@ def radii(robot: Robot) -> FloatArray:
     Parameters
     ----------
     robot : Robot
-        Centred wheels only.
 
     Returns
     -------

@@ -72,24 +72,18 @@ class SteeringChoice:
 def transition_slip(
     robot: Robot, current: ArrayLike, beta: ArrayLike, speed: ArrayLike, samples: int = 8
 ) -> FloatArray:
-    r"""Mean relative slip while the modules turn from ``current`` to ``beta`` at one common rate.
+    r"""Mean relative slip :math:`\bar\sigma` while the modules turn from ``current`` to ``beta`` at one common rate.
 
-    Module :math:`i` turns along its shorter arc :math:`\Delta_i = \operatorname{wrap}(\beta_i -
-    \beta^0_i)` at the common rate, :math:`\beta_i(\tau) = \beta^0_i + \operatorname{clip}(\Delta_i,
-    -\tau, \tau)` for :math:`\tau \in [0, \max_i|\Delta_i|]`, driven at ``speed``.  At ``samples``
-    midpoints :math:`\tau_k = (k + \tfrac12)\max|\Delta|/K` the least-squares twist leaves the residual
-    :math:`\mathbf J_1\mathbf t - \mathbf J_2\dot{\boldsymbol\theta}` (21); the relative slip is its norm
-    over :math:`\|\mathbf J_2\dot{\boldsymbol\theta}\| = \|\mathbf s\|` (0 for zero speeds), and the
-    mean over the samples is returned.  The rate itself does not matter (the path is the same).
+    The transition of the module docstring, sampled at ``samples`` midpoints :math:`\tau_k = (k + \tfrac12)
+    \max|\Delta|/K`: at each, the norm of the residual of (21) over :math:`\|\mathbf s\|` (0 for zero speeds), at
+    most 1; the mean over the samples.  The common rate itself does not matter (the path is the same).
 
     Parameters
     ----------
     robot : Robot
         Centred wheels only.
-    current : array (..., w)
-        Angles now.
-    beta : array (..., w)
-        Target angles.
+    current, beta : array (..., w)
+        Angles now and target angles.
     speed : array (..., w)
         Signed module speeds during the transition (those of the targets), m/s.
     samples : int, optional
