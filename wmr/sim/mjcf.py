@@ -251,15 +251,10 @@ def _write(robot, params, mechs, height, beta0, weight):
     key = f'    <key name="start" qpos="{nums(*qpos, scale=1.0)}"' + (
         f' ctrl="{nums(*ctrl, scale=1.0)}"' if ctrl else ""
     )
-    lines += [
-        "  <keyframe>",
-        key + "/>",
-        "  </keyframe>",
-        "</mujoco>",
-        "",
-    ]
+    lines += ["  <keyframe>", key + "/>", "  </keyframe>", "</mujoco>", ""]
     return "\n".join(lines)
 
 
 def _escape(text):
+    """``text`` escaped for an XML attribute."""
     return str(text).replace("&", "&amp;").replace('"', "&quot;").replace("<", "&lt;").replace(">", "&gt;")

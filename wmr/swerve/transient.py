@@ -7,12 +7,10 @@ module measures that transient for each way of commanding the modules.
 
 Model, one control period :math:`\Delta t` after another (step :math:`k`):
 
-1. the commanded twist :math:`\mathbf t_k` (:class:`~wmr.swerve.profiles.TwistProfile`, made by
-   :mod:`wmr.swerve.profiles` and re-exported here) gives target angles and speeds by
-   a **strategy**: ``"plain"`` (:func:`~wmr.swerve.modules.module_commands`: speeds :math:`\ge 0`,
-   no flips), ``"module"`` (WPILib's per-module ``optimize``,
-   :func:`~wmr.swerve.optimize.optimize_modules`) or ``"robot"`` (the robot-level choice,
-   :func:`~wmr.swerve.optimize.optimize_robot`), optionally with **cosine compensation**
+1. the commanded twist :math:`\mathbf t_k` (a :class:`~wmr.swerve.profiles.TwistProfile`) gives target angles and
+   speeds by a **strategy**: ``"plain"`` (:func:`~wmr.swerve.modules.module_commands`: speeds :math:`\ge 0`, no
+   flips), ``"module"`` (WPILib's :func:`~wmr.swerve.optimize.optimize_modules`) or ``"robot"``
+   (:func:`~wmr.swerve.optimize.optimize_robot`), optionally with **cosine compensation**
    (:func:`~wmr.swerve.limits.cosine_compensate`);
 2. each module turns towards its target along the shorter arc, by at most :math:`\omega_s\Delta t`;
 3. the wheels roll at the (compensated) speeds at the new angles; the platform moves with the
