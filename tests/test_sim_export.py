@@ -275,3 +275,9 @@ def test_sim_is_an_optional_extra():
     meta = tomllib.loads((ROOT / "pyproject.toml").read_text())["project"]
     assert any(d.startswith("mujoco") for d in meta["optional-dependencies"]["sim"])
     assert not any(d.startswith("mujoco") for d in meta["dependencies"])
+
+
+def test_yaw_of_a_quaternion():
+    from wmr.sim.measure import yaw
+
+    assert round(yaw([np.cos(0.25), 0.0, 0.0, np.sin(0.25)]), 12) == 0.5

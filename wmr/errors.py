@@ -1,26 +1,11 @@
 """The exceptions wmr raises on purpose: one base class, and bad input told apart from a bug.
 
-Every check of wmr's input raises an :class:`InputError`, which is also the built-in exception a
-caller expects (in the style of python-control's ``ControlArgument(TypeError)``):
-
-* :class:`InputTypeError` (a ``TypeError``): the wrong *kind* of thing (a string, a bool, a complex
-  number, ``None``, a SymPy symbol where numbers are needed, the class ``Robot`` instead of a robot);
-* :class:`InputValueError` (a ``ValueError``): the right kind with a bad *value* (a negative
-  radius, NaN, infinity, a wrong shape, a number too large for double precision);
-* :class:`FrozenError` (an :class:`InputTypeError` and an ``AttributeError``): an assignment to an
-  attribute of a value that is made once (a :class:`~wmr.model.robot.Robot`): build a new one;
-* :class:`RobotFileError` (an :class:`InputValueError`): a malformed robot file, one line
-  ``FILE:LINE: key: what is wrong``;
-* :class:`LimitError` (an :class:`InputValueError`): a request beyond a limit of :mod:`wmr.model.limits`
-  (wheels, configurations, memory), refused before the work starts;
-* :class:`MissingDependencyError` (an ``ImportError``): an optional package that a bridge needs
-  (yourdfpy for URDF, PyYAML for ROS 2 parameters, robotpy-wpimath for WPILib) is not installed;
-  the message names the extra to install (``pip install 'wmr-kinematics[urdf]'``).
-
-So ``except ValueError`` still catches a bad value, and ``except wmr.errors.InputError`` catches
-bad input and nothing else: any other exception out of wmr is a bug in wmr.  The command line
-(:func:`wmr.cli.main`) relies on this: input errors become one line and exit status 2, anything
-else shows its traceback and asks for a report.
+Every check of wmr's input raises an :class:`InputError` that is also the built-in exception a caller
+expects (as python-control's ``ControlArgument(TypeError)``): :class:`InputTypeError` is a ``TypeError`` (the wrong
+kind of thing), :class:`InputValueError` a ``ValueError`` (the right kind with a bad value), and their subclasses
+say more.  So ``except ValueError`` still catches a bad value, and ``except wmr.errors.InputError`` catches bad
+input and nothing else: any other exception out of wmr is a bug in wmr.  The command line (:func:`wmr.cli.main`)
+relies on this: input errors become one line and exit status 2, anything else shows its traceback.
 
 Examples
 --------

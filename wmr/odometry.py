@@ -50,7 +50,7 @@ from .model.tolerance import TOL, column_norms
 from .model.types import ArrayLike
 from .swerve.limits import se2_exp
 
-__all__ = ["Odometry", "measured_joints", "wheel_odometry", "MAX_SAMPLES"]
+__all__ = ["Odometry", "wheel_odometry"]
 
 #: the most samples one call takes (about 100 MB of work arrays for a four-wheel robot)
 MAX_SAMPLES = 1_000_000
@@ -104,23 +104,9 @@ def _columns(robot):
 
 
 def measured_joints(robot: Robot) -> tuple[str, ...]:
-    r"""The rates an encoder measures by default: those of the joints with a motor (a column of J2 each).
+    r"""The rate names an encoder measures by default: those of the joints with a motor (a column of J2 each).
 
-    Parameters
-    ----------
-    robot : Robot
-
-    Returns
-    -------
-    tuple of str
-        Rate names (:attr:`wmr.Robot.rate_names`), in their order; a steering joint's rate (an
-        offset wheel's :math:`\dot\phi_i`) is measured through the steering angles.
-
-    Examples
-    --------
-    >>> import wmr
-    >>> measured_joints(wmr.load("examples/mecanum4.toml"))       # doctest: +SKIP
-    ('theta_dot_1', 'theta_dot_2', 'theta_dot_3', 'theta_dot_4')
+    A steering joint's rate (an offset wheel's :math:`\dot\phi_i`) is measured through the steering angles.
     """
     robot = validation.numeric_robot(robot)
     return tuple(robot.rate_names[c] for c in _columns(robot)[0])

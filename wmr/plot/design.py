@@ -20,8 +20,7 @@ _KAPPA_LEVELS = (1.05, 1.25, 1.5, 2.0, 3.0, 5.0, 10.0)
 
 
 def _kappa_image(ax, x, y, K, vmax):
-    """A log-scaled map of kappa (inf shown at the top of the scale) with contours (labelled later, once the
-    lines and markers drawn over the map are there: :func:`_label_contours`)."""
+    """A log-scaled map of kappa (inf at the top of the scale) and its contours (labelled by :func:`_label_contours`)."""
     shown = np.where(np.isfinite(K), K, vmax)
     im = ax.pcolormesh(x, y, np.clip(shown, 1.0, vmax), norm=LogNorm(1.0, vmax), shading="auto", cmap="cividis")
     levels = [v for v in _KAPPA_LEVELS if np.nanmin(shown) < v < vmax]
@@ -45,11 +44,10 @@ def _obstacles(ax, r):
 
 
 def _label_contours(fig, contours):
-    """Label each contour once, at the first point along it where the label covers no line, marker, legend or
-    other label of its axes and stays inside them (a contour with no such point is left unlabelled).
+    """Label each contour once, where the label covers no line, marker, legend or other label and stays inside its axes.
 
-    The figure is laid out first, so each candidate label's box is where it will be shown; the chosen points
-    are then labelled by :meth:`~matplotlib.axes.Axes.clabel`, which breaks the contour there.
+    The figure is laid out first, so each candidate label's box is where it will be shown; the chosen points are
+    labelled by :meth:`~matplotlib.axes.Axes.clabel`, which breaks the contour there.
     """
     canvas = fig.canvas if hasattr(fig.canvas, "get_renderer") else FigureCanvasAgg(fig)
     canvas.draw()
@@ -187,30 +185,22 @@ def draw_motion_maps(maps, titles, fig=None):
 
 
 def picture_bundle(data, alt, width=None):
-    """The MIME bundle that shows a PNG with alt text.
-
-    JupyterLab's PNG renderer drops alt text, so the bundle carries ``text/html`` (an ``<img alt=...>``,
-    preferred by JupyterLab and nbconvert's HTML), ``image/png`` (used by LaTeX/PDF) and ``text/plain``
-    (the alt text, for a reader without images).
+    """The MIME bundle that shows a PNG with alt text (JupyterLab's PNG renderer drops it; ``text/html`` keeps it).
 
     Parameters
     ----------
     data : bytes
         A PNG.
     alt : str
-        What the picture shows, in words (plain text; no Markdown or LaTeX).
+        What the picture shows, in plain words (no Markdown or LaTeX); not empty.
     width : int, optional
         Display width in pixels (the picture shrinks to fit a narrower notebook).
 
     Returns
     -------
     dict
-        ``{mime type: data}``, for ``IPython.display.display(bundle, raw=True)``.
-
-    Raises
-    ------
-    wmr.errors.InputValueError
-        When ``alt`` is not a non-empty string.
+        ``text/html`` (an ``<img alt=...>``), ``image/png`` and ``text/plain`` (the alt text), for
+        ``IPython.display.display(bundle, raw=True)``.
 
     Examples
     --------
@@ -231,22 +221,19 @@ def picture_bundle(data, alt, width=None):
 
 
 def show_figure(fig, caption, width=None, dpi=150, colours=None, alt=None):
-    """Display a figure in a notebook as a PNG, with its caption below (Markdown).
+    """Display a figure in a notebook as a PNG, with its caption (Markdown) below.
 
     Parameters
     ----------
     fig : matplotlib.figure.Figure
     caption : str
-        Markdown.
     width : int, optional
         Display width in pixels (default 110 per inch of the figure).
     dpi : int, optional
-        Resolution of the PNG (default 150).
     colours : int, optional
-        Reduce the PNG to a palette of this many colours (a third of the bytes for line charts;
-        default: full colour).
+        Reduce the PNG to a palette of this many colours (a third of the bytes for line charts).
     alt : str, optional
-        What the figure shows, in words, for a reader who cannot see it (:func:`picture_bundle`).
+        What the figure shows, in words (:func:`picture_bundle`).
 
     Returns
     -------

@@ -14,35 +14,18 @@ import numpy as np
 from ..model.backend import NUMERIC
 from ..model.platform import rotation
 
-__all__ = ["RobotDrawing", "to_world", "robot_geometry", "platform_radius", "robot_extent"]
+__all__ = ["RobotDrawing", "robot_geometry", "platform_radius", "robot_extent"]
 
 
 def to_world(pose, p):
-    r"""Body-frame points to the fixed frame: :math:`\mathbf R(\psi)\,p + [X\ Y]^T`.
-
-    Parameters
-    ----------
-    pose : sequence (3,)
-        :math:`(\psi, X, Y)`, the platform pose in the fixed frame.
-    p : array_like (..., 2)
-        Points in body components.
-
-    Returns
-    -------
-    numpy.ndarray (..., 2)
-
-    Examples
-    --------
-    >>> to_world((np.pi / 2, 1.0, 0.0), [1.0, 0.0]).round(12) + 0.0
-    array([1., 1.])
-    """
+    r"""Body-frame points (..., 2) in the fixed frame: :math:`\mathbf R(\psi)\,p + [X\ Y]^T`, pose :math:`(\psi, X, Y)`."""
     psi, X, Y = pose
     return np.asarray(p, dtype=float) @ rotation(psi, NUMERIC).T + np.array([X, Y])
 
 
 @dataclass(frozen=True)
 class RobotDrawing:
-    r"""World coordinates of what :func:`draw_robot` drew (for labels and construction lines).
+    r"""World coordinates of a drawn robot (for labels and construction lines).
 
     Attributes
     ----------
@@ -72,14 +55,12 @@ class RobotDrawing:
 
 
 def robot_geometry(robot, beta, pose=(0.0, 0.0, 0.0)):
-    r"""World geometry of ``robot`` at steering angles ``beta`` and ``pose`` (nothing is drawn).
+    r"""World geometry of a numeric ``robot`` at steering angles ``beta`` and ``pose`` (nothing is drawn).
 
     Parameters
     ----------
     robot : wmr.Robot
-        A numeric robot.
     beta : array_like (w,)
-        Steering angles (radians).
     pose : sequence (3,), optional
         :math:`(\psi, X, Y)`.
 
@@ -119,13 +100,12 @@ def platform_radius(robot):
 
 
 def robot_extent(g, radius):
-    """Points bounding a drawn robot: the box around the platform disc and the wheel centres.
+    """Points bounding a drawn robot: the box around the platform disc of ``radius`` and the wheel centres.
 
     Parameters
     ----------
     g : RobotDrawing
     radius : float
-        Platform radius.
 
     Returns
     -------

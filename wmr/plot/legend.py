@@ -9,7 +9,7 @@ from ..errors import InputValueError
 from .marks import label
 from .style import DASHES, FONT_SMALL, PALETTE
 
-__all__ = ["scale_bar", "info_box", "legend_handles"]
+__all__ = ["scale_bar", "legend_handles"]
 
 
 def scale_bar(ax, length, text, *, loc=(0.04, 0.05), color=None):
@@ -19,11 +19,9 @@ def scale_bar(ax, length, text, *, loc=(0.04, 0.05), color=None):
     ----------
     ax : matplotlib.axes.Axes
     length : float
-        Data units.
     text : str
         Label above the bar.
     loc : tuple (2,), optional
-        Left end of the bar, as fractions of the axes' limits.
     color : str, optional
 
     Returns
@@ -41,25 +39,7 @@ def scale_bar(ax, length, text, *, loc=(0.04, 0.05), color=None):
 
 
 def info_box(ax, lines, *, loc=(0.98, 0.98), ha="right", va="top", fontsize=FONT_SMALL, below=False):
-    """Computed numbers, one per line, in a light box at axes fraction ``loc``.
-
-    Parameters
-    ----------
-    ax : matplotlib.axes.Axes
-    lines : sequence of str
-        The lines of text.
-    loc : tuple (2,), optional
-        Anchor of the box, axes fractions.
-    ha, va : str, optional
-        Alignment of the box at ``loc``.
-    fontsize : float, optional
-    below : bool, optional
-        Centre the box under the axes instead (overrides ``loc``, ``ha``, ``va``).
-
-    Returns
-    -------
-    None
-    """
+    """Computed numbers, one per line, in a light box at axes fraction ``loc`` (``below``: centred under the axes)."""
     if below:
         loc, ha, va = (0.5, -0.015), "center", "top"
     ax.text(

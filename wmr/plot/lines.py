@@ -9,36 +9,14 @@ import numpy as np
 
 from .style import DASHES, ROLE
 
-__all__ = ["segment_through", "draw_line", "draw_path"]
+__all__ = ["draw_line", "draw_path"]
 
 
 def segment_through(p, u, include=(), margin=0.3, min_half=0.5):
-    r"""Parameters of the segment of the line :math:`p + t\,u/\|u\|` that covers ``p`` and the points ``include``.
+    r"""Ends ``(t0, t1)`` of the segment of the line :math:`p + t\,u/\|u\|` covering ``p`` and ``include``.
 
-    Each point :math:`q` of ``include`` is projected on the line, :math:`t_q = (q - p)\cdot u/\|u\|`.
-
-    Parameters
-    ----------
-    p : array_like (2,)
-        A point of the line.
-    u : array_like (2,)
-        Its direction (any length, not zero).
-    include : sequence of array_like (2,), optional
-        Points whose projections the segment must reach.
-    margin : float, optional
-        Added at both ends (data units).
-    min_half : float, optional
-        The segment reaches at least this far on either side of ``p``.
-
-    Returns
-    -------
-    t0, t1 : float
-        The ends, as distances along the unit direction.
-
-    Examples
-    --------
-    >>> segment_through((0, 0), (2, 0), include=[(3, 1)], margin=0.0)
-    (-0.5, 3.0)
+    Each point :math:`q` of ``include`` projects to :math:`t_q = (q - p)\cdot u/\|u\|`; the segment reaches at least
+    ``min_half`` either side of ``p``, plus ``margin`` at both ends.
     """
     p, u = np.asarray(p, dtype=float), np.asarray(u, dtype=float)
     u = u / np.linalg.norm(u)
@@ -54,24 +32,17 @@ def draw_line(
     Parameters
     ----------
     ax : matplotlib.axes.Axes
-    p : array_like (2,)
-        A point of the line.
-    u : array_like (2,)
-        Its direction.
+    p, u : array_like (2,)
+        A point of the line and its direction.
     include : sequence of array_like (2,), optional
-        Points the drawn segment must reach (:func:`segment_through`).
+        Points the drawn segment must reach.
     kind : str, optional
-        A key of :data:`wmr.plot.style.DASHES`: ``"axle"`` dashed blue (along
-        :math:`\mathbf i_i`), ``"plane"`` dash-dotted vermillion (wheel-plane lines, along
-        :math:`\mathbf j_i`), ``"thin"`` thin grey.
+        A key of :data:`wmr.plot.style.DASHES`: ``"axle"`` (along :math:`\mathbf i_i`), ``"plane"`` (wheel-plane
+        lines, along :math:`\mathbf j_i`), ``"thin"``.
     margin, min_half : float, optional
-        As for :func:`segment_through`.
-    zorder : float, optional
-    color : str, optional
-        Overrides the colour of ``kind``.
-    lw : float, optional
-        Overrides the width of ``kind``.
-    alpha : float, optional
+        Added at both ends; the least reach either side of ``p`` (data units).
+    color, lw, zorder, alpha : optional
+        ``color`` and ``lw`` override those of ``kind``.
 
     Returns
     -------
@@ -88,18 +59,15 @@ def draw_line(
 
 
 def draw_path(ax, xy, *, color=None, lw=1.3, ls="-", zorder=2.5, alpha=1.0):
-    """A trajectory.
+    """A trajectory through the points ``xy`` (n, 2), in order.
 
     Parameters
     ----------
     ax : matplotlib.axes.Axes
     xy : array_like (n, 2)
-        The points of the path, in order.
     color : str, optional
         Default: the first path colour of :data:`wmr.plot.style.ROLE`.
-    lw : float, optional
-    ls : str, optional
-    zorder, alpha : float, optional
+    lw, ls, zorder, alpha : optional
 
     Returns
     -------

@@ -35,15 +35,11 @@ def _outlined(patch) -> bool:
 
 
 class _ClearLabel(Annotation):
-    """A label that, when drawn, moves off the lines and arrows of its axes (an annotation of :func:`label`).
+    """A label that, when drawn, moves off the lines, marked points, arrows, patch outlines and texts of its axes.
 
-    At draw time -- the axes' limits final, so every line is where it will be shown -- the label keeps the
-    offset it was given unless its box crosses a line (:class:`~matplotlib.lines.Line2D` of two or more
-    points), a marked point, an arrow, the outline of a patch (a platform's rim, a wheel) or another text of its
-    axes; then it takes the first offset of
-    :data:`_DIRECTIONS` (at the same distance, then at twice and three times it) whose box crosses none, and if none
-    is clear, the one it was given.  The
-    choice depends only on the drawing, so every format and every machine shows the same placement.
+    At draw time (the limits final) it keeps its offset unless its box crosses one of them; then it takes the first
+    offset of :data:`_DIRECTIONS` (at the same distance, then twice and three times it) whose box crosses none, or, if
+    none is clear, the one it was given.  The choice depends only on the drawing: the same on every machine.
     """
 
     def __init__(self, *args, **kw):
@@ -105,8 +101,7 @@ class _ClearLabel(Annotation):
 def label(
     ax, xy, text, *, offset=(4, 4), color=None, ha="left", va="bottom", fontsize=FONT_LABEL, zorder=9.0, halo=True, **kw
 ):
-    """A text label at ``xy`` shifted by ``offset`` points, with a white halo for legibility; when drawn it moves
-    off any line, marked point, arrow, patch outline or text it would cover (``_ClearLabel``).
+    """A text label at ``xy`` shifted by ``offset`` points, with a white halo; when drawn it moves off what it would cover.
 
     Parameters
     ----------
@@ -125,7 +120,7 @@ def label(
     halo : bool, optional
         Draw a white outline behind the text.
     **kw
-        Passed to :meth:`matplotlib.axes.Axes.annotate`.
+        Passed to :class:`matplotlib.text.Annotation`.
 
     Returns
     -------
@@ -173,18 +168,16 @@ def draw_point(
     xy : array_like (2,)
         The point, data coordinates.
     text : str, optional
-        Label (see :func:`label`); none by default.
+        Label (:func:`label`); none by default.
     marker : str, optional
         A matplotlib marker.
-    color : str, optional
-        Default: the point colour of :data:`wmr.plot.style.ROLE`.
+    color, face : str, optional
+        Colour (default: the point colour of :data:`wmr.plot.style.ROLE`) and face colour (default ``color``).
     size : float, optional
         Marker size (points).
     offset, ha, va, fontsize : optional
         Placement and size of the label, as in :func:`label`.
     zorder : float, optional
-    face : str, optional
-        Face colour of the marker (default: ``color``).
 
     Returns
     -------
@@ -207,15 +200,13 @@ def draw_point(
 
 
 def draw_arrow(ax, start, vec, *, color=None, lw=1.1, zorder=6.0, head=7.0, style="-|>", ls="-"):
-    """An arrow from ``start`` along ``vec`` (data units).
+    """An arrow from ``start`` along ``vec`` (data units): the tip at ``start + vec``.
 
     Parameters
     ----------
     ax : matplotlib.axes.Axes
-    start : array_like (2,)
-        Tail, data coordinates.
-    vec : array_like (2,)
-        The arrow itself: the tip is at ``start + vec``.
+    start, vec : array_like (2,)
+        Tail (data coordinates) and the arrow itself.
     color : str, optional
         Default: the frame colour of :data:`wmr.plot.style.ROLE`.
     lw, zorder : float, optional
@@ -304,7 +295,7 @@ def draw_angle(
     arrow=True,
     zorder=6.0,
 ):
-    """An arc from angle ``a0`` to ``a1`` (radians, counter-clockwise if a1 > a0) with a label.
+    """An arc from angle ``a0`` to ``a1`` (radians, counter-clockwise if a1 > a0), with a head at ``a1`` and a label.
 
     Parameters
     ----------
@@ -316,16 +307,12 @@ def draw_angle(
     a0, a1 : float
         Start and end angles (radians).
     text : str, optional
-        Label, placed on the bisector at ``text_radius * radius``.
+        Label, on the bisector at ``text_radius * radius``.
     color : str, optional
         Default: the annotation colour of :data:`wmr.plot.style.ROLE`.
-    lw : float, optional
-    text_radius : float, optional
-        Distance of the label from ``centre``, in radii.
-    fontsize : float, optional
+    lw, text_radius, fontsize, zorder : float, optional
     arrow : bool, optional
-        A head at ``a1`` (when the arc is long enough to carry one).
-    zorder : float, optional
+        The head at ``a1`` (when the arc is long enough to carry one).
 
     Returns
     -------

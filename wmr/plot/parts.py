@@ -16,7 +16,7 @@ part              what it is
 ================  =====================================================================================
 
 **A new kind of wheel** registers its entry here (``@unit_parts.register``), as it does in
-:mod:`wmr.sim` and :mod:`wmr.io`; :func:`has_parts` is what the contract test asks of every kind.
+:mod:`wmr.sim` and :mod:`wmr.io`.
 
 Examples
 --------
@@ -36,20 +36,19 @@ import numpy as np
 from ..model import checks
 from ..model.wheels import CentredWheel, DualWheel, FixedWheel, OffsetWheel, SwedishWheel, WheelUnit
 
-__all__ = ["Disc", "Link", "Rollers", "Pivot", "Part", "unit_parts", "drawn_angle", "has_parts"]
+__all__ = ["Disc", "Link", "Rollers", "Pivot", "Part", "unit_parts", "drawn_angle"]
 
 
 @dataclass(frozen=True)
 class Disc:
-    r"""A wheel seen from above.
+    r"""A wheel seen from above: :math:`2r` long along :math:`\mathbf j = \mathbf R(\beta)[0\ 1]^T`.
 
     Parameters
     ----------
     centre : numpy.ndarray (2,)
         Its centre (body frame).
     heading : float
-        The angle :math:`\beta` of its wheel frame in the body frame: the disc is :math:`2r` long
-        along :math:`\mathbf j = \mathbf R(\beta)[0\ 1]^T`.
+        The angle :math:`\beta` of its wheel frame in the body frame.
     r : float
         Wheel radius.
     arrow : bool, optional
@@ -71,8 +70,7 @@ class Link:
     ends : numpy.ndarray (2, 2)
         Its two end points (body frame).
     over : bool
-        Drawn over the wheels (an arm from the steering axis to the wheel) or under them (a bar
-        between two wheels).
+        Drawn over the wheels (an arm to the wheel) or under them (a bar between two wheels).
     r : float
         Wheel radius of the unit (the scale of the drawing).
     """
@@ -89,9 +87,8 @@ class Rollers:
     Parameters
     ----------
     centre : numpy.ndarray (2,)
-        The wheel's centre (body frame).
     heading : float
-        The angle :math:`\beta` of the wheel frame (body frame).
+        The wheel's centre and wheel-frame angle :math:`\beta` (body frame).
     r : float
         Wheel radius.
     angle : float
@@ -125,13 +122,12 @@ Part: TypeAlias = Disc | Link | Rollers | Pivot
 
 
 def drawn_angle(unit: WheelUnit, beta: float) -> float:
-    """The angle a unit is drawn at: ``beta``, or a unit's own constant angle.
+    """The angle a unit is drawn at: ``beta``, or the unit's own constant angle.
 
     Parameters
     ----------
     unit : WheelUnit
     beta : float
-        The unit's configuration entry.
 
     Returns
     -------
@@ -150,12 +146,12 @@ def _discs(unit: WheelUnit, beta: float, arrow: bool = True) -> tuple[Part, ...]
 
 @functools.singledispatch
 def unit_parts(unit: Any, beta: float) -> tuple[Part, ...]:
-    r"""The parts of a wheel unit seen from above at one steering angle, body frame (module notes).
+    r"""The parts of a wheel unit seen from above at steering angle ``beta``, body frame.
 
     Parameters
     ----------
     unit : WheelUnit
-        Of a kind with an entry here (:func:`has_parts`).
+        Of a kind with an entry here.
     beta : float
         The unit's steering angle :math:`\beta_i` (a unit with a constant angle uses its own).
 
@@ -211,15 +207,5 @@ def _swedish(unit: SwedishWheel, beta: float) -> tuple[Part, ...]:
 
 
 def has_parts(kind: type) -> bool:
-    """Whether a wheel kind has an entry in :func:`unit_parts` (its own or a base class's).
-
-    Parameters
-    ----------
-    kind : type
-        A wheel kind (:func:`wmr.model.wheels.wheel_kinds`).
-
-    Returns
-    -------
-    bool
-    """
+    """Whether a wheel kind has an entry in :func:`unit_parts` (its own or a base class's): the contract test's ask."""
     return unit_parts.dispatch(kind) is not unit_parts.dispatch(object)

@@ -1,37 +1,28 @@
-r"""The robot seen from above: platform, wheel units, body frame, labels, axle and wheel-plane lines.
+r"""The robot seen from above: platform disc, operation point C and body frame, wheel units, labels, axle and
+wheel-plane lines (extended to where they meet).
 
-A robot is drawn as the platform disc, the operation point C with the body frame
-:math:`(\mathbf i, \mathbf j)`, and each wheel unit as its intermediate body (a pivot at
-:math:`P_i` on the steering axis, an arm to :math:`H_i` for an offset wheel, a bar for a dual wheel)
-carrying wheel discs, which from above are rounded rectangles of length :math:`2r` along the
-rolling direction :math:`\mathbf j_i` (marked by an arrow: by default the way the wheel moves at a
-positive rolling rate, :math:`-\mathbf j_i`).  Axles (dashed, along
-:math:`\mathbf i_i`) and wheel-plane lines (along :math:`\mathbf j_i`) can be drawn and extended to
-where they meet.  The geometry comes from the units themselves (:meth:`~wmr.model.wheels.WheelUnit.points`
-and each kind's entry in :func:`~wmr.plot.parts.unit_parts`), so the pictures obey :mod:`wmr.conventions` by
-construction and any wheel kind is drawn; it is computed without matplotlib in :mod:`wmr.plot.geometry`
-(:func:`robot_geometry` and its companions are re-exported here), and the parts are drawn by
-:mod:`wmr.plot.units` (:func:`draw_unit` and its companions are re-exported here).
+The geometry comes from the units themselves (:meth:`~wmr.model.wheels.WheelUnit.points`), computed without
+matplotlib in :mod:`wmr.plot.geometry`; each unit is drawn from its parts by :mod:`wmr.plot.units`.  Both modules'
+public names are re-exported here.
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-from .geometry import RobotDrawing, platform_radius, robot_extent, robot_geometry, to_world
+from .geometry import RobotDrawing, platform_radius, robot_extent, robot_geometry
+from .geometry import to_world as to_world  # implementation, importable here as before
 from .lines import draw_line
 from .marks import draw_frame, draw_point, label
 from .snapping import snap
-from .units import draw_pivot, draw_platform, draw_unit, draw_wheel
+from .units import draw_pivot as draw_pivot  # implementation, importable here as before
+from .units import draw_platform, draw_unit
+from .units import draw_wheel as draw_wheel
 
 __all__ = [
     "RobotDrawing",
-    "to_world",
     "robot_geometry",
     "platform_radius",
-    "draw_platform",
-    "draw_wheel",
-    "draw_pivot",
     "draw_unit",
     "draw_robot",
     "robot_extent",
@@ -72,33 +63,21 @@ def draw_robot(
     pose : (psi, X, Y)
         Platform pose in the fixed frame.
     ghost : bool
-        Draw dashed outlines only (an earlier or later pose).
-    labels : bool
-        Label C and the :math:`P_i` (with ``suffix``, e.g. ``"'"``).
-    frame : bool
-        Draw the body frame :math:`(\mathbf i, \mathbf j)` at C.
-    radius : float, optional
-        Platform radius (default :func:`platform_radius`).
-    label_offsets : dict, optional
-        Offsets in points for the labels ``"C"`` and ``1..w`` (default for :math:`P_i`: 17 points
-        along the axle and 10 along the wheel plane, away from C: beside the wheel, clear of both lines).
+        Dashed outlines only (an earlier or later pose).
+    labels, wheel_labels : bool
+        Label C and (with ``wheel_labels``) the :math:`P_i`, each followed by ``suffix`` (e.g. ``"'"``).
     suffix : str, optional
-        Appended to the labels.
-    frame_length : float, optional
-        Length of the frame arrows (default 0.42 times the platform radius).
-    platform : bool, optional
-        Draw the platform disc.
-    show_C : bool, optional
-        Mark the operation point.
-    show_j : bool, optional
-        Mark the rolling direction on each wheel.
+    frame, platform, show_C, show_j : bool, optional
+        Draw the body frame at C, the platform disc, the point C, the rolling direction on each wheel.
+    frame_length, radius : float, optional
+        Length of the frame arrows (default 0.42 radius) and platform radius (default :func:`platform_radius`).
+    label_offsets : dict, optional
+        Offsets in points of the labels ``"C"`` and ``1..w`` (default for :math:`P_i`: 17 points along the axle
+        and 10 along the wheel plane, away from C, clear of both lines).
     arrows : {"travel", "j"}, optional
-        Where the wheels' arrows point: the way each wheel moves at a positive rolling rate
-        (default: a robot driving forward with positive rates has its arrows forward), or the
-        paper's :math:`+\mathbf j_i`.
+        Where the wheels' arrows point: the way each wheel moves at a positive rolling rate (default), or
+        the paper's :math:`+\mathbf j_i`.
     zorder : float, optional
-    wheel_labels : bool, optional
-        Label the :math:`P_i` (with ``labels``).
 
     Returns
     -------
@@ -161,20 +140,17 @@ def draw_axles(ax, g, include=None, **kw):
 
 
 def draw_planes(ax, g, include=None, **kw):
-    r"""Wheel-plane lines of a drawn robot (world): through :math:`P_i` along :math:`\mathbf j_i`.
+    r"""Wheel-plane lines of a drawn robot (world): through :math:`P_i` along :math:`\mathbf j_i` (as :func:`draw_axles`).
 
     Parameters
     ----------
     ax : matplotlib.axes.Axes
     g : RobotDrawing
     include : sequence of sequences of array_like (2,), optional
-        ``include[k]``: points the k-th line must reach.
     **kw
-        Passed to :func:`wmr.plot.lines.draw_line`.
 
     Returns
     -------
     list of numpy.ndarray (2, 2)
-        The end points of each line drawn.
     """
     return _draw_lines(ax, g.P, g.j, include, "plane", **kw)

@@ -12,12 +12,10 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["SNAP_DECIMALS", "SNAP_DIGITS", "snap", "snap_figure"]
+__all__ = ["snap", "snap_figure"]
 
-#: Decimal places kept of a coordinate handed to the renderer (in data units: the figures draw in
-#: units of a length :math:`L`, or in degrees).  1e-7 is far below a pixel and far above round-off,
-#: so coordinates that differ in their last bits (another CPU's ``sin``, another BLAS kernel) are drawn
-#: from the same numbers.
+#: Decimal places kept of a coordinate (data units: a length :math:`L`, or degrees): far below a pixel, far
+#: above round-off.
 SNAP_DECIMALS = 7
 #: Above this magnitude a value is rounded to :data:`SNAP_DIGITS` significant digits instead.
 _SNAP_LARGE = 1e6
@@ -36,7 +34,6 @@ def snap(a):
     Returns
     -------
     numpy.ndarray (...)
-        Float array of the shape of ``a``.
 
     Examples
     --------
@@ -57,15 +54,15 @@ def snap(a):
 
 
 def _snap_xy(xy):
+    """A point snapped, as a tuple of floats."""
     return tuple(snap(xy).tolist())
 
 
 def snap_figure(fig):
-    """Snap (:func:`snap`) every data coordinate of a figure's artists, in place, before it is saved.
+    """Snap (:func:`snap`) every data coordinate of a figure's artists in place, before it is saved.
 
-    Lines, texts and annotations, circles, arcs, polygons, arrows, boxes and the axes limits: what a
-    drawing hands to matplotlib, so that a figure saved on another machine, whose arithmetic differs
-    in the last bits, is the same file.  Contours and images are drawn from arrays the caller snaps.
+    Lines, texts and annotations, circles, arcs, polygons, arrows, boxes and the axes limits; contours and images
+    are drawn from arrays the caller snaps.
 
     Parameters
     ----------

@@ -24,9 +24,7 @@ __all__ = [
     "ROLE",
     "DASHES",
     "RC",
-    "FONT_LABEL",
     "FONT_SMALL",
-    "HALO",
     "style",
     "new_figure",
     "plain_axes",
@@ -102,12 +100,11 @@ HALO: list[pe.AbstractPathEffect] = [pe.withStroke(linewidth=2.6, foreground="wh
 
 @contextmanager
 def style():
-    """Context in which figures are made and saved (:data:`RC`).
+    """Context in which figures are made and saved: matplotlib with the settings :data:`RC`.
 
     Returns
     -------
     contextlib.AbstractContextManager
-        Within it, matplotlib uses the settings :data:`RC`.
     """
     with matplotlib.rc_context(RC):
         yield
@@ -125,6 +122,8 @@ def new_figure(nrows=1, ncols=1, width=7.0, height=3.2, *, fig=None, drawing=Tru
         Draw into this (cleared) figure instead of a new one.
     drawing : bool
         Make every axes a drawing (:func:`plain_axes`); False for charts.
+    **subplot_kw
+        Passed to :meth:`matplotlib.figure.Figure.subplots`.
 
     Returns
     -------
@@ -164,14 +163,12 @@ def plain_axes(ax):
 
 
 def panel_title(ax, letter, text):
-    """Panel title '(a) text', left-aligned.
+    """Panel title '(a) text', left-aligned (``letter=""``: the text alone).
 
     Parameters
     ----------
     ax : matplotlib.axes.Axes
-    letter : str
-        The panel's letter (``""``: the text alone).
-    text : str
+    letter, text : str
 
     Returns
     -------
@@ -181,15 +178,13 @@ def panel_title(ax, letter, text):
 
 
 def fit_view(ax, points, pad=0.15):
-    """Set limits that contain ``points`` with a margin of ``pad`` times the larger span.
+    """Set limits that contain ``points`` (anything that reshapes to (n, 2)) with a margin of ``pad`` times the larger span.
 
     Parameters
     ----------
     ax : matplotlib.axes.Axes
     points : array_like (n, 2)
-        Data coordinates (anything that reshapes to ``(n, 2)``).
     pad : float, optional
-        Margin, as a fraction of the larger of the two spans.
 
     Returns
     -------

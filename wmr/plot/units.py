@@ -18,48 +18,22 @@ from .parts import Disc, Link, Pivot, Rollers, drawn_angle, unit_parts
 from .snapping import snap
 from .style import PALETTE, ROLE
 
-__all__ = ["draw_platform", "draw_wheel", "draw_pivot", "draw_unit"]
+__all__ = ["draw_unit"]
 
 
 def draw_platform(ax, centre, radius, *, ghost=False, zorder=1.0):
-    """The platform as a disc (dashed outline when ``ghost``).
-
-    Parameters
-    ----------
-    ax : matplotlib.axes.Axes
-    centre : array_like (2,)
-    radius : float
-    ghost : bool, optional
-        Dashed outline only (an earlier or later pose).
-    zorder : float, optional
-
-    Returns
-    -------
-    None
-    """
-    if ghost:
-        ax.add_patch(
-            Circle(
-                centre,
-                radius,
-                facecolor="none",
-                edgecolor=ROLE["platform_edge"],
-                linewidth=0.8,
-                linestyle=(0, (4, 3)),
-                zorder=zorder,
-            )
+    """The platform as a disc (dashed outline only when ``ghost``: an earlier or later pose)."""
+    ax.add_patch(
+        Circle(
+            centre,
+            radius,
+            facecolor="none" if ghost else ROLE["platform_face"],
+            edgecolor=ROLE["platform_edge"],
+            linewidth=0.8 if ghost else 0.9,
+            linestyle=(0, (4, 3)) if ghost else "-",
+            zorder=zorder,
         )
-    else:
-        ax.add_patch(
-            Circle(
-                centre,
-                radius,
-                facecolor=ROLE["platform_face"],
-                edgecolor=ROLE["platform_edge"],
-                linewidth=0.9,
-                zorder=zorder,
-            )
-        )
+    )
 
 
 def draw_wheel(
@@ -76,36 +50,11 @@ def draw_wheel(
     light=False,
     towards="travel",
 ):
-    r"""A wheel disc seen from above: a rounded rectangle, length 2r along ``heading`` (:math:`\mathbf j_i`).
+    r"""A wheel disc from above: a rounded rectangle 2r long along :math:`\mathbf j_i`, world angle ``heading``.
 
-    Parameters
-    ----------
-    ax : matplotlib.axes.Axes
-    centre : array_like (2,)
-    heading : float
-        World angle of the wheel frame, :math:`\psi + \beta_i` (the rectangle's long side is
-        along :math:`\mathbf j_i = \mathbf R(\psi+\beta_i)[0\ 1]^T`).
-    r : float
-    width : float, optional
-        Tyre width (default 0.42 r).
-    ghost : bool, optional
-        Dashed outline only.
-    arrow : bool
-        Mark the wheel with a white arrow along its plane.
-    towards : {"travel", "j"}, optional
-        Where the arrow points: ``"travel"`` (default), the way the wheel moves at a positive rolling
-        rate, :math:`-\mathbf j_i` (no slip: :math:`\dot{\mathbf h}_i = -r\dot\theta_i\mathbf j_i`, (6)), so a
-        robot driving forward has its arrows forward; ``"j"``, the paper's rolling direction
-        :math:`+\mathbf j_i` of the wheel frame.
-    zorder : float, optional
-    color : str, optional
-        Default: the wheel colour of :data:`wmr.plot.style.ROLE`.
-    light : bool, optional
-        Light grey face (close-ups).
-
-    Returns
-    -------
-    None
+    Width 0.42 r by default; ``ghost`` dashed outline only, ``light`` a light grey face.  The arrow points the way the
+    wheel moves at a positive rolling rate, :math:`-\mathbf j_i` (6), for ``towards="travel"``, or along
+    :math:`+\mathbf j_i` for ``"j"``.
     """
     w = 0.42 * r if width is None else width
     col = color or ROLE["wheel"]
@@ -145,22 +94,7 @@ def draw_wheel(
 
 
 def draw_pivot(ax, p, size, *, ghost=False, zorder=5.0):
-    """The steering axis at :math:`P_i`: a small white disc with a dark rim.
-
-    Parameters
-    ----------
-    ax : matplotlib.axes.Axes
-    p : array_like (2,)
-        :math:`P_i` (world).
-    size : float
-        Radius of the disc (data units).
-    ghost : bool, optional
-    zorder : float, optional
-
-    Returns
-    -------
-    None
-    """
+    """The steering axis at :math:`P_i` (world): a white disc of radius ``size`` with a dark rim."""
     ax.add_patch(
         Circle(
             p, size, facecolor="white" if not ghost else "none", edgecolor=PALETTE["dark"], linewidth=0.8, zorder=zorder
@@ -175,10 +109,9 @@ def draw_unit(
 ):
     r"""One wheel unit: its parts (:func:`wmr.plot.parts.unit_parts`) in world coordinates from ``pose``.
 
-    Each part is drawn by its type, whatever the unit's kind: a :class:`~wmr.plot.parts.Link`
-    as a bar of the intermediate body (over the wheels, an arm; under them, a bar between wheels), a
-    :class:`~wmr.plot.parts.Disc` as a wheel, :class:`~wmr.plot.parts.Rollers` as
-    strokes across the disc along the roller axes, a :class:`~wmr.plot.parts.Pivot` as the
+    Each part is drawn by its type, whatever the unit's kind: a :class:`~wmr.plot.parts.Link` as a bar (over the
+    wheels an arm, under them a bar between wheels), a :class:`~wmr.plot.parts.Disc` as a wheel,
+    :class:`~wmr.plot.parts.Rollers` as strokes along the roller axes, a :class:`~wmr.plot.parts.Pivot` as the
     steering axis.
 
     Parameters
@@ -187,20 +120,14 @@ def draw_unit(
     unit : wheel unit
         One of ``robot.wheels``.
     beta : float
-        Its steering angle (radians); a unit without a steering joint (fixed, Swedish) is drawn
-        at its own angle.
+        Its steering angle (radians); a unit without a steering joint is drawn at its own angle.
     pose : sequence (3,), optional
         :math:`(\psi, X, Y)`.
-    ghost : bool, optional
-        Dashed outlines only.
+    ghost, show_j, light : bool, optional
+        Dashed outlines only; mark the rolling direction on each wheel; light grey wheels (close-ups).
     zorder : float, optional
-    show_j : bool, optional
-        Mark the rolling direction on each wheel.
-    light : bool, optional
-        Draw the wheels light grey (close-ups, so that the arm and labels stay visible).
     arrows : {"travel", "j"}, optional
-        Where the wheels' arrows point (:func:`draw_wheel`'s ``towards``): the way each wheel moves at
-        a positive rolling rate (default), or the paper's :math:`+\mathbf j_i`.
+        Where the wheels' arrows point (:func:`draw_wheel`'s ``towards``).
 
     Returns
     -------

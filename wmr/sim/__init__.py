@@ -1,30 +1,14 @@
 r"""Any :class:`wmr.Robot` in a physics engine (MuJoCo): export, run, measure.
 
-wmr's model is the paper's: rigid bodies, point contacts, no slip.  This package puts a robot into
-MuJoCo, where wheels have mass, contacts have friction and servos have limits, so that what the
-model predicts can be measured.  It knows no wheel kind: each unit describes its own bodies and
-joints (:func:`wmr.io.mechanism.mechanism`, plain data) and says which joints are driven
-(``driven=``; a castor is an offset wheel with both joints passive).
+wmr's model is the paper's: rigid bodies, point contacts, no slip.  This package puts a robot into MuJoCo,
+where wheels have mass, contacts have friction and servos have limits (:class:`Params`), so that what the model
+predicts can be measured.  It knows no wheel kind: each unit describes its own bodies and joints
+(:func:`wmr.io.mechanism.mechanism`) and says which are driven (``driven=``; a castor is an offset wheel with
+both joints passive).  :func:`to_mjcf` writes the model, :class:`Simulation` runs it in wmr's variables,
+:func:`run` drives it along a :class:`Schedule` (e.g. :func:`twist_schedule`) into a :class:`Recording`, and
+:class:`Validity` says whether the run can be trusted.
 
-- :mod:`wmr.sim.params`: :class:`Params`, the physical parameters (masses, friction, servo limits)
-  with their stated defaults;
-- :mod:`wmr.sim.bodies`: a unit's mechanism in MuJoCo's terms (servos on the driven joints, masses,
-  inertias, geoms);
-- :mod:`wmr.sim.mjcf`: :func:`to_mjcf`, the MJCF text of any robot (no MuJoCo needed);
-- :mod:`wmr.sim.simulation`: :class:`Simulation`, a robot in MuJoCo commanded and measured in wmr's
-  variables (servos, drive locks, pushes);
-- :mod:`wmr.sim.measure`: :class:`~wmr.sim.measure.Probe`, what a MuJoCo state says in wmr's variables (pose,
-  twist, joint rates, contact forces, slip);
-- :mod:`wmr.sim.recording`: :class:`Schedule` (commands over time), :class:`Reading` and :class:`Recording`
-  (measurements);
-- :mod:`wmr.sim.runner`: :func:`run`, a simulation driven along a schedule;
-- :mod:`wmr.sim.validity`: :class:`Validity`, whether a run can be trusted (energy, penetration, servo
-  saturation, MuJoCo's warnings);
-- :mod:`wmr.sim.commands`: :func:`twist_schedule`, the joint commands of a twist from wmr's inverse
-  kinematics.
-
-MuJoCo is imported only when a :class:`Simulation` is made: ``import wmr`` and ``import wmr.sim`` do
-not need it (``pip install 'wmr-kinematics[sim]'`` installs it).
+MuJoCo is imported only when a :class:`Simulation` is made (``pip install 'wmr-kinematics[sim]'``).
 
 Examples
 --------

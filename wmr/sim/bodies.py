@@ -27,7 +27,7 @@ from ..io.mechanism import Body, Mechanism, mechanism
 from ..model.wheels.joints import Joint
 from .params import Params
 
-__all__ = ["POSITION", "VELOCITY", "body_xml", "height_of", "mechanisms", "num", "nums", "servo"]
+__all__ = ["POSITION", "VELOCITY", "height_of", "mechanisms", "num", "servo"]
 
 #: the servo of a driven steering joint: MuJoCo's ``position`` actuator
 POSITION = "position"
@@ -119,14 +119,10 @@ def mechanisms(robot, height: float) -> tuple[Mechanism, ...]:
 def num(x, scale: float | None = None) -> str:
     """A float as MJCF text by the rule of :mod:`wmr.io.decimals`, without a trailing ``.0`` (no negative zero).
 
-    MuJoCo is given 12 significant digits of every value, of its own size (:func:`~wmr.io.decimals.float_text`
-    with no scale: the digits this writer has always given it), and a position, direction or angle
-    (``scale=1``: metres, unit vectors, radians) that rounds to 0 at its scale -- round-off of a zero
-    coordinate, ``1.85e-17`` -- is written 0.  Why not the scale's quantum for the others too: contact
-    physics is chaotic at the last bit (the edition's breakaway experiment, :mod:`edition.physics.contact`,
-    measured C's speed 0.5 % apart after 2.5 s when its parameters moved by one ulp), so a model whose
-    small coordinates lost digits would move the committed measurements (``figures/physics.csv``) as
-    much as another CPU does; the text itself is the same on every CPU either way.
+    12 significant digits of every value (:func:`~wmr.io.decimals.float_text`); with ``scale=1`` (metres, unit
+    vectors, radians) a value that rounds to 0 at that scale (round-off of a zero coordinate) is written 0.  The
+    other values keep their digits: contact physics is chaotic at the last bit, so fewer digits would move the
+    edition's committed measurements.
 
     Parameters
     ----------
@@ -148,18 +144,7 @@ def num(x, scale: float | None = None) -> str:
 
 
 def nums(*xs, scale: float | None = None) -> str:
-    """Floats as MJCF text, separated by spaces (:func:`num`).
-
-    Parameters
-    ----------
-    *xs : float
-    scale : float, optional
-        As for :func:`num`.
-
-    Returns
-    -------
-    str
-    """
+    """Floats as MJCF text, separated by spaces (:func:`num`)."""
     return " ".join(num(x, scale) for x in xs)
 
 
@@ -199,22 +184,10 @@ def _geoms(body, name, r_unit, params, pad):
 
 
 def body_xml(body: Body, name, r_unit: float, params: Params, depth: int) -> list[str]:
-    """The MJCF lines of a body and its descendants.
+    """The MJCF lines of a body and its descendants, indented ``depth`` levels.
 
-    Parameters
-    ----------
-    body : Body
-    name : callable
-        ``name(part)``: the MuJoCo name of a body or joint of this unit (``u<i>_<part>``).
-    r_unit : float
-        The unit's wheel radius (the scale of the drawn rods).
-    params : Params
-    depth : int
-        Indentation level.
-
-    Returns
-    -------
-    list of str
+    ``name(part)`` is the MuJoCo name of a body or joint of the unit (``u<i>_<part>``); ``r_unit``, the unit's
+    wheel radius, sizes the drawn rods.
     """
     pad = "  " * depth
     turn = nums(np.cos(body.angle / 2), 0.0, 0.0, np.sin(body.angle / 2), scale=1.0)

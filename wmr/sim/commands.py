@@ -26,11 +26,9 @@ __all__ = ["start_angles", "twist_schedule"]
 def start_angles(robot: Robot, twist: TwistLike) -> FloatArray:
     r"""Steering angles to start a constant twist from.
 
-    Units that roll in their plane (centred and dual wheels): :func:`wmr.steering_angles` (wheel planes
-    along the velocities of their mount points).  Steered units whose steering the twist leaves free
-    (steered, not rolling in their plane: offset wheels): trailing, :math:`\mathbf j_i` along
-    :math:`\dot{\mathbf p}_i` (an offset wheel's arm behind :math:`P_i`, as a castor settles); a still
-    mount point keeps 0.  Units without a steering joint: their own angle.
+    Units that roll in their plane (centred and dual wheels): :func:`wmr.steering_angles`.  Other steered units
+    (offset wheels): trailing, :math:`\mathbf j_i` along :math:`\dot{\mathbf p}_i` (the arm behind :math:`P_i`, as a
+    castor settles; a still mount point keeps 0).  Units without a steering joint: their own angle.
 
     Parameters
     ----------
@@ -55,7 +53,7 @@ def start_angles(robot: Robot, twist: TwistLike) -> FloatArray:
 def twist_schedule(
     robot: Robot, twist: TwistLike, seconds: float, beta0: ArrayLike | None = None, dt: float = 0.05
 ) -> Schedule:
-    r"""The joint commands of a constant body twist, from wmr's inverse kinematics.
+    r"""The joint commands of a constant body twist, from wmr's inverse kinematics (module docstring).
 
     Parameters
     ----------
@@ -72,7 +70,6 @@ def twist_schedule(
     Returns
     -------
     Schedule
-        Steering angles and joint rates along the model's run.
 
     Examples
     --------

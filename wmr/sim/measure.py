@@ -1,4 +1,4 @@
-r"""What a MuJoCo state says in wmr's variables: :class:`Probe` reads a :class:`~wmr.sim.recording.Sample`.
+r"""What a MuJoCo state says in wmr's variables: :class:`Probe` reads a :class:`~wmr.sim.recording.Reading`.
 
 The platform pose :math:`(\psi, X, Y)` and body twist :math:`[\dot\psi, \dot x, \dot y]`; the steering angles and
 the encoders' joint rates (an offset wheel's :math:`\dot\phi_i = \dot\psi + \dot\beta_i` (7) from its steering
@@ -18,48 +18,20 @@ import numpy as np
 from ..model.robot import Robot
 from .recording import Reading
 
-__all__ = ["Probe", "yaw"]
+__all__: list[str] = []
 
 
 def yaw(q):
-    """Heading of a quaternion about the vertical.
-
-    Parameters
-    ----------
-    q : array_like (4,)
-        ``(w, x, y, z)``.
-
-    Returns
-    -------
-    float
-        Radians.
-
-    Examples
-    --------
-    >>> round(yaw([np.cos(0.25), 0.0, 0.0, np.sin(0.25)]), 12)
-    0.5
-    """
+    """Heading (radians) of a quaternion ``(w, x, y, z)`` about the vertical."""
     w, x, y, z = q
     return float(np.arctan2(2 * (w * z + x * y), 1 - 2 * (y * y + z * z)))
 
 
 class Probe:
-    r"""Reads the state of one compiled model in wmr's variables (:meth:`Probe.sample`).
+    """Reads the state of one compiled model in wmr's variables (:meth:`Probe.sample`).
 
-    Parameters
-    ----------
-    mj : module
-        ``mujoco``.
-    model : mujoco.MjModel
-    robot : Robot
-        The robot the model was exported from.
-    hinges : sequence of tuple
-        Every hinge of the units as ``(unit, joint, rate column or None, qpos address, dof address)``, in
-        MuJoCo's order.
-    wheel_geoms : sequence of int
-        The contact geom of each wheel (MuJoCo ids), in the order of the wheels.
-    platform : int
-        The platform's body id.
+    ``hinges`` lists every hinge of the units as ``(unit, joint, rate column or None, qpos address, dof address)`` in
+    MuJoCo's order, ``wheel_geoms`` the contact geom of each wheel (MuJoCo ids), ``platform`` the platform's body id.
     """
 
     def __init__(
@@ -77,17 +49,7 @@ class Probe:
         self.f6 = np.zeros(6)
 
     def sample(self, d: Any) -> Reading:
-        """Measure a state (module docstring).
-
-        Parameters
-        ----------
-        d : mujoco.MjData
-            The state, of this probe's model.
-
-        Returns
-        -------
-        Reading
-        """
+        """Measure the state ``d`` (a ``mujoco.MjData`` of this probe's model): module docstring."""
         mj, m = self.mj, self.model
         mj.mj_forward(m, d)  # positions, contacts and forces of this state
         q = d.qpos

@@ -1,20 +1,15 @@
 r"""Any :class:`wmr.Robot` as a MuJoCo model (MJCF text): :func:`to_mjcf`.
 
-The model: a ground plane; the platform, a free body whose frame is the body frame of wmr
-(origin C on the mount plane, x forward, z up); under it each unit's bodies and joints, as the unit
-describes them (:func:`wmr.io.mechanism.mechanism`; :mod:`wmr.sim.bodies` gives them
-masses and geoms); a servo on every driven joint (:func:`wmr.sim.bodies.servo`); a lock for every
-drive hinge (a joint equality ``<name>_lock``, inactive: the drive locked, as the paper's Section
-4.2 locks it, when switched on); and a keyframe ``start`` with the steering angles
-:math:`\boldsymbol\beta_0` and the servos' targets that hold them (a loaded model keeps its
-module angles).  Names follow the paper's numbering: unit ``i`` (from 1) has bodies, joints and
-actuators ``u<i>_<name>``, with the unit's own names of its bodies and joints (e.g. ``u2_steer``,
-``u2_drive``; ``u3_swivel`` for a dual wheel's), and the geom by which a wheel touches the ground
-is named after its body (``u2_wheel``; ``u3_wheel1``, ``u3_wheel2`` for a dual wheel).
+The model: a ground plane; the platform, a free body whose frame is wmr's body frame (origin C on the
+mount plane, x forward, z up); under it each unit's bodies and joints as the unit describes them
+(:func:`wmr.io.mechanism.mechanism`; :mod:`wmr.sim.bodies` gives them masses, geoms and servos); a lock
+``<name>_lock`` for every drive hinge (an inactive joint equality: the paper's Section 4.2 locked drive, when
+switched on); a keyframe ``start`` with the steering angles :math:`\boldsymbol\beta_0` and the servo targets that
+hold them.  Unit ``i`` (from 1) has bodies, joints and actuators ``u<i>_<name>`` (``u2_steer``, ``u2_drive``,
+``u3_swivel``); a wheel's contact geom is named after its body (``u2_wheel``; ``u3_wheel1``, ``u3_wheel2``).
 
-Nothing here imports MuJoCo, and nothing here knows a wheel kind: the text is written from the units'
-mechanisms, deterministically (the same robot and parameters give the same bytes), its numbers by
-the rule of :mod:`wmr.io.decimals` (:func:`wmr.sim.bodies.num`), so the same on every CPU.
+No MuJoCo and no wheel kind here: the text is written from the units' mechanisms, the same bytes for the same
+robot and parameters on every CPU (numbers by :func:`wmr.sim.bodies.num`).
 """
 
 from __future__ import annotations
@@ -108,16 +103,7 @@ class Export:
 
 
 def drive_names(mechs: Sequence[Mechanism]) -> tuple[str, ...]:
-    """The MuJoCo names of the drive hinges of the units' mechanisms (each has a lock).
-
-    Parameters
-    ----------
-    mechs : sequence of Mechanism
-
-    Returns
-    -------
-    tuple of str
-    """
+    """The MuJoCo names of the drive hinges of the units' mechanisms (each has a lock)."""
     return tuple(Export.name(i, j.name) for i, m in enumerate(mechs) for j in m.joints if j.kind == "drive")
 
 
@@ -181,14 +167,7 @@ def export(robot: Robot, beta: ArrayLike | None = None, params: Params | None = 
 
 
 def to_mjcf(robot: Robot, beta: ArrayLike | None = None, params: Params | None = None, **changes: float) -> str:
-    r"""A MuJoCo model (MJCF text) of any :class:`wmr.Robot`.
-
-    The platform (a free body, its frame wmr's body frame at C) and each unit's bodies and joints as
-    the unit describes them (:func:`wmr.io.mechanism.mechanism`: steering hinges, offset
-    arms, the dual wheel's swivel, drive hinges); position servos on the driven steering joints,
-    velocity servos on the driven drive joints, none on passive joints (a castor's, a dual wheel's
-    swivel); wheels touching the ground at one point each, with sliding, torsional and rolling
-    friction (:mod:`wmr.sim.params`).
+    """A MuJoCo model (MJCF text) of any :class:`wmr.Robot` (the model: module docstring).
 
     Parameters
     ----------
@@ -272,15 +251,10 @@ def _write(robot, params, mechs, height, beta0, weight):
     key = f'    <key name="start" qpos="{nums(*qpos, scale=1.0)}"' + (
         f' ctrl="{nums(*ctrl, scale=1.0)}"' if ctrl else ""
     )
-    lines += [
-        "  <keyframe>",
-        key + "/>",
-        "  </keyframe>",
-        "</mujoco>",
-        "",
-    ]
+    lines += ["  <keyframe>", key + "/>", "  </keyframe>", "</mujoco>", ""]
     return "\n".join(lines)
 
 
 def _escape(text):
+    """``text`` escaped for an XML attribute."""
     return str(text).replace("&", "&amp;").replace('"', "&quot;").replace("<", "&lt;").replace(">", "&gt;")

@@ -2,13 +2,14 @@ r"""Driving a :class:`~wmr.sim.Simulation` along a :class:`~wmr.sim.Schedule`: :
 
 from __future__ import annotations
 
+import dataclasses
 from collections.abc import Callable
 
 import numpy as np
 
 from ..errors import InputTypeError, InputValueError
 from ..model import validation
-from .recording import Recording, Schedule
+from .recording import Reading, Recording, Schedule
 from .simulation import MAX_STEPS, Simulation
 
 __all__ = ["run"]
@@ -24,10 +25,9 @@ def run(
 ) -> Recording:
     """Drive a simulation along a schedule and record it.
 
-    Each control period the servos get the schedule's command at the period's start (as
-    :meth:`Simulation.command` gives it), then the physics advances one period.  A sample is taken
-    at the start of every ``every``-th period, after its commands are set (so that the servo torques
-    sampled are those applied), and one at the end.
+    Each control period the servos get the schedule's command at the period's start (as :meth:`Simulation.command`
+    gives it), then the physics advances one period.  A sample is taken at the start of every ``every``-th period,
+    after its commands are set (the torques sampled are those applied), and one at the end.
 
     Parameters
     ----------
@@ -37,10 +37,9 @@ def run(
     seconds : float
         Duration, > 0.
     control_dt : float
-        Control period, s (rounded to whole integration steps, at least one; default 0.001, a 1 kHz
-        controller).
+        Control period, s (whole integration steps, at least one; default 0.001, a 1 kHz controller).
     every : int
-        Record every ``every``-th period (and the end; default 10).
+        Record every ``every``-th period (and the end).
     on_step : callable, optional
         ``on_step(sim)`` called at each period before the command (e.g. to push).
 
@@ -81,20 +80,6 @@ def run(
 
 
 def _stack(ex, samples, validity):
-    fields = (
-        "t",
-        "pose",
-        "twist",
-        "beta",
-        "rates",
-        "torque",
-        "joint_pos",
-        "joint_vel",
-        "point",
-        "force",
-        "moment",
-        "slip",
-        "dissipation",
-    )
-    stacked = {f: np.array([getattr(s, f) for s in samples]) for f in fields}
+    """The readings of a run stacked into a :class:`~wmr.sim.recording.Recording` (a time axis first)."""
+    stacked = {f.name: np.array([getattr(s, f.name) for s in samples]) for f in dataclasses.fields(Reading)}
     return Recording(ex, **stacked, validity=validity)

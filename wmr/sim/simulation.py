@@ -1,17 +1,11 @@
 r"""A robot in MuJoCo, commanded and measured in wmr's variables: :class:`Simulation`.
 
-A :class:`Simulation` holds a compiled model and its state.  It takes commands in wmr's own terms,
-steering angles :math:`\boldsymbol\beta` and joint rates :math:`\dot{\boldsymbol\theta}` (the rate vector
-of :attr:`wmr.Robot.rate_names`), and gives each servo its target through the unit's joints
+Commands are wmr's steering angles :math:`\boldsymbol\beta` and joint rates :math:`\dot{\boldsymbol\theta}` (the
+rate vector of :attr:`wmr.Robot.rate_names`); each servo gets its target through the unit's joints
 (:meth:`wmr.sim.Export.hinges`): a steering servo tracks :math:`\beta_i`, a drive servo the rate its hinge
-measures.  Servos can be switched off (a free drive), drive hinges locked (the paper's locked
-drives), and a force and torque can be applied to the platform at C (a push).
-
-:meth:`Simulation.sample` measures the state in wmr's variables (the pose and twist, the steering angles and
-joint rates, the servo torques, and per wheel the contact force and the slip) with the model's
-:class:`~wmr.sim.measure.Probe`, and shows it to the validity monitor (:mod:`wmr.sim.validity`):
-:meth:`Simulation.validity` says whether the run so far can be trusted.
-:func:`wmr.sim.runner.run` drives a simulation along a :class:`~wmr.sim.recording.Schedule`.
+measures.  Servos can be switched off (a free drive), drive hinges locked (the paper's locked drives), and the
+platform pushed at C.  :meth:`Simulation.sample` measures the state (:mod:`wmr.sim.measure`) and shows it to the
+validity monitor (:mod:`wmr.sim.validity`).
 
 MuJoCo is imported here only (``pip install 'wmr-kinematics[sim]'``); ``import wmr`` does not import it.
 """
@@ -34,13 +28,14 @@ from .params import Params
 from .recording import Reading
 from .validity import Monitor, Validity
 
-__all__ = ["MAX_STEPS", "Simulation"]
+__all__ = ["Simulation"]
 
 #: the most integration steps a run may take (a run of 10^7 steps takes minutes)
 MAX_STEPS = 5_000_000
 
 
 def _mujoco():
+    """The ``mujoco`` module, or the error that says how to install it."""
     try:
         import mujoco
     except ImportError as e:  # pragma: no cover - the edition's venv has it
@@ -51,7 +46,7 @@ def _mujoco():
 
 
 class Simulation:
-    r"""A robot in MuJoCo, commanded and measured in wmr's variables.
+    """A robot in MuJoCo, commanded and measured in wmr's variables.
 
     Parameters
     ----------
@@ -61,8 +56,8 @@ class Simulation:
         Initial steering angles (default 0), also the first target of the steering servos.
     params : Params, optional
     settle : float, optional
-        Seconds to let the robot settle on its wheels with every servo holding still before
-        time 0 (default 0.2; the clock then restarts at 0 with the pose at the origin).
+        Seconds to let the robot settle on its wheels, every servo holding still, before time 0 (the clock
+        then restarts at 0 with C at the origin).
     **changes
         Parameters to change by name.
 
@@ -141,19 +136,16 @@ class Simulation:
     def command(
         self, beta: ArrayLike | None = None, rates: ArrayLike | None = None, beta_rate: ArrayLike | None = None
     ) -> None:
-        r"""Set the servos' targets from steering angles and joint rates (wmr's variables).
+        """Set the servos' targets from steering angles and joint rates (:meth:`targets`); None keeps the last.
 
         Parameters
         ----------
         beta : array (w,), optional
-            Targets of the steering servos (entries of unsteered or passive units are ignored);
-            default: keep the last.
+            Targets of the steering servos (entries of unsteered or passive units are ignored).
         rates : array (n_rates,), optional
-            Joint rates; each drive servo takes the rate its hinge measures (an offset wheel's
-            steering is a position servo: it takes ``beta``).  Default: keep the last.
+            Joint rates; each drive servo takes the rate its hinge measures.
         beta_rate : array (w,), optional
-            The rate at which the steering targets turn (default 0): a steering servo is fed
-            ``beta + (kv / kp) beta_rate``, so that it follows a turning target without lag.
+            The rate at which the steering targets turn (default 0).
 
         Returns
         -------
@@ -168,10 +160,10 @@ class Simulation:
         self.data.ctrl[:] = self.targets(self._beta, self._rates, beta_rate)
 
     def targets(self, beta: ArrayLike, rates: ArrayLike, beta_rate: ArrayLike | None = None) -> FloatArray:
-        r"""The servos' targets for commands in wmr's variables (batched; :meth:`command` sets one of them).
+        r"""The servos' targets for commands in wmr's variables (batched), in the order of :attr:`servo_names`.
 
-        A steering servo takes :math:`\beta_i + (k_v/k_p)\dot\beta_i` (its target turning without lag), a
-        drive servo the rate its hinge measures.
+        A steering servo takes :math:`\beta_i + (k_v/k_p)\dot\beta_i`, so that it follows a turning target without lag
+        (a PD law on the error); a drive servo the rate its hinge measures.
 
         Parameters
         ----------
@@ -183,7 +175,6 @@ class Simulation:
         Returns
         -------
         numpy.ndarray (..., n_servos)
-            In the order of :attr:`servo_names` (MuJoCo's ``ctrl``).
         """
         beta = validation.finite_array("beta", beta, last=self.robot.w)
         rates = validation.finite_array("rates", rates, last=self.robot.n_rates)
@@ -200,7 +191,6 @@ class Simulation:
         Parameters
         ----------
         names : iterable of str
-            Servo names (:attr:`servo_names`).
 
         Returns
         -------
@@ -228,15 +218,14 @@ class Simulation:
             self.model.actuator_biasprm[a] = self._gains[1][a]
 
     def lock(self, names: Iterable[str]) -> None:
-        """Lock drive hinges where they are (their servos off): the paper's "driving actuators locked".
+        """Lock drive hinges (e.g. ``["u1_drive"]``) where they are, their servos off: the paper's locked drives.
 
-        A lock is a joint equality of the model (``<name>_lock``), as stiff as MuJoCo's constraints,
-        with no torque limit; :meth:`unlock` frees the hinges and switches their servos back on.
+        A lock is a joint equality of the model (``<name>_lock``), as stiff as MuJoCo's constraints, with no torque
+        limit; :meth:`unlock` frees the hinges and switches their servos back on.
 
         Parameters
         ----------
         names : iterable of str
-            Drive hinges (= their servos' names), e.g. ``["u1_drive"]``.
 
         Returns
         -------
@@ -275,19 +264,18 @@ class Simulation:
                 self.engage([n])
 
     def _servo_index(self, name):
+        """The actuator index of a servo name (checked)."""
         if name not in self._servo:
             raise InputValueError(f"no servo named {validation.show(name)}; servos: {list(self.servo_names)}")
         return self._servo[name]
 
     def push(self, force: ArrayLike = (0.0, 0.0), torque: float = 0.0) -> None:
-        """Apply a horizontal force at C and a torque about the vertical to the platform (until changed).
+        """Apply a horizontal force (N, fixed frame) at C and a torque (N m) about the vertical to the platform, until changed.
 
         Parameters
         ----------
         force : pair
-            N, fixed frame.
         torque : float
-            N m.
 
         Returns
         -------
@@ -307,12 +295,11 @@ class Simulation:
 
     # --- time ------------------------------------------------------------------------------
     def advance(self, seconds: float) -> None:
-        """Integrate ``seconds`` (rounded to whole steps) with the present commands.
+        """Integrate ``seconds`` (>= 0, rounded to whole steps) with the present commands.
 
         Parameters
         ----------
         seconds : float
-            >= 0.
 
         Returns
         -------
@@ -331,25 +318,20 @@ class Simulation:
         Parameters
         ----------
         n : int
-            >= 1.
         check : bool
-            Check that the state is still finite (default; :func:`wmr.sim.run` checks at each sample instead,
-            which :meth:`sample` does).
+            Raise ``FloatingPointError`` if the state is no longer finite (:func:`wmr.sim.run` checks at each sample
+            instead).
 
         Returns
         -------
         None
-
-        Raises
-        ------
-        FloatingPointError
-            If the state is no longer finite (the simulation diverged).
         """
         self._mj.mj_step(self.model, self.data, n)
         if check:
             self._check_finite()
 
     def _check_finite(self):
+        """Raise ``FloatingPointError`` if the state is no longer finite."""
         if not np.isfinite(self.data.qpos).all():
             raise FloatingPointError(f"the simulation diverged at t = {self.data.time:.6g} s")
 
@@ -360,16 +342,11 @@ class Simulation:
 
     # --- measurements ----------------------------------------------------------------------
     def sample(self) -> Reading:
-        """Measure the present state (module docstring; :meth:`wmr.sim.measure.Probe.sample`).
+        """Measure the present state in wmr's variables (:mod:`wmr.sim.measure`); ``FloatingPointError`` if it diverged.
 
         Returns
         -------
         Reading
-
-        Raises
-        ------
-        FloatingPointError
-            If the state is no longer finite (the simulation diverged).
         """
         self._check_finite()
         self._mj.mj_forward(self.model, self.data)  # positions, contacts and forces of this state
@@ -386,7 +363,7 @@ class Simulation:
         self._monitor.update(self.data)
 
     def validity(self) -> Validity:
-        """What the validity monitor saw since time 0 (:mod:`wmr.sim.validity`), at every sample and watch.
+        """What the validity monitor saw since time 0, at every sample and watch.
 
         Returns
         -------

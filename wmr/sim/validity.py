@@ -30,7 +30,7 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["CHATTER", "ENERGY", "PENETRATION", "SATURATION", "Monitor", "Validity"]
+__all__ = ["Monitor", "Validity"]
 
 #: largest energy gain beyond the work done on the robot, as a fraction of W r
 ENERGY = 0.05
@@ -188,6 +188,7 @@ class Monitor:
         self.warn0 = 0 if d is None else self._warnings(d)
 
     def _warnings(self, d):
+        """MuJoCo's count of bad-state warnings in ``d``."""
         return int(sum(d.warning[k].number for k in self.bad))
 
     def update(self, d: Any) -> None:

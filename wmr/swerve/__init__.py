@@ -36,20 +36,8 @@ Usage
 >>> swerve.desaturate(bot, [4.0, 1.0, 0.0], max_speed=1.0).round(4).tolist()
 [1.5962, 0.399, 0.0]
 
-Re-steering transients (the design notebook's figure and table): a profile
-(:func:`direction_change`, :func:`spin_and_translate`, or any :class:`TwistProfile`), every strategy
-(:data:`STRATEGIES`: ``plain``, ``module`` = WPILib's optimize, ``robot`` = robot-level, each
-``+ cos`` with cosine compensation), one row per strategy:
-
->>> study = swerve.resteer_study(bot, swerve.direction_change(spin=0.5), steer_rate=2 * np.pi)
->>> rows = study.table()                      # list of dicts: pandas.DataFrame(rows) for a table
->>> sorted(rows[0])
-['final_path_error_m', 'max_path_error_m', 'peak_slip_m_s', 'slip_distance_m', 'steering_travel_rad', 'strategy']
->>> study.run("robot").slip_distance < study.run("module").slip_distance
-True
-
-and the figure (paths, slip, path error): ``from wmr.swerve.plot import transient_figure;
-fig = transient_figure(study)``.
+The re-steering study (:func:`resteer_study`: every strategy of :data:`STRATEGIES` on a :class:`TwistProfile`) is
+drawn by ``wmr.swerve.plot.transient_figure(study)``.
 """
 
 from .limits import cosine_compensate, desaturate, desaturation_scale, discretize, se2_exp, se2_log

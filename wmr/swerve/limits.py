@@ -136,10 +136,7 @@ def cosine_compensate(speed: ArrayLike, beta: ArrayLike, target: ArrayLike) -> F
 
 
 def _coefficients(theta):
-    r""":math:`A = \sin\theta/\theta` and :math:`B = (1-\cos\theta)/\theta = \sin(\theta/2)\,\mathrm{sinc}(\theta/2)`.
-
-    Exact at 0.
-    """
+    r""":math:`A = \sin\theta/\theta`, :math:`B = (1-\cos\theta)/\theta = \sin(\theta/2)\,\mathrm{sinc}(\theta/2)`: exact at 0."""
     return np.sinc(theta / np.pi), np.sin(theta / 2) * np.sinc(theta / (2 * np.pi))
 
 
@@ -210,6 +207,11 @@ def se2_log(delta: ArrayLike, dt: float = 1.0) -> FloatArray:
             f"delta must turn by less than 2 pi (the logarithm is not unique), got "
             f"|delta psi| up to {np.abs(g[..., 0]).max():.6g}"
         )
+    return _log(g, dt)
+
+
+def _log(g, dt):
+    """:func:`se2_log` of a checked pose (..., 3) turning by less than 2 pi, over a checked duration."""
     A, B = _coefficients(g[..., 0])
     n = A * A + B * B
     with np.errstate(over="ignore", invalid="ignore", under="ignore"):
@@ -253,4 +255,4 @@ def discretize(twist: TwistLike, dt: float) -> FloatArray:
         raise InputValueError(f"twist and dt are too large: twist * dt overflows (dt = {dt!r})")
     if np.any(np.abs(g[..., 0]) >= 2 * np.pi):
         raise InputValueError(f"twist turns by 2 pi or more in one period dt = {dt!r}: |psi_dot| dt must be < 2 pi")
-    return se2_log(g, dt)
+    return _log(g, dt)

@@ -1,16 +1,9 @@
-r"""Swerve modules in wmr's terms, and the mapping to WPILib's.
+r"""Swerve modules in wmr's terms: angles and speeds of a twist (inverse kinematics), twist of angles and speeds.
 
-A swerve module is a centred steered wheel (:class:`wmr.CentredWheel`): its steering angle
-:math:`\beta_i` and its rolling rate :math:`\dot\theta_i` are the joint variables; a swerve robot is
-a :class:`wmr.Robot` whose units are all centred wheels.
-
-In WPILib's terms (:mod:`wmr.model.conventions` converts, at the edges): the body frame is WPILib's
-robot frame, the mount points :math:`\mathbf d_i` its module ``Translation2d``, the twist its
-``ChassisSpeeds``; its module angle is :math:`\alpha_i = \beta_i - \pi/2`, the direction of the wheel's
-velocity, and its module speed is wmr's :math:`s_i = r_i\dot\theta_i`, signed here (the ground speed
-of the wheel along :math:`-\mathbf j_i`, m/s): turning a module by :math:`\pi` and negating :math:`s_i`
-gives the same wheel velocity.  ``wmr.steering_angles`` chooses :math:`\dot\theta_i \ge 0`, which is
-WPILib's ``toSwerveModuleStates`` (speed :math:`\|\dot{\mathbf p}_i\|`, angle of :math:`\dot{\mathbf p}_i`).
+A swerve module is a centred steered wheel (:class:`wmr.CentredWheel`).  Its speed is wmr's
+:math:`s_i = r_i\dot\theta_i`, signed (the ground speed of the wheel along :math:`-\mathbf j_i`, m/s): turning a
+module by :math:`\pi` and negating :math:`s_i` gives the same wheel velocity.  ``wmr.steering_angles`` chooses
+:math:`\dot\theta_i \ge 0`, as WPILib's ``toSwerveModuleStates`` does.
 """
 
 from __future__ import annotations
@@ -54,10 +47,7 @@ class ModuleCommand:
 
 
 def swerve_robot(robot: Robot) -> Robot:
-    r"""Return ``robot`` (as numbers) if every unit is a swerve module: a steered wheel with one rolling rate.
-
-    A swerve module steers to any angle and rolls in its wheel plane with one rate :math:`\dot\theta_i`,
-    its speed :math:`r_i\dot\theta_i` (a :class:`wmr.CentredWheel`).
+    """Return ``robot`` (as numbers) if every unit is a swerve module: a steered wheel with one rolling rate.
 
     Parameters
     ----------
@@ -93,7 +83,6 @@ def radii(robot: Robot) -> FloatArray:
     Parameters
     ----------
     robot : Robot
-        Centred wheels only.
 
     Returns
     -------

@@ -72,24 +72,18 @@ class SteeringChoice:
 def transition_slip(
     robot: Robot, current: ArrayLike, beta: ArrayLike, speed: ArrayLike, samples: int = 8
 ) -> FloatArray:
-    r"""Mean relative slip while the modules turn from ``current`` to ``beta`` at one common rate.
+    r"""Mean relative slip :math:`\bar\sigma` while the modules turn from ``current`` to ``beta`` at one common rate.
 
-    Module :math:`i` turns along its shorter arc :math:`\Delta_i = \operatorname{wrap}(\beta_i -
-    \beta^0_i)` at the common rate, :math:`\beta_i(\tau) = \beta^0_i + \operatorname{clip}(\Delta_i,
-    -\tau, \tau)` for :math:`\tau \in [0, \max_i|\Delta_i|]`, driven at ``speed``.  At ``samples``
-    midpoints :math:`\tau_k = (k + \tfrac12)\max|\Delta|/K` the least-squares twist leaves the residual
-    :math:`\mathbf J_1\mathbf t - \mathbf J_2\dot{\boldsymbol\theta}` (21); the relative slip is its norm
-    over :math:`\|\mathbf J_2\dot{\boldsymbol\theta}\| = \|\mathbf s\|` (0 for zero speeds), and the
-    mean over the samples is returned.  The rate itself does not matter (the path is the same).
+    The transition of the module docstring, sampled at ``samples`` midpoints :math:`\tau_k = (k + \tfrac12)
+    \max|\Delta|/K`: at each, the norm of the residual of (21) over :math:`\|\mathbf s\|` (0 for zero speeds), at
+    most 1; the mean over the samples.  The common rate itself does not matter (the path is the same).
 
     Parameters
     ----------
     robot : Robot
         Centred wheels only.
-    current : array (..., w)
-        Angles now.
-    beta : array (..., w)
-        Target angles.
+    current, beta : array (..., w)
+        Angles now and target angles.
     speed : array (..., w)
         Signed module speeds during the transition (those of the targets), m/s.
     samples : int, optional
@@ -115,12 +109,18 @@ def transition_slip(
     beta = validation.finite_array("beta", beta, last=w)
     speed = validation.finite_array("speed", speed, last=w)
     samples = validation.integer("samples", samples, minimum=1)
-    batch = validation.batch_shape({"current": current, "beta": beta, "speed": speed})
+    validation.batch_shape({"current": current, "beta": beta, "speed": speed})
+    return _slip(robot, current, beta, speed, samples)
+
+
+def _slip(robot, current, beta, speed, samples):
+    """:func:`transition_slip` of checked arrays (..., w) that broadcast together."""
+    batch = np.broadcast_shapes(current.shape, beta.shape, speed.shape)[:-1]
     delta = wrap_angle(beta - current)  # (..., w), shorter arcs
     span = np.abs(delta).max(axis=-1, keepdims=True)  # (..., 1)
     tau = (np.arange(samples) + 0.5) / samples * span  # (..., K)
     path = current[..., None, :] + np.clip(delta[..., None, :], -tau[..., None], tau[..., None])  # (..., K, w)
-    s = np.broadcast_to(speed, batch + (w,))[..., None, :]
+    s = np.broadcast_to(speed, batch + (robot.w,))[..., None, :]
     m = np.abs(s).max(axis=-1, keepdims=True)
     s = s / np.where(m > 0, m, 1.0)  # the ratio is scale-free: no overflow
     sol = chassis_twist(robot, path, s)  # (21) least squares at each sample
@@ -130,6 +130,7 @@ def transition_slip(
 
 
 def _targets(robot, twist, current):
+    """The checked robot, the module commands of ``twist`` and the current angles broadcast to their shape."""
     robot = swerve_robot(robot)
     current = validation.finite_array("current", current, last=robot.w)
     cmd = module_commands(robot, twist, current)
@@ -167,14 +168,16 @@ def optimize_modules(robot: Robot, twist: TwistLike, current: ArrayLike) -> Stee
     """
     robot, cmd, cur = _targets(robot, twist, current)
     flip = np.abs(wrap_angle(cmd.beta - cur)) > np.pi / 2
-    return _choice(robot, cmd, cur, flip)
+    beta, speed, resteer, slip = _flipped(robot, cmd.beta, cmd.speed, cur, flip, 8)
+    return SteeringChoice(beta, speed + 0.0, flip, resteer, slip)
 
 
-def _choice(robot, cmd, cur, flip):
-    beta = wrap_angle(cmd.beta + np.pi * flip)
-    speed = np.where(flip, -cmd.speed, cmd.speed)
+def _flipped(robot, beta, speed, cur, flip, samples):
+    """Targets, speeds, total re-steer and transition slip of the flip patterns ``flip`` (broadcast with ``beta``)."""
+    beta = wrap_angle(beta + np.pi * flip)
+    speed = np.where(flip, -speed, speed)
     resteer = np.abs(wrap_angle(beta - cur)).sum(axis=-1)
-    return SteeringChoice(beta, speed + 0.0, flip, resteer, transition_slip(robot, cur, beta, speed))
+    return beta, speed, resteer, _slip(robot, cur, beta, speed, samples)
 
 
 def optimize_robot(robot: Robot, twist: TwistLike, current: ArrayLike, samples: int = 8) -> SteeringChoice:
@@ -221,10 +224,9 @@ def optimize_robot(robot: Robot, twist: TwistLike, current: ArrayLike, samples: 
     samples = validation.integer("samples", samples, minimum=1)
     flips = ((np.arange(2**w)[:, None] >> np.arange(w)) & 1).astype(bool)  # (P, w), P = 2^w
     flips = flips[np.argsort(flips.sum(axis=1), kind="stable")]  # fewest flips first
-    beta = wrap_angle(cmd.beta[..., None, :] + np.pi * flips)  # (..., P, w)
-    speed = np.where(flips, -cmd.speed[..., None, :], cmd.speed[..., None, :])
-    resteer = np.abs(wrap_angle(beta - cur[..., None, :])).sum(axis=-1)  # (..., P)
-    slip = transition_slip(robot, cur[..., None, :], beta, speed, samples)
+    beta, speed, resteer, slip = _flipped(  # (..., P, w), (..., P, w), (..., P), (..., P)
+        robot, cmd.beta[..., None, :], cmd.speed[..., None, :], cur[..., None, :], flips, samples
+    )
     best = np.argmin(resteer + w * slip, axis=-1)  # J(f), first minimum
 
     def take(a):  # the best pattern's row of a (..., P, w) array

@@ -16,7 +16,7 @@ from ..errors import InputValueError
 from ..model import validation
 from ..model.types import FloatArray
 
-__all__ = ["TwistProfile", "direction_change", "spin_and_translate", "MAX_STEPS"]
+__all__ = ["TwistProfile", "direction_change", "spin_and_translate"]
 
 
 #: Most control periods in a profile.
@@ -47,6 +47,7 @@ class TwistProfile:
 
 
 def _times(t_change, t_end, dt, first="t_change"):
+    """The checked change time and period, and the start of each period (at most :data:`MAX_STEPS` of them)."""
     t_change = validation.number(first, validation.positive(first, t_change))
     t_end = validation.number("t_end", validation.positive("t_end", t_end))
     dt = validation.number("dt", validation.positive("dt", dt))

@@ -7,12 +7,10 @@ module measures that transient for each way of commanding the modules.
 
 Model, one control period :math:`\Delta t` after another (step :math:`k`):
 
-1. the commanded twist :math:`\mathbf t_k` (:class:`~wmr.swerve.profiles.TwistProfile`, made by
-   :mod:`wmr.swerve.profiles` and re-exported here) gives target angles and speeds by
-   a **strategy**: ``"plain"`` (:func:`~wmr.swerve.modules.module_commands`: speeds :math:`\ge 0`,
-   no flips), ``"module"`` (WPILib's per-module ``optimize``,
-   :func:`~wmr.swerve.optimize.optimize_modules`) or ``"robot"`` (the robot-level choice,
-   :func:`~wmr.swerve.optimize.optimize_robot`), optionally with **cosine compensation**
+1. the commanded twist :math:`\mathbf t_k` (a :class:`~wmr.swerve.profiles.TwistProfile`) gives target angles and
+   speeds by a **strategy**: ``"plain"`` (:func:`~wmr.swerve.modules.module_commands`: speeds :math:`\ge 0`, no
+   flips), ``"module"`` (WPILib's :func:`~wmr.swerve.optimize.optimize_modules`) or ``"robot"``
+   (:func:`~wmr.swerve.optimize.optimize_robot`), optionally with **cosine compensation**
    (:func:`~wmr.swerve.limits.cosine_compensate`);
 2. each module turns towards its target along the shorter arc, by at most :math:`\omega_s\Delta t`;
 3. the wheels roll at the (compensated) speeds at the new angles; the platform moves with the
@@ -23,8 +21,7 @@ Model, one control period :math:`\Delta t` after another (step :math:`k`):
 4. the **reference** pose integrates the commanded twists the same way; the **path error** is the
    distance between the two positions of C.
 
-A run is deterministic (no random input, a fixed step); data functions return dataclasses and
-:mod:`wmr.swerve.plot` draws them.
+A run is deterministic (no random input, a fixed step); :mod:`wmr.swerve.plot` draws it.
 """
 
 from __future__ import annotations
@@ -42,7 +39,8 @@ from ..model.types import ArrayLike
 from .limits import cosine_compensate, se2_exp
 from .modules import chassis_twist, module_commands, swerve_robot
 from .optimize import optimize_modules, optimize_robot
-from .profiles import MAX_STEPS, TwistProfile, direction_change, spin_and_translate
+from .profiles import MAX_STEPS as MAX_STEPS  # implementation, importable here as before
+from .profiles import TwistProfile, direction_change, spin_and_translate
 
 __all__ = [
     "TwistProfile",
@@ -53,7 +51,6 @@ __all__ = [
     "resteer_transient",
     "resteer_study",
     "STRATEGIES",
-    "MAX_STEPS",
 ]
 
 #: The strategies compared by :func:`resteer_study`: (strategy, cosine compensation).
@@ -129,6 +126,7 @@ def _compose(pose, delta):
 
 
 def _targets(robot, strategy, twist, beta):
+    """Target angles and speeds of one commanded twist from the angles ``beta`` by ``strategy``."""
     if strategy == "plain":
         cmd = module_commands(robot, twist, beta)
         return cmd.beta, cmd.speed
