@@ -70,10 +70,10 @@ from __future__ import annotations
 import numpy as np
 
 from ..errors import InputValueError
-from .arrays import finite_array
+from .checks import finite_array
 from .types import ArrayLike, BoolArray, FloatArray
 
-__all__ = ["TOL", "ANGULAR_TOLERANCE", "near_zero", "column_norms"]
+__all__ = ["TOL", "near_zero"]
 
 #: The package-wide tolerance for numerical zero, relative (see module docstring).
 TOL: float = 1e-9
@@ -118,23 +118,9 @@ def near_zero(x: ArrayLike, scale: ArrayLike = 1.0) -> BoolArray:
 
 
 def column_norms(A: ArrayLike) -> FloatArray:
-    r"""Euclidean length of every column, :math:`\|\mathbf A\mathbf e_j\|`, without overflow or underflow.
+    r"""Euclidean length of every column, :math:`\|\mathbf A\mathbf e_j\|` (..., n) of (..., m, n), without overflow.
 
-    Zero columns get 1 (dividing by it leaves them zero).  Ranks are decided on the matrix divided by
-    these (see the module notes), so they do not depend on the units of the unknowns.
-
-    Parameters
-    ----------
-    A : array_like (..., m, n)
-
-    Returns
-    -------
-    numpy.ndarray (..., n)
-
-    Examples
-    --------
-    >>> column_norms([[3e300, 0.0], [4e300, 0.0]]).tolist()
-    [5e+300, 1.0]
+    Zero columns get 1 (dividing by it leaves them zero): ranks are decided on the matrix divided by these.
     """
     A = finite_array("A", A)
     if A.ndim < 2:

@@ -12,7 +12,7 @@ name                what it stands for
 ``Point``           a point of the platform plane, :math:`(x, y)`: two numbers or two SymPy expressions
 ``PathLike``        a file name: ``str`` or ``os.PathLike``
 ``TwistLike``       a twist :math:`[\dot\psi, \dot x, \dot y]` (..., 3), a :class:`wmr.Twist`, or twist objects read by field
-                    (WPILib's ``ChassisSpeeds``, ``Twist2d``; :func:`wmr.model.arrays.twist_array`)
+                    (WPILib's ``ChassisSpeeds``, ``Twist2d``; :func:`wmr.model.checks.twist_array`)
 ``WheelJoints``     a URDF file's wheel joints: names, ``{name: radius or None}``, or ``"name[=radius],..."``
 ``JointNames``      the joints' names of each wheel unit: ``joint_names[i][joint]``
 ==================  ===================================================================================

@@ -41,7 +41,7 @@ from typing import Any, ClassVar, Self
 import numpy as np
 
 from ...errors import InputValueError
-from .. import arrays, checks
+from .. import checks
 from ..backend import NUMERIC, Backend, choose, is_symbolic
 from ..lazysympy import is_sympy, sp
 from ..platform import E, rotated
@@ -219,10 +219,10 @@ class WheelUnit(UnitGeometry):
         self, psi_dot: ArrayLike, rates: ArrayLike, steer: ArrayLike | None
     ) -> tuple[FloatArray, FloatArray, FloatArray | None, tuple[int, ...]]:
         """``psi_dot`` (...), ``rates`` (..., n_rates) and ``steer`` (... or None), checked, and their batch shape."""
-        psi_dot = arrays.finite_array("psi_dot", psi_dot)
-        rates = arrays.finite_array("rates", rates, last=self.n_rates)
-        steer = None if steer is None else arrays.finite_array("steer", steer)
-        shape = arrays.batch_shape({"psi_dot": psi_dot, "rates": rates[..., 0], "steer": steer}, core=0)
+        psi_dot = checks.finite_array("psi_dot", psi_dot)
+        rates = checks.finite_array("rates", rates, last=self.n_rates)
+        steer = None if steer is None else checks.finite_array("steer", steer)
+        shape = checks.batch_shape({"psi_dot": psi_dot, "rates": rates[..., 0], "steer": steer}, core=0)
         return psi_dot, rates, steer, shape
 
     @staticmethod
