@@ -14,7 +14,7 @@ from typing import Any
 from ...errors import InputValueError
 from .. import checks
 
-__all__ = ["register", "wheel_kinds", "wheel_kind"]
+__all__ = ["wheel_kinds", "wheel_kind"]
 
 _KINDS: dict[str, Any] = {}  # kind -> its class (a WheelUnit subclass)
 
@@ -67,22 +67,9 @@ def wheel_kind(name: str) -> Any:
 
 
 def register(cls: type) -> None:
-    """Register the wheel kind ``cls`` under ``cls.kind`` (called when a kind's class is defined).
+    """Register the wheel kind ``cls`` under ``cls.kind`` (when its class is defined); a kind's name is taken once.
 
-    Parameters
-    ----------
-    cls : type
-        A subclass of :class:`~wmr.model.wheels.unit.WheelUnit` with a ``kind``.
-
-    Returns
-    -------
-    None
-
-    Raises
-    ------
-    wmr.errors.InputValueError
-        If another class has that kind already (a class defined again, e.g. on reloading its
-        module, replaces itself).
+    A class defined again (on reloading its module) replaces itself.
     """
     kind = getattr(cls, "kind", "")
     if kind in _KINDS and _KINDS[kind].__qualname__ != cls.__qualname__:
