@@ -256,3 +256,9 @@ def test_a_missing_yourdfpy_names_the_extra(tmp_path, monkeypatch):
     monkeypatch.setitem(__import__("sys").modules, "yourdfpy", None)
     with pytest.raises(MissingDependencyError, match=r"pip install 'wmr-kinematics\[urdf\]'"):
         load(ROOT / "examples" / "urdf" / "swerve.urdf")
+
+
+def test_an_axis_written_to_five_digits_snaps_to_its_direction():
+    from wmr.io.urdf_tree import snap
+
+    assert snap([0.0, 1.0, -3.7e-6]).tolist() == [0.0, 1.0, 0.0]
