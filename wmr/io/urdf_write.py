@@ -41,31 +41,14 @@ from ..model.types import PathLike
 from .decimals import float_text, length_scale, quantise
 from .mechanism import Mechanism, mechanism, wheel
 
-__all__ = ["ROLLERS", "joint_name", "to_urdf"]
+__all__ = ["to_urdf"]
 
 #: rollers written around each Swedish wheel's rim
 ROLLERS = 8
 
 
 def joint_name(i: int, joint: str) -> str:
-    """The URDF name of joint ``joint`` (e.g. ``"drive"``) of wheel unit ``i`` (1-based): ``wheel{i}_{joint}``.
-
-    The names :func:`to_urdf` and :func:`wmr.io.to_ros2` write, so that the two files agree.
-
-    Parameters
-    ----------
-    i : int
-    joint : str
-
-    Returns
-    -------
-    str
-
-    Examples
-    --------
-    >>> joint_name(2, "steer")
-    'wheel2_steer'
-    """
+    """The URDF name ``wheel{i}_{joint}`` of joint ``joint`` of unit ``i`` (1-based): what to_urdf and to_ros2 write."""
     return f"wheel{i}_{joint}"
 
 
