@@ -17,7 +17,6 @@ Examples
 
 from __future__ import annotations
 
-import difflib
 import json
 import os
 import re
@@ -26,6 +25,7 @@ from pathlib import Path
 
 from ..errors import InputError, InputTypeError, InputValueError, RobotFileError
 from ..model import validation
+from ..model.checks import suggest
 from ..model.robot import Robot
 from ..model.types import JointNames, PathLike
 from .decimals import float_text, length_scale
@@ -113,13 +113,11 @@ def from_ros2(path: PathLike, controller: str | None = None) -> Robot:
         chosen = [(b, c) for b, c in found if b.node == controller]
         if not chosen:
             names = [b.node for b, _ in found]
-            close = difflib.get_close_matches(controller, names, n=1)
             raise RobotFileError(
                 source,
                 1,
                 controller,
-                f"no drive controller of that name (the file has "
-                f"{names or 'none'})" + (f" (did you mean {close[0]!r}?)" if close else ""),
+                f"no drive controller of that name (the file has {names or 'none'})" + suggest(controller, names),
             )
         found = chosen
     if not found:

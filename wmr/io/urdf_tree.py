@@ -8,15 +8,14 @@ the model (origins, axes, geometry).  Every error is a :class:`~wmr.errors.Robot
 
 from __future__ import annotations
 
-import difflib
 import io
-from collections.abc import Iterable
 from pathlib import Path
 from typing import Any, NoReturn
 
 import numpy as np
 
 from ..errors import RobotFileError
+from ..model.checks import suggest
 from ..model.types import ArrayLike, FloatArray
 from .extras import require
 
@@ -198,12 +197,6 @@ def snap(v: ArrayLike) -> FloatArray:
     v = v / np.linalg.norm(v)
     v = np.where(np.abs(v) < AXIS_SNAP, 0.0, v)
     return v / np.linalg.norm(v)
-
-
-def suggest(word: str, choices: Iterable[str]) -> str:
-    """The hint ``" (did you mean 'x'?)"`` naming the closest of ``choices`` to ``word``, or an empty string."""
-    close = difflib.get_close_matches(word, list(choices), n=1)
-    return f" (did you mean {close[0]!r}?)" if close else ""
 
 
 def is_vertical(a: FloatArray) -> bool:

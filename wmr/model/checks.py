@@ -28,9 +28,10 @@ wmr.errors.InputTypeError: beta must be an array of real numbers, got strings: [
 
 from __future__ import annotations
 
+import difflib
 import math
 import numbers
-from collections.abc import Mapping
+from collections.abc import Iterable, Mapping
 from typing import Any
 
 import numpy as np
@@ -72,6 +73,12 @@ def kind_error(name: str, value: Any, wanted: str) -> InputTypeError:
     if isinstance(value, type):
         kind = f"the class {value.__name__}"
     return InputTypeError(f"{name} must be {wanted}, got {show(value)} ({kind})")
+
+
+def suggest(word: str, choices: Iterable[str]) -> str:
+    """The hint ``" (did you mean 'x'?)"`` naming the closest of ``choices`` to ``word``, or an empty string."""
+    close = difflib.get_close_matches(word, list(choices), n=1)
+    return f" (did you mean {close[0]!r}?)" if close else ""
 
 
 def finite_float(name: str, value: Any) -> float:

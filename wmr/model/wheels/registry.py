@@ -8,7 +8,6 @@ without a list written by hand.
 
 from __future__ import annotations
 
-import difflib
 from typing import Any
 
 from ...errors import InputValueError
@@ -58,10 +57,8 @@ def wheel_kind(name: str) -> Any:
     if not isinstance(name, str):
         raise checks.kind_error("kind", name, f"a wheel kind ({', '.join(sorted(_KINDS))})")
     if name not in _KINDS:
-        close = difflib.get_close_matches(name, sorted(_KINDS), n=1)
         raise InputValueError(
-            f"kind must be one of {', '.join(sorted(_KINDS))}, got {name!r}"
-            + (f" (did you mean {close[0]!r}?)" if close else "")
+            f"kind must be one of {', '.join(sorted(_KINDS))}, got {name!r}" + checks.suggest(name, sorted(_KINDS))
         )
     return _KINDS[name]
 
