@@ -102,8 +102,7 @@ def from_ros2(path: PathLike, controller: str | None = None) -> Robot:
     OSError
         If the file cannot be read.
     """
-    if not isinstance(path, (str, os.PathLike)):
-        raise InputTypeError(f"path must be a file name (str or os.PathLike), got {validation.show(path)}")
+    validation.file_path(path)
     if controller is not None and not isinstance(controller, str):
         raise InputTypeError(f"controller must be a node name (str), got {validation.show(controller)}")
     source = os.fspath(path)
@@ -236,8 +235,7 @@ def to_ros2(
         If no controller (or not ``controller``) expresses the robot: the message says why, layout by layout.
     """
     robot = validation.numeric_robot(robot)
-    if path is not None and not isinstance(path, (str, os.PathLike)):
-        raise InputTypeError(f"path must be a file name (str or os.PathLike) or None, got {validation.show(path)}")
+    validation.file_path(path, optional=True)
     if controller is not None and controller not in CONTROLLERS:
         raise InputValueError(f"controller must be one of {', '.join(CONTROLLERS)}, got {validation.show(controller)}")
     chosen = [CONTROLLERS[controller]] if controller else list(CONTROLLERS.values())

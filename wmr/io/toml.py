@@ -289,8 +289,7 @@ def load(path: PathLike) -> Robot:
     TypeError
         If ``path`` is not a path.
     """
-    if not isinstance(path, (str, os.PathLike)):
-        raise InputTypeError(f"path must be a file name (str or os.PathLike), got {validation.show(path)}")
+    validation.file_path(path)
     raw = Path(path).read_bytes()
     try:
         text = raw.decode("utf-8")
@@ -346,8 +345,7 @@ def dump(robot: Robot, path: PathLike | None = None) -> str:
     <BLANKLINE>
     """
     robot = validation.robot(robot)
-    if path is not None and not isinstance(path, (str, os.PathLike)):
-        raise InputTypeError(f"path must be a file name (str or os.PathLike) or None, got {validation.show(path)}")
+    validation.file_path(path, optional=True)
     robot = robot.numeric()
     out = [
         "# wmr robot file: lengths in metres, angles in degrees (schema: wmr.io)",

@@ -193,8 +193,7 @@ def read_urdf(path: PathLike, wheel_joints: WheelJoints | None = None) -> tuple[
     wheel's ``roller``: its first roller joint), for a controller's parameters with the file's names
     (:func:`wmr.io.to_ros2`'s ``joint_names``); ``wheel_joints`` and the errors are :func:`from_urdf`'s.
     """
-    if not isinstance(path, (str, os.PathLike)):
-        raise InputTypeError(f"path must be a file name (str or os.PathLike), got {validation.show(path)}")
+    validation.file_path(path)
     if isinstance(wheel_joints, str):
         wheel_joints = parse_wheel_joints(wheel_joints)
     elif wheel_joints is not None and not isinstance(wheel_joints, Mapping):

@@ -28,13 +28,12 @@ the same bytes on every CPU.
 
 from __future__ import annotations
 
-import os
 from pathlib import Path
 from xml.sax.saxutils import quoteattr
 
 import numpy as np
 
-from ..errors import InputTypeError, InputValueError
+from ..errors import InputValueError
 from ..model import validation
 from ..model.robot import Robot
 from ..model.types import PathLike
@@ -191,8 +190,7 @@ def to_urdf(robot: Robot, path: PathLike | None = None) -> str:
 '<joint name="wheel1_drive" type="continuous">']
     """
     robot = validation.numeric_robot(robot)
-    if path is not None and not isinstance(path, (str, os.PathLike)):
-        raise InputTypeError(f"path must be a file name (str or os.PathLike) or None, got {validation.show(path)}")
+    validation.file_path(path, optional=True)
     height, size = max(float(u.r) for u in robot.wheels), length_scale(robot)
     span = np.abs(robot.mount_points).max(axis=0) * 2 + height
     lines = [

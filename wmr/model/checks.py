@@ -31,6 +31,7 @@ from __future__ import annotations
 import difflib
 import math
 import numbers
+import os
 from collections.abc import Iterable, Mapping
 from typing import Any
 
@@ -227,6 +228,14 @@ def optional_text(name: str, value: Any) -> str | None:
     if value is None or isinstance(value, str):
         return value
     raise kind_error(name, value, "a string or None")
+
+
+def file_path(value: Any, optional: bool = False) -> Any:
+    """``value`` if it is a file name (``str`` or ``os.PathLike``), or None when ``optional``: the argument ``path``."""
+    if (optional and value is None) or isinstance(value, (str, os.PathLike)):
+        return value
+    wanted = "a file name (str or os.PathLike)" + (" or None" if optional else "")
+    raise InputTypeError(f"path must be {wanted}, got {show(value)}")
 
 
 def integer(name: str, value: Any, minimum: int | None = None) -> int:

@@ -16,6 +16,7 @@ from __future__ import annotations
 from ..errors import InputTypeError, InputValueError
 from .checks import (  # noqa: F401  (the analyses' checks, called as validation.real, ...)
     batch_shape,
+    file_path,
     finite_array,
     finite_float,
     flag,
