@@ -53,8 +53,9 @@ def _controllers(blocks, source):
         if b.node in types:
             c = by_plugin.get(types[b.node].split("/")[0])
         else:
+            params = Params(source, b)
             c = next(
-                (c for c in CONTROLLERS.values() if any(all(_has(b.params, k) for k in keys) for keys in c.signature)),
+                (c for c in CONTROLLERS.values() if any(all(params.has(k) for k in keys) for keys in c.signature)),
                 None,
             )
         if c is not None:
@@ -69,14 +70,6 @@ def _controllers(blocks, source):
                 f"the controller manager names a {plugin} {node!r}, but the file has no parameters for it",
             )
     return out
-
-
-def _has(params, key):
-    for part in key.split("."):
-        if not isinstance(params, dict) or part not in params:
-            return False
-        params = params[part]
-    return True
 
 
 def from_ros2(path: PathLike, controller: str | None = None) -> Robot:

@@ -67,10 +67,11 @@ def numeric_robot(value: object, name: str = "robot") -> Robot:
         ``value`` itself, or its float counterpart for an exact robot.
     """
     value = robot(value, name)
-    if free_symbols(value):
+    symbols = value.free_symbols
+    if symbols:
         raise InputValueError(
             f"{name} must have numeric mount points and lengths here, got a robot with the symbols "
-            f"{sorted(map(str, free_symbols(value)))}: {show(value)}"
+            f"{sorted(map(str, symbols))}: {show(value)}"
         )
     return value.numeric() if value.is_symbolic else value
 
