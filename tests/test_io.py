@@ -297,3 +297,10 @@ def test_layouts_are_recognised_without_passive_castors():
     assert recognise(differential(0.4, 0.05), ["mecanum", "differential"]).numbers == {"track": 0.4}
     order, length, width, centre = rectangle_of([[-0.3, 0.2], [0.3, 0.2], [0.3, -0.2], [-0.3, -0.2]])
     assert (order, round(length, 12), round(width, 12), centre.tolist()) == ((1, 2, 0, 3), 0.6, 0.4, [0.0, 0.0])
+
+
+def test_an_optional_package_is_imported_when_a_bridge_needs_it():
+    from wmr.io.extras import require
+
+    pytest.importorskip("yaml")
+    assert require("ros", "reading ROS 2 parameters").__name__ == "yaml"
