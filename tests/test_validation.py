@@ -355,3 +355,18 @@ def test_quoted_inputs_that_are_valid_give_right_finite_answers():
     with pytest.raises(ValueError, match="max_steps"):
         wmr.integrate(_BOT, [1.0] * 3, [0.0] * 3, t_end=1.0, dt=0.1, max_steps=5)
     assert len(wmr.integrate(_BOT, [1.0] * 3, [0.0] * 3, t_end=1.0, dt=0.1, max_steps=10).t) == 11
+
+
+def test_the_hint_of_a_near_name_and_the_check_of_a_path():
+    from pathlib import Path
+
+    from wmr.model.checks import suggest
+
+    assert suggest("centered", ["centred", "offset"]) == " (did you mean 'centred'?)"
+    assert suggest("wheel", ["name"]) == ""
+    assert V.file_path("bot.toml") == "bot.toml" and V.file_path(None, optional=True) is None
+    assert V.file_path(Path("bot.toml")) == Path("bot.toml")
+    with pytest.raises(InputTypeError, match=r"^path must be a file name \(str or os.PathLike\), got 3$"):
+        V.file_path(3)
+    with pytest.raises(InputTypeError, match=r"^path must be a file name \(str or os.PathLike\) or None, got 3$"):
+        V.file_path(3, optional=True)
