@@ -304,3 +304,10 @@ def test_an_optional_package_is_imported_when_a_bridge_needs_it():
 
     pytest.importorskip("yaml")
     assert require("ros", "reading ROS 2 parameters").__name__ == "yaml"
+
+
+def test_a_kind_takes_the_keys_of_its_nearest_base_with_an_entry():
+    from wmr.io.wheel_tables import file_keys
+
+    assert [k.name for k in file_keys(wmr.SwedishWheel)] == ["position", "radius", "angle_deg", "roller_deg"]
+    assert [k.name for k in file_keys(wmr.FixedWheel)] == ["position", "radius", "angle_deg"]  # UnsteeredUnit's

@@ -19,9 +19,6 @@ Examples
 Traceback (most recent call last):
     ...
 wmr.errors.InputValueError: must not be negative (the offset d in metres, >= 0), got -1
->>> import wmr
->>> [k.name for k in file_keys(wmr.SwedishWheel)]
-['position', 'radius', 'angle_deg', 'roller_deg']
 """
 
 from __future__ import annotations
