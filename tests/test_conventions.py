@@ -174,3 +174,11 @@ def test_forward_slip_tolerance_in_python():
     assert not wmr.forward(bot, beta, rates, slip_tolerance=1e-5).admissible
     with pytest.raises(InputError, match="slip_tolerance"):
         wmr.forward(bot, beta, rates, slip_tolerance=-1.0)
+
+
+def test_a_convention_is_checked_by_name():
+    from wmr.model.conventions import checked
+
+    assert checked("wpilib") == "wpilib"
+    with pytest.raises(InputError, match="convention must be one of wmr, wpilib, ros"):
+        checked("WPILib")

@@ -77,3 +77,12 @@ def test_bad_input_gets_the_package_s_errors(args, error):
 def test_float_text_writes_one_number():
     with pytest.raises(InputValueError, match="one number"):
         float_text([1.0, 2.0])
+
+
+def test_every_float_of_a_structure_and_a_robot_s_length_scale():
+    import wmr
+    from wmr.io.decimals import length_scale
+
+    out = quantise_all({"a": [0.1 + 0.2, 3], "b": np.array([1e-17, 2.0]), "c": "x"}, scale=1.0)
+    assert out == {"a": [0.3, 3], "b": [0.0, 2.0], "c": "x"}
+    assert length_scale(wmr.paper_robot("centred", L=0.3, r=0.05)) == 0.3

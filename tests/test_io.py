@@ -279,3 +279,35 @@ def test_the_examples_cover_the_five_classes():
 def test_example_class(name, label):
     c = wmr.campion_class(load(EXAMPLES / name))
     assert c.label == label and f"({c.delta_m},{c.delta_s})" == label
+
+
+def test_toml_strings_and_the_text_of_a_value_in_messages():
+    from wmr.io.wheel_tables import toml_string, toml_text
+
+    assert toml_string('a "b"\n') == '"a \\"b\\"\\n"'
+    assert toml_text([1, "a", True, 2.5, 3, 4]) == '[1, "a", true, 2.5, ...]'
+
+
+def test_layouts_are_recognised_without_passive_castors():
+    from wmr.io.layouts import differential
+    from wmr.io.recognise import free_passive, recognise, rectangle_of
+
+    assert free_passive(wmr.OffsetWheel((0, 0), r=0.03, d=0.03, driven={"steer": False, "drive": False}))
+    assert not free_passive(wmr.OffsetWheel((0, 0), r=0.03, d=0.03))  # motors: part of the layout
+    assert recognise(differential(0.4, 0.05), ["mecanum", "differential"]).numbers == {"track": 0.4}
+    order, length, width, centre = rectangle_of([[-0.3, 0.2], [0.3, 0.2], [0.3, -0.2], [-0.3, -0.2]])
+    assert (order, round(length, 12), round(width, 12), centre.tolist()) == ((1, 2, 0, 3), 0.6, 0.4, [0.0, 0.0])
+
+
+def test_an_optional_package_is_imported_when_a_bridge_needs_it():
+    from wmr.io.extras import require
+
+    pytest.importorskip("yaml")
+    assert require("ros", "reading ROS 2 parameters").__name__ == "yaml"
+
+
+def test_a_kind_takes_the_keys_of_its_nearest_base_with_an_entry():
+    from wmr.io.wheel_tables import file_keys
+
+    assert [k.name for k in file_keys(wmr.SwedishWheel)] == ["position", "radius", "angle_deg", "roller_deg"]
+    assert [k.name for k in file_keys(wmr.FixedWheel)] == ["position", "radius", "angle_deg"]  # UnsteeredUnit's

@@ -256,3 +256,22 @@ def test_a_missing_yourdfpy_names_the_extra(tmp_path, monkeypatch):
     monkeypatch.setitem(__import__("sys").modules, "yourdfpy", None)
     with pytest.raises(MissingDependencyError, match=r"pip install 'wmr-kinematics\[urdf\]'"):
         load(ROOT / "examples" / "urdf" / "swerve.urdf")
+
+
+def test_an_axis_written_to_five_digits_snaps_to_its_direction():
+    from wmr.io.urdf_tree import snap
+
+    assert snap([0.0, 1.0, -3.7e-6]).tolist() == [0.0, 1.0, 0.0]
+
+
+def test_wheel_joints_as_the_command_line_gives_them_and_the_file_s_joint_names():
+    from wmr.io.urdf_read import parse_wheel_joints, read_urdf
+
+    wanted = {"left_wheel_joint": None, "right_wheel_joint": 0.05}
+    assert parse_wheel_joints("left_wheel_joint, right_wheel_joint=0.05") == wanted
+    _, names = read_urdf(ROOT / "examples" / "urdf" / "diffbot.urdf")
+    assert names == [
+        {"drive": "left_wheel_joint"},
+        {"drive": "right_wheel_joint"},
+        {"steer": "caster_swivel_joint", "drive": "caster_wheel_joint"},
+    ]

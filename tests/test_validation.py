@@ -119,6 +119,20 @@ def test_point_accepted():
     assert V.point("position", (x, 0.5)) == (x, 0.5)
 
 
+def test_the_small_checks():
+    """What the checks' docstrings showed: the text of a value, the kind error, flags, integers, exact numbers."""
+    assert V.show(np.zeros(100)) == "array of shape (100,), first values [0.0, 0.0, 0.0, 0.0, 0.0, 0.0, ...]"
+    assert str(V.kind_error("r", "0.1", "a real number")) == "r must be a real number, got '0.1' (str)"
+    with pytest.raises(InputValueError, match=r"x must be a finite real number, got 1000.*too large for double"):
+        V.finite_float("x", 10**400)
+    assert V.real("angle", np.float32(0.5)) == 0.5 and V.real("angle", 3) == 3
+    assert V.number("angle", sp.pi / 2) == 1.5707963267948966
+    assert V.flag("exact", np.True_) is True
+    assert V.integer("n", np.int64(3), minimum=1) == 3 and type(V.integer("n", np.int64(3))) is int
+    with pytest.raises(InputTypeError, match=r"robot must be a wmr.Robot instance, got the class Robot itself"):
+        V.robot(wmr.Robot)
+
+
 # --- arrays -------------------------------------------------------------------------------------
 @pytest.mark.parametrize(
     "value, last, shown, kind",
@@ -156,6 +170,19 @@ def test_finite_array_messages_stay_short():
     with pytest.raises(ValueError) as exc:
         V.finite_array("beta", np.zeros((10**5, 2)), last=3)
     assert len(str(exc.value)) < 200 and "\n" not in str(exc.value)
+
+
+def test_twists_batches_and_matrices():
+    class ChassisSpeeds:  # what WPILib's looks like to wmr
+        vx, vy, omega = 1.0, 2.0, 0.5
+
+    assert V.twist_array("twist", ChassisSpeeds()).tolist() == [0.5, 1.0, 2.0]
+    assert V.twist_array("twist", [0.5, 1.0, 2.0]).tolist() == [0.5, 1.0, 2.0]
+    assert V.batch_shape({"beta": np.zeros((5, 3)), "rates": np.zeros(3)}) == (5,)
+    wanted = r"beta and rates must have broadcastable batch shapes, got beta \(2,\) and rates \(4,\)"
+    with pytest.raises(InputValueError, match=wanted):
+        V.batch_shape({"beta": np.zeros((2, 3)), "rates": np.zeros((4, 3))})
+    assert V.symbolic_matrix("M", [[1, x]]).shape == (1, 2)
 
 
 def test_symbolic_vector():
@@ -245,6 +272,12 @@ def test_near_zero(value, scale, expected):
     assert bool(near_zero(value, scale)) is expected
 
 
+def test_column_norms_neither_overflow_nor_divide_by_zero():
+    from wmr.model.tolerance import column_norms
+
+    assert column_norms([[3e300, 0.0], [4e300, 0.0]]).tolist() == [5e300, 1.0]
+
+
 def test_near_zero_broadcasts():
     out = near_zero(np.array([[1e-12, 1.0]]), np.array([[1.0], [1e12]]))
     assert out.tolist() == [[True, False], [True, True]]
@@ -322,3 +355,18 @@ def test_quoted_inputs_that_are_valid_give_right_finite_answers():
     with pytest.raises(ValueError, match="max_steps"):
         wmr.integrate(_BOT, [1.0] * 3, [0.0] * 3, t_end=1.0, dt=0.1, max_steps=5)
     assert len(wmr.integrate(_BOT, [1.0] * 3, [0.0] * 3, t_end=1.0, dt=0.1, max_steps=10).t) == 11
+
+
+def test_the_hint_of_a_near_name_and_the_check_of_a_path():
+    from pathlib import Path
+
+    from wmr.model.checks import suggest
+
+    assert suggest("centered", ["centred", "offset"]) == " (did you mean 'centred'?)"
+    assert suggest("wheel", ["name"]) == ""
+    assert V.file_path("bot.toml") == "bot.toml" and V.file_path(None, optional=True) is None
+    assert V.file_path(Path("bot.toml")) == Path("bot.toml")
+    with pytest.raises(InputTypeError, match=r"^path must be a file name \(str or os.PathLike\), got 3$"):
+        V.file_path(3)
+    with pytest.raises(InputTypeError, match=r"^path must be a file name \(str or os.PathLike\) or None, got 3$"):
+        V.file_path(3, optional=True)

@@ -45,3 +45,12 @@ def test_bad_fixed_wheel(kwargs, exc):
     args = dict(position=(0.0, 0.0), r=0.1, angle=0.0) | kwargs
     with pytest.raises(exc, match=rf"\b{next(iter(kwargs))}\b"):
         wmr.FixedWheel(**args)
+
+
+def test_a_constant_angle_stays_exact_or_becomes_a_float():
+    import sympy as sp
+
+    from wmr.model.wheels.unsteered import constant
+
+    assert constant("angle", sp.pi / 2) == sp.pi / 2 and constant("angle", 1) == 1.0
+    assert type(constant("angle", 1)) is float

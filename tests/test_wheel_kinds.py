@@ -161,6 +161,24 @@ def test_actuation_overrides_the_defaults():
     assert [j.driven for j in castor.joints] == [False, False] and castor != wmr.OffsetWheel((0, 0), r=0.1, d=0.05)
 
 
+def test_rate_columns_and_the_kinds_table():
+    from wmr.model.wheels import kinds_table
+    from wmr.model.wheels.joints import rate_columns
+
+    swivel = Joint("swivel", "swivel", driven=False)
+    drives = [Joint(f"drive{k}", "drive", driven=True, rate=("theta", r"\theta", str(k))) for k in (1, 2)]
+    assert rate_columns((swivel, *drives)) == {"drive1": 0, "drive2": 1}
+    rows = kinds_table().splitlines()
+    assert [line.split()[0] for line in rows[3:8]] == [
+        "``centred``",
+        "``dual``",
+        "``fixed``",
+        "``offset``",
+        "``swedish``",
+    ]
+    assert rows[4].split("  ")[-1] == r":math:`\dot\theta_{i1},\ \dot\theta_{i2}`"  # a dual wheel's rates
+
+
 # ------------------------------------------------------------------------------------------ a new kind
 BALL = '''\
 r"""A ball caster: a ball held in a socket at :math:`P_i`, free to roll every way (two passive rates).

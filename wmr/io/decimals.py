@@ -48,7 +48,7 @@ import numpy as np
 from ..errors import InputTypeError, InputValueError
 from ..model import validation
 
-__all__ = ["DIGITS", "DEGREES", "quantise", "float_text", "quantise_all", "length_scale"]
+__all__ = ["DIGITS", "quantise", "float_text"]
 
 #: significant digits a written float keeps (at most; fewer below its scale)
 DIGITS = 12
@@ -177,26 +177,9 @@ def float_text(x: Any, scale: Any = None, digits: int = DIGITS) -> str:
 
 
 def quantise_all(value: Any, scale: Any = None, digits: int = DIGITS) -> Any:
-    """Every float in a nested structure (dicts, lists, tuples, arrays) quantised: what a JSON writer dumps.
+    """Every float in a nested structure (dicts, lists, tuples, arrays) quantised, as :func:`json.dumps` can write it.
 
-    ``bool``, ``int``, ``str`` and ``None`` are kept; arrays and NumPy scalars become lists and Python
-    numbers, so that :func:`json.dumps` can write the result.
-
-    Parameters
-    ----------
-    value : object
-    scale : float, optional
-    digits : int, optional
-        As for :func:`quantise`, for every float in ``value``.
-
-    Returns
-    -------
-    object
-
-    Examples
-    --------
-    >>> quantise_all({"a": [0.1 + 0.2, 3], "b": np.array([1e-17, 2.0]), "c": "x"}, scale=1.0)
-    {'a': [0.3, 3], 'b': [0.0, 2.0], 'c': 'x'}
+    ``bool``, ``int``, ``str`` and ``None`` are kept; arrays and NumPy scalars become lists and Python numbers.
     """
     if isinstance(value, dict):
         return {k: quantise_all(v, scale, digits) for k, v in value.items()}
@@ -216,24 +199,7 @@ def quantise_all(value: Any, scale: Any = None, digits: int = DIGITS) -> Any:
 
 
 def length_scale(robot: Any) -> float:
-    """The scale of a robot's lengths for :func:`quantise`: its largest mount-point coordinate or wheel radius.
-
-    Parameters
-    ----------
-    robot : Robot
-        A numeric robot.
-
-    Returns
-    -------
-    float
-        > 0 for any robot (a wheel has a radius).
-
-    Examples
-    --------
-    >>> import wmr
-    >>> length_scale(wmr.paper_robot("centred", L=0.3, r=0.05))
-    0.3
-    """
+    """The scale of a numeric robot's lengths for :func:`quantise`: its largest mount coordinate or wheel radius."""
     points = np.abs(np.asarray(robot.mount_points, dtype=float))
     radii = [abs(float(u.r)) for u in robot.wheels]
     return float(max(float(points.max(initial=0.0)), *radii))

@@ -14,7 +14,7 @@ from types import ModuleType
 from .._version import DISTRIBUTION
 from ..errors import MissingDependencyError
 
-__all__ = ["EXTRAS", "require"]
+__all__: list[str] = []  # what the bridges import their optional packages with
 
 #: extra -> (module imported, distribution on PyPI)
 EXTRAS = {
@@ -25,30 +25,9 @@ EXTRAS = {
 
 
 def require(extra: str, what: str, module: str | None = None) -> ModuleType:
-    """The module of the optional package ``extra`` (or its submodule ``module``), imported now.
+    """The module of the optional package ``extra`` of :data:`EXTRAS` (or its submodule ``module``), imported now.
 
-    Parameters
-    ----------
-    extra : str
-        A key of :data:`EXTRAS`.
-    what : str
-        What needs it, for the message (e.g. ``"reading URDF"``).
-    module : str, optional
-        The module to import (default: the package's top module), e.g. ``"wpimath.kinematics"``.
-
-    Returns
-    -------
-    module
-
-    Raises
-    ------
-    wmr.errors.MissingDependencyError
-        If the package is not installed (the message names the extra).
-
-    Examples
-    --------
-    >>> require("ros", "reading ROS 2 parameters").__name__
-    'yaml'
+    Without the package, a MissingDependencyError names ``what`` needs it and the extra to install.
     """
     top, dist = EXTRAS[extra]
     try:

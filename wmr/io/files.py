@@ -18,7 +18,7 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
-from ..errors import InputTypeError, InputValueError
+from ..errors import InputValueError
 from ..model import validation
 from ..model.robot import Robot
 from ..model.types import JointNames, PathLike, WheelJoints
@@ -47,8 +47,7 @@ def format_of(path: PathLike) -> str:
     >>> format_of("robot.URDF"), format_of("bot.yaml"), format_of("bot.cfg")
     ('urdf', 'ros2', 'toml')
     """
-    if not isinstance(path, (str, os.PathLike)):
-        raise InputTypeError(f"path must be a file name (str or os.PathLike), got {validation.show(path)}")
+    validation.file_path(path)
     suffix = Path(path).suffix.lower()
     return next((f for f, suffixes in FORMATS.items() if suffix in suffixes), "toml")
 

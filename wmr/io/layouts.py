@@ -36,7 +36,7 @@ from ..model.robot import Robot
 from ..model.types import ArrayLike, FloatArray, Point
 from ..model.wheels import CentredWheel, FixedWheel, SwedishWheel
 
-__all__ = ["LAYOUTS", "differential", "mecanum", "omni", "swerve", "car", "rectangle"]
+__all__ = ["differential", "mecanum", "omni", "swerve", "car", "rectangle"]
 
 #: every layout, and the wheel units it takes (for messages)
 LAYOUTS = {

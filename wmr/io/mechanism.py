@@ -53,18 +53,7 @@ from ..model.checks import number, show
 from ..model.wheels import CentredWheel, DualWheel, FixedWheel, OffsetWheel, SwedishWheel
 from ..model.wheels.joints import Joint
 
-__all__ = [
-    "AXLE",
-    "VERTICAL",
-    "NO_FAITHFUL_MECHANISM",
-    "Body",
-    "Mechanism",
-    "mount",
-    "wheel",
-    "root_body",
-    "mechanism",
-    "has_mechanism",
-]
+__all__ = ["AXLE", "VERTICAL", "NO_FAITHFUL_MECHANISM", "Body", "Mechanism", "root_body", "mechanism"]
 
 #: the axis of a steering joint, in its body's frame: the vertical :math:`\mathbf k`
 VERTICAL = (0.0, 0.0, 1.0)
@@ -167,39 +156,15 @@ class Mechanism:
 
 
 def mount(position: Any) -> Point:
-    r"""The mount point :math:`P_i` on the mount plane, as a root body's origin: ``(x, y, 0.0)``.
-
-    Parameters
-    ----------
-    position : pair
-        The unit's ``position`` (numbers).
-
-    Returns
-    -------
-    tuple of 3 floats
-    """
+    r"""The mount point :math:`P_i` of a unit's (numeric) ``position``, as a root body's origin: ``(x, y, 0.0)``."""
     x, y = (float(v) for v in position)
     return (x, y, 0.0)
 
 
 def wheel(name: str, pos: Point, r: float, joint: Joint, angle: float = 0.0) -> Body:
-    """A wheel body of radius ``r`` at ``pos`` on its drive joint ``joint`` (about its x axis, the axle).
+    """A wheel body of radius ``r`` centred at ``pos`` (parent's frame) on its drive joint (about its x axis, the axle).
 
-    Parameters
-    ----------
-    name : str
-    pos : tuple of 3 floats
-        The wheel centre in the parent's frame.
-    r : float
-        Wheel radius.
-    joint : Joint
-        The unit's drive joint of this wheel.
-    angle : float, optional
-        A constant turn about z (a wheel without a steering joint: its own angle).
-
-    Returns
-    -------
-    Body
+    ``angle`` is a constant turn about z (a wheel without a steering joint: its own angle).
     """
     return Body(name, pos, angle, joint, AXLE, wheel=float(r))
 
@@ -304,16 +269,7 @@ def _swedish(unit: SwedishWheel, height: float) -> Body:
 
 
 def has_mechanism(kind: type) -> bool:
-    """Whether a wheel kind has an entry in :func:`root_body` (its own or a base class's; a refusal counts).
-
-    Parameters
-    ----------
-    kind : type
-
-    Returns
-    -------
-    bool
-    """
+    """Whether a wheel kind has an entry in :func:`root_body` (its own or a base class's; a refusal counts)."""
     return root_body.dispatch(kind) is not root_body.dispatch(object)
 
 

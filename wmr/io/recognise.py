@@ -27,30 +27,19 @@ from ..model.wheels import CentredWheel, FixedWheel, SwedishWheel
 from ..model.wheels.unit import WheelUnit
 from .layouts import LAYOUTS, rectangle
 
-__all__ = ["Layout", "recognise", "rectangle_of", "free_passive"]
+__all__: list[str] = []  # what the bridges (ROS 2, WPILib) recognise a robot with
 
 _HALF_PI, _QUARTER_PI = np.pi / 2, np.pi / 4
 
 
 @dataclass(frozen=True)
 class Layout:
-    """A robot recognised as a standard layout.
+    """A robot recognised as the standard layout ``name`` (one of :data:`~wmr.io.layouts.LAYOUTS`).
 
-    Attributes
-    ----------
-    name : str
-        One of :data:`~wmr.io.layouts.LAYOUTS`.
-    wheels : tuple of int
-        The robot's wheel (0-based) in each of the layout's places, in the layout's order.
-    positions : numpy.ndarray (k, 2)
-        Their mount points, in that order.
-    radii : numpy.ndarray (k,)
-        Their wheel radii, in that order.
-    numbers : dict of str to float
-        The layout's numbers: ``track``; ``wheelbase``, ``traction_track``, ``steering_track``;
-        ``ring``, ``offset`` (an omni ring); none for mecanum and swerve (their mount points).
-    dropped : tuple of int
-        Passive castors left out (0-based wheel numbers).
+    ``wheels`` are the robot's wheels (0-based) in the layout's places and order, ``positions`` (k, 2) and
+    ``radii`` (k,) theirs; ``numbers`` the layout's (``track``; ``wheelbase``, ``traction_track``,
+    ``steering_track``; ``ring``, ``offset`` of an omni ring; none for mecanum and swerve); ``dropped`` the
+    passive castors left out.
     """
 
     name: str
@@ -67,24 +56,7 @@ class _NotIt(Exception):
 
 
 def free_passive(unit: WheelUnit) -> bool:
-    """True for a passive castor: every joint passive, and no constraint on the twist (its block has rank 2).
-
-    Parameters
-    ----------
-    unit : WheelUnit
-
-    Returns
-    -------
-    bool
-
-    Examples
-    --------
-    >>> from wmr import OffsetWheel
-    >>> free_passive(OffsetWheel((0, 0), r=0.03, d=0.03, driven={"steer": False, "drive": False}))
-    True
-    >>> free_passive(OffsetWheel((0, 0), r=0.03, d=0.03))                 # motors: part of the layout
-    False
-    """
+    """True for a passive castor: every joint passive, and no constraint on the twist (its block has rank 2)."""
     return not any(unit.driven) and int(rank(np.asarray(unit.local_block(), dtype=float))) == 2
 
 
@@ -211,30 +183,9 @@ _RECOGNISERS = {
 
 
 def recognise(robot: Robot, names: Sequence[str], where: str = "this format") -> Layout:
-    """The first of the layouts ``names`` that ``robot`` is (passive castors left out).
+    """The first of the layouts ``names`` that ``robot`` is (passive castors left out), else an error with the reasons.
 
-    Parameters
-    ----------
-    robot : Robot
-    names : sequence of str
-        Layouts of :data:`~wmr.io.layouts.LAYOUTS`, in the order to try.
-    where : str, optional
-        What needs the layout, for the message (e.g. ``"WPILib"``).
-
-    Returns
-    -------
-    Layout
-
-    Raises
-    ------
-    wmr.errors.InputValueError
-        If the robot is none of them: the message gives each layout and why the robot is not it.
-
-    Examples
-    --------
-    >>> from wmr.io.layouts import differential
-    >>> recognise(differential(0.4, 0.05), ["mecanum", "differential"]).numbers
-    {'track': 0.4}
+    ``where`` names what needs the layout, for the message (e.g. ``"WPILib"``).
     """
     robot = validation.numeric_robot(robot)
     unknown = [n for n in names if n not in LAYOUTS]
@@ -278,30 +229,10 @@ def recognise(robot: Robot, names: Sequence[str], where: str = "this format") ->
 
 
 def rectangle_of(positions: ArrayLike) -> tuple[tuple[int, int, int, int], float, float, FloatArray]:
-    """The corners FL, FR, RL, RR of four points on an axis-aligned rectangle, its sides and its centre.
+    """``(order, length, width, centre)`` of four points (4, 2) on an axis-aligned rectangle, or an input error.
 
-    Front is the two points of larger x, left the one of larger y of each pair.
-
-    Parameters
-    ----------
-    positions : array (4, 2)
-
-    Returns
-    -------
-    tuple
-        ``(order, length, width, centre)``: ``order`` the indices of FL, FR, RL, RR into ``positions``;
-        ``length`` along x, ``width`` along y, ``centre`` (2,) as :func:`rectangle` takes them.
-
-    Raises
-    ------
-    wmr.errors.InputValueError
-        If the points are not the corners of a rectangle with sides along x and y.
-
-    Examples
-    --------
-    >>> order, length, width, centre = rectangle_of([[-0.3, 0.2], [0.3, 0.2], [0.3, -0.2], [-0.3, -0.2]])
-    >>> order, round(length, 12), round(width, 12), centre.tolist()
-    ((1, 2, 0, 3), 0.6, 0.4, [0.0, 0.0])
+    ``order`` indexes the corners FL, FR, RL, RR (front: larger x; left: larger y); ``length`` is along x,
+    ``width`` along y, ``centre`` (2,), as :func:`~wmr.io.layouts.rectangle` takes them.
     """
     p = validation.finite_array("positions", positions, last=2).reshape(-1, 2)
     if p.shape != (4, 2):

@@ -17,7 +17,6 @@ Examples
 
 from __future__ import annotations
 
-import difflib
 import json
 import os
 import re
@@ -26,6 +25,7 @@ from pathlib import Path
 
 from ..errors import InputError, InputTypeError, InputValueError, RobotFileError
 from ..model import validation
+from ..model.checks import suggest
 from ..model.robot import Robot
 from ..model.types import JointNames, PathLike
 from .decimals import float_text, length_scale
@@ -53,8 +53,9 @@ def _controllers(blocks, source):
         if b.node in types:
             c = by_plugin.get(types[b.node].split("/")[0])
         else:
+            params = Params(source, b)
             c = next(
-                (c for c in CONTROLLERS.values() if any(all(_has(b.params, k) for k in keys) for keys in c.signature)),
+                (c for c in CONTROLLERS.values() if any(all(params.has(k) for k in keys) for keys in c.signature)),
                 None,
             )
         if c is not None:
@@ -69,14 +70,6 @@ def _controllers(blocks, source):
                 f"the controller manager names a {plugin} {node!r}, but the file has no parameters for it",
             )
     return out
-
-
-def _has(params, key):
-    for part in key.split("."):
-        if not isinstance(params, dict) or part not in params:
-            return False
-        params = params[part]
-    return True
 
 
 def from_ros2(path: PathLike, controller: str | None = None) -> Robot:
@@ -102,8 +95,7 @@ def from_ros2(path: PathLike, controller: str | None = None) -> Robot:
     OSError
         If the file cannot be read.
     """
-    if not isinstance(path, (str, os.PathLike)):
-        raise InputTypeError(f"path must be a file name (str or os.PathLike), got {validation.show(path)}")
+    validation.file_path(path)
     if controller is not None and not isinstance(controller, str):
         raise InputTypeError(f"controller must be a node name (str), got {validation.show(controller)}")
     source = os.fspath(path)
@@ -113,13 +105,11 @@ def from_ros2(path: PathLike, controller: str | None = None) -> Robot:
         chosen = [(b, c) for b, c in found if b.node == controller]
         if not chosen:
             names = [b.node for b, _ in found]
-            close = difflib.get_close_matches(controller, names, n=1)
             raise RobotFileError(
                 source,
                 1,
                 controller,
-                f"no drive controller of that name (the file has "
-                f"{names or 'none'})" + (f" (did you mean {close[0]!r}?)" if close else ""),
+                f"no drive controller of that name (the file has {names or 'none'})" + suggest(controller, names),
             )
         found = chosen
     if not found:
@@ -238,8 +228,7 @@ def to_ros2(
         If no controller (or not ``controller``) expresses the robot: the message says why, layout by layout.
     """
     robot = validation.numeric_robot(robot)
-    if path is not None and not isinstance(path, (str, os.PathLike)):
-        raise InputTypeError(f"path must be a file name (str or os.PathLike) or None, got {validation.show(path)}")
+    validation.file_path(path, optional=True)
     if controller is not None and controller not in CONTROLLERS:
         raise InputValueError(f"controller must be one of {', '.join(CONTROLLERS)}, got {validation.show(controller)}")
     chosen = [CONTROLLERS[controller]] if controller else list(CONTROLLERS.values())

@@ -44,29 +44,17 @@ from .layouts import car, differential, mecanum, omni, rectangle, swerve
 from .recognise import rectangle_of
 from .ros2_params import Params
 
-__all__ = ["CONTROLLERS", "Controller"]
+__all__: list[str] = []  # the table wmr.io.ros2 reads and writes with
 
 
 @dataclass(frozen=True)
 class Controller:
     """One ROS 2 drive controller: how its parameters make a robot, and a robot's layout its parameters.
 
-    Attributes
-    ----------
-    name : str
-        Its package, and the node name written (``diff_drive_controller``).
-    plugin : str
-        Its ``type`` in the controller manager's parameters.
-    layout : str
-        The layout of :mod:`wmr.io.layouts` it expresses.
-    signature : tuple of tuple of str
-        Sets of parameters that identify it (any one set, all its keys) in a file without a
-        controller manager's ``type``.
-    read : callable
-        ``read(params: Params) -> Robot``.
-    write : callable
-        ``write(layout, robot, names) -> (parameters: dict, notes: list of str)``; ``names(i, joint)`` is the
-        name of joint ``joint`` of wheel unit ``i`` (1-based).
+    ``name`` is its package (the node name written), ``plugin`` its ``type``, ``layout`` the layout of
+    :mod:`wmr.io.layouts` it expresses, ``signature`` the sets of parameters that identify it without a ``type``;
+    ``read(params) -> Robot``, ``write(layout, robot, names) -> (parameters, notes)`` with ``names(i, joint)``
+    the name of joint ``joint`` of unit ``i`` (1-based).
     """
 
     name: str

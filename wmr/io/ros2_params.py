@@ -18,25 +18,15 @@ from ..errors import RobotFileError
 from .extras import require
 from .wheel_tables import toml_text
 
-__all__ = ["Block", "Params", "parse"]
+__all__: list[str] = []  # what wmr.io.ros2 reads a parameter file with
 
 _MISSING = object()
 
 
 @dataclass
 class Block:
-    """The ``ros__parameters`` of one node.
-
-    Attributes
-    ----------
-    node : str
-        The node's name (the key above ``ros__parameters``).
-    params : dict
-        Its parameters, nested as in the file.
-    line : int
-        The line of its ``ros__parameters`` key.
-    lines : dict
-        ``{(key, subkey, ...): line}`` of every key under it.
+    """The ``ros__parameters`` of one ``node``: ``params`` nested as in the file, the ``line`` of the key, the ``lines`` of
+    every key under it (``{(key, subkey, ...): line}``).
     """
 
     node: str
@@ -69,23 +59,9 @@ def _lines(node, prefix, out):
 
 
 def parse(raw: bytes, source: str) -> list[Block]:
-    """The node blocks of a ROS 2 parameter file, with their lines.
+    """The node blocks of a ROS 2 parameter file (``raw`` UTF-8, named ``source``), with their lines.
 
-    Parameters
-    ----------
-    raw : bytes
-        The file's contents (UTF-8, a byte-order mark allowed).
-    source : str
-        The file's name, for messages.
-
-    Returns
-    -------
-    list of Block
-
-    Raises
-    ------
-    wmr.errors.RobotFileError
-        If the file is not UTF-8, not YAML, or holds no ``ros__parameters``.
+    A file that is not UTF-8, not YAML, or holds no ``ros__parameters`` raises a RobotFileError.
     """
     yaml = require("ros", "reading ROS 2 parameter files")
     try:
@@ -139,31 +115,15 @@ def parse(raw: bytes, source: str) -> list[Block]:
 
 
 class Params:
-    """The parameters of one controller, read with checks; a problem raises a RobotFileError at the key's line.
-
-    Parameters
-    ----------
-    source : str
-        The file's name.
-    block : Block
+    """The parameters of one controller (``block`` of the file ``source``), read with checks; a problem raises a
+    RobotFileError at the key's line.
     """
 
     def __init__(self, source: str, block: Block):
         self.source, self.block = source, block
 
     def fail(self, key: str, reason: str) -> NoReturn:
-        """Raise the RobotFileError of ``key``: at its line, else its parent's, else the node's ``ros__parameters``.
-
-        Parameters
-        ----------
-        key : str
-            Dotted for nested parameters.
-        reason : str
-
-        Returns
-        -------
-        NoReturn
-        """
+        """Raise the RobotFileError of ``key`` (dotted): at its line, else its parent's, else the node's ``ros__parameters``."""
         path = tuple(key.split("."))
         line = self.block.lines.get(path)
         while line is None and len(path) > 1:
@@ -172,16 +132,7 @@ class Params:
         raise RobotFileError(self.source, line or self.block.line, f"{self.block.node}.{key}", reason)
 
     def has(self, key: str) -> bool:
-        """True when ``key`` (dotted for nested parameters) is in the block.
-
-        Parameters
-        ----------
-        key : str
-
-        Returns
-        -------
-        bool
-        """
+        """True when ``key`` (dotted for nested parameters) is in the block."""
         return self._raw(key) is not _MISSING
 
     def _raw(self, key):
@@ -193,40 +144,15 @@ class Params:
         return value
 
     def first(self, keys: tuple, check: str, meaning: str, default: Any = _MISSING) -> Any:
-        """The value of the first of ``keys`` in the block (a parameter and its older names), checked as :meth:`get`.
-
-        Parameters
-        ----------
-        keys : tuple of str
-            The current name first.
-        check : str
-        meaning : str
-        default : object, optional
-            The value when none is present (default: required, reported under ``keys[0]``).
-
-        Returns
-        -------
-        object
-        """
+        """The value of the first of ``keys`` present (a parameter, then its older names), as :meth:`get`; absent: ``keys[0]``."""
         key = next((k for k in keys if self.has(k)), keys[0])
         return self.get(key, check, meaning, default)
 
     def get(self, key: str, check: str, meaning: str, default: Any = _MISSING) -> Any:
-        """The value of ``key``, checked: ``check`` is positive, number, bool, name, names or pair.
+        """The value of ``key`` (dotted), checked by ``check``: positive, number, bool, name, names or pair.
 
-        Parameters
-        ----------
-        key : str
-            Dotted for nested parameters (``kinematics.wheels_radius``).
-        check : str
-        meaning : str
-            What it is, with its unit, for messages.
-        default : object, optional
-            The value when the key is absent (default: the key is required).
-
-        Returns
-        -------
-        float, bool, str, list of str or tuple of 2 float
+        ``meaning`` says what it is, with its unit, for messages; ``default`` is the value when the key is absent
+        (none given: the key is required).
         """
         value = self._raw(key)
         if value is _MISSING:

@@ -32,7 +32,6 @@ True
 
 from __future__ import annotations
 
-import difflib
 import os
 import re
 import tomllib
@@ -43,6 +42,7 @@ import numpy as np
 
 from ..errors import InputError, InputTypeError, InputValueError, LimitError, RobotFileError
 from ..model import validation
+from ..model.checks import suggest
 from ..model.limits import check, limit
 from ..model.robot import Robot
 from ..model.tolerance import near_zero
@@ -104,11 +104,6 @@ def _a(kind):
     return ("an " if kind[0] in "aeiou" else "a ") + kind
 
 
-def _suggest(word, choices):
-    close = difflib.get_close_matches(word, choices, n=1)
-    return f" (did you mean {close[0]!r}?)" if close else ""
-
-
 # ------------------------------------------------------------------------------------ reading
 def _driven(value, cls, where, fail):
     """The ``driven`` table of a wheel: {joint name: bool}, joints of the kind only."""
@@ -123,7 +118,7 @@ def _driven(value, cls, where, fail):
         if name not in names:
             fail(
                 *where,
-                f"{_a(cls.kind)} wheel has no joint {name!r} (its joints: {', '.join(names)})" + _suggest(name, names),
+                f"{_a(cls.kind)} wheel has no joint {name!r} (its joints: {', '.join(names)})" + suggest(name, names),
             )
         if not isinstance(flag, bool):
             fail(*where, f"{name} must be true or false, got {toml_text(flag)}")
@@ -144,14 +139,14 @@ def _wheel(k, table, lines, fail):
             lines.of(k, "type"),
             f"{name}.type",
             f"must be one of {', '.join(kinds)}, got {toml_text(kind)}"
-            + (_suggest(kind, list(kinds)) if isinstance(kind, str) else ""),
+            + (suggest(kind, list(kinds)) if isinstance(kind, str) else ""),
         )
     cls = kinds[kind]
     keys = {key.name: key for key in file_keys(cls)}
     every = ["type", *dict.fromkeys(key.name for c in kinds.values() for key in file_keys(c)), _DRIVEN]
     for key in table:
         if key not in every:
-            fail(lines.of(k, key), f"{name}.{key}", "unknown key" + _suggest(key, every))
+            fail(lines.of(k, key), f"{name}.{key}", "unknown key" + suggest(key, every))
         if key not in keys and key not in ("type", _DRIVEN):
             fail(
                 lines.of(k, key),
@@ -243,7 +238,7 @@ def loads(text: str, source: str = "<string>") -> Robot:
             fail(
                 lines.of(None, key),
                 key,
-                "unknown key" + _suggest(key, _TOP_KEYS) + " (a robot file holds name and [[wheel]] tables)",
+                "unknown key" + suggest(key, _TOP_KEYS) + " (a robot file holds name and [[wheel]] tables)",
             )
     name = data.get("name", "robot" if source.startswith("<") else Path(source).stem or "robot")
     if not isinstance(name, str):
@@ -294,8 +289,7 @@ def load(path: PathLike) -> Robot:
     TypeError
         If ``path`` is not a path.
     """
-    if not isinstance(path, (str, os.PathLike)):
-        raise InputTypeError(f"path must be a file name (str or os.PathLike), got {validation.show(path)}")
+    validation.file_path(path)
     raw = Path(path).read_bytes()
     try:
         text = raw.decode("utf-8")
@@ -351,8 +345,7 @@ def dump(robot: Robot, path: PathLike | None = None) -> str:
     <BLANKLINE>
     """
     robot = validation.robot(robot)
-    if path is not None and not isinstance(path, (str, os.PathLike)):
-        raise InputTypeError(f"path must be a file name (str or os.PathLike) or None, got {validation.show(path)}")
+    validation.file_path(path, optional=True)
     robot = robot.numeric()
     out = [
         "# wmr robot file: lengths in metres, angles in degrees (schema: wmr.io)",

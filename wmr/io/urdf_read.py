@@ -60,26 +60,11 @@ from ..model.wheels import CentredWheel, DualWheel, FixedWheel, OffsetWheel, Swe
 from .urdf_tree import AXIS_SNAP, UrdfTree
 from .urdf_wheels import find_wheels, read_wheel, rollers_below
 
-__all__ = ["from_urdf", "read_urdf", "parse_wheel_joints"]
+__all__ = ["from_urdf"]
 
 
 def parse_wheel_joints(text):
-    """``--wheel-joints`` of the command line: ``"a,b=0.05"`` -> ``{"a": None, "b": 0.05}``.
-
-    Parameters
-    ----------
-    text : str
-        Joint names separated by commas, each optionally ``=RADIUS`` (metres).
-
-    Returns
-    -------
-    dict of str to float or None
-
-    Examples
-    --------
-    >>> parse_wheel_joints("left_wheel_joint, right_wheel_joint=0.05")
-    {'left_wheel_joint': None, 'right_wheel_joint': 0.05}
-    """
+    """``--wheel-joints`` of the command line: ``"a,b=0.05"`` -> ``{"a": None, "b": 0.05}`` (radii in metres)."""
     if not isinstance(text, str):
         raise InputTypeError(f"wheel joints must be a string 'name[=radius],...', got {validation.show(text)}")
     out: dict[str, float | None] = {}
@@ -204,33 +189,11 @@ def from_urdf(path: PathLike, wheel_joints: WheelJoints | None = None) -> Robot:
 def read_urdf(path: PathLike, wheel_joints: WheelJoints | None = None) -> tuple[Robot, list[dict[str, str]]]:
     """The robot a URDF file describes, and the name in the file of each of its units' joints.
 
-    Parameters
-    ----------
-    path : str or os.PathLike
-    wheel_joints : optional
-        As for :func:`from_urdf`.
-
-    Returns
-    -------
-    tuple
-        ``(robot, names)``: ``names[i]`` is ``{joint of unit i+1 (its kind's name): URDF joint name}``
-        (a Swedish wheel's ``roller``: its first roller joint), for writing a controller's parameters
-        with the file's names (:func:`wmr.io.to_ros2`'s ``joint_names``).
-
-    Raises
-    ------
-    wmr.errors.RobotFileError
-        As :func:`from_urdf`.
-
-    Examples
-    --------
-    >>> robot, names = read_urdf("examples/urdf/diffbot.urdf")       # doctest: +SKIP
-    >>> names                                                       # doctest: +SKIP
-    [{'drive': 'left_wheel_joint'}, {'drive': 'right_wheel_joint'}, {'steer': 'caster_swivel_joint', \
-'drive': 'caster_wheel_joint'}]
+    ``names[i]`` of ``(robot, names)`` is ``{joint of unit i+1 (its kind's name): URDF joint name}`` (a Swedish
+    wheel's ``roller``: its first roller joint), for a controller's parameters with the file's names
+    (:func:`wmr.io.to_ros2`'s ``joint_names``); ``wheel_joints`` and the errors are :func:`from_urdf`'s.
     """
-    if not isinstance(path, (str, os.PathLike)):
-        raise InputTypeError(f"path must be a file name (str or os.PathLike), got {validation.show(path)}")
+    validation.file_path(path)
     if isinstance(wheel_joints, str):
         wheel_joints = parse_wheel_joints(wheel_joints)
     elif wheel_joints is not None and not isinstance(wheel_joints, Mapping):

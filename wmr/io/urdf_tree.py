@@ -8,19 +8,18 @@ the model (origins, axes, geometry).  Every error is a :class:`~wmr.errors.Robot
 
 from __future__ import annotations
 
-import difflib
 import io
-from collections.abc import Iterable
 from pathlib import Path
 from typing import Any, NoReturn
 
 import numpy as np
 
 from ..errors import RobotFileError
+from ..model.checks import suggest
 from ..model.types import ArrayLike, FloatArray
 from .extras import require
 
-__all__ = ["AXIS_SNAP", "UrdfTree", "snap", "suggest", "is_vertical", "is_horizontal"]
+__all__: list[str] = []  # what wmr.io.urdf_read reads a URDF file with
 
 #: direction components below this are read as zero (URDF files write pi/2 as 1.5708: 3.7e-6 off)
 AXIS_SNAP = 1e-3
@@ -28,25 +27,11 @@ _MOVING = ("revolute", "continuous", "prismatic", "floating", "planar")
 
 
 class UrdfTree:
-    """One URDF file: its joints and links with their lines, the links' poses at zero, and the errors it raises.
+    """One URDF file (``raw`` bytes, ``source`` its name in messages): its joints and links with their lines, at zero.
 
-    Parameters
-    ----------
-    raw : bytes
-        The file's contents.
-    source : str
-        Its name, for messages.
-
-    Attributes
-    ----------
-    name : str
-        The ``<robot name>``.
-    joints, links : dict
-        yourdfpy's joints and links by name, in the file's order.
-    root : str
-        The root link (the platform).
-    commanded : set of str or None
-        Joints a ``<ros2_control>`` command interface or a ``<transmission>`` names; None without either.
+    ``name`` is the ``<robot name>``, ``joints`` and ``links`` yourdfpy's by name in the file's order, ``root`` the
+    platform link, ``commanded`` the joints a ``<ros2_control>`` command interface or a ``<transmission>`` names
+    (None without either).
     """
 
     def __init__(self, raw: bytes, source: str):
@@ -121,32 +106,11 @@ class UrdfTree:
             self._pose(name, ())
 
     def fail(self, line: Any, key: str, reason: str) -> NoReturn:
-        """Raise the RobotFileError ``source:line: key: reason``.
-
-        Parameters
-        ----------
-        line : int or None
-        key : str
-        reason : str
-
-        Returns
-        -------
-        NoReturn
-        """
+        """Raise the RobotFileError ``source:line: key: reason``."""
         raise RobotFileError(self.source, int(line or 1), key, reason)
 
     def line(self, tag: str, name: str) -> int:
-        """The line of ``<tag name=name>`` (1 if unknown).
-
-        Parameters
-        ----------
-        tag : {"joint", "link", "robot"}
-        name : str
-
-        Returns
-        -------
-        int
-        """
+        """The line of ``<tag name=name>`` (1 if unknown)."""
         return self.lines.get((tag, name), 1)
 
     @staticmethod
@@ -197,16 +161,7 @@ class UrdfTree:
         return self.pose[link]
 
     def path(self, joint: str) -> list[Any]:
-        """The joints from the root down to ``joint`` (excluded), root first.
-
-        Parameters
-        ----------
-        joint : str
-
-        Returns
-        -------
-        list of yourdfpy joints
-        """
+        """The joints from the root down to ``joint`` (excluded), root first."""
         out, link = [], self.joints[joint].parent
         while link != self.root:
             j = self.child_of[link]
@@ -215,43 +170,16 @@ class UrdfTree:
         return out[::-1]
 
     def axis(self, joint: str) -> FloatArray:
-        """A joint's axis in the platform frame, unit length, components below AXIS_SNAP set to zero.
-
-        Parameters
-        ----------
-        joint : str
-
-        Returns
-        -------
-        numpy.ndarray (3,)
-        """
+        """A joint's axis (3,) in the platform frame, unit length, components below AXIS_SNAP set to zero."""
         j = self.joints[joint]
         return snap(self.pose[j.child][:3, :3] @ np.asarray(j.axis, dtype=float))
 
     def centre(self, joint: str) -> FloatArray:
-        """The origin of a joint (its child link's) in the platform frame.
-
-        Parameters
-        ----------
-        joint : str
-
-        Returns
-        -------
-        numpy.ndarray (3,)
-        """
+        """The origin (3,) of a joint (its child link's) in the platform frame."""
         return self.pose[self.joints[joint].child][:3, 3]
 
     def cylinder(self, joint: str) -> tuple[float | None, Any]:
-        """(radius, axis in the platform frame) of the child link's first cylinder, or (None, the shapes it has).
-
-        Parameters
-        ----------
-        joint : str
-
-        Returns
-        -------
-        tuple
-        """
+        """(radius, axis in the platform frame) of the child link's first cylinder, or (None, the shapes it has)."""
         link = self.links[self.joints[joint].child]
         shapes = []
         for item in list(link.collisions) + list(link.visuals):
@@ -264,66 +192,18 @@ class UrdfTree:
 
 
 def snap(v: ArrayLike) -> FloatArray:
-    """``v`` normalised, components below :data:`AXIS_SNAP` set to zero, normalised again.
-
-    Parameters
-    ----------
-    v : array (3,)
-
-    Returns
-    -------
-    numpy.ndarray (3,)
-
-    Examples
-    --------
-    >>> snap([0.0, 1.0, -3.7e-6]).tolist()
-    [0.0, 1.0, 0.0]
-    """
+    """``v`` (3,) normalised, components below :data:`AXIS_SNAP` set to zero, normalised again."""
     v = np.asarray(v, dtype=float)
     v = v / np.linalg.norm(v)
     v = np.where(np.abs(v) < AXIS_SNAP, 0.0, v)
     return v / np.linalg.norm(v)
 
 
-def suggest(word: str, choices: Iterable[str]) -> str:
-    """The hint ``" (did you mean 'x'?)"`` naming the closest of ``choices`` to ``word``, or an empty string.
-
-    Parameters
-    ----------
-    word : str
-    choices : iterable of str
-
-    Returns
-    -------
-    str
-    """
-    close = difflib.get_close_matches(word, list(choices), n=1)
-    return f" (did you mean {close[0]!r}?)" if close else ""
-
-
 def is_vertical(a: FloatArray) -> bool:
-    """True for a unit axis along +-z (within :data:`AXIS_SNAP`).
-
-    Parameters
-    ----------
-    a : array (3,)
-
-    Returns
-    -------
-    bool
-    """
+    """True for a unit axis along +-z (within :data:`AXIS_SNAP`)."""
     return bool(abs(abs(a[2]) - 1.0) <= AXIS_SNAP)
 
 
 def is_horizontal(a: FloatArray) -> bool:
-    """True for a unit axis in the xy plane (within :data:`AXIS_SNAP`).
-
-    Parameters
-    ----------
-    a : array (3,)
-
-    Returns
-    -------
-    bool
-    """
+    """True for a unit axis in the xy plane (within :data:`AXIS_SNAP`)."""
     return bool(abs(a[2]) <= AXIS_SNAP)

@@ -10,23 +10,14 @@ import numpy as np
 
 from .urdf_tree import AXIS_SNAP, UrdfTree, is_horizontal, is_vertical, suggest
 
-__all__ = ["find_wheels", "read_wheel", "rollers_below", "roller_angle"]
+__all__: list[str] = []  # what wmr.io.urdf_read reads the wheels with
 
 
 def find_wheels(rd: UrdfTree, wheel_joints):
-    """The wheel joints of a file, in the file's order.
+    """The wheel joints of a file, in its order: ``[(joint name, radius or None)]``.
 
-    Parameters
-    ----------
-    rd : UrdfTree
-    wheel_joints : dict or None
-        ``{joint name: radius or None}`` naming the wheel joints (None: every horizontal ``continuous`` joint
-        whose link has a cylinder, rollers below a wheel excepted).
-
-    Returns
-    -------
-    list of tuple
-        ``[(joint name, radius or None)]``.
+    ``wheel_joints`` names them ``{joint name: radius or None}``; None: every horizontal ``continuous`` joint whose
+    link has a cylinder, rollers below a wheel excepted.
     """
     if wheel_joints is not None:
         out = []
@@ -67,21 +58,9 @@ def find_wheels(rd: UrdfTree, wheel_joints):
 
 
 def read_wheel(rd: UrdfTree, name, radius):
-    """One wheel joint read and checked: where the wheel is, its size, what steers it and its rollers.
+    """One wheel joint read and checked (``radius`` None: its cylinder's), in the platform frame.
 
-    Parameters
-    ----------
-    rd : UrdfTree
-    name : str
-        The wheel joint.
-    radius : float or None
-        Its radius (None: the cylinder's).
-
-    Returns
-    -------
-    tuple
-        ``(centre (3,), axle (3,), radius, steering joint or None, rollers' angle or None)``, in the platform
-        frame.
+    Returns ``(centre (3,), axle (3,), radius, steering joint or None, rollers' angle or None)``.
     """
     j, line, key = rd.joints[name], rd.line("joint", name), f"joint {name!r}"
     if j.type not in ("continuous", "revolute"):
@@ -138,36 +117,14 @@ def read_wheel(rd: UrdfTree, name, radius):
 
 
 def rollers_below(rd: UrdfTree, wheel):
-    """The continuous joints below a wheel joint (its rollers), in the file's order.
-
-    Parameters
-    ----------
-    rd : UrdfTree
-    wheel : str
-        The wheel joint.
-
-    Returns
-    -------
-    list of str
-    """
+    """The continuous joints below the wheel joint ``wheel`` (its rollers), in the file's order."""
     return [n for n, j in rd.joints.items() if j.type == "continuous" and wheel in {p.name for p in rd.path(n)}]
 
 
 def roller_angle(rd: UrdfTree, wheel, axle):
-    r"""The angle :math:`\gamma` of the rollers below a wheel to its axle, checked to agree.
+    r"""The angle :math:`\gamma` in :math:`(-\pi/2, \pi/2]` of the rollers below a wheel to its unit ``axle``.
 
-    Parameters
-    ----------
-    rd : UrdfTree
-    wheel : str
-        The wheel joint.
-    axle : numpy.ndarray (3,)
-        Its unit axle, platform frame.
-
-    Returns
-    -------
-    float or None
-        Radians in :math:`(-\pi/2, \pi/2]`; None when the wheel has no rollers.
+    None when it has no rollers; the rollers are checked to agree.
     """
     below = rollers_below(rd, wheel)
     gammas = []

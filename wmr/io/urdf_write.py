@@ -28,44 +28,26 @@ the same bytes on every CPU.
 
 from __future__ import annotations
 
-import os
 from pathlib import Path
 from xml.sax.saxutils import quoteattr
 
 import numpy as np
 
-from ..errors import InputTypeError, InputValueError
+from ..errors import InputValueError
 from ..model import validation
 from ..model.robot import Robot
 from ..model.types import PathLike
 from .decimals import float_text, length_scale, quantise
 from .mechanism import Mechanism, mechanism, wheel
 
-__all__ = ["ROLLERS", "joint_name", "to_urdf"]
+__all__ = ["to_urdf"]
 
 #: rollers written around each Swedish wheel's rim
 ROLLERS = 8
 
 
 def joint_name(i: int, joint: str) -> str:
-    """The URDF name of joint ``joint`` (e.g. ``"drive"``) of wheel unit ``i`` (1-based): ``wheel{i}_{joint}``.
-
-    The names :func:`to_urdf` and :func:`wmr.io.to_ros2` write, so that the two files agree.
-
-    Parameters
-    ----------
-    i : int
-    joint : str
-
-    Returns
-    -------
-    str
-
-    Examples
-    --------
-    >>> joint_name(2, "steer")
-    'wheel2_steer'
-    """
+    """The URDF name ``wheel{i}_{joint}`` of joint ``joint`` of unit ``i`` (1-based): what to_urdf and to_ros2 write."""
     return f"wheel{i}_{joint}"
 
 
@@ -208,8 +190,7 @@ def to_urdf(robot: Robot, path: PathLike | None = None) -> str:
 '<joint name="wheel1_drive" type="continuous">']
     """
     robot = validation.numeric_robot(robot)
-    if path is not None and not isinstance(path, (str, os.PathLike)):
-        raise InputTypeError(f"path must be a file name (str or os.PathLike) or None, got {validation.show(path)}")
+    validation.file_path(path, optional=True)
     height, size = max(float(u.r) for u in robot.wheels), length_scale(robot)
     span = np.abs(robot.mount_points).max(axis=0) * 2 + height
     lines = [

@@ -19,9 +19,6 @@ Examples
 Traceback (most recent call last):
     ...
 wmr.errors.InputValueError: must not be negative (the offset d in metres, >= 0), got -1
->>> import wmr
->>> [k.name for k in file_keys(wmr.SwedishWheel)]
-['position', 'radius', 'angle_deg', 'roller_deg']
 """
 
 from __future__ import annotations
@@ -35,38 +32,14 @@ from ..model.checks import show
 from ..model.wheels import CentredWheel, DualWheel, OffsetWheel, SwedishWheel, WheelUnit, wheel_kinds
 from ..model.wheels.unsteered import UnsteeredUnit
 
-__all__ = [
-    "FileKey",
-    "COMMON_KEYS",
-    "toml_text",
-    "toml_string",
-    "register",
-    "file_keys",
-    "has_file_keys",
-    "readable_kinds",
-    "wheel_keys",
-]
+__all__ = ["FileKey", "COMMON_KEYS", "register", "file_keys", "wheel_keys"]
 
 _CHECKS = ("number", "positive", "nonnegative", "pair")
 _ESCAPES = {'"': '\\"', "\\": "\\\\", "\n": "\\n", "\t": "\\t"}
 
 
 def toml_string(s: str) -> str:
-    """A TOML basic string (control characters escaped).
-
-    Parameters
-    ----------
-    s : str
-
-    Returns
-    -------
-    str
-
-    Examples
-    --------
-    >>> print(toml_string('a "b"\\n'))
-    "a \\"b\\"\\n"
-    """
+    """A TOML basic string (control characters escaped)."""
     return (
         '"'
         + "".join(_ESCAPES.get(c) or (f"\\u{ord(c):04X}" if ord(c) < 0x20 or ord(c) == 0x7F else c) for c in s)
@@ -75,22 +48,7 @@ def toml_string(s: str) -> str:
 
 
 def toml_text(v: Any) -> str:
-    """A short TOML-like text of a value read from a TOML file (for messages).
-
-    Parameters
-    ----------
-    v : object
-        A string, bool, number, list or table (dict).
-
-    Returns
-    -------
-    str
-
-    Examples
-    --------
-    >>> toml_text([1, "a", True, 2.5, 3, 4])
-    '[1, "a", true, 2.5, ...]'
-    """
+    """A short TOML-like text of a value read from a TOML file (for messages): strings cut at 40, lists at 4."""
     if isinstance(v, str):
         return toml_string(v) if len(v) < 40 else toml_string(v[:37] + "...")
     if isinstance(v, bool):
@@ -256,16 +214,7 @@ def file_keys(kind: type) -> tuple[FileKey, ...]:
 
 
 def has_file_keys(kind: type) -> bool:
-    """Whether a wheel kind has robot-file keys (its own entry or a base class's).
-
-    Parameters
-    ----------
-    kind : type
-
-    Returns
-    -------
-    bool
-    """
+    """Whether a wheel kind has robot-file keys (its own entry or a base class's)."""
     return any(c in _KEYS for c in kind.__mro__)
 
 
@@ -286,13 +235,7 @@ def wheel_keys() -> dict[str, tuple[str, ...]]:
 
 
 def readable_kinds() -> dict[str, type]:
-    """The registered wheel kinds that robot files can hold: those with keys here.
-
-    Returns
-    -------
-    dict of str to type
-        ``{kind: class}``, in the order of :func:`wmr.model.wheels.wheel_kinds`.
-    """
+    """The registered wheel kinds that robot files can hold (those with keys here), ``{kind: class}``."""
     return {kind: cls for kind, cls in wheel_kinds().items() if has_file_keys(cls)}
 
 

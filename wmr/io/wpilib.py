@@ -20,7 +20,7 @@ module speed, distance     m/s, m along :math:`\alpha`           :math:`r\dot\th
 
 A ``ChassisSpeeds`` is ``(vx, vy, omega)`` and iterates in that order; wmr's twist puts :math:`\dot\psi`
 first, so ``np.asarray(speeds)`` is a twist in the wrong order, silently.  Every function of wmr that takes
-a twist reads such an object by its fields (:func:`wmr.model.arrays.twist_array`); :func:`twist_of` does
+a twist reads such an object by its fields (:func:`wmr.model.checks.twist_array`); :func:`twist_of` does
 only that (an array's order would be a guess), and :func:`chassis_speeds` makes one.  None of these
 needs wpimath but :func:`chassis_speeds`.
 
@@ -231,7 +231,7 @@ def from_module_states(states: Sequence[Any]) -> tuple[FloatArray, FloatArray]:
 def is_chassis_speeds(obj: object) -> bool:
     """True for a WPILib ``ChassisSpeeds`` or ``Twist2d`` (any object with their attributes), or a sequence of them.
 
-    The objects are those of :data:`wmr.model.arrays.TWIST_OBJECTS` (a ROS ``Twist`` too).
+    The objects are those of :data:`wmr.model.checks.TWIST_OBJECTS` (a ROS ``Twist`` too).
 
     Parameters
     ----------
@@ -249,7 +249,7 @@ def is_chassis_speeds(obj: object) -> bool:
 def twist_of(speeds: Any) -> FloatArray:
     r"""wmr's twist :math:`[\dot\psi, \dot x, \dot y]` of a ``ChassisSpeeds`` (or the increment of a ``Twist2d``).
 
-    Read by field names (:func:`wmr.model.arrays.twist_array`, the one conversion every function that
+    Read by field names (:func:`wmr.model.checks.twist_array`, the one conversion every function that
     takes a twist uses).
 
     Parameters

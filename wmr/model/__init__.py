@@ -4,10 +4,8 @@ r"""The model: what a wheeled mobile robot *is* (no analysis here).
 :mod:`~wmr.model.backend`       the two backends (NumPy numbers, SymPy symbols) every matrix is built with
 :mod:`~wmr.model.tolerance`     the one numerical tolerance, and the column scaling ranks are decided with
 :mod:`~wmr.model.types`         the types of the public API's arguments and results (annotations)
-:mod:`~wmr.model.checks`        input checks of scalars, points and flags (:mod:`wmr.errors`: wrong kind, bad value)
-:mod:`~wmr.model.arrays`        the same for arrays (finite batches, SymPy vectors and matrices)
-:mod:`~wmr.model.robot_checks`  the same for robots
-:mod:`~wmr.model.validation`    every input check under one name (what the analyses import)
+:mod:`~wmr.model.checks`        input checks of scalars, points and arrays (:mod:`wmr.errors`: wrong kind, bad value)
+:mod:`~wmr.model.validation`    every input check under one name (what the analyses import), robots' too
 :mod:`~wmr.model.platform`      the platform: :math:`\mathbf E`, rotations, :math:`[\mathbf E\mathbf d_i\ \mathbf 1]`
 :mod:`~wmr.model.trig`          batched sums of :math:`\cos\beta_i` and :math:`\sin\beta_i` terms
 :mod:`~wmr.model.wheels`        wheel units, each a block of :math:`\mathbf J_2`; a module per kind, answering for it
@@ -22,8 +20,6 @@ __all__ = [
     "tolerance",
     "types",
     "checks",
-    "arrays",
-    "robot_checks",
     "validation",
     "platform",
     "trig",

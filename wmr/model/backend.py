@@ -18,7 +18,7 @@ from ..errors import InputTypeError
 from .lazysympy import is_sympy, sp
 from .types import ArrayLike, FloatArray, Symbolic
 
-__all__ = ["NumericBackend", "SymbolicBackend", "Backend", "NUMERIC", "SYMBOLIC", "is_symbolic", "choose"]
+__all__ = ["NumericBackend", "SymbolicBackend", "Backend", "NUMERIC", "SYMBOLIC"]
 
 
 class NumericBackend:
@@ -120,22 +120,7 @@ SYMBOLIC = SymbolicBackend()
 
 
 def is_symbolic(*values: object) -> bool:
-    """True when any value (or any element of a sequence/array of values) is SymPy.
-
-    Parameters
-    ----------
-    *values : object
-        Numbers, SymPy objects, sequences or object arrays of them.
-
-    Returns
-    -------
-    bool
-
-    Examples
-    --------
-    >>> is_symbolic(1.0, [2.0, sp.Symbol("x")])
-    True
-    """
+    """True when any value, or any entry of a sequence or object array of values, is SymPy."""
     for v in values:
         if is_sympy(v, "Basic", "MatrixBase"):
             return True
@@ -147,24 +132,7 @@ def is_symbolic(*values: object) -> bool:
 
 
 def choose(*values: object, backend: Backend | None = None) -> Backend:
-    """Pick the backend: the one given, else SymPy if any value is symbolic, else NumPy.
-
-    Parameters
-    ----------
-    *values : object
-        The inputs of a builder.
-    backend : NUMERIC or SYMBOLIC, optional
-        An explicit choice (wins).
-
-    Returns
-    -------
-    NumericBackend or SymbolicBackend
-
-    Examples
-    --------
-    >>> choose(1.0, 2.0) is NUMERIC, choose(1.0, sp.Symbol("x")) is SYMBOLIC
-    (True, True)
-    """
+    """The backend given (checked), else SymPy if any of the builder's inputs is symbolic, else NumPy."""
     if backend is not None:
         if backend not in (NUMERIC, SYMBOLIC):
             raise InputTypeError(f"backend must be wmr.model.backend.NUMERIC or SYMBOLIC, got {backend!r}")

@@ -65,7 +65,7 @@ The frames agree: WPILib's robot frame and ROS's ``base_link`` (REP-103) are x f
 counter-clockwise positive, as wmr's body frame; mount points are WPILib's module ``Translation2d``.
 Two things differ, and are translated at the edges only, by this module (``--convention`` on the
 command line; :func:`angle_to`, :func:`angle_from`, :func:`twist_to`, :func:`twist_from`, by
-:data:`TWIST_ORDER`; twist objects are read by field by :func:`wmr.model.arrays.twist_array`, which
+:data:`TWIST_ORDER`; twist objects are read by field by :func:`wmr.model.checks.twist_array`, which
 the array checks below this module need, and WPILib's are made by :mod:`wmr.io.wpilib`):
 
 ``wmr``
@@ -83,50 +83,15 @@ the array checks below this module need, and WPILib's are made by :mod:`wmr.io.w
 
 Where things live
 -----------------
-The repository holds three things, and imports go one way (edition -> wmr, build -> both):
-
-``wmr/``, the library (this package, the only one installed)
-    Four layers, each importing only from the ones above it; ``import wmr`` loads the first two
-    (no matplotlib, pandas or IPython).
-
-    :mod:`wmr.errors`, :mod:`wmr.model`
-        What a robot *is*: the exceptions; the backends (NumPy numbers, SymPy symbols;
-        :mod:`~wmr.model.backend`), the tolerance, the input checks (:mod:`~wmr.model.checks`,
-        :mod:`~wmr.model.arrays`, :mod:`~wmr.model.robot_checks`, gathered in
-        :mod:`~wmr.model.validation`), the platform (:math:`\mathbf E`, :math:`\mathbf R(\beta)` and
-        the wheel block :math:`\mathbf R(\beta)\mathbf M = \cos\beta\,\mathbf M + \sin\beta\,\mathbf E\mathbf M`
-        of (11), :func:`wmr.model.platform.rotated`), batched trigonometry (:mod:`~wmr.model.trig`),
-        the wheel units (:mod:`~wmr.model.wheels`: one module per kind, each answering for its block,
-        joints, drawing and robot-file keys), the assembled :class:`wmr.Robot` (:math:`\mathbf J_1,
-        \mathbf J_2, \mathbf F, \mathbf J`), ready-made robots (:mod:`~wmr.model.robots`), the limits
-        checked before work starts (:mod:`~wmr.model.limits`), and these conventions.
-    :mod:`wmr.analysis`
-        What can be computed for *any* robot (every function takes one; none defaults to the
-        paper's): linear algebra, mobility, Campion's classes, actuation (driven and passive joints,
-        :mod:`~wmr.analysis.actuation`), limitations in words, checked design advice, isotropy, kinematics, steering,
-        simulation, singularities and the exact :math:`\det\mathbf J`; the packages
-        :mod:`~wmr.analysis.lines` (2-D lines; a robot's axle and wheel-plane lines) and
-        :mod:`~wmr.analysis.sweep` (``configurations``, ``analyses``, ``reduction``, ``execute`` in
-        this process or on Dask, ``result``); design searches (:mod:`~wmr.analysis.design`), a robot
-        at a glance (:mod:`~wmr.analysis.overview`), and the dense reference the fast kernels are
-        checked against (:mod:`~wmr.analysis.reference`).
-    :mod:`wmr.swerve`, :mod:`wmr.io`, :mod:`wmr.odometry`, :mod:`wmr.sim`
-        Beside the analyses: swerve-drive practice (module states, limits, optimisation); robots in
-        and out (TOML robot files, each wheel kind's keys declared by the kind; URDF, ROS 2 controller
-        parameters and WPILib kinematics objects, their optional packages imported only when used);
-        wheel odometry; and any robot exported to MuJoCo and driven there (MuJoCo imported only there).
-    :mod:`wmr.plot`, :mod:`wmr.cli`
-        Drawing with matplotlib (imported only there: the style, annotations, and the robot seen
-        from above, drawn from the units' parts), and the ``wmr`` command line, one module per
-        command (:data:`wmr.cli.COMMANDS`).
-``edition/``, the paper's edition (beside the library, importable in the project's environment, not installed)
-    Its printed forms, the ledger of verdicts, the checks of each equation, the exercises, the
-    singular families, the figures (one module per figure: ``data``, ``draw``, ``caption``), the
-    interactive chapter and the notebook helpers.  It imports :mod:`wmr`; :mod:`wmr` never imports it.
-``tools/build``, the build (``python -m tools.build``, in the repository only)
-    Glue around the tools that do the work: it executes the chapters in ``notebooks/`` (cached),
-    merges the ledger, assembles and exports the report (HTML, PDF) and publishes ``figures/``.
-    Beside it in ``tools/``: the release check (``tools/release``), the docs, the benchmarks.
+``wmr/`` is the library, in layers, each importing only from the ones before it (``tests/test_structure.py``):
+:mod:`wmr.errors` and :mod:`wmr.model` (what a robot *is*: the backends, the tolerance, the input checks,
+the platform, the wheel units, :class:`wmr.Robot`, ready-made robots, the limits, these conventions);
+:mod:`wmr.analysis` (what can be computed for *any* robot); :mod:`wmr.io`, :mod:`wmr.swerve` and
+:mod:`wmr.odometry` (robots in and out, swerve-drive practice, wheel odometry); :mod:`wmr.sim`,
+:mod:`wmr.words` and :mod:`wmr.plot` (MuJoCo and matplotlib imported only there); :mod:`wmr.cli`, the
+``wmr`` command line.  ``import wmr`` loads the first two layers.  Beside it, ``edition/`` (the paper's
+edition) imports :mod:`wmr`, never the other way, and ``tools/build`` builds the report from both;
+the README's *Layout* lists every folder.
 """
 
 from __future__ import annotations
@@ -136,12 +101,11 @@ from typing import NamedTuple
 import numpy as np
 
 from ..errors import InputValueError
-from .arrays import finite_array, twist_array, twist_kind
-from .checks import kind_error
+from .checks import finite_array, kind_error, twist_array, twist_kind
 from .platform import wrap_angle
 from .types import ArrayLike, FloatArray, TwistLike
 
-__all__ = ["CONVENTIONS", "TWIST_ORDER", "Twist", "checked", "angle_to", "angle_from", "twist_to", "twist_from"]
+__all__ = ["CONVENTIONS", "TWIST_ORDER", "Twist", "angle_to", "angle_from", "twist_to", "twist_from"]
 
 #: the conventions a user can bring, in one line each (see the module notes)
 CONVENTIONS = {
@@ -156,21 +120,7 @@ _OFFSET = {"wmr": 0.0, "wpilib": -np.pi / 2, "ros": -np.pi / 2}
 
 
 def checked(convention: object) -> str:
-    """``convention`` checked: one of :data:`CONVENTIONS`.
-
-    Parameters
-    ----------
-    convention : str
-
-    Returns
-    -------
-    str
-
-    Examples
-    --------
-    >>> checked("wpilib")
-    'wpilib'
-    """
+    """``convention`` checked: one of :data:`CONVENTIONS`."""
     if not isinstance(convention, str) or convention not in CONVENTIONS:
         raise kind_error("convention", convention, f"one of {', '.join(CONVENTIONS)}")
     return convention
@@ -230,7 +180,7 @@ def twist_to(twist: TwistLike, convention: str) -> FloatArray:
     Parameters
     ----------
     twist : array (..., 3), Twist, or twist objects
-        wmr's :math:`[\dot\psi, \dot x, \dot y]`; objects are read by their fields (:func:`wmr.model.arrays.twist_array`).
+        wmr's :math:`[\dot\psi, \dot x, \dot y]`; objects are read by their fields (:func:`wmr.model.checks.twist_array`).
     convention : str
         A key of :data:`CONVENTIONS`.
 
@@ -253,7 +203,7 @@ def twist_from(values: TwistLike, convention: str, argument: str = "twist") -> F
     ----------
     values : array (..., 3), or twist objects (a WPILib ``ChassisSpeeds``, a list of them, ...)
         Numbers in the order of :data:`TWIST_ORDER` ``[convention]``; a :class:`Twist` and objects are
-        read by their names, whatever the convention (:func:`wmr.model.arrays.twist_array`).
+        read by their names, whatever the convention (:func:`wmr.model.checks.twist_array`).
     convention : str
         A key of :data:`CONVENTIONS`.
     argument : str, optional
@@ -311,7 +261,7 @@ class Twist(NamedTuple):
         Parameters
         ----------
         twist : array (3,), Twist, or a WPILib ``ChassisSpeeds``, ``Twist2d`` or ROS ``geometry_msgs/Twist``
-            Objects are read by their fields (:func:`wmr.model.arrays.twist_array`).
+            Objects are read by their fields (:func:`wmr.model.checks.twist_array`).
 
         Returns
         -------

@@ -27,21 +27,15 @@ from .backend import NUMERIC
 from .trig import Terms
 from .types import FloatArray, IntArray, Symbolic
 
-__all__ = ["Layout"]
+__all__: list[str] = []  # the robot's own cache: Robot makes it, nothing else does
 
 
 @dataclass(frozen=True, eq=False)
 class Layout:
     """A robot's units as arrays (see the module notes).  Made by :meth:`of`; numeric fields need a numeric robot.
 
-    Attributes
-    ----------
-    wheels : tuple of WheelUnit
-        The units it was made from (a robot compares them by identity).
-    symbolic : bool
-        Some unit holds a SymPy value.
-    free_symbols : frozenset of sympy.Symbol
-        The free symbols of the units' values.
+    ``wheels`` are the units it was made from, ``symbolic`` whether one holds a SymPy value, ``free_symbols``
+    the free symbols of their values.
     """
 
     wheels: tuple
@@ -51,16 +45,7 @@ class Layout:
 
     @classmethod
     def of(cls, wheels: tuple) -> Layout:
-        """The layout of a tuple of units (their symbols only; the arrays when first asked for).
-
-        Parameters
-        ----------
-        wheels : tuple of WheelUnit
-
-        Returns
-        -------
-        Layout
-        """
+        """The layout of a tuple of units (their symbols only; the arrays when first asked for)."""
         symbolic = any(u.is_symbolic for u in wheels)
         free = frozenset().union(*(u.free_symbols for u in wheels)) if symbolic else frozenset()
         return cls(wheels, symbolic, free)
@@ -81,19 +66,7 @@ class Layout:
         return self._numeric
 
     def memo(self, key: object, make):
-        """``make()``, computed once per layout and ``key`` (constant data an analysis derives from the units).
-
-        Parameters
-        ----------
-        key : hashable
-        make : callable
-            Of no argument.
-
-        Returns
-        -------
-        object
-            What ``make`` returned (the same object at every later call with ``key``).
-        """
+        """``make()``, computed once per layout and ``key`` (constant data an analysis derives from the units)."""
         kept = self._numeric.setdefault("memo", {})
         if key not in kept:
             kept[key] = make()
@@ -147,20 +120,8 @@ class Layout:
         r"""The terms of ``sign`` :math:`\mathbf J_2` placed at column ``offset`` of a (2w, offset + n) matrix.
 
         Column ``c`` of :math:`\mathbf J_2` has rows :math:`2u, 2u+1` (:math:`u` its unit):
-        :math:`\cos\beta_u\,\mathbf L_{:,c} + \sin\beta_u\,\mathbf E\mathbf L_{:,c}` (11).
-
-        Parameters
-        ----------
-        sign : float, optional
-            -1 for the :math:`-\mathbf J_2` of :math:`\mathbf F` (24).
-        offset : int, optional
-            Columns before those of :math:`\mathbf J_2` (3 in :math:`\mathbf F`).
-        const : numpy.ndarray (2w, offset + n), optional
-            The constant part (:math:`[\mathbf J_1\ \mathbf 0]` in :math:`\mathbf F`).
-
-        Returns
-        -------
-        Terms
+        :math:`\cos\beta_u\,\mathbf L_{:,c} + \sin\beta_u\,\mathbf E\mathbf L_{:,c}` (11).  For
+        :math:`\mathbf F` (24): ``sign`` -1, ``offset`` 3 and ``const`` :math:`[\mathbf J_1\ \mathbf 0]`.
         """
         u, L, EL = self.rate_unit, self.L, self.EL
         n = u.size
@@ -176,15 +137,7 @@ class Layout:
 
         Column ``c`` (unit :math:`u`) is :math:`\mathbf J_{L1,u}^T\mathbf R(\beta_u)\mathbf L_{:,c} =
         \cos\beta_u\,\mathbf J_{L1,u}^T\mathbf L_{:,c} + \sin\beta_u\,\mathbf J_{L1,u}^T\mathbf E\mathbf L_{:,c}`,
-        with :math:`\mathbf J_{L1,u}` the unit's two rows of :math:`\mathbf J_{L1}` (32).
-
-        Parameters
-        ----------
-        JL1 : numpy.ndarray (2w, 3)
-
-        Returns
-        -------
-        Terms
+        with :math:`\mathbf J_{L1,u}` the unit's two rows of :math:`\mathbf J_{L1}` (2w, 3) (32).
         """
         u = self.rate_unit
         rows = JL1.reshape(-1, 2, 3)[u]  # (n, 2, 3): J_L1,u of each column

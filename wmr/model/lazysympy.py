@@ -19,7 +19,7 @@ import importlib
 import sys
 from typing import Any
 
-__all__ = ["sp", "is_sympy"]
+__all__ = ["sp"]
 
 
 class _OnDemand:
@@ -37,17 +37,6 @@ sp: Any = _OnDemand()
 
 
 def is_sympy(value: object, *kinds: str) -> bool:
-    """True when ``value`` is an instance of SymPy's classes ``kinds`` (default ``Basic``), without importing SymPy.
-
-    Parameters
-    ----------
-    value : object
-    *kinds : str
-        Names of SymPy classes (``"Basic"``, ``"Expr"``, ``"MatrixBase"``).
-
-    Returns
-    -------
-    bool
-    """
+    """True when ``value`` is an instance of SymPy's classes ``kinds`` (default ``Basic``), without importing SymPy."""
     module = sys.modules.get("sympy")
     return module is not None and isinstance(value, tuple(getattr(module, k) for k in kinds or ("Basic",)))

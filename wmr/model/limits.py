@@ -31,7 +31,7 @@ import os
 from ..errors import InputValueError, LimitError
 from .checks import number
 
-__all__ = ["LIMITS", "limit", "check"]
+__all__ = ["check"]
 
 #: name -> (default, environment variable, what a request is said to have)
 LIMITS = {
@@ -42,16 +42,7 @@ LIMITS = {
 
 
 def limit(name: str) -> int:
-    """The limit ``name`` (:data:`LIMITS`): its environment variable when set to a positive integer, else the default.
-
-    Parameters
-    ----------
-    name : str
-
-    Returns
-    -------
-    int
-    """
+    """The limit ``name`` (:data:`LIMITS`): its environment variable if set to a positive integer, else the default."""
     if not isinstance(name, str) or name not in LIMITS:
         raise InputValueError(f"name must be one of {', '.join(LIMITS)}, got {name!r}")
     default, env, _ = LIMITS[name]

@@ -20,9 +20,19 @@ from collections.abc import Iterable
 import numpy as np
 
 from ..errors import InputTypeError, InputValueError
-from .arrays import batch_shape, finite_array, symbolic_matrix, twist_array
 from .backend import NUMERIC, Backend, choose
-from .checks import integer, number, point, positive, real, show
+from .checks import (
+    batch_shape,
+    finite_array,
+    integer,
+    number,
+    point,
+    positive,
+    real,
+    show,
+    symbolic_matrix,
+    twist_array,
+)
 from .lazysympy import is_sympy
 from .tolerance import TOL
 from .types import ArrayLike, FloatArray, Matrix, Numbers, Point, TwistLike
@@ -35,7 +45,6 @@ __all__ = [
     "line_angle",
     "point_row",
     "point_velocity",
-    "moved_points",
 ]
 
 
@@ -87,15 +96,10 @@ def rotation(angle: Numbers, backend: Backend = NUMERIC) -> Matrix:
 def rotated(beta: Numbers, M: Matrix, EM: Matrix, axes: int = 2, backend: Backend | None = None) -> Matrix:
     r"""A block rotated by :math:`\beta`: :math:`\cos\beta\,\mathbf M + \sin\beta\,\mathbf E\mathbf M`, batched.
 
-    The rotation (11) is linear in :math:`(\cos\beta, \sin\beta)`:
-    :math:`\mathbf R(\beta) = \cos\beta\,\mathbf 1 + \sin\beta\,\mathbf E`.  So a block turned by
-    the steering angle is the combination of two constant blocks, :math:`\mathbf M` and
-    :math:`\mathbf E\mathbf M`, and so is any constant linear image of it
-    (:math:`\mathbf X\mathbf R(\beta)\mathbf M\mathbf y = \cos\beta\,\mathbf X\mathbf M\mathbf y +
-    \sin\beta\,\mathbf X\mathbf E\mathbf M\mathbf y`).  Every wheel block
-    :math:`\mathbf B_i = \mathbf R_{bwi}\mathbf L_i` of :math:`\mathbf J_2` (20), (21), (51), (17), the
-    columns of :math:`\mathbf J` (56), the twist constraints of the mobility analysis and the
-    kinematics are evaluated with this one function: no batched 2x2 product is formed.
+    The rotation (11) is linear in :math:`(\cos\beta, \sin\beta)`,
+    :math:`\mathbf R(\beta) = \cos\beta\,\mathbf 1 + \sin\beta\,\mathbf E`, so every wheel block
+    :math:`\mathbf B_i = \mathbf R_{bwi}\mathbf L_i` (20), (21) and any constant linear image of it is
+    evaluated from two constant blocks, with no batched 2x2 product.
     :math:`\mathbf R(\beta)^T = \mathbf R(-\beta)` is ``rotated((cos, -sin), M, EM)``.
 
     Parameters
@@ -280,29 +284,10 @@ def point_velocity(twist: TwistLike, d: ArrayLike) -> FloatArray:
 def moved_points(
     points: Iterable[Point] | FloatArray, origin: Point = (0.0, 0.0), angle: Numbers = 0.0
 ) -> list[tuple[Numbers, Numbers]]:
-    r"""Points of the body frame described from another body frame, moved to ``origin`` and turned by ``angle``.
+    r"""Points (n, 2) of the body frame seen from another one, of origin ``origin`` and turned by ``angle`` (radians).
 
     :math:`\mathbf d' = \mathbf R(-\text{angle})(\mathbf d - \text{origin})`; SymPy coordinates stay SymPy
-    (:meth:`wmr.Robot.moved` re-expresses its mount points with this).
-
-    Parameters
-    ----------
-    points : sequence of pairs (n, 2)
-        Coordinates in the current body frame (numbers or SymPy expressions).
-    origin : pair, optional
-        The new origin, in the current body frame.
-    angle : float, optional
-        Rotation of the new frame relative to the current one (radians, CCW).
-
-    Returns
-    -------
-    list of tuple
-        The ``n`` points in the new frame.
-
-    Examples
-    --------
-    >>> [tuple(round(float(v), 12) + 0.0 for v in p) for p in moved_points([(1.0, 0.0), (-1.0, 0.0)], (1.0, 0.0), np.pi / 2)]
-    [(0.0, 0.0), (0.0, 2.0)]
+    (:meth:`wmr.Robot.moved`).
     """
     if isinstance(points, (str, bytes)) or not hasattr(points, "__iter__"):
         raise InputTypeError(f"points must be a sequence of pairs (n, 2), got {show(points)}")

@@ -18,7 +18,7 @@ from typing import Any, NoReturn
 import numpy as np
 
 from ..errors import FrozenError, InputValueError
-from . import arrays, checks
+from . import checks
 from .backend import NUMERIC, SYMBOLIC, Backend, choose
 from .layout import Layout
 from .lazysympy import sp
@@ -28,8 +28,9 @@ from .trig import combine_checked
 from .types import ArrayLike, FloatArray, Matrix, Numbers, Point, Symbolic
 from .wheels import WheelUnit, wheel_units
 
-__all__ = ["Robot", "TWIST_NAMES"]
+__all__ = ["Robot"]
 
+#: the names of the twist's rates, the first columns of F
 TWIST_NAMES = ("psi_dot", "x_dot", "y_dot")
 
 
@@ -46,9 +47,8 @@ class Robot:
 
     Notes
     -----
-    A value checked once: setting or deleting an attribute raises :class:`~wmr.errors.FrozenError`
-    (build a new robot), so what is derived from the units is made at first use and kept, never
-    stale.  Equality and hashing are by identity.
+    Frozen: setting or deleting an attribute raises :class:`~wmr.errors.FrozenError`, so what is
+    derived from the units is made at first use and kept.  Equality and hashing are by identity.
 
     Examples
     --------
@@ -146,11 +146,8 @@ class Robot:
     def F_column_norms(self) -> FloatArray:
         r"""Lengths of the columns of :math:`\mathbf F` (22)-(24), the same at every configuration: (3 + n_rates,).
 
-        :math:`\sqrt{\sum_i\|\mathbf d_i\|^2}` (the :math:`\dot\psi` column, a length), :math:`\sqrt w`,
-        :math:`\sqrt w` (:math:`\dot x, \dot y`), then the lengths of the units' local blocks'
-        columns (:math:`r_i`, :math:`d_i`, :math:`r_i/2`): rotations do not change them.  Dividing
-        :math:`\mathbf F` by them gives the dimensionless matrix whose rank decides mobility
-        (:mod:`wmr.model.tolerance`).  Zero columns get 1.  Numeric robots only.
+        :math:`\sqrt{\sum_i\|\mathbf d_i\|^2}`, :math:`\sqrt w`, :math:`\sqrt w`, then the lengths of the
+        units' local blocks' columns; zero columns get 1 (:mod:`wmr.model.tolerance`).  Numeric robots only.
         """
         bot = self.numeric()
         L = bot._layout.L  # the units' local blocks side by side
@@ -179,7 +176,7 @@ class Robot:
         >>> bot.effective_beta([[0.1, 0.2], [0.3, 0.4]]).tolist()
         [[0.1, 0.5], [0.3, 0.5]]
         """
-        beta = arrays.finite_array("beta", beta, last=self.w)
+        beta = checks.finite_array("beta", beta, last=self.w)
         lay = self._layout
         if lay.own.size:  # (a copy: the caller's array is not changed)
             beta = beta.copy()
@@ -188,7 +185,7 @@ class Robot:
 
     def _beta(self, beta, bk):
         if bk is SYMBOLIC:
-            b = list(self.beta_symbols) if beta is None else list(arrays.symbolic_vector("beta", beta, self.w))
+            b = list(self.beta_symbols) if beta is None else list(checks.symbolic_vector("beta", beta, self.w))
             return [
                 b[i] if u.constant_angle is None else sp.sympify(u.constant_angle) for i, u in enumerate(self.wheels)
             ]
@@ -302,12 +299,6 @@ class Robot:
         Returns
         -------
         numpy.ndarray (..., 3, n_rates) or sympy.Matrix (3, n_rates)
-
-        Notes
-        -----
-        With NumPy, unit i contributes the columns :math:`\mathbf J_{L1,i}^T\mathbf B_i(\beta_i)`
-        (:meth:`wmr.model.layout.Layout.J_terms`, :func:`wmr.model.trig.trig_combination`): the
-        mostly-zero :math:`\mathbf J_2` is never formed.
         """
         bk = self._backend(beta, backend)
         if bk is SYMBOLIC:
@@ -360,16 +351,12 @@ class Robot:
 
     # --- frames ---------------------------------------------------------------------------------
     def moved(self, origin: Point = (0.0, 0.0), angle: Numbers = 0.0) -> Robot:
-        """The same robot described from another body frame.
+        """The same robot described from another body frame, of origin ``origin`` and rotated by ``angle``.
 
-        The new frame has its origin (new operation point) at ``origin`` and is rotated by
-        ``angle`` relative to the current one; mount points are re-expressed,
-        :math:`\\mathbf d_i' = \\mathbf R(-\\text{angle})(\\mathbf d_i - \\text{origin})`
-        (:func:`~wmr.model.platform.moved_points`), and steering
-        angles shift by ``-angle``.  A twist transforms as
+        Mount points become :math:`\\mathbf d_i' = \\mathbf R(-\\text{angle})(\\mathbf d_i - \\text{origin})`
+        and steering angles (fixed and Swedish wheels' own too) shift by ``-angle``; a twist becomes
         :math:`\\dot\\psi' = \\dot\\psi`, :math:`\\dot{\\mathbf c}' = \\mathbf R(-\\text{angle})(\\dot{\\mathbf c} +
-        \\dot\\psi\\mathbf E\\,\\text{origin})`; joint rates do not change (the angles of fixed and Swedish
-        wheels shift by ``-angle``).  Used to check that results do not depend on the body frame.
+        \\dot\\psi\\mathbf E\\,\\text{origin})`; joint rates do not change.
 
         Parameters
         ----------

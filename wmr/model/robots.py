@@ -20,7 +20,7 @@ from .robot import Robot
 from .types import Numbers
 from .wheels import wheel_kind
 
-__all__ = ["PAPER_MOUNT_ANGLES_DEG", "PAPER_KINDS", "Dimensions", "equilateral_mounts", "paper_robot"]
+__all__ = ["Dimensions", "equilateral_mounts", "paper_robot"]
 
 #: The wheel kinds of the paper's three robots (sections 3, 5 and 6).
 PAPER_KINDS = ("centred", "offset", "dual")

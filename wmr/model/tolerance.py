@@ -41,18 +41,13 @@ Condition number (:func:`wmr.condition_number`)
 
 Near-singular configurations: the angular tolerance
 ---------------------------------------------------
-In :math:`\hat{\mathbf F}`, turning one wheel by :math:`\delta` radians away from a configuration
-where the rank drops (all axles through one point, all wheels parallel) moves the smallest
-singular value from 0 to about :math:`g\,\delta`, where :math:`g` is a geometric factor of order
-one (it is smaller for robots whose wheels are far closer to C than to each other).  The rank
-therefore counts a configuration as singular when it lies within about
-:math:`\mathrm{TOL}/g` rad of a singular one, in every unit.  Measured by bisection on the paper's
-centred and dual-wheel robots (L = 0.3 .. 1, r = 0.05 .. 1, the same for every L and r): one wheel
-turned off the spin about C flips the mobility at :math:`2.1\times10^{-9}` rad, off all-parallel at
-:math:`2.1\times10^{-9}` (wheel 1) or :math:`4.2\times10^{-9}` rad (wheels 2, 3), i.e.
-:math:`g = 0.24\ \text{to}\ 0.47`; :data:`ANGULAR_TOLERANCE` rounds this up to :math:`5\times10^{-9}` rad:
-over a 1 m robot that is a few nanometres of wheel travel, far below any real steering error
-and far above the round-off of the angles (:math:`\sim 10^{-16}` rad).
+In :math:`\hat{\mathbf F}`, turning one wheel by :math:`\delta` rad away from a configuration where the
+rank drops moves the smallest singular value from 0 to about :math:`g\,\delta`, :math:`g` a geometric
+factor of order one, so the rank counts as singular what lies within about :math:`\mathrm{TOL}/g` rad of
+it, in every unit.  On the paper's centred and dual-wheel robots the mobility flips at
+:math:`2.1\times10^{-9}` to :math:`4.2\times10^{-9}` rad (:math:`g = 0.24` to :math:`0.47`, the same for
+every L and r); :data:`ANGULAR_TOLERANCE` rounds this up to :math:`5\times10^{-9}` rad, far below any
+real steering error and far above the round-off of the angles (:math:`\sim 10^{-16}` rad).
 
 ``TOL = 1e-9`` sits well above the round-off of the small matrices built here (about ``1e-15``
 relative) and far below any physically meaningful quantity.
@@ -70,10 +65,10 @@ from __future__ import annotations
 import numpy as np
 
 from ..errors import InputValueError
-from .arrays import finite_array
+from .checks import finite_array
 from .types import ArrayLike, BoolArray, FloatArray
 
-__all__ = ["TOL", "ANGULAR_TOLERANCE", "near_zero", "column_norms"]
+__all__ = ["TOL", "near_zero"]
 
 #: The package-wide tolerance for numerical zero, relative (see module docstring).
 TOL: float = 1e-9
@@ -118,23 +113,9 @@ def near_zero(x: ArrayLike, scale: ArrayLike = 1.0) -> BoolArray:
 
 
 def column_norms(A: ArrayLike) -> FloatArray:
-    r"""Euclidean length of every column, :math:`\|\mathbf A\mathbf e_j\|`, without overflow or underflow.
+    r"""Euclidean length of every column, :math:`\|\mathbf A\mathbf e_j\|` (..., n) of (..., m, n), without overflow.
 
-    Zero columns get 1 (dividing by it leaves them zero).  Ranks are decided on the matrix divided by
-    these (see the module notes), so they do not depend on the units of the unknowns.
-
-    Parameters
-    ----------
-    A : array_like (..., m, n)
-
-    Returns
-    -------
-    numpy.ndarray (..., n)
-
-    Examples
-    --------
-    >>> column_norms([[3e300, 0.0], [4e300, 0.0]]).tolist()
-    [5e+300, 1.0]
+    Zero columns get 1 (dividing by it leaves them zero): ranks are decided on the matrix divided by these.
     """
     A = finite_array("A", A)
     if A.ndim < 2:

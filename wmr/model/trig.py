@@ -17,11 +17,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .arrays import finite_array
+from .checks import finite_array
 from .platform import rotated
 from .types import ArrayLike, FloatArray, IntArray
 
-__all__ = ["Terms", "trig_combination", "combine_checked"]
+__all__ = ["Terms", "trig_combination"]
 
 #: Configurations per chunk of :func:`trig_combination` (its temporaries stay in cache).
 CHUNK = 8192
@@ -87,15 +87,8 @@ def trig_combination(beta: ArrayLike, terms: Terms) -> FloatArray:
     r"""Matrices linear in the cosines and sines of the angles, for a batch of configurations.
 
     :math:`\mathbf C + \sum_i(\cos\beta_i\,\mathbf P_i + \sin\beta_i\,\mathbf Q_i)`, from its
-    non-zero terms (:class:`Terms`).
-
-    Every steering-dependent matrix of the model has this form, because each unit's block is
-    :math:`\mathbf B_i(\beta_i) = \cos\beta_i\,\mathbf L_i + \sin\beta_i\,\mathbf E\mathbf L_i` (11):
-    :math:`\mathbf J_2`, :math:`\mathbf F`, :math:`\mathbf J = \mathbf J_{L1}^T\mathbf J_2` and the
-    twist constraints of :mod:`wmr.analysis.mobility` only place (and multiply by constants)
-    the pairs :math:`(\mathbf L_i, \mathbf E\mathbf L_i)`.  This evaluates the sum over chunks of
-    configurations, term by term (each term is :func:`~wmr.model.platform.rotated` of its two
-    coefficients, over the whole chunk), with no matrix product.
+    non-zero terms (:class:`Terms`), over chunks of configurations, term by term
+    (:func:`~wmr.model.platform.rotated` of its two coefficients), with no matrix product.
 
     Parameters
     ----------
@@ -110,10 +103,8 @@ def trig_combination(beta: ArrayLike, terms: Terms) -> FloatArray:
 
     Notes
     -----
-    The result is laid out entry-major in memory (its batch axes are the fastest: entry ``j`` of
-    every matrix is one contiguous run), a view of an array ``(prod(shape), N)``.  Indexing and
-    arithmetic see an ordinary array; the closed-form kernels of :mod:`wmr.analysis.linalg` read
-    such stacks without copying them, and ``np.ascontiguousarray`` gives the usual layout.
+    The result is laid out entry-major in memory (entry ``j`` of every matrix is one contiguous run), a
+    view of an array ``(prod(shape), N)``, which the kernels of :mod:`wmr.analysis.linalg` read without a copy.
 
     Examples
     --------
@@ -126,23 +117,12 @@ def trig_combination(beta: ArrayLike, terms: Terms) -> FloatArray:
 
 
 def combine_checked(beta: FloatArray, terms: Terms) -> FloatArray:
-    """:func:`trig_combination` of angles already checked (a robot's own, from ``effective_beta``): no check here.
-
-    Parameters
-    ----------
-    beta : numpy.ndarray (..., w)
-        Finite float angles, checked by the caller.
-    terms : Terms
-
-    Returns
-    -------
-    numpy.ndarray, shape ``beta.shape[:-1] + terms.shape``
-    """
+    """:func:`trig_combination` of finite float angles (..., w) the caller checked (a robot's ``effective_beta``)."""
     w = beta.shape[-1]
     m = int(np.prod(terms.shape))
     flat = beta.reshape(-1, w)
     N = flat.shape[0]
-    out = np.empty((m, N))  # entry-major: see Notes
+    out = np.empty((m, N))  # entry-major: see trig_combination's Notes
     const = np.zeros(m) if terms.const is None else np.asarray(terms.const, dtype=float).reshape(m)
     used, unit = np.unique(terms.unit, return_inverse=True)  # only the angles that enter
     listed = list(zip(terms.entry.tolist(), unit.tolist(), terms.p.tolist(), terms.q.tolist()))

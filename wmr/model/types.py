@@ -1,22 +1,5 @@
 r"""The types of the public API's arguments and results, named once (for annotations and mypy).
 
-==================  ===================================================================================
-name                what it stands for
-==================  ===================================================================================
-``FloatArray``      a NumPy array of floats: a matrix, a stack of matrices, a batch of numbers
-``IntArray``        a NumPy array of integers: ranks, mobilities, counts of a batch
-``BoolArray``       a NumPy array of bools: a verdict per member of a batch
-``Symbolic``        a SymPy expression or matrix
-``Numbers``         numbers (``numpy.typing.ArrayLike``) or SymPy expressions: angles, lengths, rates
-``Matrix``          what a backend builds: a NumPy array (numbers) or a SymPy matrix (symbols)
-``Point``           a point of the platform plane, :math:`(x, y)`: two numbers or two SymPy expressions
-``PathLike``        a file name: ``str`` or ``os.PathLike``
-``TwistLike``       a twist :math:`[\dot\psi, \dot x, \dot y]` (..., 3), a :class:`wmr.Twist`, or twist objects read by field
-                    (WPILib's ``ChassisSpeeds``, ``Twist2d``; :func:`wmr.model.arrays.twist_array`)
-``WheelJoints``     a URDF file's wheel joints: names, ``{name: radius or None}``, or ``"name[=radius],..."``
-``JointNames``      the joints' names of each wheel unit: ``joint_names[i][joint]``
-==================  ===================================================================================
-
 Shapes are in the docstrings (numpydoc), not in the types.  SymPy ships no type information, so to
 mypy a SymPy object is ``Any``, and so is every type that admits one (``Symbolic``, ``Numbers``,
 ``Matrix``, ``Point``): the names say what is meant, the docstrings say the shapes, and the code that
@@ -64,8 +47,8 @@ Numbers: TypeAlias = Any
 Matrix: TypeAlias = Any
 #: a point (x, y): two numbers or two SymPy expressions (to mypy: ``Any``)
 Point: TypeAlias = Any
-#: a twist (..., 3) in wmr's order, a :class:`wmr.Twist`, or objects with the fields of a ChassisSpeeds or Twist2d
-#: (to mypy: ``Any``)
+#: a twist (..., 3) in wmr's order, a :class:`wmr.Twist`, or objects with the fields of a ChassisSpeeds or Twist2d,
+#: read by field (:func:`wmr.model.checks.twist_array`; to mypy: ``Any``)
 TwistLike: TypeAlias = Any
 #: a file name
 PathLike: TypeAlias = str | os.PathLike[str]

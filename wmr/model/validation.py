@@ -1,18 +1,9 @@
-r"""Every input check of the package under one name: ``from wmr.model import validation``.
+r"""Every input check of the package under one name (``from wmr.model import validation``), and the robot checks.
 
-The checks themselves live in three modules, by what they check:
-
-=================================  ===================================================================
-:mod:`~wmr.model.checks`           scalars, points, flags, integers, text; the rule of the two exception types
-:mod:`~wmr.model.arrays`           finite numeric batches and their broadcast shapes, SymPy vectors and matrices
-:mod:`~wmr.model.robot_checks`     a :class:`wmr.Robot` instance, a numeric one, the symbols in one
-=================================  ===================================================================
-
-Bad input raises :class:`~wmr.errors.InputTypeError` (the wrong kind of thing) or
-:class:`~wmr.errors.InputValueError` (a bad value), whose messages name the argument and show its
-value.  The analyses use this module; the modules a robot is built from (platform, wheels,
-robot) use :mod:`~wmr.model.checks` and :mod:`~wmr.model.arrays` directly, since
-:mod:`~wmr.model.robot_checks` needs the robot.
+The checks of scalars, points, flags and arrays are those of :mod:`wmr.model.checks` (the rule of the
+two exception types is stated there); this module adds the checks of a robot, which need
+:class:`wmr.Robot`.  The analyses use this module; the modules a robot is built from (platform,
+wheels, robot) use :mod:`~wmr.model.checks`.
 
 Examples
 --------
@@ -22,8 +13,11 @@ Examples
 
 from __future__ import annotations
 
-from .arrays import batch_shape, finite_array, symbolic_matrix, symbolic_vector, twist_array, twist_kind
-from .checks import (
+from ..errors import InputTypeError, InputValueError
+from .checks import (  # noqa: F401  (the analyses' checks, called as validation.real, ...)
+    batch_shape,
+    file_path,
+    finite_array,
     finite_float,
     flag,
     integer,
@@ -35,28 +29,53 @@ from .checks import (
     positive,
     real,
     show,
+    symbolic_matrix,
+    symbolic_vector,
+    twist_array,
+    twist_kind,
 )
-from .robot_checks import free_symbols, numeric_robot, robot
+from .robot import Robot
+from .types import Symbolic
 
-__all__ = [
-    "real",
-    "number",
-    "positive",
-    "nonnegative",
-    "point",
-    "flag",
-    "optional_text",
-    "integer",
-    "show",
-    "kind_error",
-    "finite_float",
-    "finite_array",
-    "twist_array",
-    "twist_kind",
-    "batch_shape",
-    "symbolic_vector",
-    "symbolic_matrix",
-    "robot",
-    "numeric_robot",
-    "free_symbols",
-]
+__all__ = ["number", "positive", "finite_array", "numeric_robot"]
+
+
+def robot(value: object, name: str = "robot") -> Robot:
+    """``value`` if it is a :class:`wmr.Robot` instance (the class itself is refused with a hint)."""
+    if isinstance(value, Robot):
+        return value
+    if isinstance(value, type) and issubclass(value, Robot):
+        raise InputTypeError(
+            f"{name} must be a wmr.Robot instance, got the class {value.__name__} itself "
+            "(build one, e.g. wmr.Robot([...]) or wmr.paper_robot())"
+        )
+    raise kind_error(name, value, "a wmr.Robot")
+
+
+def numeric_robot(value: object, name: str = "robot") -> Robot:
+    """Return ``value`` if it is a :class:`wmr.Robot` without free symbols, as floats (:meth:`wmr.Robot.numeric`).
+
+    Parameters
+    ----------
+    value : object
+    name : str, optional
+        The argument's name, for the message.
+
+    Returns
+    -------
+    Robot
+        ``value`` itself, or its float counterpart for an exact robot.
+    """
+    value = robot(value, name)
+    symbols = value.free_symbols
+    if symbols:
+        raise InputValueError(
+            f"{name} must have numeric mount points and lengths here, got a robot with the symbols "
+            f"{sorted(map(str, symbols))}: {show(value)}"
+        )
+    return value.numeric() if value.is_symbolic else value
+
+
+def free_symbols(robot: Robot) -> set[Symbolic]:
+    """The SymPy symbols in a robot's mount points and lengths (:attr:`wmr.Robot.free_symbols`)."""
+    return robot.free_symbols

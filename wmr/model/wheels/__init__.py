@@ -68,8 +68,6 @@ __all__ = [
     "SwedishWheel",
     "wheel_kinds",
     "wheel_kind",
-    "kinds_table",
-    "wheel_units",
 ]
 
 # a kind is registered by being defined: import every module of this package, so that a new module
@@ -79,19 +77,7 @@ for _info in pkgutil.iter_modules(__path__):
 
 
 def kinds_table() -> str:
-    r"""An RST table of the registered wheel kinds: name, class, joints (driven or passive) and rates.
-
-    Returns
-    -------
-    str
-
-    Examples
-    --------
-    >>> [line.split()[0] for line in kinds_table().splitlines()[3:8]]
-    ['``centred``', '``dual``', '``fixed``', '``offset``', '``swedish``']
-    >>> print(kinds_table().splitlines()[4].split("  ")[-1])      # a dual wheel's rates
-    :math:`\dot\theta_{i1},\ \dot\theta_{i2}`
-    """
+    r"""An RST table of the registered wheel kinds: name, class, joints (driven or passive) and rates."""
     rows = [("kind", "class", "joints (default actuation)", r"rates :math:`\dot{\boldsymbol\theta}_i`")]
     for name, cls in wheel_kinds().items():
         joints = ", ".join(f"{j.name} ({'driven' if j.driven else 'passive'})" for j in cls.JOINTS)
@@ -105,29 +91,7 @@ def kinds_table() -> str:
 
 
 def wheel_units(wheels: Any) -> tuple[WheelUnit, ...]:
-    """The wheel units of a :class:`~wmr.model.robot.Robot`, checked (the robot's one check of them).
-
-    Parameters
-    ----------
-    wheels : sequence of WheelUnit
-        At least one unit, at most the limit of :mod:`wmr.model.limits`.
-
-    Returns
-    -------
-    tuple of WheelUnit
-
-    Raises
-    ------
-    wmr.errors.InputTypeError
-        If ``wheels`` is not a sequence of wheel units.
-    wmr.errors.InputValueError
-        If it is empty or too long.
-
-    Examples
-    --------
-    >>> len(wheel_units([CentredWheel((1.0, 0.0), r=0.1)]))
-    1
-    """
+    """The wheel units of a :class:`~wmr.model.robot.Robot`, checked: a sequence of 1 to the limit of units."""
     if isinstance(wheels, (str, bytes, WheelUnit)):
         raise InputTypeError(f"wheels must be a sequence of wheel units, got {checks.show(wheels)}")
     try:

@@ -13,7 +13,7 @@ from typing import Any, ClassVar
 
 import numpy as np
 
-from .. import arrays
+from .. import checks
 from ..types import ArrayLike, FloatArray
 
 __all__ = ["UnitGeometry"]
@@ -53,7 +53,7 @@ class UnitGeometry:
         >>> OffsetWheel((1.0, 0.0), r=0.1, d=0.2).points(0.0)["H"].tolist()    # H = P - d j
         [1.0, -0.2]
         """
-        beta = arrays.finite_array("beta", beta)
+        beta = checks.finite_array("beta", beta)
         c, s = np.cos(beta), np.sin(beta)
         i_dir = np.stack([c, s], axis=-1)
         j_dir = np.stack([-s, c], axis=-1)

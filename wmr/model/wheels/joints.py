@@ -37,7 +37,7 @@ from typing import Any
 from ...errors import InputTypeError, InputValueError
 from ..checks import flag, kind_error, show
 
-__all__ = ["JOINT_KINDS", "STEERING_JOINTS", "Joint", "actuation", "rate_columns"]
+__all__ = ["JOINT_KINDS", "Joint"]
 
 #: the kinds of joint a wheel unit can have, and what each is
 JOINT_KINDS = {
@@ -100,27 +100,10 @@ class Joint:
 
 
 def actuation(joints: tuple[Joint, ...], driven: Any, owner: str = "unit") -> tuple[bool, ...]:
-    """Which of ``joints`` a motor drives: their defaults, overridden by ``driven``.
+    """Which of ``joints`` a motor drives (one bool each): their defaults, overridden by ``driven``.
 
-    Parameters
-    ----------
-    joints : tuple of Joint
-        A kind's joints (``JOINTS``), with their default actuation.
-    driven : None, mapping of str to bool, or sequence of bool
-        None (the defaults), ``{joint name: bool}`` for the joints that differ, or one bool per joint.
-    owner : str, optional
-        The unit's class name, for messages.
-
-    Returns
-    -------
-    tuple of bool
-        One per joint, in their order.
-
-    Examples
-    --------
-    >>> swivel, drive = Joint("swivel", "swivel", driven=False), Joint("drive", "drive", driven=True)
-    >>> actuation((swivel, drive), None), actuation((swivel, drive), {"drive": False})
-    ((False, True), (False, False))
+    ``driven`` is None (the defaults), ``{joint name: bool}`` for the joints that differ, or one bool per
+    joint; ``owner`` is the unit's class name, for messages.
     """
     names = [j.name for j in joints]
     out = [j.driven for j in joints]
@@ -142,24 +125,5 @@ def actuation(joints: tuple[Joint, ...], driven: Any, owner: str = "unit") -> tu
 
 
 def rate_columns(joints: tuple[Joint, ...]) -> dict[str, int]:
-    r"""Where each joint's rate is among a unit's rates: ``{joint name: column}`` for the joints that have one.
-
-    The unit's rates :math:`\dot{\boldsymbol\theta}_i` are its joints' rates in the order of the
-    joints (its columns of :math:`\mathbf J_2`).
-
-    Parameters
-    ----------
-    joints : tuple of Joint
-
-    Returns
-    -------
-    dict of str to int
-
-    Examples
-    --------
-    >>> swivel = Joint("swivel", "swivel", driven=False)
-    >>> drives = [Joint(f"drive{k}", "drive", driven=True, rate=("theta", r"\theta", str(k))) for k in (1, 2)]
-    >>> rate_columns((swivel, *drives))
-    {'drive1': 0, 'drive2': 1}
-    """
+    r"""Where each joint's rate is among a unit's rates (its columns of :math:`\mathbf J_2`), by joint name."""
     return {j.name: k for k, j in enumerate(j for j in joints if j.rate is not None)}

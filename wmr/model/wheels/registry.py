@@ -8,13 +8,12 @@ without a list written by hand.
 
 from __future__ import annotations
 
-import difflib
 from typing import Any
 
 from ...errors import InputValueError
 from .. import checks
 
-__all__ = ["register", "wheel_kinds", "wheel_kind"]
+__all__ = ["wheel_kinds", "wheel_kind"]
 
 _KINDS: dict[str, Any] = {}  # kind -> its class (a WheelUnit subclass)
 
@@ -58,31 +57,16 @@ def wheel_kind(name: str) -> Any:
     if not isinstance(name, str):
         raise checks.kind_error("kind", name, f"a wheel kind ({', '.join(sorted(_KINDS))})")
     if name not in _KINDS:
-        close = difflib.get_close_matches(name, sorted(_KINDS), n=1)
         raise InputValueError(
-            f"kind must be one of {', '.join(sorted(_KINDS))}, got {name!r}"
-            + (f" (did you mean {close[0]!r}?)" if close else "")
+            f"kind must be one of {', '.join(sorted(_KINDS))}, got {name!r}" + checks.suggest(name, sorted(_KINDS))
         )
     return _KINDS[name]
 
 
 def register(cls: type) -> None:
-    """Register the wheel kind ``cls`` under ``cls.kind`` (called when a kind's class is defined).
+    """Register the wheel kind ``cls`` under ``cls.kind`` (when its class is defined); a kind's name is taken once.
 
-    Parameters
-    ----------
-    cls : type
-        A subclass of :class:`~wmr.model.wheels.unit.WheelUnit` with a ``kind``.
-
-    Returns
-    -------
-    None
-
-    Raises
-    ------
-    wmr.errors.InputValueError
-        If another class has that kind already (a class defined again, e.g. on reloading its
-        module, replaces itself).
+    A class defined again (on reloading its module) replaces itself.
     """
     kind = getattr(cls, "kind", "")
     if kind in _KINDS and _KINDS[kind].__qualname__ != cls.__qualname__:

@@ -37,40 +37,20 @@ __all__ = ["SwedishWheel"]
 class SwedishWheel(UnsteeredUnit):
     r"""Swedish wheel (omni or mecanum): a fixed wheel whose rim carries free rollers at ``roller`` to the axle.
 
-    **Model.**  The wheel frame is at the constant angle :math:`\beta_i` = ``angle`` (axle
-    :math:`\mathbf i_i`, rolling direction :math:`\mathbf j_i = \mathbf E\mathbf i_i`); the axis of the
-    roller in contact with the ground makes the angle :math:`\gamma` = ``roller`` with the axle,
-    counter-clockwise seen from above:
+    The axis of the roller touching the ground makes the angle :math:`\gamma` = ``roller`` with the axle,
+    counter-clockwise seen from above, :math:`\mathbf a_i = \cos\gamma\,\mathbf i_i + \sin\gamma\,\mathbf j_i`.
+    The wheel spin moves the hub by :math:`-r\dot\theta_i\mathbf j_i` (6), the roller spin along the
+    roller's rolling direction by :math:`-r\dot\sigma_i\mathbf E\mathbf a_i`:
 
-    .. math:: \mathbf a_i = \cos\gamma\,\mathbf i_i + \sin\gamma\,\mathbf j_i .
+    .. math:: \mathbf L_i = \begin{bmatrix}0 & r\sin\gamma\\ -r & -r\cos\gamma\end{bmatrix},
+              \quad \mathbf B_i = \mathbf R(\beta_i)\mathbf L_i ,
 
-    The contact point of the roller does not slip, so the wheel spin :math:`\dot\theta_i` (about
-    :math:`\mathbf i_i`) moves the hub by :math:`-r\dot\theta_i\mathbf j_i`, as for any wheel (6), and
-    the roller spin about :math:`\mathbf a_i` moves it along the roller's own rolling direction
-    :math:`\mathbf E\mathbf a_i` by :math:`-r\dot\sigma_i\mathbf E\mathbf a_i`:
-
-    .. math:: \dot{\mathbf p}_i = -r\dot\theta_i\,\mathbf j_i - r\dot\sigma_i\,\mathbf E\mathbf a_i ,
-              \qquad
-              \mathbf L_i = \begin{bmatrix}0 & r\sin\gamma\\ -r & -r\cos\gamma\end{bmatrix},
-              \quad \mathbf B_i = \mathbf R(\beta_i)\mathbf L_i .
-
-    :math:`\dot\sigma_i` is the free roller rate expressed at the wheel radius (a roller of contact
-    radius :math:`\rho` spinning at :math:`\omega` gives :math:`\dot\sigma_i = \rho\omega/r`), so that both
-    columns of :math:`\mathbf B_i` are lengths like every column of :math:`\mathbf J_2` and its
-    condition number does not depend on the unit of length.
-
-    **The constraint.**  Projected on the roller axis (:math:`\mathbf a_i^T\mathbf E\mathbf a_i = 0`,
-    :math:`\mathbf a_i^T\mathbf j_i = \sin\gamma`), the no-slip equation leaves one relation, which
-    involves the wheel rate only (Campion, Bastin & d'Andrea-Novel 1996, with their angle
-    :math:`\pi/2 - \gamma` measured from the wheel plane):
-
-    .. math:: \mathbf a_i^T[\mathbf E\mathbf d_i\ \ \mathbf 1]\,\mathbf t = -r\sin\gamma\,\dot\theta_i .
-
-    :math:`\det\mathbf L_i = r^2\sin\gamma \ne 0`: every hub velocity is realised by some
-    :math:`(\dot\theta_i, \dot\sigma_i)`, so a Swedish wheel puts **no** constraint on the platform
-    twist (it adds nothing to Campion's :math:`\mathbf C_1^*`), and inverse kinematics is exact.
-    :math:`\gamma \to 0` makes the rollers parallel to the axle: the two columns become parallel and
-    the wheel a conventional one (use :class:`~wmr.FixedWheel`), so ``roller`` = 0 is rejected.
+    with :math:`\dot\sigma_i` the roller rate expressed at the wheel radius (so that both columns are
+    lengths).  :math:`\det\mathbf L_i = r^2\sin\gamma \ne 0`: the wheel puts no constraint on the twist
+    (the projection on :math:`\mathbf a_i`, :math:`\mathbf a_i^T[\mathbf E\mathbf d_i\ \ \mathbf 1]\,\mathbf t
+    = -r\sin\gamma\,\dot\theta_i`, involves its wheel rate only: Campion, Bastin & d'Andrea-Novel 1996) and
+    inverse kinematics is exact; ``roller`` = 0 (rollers parallel to the axle, a :class:`~wmr.FixedWheel`)
+    is refused.
 
     Parameters
     ----------

@@ -41,7 +41,7 @@ from typing import Any, ClassVar, Self
 import numpy as np
 
 from ...errors import InputValueError
-from .. import arrays, checks
+from .. import checks
 from ..backend import NUMERIC, Backend, choose, is_symbolic
 from ..lazysympy import is_sympy, sp
 from ..platform import E, rotated
@@ -203,9 +203,8 @@ class WheelUnit(UnitGeometry):
         r"""How the unit's rates turn it where its block leaves them free, or None.
 
         A row :math:`\mathbf c` with :math:`\mathbf c\,\dot{\boldsymbol\theta}_i = \dot\psi + \dot\beta_i`
-        whose rates move nothing the no-slip block sees (:math:`\mathbf L_i\mathbf c^T = \mathbf 0`): a
-        dual wheel's rate difference, the corrected (15).  Inverse kinematics adds it to the unit's
-        least-squares rates, for the steering rate wanted (:func:`wmr.inverse`'s ``beta_dot``).
+        and :math:`\mathbf L_i\mathbf c^T = \mathbf 0` (a dual wheel's rate difference, the corrected (15)),
+        which inverse kinematics adds for the steering rate wanted (:func:`wmr.inverse`'s ``beta_dot``).
 
         Returns
         -------
@@ -219,10 +218,10 @@ class WheelUnit(UnitGeometry):
         self, psi_dot: ArrayLike, rates: ArrayLike, steer: ArrayLike | None
     ) -> tuple[FloatArray, FloatArray, FloatArray | None, tuple[int, ...]]:
         """``psi_dot`` (...), ``rates`` (..., n_rates) and ``steer`` (... or None), checked, and their batch shape."""
-        psi_dot = arrays.finite_array("psi_dot", psi_dot)
-        rates = arrays.finite_array("rates", rates, last=self.n_rates)
-        steer = None if steer is None else arrays.finite_array("steer", steer)
-        shape = arrays.batch_shape({"psi_dot": psi_dot, "rates": rates[..., 0], "steer": steer}, core=0)
+        psi_dot = checks.finite_array("psi_dot", psi_dot)
+        rates = checks.finite_array("rates", rates, last=self.n_rates)
+        steer = None if steer is None else checks.finite_array("steer", steer)
+        shape = checks.batch_shape({"psi_dot": psi_dot, "rates": rates[..., 0], "steer": steer}, core=0)
         return psi_dot, rates, steer, shape
 
     @staticmethod
@@ -326,9 +325,7 @@ class WheelUnit(UnitGeometry):
     def block(self, beta: Numbers, backend: Backend | None = None) -> Matrix:
         r"""This unit's block :math:`\mathbf B_i(\beta_i) = \mathbf R_{bwi}\mathbf L_i` of :math:`\mathbf J_2`.
 
-        Evaluated as :math:`\cos\beta_i\,\mathbf L_i + \sin\beta_i\,\mathbf E\mathbf L_i` by
-        :func:`wmr.model.platform.rotated` (the same matrix, since :math:`\mathbf R(\beta) =
-        \cos\beta\,\mathbf 1 + \sin\beta\,\mathbf E` (11)); see :meth:`block_terms`.
+        Evaluated as :math:`\cos\beta_i\,\mathbf L_i + \sin\beta_i\,\mathbf E\mathbf L_i` (11) from :meth:`block_terms`.
 
         Parameters
         ----------
@@ -355,9 +352,7 @@ class WheelUnit(UnitGeometry):
         r"""The constant pair :math:`(\mathbf L_i, \mathbf E\mathbf L_i)` with
         :math:`\mathbf B_i(\beta) = \cos\beta\,\mathbf L_i + \sin\beta\,\mathbf E\mathbf L_i`.
 
-        :math:`\mathbf L_i` is the unit's local block (:meth:`local_block`): every batched kernel of
-        the package (J2, F, J, the mobility constraints, forward and inverse kinematics) is
-        assembled from this pair, so the model is still written once.
+        Every batched kernel (J2, F, J, the mobility constraints, the kinematics) is assembled from this pair.
 
         Parameters
         ----------

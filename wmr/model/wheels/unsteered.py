@@ -22,55 +22,25 @@ from typing import ClassVar, Self
 import numpy as np
 
 from ...errors import InputValueError
-from .. import arrays, checks
+from .. import checks
 from ..backend import NUMERIC, Backend, choose
 from ..lazysympy import is_sympy
 from ..platform import rotated
 from ..types import ArrayLike, FloatArray, Matrix, Numbers, Point
 from .unit import WheelUnit
 
-__all__ = ["UnsteeredUnit", "constant", "radians", "in_degrees"]
+__all__ = ["UnsteeredUnit"]
 
 
 def constant(name: str, value: Numbers) -> Numbers:
-    """A constant angle: a finite real number (float), or an exact SymPy number kept exact (no free symbols).
-
-    Parameters
-    ----------
-    name : str
-        The argument's name, for messages.
-    value : float or sympy.Expr
-
-    Returns
-    -------
-    float or sympy.Expr
-
-    Examples
-    --------
-    >>> import sympy as sp
-    >>> constant("angle", sp.pi / 2), constant("angle", 1)
-    (pi/2, 1.0)
-    """
+    """A constant angle: a finite real number (as a float), or an exact SymPy number kept exact (no free symbols)."""
     f = checks.number(name, value)  # an input error for symbols, NaN, inf, 10**400
     value = checks.real(name, value)
     return value if is_sympy(value) else f
 
 
 def in_degrees(owner, name, value, degrees):
-    """The angle of field ``name`` in radians, from radians (``value``) or degrees (``degrees``): one of them.
-
-    Parameters
-    ----------
-    owner : str
-        The class, for messages.
-    name : str
-        The field (radians); ``name + "_deg"`` is the keyword in degrees.
-    value, degrees : float or None
-
-    Returns
-    -------
-    float or sympy.Expr
-    """
+    """A constant angle: a finite real number (a float), or an exact SymPy number kept exact (no free symbols)."""
     if degrees is not None:
         if value is not None:
             raise InputValueError(f"{name}_deg: give {owner} {name} (radians) or {name}_deg (degrees), not both")
@@ -81,17 +51,7 @@ def in_degrees(owner, name, value, degrees):
 
 
 def radians(name, value):
-    """A constant angle in radians, refused beyond +-2 pi (almost surely degrees given by mistake).
-
-    Parameters
-    ----------
-    name : str
-    value : float or sympy.Expr
-
-    Returns
-    -------
-    float or sympy.Expr
-    """
+    """A constant angle in radians, refused beyond +-2 pi (almost surely degrees given by mistake)."""
     value = constant(name, value)
     if abs(float(value)) > 2 * np.pi + 1e-9:
         raise InputValueError(
@@ -174,7 +134,7 @@ class UnsteeredUnit(WheelUnit):
         >>> FixedWheel((0, 0), r=1, angle=0.5).own_angle([0.0, 3.0]).tolist()
         [0.5, 0.5]
         """
-        beta = arrays.finite_array("beta", beta)
+        beta = checks.finite_array("beta", beta)
         return np.full(beta.shape, checks.number("angle", self.angle))
 
     def block(self, beta: Numbers, backend: Backend | None = None) -> Matrix:
