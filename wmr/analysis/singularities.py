@@ -30,9 +30,6 @@ instantaneous centre U; otherwise 6.  Both happen at once iff every :math:`P_i` 
 on the circle through :math:`P_1,P_2,P_3`, or both are at infinity: a rotation about any point
 of that circle passes through a singular :math:`\mathbf J` (:func:`classify` calls it
 ``"v-circle"``; the catalogue of the paper's families is :mod:`edition.families`).
-
-Everything here is computed from :meth:`wmr.Robot.J` and :func:`wmr.analysis.mobility.rank_F`; nothing is
-copied from the paper.
 """
 
 from __future__ import annotations
@@ -47,7 +44,10 @@ from ..model.platform import wrap_angle
 from ..model.robot import Robot
 from ..model.tolerance import TOL, near_zero
 from ..model.types import ArrayLike, BoolArray, FloatArray
-from .det_exact import characterisation, det_J_polynomial, det_J_symbolic, exact_zero, plane_line_matrix
+from .det_exact import characterisation as characterisation  # importable here too (not in __all__)
+from .det_exact import det_J_polynomial, exact_zero
+from .det_exact import det_J_symbolic as det_J_symbolic
+from .det_exact import plane_line_matrix as plane_line_matrix
 from .linalg import det
 from .lines import (
     AT_INFINITY,
@@ -67,20 +67,15 @@ from .square import default_L, exact_robot, require_square
 
 __all__ = [
     "det_J",
-    "det_J_scale",
     "is_singular",
     "Classification",
     "classify",
     "singular_motions",
     "exact_robot",
     "numeric_robot",
-    "require_square",
     # the exact side of det J, from wmr.analysis.det_exact
-    "det_J_symbolic",
     "det_J_polynomial",
     "exact_zero",
-    "plane_line_matrix",
-    "characterisation",
 ]
 
 
@@ -129,20 +124,7 @@ def det_J(robot: Robot, beta: ArrayLike, L: float | None = None) -> FloatArray:
 
 
 def det_J_scale(robot: Robot, beta: ArrayLike, L: float | None = None) -> FloatArray:
-    r"""Hadamard bound :math:`\prod_i\|\mathbf J\mathbf e_i\|`: the size against which :math:`\det\mathbf J` is zero.
-
-    Parameters
-    ----------
-    robot : Robot
-        Three centred wheels.
-    beta : array (..., 3)
-    L : float, optional
-        As for :func:`det_J`.
-
-    Returns
-    -------
-    numpy.ndarray (...)
-    """
+    r"""Hadamard bound :math:`\prod_i\|\mathbf J\mathbf e_i\|` (...): the size against which :math:`\det\mathbf J` is zero."""
     robot = validation.numeric_robot(robot)
     require_square(robot)
     J = robot.J(beta, L=default_L(robot, L))
