@@ -373,3 +373,10 @@ def test_motion_reads_a_heading_and_a_centre():
     bot = wmr.paper_robot("centred")
     assert motion(bot, [0.0, 1.0, 1.0]).heading == 45.0
     assert motion(bot, [1.0, 0.0, -1.0]).centre == (1.0, 0.0)
+
+
+def test_steering_limitations_name_the_unsteered_unit():
+    from wmr.analysis.limitations import steering_limitations
+
+    free = wmr.CentredWheel((0.3, 0.0), r=0.05, driven={"steer": False})
+    assert steering_limitations(wmr.Robot([free, wmr.CentredWheel((-0.3, 0.0), r=0.05)]))[0].unit == 0

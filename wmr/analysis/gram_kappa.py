@@ -30,7 +30,7 @@ import numpy as np
 
 from ..model.tolerance import TOL
 
-__all__ = ["KAPPA_ERROR", "ACCURACY", "UPPER", "SCRATCH", "kappa_from_gram", "kappa_by_lapack"]
+__all__ = ["KAPPA_ERROR", "ACCURACY", "kappa_from_gram", "kappa_by_lapack"]
 
 _EPS = np.finfo(float).eps
 #: A 3x3 condition number from the closed form is kept when its computed error bound is at most
