@@ -118,17 +118,19 @@ def det_J(robot: Robot, beta: ArrayLike, L: float | None = None) -> FloatArray:
     >>> abs(float(det_J(bot, [0.3, 0.3, 0.3]))) < 1e-15      # item (i)
     True
     """
+    return det(_square_J(robot, beta, L))  # closed form, batched
+
+
+def _square_J(robot, beta, L):
+    """:math:`\\mathbf J` (..., 3, 3) of a robot of three centred wheels (checked here)."""
     robot = validation.numeric_robot(robot)
     require_square(robot)
-    return det(robot.J(beta, L=default_L(robot, L)))  # closed form, batched
+    return robot.J(beta, L=default_L(robot, L))
 
 
 def det_J_scale(robot: Robot, beta: ArrayLike, L: float | None = None) -> FloatArray:
     r"""Hadamard bound :math:`\prod_i\|\mathbf J\mathbf e_i\|` (...): the size against which :math:`\det\mathbf J` is zero."""
-    robot = validation.numeric_robot(robot)
-    require_square(robot)
-    J = robot.J(beta, L=default_L(robot, L))
-    return np.prod(np.linalg.norm(J, axis=-2), axis=-1)
+    return np.prod(np.linalg.norm(_square_J(robot, beta, L), axis=-2), axis=-1)
 
 
 def is_singular(robot: Robot, beta: ArrayLike, L: float | None = None) -> BoolArray:
@@ -146,7 +148,8 @@ def is_singular(robot: Robot, beta: ArrayLike, L: float | None = None) -> BoolAr
     -------
     numpy.ndarray of bool (...)
     """
-    return near_zero(det_J(robot, beta, L), det_J_scale(robot, beta, L))
+    J = _square_J(robot, beta, L)  # formed once for the determinant and its scale
+    return near_zero(det(J), np.prod(np.linalg.norm(J, axis=-2), axis=-1))
 
 
 # -------------------------------------------------------------------------------- classify
