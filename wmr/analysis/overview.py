@@ -7,15 +7,6 @@ point and about random points).  The rank of F drops exactly at configurations o
 kind, which a grid or a random sample would almost surely miss, so the minimum of rank F is
 found; its maximum is the generic value.  :math:`\kappa(\mathbf J)` is reported over the drivable
 configurations only (:class:`~wmr.analysis.sweep.Drivable`): a robot never drives in the others.
-
-Characteristic length.  With :math:`a = \sum_i\|\mathbf d_i\|^2`, :math:`\mathbf b = \sum_i\mathbf E\mathbf d_i`,
-(34) reads
-:math:`\mathbf J_{L1}^T\mathbf J_{L1} = \begin{bmatrix}a/L^2 & \mathbf b^T/L\\ \mathbf b/L & w\mathbf 1\end{bmatrix}`,
-whose eigenvalues are :math:`w` and :math:`\mu_\pm` with :math:`\mu_+ + \mu_- = a/L^2 + w`,
-:math:`\mu_+\mu_- = (a/L^2)(w - \|\mathbf b\|^2/a)`; :math:`\kappa^2 = \mu_+/\mu_-` is smallest at
-:math:`a/L^2 = w`, i.e. at :func:`wmr.characteristic_length` :math:`L^2 = a/w` wherever C is, where
-:math:`\kappa(\mathbf J_{L1}) = \sqrt{(w + c)/(w - c)}`, :math:`c = \|\sum_i\mathbf d_i\|\sqrt{w/a}`:
-isotropic exactly when C is the centroid of the mount points.
 """
 
 from __future__ import annotations
