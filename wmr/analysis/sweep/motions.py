@@ -106,7 +106,7 @@ class Motions:
 
     def __init__(self, robot, n, seed):
         robot = validation.numeric_robot(robot)
-        self.robot, self.n, self.seed = robot, count("n", n), count("seed", seed, minimum=0)
+        self.robot, self.n, self.seed = robot, n, seed  # (checked by Drivable)
         self.scale = robot.F_column_norms[:3]
         fixed = [i for i, u in enumerate(robot.wheels) if not u.steered]
         # the directions the fixed wheels allow, N(C1f) in dimensionless twists, as the projector onto them:
