@@ -342,3 +342,41 @@ def test_explain(capsys, term, words):
 def test_explain_unknown_term(capsys):
     code, _, err = _run(capsys, "explain", "thru-P")
     assert code == 2 and "did you mean 'through-P'" in err
+
+
+def test_motor_conditioning_of_a_kiwi_drive():
+    """M^T M = diag(3, 3/2, 3/2) / r^2: kappa^2 = 2."""
+    kiwi = wmr.Robot(
+        [
+            wmr.SwedishWheel((0.2 * np.cos(a), 0.2 * np.sin(a)), r=0.05, angle=a, roller=np.pi / 2)
+            for a in np.radians([90, 210, 330])
+        ]
+    )
+    assert round(motor_conditioning(kiwi, np.zeros(3)) ** 2, 9) == 2.0
+
+
+def test_profile_of_the_papers_offset_robot():
+    p = profile(wmr.paper_robot("offset", L=0.3, r=0.05, d=0.05))
+    assert (p["class"], p["actuated_mobility"]) == ("(3,0)", 3)
+    assert [round(p[k], 12) for k in ("L", "kappa_JL1", "kappa_J2")] == [0.3, 1.0, 1.0]
+
+
+def test_driven_columns_of_a_castor_and_a_mecanum_wheel():
+    castor = wmr.OffsetWheel((0.3, 0.0), r=0.05, d=0.03, driven={"steer": False, "drive": False})
+    mec = wmr.SwedishWheel((-0.3, 0.0), r=0.05, angle=0.0, roller=np.pi / 4)
+    assert driven_columns(wmr.Robot([castor, mec])).tolist() == [False, False, True, False]  # phi, theta; theta, sigma
+
+
+def test_motion_reads_a_heading_and_a_centre():
+    from wmr.analysis.actuation import motion
+
+    bot = wmr.paper_robot("centred")
+    assert motion(bot, [0.0, 1.0, 1.0]).heading == 45.0
+    assert motion(bot, [1.0, 0.0, -1.0]).centre == (1.0, 0.0)
+
+
+def test_steering_limitations_name_the_unsteered_unit():
+    from wmr.analysis.limitations import steering_limitations
+
+    free = wmr.CentredWheel((0.3, 0.0), r=0.05, driven={"steer": False})
+    assert steering_limitations(wmr.Robot([free, wmr.CentredWheel((-0.3, 0.0), r=0.05)]))[0].unit == 0

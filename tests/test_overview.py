@@ -80,6 +80,8 @@ def test_dead_zone_needs_equal_offsets():
     """(The radius agrees with the edition's simulation of the dead zone: tests/edition/test_dead_zone.py.)"""
     mixed = wmr.Robot([wmr.OffsetWheel(p, r=0.1, d=d) for p, d in zip(wmr.equilateral_mounts(0.4), (0.04, 0.05, 0.04))])
     assert dead_zone_radius(mixed) is None
+    assert dead_zone_radius(wmr.paper_robot("offset", r=0.1, d=0.03)) == 0.03
+    assert dead_zone_radius(wmr.paper_robot("centred")) is None
 
 
 def test_singular_families_are_singular_and_the_others_are_not():

@@ -261,3 +261,9 @@ def test_first_written_is_the_whole_chunk_rounded():
         assert first_written(x, float(x.min())) == int(np.argmin(q))
         assert first_written(x, float(x.max())) == int(np.argmax(q))
         assert first_written(ax, float(ax.min())) == int(np.argmin(np.abs(q)))
+
+
+def test_count_takes_a_float_of_integral_value():
+    from wmr.analysis.sweep.configurations import count
+
+    assert count("n", 1e6) == 1000000 and isinstance(count("n", 1e6), int)

@@ -50,16 +50,7 @@ def _det_entries(e):
 
 
 def det(A):
-    r"""Determinants of a flat stack ``A (N, p, p)``, ``1 <= p <= 3`` (cofactor expansion).
-
-    Parameters
-    ----------
-    A : numpy.ndarray (N, p, p)
-
-    Returns
-    -------
-    numpy.ndarray (N,)
-    """
+    r"""Determinants (N,) of a flat stack ``A (N, p, p)``, ``1 <= p <= 3`` (cofactor expansion)."""
     out = np.empty(A.shape[0])
 
     def chunk(a, b):
@@ -85,10 +76,9 @@ def _gram_entries(e, rows):
 
 
 def certified_full_rank(A, scale=None):
-    r"""Members of a flat stack ``A (N, m, n)``, ``p = min(m, n) <= 3``, whose rank is surely ``p``.
+    r"""Members (N,) of a flat stack ``A (N, m, n)``, ``p = min(m, n) <= 3``, whose rank is surely ``p``.
 
-    With ``scale`` (n,), the test is made on the matrices with column j divided by ``scale[j]``
-    (the column sizes of :func:`wmr.analysis.linalg.rank`).
+    With ``scale`` (n,), the test is made on the matrices with column j divided by ``scale[j]``.
 
     With :math:`f = \|\mathbf A\|_F^2 \ge \sigma_{max}^2` and :math:`D = \prod_k\sigma_k` (for a
     square matrix :math:`|\det\mathbf A|`, otherwise :math:`\sqrt{\det\mathbf G}` with the
@@ -97,18 +87,7 @@ def certified_full_rank(A, scale=None):
     generous bound on the rounding error of the determinant, exceeds
     :math:`2\,\mathrm{TOL}\sqrt f`: then the SVD rule of :func:`wmr.analysis.linalg.rank`
     gives rank ``p`` as well (its own rounding is far below the factor 2), so the certificate
-    changes no result.  Members that are not certified (nearly or truly rank-deficient) are
-    left to the SVD.
-
-    Parameters
-    ----------
-    A : numpy.ndarray (N, m, n)
-    scale : numpy.ndarray (n,), optional
-        Positive column sizes.
-
-    Returns
-    -------
-    numpy.ndarray of bool (N,)
+    changes no result.  The others are left to the SVD.
     """
     N, m, n = A.shape
     p = min(m, n)
@@ -161,17 +140,7 @@ def condition_number_3x3(A):
     first-order neglect; measured errors stay below half of ``e``), when
     :math:`\sigma_3 = \sigma_1/\kappa > 2\,\mathrm{TOL}\,\sigma_1` (so the SVD rule
     would not call it singular either) and when :math:`\|\mathbf A\|_F^2` lies where nothing
-    over- or underflows.  The others are flagged for the SVD.
-
-    Parameters
-    ----------
-    A : numpy.ndarray (N, 3, 3)
-
-    Returns
-    -------
-    kappa : numpy.ndarray (N,)
-        The condition number where accepted (anything elsewhere).
-    accepted : numpy.ndarray of bool (N,)
+    over- or underflows.  Returns ``kappa (N,)`` (anything where not accepted) and ``accepted (N,)``.
     """
     N = A.shape[0]
     kappa = np.empty(N)

@@ -48,29 +48,11 @@ from .linalg import null_space, rank
 from .lines import AT_INFINITY, FINITE
 from .mobility import twist_constraints
 
-__all__ = ["driven_columns", "actuated_mobility", "free_twists", "uncontrolled", "MotionKind", "Motion", "motion"]
+__all__ = ["actuated_mobility", "free_twists", "uncontrolled", "MotionKind", "Motion"]
 
 
 def driven_columns(robot) -> np.ndarray:
-    """Which rate columns of :math:`\\mathbf J_2` a motor drives, from the units' joints.
-
-    Parameters
-    ----------
-    robot : Robot
-
-    Returns
-    -------
-    numpy.ndarray of bool (n_rates,)
-        In the order of :attr:`wmr.Robot.rate_names`.
-
-    Examples
-    --------
-    >>> import wmr
-    >>> castor = wmr.OffsetWheel((0.3, 0.0), r=0.05, d=0.03, driven={"steer": False, "drive": False})
-    >>> mec = wmr.SwedishWheel((-0.3, 0.0), r=0.05, angle=0.0, roller=np.pi / 4)
-    >>> driven_columns(wmr.Robot([castor, mec])).tolist()          # phi, theta; theta, sigma
-    [False, False, True, False]
-    """
+    """Which rate columns of :math:`\\mathbf J_2` a motor drives (n_rates,), in the order of :attr:`wmr.Robot.rate_names`."""
     robot = validation.robot(robot)
     return np.array([j.driven for u in robot.wheels for j in u.joints if j.rate is not None], dtype=bool)
 
@@ -248,27 +230,10 @@ class Motion:
 
 
 def motion(robot, twist) -> Motion:
-    """Where a twist moves the robot: a translation, a spin about C, a turn about another point, or nowhere.
+    """Where a twist (3,) moves the robot: a translation, a spin about C, a turn about another point, or nowhere.
 
     The robot's size (its farthest mount point from C) decides what is a translation
-    (:func:`wmr.instantaneous_centre` with that length) and a spin.  Body frame: x forward, y left.
-
-    Parameters
-    ----------
-    robot : Robot
-    twist : array (3,)
-        :math:`[\\dot\\psi, \\dot x, \\dot y]`.
-
-    Returns
-    -------
-    Motion
-
-    Examples
-    --------
-    >>> import wmr
-    >>> bot = wmr.paper_robot("centred")
-    >>> motion(bot, [0.0, 1.0, 1.0]).heading, motion(bot, [1.0, 0.0, -1.0]).centre
-    (45.0, (1.0, 0.0))
+    (:func:`wmr.instantaneous_centre` with that length) and a spin.
     """
     from .steering import instantaneous_centre
 

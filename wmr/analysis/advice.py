@@ -8,12 +8,10 @@ in words: :mod:`wmr.words.advice`).  A change that would cost the robot a motion
 lower actuated mobility) is **not advised**, with the limitation it would bring
 (:func:`wmr.analysis.limitations.limitations` of the changed robot).
 
-* :math:`\mathbf J_{L1}`: C moved to the centroid of the mount points (:meth:`wmr.Robot.moved`); the
-  characteristic length is recomputed for the moved robot -- it is not the old one
-  (:mod:`wmr.analysis.overview`: :math:`L^2 = \sum_i\|\mathbf d_i\|^2/w` depends on where C is).
+* :math:`\mathbf J_{L1}`: C moved to the centroid of the mount points (:meth:`wmr.Robot.moved`), with
+  :math:`L^2 = \sum_i\|\mathbf d_i\|^2/w` recomputed for the moved robot.
 * :math:`\mathbf J_2`: each unit's own change (:func:`~wmr.analysis.unit_design.isotropic_change`:
-  offset = radius, omni rollers), one common radius, and all of them together.  A change is not
-  advised either when the changed robot's motors cannot drive every motion it can make.
+  offset = radius, omni rollers), one common radius, and all of them together.
 * Actuation: when the motors cannot drive every motion (actuated mobility below
   :math:`\delta_m`), the fewest units rebuilt another way that fix it
   (:func:`~wmr.analysis.unit_design.other_builds`: a mecanum wheel of the other hand).
@@ -43,7 +41,7 @@ from .linalg import condition_number
 from .mobility import admissible_twists
 from .unit_design import Change, isotropic_change, other_builds
 
-__all__ = ["Suggestion", "Verdict", "Advice", "profile", "advice", "actuation_advice", "motor_conditioning"]
+__all__ = ["Suggestion", "Verdict", "Advice", "advice"]
 
 
 class Suggestion(enum.Enum):
@@ -127,28 +125,9 @@ class Advice:
 def motor_conditioning(robot, beta) -> float:
     r"""How evenly the motors command the admissible twists: :math:`\kappa` of the map from twist to motor rates.
 
-    With an orthonormal basis :math:`\hat{\mathbf T}` of the admissible twists in dimensionless
-    coordinates (:func:`wmr.admissible_twists`, scaled), the motor rates of each basis twist
-    (:func:`wmr.inverse`, driven columns) form :math:`\mathbf M`; its condition number is 1 when
-    every admissible direction costs the motors the same, ``inf`` when some admissible direction
-    needs no motor (actuated mobility below the dimension of the admissible twists).
-
-    Parameters
-    ----------
-    robot : Robot
-    beta : array (w,)
-
-    Returns
-    -------
-    float
-
-    Examples
-    --------
-    >>> import wmr
-    >>> kiwi = wmr.Robot([wmr.SwedishWheel((0.2 * np.cos(a), 0.2 * np.sin(a)), r=0.05, angle=a, roller=np.pi / 2)
-    ...                   for a in np.radians([90, 210, 330])])
-    >>> round(motor_conditioning(kiwi, np.zeros(3)) ** 2, 9)       # M^T M = diag(3, 3/2, 3/2) / r^2
-    2.0
+    :math:`\mathbf M` (n_driven, m) holds the driven joints' rates (:func:`wmr.inverse`) of an orthonormal
+    basis of the admissible twists in dimensionless coordinates; ``inf`` when some admissible direction
+    needs no motor.
     """
     robot = validation.numeric_robot(robot)
     beta = robot.effective_beta(beta)
@@ -167,23 +146,8 @@ def motor_conditioning(robot, beta) -> float:
 def profile(robot) -> dict:
     r"""What advice is judged by: class, actuated mobility, L, :math:`\kappa(\mathbf J_{L1})`, kappa(J2).
 
-    Parameters
-    ----------
-    robot : Robot
-        A numeric robot.
-
-    Returns
-    -------
-    dict
-        ``class`` (Campion's label), ``actuated_mobility`` (at the class's generic configuration),
-        ``L`` (:func:`wmr.characteristic_length`), ``kappa_JL1`` (at that L), ``kappa_J2`` (floats).
-
-    Examples
-    --------
-    >>> import wmr
-    >>> p = profile(wmr.paper_robot("offset", L=0.3, r=0.05, d=0.05))
-    >>> p["class"], p["actuated_mobility"], round(p["L"], 12), round(p["kappa_JL1"], 12), round(p["kappa_J2"], 12)
-    ('(3,0)', 3, 0.3, 1.0, 1.0)
+    A dict: ``class`` (Campion's label), ``actuated_mobility`` (at the class's generic configuration),
+    ``L`` (:func:`wmr.characteristic_length`), ``kappa_JL1`` (at that L), ``kappa_J2``.
     """
     robot = validation.numeric_robot(robot)
     c = campion_class(robot)
@@ -230,24 +194,10 @@ def _rebuilt(robot, units):
 
 
 def actuation_advice(robot, before=None) -> list[Advice]:
-    """When the motors cannot drive every motion: units rebuilt another way that fix it (checked).
+    """When the motors cannot drive every motion: at most one ``REBUILD``, units rebuilt another way (checked).
 
-    Tries every set of at most four of the units that have another build
-    (:func:`~wmr.analysis.unit_design.other_builds`), keeps those that give an actuated mobility
-    equal to the degree of mobility, and advises the one whose motors command the admissible
-    twists most evenly (:func:`~wmr.analysis.advice.motor_conditioning`; fewer changes first on
-    a tie); nothing when none does or nothing is lost.
-
-    Parameters
-    ----------
-    robot : Robot
-    before : dict, optional
-        Its :func:`profile`.
-
-    Returns
-    -------
-    list of Advice
-        At most one, a ``REBUILD``.
+    Of the sets of at most four units with another build that give an actuated mobility equal to the
+    degree of mobility, the one with the smallest :func:`motor_conditioning` (fewer changes on a tie).
     """
     robot = validation.numeric_robot(robot)
     before = profile(robot) if before is None else before

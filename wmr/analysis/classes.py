@@ -1,9 +1,9 @@
 r"""The five classes of wheeled mobile robots of Campion, Bastin & d'Andrea-Novel (1996).
 
-Campion, Bastin and d'Andrea-Novel ("Structural properties and classification of kinematic and
-dynamic models of wheeled mobile robots", IEEE Trans. Robotics and Automation 12(1), 1996) sort
-every robot by two integers read off the constraints **orthogonal to the wheel planes** of its
-wheels with a fixed wheel plane through the wheel centre:
+("Structural properties and classification of kinematic and dynamic models of wheeled mobile
+robots", IEEE Trans. Robotics and Automation 12(1), 1996).  They sort every robot by two integers read
+off the constraints **orthogonal to the wheel planes** of its wheels with a fixed wheel plane through
+the wheel centre:
 
 * :math:`\mathbf C_{1f}`: one row per fixed wheel, :math:`\mathbf i_i^T[\mathbf E\mathbf d_i\ \ \mathbf 1]`
   (the hub of a fixed wheel cannot move along its axle :math:`\mathbf i_i`);
@@ -14,9 +14,7 @@ wheels with a fixed wheel plane through the wheel centre:
   invertible, :mod:`wmr.model.wheels.swedish`); an offset wheel with :math:`d = 0` is a centred
   wheel and counts as one.
 
-These rows are exactly the twist constraints of :func:`wmr.analysis.mobility.twist_constraints`
-(the left null spaces of the units' blocks), so the classification uses the package's own model.
-Then
+These rows are the twist constraints of :func:`wmr.analysis.mobility.twist_constraints`.  Then
 
 .. math:: \delta_m = \dim\mathcal N(\mathbf C_1^*(\boldsymbol\beta_s)) = 3 - \operatorname{rank}\mathbf C_1^*,
           \qquad \delta_s = \operatorname{rank}\mathbf C_{1s}(\boldsymbol\beta_s),
@@ -40,11 +38,8 @@ The generic configuration is built, not searched: a platform twist :math:`\mathb
 space of :math:`\mathbf C_{1f}` (the projection of a fixed pseudo-random vector, in the
 dimensionless coordinates of :mod:`wmr.model.tolerance`), then the steered wheels set compatible
 with it (:func:`wmr.steering_angles`; wheels at the instantaneous centre get fixed pseudo-random
-angles).  A few such draws are made (fixed seed) and the one with the smallest :math:`\delta_m`
-(then the largest :math:`\delta_s`) is kept, so the result is deterministic and the rank drops of
-special configurations (all wheels parallel, a wheel at the centre) do not count.  Ranks use
-:func:`wmr.rank` with the columns of :math:`\mathbf F`'s twist part
-(:attr:`wmr.Robot.F_column_norms`): the class does not depend on the unit of length.
+angles).  Of a few such draws (fixed seed) the one with the smallest :math:`\delta_m` (then the
+largest :math:`\delta_s`) is kept, so the rank drops of special configurations do not count.
 """
 
 from __future__ import annotations
@@ -60,7 +55,7 @@ from .linalg import null_space, rank
 from .mobility import twist_constraints
 from .steering import steering_angles
 
-__all__ = ["CampionClass", "CLASS_NAMES", "campion_class"]
+__all__ = ["CampionClass", "campion_class"]
 
 #: Campion's five classes of non-degenerate robots, (delta_m, delta_s) -> a short description.
 CLASS_NAMES = {

@@ -1,8 +1,6 @@
 r"""The exact side of :math:`\det\mathbf J` (58)-(59): its SymPy derivation, its polynomial form, and the
 wheel-plane-line identity :math:`\det\mathbf J = -(r_1r_2r_3/L)\det\mathbf W` (see :mod:`wmr.analysis.singularities`
 for the numeric side: batched determinants, singularity tests and the classification).
-
-Everything is derived from :meth:`wmr.Robot.J`; nothing is copied from the paper.
 """
 
 from __future__ import annotations

@@ -15,11 +15,8 @@ worst-case bound, so a margin of 1.5 covers the neglected second order.  A membe
 the bound is within ``KAPPA_ERROR eps kappa`` or :data:`ACCURACY`, and
 :math:`\kappa < 1/(2\,\mathrm{TOL})` (the SVD rule of :func:`wmr.condition_number` would not call
 it singular either).  :func:`kappa_by_lapack` does the same with LAPACK's eigenvalues, whose error
-:math:`e + 8\epsilon\lambda_1` is not amplified.
-
-The 3x3 condition number of :func:`wmr.condition_number` (:mod:`wmr.analysis.linalg`) and the drivable
-sweep's fused kernel (:mod:`wmr.analysis.sweep.swerve_kappa`) both use :func:`kappa_from_gram`: the
-formula is written once, here.
+:math:`e + 8\epsilon\lambda_1` is not amplified.  Used by :func:`wmr.condition_number` (3x3) and by
+:mod:`wmr.analysis.sweep.swerve_kappa`.
 """
 
 from __future__ import annotations
@@ -30,7 +27,7 @@ import numpy as np
 
 from ..model.tolerance import TOL
 
-__all__ = ["KAPPA_ERROR", "ACCURACY", "UPPER", "SCRATCH", "kappa_from_gram", "kappa_by_lapack"]
+__all__ = ["KAPPA_ERROR", "ACCURACY", "kappa_from_gram", "kappa_by_lapack"]
 
 _EPS = np.finfo(float).eps
 #: A 3x3 condition number from the closed form is kept when its computed error bound is at most

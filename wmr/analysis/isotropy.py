@@ -40,11 +40,14 @@ def is_isotropic(A: ArrayLike) -> BoolArray:
 
 
 def characteristic_length(robot: Robot) -> float:
-    r"""The characteristic length :math:`L` that makes :math:`\mathbf J_{L1}` best conditioned when C is the centroid.
+    r"""Characteristic length :math:`L^2 = \tfrac1w\sum_i\|\mathbf d_i\|^2` that makes :math:`\mathbf J_{L1}` best conditioned.
 
-    With :math:`\sum_i\mathbf d_i = \mathbf 0`, (34) is :math:`\mathrm{diag}(\sum_i\|\mathbf d_i\|^2/L^2,\ w,\ w)`,
-    which is isotropic exactly for :math:`L^2 = \tfrac1w\sum_i\|\mathbf d_i\|^2` (the mean, not
-    necessarily equal, squared distance).
+    With :math:`a = \sum_i\|\mathbf d_i\|^2`, :math:`\mathbf b = \sum_i\mathbf E\mathbf d_i`, (34) reads
+    :math:`\mathbf J_{L1}^T\mathbf J_{L1} = \begin{bmatrix}a/L^2 & \mathbf b^T/L\\ \mathbf b/L & w\mathbf 1\end{bmatrix}`,
+    whose eigenvalues are :math:`w` and :math:`\mu_\pm` with :math:`\mu_+ + \mu_- = a/L^2 + w`,
+    :math:`\mu_+\mu_- = (a/L^2)(w - \|\mathbf b\|^2/a)`; :math:`\kappa^2 = \mu_+/\mu_-` is smallest at
+    :math:`L^2 = a/w` wherever C is, where :math:`\kappa(\mathbf J_{L1}) = \sqrt{(w + c)/(w - c)}`,
+    :math:`c = \|\sum_i\mathbf d_i\|\sqrt{w/a}`: isotropic exactly when C is the centroid of the mount points.
 
     Parameters
     ----------

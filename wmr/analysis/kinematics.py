@@ -96,17 +96,7 @@ class _Constants:
 
 @contextlib.contextmanager
 def constants_kept(robot):
-    """Deprecated: a robot keeps its kinematic constants itself (it is frozen); use the robot without this block.
-
-    Parameters
-    ----------
-    robot : Robot
-        Ignored.
-
-    Yields
-    ------
-    None
-    """
+    """Deprecated: a robot keeps its kinematic constants itself (it is frozen); use the robot without this block."""
     warnings.warn(
         "wmr.analysis.kinematics.constants_kept is deprecated and does nothing: a Robot is frozen and keeps "
         "its kinematic constants itself; call forward/inverse on the robot directly",
@@ -145,8 +135,7 @@ def _from_model(robot):
 def _pinv_rank(M):
     """``(pinv_columns(M), rank(M))`` of a small constant matrix, remembered by its value.
 
-    A robot keeps its constants (:func:`_constants`); this cache by value serves robots made anew with
-    the same units (a design search): without it, a new robot and one solve cost 1.2-1.3x more (measured).
+    The cache by value serves robots made anew with the same units (a design search).
     """
     M = np.ascontiguousarray(M, dtype=float)
     return _pinv_rank_of(M.tobytes(), M.shape)
@@ -211,13 +200,6 @@ def forward(robot: Robot, beta: ArrayLike, rates: ArrayLike, slip_tolerance: flo
     ------
     ValueError
         If the mount points do not determine the twist (all coincide), or on bad input.
-
-    Notes
-    -----
-    :math:`\mathbf J_1^+` is computed once per robot; the batch is processed in chunks on all
-    cores, and :math:`\mathbf J_2` is never formed: unit :math:`i` contributes
-    :math:`\cos\beta_i\,\mathbf L_i\dot{\boldsymbol\theta}_i +
-    \sin\beta_i\,\mathbf E\mathbf L_i\dot{\boldsymbol\theta}_i`.
 
     Examples
     --------
@@ -287,13 +269,6 @@ def inverse(robot: Robot, beta: ArrayLike, twist: TwistLike, beta_dot: ArrayLike
     -------
     Solution
         ``value`` is :math:`\dot{\boldsymbol\theta}` (..., n_rates).
-
-    Notes
-    -----
-    Per unit, :math:`\dot{\boldsymbol\theta}_i = \mathbf L_i^+\mathbf R(\beta_i)^T\mathbf v_i` with
-    :math:`\mathbf v_i = [\mathbf E\mathbf d_i\ \mathbf 1]\mathbf t` (5) and
-    :math:`\mathbf R^T\mathbf v = (\cos\beta\,v_x + \sin\beta\,v_y,\ \cos\beta\,v_y - \sin\beta\,v_x)`;
-    the :math:`\mathbf L_i^+` are computed once per robot and the batch is processed in chunks.
 
     Examples
     --------

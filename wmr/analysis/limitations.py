@@ -35,7 +35,7 @@ from .classes import campion_class
 from .linalg import null_space
 from .mobility import twist_constraints
 
-__all__ = ["LimitationKind", "Limitation", "limitations", "steering_limitations"]
+__all__ = ["LimitationKind", "Limitation", "limitations"]
 
 
 class LimitationKind(enum.Enum):
@@ -98,24 +98,7 @@ def _of_class(robot, c) -> list[Limitation]:
 
 
 def steering_limitations(robot) -> list[Limitation]:
-    """Steered units whose angle nothing controls (see the module notes).
-
-    Parameters
-    ----------
-    robot : Robot
-
-    Returns
-    -------
-    list of Limitation
-        One ``UNSTEERED`` per such unit.
-
-    Examples
-    --------
-    >>> import wmr
-    >>> free = wmr.CentredWheel((0.3, 0.0), r=0.05, driven={"steer": False})
-    >>> steering_limitations(wmr.Robot([free, wmr.CentredWheel((-0.3, 0.0), r=0.05)]))[0].unit
-    0
-    """
+    """Steered units whose angle nothing controls: one ``UNSTEERED`` limitation each (see the module notes)."""
     robot = validation.robot(robot)
     return [
         Limitation(LimitationKind.UNSTEERED, unit=k)

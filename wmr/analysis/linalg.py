@@ -2,13 +2,10 @@ r"""Linear algebra on stacks of matrices ``(..., m, n)``: singular values, rank,
 
 Every decision "is this singular value zero?" uses the one tolerance :data:`wmr.model.tolerance.TOL`,
 relative to the largest singular value; ranks are taken after each column is divided by its
-length (:func:`column_norms`), so that they do not depend on the units of the unknowns
-(see :mod:`wmr.model.tolerance`).  Functions accept any number of leading batch axes and
-run over chunks on all cores (:mod:`wmr.analysis._batch`).  For matrices with at most three rows
-or columns, :func:`det`, :func:`rank` and :func:`condition_number` use closed forms
-(:mod:`wmr.analysis._closed`) for every member they can vouch for and the SVD for the others, so
-their decisions are the SVD's.  The two rules that judge singular values (rank and condition number) are
-:mod:`wmr.analysis.sv_decisions`, re-exported here.
+length (:func:`~wmr.model.tolerance.column_norms`), so that they do not depend on the units of the
+unknowns.  For matrices with at most three rows or columns, :func:`det`, :func:`rank` and
+:func:`condition_number` use closed forms (:mod:`wmr.analysis._closed`) for every member they can vouch
+for and the SVD for the others, so their decisions are the SVD's.
 """
 
 from __future__ import annotations
@@ -22,20 +19,7 @@ from ..model.types import ArrayLike, FloatArray, IntArray
 from . import _closed
 from .sv_decisions import kappa_from_singular_values, rank_from_singular_values
 
-__all__ = [
-    "singular_values",
-    "column_norms",
-    "rank",
-    "nullity",
-    "null_space",
-    "left_null_space",
-    "pinv_columns",
-    "condition_number",
-    "gram",
-    "det",
-    "rank_from_singular_values",
-    "kappa_from_singular_values",
-]
+__all__ = ["singular_values", "rank", "nullity", "null_space", "condition_number", "det"]
 
 
 def _as_stack(A: ArrayLike) -> FloatArray:
@@ -107,10 +91,6 @@ def rank(A: ArrayLike, scale: ArrayLike | None = None) -> IntArray:
     singular values above ``TOL`` times the largest one are counted (:mod:`wmr.model.tolerance`).
     So ``rank(A) == rank(A @ D)`` for every positive diagonal ``D``; a column that is small only
     next to the others is not neglected (give ``scale`` to say what "small" means instead).
-
-    For matrices with at most 3 rows or columns, members of full rank are recognised in
-    closed form (a certified bound, see :func:`wmr.analysis._closed.certified_full_rank`) and
-    only the others go through the SVD; the result is the same as the SVD rule for every member.
 
     Parameters
     ----------
@@ -209,25 +189,10 @@ def null_space(A: ArrayLike, scale: ArrayLike | None = None) -> FloatArray:
 
 
 def pinv_columns(A: ArrayLike) -> FloatArray:
-    r"""Pseudo-inverse with the columns scaled as in :func:`rank`: :math:`\mathbf D^{-1}(\mathbf A\mathbf D^{-1})^+`.
+    r"""Pseudo-inverse ``(n, m)`` with the columns scaled as in :func:`rank`: :math:`\mathbf D^{-1}(\mathbf A\mathbf D^{-1})^+`.
 
-    Singular values of :math:`\mathbf A\mathbf D^{-1}` at most ``TOL`` times the largest are
-    dropped (the rank rule).  For full column rank this is :math:`\mathbf A^+` whatever the units
-    of the columns (``numpy.linalg.pinv`` would drop a column that is small only next to the
-    others).
-
-    Parameters
-    ----------
-    A : array (m, n)
-
-    Returns
-    -------
-    numpy.ndarray (n, m)
-
-    Examples
-    --------
-    >>> (pinv_columns([[1e12, 0.0], [0.0, 1.0], [0.0, 0.0]]) * [1e12, 1, 1]).round(12).tolist()
-    [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0]]
+    Singular values at most ``TOL`` times the largest are dropped (the rank rule), so for full column
+    rank this is :math:`\mathbf A^+` whatever the units of the columns.
     """
     A = validation.finite_array("A", A)
     if A.ndim != 2:
@@ -238,23 +203,7 @@ def pinv_columns(A: ArrayLike) -> FloatArray:
 
 
 def left_null_space(A: ArrayLike) -> FloatArray:
-    r"""Orthonormal basis of the left null space of one matrix, columns scaled as in :func:`rank`.
-
-    Parameters
-    ----------
-    A : array_like (m, n)
-        E.g. a wheel unit's local block (2 x n_rates).
-
-    Returns
-    -------
-    numpy.ndarray (m, k)
-        Orthonormal columns :math:`\mathbf u` with :math:`\mathbf u^T\mathbf A = \mathbf 0`, ``k = m - rank(A)``.
-
-    Examples
-    --------
-    >>> left_null_space([[0.0], [-2.0]]).round(12).tolist()       # a centred wheel: no slip along i
-    [[1.0], [0.0]]
-    """
+    r"""Orthonormal ``(m, m - rank A)`` with :math:`\mathbf u^T\mathbf A = \mathbf 0`, columns scaled as for :func:`rank`."""
     A = _as_stack(A)
     if A.ndim != 2:
         raise InputValueError(f"A must be one matrix (m, n) for left_null_space, got shape {A.shape}")
@@ -268,11 +217,7 @@ def condition_number(A: ArrayLike) -> FloatArray:
 
     Rank-deficient matrices (smallest singular value at most ``TOL * sigma_l``, i.e.
     :math:`\kappa \ge 1/\mathrm{TOL}`) get ``inf``, as (31) prescribes; the matrix is taken as
-    given (no column scaling: :math:`\kappa` is the paper's measure, made homogeneous by L).  Stacks of 3x3
-    matrices use the closed form of
-    :func:`wmr.analysis._closed.condition_number_3x3` (singular values from the eigenvalues of
-    :math:`\mathbf A^T\mathbf A` and :math:`\det\mathbf A`) wherever its computed error bound is
-    within ``16 eps kappa``, and the SVD for the other members; other sizes use the SVD.
+    given (no column scaling: :math:`\kappa` is the paper's measure, made homogeneous by L).
 
     Parameters
     ----------
@@ -305,21 +250,7 @@ def condition_number(A: ArrayLike) -> FloatArray:
 
 
 def gram(A: ArrayLike) -> FloatArray:
-    r"""The product :math:`\mathbf A^T\mathbf A` of each matrix of a stack, as in (34), (40) and (54).
-
-    Parameters
-    ----------
-    A : array_like (..., m, n)
-
-    Returns
-    -------
-    numpy.ndarray (..., n, n)
-
-    Examples
-    --------
-    >>> gram([[1.0, 2.0], [0.0, 1.0]]).tolist()
-    [[1.0, 2.0], [2.0, 5.0]]
-    """
+    r"""The product :math:`\mathbf A^T\mathbf A` ``(..., n, n)`` of each matrix of a stack, as in (34), (40) and (54)."""
     A = _as_stack(A)
     with np.errstate(over="ignore", invalid="ignore"):
         return _finite("A", np.swapaxes(A, -1, -2) @ A, "the entries of A^T A")
@@ -327,10 +258,6 @@ def gram(A: ArrayLike) -> FloatArray:
 
 def det(A: ArrayLike) -> FloatArray:
     r"""Determinant of each matrix of a stack of square matrices.
-
-    Matrices up to 3x3 use the cofactor expansion, element-wise over the stack
-    (:func:`wmr.analysis._closed.det`: about 20 flops a matrix, no LAPACK call overhead);
-    larger ones use LU (``numpy.linalg.det``).
 
     Parameters
     ----------

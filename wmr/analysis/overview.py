@@ -1,9 +1,5 @@
 r"""A robot at a glance: class, actuation, mobility, isotropy, drift, singularities and limitations (``wmr analyze``).
 
-Everything is computed from the batched kernels (:func:`wmr.sweep` over a set of configurations,
-:func:`wmr.rank_F`, :func:`wmr.condition_number`, :meth:`wmr.Robot.J`); nothing is specific to the
-paper's robots.
-
 The configurations examined (:func:`configurations`) are a regular grid over the steering
 angles of the steered units together with the configurations that admit a motion
 (:func:`wmr.steering_angles` of a sample of twists: translations, spins about C, about each mount
@@ -11,18 +7,6 @@ point and about random points).  The rank of F drops exactly at configurations o
 kind, which a grid or a random sample would almost surely miss, so the minimum of rank F is
 found; its maximum is the generic value.  :math:`\kappa(\mathbf J)` is reported over the drivable
 configurations only (:class:`~wmr.analysis.sweep.Drivable`): a robot never drives in the others.
-The advice is checked on the changed robot (:mod:`wmr.analysis.advice`), the limitations are
-computed from the class and the actuation (:mod:`wmr.analysis.limitations`); their words are
-:mod:`wmr.words`'s.
-
-Characteristic length.  With :math:`a = \sum_i\|\mathbf d_i\|^2`, :math:`\mathbf b = \sum_i\mathbf E\mathbf d_i`,
-(34) reads
-:math:`\mathbf J_{L1}^T\mathbf J_{L1} = \begin{bmatrix}a/L^2 & \mathbf b^T/L\\ \mathbf b/L & w\mathbf 1\end{bmatrix}`,
-whose eigenvalues are :math:`w` and :math:`\mu_\pm` with :math:`\mu_+ + \mu_- = a/L^2 + w`,
-:math:`\mu_+\mu_- = (a/L^2)(w - \|\mathbf b\|^2/a)`; :math:`\kappa^2 = \mu_+/\mu_-` is smallest at
-:math:`a/L^2 = w`, i.e. at :func:`wmr.characteristic_length` :math:`L^2 = a/w` wherever C is, where
-:math:`\kappa(\mathbf J_{L1}) = \sqrt{(w + c)/(w - c)}`, :math:`c = \|\sum_i\mathbf d_i\|\sqrt{w/a}`:
-isotropic exactly when C is the centroid of the mount points.
 """
 
 from __future__ import annotations
@@ -47,14 +31,7 @@ from .steering import steering_angles
 from .sweep import Drivable, Grid, Sample, sweep
 from .unit_design import dead_zone
 
-__all__ = [
-    "Overview",
-    "configurations",
-    "special_twists",
-    "dead_zone_radius",
-    "singular_families",
-    "overview",
-]
+__all__ = ["Overview", "overview"]
 
 #: about this many grid configurations are examined (the grid has at least 4 values per steered angle)
 GRID_SIZE = 20000
@@ -65,16 +42,7 @@ TWISTS = 2000
 
 
 def special_twists(robot):
-    """The motions where rank drops are expected: translations along x, y and the diagonal, spins about C and each P_i.
-
-    Parameters
-    ----------
-    robot : Robot
-
-    Returns
-    -------
-    numpy.ndarray (4 + w, 3)
-    """
+    """The motions (4 + w, 3) where rank drops are expected: translations along x, y, the diagonal; spins about C, each P_i."""
     robot = validation.numeric_robot(robot)
     special = [[0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [0.0, 1.0, 1.0], [1.0, 0.0, 0.0]]
     special += [[1.0, d[1], -d[0]] for d in robot.mount_points]  # spin about P_i: c_dot = -psi E d_i
@@ -82,33 +50,11 @@ def special_twists(robot):
 
 
 def configurations(robot: Robot, grid: int | None = None, twists: int = TWISTS, seed: int = 0) -> FloatArray:
-    """The configurations :func:`overview` examines: a grid over the steered angles and motion configurations.
+    """The configurations (N, w) :func:`overview` examines: a grid over the steered angles and motion configurations.
 
-    Parameters
-    ----------
-    robot : Robot
-        A numeric robot.
-    grid : int, optional
-        About how many grid configurations (each steered angle takes
-        ``max(4, floor(grid ** (1 / s)))`` values in :math:`[-\\pi, \\pi)` for ``s`` steered units;
-        when that would make more than ``4 * grid`` configurations, ``grid`` random ones instead).
-        Default :data:`GRID_SIZE`, or :data:`GRID_ANGLES` ``// s`` when that is fewer.
-    twists : int, optional
-        How many random twists' steering angles (:func:`wmr.steering_angles`) to add, besides
-        the translations along the body axes and the spins about C and about each mount point.
-    seed : int, optional
-        Seed of the random twists.
-
-    Returns
-    -------
-    numpy.ndarray (N, w)
-        Angles of fixed and Swedish units are 0 (ignored by the model).
-
-    Examples
-    --------
-    >>> import wmr
-    >>> configurations(wmr.paper_robot("centred"), grid=64, twists=10).shape
-    (81, 3)
+    Each of the ``s`` steered angles takes ``max(4, floor(grid ** (1 / s)))`` values in [-pi, pi) (``grid``
+    random configurations instead when that would make more than ``4 * grid``); then the steering angles
+    of :func:`special_twists` and of ``twists`` random twists.  Fixed and Swedish units' angles are 0.
     """
     robot = validation.numeric_robot(robot)
     w, steered = robot.w, np.array(robot.steered, dtype=bool)
@@ -145,31 +91,10 @@ def configurations(robot: Robot, grid: int | None = None, twists: int = TWISTS, 
 
 
 def dead_zone_radius(robot: Robot) -> float | None:
-    r"""Radius of the dead zone of a robot on offset wheels: C's circle when the units are steered without driving.
+    r"""Radius d of the dead zone of a robot on offset wheels of one offset d: C's circle when steered without driving.
 
-    With every unit an offset wheel of the same offset d, steering all units together with the
-    drives locked moves C on a circle of radius d about the fixed centroid of the contact points
-    (the paper's dead zone, checked by simulation in ``edition.checks.assembly.dead_zone``).
-    Only d = 0 is drift-free, and then :math:`\kappa(\mathbf J_2) = \infty`.
-
-    Parameters
-    ----------
-    robot : Robot
-
-    Returns
-    -------
-    float or None
-        d; None when some unit has no dead zone (it is not an offset wheel:
-        :func:`~wmr.analysis.unit_design.dead_zone`) or the offsets differ (the locked units then
-        cannot be steered together).
-
-    Examples
-    --------
-    >>> import wmr
-    >>> dead_zone_radius(wmr.paper_robot("offset", r=0.1, d=0.03))
-    0.03
-    >>> dead_zone_radius(wmr.paper_robot("centred")) is None
-    True
+    None when some unit is not an offset wheel (:func:`~wmr.analysis.unit_design.dead_zone`) or the
+    offsets differ.
     """
     robot = validation.numeric_robot(robot)
     zones = [dead_zone(u) for u in robot.wheels]

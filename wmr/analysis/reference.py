@@ -1,19 +1,12 @@
 r"""Dense reference computations: the plain definitions every fast kernel is checked against.
 
-Nothing here is fast and nothing here is clever.  Every matrix is formed in full from the
-model's definitions, :math:`\mathbf J_2 = \mathrm{blockdiag}(\mathbf R(\beta_i)\mathbf L_i)` (21) with
-:math:`\mathbf R(\beta)` of (11) written out with ``np.cos`` and ``np.sin`` and multiplied by the
-unit's local block, :math:`\mathbf F = [\mathbf J_1\ -\mathbf J_2]` (24),
-:math:`\mathbf J = \mathbf J_{L1}^T\mathbf J_2` (56); every rank and condition number comes from a
-full SVD with the rule of :mod:`wmr.model.tolerance` (ranks of the matrix with unit-length columns) (the same
-two lines of :mod:`wmr.analysis.sv_decisions` that turn singular values into a rank or a condition number:
-:func:`~wmr.analysis.sv_decisions.rank_from_singular_values`,
-:func:`~wmr.analysis.sv_decisions.kappa_from_singular_values`);
-kinematics are pseudo-inverse solutions
-of the whole system (21).  The tests and ``make bench`` compare the batched kernels
-(:meth:`wmr.Robot.J`, :func:`wmr.rank_F`, :func:`wmr.analysis.linalg.det`,
-:func:`wmr.condition_number`, :func:`wmr.forward`, :func:`wmr.inverse`) with these on random,
-singular and nearly singular configurations.
+Every matrix is formed in full from the model's definitions,
+:math:`\mathbf J_2 = \mathrm{blockdiag}(\mathbf R(\beta_i)\mathbf L_i)` (11), (21),
+:math:`\mathbf F = [\mathbf J_1\ -\mathbf J_2]` (24), :math:`\mathbf J = \mathbf J_{L1}^T\mathbf J_2` (56);
+every rank and condition number comes from a full SVD with the rules of :mod:`wmr.analysis.sv_decisions`
+(ranks of the matrix with unit-length columns); kinematics are pseudo-inverse solutions of the whole
+system (21).  The tests and ``make bench`` compare the batched kernels with these on random, singular and
+nearly singular configurations.
 """
 
 from __future__ import annotations

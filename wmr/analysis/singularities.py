@@ -30,9 +30,6 @@ instantaneous centre U; otherwise 6.  Both happen at once iff every :math:`P_i` 
 on the circle through :math:`P_1,P_2,P_3`, or both are at infinity: a rotation about any point
 of that circle passes through a singular :math:`\mathbf J` (:func:`classify` calls it
 ``"v-circle"``; the catalogue of the paper's families is :mod:`edition.families`).
-
-Everything here is computed from :meth:`wmr.Robot.J` and :func:`wmr.analysis.mobility.rank_F`; nothing is
-copied from the paper.
 """
 
 from __future__ import annotations
@@ -47,7 +44,10 @@ from ..model.platform import wrap_angle
 from ..model.robot import Robot
 from ..model.tolerance import TOL, near_zero
 from ..model.types import ArrayLike, BoolArray, FloatArray
-from .det_exact import characterisation, det_J_polynomial, det_J_symbolic, exact_zero, plane_line_matrix
+from .det_exact import characterisation as characterisation  # importable here too (not in __all__)
+from .det_exact import det_J_polynomial, exact_zero
+from .det_exact import det_J_symbolic as det_J_symbolic
+from .det_exact import plane_line_matrix as plane_line_matrix
 from .linalg import det
 from .lines import (
     AT_INFINITY,
@@ -67,20 +67,15 @@ from .square import default_L, exact_robot, require_square
 
 __all__ = [
     "det_J",
-    "det_J_scale",
     "is_singular",
     "Classification",
     "classify",
     "singular_motions",
     "exact_robot",
     "numeric_robot",
-    "require_square",
     # the exact side of det J, from wmr.analysis.det_exact
-    "det_J_symbolic",
     "det_J_polynomial",
     "exact_zero",
-    "plane_line_matrix",
-    "characterisation",
 ]
 
 
@@ -123,30 +118,19 @@ def det_J(robot: Robot, beta: ArrayLike, L: float | None = None) -> FloatArray:
     >>> abs(float(det_J(bot, [0.3, 0.3, 0.3]))) < 1e-15      # item (i)
     True
     """
+    return det(_square_J(robot, beta, L))  # closed form, batched
+
+
+def _square_J(robot, beta, L):
+    """:math:`\\mathbf J` (..., 3, 3) of a robot of three centred wheels (checked here)."""
     robot = validation.numeric_robot(robot)
     require_square(robot)
-    return det(robot.J(beta, L=default_L(robot, L)))  # closed form, batched
+    return robot.J(beta, L=default_L(robot, L))
 
 
 def det_J_scale(robot: Robot, beta: ArrayLike, L: float | None = None) -> FloatArray:
-    r"""Hadamard bound :math:`\prod_i\|\mathbf J\mathbf e_i\|`: the size against which :math:`\det\mathbf J` is zero.
-
-    Parameters
-    ----------
-    robot : Robot
-        Three centred wheels.
-    beta : array (..., 3)
-    L : float, optional
-        As for :func:`det_J`.
-
-    Returns
-    -------
-    numpy.ndarray (...)
-    """
-    robot = validation.numeric_robot(robot)
-    require_square(robot)
-    J = robot.J(beta, L=default_L(robot, L))
-    return np.prod(np.linalg.norm(J, axis=-2), axis=-1)
+    r"""Hadamard bound :math:`\prod_i\|\mathbf J\mathbf e_i\|` (...): the size against which :math:`\det\mathbf J` is zero."""
+    return np.prod(np.linalg.norm(_square_J(robot, beta, L), axis=-2), axis=-1)
 
 
 def is_singular(robot: Robot, beta: ArrayLike, L: float | None = None) -> BoolArray:
@@ -164,7 +148,8 @@ def is_singular(robot: Robot, beta: ArrayLike, L: float | None = None) -> BoolAr
     -------
     numpy.ndarray of bool (...)
     """
-    return near_zero(det_J(robot, beta, L), det_J_scale(robot, beta, L))
+    J = _square_J(robot, beta, L)  # formed once for the determinant and its scale
+    return near_zero(det(J), np.prod(np.linalg.norm(J, axis=-2), axis=-1))
 
 
 # -------------------------------------------------------------------------------- classify

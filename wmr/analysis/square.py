@@ -16,25 +16,11 @@ from ..model.robot import Robot
 from ..model.types import Numbers
 from .isotropy import characteristic_length
 
-__all__ = ["require_square", "default_L", "exact_robot"]
+__all__ = ["exact_robot"]
 
 
 def require_square(robot: Robot) -> None:
-    r"""Check that ``robot`` has a square :math:`\mathbf J` (56): three units of one rate each (three centred wheels).
-
-    Parameters
-    ----------
-    robot : Robot
-
-    Returns
-    -------
-    None
-
-    Raises
-    ------
-    wmr.errors.InputValueError
-        For any other robot (dual wheels: analyse the kinematically equivalent centred robot).
-    """
+    r"""Check that ``robot`` has a square :math:`\mathbf J` (56): three units of one rate each (three centred wheels)."""
     validation.robot(robot)
     if robot.n_rates != 3 or robot.w != 3:
         raise InputValueError(
@@ -46,16 +32,7 @@ def require_square(robot: Robot) -> None:
 def default_L(robot: Robot, L: Numbers | None, numeric: bool = True) -> Numbers:
     """``L`` checked, or the characteristic length of ``robot`` (:func:`wmr.characteristic_length`) when None.
 
-    Parameters
-    ----------
-    robot : Robot
-    L : float, sympy.Expr or None
-    numeric : bool, optional
-        Return a float (else a given SymPy ``L`` is kept).
-
-    Returns
-    -------
-    float or sympy.Expr
+    ``numeric``: return a float (else a given SymPy ``L`` is kept).
     """
     validation.robot(robot)
     if L is not None:

@@ -12,19 +12,11 @@ kind                           entries
 :class:`~wmr.SwedishWheel`     isotropic with omni rollers (:math:`\gamma = \pi/2`); the other hand
 =============================  ====================================================================
 
-The advice of ``wmr analyze`` applies each change to a copy of the robot and re-analyses it
-(:mod:`wmr.analysis.advice`); the overview reports the dead zone (:mod:`wmr.analysis.overview`).
-
 Examples
 --------
->>> import numpy as np, wmr
+>>> import wmr
 >>> dead_zone(wmr.OffsetWheel((0, 0), r=0.1, d=0.03)), dead_zone(wmr.CentredWheel((0, 0), r=0.1))
 (0.03, None)
->>> isotropic_change(wmr.OffsetWheel((0, 0), r=0.05, d=0.03)).unit.d
-0.05
->>> (c,) = other_builds(wmr.SwedishWheel((0, 0), r=0.05, angle=0.0, roller=np.pi / 4))
->>> c.kind.name, round(float(np.degrees(c.unit.roller)))
-('OTHER_HAND', -45)
 """
 
 from __future__ import annotations

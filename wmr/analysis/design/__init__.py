@@ -32,9 +32,6 @@ design is the vector :math:`\mathbf p = (x_2, y_2, x_3, y_3, \log_2(d/r))`.  :fu
 seeded random sample of designs on a coarse grid of configurations, refines the best few by a
 compass (pattern) search, and evaluates the winner and the paper's answer -- the equilateral
 triangle centred at C with :math:`d = r` ((37), (38), (46)) -- with :func:`worst_kappa` on a fine grid.
-
-Modules: :mod:`~wmr.analysis.design.worst_case` (the measure, designs, the screening kernel) and
-:mod:`~wmr.analysis.design.space` (the search, slices of the design space).
 """
 
 from .space import DesignSearch, Landscape, landscape, search

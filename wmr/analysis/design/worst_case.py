@@ -66,28 +66,11 @@ def compass_search(
     tol: float,
     max_iter: int = 400,
 ) -> tuple[FloatArray, float]:
-    """Minimise ``f`` from ``x0`` by compass search: the 2n axis moves of the current step are evaluated at
-    once; the best improving move is taken, else the step is halved.
+    """Minimise ``f`` from ``x0`` by compass search: ``(x, f(x))``.
 
-    Parameters
-    ----------
-    f : callable
-        Batched: an array (k, n) of points to an array (k,) of values.
-    x0 : array_like (n,)
-        The start.
-    step : float or array_like (n,)
-        The first step along each axis.
-    lo, hi : float or array_like (n,)
-        Bounds the points are clipped to.
-    tol : float
-        Stop when every step is at most this.
-    max_iter : int, optional
-
-    Returns
-    -------
-    x : numpy.ndarray (n,)
-    fx : float
-        ``f`` at ``x``.
+    The 2n axis moves of the current step (points clipped to ``[lo, hi]``) are evaluated at once by the
+    batched ``f`` ((k, n) -> (k,)); the best improving move is taken, else the step is halved, until
+    every step is at most ``tol``.
     """
     x = np.array(x0, dtype=float)
     fx = float(f(x[None])[0])
@@ -264,11 +247,9 @@ def equilateral_design(ratio: float = 1.0) -> WheelDesign:
 def worst_kappa_designs(designs: Sequence[WheelDesign], beta: ArrayLike) -> FloatArray:
     r"""The largest :math:`\kappa(\mathbf J)` of each design over the same configurations (batched).
 
-    For each design, :math:`\mathbf J(\boldsymbol\beta, L)` (56) of all configurations comes from
-    :meth:`wmr.Robot.J` with the design's characteristic length; :math:`\kappa(\mathbf J)` is
-    :math:`\sqrt{\kappa(\mathbf J\mathbf J^T)}`, the :math:`3\times3` Gram matrix's closed-form condition
-    number (:func:`wmr.condition_number`), all designs in one call.  A screening measure:
-    :func:`worst_kappa` gives the value of record.
+    :math:`\kappa(\mathbf J)` is :math:`\sqrt{\kappa(\mathbf J\mathbf J^T)}` (56) at each design's
+    characteristic length, all designs in one call.  A screening measure: :func:`worst_kappa` gives the
+    value of record.
 
     Parameters
     ----------

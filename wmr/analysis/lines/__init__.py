@@ -12,11 +12,7 @@ A line :math:`p + s\,u` has the Plücker coordinates :math:`[\,p\times u,\ u^T]^
 :math:`D` lies on it iff :math:`[-1,\ -D_y,\ D_x]\,[p\times u,\ u^T]^T = 0`, so the common point of
 several lines is the left null vector of the matrix of their Plücker columns
 (:func:`lines_concurrency`).  Where lines (or an instantaneous centre) are is one of the
-:class:`Meet` values, used by every module of the package.
-
-The parts: :mod:`~wmr.analysis.lines.geometry` (lines in the plane, whoever drew them) and
-:mod:`~wmr.analysis.lines.robot` (a robot's axle and wheel-plane lines, and the steering angles
-that make them pass through a point).
+:class:`Meet` values.
 """
 
 from ...model.platform import line_angle

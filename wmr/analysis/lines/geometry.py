@@ -35,13 +35,7 @@ __all__ = [
 
 
 class Meet(enum.IntEnum):
-    """Where lines meet, or where an instantaneous centre is (an ``int``, so it fills NumPy arrays).
-
-    Examples
-    --------
-    >>> Meet.AT_INFINITY == 1, Meet(0).name
-    (True, 'FINITE')
-    """
+    """Where lines meet, or where an instantaneous centre is (an ``int``, so it fills NumPy arrays)."""
 
     FINITE = 0  #: at a finite point
     AT_INFINITY = 1  #: all parallel: they meet at a point at infinity (a translation's centre)
@@ -51,14 +45,7 @@ class Meet(enum.IntEnum):
     PARALLEL = 5  #: two distinct parallel lines
 
 
-FINITE, AT_INFINITY, STILL, NONE, COINCIDENT, PARALLEL = (
-    Meet.FINITE,
-    Meet.AT_INFINITY,
-    Meet.STILL,
-    Meet.NONE,
-    Meet.COINCIDENT,
-    Meet.PARALLEL,
-)
+FINITE, AT_INFINITY, STILL, NONE, COINCIDENT, PARALLEL = tuple(Meet)
 
 
 def line_intersection(p1: ArrayLike, u1: ArrayLike, p2: ArrayLike, u2: ArrayLike) -> tuple[Meet, FloatArray | None]:

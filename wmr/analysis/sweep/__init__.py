@@ -30,19 +30,6 @@ name                   value at a configuration                                 
 The "worst" end is the one a designer worries about: for rank F, a rank drop (a singular
 :math:`\mathbf F`); for the mobilities, the fewest directions the robot can drive in; for
 :math:`\mathbf J`, the closest approach to a singular matrix.
-
-Where the parts live:
-
-=========================================  =====================================================================
-:mod:`~wmr.analysis.sweep.analyses`        the analyses by name (:data:`ANALYSES`)
-:mod:`~wmr.analysis.sweep.configurations`  which configurations: :class:`Grid`, :class:`Sample`, explicit angles
-:mod:`~wmr.analysis.sweep.motions`         the configurations a robot can drive in: :class:`Drivable` (twists)
-:mod:`~wmr.analysis.sweep.swerve_kappa`    the fused kernel of ``kappa_J`` over them for a swerve-like robot
-:mod:`~wmr.analysis.sweep.gram_kappa`      the names of :mod:`wmr.analysis.gram_kappa`, re-exported from their old home
-:mod:`~wmr.analysis.sweep.reduction`       the associative reduction of one chunk (extremes, counts, sketch)
-:mod:`~wmr.analysis.sweep.execute`         :func:`sweep`: chunks evaluated here or on a Dask cluster
-:mod:`~wmr.analysis.sweep.result`          the result, :class:`Sweep`
-=========================================  =====================================================================
 """
 
 from .analyses import ANALYSES

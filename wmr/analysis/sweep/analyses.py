@@ -15,23 +15,11 @@ import numpy as np
 from ...model import validation
 from ...model.robot import Robot
 
-__all__ = ["ANALYSES", "J_length"]
+__all__ = ["ANALYSES"]
 
 
 def J_length(robot: Robot, L: float | None) -> float:
-    r"""The characteristic length of the analyses of :math:`\mathbf J_{L1}`.
-
-    ``L`` checked, or :func:`wmr.characteristic_length` when None.
-
-    Parameters
-    ----------
-    robot : Robot
-    L : float or None
-
-    Returns
-    -------
-    float
-    """
+    r"""The length of the analyses of :math:`\mathbf J_{L1}`: ``L`` checked, or :func:`wmr.characteristic_length`."""
     from ..isotropy import characteristic_length
 
     validation.numeric_robot(robot)

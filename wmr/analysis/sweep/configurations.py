@@ -18,7 +18,7 @@ from ...errors import InputTypeError, InputValueError
 from ...model import validation
 from ...model.types import ArrayLike, FloatArray
 
-__all__ = ["Grid", "Sample", "BLOCK", "count", "as_source"]
+__all__ = ["Grid", "Sample"]
 
 #: random samples are drawn in blocks of this size (see Sample): a chunk is a whole number of blocks
 BLOCK = 1 << 16
@@ -32,24 +32,7 @@ def _bounds(lo, hi):
 
 
 def count(name: str, value: object, minimum: int = 1) -> int:
-    """``value`` as an ``int`` of at least ``minimum``: an integer, or a float with an integral value (``1e6``).
-
-    Parameters
-    ----------
-    name : str
-        The argument's name, for messages.
-    value : int or float
-    minimum : int, optional
-
-    Returns
-    -------
-    int
-
-    Examples
-    --------
-    >>> count("n", 1e6)
-    1000000
-    """
+    """``value`` as an ``int`` of at least ``minimum``: an integer, or a float with an integral value (``1e6``)."""
     if isinstance(value, bool) or not isinstance(value, numbers.Integral):
         if isinstance(value, float) and value.is_integer():
             value = int(value)
@@ -244,9 +227,7 @@ class Sample:
     def _rows(self, w, j, a, b):
         """Rows ``a .. b-1`` of block ``j``: ``default_rng([seed, j]).uniform(lo, hi, (BLOCK, w))[a:b]``, drawn alone.
 
-        ``uniform`` takes one 64-bit draw per value, so the block's generator is advanced past the
-        ``a * w`` values before row ``a`` instead of drawing them (a robot of many units: a chunk
-        costs its own rows, not its block's).
+        ``uniform`` takes one 64-bit draw per value: the generator is advanced past the ``a * w`` values before row ``a``.
         """
         bits = np.random.PCG64(np.random.SeedSequence([self.seed, j]))  # the generator of default_rng([seed, j])
         bits.advance(a * w)
@@ -269,19 +250,7 @@ class _Explicit:
 
 
 def as_source(angles: Grid | Sample | ArrayLike, w: int) -> Grid | Sample | _Explicit:
-    """The configurations of a sweep: a :class:`Grid` or :class:`Sample` as given, or explicit angles (N, w).
-
-    Parameters
-    ----------
-    angles : Grid, Sample or array_like (..., w)
-    w : int
-        Number of wheel units.
-
-    Returns
-    -------
-    Grid, Sample or an explicit source
-        With ``size(w)`` and ``configurations(w, start, stop)``.
-    """
+    """The configurations of a sweep: a :class:`Grid` or :class:`Sample` as given, or explicit angles (..., w) as (N, w)."""
     if isinstance(angles, (Grid, Sample)):
         if angles.size(w) < 1:
             raise InputValueError(f"angles has no configurations: {angles!r}")

@@ -25,7 +25,7 @@ from .motions import Drivable, Motions
 from .reduction import Partial
 from .result import Sweep, finish
 
-__all__ = ["Angles", "sweep", "bytes_per_configuration", "QUANTILES", "CHUNK", "FUSED_CHUNK"]
+__all__ = ["Angles", "sweep", "QUANTILES", "CHUNK"]
 
 #: what a sweep runs over: a :class:`~wmr.analysis.sweep.configurations.Grid`, a
 #: :class:`~wmr.analysis.sweep.configurations.Sample`, the configurations a robot can drive in
@@ -90,11 +90,8 @@ def sweep(
     r"""Evaluate an analysis over a grid or sample of configurations, chunk by chunk.
 
     Each chunk of configurations :math:`\boldsymbol\beta_k\in\mathbb R^w` is evaluated with the
-    batched kernels (:func:`wmr.rank_F`, :func:`wmr.mobility`, :meth:`wmr.Robot.J` with
-    :func:`wmr.analysis.linalg.det` and :func:`wmr.condition_number`) and folded into the
-    reduction; peak memory is that of one chunk (``chunk`` configurations) plus the reduction,
-    about ``chunk * (w + 20) * 8`` bytes plus a few MB, independent of the number of
-    configurations (unless ``keep``).
+    batched kernels and folded into the reduction; peak memory is that of one chunk plus the
+    reduction, about ``chunk * (w + 20) * 8`` bytes plus a few MB (unless ``keep``).
 
     Parameters
     ----------
@@ -203,17 +200,7 @@ def sweep(
 
 
 def bytes_per_configuration(robot, analysis) -> int:
-    """An upper estimate of the working memory of one configuration in a chunk of ``analysis`` (bytes).
-
-    Parameters
-    ----------
-    robot : Robot
-    analysis : str
-
-    Returns
-    -------
-    int
-    """
+    """An upper estimate of the working memory of one configuration in a chunk of ``analysis`` (bytes)."""
     robot = validation.numeric_robot(robot)
     if analysis not in ANALYSES:
         raise InputValueError(f"analysis must be one of {sorted(ANALYSES)}, got {analysis!r}")

@@ -3,9 +3,8 @@ r"""The configurations a robot can drive in: the steering angles of sampled twis
 A steered robot moves only where its wheels are coordinated: every centred or dual wheel rolls in
 the direction of its mount point's velocity (:func:`wmr.steering_angles`).  Those configurations
 have measure zero on the torus of all steering angles, so a :class:`~wmr.analysis.sweep.Grid` or a
-:class:`~wmr.analysis.sweep.Sample` essentially never visits one (0 of 20,000 random swerve
-configurations can move).  :class:`Drivable` samples **twists** instead and takes the steering
-angles that make each admissible:
+:class:`~wmr.analysis.sweep.Sample` essentially never visits one.  :class:`Drivable` samples **twists**
+instead and takes the steering angles that make each admissible:
 
 * twist k is drawn in the dimensionless coordinates :math:`\hat{\mathbf t} = \mathbf t\circ\mathbf s`
   (``s`` the twist columns of :attr:`wmr.Robot.F_column_norms`: :math:`\dot\psi` times the
@@ -19,10 +18,9 @@ Twist k depends only on the seed and k (blocks of :data:`~wmr.analysis.sweep.con
 drawn by ``numpy.random.default_rng([seed, block, 24])``), never on the chunking.
 
 For robots of 3 to 6 swerve-like units (steered, rolling in their plane, one rate) ``kappa_J``
-over drivable configurations has a fused kernel (:func:`kappa_J_drivable`, :func:`kappa_J_of_twists`,
-:class:`~wmr.analysis.sweep.swerve_kappa.SwerveKappa`): the condition number in closed form straight
-from each twist, no angle formed; a member it cannot certify, or one with a wheel at the centre of
-rotation, goes through the general kernels.
+over drivable configurations has a fused kernel (:mod:`~wmr.analysis.sweep.swerve_kappa`): the
+condition number in closed form straight from each twist; a member it cannot certify goes through
+the general kernels.
 """
 
 from __future__ import annotations
@@ -43,7 +41,7 @@ from ..steering import steering_angles
 from .configurations import BLOCK, count
 from .swerve_kappa import SwerveKappa, swerve_like
 
-__all__ = ["Drivable", "Motions", "fused_kernel", "kappa_J_drivable", "kappa_J_of_twists"]
+__all__ = ["Drivable"]
 
 
 @dataclass(frozen=True)
@@ -104,17 +102,11 @@ class Drivable:
 
 
 class Motions:
-    """:class:`Drivable` bound to a robot: twist k and its configuration, for any range of k.
-
-    Parameters
-    ----------
-    robot : Robot
-    n, seed : int
-    """
+    """:class:`Drivable` bound to a robot: twist k and its configuration, for any range of k."""
 
     def __init__(self, robot, n, seed):
         robot = validation.numeric_robot(robot)
-        self.robot, self.n, self.seed = robot, count("n", n), count("seed", seed, minimum=0)
+        self.robot, self.n, self.seed = robot, n, seed  # (checked by Drivable)
         self.scale = robot.F_column_norms[:3]
         fixed = [i for i, u in enumerate(robot.wheels) if not u.steered]
         # the directions the fixed wheels allow, N(C1f) in dimensionless twists, as the projector onto them:
@@ -142,16 +134,7 @@ class Motions:
         self._lock = threading.Lock()
 
     def kappa_kernel(self, L):
-        """The fused kernel of ``kappa_J`` for this robot and ``L`` (built once), or None when none applies.
-
-        Parameters
-        ----------
-        L : float
-
-        Returns
-        -------
-        SwerveKappa or None
-        """
+        """The fused kernel of ``kappa_J`` for this robot and ``L`` (built once), or None when none applies."""
         with self._lock:
             if L not in self._kernels:
                 self._kernels[L] = fused_kernel(self.robot, L)
@@ -166,30 +149,11 @@ class Motions:
         )
 
     def size(self, w):
-        """Number of configurations (``n``).
-
-        Parameters
-        ----------
-        w : int
-
-        Returns
-        -------
-        int
-        """
+        """Number of configurations (``n``)."""
         return self.n
 
     def twists(self, start, stop):
-        """Twists ``start .. stop-1`` (k, 3) and the angles of the freely steered units (k, w) or None.
-
-        Parameters
-        ----------
-        start, stop : int
-
-        Returns
-        -------
-        twist : numpy.ndarray (k, 3)
-        current : numpy.ndarray (k, w) or None
-        """
+        """Twists ``start .. stop-1`` (k, 3) and the angles of the freely steered units (k, w) or None."""
         first, last = start // BLOCK, (stop - 1) // BLOCK
         tws, curs = [], []
         for j in range(first, last + 1):
@@ -220,35 +184,13 @@ class Motions:
         return current
 
     def configurations(self, w, start, stop):
-        """Configurations ``start .. stop-1``: the steering angles of the twists (k, w).
-
-        Parameters
-        ----------
-        w : int
-        start, stop : int
-
-        Returns
-        -------
-        numpy.ndarray (k, w)
-        """
+        """Configurations ``start .. stop-1``: the steering angles of the twists (k, w)."""
         tw, current = self.twists(start, stop)
         return steering_angles(self.robot, tw, current)
 
 
 def fused_kernel(robot, L):
-    """The fused kernel of ``kappa_J`` for ``robot`` and ``L``, or None when the robot is not swerve-like.
-
-    Parameters
-    ----------
-    robot : Robot
-        A numeric robot.
-    L : float
-        Characteristic length.
-
-    Returns
-    -------
-    SwerveKappa or None
-    """
+    """The fused kernel of ``kappa_J`` for ``robot`` and ``L``, or None when the robot is not swerve-like."""
     if not swerve_like(robot):
         return None
     try:
@@ -260,24 +202,9 @@ def fused_kernel(robot, L):
 def kappa_J_drivable(source, start, stop, L, fold):
     r""":math:`\kappa(\mathbf J)` over configurations ``start`` to ``stop - 1`` of a drivable source, block by block.
 
-    Each block of twists is drawn, evaluated (:class:`~wmr.analysis.sweep.swerve_kappa.SwerveKappa`)
-    and handed to ``fold`` in one task, so that the drawing and the reduction run on every core too.
-
-    Parameters
-    ----------
-    source : Motions
-    start, stop : int
-        A range of configuration numbers; ``start`` a multiple of
-        :data:`~wmr.analysis.sweep.configurations.BLOCK`.
-    L : float
-    fold : callable
-        ``fold(first, values)``: the values of configurations ``first .. first + len(values) - 1``;
-        called from the task that computed them (any thread).
-
-    Returns
-    -------
-    bool
-        False when no fused kernel applies (nothing was evaluated).
+    Each block of twists is drawn, evaluated and handed to ``fold(first, values)`` in one task (any
+    thread); ``start`` is a multiple of :data:`~wmr.analysis.sweep.configurations.BLOCK`.  False when no
+    fused kernel applies (nothing was evaluated).
     """
     kernel = source.kappa_kernel(L)
     if kernel is None:
@@ -304,32 +231,8 @@ def _evaluate(kernel, robot, twist, L):
 def kappa_J_of_twists(robot, twist, L):
     r""":math:`\kappa(\mathbf J)` at the steering angles that make each twist admissible (None: no fused kernel).
 
-    See :mod:`wmr.analysis.sweep.swerve_kappa`.  Equal to
-    ``condition_number(robot.J(steering_angles(robot, twist), L=L))`` within a relative
-    :data:`~wmr.analysis.gram_kappa.ACCURACY` or ``KAPPA_ERROR * eps * kappa`` (every member the
-    closed form cannot certify is computed that way).
-
-    Parameters
-    ----------
-    robot : Robot
-        A numeric robot.
-    twist : numpy.ndarray (k, 3)
-    L : float
-        Characteristic length of :math:`\mathbf J_{L1}`.
-
-    Returns
-    -------
-    numpy.ndarray (k,) or None
-        None unless every unit is steered, rolls in its plane and has one rate, and 3 <= w <= 6.
-
-    Examples
-    --------
-    >>> import wmr
-    >>> bot = wmr.paper_robot("centred", L=0.4, r=0.1)
-    >>> tw = np.random.default_rng(0).normal(size=(5, 3))
-    >>> want = wmr.condition_number(bot.J(wmr.steering_angles(bot, tw), L=0.4))
-    >>> bool(np.allclose(kappa_J_of_twists(bot, tw, 0.4), want, rtol=1e-12))
-    True
+    ``twist`` (k, 3) gives (k,): ``condition_number(robot.J(steering_angles(robot, twist), L=L))`` within a
+    relative :data:`~wmr.analysis.gram_kappa.ACCURACY` or ``KAPPA_ERROR * eps * kappa``.
     """
     robot = validation.numeric_robot(robot)
     twist = validation.finite_array("twist", twist, last=3).reshape(-1, 3)

@@ -16,7 +16,7 @@ import numpy as np
 from ...io.decimals import quantise
 from ...model.types import FloatArray
 
-__all__ = ["SKETCH_ACCURACY", "Partial", "first_written"]
+__all__ = ["SKETCH_ACCURACY", "first_written"]
 
 #: Relative accuracy of the quantiles of real-valued analyses (see :class:`~wmr.analysis.sweep.Sweep`).
 SKETCH_ACCURACY = 1e-4
@@ -27,9 +27,7 @@ def first_written(x: FloatArray, v: float) -> int:
 
     ``v`` is a value of ``x``; writing is monotone in the value, so only values before its first
     occurrence and within a quantum of it (at most :math:`10^{-11}` of :math:`\\max(|v|, 1)`, ten
-    times that in the next decade) can be written as ``v`` is: those few are rounded, not the chunk
-    (5 to 17 times faster than rounding it, ``python -m tools.bench.fastpaths``; ``tests/test_sweep.py``
-    compares the two).
+    times that in the next decade) can be written as ``v`` is: those few are rounded, not the chunk.
 
     Parameters
     ----------
@@ -116,39 +114,9 @@ def _bucket_value(k):
 
 @dataclass
 class Partial:
-    """The reduction of a set of configurations (associative: see :meth:`merge`).
+    """The reduction of a set of configurations (associative: see :meth:`merge`)."""
 
-    Attributes
-    ----------
-    count : int
-        Configurations reduced.
-    lo : float
-        Minimum (nan: nothing yet).
-    lo_at : int
-        Its configuration index (-1: nothing yet).
-    hi : float
-        Maximum.
-    hi_at : int
-        Its configuration index.
-    small : float
-        Minimum magnitude.
-    small_at : int
-        Its configuration index.
-    integers : counts
-        Integer analyses: value -> count.
-    positive : counts
-        Real analyses: sketch bucket of the positive values -> count.
-    negative : counts
-        The same for the negative values.
-    zeros : int
-        Zero values.
-    infinite : int
-        ``+inf`` values (a condition number at a singular configuration).
-    values : list
-        ``(start, array)`` pieces, when the values are kept.
-    """
-
-    count: int = 0
+    count: int = 0  # configurations reduced
     lo: float = math.nan  # minimum and its configuration index (nan: nothing yet)
     lo_at: int = -1
     hi: float = math.nan  # maximum
@@ -156,30 +124,14 @@ class Partial:
     small: float = math.nan  # minimum magnitude
     small_at: int = -1
     integers: _Counts = field(default_factory=_Counts)  # integer analyses: value -> count
-    positive: _Counts = field(default_factory=_Counts)  # real analyses: bucket -> count
-    negative: _Counts = field(default_factory=_Counts)
+    positive: _Counts = field(default_factory=_Counts)  # real analyses: sketch bucket of the positive values -> count
+    negative: _Counts = field(default_factory=_Counts)  # ... of the negative values
     zeros: int = 0
     infinite: int = 0  # +inf (a condition number at a singular configuration)
     values: list = field(default_factory=list)  # (start, array) when kept
 
     def add(self, start: int, x: FloatArray, integer: bool, keep: bool) -> None:
-        """Fold in the values of the configurations ``start .. start + len(x) - 1``.
-
-        Parameters
-        ----------
-        start : int
-            Index of the first configuration.
-        x : numpy.ndarray (k,)
-            The analysis's values there.
-        integer : bool
-            Integer values (counted exactly) or real ones (sketched).
-        keep : bool
-            Keep the values.
-
-        Returns
-        -------
-        None
-        """
+        """Fold in the values ``x (k,)`` of configurations ``start .. start + k - 1`` (integers counted, reals sketched)."""
         self.count += x.size
         lo, hi, ax = float(x.min()), float(x.max()), np.abs(x)
         small = float(ax.min())
@@ -226,17 +178,7 @@ class Partial:
         self.small, self.small_at = self._first(v, at, self.small, self.small_at, 1)
 
     def merge(self, other: Partial) -> Partial:
-        """Fold in another reduction (associative: the result does not depend on the order of the chunks).
-
-        Parameters
-        ----------
-        other : Partial
-
-        Returns
-        -------
-        Partial
-            This one, merged.
-        """
+        """Fold in another reduction and return this one (associative: the order of the chunks does not matter)."""
         self.count += other.count
         if other.count:
             self._lo(other.lo, other.lo_at)
@@ -251,19 +193,7 @@ class Partial:
         return self
 
     def quantile(self, q: float, integer: bool) -> float:
-        """The order statistic of rank floor(q (count - 1)) (exact for integers, else from the sketch).
-
-        Parameters
-        ----------
-        q : float
-            In [0, 1].
-        integer : bool
-            Integer values (exact) or real ones (within :data:`SKETCH_ACCURACY`).
-
-        Returns
-        -------
-        float
-        """
+        """The order statistic of rank floor(q (count - 1)): exact for integers, else within :data:`SKETCH_ACCURACY`."""
         return min(max(self._quantile(q, integer), self.lo), self.hi)
 
     def _quantile(self, q, integer):

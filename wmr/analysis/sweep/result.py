@@ -8,7 +8,7 @@ import numpy as np
 
 from .analyses import ANALYSES
 
-__all__ = ["Sweep", "finish"]
+__all__ = ["Sweep"]
 
 
 @dataclass(frozen=True)
@@ -109,30 +109,9 @@ class Sweep:
 
 
 def finish(part, name, an, source, w, qs, keep, complete=True):
-    """The :class:`Sweep` of a finished reduction.
+    """The :class:`Sweep` of the reduction ``part`` of analysis ``name`` (entry ``an``) over ``source``.
 
-    Parameters
-    ----------
-    part : Partial
-        The reduction of every configuration.
-    name : str
-        The analysis.
-    an : Analysis
-        Its entry of :data:`~wmr.analysis.sweep.analyses.ANALYSES`.
-    source : Grid, Sample or explicit source
-        The configurations (:func:`~wmr.analysis.sweep.configurations.as_source`).
-    w : int
-        Number of wheel units.
-    qs : tuple of float
-        Quantiles to report.
-    keep : bool
-        Keep every value.
-    complete : bool, optional
-        False: the reduction covers only the configurations evaluated before an interruption.
-
-    Returns
-    -------
-    Sweep
+    ``qs``: the quantiles to report; ``complete`` False: an interrupted sweep.
     """
 
     def angles_at(k):

@@ -42,8 +42,7 @@ rounding of :math:`\mathbf G`, amplified where two eigenvalues nearly meet, and 
 :data:`~wmr.analysis.gram_kappa.ACCURACY`, :math:`\kappa < 1/(2\,\mathrm{TOL})` (so the SVD rule would
 not call it singular) and no wheel is still (:math:`\|\dot{\mathbf p}_i\| \le 2\,\mathrm{TOL}\,s`:
 its angle is the caller's).  The others are left to the general kernels, so every decision is
-theirs.  The kernel works on chunks of :data:`CHUNK` twists in a workspace allocated once per call;
-no Python runs per configuration.
+theirs.
 """
 
 from __future__ import annotations
@@ -60,7 +59,7 @@ from ...model.tolerance import TOL
 from ..gram_kappa import SCRATCH, kappa_by_lapack, kappa_from_gram
 from ..gram_kappa import UPPER as _UPPER
 
-__all__ = ["SwerveKappa", "swerve_like", "CHUNK"]
+__all__ = ["SwerveKappa"]
 
 #: Twists per chunk of the kernel (each of its about 130 NumPy calls costs a microsecond besides its work).
 CHUNK = 8192
@@ -71,9 +70,8 @@ _SERIAL = 1 << 17  # multiply-adds of one BLAS call (see _product)
 def _product(A, B, out):
     """``out = A @ B`` for a small ``A`` and a long ``B``, in column blocks that keep OpenBLAS on one thread.
 
-    OpenBLAS starts threads for a product of more than ``4 * 65536`` multiply-adds (fewer in some builds); on a
-    thread of the sweep's pool that costs far more than it gains (5 times slower, measured), so every call here
-    stays below ``_SERIAL``.
+    OpenBLAS starts threads above about ``4 * 65536`` multiply-adds: on a thread of the sweep's pool that is
+    5 times slower (measured), so every call here stays below ``_SERIAL``.
     """
     step = max(1, _SERIAL // (A.shape[0] * A.shape[1]))
     k = B.shape[1]
@@ -82,16 +80,7 @@ def _product(A, B, out):
 
 
 def swerve_like(robot) -> bool:
-    """True when :class:`SwerveKappa` applies: 3 to 6 units, each steered, rolling in its plane, with one rate.
-
-    Parameters
-    ----------
-    robot : Robot
-
-    Returns
-    -------
-    bool
-    """
+    """True when :class:`SwerveKappa` applies: 3 to 6 units, each steered, rolling in its plane, with one rate."""
     return 3 <= robot.w <= 6 and all(
         u.steered and u.rolls_in_plane and u.n_rates == 1 and u.steering_row() is None for u in robot.wheels
     )
@@ -103,15 +92,7 @@ def _cubic_form(K3):
     Each of the 27 terms :math:`t_x t_y t_z \det[\mathbf K_1\mathbf e_x, \mathbf K_2\mathbf e_y,
     \mathbf K_3\mathbf e_z]` is computed in rational arithmetic from the floating-point entries,
     so the coefficients are exact (rounded once) and those that vanish in exact arithmetic are 0.
-
-    Parameters
-    ----------
-    K3 : list of three numpy.ndarray (3, 3)
-
-    Returns
-    -------
-    dict
-        Sorted exponent triple ``(x, y, z)`` -> coefficient (a :class:`fractions.Fraction`).
+    Returns sorted exponent triple ``(x, y, z)`` -> :class:`fractions.Fraction`.
     """
     F = [[[Fraction(float(v)) for v in row] for row in Ki] for Ki in K3]
     out: dict[tuple[int, ...], Fraction] = {}
@@ -200,17 +181,7 @@ class SwerveKappa:
         self.g_error = (2 * w + 6) * _EPS * float(np.linalg.norm(size))
 
     def __call__(self, twist, out, redo):
-        r"""Evaluate the kernel on ``twist (k, 3)``: :math:`\kappa` into ``out (k,)``, ``redo (k,)`` True where not accepted.
-
-        Parameters
-        ----------
-        twist : numpy.ndarray (k, 3)
-            Finite twists (any layout; entry-major is fastest).
-        out : numpy.ndarray (k,)
-            Receives the condition numbers (anything where ``redo``).
-        redo : numpy.ndarray of bool (k,)
-            Receives the members to evaluate with the general kernels.
-        """
+        r"""Evaluate the kernel on ``twist (k, 3)``: :math:`\kappa` into ``out (k,)``, ``redo (k,)`` True where not accepted."""
         N = twist.shape[0]
         m = min(CHUNK, N)
         # one workspace for every chunk of the call (no allocation per chunk: large temporaries would be
@@ -313,14 +284,9 @@ _SCRATCH = 7 + SCRATCH
 
 
 class _Workspace:
-    """The preallocated temporaries of :meth:`SwerveKappa._chunk`: named rows of one array, for ``k`` twists.
+    """The preallocated temporaries of :meth:`SwerveKappa._chunk`: named rows of ``V`` and ``B``, for ``k`` twists.
 
-    Parameters
-    ----------
-    V : numpy.ndarray (5 w + 16 + 2 nS + _SCRATCH, >= k)
-    B : numpy.ndarray of bool (2, >= k)
-    w, nS, k : int
-        Units, 3-subsets of the units, twists in the chunk.
+    ``V`` (5 w + 16 + 2 nS + _SCRATCH, >= k) floats, ``B`` (2, >= k) bools; ``nS`` 3-subsets of the ``w`` units.
     """
 
     def __init__(self, V, B, w, nS, k=None):
