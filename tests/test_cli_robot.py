@@ -1,6 +1,9 @@
 """`wmr analyze`, `wmr ik`, `wmr fk`: tables, JSON that matches the library, one-line errors (exit 2)."""
 
+import importlib
 import json
+import subprocess
+import sys
 import tomllib
 from pathlib import Path
 
@@ -28,6 +31,20 @@ def test_console_script_and_commands():
     meta = tomllib.loads((ROOT / "pyproject.toml").read_text())
     assert meta["project"]["scripts"]["wmr"] == "wmr.cli:main"
     assert {"analyze", "ik", "fk", "sweep"} <= set(COMMANDS)
+
+
+def test_the_parser_imports_no_command():
+    """``wmr --version`` and ``wmr --help`` build every command's parser without importing a command's module;
+    a command's module is imported when it runs, and provides ``run`` (issue 34)."""
+    code = (
+        "import sys, contextlib, io\nfrom wmr.cli import main\nfor argv in (['--version'], ['--help']):\n"
+        "    with contextlib.redirect_stdout(io.StringIO()), contextlib.suppress(SystemExit):\n        main(argv)\n"
+        "print(sorted(m for m in sys.modules if m.startswith('wmr.cli.')))"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True, cwd=ROOT)
+    assert out.stdout.strip() == "[]"
+    for module in COMMANDS.values():
+        assert callable(importlib.import_module(f"wmr.cli.{module}").run)
 
 
 # ------------------------------------------------------------------------------------- analyze

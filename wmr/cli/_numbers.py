@@ -1,4 +1,5 @@
-"""Numbers on the command line: one number, or a list (space- or comma-separated), checked with a one-line message."""
+"""Numbers in and out of the commands: read from the command line (one number, or a list, space- or
+comma-separated) with a one-line message, written in a table or as JSON (:func:`json_text`)."""
 
 from __future__ import annotations
 
@@ -7,8 +8,6 @@ import math
 
 from ..errors import InputValueError
 from ..io.decimals import DIGITS, quantise_all
-
-__all__ = ["number", "numbers", "fmt", "clean", "json_text"]
 
 
 def number(text, option):
@@ -57,3 +56,10 @@ def json_text(value, scale=1.0, scales=None, digits=DIGITS):
     else:
         value = quantise_all(value, scale, digits)
     return json.dumps(value, indent=2)
+
+
+def twist_words(twist, convention: str) -> dict:
+    """A wmr twist ``[omega, vx, vy]`` as ``{name: value}`` in the order of ``convention``."""
+    from ..model.conventions import TWIST_ORDER, Twist
+
+    return dict(zip(TWIST_ORDER[convention], Twist(*(float(x) for x in twist)).in_convention(convention)))

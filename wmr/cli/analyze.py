@@ -1,10 +1,8 @@
 """``wmr analyze ROBOT.toml``: class, actuation, limitations, mobility, isotropy, singular configurations of a robot.
 
-Examples::
+Example::
 
-    wmr analyze examples/swerve4.toml
-    wmr analyze examples/engineers/mecanum_same_hand.toml --json
-    wmr analyze examples/engineers/car.toml --convention wpilib
+    wmr analyze examples/swerve4.toml --convention wpilib
 
 A short aligned table for people, with notes under it that say what its rows mean (``--brief``
 leaves them out; ``wmr explain TERM`` says more); ``--json`` prints the same numbers for programs
@@ -24,55 +22,43 @@ import numpy as np
 from ..words import advice as advice_words
 from ..words import families as words
 from ..words import limitations as limitation_words
-from ._numbers import json_text
-from ._options import ROBOT_FILE
 
 if TYPE_CHECKING:  # (the command imports the library when it runs)
     from ..analysis.overview import Overview
 
-__all__ = ["HELP", "add_arguments", "run", "as_json", "table", "notes"]
+__all__ = ["run"]
 
-HELP = "class, actuated mobility, limitations, mobility (rank F), isotropy and singular configurations of a robot"
+#: the glossary terms the table uses, in its order
+TERMS = ("class", "actuated-mobility", "rank-F", "nullity", "L", "J_L1", "J2", "J", "singular", "isotropic")
 
 
-def add_arguments(parser: argparse.ArgumentParser) -> None:
-    """Options of ``wmr analyze``.
+def run(args: argparse.Namespace) -> int:
+    """Run ``wmr analyze``.
 
     Parameters
     ----------
-    parser : argparse.ArgumentParser
-        The sub-command's parser.
+    args : argparse.Namespace
+        The options of ``wmr analyze`` (:func:`wmr.cli.main` parses them).
 
     Returns
     -------
-    None
+    int
+        0; bad input raises an input error (:mod:`wmr.errors`; :func:`wmr.cli.main` reports it in one line, status 2).
     """
-    from ..analysis.overview import GRID_ANGLES, GRID_SIZE, TWISTS
-    from ._options import add_convention
+    import wmr
 
-    parser.add_argument("robot", help=ROBOT_FILE)
-    parser.add_argument("--wheel-joints", metavar="NAMES", help="URDF only: the wheel joints, NAME[=RADIUS],...")
-    parser.add_argument("--json", action="store_true", help="print JSON instead of a table")
-    parser.add_argument(
-        "--grid",
-        type=int,
-        default=None,
-        metavar="N",
-        help=f"about N grid configurations of the steered angles (default {GRID_SIZE}, fewer for more than "
-        f"{GRID_ANGLES // GRID_SIZE} steered units: at most {GRID_ANGLES:,} angles)",
-    )
-    parser.add_argument(
-        "--twists",
-        type=int,
-        default=TWISTS,
-        metavar="N",
-        help=f"sample N twists for the drivable configurations (default {TWISTS})",
-    )
-    parser.add_argument(
-        "--seed", type=int, default=0, help="seed of the random twists and of the generic configuration"
-    )
-    parser.add_argument("--brief", action="store_true", help="the table without the notes under it")
-    add_convention(parser)
+    from ..analysis.overview import overview
+    from ..io.decimals import length_scale
+
+    robot = wmr.load(args.robot, wheel_joints=args.wheel_joints)
+    ov = overview(robot, grid=args.grid, twists=args.twists, seed=args.seed)
+    if args.json:
+        from ._numbers import json_text
+
+        print(json_text(as_json(ov, args.convention), scales={"L": length_scale(robot)}))
+    else:
+        print(table(ov, args.convention, args.brief))
+    return 0
 
 
 def _num(x):
@@ -90,18 +76,9 @@ def _angles(beta, convention):
 
 
 def as_json(ov: Overview, convention: str = "wmr") -> dict[str, Any]:
-    """The JSON object of an overview.
-
-    Parameters
-    ----------
-    ov : wmr.analysis.overview.Overview
-    convention : str, optional
-        How the singular configurations' angles are written (:data:`wmr.model.conventions.CONVENTIONS`).
-
-    Returns
-    -------
-    dict
-    """
+    """The JSON object of an overview, the singular configurations' angles in degrees in ``convention``."""
+    kappa_J = {**{k: _num(v) for k, v in ov.kappa_J.items()}, "drivable_configurations": ov.drivable}
+    angles = [_angles(f["beta"], convention) for f in ov.singular]  # the numbers first, then the words
     c = ov.campion
     return {
         "name": ov.name,
@@ -119,7 +96,7 @@ def as_json(ov: Overview, convention: str = "wmr") -> dict[str, Any]:
         "L": ov.L,
         "kappa_J_L1": _num(ov.kappa_JL1),
         "kappa_J2": _num(ov.kappa_J2),
-        "kappa_J": {**{k: _num(v) for k, v in ov.kappa_J.items()}, "drivable_configurations": ov.drivable},
+        "kappa_J": kappa_J,
         "isotropic": dict(ov.isotropic),
         "advice": [advice_words.sentence(a) for a in ov.advice],
         "advised": list(ov.advised),
@@ -130,33 +107,26 @@ def as_json(ov: Overview, convention: str = "wmr") -> dict[str, Any]:
                 "family": f["family"],
                 "description": words.description(f["family"]),
                 "meaning": words.meaning(f["family"]),
-                "angles_deg": _angles(f["beta"], convention),
+                "angles_deg": beta,
                 "rank_J": f["rank_J"],
                 "rank_F": f["rank_F"],
             }
-            for f in ov.singular
+            for f, beta in zip(ov.singular, angles)
         ],
     }
 
 
-def table(ov: Overview, convention: str = "wmr") -> str:
-    """The overview as a short aligned table (one fact per row).
+def table(ov: Overview, convention: str = "wmr", brief: bool = False) -> str:
+    """The overview as a short aligned table (one fact per row) and, unless ``brief``, the notes under it:
+    one line per glossary term the table uses (:mod:`wmr.words.glossary`)."""
+    from ..words.glossary import lookup
 
-    Parameters
-    ----------
-    ov : wmr.analysis.overview.Overview
-    convention : str, optional
-        How angles are written.
-
-    Returns
-    -------
-    str
-    """
+    kj = {k: _g(v) for k, v in ov.kappa_J.items()}  # the numbers first, then the words
+    angles = [", ".join(f"{a:.4g}" for a in _angles(f["beta"], convention)) for f in ov.singular]
     counts: dict[str, int] = {}
     for k in ov.kinds:
         counts[k] = counts.get(k, 0) + 1
     c = ov.campion
-    kj = ov.kappa_J
     if ov.actuated_mobility < c["delta_m"]:
         actuated = f"{ov.actuated_mobility} of delta_m = {c['delta_m']}: the motors cannot move it " + " or ".join(
             limitation_words.where(m) for m in ov.uncontrolled
@@ -185,8 +155,8 @@ def table(ov: Overview, convention: str = "wmr") -> str:
         ("kappa(J2)", _g(ov.kappa_J2) + (" isotropic" if ov.isotropic["J2"] else "") + ", at every configuration"),
         (
             "kappa(J)",
-            f"{_g(kj['min'])} .. {_g(kj['max'])}, median {_g(kj['median'])}, 95% below "
-            f"{_g(kj['p95'])}, over {ov.drivable:,} drivable configurations",
+            f"{kj['min']} .. {kj['max']}, median {kj['median']}, 95% below "
+            f"{kj['p95']}, over {ov.drivable:,} drivable configurations",
         ),
     ]
     if ov.dead_zone is not None:
@@ -202,8 +172,7 @@ def table(ov: Overview, convention: str = "wmr") -> str:
     if any(ov.steered) and not ov.singular:
         rows.append(("singular", "none found: rank J = 3 at every candidate"))
     unit = "axle angles" if convention == "wmr" else f"{convention} module angles"
-    for n, f in enumerate(ov.singular):
-        beta = ", ".join(f"{a:.4g}" for a in _angles(f["beta"], convention))
+    for n, (f, beta) in enumerate(zip(ov.singular, angles)):
         rows.append(
             (
                 "singular" if n == 0 else "",
@@ -216,53 +185,8 @@ def table(ov: Overview, convention: str = "wmr") -> str:
     for n, a in enumerate(ov.advice):
         rows.append(("advice" if n == 0 else "", advice_words.sentence(a)))
     width = max(len(k) for k, _ in rows)
-    return "\n".join(f"{k:<{width}}  {v}" for k, v in rows)
-
-
-#: the glossary terms the table uses, in its order
-TERMS = ("class", "actuated-mobility", "rank-F", "nullity", "L", "J_L1", "J2", "J", "singular", "isotropic")
-
-
-def notes(ov) -> str:
-    """The notes under the table: one line per term it uses (:mod:`wmr.words.glossary`).
-
-    Parameters
-    ----------
-    ov : wmr.analysis.overview.Overview
-
-    Returns
-    -------
-    str
-    """
-    from ..words.glossary import lookup
-
-    used = [t for t in TERMS if t != "singular" or ov.singular]
-    lines = ["", "What the rows mean (wmr explain TERM for more):"]
-    lines += [f"  {lookup(t).term:<18} {lookup(t).short}" for t in used]
+    lines = [f"{k:<{width}}  {v}" for k, v in rows]
+    if not brief:
+        lines += ["", "What the rows mean (wmr explain TERM for more):"]
+        lines += [f"  {lookup(t).term:<18} {lookup(t).short}" for t in TERMS if t != "singular" or ov.singular]
     return "\n".join(lines)
-
-
-def run(args: argparse.Namespace) -> int:
-    """Run ``wmr analyze``.
-
-    Parameters
-    ----------
-    args : argparse.Namespace
-
-    Returns
-    -------
-    int
-        0; bad input raises an input error (:mod:`wmr.errors`; :func:`wmr.cli.main` reports it in one line, status 2).
-    """
-    import wmr
-
-    from ..analysis.overview import overview
-    from ..io.decimals import length_scale
-
-    robot = wmr.load(args.robot, wheel_joints=args.wheel_joints)
-    ov = overview(robot, grid=args.grid, twists=args.twists, seed=args.seed)
-    if args.json:
-        print(json_text(as_json(ov, args.convention), scales={"L": length_scale(robot)}))
-    else:
-        print(table(ov, args.convention) + ("" if args.brief else "\n" + notes(ov)))
-    return 0

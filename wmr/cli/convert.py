@@ -1,9 +1,7 @@
 """``wmr convert ROBOT OUTPUT``: a robot from one format to another (TOML, URDF, ROS 2 parameters).
 
-Examples::
+Example::
 
-    wmr convert examples/urdf/diffbot.urdf diffbot.toml
-    wmr convert examples/swerve4.toml swerve4.urdf
     wmr convert examples/tricycle.toml --to ros2              # to standard output
 
 Each file's format is its suffix (``.toml``; ``.urdf`` or ``.xml``; ``.yaml`` or ``.yml``:
@@ -19,38 +17,7 @@ from typing import TYPE_CHECKING
 if TYPE_CHECKING:
     import argparse
 
-__all__ = ["HELP", "add_arguments", "run"]
-
-HELP = "convert a robot between TOML, URDF and ROS 2 controller parameters (formats by file suffix)"
-
-
-def add_arguments(parser: argparse.ArgumentParser) -> None:
-    """Options of ``wmr convert``.
-
-    Parameters
-    ----------
-    parser : argparse.ArgumentParser
-        The sub-command's parser.
-
-    Returns
-    -------
-    None
-    """
-    parser.add_argument("robot", help="robot file: .toml, .urdf/.xml or .yaml/.yml (ROS 2 parameters)")
-    parser.add_argument(
-        "output",
-        nargs="?",
-        help="file to write (its suffix chooses the format); default: standard output in the format of --to",
-    )
-    parser.add_argument("--to", choices=("toml", "urdf", "ros2"), help="output format (default: the output's suffix)")
-    parser.add_argument(
-        "--wheel-joints",
-        metavar="NAMES",
-        help="URDF input: the wheel joints, comma-separated, each NAME or NAME=RADIUS (for wheels without a cylinder)",
-    )
-    parser.add_argument(
-        "--controller", metavar="NAME", help="ROS 2 input: the drive controller's node name, when the file has several"
-    )
+__all__ = ["run"]
 
 
 def run(args: argparse.Namespace) -> int:
@@ -59,6 +26,7 @@ def run(args: argparse.Namespace) -> int:
     Parameters
     ----------
     args : argparse.Namespace
+        The options of ``wmr convert`` (:func:`wmr.cli.main` parses them).
 
     Returns
     -------

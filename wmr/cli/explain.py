@@ -1,11 +1,8 @@
 """``wmr explain [TERM]``: what a word of wmr's output means, in plain language.
 
-Examples::
+Example (no term: every term, one line each)::
 
-    wmr explain                 # every term, one line each
-    wmr explain rank-F
     wmr explain "kappa(J_L1)"
-    wmr explain through-P
 
 The glossary is :mod:`wmr.words.glossary`; ``wmr analyze`` prints the lines of the terms its
 table uses under the table.
@@ -16,25 +13,7 @@ from __future__ import annotations
 import argparse
 import textwrap
 
-__all__ = ["HELP", "add_arguments", "run"]
-
-HELP = "explain a term of wmr's output (rank-F, nullity, J_L1, J2, kappa, through-P, actuated-mobility, ...)"
-
-
-def add_arguments(parser: argparse.ArgumentParser) -> None:
-    """Options of ``wmr explain``.
-
-    Parameters
-    ----------
-    parser : argparse.ArgumentParser
-
-    Returns
-    -------
-    None
-    """
-    parser.add_argument(
-        "term", nargs="?", default=None, help="the term (case, spaces, - and _ do not matter); none: list every term"
-    )
+__all__ = ["run"]
 
 
 def run(args: argparse.Namespace) -> int:
@@ -43,6 +22,7 @@ def run(args: argparse.Namespace) -> int:
     Parameters
     ----------
     args : argparse.Namespace
+        The options of ``wmr explain`` (:func:`wmr.cli.main` parses them).
 
     Returns
     -------

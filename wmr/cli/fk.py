@@ -1,11 +1,9 @@
 """``wmr fk ROBOT.toml --angles DEG [DEG ...] --rates RATE [RATE ...]``: the platform twist from steering angles and
 wheel rates.
 
-Examples::
+Example::
 
-    wmr fk examples/swerve4.toml --angles 0 0 0 0 --rates -10 -10 -10 -10
     wmr fk examples/swerve4.toml --angles 0 0 0 0 --rates 10 10 10 10 --convention wpilib
-    wmr fk examples/paper_offset.toml --angles 10 20 30 --rates 1 2 1 2 1 2 --json
 
 ``--angles`` in degrees, one per unit, in the convention of ``--convention`` (wmr: axle angles;
 wpilib, ros: the direction of travel); ``--rates`` in rad/s in the order of
@@ -24,97 +22,17 @@ from __future__ import annotations
 
 import argparse
 import math
-from typing import TYPE_CHECKING
 
 import numpy as np
 
-from ._numbers import clean, fmt, json_text, number, numbers
-from ._options import ROBOT_FILE, add_convention, twist_words
+from . import ENCODER_COUNTS, PERIOD
+from ._numbers import clean, fmt, json_text, number, numbers, twist_words
 
-if TYPE_CHECKING:
-    import argparse
-
-__all__ = ["HELP", "add_arguments", "run", "ENCODER_COUNTS", "PERIOD", "default_slip_tolerance"]
-
-HELP = "the platform twist (least squares) and the slip residual for steering angles and wheel rates"
-
-#: encoder counts per wheel revolution assumed by the default slip tolerance (a common FRC motor's encoder)
-ENCODER_COUNTS = 2048
-#: control period in seconds assumed by the default slip tolerance (WPILib's 20 ms loop)
-PERIOD = 0.02
-
-
-def add_arguments(parser: argparse.ArgumentParser) -> None:
-    """Options of ``wmr fk``.
-
-    Parameters
-    ----------
-    parser : argparse.ArgumentParser
-        The sub-command's parser.
-
-    Returns
-    -------
-    None
-    """
-    parser.add_argument("robot", help=ROBOT_FILE)
-    parser.add_argument(
-        "--angles",
-        nargs="+",
-        metavar="DEG",
-        required=True,
-        help="steering angles in degrees, one per unit (space- or comma-separated), in the convention chosen",
-    )
-    parser.add_argument(
-        "--rates",
-        nargs="+",
-        metavar="RATE",
-        required=True,
-        help="joint rates in rad/s, in the order of the robot's rate names",
-    )
-    parser.add_argument(
-        "--slip-tolerance",
-        metavar="M_PER_S",
-        default=None,
-        help="slip speed (m/s) below which a wheel counts as not slipping (default: one encoder "
-        "count per control period at the largest wheel's rim, see --encoder-counts, --period)",
-    )
-    parser.add_argument(
-        "--encoder-counts",
-        metavar="N",
-        default=str(ENCODER_COUNTS),
-        help=f"encoder counts per wheel revolution for the default slip tolerance (default {ENCODER_COUNTS})",
-    )
-    parser.add_argument(
-        "--period",
-        metavar="S",
-        default=str(PERIOD),
-        help=f"control period in seconds for the default slip tolerance (default {PERIOD})",
-    )
-    parser.add_argument("--json", action="store_true", help="print JSON instead of a table")
-    add_convention(parser)
+__all__ = ["run"]
 
 
 def default_slip_tolerance(robot, counts: float = ENCODER_COUNTS, period: float = PERIOD) -> float:
-    """One encoder count per control period at the largest wheel's rim: ``r 2 pi / (counts period)`` (m/s).
-
-    Parameters
-    ----------
-    robot : Robot
-    counts : float, optional
-        Encoder counts per wheel revolution.
-    period : float, optional
-        Control period, s.
-
-    Returns
-    -------
-    float
-
-    Examples
-    --------
-    >>> import wmr
-    >>> round(default_slip_tolerance(wmr.load("examples/swerve4.toml")), 5)       # 4-inch wheels
-    0.00779
-    """
+    """One encoder count per control period at the largest wheel's rim: ``r 2 pi / (counts period)`` (m/s)."""
     return max(float(u.r) for u in robot.wheels) * 2 * math.pi / (counts * period)
 
 
@@ -124,6 +42,7 @@ def run(args: argparse.Namespace) -> int:
     Parameters
     ----------
     args : argparse.Namespace
+        The options of ``wmr fk`` (:func:`wmr.cli.main` parses them).
 
     Returns
     -------

@@ -1,8 +1,7 @@
 """``wmr ik ROBOT.toml --vx VX --vy VY --omega W``: steering angles and wheel rates for a commanded twist.
 
-Examples::
+Example::
 
-    wmr ik examples/swerve4.toml --vx 1.0 --vy 0.5 --omega 0.8
     wmr ik examples/swerve4.toml --vx 1 --omega 0.8 --convention wpilib --json
 
 The twist is body-frame: ``--vx``, ``--vy`` (m/s, the velocity of C), ``--omega`` (rad/s,
@@ -26,47 +25,12 @@ from __future__ import annotations
 
 import argparse
 import math
-from typing import TYPE_CHECKING
 
 import numpy as np
 
-from ._numbers import clean, fmt, json_text, number, numbers
-from ._options import ROBOT_FILE, add_convention, twist_words
+from ._numbers import clean, fmt, json_text, number, numbers, twist_words
 
-if TYPE_CHECKING:
-    import argparse
-
-__all__ = ["HELP", "add_arguments", "run"]
-
-HELP = "steering angles and wheel rates for a commanded twist (inverse kinematics)"
-
-
-def add_arguments(parser: argparse.ArgumentParser) -> None:
-    """Options of ``wmr ik``.
-
-    Parameters
-    ----------
-    parser : argparse.ArgumentParser
-        The sub-command's parser.
-
-    Returns
-    -------
-    None
-    """
-    parser.add_argument("robot", help=ROBOT_FILE)
-    parser.add_argument("--vx", default="0", help="velocity of C along the body x axis (forward), m/s (default 0)")
-    parser.add_argument("--vy", default="0", help="velocity of C along the body y axis (left), m/s (default 0)")
-    parser.add_argument("--omega", default="0", help="turning rate, rad/s, counter-clockwise (default 0)")
-    parser.add_argument(
-        "--current-angles",
-        nargs="+",
-        metavar="DEG",
-        default=None,
-        help="the units' current steering angles in degrees, one per unit, in the convention "
-        "chosen (default: 0 for every unit, the same as giving 0 0 ...)",
-    )
-    parser.add_argument("--json", action="store_true", help="print JSON instead of a table")
-    add_convention(parser)
+__all__ = ["run"]
 
 
 def _nearest(robot, beta, current):
@@ -105,6 +69,7 @@ def run(args: argparse.Namespace) -> int:
     Parameters
     ----------
     args : argparse.Namespace
+        The options of ``wmr ik`` (:func:`wmr.cli.main` parses them).
 
     Returns
     -------

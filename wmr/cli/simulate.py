@@ -1,10 +1,8 @@
 """``wmr simulate ROBOT.toml --vx VX --vy VY --omega W --seconds T``: the robot in MuJoCo, driven by wmr's kinematics.
 
-Examples::
+Example::
 
-    wmr simulate examples/swerve4.toml --vx 1.0 --vy 0.3 --omega 0.5 --seconds 3
     wmr simulate examples/differential.toml --vx 0.5 --omega 1 --mjcf differential.xml --json
-    wmr simulate examples/tricycle.toml --mjcf tricycle.xml --seconds 0        # only write the model
 
 The robot is exported with :func:`wmr.sim.to_mjcf` (default parameters, :mod:`wmr.sim.params`;
 ``--param name=value`` changes one) and its servos follow the joint commands of the constant body
@@ -20,17 +18,10 @@ into the ground).  Needs MuJoCo (``pip install 'wmr-kinematics[sim]'``).  Swedis
 
 ``--json`` writes the inputs by the rule of :mod:`wmr.io.decimals` (12 digits) and MuJoCo's
 measurements with :data:`SIM_DIGITS` significant digits at the scale of the commanded speed (m/s;
-the final pose and the servo load at the scale 1).  Why fewer: a simulation's result depends on
-much more than the last bit of one input.  Moving every body position, size, mass, inertia,
-friction, gain and damping of the model by one ulp (up or down) moved the printed numbers of 2 s
-runs of ``examples/{differential,paper_centred,swerve4,tricycle}.toml`` by up to 2e-15 of their
-scale (measured with MuJoCo 4.0.0); another CPU's MuJoCo (other SIMD kernels, fused multiply-adds)
-differs by more, and the difference grows with the simulated time.  Six digits leave nine orders
-of magnitude between such a change and a rounding boundary's half-quantum, and say more than a
-model whose friction and masses are known to a per cent can.  A run at the onset of sliding is
-another matter: there contact physics is chaotic (the edition's breakaway experiment measured
-speeds 0.5 % apart after 2.5 s under a one-ulp change), and no number of digits makes its text
-the same everywhere.
+the final pose and the servo load at the scale 1): moving every input of the model by one ulp
+moves them by about 2e-15 of their scale (another CPU's MuJoCo by more), nine orders of magnitude
+below a rounding boundary at six digits.  A run at the onset of sliding is chaotic: no number of
+digits makes its text the same everywhere.
 """
 
 from __future__ import annotations
@@ -43,7 +34,6 @@ import numpy as np
 from ..errors import InputValueError
 from ..io.decimals import length_scale, quantise_all
 from ._numbers import fmt, json_text, number
-from ._options import ROBOT_FILE
 
 #: significant digits of MuJoCo's measurements in ``--json`` (module notes)
 SIM_DIGITS = 6
@@ -53,37 +43,7 @@ TILT = 10.0
 if TYPE_CHECKING:
     import argparse
 
-__all__ = ["HELP", "SIM_DIGITS", "TILT", "add_arguments", "run", "run_warnings"]
-
-HELP = "the robot in MuJoCo following a commanded twist (needs mujoco); --mjcf writes the model"
-
-
-def add_arguments(parser: argparse.ArgumentParser) -> None:
-    """Options of ``wmr simulate``.
-
-    Parameters
-    ----------
-    parser : argparse.ArgumentParser
-        The sub-command's parser.
-
-    Returns
-    -------
-    None
-    """
-    parser.add_argument("robot", help=ROBOT_FILE)
-    parser.add_argument("--vx", default="0", help="velocity of C along the body x axis, m/s (default 0)")
-    parser.add_argument("--vy", default="0", help="velocity of C along the body y axis, m/s (default 0)")
-    parser.add_argument("--omega", default="0", help="turning rate, rad/s, counter-clockwise (default 0)")
-    parser.add_argument("--seconds", default="3", help="simulated time, s (default 3; 0: only write --mjcf)")
-    parser.add_argument("--mjcf", metavar="FILE", default=None, help="write the MuJoCo model (MJCF) to FILE")
-    parser.add_argument(
-        "--param",
-        nargs="+",
-        metavar="NAME=VALUE",
-        default=(),
-        help="change physical parameters (wmr.sim.Params), e.g. sliding=0.6 torsional=0",
-    )
-    parser.add_argument("--json", action="store_true", help="print JSON instead of a table")
+__all__ = ["run"]
 
 
 def _params(items):
@@ -104,21 +64,7 @@ def _params(items):
 def run_warnings(robot, beta0, twist, sim, rec) -> list[str]:
     """What makes a run of ``wmr simulate`` doubtful, in words (module docstring).
 
-    Parameters
-    ----------
-    robot : Robot
-    beta0 : array (w,)
-        The start angles.
-    twist : array (3,)
-        The commanded twist.
-    sim : wmr.sim.Simulation
-        The simulation, at the end of the run.
-    rec : wmr.sim.Recording
-        The run.
-
-    Returns
-    -------
-    list of str
+    ``beta0`` (w,) the start angles, ``twist`` (3,) the commanded twist, ``sim`` at the end of the run ``rec``.
     """
     from ..analysis.kinematics import inverse
 
@@ -147,6 +93,7 @@ def run(args: argparse.Namespace) -> int:
     Parameters
     ----------
     args : argparse.Namespace
+        The options of ``wmr simulate`` (:func:`wmr.cli.main` parses them).
 
     Returns
     -------

@@ -1,11 +1,8 @@
 """``wmr sweep ROBOT.toml ANALYSIS``: an analysis over the configurations a robot can drive in, or over all of them.
 
-Examples::
+Example::
 
-    wmr sweep examples/swerve4.toml kappa_J                      # 1e6 drivable configurations
-    wmr sweep examples/swerve4.toml mobility --sample 1e7 --json
     wmr sweep examples/paper_centred.toml kappa_J --angles any --grid 72
-    wmr sweep examples/swerve4.toml rank_F --angles any --sample 1e8 --dask local:2
 
 By default (``--angles drivable``) the configurations are those a steered robot can drive in: the
 steering angles of sampled twists (:class:`wmr.analysis.sweep.Drivable`); ``--sample N`` sets how
@@ -33,83 +30,8 @@ import time
 from ..errors import InputValueError
 from ..io.decimals import DEGREES
 from ._numbers import json_text
-from ._options import ROBOT_FILE, add_convention
 
-HELP = (
-    "evaluate rank F, mobility, actuated mobility, det J or a condition number over the drivable "
-    "configurations (or all)"
-)
-
-
-def add_arguments(parser: argparse.ArgumentParser) -> None:
-    """Options of ``wmr sweep``.
-
-    Parameters
-    ----------
-    parser : argparse.ArgumentParser
-        The sub-command's parser.
-
-    Returns
-    -------
-    None
-    """
-    from ..analysis.sweep import ANALYSES, CHUNK, QUANTILES
-
-    parser.add_argument("robot", help=ROBOT_FILE)
-    parser.add_argument("analysis", choices=sorted(ANALYSES), help="what to evaluate at each configuration")
-    parser.add_argument(
-        "--angles",
-        choices=("drivable", "any"),
-        default=None,
-        help="drivable: the steering angles of sampled twists, where the robot can move (the "
-        "default); any: every steering angle, drivable or not (the default with --grid)",
-    )
-    which = parser.add_mutually_exclusive_group()
-    which.add_argument(
-        "--grid",
-        metavar="STEPS",
-        help="with --angles any: a regular grid of STEPS values per "
-        "steered angle (default 36), or one count per wheel separated by commas",
-    )
-    which.add_argument(
-        "--sample",
-        metavar="N",
-        help="N sampled twists (drivable, default 1e6) or N random configurations (any), e.g. 1e6",
-    )
-    parser.add_argument("--seed", type=int, default=0, help="seed of --sample (default 0)")
-    parser.add_argument(
-        "--range",
-        nargs=2,
-        type=float,
-        metavar=("LO", "HI"),
-        default=None,
-        help="with --angles any: range of every steering angle in degrees, in the convention chosen (default -180 180)",
-    )
-    parser.add_argument(
-        "--length",
-        type=float,
-        default=None,
-        metavar="L",
-        help="characteristic length of J_L1 (default: the robot's characteristic length)",
-    )
-    parser.add_argument(
-        "--quantiles", default=",".join(f"{q:g}" for q in QUANTILES), help="quantile levels, comma-separated"
-    )
-    parser.add_argument("--chunk", type=int, default=CHUNK, help=f"configurations per chunk (default {CHUNK})")
-    parser.add_argument(
-        "--dask",
-        metavar="SCHEDULER",
-        default=None,
-        help="run the chunks on Dask: a scheduler address, or local:N for N local workers",
-    )
-    parser.add_argument("--json", action="store_true", help="print JSON instead of a table")
-    parser.add_argument(
-        "--progress",
-        action=argparse.BooleanOptionalAction,
-        default=None,
-        help="show a progress bar on stderr (default: when stderr is a terminal)",
-    )
-    add_convention(parser)
+__all__ = ["run"]
 
 
 def _number(text, name):
@@ -226,6 +148,7 @@ def run(args: argparse.Namespace) -> int:
     Parameters
     ----------
     args : argparse.Namespace
+        The options of ``wmr sweep`` (:func:`wmr.cli.main` parses them).
 
     Returns
     -------
