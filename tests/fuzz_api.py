@@ -46,9 +46,7 @@ from wmr.analysis import (
     square,
 )
 from wmr.analysis.sweep import Drivable, Grid
-from wmr.analysis.sweep import analyses as sweep_analyses
 from wmr.analysis.sweep import configurations as sweep_configurations
-from wmr.analysis.sweep import execute as sweep_execute
 from wmr.analysis.sweep import motions as sweep_motions
 from wmr.errors import InputError
 from wmr.model import arrays, backend, conventions, limits, platform, tolerance, wheels
@@ -487,9 +485,8 @@ CASES = [
         lambda robot, analysis, angles: wmr.sweep(robot, analysis, angles),
         (R, ("analysis", "analysis"), ("angles", "angles")),
     ),
-    Case("as_source", lambda robot, angles: sweep_configurations.as_source(angles, robot.w), (S, ("angles", "angles"))),
     Case("count", lambda value: sweep_configurations.count("value", value), (("value", "count"),)),
-    Case("J_length", lambda robot, L: sweep_analyses.J_length(robot, L), (R, ("L", "L_opt"))),
+    Case("sweep(L)", lambda robot, L: wmr.sweep(robot, "kappa_J", Grid(3), L=L), (R, ("L", "L_opt")), allow="inf"),
     Case("require_square", lambda robot: square.require_square(robot), (R,)),
     Case("default_L", lambda robot, L: square.default_L(robot, L), (("robot", "any_robot"), ("L", "L_opt"))),
     Case("wheel_kind", lambda kind: wheels.wheel_kind(kind), (("kind", "kind"),)),
@@ -753,11 +750,6 @@ CASES = [
         allow="inf",
     ),
     Case(
-        "bytes_per_configuration",
-        lambda robot, analysis: sweep_execute.bytes_per_configuration(robot, analysis),
-        (R, ("analysis", "analysis")),
-    ),
-    Case(
         "wheel_odometry",
         lambda robot, beta, angles, heading: wmr.wheel_odometry(robot, beta, angles, heading),
         (R, ("beta", "samples_beta"), ("angles", "samples_angles"), ("heading", "heading")),
@@ -838,8 +830,7 @@ NOT_FUZZED = {
     "file_keys": "a kind's robot-file keys, checked per kind by wheel_contract.check_files",
     "readable_kinds": "no arguments",
     "Motions": "Drivable bound to a robot (Drivable.bind)",
-    "kappa_J_drivable": "the fused kernel of a drivable sweep, fuzzed through kappa_J_of_twists and sweep",
-    "SwerveKappa": "as kappa_J_drivable (its callers check the robot, L and the twists)",
+    "SwerveKappa": "the fused kernel of a drivable sweep, fuzzed through kappa_J_of_twists and sweep",
     "swerve_like": "a predicate on a checked robot, fuzzed through kappa_J_of_twists",
     "fused_kernel": "as SwerveKappa",
     "kappa_from_gram": "a kernel on SwerveKappa's workspace arrays, fuzzed through kappa_J_of_twists and sweep",

@@ -37,6 +37,7 @@ before                                         now
 ``wmr.swerve.to_chassis(twist)``               :func:`wmr.model.conventions.twist_to` ``(twist, "wpilib")``
 ``wmr.swerve.from_chassis(chassis)``           :func:`wmr.model.conventions.twist_from` ``(chassis, "wpilib")``
 ``wmr.io.chassis``                             :mod:`wmr.io.wpilib` (``twist_of``, ``chassis_speeds``, ``is_chassis_speeds``)
+``wmr.analysis.sweep.gram_kappa``              :mod:`wmr.analysis.gram_kappa` (the same four names)
 =============================================  ===================================================================
 """
 
@@ -49,7 +50,8 @@ from collections.abc import Callable
 from typing import Any
 
 from . import io, swerve
-from .analysis import actuation, advice, families, integration, overview, unit_design
+from .analysis import actuation, advice, families, gram_kappa, integration, overview, unit_design
+from .analysis import sweep as sweep_package
 from .io import mechanism, wheel_tables, wpilib
 from .model import conventions, platform, validation
 from .model import types as model_types
@@ -202,6 +204,15 @@ _moved(_chassis, "wmr.io.chassis", {n: (f"wmr.io.wpilib.{n}", getattr(wpilib, n)
 sys.modules.setdefault("wmr.io.chassis", _chassis)
 setattr(io, "chassis", _chassis)  # noqa: B010 (import wmr.io.chassis finds it, as before)
 sys.modules.setdefault("wmr.analysis.simulation", integration)
+_gram = types.ModuleType("wmr.analysis.sweep.gram_kappa", "Deprecated: :mod:`wmr.analysis.gram_kappa`.")
+_names = ("UPPER", "SCRATCH", "kappa_from_gram", "kappa_by_lapack")
+_moved(
+    _gram,
+    "wmr.analysis.sweep.gram_kappa",
+    {n: (f"wmr.analysis.gram_kappa.{n}", getattr(gram_kappa, n)) for n in _names},
+)
+sys.modules.setdefault("wmr.analysis.sweep.gram_kappa", _gram)
+setattr(sweep_package, "gram_kappa", _gram)  # noqa: B010 (import wmr.analysis.sweep.gram_kappa finds it, as before)
 
 
 def simulate(*args: Any, **kwargs: Any) -> Any:

@@ -68,14 +68,6 @@ def limit_threads(n):
         _state.limit = old
 
 
-def _get_pool():
-    global _pool
-    with _pool_lock:
-        if _pool is None:
-            _pool = ThreadPoolExecutor(max_workers=_default_threads(), thread_name_prefix="wmr")
-        return _pool
-
-
 def _inside(fn, *args):
     """Run ``fn(*args)`` as one chunk: kernels it calls run serially."""
     _state.inside = True
@@ -103,5 +95,9 @@ def for_chunks(fn, n, chunk=CHUNK):
         for a, b in bounds:
             fn(a, b)
         return
-    for _ in _get_pool().map(lambda ab: _inside(fn, *ab), bounds):
+    global _pool
+    with _pool_lock:
+        if _pool is None:
+            _pool = ThreadPoolExecutor(max_workers=_default_threads(), thread_name_prefix="wmr")
+    for _ in _pool.map(lambda ab: _inside(fn, *ab), bounds):
         pass

@@ -1,7 +1,7 @@
 r"""The analyses a sweep evaluates, by name (:data:`ANALYSES`; the table is in :mod:`wmr.analysis.sweep`).
 
-Each one maps a robot and a chunk of configurations :math:`\boldsymbol\beta` (shape ``(k, w)``) to
-one value per configuration (shape ``(k,)``) with the batched kernels.
+Each one maps a robot, a chunk of configurations :math:`\boldsymbol\beta` (shape ``(k, w)``) and the
+characteristic length to one value per configuration (shape ``(k,)``) with the batched kernels.
 """
 
 from __future__ import annotations
@@ -12,89 +12,44 @@ from typing import Any
 
 import numpy as np
 
-from ...model import validation
-from ...model.robot import Robot
+from ..actuation import actuated_mobility
+from ..linalg import condition_number, det
+from ..mobility import mobility, rank_F
 
 __all__ = ["ANALYSES"]
 
 
-def J_length(robot: Robot, L: float | None) -> float:
-    r"""The length of the analyses of :math:`\mathbf J_{L1}`: ``L`` checked, or :func:`wmr.characteristic_length`."""
-    from ..isotropy import characteristic_length
-
-    validation.numeric_robot(robot)
-    return characteristic_length(robot) if L is None else validation.number("L", validation.positive("L", L))
-
-
-def _rank_F(robot, beta, L):
-    from ..mobility import rank_F
-
-    return rank_F(robot, beta)
-
-
-def _mobility(robot, beta, L):
-    from ..mobility import mobility
-
-    return mobility(robot, beta)
-
-
-def _det_J(robot, beta, L):
-    from ..linalg import det
-
-    return det(robot.J(beta, L=L))
-
-
-def _kappa_J(robot, beta, L):
-    from ..linalg import condition_number
-
-    return condition_number(robot.J(beta, L=L))
-
-
-def _kappa_J_drivable(source, start, stop, L, fold):
-    from .motions import kappa_J_drivable
-
-    return kappa_J_drivable(source, start, stop, L, fold)
-
-
-def _kappa_J_fused(robot, L):
-    from .motions import fused_kernel
-    from .swerve_kappa import swerve_like
-
-    return swerve_like(robot) and fused_kernel(robot, J_length(robot, L)) is not None  # (a small robot: cheap)
-
-
-def _actuated(robot, beta, L):
-    from ..actuation import actuated_mobility
-
-    return actuated_mobility(robot, beta)
-
-
-def _kappa_JL1(robot, beta, L):
-    from ..linalg import condition_number
-
-    return np.full(beta.shape[:-1], float(condition_number(robot.J1(L))))
-
-
 @dataclass(frozen=True)
 class _Analysis:
+    """One analysis: its title, its batched evaluation ``(robot, beta (k, w), L) -> (k,)`` and its worst end."""
+
     title: str
-    evaluate: Callable[..., Any]  # (robot, beta (k, w), L) -> (k,)
+    evaluate: Callable[..., Any]
     integer: bool
     worst: str  # "min", "max" or "min_abs"
     uses_L: bool = False
     square: bool = False
-    drivable: Callable[..., Any] | None = None  # (source, start, stop, L, fold) -> bool: a fused kernel
-    fused: Callable[..., bool] | None = None  # (robot, L or None) -> whether ``drivable`` applies
+    fused: bool = False  # a fused kernel over Drivable configurations for swerve-like robots (sweep.motions)
 
 
 #: The analyses :func:`sweep` knows, by name.
 ANALYSES = {
-    "rank_F": _Analysis("rank F", _rank_F, True, "min"),
-    "mobility": _Analysis("mobility", _mobility, True, "min"),
-    "actuated_mobility": _Analysis("actuated mobility", _actuated, True, "min"),
-    "det_J": _Analysis("det J", _det_J, False, "min_abs", uses_L=True, square=True),
-    "kappa_J": _Analysis(
-        "kappa(J)", _kappa_J, False, "max", uses_L=True, drivable=_kappa_J_drivable, fused=_kappa_J_fused
+    "rank_F": _Analysis("rank F", lambda robot, beta, L: rank_F(robot, beta), True, "min"),
+    "mobility": _Analysis("mobility", lambda robot, beta, L: mobility(robot, beta), True, "min"),
+    "actuated_mobility": _Analysis(
+        "actuated mobility", lambda robot, beta, L: actuated_mobility(robot, beta), True, "min"
     ),
-    "kappa_JL1": _Analysis("kappa(J_L1)", _kappa_JL1, False, "max", uses_L=True),
+    "det_J": _Analysis(
+        "det J", lambda robot, beta, L: det(robot.J(beta, L=L)), False, "min_abs", uses_L=True, square=True
+    ),
+    "kappa_J": _Analysis(
+        "kappa(J)", lambda robot, beta, L: condition_number(robot.J(beta, L=L)), False, "max", uses_L=True, fused=True
+    ),
+    "kappa_JL1": _Analysis(
+        "kappa(J_L1)",
+        lambda robot, beta, L: np.full(beta.shape[:-1], float(condition_number(robot.J1(L)))),
+        False,
+        "max",
+        uses_L=True,
+    ),
 }

@@ -1,4 +1,4 @@
-r"""Which configurations a sweep visits: a :class:`Grid`, a :class:`Sample` or explicit angles.
+r"""Which configurations a sweep visits: a :class:`Grid` or a :class:`Sample` of all steering angles.
 
 Every source numbers its configurations ``0 .. size(w) - 1`` and hands out any range of them
 (``configurations(w, start, stop)``, shape ``(stop - start, w)``) without generating the others,
@@ -16,7 +16,7 @@ import numpy as np
 
 from ...errors import InputTypeError, InputValueError
 from ...model import validation
-from ...model.types import ArrayLike, FloatArray
+from ...model.types import FloatArray
 
 __all__ = ["Grid", "Sample"]
 
@@ -232,33 +232,3 @@ class Sample:
         bits = np.random.PCG64(np.random.SeedSequence([self.seed, j]))  # the generator of default_rng([seed, j])
         bits.advance(a * w)
         return np.random.Generator(bits).uniform(self.lo, self.hi, (b - a, w))
-
-
-@dataclass(frozen=True)
-class _Explicit:
-    beta: np.ndarray
-
-    @property
-    def covers(self):
-        return f"the {self.beta.shape[0]:,} configurations given"
-
-    def size(self, w):
-        return self.beta.shape[0]
-
-    def configurations(self, w, start, stop):
-        return self.beta[start:stop]
-
-
-def as_source(angles: Grid | Sample | ArrayLike, w: int) -> Grid | Sample | _Explicit:
-    """The configurations of a sweep: a :class:`Grid` or :class:`Sample` as given, or explicit angles (..., w) as (N, w)."""
-    if isinstance(angles, (Grid, Sample)):
-        if angles.size(w) < 1:
-            raise InputValueError(f"angles has no configurations: {angles!r}")
-        return angles
-    if isinstance(angles, (str, bytes)) or angles is None:
-        raise InputTypeError(f"angles must be a Grid, a Sample or an array (N, {w}) of steering angles, got {angles!r}")
-    beta = validation.finite_array("angles", angles, last=w)
-    beta = beta.reshape(-1, w)
-    if beta.shape[0] == 0:
-        raise InputValueError(f"angles must hold at least one configuration, got shape {np.shape(angles)}")
-    return _Explicit(beta)

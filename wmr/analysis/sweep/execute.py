@@ -7,6 +7,7 @@ Dask worker runs), and the partial reductions are merged as they arrive.
 
 from __future__ import annotations
 
+import contextlib
 import signal
 import threading
 from collections.abc import Callable, Sequence
@@ -19,11 +20,14 @@ from ...model import validation
 from ...model.limits import check, limit
 from ...model.robot import Robot
 from ...model.types import ArrayLike
-from .analyses import ANALYSES, J_length
-from .configurations import BLOCK, Grid, Sample, as_source, count
+from .._batch import limit_threads
+from ..isotropy import characteristic_length
+from .analyses import ANALYSES
+from .configurations import BLOCK, Grid, Sample, count
 from .motions import Drivable, Motions
-from .reduction import Partial
-from .result import Sweep, finish
+from .reduction import Partial, finish
+from .result import Sweep
+from .swerve_kappa import swerve_like
 
 __all__ = ["Angles", "sweep", "QUANTILES", "CHUNK"]
 
@@ -39,39 +43,6 @@ CHUNK = 1 << 18
 #: The default chunk of a sweep with a fused kernel (kappa_J of a swerve over Drivable configurations):
 #: its working memory is per block of twists, not per chunk, and fewer chunks wait less for each other
 FUSED_CHUNK = 1 << 20
-
-
-def _evaluate(task, start, stop, threads):
-    """Evaluate the analysis of ``task`` on configurations ``start .. stop-1``: a :class:`Partial`.
-
-    ``task`` is ``(robot, analysis name, source, w, L, keep)``.
-
-    Runs in this process or on a Dask worker; ``threads`` limits the kernels' threads.
-    """
-    from .._batch import limit_threads
-
-    robot, name, source, w, L, keep = task
-    an = ANALYSES[name]
-
-    def reduced(first, x):
-        part = Partial()
-        part.add(first, x.astype(np.int64) if an.integer else x.astype(float), an.integer, keep)
-        return part
-
-    with limit_threads(threads):
-        if an.drivable is not None and isinstance(source, Motions):  # a fused kernel from the twists,
-            parts: dict[int, Partial] = {}  # reduced block by block on any core
-
-            def fold(first, x):
-                parts[first] = reduced(first, x)
-
-            if an.drivable(source, start, stop, L, fold):
-                whole = Partial()
-                for first in sorted(parts):
-                    whole.merge(parts[first])
-                return whole
-        x = np.asarray(an.evaluate(robot, source.configurations(w, start, stop), L))
-    return reduced(start, x)
 
 
 def sweep(
@@ -152,8 +123,6 @@ def sweep(
     >>> float(wmr.sweep(bot, "det_J", Grid(12)).worst)
     0.0
     """
-    from ...model.robot import Robot
-
     if not isinstance(robot, Robot):
         raise InputTypeError(f"robot must be a wmr.Robot, got {robot!r}")
     if robot.is_symbolic:
@@ -169,64 +138,73 @@ def sweep(
             f"for {robot!r}; use 'kappa_J' for a non-square J"
         )
     w = robot.w
-    source = angles if isinstance(angles, Drivable) else as_source(angles, w)
     qs = tuple(float(validation.real("quantiles", q)) for q in np.atleast_1d(np.asarray(quantiles, dtype=object)))
     if any(not 0.0 <= q <= 1.0 for q in qs):
         raise InputValueError(f"quantiles must lie in [0, 1], got {list(quantiles)}")
-    chunk = count("chunk", chunk)
-    blocks = isinstance(source, (Sample, Drivable))
-    if blocks:
-        chunk = -(-chunk // BLOCK) * BLOCK
     if progress is not None and not callable(progress):
         raise InputTypeError(f"progress must be callable as progress(done, total), got {progress!r}")
     if client is not None and not callable(getattr(client, "map", None)):
         raise InputTypeError(f"client must be a dask.distributed.Client, got {client!r}")
-    keep = bool(keep)
-
-    total = source.size(w)  # the limits, before any work on the robot
-    check("configurations", total, "this sweep")
-    fused = an.fused is not None and isinstance(source, Drivable) and an.fused(robot, L)
+    if L is not None:
+        L = validation.number("L", validation.positive("L", L))
+    source, total, covers = _source(angles, w)
+    chunk = count("chunk", chunk)
+    blocks = isinstance(source, (Sample, Drivable))
+    if blocks:
+        chunk = -(-chunk // BLOCK) * BLOCK
+    check("configurations", total, "this sweep")  # the limits, before any work on the robot
+    fused = an.fused and isinstance(source, Drivable) and swerve_like(robot)
     if fused and chunk == CHUNK:
         chunk = FUSED_CHUNK
-    chunk = _fit_memory(chunk, total, robot, analysis, keep, blocks, fused)
+    chunk = _fit_memory(chunk, total, robot, analysis, bool(keep), blocks, fused)
+    if an.uses_L and L is None:
+        L = characteristic_length(robot)
     if isinstance(source, Drivable):
-        source = source.bind(robot)
-    L = J_length(robot, L) if an.uses_L else None
+        source = Motions(robot, source.n, source.seed, L if fused else None)
     bounds = ((a, min(a + chunk, total)) for a in range(0, total, chunk))
     run = _run_local if client is None else _run_dask
-    with _Interrupt(interruptible) as stop:
-        result = run(bounds, total, progress, client, stop, robot, analysis, source, w, L, keep)
-    return finish(result, analysis, an, source, w, qs, keep, complete=not stop.requested)
+    with _interrupt(interruptible) as stop:
+        result = run(bounds, total, progress, client, stop, robot, analysis, source, w, L, bool(keep))
+    return finish(result, analysis, an, source, w, qs, bool(keep), covers, complete=not stop)
 
 
-def bytes_per_configuration(robot, analysis) -> int:
-    """An upper estimate of the working memory of one configuration in a chunk of ``analysis`` (bytes)."""
-    robot = validation.numeric_robot(robot)
-    if analysis not in ANALYSES:
-        raise InputValueError(f"analysis must be one of {sorted(ANALYSES)}, got {analysis!r}")
-    w, n = robot.w, robot.n_rates
-    own = {
-        "rank_F": 40 * w,
-        "mobility": 40 * w,
-        "actuated_mobility": 80 * w,
-        "det_J": 24 * n + 32,
-        "kappa_J": 24 * n + 64,
-        "kappa_JL1": 8,
-    }[analysis]
-    return 8 * (6 * w + 48 + own)
+def _source(angles, w):
+    """The source of a sweep's configurations (explicit angles as an array (N, w)), their number and what they cover."""
+    if isinstance(angles, (Grid, Sample, Drivable)):
+        size = angles.size(w)
+        if size < 1:
+            raise InputValueError(f"angles has no configurations: {angles!r}")
+        return angles, size, angles.covers
+    if isinstance(angles, (str, bytes)) or angles is None:
+        raise InputTypeError(f"angles must be a Grid, a Sample or an array (N, {w}) of steering angles, got {angles!r}")
+    beta = validation.finite_array("angles", angles, last=w).reshape(-1, w)
+    if beta.shape[0] == 0:
+        raise InputValueError(f"angles must hold at least one configuration, got shape {np.shape(angles)}")
+    return beta, beta.shape[0], f"the {beta.shape[0]:,} configurations given"
 
 
-def _fit_memory(chunk, total, robot, analysis, keep, blocks, fused=False):
+#: bytes of one configuration's working memory in a chunk, by analysis: ``8 (6 w + 48 + a w + b n + c)`` for (a, b, c)
+_BYTES = {
+    "rank_F": (40, 0, 0),
+    "mobility": (40, 0, 0),
+    "actuated_mobility": (80, 0, 0),
+    "det_J": (0, 24, 32),
+    "kappa_J": (0, 24, 64),
+    "kappa_JL1": (0, 0, 8),
+}
+
+
+def _fit_memory(chunk, total, robot, analysis, keep, blocks, fused):
     """The chunk, made small enough for the memory limit (:mod:`wmr.model.limits`), or a LimitError.
 
-    A fused kernel (``fused``) holds a value and a share of its block's reduction per configuration
-    (64 bytes) beside a few MB per thread.
+    A fused kernel holds a value and a share of its block's reduction per configuration (64 bytes).
     """
     budget = limit("memory_mb") * 2**20
     if keep:
         check("memory_mb", (8 * total + 64 * 2**20) / 2**20, "the sweep's kept values (keep=True)")
         budget -= 8 * total
-    per = 64 if fused else bytes_per_configuration(robot, analysis)
+    a, b, c = _BYTES[analysis]
+    per = 64 if fused else 8 * (6 * robot.w + 48 + a * robot.w + b * robot.n_rates + c)
     per += 3 * 8 * BLOCK * robot.w // chunk if blocks else 0
     fits = int(budget // 2 // per)  # half the budget: the reduction, Python and NumPy themselves
     if fits < 256:
@@ -237,42 +215,57 @@ def _fit_memory(chunk, total, robot, analysis, keep, blocks, fused=False):
     return chunk
 
 
-class _Interrupt:
-    """Within the ``with`` block, a first Ctrl-C (SIGINT) asks the sweep to stop after the chunk in progress.
+@contextlib.contextmanager
+def _interrupt(enabled):
+    """Within the block, a first Ctrl-C (SIGINT) asks the sweep to stop after the chunk in progress (a list, true then).
 
-    Only when ``enabled`` and in the main thread (where Python delivers signals); a second Ctrl-C
-    interrupts at once (the default handler is back).
+    Only when ``enabled`` and in the main thread; a second Ctrl-C interrupts at once (the default handler is back).
     """
+    stop: list[bool] = []
+    if not enabled or threading.current_thread() is not threading.main_thread():
+        yield stop
+        return
+    old = signal.getsignal(signal.SIGINT)
 
-    def __init__(self, enabled):
-        self.enabled, self.requested, self._old = bool(enabled), False, None
+    def handler(signum, frame):
+        stop.append(True)
+        signal.signal(signal.SIGINT, old)
 
-    def _handler(self, signum, frame):
-        self.requested = True
-        signal.signal(signal.SIGINT, self._old)
+    signal.signal(signal.SIGINT, handler)
+    try:
+        yield stop
+    finally:
+        if signal.getsignal(signal.SIGINT) == handler:
+            signal.signal(signal.SIGINT, old)
 
-    def __enter__(self):
-        if self.enabled and threading.current_thread() is threading.main_thread():
-            self._old = signal.signal(signal.SIGINT, self._handler)
-        return self
 
-    def __exit__(self, *exc):
-        if self._old is not None and signal.getsignal(signal.SIGINT) == self._handler:
-            signal.signal(signal.SIGINT, self._old)
-        return False
+def _evaluate(task, start, stop, threads):
+    """The :class:`Partial` of configurations ``start .. stop-1`` of ``task`` (run here or on a Dask worker).
+
+    ``task`` is ``(robot, analysis name, source, w, L, keep)``; ``threads`` limits the kernels' threads.
+    """
+    robot, name, source, w, L, keep = task
+    an = ANALYSES[name]
+    with limit_threads(threads):
+        if isinstance(source, Motions) and source.L is not None:  # the fused kernel, from the twists
+            return source.kappa_J(start, stop, keep)
+        beta = source[start:stop] if isinstance(source, np.ndarray) else source.configurations(w, start, stop)
+        x = np.asarray(an.evaluate(robot, beta, L))
+    return Partial().add(start, x.astype(np.int64) if an.integer else x.astype(float), an.integer, keep)
 
 
 def _run_local(bounds, total, progress, client, stop, *task):
     """Evaluate the chunks ``bounds`` one after the other in this process; the merged :class:`Partial`."""
-    result, done = Partial(), 0
+    result, done = None, 0
     for a, b in bounds:
-        if stop.requested:
+        if stop:
             break
-        result.merge(_evaluate(task, a, b, None))
+        part = _evaluate(task, a, b, None)
+        result = part if result is None else result.merge(part)
         done += b - a
         if progress is not None:
             progress(done, total)
-    return result
+    return Partial() if result is None else result
 
 
 def _run_dask(bounds, total, progress, client, stop, *task):
@@ -284,7 +277,7 @@ def _run_dask(bounds, total, progress, client, stop, *task):
     futures = client.map(_evaluate, [task] * n, [a for a, _ in bounds], [b for _, b in bounds], [1] * n, pure=False)
     result, done = Partial(), 0
     for fut in as_completed(futures):
-        if stop.requested:
+        if stop:
             client.cancel(futures)
             break
         part = fut.result()

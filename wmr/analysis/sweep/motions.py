@@ -1,9 +1,9 @@
-r"""The configurations a robot can drive in: the steering angles of sampled twists (:class:`Drivable`).
+r"""The configurations a robot can drive in: the steering angles of sampled twists (:class:`~wmr.analysis.sweep.Drivable`).
 
 A steered robot moves only where its wheels are coordinated: every centred or dual wheel rolls in
 the direction of its mount point's velocity (:func:`wmr.steering_angles`).  Those configurations
 have measure zero on the torus of all steering angles, so a :class:`~wmr.analysis.sweep.Grid` or a
-:class:`~wmr.analysis.sweep.Sample` essentially never visits one.  :class:`Drivable` samples **twists**
+:class:`~wmr.analysis.sweep.Sample` essentially never visits one.  :class:`~wmr.analysis.sweep.Drivable` samples **twists**
 instead and takes the steering angles that make each admissible:
 
 * twist k is drawn in the dimensionless coordinates :math:`\hat{\mathbf t} = \mathbf t\circ\mathbf s`
@@ -26,8 +26,8 @@ the general kernels.
 from __future__ import annotations
 
 import math
-import threading
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 
@@ -35,10 +35,12 @@ from ...errors import InputValueError
 from ...model import validation
 from ...model.tolerance import TOL
 from .._batch import for_chunks
+from ..isotropy import characteristic_length
 from ..linalg import condition_number, null_space
 from ..mobility import twist_constraints
 from ..steering import steering_angles
 from .configurations import BLOCK, count
+from .reduction import Partial
 from .swerve_kappa import SwerveKappa, swerve_like
 
 __all__ = ["Drivable"]
@@ -73,6 +75,14 @@ class Drivable:
         object.__setattr__(self, "n", count("n", self.n))
         object.__setattr__(self, "seed", count("seed", self.seed, minimum=0))
 
+    @property
+    def covers(self):
+        """The set of configurations, in words (for the reductions)."""
+        return (
+            f"drivable configurations: the steering angles of {self.n:,} twists sampled over the directions "
+            f"the robot can move in (seed {self.seed})"
+        )
+
     def size(self, w):
         """Number of configurations (``n``).
 
@@ -98,15 +108,17 @@ class Drivable:
         -------
         Motions
         """
-        return Motions(robot, self.n, self.seed)
+        return Motions(validation.numeric_robot(robot), self.n, self.seed)
 
 
 class Motions:
-    """:class:`Drivable` bound to a robot: twist k and its configuration, for any range of k."""
+    """:class:`Drivable` bound to a robot: twist k and its configuration, for any range of k.
 
-    def __init__(self, robot, n, seed):
-        robot = validation.numeric_robot(robot)
-        self.robot, self.n, self.seed = robot, n, seed  # (checked by Drivable)
+    ``L``: the characteristic length of the fused kernel of ``kappa_J`` (a swerve-like robot), or None.
+    """
+
+    def __init__(self, robot, n, seed, L=None):
+        self.robot, self.n, self.seed, self.L = robot, n, seed, L
         self.scale = robot.F_column_norms[:3]
         fixed = [i for i, u in enumerate(robot.wheels) if not u.steered]
         # the directions the fixed wheels allow, N(C1f) in dimensionless twists, as the projector onto them:
@@ -121,36 +133,6 @@ class Motions:
                 P = N @ N.T
                 self.projector = np.where(np.abs(P) <= TOL, 0.0, P)
         self.free = [i for i, u in enumerate(robot.wheels) if u.steered and not u.rolls_in_plane]
-        self._kernels: dict[float, SwerveKappa | None] = {}
-        self._lock = threading.Lock()
-
-    def __getstate__(self):  # for a Dask worker: the kernels are rebuilt there
-        state = dict(self.__dict__)
-        state["_kernels"], state["_lock"] = {}, None
-        return state
-
-    def __setstate__(self, state):
-        self.__dict__.update(state)
-        self._lock = threading.Lock()
-
-    def kappa_kernel(self, L):
-        """The fused kernel of ``kappa_J`` for this robot and ``L`` (built once), or None when none applies."""
-        with self._lock:
-            if L not in self._kernels:
-                self._kernels[L] = fused_kernel(self.robot, L)
-            return self._kernels[L]
-
-    @property
-    def covers(self):
-        """The set of configurations, in words (for the reductions)."""
-        return (
-            f"drivable configurations: the steering angles of {self.n:,} twists sampled over the directions "
-            f"the robot can move in (seed {self.seed})"
-        )
-
-    def size(self, w):
-        """Number of configurations (``n``)."""
-        return self.n
 
     def twists(self, start, stop):
         """Twists ``start .. stop-1`` (k, 3) and the angles of the freely steered units (k, w) or None."""
@@ -163,65 +145,68 @@ class Motions:
                 curs.append(rng.uniform(-math.pi, math.pi, (BLOCK, len(self.free))))
         a, b = start - first * BLOCK, stop - first * BLOCK
         g = np.concatenate(tws, axis=1)[:, a:b] if len(tws) > 1 else tws[0][:, a:b]
+        current = None
+        if self.free:
+            current = np.zeros((b - a, self.robot.w))
+            current[:, self.free] = np.concatenate(curs)[a:b]
         # t = (P g) / s, written out (a BLAS product of (3, k) by (3, 3) would start threads for nothing);
         # entry-major: each component of the twists is one contiguous vector.  P g is a standard normal
         # draw over the allowed directions (P projects orthogonally)
         M = self.projector / self.scale[:, None]
         if not np.any(M - np.diag(np.diag(M))):  # a diagonal map (no fixed wheel, or axis-aligned ones), in place
             g *= np.diag(M)[:, None]  # (g is a fresh draw: changed in place)
-            return g.T, None if not self.free else self._current(curs, a, b)
+            return g.T, current
         tw = np.zeros((3, b - a))
         for c in range(3):
             for j in range(3):
                 if M[c, j] != 0.0:
                     tw[c] += g[j] * M[c, j]
-        tw = tw.T
-        return tw, None if not self.free else self._current(curs, a, b)
-
-    def _current(self, curs, a, b):
-        current = np.zeros((b - a, self.robot.w))
-        current[:, self.free] = np.concatenate(curs)[a:b]
-        return current
+        return tw.T, current
 
     def configurations(self, w, start, stop):
         """Configurations ``start .. stop-1``: the steering angles of the twists (k, w)."""
-        tw, current = self.twists(start, stop)
-        return steering_angles(self.robot, tw, current)
+        return steering_angles(self.robot, *self.twists(start, stop))
+
+    @cached_property
+    def kernel(self):
+        """The fused kernel of ``kappa_J`` (:func:`fused_kernel`), built where it is first used, or None."""
+        return fused_kernel(self.robot, self.L)
+
+    def kappa_J(self, start, stop, keep):
+        r"""The :class:`Partial` of :math:`\kappa(\mathbf J)` over ``start .. stop-1`` by the fused kernel, block by block.
+
+        Each block of twists is drawn, evaluated and reduced in one task (any thread); ``start`` is a multiple
+        of :data:`~wmr.analysis.sweep.configurations.BLOCK`.
+        """
+        parts: dict[int, Partial] = {}
+
+        def block(a, b):
+            x = _evaluate(self, self.robot, self.twists(start + a, start + b)[0], self.L)
+            parts[a] = Partial().add(start + a, x, False, keep)
+
+        for_chunks(block, stop - start, BLOCK)
+        whole = Partial()
+        for a in sorted(parts):
+            whole.merge(parts[a])
+        return whole
 
 
-def fused_kernel(robot, L):
-    """The fused kernel of ``kappa_J`` for ``robot`` and ``L``, or None when the robot is not swerve-like."""
+def fused_kernel(robot, L=None):
+    """The fused kernel of ``kappa_J`` for ``robot`` and ``L`` (default its characteristic length), or None."""
     if not swerve_like(robot):
         return None
     try:
-        return SwerveKappa(robot, L)
+        return SwerveKappa(robot, characteristic_length(robot) if L is None else L)
     except InputValueError:  # det J does not vanish in translation: no fused kernel
         return None
 
 
-def kappa_J_drivable(source, start, stop, L, fold):
-    r""":math:`\kappa(\mathbf J)` over configurations ``start`` to ``stop - 1`` of a drivable source, block by block.
-
-    Each block of twists is drawn, evaluated and handed to ``fold(first, values)`` in one task (any
-    thread); ``start`` is a multiple of :data:`~wmr.analysis.sweep.configurations.BLOCK`.  False when no
-    fused kernel applies (nothing was evaluated).
-    """
-    kernel = source.kappa_kernel(L)
-    if kernel is None:
-        return False
-
-    def block(a, b):
-        fold(start + a, _evaluate(kernel, source.robot, source.twists(start + a, start + b)[0], L))
-
-    for_chunks(block, stop - start, BLOCK)
-    return True
-
-
-def _evaluate(kernel, robot, twist, L):
-    """The kernel on ``twist (k, 3)``, and the general kernels on the members it did not certify."""
+def _evaluate(source, robot, twist, L):
+    """The kernel of ``source`` on ``twist (k, 3)``, and the general kernels on the members it did not certify."""
     out = np.empty(twist.shape[0])
-    redo = np.empty(twist.shape[0], dtype=bool)
-    kernel(twist, out, redo)
+    redo = np.ones(twist.shape[0], dtype=bool)
+    if source.kernel is not None:
+        source.kernel(twist, out, redo)
     if redo.any():
         rows = np.flatnonzero(redo)
         out[rows] = condition_number(robot.J(steering_angles(robot, twist[rows]), L=L))
@@ -237,13 +222,13 @@ def kappa_J_of_twists(robot, twist, L):
     robot = validation.numeric_robot(robot)
     twist = validation.finite_array("twist", twist, last=3).reshape(-1, 3)
     L = validation.number("L", validation.positive("L", L))
-    kernel = fused_kernel(robot, L)
-    if kernel is None:
+    source = Motions(robot, 0, 0, L)
+    if source.kernel is None:
         return None
     out = np.empty(twist.shape[0])
 
     def chunk(a, b):
-        out[a:b] = _evaluate(kernel, robot, twist[a:b], L)
+        out[a:b] = _evaluate(source, robot, twist[a:b], L)
 
     for_chunks(chunk, twist.shape[0], BLOCK)
     return out

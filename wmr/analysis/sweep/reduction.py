@@ -15,6 +15,7 @@ import numpy as np
 
 from ...io.decimals import quantise
 from ...model.types import FloatArray
+from .result import Sweep
 
 __all__ = ["SKETCH_ACCURACY", "first_written"]
 
@@ -130,8 +131,8 @@ class Partial:
     infinite: int = 0  # +inf (a condition number at a singular configuration)
     values: list = field(default_factory=list)  # (start, array) when kept
 
-    def add(self, start: int, x: FloatArray, integer: bool, keep: bool) -> None:
-        """Fold in the values ``x (k,)`` of configurations ``start .. start + k - 1`` (integers counted, reals sketched)."""
+    def add(self, start: int, x: FloatArray, integer: bool, keep: bool) -> Partial:
+        """Fold in the values ``x (k,)`` of configurations ``start .. start + k - 1`` and return this reduction."""
         self.count += x.size
         lo, hi, ax = float(x.min()), float(x.max()), np.abs(x)
         small = float(ax.min())
@@ -151,6 +152,7 @@ class Partial:
             self.negative.add(_bucket(-neg))
         if keep:
             self.values.append((start, x.copy()))
+        return self
 
     @staticmethod
     def _first(v, at, best, best_at, sign):
@@ -211,3 +213,40 @@ class Partial:
             return 0.0
         k, rank = self.positive.locate(rank - self.zeros)
         return math.inf if k is None else _bucket_value(k)
+
+
+def finish(part, name, an, source, w, qs, keep, covers, complete=True):
+    """The :class:`Sweep` of the reduction ``part`` of analysis ``name`` (entry ``an``) over ``source``.
+
+    ``qs``: the quantiles to report; ``covers``: the configurations in words; ``complete`` False: interrupted.
+    """
+    worst, at = {"min": (part.lo, part.lo_at), "max": (part.hi, part.hi_at), "min_abs": (part.small, part.small_at)}[
+        an.worst
+    ]
+    values = None
+    if keep:
+        values = np.empty(part.count)
+        for start, x in part.values:
+            values[start : start + x.size] = x
+    quantiles = {q: part.quantile(q, an.integer) for q in qs}
+    argmin, argmax, worst_angles = (
+        source[k] if isinstance(source, np.ndarray) else source.configurations(w, k, k + 1)[0]
+        for k in (part.lo_at, part.hi_at, at)
+    )
+    return Sweep(
+        analysis=name,
+        count=part.count,
+        min=part.lo,
+        max=part.hi,
+        argmin=argmin,
+        argmax=argmax,
+        worst=worst,
+        worst_angles=worst_angles,
+        worst_index=at,
+        quantiles=quantiles,
+        counts=dict(part.integers.items()) if an.integer else {},
+        infinite=part.infinite,
+        values=values,
+        covers=covers,
+        complete=complete,
+    )

@@ -106,39 +106,3 @@ class Sweep:
             + ") deg"
         )
         return "\n".join(lines)
-
-
-def finish(part, name, an, source, w, qs, keep, complete=True):
-    """The :class:`Sweep` of the reduction ``part`` of analysis ``name`` (entry ``an``) over ``source``.
-
-    ``qs``: the quantiles to report; ``complete`` False: an interrupted sweep.
-    """
-
-    def angles_at(k):
-        return source.configurations(w, k, k + 1)[0]
-
-    worst, at = {"min": (part.lo, part.lo_at), "max": (part.hi, part.hi_at), "min_abs": (part.small, part.small_at)}[
-        an.worst
-    ]
-    values = None
-    if keep:
-        values = np.empty(part.count)
-        for start, x in part.values:
-            values[start : start + x.size] = x
-    return Sweep(
-        analysis=name,
-        count=part.count,
-        min=part.lo,
-        max=part.hi,
-        argmin=angles_at(part.lo_at),
-        argmax=angles_at(part.hi_at),
-        worst=worst,
-        worst_angles=angles_at(at),
-        worst_index=at,
-        quantiles={q: part.quantile(q, an.integer) for q in qs},
-        counts=dict(part.integers.items()) if an.integer else {},
-        infinite=part.infinite,
-        values=values,
-        covers=str(getattr(source, "covers", "")),
-        complete=complete,
-    )

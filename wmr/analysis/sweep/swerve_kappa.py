@@ -118,20 +118,18 @@ class SwerveKappa:
     Parameters
     ----------
     robot : Robot
-        A numeric swerve-like robot (:func:`swerve_like`).
+        A numeric swerve-like robot (:func:`~wmr.analysis.sweep.motions.swerve_like`).
     L : float
         Characteristic length of :math:`\mathbf J_{L1}`.
 
     Raises
     ------
     wmr.errors.InputValueError
-        If the robot is not swerve-like, or its :math:`\det\mathbf J_S` do not vanish in translation
+        If the robot's :math:`\det\mathbf J_S` do not vanish in translation
         (then no fused kernel applies).
     """
 
     def __init__(self, robot, L):
-        if not swerve_like(robot):
-            raise InputValueError(f"robot must be swerve-like for the fused kappa(J) kernel, got {robot!r}")
         w = robot.w
         JL1 = robot.J1(L=L)
         d = np.asarray(robot.mount_points, dtype=float)
@@ -169,7 +167,7 @@ class SwerveKappa:
             for m, (j, k) in enumerate(_UPPER):
                 qcoef[s, m] = float(cubic.get((0, j, k), 0))
         comp = [tuple(i for i in range(w) if i not in S) for S in subsets]
-        self.w, self.ell, self.lin = w, ell, lin
+        self.w, self.ell, self.lin, self.L = w, ell, lin, L
         self.coef = coef
         self.qcoef, self.qabs = qcoef, np.abs(qcoef)
         self.comp = comp
