@@ -205,11 +205,11 @@ sys.modules.setdefault("wmr.io.chassis", _chassis)
 setattr(io, "chassis", _chassis)  # noqa: B010 (import wmr.io.chassis finds it, as before)
 sys.modules.setdefault("wmr.analysis.simulation", integration)
 _gram = types.ModuleType("wmr.analysis.sweep.gram_kappa", "Deprecated: :mod:`wmr.analysis.gram_kappa`.")
-_names = ("UPPER", "SCRATCH", "kappa_from_gram", "kappa_by_lapack")
+_GRAM = ("UPPER", "SCRATCH", "kappa_from_gram", "kappa_by_lapack")
 _moved(
     _gram,
     "wmr.analysis.sweep.gram_kappa",
-    {n: (f"wmr.analysis.gram_kappa.{n}", getattr(gram_kappa, n)) for n in _names},
+    {n: (f"wmr.analysis.gram_kappa.{n}", getattr(gram_kappa, n)) for n in _GRAM},
 )
 sys.modules.setdefault("wmr.analysis.sweep.gram_kappa", _gram)
 setattr(sweep_package, "gram_kappa", _gram)  # noqa: B010 (import wmr.analysis.sweep.gram_kappa finds it, as before)
