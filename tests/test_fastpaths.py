@@ -276,3 +276,20 @@ def test_robot_matrices_equal_the_dense_definitions(kind):
     assert np.allclose(F, R.F(bot, beta), rtol=0, atol=4e-16)
     assert np.array_equal(F[7, 11], bot.F(beta[7, 11]))  # one configuration = any batch
     assert np.array_equal(np.ascontiguousarray(F), F)  # the layout changes no value
+
+
+# ----------------------------------------------------------------------------- motion_kappa
+@pytest.mark.parametrize("kind", ["centred", "dual"])
+def test_motion_kappa_equals_the_svd_of_the_dense_J(kind):
+    """kappa(J) along the admissible motions (3x3 closed form or SVD of the fast J) against the dense definitions."""
+    from wmr.analysis.motion_kappa import motion_kappa
+
+    bot = wmr.paper_robot(kind, L=0.3, r=0.05)
+    L = wmr.characteristic_length(bot)
+    twist = np.random.default_rng(3).normal(size=(20_000, 3))
+    twist[:50, 0] = 0.0  # translations: singular J for centred wheels
+    got = motion_kappa(bot, twist, L)
+    want = R.condition_number(R.J(bot, wmr.steering_angles(bot, twist), L))
+    fin = np.isfinite(want)
+    assert np.array_equal(np.isinf(got), ~fin)
+    assert np.all(np.abs(got[fin] / want[fin] - 1) <= 1e-12 + 64 * EPS * want[fin])

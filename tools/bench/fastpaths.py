@@ -16,6 +16,8 @@ import wmr
 from tools.bench.floors import SEED, best_of, same_kappa, swerve_robot
 from wmr.analysis import linalg as LA
 from wmr.analysis import reference as R
+from wmr.analysis.motion_kappa import motion_kappa
+from wmr.analysis.sweep.motions import kappa_J_of_twists
 from wmr.analysis.sweep.reduction import first_written
 from wmr.io.decimals import quantise
 
@@ -24,7 +26,7 @@ def rows(n):
     """``(name, fast, plain, same)`` for every fast path, on ``n`` configurations."""
     rng = np.random.default_rng(SEED)
     centred, dual, swerve = wmr.paper_robot("centred"), wmr.paper_robot("dual"), swerve_robot()
-    L = wmr.characteristic_length(centred)
+    L, L_sw = wmr.characteristic_length(centred), wmr.characteristic_length(swerve)
     beta = rng.uniform(-np.pi, np.pi, (n, 3))
     twist = rng.normal(size=(n, 3))
     rates = rng.normal(size=(n, 3))
@@ -51,9 +53,15 @@ def rows(n):
             lambda a, b: np.allclose(a, b, rtol=1e-12, atol=1e-14),
         ),
         (
-            "kappa(J), 3 dual (3x6, general)",
-            lambda: wmr.condition_number(dual.J(beta, L=L)),
-            lambda: R.condition_number(R.J(dual, beta, L)),
+            "kappa(J) from twists, swerve (fused)",
+            lambda: kappa_J_of_twists(swerve, twist, L_sw),
+            lambda: R.condition_number(R.J(swerve, wmr.steering_angles(swerve, twist), L_sw)),
+            _same_fused,
+        ),
+        (
+            "motion_kappa, 3 centred (from twists)",
+            lambda: motion_kappa(centred, twist, L),
+            lambda: R.condition_number(R.J(centred, wmr.steering_angles(centred, twist), L)),
             same_kappa,
         ),
         (
@@ -93,6 +101,13 @@ def rows(n):
             lambda a, b: a == b,
         ),
     ]
+
+
+def _same_fused(got, want):
+    """The fused kernel's accuracy: a relative 1e-12 or 64 eps kappa (tests/test_sweep_drivable.py), inf alike."""
+    fin = np.isfinite(want)
+    err = np.abs(got[fin] / want[fin] - 1)
+    return bool(np.array_equal(np.isinf(got), ~fin) and np.all(err <= 1e-12 + 64 * np.finfo(float).eps * want[fin]))
 
 
 def _extremes_fast(x):

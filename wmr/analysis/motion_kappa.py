@@ -55,7 +55,11 @@ def rotation_twists(centres: ArrayLike) -> FloatArray:
     >>> rotation_twists([0.0, 2.0]).tolist()           # about (0, 2): C moves along +x
     [1.0, 2.0, -0.0]
     """
-    U = validation.finite_array("centres", centres, last=2)
+    return _rotations(validation.finite_array("centres", centres, last=2))
+
+
+def _rotations(U):
+    """:func:`rotation_twists` of checked centres."""
     return np.stack([np.ones(U.shape[:-1]), U[..., 1], -U[..., 0]], axis=-1)
 
 
@@ -83,8 +87,16 @@ def motion_kappa(robot: Robot, twist: TwistLike, L: float | None = None) -> Floa
     >>> round(float(motion_kappa(bot, [1.0, 0.0, 0.0])), 9), float(motion_kappa(bot, [0.0, 1.0, 0.0]))
     (1.414213562, inf)
     """
-    robot = validation.numeric_robot(robot)
-    L = characteristic_length(robot) if L is None else validation.number("L", validation.positive("L", L))
+    return _kappa(validation.numeric_robot(robot), twist, _length(robot, L))
+
+
+def _length(robot, L):
+    """``L`` checked, or the characteristic length of a checked ``robot``."""
+    return characteristic_length(robot) if L is None else validation.number("L", validation.positive("L", L))
+
+
+def _kappa(robot, twist, L):
+    """:func:`motion_kappa` of a checked robot and length."""
     return condition_number(robot.J(steering_angles(robot, twist), L=L))
 
 
@@ -100,7 +112,11 @@ def mount_circle(robot: Robot) -> tuple[FloatArray, float] | None:
     -------
     tuple (centre numpy.ndarray (2,), radius float) or None
     """
-    d = validation.numeric_robot(robot).mount_points
+    return _circle(validation.numeric_robot(robot).mount_points)
+
+
+def _circle(d):
+    """:func:`mount_circle` of the mount points ``d`` (w, 2)."""
     if len(d) < 3:
         return None
     try:
@@ -165,6 +181,7 @@ def motion_map(robot: Robot, n: int = 121, half_width: float | None = None, L: f
     """
     robot = validation.numeric_robot(robot)
     n = validation.integer("n", n, minimum=2)
+    L = _length(robot, L)
     d = robot.mount_points
     if half_width is None:
         h = 2.5 * float(np.linalg.norm(d, axis=1).max())
@@ -172,15 +189,15 @@ def motion_map(robot: Robot, n: int = 121, half_width: float | None = None, L: f
         h = float(validation.number("half_width", validation.positive("half_width", half_width)))
     x = y = np.linspace(-h, h, n)
     U = np.stack(np.meshgrid(x, y), axis=-1)  # (n, n, 2)
-    K = motion_kappa(robot, rotation_twists(U), L=L)
+    K = _kappa(robot, _rotations(U), L)
     k = int(np.argmin(K))
     return MotionMap(
         x=x,
         y=y,
         kappa=K,
         mounts=d,
-        circle=mount_circle(robot),
+        circle=_circle(d),
         kappa_min=float(K.flat[k]),
         argmin=U.reshape(-1, 2)[k].copy(),
-        kappa_translation=float(motion_kappa(robot, [0.0, 1.0, 0.0], L=L)),
+        kappa_translation=float(_kappa(robot, np.array([0.0, 1.0, 0.0]), L)),
     )
