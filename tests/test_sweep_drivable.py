@@ -215,3 +215,19 @@ def test_fused_sweep_does_not_depend_on_the_chunk():
     b = sweep(SWERVE, "kappa_J", Drivable(n, seed=2), keep=True, chunk=BLOCK)
     assert a.values is not None and b.values is not None
     assert np.array_equal(a.values, b.values) and a.quantiles == b.quantiles and a.worst_index == b.worst_index
+
+
+def test_fused_sweep_on_dask_equals_in_process():
+    """The bound source travels to the workers without its kernel, which each worker builds where it first uses it."""
+    distributed = pytest.importorskip("dask.distributed")
+    from wmr.analysis.sweep.configurations import BLOCK
+
+    local = sweep(SWERVE, "kappa_J", Drivable(2 * BLOCK + 7, seed=4), keep=True)
+    with (
+        distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster,
+        distributed.Client(cluster) as client,
+    ):
+        remote = sweep(SWERVE, "kappa_J", Drivable(2 * BLOCK + 7, seed=4), keep=True, chunk=BLOCK, client=client)
+    assert remote.values is not None and local.values is not None
+    assert np.array_equal(remote.values, local.values) and remote.quantiles == local.quantiles
+    assert remote.worst_index == local.worst_index
