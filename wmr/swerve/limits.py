@@ -1,29 +1,10 @@
 r"""Commanding a real swerve drive: desaturation, cosine compensation, discretisation (the SE(2) exponential).
 
-Desaturation
-    The module speeds are linear in the twist, :math:`s_i = \|\dot{\mathbf c} + \dot\psi\mathbf E\mathbf d_i\|`
-    (2), and the steering angles depend only on its direction: scaling the **twist** by
-    :math:`k = \min(1, s_{\max}/\max_i s_i)` keeps the instantaneous centre
-    :math:`\mathbf u_c = \mathbf E\dot{\mathbf c}/\dot\psi` (63) and every angle.  WPILib's
-    ``desaturateWheelSpeeds`` scales the module speeds by the same :math:`k`, which is the same
-    thing for a continuous twist -- but applied after ``ChassisSpeeds.discretize`` it scales the
-    *discretised* twist, whose exponential is no longer the commanded arc: the robot drifts
-    sideways (WPILib's own docstring warns of it).  Desaturate first, then discretise.
-Cosine compensation
-    While module :math:`i` is at :math:`\beta_i` instead of its target :math:`\beta^*_i`, drive it at
-    :math:`s_i\cos(\beta_i - \beta^*_i)`: the component of the wanted wheel velocity along the
-    wheel's actual rolling direction (WPILib's ``SwerveModuleState.cosineScale``).
-Discretisation
-    A twist held for a control period :math:`\Delta t` moves the robot along an arc, the SE(2)
-    exponential (:func:`se2_exp`):
-
-    .. math:: \Delta\psi = \dot\psi\Delta t, \qquad
-              \Delta\mathbf c = \mathbf V(\Delta\psi)\,\dot{\mathbf c}\,\Delta t, \qquad
-              \mathbf V(\theta) = \frac{\sin\theta}{\theta}\mathbf I + \frac{1-\cos\theta}{\theta}\mathbf E
-
-    (body frame at the start of the period).  :func:`discretize` returns the twist whose arc
-    ends at :math:`(\dot\psi\Delta t, \dot x\Delta t, \dot y\Delta t)`, i.e. :func:`se2_log` of that
-    pose over :math:`\Delta t` (WPILib's ``ChassisSpeeds.discretize``).
+The module speeds are linear in the twist and the angles depend only on its direction, so scaling the **twist**
+(:func:`desaturate`) keeps the instantaneous centre (63) and every angle.  WPILib's ``desaturateWheelSpeeds``
+scales the module speeds by the same factor, which is the same thing for a continuous twist, but applied after
+``ChassisSpeeds.discretize`` it scales the *discretised* twist, whose arc is no longer the commanded one (the robot
+drifts sideways).  Desaturate first, then discretise.
 """
 
 from __future__ import annotations
@@ -155,7 +136,9 @@ def se2_exp(twist: TwistLike, dt: float = 1.0) -> FloatArray:
     numpy.ndarray (..., 3)
         :math:`[\Delta\psi, \Delta x, \Delta y]` in the body frame at the start:
         :math:`\Delta\psi = \dot\psi\,\Delta t`,
-        :math:`\Delta\mathbf c = \mathbf V(\Delta\psi)\dot{\mathbf c}\,\Delta t`.
+        :math:`\Delta\mathbf c = \mathbf V(\Delta\psi)\dot{\mathbf c}\,\Delta t`,
+        :math:`\mathbf V(\theta) = A\mathbf I + B\mathbf E`, :math:`A = \sin\theta/\theta`,
+        :math:`B = (1-\cos\theta)/\theta`.
 
     Examples
     --------
