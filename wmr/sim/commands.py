@@ -68,14 +68,6 @@ def twist_schedule(
     Returns
     -------
     Schedule
-
-    Examples
-    --------
-    >>> import wmr
-    >>> bot = wmr.paper_robot("centred", L=0.3, r=0.05)
-    >>> s = twist_schedule(bot, [0.0, 0.5, 0.0], 1.0)
-    >>> s.rates[0].round(9).tolist()                        # v = r theta_dot: 0.5 / 0.05
-    [10.0, 10.0, 10.0]
     """
     robot = validation.numeric_robot(robot)
     twist = validation.finite_array("twist", twist, last=3).reshape(3)

@@ -75,13 +75,6 @@ def desaturate(robot: Robot, twist: TwistLike, max_speed: float) -> FloatArray:
     Returns
     -------
     numpy.ndarray (..., 3)
-
-    Examples
-    --------
-    >>> import wmr
-    >>> bot = wmr.Robot([wmr.CentredWheel((x, y), r=0.05) for x, y in [(1, 1), (1, -1), (-1, 1), (-1, -1)]])
-    >>> desaturate(bot, [0.0, 3.0, 4.0], max_speed=2.0).round(12).tolist()   # modules at 5 m/s
-    [0.0, 1.2, 1.6]
     """
     t = validation.twist_array("twist", twist)
     return t * desaturation_scale(robot, t, max_speed)[..., None]
@@ -103,11 +96,6 @@ def cosine_compensate(speed: ArrayLike, beta: ArrayLike, target: ArrayLike) -> F
     -------
     numpy.ndarray (...)
         Negative where the error exceeds :math:`\pi/2` (as WPILib's ``cosineScale``).
-
-    Examples
-    --------
-    >>> cosine_compensate([2.0, 2.0], [0.0, np.pi / 3], [0.0, 0.0]).round(12).tolist()
-    [2.0, 1.0]
     """
     speed = validation.finite_array("speed", speed)
     beta = validation.finite_array("beta", beta)
@@ -177,11 +165,6 @@ def se2_log(delta: ArrayLike, dt: float = 1.0) -> FloatArray:
     -------
     numpy.ndarray (..., 3)
         The twist :math:`[\dot\psi, \dot x, \dot y]`.
-
-    Examples
-    --------
-    >>> se2_log([np.pi, 0.0, 2.0]).round(12).tolist()
-    [3.14159265359, 3.14159265359, 0.0]
     """
     g = validation.finite_array("delta", delta, last=3)
     dt = validation.number("dt", validation.positive("dt", dt))

@@ -77,15 +77,6 @@ def transition_slip(
     -------
     numpy.ndarray (...)
         In :math:`[0, 1]`; 0 when no module turns and the targets are admissible.
-
-    Examples
-    --------
-    >>> import wmr
-    >>> bot = wmr.Robot([wmr.CentredWheel((x, y), r=0.05) for x, y in [(1, 1), (1, -1), (-1, 1), (-1, -1)]])
-    >>> same = transition_slip(bot, [0.0] * 4, [np.pi / 2] * 4, [1.0] * 4)      # all turn left: parallel
-    >>> mixed = transition_slip(bot, [0.0] * 4, [np.pi / 2, -np.pi / 2] * 2, [1.0, -1.0] * 2)
-    >>> float(same.round(12)), bool(mixed > 0.3)
-    (0.0, True)
     """
     robot = swerve_robot(robot)
     w = robot.w
@@ -141,14 +132,6 @@ def optimize_modules(robot: Robot, twist: TwistLike, current: ArrayLike) -> Stee
     Returns
     -------
     SteeringChoice
-
-    Examples
-    --------
-    >>> import wmr
-    >>> bot = wmr.Robot([wmr.CentredWheel((x, y), r=0.05) for x, y in [(1, 1), (1, -1), (-1, 1), (-1, -1)]])
-    >>> ch = optimize_modules(bot, [0.0, -1.0, 0.0], [np.pi / 2] * 4)     # reverse: flip, do not turn
-    >>> ch.flipped.tolist(), ch.speed.round(12).tolist()
-    ([True, True, True, True], [-1.0, -1.0, -1.0, -1.0])
     """
     robot, cmd, cur = _targets(robot, twist, current)
     flip = np.abs(wrap_angle(cmd.beta - cur)) > np.pi / 2

@@ -148,14 +148,6 @@ def resteer_transient(
     Returns
     -------
     Transient
-
-    Examples
-    --------
-    >>> import wmr
-    >>> bot = wmr.Robot([wmr.CentredWheel((x, y), r=0.05) for x, y in [(.3, .3), (.3, -.3), (-.3, .3), (-.3, -.3)]])
-    >>> run = resteer_transient(bot, direction_change(angle=0.0))          # no change: nothing to re-steer
-    >>> run.slip_distance < 1e-12, run.max_path_error < 1e-12
-    (True, True)
     """
     robot = swerve_robot(robot)
     if not isinstance(profile, TwistProfile):
@@ -274,14 +266,6 @@ def resteer_study(
     Returns
     -------
     TransientStudy
-
-    Examples
-    --------
-    >>> import wmr
-    >>> bot = wmr.Robot([wmr.CentredWheel((x, y), r=0.05) for x, y in [(.3, .3), (.3, -.3), (-.3, .3), (-.3, -.3)]])
-    >>> study = resteer_study(bot, direction_change(spin=0.5))
-    >>> [row["strategy"] for row in study.table()]
-    ['plain', 'module', 'module + cos', 'robot', 'robot + cos']
     """
     rate = validation.number("steer_rate", validation.positive("steer_rate", steer_rate))
     try:
