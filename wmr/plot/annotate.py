@@ -6,10 +6,8 @@ Positions are in data coordinates (the robot's unit), label offsets in points, c
 
 from __future__ import annotations
 
-from .legend import info_box as info_box  # implementation, importable here as before
 from .legend import legend_handles, scale_bar
 from .lines import draw_line, draw_path
-from .lines import segment_through as segment_through
 from .marks import draw_angle, draw_arrow, draw_frame, draw_point, label
 
 __all__ = [

@@ -9,13 +9,10 @@ from __future__ import annotations
 import numpy as np
 
 from .geometry import RobotDrawing, platform_radius, robot_extent, robot_geometry
-from .geometry import to_world as to_world  # implementation, importable here as before
 from .lines import draw_line
 from .marks import draw_frame, draw_point, label
 from .snapping import snap
-from .units import draw_pivot as draw_pivot  # implementation, importable here as before
 from .units import draw_platform, draw_unit
-from .units import draw_wheel as draw_wheel
 
 __all__ = [
     "RobotDrawing",

@@ -26,7 +26,6 @@ from ..model.types import ArrayLike
 from .limits import cosine_compensate, se2_exp
 from .modules import chassis_twist, module_commands, swerve_robot
 from .optimize import optimize_modules, optimize_robot
-from .profiles import MAX_STEPS as MAX_STEPS  # implementation, importable here as before
 from .profiles import TwistProfile, direction_change, spin_and_translate
 
 __all__ = [
