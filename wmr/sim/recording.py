@@ -46,11 +46,9 @@ class Reading:
     slip : numpy.ndarray (n_wheels, 2)
         Horizontal velocity of each wheel's material point at its contact, fixed frame.
     dissipation : numpy.ndarray (n_wheels,)
-        Power the contact takes from each wheel, W:
-        :math:`-(\mathbf f\cdot\mathbf v + \boldsymbol\tau\cdot\boldsymbol\omega)`
-        with :math:`\mathbf v` the velocity of the wheel's point at the contact and
-        :math:`\boldsymbol\omega` the wheel's angular velocity (sliding, torsional and rolling friction
-        together; the soft contact's springs add or return a little).
+        Power the contact takes from each wheel, W: :math:`-(\mathbf f\cdot\mathbf v +
+        \boldsymbol\tau\cdot\boldsymbol\omega)`, :math:`\mathbf v` the velocity of the wheel's point at the
+        contact, :math:`\boldsymbol\omega` the wheel's angular velocity (all friction together).
     """
 
     t: float

@@ -80,8 +80,7 @@ def radii(robot: Robot) -> FloatArray:
     -------
     numpy.ndarray (w,)
     """
-    robot = swerve_robot(robot)
-    return np.array([float(u.r) for u in robot.wheels])
+    return np.array([float(u.r) for u in swerve_robot(robot).wheels])
 
 
 def module_speeds(robot: Robot, beta: ArrayLike, twist: TwistLike) -> FloatArray:
