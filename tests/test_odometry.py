@@ -181,3 +181,12 @@ def test_bad_input():
     offset = wmr.paper_robot("offset", L=0.5, r=0.1)
     with pytest.raises(InputValueError, match=r"angles must have shape \(\.\.\., 1\)"):
         wheel_odometry(offset, np.zeros((3, 3)), np.zeros((3, 2)), measured=["phi_dot_1", "theta_dot_1"])
+
+
+def test_straight_run_without_slip():
+    """20 rad of a 0.05 m wheel on every module, axles along y: 1 m forward, no slip (the former doctest)."""
+    bot = wmr.Robot([wmr.CentredWheel((x, y), r=0.05) for x, y in [(0.3, 0.3), (0.3, -0.3), (-0.3, 0.3), (-0.3, -0.3)]])
+    angles = np.linspace(0.0, 20.0, 11)[:, None] * np.ones(4)
+    odo = wheel_odometry(bot, np.full((11, 4), np.pi / 2), angles)
+    np.testing.assert_allclose(odo.pose[-1], [0.0, 1.0, 0.0], atol=1e-12)
+    assert odo.slip.max() < 1e-12

@@ -1,37 +1,19 @@
 r"""Wheel odometry: the platform's pose from sampled encoder angles and steering angles, with the slip residual.
 
-Between two samples the joints turn by :math:`\Delta\boldsymbol\theta` and the no-slip equation (21),
-integrated over the step at the steering angles of its end, reads
+Between two samples the joints turn by :math:`\Delta\boldsymbol\theta` and (21), integrated over the step at the
+steering angles of its end, reads
 
 .. math:: \mathbf J_1\,\Delta\mathbf t = \mathbf J_2(\boldsymbol\beta_{k+1})\,\Delta\boldsymbol\theta,
           \qquad \Delta\mathbf t = [\Delta\psi\ \Delta x\ \Delta y]^T \text{ (body frame at the step's start)}.
 
-Not every joint has an encoder: the **measured** joints (default: the joints with a motor whose rate
-is a column of :math:`\mathbf J_2`; :func:`measured_joints`) give their increments, the others (free
-rollers, passive castors, wheels without an encoder) are unknowns solved with the twist.  A measured
-steering joint's rate is the unit's absolute :math:`\dot\phi_i = \dot\psi + \dot\beta_i` (7, an
-offset wheel): its column moves to the left with :math:`\Delta\psi` and its increment
-:math:`\Delta\beta_i` comes from the steering angles, not from ``angles``.  The least-squares solution
-(columns scaled as for :func:`wmr.rank`) gives :math:`\Delta\mathbf t`; the **residual**
-:math:`\mathbf J_1\Delta\mathbf t - \mathbf J_2\Delta\boldsymbol\theta` (metres, two entries per
-unit) is the wheel travel no rigid motion explains: slip, or a wrong model.
-
-The pose is integrated as WPILib's ``Odometry.update`` does: the step is the SE(2) exponential of
-:math:`\Delta\mathbf t` (``Pose2d.exp``, :func:`wmr.swerve.se2_exp`), composed on the pose; with a
-gyro (``heading``), :math:`\Delta\psi` is replaced by the gyro's increment (wrapped to
-:math:`(-\pi, \pi]`) and :math:`\Delta x, \Delta y` are kept from the wheels, as WPILib does.  For a
-swerve robot with every drive measured this is WPILib's ``SwerveDriveOdometry`` (same least squares,
-module angles of the step's end, same exponential): ``tests/test_odometry.py`` compares them.
-
-Examples
---------
->>> import numpy as np, wmr
->>> bot = wmr.Robot([wmr.CentredWheel((x, y), r=0.05) for x, y in [(0.3, 0.3), (0.3, -0.3), (-0.3, 0.3), (-0.3, -0.3)]])
->>> beta = np.full((11, 4), np.pi / 2)                    # axles along y: rolling along x
->>> angles = np.linspace(0.0, 20.0, 11)[:, None] * np.ones(4)      # 20 rad of wheel: 1 m forward
->>> odo = wheel_odometry(bot, beta, angles)
->>> (odo.pose[-1].round(12) + 0.0).tolist(), bool(odo.slip.max() < 1e-12)
-([0.0, 1.0, 0.0], True)
+The **measured** joints (default :func:`measured_joints`) give their increments; the others (free rollers, passive
+castors, wheels without an encoder) are unknowns solved with the twist.  A measured steering joint's rate is the
+unit's absolute :math:`\dot\phi_i = \dot\psi + \dot\beta_i` (7): its column moves to :math:`\Delta\psi`'s and its
+increment comes from the steering angles.  The least squares (columns scaled as for :func:`wmr.rank`) gives
+:math:`\Delta\mathbf t`; the **residual** :math:`\mathbf J_1\Delta\mathbf t - \mathbf J_2\Delta\boldsymbol\theta`
+(metres, two entries per unit) is the wheel travel no rigid motion explains.  The pose is integrated as WPILib's
+``Odometry.update`` does (:func:`wmr.swerve.se2_exp` of each step; a gyro's ``heading`` replaces
+:math:`\Delta\psi`); ``tests/test_odometry.py`` compares it with WPILib's odometries.
 """
 
 from __future__ import annotations

@@ -38,26 +38,6 @@ def scale_bar(ax, length, text, *, loc=(0.04, 0.05), color=None):
     label(ax, (p[0] + length / 2, p[1]), text, offset=(0, 3), ha="center", va="bottom", fontsize=FONT_SMALL)
 
 
-def info_box(ax, lines, *, loc=(0.98, 0.98), ha="right", va="top", fontsize=FONT_SMALL, below=False):
-    """Computed numbers, one per line, in a light box at axes fraction ``loc`` (``below``: centred under the axes)."""
-    if below:
-        loc, ha, va = (0.5, -0.015), "center", "top"
-    ax.text(
-        loc[0],
-        loc[1],
-        "\n".join(lines),
-        transform=ax.transAxes,
-        ha=ha,
-        va=va,
-        fontsize=fontsize,
-        color=PALETTE["dark"],
-        zorder=10,
-        linespacing=1.35,
-        clip_on=False,
-        bbox=dict(boxstyle="round,pad=0.35", facecolor="white", edgecolor="#BBBBBB", linewidth=0.6, alpha=0.92),
-    )
-
-
 def legend_handles(items):
     """Line2D proxies for a legend.
 

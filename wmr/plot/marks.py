@@ -1,8 +1,4 @@
-r"""Marks at points of a drawing: labels, points, arrows, frames and angles.
-
-All positions are in data coordinates of the axes (lengths in the robot's unit); offsets of
-labels are in points.  Colours come from :mod:`wmr.plot.style`.
-"""
+r"""Marks at points of a drawing: labels, points, arrows, frames and angles (conventions: :mod:`wmr.plot.annotate`)."""
 
 from __future__ import annotations
 

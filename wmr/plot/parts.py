@@ -1,28 +1,9 @@
-r"""How a wheel unit looks from above, as data: each kind's parts, held by the drawing layer.
+r"""How a wheel unit looks from above, as data: each kind's parts (no matplotlib, no style).
 
-A wheel kind answers for its mathematics (:mod:`wmr.model.wheels`); how it is drawn is this module's:
-:func:`unit_parts` has one entry per kind (:func:`functools.singledispatch` on the unit's class, so a
-subclass takes its base's entry), giving the unit's parts in the body frame at one steering angle.
-:mod:`wmr.plot.units` draws each part by its type.  No matplotlib here, and no style: sizes are the
-unit's own (its wheel radius), colours and line widths are the drawing's.
-
-================  =====================================================================================
-part              what it is
-================  =====================================================================================
-:class:`Disc`     a wheel: from above a rounded rectangle :math:`2r` long along the rolling direction
-:class:`Link`     a rigid bar of the intermediate body (an offset wheel's arm, a dual wheel's axle bar)
-:class:`Rollers`  the free rollers in contact on a Swedish wheel, at their angle to the axle
-:class:`Pivot`    a vertical joint (steering axis) at :math:`P_i`
-================  =====================================================================================
-
-**A new kind of wheel** registers its entry here (``@unit_parts.register``), as it does in
+:func:`unit_parts` has one entry per kind (:func:`functools.singledispatch` on the unit's class, so a subclass takes
+its base's entry), giving the unit's parts in the body frame at one steering angle; :mod:`wmr.plot.units` draws each
+part by its type.  **A new kind of wheel** registers its entry here (``@unit_parts.register``), as it does in
 :mod:`wmr.sim` and :mod:`wmr.io`.
-
-Examples
---------
->>> from wmr import OffsetWheel
->>> [type(p).__name__ for p in unit_parts(OffsetWheel((1.0, 0.0), r=0.1, d=0.2), 0.0)]
-['Link', 'Disc', 'Pivot']
 """
 
 from __future__ import annotations
@@ -134,12 +115,11 @@ def drawn_angle(unit: WheelUnit, beta: float) -> float:
     float
     """
     own = unit.constant_angle
-    return checks.number("beta", beta) if own is None else checks.number("angle", own)
+    return checks.number("beta", beta) if own is None else float(own)
 
 
-def _discs(unit: WheelUnit, beta: float, arrow: bool = True) -> tuple[Part, ...]:
-    """A disc per wheel of the unit, at its drawn angle; a pivot at :math:`P_i` for a steered unit."""
-    angle = drawn_angle(unit, beta)
+def _discs(unit: WheelUnit, angle: float, arrow: bool = True) -> tuple[Part, ...]:
+    """A disc per wheel of the unit at its drawn ``angle``; a pivot at :math:`P_i` for a steered unit."""
     discs = tuple(Disc(c, angle, float(unit.r), arrow) for c in unit.points(angle)["wheels"])
     return discs + ((Pivot(np.asarray(unit.position, dtype=float), float(unit.r)),) if unit.steered else ())
 
@@ -181,21 +161,22 @@ def unit_parts(unit: Any, beta: float) -> tuple[Part, ...]:
 @unit_parts.register(FixedWheel)
 def _plain(unit: WheelUnit, beta: float) -> tuple[Part, ...]:
     """A disc (and a pivot when steered)."""
-    return _discs(unit, beta)
+    return _discs(unit, drawn_angle(unit, beta))
 
 
 @unit_parts.register
 def _offset(unit: OffsetWheel, beta: float) -> tuple[Part, ...]:
     """The arm from the steering axis to the wheel, the wheel, the steering axis."""
-    pts = unit.points(checks.number("beta", beta))
-    return (Link(np.stack([pts["P"], pts["H"]]), over=True, r=float(unit.r)),) + _discs(unit, beta)
+    angle = drawn_angle(unit, beta)
+    pts = unit.points(angle)
+    return (Link(np.stack([pts["P"], pts["H"]]), over=True, r=float(unit.r)),) + _discs(unit, angle)
 
 
 @unit_parts.register
 def _dual(unit: DualWheel, beta: float) -> tuple[Part, ...]:
     """The bar between the two wheels, the wheels, the swivel."""
-    pts = unit.points(checks.number("beta", beta))
-    return (Link(pts["wheels"], over=False, r=float(unit.r)),) + _discs(unit, beta)
+    angle = drawn_angle(unit, beta)
+    return (Link(unit.points(angle)["wheels"], over=False, r=float(unit.r)),) + _discs(unit, angle)
 
 
 @unit_parts.register
@@ -203,7 +184,7 @@ def _swedish(unit: SwedishWheel, beta: float) -> tuple[Part, ...]:
     """The wheel without a rolling arrow (it rolls every way), and its rollers."""
     angle = drawn_angle(unit, beta)
     centre = unit.points(angle)["H"]
-    return _discs(unit, beta, arrow=False) + (Rollers(centre, angle, float(unit.r), float(unit.roller)),)
+    return _discs(unit, angle, arrow=False) + (Rollers(centre, angle, float(unit.r), float(unit.roller)),)
 
 
 def has_parts(kind: type) -> bool:

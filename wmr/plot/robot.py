@@ -1,9 +1,7 @@
-r"""The robot seen from above: platform disc, operation point C and body frame, wheel units, labels, axle and
-wheel-plane lines (extended to where they meet).
+r"""The robot seen from above: platform, C and body frame, wheel units, labels, axle and wheel-plane lines.
 
-The geometry comes from the units themselves (:meth:`~wmr.model.wheels.WheelUnit.points`), computed without
-matplotlib in :mod:`wmr.plot.geometry`; each unit is drawn from its parts by :mod:`wmr.plot.units`.  Both modules'
-public names are re-exported here.
+The geometry comes from :mod:`wmr.plot.geometry` (no matplotlib), each unit's drawing from :mod:`wmr.plot.units`;
+both modules' public names are re-exported here.
 """
 
 from __future__ import annotations
@@ -11,13 +9,10 @@ from __future__ import annotations
 import numpy as np
 
 from .geometry import RobotDrawing, platform_radius, robot_extent, robot_geometry
-from .geometry import to_world as to_world  # implementation, importable here as before
 from .lines import draw_line
 from .marks import draw_frame, draw_point, label
 from .snapping import snap
-from .units import draw_pivot as draw_pivot  # implementation, importable here as before
 from .units import draw_platform, draw_unit
-from .units import draw_wheel as draw_wheel
 
 __all__ = [
     "RobotDrawing",

@@ -1,12 +1,8 @@
 r"""The look of every drawing: palette, line and font sizes, matplotlib settings, figures and views.
 
-Style: the Okabe-Ito colour-blind-safe palette (:data:`PALETTE`, by role in :data:`ROLE`), one set
-of line widths and font sizes (:data:`RC`), equal aspect, no axes ticks (a scale bar instead).
-
-Figures are plain :class:`matplotlib.figure.Figure` objects (not registered with pyplot, so
-nothing accumulates and a notebook's backend is left alone); saving renders PNG with Agg and
-SVG/PDF with matplotlib's vector backends, whatever backend is active.  :data:`RC` also holds
-what makes saved files deterministic (a fixed SVG hash salt, text as paths).
+The Okabe-Ito colour-blind-safe palette (:data:`PALETTE`, by role in :data:`ROLE`), one set of line widths and font
+sizes (:data:`RC`, which also makes saved files deterministic: a fixed SVG hash salt, text as paths).  Figures are
+plain :class:`matplotlib.figure.Figure` objects, not registered with pyplot.
 """
 
 from __future__ import annotations

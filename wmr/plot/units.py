@@ -1,8 +1,6 @@
-r"""The parts of a robot seen from above: the platform disc, and a wheel unit as its intermediate body (a pivot at
-:math:`P_i`, an arm or a bar) carrying wheel discs, rounded rectangles of length :math:`2r` along the rolling
-direction :math:`\mathbf j_i` with an arrow on it, and rollers on a Swedish wheel.
+r"""The parts of a robot seen from above: the platform disc, and each wheel unit drawn part by part.
 
-The parts come from each kind's entry in :func:`wmr.plot.parts.unit_parts`, so any wheel kind with one is drawn;
+A unit's parts come from its kind's entry in :func:`wmr.plot.parts.unit_parts`, so any wheel kind with one is drawn;
 :mod:`wmr.plot.robot` assembles them into the robot.
 """
 
@@ -107,12 +105,7 @@ def draw_pivot(ax, p, size, *, ghost=False, zorder=5.0):
 def draw_unit(
     ax, unit, beta, pose=(0.0, 0.0, 0.0), *, ghost=False, zorder=4.0, show_j=True, light=False, arrows="travel"
 ):
-    r"""One wheel unit: its parts (:func:`wmr.plot.parts.unit_parts`) in world coordinates from ``pose``.
-
-    Each part is drawn by its type, whatever the unit's kind: a :class:`~wmr.plot.parts.Link` as a bar (over the
-    wheels an arm, under them a bar between wheels), a :class:`~wmr.plot.parts.Disc` as a wheel,
-    :class:`~wmr.plot.parts.Rollers` as strokes along the roller axes, a :class:`~wmr.plot.parts.Pivot` as the
-    steering axis.
+    r"""One wheel unit: its parts (:func:`wmr.plot.parts.unit_parts`), each drawn by its type, placed by ``pose``.
 
     Parameters
     ----------

@@ -1,21 +1,11 @@
 r"""Any :class:`wmr.Robot` in a physics engine (MuJoCo): export, run, measure.
 
-wmr's model is the paper's: rigid bodies, point contacts, no slip.  This package puts a robot into MuJoCo,
-where wheels have mass, contacts have friction and servos have limits (:class:`Params`), so that what the model
-predicts can be measured.  It knows no wheel kind: each unit describes its own bodies and joints
-(:func:`wmr.io.mechanism.mechanism`) and says which are driven (``driven=``; a castor is an offset wheel with
-both joints passive).  :func:`to_mjcf` writes the model, :class:`Simulation` runs it in wmr's variables,
-:func:`run` drives it along a :class:`Schedule` (e.g. :func:`twist_schedule`) into a :class:`Recording`, and
-:class:`Validity` says whether the run can be trusted.
-
-MuJoCo is imported only when a :class:`Simulation` is made (``pip install 'wmr-kinematics[sim]'``).
-
-Examples
---------
->>> import wmr
->>> from wmr.sim import to_mjcf
->>> '<freejoint name="platform"/>' in to_mjcf(wmr.load("examples/swerve4.toml"))   # doctest: +SKIP
-True
+wmr's model has rigid bodies, point contacts and no slip; in MuJoCo wheels have mass, contacts friction and servos
+limits (:class:`Params`), so that what the model predicts can be measured.  No wheel kind is known here: each unit
+describes its bodies and joints (:func:`wmr.io.mechanism.mechanism`) and which are driven.  :func:`to_mjcf` writes
+the model, :class:`Simulation` runs it in wmr's variables, :func:`run` drives it along a :class:`Schedule` into a
+:class:`Recording`, and :class:`Validity` says whether the run can be trusted.  MuJoCo is imported only when a
+:class:`Simulation` is made (``pip install 'wmr-kinematics[sim]'``).
 """
 
 from .bodies import POSITION, VELOCITY, servo

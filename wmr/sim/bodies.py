@@ -1,19 +1,11 @@
-r"""A wheel unit's mechanism in MuJoCo's terms: servos, masses, inertias and geoms of its bodies.
+r"""A wheel unit's mechanism (:func:`wmr.io.mechanism.mechanism`) as MJCF bodies, knowing no wheel kind.
 
-Each wheel kind's bodies and joints are plain data
-(:func:`wmr.io.mechanism.mechanism`, each kind's entry in :mod:`wmr.io.mechanism`); this module turns
-any such tree into MJCF bodies, knowing no wheel kind:
-
-* a joint gets a servo if the unit's joint is driven (``unit.joints``): a steering joint
-  (``steer`` or ``swivel``) a position servo (:data:`POSITION`), a drive joint a velocity servo
-  (:data:`VELOCITY`); a passive joint (a castor's, a dual wheel's swivel) none;
-* a wheel body has the mass ``params.wheel_mass`` of a thin disk of its radius, an intermediate body
-  ``params.body_mass`` of a small cube of its ``size`` (:class:`~wmr.sim.params.Params`);
-* a wheel touches the ground through one sphere of its radius centred on the wheel centre: a single
-  contact point directly below the centre, the paper's thin disk (:mod:`wmr.sim.params` for its
-  friction); its geom has the higher ``priority``, so that its friction and contact stiffness are the
-  ones MuJoCo uses (not averaged with the ground's); a drawn disk (no contact) shows the wheel and
-  drawn rods the intermediate bodies.
+A driven steering joint gets a position servo (:data:`POSITION`), a driven drive joint a velocity servo
+(:data:`VELOCITY`), a passive joint none.  A wheel body is a thin disk of ``params.wheel_mass``, an intermediate
+body a small cube of ``params.body_mass``.  A wheel touches the ground through one sphere of its radius centred on
+the wheel centre (a single contact point below it, the paper's thin disk); its geom has the higher ``priority`` so
+that its friction and contact stiffness are the ones MuJoCo uses.  Drawn disks and rods (no contact) show the
+wheels and bodies.
 """
 
 from __future__ import annotations
@@ -51,13 +43,6 @@ def servo(joint: Joint) -> str | None:
     ------
     NotImplementedError
         For a driven joint of another kind (a driven roller).
-
-    Examples
-    --------
-    >>> from wmr import OffsetWheel
-    >>> castor = OffsetWheel((0, 0), r=0.1, d=0.05, driven={"steer": False, "drive": False})
-    >>> [servo(j) for j in OffsetWheel((0, 0), r=0.1, d=0.05).joints], [servo(j) for j in castor.joints]
-    (['position', 'velocity'], [None, None])
     """
     if not joint.driven:
         return None

@@ -1,10 +1,8 @@
 r"""Joint commands from wmr's inverse kinematics: what the servos must do for a commanded twist.
 
-For a constant body twist :math:`\mathbf t`, :func:`twist_schedule` integrates the paper's model
-(:func:`wmr.integrate`) with the joint rates of :func:`wmr.inverse` at every instant: centred and
-dual wheels keep the steering angles of :func:`wmr.steering_angles`; an offset wheel steers at the
-rate its inverse kinematics gives, :math:`\dot\beta_i = \dot\phi_i - \dot\psi` (7).  The steering
-angles along that run are the targets of the steering servos, the rates those of the drive servos.
+For a constant body twist, :func:`twist_schedule` integrates the model (:func:`wmr.integrate`) with the joint rates
+of :func:`wmr.inverse`: centred and dual wheels keep the angles of :func:`wmr.steering_angles`, an offset wheel steers
+at :math:`\dot\beta_i = \dot\phi_i - \dot\psi` (7).  Its angles and rates are the servos' targets.
 """
 
 from __future__ import annotations
@@ -70,14 +68,6 @@ def twist_schedule(
     Returns
     -------
     Schedule
-
-    Examples
-    --------
-    >>> import wmr
-    >>> bot = wmr.paper_robot("centred", L=0.3, r=0.05)
-    >>> s = twist_schedule(bot, [0.0, 0.5, 0.0], 1.0)
-    >>> s.rates[0].round(9).tolist()                        # v = r theta_dot: 0.5 / 0.05
-    [10.0, 10.0, 10.0]
     """
     robot = validation.numeric_robot(robot)
     twist = validation.finite_array("twist", twist, last=3).reshape(3)

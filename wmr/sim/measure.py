@@ -1,11 +1,7 @@
 r"""What a MuJoCo state says in wmr's variables: :class:`Probe` reads a :class:`~wmr.sim.recording.Reading`.
 
-The platform pose :math:`(\psi, X, Y)` and body twist :math:`[\dot\psi, \dot x, \dot y]`; the steering angles and
-the encoders' joint rates (an offset wheel's :math:`\dot\phi_i = \dot\psi + \dot\beta_i` (7) from its steering
-encoder and the platform's turning rate); the servo torques; and per wheel the contact point, the contact force
-(world frame, on the wheel), its friction torques, and the **slip**, the velocity of the wheel's material point at
-the contact relative to the ground (zero for rolling without slipping, (6)), and the power the contact takes from
-it.  :class:`~wmr.sim.simulation.Simulation` makes the probe of its model and calls it.
+An offset wheel's encoder rate is :math:`\dot\phi_i = \dot\psi + \dot\beta_i` (7); a wheel's **slip** is the
+velocity of its material point at the contact relative to the ground (zero for rolling without slipping, (6)).
 """
 
 from __future__ import annotations
@@ -49,9 +45,8 @@ class Probe:
         self.f6 = np.zeros(6)
 
     def sample(self, d: Any) -> Reading:
-        """Measure the state ``d`` (a ``mujoco.MjData`` of this probe's model): module docstring."""
+        """Measure the state ``d`` (a ``mujoco.MjData`` of this probe's model, after ``mj_forward``)."""
         mj, m = self.mj, self.model
-        mj.mj_forward(m, d)  # positions, contacts and forces of this state
         q = d.qpos
         psi = yaw(q[3:7])
         c, s = np.cos(psi), np.sin(psi)

@@ -1,15 +1,12 @@
 r"""Any :class:`wmr.Robot` as a MuJoCo model (MJCF text): :func:`to_mjcf`.
 
-The model: a ground plane; the platform, a free body whose frame is wmr's body frame (origin C on the
-mount plane, x forward, z up); under it each unit's bodies and joints as the unit describes them
-(:func:`wmr.io.mechanism.mechanism`; :mod:`wmr.sim.bodies` gives them masses, geoms and servos); a lock
-``<name>_lock`` for every drive hinge (an inactive joint equality: the paper's Section 4.2 locked drive, when
-switched on); a keyframe ``start`` with the steering angles :math:`\boldsymbol\beta_0` and the servo targets that
-hold them.  Unit ``i`` (from 1) has bodies, joints and actuators ``u<i>_<name>`` (``u2_steer``, ``u2_drive``,
-``u3_swivel``); a wheel's contact geom is named after its body (``u2_wheel``; ``u3_wheel1``, ``u3_wheel2``).
-
-No MuJoCo and no wheel kind here: the text is written from the units' mechanisms, the same bytes for the same
-robot and parameters on every CPU (numbers by :func:`wmr.sim.bodies.num`).
+A ground plane; the platform, a free body whose frame is wmr's body frame (origin C on the mount plane, x forward,
+z up); under it each unit's bodies and joints (:mod:`wmr.sim.bodies`); a lock ``<name>_lock`` for every drive hinge
+(an inactive joint equality: the paper's locked drive, when switched on); a keyframe ``start`` with the steering
+angles :math:`\boldsymbol\beta_0` and the servo targets that hold them.  Unit ``i`` (from 1) has bodies, joints and
+actuators ``u<i>_<name>`` (``u2_steer``, ``u3_swivel``); a wheel's contact geom is named after its body
+(``u2_wheel``; ``u3_wheel1``).  The same bytes for the same robot and parameters on every CPU
+(:func:`~wmr.sim.bodies.num`).
 """
 
 from __future__ import annotations
@@ -136,8 +133,9 @@ def export(robot: Robot, beta: ArrayLike | None = None, params: Params | None = 
     beta : array (w,), optional
         Steering angles of the keyframe ``start`` (default 0; unsteered units: their own angle).
     params : Params, optional
+        Physical parameters (default :class:`Params`).
     **changes
-        Parameters to change (names of :class:`Params`), e.g. ``torsional=0``.
+        Parameters to change by name, e.g. ``sliding=0.6, torsional=0``.
 
     Returns
     -------
@@ -167,35 +165,20 @@ def export(robot: Robot, beta: ArrayLike | None = None, params: Params | None = 
 
 
 def to_mjcf(robot: Robot, beta: ArrayLike | None = None, params: Params | None = None, **changes: float) -> str:
-    """A MuJoCo model (MJCF text) of any :class:`wmr.Robot` (the model: module docstring).
+    """A MuJoCo model (MJCF text) of any :class:`wmr.Robot`: the ``xml`` of :func:`export`.
 
     Parameters
     ----------
     robot : Robot
     beta : array (w,), optional
-        Steering angles of the keyframe ``start`` (default 0).
     params : Params, optional
-        Physical parameters (default :class:`Params`).
     **changes
-        Parameters to change by name, e.g. ``sliding=0.6, torsional=0``.
+        As for :func:`export`.
 
     Returns
     -------
     str
         MJCF; ``mujoco.MjModel.from_xml_string`` loads it.
-
-    Raises
-    ------
-    NotImplementedError
-        For Swedish wheels (:data:`wmr.model.wheels.swedish.NO_FAITHFUL_MECHANISM`).
-
-    Examples
-    --------
-    >>> import wmr
-    >>> from wmr.sim import to_mjcf
-    >>> xml = to_mjcf(wmr.paper_robot("centred", L=0.3, r=0.05))
-    >>> xml.count('<position '), xml.count('<velocity ')
-    (3, 3)
     """
     return export(robot, beta, params, **changes).xml
 

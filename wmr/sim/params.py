@@ -1,38 +1,19 @@
-r"""The physical parameters of an exported robot: masses, friction, actuators, time step.
+r"""The physical parameters of an exported robot: masses, friction, actuators, time step (:class:`Params`).
 
-wmr's model (the paper's) has no mass, no force and no friction; a physics engine needs all three.
-:class:`Params` holds them, each with a stated default, and every default is written so that it
-means the same thing for a robot of any size: masses in kilograms, but torques and friction
-lengths **relative to the robot**, so that a robot described in units of :math:`L` (the paper's
-examples, with :math:`r = L = 1`) and one in metres behave alike.
+wmr's model has no mass, force or friction; a physics engine needs all three.  Masses are in kilograms, but
+torques and friction lengths are **relative to the robot**, so that a robot in units of :math:`L` (the paper's
+examples) and one in metres behave alike.
 
-Friction (MuJoCo's soft contact model, one point contact per wheel)
---------------------------------------------------------------------
-Each wheel touches the ground at one point, the paper's thin disk, with three coefficients:
+Each wheel touches the ground at one point (MuJoCo's soft contact, elliptic cone) with Coulomb friction
+:math:`\|\mathbf f_t\| \le \mu N`, a torque about the normal :math:`|\tau_n| \le \mu_t N` standing for a tyre's
+contact patch (:math:`\mu_t = \text{torsional}\cdot r`; a patch of radius :math:`a` under uniform pressure gives
+:math:`\tfrac23\mu a`), and rolling resistance :math:`c_{rr} r N`.  The contact is soft: a wheel held by static
+friction still creeps, so "no motion" is always decided against a stated threshold.
 
-* ``sliding`` :math:`\mu`: Coulomb friction, the tangential force :math:`\|\mathbf f_t\| \le \mu N`
-  (elliptic cone);
-* ``torsional`` :math:`\mu_t`: the largest torque about the contact normal, :math:`|\tau_n| \le \mu_t N`.
-  It stands for the contact patch that a real tyre has (the paper's "dry-friction torque stemming
-  from the unavoidable deformation of the wheel"); given as a fraction of the wheel radius
-  (:math:`\mu_t = \text{torsional}\cdot r`; a patch of radius :math:`a` under uniform pressure gives
-  :math:`\tfrac23\mu a`);
-* ``rolling`` :math:`c_{rr}`: rolling resistance, the largest torque about the tangent axes
-  :math:`c_{rr} r N`, i.e. a resisting force :math:`c_{rr}N` (rubber on concrete: about 0.01).
-
-The contact is soft (MuJoCo's ``solref``/``solimp`` defaults, ``impratio`` below): a wheel held by
-static friction still creeps slowly, so "no motion" is always decided against a stated threshold.
-
-Actuators
----------
-Torque limits are fractions of :math:`W r_i`, with :math:`W` the robot's weight and :math:`r_i` the
-wheel's radius (``drive_torque = 1`` lets one drive push the whole robot up a 45 degree slope).  A
-steering hinge is under a position servo (gain ``steer_kp`` per radian of error, damping at the ratio
-``steer_damping`` of critical for the hinge's inertia), a drive hinge under a velocity servo (gain
-``drive_kv`` per rad/s of error); gains are given per unit of the torque limit, so that a servo
-saturates at an error of ``1 / gain``.  The runner feeds a steering servo its target angle plus
-``kv / kp`` times the target's rate, so that it tracks a turning target without lag (a PD law on the
-error).
+Torque limits are fractions of :math:`W r_i` (:math:`W` the weight; ``drive_torque = 1`` lets one drive push the
+robot up a 45 degree slope); servo gains are per unit of that limit, so that a servo saturates at an error of
+``1 / gain``.  The runner feeds a steering servo its target plus ``kv / kp`` times the target's rate (a PD law on
+the error: no lag on a turning target).
 """
 
 from __future__ import annotations
@@ -87,8 +68,6 @@ class Params:
     contact_time : float
         Time constant of the soft wheel contacts, s (MuJoCo's ``solref``, critically damped; default
         0.005, five steps: stiffer than MuJoCo's 0.02, so that creep under static friction stays small).
-        The wheel's contact geom has the higher ``priority``, so that this time constant is the one used
-        (MuJoCo would otherwise average it with the ground's default 0.02).
     impratio : float
         Ratio of frictional to normal contact stiffness (default 100: little creep under static friction).
     integrator : str

@@ -1,11 +1,4 @@
-r"""What goes into a simulation and what comes out, in wmr's variables.
-
-A :class:`Schedule` is a command over time -- steering angles :math:`\boldsymbol\beta` for the steering
-servos and joint rates :math:`\dot{\boldsymbol\theta}` (the rate vector of :attr:`wmr.Robot.rate_names`) for
-the drive servos -- interpolated linearly between knots.  A :class:`Reading` is what
-:meth:`wmr.sim.Simulation.sample` measures at one instant; a :class:`Recording` stacks the samples of a run
-(:func:`wmr.sim.runner.run`).
-"""
+r"""What goes into a simulation (:class:`Schedule`) and what comes out (:class:`Reading`, :class:`Recording`)."""
 
 from __future__ import annotations
 
@@ -24,7 +17,7 @@ __all__ = ["Recording", "Reading", "Schedule"]
 
 @dataclass(frozen=True)
 class Reading:
-    r"""What the simulation measures at one instant (see the module docstring).
+    r"""What :meth:`wmr.sim.Simulation.sample` measures at one instant.
 
     Attributes
     ----------
@@ -53,11 +46,9 @@ class Reading:
     slip : numpy.ndarray (n_wheels, 2)
         Horizontal velocity of each wheel's material point at its contact, fixed frame.
     dissipation : numpy.ndarray (n_wheels,)
-        Power the contact takes from each wheel, W:
-        :math:`-(\mathbf f\cdot\mathbf v + \boldsymbol\tau\cdot\boldsymbol\omega)`
-        with :math:`\mathbf v` the velocity of the wheel's point at the contact and
-        :math:`\boldsymbol\omega` the wheel's angular velocity (sliding, torsional and rolling friction
-        together; the soft contact's springs add or return a little).
+        Power the contact takes from each wheel, W: :math:`-(\mathbf f\cdot\mathbf v +
+        \boldsymbol\tau\cdot\boldsymbol\omega)`, :math:`\mathbf v` the velocity of the wheel's point at the
+        contact, :math:`\boldsymbol\omega` the wheel's angular velocity (all friction together).
     """
 
     t: float
@@ -96,7 +87,6 @@ class Recording:
     moment : numpy.ndarray (N, n_wheels, 3)
     slip : numpy.ndarray (N, n_wheels, 2)
     dissipation : numpy.ndarray (N, n_wheels)
-        Each as in :class:`Reading`, stacked over the N samples.
     validity : Validity, optional
         What the simulation's validity monitor saw up to the end of the run (:mod:`wmr.sim.validity`).
     """

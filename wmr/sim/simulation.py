@@ -1,13 +1,8 @@
 r"""A robot in MuJoCo, commanded and measured in wmr's variables: :class:`Simulation`.
 
-Commands are wmr's steering angles :math:`\boldsymbol\beta` and joint rates :math:`\dot{\boldsymbol\theta}` (the
-rate vector of :attr:`wmr.Robot.rate_names`); each servo gets its target through the unit's joints
-(:meth:`wmr.sim.Export.hinges`): a steering servo tracks :math:`\beta_i`, a drive servo the rate its hinge
-measures.  Servos can be switched off (a free drive), drive hinges locked (the paper's locked drives), and the
-platform pushed at C.  :meth:`Simulation.sample` measures the state (:mod:`wmr.sim.measure`) and shows it to the
-validity monitor (:mod:`wmr.sim.validity`).
-
-MuJoCo is imported here only (``pip install 'wmr-kinematics[sim]'``); ``import wmr`` does not import it.
+Commands are steering angles :math:`\boldsymbol\beta` and joint rates :math:`\dot{\boldsymbol\theta}` (the rate vector
+of :attr:`wmr.Robot.rate_names`); each servo gets its target through the unit's joints (:meth:`wmr.sim.Export.hinges`).
+MuJoCo is imported here only; ``import wmr`` does not import it.
 """
 
 from __future__ import annotations

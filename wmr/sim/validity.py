@@ -1,25 +1,17 @@
-r"""Is a run valid? What a simulation watches while it runs, and the checks a measurement must pass.
+r"""Is a run valid? A physics engine returns numbers even when its integration has gone wrong.
 
-A physics engine returns numbers even when its integration has gone wrong: a step too long for a stiff
-contact or servo makes the state oscillate and grow, a contact too soft lets a wheel sink into the ground,
-a servo at its torque limit no longer does what it is told.  A measurement from such a run is not a
-measurement of the robot.  :class:`Monitor` watches a :class:`~wmr.sim.Simulation` at every sample
-(:meth:`wmr.sim.Simulation.sample`, :meth:`wmr.sim.Simulation.watch`) and :class:`Validity` states what it
-saw, against stated limits:
+:class:`Monitor` watches a :class:`~wmr.sim.Simulation` at every sample and :class:`Validity` states what it saw:
 
 * **finite**: the state stayed finite (a run that diverges raises ``FloatingPointError`` at once);
-* **warnings**: MuJoCo raised none of its warnings of a bad state (bad accelerations, positions or
-  velocities, a full contact or constraint buffer);
-* **energy**: the robot's mechanical energy (kinetic and potential, MuJoCo's own) never grew by more than
-  the work its servos and the pushes on it can have done, :math:`\int\sum_a|\tau_a\dot q_a| + |\mathbf f\cdot
-  \mathbf v|\,dt` (contacts and locks only take energy), by more than :data:`ENERGY` of :math:`W r`
+* **warnings**: MuJoCo raised none of its warnings of a bad state (:data:`BAD_STATE`);
+* **energy**: the mechanical energy never grew by more than the work the servos and pushes can have done,
+  :math:`\int\sum_a|\tau_a\dot q_a| + |\mathbf f\cdot\mathbf v|\,dt`, by more than :data:`ENERGY` of :math:`W r`
   (:math:`W` the weight, :math:`r` the largest wheel radius): energy from nowhere is a numerical instability;
 * **penetration**: no wheel sank into the ground by more than :data:`PENETRATION` of its radius;
-* **saturation**: no servo sat at its torque limit for more than :data:`SATURATION` of the samples,
-  unless the experiment expects it to (a stalled servo is the measurement of a jam);
-* **chatter**: no servo's torque jumped, from one sample to the next, by more than :data:`CHATTER` of its
-  limit on average: a servo whose integration is unstable (an explicit integrator and a stiff velocity
-  servo) swings from limit to limit, step after step, however smooth its command.
+* **saturation**: no servo sat at its torque limit for more than :data:`SATURATION` of the samples, unless the
+  experiment expects it to (a stalled servo is the measurement of a jam);
+* **chatter**: no servo's torque jumped between samples by more than :data:`CHATTER` of its limit on average (an
+  unstable servo swings from limit to limit).
 """
 
 from __future__ import annotations

@@ -1,43 +1,17 @@
 r"""Swerve practice: what swerve-drive users need beyond the paper's kinematics.
 
-A swerve module is a centred steered wheel (:class:`wmr.CentredWheel`); a swerve robot is a
-:class:`wmr.Robot` of them.  Frames, twist order and the mapping to WPILib
-(:math:`\alpha = \beta - \pi/2`, :math:`s = r\dot\theta`, ``ChassisSpeeds(vx, vy, omega)`` =
-:math:`[\dot\psi, \dot x, \dot y]` reordered) are stated and converted in :mod:`wmr.model.conventions`
-(:func:`~wmr.model.conventions.angle_to`, :func:`~wmr.model.conventions.twist_to` and back); the
-project's tests check them against ``robotpy-wpimath`` (``tests/test_swerve_wpilib.py``).
+A swerve module is a centred steered wheel (:class:`wmr.CentredWheel`); a swerve robot is a :class:`wmr.Robot` of
+them.  WPILib's conventions are converted in :mod:`wmr.model.conventions` (checked against ``robotpy-wpimath`` in
+``tests/test_swerve_wpilib.py``).  :mod:`~wmr.swerve.modules` (inverse and forward kinematics),
+:mod:`~wmr.swerve.optimize` (which way to turn), :mod:`~wmr.swerve.limits` (desaturation, cosine compensation,
+discretisation), :mod:`~wmr.swerve.profiles` and :mod:`~wmr.swerve.transient` (the re-steering study),
+:mod:`~wmr.swerve.plot` (its figure).
 
-- :mod:`wmr.swerve.modules`: module angles and speeds (inverse kinematics), least-squares chassis
-  twist (forward);
-- :mod:`wmr.swerve.optimize`: WPILib's per-module ``optimize`` and the robot-level steering choice;
-- :mod:`wmr.swerve.limits`: desaturation keeping the instantaneous centre, cosine compensation,
-  discretisation of a twist over a control period (the SE(2) exponential);
-- :mod:`wmr.swerve.profiles`: the commanded twists of a transient (a change of direction, a spin while
-  translating);
-- :mod:`wmr.swerve.transient`: the re-steering transient simulator (rate-limited modules following a
-  twist profile; slip and path error for each strategy);
-- :mod:`wmr.swerve.plot`: its figure (matplotlib, imported only there).
-
-Usage
------
->>> import numpy as np, wmr
+>>> import wmr
 >>> from wmr import swerve
->>> bot = wmr.Robot([wmr.CentredWheel((x, y), r=0.05)
-...                  for x, y in [(0.3, 0.3), (0.3, -0.3), (-0.3, 0.3), (-0.3, -0.3)]])
->>> cmd = swerve.module_commands(bot, [0.0, 1.0, 0.0])       # beta (axle angles), speeds r*theta_dot
->>> np.degrees(wmr.conventions.angle_to(cmd.beta, "wpilib")).round(9).tolist()  # WPILib module angles
-[0.0, 0.0, 0.0, 0.0]
->>> now = np.radians([89.0, 91.0, 91.0, 89.0])                 # driving forward; then: drive left
->>> swerve.optimize_modules(bot, [0.0, 0.0, 1.0], now).flipped.tolist()   # WPILib: opposite ways
-[True, False, False, True]
->>> choice = swerve.optimize_robot(bot, [0.0, 0.0, 1.0], now)             # robot level: one way
->>> len(set(choice.flipped.tolist())), choice.beta.shape, choice.speed.shape
-(1, (4,), (4,))
+>>> bot = wmr.Robot([wmr.CentredWheel((x, y), r=0.05) for x, y in [(0.3, 0.3), (0.3, -0.3), (-0.3, 0.3), (-0.3, -0.3)]])
 >>> swerve.desaturate(bot, [4.0, 1.0, 0.0], max_speed=1.0).round(4).tolist()
 [1.5962, 0.399, 0.0]
-
-The re-steering study (:func:`resteer_study`: every strategy of :data:`STRATEGIES` on a :class:`TwistProfile`) is
-drawn by ``wmr.swerve.plot.transient_figure(study)``.
 """
 
 from .limits import cosine_compensate, desaturate, desaturation_scale, discretize, se2_exp, se2_log

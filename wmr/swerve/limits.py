@@ -1,29 +1,10 @@
 r"""Commanding a real swerve drive: desaturation, cosine compensation, discretisation (the SE(2) exponential).
 
-Desaturation
-    The module speeds are linear in the twist, :math:`s_i = \|\dot{\mathbf c} + \dot\psi\mathbf E\mathbf d_i\|`
-    (2), and the steering angles depend only on its direction: scaling the **twist** by
-    :math:`k = \min(1, s_{\max}/\max_i s_i)` keeps the instantaneous centre
-    :math:`\mathbf u_c = \mathbf E\dot{\mathbf c}/\dot\psi` (63) and every angle.  WPILib's
-    ``desaturateWheelSpeeds`` scales the module speeds by the same :math:`k`, which is the same
-    thing for a continuous twist -- but applied after ``ChassisSpeeds.discretize`` it scales the
-    *discretised* twist, whose exponential is no longer the commanded arc: the robot drifts
-    sideways (WPILib's own docstring warns of it).  Desaturate first, then discretise.
-Cosine compensation
-    While module :math:`i` is at :math:`\beta_i` instead of its target :math:`\beta^*_i`, drive it at
-    :math:`s_i\cos(\beta_i - \beta^*_i)`: the component of the wanted wheel velocity along the
-    wheel's actual rolling direction (WPILib's ``SwerveModuleState.cosineScale``).
-Discretisation
-    A twist held for a control period :math:`\Delta t` moves the robot along an arc, the SE(2)
-    exponential (:func:`se2_exp`):
-
-    .. math:: \Delta\psi = \dot\psi\Delta t, \qquad
-              \Delta\mathbf c = \mathbf V(\Delta\psi)\,\dot{\mathbf c}\,\Delta t, \qquad
-              \mathbf V(\theta) = \frac{\sin\theta}{\theta}\mathbf I + \frac{1-\cos\theta}{\theta}\mathbf E
-
-    (body frame at the start of the period).  :func:`discretize` returns the twist whose arc
-    ends at :math:`(\dot\psi\Delta t, \dot x\Delta t, \dot y\Delta t)`, i.e. :func:`se2_log` of that
-    pose over :math:`\Delta t` (WPILib's ``ChassisSpeeds.discretize``).
+The module speeds are linear in the twist and the angles depend only on its direction, so scaling the **twist**
+(:func:`desaturate`) keeps the instantaneous centre (63) and every angle.  WPILib's ``desaturateWheelSpeeds``
+scales the module speeds by the same factor, which is the same thing for a continuous twist, but applied after
+``ChassisSpeeds.discretize`` it scales the *discretised* twist, whose arc is no longer the commanded one (the robot
+drifts sideways).  Desaturate first, then discretise.
 """
 
 from __future__ import annotations
@@ -94,13 +75,6 @@ def desaturate(robot: Robot, twist: TwistLike, max_speed: float) -> FloatArray:
     Returns
     -------
     numpy.ndarray (..., 3)
-
-    Examples
-    --------
-    >>> import wmr
-    >>> bot = wmr.Robot([wmr.CentredWheel((x, y), r=0.05) for x, y in [(1, 1), (1, -1), (-1, 1), (-1, -1)]])
-    >>> desaturate(bot, [0.0, 3.0, 4.0], max_speed=2.0).round(12).tolist()   # modules at 5 m/s
-    [0.0, 1.2, 1.6]
     """
     t = validation.twist_array("twist", twist)
     return t * desaturation_scale(robot, t, max_speed)[..., None]
@@ -122,11 +96,6 @@ def cosine_compensate(speed: ArrayLike, beta: ArrayLike, target: ArrayLike) -> F
     -------
     numpy.ndarray (...)
         Negative where the error exceeds :math:`\pi/2` (as WPILib's ``cosineScale``).
-
-    Examples
-    --------
-    >>> cosine_compensate([2.0, 2.0], [0.0, np.pi / 3], [0.0, 0.0]).round(12).tolist()
-    [2.0, 1.0]
     """
     speed = validation.finite_array("speed", speed)
     beta = validation.finite_array("beta", beta)
@@ -155,7 +124,9 @@ def se2_exp(twist: TwistLike, dt: float = 1.0) -> FloatArray:
     numpy.ndarray (..., 3)
         :math:`[\Delta\psi, \Delta x, \Delta y]` in the body frame at the start:
         :math:`\Delta\psi = \dot\psi\,\Delta t`,
-        :math:`\Delta\mathbf c = \mathbf V(\Delta\psi)\dot{\mathbf c}\,\Delta t`.
+        :math:`\Delta\mathbf c = \mathbf V(\Delta\psi)\dot{\mathbf c}\,\Delta t`,
+        :math:`\mathbf V(\theta) = A\mathbf I + B\mathbf E`, :math:`A = \sin\theta/\theta`,
+        :math:`B = (1-\cos\theta)/\theta`.
 
     Examples
     --------
@@ -194,11 +165,6 @@ def se2_log(delta: ArrayLike, dt: float = 1.0) -> FloatArray:
     -------
     numpy.ndarray (..., 3)
         The twist :math:`[\dot\psi, \dot x, \dot y]`.
-
-    Examples
-    --------
-    >>> se2_log([np.pi, 0.0, 2.0]).round(12).tolist()
-    [3.14159265359, 3.14159265359, 0.0]
     """
     g = validation.finite_array("delta", delta, last=3)
     dt = validation.number("dt", validation.positive("dt", dt))

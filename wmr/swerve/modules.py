@@ -61,14 +61,6 @@ def swerve_robot(robot: Robot) -> Robot:
     ------
     wmr.errors.InputValueError
         If a unit is not a swerve module (an offset, dual, fixed or Swedish wheel).
-
-    Examples
-    --------
-    >>> import wmr
-    >>> swerve_robot(wmr.paper_robot("offset")).w
-    Traceback (most recent call last):
-        ...
-    wmr.errors.InputValueError: robot must have centred wheels only (swerve modules), got units ['offset', ...]
     """
     robot = validation.numeric_robot(robot)
     if not all(u.steered and u.rolls_in_plane and u.n_rates == 1 for u in robot.wheels):
@@ -88,8 +80,7 @@ def radii(robot: Robot) -> FloatArray:
     -------
     numpy.ndarray (w,)
     """
-    robot = swerve_robot(robot)
-    return np.array([float(u.r) for u in robot.wheels])
+    return np.array([float(u.r) for u in swerve_robot(robot).wheels])
 
 
 def module_speeds(robot: Robot, beta: ArrayLike, twist: TwistLike) -> FloatArray:
@@ -135,14 +126,6 @@ def module_commands(robot: Robot, twist: TwistLike, current: ArrayLike | None = 
     Returns
     -------
     ModuleCommand
-
-    Examples
-    --------
-    >>> import wmr
-    >>> bot = wmr.Robot([wmr.CentredWheel((x, y), r=0.05) for x, y in [(1, 1), (1, -1), (-1, 1), (-1, -1)]])
-    >>> cmd = module_commands(bot, [0.0, 1.0, 0.0])          # forward at 1 m/s
-    >>> np.degrees(cmd.beta).round(9).tolist(), cmd.speed.round(12).tolist()
-    ([90.0, 90.0, 90.0, 90.0], [1.0, 1.0, 1.0, 1.0])
     """
     robot = swerve_robot(robot)
     twist = validation.twist_array("twist", twist)

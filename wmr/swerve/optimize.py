@@ -1,27 +1,9 @@
 r"""Which way to turn each module: WPILib's per-module ``optimize`` and a robot-level choice.
 
-A module realises the same wheel velocity at :math:`\beta_i` with speed :math:`s_i` and at
-:math:`\beta_i + \pi` with speed :math:`-s_i`.  WPILib's ``SwerveModuleState.optimize`` picks, module
-by module, the one nearer the current angle (turn at most :math:`\pi/2`).  Each module is then
-optimal alone, but when the needed turn is close to :math:`\pi/2` neighbouring modules can turn
-opposite ways: while they turn, their wheel planes no longer share an instantaneous centre and the
-wheels slip (a robot-level fault no per-module rule sees).
-
-The robot-level choice (:func:`optimize_robot`) takes all :math:`2^w` flip patterns
-:math:`\mathbf f \in \{0, 1\}^w` together, each giving targets :math:`\beta_i + f_i\pi`, speeds
-:math:`(-1)^{f_i}s_i` and turns :math:`\Delta_i = \operatorname{wrap}(\beta_i + f_i\pi - \beta^0_i)`,
-and minimises
-
-.. math:: J(\mathbf f) = \sum_i |\Delta_i| + w\,\bar\sigma(\mathbf f),
-
-the total re-steer (radians) plus :math:`w` times the mean relative slip :math:`\bar\sigma` of the
-transition (:func:`transition_slip`): the modules turn at one common rate along their arcs
-(:math:`\beta_i(\tau) = \beta^0_i + \operatorname{clip}(\Delta_i, -\tau, \tau)`) while driven at the new
-speeds, and :math:`\sigma = \|\mathbf J_1\mathbf t - \mathbf J_2\dot{\boldsymbol\theta}\| /
-\|\mathbf J_2\dot{\boldsymbol\theta}\| \in [0, 1]` is the share of the commanded wheel motion that
-no twist can absorb (the residual of (21), :func:`wmr.forward`).  A pattern whose modules slip
-completely throughout costs as much as one radian more of turning per module.  Ties go to the
-fewest flips.
+A module realises the same wheel velocity at :math:`\beta_i` with speed :math:`s_i` and at :math:`\beta_i + \pi`
+with :math:`-s_i`.  WPILib's ``SwerveModuleState.optimize`` picks, module by module, the one nearer the current
+angle; near a turn of :math:`\pi/2` neighbouring modules can then turn opposite ways, and while they turn their
+wheel planes share no instantaneous centre and the wheels slip.  :func:`optimize_robot` chooses all flips together.
 """
 
 from __future__ import annotations
@@ -74,9 +56,11 @@ def transition_slip(
 ) -> FloatArray:
     r"""Mean relative slip :math:`\bar\sigma` while the modules turn from ``current`` to ``beta`` at one common rate.
 
-    The transition of the module docstring, sampled at ``samples`` midpoints :math:`\tau_k = (k + \tfrac12)
-    \max|\Delta|/K`: at each, the norm of the residual of (21) over :math:`\|\mathbf s\|` (0 for zero speeds), at
-    most 1; the mean over the samples.  The common rate itself does not matter (the path is the same).
+    The modules turn along their shorter arcs :math:`\Delta_i = \operatorname{wrap}(\beta_i - \beta^0_i)`,
+    :math:`\beta_i(\tau) = \beta^0_i + \operatorname{clip}(\Delta_i, -\tau, \tau)`, driven at ``speed``; at
+    ``samples`` midpoints :math:`\tau_k = (k + \tfrac12)\max|\Delta|/K`, :math:`\sigma = \|\mathbf J_1\mathbf t -
+    \mathbf J_2\dot{\boldsymbol\theta}\| / \|\mathbf J_2\dot{\boldsymbol\theta}\| \in [0, 1]` (the residual of
+    (21), :func:`wmr.forward`; 0 for zero speeds); :math:`\bar\sigma` is their mean.
 
     Parameters
     ----------
@@ -93,15 +77,6 @@ def transition_slip(
     -------
     numpy.ndarray (...)
         In :math:`[0, 1]`; 0 when no module turns and the targets are admissible.
-
-    Examples
-    --------
-    >>> import wmr
-    >>> bot = wmr.Robot([wmr.CentredWheel((x, y), r=0.05) for x, y in [(1, 1), (1, -1), (-1, 1), (-1, -1)]])
-    >>> same = transition_slip(bot, [0.0] * 4, [np.pi / 2] * 4, [1.0] * 4)      # all turn left: parallel
-    >>> mixed = transition_slip(bot, [0.0] * 4, [np.pi / 2, -np.pi / 2] * 2, [1.0, -1.0] * 2)
-    >>> float(same.round(12)), bool(mixed > 0.3)
-    (0.0, True)
     """
     robot = swerve_robot(robot)
     w = robot.w
@@ -157,14 +132,6 @@ def optimize_modules(robot: Robot, twist: TwistLike, current: ArrayLike) -> Stee
     Returns
     -------
     SteeringChoice
-
-    Examples
-    --------
-    >>> import wmr
-    >>> bot = wmr.Robot([wmr.CentredWheel((x, y), r=0.05) for x, y in [(1, 1), (1, -1), (-1, 1), (-1, -1)]])
-    >>> ch = optimize_modules(bot, [0.0, -1.0, 0.0], [np.pi / 2] * 4)     # reverse: flip, do not turn
-    >>> ch.flipped.tolist(), ch.speed.round(12).tolist()
-    ([True, True, True, True], [-1.0, -1.0, -1.0, -1.0])
     """
     robot, cmd, cur = _targets(robot, twist, current)
     flip = np.abs(wrap_angle(cmd.beta - cur)) > np.pi / 2
@@ -183,11 +150,10 @@ def _flipped(robot, beta, speed, cur, flip, samples):
 def optimize_robot(robot: Robot, twist: TwistLike, current: ArrayLike, samples: int = 8) -> SteeringChoice:
     r"""Robot-level steering choice: all modules' flips together, minimising re-steer plus transition slip.
 
-    Minimises :math:`J(\mathbf f) = \sum_i|\Delta_i| + w\,\bar\sigma(\mathbf f)` over the :math:`2^w`
-    flip patterns (module docstring, :mod:`wmr.swerve.optimize`), vectorised over configurations and
-    patterns.  Where the per-module choice is consistent it is kept (it has the least re-steer);
-    where it turns neighbours opposite ways through a slipping transition, one turning sense is
-    chosen for all.
+    Over the :math:`2^w` flip patterns :math:`\mathbf f \in \{0, 1\}^w` (targets :math:`\beta_i + f_i\pi`, speeds
+    :math:`(-1)^{f_i}s_i`, turns :math:`\Delta_i`), minimises :math:`J(\mathbf f) = \sum_i|\Delta_i| +
+    w\,\bar\sigma(\mathbf f)`, the total re-steer plus :math:`w` times the transition slip
+    (:func:`transition_slip`); ties go to the fewest flips.
 
     Parameters
     ----------

@@ -1,27 +1,14 @@
 r"""Re-steering transients: rate-limited modules following a commanded twist, and the slip they cause.
 
-The paper's robots are "omnidirectional": any twist is admissible once the wheels are steered.
-A real module steers at a finite rate :math:`|\dot\beta_i| \le \omega_s`, so after a change of
-command the modules spend a transient at angles that realise no twist, and the wheels slip.  This
-module measures that transient for each way of commanding the modules.
-
-Model, one control period :math:`\Delta t` after another (step :math:`k`):
-
-1. the commanded twist :math:`\mathbf t_k` (a :class:`~wmr.swerve.profiles.TwistProfile`) gives target angles and
-   speeds by a **strategy**: ``"plain"`` (:func:`~wmr.swerve.modules.module_commands`: speeds :math:`\ge 0`, no
-   flips), ``"module"`` (WPILib's :func:`~wmr.swerve.optimize.optimize_modules`) or ``"robot"``
-   (:func:`~wmr.swerve.optimize.optimize_robot`), optionally with **cosine compensation**
-   (:func:`~wmr.swerve.limits.cosine_compensate`);
-2. each module turns towards its target along the shorter arc, by at most :math:`\omega_s\Delta t`;
-3. the wheels roll at the (compensated) speeds at the new angles; the platform moves with the
-   least-squares twist of (21) (:func:`~wmr.swerve.modules.chassis_twist`), held over the period
-   (the SE(2) exponential, :func:`~wmr.swerve.limits.se2_exp`), and the residual
-   :math:`\mathbf J_1\mathbf t - \mathbf J_2\dot{\boldsymbol\theta}` is the **slip**: the velocities
-   (m/s) at which the wheels must slide, :math:`\sigma_k = \|\cdot\|`;
-4. the **reference** pose integrates the commanded twists the same way; the **path error** is the
-   distance between the two positions of C.
-
-A run is deterministic (no random input, a fixed step); :mod:`wmr.swerve.plot` draws it.
+A real module steers at a finite rate :math:`|\dot\beta_i| \le \omega_s`, so after a change of command the
+modules spend a transient at angles that realise no twist, and the wheels slip.  In each control period
+:math:`\Delta t`: (1) the commanded twist :math:`\mathbf t_k` of a :class:`~wmr.swerve.profiles.TwistProfile`
+gives targets by a **strategy** (``"plain"``: :func:`~wmr.swerve.modules.module_commands`; ``"module"``:
+:func:`~wmr.swerve.optimize.optimize_modules`; ``"robot"``: :func:`~wmr.swerve.optimize.optimize_robot`),
+optionally cosine-compensated; (2) each module turns towards its target by at most :math:`\omega_s\Delta t`;
+(3) the platform moves with the least-squares twist of (21) held over the period (:func:`~wmr.swerve.limits.se2_exp`),
+the residual's norm being the **slip** :math:`\sigma_k` (m/s); (4) the **path error** is the distance of C from
+the reference pose that integrates the commanded twists.
 """
 
 from __future__ import annotations
@@ -39,7 +26,6 @@ from ..model.types import ArrayLike
 from .limits import cosine_compensate, se2_exp
 from .modules import chassis_twist, module_commands, swerve_robot
 from .optimize import optimize_modules, optimize_robot
-from .profiles import MAX_STEPS as MAX_STEPS  # implementation, importable here as before
 from .profiles import TwistProfile, direction_change, spin_and_translate
 
 __all__ = [
@@ -161,14 +147,6 @@ def resteer_transient(
     Returns
     -------
     Transient
-
-    Examples
-    --------
-    >>> import wmr
-    >>> bot = wmr.Robot([wmr.CentredWheel((x, y), r=0.05) for x, y in [(.3, .3), (.3, -.3), (-.3, .3), (-.3, -.3)]])
-    >>> run = resteer_transient(bot, direction_change(angle=0.0))          # no change: nothing to re-steer
-    >>> run.slip_distance < 1e-12, run.max_path_error < 1e-12
-    (True, True)
     """
     robot = swerve_robot(robot)
     if not isinstance(profile, TwistProfile):
@@ -287,14 +265,6 @@ def resteer_study(
     Returns
     -------
     TransientStudy
-
-    Examples
-    --------
-    >>> import wmr
-    >>> bot = wmr.Robot([wmr.CentredWheel((x, y), r=0.05) for x, y in [(.3, .3), (.3, -.3), (-.3, .3), (-.3, -.3)]])
-    >>> study = resteer_study(bot, direction_change(spin=0.5))
-    >>> [row["strategy"] for row in study.table()]
-    ['plain', 'module', 'module + cos', 'robot', 'robot + cos']
     """
     rate = validation.number("steer_rate", validation.positive("steer_rate", steer_rate))
     try:
