@@ -150,13 +150,14 @@ def profile(robot) -> dict:
     ``L`` (:func:`wmr.characteristic_length`), ``kappa_JL1`` (at that L), ``kappa_J2``.
     """
     robot = validation.numeric_robot(robot)
-    c = campion_class(robot)
     L = float(characteristic_length(robot))
+    kappa_JL1 = float(condition_number(robot.J1(L=L)))
+    c = campion_class(robot)
     return {
         "class": c.label,
         "actuated_mobility": int(actuated_mobility(robot, np.asarray(c.beta))),
         "L": L,
-        "kappa_JL1": float(condition_number(robot.J1(L=L))),
+        "kappa_JL1": kappa_JL1,
         "kappa_J2": float(condition_number(robot.J2(np.zeros(robot.w)))),
     }
 

@@ -31,11 +31,11 @@ from ..model.backend import NUMERIC
 from ..model.limits import check
 from ..model.platform import rotated
 from ..model.robot import Robot
-from ..model.tolerance import TOL
-from ..model.types import ArrayLike, TwistLike
+from ..model.tolerance import TOL, column_norms
+from ..model.types import ArrayLike, FloatArray, TwistLike
 from ._batch import for_chunks
 from .actuation import driven_columns, uncontrolled
-from .linalg import pinv_columns, rank
+from .linalg import rank
 
 __all__ = ["Solution", "forward", "inverse"]
 
@@ -139,6 +139,19 @@ def _pinv_rank(M):
     """
     M = np.ascontiguousarray(M, dtype=float)
     return _pinv_rank_of(M.tobytes(), M.shape)
+
+
+def pinv_columns(A: FloatArray) -> FloatArray:
+    r"""Pseudo-inverse ``(n, m)`` of a finite matrix, columns scaled: :math:`\mathbf D^{-1}(\mathbf A\mathbf D^{-1})^+`.
+
+    Singular values at most ``TOL`` times the largest are dropped (the rank rule), so for full column
+    rank this is :math:`\mathbf A^+` whatever the units of the columns.
+    """
+    scale = column_norms(A)
+    with np.errstate(over="ignore", invalid="ignore"):
+        P = np.linalg.pinv(A / scale, rcond=TOL) / scale[:, None]
+    _finite("A", A, P)
+    return P
 
 
 @functools.lru_cache(maxsize=256)
