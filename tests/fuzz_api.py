@@ -575,7 +575,7 @@ CASES = [
             (("robot", "robot3"), ("beta", "beta"), ("L", "L_opt")),
             robots=(0,),
         )
-        for f in ("det_J", "det_J_scale", "is_singular")
+        for f in ("det_J", "is_singular")
     ],
     Case(
         "classify",

@@ -47,6 +47,7 @@ from ._batch import for_chunks
 from .linalg import null_space, rank
 from .lines import AT_INFINITY, FINITE
 from .mobility import twist_constraints
+from .sv_decisions import rank_from_singular_values
 
 __all__ = ["actuated_mobility", "free_twists", "uncontrolled", "MotionKind", "Motion"]
 
@@ -185,8 +186,7 @@ def uncontrolled(robot, beta, twist) -> tuple[np.ndarray, np.ndarray]:
             Ah = Ap / s
             full = Ah.shape[-2] < 3  # right vectors (k, 3, 3) either way; no (k, rows, rows) left ones
             _, sv, Vt = np.linalg.svd(Ah, full_matrices=full)
-            null = np.ones((z - a, 3), dtype=bool)  # rows of Vt beyond the rank
-            null[:, : sv.shape[-1]] = sv <= TOL * sv[:, :1]
+            null = np.arange(3) >= rank_from_singular_values(sv)[:, None]  # rows of Vt beyond the rank
             coef = np.einsum("...ij,...j->...i", Vt, flat_that[a:z]) * null
             out[a:z] = np.einsum("...ij,...i->...j", Vt, coef)
 

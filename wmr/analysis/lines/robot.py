@@ -134,12 +134,7 @@ def planes_through(robot: Robot, D: ArrayLike) -> FloatArray:
     numpy.ndarray (..., w)
         (Fixed and Swedish wheels cannot turn: their entries are their own angles.)
     """
-    robot = validation.numeric_robot(robot)
-    D = validation.finite_array("D", D, last=2)
-    v = D[..., None, :] - robot.mount_points  # (..., w, 2)
-    beta = np.arctan2(-v[..., 0], v[..., 1])  # j = (-sin b, cos b) || v
-    beta = np.where(_at(v, robot, D), 0.0, beta)
-    return robot.effective_beta(line_angle(beta))  # fixed, Swedish: their own angle
+    return _through(robot, validation.finite_array("D", D, last=2), planes=True)
 
 
 def axles_through(robot: Robot, U: ArrayLike) -> FloatArray:
@@ -155,18 +150,18 @@ def axles_through(robot: Robot, U: ArrayLike) -> FloatArray:
     numpy.ndarray (..., w), in :math:`(-\pi/2, \pi/2]`
         (except fixed and Swedish wheels: their own angles).
     """
+    return _through(robot, validation.finite_array("U", U, last=2), planes=False)
+
+
+def _through(robot, X, planes):
+    """Angles whose wheel planes (or axles) pass through X; 0 where X is a mount point (within TOL)."""
     robot = validation.numeric_robot(robot)
-    U = validation.finite_array("U", U, last=2)
-    v = U[..., None, :] - robot.mount_points
-    beta = np.arctan2(v[..., 1], v[..., 0])  # i = (cos b, sin b) || v
-    beta = np.where(_at(v, robot, U), 0.0, beta)
-    return robot.effective_beta(line_angle(beta))  # fixed, Swedish: their own angle
-
-
-def _at(v, robot, X):
-    """Where the point X is a mount point: ``max|X - P_i| <= TOL`` times the size of the robot and of X."""
+    v = X[..., None, :] - robot.mount_points  # (..., w, 2)
+    # planes: j = (-sin b, cos b) || v; axles: i = (cos b, sin b) || v
+    beta = np.arctan2(-v[..., 0], v[..., 1]) if planes else np.arctan2(v[..., 1], v[..., 0])
     size = np.maximum(np.abs(robot.mount_points).max(), np.abs(X).max(axis=-1, keepdims=True))
-    return np.abs(v).max(axis=-1) <= TOL * size
+    beta = np.where(np.abs(v).max(axis=-1) <= TOL * size, 0.0, beta)
+    return robot.effective_beta(line_angle(beta))  # fixed, Swedish: their own angle
 
 
 def pair_line_angle(robot: Robot, i: int, j: int) -> float:
