@@ -490,7 +490,6 @@ CASES = [
     Case("count", lambda value: sweep_configurations.count("value", value), (("value", "count"),)),
     Case("J_length", lambda robot, L: sweep_analyses.J_length(robot, L), (R, ("L", "L_opt"))),
     Case("require_square", lambda robot: square.require_square(robot), (R,)),
-    Case("default_L", lambda robot, L: square.default_L(robot, L), (("robot", "any_robot"), ("L", "L_opt"))),
     Case("wheel_kind", lambda kind: wheels.wheel_kind(kind), (("kind", "kind"),)),
     Case("constant", lambda angle: unsteered.constant("angle", angle), (("angle", "angle"),)),
     Case(
@@ -697,7 +696,6 @@ CASES = [
     Case("Twist", lambda twist: wmr.Twist.of(twist), (("twist", "twist1"),)),
     # --- actuation, limitations, checked advice, glossary (issue 24)
     Case("actuated_mobility", lambda robot, beta: actuation.actuated_mobility(robot, beta), (R, B)),
-    Case("driven_columns", lambda robot: actuation.driven_columns(robot), (R,)),
     Case("free_twists", lambda robot, beta: actuation.free_twists(robot, beta), (R, ("beta", "beta1"))),
     Case("uncontrolled", lambda robot, beta, twist: actuation.uncontrolled(robot, beta, twist), (R, B, T), allow="inf"),
     Case("motion", lambda robot, twist: actuation.motion(robot, twist), (R, ("twist", "twist1"))),
@@ -705,16 +703,7 @@ CASES = [
         "describe_twist", lambda robot, twist: limitation_words.describe_twist(robot, twist), (R, ("twist", "twist1"))
     ),
     Case("limitations", lambda robot: limitations.limitations(robot), (R,)),
-    Case("steering_limitations", lambda robot: limitations.steering_limitations(robot), (R,)),
-    Case("profile", lambda robot: advice.profile(robot), (R,), allow="inf"),
     Case("advice", lambda robot: advice.advice(robot), (R,), allow="inf"),
-    Case("actuation_advice", lambda robot: advice.actuation_advice(robot), (R,), allow="inf"),
-    Case(
-        "motor_conditioning",
-        lambda robot, beta: advice.motor_conditioning(robot, beta),
-        (R, ("beta", "beta1")),
-        allow="inf",
-    ),
     Case("lookup", lambda term: glossary.lookup(term), (("term", "term"),)),
     Case("checked", lambda convention: conventions.checked(convention), (("convention", "convention"),)),
     Case(

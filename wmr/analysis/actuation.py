@@ -54,7 +54,6 @@ __all__ = ["actuated_mobility", "free_twists", "uncontrolled", "MotionKind", "Mo
 
 def driven_columns(robot) -> np.ndarray:
     """Which rate columns of :math:`\\mathbf J_2` a motor drives (n_rates,), in the order of :attr:`wmr.Robot.rate_names`."""
-    robot = validation.robot(robot)
     return np.array([j.driven for u in robot.wheels for j in u.joints if j.rate is not None], dtype=bool)
 
 

@@ -26,11 +26,10 @@ __all__ = [
 ]
 
 
-def _unit_points(robot, beta):
-    """Each unit's points and axes (``unit.points``) at the steering angles ``beta (..., w)``."""
-    robot = validation.numeric_robot(robot)
-    beta = robot.effective_beta(beta)
-    return [u.points(beta[..., i]) for i, u in enumerate(robot.wheels)]
+def _lines(robot, beta, at, along):
+    """Points ``at`` and directions ``along`` (keys of ``unit.points``) of the units of a checked robot at checked ``beta``."""
+    pts = [u.points(beta[..., i]) for i, u in enumerate(robot.wheels)]
+    return np.stack([p[at] for p in pts], axis=-2), np.stack([p[along] for p in pts], axis=-2)
 
 
 def wheel_plane_lines(robot: Robot, beta: ArrayLike) -> tuple[FloatArray, FloatArray]:
@@ -50,8 +49,8 @@ def wheel_plane_lines(robot: Robot, beta: ArrayLike) -> tuple[FloatArray, FloatA
     directions : numpy.ndarray (..., w, 2)
         Unit vectors :math:`\mathbf j_i`.
     """
-    pts = _unit_points(robot, beta)
-    return np.stack([p["P"] for p in pts], axis=-2), np.stack([p["j"] for p in pts], axis=-2)
+    robot = validation.numeric_robot(robot)
+    return _lines(robot, robot.effective_beta(beta), "P", "j")
 
 
 def axle_lines(robot: Robot, beta: ArrayLike) -> tuple[FloatArray, FloatArray]:
@@ -68,8 +67,8 @@ def axle_lines(robot: Robot, beta: ArrayLike) -> tuple[FloatArray, FloatArray]:
         Wheel centres :math:`H_i` (body frame).
     directions : numpy.ndarray (..., w, 2)
     """
-    pts = _unit_points(robot, beta)
-    return np.stack([p["H"] for p in pts], axis=-2), np.stack([p["i"] for p in pts], axis=-2)
+    robot = validation.numeric_robot(robot)
+    return _lines(robot, robot.effective_beta(beta), "H", "i")
 
 
 def _one(robot, beta, what):
@@ -83,7 +82,7 @@ def _one(robot, beta, what):
         raise InputValueError(
             f"beta must be one configuration of shape ({robot.w},) for {what}, got shape {beta.shape}"
         )
-    return beta
+    return robot, beta
 
 
 def concurrency_point(robot: Robot, beta: ArrayLike) -> Concurrency:
@@ -99,7 +98,8 @@ def concurrency_point(robot: Robot, beta: ArrayLike) -> Concurrency:
     Concurrency
         For three centred wheels ``kind == NONE`` exactly when :math:`\det\mathbf J \ne 0`.
     """
-    return lines_concurrency(*wheel_plane_lines(robot, _one(robot, beta, "concurrency_point")))
+    robot, beta = _one(robot, beta, "concurrency_point")
+    return lines_concurrency(*_lines(robot, beta, "P", "j"))
 
 
 def axles_concurrency(robot: Robot, beta: ArrayLike) -> Concurrency:
@@ -114,7 +114,8 @@ def axles_concurrency(robot: Robot, beta: ArrayLike) -> Concurrency:
     -------
     Concurrency
     """
-    return lines_concurrency(*axle_lines(robot, _one(robot, beta, "axles_concurrency")))
+    robot, beta = _one(robot, beta, "axles_concurrency")
+    return lines_concurrency(*_lines(robot, beta, "H", "i"))
 
 
 def planes_through(robot: Robot, D: ArrayLike) -> FloatArray:
