@@ -72,7 +72,7 @@ class Solution:
 class _Constants:
     r"""What the kernels need of a robot, as matrices over all units (numbers).
 
-    ``J1`` (2w, 3); ``pinv_J1`` (3, 2w), column-scaled (:func:`~wmr.analysis.linalg.pinv_columns`);
+    ``J1`` (2w, 3); ``pinv_J1`` (3, 2w), column-scaled (:func:`pinv_columns`);
     ``L``, ``EL`` (2w, n_rates): the block diagonals of the units' :math:`\mathbf L_i` and
     :math:`\mathbf E\mathbf L_i`, so that :math:`\mathbf J_2(\boldsymbol\beta)\dot{\boldsymbol\theta}` is
     ``rotated((cos, sin), L @ theta, EL @ theta)`` with each unit's cosine and sine repeated over
