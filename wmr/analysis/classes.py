@@ -52,7 +52,7 @@ from ..model import validation
 from ..model.robot import Robot
 from ..model.tolerance import TOL
 from .linalg import null_space, rank
-from .mobility import row_units, twist_constraints
+from .mobility import twist_constraints
 from .steering import steering_angles
 
 __all__ = ["CampionClass", "campion_class"]
@@ -117,8 +117,11 @@ class CampionClass:
 
 def _rows(robot, keep, beta):
     """The twist-constraint rows (k, 3) of the units ``keep`` (indices) at ``beta`` (w,): C1f or C1s."""
-    A, _ = twist_constraints(robot, beta)
-    return A[np.isin(row_units(robot), keep)]  # each unit's rows depend on its own angle only
+    if not keep:
+        return np.zeros((0, 3))
+    sub = Robot([robot.wheels[i] for i in keep], name="part")  # same mount points, same operation point C
+    A, _ = twist_constraints(sub, beta[keep])
+    return A
 
 
 def _translation(t, scale):

@@ -76,22 +76,12 @@ def twist_constraints(robot: Robot, beta: ArrayLike, free: ArrayLike | None = No
     robot = validation.numeric_robot(robot)
     beta = robot.effective_beta(beta)
     free = np.ones(robot.n_rates, dtype=bool) if free is None else np.asarray(free, dtype=bool)
-    terms, base_rank, _ = _constraints(robot, free)
+    terms, base_rank = robot._layout.memo(("twist_constraints", free.tobytes()), lambda: _constraint_terms(robot, free))
     return combine_checked(beta, terms), base_rank
 
 
-def row_units(robot: Robot) -> IntArray:
-    """The unit of each row of :func:`twist_constraints` (all rates free), (k,): a unit's rows follow the previous unit's."""
-    return _constraints(robot, np.ones(robot.n_rates, dtype=bool))[2]
-
-
-def _constraints(robot, free):
-    """:func:`_constraint_terms`, computed once per robot and set of free columns."""
-    return robot._layout.memo(("twist_constraints", free.tobytes()), lambda: _constraint_terms(robot, free))
-
-
 def _constraint_terms(robot, free):
-    """The :class:`~wmr.model.trig.Terms` of :func:`twist_constraints`, its base rank and :func:`row_units`."""
+    """The :class:`~wmr.model.trig.Terms` of :func:`twist_constraints` and its base rank (constant for a robot)."""
     Ns = []
     for u, sl in zip(robot.wheels, robot.rate_slices):
         Lf = np.asarray(u.local_block(NUMERIC), dtype=float)[:, free[sl]]
@@ -112,7 +102,7 @@ def _constraint_terms(robot, free):
     unit = np.repeat(np.array(units, dtype=np.intp), 3)
     p, q = P.ravel(), Q.ravel()
     keep = (p != 0.0) | (q != 0.0)
-    return Terms((k, 3), entry[keep], unit[keep], p[keep], q[keep]), base_rank, np.array(units, dtype=np.intp)
+    return Terms((k, 3), entry[keep], unit[keep], p[keep], q[keep]), base_rank
 
 
 @functools.lru_cache(maxsize=256)
