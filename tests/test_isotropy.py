@@ -104,7 +104,7 @@ def test_JL1_isotropic_with_centroid_at_C(bot):
     L = I.characteristic_length(centred)
     assert np.isclose(L**2, np.mean(np.sum(centred.mount_points**2, axis=1)))
     JL1 = centred.J1(L)
-    assert np.allclose(LA.gram(JL1), centred.w * np.eye(3), atol=1e-12)
+    assert np.allclose(JL1.T @ JL1, centred.w * np.eye(3), atol=1e-12)
     assert bool(I.is_isotropic(JL1))
     # a different length, or C away from the centroid, breaks isotropy
     assert not bool(I.is_isotropic(centred.J1(1.5 * L)))
@@ -150,7 +150,7 @@ def test_is_isotropic_uses_TOL():
 
 @pytest.mark.parametrize("A, value", [([1.0, 2.0], "(2,)"), ([[np.nan, 1.0]], "nan"), ("x", "'x'")])
 def test_bad_input(A, value):
-    for f in (LA.condition_number, I.is_isotropic, LA.gram):
+    for f in (LA.condition_number, I.is_isotropic):
         with pytest.raises(TypeError if isinstance(A, str) else ValueError) as exc:
             f(A)
         assert "A" in str(exc.value) and value in str(exc.value), str(exc.value)

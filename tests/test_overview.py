@@ -6,8 +6,9 @@ import pytest
 import wmr
 from wmr.analysis.advice import Suggestion
 from wmr.analysis.linalg import rank
-from wmr.analysis.overview import configurations, dead_zone_radius, overview, singular_families
+from wmr.analysis.overview import configurations, overview, singular_families
 from wmr.analysis.sweep import Grid
+from wmr.analysis.unit_design import dead_zone_radius
 
 EXAMPLES = __import__("pathlib").Path(__file__).resolve().parent.parent / "examples"
 

@@ -4,7 +4,7 @@ import numpy as np
 
 import wmr
 from edition.checks.assembly import dead_zone
-from wmr.analysis.overview import dead_zone_radius
+from wmr.analysis.unit_design import dead_zone_radius
 
 
 def test_dead_zone_agrees_with_the_simulation():

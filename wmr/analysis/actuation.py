@@ -47,13 +47,13 @@ from ._batch import for_chunks
 from .linalg import null_space, rank
 from .lines import AT_INFINITY, FINITE
 from .mobility import twist_constraints
+from .sv_decisions import rank_from_singular_values
 
 __all__ = ["actuated_mobility", "free_twists", "uncontrolled", "MotionKind", "Motion"]
 
 
 def driven_columns(robot) -> np.ndarray:
     """Which rate columns of :math:`\\mathbf J_2` a motor drives (n_rates,), in the order of :attr:`wmr.Robot.rate_names`."""
-    robot = validation.robot(robot)
     return np.array([j.driven for u in robot.wheels for j in u.joints if j.rate is not None], dtype=bool)
 
 
@@ -185,8 +185,7 @@ def uncontrolled(robot, beta, twist) -> tuple[np.ndarray, np.ndarray]:
             Ah = Ap / s
             full = Ah.shape[-2] < 3  # right vectors (k, 3, 3) either way; no (k, rows, rows) left ones
             _, sv, Vt = np.linalg.svd(Ah, full_matrices=full)
-            null = np.ones((z - a, 3), dtype=bool)  # rows of Vt beyond the rank
-            null[:, : sv.shape[-1]] = sv <= TOL * sv[:, :1]
+            null = np.arange(3) >= rank_from_singular_values(sv)[:, None]  # rows of Vt beyond the rank
             coef = np.einsum("...ij,...j->...i", Vt, flat_that[a:z]) * null
             out[a:z] = np.einsum("...ij,...i->...j", Vt, coef)
 

@@ -129,7 +129,6 @@ def motor_conditioning(robot, beta) -> float:
     basis of the admissible twists in dimensionless coordinates; ``inf`` when some admissible direction
     needs no motor.
     """
-    robot = validation.numeric_robot(robot)
     beta = robot.effective_beta(beta)
     s = robot.F_column_norms[:3]  # dimensionless twist coordinates
     T = admissible_twists(robot, beta) * s[:, None]  # dimensionless, then orthonormalised
@@ -149,14 +148,14 @@ def profile(robot) -> dict:
     A dict: ``class`` (Campion's label), ``actuated_mobility`` (at the class's generic configuration),
     ``L`` (:func:`wmr.characteristic_length`), ``kappa_JL1`` (at that L), ``kappa_J2``.
     """
-    robot = validation.numeric_robot(robot)
-    c = campion_class(robot)
     L = float(characteristic_length(robot))
+    kappa_JL1 = float(condition_number(robot.J1(L=L)))
+    c = campion_class(robot)
     return {
         "class": c.label,
         "actuated_mobility": int(actuated_mobility(robot, np.asarray(c.beta))),
         "L": L,
-        "kappa_JL1": float(condition_number(robot.J1(L=L))),
+        "kappa_JL1": kappa_JL1,
         "kappa_J2": float(condition_number(robot.J2(np.zeros(robot.w)))),
     }
 
@@ -199,7 +198,6 @@ def actuation_advice(robot, before=None) -> list[Advice]:
     Of the sets of at most four units with another build that give an actuated mobility equal to the
     degree of mobility, the one with the smallest :func:`motor_conditioning` (fewer changes on a tie).
     """
-    robot = validation.numeric_robot(robot)
     before = profile(robot) if before is None else before
     dm = _delta_m(before["class"])
     if before["actuated_mobility"] >= dm:

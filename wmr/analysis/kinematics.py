@@ -31,11 +31,11 @@ from ..model.backend import NUMERIC
 from ..model.limits import check
 from ..model.platform import rotated
 from ..model.robot import Robot
-from ..model.tolerance import TOL
-from ..model.types import ArrayLike, TwistLike
+from ..model.tolerance import TOL, column_norms
+from ..model.types import ArrayLike, FloatArray, TwistLike
 from ._batch import for_chunks
 from .actuation import driven_columns, uncontrolled
-from .linalg import pinv_columns, rank
+from .linalg import rank
 
 __all__ = ["Solution", "forward", "inverse"]
 
@@ -72,7 +72,7 @@ class Solution:
 class _Constants:
     r"""What the kernels need of a robot, as matrices over all units (numbers).
 
-    ``J1`` (2w, 3); ``pinv_J1`` (3, 2w), column-scaled (:func:`~wmr.analysis.linalg.pinv_columns`);
+    ``J1`` (2w, 3); ``pinv_J1`` (3, 2w), column-scaled (:func:`pinv_columns`);
     ``L``, ``EL`` (2w, n_rates): the block diagonals of the units' :math:`\mathbf L_i` and
     :math:`\mathbf E\mathbf L_i`, so that :math:`\mathbf J_2(\boldsymbol\beta)\dot{\boldsymbol\theta}` is
     ``rotated((cos, sin), L @ theta, EL @ theta)`` with each unit's cosine and sine repeated over
@@ -139,6 +139,19 @@ def _pinv_rank(M):
     """
     M = np.ascontiguousarray(M, dtype=float)
     return _pinv_rank_of(M.tobytes(), M.shape)
+
+
+def pinv_columns(A: FloatArray) -> FloatArray:
+    r"""Pseudo-inverse ``(n, m)`` of a finite matrix, columns scaled: :math:`\mathbf D^{-1}(\mathbf A\mathbf D^{-1})^+`.
+
+    Singular values at most ``TOL`` times the largest are dropped (the rank rule), so for full column
+    rank this is :math:`\mathbf A^+` whatever the units of the columns.
+    """
+    scale = column_norms(A)
+    with np.errstate(over="ignore", invalid="ignore"):
+        P = np.linalg.pinv(A / scale, rcond=TOL) / scale[:, None]
+    _finite("A", A, P)
+    return P
 
 
 @functools.lru_cache(maxsize=256)

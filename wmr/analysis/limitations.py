@@ -99,7 +99,6 @@ def _of_class(robot, c) -> list[Limitation]:
 
 def steering_limitations(robot) -> list[Limitation]:
     """Steered units whose angle nothing controls: one ``UNSTEERED`` limitation each (see the module notes)."""
-    robot = validation.robot(robot)
     return [
         Limitation(LimitationKind.UNSTEERED, unit=k)
         for k, u in enumerate(robot.wheels)

@@ -14,7 +14,7 @@ import numpy as np
 
 from ..errors import InputValueError
 from ..model import validation
-from ..model.tolerance import TOL, column_norms
+from ..model.tolerance import column_norms
 from ..model.types import ArrayLike, FloatArray, IntArray
 from . import _closed
 from .sv_decisions import kappa_from_singular_values, rank_from_singular_values
@@ -22,8 +22,8 @@ from .sv_decisions import kappa_from_singular_values, rank_from_singular_values
 __all__ = ["singular_values", "rank", "nullity", "null_space", "condition_number", "det"]
 
 
-def _as_stack(A: ArrayLike) -> FloatArray:
-    """Validate a stack of matrices ``(..., m, n)`` of finite reals."""
+def _stack(A: ArrayLike) -> FloatArray:
+    """The entry check of this module: a stack of matrices ``(..., m, n)`` of finite reals."""
     A = validation.finite_array("A", A)
     if A.ndim < 2:
         raise InputValueError(f"A must have shape (..., m, n), got shape {A.shape}")
@@ -46,7 +46,7 @@ def singular_values(A: ArrayLike) -> FloatArray:
     >>> singular_values([[3.0, 0.0], [0.0, -4.0]]).tolist()
     [4.0, 3.0]
     """
-    A = _as_stack(A)
+    A = _stack(A)
     if min(A.shape[-2:]) == 0:
         return np.zeros(A.shape[:-2] + (0,))
     big = np.max(np.abs(A), axis=(-2, -1))
@@ -59,7 +59,6 @@ def singular_values(A: ArrayLike) -> FloatArray:
     return np.linalg.svd(A, compute_uv=False)
 
 
-@np.errstate(over="ignore", invalid="ignore")
 def _finite(name, result, what):
     """Overflow is detected, not propagated: a result from finite input is finite or the call raises."""
     if not np.isfinite(result).all():
@@ -67,16 +66,9 @@ def _finite(name, result, what):
     return result
 
 
-def _check_scale(scale: ArrayLike, n: int) -> FloatArray:
-    scale = validation.finite_array("scale", scale, last=n)
-    if np.any(scale <= 0):
-        raise InputValueError(f"scale must hold positive column sizes, got {validation.show(scale)}")
-    return scale
-
-
-def _scaled(A: FloatArray, scale: ArrayLike | None) -> FloatArray:
+def _scaled(A: FloatArray, scale: FloatArray | None) -> FloatArray:
     """``A`` with column j divided by ``scale[..., j]`` (default: the column lengths)."""
-    scale = column_norms(A) if scale is None else _check_scale(scale, A.shape[-1])
+    scale = column_norms(A) if scale is None else scale
     with np.errstate(over="ignore", under="ignore"):
         out = A / scale[..., None, :]
     if not np.isfinite(out).all():
@@ -111,15 +103,15 @@ def rank(A: ArrayLike, scale: ArrayLike | None = None) -> IntArray:
     >>> int(rank(np.diag([1.0, 1e-12]))), int(rank(np.diag([1.0, 1e-12]), scale=[1.0, 1.0]))
     (2, 1)
     """
-    A = _as_stack(A)
+    A = _stack(A)
+    if scale is not None:
+        scale = validation.finite_array("scale", scale, last=A.shape[-1])
+        if np.any(scale <= 0):
+            raise InputValueError(f"scale must hold positive column sizes, got {validation.show(scale)}")
     p = min(A.shape[-2:])
-    constant = scale is not None and np.ndim(scale) == 1
-    if p == 0 or p > 3 or not constant:
+    if p == 0 or p > 3 or scale is None or scale.ndim != 1:
         A = _scaled(A, scale)  # column sizes per matrix: one pass over the stack
-        scale = None
-    else:
-        assert scale is not None  # (constant)
-        scale = _check_scale(scale, A.shape[-1])  # one size per column: applied chunk by chunk
+        scale = None  # else one size per column: applied chunk by chunk
     if p == 0 or p > 3:
         return rank_from_singular_values(singular_values(A))
     flat = A.reshape((-1,) + A.shape[-2:])
@@ -188,28 +180,13 @@ def null_space(A: ArrayLike, scale: ArrayLike | None = None) -> FloatArray:
     return Vt[r:].T.copy()
 
 
-def pinv_columns(A: ArrayLike) -> FloatArray:
-    r"""Pseudo-inverse ``(n, m)`` with the columns scaled as in :func:`rank`: :math:`\mathbf D^{-1}(\mathbf A\mathbf D^{-1})^+`.
-
-    Singular values at most ``TOL`` times the largest are dropped (the rank rule), so for full column
-    rank this is :math:`\mathbf A^+` whatever the units of the columns.
-    """
-    A = validation.finite_array("A", A)
-    if A.ndim != 2:
-        raise InputValueError(f"A must be one matrix (m, n), got shape {A.shape}")
-    scale = column_norms(A)
-    with np.errstate(over="ignore", invalid="ignore"):
-        return _finite("A", np.linalg.pinv(A / scale, rcond=TOL) / scale[:, None], "the entries of its pseudo-inverse")
-
-
 def left_null_space(A: ArrayLike) -> FloatArray:
     r"""Orthonormal ``(m, m - rank A)`` with :math:`\mathbf u^T\mathbf A = \mathbf 0`, columns scaled as for :func:`rank`."""
-    A = _as_stack(A)
+    r = int(rank(A))  # (checks A)
+    A = np.asarray(A, dtype=float)
     if A.ndim != 2:
         raise InputValueError(f"A must be one matrix (m, n) for left_null_space, got shape {A.shape}")
-    U, s, _ = np.linalg.svd(_scaled(A, None))
-    r = int(rank_from_singular_values(s[None, :])[0]) if s.size else 0
-    return U[:, r:]
+    return np.linalg.svd(_scaled(A, None))[0][:, r:]
 
 
 def condition_number(A: ArrayLike) -> FloatArray:
@@ -234,7 +211,7 @@ def condition_number(A: ArrayLike) -> FloatArray:
     >>> condition_number([np.diag([3.0, 2.0, 1.0]), np.ones((3, 3))]).tolist()
     [3.0, inf]
     """
-    A = _as_stack(A)
+    A = _stack(A)
     if min(A.shape[-2:]) == 0:
         raise InputValueError(
             f"A must have at least one row and one column for a condition number, got shape {A.shape}"
@@ -247,13 +224,6 @@ def condition_number(A: ArrayLike) -> FloatArray:
     if todo.size:
         kappa[todo] = kappa_from_singular_values(singular_values(flat[todo]))
     return kappa.reshape(A.shape[:-2])
-
-
-def gram(A: ArrayLike) -> FloatArray:
-    r"""The product :math:`\mathbf A^T\mathbf A` ``(..., n, n)`` of each matrix of a stack, as in (34), (40) and (54)."""
-    A = _as_stack(A)
-    with np.errstate(over="ignore", invalid="ignore"):
-        return _finite("A", np.swapaxes(A, -1, -2) @ A, "the entries of A^T A")
 
 
 def det(A: ArrayLike) -> FloatArray:
@@ -279,7 +249,7 @@ def det(A: ArrayLike) -> FloatArray:
     >>> det(np.stack([np.eye(3), 2 * np.eye(3)])).tolist()
     [1.0, 8.0]
     """
-    A = _as_stack(A)
+    A = _stack(A)
     n = A.shape[-1]
     if A.shape[-2] != n:
         raise InputValueError(f"A must be a stack of square matrices (..., n, n), got shape {A.shape}")

@@ -82,14 +82,15 @@ def twist_constraints(robot: Robot, beta: ArrayLike, free: ArrayLike | None = No
 
 def _constraint_terms(robot, free):
     """The :class:`~wmr.model.trig.Terms` of :func:`twist_constraints` and its base rank (constant for a robot)."""
-    J1 = robot.J1()
+    Ns = []
+    for u, sl in zip(robot.wheels, robot.rate_slices):
+        Lf = np.asarray(u.local_block(NUMERIC), dtype=float)[:, free[sl]]
+        Ns.append(_left_null(Lf.tobytes(), Lf.shape) if Lf.shape[1] else np.eye(2))  # (2, k_i), constant
     # R(beta)^T = cos(beta) 1 + sin(beta) E^T (11), so the rows N_i^T R^T [E d_i 1] are
     # cos(beta_i) P_i + sin(beta_i) Q_i with constant P_i = N_i^T J1_i, Q_i = N_i^T E^T J1_i.
-    Et = E(NUMERIC).T
+    J1, Et = robot.J1(), E(NUMERIC).T
     units, Ps, Qs, base_rank = [], [], [], 0
-    for i, (u, sl) in enumerate(zip(robot.wheels, robot.rate_slices)):
-        Lf = np.asarray(u.local_block(NUMERIC), dtype=float)[:, free[sl]]
-        N = _left_null(Lf.tobytes(), Lf.shape) if Lf.shape[1] else np.eye(2)  # (2, k_i), constant
+    for i, N in enumerate(Ns):
         base_rank += 2 - N.shape[1]  # rank L_i (of its free columns)
         Ji = J1[2 * i : 2 * i + 2]
         units += [i] * N.shape[1]

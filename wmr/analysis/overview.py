@@ -18,7 +18,6 @@ import numpy as np
 from ..model import validation
 from ..model.limits import check
 from ..model.robot import Robot
-from ..model.tolerance import TOL
 from ..model.types import FloatArray
 from .advice import advice, profile
 from .classes import campion_class
@@ -29,7 +28,7 @@ from .linalg import condition_number
 from .mobility import rank_F
 from .steering import steering_angles
 from .sweep import Drivable, Grid, Sample, sweep
-from .unit_design import dead_zone
+from .unit_design import dead_zone, dead_zone_radius
 
 __all__ = ["Overview", "overview"]
 
@@ -43,7 +42,6 @@ TWISTS = 2000
 
 def special_twists(robot):
     """The motions (4 + w, 3) where rank drops are expected: translations along x, y, the diagonal; spins about C, each P_i."""
-    robot = validation.numeric_robot(robot)
     special = [[0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [0.0, 1.0, 1.0], [1.0, 0.0, 0.0]]
     special += [[1.0, d[1], -d[0]] for d in robot.mount_points]  # spin about P_i: c_dot = -psi E d_i
     return np.array(special)
@@ -56,7 +54,7 @@ def configurations(robot: Robot, grid: int | None = None, twists: int = TWISTS, 
     random configurations instead when that would make more than ``4 * grid``); then the steering angles
     of :func:`special_twists` and of ``twists`` random twists.  Fixed and Swedish units' angles are 0.
     """
-    robot = validation.numeric_robot(robot)
+    special = special_twists(validation.numeric_robot(robot))
     w, steered = robot.w, np.array(robot.steered, dtype=bool)
     s = int(steered.sum())
     grid = (
@@ -83,25 +81,9 @@ def configurations(robot: Robot, grid: int | None = None, twists: int = TWISTS, 
         parts.append(full)
     size = float(np.abs(robot.mount_points).max()) or 1.0
     rng = np.random.default_rng(seed)
-    tw = np.concatenate(
-        [special_twists(robot), np.c_[rng.uniform(-1, 1, (twists, 1)) / size, rng.uniform(-1, 1, (twists, 2))]]
-    )
+    tw = np.concatenate([special, np.c_[rng.uniform(-1, 1, (twists, 1)) / size, rng.uniform(-1, 1, (twists, 2))]])
     parts.append(steering_angles(robot, tw))
     return np.concatenate(parts)
-
-
-def dead_zone_radius(robot: Robot) -> float | None:
-    r"""Radius d of the dead zone of a robot on offset wheels of one offset d: C's circle when steered without driving.
-
-    None when some unit is not an offset wheel (:func:`~wmr.analysis.unit_design.dead_zone`) or the
-    offsets differ.
-    """
-    robot = validation.numeric_robot(robot)
-    zones = [dead_zone(u) for u in robot.wheels]
-    if any(z is None for z in zones):
-        return None
-    d = np.array(zones, dtype=float)
-    return float(d[0]) if np.all(np.abs(d - d[0]) <= TOL * d.max()) else None
 
 
 @dataclass(frozen=True)
@@ -154,7 +136,7 @@ class Overview:
     advised : list of bool
         For each advice, :attr:`~wmr.analysis.advice.Advice.advised`.
     dead_zone : float or None
-        :func:`dead_zone_radius`.
+        :func:`~wmr.analysis.unit_design.dead_zone_radius`.
     singular : list of dict
         :func:`singular_families`.
     steered : tuple of bool
@@ -219,8 +201,8 @@ def overview(robot: Robot, grid: int | None = None, twists: int = TWISTS, seed: 
     generic = np.random.default_rng(seed).uniform(-np.pi, np.pi, robot.w)
     rf = int(rank_F(robot, generic))
     n = 3 + robot.n_rates
-    ranks = sweep(robot, "rank_F", beta, quantiles=())
     before = profile(robot)
+    ranks = sweep(robot, "rank_F", beta, quantiles=())
     L = before["L"]
     drive = Drivable(max(100, twists), seed=seed)
     kj = sweep(robot, "kappa_J", drive, L=L, quantiles=(0.5, 0.95))

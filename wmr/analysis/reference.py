@@ -100,7 +100,6 @@ def _matrices(A: ArrayLike, square: bool = False) -> FloatArray:
     return A
 
 
-@np.errstate(over="ignore", invalid="ignore")
 def _finite(name, *results):
     if not all(np.isfinite(r).all() for r in results):
         raise InputValueError(f"{name} is too large: the result overflows double precision")

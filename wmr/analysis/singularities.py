@@ -128,11 +128,6 @@ def _square_J(robot, beta, L):
     return robot.J(beta, L=default_L(robot, L))
 
 
-def det_J_scale(robot: Robot, beta: ArrayLike, L: float | None = None) -> FloatArray:
-    r"""Hadamard bound :math:`\prod_i\|\mathbf J\mathbf e_i\|` (...): the size against which :math:`\det\mathbf J` is zero."""
-    return np.prod(np.linalg.norm(_square_J(robot, beta, L), axis=-2), axis=-1)
-
-
 def is_singular(robot: Robot, beta: ArrayLike, L: float | None = None) -> BoolArray:
     r"""True where :math:`|\det\mathbf J| \le` ``TOL`` times the Hadamard bound (batched).
 
@@ -148,8 +143,13 @@ def is_singular(robot: Robot, beta: ArrayLike, L: float | None = None) -> BoolAr
     -------
     numpy.ndarray of bool (...)
     """
-    J = _square_J(robot, beta, L)  # formed once for the determinant and its scale
-    return near_zero(det(J), np.prod(np.linalg.norm(J, axis=-2), axis=-1))
+    return _singular(_square_J(robot, beta, L))[1]
+
+
+def _singular(J):
+    r""":math:`\det\mathbf J` and whether it is zero against the Hadamard bound :math:`\prod_i\|\mathbf J\mathbf e_i\|`."""
+    dj = det(J)
+    return dj, near_zero(dj, np.prod(np.linalg.norm(J, axis=-2), axis=-1))
 
 
 # -------------------------------------------------------------------------------- classify
@@ -217,8 +217,7 @@ def classify(robot: Robot, beta: ArrayLike, L: float | None = None) -> Classific
     beta = robot.effective_beta(beta)
     if beta.ndim != 1:
         raise InputValueError(f"beta must be one configuration of shape (3,) for classify, got shape {beta.shape}")
-    dj = float(det_J(robot, beta, L))
-    sing = bool(is_singular(robot, beta, L))
+    dj, sing = (x.item() for x in _singular(robot.J(beta, L=default_L(robot, L))))
     rk = int(rank_F(robot, beta))
     mob = 3 + robot.n_rates - rk
     planes = concurrency_point(robot, beta)

@@ -30,15 +30,11 @@ def require_square(robot: Robot) -> None:
 
 
 def default_L(robot: Robot, L: Numbers | None, numeric: bool = True) -> Numbers:
-    """``L`` checked, or the characteristic length of ``robot`` (:func:`wmr.characteristic_length`) when None.
-
-    ``numeric``: return a float (else a given SymPy ``L`` is kept).
-    """
-    validation.robot(robot)
+    """``L`` checked, or the characteristic length of a checked ``robot`` when None (``numeric``: as a float)."""
     if L is not None:
         L = validation.positive("L", L)
         return validation.number("L", L) if numeric else L
-    if validation.free_symbols(validation.robot(robot)):
+    if robot.free_symbols:
         raise InputValueError(
             f"L must be given explicitly for a robot with symbolic mount points, got L = None for {validation.show(robot)}"
         )

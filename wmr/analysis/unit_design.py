@@ -62,7 +62,7 @@ class Change:
 def dead_zone(unit: Any) -> float | None:
     """The radius of C's circle when every unit is steered with its drives locked, if this unit has one.
 
-    The paper's dead zone of a robot on offset wheels (:func:`wmr.analysis.overview.dead_zone_radius`).
+    The paper's dead zone of a robot on offset wheels (:func:`dead_zone_radius`).
 
     Parameters
     ----------
@@ -80,6 +80,18 @@ def dead_zone(unit: Any) -> float | None:
 def _offset_dead_zone(unit: OffsetWheel) -> float | None:
     """Steered with the drives locked, offset wheels carry C on a circle of radius d."""
     return float(unit.d)
+
+
+def dead_zone_radius(robot) -> float | None:
+    """Radius d of the dead zone of a robot on offset wheels of one offset d: C's circle when steered without driving.
+
+    None when some unit has no :func:`dead_zone` or the offsets differ.
+    """
+    zones = [dead_zone(u) for u in robot.wheels]
+    if any(z is None for z in zones):
+        return None
+    d = np.array(zones, dtype=float)
+    return float(d[0]) if np.all(np.abs(d - d[0]) <= TOL * d.max()) else None
 
 
 @functools.singledispatch

@@ -76,6 +76,11 @@ def line_intersection(p1: ArrayLike, u1: ArrayLike, p2: ArrayLike, u2: ArrayLike
     for name, u in (("u1", u1), ("u2", u2)):
         if not np.any(u):
             raise InputValueError(f"{name} must be a non-zero direction, got {validation.show(u)}")
+    return _meet(p1, u1, p2, u2)
+
+
+def _meet(p1, u1, p2, u2):
+    """:func:`line_intersection` of checked points and non-zero directions (2,)."""
     n1, n2 = u1 / np.hypot(*u1), u2 / np.hypot(*u2)
     cross = n1[0] * n2[1] - n1[1] * n2[0]  # sine of the angle between the lines
     w = p2 - p1
@@ -120,7 +125,7 @@ def pair_intersections(
     n = len(points)
     for i in range(n):
         for j in range(i + 1, n):
-            out[(i + 1, j + 1)] = line_intersection(points[i], directions[i], points[j], directions[j])
+            out[(i + 1, j + 1)] = _meet(points[i], directions[i], points[j], directions[j])
     return out
 
 

@@ -26,11 +26,10 @@ __all__ = [
 ]
 
 
-def _unit_points(robot, beta):
-    """Each unit's points and axes (``unit.points``) at the steering angles ``beta (..., w)``."""
-    robot = validation.numeric_robot(robot)
-    beta = robot.effective_beta(beta)
-    return [u.points(beta[..., i]) for i, u in enumerate(robot.wheels)]
+def _lines(robot, beta, at, along):
+    """Points ``at`` and directions ``along`` (keys of ``unit.points``) of the units of a checked robot at checked ``beta``."""
+    pts = [u.points(beta[..., i]) for i, u in enumerate(robot.wheels)]
+    return np.stack([p[at] for p in pts], axis=-2), np.stack([p[along] for p in pts], axis=-2)
 
 
 def wheel_plane_lines(robot: Robot, beta: ArrayLike) -> tuple[FloatArray, FloatArray]:
@@ -50,8 +49,8 @@ def wheel_plane_lines(robot: Robot, beta: ArrayLike) -> tuple[FloatArray, FloatA
     directions : numpy.ndarray (..., w, 2)
         Unit vectors :math:`\mathbf j_i`.
     """
-    pts = _unit_points(robot, beta)
-    return np.stack([p["P"] for p in pts], axis=-2), np.stack([p["j"] for p in pts], axis=-2)
+    robot = validation.numeric_robot(robot)
+    return _lines(robot, robot.effective_beta(beta), "P", "j")
 
 
 def axle_lines(robot: Robot, beta: ArrayLike) -> tuple[FloatArray, FloatArray]:
@@ -68,8 +67,8 @@ def axle_lines(robot: Robot, beta: ArrayLike) -> tuple[FloatArray, FloatArray]:
         Wheel centres :math:`H_i` (body frame).
     directions : numpy.ndarray (..., w, 2)
     """
-    pts = _unit_points(robot, beta)
-    return np.stack([p["H"] for p in pts], axis=-2), np.stack([p["i"] for p in pts], axis=-2)
+    robot = validation.numeric_robot(robot)
+    return _lines(robot, robot.effective_beta(beta), "H", "i")
 
 
 def _one(robot, beta, what):
@@ -83,7 +82,7 @@ def _one(robot, beta, what):
         raise InputValueError(
             f"beta must be one configuration of shape ({robot.w},) for {what}, got shape {beta.shape}"
         )
-    return beta
+    return robot, beta
 
 
 def concurrency_point(robot: Robot, beta: ArrayLike) -> Concurrency:
@@ -99,7 +98,8 @@ def concurrency_point(robot: Robot, beta: ArrayLike) -> Concurrency:
     Concurrency
         For three centred wheels ``kind == NONE`` exactly when :math:`\det\mathbf J \ne 0`.
     """
-    return lines_concurrency(*wheel_plane_lines(robot, _one(robot, beta, "concurrency_point")))
+    robot, beta = _one(robot, beta, "concurrency_point")
+    return lines_concurrency(*_lines(robot, beta, "P", "j"))
 
 
 def axles_concurrency(robot: Robot, beta: ArrayLike) -> Concurrency:
@@ -114,7 +114,8 @@ def axles_concurrency(robot: Robot, beta: ArrayLike) -> Concurrency:
     -------
     Concurrency
     """
-    return lines_concurrency(*axle_lines(robot, _one(robot, beta, "axles_concurrency")))
+    robot, beta = _one(robot, beta, "axles_concurrency")
+    return lines_concurrency(*_lines(robot, beta, "H", "i"))
 
 
 def planes_through(robot: Robot, D: ArrayLike) -> FloatArray:
@@ -134,12 +135,7 @@ def planes_through(robot: Robot, D: ArrayLike) -> FloatArray:
     numpy.ndarray (..., w)
         (Fixed and Swedish wheels cannot turn: their entries are their own angles.)
     """
-    robot = validation.numeric_robot(robot)
-    D = validation.finite_array("D", D, last=2)
-    v = D[..., None, :] - robot.mount_points  # (..., w, 2)
-    beta = np.arctan2(-v[..., 0], v[..., 1])  # j = (-sin b, cos b) || v
-    beta = np.where(_at(v, robot, D), 0.0, beta)
-    return robot.effective_beta(line_angle(beta))  # fixed, Swedish: their own angle
+    return _through(robot, validation.finite_array("D", D, last=2), planes=True)
 
 
 def axles_through(robot: Robot, U: ArrayLike) -> FloatArray:
@@ -155,18 +151,18 @@ def axles_through(robot: Robot, U: ArrayLike) -> FloatArray:
     numpy.ndarray (..., w), in :math:`(-\pi/2, \pi/2]`
         (except fixed and Swedish wheels: their own angles).
     """
+    return _through(robot, validation.finite_array("U", U, last=2), planes=False)
+
+
+def _through(robot, X, planes):
+    """Angles whose wheel planes (or axles) pass through X; 0 where X is a mount point (within TOL)."""
     robot = validation.numeric_robot(robot)
-    U = validation.finite_array("U", U, last=2)
-    v = U[..., None, :] - robot.mount_points
-    beta = np.arctan2(v[..., 1], v[..., 0])  # i = (cos b, sin b) || v
-    beta = np.where(_at(v, robot, U), 0.0, beta)
-    return robot.effective_beta(line_angle(beta))  # fixed, Swedish: their own angle
-
-
-def _at(v, robot, X):
-    """Where the point X is a mount point: ``max|X - P_i| <= TOL`` times the size of the robot and of X."""
+    v = X[..., None, :] - robot.mount_points  # (..., w, 2)
+    # planes: j = (-sin b, cos b) || v; axles: i = (cos b, sin b) || v
+    beta = np.arctan2(-v[..., 0], v[..., 1]) if planes else np.arctan2(v[..., 1], v[..., 0])
     size = np.maximum(np.abs(robot.mount_points).max(), np.abs(X).max(axis=-1, keepdims=True))
-    return np.abs(v).max(axis=-1) <= TOL * size
+    beta = np.where(np.abs(v).max(axis=-1) <= TOL * size, 0.0, beta)
+    return robot.effective_beta(line_angle(beta))  # fixed, Swedish: their own angle
 
 
 def pair_line_angle(robot: Robot, i: int, j: int) -> float:
