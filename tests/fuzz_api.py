@@ -774,7 +774,6 @@ NOT_FUZZED = {
     "combine_checked": "trig_combination without the check of beta, for angles a robot has checked (fuzzed through Robot.J2/F/J)",
     "wheel_units": "the check of Robot's wheels, fuzzed through Robot",
     "Terms": "the data of trig_combination, built by Robot.J2/F/J and twist_constraints (fuzzed through them)",
-    "Layout": "a robot's units as arrays, made by Robot itself (fuzzed through Robot.J2/F/J)",
     "is_symbolic": "a predicate: any value is a valid question",
     "is_sympy": "a predicate: any value is a valid question (its kinds are SymPy class names the package passes)",
     "CampionClass": "the result type of campion_class, fuzzed through it",

@@ -78,4 +78,4 @@ def numeric_robot(value: object, name: str = "robot") -> Robot:
 
 def free_symbols(robot: Robot) -> set[Symbolic]:
     """The SymPy symbols in a robot's mount points and lengths (:attr:`wmr.Robot.free_symbols`)."""
-    return robot.free_symbols
+    return set(robot.free_symbols)
