@@ -37,6 +37,8 @@ before                                         now
 ``wmr.swerve.to_chassis(twist)``               :func:`wmr.model.conventions.twist_to` ``(twist, "wpilib")``
 ``wmr.swerve.from_chassis(chassis)``           :func:`wmr.model.conventions.twist_from` ``(chassis, "wpilib")``
 ``wmr.io.chassis``                             :mod:`wmr.io.wpilib` (``twist_of``, ``chassis_speeds``, ``is_chassis_speeds``)
+``wmr.model.arrays``                           :mod:`wmr.model.checks` (the same names)
+``wmr.model.robot_checks``                     :mod:`wmr.model.validation` (the same names)
 =============================================  ===================================================================
 """
 
@@ -48,10 +50,10 @@ import warnings
 from collections.abc import Callable
 from typing import Any
 
-from . import io, swerve
+from . import io, model, swerve
 from .analysis import actuation, advice, families, integration, overview, unit_design
 from .io import mechanism, wheel_tables, wpilib
-from .model import conventions, platform, validation
+from .model import checks, conventions, platform, validation
 from .model import types as model_types
 from .model.wheels import WheelUnit, swedish
 from .plot import parts
@@ -202,6 +204,26 @@ _moved(_chassis, "wmr.io.chassis", {n: (f"wmr.io.wpilib.{n}", getattr(wpilib, n)
 sys.modules.setdefault("wmr.io.chassis", _chassis)
 setattr(io, "chassis", _chassis)  # noqa: B010 (import wmr.io.chassis finds it, as before)
 sys.modules.setdefault("wmr.analysis.simulation", integration)
+_SHIMS: dict[str, tuple[types.ModuleType, tuple[str, ...]]] = {
+    "arrays": (
+        checks,
+        (
+            "finite_array",
+            "twist_array",
+            "twist_kind",
+            "TWIST_OBJECTS",
+            "batch_shape",
+            "symbolic_vector",
+            "symbolic_matrix",
+        ),
+    ),
+    "robot_checks": (validation, ("robot", "numeric_robot", "free_symbols")),
+}
+for _shim_name, (_target, _shim_names) in _SHIMS.items():
+    _shim = types.ModuleType(f"wmr.model.{_shim_name}", f"Deprecated: :mod:`{_target.__name__}`.")
+    _moved(_shim, f"wmr.model.{_shim_name}", {n: (f"{_target.__name__}.{n}", getattr(_target, n)) for n in _shim_names})
+    sys.modules.setdefault(f"wmr.model.{_shim_name}", _shim)
+    setattr(model, _shim_name, _shim)
 
 
 def simulate(*args: Any, **kwargs: Any) -> Any:

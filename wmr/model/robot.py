@@ -21,15 +21,16 @@ from typing import Any, NoReturn
 
 import numpy as np
 
-from ..errors import FrozenError, InputValueError
+from ..errors import FrozenError, InputTypeError, InputValueError
 from . import checks
 from .backend import NUMERIC, SYMBOLIC, Backend, choose
 from .lazysympy import sp
+from .limits import check
 from .platform import moved_points, point_row
 from .tolerance import column_norms
 from .trig import Terms, combine_checked
 from .types import ArrayLike, FloatArray, IntArray, Matrix, Numbers, Point, Symbolic
-from .wheels import WheelUnit, wheel_units
+from .wheels import WheelUnit, wheel_kinds
 
 __all__ = ["Robot"]
 
@@ -114,14 +115,25 @@ class Robot:
     _kept: dict
 
     def __init__(self, wheels: Iterable[WheelUnit], name: str | None = None) -> None:
-        wheels = wheel_units(wheels)
+        if not (name is None or isinstance(name, str)):
+            raise checks.kind_error("name", name, "a string or None")
+        if isinstance(wheels, (str, bytes, WheelUnit)) or not hasattr(wheels, "__iter__"):
+            raise InputTypeError(f"wheels must be a sequence of wheel units, got {checks.show(wheels)}")
+        wheels = tuple(wheels)
+        if len(wheels) == 0:
+            raise InputValueError("wheels must contain at least one wheel unit, got 0")
+        check("wheels", len(wheels), "wheels")
+        for k, u in enumerate(wheels):
+            if not isinstance(u, WheelUnit):
+                kinds = ", ".join(t.__name__ for t in wheel_kinds().values())
+                raise InputTypeError(f"wheels[{k}] must be a wheel unit ({kinds}, ...), got {checks.show(u)}")
         stops = np.cumsum([u.n_rates for u in wheels]).tolist()
         symbolic = any(u.is_symbolic for u in wheels)
-        names = tuple(n for i, u in enumerate(wheels, 1) for n in u.rate_names(i))
+        names = tuple(f"{n}_dot_{i}{suffix}" for i, u in enumerate(wheels, 1) for n, _, suffix in u.RATES)
         made = object.__setattr__  # the only assignments: the robot is frozen from here on
         for attr, value in dict(
             wheels=wheels,
-            name=checks.optional_text("name", name) or "robot",
+            name=name or "robot",
             w=len(wheels),
             n_rates=stops[-1],
             rate_slices=tuple(slice(a, b) for a, b in zip([0] + stops[:-1], stops)),
@@ -417,9 +429,13 @@ def _numbers(wheels: tuple[WheelUnit, ...]) -> dict[str, Any]:
     L = np.concatenate([np.asarray(b[0], dtype=float) for b in blocks], axis=1)  # (2, n): the L_i side by side
     EL = np.concatenate([np.asarray(b[1], dtype=float) for b in blocks], axis=1)
     unit = np.repeat(np.arange(w), [u.n_rates for u in wheels])  # the unit of each joint rate
+    made = dict(
+        _J2=_J2_terms(w, unit, L, EL),
+        _F=_J2_terms(w, unit, -L, -EL, 3, np.concatenate([J1, np.zeros((2 * w, unit.size))], axis=1)),
+    )
     own = [i for i, u in enumerate(wheels) if u.constant_angle is not None]
     d.setflags(write=False)
-    return dict(
+    return made | dict(
         mount_points=d,
         F_column_norms=np.concatenate([column_norms(J1), column_norms(L)]),
         _J1=J1,
@@ -428,8 +444,6 @@ def _numbers(wheels: tuple[WheelUnit, ...]) -> dict[str, Any]:
         _rate_unit=unit,
         _own=np.array(own, dtype=np.intp),
         _own_angle=np.array([float(wheels[i].constant_angle) for i in own]),
-        _J2=_J2_terms(w, unit, L, EL),
-        _F=_J2_terms(w, unit, -L, -EL, 3, np.concatenate([J1, np.zeros((2 * w, unit.size))], axis=1)),
     )
 
 
