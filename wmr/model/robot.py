@@ -51,34 +51,9 @@ class Robot:
         configuration has one entry per unit (:meth:`effective_beta`).
     name : str, optional
 
-    Attributes
-    ----------
-    wheels : tuple of WheelUnit
-    name : str
-    w : int
-        Number of wheel units.
-    n_rates : int
-        Length of the joint-rate vector :math:`\dot{\boldsymbol\theta}`.
-    rate_slices : tuple of slice
-        Each unit's rates inside :math:`\dot{\boldsymbol\theta}`.
-    steered : tuple of bool
-        True for the units with a steering joint (offset, centred, dual).
-    rate_names, qdot_names : tuple of str
-        The joint rates (columns of :math:`\mathbf J_2`) and the generalised rates (25) (columns of :math:`\mathbf F`).
-    is_symbolic : bool
-        True when a mount point or a length of some unit is a SymPy expression.
-    free_symbols : frozenset
-        The SymPy symbols in the mount points and lengths (empty for numeric and exact robots).
-    mount_points : numpy.ndarray (w, 2)
-        The :math:`\mathbf d_i` as floats (read-only; not for robots with free symbols).
-    F_column_norms : numpy.ndarray (3 + n_rates,)
-        Lengths of the columns of :math:`\mathbf F` (22)-(24), the same at every configuration:
-        :math:`\sqrt{\sum_i\|\mathbf d_i\|^2}`, :math:`\sqrt w`, :math:`\sqrt w`, then those of the units' local
-        blocks; zero columns get 1 (:mod:`wmr.model.tolerance`; not for robots with free symbols).
-
     Notes
     -----
-    Frozen: setting or deleting an attribute raises :class:`~wmr.errors.FrozenError`; everything above is
+    Frozen: setting or deleting an attribute raises :class:`~wmr.errors.FrozenError`; the attributes are
     derived once, when the robot is made.  Equality and hashing are by identity.
 
     Examples
@@ -91,17 +66,31 @@ class Robot:
     (4, 5)
     """
 
+    #: the units, in their numbering order
     wheels: tuple[WheelUnit, ...]
+    #: the robot's name
     name: str
+    #: number of wheel units
     w: int
+    #: length of the joint-rate vector :math:`\dot{\boldsymbol\theta}`
     n_rates: int
+    #: slice of each unit's rates inside :math:`\dot{\boldsymbol\theta}`
     rate_slices: tuple[slice, ...]
+    #: True for the units with a steering joint (offset, centred, dual); :meth:`effective_beta`
     steered: tuple[bool, ...]
+    #: names of the joint rates, in the column order of :math:`\mathbf J_2`
     rate_names: tuple[str, ...]
+    #: names of the generalised rates (25): the columns of :math:`\mathbf F`
     qdot_names: tuple[str, ...]
+    #: True when a mount point or a length of some unit is a SymPy expression
     is_symbolic: bool
+    #: the SymPy symbols in the mount points and lengths (empty for numeric and exact robots)
     free_symbols: frozenset[Symbolic]
+    #: the :math:`\mathbf d_i` as floats, (w, 2), read-only (not for robots with free symbols)
     mount_points: FloatArray
+    #: lengths of the columns of :math:`\mathbf F` (22)-(24), the same at every configuration, (3 + n_rates,):
+    #: :math:`\sqrt{\sum_i\|\mathbf d_i\|^2}`, :math:`\sqrt w`, :math:`\sqrt w`, then those of the units' local
+    #: blocks; zero columns get 1 (:mod:`wmr.model.tolerance`; not for robots with free symbols)
     F_column_norms: FloatArray
     _J1: FloatArray
     _L: FloatArray
