@@ -204,24 +204,29 @@ _moved(_chassis, "wmr.io.chassis", {n: (f"wmr.io.wpilib.{n}", getattr(wpilib, n)
 sys.modules.setdefault("wmr.io.chassis", _chassis)
 setattr(io, "chassis", _chassis)  # noqa: B010 (import wmr.io.chassis finds it, as before)
 sys.modules.setdefault("wmr.analysis.simulation", integration)
-_SHIMS: dict[str, tuple[types.ModuleType, tuple[str, ...]]] = {
-    "arrays": (
-        checks,
-        (
-            "finite_array",
-            "twist_array",
-            "twist_kind",
-            "TWIST_OBJECTS",
-            "batch_shape",
-            "symbolic_vector",
-            "symbolic_matrix",
-        ),
-    ),
-    "robot_checks": (validation, ("robot", "numeric_robot", "free_symbols")),
+_ARRAYS = (
+    "finite_array",
+    "twist_array",
+    "twist_kind",
+    "TWIST_OBJECTS",
+    "batch_shape",
+    "symbolic_vector",
+    "symbolic_matrix",
+)
+_SHIMS: dict[str, dict[str, tuple[str, Any]]] = {
+    "arrays": {n: (f"wmr.model.checks.{n}", getattr(checks, n)) for n in _ARRAYS},
+    "robot_checks": {
+        "robot": ("wmr.model.validation.robot", validation.robot),
+        "numeric_robot": ("wmr.model.validation.numeric_robot", validation.numeric_robot),
+        "free_symbols": ("wmr.Robot.free_symbols (an attribute)", lambda robot: set(robot.free_symbols)),
+    },
 }
-for _shim_name, (_target, _shim_names) in _SHIMS.items():
-    _shim = types.ModuleType(f"wmr.model.{_shim_name}", f"Deprecated: :mod:`{_target.__name__}`.")
-    _moved(_shim, f"wmr.model.{_shim_name}", {n: (f"{_target.__name__}.{n}", getattr(_target, n)) for n in _shim_names})
+for _shim_name, _shim_names in _SHIMS.items():
+    _shim = types.ModuleType(
+        f"wmr.model.{_shim_name}",
+        f"Deprecated: the names moved to {sorted({v[0].rsplit('.', 1)[0] for v in _shim_names.values()})}.",
+    )
+    _moved(_shim, f"wmr.model.{_shim_name}", _shim_names)
     sys.modules.setdefault(f"wmr.model.{_shim_name}", _shim)
     setattr(model, _shim_name, _shim)
 

@@ -38,7 +38,7 @@ def default_L(robot: Robot, L: Numbers | None, numeric: bool = True) -> Numbers:
     if L is not None:
         L = validation.positive("L", L)
         return validation.number("L", L) if numeric else L
-    if validation.free_symbols(validation.robot(robot)):
+    if validation.robot(robot).free_symbols:
         raise InputValueError(
             f"L must be given explicitly for a robot with symbolic mount points, got L = None for {validation.show(robot)}"
         )
