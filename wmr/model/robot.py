@@ -54,7 +54,8 @@ class Robot:
     Notes
     -----
     Frozen: setting or deleting an attribute raises :class:`~wmr.errors.FrozenError`; the attributes are
-    derived once, when the robot is made.  Equality and hashing are by identity.
+    derived once, when the robot is made (an exact robot's numbers when first asked for: turning its SymPy
+    numbers into floats takes milliseconds).  Equality and hashing are by identity.
 
     Examples
     --------
@@ -134,20 +135,20 @@ class Robot:
             _kept={},
         ).items():
             made(self, attr, value)
-        if self.free_symbols:
-            return
-        if symbolic:  # exact: the numbers are those of its float twin
-            twin = Robot([u.numeric() for u in wheels], name=self.name)
-            for attr in NUMBERS:
-                made(self, attr, getattr(twin, attr))
-            made(self, "_twin", twin)
-            return
-        made(self, "_twin", self)
-        for attr, value in _numbers(wheels).items():
-            made(self, attr, value)
+        if not symbolic:
+            made(self, "_twin", self)
+            for attr, value in _numbers(wheels).items():
+                made(self, attr, value)
 
     def __getattr__(self, attr: str) -> Any:
-        if attr in NUMBERS and "free_symbols" in self.__dict__:  # a robot with free symbols
+        """The numbers of a symbolic robot (only they are missing): its float twin's, made when first asked for."""
+        if (attr in NUMBERS or attr == "_twin") and "free_symbols" in self.__dict__:
+            if not self.free_symbols:  # exact: SymPy numbers to floats (milliseconds: not before they are needed)
+                twin = Robot([u.numeric() for u in self.wheels], name=self.name)
+                for name in NUMBERS:
+                    object.__setattr__(self, name, getattr(twin, name))
+                object.__setattr__(self, "_twin", twin)
+                return getattr(self, attr)
             for u in self.wheels:
                 for v in u.position:
                     checks.number("position", v)
