@@ -64,4 +64,5 @@ def numeric_robot(value: object, name: str = "robot") -> Robot:
     Robot
         ``value`` itself, or its float counterpart for an exact robot.
     """
-    return robot(value, name).numeric()  # (an input error naming the symbols, for a robot with free ones)
+    value = robot(value, name)
+    return value.numeric() if value.is_symbolic else value  # (an input error names free symbols)
