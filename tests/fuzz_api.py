@@ -49,7 +49,7 @@ from wmr.analysis.sweep import Drivable, Grid
 from wmr.analysis.sweep import configurations as sweep_configurations
 from wmr.analysis.sweep import motions as sweep_motions
 from wmr.errors import InputError
-from wmr.model import arrays, backend, conventions, limits, platform, tolerance, wheels
+from wmr.model import backend, checks, conventions, limits, platform, tolerance, wheels
 from wmr.model.backend import NUMERIC, SYMBOLIC
 from wmr.model.wheels import joints, unsteered
 from wmr.words import glossary
@@ -723,7 +723,7 @@ CASES = [
         lambda values, convention: conventions.twist_from(values, convention),
         (("values", "twist"), ("convention", "convention")),
     ),
-    Case("twist_array", lambda twist: arrays.twist_array("twist", twist), (T,)),
+    Case("twist_array", lambda twist: checks.twist_array("twist", twist), (T,)),
     Case("limit", lambda name: limits.limit(name), (("name", "limit"),)),
     Case("check", lambda name, amount: limits.check(name, amount, "amount"), (("name", "limit"), ("amount", "amount"))),
     Case("radians", lambda angle: unsteered.radians("angle", angle), (("angle", "angle"),)),
@@ -750,9 +750,7 @@ NOT_FUZZED = {
     "exact_zero": "SymPy helper of the paper's families; argument checks tested in test_validation",
     "trig_combination": "kernel of Robot.J2/F/J and twist_constraints, fuzzed through them",
     "combine_checked": "trig_combination without the check of beta, for angles a robot has checked (fuzzed through Robot.J2/F/J)",
-    "wheel_units": "the check of Robot's wheels, fuzzed through Robot",
     "Terms": "the data of trig_combination, built by Robot.J2/F/J and twist_constraints (fuzzed through them)",
-    "Layout": "a robot's units as arrays, made by Robot itself (fuzzed through Robot.J2/F/J)",
     "is_symbolic": "a predicate: any value is a valid question",
     "is_sympy": "a predicate: any value is a valid question (its kinds are SymPy class names the package passes)",
     "CampionClass": "the result type of campion_class, fuzzed through it",

@@ -103,10 +103,8 @@ def test_every_public_function_is_fuzzed_or_excused():
         "symbolic_matrix",
         "robot",
         "numeric_robot",
-        "free_symbols",
         "batch_shape",
         "flag",
-        "optional_text",
         "integer",
         "show",
     }

@@ -162,9 +162,10 @@ def _flip_dual(self, bk):
     return bk.matrix([[0, 0], [self.r / 2, -self.r / 2]])  # wrong sign on wheel 1 of (17)
 
 
-def _flip_E(d, L=1, backend=None):  # E -> -E in (5)
-    bk = wmr.model.backend.choose(*d, L, backend=backend)
-    return bk.matrix([[d[1] / L, 1, 0], [-d[0] / L, 0, 1]])
+def _flip_E(d):  # E -> -E in (5): the rows [-E d_i  1] of J1
+    J1 = np.zeros((2 * len(d), 3))
+    J1[0::2, 0], J1[1::2, 0], J1[0::2, 1], J1[1::2, 2] = d[:, 1], -d[:, 0], 1.0, 1.0
+    return J1
 
 
 MIXED = wmr.Robot(
@@ -180,8 +181,8 @@ TWIST = np.array([0.8, 0.3, -0.5])
 RNG = np.random.default_rng(7)
 BETA, RATES = RNG.uniform(-3, 3, MIXED.w), RNG.normal(size=MIXED.n_rates)
 
-# each check builds its robot anew: a robot computes its units' blocks once (wmr.model.layout), so a
-# mutation made after a robot was first used would not reach it
+# each check builds its robot anew: a robot computes its J1 and its units' blocks once, when made, so a
+# mutation made after a robot was made would not reach it
 CHECKS = {
     "J1 first principles": lambda: check_J1_first_principles(wmr.Robot(MIXED.wheels), TWIST),
     "J2 first principles": lambda: check_J2_first_principles(wmr.Robot(MIXED.wheels), BETA, RATES),
@@ -199,7 +200,7 @@ MUTATIONS = {  # mutation -> the checks that must catch it
         ["J2 first principles", "steering rolls forward"],
     ),
     "dual wheel sign": (("DualWheel", "local_block", _flip_dual), ["J2 first principles"]),
-    "E sign in J1": (("robot", "point_row", _flip_E), ["J1 first principles", "forward(inverse(t)) = t"]),
+    "E sign in J1": (("robot", "_J1_of", _flip_E), ["J1 first principles", "forward(inverse(t)) = t"]),
 }
 
 

@@ -26,7 +26,8 @@ def _bot():
         ("wheels", (wmr.CentredWheel((2.0, 0.0), r=0.1),)),
         ("name", "other"),
         ("rate_slices", (slice(0, 1),)),
-        ("_layout", None),
+        ("mount_points", None),
+        ("_J1", None),
         ("anything_new", 1),
     ],
 )
@@ -43,14 +44,15 @@ def test_assigning_an_attribute_raises_and_changes_nothing(attr, value):
     np.testing.assert_array_equal(bot.F([0.3, -0.2]), F0)
 
 
-def test_the_kept_layout_and_constants_cannot_go_stale():
+def test_the_derived_numbers_and_kept_constants_cannot_go_stale():
     bot = _bot()
-    lay = bot._layout
+    J1, points = bot._J1, bot.mount_points
     sol = wmr.forward(bot, [0.0, 0.0], [1.0, 1.0])
     with pytest.raises(FrozenError):
         bot.wheels = (wmr.CentredWheel((5.0, 0.0), r=1.0), wmr.CentredWheel((-5.0, 0.0), r=1.0))
-    assert bot._layout is lay and lay.wheels is bot.wheels  # made once, for these units
-    assert bot._layout.memo("kinematics", lambda: None) is kinematics._constants(bot)  # kept on the robot
+    assert bot._J1 is J1 and bot.mount_points is points  # made once, with the robot
+    assert not points.flags.writeable  # and read-only
+    assert bot._memo("kinematics", lambda: None) is kinematics._constants(bot)  # kept on the robot
     np.testing.assert_array_equal(wmr.forward(bot, [0.0, 0.0], [1.0, 1.0]).value, sol.value)
     # a robot with other units (a new robot) has its own, right, constants: nothing is keyed by id()
     other = wmr.Robot([wmr.CentredWheel((5.0, 0.0), r=1.0), wmr.CentredWheel((-5.0, 0.0), r=1.0)])
@@ -89,7 +91,7 @@ def test_cos_sin_is_deprecated_and_is_numpys():
 
 
 def test_numbers_of_a_robot_with_free_symbols_are_refused_by_the_package():
-    """The layout reads the checked floats of a numeric robot; a free symbol still gets the package's own error."""
+    """A robot reads the checked floats of its units when made; a free symbol still gets the package's own error."""
     import sympy as sp
 
     bot = wmr.Robot([wmr.CentredWheel((sp.Symbol("x"), 0.0), r=1.0)])

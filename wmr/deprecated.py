@@ -38,6 +38,8 @@ before                                         now
 ``wmr.swerve.from_chassis(chassis)``           :func:`wmr.model.conventions.twist_from` ``(chassis, "wpilib")``
 ``wmr.io.chassis``                             :mod:`wmr.io.wpilib` (``twist_of``, ``chassis_speeds``, ``is_chassis_speeds``)
 ``wmr.analysis.sweep.gram_kappa``              :mod:`wmr.analysis.gram_kappa` (the same four names)
+``wmr.model.arrays``                           :mod:`wmr.model.checks` (the same names)
+``wmr.model.robot_checks``                     :mod:`wmr.model.validation` (the same names)
 =============================================  ===================================================================
 """
 
@@ -49,11 +51,11 @@ import warnings
 from collections.abc import Callable
 from typing import Any
 
-from . import io, swerve
+from . import io, model, swerve
 from .analysis import actuation, advice, families, gram_kappa, integration, overview, unit_design
 from .analysis import sweep as sweep_package
 from .io import mechanism, wheel_tables, wpilib
-from .model import conventions, platform, validation
+from .model import checks, conventions, platform, validation
 from .model import types as model_types
 from .model.wheels import WheelUnit, swedish
 from .plot import parts
@@ -213,6 +215,31 @@ _moved(
 )
 sys.modules.setdefault("wmr.analysis.sweep.gram_kappa", _gram)
 setattr(sweep_package, "gram_kappa", _gram)  # noqa: B010 (import wmr.analysis.sweep.gram_kappa finds it, as before)
+_ARRAYS = (
+    "finite_array",
+    "twist_array",
+    "twist_kind",
+    "TWIST_OBJECTS",
+    "batch_shape",
+    "symbolic_vector",
+    "symbolic_matrix",
+)
+_SHIMS: dict[str, dict[str, tuple[str, Any]]] = {
+    "arrays": {n: (f"wmr.model.checks.{n}", getattr(checks, n)) for n in _ARRAYS},
+    "robot_checks": {
+        "robot": ("wmr.model.validation.robot", validation.robot),
+        "numeric_robot": ("wmr.model.validation.numeric_robot", validation.numeric_robot),
+        "free_symbols": ("wmr.Robot.free_symbols (an attribute)", lambda robot: set(robot.free_symbols)),
+    },
+}
+for _shim_name, _shim_names in _SHIMS.items():
+    _shim = types.ModuleType(
+        f"wmr.model.{_shim_name}",
+        f"Deprecated: the names moved to {sorted({v[0].rsplit('.', 1)[0] for v in _shim_names.values()})}.",
+    )
+    _moved(_shim, f"wmr.model.{_shim_name}", _shim_names)
+    sys.modules.setdefault(f"wmr.model.{_shim_name}", _shim)
+    setattr(model, _shim_name, _shim)
 
 
 def simulate(*args: Any, **kwargs: Any) -> Any:

@@ -95,6 +95,10 @@ def resolve(app: Sphinx, env: BuildEnvironment, node: pending_xref, contnode: no
     suffixes = [".".join(parts[i:]) for i in range(len(parts))]  # the longest first
     for candidate in ([f"{modname}.{target}"] if modname else []) + [target]:
         obj = imported(candidate) if "." in candidate else None
+        owner, _, attr = candidate.rpartition(".")
+        cls = imported(owner) if obj is None and owner else None
+        if inspect.isclass(cls) and any(attr in vars(c).get("__annotations__", {}) for c in cls.__mro__):
+            names.append(f"{own_name(cls)}.{attr}")  # an instance attribute (a frozen value's, set when made)
         if obj is not None:
             names.append(own_name(obj))
             names += [documented_as(domain, suffix, reftype, obj) for suffix in suffixes]

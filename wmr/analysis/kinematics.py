@@ -108,7 +108,7 @@ def constants_kept(robot):
 
 def _constants(robot):
     """The constants of forward and inverse kinematics, computed at the robot's first solve and kept on it."""
-    return robot._layout.memo("kinematics", lambda: _from_model(robot))
+    return robot._memo("kinematics", lambda: _from_model(robot))
 
 
 def _from_model(robot):

@@ -76,7 +76,7 @@ def twist_constraints(robot: Robot, beta: ArrayLike, free: ArrayLike | None = No
     robot = validation.numeric_robot(robot)
     beta = robot.effective_beta(beta)
     free = np.ones(robot.n_rates, dtype=bool) if free is None else np.asarray(free, dtype=bool)
-    terms, base_rank = robot._layout.memo(("twist_constraints", free.tobytes()), lambda: _constraint_terms(robot, free))
+    terms, base_rank = robot._memo(("twist_constraints", free.tobytes()), lambda: _constraint_terms(robot, free))
     return combine_checked(beta, terms), base_rank
 
 

@@ -223,13 +223,6 @@ def flag(name: str, value: Any) -> bool:
     raise kind_error(name, value, "True or False")
 
 
-def optional_text(name: str, value: Any) -> str | None:
-    """``value`` if it is a string or None."""
-    if value is None or isinstance(value, str):
-        return value
-    raise kind_error(name, value, "a string or None")
-
-
 def file_path(value: Any, optional: bool = False) -> Any:
     """``value`` if it is a file name (``str`` or ``os.PathLike``), or None when ``optional``: the argument ``path``."""
     if (optional and value is None) or isinstance(value, (str, os.PathLike)):

@@ -18,7 +18,6 @@ from dataclasses import dataclass
 import numpy as np
 
 from .checks import finite_array
-from .platform import rotated
 from .types import ArrayLike, FloatArray, IntArray
 
 __all__ = ["Terms", "trig_combination"]
@@ -135,5 +134,5 @@ def combine_checked(beta: FloatArray, terms: Terms) -> FloatArray:
         r = out[:, a:z]  # every update below is contiguous
         r[...] = const[:, None]
         for j, i, p, q in listed:  # (11): R(beta_i) M_i = cos M_i + sin E M_i
-            r[j] += rotated((c[i], s[i]), p, q, axes=0)
+            r[j] += c[i] * p + s[i] * q
     return out.T.reshape(beta.shape[:-1] + terms.shape)

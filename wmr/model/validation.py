@@ -13,7 +13,7 @@ Examples
 
 from __future__ import annotations
 
-from ..errors import InputTypeError, InputValueError
+from ..errors import InputTypeError
 from .checks import (  # noqa: F401  (the analyses' checks, called as validation.real, ...)
     batch_shape,
     file_path,
@@ -24,7 +24,6 @@ from .checks import (  # noqa: F401  (the analyses' checks, called as validation
     kind_error,
     nonnegative,
     number,
-    optional_text,
     point,
     positive,
     real,
@@ -35,7 +34,6 @@ from .checks import (  # noqa: F401  (the analyses' checks, called as validation
     twist_kind,
 )
 from .robot import Robot
-from .types import Symbolic
 
 __all__ = ["number", "positive", "finite_array", "numeric_robot"]
 
@@ -67,15 +65,4 @@ def numeric_robot(value: object, name: str = "robot") -> Robot:
         ``value`` itself, or its float counterpart for an exact robot.
     """
     value = robot(value, name)
-    symbols = value.free_symbols
-    if symbols:
-        raise InputValueError(
-            f"{name} must have numeric mount points and lengths here, got a robot with the symbols "
-            f"{sorted(map(str, symbols))}: {show(value)}"
-        )
-    return value.numeric() if value.is_symbolic else value
-
-
-def free_symbols(robot: Robot) -> set[Symbolic]:
-    """The SymPy symbols in a robot's mount points and lengths (:attr:`wmr.Robot.free_symbols`)."""
-    return robot.free_symbols
+    return value.numeric() if value.is_symbolic else value  # (an input error names free symbols)

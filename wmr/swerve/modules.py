@@ -119,7 +119,7 @@ def module_commands(robot: Robot, twist: TwistLike, current: ArrayLike | None = 
         Centred wheels only.
     twist : array (..., 3) or ChassisSpeeds
         :math:`[\dot\psi, \dot x, \dot y]`, body frame; a WPILib ``ChassisSpeeds`` (or a list of them)
-        is read by its fields as ``[omega, vx, vy]`` (:func:`wmr.model.arrays.twist_array`).
+        is read by its fields as ``[omega, vx, vy]`` (:func:`wmr.model.checks.twist_array`).
     current : array (..., w), optional
         Angles kept by modules whose mount point is still (default 0), as WPILib keeps the last heading.
 

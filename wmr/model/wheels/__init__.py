@@ -43,11 +43,7 @@ from __future__ import annotations
 
 import importlib
 import pkgutil
-from typing import Any
 
-from ...errors import InputTypeError, InputValueError
-from .. import checks
-from ..limits import check
 from .centred import CentredWheel
 from .dual import DualWheel
 from .fixed import FixedWheel
@@ -88,24 +84,6 @@ def kinds_table() -> str:
     lines = [rule, "  ".join(c.ljust(w) for c, w in zip(rows[0], widths, strict=True)).rstrip(), rule]
     lines += ["  ".join(c.ljust(w) for c, w in zip(r, widths, strict=True)).rstrip() for r in rows[1:]]
     return "\n".join(lines + [rule])
-
-
-def wheel_units(wheels: Any) -> tuple[WheelUnit, ...]:
-    """The wheel units of a :class:`~wmr.model.robot.Robot`, checked: a sequence of 1 to the limit of units."""
-    if isinstance(wheels, (str, bytes, WheelUnit)):
-        raise InputTypeError(f"wheels must be a sequence of wheel units, got {checks.show(wheels)}")
-    try:
-        wheels = tuple(wheels)
-    except TypeError:
-        raise InputTypeError(f"wheels must be a sequence of wheel units, got {checks.show(wheels)}") from None
-    if len(wheels) == 0:
-        raise InputValueError("wheels must contain at least one wheel unit, got 0")
-    check("wheels", len(wheels), "wheels")
-    for k, u in enumerate(wheels):
-        if not isinstance(u, WheelUnit):
-            kinds = ", ".join(t.__name__ for t in wheel_kinds().values())
-            raise InputTypeError(f"wheels[{k}] must be a wheel unit ({kinds}, ...), got {checks.show(u)}")
-    return wheels
 
 
 __doc__ = (__doc__ or "") + "\n" + kinds_table() + "\n"

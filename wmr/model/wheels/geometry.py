@@ -53,7 +53,10 @@ class UnitGeometry:
         >>> OffsetWheel((1.0, 0.0), r=0.1, d=0.2).points(0.0)["H"].tolist()    # H = P - d j
         [1.0, -0.2]
         """
-        beta = checks.finite_array("beta", beta)
+        return self._at(checks.finite_array("beta", beta))
+
+    def _at(self, beta):
+        """:meth:`points` at checked float angles."""
         c, s = np.cos(beta), np.sin(beta)
         i_dir = np.stack([c, s], axis=-1)
         j_dir = np.stack([-s, c], axis=-1)

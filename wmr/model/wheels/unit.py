@@ -42,7 +42,7 @@ import numpy as np
 
 from ...errors import InputValueError
 from .. import checks
-from ..backend import NUMERIC, Backend, choose, is_symbolic
+from ..backend import NUMERIC, Backend, choose
 from ..lazysympy import is_sympy, sp
 from ..platform import E, rotated
 from ..types import ArrayLike, FloatArray, Matrix, Numbers, Point, Symbolic
@@ -88,6 +88,13 @@ class WheelUnit(UnitGeometry):
     n_rates: ClassVar[int] = 0
     #: True when the unit has a steering joint (its angle is an entry of the robot's configuration)
     steered: ClassVar[bool] = False
+    # derived once, when a unit is made (instance attributes, set by __post_init__; not dataclass fields):
+    #: True when the position or a length of the unit is a SymPy expression
+    is_symbolic: ClassVar[bool]
+    #: the SymPy symbols in the unit's position and parameters (empty for numbers and exact numbers)
+    free_symbols: ClassVar[frozenset[Symbolic]]
+    #: the unit's joints, with its own actuation (``driven``), in the order of ``JOINTS``
+    joints: ClassVar[tuple[Joint, ...]]
 
     def __init_subclass__(cls, **kwargs: Any) -> None:
         super().__init_subclass__(**kwargs)
@@ -105,7 +112,12 @@ class WheelUnit(UnitGeometry):
         object.__setattr__(self, "r", checks.positive("r (wheel radius)", self.r))
         object.__setattr__(self, "driven", actuation(self.JOINTS, self.driven, type(self).__name__))
         self._validate()
-        if not self.is_symbolic:
+        values = self._values()
+        symbolic = any(is_sympy(v) for v in values)
+        made = object.__setattr__
+        made(self, "is_symbolic", symbolic)
+        made(self, "free_symbols", frozenset().union(*(v.free_symbols for v in values if is_sympy(v))))
+        if not symbolic:
             with np.errstate(over="ignore", invalid="ignore"):
                 if not np.isfinite(4 * np.abs(np.asarray(self.position, dtype=float))).all():
                     raise InputValueError(
@@ -124,16 +136,12 @@ class WheelUnit(UnitGeometry):
                     f"{type(self).__name__} has lengths too large for double-precision "
                     f"kinematics (R(beta) L_i would overflow): {checks.show(self)}"
                 )
+        made(self, "joints", tuple(dataclasses.replace(j, driven=d) for j, d in zip(self.JOINTS, self.driven)))
 
     def _validate(self) -> None:
         """Check and convert the kind's own fields (a kind with fields of its own extends this)."""
 
     # --- joints and rates ----------------------------------------------------------------------
-    @property
-    def joints(self) -> tuple[Joint, ...]:
-        """The unit's joints, with its own actuation (``driven``), in the order of ``JOINTS``."""
-        return tuple(dataclasses.replace(j, driven=d) for j, d in zip(self.JOINTS, self.driven, strict=True))
-
     def rate_names(self, i: int) -> tuple[str, ...]:
         """Plain names of this unit's rate variables when it is wheel ``i``.
 
@@ -249,11 +257,6 @@ class WheelUnit(UnitGeometry):
         """
         return {f.name: getattr(self, f.name) for f in dataclasses.fields(self) if f.name not in ("position", "driven")}
 
-    @property
-    def free_symbols(self) -> set[Symbolic]:
-        """The SymPy symbols in the unit's position and parameters (an empty set for numbers and exact numbers)."""
-        return set().union(*(v.free_symbols for v in self._values() if is_sympy(v)))
-
     def numeric(self) -> Self:
         """The same unit with float position and parameters (SymPy numbers such as :math:`\\sqrt3/2` evaluated).
 
@@ -281,11 +284,6 @@ class WheelUnit(UnitGeometry):
         return dataclasses.replace(
             self, position=tuple(map(num, self.position)), **{k: num(v) for k, v in self.parameters().items()}
         )
-
-    @property
-    def is_symbolic(self) -> bool:
-        """True when the position or a length of the unit is a SymPy expression."""
-        return is_symbolic(*self._values())
 
     def _values(self):
         """The unit's parameters as a flat tuple (position coordinates, lengths, angles)."""
@@ -345,8 +343,9 @@ class WheelUnit(UnitGeometry):
         [[0.0], [-2.0]]
         """
         bk = choose(beta, *self._values(), backend=backend)
+        beta = checks.finite_array("beta", beta) if bk is NUMERIC else checks.real("beta", beta)
         L, EL = self.block_terms(bk)
-        return rotated(beta, L, EL, backend=bk)  # (11): R(beta) L = cos L + sin E L; beta checked there
+        return rotated((bk.cos(beta), bk.sin(beta)), L, EL)  # (11): R(beta) L = cos L + sin E L
 
     def block_terms(self, backend: Backend = NUMERIC) -> tuple[Matrix, Matrix]:
         r"""The constant pair :math:`(\mathbf L_i, \mathbf E\mathbf L_i)` with

@@ -134,8 +134,7 @@ class UnsteeredUnit(WheelUnit):
         >>> FixedWheel((0, 0), r=1, angle=0.5).own_angle([0.0, 3.0]).tolist()
         [0.5, 0.5]
         """
-        beta = checks.finite_array("beta", beta)
-        return np.full(beta.shape, checks.number("angle", self.angle))
+        return np.full(checks.finite_array("beta", beta).shape, float(self.angle))  # angle: checked when made
 
     def block(self, beta: Numbers, backend: Backend | None = None) -> Matrix:
         r"""This unit's block :math:`\mathbf B_i = \mathbf R(\text{angle})\mathbf L_i` of :math:`\mathbf J_2`.
@@ -166,7 +165,7 @@ class UnsteeredUnit(WheelUnit):
             checks.real("beta", beta)
             angle = self.angle
         L, EL = self.block_terms(bk)
-        return rotated(angle, L, EL, backend=bk)
+        return rotated((bk.cos(angle), bk.sin(angle)), L, EL)  # (11), at its own angle
 
     def points(self, beta: ArrayLike) -> dict[str, FloatArray]:
         r"""Points of the unit in the body frame, at its own angle (``beta`` sets the batch shape only).
@@ -188,7 +187,7 @@ class UnsteeredUnit(WheelUnit):
         >>> FixedWheel((1.0, 0.0), r=0.1, angle=np.pi / 2).points(0.0)["i"].round(12).tolist()
         [0.0, 1.0]
         """
-        return super().points(self.own_angle(beta))
+        return self._at(self.own_angle(beta))
 
     def beta_rate(self, psi_dot: ArrayLike, rates: ArrayLike, steer: ArrayLike | None = None) -> FloatArray:
         """The wheel frame does not turn on the platform: :math:`\\dot\\beta_i = 0`.
